@@ -1,0 +1,47 @@
+#pragma once
+// Spectral-representation synthesis of a stationary random signal from a one-sided PSD
+// (Shinozuka & Deodatis 1991; theory D-3), by one inverse real FFT:
+//
+//   h_i = sum_{j=1}^{N/2-1} A_j cos(2 pi j i / N + phi_j),   i = 0..N-1,
+//   deterministic: A_j = sqrt(2 G_j dk)            (every realisation's periodogram = target)
+//   Rayleigh:      A_j = sqrt(2 G_j dk) sqrt(-ln u_j) (Gaussian field, E[A_j^2] = 2 G_j dk)
+//   phi_j = 2 pi v_j
+//
+// G_j = G(j dk) is the one-sided PSD at harmonic j of the fundamental dk = 2 pi / (N dx) (or
+// df = 1/(N dt) in time). The result has period N samples. DC and Nyquist carry no power.
+// Random numbers come in as U(0,1) arrays drawn by the caller (the engine's Philox streams),
+// so the kernel itself is deterministic.
+#include <cstddef>
+#include <vector>
+
+namespace rollspec::spectral {
+
+enum class Amplitudes { deterministic, rayleigh };
+
+class HarmonicSynthesiser {
+ public:
+  explicit HarmonicSynthesiser(std::size_t n_samples);
+  ~HarmonicSynthesiser();
+  HarmonicSynthesiser(const HarmonicSynthesiser&) = delete;
+  HarmonicSynthesiser& operator=(const HarmonicSynthesiser&) = delete;
+
+  std::size_t samples() const { return n_; }
+  std::size_t harmonics() const { return n_ / 2 + 1; }  // j = 0..N/2 (0 and N/2 unused)
+
+  // psd[j] = G(j * fundamental) for j = 0..N/2; u_phase and u_amplitude hold N/2+1 U(0,1)
+  // numbers each (u_amplitude ignored for deterministic amplitudes; entries 0 and N/2 unused).
+  // Writes N samples to out. Thread-safe (buffers are per call).
+  void synthesise(const double* psd, double fundamental, Amplitudes mode, const double* u_phase,
+                  const double* u_amplitude, double* out) const;
+
+ private:
+  std::size_t n_;
+  void* plan_;  // fftw_plan, c2r, made once
+};
+
+// Plain O(N * N/2) cosine sum of the same series: the reference oracle for tests.
+std::vector<double> synthesise_direct(const std::vector<double>& psd, double fundamental, Amplitudes mode,
+                                      const std::vector<double>& u_phase, const std::vector<double>& u_amplitude,
+                                      std::size_t n_samples);
+
+}  // namespace rollspec::spectral

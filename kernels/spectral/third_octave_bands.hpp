@@ -1,0 +1,30 @@
+#pragma once
+// IEC 61260-1 base-ten one-third-octave bands (theory D-17):
+//   f_m(x) = 1000 * 10^(x/10) Hz,  f_1,2 = f_m * 10^(-/+1/20),  x integer band index.
+// Band level = mean of the one-sided PSD over [f_1, f_2] (a density, same unit as the PSD), with
+// each bin k taken to cover [f_k - df/2, f_k + df/2] and weighted by its overlap with the band.
+#include <cstddef>
+#include <vector>
+
+namespace rollspec::spectral {
+
+struct Band {
+  int index;         // x in f_m = 1000 * 10^(x/10)
+  double centre;     // Hz, exact base-ten midband frequency
+  double lower;      // Hz
+  double upper;      // Hz
+  double nominal;    // Hz, the IEC nominal label (e.g. 1250 for x = 1)
+};
+
+Band third_octave_band(int index);
+
+// All bands whose edges lie inside [f_min, f_max].
+std::vector<Band> third_octave_bands(double f_min, double f_max);
+
+// Mean PSD over [lower, upper] for a PSD sampled at f_k = k df (k = 0..n-1).
+double band_average(const double* psd, std::size_t n, double df, double lower, double upper);
+
+// Number of bins (fractional, by overlap) that a band covers.
+double band_bins(double df, double lower, double upper);
+
+}  // namespace rollspec::spectral
