@@ -1,0 +1,85 @@
+#pragma once
+// Elastic–perfectly-plastic rough contact by constrained conjugate gradients
+// (Polonsky & Keer 1999, pressure cap after Almqvist et al. 2007; design.md D-6, D-7,
+// README Eq. 6–12).
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "kernels/contact/grid.hpp"
+#include "kernels/contact/half_space_operator.hpp"
+
+namespace rollspec::contact {
+
+struct SolverOptions {
+  // Pressure cap H (Pa), "hardness"; +inf means purely elastic. Must be > 0.
+  double hardness = std::numeric_limits<double>::infinity();
+  // Stopping rule (README Eq. 9): stop when ε = max_i e_i / g_ref < tolerance, with the natural
+  // KKT residual of the box-constrained problem (D-7), in length units,
+  //   e_i = c |p_i − Π_[0,H](p_i − g_i/c)|,   c = C_ii (self coefficient),
+  // i.e. e_i = |g_i| on cells with 0 < p_i < H (gap must close), max(0, −g_i) on p_i = 0 (no
+  // interpenetration), max(0, g_i) on p_i = H (a saturated cell must still be pressed), each capped
+  // by c·p_i resp. c·(H − p_i). g_ref = max_i (w − s_i), the largest rigid interference
+  // (displacement control); max_i s_i − min_i s_i in load control.
+  double tolerance = 1e-10;
+  // A solve that reaches this many iterations without meeting the stopping rule returns
+  // converged = false: its fields describe the last iterate, not a solution.
+  int max_iterations = 10000;
+  // Frozen-set stiffness k = dP/dw (README Eq. 11), by CG on the elastic contact cells, stopped at
+  // ‖1 − C_EE Δp‖₂ / ‖1‖₂ < stiffness_tolerance. Open boundary only (NaN for periodic).
+  bool compute_stiffness = true;
+  double stiffness_tolerance = 1e-12;
+  int stiffness_max_iterations = 10000;
+};
+
+struct ContactResult {
+  double approach = 0.0;        // rigid approach w (m): given, or found in load control
+  bool converged = false;       // stopping rule met (never true for an unfinished solve)
+  int iterations = 0;           // CG iterations (two half-space products each)
+  double error = 0.0;           // ε of README Eq. 9 at the returned field
+  double force = 0.0;           // P = ΔA Σ p_i (N), seed 001 Eq. 12
+  double contact_area = 0.0;    // ΔA · #{p_i > 0} (m²)
+  std::size_t contact_cells = 0;
+  std::size_t plastic_cells = 0;  // #{p_i = H}
+  double plastic_volume = 0.0;  // V_p = ΔA Σ_{p_i = H} max(0, −g_i) (m³), README Eq. 10
+  double max_pressure = 0.0;    // max_i p_i (Pa)
+  double stiffness = std::numeric_limits<double>::quiet_NaN();  // k = dP/dw (N/m), Eq. 11
+  bool stiffness_converged = false;
+  int stiffness_iterations = 0;
+};
+
+class ContactSolver {
+ public:
+  ContactSolver(const Grid& grid, double e_star, Boundary boundary = Boundary::Open,
+                PlannerEffort effort = PlannerEffort::Estimate);
+
+  // Displacement control: rigid approach w given (m). `gap` is the undeformed gap s (ball_gap).
+  // `pressure` (Pa, x-fastest) is the warm start on entry (empty or all zero: cold start) and the
+  // solution on return. Throws std::invalid_argument on size mismatch or hardness ≤ 0.
+  ContactResult solve(const std::vector<double>& gap, double approach, std::vector<double>& pressure,
+                      const SolverOptions& options = {});
+
+  // Load control (Polonsky & Keer's original form): mean pressure over the grid given (Pa), the
+  // approach w is the Lagrange multiplier. Needed for Boundary::Periodic. Requires hardness = +inf.
+  ContactResult solve_load(const std::vector<double>& gap, double mean_pressure, std::vector<double>& pressure,
+                           const SolverOptions& options = {});
+
+  // dp/dw on the frozen contact set from the last solve with stiffness (empty if none): the sweep
+  // uses it to extrapolate the warm start to the next approach.
+  const std::vector<double>& pressure_rate() const { return dp_; }
+
+  HalfSpaceOperator& half_space() { return op_; }
+  const Grid& grid() const { return op_.grid(); }
+
+ private:
+  ContactResult run(const std::vector<double>& gap, double target, bool load, std::vector<double>& pressure,
+                    const SolverOptions& options);
+  void frozen_stiffness(const std::vector<double>& pressure, const SolverOptions& options, ContactResult& result);
+
+  HalfSpaceOperator op_;
+  std::vector<double> u_, g_, t_, r_, x_;  // work arrays, one set per solver (thread-private use)
+  std::vector<unsigned char> set_;
+  std::vector<double> dp_;
+};
+
+}  // namespace rollspec::contact

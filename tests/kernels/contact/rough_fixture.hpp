@@ -1,0 +1,22 @@
+#pragma once
+// A deterministic rough ball contact (no RNG in tests): paraboloid plus a few crossed waves.
+#include <cmath>
+#include <vector>
+
+#include "hertz_fixture.hpp"
+
+namespace rollspec::contact::test {
+
+inline std::vector<double> wavy_heights(const Grid& grid, double amplitude, double wavelength) {
+  std::vector<double> h(grid.size());
+  const double q = 2 * kPi / wavelength;
+  for (std::size_t iy = 0; iy < grid.ny; ++iy)
+    for (std::size_t ix = 0; ix < grid.nx; ++ix) {
+      const double x = grid.x(ix), y = grid.y(iy);
+      h[iy * grid.nx + ix] = amplitude * (0.6 * std::cos(q * x + 0.3) * std::cos(1.3 * q * y) +
+                                          0.4 * std::sin(2.1 * q * (x + 0.5 * y) + 1.0));
+    }
+  return h;
+}
+
+}  // namespace rollspec::contact::test
