@@ -51,4 +51,18 @@ double band_average(const double* psd, std::size_t n, double df, double lower, d
   return acc / (upper - lower);
 }
 
+double band_average_irregular(const double* f, const double* psd, std::size_t n, double lower, double upper) {
+  if (n < 2 || f[0] > lower || f[n - 1] < upper) return std::nan("");
+  double acc = 0.0;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double a = std::max(f[i], lower), b = std::min(f[i + 1], upper);
+    if (b <= a) continue;
+    // Trapezoid of the linear interpolant over [a, b] inside [f_i, f_i+1].
+    const double slope = (psd[i + 1] - psd[i]) / (f[i + 1] - f[i]);
+    const double pa = psd[i] + slope * (a - f[i]), pb = psd[i] + slope * (b - f[i]);
+    acc += 0.5 * (pa + pb) * (b - a);
+  }
+  return acc / (upper - lower);
+}
+
 }  // namespace rollspec::spectral

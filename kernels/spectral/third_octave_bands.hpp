@@ -24,6 +24,10 @@ std::vector<Band> third_octave_bands(double f_min, double f_max);
 // Mean PSD over [lower, upper] for a PSD sampled at f_k = k df (k = 0..n-1).
 double band_average(const double* psd, std::size_t n, double df, double lower, double upper);
 
+// Mean over [lower, upper] of a PSD given on any increasing frequency grid f[0..n), integrating
+// its piecewise-linear interpolant. Returns NaN when the grid does not cover the band.
+double band_average_irregular(const double* f, const double* psd, std::size_t n, double lower, double upper);
+
 // Number of bins (fractional, by overlap) that a band covers.
 double band_bins(double df, double lower, double upper);
 

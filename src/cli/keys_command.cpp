@@ -1,0 +1,33 @@
+// rollspec keys: the documented study keys of a scene (unit, allowed values, default).
+#include <iostream>
+
+#include "src/cli/commands.hpp"
+#include "src/cli/parse_options.hpp"
+#include "src/scenes/scene.hpp"
+
+namespace rollspec::cli {
+
+int keys_command(const Args& args) {
+  const std::string usage = "usage: rollspec keys [SCENE]\n\nLists every study key of SCENE (or the scenes, without one).";
+  po::options_description opts("options");
+  std::string scene;
+  opts.add_options()("scene", po::value(&scene), "scene name");
+  po::positional_options_description pos;
+  pos.add("scene", 1);
+  po::variables_map vm;
+  if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  if (scene.empty()) {
+    for (const auto& s : scenes::scene_registry()) std::cout << s.name << ": " << s.description << "\n";
+    return 0;
+  }
+  std::string section;
+  for (const auto& k : scenes::schema_for(scene)) {
+    if (k.section != section) std::cout << (section.empty() ? "" : "\n") << "[" << k.section << "]\n";
+    section = k.section;
+    std::cout << "  " << k.key << " = " << (k.default_value ? *k.default_value : "(required)") << "\n      " << k.doc
+              << "\n      allowed: " << k.allowed() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace rollspec::cli

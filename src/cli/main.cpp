@@ -1,0 +1,66 @@
+// rollspec: Monte-Carlo spectral studies of rolling-contact vibration.
+//
+//   rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume] [--quiet]
+//   rollspec plan STUDY.ini
+//   rollspec psd SIGNAL.csv --fs HZ [--segment N] [--overlap F] [--window hann|rect] [--out FILE.csv]
+//   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor K] [--fmin HZ] [--fmax HZ] [--format table|csv]
+//   rollspec keys [SCENE]
+//   rollspec version
+//
+// Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
+// output, 78 bad configuration, 130 interrupted.
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "src/cli/commands.hpp"
+#include "src/error.hpp"
+
+namespace {
+
+const char* kUsage =
+    "rollspec: Monte-Carlo spectral studies of rolling-contact vibration\n"
+    "\n"
+    "usage: rollspec COMMAND [ARGS] (rollspec COMMAND --help for each)\n"
+    "\n"
+    "commands:\n"
+    "  run       run a study's ensemble and write the result file (HDF5)\n"
+    "  plan      show which stages a study runs, reuses from cache, or skips, and why\n"
+    "  psd       Welch PSD of a measured time series (CSV in, CSV out)\n"
+    "  compare   compare a result's band levels with a measured PSD\n"
+    "  keys      list the study keys of a scene with units, ranges and defaults\n"
+    "  version   print the version, git sha and library versions\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace rollspec;
+  if (argc < 2) {
+    std::cerr << kUsage;
+    return EX_USAGE;
+  }
+  const std::string command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::cout << kUsage;
+    return 0;
+  }
+  if (command == "--version") return cli::version_command({});
+  const std::map<std::string, int (*)(const cli::Args&)> commands = {
+      {"run", cli::run_command},         {"plan", cli::plan_command}, {"psd", cli::psd_command},
+      {"compare", cli::compare_command}, {"keys", cli::keys_command}, {"version", cli::version_command},
+  };
+  const auto it = commands.find(command);
+  if (it == commands.end()) {
+    std::cerr << "rollspec: unknown command '" << command << "'\n\n" << kUsage;
+    return EX_USAGE;
+  }
+  try {
+    return it->second(cli::Args(argv + 2, argv + argc));
+  } catch (const UserError& e) {
+    std::cerr << "rollspec " << command << ": error: " << e.what() << "\n";
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "rollspec " << command << ": internal error: " << e.what() << "\n";
+    return EX_SOFTWARE;
+  }
+}

@@ -1,0 +1,25 @@
+#include "src/cli/parse_options.hpp"
+
+#include <iostream>
+
+#include "src/error.hpp"
+
+namespace rollspec::cli {
+
+bool parse_options(const std::vector<std::string>& args, const std::string& usage, po::options_description& options,
+                   const po::positional_options_description& positional, po::variables_map& vm) {
+  options.add_options()("help,h", "print this help and exit");
+  try {
+    po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
+    if (vm.count("help")) {
+      std::cout << usage << "\n" << options << "\n";
+      return false;
+    }
+    po::notify(vm);
+  } catch (const po::error& e) {
+    throw usage_error(std::string(e.what()) + "\n\n" + usage + "\n(see --help)");
+  }
+  return true;
+}
+
+}  // namespace rollspec::cli

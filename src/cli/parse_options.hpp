@@ -1,0 +1,17 @@
+#pragma once
+// Command-line parsing shared by the subcommands (Boost.Program_options): usage errors become
+// UserError with exit 64, and --help prints the usage text.
+#include <boost/program_options.hpp>
+#include <string>
+#include <vector>
+
+namespace rollspec::cli {
+
+namespace po = boost::program_options;
+
+// Parses args against `options` and `positional`; returns false (after printing help to stdout)
+// when --help was given.
+bool parse_options(const std::vector<std::string>& args, const std::string& usage, po::options_description& options,
+                   const po::positional_options_description& positional, po::variables_map& vm);
+
+}  // namespace rollspec::cli

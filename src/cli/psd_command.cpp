@@ -1,0 +1,87 @@
+// rollspec psd: Welch PSD (D-15) of a measured time series, CSV in, CSV out.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "kernels/spectral/welch.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/parse_options.hpp"
+#include "src/error.hpp"
+#include "src/io/csv_table.hpp"
+
+namespace rollspec::cli {
+
+int psd_command(const Args& args) {
+  const std::string usage =
+      "usage: rollspec psd SIGNAL.csv --fs HZ [--segment N] [--overlap F] [--window hann|rect] [--out FILE.csv]\n"
+      "\n"
+      "One-sided Welch PSD of each column of SIGNAL.csv (a header line naming the channels, then one\n"
+      "sample per row). Segments are mean-detrended and windowed; density scaling (unit^2/Hz).\n"
+      "Output CSV: frequency_hz,<channel>,... (to stdout without --out).";
+  po::options_description opts("options");
+  std::string input, out, window = "hann";
+  double fs = 0.0, overlap = 0.5;
+  long long segment = 1024;
+  opts.add_options()("signal", po::value(&input)->required(), "input CSV")(
+      "fs", po::value(&fs)->required(), "sample rate (Hz)")("segment", po::value(&segment)->default_value(1024),
+                                                           "segment length (samples)")(
+      "overlap", po::value(&overlap)->default_value(0.5), "overlap as a fraction of the segment, in [0, 0.95]")(
+      "window", po::value(&window)->default_value("hann"), "hann or rect")("out,o", po::value(&out), "output CSV");
+  po::positional_options_description pos;
+  pos.add("signal", 1);
+  po::variables_map vm;
+  if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  if (!(fs > 0.0) || !std::isfinite(fs)) throw usage_error("--fs " + std::to_string(fs) + ": allowed: a finite number > 0 (Hz)");
+  if (segment < 4) throw usage_error("--segment " + std::to_string(segment) + ": allowed: a whole number >= 4");
+  if (!(overlap >= 0.0 && overlap <= 0.95)) throw usage_error("--overlap " + std::to_string(overlap) + ": allowed: a fraction in [0, 0.95]");
+  if (window != "hann" && window != "rect") throw usage_error("--window " + window + ": allowed: hann or rect");
+
+  const io::CsvTable t = io::read_csv(input);
+  if (t.rows() < static_cast<std::size_t>(segment))
+    throw data_error(input + ": " + std::to_string(t.rows()) + " samples, fewer than one segment (--segment " +
+                     std::to_string(segment) + ")");
+  spectral::WelchConfig cfg;
+  cfg.sample_rate = fs;
+  cfg.segment = static_cast<std::size_t>(segment);
+  cfg.overlap = static_cast<std::size_t>(std::floor(overlap * static_cast<double>(segment)));
+  cfg.window = window == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
+  const spectral::WelchPlan plan(cfg);
+  spectral::WelchWorkspace ws(cfg.segment);
+  std::vector<std::vector<double>> psd(t.columns.size(), std::vector<double>(plan.n_freq()));
+  for (std::size_t c = 0; c < t.columns.size(); ++c) plan.psd(t.values[c].data(), t.rows(), psd[c].data(), ws);
+
+  std::ostringstream s;
+  s << "frequency_hz";
+  for (const auto& c : t.columns) s << "," << c;
+  s << "\n";
+  const auto f = plan.frequencies();
+  char buf[32];
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    std::snprintf(buf, sizeof buf, "%.17g", f[k]);
+    s << buf;
+    for (const auto& col : psd) {
+      std::snprintf(buf, sizeof buf, "%.17g", col[k]);
+      s << "," << buf;
+    }
+    s << "\n";
+  }
+  if (out.empty()) {
+    std::cout << s.str();
+    return 0;
+  }
+  const std::string tmp = out + ".tmp";
+  {
+    std::ofstream o(tmp, std::ios::trunc);
+    o << s.str();
+    if (!o) throw cannot_create("cannot write " + tmp);
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, out, ec);
+  if (ec) throw cannot_create("cannot rename " + tmp + " to " + out + ": " + ec.message());
+  return 0;
+}
+
+}  // namespace rollspec::cli

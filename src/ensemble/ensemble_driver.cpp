@@ -1,0 +1,124 @@
+#include "src/ensemble/ensemble_driver.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <sstream>
+
+#include "src/ensemble/checkpoint.hpp"
+#include "src/ensemble/pairwise_tree.hpp"
+#include "src/ensemble/progress.hpp"
+#include "src/ensemble/stop_signal.hpp"
+#include "src/error.hpp"
+
+namespace rollspec::ensemble {
+
+int ensemble_threads() { return omp_get_max_threads(); }
+
+namespace {
+
+void check_finite(const double* v, std::size_t n, std::uint64_t id, std::uint64_t seed) {
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(v[i])) {
+      std::ostringstream s;
+      s << "realisation " << id << " (seed " << seed << ") produced a non-finite value (entry " << i
+        << "); rerun it alone with --only " << id << " to investigate";
+      throw data_error(s.str());
+    }
+}
+
+// Runs realisations [lo, hi) in parallel and returns the chunk's [sum, sum of squares].
+ChunkSums run_chunk(std::uint64_t lo, std::uint64_t hi, std::size_t n_values, const RealisationFn& realisation,
+                    std::uint64_t seed, Progress& progress) {
+  const auto count = static_cast<std::int64_t>(hi - lo);
+  std::vector<double> rows(static_cast<std::size_t>(count) * n_values);
+  std::exception_ptr failure;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t r = 0; r < count; ++r) {
+    if (failure || stop_requested()) continue;
+    try {
+      double* row = rows.data() + static_cast<std::size_t>(r) * n_values;
+      realisation(lo + static_cast<std::uint64_t>(r), omp_get_thread_num(), row);
+      check_finite(row, n_values, lo + static_cast<std::uint64_t>(r), seed);
+      progress.advance();
+    } catch (...) {
+#pragma omp critical(rollspec_ensemble_failure)
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  ChunkSums c;
+  c.lo = lo;
+  c.hi = hi;
+  if (stop_requested()) return c;  // empty: not complete
+  c.values = tree_sum(lo, hi, [&](std::uint64_t a, std::uint64_t b) {
+    std::vector<double> v;
+    if (b - a != 1) return v;
+    const double* row = rows.data() + (a - lo) * n_values;
+    v.resize(2 * n_values);
+    for (std::size_t i = 0; i < n_values; ++i) {
+      v[i] = row[i];
+      v[n_values + i] = row[i] * row[i];
+    }
+    return v;
+  });
+  return c;
+}
+
+}  // namespace
+
+EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const RealisationFn& realisation) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t K = cfg.realisations, C = cfg.chunk_size;
+  if (K == 0 || C == 0 || (C & (C - 1)) != 0) throw std::invalid_argument("ensemble needs K > 0 and a power-of-two chunk size");
+
+  CheckpointStore store(cfg.checkpoint_dir, cfg.study_hash);
+  std::map<std::uint64_t, ChunkSums> chunks;
+  if (!cfg.checkpoint_dir.empty()) {
+    if (cfg.resume) {
+      for (auto& [lo, c] : store.load(2 * n_values)) {
+        const std::uint64_t hi = std::min(lo + C, K);
+        if (lo % C == 0 && c.hi == hi) chunks[lo] = std::move(c);  // chunks of another size or count are recomputed
+      }
+    } else {
+      store.clear();
+    }
+  }
+  std::uint64_t reused = 0;
+  for (const auto& kv : chunks) reused += kv.second.hi - kv.second.lo;
+
+  Progress progress("realisations", K - reused, cfg.quiet, cfg.log_prefix);
+  EnsembleSums out;
+  for (std::uint64_t lo = 0; lo < K; lo += C) {
+    if (chunks.count(lo)) continue;
+    const std::uint64_t hi = std::min(lo + C, K);
+    ChunkSums c = run_chunk(lo, hi, n_values, realisation, cfg.seed, progress);
+    if (c.values.empty()) break;  // stopped
+    if (!cfg.checkpoint_dir.empty()) store.write(c);
+    out.computed += hi - lo;
+    chunks[lo] = std::move(c);
+  }
+  if (stop_requested()) {
+    std::ostringstream s;
+    s << "interrupted: " << (reused + out.computed) << " of " << K << " realisations are complete";
+    if (!cfg.checkpoint_dir.empty()) s << " and checkpointed in " << cfg.checkpoint_dir << "; finish with --resume";
+    throw UserError(kExitInterrupted, s.str());
+  }
+  progress.finish();
+
+  const std::vector<double> total = tree_sum(0, K, [&](std::uint64_t a, std::uint64_t b) {
+    const auto it = chunks.find(a);
+    if (it != chunks.end() && it->second.hi == b) return it->second.values;
+    return std::vector<double>();
+  });
+  out.sum.assign(total.begin(), total.begin() + static_cast<std::ptrdiff_t>(n_values));
+  out.sum_sq.assign(total.begin() + static_cast<std::ptrdiff_t>(n_values), total.end());
+  out.count = K;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace rollspec::ensemble

@@ -1,0 +1,28 @@
+#pragma once
+// Progress of a long loop on stderr: a bar with rate and ETA on a terminal, a log line every
+// few seconds otherwise, nothing when quiet. Safe to call from several threads.
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <mutex>
+#include <string>
+
+namespace rollspec::ensemble {
+
+class Progress {
+ public:
+  Progress(std::string label, std::uint64_t total, bool quiet, std::string prefix = "");
+  void advance(std::uint64_t n = 1);
+  void finish();
+
+ private:
+  void print(std::uint64_t done, bool final);
+  std::string label_, prefix_;
+  std::uint64_t total_;
+  bool quiet_, tty_;
+  std::atomic<std::uint64_t> done_{0};
+  std::chrono::steady_clock::time_point start_, last_;
+  std::mutex mutex_;
+};
+
+}  // namespace rollspec::ensemble

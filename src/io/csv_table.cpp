@@ -1,0 +1,97 @@
+#include "src/io/csv_table.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "src/error.hpp"
+
+namespace rollspec::io {
+
+namespace {
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) out.push_back(trim(cell));
+  if (!line.empty() && line.back() == ',') out.push_back("");
+  return out;
+}
+}  // namespace
+
+std::size_t CsvTable::column_index(const std::string& name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return i;
+  std::string found;
+  for (const auto& c : columns) found += (found.empty() ? "" : ", ") + c;
+  throw data_error(file + ":1: no column '" + name + "' in the header; columns found: " + found);
+}
+
+CsvTable read_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw missing_input("cannot open '" + path + "'");
+  CsvTable t;
+  t.file = path;
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.find('\0') != std::string::npos)
+      throw data_error(path + ":" + std::to_string(n) + ": binary data; expected CSV text");
+    const std::string s = trim(line);
+    if (s.empty() || s[0] == '#') continue;
+    const auto cells = split(s);
+    if (t.columns.empty()) {
+      for (const auto& c : cells) {
+        char* end = nullptr;
+        std::strtod(c.c_str(), &end);
+        if (!c.empty() && end != c.c_str() && *end == '\0')
+          throw data_error(path + ":" + std::to_string(n) + ": the first line must be a header naming the columns, found the number '" +
+                           c + "'");
+        if (c.empty()) throw data_error(path + ":" + std::to_string(n) + ": empty column name in the header");
+      }
+      t.columns = cells;
+      t.values.assign(cells.size(), {});
+      continue;
+    }
+    if (cells.size() != t.columns.size())
+      throw data_error(path + ":" + std::to_string(n) + ": " + std::to_string(cells.size()) + " values, but the header names " +
+                       std::to_string(t.columns.size()) + " columns");
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      char* end = nullptr;
+      const double v = std::strtod(cells[c].c_str(), &end);
+      if (cells[c].empty() || end == cells[c].c_str() || *end != '\0')
+        throw data_error(path + ":" + std::to_string(n) + ": column '" + t.columns[c] + "' value '" + cells[c] +
+                         "' is not a number");
+      if (!std::isfinite(v))
+        throw data_error(path + ":" + std::to_string(n) + ": column '" + t.columns[c] + "' value '" + cells[c] +
+                         "' is not finite; allowed: finite numbers");
+      t.values[c].push_back(v);
+    }
+    t.lines.push_back(n);
+  }
+  if (t.columns.empty()) throw data_error(path + ": empty file; expected a header line and data rows");
+  if (t.lines.empty()) throw data_error(path + ": header but no data rows");
+  return t;
+}
+
+void require_increasing(const CsvTable& t, std::size_t column) {
+  const auto& v = t.values[column];
+  for (std::size_t r = 1; r < v.size(); ++r)
+    if (!(v[r] > v[r - 1])) {
+      std::ostringstream s;
+      s.precision(17);
+      s << t.where(r) << ": column '" << t.columns[column] << "' value " << v[r]
+        << " does not increase (previous row: " << v[r - 1] << "); allowed: strictly increasing values";
+      throw data_error(s.str());
+    }
+}
+
+}  // namespace rollspec::io

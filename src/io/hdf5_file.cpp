@@ -1,0 +1,196 @@
+#include "src/io/hdf5_file.hpp"
+
+#include <H5DSpublic.h>
+#include <H5LTpublic.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "src/error.hpp"
+
+namespace rollspec::io {
+
+namespace {
+void close_id(hid_t id) {
+  if (id < 0) return;
+  switch (H5Iget_type(id)) {
+    case H5I_FILE: H5Fclose(id); break;
+    case H5I_GROUP: H5Gclose(id); break;
+    case H5I_DATASET: H5Dclose(id); break;
+    case H5I_DATASPACE: H5Sclose(id); break;
+    case H5I_DATATYPE: H5Tclose(id); break;
+    case H5I_ATTR: H5Aclose(id); break;
+    default: break;
+  }
+}
+
+Hdf5Handle open_object(hid_t file, const std::string& path) {
+  Hdf5Handle h(H5Oopen(file, path.c_str(), H5P_DEFAULT));
+  return h;
+}
+}  // namespace
+
+Hdf5Handle::~Hdf5Handle() { close_id(id_); }
+
+Hdf5Handle& Hdf5Handle::operator=(Hdf5Handle&& o) noexcept {
+  if (this != &o) {
+    close_id(id_);
+    id_ = o.id_;
+    o.id_ = -1;
+  }
+  return *this;
+}
+
+void quiet_hdf5_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+Hdf5Writer::Hdf5Writer(const std::string& final_path)
+    : final_path_(final_path), temp_path_(final_path + ".tmp-" + std::to_string(::getpid())) {
+  quiet_hdf5_errors();
+  file_ = Hdf5Handle(H5Fcreate(temp_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  if (!file_.valid()) throw cannot_create("cannot create output file '" + temp_path_ + "' (for " + final_path_ + ")");
+}
+
+Hdf5Writer::~Hdf5Writer() {
+  if (!committed_) {
+    file_ = Hdf5Handle();
+    std::remove(temp_path_.c_str());
+  }
+}
+
+void Hdf5Writer::ensure_parent_groups(const std::string& path) {
+  for (std::size_t pos = path.find('/', 1); pos != std::string::npos; pos = path.find('/', pos + 1)) {
+    const std::string g = path.substr(0, pos);
+    if (H5Lexists(file_.get(), g.c_str(), H5P_DEFAULT) > 0) continue;
+    Hdf5Handle h(H5Gcreate2(file_.get(), g.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    if (!h.valid()) throw cannot_create("cannot create group " + g + " in " + temp_path_);
+  }
+}
+
+void Hdf5Writer::write(const std::string& path, const std::vector<std::size_t>& dims, const double* data,
+                       const std::string& units, const std::string& description) {
+  ensure_parent_groups(path);
+  std::vector<hsize_t> d(dims.begin(), dims.end());
+  if (H5LTmake_dataset_double(file_.get(), path.c_str(), static_cast<int>(d.size()), d.data(), data) < 0)
+    throw cannot_create("cannot write dataset " + path + " to " + temp_path_);
+  attribute(path, "units", units);
+  if (!description.empty()) attribute(path, "description", description);
+}
+
+void Hdf5Writer::write_strings(const std::string& path, const std::vector<std::string>& values,
+                               const std::string& description) {
+  ensure_parent_groups(path);
+  Hdf5Handle type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  const hsize_t n = values.size();
+  Hdf5Handle space(H5Screate_simple(1, &n, nullptr));
+  Hdf5Handle set(H5Dcreate2(file_.get(), path.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  std::vector<const char*> ptrs;
+  for (const auto& v : values) ptrs.push_back(v.c_str());
+  if (!set.valid() || H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
+    throw cannot_create("cannot write dataset " + path + " to " + temp_path_);
+  attribute(path, "units", "1");
+  if (!description.empty()) attribute(path, "description", description);
+}
+
+void Hdf5Writer::make_scale(const std::string& scale, const std::string& name) {
+  Hdf5Handle s = open_object(file_.get(), scale);
+  if (!s.valid() || H5DSset_scale(s.get(), name.c_str()) < 0) throw cannot_create("cannot make dimension scale " + scale);
+}
+
+void Hdf5Writer::attach_scale(const std::string& dataset, const std::string& scale, unsigned dim) {
+  Hdf5Handle d = open_object(file_.get(), dataset), s = open_object(file_.get(), scale);
+  if (!d.valid() || !s.valid() || H5DSattach_scale(d.get(), s.get(), dim) < 0)
+    throw cannot_create("cannot attach dimension scale " + scale + " to " + dataset);
+}
+
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
+  if (H5LTset_attribute_string(file_.get(), object.c_str(), name.c_str(), value.c_str()) < 0)
+    throw cannot_create("cannot write attribute " + object + "@" + name);
+}
+
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, double value) {
+  if (H5LTset_attribute_double(file_.get(), object.c_str(), name.c_str(), &value, 1) < 0)
+    throw cannot_create("cannot write attribute " + object + "@" + name);
+}
+
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, std::int64_t value) {
+  long long v = value;
+  if (H5LTset_attribute_long_long(file_.get(), object.c_str(), name.c_str(), &v, 1) < 0)
+    throw cannot_create("cannot write attribute " + object + "@" + name);
+}
+
+void Hdf5Writer::commit() {
+  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) throw cannot_create("cannot flush " + temp_path_);
+  file_ = Hdf5Handle();
+  std::error_code ec;
+  std::filesystem::rename(temp_path_, final_path_, ec);
+  if (ec) throw cannot_create("cannot rename " + temp_path_ + " to " + final_path_ + ": " + ec.message());
+  committed_ = true;
+}
+
+Hdf5Reader::Hdf5Reader(const std::string& path) : path_(path) {
+  quiet_hdf5_errors();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw missing_input("cannot open '" + path + "': no such file");
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw data_error(path + ": not an HDF5 file (or truncated)");
+  file_ = Hdf5Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (!file_.valid()) throw data_error(path + ": cannot open as HDF5 (truncated or damaged)");
+}
+
+bool Hdf5Reader::exists(const std::string& object) const {
+  // Check every link along the path: H5Lexists fails on a missing intermediate group.
+  for (std::size_t pos = object.find('/', 1);; pos = object.find('/', pos + 1)) {
+    const std::string p = pos == std::string::npos ? object : object.substr(0, pos);
+    if (H5Lexists(file_.get(), p.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (pos == std::string::npos) return true;
+  }
+}
+
+std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std::size_t>* dims) const {
+  if (!exists(dataset)) throw data_error(path_ + ": no dataset " + dataset);
+  int rank = 0;
+  if (H5LTget_dataset_ndims(file_.get(), dataset.c_str(), &rank) < 0) throw data_error(path_ + ": cannot read " + dataset);
+  std::vector<hsize_t> d(static_cast<std::size_t>(rank));
+  H5T_class_t cls;
+  std::size_t size = 0;
+  if (H5LTget_dataset_info(file_.get(), dataset.c_str(), d.data(), &cls, &size) < 0 || cls != H5T_FLOAT)
+    throw data_error(path_ + ": dataset " + dataset + " is not floating point");
+  std::size_t n = 1;
+  for (auto v : d) n *= v;
+  std::vector<double> out(n);
+  if (H5LTread_dataset_double(file_.get(), dataset.c_str(), out.data()) < 0)
+    throw data_error(path_ + ": cannot read dataset " + dataset + " (truncated or damaged file)");
+  if (dims) dims->assign(d.begin(), d.end());
+  return out;
+}
+
+bool Hdf5Reader::has_attribute(const std::string& object, const std::string& name) const {
+  if (object != "/" && !exists(object)) return false;
+  return H5Aexists_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::string Hdf5Reader::string_attribute(const std::string& object, const std::string& name) const {
+  if (!has_attribute(object, name)) throw data_error(path_ + ": missing attribute " + object + "@" + name);
+  hsize_t d = 0;
+  H5T_class_t cls;
+  std::size_t size = 0;
+  if (H5LTget_attribute_info(file_.get(), object.c_str(), name.c_str(), &d, &cls, &size) < 0 || cls != H5T_STRING)
+    throw data_error(path_ + ": attribute " + object + "@" + name + " is not text");
+  std::string s(size + 1, '\0');
+  if (H5LTget_attribute_string(file_.get(), object.c_str(), name.c_str(), s.data()) < 0)
+    throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
+  s.resize(s.find('\0'));
+  return s;
+}
+
+double Hdf5Reader::double_attribute(const std::string& object, const std::string& name) const {
+  if (!has_attribute(object, name)) throw data_error(path_ + ": missing attribute " + object + "@" + name);
+  double v = 0.0;
+  if (H5LTget_attribute_double(file_.get(), object.c_str(), name.c_str(), &v) < 0)
+    throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
+  return v;
+}
+
+}  // namespace rollspec::io

@@ -1,0 +1,50 @@
+#include "src/io/provenance.hpp"
+
+#include <fftw3.h>
+#include <hdf5.h>
+
+#include <Eigen/Core>
+#include <boost/version.hpp>
+#include <sstream>
+
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/version.hpp"
+
+namespace rollspec::io {
+
+std::string library_versions() {
+  unsigned maj = 0, min = 0, rel = 0;
+  H5get_libversion(&maj, &min, &rel);
+  std::ostringstream s;
+  s << "hdf5 " << maj << "." << min << "." << rel << "; " << fftw_version << "; eigen " << EIGEN_WORLD_VERSION << "."
+    << EIGEN_MAJOR_VERSION << "." << EIGEN_MINOR_VERSION << "; boost " << BOOST_VERSION / 100000 << "."
+    << BOOST_VERSION / 100 % 1000 << "; compiler " << __VERSION__;
+  return s.str();
+}
+
+void write_provenance(Hdf5Writer& w, const std::string& filetype, const std::string& schema_version,
+                      const std::string& study_text, std::uint64_t seed) {
+  w.attribute("/", "filetype", filetype);
+  w.attribute("/", "schema_version", schema_version);
+  w.attribute("/", "rollspec_version", std::string(kVersion));
+  w.attribute("/", "git_sha", std::string(kGitSha));
+  w.attribute("/", "library_versions", library_versions());
+  w.attribute("/", "study", study_text);
+  w.attribute("/", "seed", static_cast<std::int64_t>(seed));
+  w.attribute("/", "rng", std::string(kRngName));
+}
+
+void check_filetype(const Hdf5Reader& r, const std::string& filetype, int schema_major) {
+  if (!r.has_attribute("/", "filetype"))
+    throw data_error(r.path() + ": not a rollspec file (no filetype attribute); expected filetype " + filetype);
+  const std::string ft = r.string_attribute("/", "filetype");
+  if (ft != filetype) throw data_error(r.path() + ": filetype is '" + ft + "'; expected '" + filetype + "'");
+  const std::string v = r.string_attribute("/", "schema_version");
+  const int major = std::atoi(v.c_str());
+  if (major != schema_major)
+    throw data_error(r.path() + ": schema_version " + v + " is not readable by this rollspec (reads major version " +
+                     std::to_string(schema_major) + ")");
+}
+
+}  // namespace rollspec::io

@@ -1,0 +1,26 @@
+#pragma once
+// Provenance every rollspec output file carries (OpenMC state_point habit): file type, versioned
+// schema, code version, git sha, library versions, seed, RNG and the resolved study text.
+// Readers check the file type and the schema's major version before reading any data.
+#include <cstdint>
+#include <string>
+
+namespace rollspec::io {
+
+class Hdf5Writer;
+class Hdf5Reader;
+
+constexpr const char* kResultFileType = "rollspec-result";
+constexpr int kResultSchemaMajor = 1;
+constexpr const char* kResultSchemaVersion = "1.0";
+constexpr const char* kRngName = "philox4x64-10";
+
+std::string library_versions();
+
+void write_provenance(Hdf5Writer& w, const std::string& filetype, const std::string& schema_version,
+                      const std::string& study_text, std::uint64_t seed);
+
+// Refuses (exit 65) a file whose filetype differs or whose schema major version is unknown.
+void check_filetype(const Hdf5Reader& r, const std::string& filetype, int schema_major);
+
+}  // namespace rollspec::io

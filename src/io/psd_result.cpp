@@ -1,0 +1,78 @@
+#include "src/io/psd_result.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/spectral/confidence.hpp"
+#include "kernels/spectral/third_octave_bands.hpp"
+#include "src/io/hdf5_file.hpp"
+
+namespace rollspec::io {
+
+double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins) {
+  return dof_per_bin * std::max(1.0, band_width / (df * enbw_bins));
+}
+
+void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
+  const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
+  const double df = e.frequency.size() > 1 ? e.frequency[1] - e.frequency[0] : 1.0;
+  const auto f = spectral::chi_square_interval(e.dof_per_bin, e.confidence);
+  std::vector<double> lo(e.mean.size()), hi(e.mean.size());
+  for (std::size_t i = 0; i < e.mean.size(); ++i) {
+    lo[i] = e.mean[i] * f.lower;
+    hi[i] = e.mean[i] * f.upper;
+  }
+  w.write("/psd/frequency", {nf}, e.frequency.data(), "Hz", "frequency of the one-sided PSD bins");
+  w.write_strings("/psd/sensor", e.sensors, "sensor names");
+  w.write("/psd/mean", {ns, nf}, e.mean.data(), e.units, "ensemble mean of the one-sided Welch PSD of the " + e.quantity);
+  w.write("/psd/ci_lower", {ns, nf}, lo.data(), e.units, "lower bound of the chi-square confidence interval");
+  w.write("/psd/ci_upper", {ns, nf}, hi.data(), e.units, "upper bound of the chi-square confidence interval");
+  w.write("/psd/std", {ns, nf}, e.std_dev.data(), e.units, "ensemble standard deviation of one realisation's PSD");
+  w.make_scale("/psd/frequency", "frequency");
+  w.make_scale("/psd/sensor", "sensor");
+  for (const char* d : {"/psd/mean", "/psd/ci_lower", "/psd/ci_upper", "/psd/std"}) {
+    w.attach_scale(d, "/psd/sensor", 0);
+    w.attach_scale(d, "/psd/frequency", 1);
+  }
+  w.attribute("/psd", "realisations", static_cast<std::int64_t>(e.realisations));
+  w.attribute("/psd", "degrees_of_freedom", e.dof_per_bin);
+  w.attribute("/psd", "confidence_level", e.confidence);
+  w.attribute("/psd", "window_enbw_bins", e.window_enbw_bins);
+  w.attribute("/psd", "quantity", e.quantity);
+
+  const auto bands = spectral::third_octave_bands(std::max(e.band_min, df), std::min(e.band_max, e.frequency.back()));
+  const std::size_t nb = bands.size();
+  std::vector<double> centre(nb), nominal(nb), lower(nb), upper(nb), dof(nb), level(ns * nb), cil(ns * nb), ciu(ns * nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    centre[b] = bands[b].centre;
+    nominal[b] = bands[b].nominal;
+    lower[b] = bands[b].lower;
+    upper[b] = bands[b].upper;
+    dof[b] = band_dof(e.dof_per_bin, bands[b].upper - bands[b].lower, df, e.window_enbw_bins);
+    const auto fb = spectral::chi_square_interval(dof[b], e.confidence);
+    for (std::size_t s = 0; s < ns; ++s) {
+      const double avg = spectral::band_average(e.mean.data() + s * nf, nf, df, bands[b].lower, bands[b].upper);
+      level[s * nb + b] = 10.0 * std::log10(avg);
+      cil[s * nb + b] = 10.0 * std::log10(avg * fb.lower);
+      ciu[s * nb + b] = 10.0 * std::log10(avg * fb.upper);
+    }
+  }
+  w.write("/bands/centre_frequency", {nb}, centre.data(), "Hz", "IEC 61260-1 base-ten third-octave midband frequency");
+  w.write("/bands/nominal_frequency", {nb}, nominal.data(), "Hz", "IEC 61260-1 nominal midband frequency");
+  w.write("/bands/lower_frequency", {nb}, lower.data(), "Hz", "lower band edge");
+  w.write("/bands/upper_frequency", {nb}, upper.data(), "Hz", "upper band edge");
+  w.write("/bands/degrees_of_freedom", {nb}, dof.data(), "1", "chi-square degrees of freedom of the band level");
+  const std::string db = "dB re 1 " + e.units;
+  w.write("/bands/level_db", {ns, nb}, level.data(), db, "band-averaged PSD level");
+  w.write("/bands/ci_lower_db", {ns, nb}, cil.data(), db, "lower bound of the band level's confidence interval");
+  w.write("/bands/ci_upper_db", {ns, nb}, ciu.data(), db, "upper bound of the band level's confidence interval");
+  w.make_scale("/bands/centre_frequency", "band");
+  for (const char* d : {"/bands/nominal_frequency", "/bands/lower_frequency", "/bands/upper_frequency", "/bands/degrees_of_freedom"})
+    w.attach_scale(d, "/bands/centre_frequency", 0);
+  for (const char* d : {"/bands/level_db", "/bands/ci_lower_db", "/bands/ci_upper_db"}) {
+    w.attach_scale(d, "/psd/sensor", 0);
+    w.attach_scale(d, "/bands/centre_frequency", 1);
+  }
+}
+
+}  // namespace rollspec::io

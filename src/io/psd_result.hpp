@@ -1,0 +1,38 @@
+#pragma once
+// The spectral part of a result file, shared by every scene (schema 1):
+//   /psd/frequency (Hz, scale "frequency"), /psd/sensor (names, scale "sensor"),
+//   /psd/mean, /psd/ci_lower, /psd/ci_upper, /psd/std   (sensor x frequency, PSD unit)
+//   /bands/centre_frequency (Hz, scale "band"), /bands/nominal_frequency, /bands/lower_frequency,
+//   /bands/upper_frequency, /bands/level_db, /bands/ci_lower_db, /bands/ci_upper_db (sensor x band),
+//   /bands/degrees_of_freedom (band)
+// The interval is chi-square (theory D-16) with nu = K * nu_Welch per bin, and per band
+// nu_band = nu_bin * max(1, B / (df * ENBW)) for B the band width (D-17: bins closer than the
+// window's noise bandwidth are correlated, so they add fewer degrees of freedom).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rollspec::io {
+
+class Hdf5Writer;
+
+struct PsdEnsemble {
+  std::vector<double> frequency;       // Hz, uniform from 0
+  std::vector<std::string> sensors;
+  std::vector<double> mean;            // sensors x frequency
+  std::vector<double> std_dev;         // ensemble standard deviation of one realisation's PSD
+  std::uint64_t realisations = 0;
+  double dof_per_bin = 0.0;            // of the ensemble mean
+  double window_enbw_bins = 1.5;
+  double confidence = 0.95;
+  double band_min = 0.0, band_max = 0.0;  // Hz
+  std::string units = "(m/s^2)^2/Hz";
+  std::string quantity = "acceleration";
+};
+
+void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);
+
+// Band degrees of freedom from the per-bin value (D-17).
+double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins);
+
+}  // namespace rollspec::io

@@ -1,0 +1,51 @@
+#pragma once
+// Counter-based random streams (Random123 Philox4x64-10), keyed by (study seed, realisation id).
+//
+// Every random draw of a realisation comes from its own key, so a realisation's numbers never
+// depend on thread count, rank count, scheduling or restarts. A realisation may open several
+// independent streams (one per purpose: force phases, roughness phases, ...) by the stream tag,
+// which occupies one word of the counter, the draw index the other.
+#include <Random123/philox.h>
+#include <Random123/u01fixedpt.h>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace rollspec::rng {
+
+// Stream tags: one per purpose, so adding a new random input never shifts another's numbers.
+enum class Stream : std::uint64_t {
+  force_phase = 1,
+  force_amplitude = 2,
+  roughness_phase = 3,
+  roughness_amplitude = 4,
+  surface_phase = 5,
+  surface_amplitude = 6,
+  blocked_force_phase = 7,
+  blocked_force_amplitude = 8,
+};
+
+class PhiloxStream {
+ public:
+  PhiloxStream(std::uint64_t seed, std::uint64_t realisation, Stream stream)
+      : key_{{seed, realisation}}, tag_(static_cast<std::uint64_t>(stream)) {}
+
+  // Fills out[0..n) with doubles uniform on the open interval (0, 1) (never 0 or 1, so log(u)
+  // and 1/u are safe), 4 per Philox block.
+  void uniform_open(double* out, std::size_t n) const {
+    using Philox = r123::Philox4x64;
+    Philox gen;
+    Philox::ctr_type ctr = {{0, 0, tag_, 0}};
+    for (std::size_t i = 0; i < n; i += 4) {
+      ctr[0] = i / 4;
+      const Philox::ctr_type r = gen(ctr, key_);
+      for (std::size_t k = 0; k < 4 && i + k < n; ++k) out[i + k] = u01fixedpt_open_open_64_double(r[k]);
+    }
+  }
+
+ private:
+  r123::Philox4x64::key_type key_;
+  std::uint64_t tag_;
+};
+
+}  // namespace rollspec::rng

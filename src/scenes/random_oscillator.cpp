@@ -1,0 +1,195 @@
+#include "src/scenes/random_oscillator.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <complex>
+
+#include "kernels/integrators/exact_oscillator_step.hpp"
+#include "kernels/spectral/harmonic_synthesis.hpp"
+#include "kernels/spectral/welch.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/io/psd_result.hpp"
+#include "src/rng/philox_stream.hpp"
+#include "src/study/study.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+
+std::vector<KeySpec> random_oscillator_keys() {
+  const double inf = std::numeric_limits<double>::infinity();
+  return {
+      real_key("oscillator", "mass", "kg", "oscillator mass m", std::string("1"), 0.0, inf, false),
+      real_key("oscillator", "natural_frequency", "Hz", "undamped natural frequency f_n", std::nullopt, 0.0, inf, false),
+      real_key("oscillator", "damping_ratio", "-", "viscous damping ratio zeta", std::string("0.02"), 0.0, 10.0, false),
+      choice_key("force", "spectrum", "force PSD shape: flat up to f_max", std::string("flat"), {"flat"}),
+      real_key("force", "level", "N^2/Hz", "one-sided force PSD S_F of the flat spectrum", std::string("1"), 0.0, inf,
+               false),
+      real_key("force", "f_max", "Hz", "highest force frequency; 0 means the Nyquist frequency", std::string("0"), 0.0,
+               inf),
+      choice_key("force", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian force) or deterministic (D-3)",
+                 std::string("rayleigh"), {"rayleigh", "deterministic"}),
+      real_key("signal", "sample_rate", "Hz", "sample rate f_s of force and response", std::string("2048"), 0.0, inf,
+               false),
+      real_key("signal", "duration", "s", "length of one realisation's record (the force's period)", std::string("32"),
+               0.0, inf, false),
+  };
+}
+
+namespace {
+
+struct Workspace {
+  explicit Workspace(std::size_t n, std::size_t segment)
+      : force(n), accel(n), u_phase(n / 2 + 1), u_amp(n / 2 + 1), welch(segment) {}
+  std::vector<double> force, accel, u_phase, u_amp;
+  spectral::WelchWorkspace welch;
+};
+
+class RandomOscillator final : public Scene {
+ public:
+  explicit RandomOscillator(const Study& s)
+      : seed_(static_cast<std::uint64_t>(s.integer("study.seed"))),
+        mass_(s.real("oscillator.mass")),
+        fn_(s.real("oscillator.natural_frequency")),
+        zeta_(s.real("oscillator.damping_ratio")),
+        fs_(s.real("signal.sample_rate")),
+        mode_(s.text("force.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh
+                                                         : spectral::Amplitudes::deterministic),
+        level_(s.real("force.level")),
+        confidence_(s.real("spectrum.confidence")),
+        band_min_(s.real("spectrum.band_min")),
+        band_max_(s.real("spectrum.band_max")) {
+    // Cross-key checks, each naming the key that must change.
+    const double samples = std::round(s.real("signal.duration") * fs_ / 2.0) * 2.0;
+    if (samples < 4 || samples > 1e9)
+      s.refuse("signal.duration", "gives " + std::to_string(samples) + " samples at the sample rate; allowed: 4 to 1e9 samples");
+    n_ = static_cast<std::size_t>(samples);
+    if (fn_ >= fs_ / 2) s.refuse("oscillator.natural_frequency", "must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs_ / 2) + " Hz");
+    f_max_ = s.real("force.f_max") == 0.0 ? fs_ / 2 : s.real("force.f_max");
+    if (f_max_ > fs_ / 2) s.refuse("force.f_max", "exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs_ / 2) + " Hz");
+    const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
+    if (segment > n_)
+      s.refuse("spectrum.segment", "is longer than one realisation's record (" + std::to_string(n_) + " samples = duration x sample_rate)");
+    spectral::WelchConfig wc;
+    wc.sample_rate = fs_;
+    wc.segment = segment;
+    wc.overlap = static_cast<std::size_t>(std::floor(s.real("spectrum.overlap") * static_cast<double>(segment)));
+    wc.window = s.text("spectrum.window") == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
+    welch_ = std::make_unique<spectral::WelchPlan>(wc);
+    synth_ = std::make_unique<spectral::HarmonicSynthesiser>(n_);
+    df_ = fs_ / static_cast<double>(n_);
+    psd_at_harmonics_.resize(synth_->harmonics());
+    for (std::size_t j = 0; j < psd_at_harmonics_.size(); ++j)
+      psd_at_harmonics_[j] = force_psd(df_ * static_cast<double>(j));
+    omega_ = 2.0 * M_PI * fn_;
+    step_ = integrators::ExactOscillatorStep::make(omega_, zeta_, 1.0 / fs_);
+    // Phi^N, the free response over one period, for the periodic steady state.
+    Eigen::Matrix2d phi;
+    phi << step_.a00, step_.a01, step_.a10, step_.a11;
+    Eigen::Matrix2d p = Eigen::Matrix2d::Identity(), b = phi;
+    for (std::size_t e = n_; e; e >>= 1, b = b * b)
+      if (e & 1) p = p * b;
+    periodic_inverse_ = (Eigen::Matrix2d::Identity() - p).inverse();
+    for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(n_, segment));
+  }
+
+  std::vector<StagePlan> plan() const override {
+    return {
+        {"texture", StageStatus::skipped, "the scene has no rough surface"},
+        {"surface", StageStatus::skipped, "the scene has no contact"},
+        {"stiffness_table", StageStatus::skipped, "the scene has no contact"},
+        {"blocked_force", StageStatus::skipped, "the scene has no contact"},
+        {"force", StageStatus::run, "synthesised per realisation from [force] (Philox streams force_phase, force_amplitude)"},
+        {"dynamics", StageStatus::run, "exact first-order-hold oscillator step from the periodic steady state"},
+        {"spectra", StageStatus::run, "Welch PSD of the acceleration, averaged over realisations"},
+    };
+  }
+
+  std::size_t values_per_realisation() const override { return welch_->n_freq(); }
+
+  void run_realisation(std::uint64_t id, int thread, double* values) const override {
+    Workspace& ws = *workspaces_[static_cast<std::size_t>(thread)];
+    const std::size_t nh = synth_->harmonics();
+    rng::PhiloxStream(seed_, id, rng::Stream::force_phase).uniform_open(ws.u_phase.data(), nh);
+    rng::PhiloxStream(seed_, id, rng::Stream::force_amplitude).uniform_open(ws.u_amp.data(), nh);
+    synth_->synthesise(psd_at_harmonics_.data(), df_, mode_, ws.u_phase.data(), ws.u_amp.data(), ws.force.data());
+    for (double& f : ws.force) f /= mass_;
+    // Pass 1 from rest over one period gives the forced part r; the periodic start is (I - Phi^N)^-1 r.
+    double q = 0.0, v = 0.0;
+    for (std::size_t i = 0; i < n_; ++i) step_.advance(q, v, ws.force[i], ws.force[(i + 1) % n_]);
+    const Eigen::Vector2d start = periodic_inverse_ * Eigen::Vector2d(q, v);
+    q = start(0);
+    v = start(1);
+    const double c = 2.0 * zeta_ * omega_, k = omega_ * omega_;
+    for (std::size_t i = 0; i < n_; ++i) {
+      ws.accel[i] = ws.force[i] - c * v - k * q;
+      step_.advance(q, v, ws.force[i], ws.force[(i + 1) % n_]);
+    }
+    welch_->psd(ws.accel.data(), n_, values, ws.welch);
+  }
+
+  void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
+    io::PsdEnsemble e;
+    e.frequency = welch_->frequencies();
+    e.sensors = {"mass"};
+    const double K = static_cast<double>(sums.count);
+    e.mean.resize(sums.sum.size());
+    e.std_dev.resize(sums.sum.size());
+    for (std::size_t i = 0; i < sums.sum.size(); ++i) {
+      e.mean[i] = sums.sum[i] / K;
+      e.std_dev[i] = sums.count > 1 ? std::sqrt(std::max(0.0, (sums.sum_sq[i] - K * e.mean[i] * e.mean[i]) / (K - 1))) : 0.0;
+    }
+    e.realisations = sums.count;
+    e.dof_per_bin = K * welch_->equivalent_dof(n_);
+    e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
+    e.confidence = confidence_;
+    e.band_min = band_min_;
+    e.band_max = band_max_;
+    io::write_psd_result(w, e);
+
+    std::vector<double> exact(e.frequency.size());
+    for (std::size_t i = 0; i < exact.size(); ++i)
+      exact[i] = random_oscillator_exact_psd(e.frequency[i], force_psd(e.frequency[i]), mass_, fn_, zeta_, fs_);
+    w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units,
+            "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator (D-19)");
+    w.attach_scale("/reference/psd", "/psd/sensor", 0);
+    w.attach_scale("/reference/psd", "/psd/frequency", 1);
+    w.write("/oscillator/force_psd", {1}, &level_, "N^2/Hz", "flat force PSD level");
+    w.attribute("/oscillator", "mass", mass_);
+    w.attribute("/oscillator", "natural_frequency", fn_);
+    w.attribute("/oscillator", "damping_ratio", zeta_);
+    w.attribute("/oscillator", "sample_rate", fs_);
+  }
+
+ private:
+  double force_psd(double f) const { return (f > 0.0 && f <= f_max_) ? level_ : 0.0; }
+
+  std::uint64_t seed_;
+  double mass_, fn_, zeta_, fs_;
+  spectral::Amplitudes mode_;
+  double level_, confidence_, band_min_, band_max_;
+  double f_max_ = 0.0, df_ = 0.0, omega_ = 0.0;
+  std::size_t n_ = 0;
+  std::unique_ptr<spectral::WelchPlan> welch_;
+  std::unique_ptr<spectral::HarmonicSynthesiser> synth_;
+  std::vector<double> psd_at_harmonics_;
+  integrators::ExactOscillatorStep step_{};
+  Eigen::Matrix2d periodic_inverse_;
+  std::vector<std::unique_ptr<Workspace>> workspaces_;
+};
+
+}  // namespace
+
+std::unique_ptr<Scene> make_random_oscillator(const Study& s) { return std::make_unique<RandomOscillator>(s); }
+
+double random_oscillator_exact_psd(double f, double s_f, double mass, double natural_frequency, double damping_ratio,
+                                   double sample_rate) {
+  const double w = 2.0 * M_PI * f, wn = 2.0 * M_PI * natural_frequency;
+  const double x = M_PI * f / sample_rate;
+  const double hold = x == 0.0 ? 1.0 : std::sin(x) / x;
+  const std::complex<double> restoring(wn * wn, 2.0 * damping_ratio * wn * w);
+  const std::complex<double> h = 1.0 - hold * hold * restoring / (restoring - w * w);
+  return std::norm(h) * s_f / (mass * mass);
+}
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,81 @@
+#include <sstream>
+
+#include "src/ensemble/checkpoint.hpp"
+#include "src/error.hpp"
+#include "src/scenes/random_oscillator.hpp"
+#include "src/scenes/scene.hpp"
+#include "src/study/study.hpp"
+#include "src/version.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+
+const char* to_string(StageStatus s) {
+  switch (s) {
+    case StageStatus::run: return "run";
+    case StageStatus::cached: return "cached";
+    case StageStatus::skipped: return "skipped";
+  }
+  return "?";
+}
+
+const std::vector<SceneInfo>& scene_registry() {
+  static const std::vector<SceneInfo> scenes = {
+      {"random-oscillator",
+       "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
+       random_oscillator_keys, [](const Study& s) { return make_random_oscillator(s); }},
+  };
+  return scenes;
+}
+
+const SceneInfo& find_scene(const std::string& name) {
+  std::string names;
+  for (const auto& s : scene_registry()) {
+    if (s.name == name) return s;
+    names += (names.empty() ? "" : ", ") + s.name;
+  }
+  throw config_error("[study] scene = " + name + ": unknown scene; allowed: one of " + names);
+}
+
+std::vector<KeySpec> common_keys() {
+  std::vector<std::string> names;
+  for (const auto& s : scene_registry()) names.push_back(s.name);
+  return {
+      choice_key("study", "scene", "the scene every realisation runs", std::nullopt, names),
+      integer_key("study", "realisations", "number of Monte-Carlo realisations K", std::nullopt, 1, 1e9),
+      integer_key("study", "seed", "study seed; realisation i draws from Philox keyed by (seed, i)", std::nullopt, 0,
+                  9.0e18),
+      text_key("study", "description", "free text describing the study", std::string("")),
+      [] {
+        KeySpec k = integer_key("ensemble", "chunk_size",
+                                "realisations per checkpointed chunk (a power of two; does not change the result)",
+                                std::string("16"), 1, 1 << 20);
+        k.power_of_two = true;
+        return k;
+      }(),
+      integer_key("spectrum", "segment", "Welch segment length in samples", std::string("4096"), 16, 1 << 24),
+      real_key("spectrum", "overlap", "-", "Welch segment overlap as a fraction of the segment", std::string("0.5"), 0.0,
+               0.95),
+      choice_key("spectrum", "window", "Welch data window", std::string("hann"), {"hann", "rectangular"}),
+      real_key("spectrum", "band_min", "Hz", "lowest third-octave band edge reported", std::string("10"), 0.0, 1e9, false),
+      real_key("spectrum", "band_max", "Hz", "highest third-octave band edge reported (capped at Nyquist)",
+               std::string("1e9"), 0.0, 1e9, false),
+      real_key("spectrum", "confidence", "-", "confidence level of the chi-square interval", std::string("0.95"), 0.5,
+               0.999),
+  };
+}
+
+std::vector<KeySpec> schema_for(const std::string& scene) {
+  std::vector<KeySpec> keys = common_keys();
+  const auto extra = find_scene(scene).keys();
+  keys.insert(keys.end(), extra.begin(), extra.end());
+  return keys;
+}
+
+std::uint64_t study_result_hash(const Study& s) {
+  return ensemble::fnv1a64(std::string(kVersion) + "\n" +
+                           s.canonical_text_without({"study.realisations", "study.description", "ensemble.chunk_size"}));
+}
+
+}  // namespace rollspec::scenes

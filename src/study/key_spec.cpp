@@ -1,0 +1,105 @@
+#include "src/study/key_spec.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace rollspec::study {
+
+namespace {
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+}  // namespace
+
+std::string KeySpec::allowed() const {
+  std::ostringstream s;
+  switch (type) {
+    case KeyType::real:
+    case KeyType::integer: {
+      s << (type == KeyType::real ? "a finite number" : "a whole number");
+      const bool lo = std::isfinite(min), hi = std::isfinite(max);
+      if (lo && hi) {
+        s << " in " << (min_inclusive ? "[" : "(") << number(min) << ", " << number(max) << (max_inclusive ? "]" : ")");
+      } else if (lo) {
+        s << (min_inclusive ? " >= " : " > ") << number(min);
+      } else if (hi) {
+        s << (max_inclusive ? " <= " : " < ") << number(max);
+      }
+      if (power_of_two) s << ", a power of two";
+      if (unit != "-") s << " (" << unit << ")";
+      break;
+    }
+    case KeyType::choice: {
+      s << "one of ";
+      for (std::size_t i = 0; i < choices.size(); ++i) s << (i ? ", " : "") << choices[i];
+      break;
+    }
+    case KeyType::text: s << "text"; break;
+    case KeyType::path: s << "the path of an existing file (relative to the study file), or none"; break;
+    case KeyType::boolean: s << "true or false"; break;
+  }
+  return s.str();
+}
+
+KeySpec real_key(std::string section, std::string key, std::string unit, std::string doc,
+                 std::optional<std::string> default_value, double min, double max, bool min_inclusive,
+                 bool max_inclusive) {
+  KeySpec k;
+  k.section = std::move(section);
+  k.key = std::move(key);
+  k.type = KeyType::real;
+  k.unit = std::move(unit);
+  k.doc = std::move(doc);
+  k.default_value = std::move(default_value);
+  k.min = min;
+  k.max = max;
+  k.min_inclusive = min_inclusive;
+  k.max_inclusive = max_inclusive;
+  return k;
+}
+
+KeySpec integer_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value,
+                    double min, double max) {
+  KeySpec k = real_key(std::move(section), std::move(key), "-", std::move(doc), std::move(default_value), min, max);
+  k.type = KeyType::integer;
+  return k;
+}
+
+KeySpec choice_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value,
+                   std::vector<std::string> choices) {
+  KeySpec k;
+  k.section = std::move(section);
+  k.key = std::move(key);
+  k.type = KeyType::choice;
+  k.doc = std::move(doc);
+  k.default_value = std::move(default_value);
+  k.choices = std::move(choices);
+  return k;
+}
+
+KeySpec text_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value) {
+  KeySpec k;
+  k.section = std::move(section);
+  k.key = std::move(key);
+  k.type = KeyType::text;
+  k.doc = std::move(doc);
+  k.default_value = std::move(default_value);
+  return k;
+}
+
+KeySpec path_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value) {
+  KeySpec k = text_key(std::move(section), std::move(key), std::move(doc), std::move(default_value));
+  k.type = KeyType::path;
+  return k;
+}
+
+KeySpec bool_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value) {
+  KeySpec k = text_key(std::move(section), std::move(key), std::move(doc), std::move(default_value));
+  k.type = KeyType::boolean;
+  return k;
+}
+
+}  // namespace rollspec::study

@@ -1,0 +1,310 @@
+#include "src/study/study.hpp"
+
+#include <algorithm>
+#include <boost/program_options.hpp>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "src/error.hpp"
+
+namespace po = boost::program_options;
+namespace fs = std::filesystem;
+
+namespace rollspec::study {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+struct RawEntry {
+  std::string full_key;
+  std::string value;
+  int line;
+};
+
+// Where each "section.key" sits in the file, in file order, with the syntax checked line by line
+// so a malformed line is reported with its number (Boost.Program_options would only quote it).
+std::vector<RawEntry> scan_lines(const std::string& file, const std::string& text) {
+  std::vector<RawEntry> out;
+  std::istringstream in(text);
+  std::string raw, section;
+  int line = 0;
+  while (std::getline(in, raw)) {
+    ++line;
+    if (raw.find('\0') != std::string::npos)
+      throw config_error(file + ":" + std::to_string(line) + ": the study file holds binary data; expected INI text");
+    std::string s = raw;
+    const auto hash = s.find('#');
+    if (hash != std::string::npos) s = s.substr(0, hash);
+    s = trim(s);
+    if (s.empty() || s[0] == ';') continue;
+    if (s.front() == '[') {
+      if (s.back() != ']' || s.size() < 3)
+        throw config_error(file + ":" + std::to_string(line) + ": malformed section header '" + trim(raw) +
+                           "'; expected [name]");
+      section = trim(s.substr(1, s.size() - 2));
+      continue;
+    }
+    const auto eq = s.find('=');
+    if (eq == std::string::npos)
+      throw config_error(file + ":" + std::to_string(line) + ": cannot read '" + trim(raw) +
+                         "'; expected [section] or key = value");
+    const std::string key = trim(s.substr(0, eq));
+    if (key.empty()) throw config_error(file + ":" + std::to_string(line) + ": a line '= value' has no key");
+    if (section.empty())
+      throw config_error(file + ":" + std::to_string(line) + ": key '" + key +
+                         "' stands before any [section]; every key belongs to a section");
+    out.push_back({section + "." + key, trim(s.substr(eq + 1)), line});
+  }
+  return out;
+}
+
+std::string format_real(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+bool is_power_of_two(long long v) { return v > 0 && (v & (v - 1)) == 0; }
+
+// Validates one value against its key; returns the canonical text of the value.
+std::string check_value(const KeySpec& spec, const std::string& value, const Origin& origin,
+                        const std::string& directory) {
+  const std::string head = origin.describe() + ": [" + spec.section + "] " + spec.key + " = " + value + ": ";
+  const std::string allowed = "; allowed: " + spec.allowed();
+  if (value.empty()) throw config_error(origin.describe() + ": [" + spec.section + "] " + spec.key + " has no value" + allowed);
+  switch (spec.type) {
+    case KeyType::real: {
+      char* end = nullptr;
+      const double v = std::strtod(value.c_str(), &end);
+      if (end == value.c_str() || *end != '\0') throw config_error(head + "not a number" + allowed);
+      if (std::isnan(v)) throw config_error(head + "NaN is not a value" + allowed);
+      if (!std::isfinite(v)) throw config_error(head + "not finite (too large for a double, or Inf)" + allowed);
+      const bool below = spec.min_inclusive ? v < spec.min : v <= spec.min;
+      const bool above = spec.max_inclusive ? v > spec.max : v >= spec.max;
+      if (below || above) throw config_error(head + "out of range" + allowed);
+      return format_real(v);
+    }
+    case KeyType::integer: {
+      long long v = 0;
+      const char* b = value.c_str();
+      const char* e = b + value.size();
+      if (*b == '+') ++b;
+      const auto r = std::from_chars(b, e, v);
+      if (r.ec == std::errc::result_out_of_range) throw config_error(head + "too large a number" + allowed);
+      if (r.ec != std::errc() || r.ptr != e) throw config_error(head + "not a whole number" + allowed);
+      const auto d = static_cast<double>(v);
+      if (d < spec.min || d > spec.max) throw config_error(head + "out of range" + allowed);
+      if (spec.power_of_two && !is_power_of_two(v)) throw config_error(head + "not a power of two" + allowed);
+      return std::to_string(v);
+    }
+    case KeyType::choice: {
+      for (const auto& c : spec.choices)
+        if (c == value) return value;
+      throw config_error(head + "not a known choice" + allowed);
+    }
+    case KeyType::boolean: {
+      if (value == "true" || value == "false") return value;
+      throw config_error(head + "not a boolean" + allowed);
+    }
+    case KeyType::path: {
+      if (value == "none") return value;
+      const fs::path p = fs::path(value).is_absolute() ? fs::path(value) : fs::path(directory) / value;
+      std::error_code ec;
+      if (!fs::is_regular_file(p, ec))
+        throw missing_input(head + "no such file (looked for " + p.string() + ")" + allowed);
+      return value;
+    }
+    case KeyType::text: return value;
+  }
+  return value;
+}
+
+const KeySpec* find_spec(const std::vector<KeySpec>& keys, const std::string& full) {
+  for (const auto& k : keys)
+    if (k.full_name() == full) return &k;
+  return nullptr;
+}
+
+std::string known_keys_of(const std::vector<KeySpec>& keys, const std::string& section) {
+  std::string s;
+  for (const auto& k : keys)
+    if (k.section == section) s += (s.empty() ? "" : ", ") + k.key;
+  return s;
+}
+
+std::string known_sections(const std::vector<KeySpec>& keys) {
+  std::vector<std::string> seen;
+  for (const auto& k : keys)
+    if (std::find(seen.begin(), seen.end(), k.section) == seen.end()) seen.push_back(k.section);
+  std::string s;
+  for (const auto& n : seen) s += (s.empty() ? "[" : ", [") + n + "]";
+  return s;
+}
+
+void refuse_unknown(const std::vector<KeySpec>& keys, const std::string& full, const std::string& value,
+                    const Origin& origin, const std::string& scene) {
+  const auto dot = full.find('.');
+  const std::string section = full.substr(0, dot), key = full.substr(dot + 1);
+  const std::string known = known_keys_of(keys, section);
+  if (known.empty())
+    throw config_error(origin.describe() + ": unknown section [" + section + "] (key " + key + " = " + value +
+                       ") for scene " + scene + "; allowed sections: " + known_sections(keys));
+  throw config_error(origin.describe() + ": unknown key [" + section + "] " + key + " = " + value + " for scene " +
+                     scene + "; allowed keys in [" + section + "]: " + known);
+}
+
+}  // namespace
+
+std::string Origin::describe() const {
+  if (line > 0) return file + ":" + std::to_string(line);
+  if (line < 0) return "command line (--set)";
+  return file + " (default)";
+}
+
+Study Study::load(const std::string& path, const std::vector<std::string>& overrides, const SchemaLookup& schema) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw missing_input("cannot open study file '" + path + "'");
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  const std::string text = buf.str();
+  if (text.empty()) throw config_error(path + ": the study file is empty; it needs at least [study] scene, realisations and seed");
+
+  std::vector<RawEntry> lines = scan_lines(path, text);
+  // Boost.Program_options reads the same text; its order matches the line scan entry by entry.
+  std::istringstream po_in(text);
+  po::parsed_options parsed(nullptr);
+  try {
+    parsed = po::parse_config_file(po_in, po::options_description(), true);
+  } catch (const po::error& e) {
+    throw config_error(path + ": " + e.what());
+  }
+  if (parsed.options.size() != lines.size())
+    throw config_error(path + ": could not match the file's entries to its lines (" +
+                       std::to_string(parsed.options.size()) + " vs " + std::to_string(lines.size()) + ")");
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const auto& opt = parsed.options[i];
+    if (opt.string_key != lines[i].full_key)
+      throw config_error(path + ":" + std::to_string(lines[i].line) + ": could not read key '" + lines[i].full_key + "'");
+    lines[i].value = opt.value.empty() ? std::string() : trim(opt.value.front());
+  }
+
+  Study s;
+  s.file_ = path;
+  s.directory_ = fs::path(path).parent_path().string();
+
+  // Duplicates are refused: the last-one-wins rule hides mistakes.
+  std::map<std::string, int> first_line;
+  for (const auto& e : lines) {
+    const auto it = first_line.find(e.full_key);
+    if (it != first_line.end()) {
+      const auto dot = e.full_key.find('.');
+      throw config_error(path + ":" + std::to_string(e.line) + ": duplicated key [" + e.full_key.substr(0, dot) + "] " +
+                         e.full_key.substr(dot + 1) + " = " + e.value + " (first set at line " +
+                         std::to_string(it->second) + "); each key may appear once");
+    }
+    first_line[e.full_key] = e.line;
+  }
+
+  // Overrides: "section.key=value".
+  struct Override {
+    std::string full_key, value;
+  };
+  std::vector<Override> sets;
+  for (const auto& o : overrides) {
+    const auto eq = o.find('=');
+    const auto dot = o.find('.');
+    if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || dot + 1 == eq)
+      throw usage_error("--set " + o + ": expected section.key=value, e.g. --set study.realisations=100");
+    sets.push_back({trim(o.substr(0, eq)), trim(o.substr(eq + 1))});
+  }
+
+  // The scene decides which keys exist.
+  std::string scene;
+  for (const auto& e : lines)
+    if (e.full_key == "study.scene") scene = e.value;
+  for (const auto& o : sets)
+    if (o.full_key == "study.scene") scene = o.value;
+  if (scene.empty()) throw config_error(path + ": missing required key [study] scene; every study names its scene");
+  s.keys_ = schema(scene);
+  s.scene_ = scene;
+
+  for (const auto& e : lines) {
+    const Origin origin{path, e.line};
+    const KeySpec* spec = find_spec(s.keys_, e.full_key);
+    if (!spec) refuse_unknown(s.keys_, e.full_key, e.value, origin, scene);
+    s.entries_[e.full_key] = {check_value(*spec, e.value, origin, s.directory_), origin};
+  }
+  for (const auto& o : sets) {
+    const Origin origin{"command line", -1};
+    const KeySpec* spec = find_spec(s.keys_, o.full_key);
+    if (!spec) refuse_unknown(s.keys_, o.full_key, o.value, origin, scene);
+    s.entries_[o.full_key] = {check_value(*spec, o.value, origin, fs::current_path().string()), origin};
+    if (spec->type == KeyType::path && !fs::path(o.value).is_absolute())
+      s.entries_[o.full_key].value = fs::absolute(o.value).string();
+  }
+  for (const auto& k : s.keys_) {
+    if (s.entries_.count(k.full_name())) continue;
+    if (!k.default_value)
+      throw config_error(path + ": missing required key [" + k.section + "] " + k.key + " (" + k.doc +
+                         "); allowed: " + k.allowed());
+    s.entries_[k.full_name()] = {check_value(k, *k.default_value, Origin{path, 0}, s.directory_), Origin{path, 0}};
+  }
+  return s;
+}
+
+bool Study::has(const std::string& full_key) const { return entries_.count(full_key) > 0; }
+
+const Entry& Study::entry(const std::string& full_key) const {
+  const auto it = entries_.find(full_key);
+  if (it == entries_.end()) throw std::logic_error("study key not in the scene's table: " + full_key);
+  return it->second;
+}
+
+double Study::real(const std::string& k) const { return std::strtod(entry(k).value.c_str(), nullptr); }
+long long Study::integer(const std::string& k) const { return std::stoll(entry(k).value); }
+std::string Study::text(const std::string& k) const { return entry(k).value; }
+bool Study::boolean(const std::string& k) const { return entry(k).value == "true"; }
+
+std::string Study::path(const std::string& k) const {
+  const Entry& e = entry(k);
+  const fs::path p(e.value);
+  if (e.value == "none" || p.is_absolute() || e.origin.line < 0) return p.string();
+  return (fs::path(directory_) / p).string();
+}
+
+std::string Study::where(const std::string& k) const {
+  const Entry& e = entry(k);
+  const auto dot = k.find('.');
+  return e.origin.describe() + ": [" + k.substr(0, dot) + "] " + k.substr(dot + 1) + " = " + e.value;
+}
+
+void Study::refuse(const std::string& k, const std::string& why) const { throw config_error(where(k) + ": " + why); }
+
+std::string Study::canonical_text_without(const std::vector<std::string>& excluded) const {
+  std::ostringstream s;
+  std::string section;
+  for (const auto& k : keys_) {
+    if (std::find(excluded.begin(), excluded.end(), k.full_name()) != excluded.end()) continue;
+    if (k.section != section) {
+      s << (section.empty() ? "" : "\n") << "[" << k.section << "]\n";
+      section = k.section;
+    }
+    s << k.key << " = " << entry(k.full_name()).value << "\n";
+  }
+  return s.str();
+}
+
+std::string Study::canonical_text() const { return canonical_text_without({}); }
+
+}  // namespace rollspec::study
