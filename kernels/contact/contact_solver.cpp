@@ -138,54 +138,59 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     }
     if (it >= opt.max_iterations) break;
 
-    // CG set S = {0 < p < H}; if empty, the violating bound cells (first step of a restart).
+    // CG set S = {0 < p < H}. If S is empty, or the gradient on S vanishes (e.g. an exact warm
+    // start whose only defect is cells that must leave a bound), restart with the violating bound
+    // cells added to S: t = g there, no conjugation.
     std::size_t free_count = 0;
     for (std::size_t i = 0; i < n; ++i) {
       set_[i] = (p[i] > 0.0 && p[i] < hardness) ? kFree : kOut;
       free_count += set_[i];
     }
-    if (free_count == 0) {
+    double num = 0.0, den = 0.0;
+    auto direction_and_step = [&]() {
+      // Search direction t = g + δ (G/G_old) t on S (README Eq. 7), r = C t, τ = gᵀt / tᵀC t.
+      double gg = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (set_[i] == kFree) gg += g_[i] * g_[i];
+      const double beta = conjugate ? gg / g_old : 0.0;
+      g_old = gg;
+      for (std::size_t i = 0; i < n; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+      op_.apply(t_.data(), r_.data());
+      if (load) {
+        double sum = 0.0;
+        std::size_t cnt = 0;
+        for (std::size_t i = 0; i < n; ++i)
+          if (set_[i] == kFree) {
+            sum += r_[i];
+            ++cnt;
+          }
+        const double mean = cnt > 0 ? sum / static_cast<double>(cnt) : 0.0;
+        for (std::size_t i = 0; i < n; ++i) r_[i] -= mean;
+      }
+      num = 0.0;
+      den = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (set_[i] == kFree) {
+          num += g_[i] * t_[i];
+          den += r_[i] * t_[i];
+        }
+    };
+    if (free_count > 0) direction_and_step();
+    bool released = false;
+    if (!(den > 0.0)) {
+      released = true;
       for (std::size_t i = 0; i < n; ++i)
         if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) set_[i] = kFree;
       conjugate = false;
+      direction_and_step();
     }
-    // Search direction t = g + δ (G/G_old) t on S (README Eq. 7).
-    double gg = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (set_[i] == kFree) gg += g_[i] * g_[i];
-    const double beta = conjugate ? gg / g_old : 0.0;
-    g_old = gg;
-    for (std::size_t i = 0; i < n; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
-    op_.apply(t_.data(), r_.data());
-    if (load) {
-      double sum = 0.0;
-      std::size_t cnt = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (set_[i] == kFree) {
-          sum += r_[i];
-          ++cnt;
-        }
-      const double mean = cnt > 0 ? sum / static_cast<double>(cnt) : 0.0;
-      for (std::size_t i = 0; i < n; ++i) r_[i] -= mean;
-    }
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (set_[i] == kFree) {
-        num += g_[i] * t_[i];
-        den += r_[i] * t_[i];
-      }
     if (!(den > 0.0)) {
-      ++it;  // degenerate step (nothing left to move): stop, reported unconverged if ε ≥ tol
-      op_.apply(p.data(), u_.data());
-      for (std::size_t i = 0; i < n; ++i) g_[i] = s[i] - w + u_[i];
-      res.error = kkt_residual(p, g_, hardness, c) / g_ref;
-      res.converged = res.error < opt.tolerance;
+      ++it;  // nothing left to move: stop; reported unconverged since ε ≥ tolerance
       break;
     }
     const double tau = num / den;
     // Step on S; release bound cells whose gap says so: p = 0 with g < 0, p = H with g > 0
     // (README Eq. 8); a release restarts the conjugate directions.
-    bool released = false;
     for (std::size_t i = 0; i < n; ++i) {
       if (set_[i] == kFree) {
         p[i] = clip(p[i] - tau * t_[i], hardness);

@@ -102,3 +102,20 @@ TEST_CASE("rough ball: cap holds, saturated cells are released when unloading") 
   CHECK(low_warm.force == doctest::Approx(low_cold.force).epsilon(1e-8));
   for (double v : p_warm) CHECK(v <= opt.hardness);
 }
+
+TEST_CASE("warm start with every cell saturated (empty CG set) converges to the cold solution") {
+  const Hertz h;
+  const Grid grid = h.grid(8.0, 1.6);
+  const auto heights = rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a());
+  const auto gap = ball_gap(grid, h.radius, heights);
+  ContactSolver solver(grid, h.e_star);
+  SolverOptions opt;
+  opt.hardness = 0.5 * h.p0();
+  std::vector<double> p_sat(grid.size(), opt.hardness), p_cold;
+  const ContactResult sat = solver.solve(gap, h.approach, p_sat, opt);
+  const ContactResult cold = solver.solve(gap, h.approach, p_cold, opt);
+  REQUIRE(cold.converged);
+  CHECK(sat.converged);
+  CHECK(sat.force == doctest::Approx(cold.force).epsilon(1e-8));
+  CHECK(sat.plastic_cells == cold.plastic_cells);
+}
