@@ -1,0 +1,78 @@
+// Builders and drivers for the seed 000 examples and the verification problems (README
+// Sec. 6). Plain structs in, plain results out; the engine's scenes wrap these.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "kernels/rolling/model.hpp"
+#include "kernels/rolling/solver.hpp"
+
+namespace rollspec::rolling {
+
+// ---- seed 000 example 4.1: disc sliding, then rolling --------------------------------
+struct DiscParams {
+  double radius = 0.2, omega0 = 127.03, V0 = 2.355, mu = 0.25, g = 9.81;
+  double mass = 1e3, length = 1.0;  // inertia about the axis m r^2/2 (solid disc/cylinder)
+  double eps_n = 1e8, eps_t = 1e7;
+  bool rolling = true;
+};
+// Plane y = 0 (normal +y), disc axis z, gravity -y, V0 along +x, angular velocity -omega0 z
+// (contact point initially sliding backwards), centre at the static penetration m g/eps_n.
+Model disc_model(const DiscParams& p);
+
+struct DiscSummary {
+  double t_roll = -1.0;          // first step at which sliding stops (slip -> stick)
+  double final_speed = 0.0;      // |v| at the end
+  double final_omega = 0.0;      // |w| at the end
+  double mean_speed = 0.0;       // mean |v| over the last second (stick-spring oscillation averaged)
+  double mean_roll_speed = 0.0;  // mean r |w| over the last second
+  double slip_after_roll = 0.0;  // friction work after t_roll (chatter at the spring peaks)
+  double energy_loss = 0.0;      // mechanical energy lost (kinetic + penalty + gravity)
+  double dissipation = 0.0;      // accumulated friction work (return mapping)
+  double penetration = 0.0;      // -g_n at the end
+  // analytic references (seed 000 Eq. 48-50)
+  double t_roll_exact = 0.0, final_speed_exact = 0.0, energy_loss_exact = 0.0, penetration_exact = 0.0;
+};
+DiscSummary summarize_disc(const DiscParams& p, const History& h);
+
+// ---- cylinder on an incline: plane y = 0, gravity tilted by theta (down-slope part
+// ramped in over t_ramp) --------------------------------------------------------------
+struct InclineParams {
+  double theta = 0.5235987755982988;  // 30 deg
+  double mu = 0.2;
+  double radius = 0.2, mass = 1e3, g = 9.81, eps_n = 1e8, eps_t = 1e7, t_ramp = 0.5;
+};
+Model incline_model(const InclineParams& p);
+
+// ---- seed 000 example 4.2: cantilever rolling and sliding on a plane ----------------
+struct CantileverParams {
+  double D = 0.3, L = 10.0, E = 1e7, nu = 0.0, rho = 1e5, g = 9.81, mu = 0.5;
+  double eps_n = 1e9, eps_t = 1e7;
+  int n_elements = 100;
+  bool rolling = true;
+};
+// Beam A=(0,0,0) to B=(L,0,0), plane z = -D/2 (normal +z) with every node in contact,
+// gravity -z ramped over t in [0,1]; A clamped; B: y = 0,0,+5,0,+5 at t = 0..4 (Table I).
+Model cantilever_model(const CantileverParams& p);
+
+struct CantileverSnapshot {
+  double time = 0.0;
+  Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+  double reaction_y = 0.0;          // reaction at B in y
+  double max_abs_torsion = 0.0;     // max |M_1| over the Gauss points
+  std::vector<double> x_ref, torsion;  // torsion M_1 along the reference x coordinate
+  int n_slip = 0, n_stick = 0, n_open = 0;
+};
+struct CantileverRun {
+  std::vector<CantileverSnapshot> snapshots;  // at the requested times
+  bool completed = true;
+  double failed_at = 0.0;
+  int steps = 0, newton_iterations = 0, cuts = 0;
+  double friction_dissipation = 0.0;
+};
+// Quasi-static run to t_end with steps dt, snapshots at the given times.
+CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
+                             const std::vector<double>& snapshot_times);
+
+}  // namespace rollspec::rolling

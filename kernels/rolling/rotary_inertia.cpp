@@ -1,0 +1,42 @@
+#include "kernels/rolling/rotary_inertia.hpp"
+
+#include "kernels/rolling/jet.hpp"
+#include "kernels/rolling/rotation.hpp"
+
+namespace rollspec::rolling {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+RotaryInertiaEval rotary_inertia(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn,
+                                 const Vector3d& An, double dt, const Vector3d& alpha) {
+  using J3 = Jet2<3>;
+  Vec3<J3> a;
+  for (int i = 0; i < 3; ++i) a[i] = J3::variable(alpha(i), i);
+  const Vec3<J3> b = mul_t(Rn, a);  // material incremental Rodrigues vector
+  Vec3<J3> W, A;
+  for (int i = 0; i < 3; ++i) {
+    W[i] = (2.0 / dt) * b[i] - Wn(i);
+    A[i] = (4.0 / (dt * dt)) * (b[i] - dt * Wn(i)) - An(i);
+  }
+  const Vec3<J3> h = add(mul(J, A), cross(W, mul(J, W)));  // Euler: J A + W x J W
+  const Vec3<J3> r = xit_apply(a, q_apply(a, mul(Rn, h)));
+  RotaryInertiaEval out;
+  for (int i = 0; i < 3; ++i) {
+    out.residual(i) = r[i].v;
+    out.W(i) = W[i].v;
+    out.A(i) = A[i].v;
+    for (int j = 0; j < 3; ++j) out.tangent(i, j) = r[i].g[j];
+  }
+  return out;
+}
+
+void rotary_newmark_update(const Matrix3d& Rn, double dt, const Vector3d& alpha, Vector3d& W,
+                           Vector3d& A) {
+  const Vector3d b = Rn.transpose() * alpha;
+  const Vector3d A1 = 4.0 / (dt * dt) * (b - dt * W) - A;
+  W = 2.0 / dt * b - W;
+  A = A1;
+}
+
+}  // namespace rollspec::rolling

@@ -1,0 +1,30 @@
+// Inertia of a rotating point (rigid body node or beam mass point) with Newmark
+// trapezoidal (beta = 1/4, gamma = 1/2) applied to the material incremental Rodrigues
+// vector b = R_n^T a (README Eq. R-30..R-33):
+//   W_{n+1} = 2 b/dt - W_n,  A_{n+1} = 4 (b - dt W_n)/dt^2 - A_n     (body-frame vectors)
+//   inertia pseudo-moment  r(a) = Xi(a)^T Q(a) R_n (J A + W x J W)
+// This is the material-frame Newmark scheme of Simo & Vu-Quoc (1988, CMAME 66:125-161,
+// Sec. 4) with the Cayley/Rodrigues map in place of the exponential map, as used for
+// Rodrigues-parameter beams by Gay Neto, Pimenta & Martins (2013) [seed 000 ref. 12].
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace rollspec::rolling {
+
+struct RotaryInertiaEval {
+  Eigen::Vector3d residual = Eigen::Vector3d::Zero();  // pseudo-moment conjugate to a
+  Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero();   // d residual / d a
+  Eigen::Vector3d W = Eigen::Vector3d::Zero();         // body angular velocity at t_{n+1}
+  Eigen::Vector3d A = Eigen::Vector3d::Zero();         // body angular acceleration at t_{n+1}
+};
+
+RotaryInertiaEval rotary_inertia(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
+                                 const Eigen::Vector3d& Wn, const Eigen::Vector3d& An, double dt,
+                                 const Eigen::Vector3d& alpha);
+
+// Newmark update of the body angular velocity/acceleration for a converged increment a.
+void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
+                           Eigen::Vector3d& W, Eigen::Vector3d& A);
+
+}  // namespace rollspec::rolling
