@@ -9,8 +9,8 @@
 
 namespace rollspec::io {
 
-double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins) {
-  return dof_per_bin * std::max(1.0, band_width / (df * enbw_bins));
+double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins, double record_seconds) {
+  return std::max(dof_per_bin, std::min(dof_per_bin * band_width / (df * enbw_bins), 2.0 * band_width * record_seconds));
 }
 
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
@@ -48,7 +48,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     nominal[b] = bands[b].nominal;
     lower[b] = bands[b].lower;
     upper[b] = bands[b].upper;
-    dof[b] = band_dof(e.dof_per_bin, bands[b].upper - bands[b].lower, df, e.window_enbw_bins);
+    dof[b] = band_dof(e.dof_per_bin, bands[b].upper - bands[b].lower, df, e.window_enbw_bins, e.record_seconds);
     const auto fb = spectral::chi_square_interval(dof[b], e.confidence);
     for (std::size_t s = 0; s < ns; ++s) {
       const double avg = spectral::band_average(e.mean.data() + s * nf, nf, df, bands[b].lower, bands[b].upper);

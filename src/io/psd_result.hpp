@@ -6,8 +6,10 @@
 //   /bands/upper_frequency, /bands/level_db, /bands/ci_lower_db, /bands/ci_upper_db (sensor x band),
 //   /bands/degrees_of_freedom (band)
 // The interval is chi-square (theory D-16) with nu = K * nu_Welch per bin, and per band
-// nu_band = nu_bin * max(1, B / (df * ENBW)) for B the band width (D-17: bins closer than the
-// window's noise bandwidth are correlated, so they add fewer degrees of freedom).
+// nu_band = max(nu_bin, min(nu_bin * B / (df * ENBW), 2 B T)) for B the band width and T the
+// record time behind the mean (D-17: bins closer than the window's noise bandwidth are
+// correlated, and no estimate holds more than the 2 B T degrees of freedom of the record,
+// Bendat & Piersol 2010 §8.5).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,6 +26,7 @@ struct PsdEnsemble {
   std::uint64_t realisations = 0;
   double dof_per_bin = 0.0;            // of the ensemble mean
   double window_enbw_bins = 1.5;
+  double record_seconds = 0.0;         // total analysed time behind the mean (all realisations)
   double confidence = 0.95;
   double band_min = 0.0, band_max = 0.0;  // Hz
   std::string units = "(m/s^2)^2/Hz";
@@ -33,6 +36,6 @@ struct PsdEnsemble {
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);
 
 // Band degrees of freedom from the per-bin value (D-17).
-double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins);
+double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins, double record_seconds);
 
 }  // namespace rollspec::io

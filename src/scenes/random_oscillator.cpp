@@ -142,6 +142,7 @@ class RandomOscillator final : public Scene {
     e.realisations = sums.count;
     e.dof_per_bin = K * welch_->equivalent_dof(n_);
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
+    e.record_seconds = K * static_cast<double>(n_) / fs_;
     e.confidence = confidence_;
     e.band_min = band_min_;
     e.band_max = band_max_;

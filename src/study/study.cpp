@@ -82,6 +82,7 @@ std::string check_value(const KeySpec& spec, const std::string& value, const Ori
                         const std::string& directory) {
   const std::string head = origin.describe() + ": [" + spec.section + "] " + spec.key + " = " + value + ": ";
   const std::string allowed = "; allowed: " + spec.allowed();
+  if (value.empty() && spec.type == KeyType::text) return value;
   if (value.empty()) throw config_error(origin.describe() + ": [" + spec.section + "] " + spec.key + " has no value" + allowed);
   switch (spec.type) {
     case KeyType::real: {
@@ -231,12 +232,17 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
 
   // The scene decides which keys exist.
   std::string scene;
+  Origin scene_origin{path, 0};
   for (const auto& e : lines)
-    if (e.full_key == "study.scene") scene = e.value;
+    if (e.full_key == "study.scene") scene = e.value, scene_origin = Origin{path, e.line};
   for (const auto& o : sets)
-    if (o.full_key == "study.scene") scene = o.value;
+    if (o.full_key == "study.scene") scene = o.value, scene_origin = Origin{"command line", -1};
   if (scene.empty()) throw config_error(path + ": missing required key [study] scene; every study names its scene");
-  s.keys_ = schema(scene);
+  try {
+    s.keys_ = schema(scene);
+  } catch (const UserError& e) {
+    throw UserError(e.exit_code(), scene_origin.describe() + ": " + e.what());
+  }
   s.scene_ = scene;
 
   for (const auto& e : lines) {

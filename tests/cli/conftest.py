@@ -1,0 +1,79 @@
+"""Shared helpers for the command-line tests: the rollspec binary, small studies, HDF5 comparison."""
+import os
+import pathlib
+import subprocess
+
+import h5py
+import numpy as np
+import pytest
+
+BIN = os.environ.get("ROLLSPEC_BIN", "rollspec")
+SOURCE = pathlib.Path(os.environ.get("ROLLSPEC_SOURCE", pathlib.Path(__file__).resolve().parents[2]))
+
+# Exit codes from <sysexits.h>.
+EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_CANTCREAT, EX_CONFIG, EX_INTERRUPTED = 64, 65, 66, 73, 78, 130
+
+SMALL_OSCILLATOR = """\
+[study]
+scene = random-oscillator
+realisations = {realisations}
+seed = 42
+
+[ensemble]
+chunk_size = {chunk}
+
+[oscillator]
+mass = 1.5
+natural_frequency = 40
+damping_ratio = 0.05
+
+[force]
+level = 2.0
+
+[signal]
+sample_rate = 1024
+duration = {duration}
+
+[spectrum]
+segment = 1024
+band_min = 8
+band_max = 400
+"""
+
+
+def run(args, env=None, **kw):
+    full_env = dict(os.environ)
+    if env:
+        full_env.update(env)
+    return subprocess.run([BIN, *map(str, args)], capture_output=True, text=True, env=full_env, **kw)
+
+
+@pytest.fixture
+def small_study(tmp_path):
+    def make(realisations=24, chunk=4, duration=16, name="study.ini"):
+        p = tmp_path / name
+        p.write_text(SMALL_OSCILLATOR.format(realisations=realisations, chunk=chunk, duration=duration))
+        return p
+    return make
+
+
+def result_datasets(path):
+    """Every dataset of a result file except the run's own timing, as {name: array}."""
+    out = {}
+    with h5py.File(path, "r") as f:
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset) and not name.startswith("run"):
+                out[name] = obj[()]
+        f.visititems(visit)
+    return out
+
+
+def assert_bitwise_equal(a, b):
+    da, db = result_datasets(a), result_datasets(b)
+    assert sorted(da) == sorted(db)
+    for k in da:
+        x, y = np.asarray(da[k]), np.asarray(db[k])
+        if x.dtype.kind == "f":
+            assert x.tobytes() == y.tobytes(), f"{k} differs"
+        else:
+            assert np.array_equal(x, y), f"{k} differs"
