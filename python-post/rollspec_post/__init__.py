@@ -1,0 +1,3 @@
+"""rollspec_post: plots and reports from rollspec result files (run with Debian's /usr/bin/python3)."""
+
+__version__ = "0.1.0"
