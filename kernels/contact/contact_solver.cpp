@@ -84,7 +84,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   // interference (one line search), or uniform pressure in load control.
   bool all_zero = true;
   for (double& v : p) {
-    v = std::isfinite(v) || std::isinf(v) ? clip(v, hardness) : 0.0;
+    v = std::isnan(v) ? 0.0 : clip(v, hardness);
     all_zero = all_zero && v == 0.0;
   }
   if (all_zero) {

@@ -6,7 +6,8 @@
 
 namespace rollspec::contact {
 
-// 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2   (D-6). Throws std::invalid_argument on E ≤ 0 or |ν| ≥ ... .
+// 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2   (D-6). Throws std::invalid_argument unless E > 0 and
+// −1 < ν ≤ 0.5.
 double effective_modulus(double e1, double nu1, double e2, double nu2);
 
 enum class BallShape {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "kernels/contact/direct_product.hpp"
@@ -96,4 +97,27 @@ TEST_CASE("operators built and applied concurrently agree with the serial produc
     op.apply(p.data(), results[static_cast<std::size_t>(k)].data());
   }
   for (const auto& r : results) CHECK(r == serial);
+}
+
+#include "kernels/contact/geometry.hpp"
+
+TEST_CASE("ball gap: exact sphere, paraboloid, roughness and composite heights") {
+  const Grid grid{5, 3, 1e-3, 2e-3};
+  const double radius = 0.02;
+  const std::vector<double> h1{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+  std::vector<double> h2(h1.size(), 0.5e-6), h(h1.size());
+  for (std::size_t i = 0; i < h1.size(); ++i) h[i] = 1e-7 * h1[i];
+  const auto sphere = ball_gap(grid, radius, {});
+  const auto para = ball_gap(grid, radius, {}, BallShape::Paraboloid);
+  const auto rough = ball_gap(grid, radius, composite_heights(h, h2));
+  for (std::size_t iy = 0; iy < grid.ny; ++iy)
+    for (std::size_t ix = 0; ix < grid.nx; ++ix) {
+      const std::size_t i = iy * grid.nx + ix;
+      const double r2 = grid.x(ix) * grid.x(ix) + grid.y(iy) * grid.y(iy);
+      CHECK(sphere[i] == doctest::Approx(radius - std::sqrt(radius * radius - r2)).epsilon(1e-9));
+      CHECK(para[i] == doctest::Approx(r2 / (2 * radius)).epsilon(1e-15));
+      CHECK(rough[i] == doctest::Approx(sphere[i] - h[i] - h2[i]).epsilon(1e-14));
+    }
+  CHECK(sphere[7] == 0.0);  // centre cell (2, 1) sits at the origin
+  CHECK_THROWS_AS(ball_gap(grid, radius, std::vector<double>(4)), std::invalid_argument);
 }
