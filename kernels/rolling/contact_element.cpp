@@ -54,7 +54,13 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
   Vector3d f;
   Matrix3d df_dx, df_da;
   const double ntry = ftry.norm();
-  if (ntry <= fmax) {  // stick
+  if (!(fmax > 0.0)) {  // frictionless (mu = 0): free tangential motion
+    f.setZero();
+    df_dx.setZero();
+    df_da.setZero();
+    e.slip = ntry > 0.0;
+    e.next.g_st = gst0 + gt;  // all tangential motion is slip, elastic gap stays zero
+  } else if (ntry <= fmax) {  // stick
     f = ftry;
     df_dx = -law.eps_t * P;
     df_da = -law.eps_t * dgt_da;

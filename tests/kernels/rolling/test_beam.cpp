@@ -1,0 +1,185 @@
+// Geometrically exact beam (README Sec. 3): tangent against finite differences, quadratic
+// Newton convergence, cantilever pressed on a frictionless plane against 3 E I D / L^3, and
+// the cantilever rolled into a full circle by an end moment 2 pi E I / L.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "kernels/rolling/rotation.hpp"
+#include "kernels/rolling/solver.hpp"
+
+using namespace rollspec::rolling;
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+namespace {
+const double kPi = 3.14159265358979323846;
+
+BeamSection given_section(double EI, double L) {
+  BeamSection s;
+  s.EA = 1e4 * EI / (L * L) * 100;
+  s.GA2 = s.GA3 = 0.5 * s.EA;
+  s.EI2 = s.EI3 = EI;
+  s.GJ = 0.8 * EI;
+  s.rhoA = 2.0;
+  s.rhoJ1 = 0.02;
+  s.rhoI2 = s.rhoI3 = 0.01;
+  s.outer_radius = 0.05;
+  return s;
+}
+}  // namespace
+
+TEST_CASE("beam + inertia + load + contact tangent = central differences of the residual") {
+  for (const bool dynamic : {false, true}) {
+    Model m;
+    BeamSection s = given_section(50.0, 2.0);
+    s.GA3 = 0.3 * s.EA;  // distinct constants so that every term shows
+    s.EI3 = 70.0;
+    m.sections.push_back(s);
+    const std::vector<int> ids = add_straight_beam(m, Vector3d::Zero(), Vector3d(2.0, 0.3, -0.1), 2, 0,
+                                                   Vector3d(0.1, 1.0, 0.2));
+    m.sections[0].rhoA = 0.2;
+    m.gravity = Vector3d(0.3, -0.2, -9.81);
+    m.gravity_series = TimeSeries::ramp(0.0, 0.05);  // load steps, so quasi-static Newton converges
+    for (int d = 0; d < 6; ++d) m.imposed.push_back(ImposedDof{ids[0], d, 0.0, TimeSeries::constant()});
+    m.loads.push_back(NodalLoad{ids[4], Vector3d(0.1, -0.2, 0.3), Vector3d(0.4, 0.5, -0.6), TimeSeries::ramp(0.0, 0.05)});
+    m.bodies.push_back(RigidBody{ids[2], 0.3, Vector3d(0.2, 0.3, 0.4).asDiagonal()});
+    m.planes.push_back(make_plane(Vector3d(0, 0, -0.06), Vector3d(0.05, 0.02, 1.0)));
+    m.contacts.push_back(ContactPair{ids[3], 0, ContactLaw{0.05, 0.3, 1e5, 1e4, true}});
+    SolverOptions o;
+    o.analysis = dynamic ? Analysis::Dynamic : Analysis::QuasiStatic;
+    o.force_tol = 1e-6;
+    Solver S(m, o);
+    for (int k = 1; k <= 5; ++k) REQUIRE(S.advance(0.01 * k).converged);  // non-trivial committed state
+    // a trial increment with finite rotations
+    VectorXd q = VectorXd::Zero(6 * static_cast<long>(m.X.size()));
+    for (long i = 6; i < q.size(); ++i) q(i) = (i % 6 < 3 ? 0.01 : 0.15) * std::sin(1.7 * double(i) + 0.3);
+    VectorXd r;
+    Eigen::MatrixXd K;
+    const double dt = 0.01, t1 = 0.06;
+    S.residual_and_tangent(q, t1, dt, r, &K);
+    Eigen::MatrixXd Kfd(K.rows(), K.cols());
+    const double h = 1e-6;
+    for (long j = 0; j < q.size(); ++j) {
+      VectorXd qp = q, qm = q, rp, rm;
+      qp(j) += h;
+      qm(j) -= h;
+      S.residual_and_tangent(qp, t1, dt, rp, nullptr);
+      S.residual_and_tangent(qm, t1, dt, rm, nullptr);
+      Kfd.col(j) = (rp - rm) / (2 * h);
+    }
+    const double err = (K - Kfd).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff();
+    MESSAGE(std::string(dynamic ? "dynamic" : "quasi-static") << " tangent rel. error " << err << " (max |K| "
+                                                   << K.cwiseAbs().maxCoeff() << ")");
+    CHECK(err < 1e-6);
+    // the same test restricted to the beam-only block of an interior node pair
+    CHECK((K.block(6, 6, 12, 12) - Kfd.block(6, 6, 12, 12)).cwiseAbs().maxCoeff() <
+          1e-6 * K.block(6, 6, 12, 12).cwiseAbs().maxCoeff());
+  }
+}
+
+TEST_CASE("large rotation: cantilever rolled into a full circle by M = 2 pi EI / L") {
+  const double L = 10.0, EI = 100.0;
+  Model m;
+  m.sections.push_back(given_section(EI, L));
+  const std::vector<int> ids = add_straight_beam(m, Vector3d::Zero(), Vector3d(L, 0, 0), 20, 0);
+  for (int d = 0; d < 6; ++d) m.imposed.push_back(ImposedDof{ids[0], d, 0.0, TimeSeries::constant()});
+  m.loads.push_back(NodalLoad{ids.back(), Vector3d::Zero(), Vector3d(0, 0, 2 * kPi * EI / L), TimeSeries::ramp(0, 1)});
+  SolverOptions o;
+  o.analysis = Analysis::QuasiStatic;
+  o.force_tol = 1e-8;
+  Solver S(m, o);
+  int its = 0;
+  for (int k = 1; k <= 40; ++k) {
+    const StepReport rep = S.advance(k / 40.0);
+    REQUIRE(rep.converged);
+    its += rep.iterations;
+  }
+  const Vector3d tip = S.nodes()[ids.back()].x;
+  const Vector3d mid = S.nodes()[ids[20]].x;
+  const Eigen::AngleAxisd aa(S.nodes()[ids.back()].R);
+  MESSAGE("tip " << tip.transpose() << " |tip - root|/L = " << tip.norm() / L << ", mid " << mid.transpose()
+                 << " (exact 0, " << L / kPi << "), tip rotation angle " << aa.angle() << ", Newton its " << its);
+  CHECK(tip.norm() < 0.005 * L);
+  CHECK(std::abs(mid.y() - L / kPi) < 0.005 * L);  // diameter L/pi
+  CHECK(std::abs(mid.x()) < 0.005 * L);
+  CHECK(aa.angle() < 0.005 * 2 * kPi);  // rotated by 2 pi: back to the identity
+}
+
+TEST_CASE("Newton converges quadratically near the solution (3D cantilever, force + torque)") {
+  const double L = 10.0, EI = 100.0;
+  Model m;
+  BeamSection s = given_section(EI, L);
+  s.EA = 1e4;
+  s.GA2 = s.GA3 = 5e3;
+  m.sections.push_back(s);
+  const std::vector<int> ids = add_straight_beam(m, Vector3d::Zero(), Vector3d(L, 0, 0), 4, 0);
+  m.loads.push_back(NodalLoad{ids.back(), Vector3d(0, 0.1, 0.15), Vector3d(0.2, 0, 0), TimeSeries::constant()});
+  SolverOptions o;
+  o.analysis = Analysis::QuasiStatic;
+  Solver S(m, o);
+  const long n = 6 * static_cast<long>(m.X.size()), nf = n - 6;  // node 0 clamped
+  auto res = [&](const VectorXd& qf, Eigen::MatrixXd* Kf) {
+    VectorXd q = VectorXd::Zero(n), r;
+    q.tail(nf) = qf;
+    Eigen::MatrixXd K;
+    S.residual_and_tangent(q, 1.0, 1.0, r, Kf ? &K : nullptr);
+    if (Kf) *Kf = K.bottomRightCorner(nf, nf);
+    return VectorXd(r.tail(nf));
+  };
+  // solution q* by Newton from the undeformed state
+  VectorXd qs = VectorXd::Zero(nf);
+  Eigen::MatrixXd K;
+  std::string hist;
+  for (int it = 0; it < 20; ++it) {
+    const VectorXd r = res(qs, &K);
+    hist += std::to_string(r.norm()) + " ";
+    qs -= K.fullPivLu().solve(r);
+  }
+  MESSAGE("Newton from the undeformed state, |r|: " << hist);
+  REQUIRE(res(qs, nullptr).norm() < 1e-9);
+  // one Newton step from q* + delta v: |r_1| must scale with |r_0|^2
+  VectorXd v(nf);
+  for (long i = 0; i < nf; ++i) v(i) = std::sin(2.3 * double(i) + 0.7);
+  std::vector<double> r0, r1;
+  for (const double d : {1e-2, 1e-3, 1e-4}) {
+    const VectorXd q0 = qs + d * v;
+    const VectorXd r = res(q0, &K);
+    const VectorXd q1 = q0 - K.fullPivLu().solve(r);
+    r0.push_back(r.norm());
+    r1.push_back(res(q1, nullptr).norm());
+    MESSAGE("delta " << d << ": |r0| " << r0.back() << ", |r1| " << r1.back() << ", |r1|/|r0|^2 "
+                     << r1.back() / (r0.back() * r0.back()));
+  }
+  for (std::size_t k = 0; k + 1 < r0.size(); ++k) {
+    const double order = std::log(r1[k] / r1[k + 1]) / std::log(r0[k] / r0[k + 1]);
+    MESSAGE("convergence order from deltas " << k << "," << k + 1 << ": " << order);
+    CHECK(order > 1.9);  // an inconsistent tangent gives order 1
+  }
+}
+
+TEST_CASE("frictionless cantilever pressed on a plane: tip force = 3 EI D / L^3 (20 elements)") {
+  const double L = 10.0, Dsec = 0.3, E = 1e7, D = 0.05;
+  Model m;
+  m.sections.push_back(circular_section(E, 0.0, 1.0, Dsec));
+  const double r = 0.5 * Dsec, EI = m.sections[0].EI2;
+  const std::vector<int> ids = add_straight_beam(m, Vector3d::Zero(), Vector3d(L, 0, 0), 20, 0);
+  // the plane touches the tip sphere; the clamped root is lowered by D
+  m.planes.push_back(make_plane(Vector3d(0, 0, -r), Vector3d::UnitZ()));
+  m.contacts.push_back(ContactPair{ids.back(), 0, ContactLaw{r, 0.0, 1e7, 0.0, true}});
+  for (int d = 0; d < 6; ++d)
+    m.imposed.push_back(ImposedDof{ids[0], d, d == 2 ? -D : 0.0, TimeSeries::ramp(0, 1)});
+  SolverOptions o;
+  o.analysis = Analysis::QuasiStatic;
+  o.force_tol = 1e-9;
+  Solver S(m, o);
+  for (int k = 1; k <= 4; ++k) REQUIRE(S.advance(k / 4.0).converged);
+  const double F = S.contacts()[0].force.z();
+  const double Fexact = 3.0 * EI * D / (L * L * L);
+  MESSAGE("tip contact force " << F << " vs 3EI D/L^3 = " << Fexact << ", rel " << std::abs(F / Fexact - 1)
+                               << "; root reaction z " << S.reactions()[2]);
+  CHECK(std::abs(F / Fexact - 1.0) < 0.01);
+  CHECK(std::abs(S.reactions()[2] + F) < 1e-6 * F);  // equilibrium
+}
