@@ -1,0 +1,53 @@
+#pragma once
+// Default ball-on-beam integrator, README Eq. (B23)–(B26). Over a step of length h:
+//  - every mode is propagated exactly (ExactOscillatorStep, first-order hold) for the modal force
+//    g_n(t) = -phi_n(xi(t)) F_c(t) / m taken linear between the step ends (B23);
+//  - the ball is propagated exactly for a force linear over the step (B24);
+//  - the end state is then affine in the end force F1, so delta(F1) = delta_free - C F1 and
+//    delta_dot(F1) = rate_free - D F1, and F1 solves the scalar contact law implicitly (B21).
+// Design order: 2 in h (the only approximation is the linear interpolation of g_n over a step).
+// Mode shapes at the step positions, the step coefficients and C, D are computed once per plan,
+// so run() costs O(N) per step and is thread-safe (const, scratch on the stack/heap per call).
+#include <vector>
+
+#include "kernels/beam/ball_on_beam.hpp"
+#include "kernels/integrators/exact_oscillator_step.hpp"
+
+namespace rollspec::beam {
+
+class ExactStepIntegrator {
+ public:
+  // substeps integration steps per output sample (h = 1 / (sample_rate * substeps)).
+  // Mode shapes are tabulated at every step if steps * modes <= max_table_entries, else evaluated
+  // on the fly (slower, same answer).
+  ExactStepIntegrator(BallOnBeamModel model, int substeps = 4, double solver_tolerance = 1e-13,
+                      long max_table_entries = 8'000'000);
+
+  const BallOnBeamModel& model() const { return model_; }
+  double step() const { return h_; }
+  long steps() const { return steps_; }
+  std::size_t samples() const { return samples_; }
+
+  void run(const Realisation& realisation, BallOnBeamResult& out) const;
+  BallOnBeamResult run(const Realisation& realisation) const;
+
+ private:
+  double position(long k) const;
+  void shapes_at(long k, const double*& phi, const double*& slope, std::vector<double>& scratch_phi,
+                 std::vector<double>& scratch_slope) const;
+
+  BallOnBeamModel model_;
+  ContactModel contact_;
+  int substeps_;
+  double tol_, h_;
+  long steps_;
+  std::size_t samples_;
+  bool total_rate_;
+  std::vector<integrators::ExactOscillatorStep> osc_;
+  std::vector<double> b1m_, c1m_;               // b1_n / m, c1_n / m (end-force coefficients)
+  std::vector<double> phi_table_, slope_table_;  // [k * N + n], empty when evaluated on the fly
+  std::vector<double> comp_, rate_comp_, conv_comp_, residual_;  // C, D parts per step position
+  std::vector<double> sensor_phi_;              // [s * N + n]
+};
+
+}  // namespace rollspec::beam

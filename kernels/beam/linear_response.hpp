@@ -1,0 +1,34 @@
+#pragma once
+// Frequency-domain solution of the linearised ball-on-beam model (the Monte-Carlo check of the
+// linear model), README Eq. (B31)–(B34). Receptances (displacement per unit contact force, sign
+// convention "separation of ball and beam at the contact"):
+//   beam    alpha_b(x, xi) = sum_n phi_n(x) phi_n(xi) / (m (w_n^2 - w^2 + 2 i zeta_n w_n w))  (+ R(xi) at x = xi)
+//   ball    alpha_2 = -1 / (m2 w^2)
+//   contact alpha_c = 1 / (k0 + i w c0)
+// Roughness excitation (D-1 with F = (k0 + i w c0) delta):   F = h / (alpha_c + alpha_b + alpha_2)     (B32)
+// Blocked-force excitation (D-11):                          F = F0 / ((k0 + i w c0)(alpha_c + alpha_b + alpha_2))
+// Sensor acceleration: A_s = w^2 alpha_b(x_s, xi) F (modal sum only, as in the time domain).  (B33)
+// The ball's position is averaged out: E|A_s|^2 is the mean over the given contact positions of
+// |H(x_s, xi)|^2 times the excitation PSD in time (one-sided, D-2)                         (B34)
+// (quasi-stationary: valid when the ball moves slowly compared with the modal decay, Tf/tau << 1).
+#include <vector>
+
+#include "kernels/beam/modal_beam.hpp"
+
+namespace rollspec::beam {
+
+enum class Excitation { roughness, blocked_force };
+
+struct LinearResponse {
+  std::vector<std::vector<double>> sensor_psd;  // [sensor][k], (m/s^2)^2/Hz
+  std::vector<double> force_psd;                // [k], N^2/Hz (contact force)
+};
+
+// excitation_psd[k] at frequencies[k] (Hz): roughness in time, m^2/Hz, or blocked force, N^2/Hz.
+// At f = 0 the responses are 0 (the free ball carries no static load in the dynamic part).
+LinearResponse linear_response_psd(const ModalBeam& beam, double ball_mass, double k0, double c0,
+                                   const std::vector<double>& contact_positions, const std::vector<double>& sensors,
+                                   const std::vector<double>& frequencies, const std::vector<double>& excitation_psd,
+                                   Excitation kind);
+
+}  // namespace rollspec::beam

@@ -1,0 +1,109 @@
+// Ball-on-beam integrators: static equilibrium with residual flexibility, design order of the
+// exact-step integrator, agreement with the Dormand–Prince reference (README B20–B28).
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ball_on_beam_fixture.hpp"
+#include "kernels/beam/dopri5_reference.hpp"
+#include "kernels/beam/exact_step_integrator.hpp"
+
+using namespace rollspec::beam;
+
+namespace {
+
+// max over sensors and samples of |a - a_ref|, relative to max |a_ref|.
+double relative_error(const BallOnBeamResult& a, const BallOnBeamResult& ref) {
+  double e = 0.0, peak = 0.0;
+  for (std::size_t s = 0; s < ref.sensor_acceleration.size(); ++s)
+    for (std::size_t j = 0; j < ref.samples(); ++j) {
+      e = std::max(e, std::abs(a.sensor_acceleration[s][j] - ref.sensor_acceleration[s][j]));
+      peak = std::max(peak, std::abs(ref.sensor_acceleration[s][j]));
+    }
+  return e / peak;
+}
+
+double force_error(const BallOnBeamResult& a, const BallOnBeamResult& ref) {
+  double e = 0.0, peak = 0.0;
+  for (std::size_t j = 0; j < ref.samples(); ++j) {
+    e = std::max(e, std::abs(a.contact_force[j] - ref.contact_force[j]));
+    peak = std::max(peak, std::abs(ref.contact_force[j]));
+  }
+  return e / peak;
+}
+
+}  // namespace
+
+TEST_CASE("static deflection under the ball: 16 modes + static correction within 0.05 % of P a^3 b^3 / (3 EI L^3)") {
+  for (bool correction : {true, false}) {
+    BeamProperties p;
+    p.length = 0.4;  // clamped–clamped, no effective-length extension: the closed form applies directly
+    for (double a_over_l : {0.1, 0.3, 0.5}) {
+      BallOnBeamModel m{ModalBeam(p, {16, 0.0}, {0.02, {}}, correction), Ball{}, ContactLaw{}, Traverse{}, 20000.0, {0.2}};
+      m.traverse = {a_over_l * p.length, a_over_l * p.length, 0.0, 0.01};  // at rest for 10 ms
+      const ExactStepIntegrator integ(m, 2);
+      const BallOnBeamResult r = integ.run(Realisation{});
+      const double a = a_over_l * p.length, b = p.length - a, load = m.ball.mass * m.ball.gravity;
+      const double exact = -load * a * a * a * b * b * b / (3.0 * m.beam.bending_stiffness() * p.length * p.length * p.length);
+      double worst = 0.0;
+      for (std::size_t j = 0; j < r.samples(); ++j) {
+        worst = std::max(worst, std::abs(r.contact_deflection[j] / exact - 1.0));
+        CHECK(r.contact_force[j] == doctest::Approx(load).epsilon(1e-9));
+      }
+      MESSAGE(std::string(correction ? "with" : "without") << " correction, a = " << a_over_l << " l: max rel. error " << worst);
+      if (correction) CHECK(worst <= 5e-4);
+      if (!correction && a_over_l == 0.1) CHECK(worst > 5e-4);  // shown not met without the correction
+    }
+  }
+}
+
+TEST_CASE("exact-step integrator converges at second order (Hertz, smooth roughness, no loss of contact)") {
+  const BallOnBeamModel m = test::hertz_model(12, 0.02, 0.07, 10000.0);
+  Realisation r;
+  r.roughness = test::sine_roughness(0.39, 2e-5, {3e-8, 2e-8, 1e-8}, {4e-3, 1.3e-3, 0.7e-3});
+  const BallOnBeamResult ref = ExactStepIntegrator(m, 512).run(r);
+  CHECK(ref.loss_of_contact_share == 0.0);
+  std::vector<double> err;
+  for (int s : {2, 4, 8, 16, 32}) {
+    err.push_back(relative_error(ExactStepIntegrator(m, s).run(r), ref));
+    MESSAGE("dt = " << 1.0 / (10000.0 * s) << " s: max rel. acceleration error " << err.back());
+  }
+  for (std::size_t i = 1; i < err.size(); ++i) {
+    const double slope = std::log2(err[i - 1] / err[i]);
+    MESSAGE("observed order " << slope);
+    CHECK(slope == doctest::Approx(2.0).epsilon(0.1));  // 1.8 .. 2.2
+  }
+}
+
+TEST_CASE("exact-step integrator agrees with Dormand–Prince 5(4) on a nonlinear Hertz case") {
+  BallOnBeamModel m = test::hertz_model(12, 0.02, 0.06, 20000.0);
+  m.contact.rate = DampingRate::total;
+  Realisation r;
+  // Rough enough to stay strongly nonlinear: the compression swings by about half its static value.
+  r.roughness = test::sine_roughness(0.39, 1e-5, {8e-8, 4e-8, 2e-8}, {3e-3, 1.1e-3, 0.5e-3});
+  ReferenceTolerances tol;
+  tol.rtol = 1e-11;
+  tol.atol_displacement = 1e-17;
+  const auto t0 = std::chrono::steady_clock::now();
+  const BallOnBeamResult ref = simulate_dopri5(m, r, tol);
+  const auto t1 = std::chrono::steady_clock::now();
+  const BallOnBeamResult fast = ExactStepIntegrator(m, 64).run(r);  // dt = 0.78 us
+  const auto t2 = std::chrono::steady_clock::now();
+  double dmin = 1e9, dmax = -1e9;
+  for (double d : ref.compression) dmin = std::min(dmin, d), dmax = std::max(dmax, d);
+  const double ea = relative_error(fast, ref), ef = force_error(fast, ref);
+  MESSAGE("compression range " << dmin << " .. " << dmax << " m; DOPRI5 steps " << ref.steps << " (+" << ref.rejected_steps
+                               << " rejected), " << std::chrono::duration<double>(t1 - t0).count() << " s; exact-step "
+                               << fast.steps << " steps, " << std::chrono::duration<double>(t2 - t1).count() << " s");
+  MESSAGE("max rel. acceleration error " << ea << ", max rel. force error " << ef);
+  CHECK(dmax > 1.3 * dmin);
+  CHECK(ea <= 1e-4);
+  CHECK(ef <= 1e-4);
+  // and it keeps converging to the reference (second order) at dt = 0.195 us
+  const BallOnBeamResult finer = ExactStepIntegrator(m, 256).run(r);
+  MESSAGE("256 substeps: max rel. acceleration error " << relative_error(finer, ref));
+  CHECK(relative_error(finer, ref) <= 1e-5);
+}
