@@ -152,3 +152,25 @@ TEST_CASE("input checks") {
   CHECK_THROWS_AS(effective_modulus(-1.0, 0.3, 1.0, 0.3), std::invalid_argument);
   CHECK(effective_modulus(210e9, 0.3, 210e9, 0.3) == doctest::Approx(210e9 / (2.0 * (1.0 - 0.09))).epsilon(1e-15));
 }
+
+TEST_CASE("load control on the open half-space finds the Hertz approach") {
+  const Hertz h;
+  const Grid grid = h.grid(16.0);
+  const auto gap = ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
+  ContactSolver solver(grid, h.e_star);
+  std::vector<double> p;
+  SolverOptions opt;
+  opt.tolerance = 1e-12;
+  const double mean_pressure = h.force() / (static_cast<double>(grid.size()) * grid.cell_area());
+  const ContactResult r = solver.solve_load(gap, mean_pressure, p, opt);
+  REQUIRE(r.converged);
+  MESSAGE("load control, 16 cells/a: w / w_Hertz - 1 = " << r.approach / h.approach - 1.0 << ", iterations "
+                                                          << r.iterations);
+  CHECK(r.force == doctest::Approx(h.force()).epsilon(1e-12));
+  // P ∝ w^{3/2}: the approach error is 2/3 of the force error at fixed approach (1.2e-4 here).
+  CHECK(std::fabs(r.approach / h.approach - 1.0) < 1.5e-4);
+  // Same field as displacement control at the approach it found.
+  std::vector<double> pd;
+  const ContactResult rd = solver.solve(gap, r.approach, pd, opt);
+  CHECK(rd.force == doctest::Approx(r.force).epsilon(1e-9));
+}

@@ -78,6 +78,12 @@ TEST_CASE("H = 0.01 p0: force within 2 % of the bearing-area limit 2 pi R delta 
                                                      << double(r.plastic_cells) / double(r.contact_cells));
   CHECK(std::fabs(r.force / limit - 1.0) < 0.02);
   CHECK(r.max_pressure <= opt.hardness);
+  // Plastic volume (README Eq. 10): rigid-plastic limit ∫(w − r²/2R) dA = π R w²; the small elastic
+  // displacement under H lowers it by a few per cent.
+  const double v_rigid = kPi * h.radius * h.approach * h.approach;
+  MESSAGE("H = 0.01 p0: plastic volume / (pi R w^2) - 1 = " << r.plastic_volume / v_rigid - 1.0);
+  CHECK(r.plastic_volume < v_rigid);
+  CHECK(r.plastic_volume > 0.95 * v_rigid);
 }
 
 TEST_CASE("rough ball: cap holds, saturated cells are released when unloading") {
