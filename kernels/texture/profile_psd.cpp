@@ -1,0 +1,161 @@
+#include "kernels/texture/profile_psd.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "kernels/spectral/welch.hpp"
+
+namespace rollspec::texture {
+
+namespace {
+constexpr std::size_t kMinSamples = 8;
+constexpr double kSpacingTolerance = 1e-3;
+
+double checked_spacing(const Profile& p, std::size_t index) {
+  const std::string who = "profile " + std::to_string(index);
+  if (p.x.size() != p.z.size())
+    throw std::invalid_argument(who + ": " + std::to_string(p.x.size()) + " positions but " + std::to_string(p.z.size()) + " heights");
+  if (p.z.size() < kMinSamples)
+    throw std::invalid_argument(who + " has " + std::to_string(p.z.size()) + " samples; at least " +
+                                std::to_string(kMinSamples) + " are needed");
+  for (std::size_t i = 0; i < p.z.size(); ++i)
+    if (!std::isfinite(p.x[i]) || !std::isfinite(p.z[i]))
+      throw std::invalid_argument(who + ": sample " + std::to_string(i) + " is not finite");
+  const double dx = (p.x.back() - p.x.front()) / static_cast<double>(p.x.size() - 1);
+  if (!(dx > 0.0)) throw std::invalid_argument(who + ": positions must increase");
+  for (std::size_t i = 1; i < p.x.size(); ++i) {
+    const double d = p.x[i] - p.x[i - 1];
+    if (std::abs(d / dx - 1.0) > kSpacingTolerance)
+      throw std::invalid_argument(who + ": non-uniform spacing at sample " + std::to_string(i) + " (step " +
+                                  std::to_string(d) + " m, mean step " + std::to_string(dx) + " m)");
+  }
+  return dx;
+}
+
+EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, const ProfilePsdOptions& options) {
+  EstimatedPsd out;
+  out.samples = rows.front().size();
+  out.spacing = dx;
+  out.profiles = rows.size();
+  out.dk = 2.0 * M_PI / (static_cast<double>(out.samples) * dx);
+  out.psd.assign(out.samples / 2 + 1, 0.0);
+  for (std::vector<double> z : rows) {
+    if (options.median_filter) median_filter3(z);
+    const std::vector<double> g = hann_periodogram(z, dx);
+    for (std::size_t j = 0; j < g.size(); ++j) out.psd[j] += g[j];
+  }
+  for (double& g : out.psd) g /= static_cast<double>(rows.size());  // Eq. 17
+  out.wavenumber.resize(out.psd.size());
+  for (std::size_t j = 0; j < out.psd.size(); ++j) out.wavenumber[j] = out.dk * static_cast<double>(j);
+  return out;
+}
+}  // namespace
+
+void remove_linear_trend(std::vector<double>& z) {
+  const std::size_t n = z.size();
+  if (n < 2) return;
+  const double xm = 0.5 * static_cast<double>(n - 1);
+  double zm = 0.0, sxz = 0.0, sxx = 0.0;
+  for (double v : z) zm += v;
+  zm /= static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xi = static_cast<double>(i) - xm;
+    sxz += xi * (z[i] - zm);
+    sxx += xi * xi;
+  }
+  const double b = sxz / sxx;
+  for (std::size_t i = 0; i < n; ++i) z[i] -= zm + b * (static_cast<double>(i) - xm);
+}
+
+void remove_quadratic_surface(Surface& map) {
+  // Least squares on centred, scaled coordinates (u, v in [-1, 1]) for a well-conditioned 6x6 system.
+  const double cx = 0.5 * static_cast<double>(map.nx - 1), cy = 0.5 * static_cast<double>(map.ny - 1);
+  const double sx = std::max(cx, 1.0), sy = std::max(cy, 1.0);
+  Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+  auto basis = [&](std::size_t ix, std::size_t iy) {
+    const double u = (static_cast<double>(ix) - cx) / sx, v = (static_cast<double>(iy) - cy) / sy;
+    Eigen::Matrix<double, 6, 1> f;
+    f << 1.0, u, v, u * u, u * v, v * v;
+    return f;
+  };
+  for (std::size_t iy = 0; iy < map.ny; ++iy)
+    for (std::size_t ix = 0; ix < map.nx; ++ix) {
+      const auto f = basis(ix, iy);
+      a += f * f.transpose();
+      b += f * map.at(ix, iy);
+    }
+  const Eigen::Matrix<double, 6, 1> c = a.ldlt().solve(b);
+  for (std::size_t iy = 0; iy < map.ny; ++iy)
+    for (std::size_t ix = 0; ix < map.nx; ++ix) map.at(ix, iy) -= basis(ix, iy).dot(c);
+}
+
+void median_filter3(std::vector<double>& z) {
+  if (z.size() < 3) return;
+  std::vector<double> out(z);
+  for (std::size_t i = 1; i + 1 < z.size(); ++i) {
+    const double a = z[i - 1], b = z[i], c = z[i + 1];
+    out[i] = std::max(std::min(a, b), std::min(std::max(a, b), c));
+  }
+  z.swap(out);
+}
+
+std::vector<double> hann_periodogram(const std::vector<double>& z, double dx) {
+  if (z.size() < kMinSamples) throw std::invalid_argument("periodogram needs at least 8 samples");
+  spectral::WelchConfig cfg;
+  cfg.sample_rate = 1.0 / dx;  // samples per metre: the PSD comes out per cycle/m
+  cfg.segment = z.size();
+  cfg.overlap = 0;
+  cfg.window = spectral::Window::hann;
+  cfg.detrend = spectral::Detrend::none;  // trend already removed (Eq. 15)
+  const spectral::WelchPlan plan(cfg);
+  spectral::WelchWorkspace ws(cfg.segment);
+  std::vector<double> g(plan.n_freq());
+  plan.psd(z.data(), z.size(), g.data(), ws);
+  for (double& v : g) v /= 2.0 * M_PI;  // per cycle/m -> per rad/m (Eq. 1)
+  return g;
+}
+
+EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdOptions& options) {
+  if (profiles.size() < 2)
+    throw std::invalid_argument("a PSD from measured profiles needs at least 2 profiles, got " + std::to_string(profiles.size()));
+  const double dx = checked_spacing(profiles.front(), 0);
+  std::vector<std::vector<double>> rows;
+  rows.reserve(profiles.size());
+  for (std::size_t p = 0; p < profiles.size(); ++p) {
+    const double dxp = checked_spacing(profiles[p], p);
+    if (profiles[p].z.size() != profiles.front().z.size())
+      throw std::invalid_argument("profile " + std::to_string(p) + " has " + std::to_string(profiles[p].z.size()) +
+                                  " samples but profile 0 has " + std::to_string(profiles.front().z.size()) +
+                                  "; periodograms are averaged on one grid");
+    if (std::abs(dxp / dx - 1.0) > kSpacingTolerance)
+      throw std::invalid_argument("profile " + std::to_string(p) + " has spacing " + std::to_string(dxp) +
+                                  " m but profile 0 has " + std::to_string(dx) + " m");
+    rows.push_back(profiles[p].z);
+    remove_linear_trend(rows.back());  // Eq. 15, 1D
+  }
+  return average(rows, dx, options);
+}
+
+EstimatedPsd map_psd(const Surface& map, const ProfilePsdOptions& options) {
+  if (map.ny < 2) throw std::invalid_argument("a height map needs at least 2 rows (profiles), got " + std::to_string(map.ny));
+  if (map.nx < kMinSamples)
+    throw std::invalid_argument("height map rows have " + std::to_string(map.nx) + " samples; at least 8 are needed");
+  if (!(map.dx > 0.0) || !(map.dy > 0.0)) throw std::invalid_argument("height map spacings must be positive");
+  if (map.heights.size() != map.nx * map.ny) throw std::invalid_argument("height map size does not match nx * ny");
+  for (std::size_t i = 0; i < map.heights.size(); ++i)
+    if (!std::isfinite(map.heights[i]))
+      throw std::invalid_argument("height map sample " + std::to_string(i % map.nx) + ", row " + std::to_string(i / map.nx) + " is not finite");
+  Surface m = map;
+  remove_quadratic_surface(m);  // Eq. 15, 2D
+  std::vector<std::vector<double>> rows(m.ny);
+  for (std::size_t iy = 0; iy < m.ny; ++iy) rows[iy].assign(m.heights.begin() + static_cast<std::ptrdiff_t>(iy * m.nx),
+                                                            m.heights.begin() + static_cast<std::ptrdiff_t>((iy + 1) * m.nx));
+  return average(rows, m.dx, options);
+}
+
+}  // namespace rollspec::texture

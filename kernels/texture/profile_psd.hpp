@@ -1,0 +1,51 @@
+#pragma once
+// PSD of a roughness from measured short profiles (design.md §3; seed 001 §3.1, seed 002 §4.2;
+// README Eq. 15-17). Per profile of N samples at spacing dx:
+//   1. remove the least-squares line a + b x (for a 2D map: the quadratic surface
+//      a + b x + c y + d x^2 + e x y + f y^2 over the whole map)                      (Eq. 15)
+//   2. optional 3-point median filter z_i <- median(z_{i-1}, z_i, z_{i+1}) (ends kept)
+//   3. Hann-windowed periodogram, density-scaled so that sum_j G_j dk = variance:
+//        G(k_j) = c_j dx |sum_i w_i z_i e^{-2 pi i j i / N}|^2 / (2 pi sum_i w_i^2),
+//        k_j = 2 pi j / (N dx), c_j = 2 (1 at DC and Nyquist)                          (Eq. 16)
+//      (the spectral kernel's D-15 with f_s = 1/dx in cycles/m, divided by 2 pi, Eq. 1)
+//   4. average over the P profiles: G = (1/P) sum_p G_p                              (Eq. 17)
+// Profiles must share N and dx; spacing must be uniform (|dx_i / dx - 1| <= 1e-3).
+#include <cstddef>
+#include <vector>
+
+#include "kernels/texture/surface.hpp"
+
+namespace rollspec::texture {
+
+struct Profile {
+  std::vector<double> x;  // positions, m, increasing and uniformly spaced
+  std::vector<double> z;  // heights, m
+};
+
+struct ProfilePsdOptions {
+  bool median_filter = false;  // step 2
+};
+
+struct EstimatedPsd {
+  std::vector<double> wavenumber;  // k_j = j dk, j = 0..N/2, rad/m
+  std::vector<double> psd;         // G(k_j), m^3 (one-sided)
+  double dk = 0.0;                 // rad/m
+  double spacing = 0.0;            // dx, m
+  std::size_t samples = 0;         // N per profile
+  std::size_t profiles = 0;        // P
+};
+
+// 1D profiles (step 1 with a line). Throws std::invalid_argument naming the profile and sample.
+EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdOptions& options = {});
+
+// A 2D height map: quadratic surface removed, then each row (along x) is one profile.
+EstimatedPsd map_psd(const Surface& map, const ProfilePsdOptions& options = {});
+
+// The steps, exposed for tests and for the engine's diagnostics.
+void remove_linear_trend(std::vector<double>& z);  // least squares in the sample index
+void remove_quadratic_surface(Surface& map);
+void median_filter3(std::vector<double>& z);
+// Eq. 16 for one profile (N >= 8), uniform spacing dx.
+std::vector<double> hann_periodogram(const std::vector<double>& z, double dx);
+
+}  // namespace rollspec::texture

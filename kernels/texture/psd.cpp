@@ -1,0 +1,36 @@
+#include "kernels/texture/psd.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rollspec::texture {
+
+std::vector<double> psd_at_harmonics(const Psd& psd, double dk, std::size_t count) {
+  if (!(dk > 0.0) || !std::isfinite(dk)) throw std::invalid_argument("harmonic spacing dk must be positive and finite");
+  std::vector<double> g(count, 0.0);
+  for (std::size_t j = 1; j < count; ++j) {
+    const double k = dk * static_cast<double>(j);
+    const double v = psd(k);
+    if (!(v >= 0.0) || !std::isfinite(v))
+      throw std::domain_error("PSD value at k = " + std::to_string(k) + " rad/m is " + std::to_string(v) +
+                              " (must be finite and >= 0)");
+    g[j] = v;
+  }
+  return g;
+}
+
+double integrate_psd(const Psd& psd, double k0, double k1, double p, std::size_t points) {
+  if (!(k0 > 0.0) || !(k1 > k0) || points < 2) throw std::invalid_argument("integrate_psd needs 0 < k0 < k1, >= 2 points");
+  const double r = std::log(k1 / k0) / static_cast<double>(points - 1);
+  double acc = 0.0, prev_k = k0, prev_f = std::pow(k0, p) * psd(k0);
+  for (std::size_t i = 1; i < points; ++i) {
+    const double k = (i + 1 == points) ? k1 : k0 * std::exp(r * static_cast<double>(i));
+    const double f = std::pow(k, p) * psd(k);
+    acc += 0.5 * (f + prev_f) * (k - prev_k);
+    prev_k = k;
+    prev_f = f;
+  }
+  return acc;
+}
+
+}  // namespace rollspec::texture

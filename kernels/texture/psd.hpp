@@ -1,0 +1,37 @@
+#pragma once
+// A one-sided roughness PSD G(k) as a value the whole texture kernel passes around.
+//
+//   variance = integral_0^inf G(k) dk,   k in rad/m, G in m^3 (m^2 per rad/m)   (README Eq. 4)
+//
+// Every model (table, self-affine, ISO 8608, ISO 3095) converts to this type, so the line and
+// surface generators and the engine only ever see one thing. `density` may throw
+// std::domain_error outside its domain (a table without extension); `support_max` is the
+// largest k whose power the model knows (infinity if unbounded) and drives the sampling check
+// dx <= pi / k_max of the line and surface generators; the density itself returns 0 where the
+// model has no power, the support fields are information, not a mask.
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace rollspec::texture {
+
+struct Psd {
+  std::function<double(double)> density;                         // G(k), m^3, k in rad/m
+  double support_min = 0.0;                                      // G = 0 for k < support_min
+  double support_max = std::numeric_limits<double>::infinity();  // G = 0 for k > support_max
+  std::string description;                                       // for logs and provenance
+  std::vector<double> breakpoints;  // k where G or G' jumps (cut-offs, roll-off, table nodes): exact quadrature nodes
+
+  double operator()(double k) const { return density(k); }
+};
+
+// G at the harmonics j dk, j = 0..count-1 (entry 0 is the DC term and set to 0). Evaluates the
+// density at every harmonic, so a table without extension throws for a harmonic it does not cover.
+std::vector<double> psd_at_harmonics(const Psd& psd, double dk, std::size_t count);
+
+// Trapezoidal integral of k^p G(k) over [k0, k1] on a log-spaced grid with `points` nodes
+// (p = 0: variance, p = 2: slope variance). A check, not the exact integrals of the models.
+double integrate_psd(const Psd& psd, double k0, double k1, double p = 0.0, std::size_t points = 20001);
+
+}  // namespace rollspec::texture

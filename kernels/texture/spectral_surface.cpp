@@ -1,0 +1,135 @@
+#include "kernels/texture/spectral_surface.hpp"
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "kernels/spectral/fftw_planner_lock.hpp"
+
+namespace rollspec::texture {
+
+namespace {
+void validate(const Psd& psd, const SpectralSurfaceSpec& s) {
+  if (s.nx < 4 || s.ny < 4 || s.nx % 2 || s.ny % 2)
+    throw std::invalid_argument("spectral surface: nx and ny must be even and >= 4 (got " + std::to_string(s.nx) + " x " +
+                                std::to_string(s.ny) + ")");
+  if (!(s.dx > 0.0) || !(s.dy > 0.0) || !std::isfinite(s.dx) || !std::isfinite(s.dy))
+    throw std::invalid_argument("spectral surface: dx and dy must be positive and finite");
+  if (!(s.anisotropy > 0.0) || !std::isfinite(s.anisotropy))
+    throw std::invalid_argument("spectral surface: anisotropy ratio must be positive and finite");
+  const double a = std::sqrt(s.anisotropy);
+  if (!s.allow_truncation && (psd.support_max / a > M_PI / s.dx * (1.0 + 1e-12) || psd.support_max * a > M_PI / s.dy * (1.0 + 1e-12)))
+    throw std::invalid_argument("spectral surface: the PSD (" + psd.description + ") carries power up to k_max = " +
+                                std::to_string(psd.support_max) + " rad/m, beyond the grid's pi/dx = " + std::to_string(M_PI / s.dx) +
+                                ", pi/dy = " + std::to_string(M_PI / s.dy) +
+                                " rad/m (with the anisotropy stretch); refine the grid, cut the PSD off, or allow truncation");
+}
+}  // namespace
+
+SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const SpectralSurfaceSpec& spec) : spec_(spec), plan_(nullptr) {
+  validate(psd, spec_);
+  const std::size_t nh = spec_.nx / 2 + 1;
+  const double dqx = 2.0 * M_PI / (static_cast<double>(spec_.nx) * spec_.dx);
+  const double dqy = 2.0 * M_PI / (static_cast<double>(spec_.ny) * spec_.dy);
+  const double a = std::sqrt(spec_.anisotropy);
+  const double q_min = 0.5 * std::min(a * dqx, dqy / a);
+  const double q_grid = std::hypot(a * M_PI / spec_.dx, M_PI / (a * spec_.dy));
+  iso_ = std::make_unique<IsotropicPsd>(psd, q_min, 1e3 * q_grid, spec_.points_per_decade);
+  const double width = std::sqrt(dqx * dqy);
+  c_.assign(modes(), 0.0);
+  for (std::size_t iy = 0; iy < spec_.ny; ++iy) {
+    if (iy == spec_.ny / 2) continue;  // Nyquist row
+    const double qy = dqy * (iy < spec_.ny / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(spec_.ny));
+    for (std::size_t ix = 0; ix + 1 < nh; ++ix) {  // ix = nx/2: Nyquist column
+      if (ix == 0 && iy == 0) continue;            // DC
+      const double q = std::hypot(a * dqx * static_cast<double>(ix), qy / a);  // Eq. 27
+      c_[iy * nh + ix] = iso_->cell_average(q, width);                        // Eq. 21
+    }
+  }
+  double* out = fftw_alloc_real(spec_.nx * spec_.ny);
+  fftw_complex* in = fftw_alloc_complex(modes());
+  {
+    const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
+    plan_ = fftw_plan_dft_c2r_2d(static_cast<int>(spec_.ny), static_cast<int>(spec_.nx), in, out, FFTW_ESTIMATE);
+  }
+  fftw_free(out);
+  fftw_free(in);
+  if (!plan_) throw std::runtime_error("FFTW could not plan the 2D surface transform");
+}
+
+SpectralSurfaceGenerator::~SpectralSurfaceGenerator() {
+  const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
+  fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+}
+
+double SpectralSurfaceGenerator::target_variance() const {
+  const std::size_t nh = spec_.nx / 2 + 1;
+  const double dqx = 2.0 * M_PI / (static_cast<double>(spec_.nx) * spec_.dx);
+  const double dqy = 2.0 * M_PI / (static_cast<double>(spec_.ny) * spec_.dy);
+  double v = 0.0;
+  for (std::size_t iy = 0; iy < spec_.ny; ++iy)
+    for (std::size_t ix = 0; ix < nh; ++ix) v += (ix == 0 ? 1.0 : 2.0) * c_[iy * nh + ix];  // +q and -q
+  return v * dqx * dqy / (4.0 * M_PI * M_PI);
+}
+
+std::vector<std::complex<double>> SpectralSurfaceGenerator::coefficients(const double* u_phase, const double* u_amplitude) const {
+  const std::size_t nh = spec_.nx / 2 + 1, ny = spec_.ny;
+  const double dqx = 2.0 * M_PI / (static_cast<double>(spec_.nx) * spec_.dx);
+  const double dqy = 2.0 * M_PI / (static_cast<double>(ny) * spec_.dy);
+  const double base = std::sqrt(dqx * dqy) / (2.0 * M_PI);
+  const bool rayleigh = spec_.amplitudes == spectral::Amplitudes::rayleigh;
+  std::vector<std::complex<double>> z(modes(), {0.0, 0.0});
+  for (std::size_t iy = 0; iy < ny; ++iy)
+    for (std::size_t ix = 0; ix < nh; ++ix) {
+      const std::size_t i = iy * nh + ix;
+      if (c_[i] <= 0.0) continue;
+      if (ix == 0 && iy > ny / 2) continue;  // conjugate of (0, ny - iy), set below
+      double amp = base * std::sqrt(c_[i]);  // Eq. 26
+      if (rayleigh) amp *= std::sqrt(-std::log(u_amplitude[i]));
+      z[i] = std::polar(amp, 2.0 * M_PI * u_phase[i]);
+    }
+  for (std::size_t iy = 1; iy < ny / 2; ++iy) z[(ny - iy) * nh] = std::conj(z[iy * nh]);  // Z_{-q} = conj(Z_q) on qx = 0
+  return z;
+}
+
+void SpectralSurfaceGenerator::generate(const double* u_phase, const double* u_amplitude, Surface& out) const {
+  const std::vector<std::complex<double>> z = coefficients(u_phase, u_amplitude);
+  fftw_complex* in = fftw_alloc_complex(modes());
+  double* buf = fftw_alloc_real(spec_.nx * spec_.ny);
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    in[i][0] = z[i].real();
+    in[i][1] = z[i].imag();
+  }
+  // FFTW's c2r sums the implicit conjugates of 0 < ix < nx/2, which is exactly Eq. 26.
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(plan_), in, buf);
+  out = Surface(spec_.nx, spec_.ny, spec_.dx, spec_.dy);
+  std::copy(buf, buf + spec_.nx * spec_.ny, out.heights.begin());
+  fftw_free(in);
+  fftw_free(buf);
+}
+
+Surface spectral_surface_direct(const SpectralSurfaceGenerator& gen, const double* u_phase, const double* u_amplitude) {
+  const SpectralSurfaceSpec& s = gen.spec();
+  const std::vector<std::complex<double>> z = gen.coefficients(u_phase, u_amplitude);
+  const std::size_t nh = s.nx / 2 + 1;
+  Surface out(s.nx, s.ny, s.dx, s.dy);
+  for (std::size_t y = 0; y < s.ny; ++y)
+    for (std::size_t x = 0; x < s.nx; ++x) {
+      double acc = 0.0;
+      for (std::size_t iy = 0; iy < s.ny; ++iy)
+        for (std::size_t ix = 0; ix < nh; ++ix) {
+          const std::complex<double> c = z[iy * nh + ix];
+          if (c == 0.0) continue;
+          const double arg = 2.0 * M_PI * (static_cast<double>(ix * x % s.nx) / static_cast<double>(s.nx) +
+                                           static_cast<double>(iy * y % s.ny) / static_cast<double>(s.ny));
+          const double re = c.real() * std::cos(arg) - c.imag() * std::sin(arg);
+          acc += (ix == 0 ? 1.0 : 2.0) * re;  // + its conjugate at -q for ix > 0
+        }
+      out.at(x, y) = acc;
+    }
+  return out;
+}
+
+}  // namespace rollspec::texture

@@ -1,0 +1,52 @@
+// Height statistics: FFT autocorrelation against the direct sum, Gaussian moments, 1/e length.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <random>
+
+#include "kernels/texture/line_texture.hpp"
+#include "kernels/texture/self_affine_psd.hpp"
+#include "kernels/texture/statistics.hpp"
+#include "texture_test_helpers.hpp"
+
+using namespace rollspec::texture;
+using texture_test::uniforms;
+
+TEST_CASE("autocorrelation: FFT path equals the direct sum (oracle)") {
+  std::mt19937_64 rng(1);
+  const auto h = uniforms(rng, 777);
+  const auto fast = autocorrelation(h.data(), h.size(), 200), slow = autocorrelation_direct(h.data(), h.size(), 200);
+  REQUIRE(fast.size() == 201);
+  for (std::size_t t = 0; t < fast.size(); ++t) CHECK(std::abs(fast[t] - slow[t]) <= 1e-12);
+}
+
+TEST_CASE("correlation length is the linear-interpolated 1/e crossing") {
+  // rho = 1, 0.5, 0.25: 1/e = 0.3679 lies between lags 1 and 2 at 1 + (0.5 - 0.3679) / 0.25.
+  CHECK(correlation_length_from_acf({1.0, 0.5, 0.25}, 2.0) == doctest::Approx(2.0 * (1.0 + (0.5 - std::exp(-1.0)) / 0.25)));
+  CHECK(std::isnan(correlation_length_from_acf({1.0, 0.9, 0.8}, 1.0)));
+}
+
+TEST_CASE("a long Rayleigh texture is Gaussian: skewness ~ 0, kurtosis ~ 3; its 1/e length matches the PSD's") {
+  const double dx = 1e-5;
+  const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (50.0 * dx), M_PI / dx, RmsTarget::height, 1e-6});
+  const std::size_t n = 1 << 20;
+  const LineTextureGenerator gen(model.to_psd(), LineTextureSpec{n, dx, 0, Amplitudes::rayleigh, false});
+  std::mt19937_64 rng(12);
+  const auto h = gen.generate(uniforms(rng, gen.harmonics()), uniforms(rng, gen.harmonics()));
+  const HeightStatistics st = line_statistics(h.data(), h.size(), dx);
+  // Expected 1/e length from the target autocovariance R(s) = sum_j G_j dk cos(k_j s dx).
+  const auto& g = gen.target_psd();
+  std::vector<double> rho(200, 0.0);
+  for (std::size_t s = 0; s < rho.size(); ++s)
+    for (std::size_t j = 1; j < g.size(); ++j)
+      rho[s] += g[j] * std::cos(gen.fundamental() * static_cast<double>(j) * dx * static_cast<double>(s));
+  for (std::size_t s = rho.size(); s-- > 0;) rho[s] /= rho[0];
+  const double expected = correlation_length_from_acf(rho, dx);
+  MESSAGE("rms " << st.rms << " (target " << model.rms_height() << "), skewness " << st.skewness << ", kurtosis " << st.kurtosis
+                 << ", correlation length " << st.correlation_length_x << " m (expected " << expected << " m)");
+  CHECK(std::abs(st.skewness) < 0.05);
+  CHECK(std::abs(st.kurtosis - 3.0) < 0.1);
+  CHECK(st.correlation_length_x == doctest::Approx(expected).epsilon(0.05));
+  CHECK(st.rms == doctest::Approx(model.rms_height()).epsilon(0.05));
+}
