@@ -1,0 +1,97 @@
+// Texture kernel throughput, one thread: line textures of 2^16 and 2^20 samples and 512^2
+// spectral (2D Fourier-filtered) and seed line-sum surfaces per second. The U(0,1) arrays are
+// drawn before timing (the engine's Philox draws are not part of the kernel); generator set-up
+// (PSD at the harmonics, inverse Abel, FFTW plans) is timed separately.
+//
+// Compile with: cmake --build <build> --target bench_texture
+// Sample run:   ./bench_texture [seconds_per_case]   -> CSV on stdout
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernels/texture/line_texture.hpp"
+#include "kernels/texture/seed_surface.hpp"
+#include "kernels/texture/self_affine_psd.hpp"
+#include "kernels/texture/spectral_surface.hpp"
+
+using namespace rollspec::texture;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+std::vector<double> uniforms(std::mt19937_64& rng, std::size_t n) {
+  std::vector<double> u(n);
+  for (double& v : u) v = 1.0 - std::generate_canonical<double, 53>(rng);
+  return u;
+}
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Runs f until at least `budget` seconds (and 3 calls) have passed; returns calls and seconds.
+template <class F>
+std::pair<long, double> run(F&& f, double budget) {
+  long calls = 0;
+  const auto t0 = Clock::now();
+  double t = 0.0;
+  do {
+    f();
+    ++calls;
+    t = seconds_since(t0);
+  } while (t < budget || calls < 3);
+  return {calls, t};
+}
+
+void row(const std::string& name, std::size_t samples, double setup_s, long calls, double seconds) {
+  const double rate = static_cast<double>(calls) / seconds;
+  std::printf("%s,%zu,%.6f,%ld,%.6f,%.3f,%.4e\n", name.c_str(), samples, setup_s, calls, seconds, rate,
+              static_cast<double>(samples) * rate);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double budget = argc > 1 ? std::atof(argv[1]) : 2.0;
+  std::mt19937_64 rng(1);
+  std::printf("case,samples,setup_s,realisations,seconds,realisations_per_s,samples_per_s\n");
+
+  const double dx = 1e-5;
+  const SelfAffinePsd line(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / 2e-3, M_PI / dx, RmsTarget::height, 1e-6});
+  for (std::size_t n : {std::size_t(1) << 16, std::size_t(1) << 20}) {
+    auto t0 = Clock::now();
+    const LineTextureGenerator gen(line.to_psd(), LineTextureSpec{n, dx, 0, Amplitudes::rayleigh, false});
+    const double setup = seconds_since(t0);
+    const auto up = uniforms(rng, gen.harmonics()), ua = uniforms(rng, gen.harmonics());
+    std::vector<double> out(n);
+    const auto [calls, secs] = run([&] { gen.generate(up.data(), ua.data(), out.data()); }, budget);
+    row("line_rayleigh_2^" + std::to_string(n == (1u << 16) ? 16 : 20), n, setup, calls, secs);
+  }
+
+  const double d = 1e-6;
+  const SelfAffinePsd surf(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (32.0 * d), M_PI / d, RmsTarget::height, 0.2e-6});
+  {
+    auto t0 = Clock::now();
+    const SpectralSurfaceGenerator gen(surf.to_psd(), SpectralSurfaceSpec{512, 512, d, d, Amplitudes::rayleigh, 1.0, false, 100});
+    const double setup = seconds_since(t0);
+    const auto up = uniforms(rng, gen.modes()), ua = uniforms(rng, gen.modes());
+    Surface s;
+    const auto [calls, secs] = run([&] { gen.generate(up.data(), ua.data(), s); }, budget);
+    row("spectral_surface_512x512", 512 * 512, setup, calls, secs);
+  }
+  {
+    SeedSurfaceRequest rq;
+    rq.nx = rq.ny = 512;
+    rq.dx = rq.dy = d;
+    rq.correlation_x = rq.correlation_y = 10.0 * d;
+    rq.sigma = 0.2e-6;
+    rq.max_box = 64;
+    auto t0 = Clock::now();
+    const SeedSurfaceGenerator gen(surf.to_psd(), rq);
+    const double setup = seconds_since(t0);
+    const auto u = uniforms(rng, gen.random_count());
+    Surface s;
+    const auto [calls, secs] = run([&] { gen.generate(u.data(), s); }, budget);
+    row("seed_surface_512x512", 512 * 512, setup, calls, secs);
+  }
+  return 0;
+}
