@@ -36,6 +36,24 @@ double checked_spacing(const Profile& p, std::size_t index) {
   return dx;
 }
 
+spectral::WelchConfig periodogram_config(std::size_t n, double dx) {
+  spectral::WelchConfig cfg;
+  cfg.sample_rate = 1.0 / dx;  // samples per metre: the PSD comes out per cycle/m
+  cfg.segment = n;
+  cfg.overlap = 0;
+  cfg.window = spectral::Window::hann;
+  cfg.detrend = spectral::Detrend::none;  // trend already removed (Eq. 15)
+  return cfg;
+}
+
+// Eq. 16 with a plan made once per estimate; adds G_p to acc.
+void add_periodogram(const spectral::WelchPlan& plan, spectral::WelchWorkspace& ws, const std::vector<double>& z,
+                     std::vector<double>& acc) {
+  std::vector<double> g(plan.n_freq());
+  plan.psd(z.data(), z.size(), g.data(), ws);
+  for (std::size_t j = 0; j < g.size(); ++j) acc[j] += g[j] / (2.0 * M_PI);  // per cycle/m -> per rad/m (Eq. 1)
+}
+
 EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, const ProfilePsdOptions& options) {
   EstimatedPsd out;
   out.samples = rows.front().size();
@@ -43,10 +61,11 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   out.profiles = rows.size();
   out.dk = 2.0 * M_PI / (static_cast<double>(out.samples) * dx);
   out.psd.assign(out.samples / 2 + 1, 0.0);
+  const spectral::WelchPlan plan(periodogram_config(out.samples, dx));
+  spectral::WelchWorkspace ws(out.samples);
   for (std::vector<double> z : rows) {
     if (options.median_filter) median_filter3(z);
-    const std::vector<double> g = hann_periodogram(z, dx);
-    for (std::size_t j = 0; j < g.size(); ++j) out.psd[j] += g[j];
+    add_periodogram(plan, ws, z, out.psd);
   }
   for (double& g : out.psd) g /= static_cast<double>(rows.size());  // Eq. 17
   out.wavenumber.resize(out.psd.size());
@@ -54,6 +73,14 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   return out;
 }
 }  // namespace
+
+TabulatedPsd estimated_psd_table(const EstimatedPsd& e, Extension extension, std::size_t first_bin) {
+  if (first_bin < 1 || first_bin + 2 > e.psd.size())
+    throw std::invalid_argument("estimated PSD table: first_bin must be >= 1 and leave at least 2 bins");
+  std::vector<double> k(e.wavenumber.begin() + static_cast<std::ptrdiff_t>(first_bin), e.wavenumber.end());
+  std::vector<double> g(e.psd.begin() + static_cast<std::ptrdiff_t>(first_bin), e.psd.end());
+  return TabulatedPsd(std::move(k), std::move(g), extension);
+}
 
 void remove_linear_trend(std::vector<double>& z) {
   const std::size_t n = z.size();
@@ -106,17 +133,10 @@ void median_filter3(std::vector<double>& z) {
 
 std::vector<double> hann_periodogram(const std::vector<double>& z, double dx) {
   if (z.size() < kMinSamples) throw std::invalid_argument("periodogram needs at least 8 samples");
-  spectral::WelchConfig cfg;
-  cfg.sample_rate = 1.0 / dx;  // samples per metre: the PSD comes out per cycle/m
-  cfg.segment = z.size();
-  cfg.overlap = 0;
-  cfg.window = spectral::Window::hann;
-  cfg.detrend = spectral::Detrend::none;  // trend already removed (Eq. 15)
-  const spectral::WelchPlan plan(cfg);
-  spectral::WelchWorkspace ws(cfg.segment);
-  std::vector<double> g(plan.n_freq());
-  plan.psd(z.data(), z.size(), g.data(), ws);
-  for (double& v : g) v /= 2.0 * M_PI;  // per cycle/m -> per rad/m (Eq. 1)
+  const spectral::WelchPlan plan(periodogram_config(z.size(), dx));
+  spectral::WelchWorkspace ws(z.size());
+  std::vector<double> g(plan.n_freq(), 0.0);
+  add_periodogram(plan, ws, z, g);
   return g;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "kernels/texture/surface.hpp"
+#include "kernels/texture/tabulated_psd.hpp"
 
 namespace rollspec::texture {
 
@@ -40,6 +41,11 @@ EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdO
 
 // A 2D height map: quadratic surface removed, then each row (along x) is one profile.
 EstimatedPsd map_psd(const Surface& map, const ProfilePsdOptions& options = {});
+
+// The estimate as a PSD table (bins j >= first_bin; the DC bin carries no roughness), so measured
+// profiles feed the line and surface generators. Bins below ~8 profile fundamentals are biased by
+// the window and the trend removal (README, test of Eq. 15-17); first_bin can skip them.
+TabulatedPsd estimated_psd_table(const EstimatedPsd& estimate, Extension extension, std::size_t first_bin = 1);
 
 // The steps, exposed for tests and for the engine's diagnostics.
 void remove_linear_trend(std::vector<double>& z);  // least squares in the sample index

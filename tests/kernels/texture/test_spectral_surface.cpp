@@ -75,7 +75,7 @@ TEST_CASE("spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per
     }
   }
   // Radial bands: mean over the modes whose |q| falls in the band, realised against target.
-  double worst2d = 0.0;
+  double worst2d = 0.0, worst_centre = 0.0, worst_modes = 0.0;
   int bands2d = 0;
   for (const auto& b : rollspec::spectral::third_octave_bands(spatial_frequency_from_wavenumber(dq), 0.5 / kD)) {
     const double lo = wavenumber_from_spatial_frequency(b.lower), hi = wavenumber_from_spatial_frequency(b.upper);
@@ -92,11 +92,16 @@ TEST_CASE("spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per
       }
     if (modes < 20) continue;  // each band mean has >= 20 modes x 50 surfaces x 2 dof
     const double d = texture_test::db(se / st);
-    worst2d = std::max(worst2d, std::abs(d));
+    if (std::abs(d) > worst2d) {
+      worst2d = std::abs(d);
+      worst_centre = b.centre;
+      worst_modes = modes;
+    }
     CHECK(std::abs(d) <= 0.5);
     ++bands2d;
   }
-  MESSAGE("radial 2D PSD: " << bands2d << " bands, worst |dL| = " << worst2d << " dB");
+  MESSAGE("radial 2D PSD: " << bands2d << " bands, worst |dL| = " << worst2d << " dB in the band at " << worst_centre
+                            << " cycles/m (" << worst_modes << " modes, half of them conjugates)");
   CHECK(bands2d >= 8);
 
   // Rows cut from the surfaces against the line PSD G of the model, bands from 4 dq up to pi/dx.

@@ -7,6 +7,7 @@
 
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
+#include "kernels/texture/spectral_surface.hpp"
 #include "kernels/texture/statistics.hpp"
 #include "texture_test_helpers.hpp"
 
@@ -49,4 +50,25 @@ TEST_CASE("a long Rayleigh texture is Gaussian: skewness ~ 0, kurtosis ~ 3; its 
   CHECK(std::abs(st.kurtosis - 3.0) < 0.1);
   CHECK(st.correlation_length_x == doctest::Approx(expected).epsilon(0.05));
   CHECK(st.rms == doctest::Approx(model.rms_height()).epsilon(0.05));
+}
+
+TEST_CASE("radially averaged 2D PSD: the bins partition the modes, so (2 pi)^-2 sum_b C_b modes_b dqx dqy = variance") {
+  const double d = 1e-6;
+  const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (16.0 * d), M_PI / d, RmsTarget::height, 0.2e-6});
+  const SpectralSurfaceGenerator gen(model.to_psd(), SpectralSurfaceSpec{64, 32, d, 2.0 * d, Amplitudes::rayleigh, 1.0, true, 100});
+  std::mt19937_64 rng(4);
+  const auto up = uniforms(rng, gen.modes()), ua = uniforms(rng, gen.modes());
+  Surface s;
+  gen.generate(up.data(), ua.data(), s);
+  const RadialPsd r = radially_averaged_psd(s);
+  const double dqx = 2.0 * M_PI / (64 * d), dqy = 2.0 * M_PI / (32 * 2.0 * d);
+  double var = 0.0, modes = 0.0;
+  for (std::size_t b = 0; b < r.psd.size(); ++b) {
+    var += r.psd[b] * r.modes[b] * dqx * dqy / (4.0 * M_PI * M_PI);
+    modes += r.modes[b];
+  }
+  const HeightStatistics st = surface_statistics(s);
+  CHECK(var == doctest::Approx(st.rms * st.rms).epsilon(1e-10));
+  CHECK(modes == doctest::Approx(64.0 * 32.0 - 1.0));  // every mode but DC
+  for (std::size_t b = 1; b < r.q.size(); ++b) CHECK(r.q[b] > r.q[b - 1]);
 }
