@@ -1,0 +1,61 @@
+#include "kernels/contact/force_control.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rollspec::contact {
+
+ContactResult solve_force(ContactSolver& solver, const std::vector<double>& gap, double force,
+                          std::vector<double>& pressure, const SolverOptions& options,
+                          const ForceControlOptions& control) {
+  if (!(force >= 0.0) || !std::isfinite(force)) throw std::invalid_argument("solve_force: force must be finite, >= 0");
+  if (solver.half_space().boundary() != Boundary::Open)
+    throw std::invalid_argument("solve_force: open boundary only (periodic: use solve_load)");
+  if (gap.size() != solver.grid().size()) throw std::invalid_argument("solve_force: gap size != grid size");
+  SolverOptions opt = options;
+  opt.compute_stiffness = true;
+  const auto [lo_it, hi_it] = std::minmax_element(gap.begin(), gap.end());
+  double w_lo = *lo_it;  // first contact: P(w_lo) = 0
+  ContactResult r = solver.solve(gap, w_lo, pressure, opt);
+  if (force == 0.0) return r;
+
+  const double target_tol = control.force_tolerance * force;
+  auto done = [&](const ContactResult& x) { return x.converged && std::fabs(x.force - force) <= target_tol; };
+  // Bracket: grow the step from first contact until P ≥ F.
+  double step = std::max(1e-3 * (*hi_it - *lo_it), 1e-12 * std::max(1.0, std::fabs(w_lo)));
+  double w_hi = w_lo + step;
+  int solves = 1;
+  for (;;) {
+    r = solver.solve(gap, w_hi, pressure, opt);
+    ++solves;
+    if (!r.converged || done(r)) {
+      r.converged = r.converged && done(r);
+      return r;
+    }
+    if (r.force >= force) break;
+    if (solves >= control.max_solves) {
+      r.converged = false;
+      return r;
+    }
+    w_lo = w_hi;
+    step *= 4.0;
+    w_hi = w_lo + step;
+  }
+  // Safeguarded Newton inside [w_lo, w_hi]: the current iterate is w_hi with P ≥ F.
+  double w = w_hi;
+  while (solves < control.max_solves) {
+    if (r.force >= force) w_hi = w; else w_lo = w;
+    double w_next = r.stiffness > 0.0 ? w + (force - r.force) / r.stiffness : 0.5 * (w_lo + w_hi);
+    if (!(w_next > w_lo && w_next < w_hi)) w_next = 0.5 * (w_lo + w_hi);
+    w = w_next;
+    r = solver.solve(gap, w, pressure, opt);
+    ++solves;
+    if (!r.converged || done(r)) break;
+    if (w_hi - w_lo <= 1e-15 * std::max(std::fabs(w_hi), std::fabs(w_lo))) break;  // bracket exhausted
+  }
+  r.converged = r.converged && done(r);
+  return r;
+}
+
+}  // namespace rollspec::contact
