@@ -39,7 +39,9 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
   const Vector3d x_f = xf0 + rr * P * (Qn - n);  // (D-13), seed 000 Eq. 7
   e.g_n = (x - plane.point).dot(n) - r;           // (D-14), seed 000 Eq. 11 (x_f lies on the plane)
   e.point = x - r * n;
-  if (!(e.g_n < 0.0)) return e;  // open: no force, state reset at commit
+  // touching (g_n = 0) counts as closed, so that a predictor from a touching state sees
+  // the normal penalty stiffness
+  if (!(e.g_n <= 0.0)) return e;  // open: no force, state reset at commit
   e.active = true;
 
   const Vector3d gt = P * (x - x_f) - gst0;  // (D-14), seed 000 Eq. 8-10, elastic gap

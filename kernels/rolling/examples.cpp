@@ -104,6 +104,7 @@ CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
   o.disp_tol = 1e-10;
   o.max_iterations = 40;
   o.max_cuts = 12;
+  o.max_line_search = 6;
   Solver S(cantilever_model(p), o);
   CantileverRun out;
   const long n = std::lround(t_end / dt);
@@ -124,12 +125,14 @@ CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
       const int tip = S.model().beams.back().nodes[2];
       s.tip = S.nodes()[static_cast<std::size_t>(tip)].x;
       s.reaction_y = S.reactions().back();
+      for (int d = 0; d < 3; ++d) s.root_reaction(d) = S.reactions()[static_cast<std::size_t>(d)];
       for (const BeamResultant& r : S.beam_resultants()) {
         s.x_ref.push_back(r.reference_position.x());
         s.torsion.push_back(r.moment.x());
         s.max_abs_torsion = std::max(s.max_abs_torsion, std::abs(r.moment.x()));
       }
       for (const ContactOutput& c : S.contacts()) {
+        s.contact_force_sum += c.force;
         if (!c.active) ++s.n_open;
         else if (c.slip) ++s.n_slip;
         else ++s.n_stick;

@@ -60,6 +60,8 @@ struct CantileverSnapshot {
   double time = 0.0;
   Eigen::Vector3d tip = Eigen::Vector3d::Zero();
   double reaction_y = 0.0;          // reaction at B in y
+  Eigen::Vector3d root_reaction = Eigen::Vector3d::Zero();      // reaction force at A
+  Eigen::Vector3d contact_force_sum = Eigen::Vector3d::Zero();  // sum of contact forces on the beam
   double max_abs_torsion = 0.0;     // max |M_1| over the Gauss points
   std::vector<double> x_ref, torsion;  // torsion M_1 along the reference x coordinate
   int n_slip = 0, n_stick = 0, n_open = 0;

@@ -1,6 +1,7 @@
 #include "kernels/rolling/solver.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 
@@ -393,6 +394,9 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
   VectorXd R, rf(I.neq), dq;
   rep.residual_norms.clear();
   double last = std::numeric_limits<double>::infinity();
+  VectorXd q_acc = q;
+  double G0 = 0.0, step = 1.0;
+  int nback = 0;
   for (int it = 0;; ++it) {
     I.sink.begin();
     I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals);
@@ -408,6 +412,21 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     const double rn = rf.norm();
     rep.residual_norms.push_back(rn);
     rep.iterations = it;
+    // Backtracking line search on G(s) = dq . R(q_acc + s dq) (README R-42): a full
+    // Newton step that overshoots (|G(1)| > 0.8 |G(0)|, e.g. across a stick/slip kink of the
+    // friction law) is halved, up to max_line_search times.
+    if (it > 0 && opt_.max_line_search > 0) {
+      const double G = dq.dot(rf);
+      const bool bad = !std::isfinite(rn) || std::abs(G) > 0.8 * std::abs(G0);
+      if (bad && nback < opt_.max_line_search) {
+        ++nback;
+        step *= 0.5;
+        for (std::size_t i = 0; i < I.eq.size(); ++i)
+          if (I.eq[i] >= 0) q(static_cast<Eigen::Index>(i)) = q_acc(static_cast<Eigen::Index>(i)) + step * dq(I.eq[i]);
+        last = step * dq.lpNorm<Eigen::Infinity>();
+        continue;
+      }
+    }
     if (!std::isfinite(rn)) return false;
     if (rn <= opt_.force_tol || (it > 0 && last <= opt_.disp_tol)) break;
     if (it >= opt_.max_iterations) return false;
@@ -418,6 +437,10 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     I.lu.factorize(I.sink.A);
     if (I.lu.info() != Eigen::Success) return false;
     dq = I.lu.solve(-rf);
+    G0 = dq.dot(rf);
+    q_acc = q;
+    step = 1.0;
+    nback = 0;
     for (std::size_t i = 0; i < I.eq.size(); ++i)
       if (I.eq[i] >= 0) q(static_cast<Eigen::Index>(i)) += dq(I.eq[i]);
     last = dq.lpNorm<Eigen::Infinity>();

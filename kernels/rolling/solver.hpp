@@ -27,6 +27,7 @@ struct SolverOptions {
   double force_tol = 1e-6;   // converged when ||R_free||_2 <= force_tol (N, N m)
   double disp_tol = 1e-12;   // ... or when the last Newton correction ||d||_inf <= disp_tol
   int max_cuts = 10;         // step halvings allowed below the nominal step
+  int max_line_search = 0;   // backtracking halvings per Newton iteration (0: pure Newton)
   bool consistent_initial_acceleration = true;  // dynamic: solve M a0 = f(0) at t0
 };
 
