@@ -9,6 +9,7 @@
 #include "kernels/contact/direct_product.hpp"
 #include "kernels/contact/half_space_operator.hpp"
 #include "kernels/contact/love_influence.hpp"
+#include "kernels/contact/version.hpp"
 
 using namespace rollspec::contact;
 
@@ -120,4 +121,9 @@ TEST_CASE("ball gap: exact sphere, paraboloid, roughness and composite heights")
     }
   CHECK(sphere[7] == 0.0);  // centre cell (2, 1) sits at the origin
   CHECK_THROWS_AS(ball_gap(grid, radius, std::vector<double>(4)), std::invalid_argument);
+}
+
+TEST_CASE("kernel version is a positive integer constant") {
+  static_assert(rollspec::contact::kernel_version >= 1, "kernel_version starts at 1");
+  CHECK(rollspec::contact::kernel_version == 1);
 }

@@ -1,0 +1,9 @@
+#pragma once
+// Version of the contact kernel's numerical results. Bump it whenever a change can alter any
+// number a stiffness table stores (discretisation, stopping rule, outputs' definitions), so cached
+// tables built by an older kernel are refused (issue 4, `kernel_version` / `input_hash`).
+namespace rollspec::contact {
+
+inline constexpr int kernel_version = 1;
+
+}  // namespace rollspec::contact
