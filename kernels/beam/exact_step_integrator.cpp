@@ -26,9 +26,9 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, int substeps, do
     c1m_.push_back(osc_.back().c1 / m);
   }
   const bool table = static_cast<double>(steps_ + 1) * n <= static_cast<double>(max_table_entries);
-  if (table) {
+  if (table) {  // slopes only when the damper sees the convective rate (B20)
     phi_table_.resize(static_cast<std::size_t>(steps_ + 1) * n);
-    slope_table_.resize(phi_table_.size());
+    if (total_rate_) slope_table_.resize(phi_table_.size());
   }
   comp_.resize(steps_ + 1);
   rate_comp_.resize(steps_ + 1);
@@ -40,7 +40,7 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, int substeps, do
     b.shapes(x, phi.data(), slope.data());
     if (table) {
       std::copy(phi.begin(), phi.end(), phi_table_.begin() + k * n);
-      std::copy(slope.begin(), slope.end(), slope_table_.begin() + k * n);
+      if (total_rate_) std::copy(slope.begin(), slope.end(), slope_table_.begin() + k * n);
     }
     // (B25): C = sum b1 phi^2 / m + h^2 / (6 m2) + R,  D = sum c1 phi^2 / m + h / (2 m2),
     //        convective part of D: v sum b1 phi phi' / m.
@@ -68,7 +68,7 @@ void ExactStepIntegrator::shapes_at(long k, const double*& phi, const double*& s
   const int n = model_.beam.modes();
   if (!phi_table_.empty()) {
     phi = phi_table_.data() + k * n;
-    slope = slope_table_.data() + k * n;
+    slope = total_rate_ ? slope_table_.data() + k * n : ss.data();  // ss stays zero otherwise
     return;
   }
   model_.beam.shapes(position(k), sp.data(), ss.data());
@@ -137,8 +137,9 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     for (int i = 0; i < n; ++i) {
       wf += phi[i] * qf[i];
       vfree += phi[i] * vf[i];
-      sf += slope[i] * qf[i];
     }
+    if (total_rate_)
+      for (int i = 0; i < n; ++i) sf += slope[i] * qf[i];
     // Ball (B24): exact for a linear force; the F1 parts are in C and D.
     const double a0 = f / m2 - g;
     const double w2f = w2 + u2 * h + a0 * h * h / 2.0 - f * h * h / (6.0 * m2);

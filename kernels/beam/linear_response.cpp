@@ -37,13 +37,15 @@ LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, dou
     const double alpha_ball = -1.0 / (m2 * w * w);
     for (std::size_t p = 0; p < xi.size(); ++p) {
       const double* pc = phi_c.data() + p * n;
-      cd alpha_b = res[p];
+      cd alpha_b = 0.0;
       for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] = 0.0;
       for (int i = 0; i < n; ++i) {
         alpha_b += pc[i] * pc[i] * modal[i];
         for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] += phi_s[s * n + i] * pc[i] * modal[i];
       }
-      cd total = 1.0 / kc + alpha_b + alpha_ball;  // (B32)
+      // (B32); the residual compliance is quasi-static: the damper does not see its rate (B21),
+      // so it enters with the elastic share k0 / (k0 + i w c0), exactly as in the time domain.
+      cd total = 1.0 / kc + alpha_b + alpha_ball + res[p] * k0 / kc;
       if (kind == Excitation::blocked_force) total *= kc;
       const double f2 = 1.0 / std::norm(total);  // |F / excitation|^2
       out.force_psd[k] += inv * f2 * gx[k];

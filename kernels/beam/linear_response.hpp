@@ -2,10 +2,12 @@
 // Frequency-domain solution of the linearised ball-on-beam model (the Monte-Carlo check of the
 // linear model), README Eq. (B31)–(B34). Receptances (displacement per unit contact force, sign
 // convention "separation of ball and beam at the contact"):
-//   beam    alpha_b(x, xi) = sum_n phi_n(x) phi_n(xi) / (m (w_n^2 - w^2 + 2 i zeta_n w_n w))  (+ R(xi) at x = xi)
+//   beam    alpha_b(x, xi) = sum_n phi_n(x) phi_n(xi) / (m (w_n^2 - w^2 + 2 i zeta_n w_n w))
+//           plus, at the contact, the residual flexibility R(xi) k0 / (k0 + i w c0): R is
+//           quasi-static and the contact damper does not see its rate (B21), as in the time domain
 //   ball    alpha_2 = -1 / (m2 w^2)
 //   contact alpha_c = 1 / (k0 + i w c0)
-// Roughness excitation (D-1 with F = (k0 + i w c0) delta):   F = h / (alpha_c + alpha_b + alpha_2)     (B32)
+// Roughness excitation (D-1 with F = k0 delta + i w c0 delta_dyn):  F = h / (alpha_c + alpha_b + alpha_2)  (B32)
 // Blocked-force excitation (D-11):                          F = F0 / ((k0 + i w c0)(alpha_c + alpha_b + alpha_2))
 // Sensor acceleration: A_s = w^2 alpha_b(x_s, xi) F (modal sum only, as in the time domain).  (B33)
 // The ball's position is averaged out: E|A_s|^2 is the mean over the given contact positions of

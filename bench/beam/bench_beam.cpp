@@ -1,0 +1,202 @@
+// Ball-on-beam work-precision and per-realisation cost (issue 5), README "Benchmark".
+//
+// Compile with: cmake --build <build> --target bench_beam
+// Sample run:   bench_beam > beam_work_precision.csv
+// Description:  a seed-002-like rig (clamped–clamped 6 x 50 mm steel, span 0.39 m in l_eff = 0.42 m,
+//   10 modes up to 10 kHz, 40 mm steel ball at 1 m/s, Hertz contact with c = 100 N s/m, roughness
+//   synthesised from an exponential-correlation PSD). Error = max over third-octave bands
+//   100 Hz – 5 kHz of |10 log10(L / L_ref)| of the sensor acceleration PSD (Welch, mean over the
+//   5 sensors), against a converged reference. Prints CSV blocks (lines starting '#' name them).
+#include <Random123/philox.h>
+#include <Random123/uniform.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "kernels/beam/dopri5_reference.hpp"
+#include "kernels/beam/exact_step_integrator.hpp"
+#include "kernels/spectral/harmonic_synthesis.hpp"
+#include "kernels/spectral/third_octave_bands.hpp"
+#include "kernels/spectral/welch.hpp"
+
+using namespace rollspec;
+using namespace rollspec::beam;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr double two_pi = 6.28318530717958647692;
+
+BallOnBeamModel rig(double speed, double sample_rate) {
+  BeamProperties p;
+  p.length = 0.39;
+  p.effective_length = 0.42;
+  BallOnBeamModel m{ModalBeam(p, {0, 10000.0}, {0.02, {}}), Ball{}, ContactLaw{}, Traverse{}, sample_rate, {}};
+  m.contact.kind = ContactLawKind::hertz;
+  m.contact.damping = 100.0;
+  m.traverse = {0.005, 0.385, speed, 0.0};
+  m.sensors = {0.05, 0.13, 0.195, 0.26, 0.33};
+  return m;
+}
+
+// Roughness h(x) by D-3 from G(k) = sigma^2 (2/pi) kc / (kc^2 + k^2), Philox-keyed phases.
+struct RoughnessSource {
+  std::size_t n = 1 << 16;
+  double dx = 1e-5, sigma, kc = 5000.0;
+  std::vector<double> psd;
+  spectral::HarmonicSynthesiser synth{n};
+  explicit RoughnessSource(double rms) : sigma(rms) {
+    const double dk = two_pi / (static_cast<double>(n) * dx);
+    for (std::size_t j = 0; j <= n / 2; ++j) {
+      const double k = static_cast<double>(j) * dk;
+      psd.push_back(sigma * sigma * 2.0 / 3.14159265358979 * kc / (kc * kc + k * k));
+    }
+  }
+  UniformSamples realise(unsigned long id, std::vector<double>& u) const {
+    u.resize(n / 2 + 1);
+    r123::Philox4x64 rng;
+    r123::Philox4x64::key_type key = {{2026ul, id}};
+    for (std::size_t j = 0; j < u.size(); ++j) {
+      r123::Philox4x64::ctr_type c = {{j, 0, 0, 0}};
+      u[j] = r123::u01<double>(rng(c, key)[0]);
+    }
+    UniformSamples s;
+    s.origin = 0.0;
+    s.step = dx;
+    s.values.resize(n);
+    synth.synthesise(psd.data(), two_pi / (static_cast<double>(n) * dx), spectral::Amplitudes::deterministic, u.data(),
+                     nullptr, s.values.data());
+    s.values.resize(static_cast<std::size_t>(0.40 / dx));
+    return s;
+  }
+};
+
+// Mean over sensors of the Welch PSD, then third-octave band levels 100 Hz - 5 kHz.
+std::vector<double> band_levels(const BallOnBeamResult& r, const spectral::WelchPlan& plan, spectral::WelchWorkspace& ws) {
+  std::vector<double> mean(plan.n_freq(), 0.0), p(plan.n_freq());
+  for (const auto& a : r.sensor_acceleration) {
+    plan.psd(a.data(), a.size(), p.data(), ws);
+    for (std::size_t k = 0; k < p.size(); ++k) mean[k] += p[k] / static_cast<double>(r.sensor_acceleration.size());
+  }
+  std::vector<double> out;
+  for (const auto& b : spectral::third_octave_bands(100.0 / std::pow(10.0, 0.05) * 1.0001, 5000.0 * std::pow(10.0, 0.05) * 0.9999))
+    out.push_back(spectral::band_average(mean.data(), mean.size(), plan.frequency_step(), b.lower, b.upper));
+  return out;
+}
+
+double max_db_error(const std::vector<double>& a, const std::vector<double>& ref) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < ref.size(); ++i) e = std::max(e, std::abs(10.0 * std::log10(a[i] / ref[i])));
+  return e;
+}
+
+template <class F>
+double seconds(F&& f, int repeats) {
+  double best = 1e30;
+  for (int i = 0; i < repeats; ++i) {
+    const auto t0 = Clock::now();
+    f();
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Optional argument: one section only (work, realisation, ensemble); default all.
+  const std::string only = argc > 1 ? argv[1] : "";
+  auto want = [&](const char* name) { return only.empty() || only == name; };
+  const double fs = 12800.0;
+  BallOnBeamModel m = rig(1.0, fs);
+  spectral::WelchConfig wc;
+  wc.sample_rate = fs;
+  wc.segment = 1024;
+  wc.overlap = 512;
+  const spectral::WelchPlan plan(wc);
+  spectral::WelchWorkspace ws(wc.segment);
+  const RoughnessSource src(0.02e-6);  // 20 nm rms: near-linear (no loss of contact), see loss_share
+  std::vector<double> u;
+  Realisation r;
+  r.roughness = src.realise(1, u);
+
+  // 1. Work-precision: one realisation, reference = exact-step at dt = 0.31 us (256 substeps).
+  if (want("work")) {
+  const BallOnBeamResult ref_es = ExactStepIntegrator(m, 256, 1e-13, 20'000'000).run(r);
+  const std::vector<double> ref = band_levels(ref_es, plan, ws);
+  ReferenceTolerances tight;
+  tight.rtol = 1e-11;
+  tight.atol_displacement = 1e-18;
+  const BallOnBeamResult ref_dp = simulate_dopri5(m, r, tight);
+  std::printf("# work_precision: seed-002-like rig, %d modes (<= 10 kHz), Hertz, 1 m/s, %zu samples at %.0f Hz; "
+              "reference exact-step 256 substeps; DOPRI5 rtol 1e-11 vs reference: %.2e dB; loss share %.4f\n",
+              m.beam.modes(), ref_es.samples(), fs, max_db_error(band_levels(ref_dp, plan, ws), ref),
+              ref_es.loss_of_contact_share);
+  std::printf("method,parameter,value,dt_s,steps,rejected,time_s,max_band_error_db\n");
+  for (int s : {1, 2, 4, 8, 16, 32, 64}) {
+    const ExactStepIntegrator integ(m, s);
+    BallOnBeamResult res;
+    const double t = seconds([&] { integ.run(r, res); }, 3);
+    std::printf("exact_step,substeps,%d,%.4e,%ld,0,%.5f,%.3e\n", s, integ.step(), res.steps, t,
+                max_db_error(band_levels(res, plan, ws), ref));
+  }
+  for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9}) {
+    ReferenceTolerances tol;
+    tol.rtol = rtol;
+    tol.atol_displacement = rtol * 1e-7;  // displacements are ~1e-7 m
+    BallOnBeamResult res;
+    const double t = seconds([&] { res = simulate_dopri5(m, r, tol); }, 1);
+    std::printf("dopri5,rtol,%.0e,,%ld,%ld,%.5f,%.3e\n", rtol, res.steps, res.rejected_steps, t,
+                max_db_error(band_levels(res, plan, ws), ref));
+  }
+
+  }
+
+  // 2. Time per realisation, seed-002-like rig at 1 m/s: roughness synthesis (2^16-point FFT),
+  //    exact-step integration, Welch PSDs of 5 sensors (one core; plan made once).
+  if (want("realisation")) {
+  std::printf("# per_realisation: one core, best of 5 after warm-up\n");
+  std::printf("substeps,dt_s,synthesis_ms,integration_ms,welch_ms,total_ms,realisations_per_s\n");
+  for (int s : {2, 4, 8, 16}) {
+    const ExactStepIntegrator integ(m, s);
+    BallOnBeamResult res;
+    Realisation rr;
+    unsigned long id = 10;
+    const double ts = seconds([&] { rr.roughness = src.realise(id++, u); }, 5);
+    const double ti = seconds([&] { integ.run(rr, res); }, 5);
+    std::vector<double> lv;
+    const double tw = seconds([&] { lv = band_levels(res, plan, ws); }, 5);
+    const double tot = ts + ti + tw;
+    std::printf("%d,%.4e,%.3f,%.3f,%.3f,%.3f,%.1f\n", s, integ.step(), 1e3 * ts, 1e3 * ti, 1e3 * tw, 1e3 * tot, 1.0 / tot);
+  }
+
+  }
+
+  // 3. Small ensemble (near-linear regime): exact-step (4 substeps) vs DOPRI5 (rtol 1e-9) band
+  //    levels of the ensemble mean over 8 realisations.
+  if (want("ensemble")) {
+    const ExactStepIntegrator integ(m, 4);
+    ReferenceTolerances tol;
+    tol.rtol = 1e-9;
+    tol.atol_displacement = 1e-16;
+    std::vector<double> a, b;
+    double loss = 0.0;
+    const int nr = 8;
+    for (int i = 0; i < nr; ++i) {
+      Realisation rr;
+      rr.roughness = src.realise(100 + static_cast<unsigned long>(i), u);
+      const BallOnBeamResult x = integ.run(rr), y = simulate_dopri5(m, rr, tol);
+      loss = std::max(loss, x.loss_of_contact_share);
+      const auto la = band_levels(x, plan, ws), lb = band_levels(y, plan, ws);
+      if (a.empty()) a.assign(la.size(), 0.0), b.assign(lb.size(), 0.0);
+      for (std::size_t k = 0; k < la.size(); ++k) a[k] += la[k] / nr, b[k] += lb[k] / nr;
+    }
+    std::printf("# ensemble: %d realisations, exact-step 4 substeps vs DOPRI5 rtol 1e-9\n", nr);
+    std::printf("realisations,max_loss_share,max_band_difference_db\n%d,%.4f,%.3e\n", nr, loss, max_db_error(a, b));
+  }
+  return 0;
+}

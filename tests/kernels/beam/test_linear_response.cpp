@@ -1,0 +1,79 @@
+// Frequency-domain solution of the linearised model (README B31–B34) against the time integrator.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include "ball_on_beam_fixture.hpp"
+#include "kernels/beam/exact_step_integrator.hpp"
+#include "kernels/beam/linear_response.hpp"
+
+using namespace rollspec::beam;
+
+namespace {
+// Least-squares amplitude of a sinusoid at f (with offset) over samples [j0, end).
+double amplitude(const std::vector<double>& y, double fs, double f, std::size_t j0) {
+  double sc = 0, ss = 0, cc = 0, yc = 0, ys = 0, c1 = 0, s1 = 0, y1 = 0, n = 0;
+  for (std::size_t j = j0; j < y.size(); ++j) {
+    const double t = static_cast<double>(j) / fs, c = std::cos(6.283185307179586 * f * t), s = std::sin(6.283185307179586 * f * t);
+    cc += c * c, ss += s * s, sc += s * c, yc += y[j] * c, ys += y[j] * s, c1 += c, s1 += s, y1 += y[j], n += 1;
+  }
+  // Solve [cc sc c1; sc ss s1; c1 s1 n] [a b d] = [yc ys y1] by Cramer's rule.
+  auto det3 = [](double a, double b, double c, double d, double e, double f_, double g, double h, double i) {
+    return a * (e * i - f_ * h) - b * (d * i - f_ * g) + c * (d * h - e * g);
+  };
+  const double D = det3(cc, sc, c1, sc, ss, s1, c1, s1, n);
+  const double a = det3(yc, sc, c1, ys, ss, s1, y1, s1, n) / D;
+  const double b = det3(cc, yc, c1, sc, ys, s1, c1, y1, n) / D;
+  return std::hypot(a, b);
+}
+}  // namespace
+
+TEST_CASE("linear receptance model equals the steady state of the time integrator (ball at rest, sinusoidal F0)") {
+  BallOnBeamModel m = test::hertz_model(10, 0.13, 0.13, 40000.0);
+  m.beam = ModalBeam(test::rig_beam(), {10, 0.0}, {0.1, {}});
+  m.contact.kind = ContactLawKind::linearised;
+  m.contact.k0 = 6.8e6;
+  m.contact.damping = 100.0;
+  m.contact.allow_tension = true;
+  m.traverse = {0.13, 0.13, 0.0, 0.25};
+  const ExactStepIntegrator integ(m, 8);
+  const double w = m.ball.mass * m.ball.gravity, a0 = 0.1;
+  for (double f : {300.0, 1100.0, 2600.0}) {
+    Realisation r;
+    r.blocked_force.step = 1e-5;
+    for (int i = 0; i <= 25001; ++i) r.blocked_force.values.push_back(w + a0 * std::sin(6.283185307179586 * f * 1e-5 * i));
+    const BallOnBeamResult res = integ.run(r);
+    const LinearResponse lr = linear_response_psd(m.beam, m.ball.mass, m.contact.k0, m.contact.damping, {0.13}, m.sensors,
+                                                  {f}, {1.0}, Excitation::blocked_force);
+    const std::size_t j0 = res.samples() - 2000;  // last 50 ms
+    const double fa = amplitude(res.contact_force, m.sample_rate, f, j0);
+    MESSAGE(f << " Hz: force amplitude time " << fa << " vs frequency domain " << a0 * std::sqrt(lr.force_psd[0]));
+    CHECK(fa == doctest::Approx(a0 * std::sqrt(lr.force_psd[0])).epsilon(5e-4));
+    for (std::size_t s = 0; s < m.sensors.size(); ++s) {
+      const double ta = amplitude(res.sensor_acceleration[s], m.sample_rate, f, j0);
+      CHECK(ta == doctest::Approx(a0 * std::sqrt(lr.sensor_psd[s][0])).epsilon(5e-4));
+    }
+  }
+}
+
+TEST_CASE("roughness and blocked-force excitation are the same model with F0 = (k0 + i w c0) h") {
+  const ModalBeam beam(test::rig_beam(), {12, 0.0}, {0.02, {}});
+  const double k0 = 6.8e6, c0 = 100.0;
+  std::vector<double> f, gh, gf;
+  for (int k = 1; k <= 50; ++k) {
+    f.push_back(100.0 * k);
+    gh.push_back(1e-18 / k);
+    const double w = 6.283185307179586 * f.back();
+    gf.push_back(std::norm(std::complex<double>(k0, w * c0)) * gh.back());
+  }
+  const std::vector<double> xi = {0.05, 0.1, 0.2, 0.3}, sensors = {0.13, 0.26};
+  const LinearResponse a = linear_response_psd(beam, 0.2631, k0, c0, xi, sensors, f, gh, Excitation::roughness);
+  const LinearResponse b = linear_response_psd(beam, 0.2631, k0, c0, xi, sensors, f, gf, Excitation::blocked_force);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    CHECK(a.force_psd[k] == doctest::Approx(b.force_psd[k]).epsilon(1e-12));
+    CHECK(a.sensor_psd[1][k] == doctest::Approx(b.sensor_psd[1][k]).epsilon(1e-12));
+    CHECK(a.sensor_psd[0][k] > 0.0);
+  }
+}
