@@ -14,6 +14,7 @@
 #include <string>
 
 #include "src/cli/commands.hpp"
+#include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
 
 namespace {
@@ -54,10 +55,11 @@ int main(int argc, char** argv) {
     std::cerr << "rollspec: unknown command '" << command << "'\n\n" << kUsage;
     return EX_USAGE;
   }
+  const ensemble::MpiSession mpi(&argc, &argv);
   try {
     return it->second(cli::Args(argv + 2, argv + argc));
   } catch (const UserError& e) {
-    std::cerr << "rollspec " << command << ": error: " << e.what() << "\n";
+    std::cerr << ensemble::rank_prefix() << "rollspec " << command << ": error: " << e.what() << "\n";
     return e.exit_code();
   } catch (const std::exception& e) {
     std::cerr << "rollspec " << command << ": internal error: " << e.what() << "\n";

@@ -8,6 +8,7 @@
 #include "src/cli/parse_options.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
+#include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
@@ -57,10 +58,12 @@ int run_command(const Args& args) {
   cfg.study_hash = scenes::study_result_hash(s);
   cfg.resume = vm.count("resume") > 0;
   cfg.quiet = quiet;
+  cfg.log_prefix = ensemble::rank_prefix();
   const ensemble::EnsembleSums sums = ensemble::run_ensemble(
       cfg, scene->values_per_realisation(),
       [&](std::uint64_t id, int thread, double* values) { scene->run_realisation(id, thread, values); });
 
+  if (ensemble::mpi_rank() != 0) return 0;  // rank 0 holds the sums and writes the result
   {
     io::Hdf5Writer w(out);
     io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, s.canonical_text(), cfg.seed);
@@ -68,13 +71,15 @@ int run_command(const Args& args) {
     scene->write_results(w, sums);
     w.write("/run/wall_seconds", {1}, &sums.seconds, "s", "wall time of the ensemble (this run; not part of the result data)");
     w.attribute("/run", "threads", static_cast<std::int64_t>(omp_get_max_threads()));
+    w.attribute("/run", "ranks", static_cast<std::int64_t>(ensemble::mpi_size()));
     w.attribute("/run", "realisations_computed", static_cast<std::int64_t>(sums.computed));
     w.commit();
   }
   ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear();
   if (!quiet)
     std::cout << "wrote " << out << " (" << sums.count << " realisations, " << sums.computed << " computed in "
-              << sums.seconds << " s, " << omp_get_max_threads() << " threads)\n";
+              << sums.seconds << " s, " << ensemble::mpi_size() << " rank(s) x " << omp_get_max_threads()
+              << " threads)\n";
   return 0;
 }
 

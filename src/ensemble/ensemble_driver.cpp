@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "src/ensemble/checkpoint.hpp"
+#include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/pairwise_tree.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/ensemble/stop_signal.hpp"
@@ -74,49 +75,68 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
   const auto start = std::chrono::steady_clock::now();
   const std::uint64_t K = cfg.realisations, C = cfg.chunk_size;
   if (K == 0 || C == 0 || (C & (C - 1)) != 0) throw std::invalid_argument("ensemble needs K > 0 and a power-of-two chunk size");
+  const auto rank = static_cast<std::uint64_t>(mpi_rank()), ranks = static_cast<std::uint64_t>(mpi_size());
 
+  // This rank's chunks: [lo, lo + C) for lo / C = rank (mod ranks).
   CheckpointStore store(cfg.checkpoint_dir, cfg.study_hash);
   std::map<std::uint64_t, ChunkSums> chunks;
   if (!cfg.checkpoint_dir.empty()) {
     if (cfg.resume) {
       for (auto& [lo, c] : store.load(2 * n_values)) {
         const std::uint64_t hi = std::min(lo + C, K);
-        if (lo % C == 0 && c.hi == hi) chunks[lo] = std::move(c);  // chunks of another size or count are recomputed
+        // Chunks of another size or count are recomputed; those of other ranks are theirs to add.
+        if (lo % C == 0 && c.hi == hi && (lo / C) % ranks == rank) chunks[lo] = std::move(c);
       }
-    } else {
+    } else if (rank == 0) {
       store.clear();
     }
+    mpi_barrier();
   }
-  std::uint64_t reused = 0;
+  std::uint64_t mine = 0, reused = 0;
+  for (std::uint64_t lo = rank * C; lo < K; lo += C * ranks) mine += std::min(lo + C, K) - lo;
   for (const auto& kv : chunks) reused += kv.second.hi - kv.second.lo;
 
-  Progress progress("realisations", K - reused, cfg.quiet, cfg.log_prefix);
+  Progress progress("realisations", mine - reused, cfg.quiet, cfg.log_prefix);
   EnsembleSums out;
-  for (std::uint64_t lo = 0; lo < K; lo += C) {
-    if (chunks.count(lo)) continue;
-    const std::uint64_t hi = std::min(lo + C, K);
-    ChunkSums c = run_chunk(lo, hi, n_values, realisation, cfg.seed, progress);
-    if (c.values.empty()) break;  // stopped
-    if (!cfg.checkpoint_dir.empty()) store.write(c);
-    out.computed += hi - lo;
-    chunks[lo] = std::move(c);
+  std::exception_ptr failure;
+  try {
+    for (std::uint64_t lo = rank * C; lo < K; lo += C * ranks) {
+      if (chunks.count(lo)) continue;
+      const std::uint64_t hi = std::min(lo + C, K);
+      ChunkSums c = run_chunk(lo, hi, n_values, realisation, cfg.seed, progress);
+      if (c.values.empty()) break;  // stopped
+      if (!cfg.checkpoint_dir.empty()) store.write(c);
+      out.computed += hi - lo;
+      chunks[lo] = std::move(c);
+    }
+  } catch (...) {
+    failure = std::current_exception();
   }
-  if (stop_requested()) {
+  // Every rank takes part in the collective decisions, so one rank's failure never hangs the others.
+  const bool failed_somewhere = any_rank(failure != nullptr);
+  if (failure) std::rethrow_exception(failure);
+  if (failed_somewhere) throw UserError(EX_SOFTWARE, cfg.log_prefix + "stopped because another rank failed (see its message)");
+  out.computed = sum_over_ranks(out.computed);
+  if (any_rank(stop_requested())) {
     std::ostringstream s;
-    s << "interrupted: " << (reused + out.computed) << " of " << K << " realisations are complete";
+    s << cfg.log_prefix << "interrupted: " << (sum_over_ranks(reused) + out.computed) << " of " << K
+      << " realisations are complete";
     if (!cfg.checkpoint_dir.empty()) s << " and checkpointed in " << cfg.checkpoint_dir << "; finish with --resume";
     throw UserError(kExitInterrupted, s.str());
   }
   progress.finish();
 
-  const std::vector<double> total = tree_sum(0, K, [&](std::uint64_t a, std::uint64_t b) {
-    const auto it = chunks.find(a);
-    if (it != chunks.end() && it->second.hi == b) return it->second.values;
-    return std::vector<double>();
-  });
-  out.sum.assign(total.begin(), total.begin() + static_cast<std::ptrdiff_t>(n_values));
-  out.sum_sq.assign(total.begin() + static_cast<std::ptrdiff_t>(n_values), total.end());
+  const std::map<std::uint64_t, ChunkSums> all = gather_chunks(chunks, 2 * n_values);
   out.count = K;
+  if (rank == 0) {
+    const std::vector<double> total = tree_sum(0, K, [&](std::uint64_t a, std::uint64_t b) {
+      const auto it = all.find(a);
+      if (it != all.end() && it->second.hi == b) return it->second.values;
+      return std::vector<double>();
+    });
+    out.sum.assign(total.begin(), total.begin() + static_cast<std::ptrdiff_t>(n_values));
+    out.sum_sq.assign(total.begin() + static_cast<std::ptrdiff_t>(n_values), total.end());
+  }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

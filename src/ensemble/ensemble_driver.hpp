@@ -25,7 +25,7 @@ struct EnsembleConfig {
 };
 
 struct EnsembleSums {
-  std::vector<double> sum, sum_sq;  // over realisations, per value
+  std::vector<double> sum, sum_sq;  // over realisations, per value (on rank 0 only under MPI)
   std::uint64_t count = 0;
   std::uint64_t computed = 0;       // realisations computed in this run (the rest came from checkpoints)
   double seconds = 0.0;
