@@ -53,11 +53,80 @@ BeamStrain beam_point_strain(const BeamStiffPoint& p, const std::array<Vector3d,
   return st;
 }
 
+// Reference oracle: the point energy as one scalar function of the 9 point variables,
+// differentiated twice by Jet2<9> (slow, obvious).
+PointEnergy beam_point_energy_reference(const BeamSection& s, const BeamStiffPoint& p,
+                                        const Eigen::Matrix<double, 9, 1>& z) {
+  using J9 = Jet2<9>;
+  Vec3<J9> jxp, ja, jap;
+  for (int i = 0; i < 3; ++i) {
+    jxp[i] = J9::variable(z(i), i);
+    ja[i] = J9::variable(z(3 + i), 3 + i);
+    jap[i] = J9::variable(z(6 + i), 6 + i);
+  }
+  const J9 e = point_energy(s, p, jxp, ja, jap);
+  PointEnergy out;
+  out.value = e.v;
+  for (int i = 0; i < 9; ++i) {
+    out.grad(i) = e.g[i];
+    for (int j = 0; j < 9; ++j) out.hess(i, j) = e.h[i * 9 + j];
+  }
+  return out;
+}
+
+// Fast path (README R-14): every strain is bilinear, s_i = v_i . phi_i(a) with
+//   Gamma_i = (Q r_i) . x' - delta_i1,   K_i = K_n,i + (Xi^T Q r_i) . a',   r_i = R_n e_i,
+// so only the six 3-vectors phi_i(a) need first and second derivatives, with Jet2<3>.
+PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
+                              const Eigen::Matrix<double, 9, 1>& z) {
+  using J3 = Jet2<3>;
+  Vec3<J3> a;
+  for (int i = 0; i < 3; ++i) a[i] = J3::variable(z(3 + i), i);
+  const double c[6] = {s.EA, s.GA2, s.GA3, s.GJ, s.EI2, s.EI3};
+  PointEnergy out;
+  out.grad.setZero();
+  out.hess.setZero();
+  out.value = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3<J3> ri{J3(p.R(0, i)), J3(p.R(1, i)), J3(p.R(2, i))};
+    const Vec3<J3> d = q_apply(a, ri);
+    const Vec3<J3> b = xit_apply(a, d);
+    for (int kind = 0; kind < 2; ++kind) {  // 0: Gamma_i (v = x'), 1: K_i (v = a')
+      const Vec3<J3>& phi = kind == 0 ? d : b;
+      const int off = kind == 0 ? 0 : 6;
+      const double ci = c[3 * kind + i];
+      const Eigen::Vector3d v = z.segment<3>(off);
+      double si = 0.0;
+      Eigen::Vector3d phiv, gal = Eigen::Vector3d::Zero();  // ds/dv, ds/da
+      Eigen::Matrix3d Jp, Haa = Eigen::Matrix3d::Zero();    // d phi_k/d a_j, d2 s/da2
+      for (int k = 0; k < 3; ++k) {
+        si += phi[k].v * v(k);
+        phiv(k) = phi[k].v;
+        for (int j = 0; j < 3; ++j) {
+          Jp(k, j) = phi[k].g[j];
+          gal(j) += v(k) * phi[k].g[j];
+          for (int l = 0; l < 3; ++l) Haa(j, l) += v(k) * phi[k].h[j * 3 + l];
+        }
+      }
+      si += kind == 0 ? (i == 0 ? -1.0 : 0.0) : p.K(i);
+      out.value += 0.5 * ci * si * si;
+      Eigen::Matrix<double, 9, 1> g = Eigen::Matrix<double, 9, 1>::Zero();
+      g.segment<3>(off) = phiv;
+      g.segment<3>(3) = gal;
+      out.grad += ci * si * g;
+      out.hess += ci * g * g.transpose();
+      out.hess.block<3, 3>(3, 3) += ci * si * Haa;
+      out.hess.block<3, 3>(off, 3) += ci * si * Jp;
+      out.hess.block<3, 3>(3, off) += ci * si * Jp.transpose();
+    }
+  }
+  return out;
+}
+
 BeamElementEval beam_element_internal(const BeamSection& s, const std::array<BeamStiffPoint, 2>& gp,
                                       const std::array<Vector3d, 3>& x,
                                       const std::array<Vector3d, 3>& alpha, bool want_tangent) {
   BeamElementEval out;
-  using J9 = Jet2<9>;
   for (const BeamStiffPoint& p : gp) {
     double N[3], dN[3];
     quadratic_shape(p.xi, N, dN);
@@ -73,24 +142,13 @@ BeamElementEval beam_element_internal(const BeamSection& s, const std::array<Bea
       B.block<3, 3>(3, 6 * k + 3) = N[k] * Matrix3d::Identity();
       B.block<3, 3>(6, 6 * k + 3) = d * Matrix3d::Identity();
     }
-    Vec3<J9> jxp, ja, jap;
-    for (int i = 0; i < 3; ++i) {
-      jxp[i] = J9::variable(xp(i), i);
-      ja[i] = J9::variable(a(i), 3 + i);
-      jap[i] = J9::variable(ap(i), 6 + i);
-    }
-    const J9 e = point_energy(s, p, jxp, ja, jap);
+    Eigen::Matrix<double, 9, 1> z;
+    z << xp, a, ap;
+    const PointEnergy e = beam_point_energy(s, p, z);
     const double w = p.weight * p.jac;
-    Eigen::Matrix<double, 9, 1> grad;
-    for (int i = 0; i < 9; ++i) grad(i) = e.g[i];
-    out.energy += w * e.v;
-    out.force += w * B.transpose() * grad;
-    if (want_tangent) {
-      Eigen::Matrix<double, 9, 9> H;
-      for (int i = 0; i < 9; ++i)
-        for (int j = 0; j < 9; ++j) H(i, j) = e.h[i * 9 + j];
-      out.tangent += w * B.transpose() * H * B;
-    }
+    out.energy += w * e.value;
+    out.force += w * B.transpose() * e.grad;
+    if (want_tangent) out.tangent += w * B.transpose() * e.hess * B;
   }
   return out;
 }

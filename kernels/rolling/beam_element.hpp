@@ -5,8 +5,9 @@
 //   strain energy density  (1/2) Gamma.C_N Gamma + (1/2) K.C_M K
 // Stiffness with 2-point Gauss (reduced) integration against shear/membrane locking;
 // R_n, K_n are kept at the Gauss points and updated at the end of each step.
-// Internal force and tangent are the exact gradient and Hessian of the energy (forward
-// second-order jets over the 9 point variables (x', a, a')).
+// Internal force and tangent are the exact gradient and Hessian of the energy: strains are
+// bilinear in (x', a') and functions of a, differentiated with second-order jets in a
+// (README R-14); a Jet2<9> of the whole point energy is kept as the reference oracle.
 #pragma once
 
 #include <Eigen/Dense>
@@ -33,6 +34,19 @@ struct BeamStrain {
 // Strains at a stiffness point for current nodal positions x and incremental rotations a.
 BeamStrain beam_point_strain(const BeamStiffPoint& p, const std::array<Eigen::Vector3d, 3>& x,
                              const std::array<Eigen::Vector3d, 3>& alpha);
+
+// Strain energy per unit length at a stiffness point as a function of the point variables
+// z = (x', a, a'), with gradient and Hessian.
+struct PointEnergy {
+  double value = 0.0;
+  Eigen::Matrix<double, 9, 1> grad = Eigen::Matrix<double, 9, 1>::Zero();
+  Eigen::Matrix<double, 9, 9> hess = Eigen::Matrix<double, 9, 9>::Zero();
+};
+PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
+                              const Eigen::Matrix<double, 9, 1>& z);
+// Slow reference oracle of the same (one Jet2<9> evaluation), for tests.
+PointEnergy beam_point_energy_reference(const BeamSection& s, const BeamStiffPoint& p,
+                                        const Eigen::Matrix<double, 9, 1>& z);
 
 struct BeamElementEval {
   Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();   // internal force
