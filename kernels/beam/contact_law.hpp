@@ -56,6 +56,11 @@ class ContactModel {
   // F(delta, delta_dot; f0) with f0 the blocked force (linearised law only).
   ContactForce evaluate(double delta, double rate, double f0) const;
 
+  // Contact (not loss of contact) at compression delta: delta > 0, or F0 + k0 (delta + d0) > 0.
+  bool in_contact(double delta, double f0) const {
+    return linearised() ? f0 + law_.k0 * (delta + law_.d0) > 0.0 : delta > 0.0;
+  }
+
   // Elastic part only (no damping): P(delta), dP/d delta; zero for delta <= 0. Not for linearised.
   void elastic(double delta, double& force, double& stiffness) const;
 

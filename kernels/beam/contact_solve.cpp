@@ -29,10 +29,15 @@ ContactSolution solve_contact_force(const ContactModel& model, double delta_free
       else if (std::isfinite(lo)) fn = 2.0 * std::max(lo, scale);   // expand upward
       else fn = hi - 2.0 * std::max(std::abs(hi), scale);           // expand downward (tension only)
     }
-    if (std::abs(fn - f) <= tolerance * (std::abs(fn) + scale) ||
+    // Newton converges quadratically on each smooth branch: once a step is below sqrt(tol), the
+    // next one would be below tol, so fn is accepted without another evaluation.
+    const double size = std::abs(fn) + scale;
+    const bool smooth_step = std::abs(fn - f) <= std::sqrt(tolerance) * 0.1 * size && fn > lo && fn < hi &&
+                             model.in_contact(delta_free - compliance * fn, f0) == c.contact;
+    if (smooth_step || std::abs(fn - f) <= tolerance * size ||
         (std::isfinite(lo) && std::isfinite(hi) && hi - lo <= tolerance * (std::abs(hi) + scale))) {
-      const ContactForce cn = at(fn);
-      return {fn, delta_free - compliance * fn, rate_free - rate_compliance * fn, cn.contact, it};
+      const double d = delta_free - compliance * fn;
+      return {fn, d, rate_free - rate_compliance * fn, model.in_contact(d, f0), it};
     }
     f = fn;
   }

@@ -50,7 +50,10 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, int substeps, do
       d += c1m_[i] * phi[i] * phi[i];
       s += b1m_[i] * phi[i] * slope[i];
     }
-    residual_[k] = b.residual_flexibility(x);
+    // (B12) from the shapes already at hand
+    double modal = 0.0;
+    for (int i = 0; i < n; ++i) modal += phi[i] * phi[i] / (m * b.omega(i) * b.omega(i));
+    residual_[k] = b.static_correction() ? b.static_flexibility(x, x) - modal : 0.0;
     comp_[k] = c + h_ * h_ / (6.0 * m2) + residual_[k];
     rate_comp_[k] = d + h_ / (2.0 * m2);
     conv_comp_[k] = model_.traverse.speed * s;
@@ -123,6 +126,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
   }
 
   long lost = 0;
+  double f_prev = f;  // force one step back, for the extrapolated Newton guess
   for (long k = 0; k < steps_; ++k) {
     // Free part of the step: start force only (B23), with the ramp's start coefficient.
     for (int i = 0; i < n; ++i) {
@@ -154,7 +158,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
       d += conv_comp_[k1];
     }
     const ContactSolution cs =
-        solve_contact_force(contact_, wf + h1 - w2f, rate_free, comp_[k1], d, f0, f, weight, tol_);
+        solve_contact_force(contact_, wf + h1 - w2f, rate_free, comp_[k1], d, f0, 2.0 * f - f_prev, weight, tol_);
     const double f1 = cs.force;
     for (int i = 0; i < n; ++i) {
       const double g1 = -phi[i] * f1 / m;
@@ -163,6 +167,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     }
     w2 = w2f + f1 * h * h / (6.0 * m2);
     u2 = u2f + f1 * h / (2.0 * m2);
+    f_prev = f;
     f = f1;
     if (!cs.contact) ++lost;
     if (k1 % substeps_ == 0) record(static_cast<std::size_t>(k1 / substeps_), x1, cs.delta, h1, cs.contact);

@@ -6,6 +6,7 @@
 
 #include "ball_on_beam_fixture.hpp"
 #include "kernels/beam/contact_law.hpp"
+#include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/contact_solve.hpp"
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/beam/monotone_table.hpp"
@@ -151,4 +152,20 @@ TEST_CASE("ball-on-beam: smooth beam stays in equilibrium; rough beam loses cont
       }
     }
   }
+}
+
+TEST_CASE("contact-patch filter: a sinusoid is scaled by sin(ka)/(ka)") {
+  UniformSamples h;
+  h.step = 1e-6;
+  const double k = 6.283185307179586 / 0.4e-3;  // 0.4 mm wavelength
+  for (int i = 0; i <= 4000; ++i) h.values.push_back(std::sin(k * h.step * i));
+  const double a = hertz_half_width(0.02, 0.241e-6);  // seed ball under its weight: a = 69 um
+  CHECK(a == doctest::Approx(69.4e-6).epsilon(2e-3));
+  const UniformSamples f = contact_patch_average(h, a);
+  const double gain = std::sin(k * a) / (k * a);
+  double worst = 0.0;
+  for (int i = 200; i <= 3800; ++i) worst = std::max(worst, std::abs(f.values[i] - gain * h.values[i]));
+  MESSAGE("gain " << gain << ", max deviation " << worst);
+  CHECK(worst <= 1e-4);
+  CHECK(contact_patch_average(h, 0.0).values[123] == h.values[123]);
 }

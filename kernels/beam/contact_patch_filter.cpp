@@ -1,0 +1,36 @@
+#include "kernels/beam/contact_patch_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace rollspec::beam {
+
+UniformSamples contact_patch_average(const UniformSamples& h, double a) {
+  const std::size_t n = h.values.size();
+  if (n < 2 || !(h.step > 0.0)) throw std::invalid_argument("contact_patch_average: need >= 2 samples and step > 0");
+  if (!(a >= 0.0)) throw std::invalid_argument("contact_patch_average: half width must be >= 0");
+  if (a == 0.0) return h;
+  // Prefix integral of the linear interpolant at the samples (units of step).
+  std::vector<double> s(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + 0.5 * (h.values[i - 1] + h.values[i]);
+  const double last = static_cast<double>(n - 1);
+  auto prefix = [&](double u) {  // integral from 0 to u (sample units), u in [0, n-1]
+    u = std::min(std::max(u, 0.0), last);
+    std::size_t i = static_cast<std::size_t>(u);
+    if (i >= n - 1) i = n - 2;
+    const double t = u - static_cast<double>(i);
+    return s[i] + t * h.values[i] + 0.5 * t * t * (h.values[i + 1] - h.values[i]);
+  };
+  const double w = a / h.step;
+  UniformSamples out = h;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double u = static_cast<double>(j);
+    const double lo = std::max(u - w, 0.0), hi = std::min(u + w, last);
+    out.values[j] = (prefix(hi) - prefix(lo)) / (hi - lo);
+  }
+  return out;
+}
+
+}  // namespace rollspec::beam

@@ -1,0 +1,21 @@
+#pragma once
+// Contact-patch filter (seed 001 §4: the point contact over-excites wavelengths shorter than the
+// contact), README Eq. (B35): the roughness averaged over a contact length 2a,
+//   h_a(x) = (1 / 2a) int_{x-a}^{x+a} h(s) ds,   a Hertz half-width a = sqrt(R delta),
+// integrated exactly on the piecewise-linear interpolant of the samples (prefix sums), the window
+// truncated at the ends of the record. The width is fixed (e.g. a at the static compression under
+// the weight): the instantaneous width a(delta(t)) would make the contact solve a fixed point in a
+// and is not implemented. A sinusoid of wavenumber k is scaled by sin(k a) / (k a).
+#include <cmath>
+
+#include "kernels/beam/uniform_samples.hpp"
+
+namespace rollspec::beam {
+
+UniformSamples contact_patch_average(const UniformSamples& h, double half_width);
+
+inline double hertz_half_width(double radius, double compression) {
+  return compression > 0.0 ? std::sqrt(radius * compression) : 0.0;
+}
+
+}  // namespace rollspec::beam
