@@ -107,3 +107,53 @@ TEST_CASE("exact-step integrator agrees with Dormand–Prince 5(4) on a nonlinea
   MESSAGE("256 substeps: max rel. acceleration error " << relative_error(finer, ref));
   CHECK(relative_error(finer, ref) <= 1e-5);
 }
+
+TEST_CASE("exact-step agrees with DOPRI5 for every contact law, and through loss of contact") {
+  ReferenceTolerances tol;
+  tol.rtol = 1e-11;
+  tol.atol_displacement = 1e-17;
+  Realisation r;
+  r.roughness = test::sine_roughness(0.39, 1e-5, {6e-8, 3e-8}, {3e-3, 0.9e-3});
+  // table and literal laws sampled from Hertz; the linearised law with a sinusoidal blocked force
+  const ContactModel hertz(ContactLaw{});
+  ContactLaw table, literal, lin;
+  table.kind = ContactLawKind::table;
+  literal.kind = ContactLawKind::literal_stiffness;
+  for (int i = 0; i <= 60; ++i) {
+    const double d = 1.5e-6 * i / 60.0;
+    double p, k;
+    hertz.elastic(d, p, k);
+    table.compression.push_back(d), table.values.push_back(p);
+    literal.compression.push_back(d), literal.values.push_back(k);
+  }
+  lin.kind = ContactLawKind::linearised;
+  lin.k0 = 6.8e6;
+  Realisation rl;
+  rl.blocked_force.step = 1e-5;
+  for (int i = 0; i <= 5000; ++i)
+    rl.blocked_force.values.push_back(2.58 + 0.3 * std::sin(6.283185307179586 * 1700.0 * 1e-5 * i) + 0.2 * std::sin(0.9 * i));
+  const char* names[] = {"table", "literal", "linearised"};
+  const ContactLaw* laws[] = {&table, &literal, &lin};
+  for (int i = 0; i < 3; ++i) {
+    BallOnBeamModel m = test::hertz_model(10, 0.1, 0.13, 20000.0);
+    m.contact = *laws[i];
+    m.contact.damping = 100.0;
+    const Realisation& rr = i == 2 ? rl : r;
+    const BallOnBeamResult ref = simulate_dopri5(m, rr, tol);
+    const double e = relative_error(ExactStepIntegrator(m, 64).run(rr), ref);
+    MESSAGE(std::string(names[i]) << " law: max rel. acceleration error vs DOPRI5 (dt = 0.78 us) " << e);
+    CHECK(e <= 1e-4);
+  }
+  // Loss of contact (rough beam, damping-only law): the kinks cost accuracy, but both agree.
+  BallOnBeamModel m = test::hertz_model(10, 0.1, 0.12, 20000.0);
+  Realisation rough;
+  rough.roughness = test::sine_roughness(0.39, 1e-5, {6e-7, 2e-7}, {2e-3, 0.7e-3});
+  const BallOnBeamResult ref = simulate_dopri5(m, rough, tol);
+  const BallOnBeamResult fast = ExactStepIntegrator(m, 64).run(rough);
+  const double e = relative_error(fast, ref);
+  MESSAGE("loss of contact: share " << fast.loss_of_contact_share << " (reference, by samples " << ref.loss_of_contact_share
+                                    << "), max rel. acceleration error " << e);
+  CHECK(fast.loss_of_contact_share > 0.1);
+  CHECK(std::abs(fast.loss_of_contact_share - ref.loss_of_contact_share) < 0.02);
+  CHECK(e <= 1e-2);
+}
