@@ -124,14 +124,18 @@ SeedBoxLengths seed_box_lengths(const std::vector<double>& rx, const std::vector
   for (int sweep = 0; sweep < 20; ++sweep) {  // coordinate descent: n and m interact only weakly
     const SeedBoxLengths before = b;
     double best = std::numeric_limits<double>::infinity();
-    for (std::size_t n = 1; n <= max_n; ++n) {
-      const double e = miss(seed_expected_correlation(rx, ry, n, b.box_y, dx, dy).x, correlation_x);
+    for (std::size_t n = 1; n <= max_n; ++n) {  // the 1/e length grows with n: stop once past the target
+      const double got = seed_expected_correlation(rx, ry, n, b.box_y, dx, dy).x;
+      const double e = miss(got, correlation_x);
       if (e < best) { best = e; b.box_x = n; }
+      else if (got > correlation_x) break;
     }
     best = std::numeric_limits<double>::infinity();
     for (std::size_t m = 1; m <= max_m; ++m) {
-      const double e = miss(seed_expected_correlation(rx, ry, b.box_x, m, dx, dy).y, correlation_y);
+      const double got = seed_expected_correlation(rx, ry, b.box_x, m, dx, dy).y;
+      const double e = miss(got, correlation_y);
       if (e < best) { best = e; b.box_y = m; }
+      else if (got > correlation_y) break;
     }
     if (b.box_x == before.box_x && b.box_y == before.box_y) break;
   }
