@@ -66,6 +66,7 @@ TEST_CASE("seed 000 example 4.1, no-rolling variant: the disc never rolls") {
   // r = 0 in the gap and moment: the spin is not braked, the centre is decelerated by
   // kinetic friction against its own velocity: v = V0 - mu g t until it sticks (t = 0.96 s)
   const double v05 = h.velocity[500][0].x();
+  MESSAGE("no rolling: v(0.5) " << v05 << " vs " << p.V0 - p.mu * p.g * 0.5 << ", w(1) " << h.angular_velocity[1000][0].z());
   CHECK(rel(v05, p.V0 - p.mu * p.g * 0.5) < 0.003);
   CHECK(rel(h.angular_velocity[1000][0].z(), -p.omega0) < 1e-9);
 }
