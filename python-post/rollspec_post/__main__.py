@@ -15,11 +15,18 @@ def main(argv=None):
     p.add_argument("--bands", action="store_true", help="draw third-octave band levels (and ΔL with a measurement)")
     p.add_argument("--sensor", type=int, help="plot only this sensor index")
     p.add_argument("--out", "-o", required=True, help="output PNG")
+    t = sub.add_parser("texture", help="line texture, surface image, target vs realised PSD")
+    t.add_argument("texture_file", help="file written by rollspec texture")
+    t.add_argument("--out", "-o", required=True, help="output PNG")
     args = parser.parse_args(argv)
     try:
         if args.command == "psd":
             from .psd_plot import plot_psd
             plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor)
+            print(f"wrote {args.out}")
+        elif args.command == "texture":
+            from .texture_plot import plot_texture
+            plot_texture(args.texture_file, args.out)
             print(f"wrote {args.out}")
     except PostError as e:
         print(f"rollspec_post {args.command}: error: {e}", file=sys.stderr)

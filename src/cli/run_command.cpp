@@ -43,6 +43,8 @@ int run_command(const Args& args) {
 
   const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
   auto scene = scenes::find_scene(s.scene()).make(s);
+  if (!scene->runs_ensemble())
+    s.refuse("study.scene", "has no ensemble to run; use rollspec texture " + study_file + " for this scene");
   if (out.empty()) out = fs::path(study_file).stem().string() + ".h5";
   const fs::path out_dir = fs::absolute(out).parent_path();
   if (!fs::is_directory(out_dir)) throw cannot_create("output directory " + out_dir.string() + " does not exist (for --out " + out + ")");

@@ -39,6 +39,8 @@ class Scene {
   // Thread-safe for distinct `thread` indices in [0, ensemble_threads()).
   virtual void run_realisation(std::uint64_t id, int thread, double* values) const = 0;
   virtual void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const = 0;
+  // False for scenes with no ensemble (e.g. `texture`, written by `rollspec texture`).
+  virtual bool runs_ensemble() const { return true; }
 };
 
 struct SceneInfo {

@@ -4,6 +4,7 @@
 #include "src/error.hpp"
 #include "src/scenes/random_oscillator.hpp"
 #include "src/scenes/scene.hpp"
+#include "src/scenes/texture_scene.hpp"
 #include "src/study/study.hpp"
 #include "src/version.hpp"
 
@@ -25,6 +26,8 @@ const std::vector<SceneInfo>& scene_registry() {
       {"random-oscillator",
        "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
        random_oscillator_keys, [](const Study& s) { return make_random_oscillator(s); }},
+      {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
+       texture_scene_keys, [](const Study& s) { return make_texture_scene(s); }},
   };
   return scenes;
 }

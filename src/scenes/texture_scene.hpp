@@ -1,0 +1,14 @@
+#pragma once
+// Scene `texture`: only the roughness stages (line textures [lines], isotropic surfaces [surface])
+// of a PSD ([texture]); `rollspec texture` writes them, `rollspec plan` shows them.
+#include <memory>
+#include <vector>
+
+#include "src/scenes/scene.hpp"
+
+namespace rollspec::scenes {
+
+std::vector<study::KeySpec> texture_scene_keys();
+std::unique_ptr<Scene> make_texture_scene(const study::Study& s);
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,44 @@
+#pragma once
+// Study keys of the roughness PSD ([texture]) and of isotropic surfaces ([surface]), shared by
+// every scene that needs them, and their translation into texture-kernel objects. Input files
+// (PSD tables, measured profiles) are read and checked here, with messages naming file, line,
+// column and value.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernels/texture/line_texture.hpp"
+#include "kernels/texture/psd.hpp"
+#include "kernels/texture/seed_surface.hpp"
+#include "kernels/texture/spectral_surface.hpp"
+#include "src/study/key_spec.hpp"
+
+namespace rollspec::study {
+class Study;
+}
+
+namespace rollspec::texture_io {
+
+// [texture]: PSD source and amplitudes (the line geometry comes from the scene).
+std::vector<study::KeySpec> psd_keys();
+// [surface]: grid and method of isotropic surfaces.
+std::vector<study::KeySpec> surface_keys();
+
+// The roughness PSD a study describes (table, measured profiles, self-affine, ISO 8608, ISO 3095).
+texture::Psd study_psd(const study::Study& s);
+spectral::Amplitudes study_amplitudes(const study::Study& s);
+
+// Contents of every input file the PSD depends on, for hashes of cached tables.
+std::string psd_input_fingerprint(const study::Study& s);
+
+// Surface generator of a study's [surface] section: exactly one of the two is set.
+struct SurfaceGenerator {
+  std::unique_ptr<texture::SpectralSurfaceGenerator> spectral;
+  std::unique_ptr<texture::SeedSurfaceGenerator> seed;
+  std::size_t random_count() const;  // U(0,1) numbers per surface
+  // Draws from Philox (seed, realisation, surface streams) and fills out.
+  void generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out) const;
+};
+SurfaceGenerator study_surface_generator(const study::Study& s, const texture::Psd& psd);
+
+}  // namespace rollspec::texture_io
