@@ -7,7 +7,7 @@ from test_psd_plot import is_png_with_content
 
 def test_texture_plot(tmp_path):
     tex = tmp_path / "t.h5"
-    r = subprocess.run([BIN, "texture", SOURCE / "studies" / "texture-demo.ini", "--out", tex, "--count", 4],
+    r = subprocess.run([BIN, "texture", SOURCE / "studies" / "texture-demo.ini", "--out", tex, "--count", "4"],
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     out = tmp_path / "t.png"
