@@ -148,6 +148,28 @@ HeightStatistics surface_statistics(const Surface& s) {
   return st;
 }
 
+HeightStatistics mean_statistics(const std::vector<HeightStatistics>& all) {
+  if (all.empty()) throw std::invalid_argument("mean statistics of an empty ensemble");
+  HeightStatistics m;
+  double nx = 0.0, ny = 0.0;
+  for (const HeightStatistics& s : all) {
+    m.mean += s.mean;
+    m.rms += s.rms;
+    m.skewness += s.skewness;
+    m.kurtosis += s.kurtosis;
+    if (std::isfinite(s.correlation_length_x)) { m.correlation_length_x += s.correlation_length_x; nx += 1.0; }
+    if (std::isfinite(s.correlation_length_y)) { m.correlation_length_y += s.correlation_length_y; ny += 1.0; }
+  }
+  const double n = static_cast<double>(all.size());
+  m.mean /= n;
+  m.rms /= n;
+  m.skewness /= n;
+  m.kurtosis /= n;
+  m.correlation_length_x = nx > 0.0 ? m.correlation_length_x / nx : std::numeric_limits<double>::quiet_NaN();
+  m.correlation_length_y = ny > 0.0 ? m.correlation_length_y / ny : std::numeric_limits<double>::quiet_NaN();
+  return m;
+}
+
 std::vector<double> surface_periodogram(const Surface& s) {
   if (s.heights.size() != s.nx * s.ny || s.nx < 2 || s.ny < 2) throw std::invalid_argument("surface periodogram: bad surface size");
   const std::size_t nh = s.nx / 2 + 1;

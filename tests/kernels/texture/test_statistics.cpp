@@ -72,3 +72,16 @@ TEST_CASE("radially averaged 2D PSD: the bins partition the modes, so (2 pi)^-2 
   CHECK(modes == doctest::Approx(64.0 * 32.0 - 1.0));  // every mode but DC
   for (std::size_t b = 1; b < r.q.size(); ++b) CHECK(r.q[b] > r.q[b - 1]);
 }
+
+TEST_CASE("mean statistics: field-wise mean, NaN correlation lengths skipped") {
+  HeightStatistics a, b;
+  a.rms = 1.0;
+  b.rms = 3.0;
+  a.correlation_length_x = 2.0;
+  b.correlation_length_x = std::nan("");
+  a.correlation_length_y = b.correlation_length_y = std::nan("");
+  const HeightStatistics m = mean_statistics({a, b});
+  CHECK(m.rms == 2.0);
+  CHECK(m.correlation_length_x == 2.0);
+  CHECK(std::isnan(m.correlation_length_y));
+}
