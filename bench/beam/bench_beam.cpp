@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernels/beam/dopri5_reference.hpp"
@@ -137,13 +138,17 @@ int main(int argc, char** argv) {
               m.beam.modes(), ref_es.samples(), fs, max_db_error(band_levels(ref_dp, plan, ws), ref),
               ref_es.loss_of_contact_share);
   std::printf("method,parameter,value,dt_s,steps,rejected,time_s,max_band_error_db\n");
-  for (int s : {1, 2, 4, 8, 16, 32, 64}) {
-    const ExactStepIntegrator integ(m, s);
-    BallOnBeamResult res;
-    const double t = seconds([&] { integ.run(r, res); }, 3);
-    std::printf("exact_step,substeps,%d,%.4e,%ld,0,%.5f,%.3e\n", s, integ.step(), res.steps, t,
-                max_db_error(band_levels(res, plan, ws), ref));
-  }
+  for (ForceHold hold : {ForceHold::linear, ForceHold::quadratic})
+    for (int s : {1, 2, 4, 8, 16, 32, 64}) {
+      ExactStepOptions o;
+      o.substeps = s;
+      o.hold = hold;
+      const ExactStepIntegrator integ(m, o);
+      BallOnBeamResult res;
+      const double t = seconds([&] { integ.run(r, res); }, 3);
+      std::printf("%s,substeps,%d,%.4e,%ld,0,%.5f,%.3e\n", hold == ForceHold::linear ? "exact_step" : "exact_step_quadratic",
+                  s, integ.step(), res.steps, t, max_db_error(band_levels(res, plan, ws), ref));
+    }
   for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9}) {
     ReferenceTolerances tol;
     tol.rtol = rtol;
@@ -160,9 +165,14 @@ int main(int argc, char** argv) {
   //    exact-step integration, Welch PSDs of 5 sensors (one core; plan made once).
   if (want("realisation")) {
   std::printf("# per_realisation: one core, best of 5 after warm-up\n");
-  std::printf("substeps,dt_s,synthesis_ms,integration_ms,welch_ms,total_ms,realisations_per_s\n");
-  for (int s : {2, 4, 8, 16}) {
-    const ExactStepIntegrator integ(m, s);
+  std::printf("hold,substeps,dt_s,synthesis_ms,integration_ms,welch_ms,total_ms,realisations_per_s\n");
+  for (auto [hold, s] : std::vector<std::pair<ForceHold, int>>{{ForceHold::linear, 2}, {ForceHold::linear, 4},
+                                                               {ForceHold::linear, 8}, {ForceHold::linear, 16},
+                                                               {ForceHold::quadratic, 2}, {ForceHold::quadratic, 4}}) {
+    ExactStepOptions o;
+    o.substeps = s;
+    o.hold = hold;
+    const ExactStepIntegrator integ(m, o);
     BallOnBeamResult res;
     Realisation rr;
     unsigned long id = 10;
@@ -171,7 +181,7 @@ int main(int argc, char** argv) {
     std::vector<double> lv;
     const double tw = seconds([&] { lv = band_levels(res, plan, ws); }, 5);
     const double tot = ts + ti + tw;
-    std::printf("%d,%.4e,%.3f,%.3f,%.3f,%.3f,%.1f\n", s, integ.step(), 1e3 * ts, 1e3 * ti, 1e3 * tw, 1e3 * tot, 1.0 / tot);
+    std::printf("%s,%d,%.4e,%.3f,%.3f,%.3f,%.3f,%.1f\n", hold == ForceHold::linear ? "linear" : "quadratic", s, integ.step(), 1e3 * ts, 1e3 * ti, 1e3 * tw, 1e3 * tot, 1.0 / tot);
   }
 
   }
@@ -183,7 +193,7 @@ int main(int argc, char** argv) {
     tol.rtol = 1e-9;
     tol.atol_displacement = 1e-16;
     const int nr = 8;
-    const std::vector<int> subs = {4, 8, 16};
+    const std::vector<int> subs = {4, 8, 16, -2, -4};  // negative: quadratic hold
     std::vector<std::vector<double>> a(subs.size());
     std::vector<double> b;
     double loss = 0.0;
@@ -194,7 +204,10 @@ int main(int argc, char** argv) {
       if (b.empty()) b.assign(lb.size(), 0.0);
       for (std::size_t k = 0; k < lb.size(); ++k) b[k] += lb[k] / nr;
       for (std::size_t si = 0; si < subs.size(); ++si) {
-        const BallOnBeamResult x = ExactStepIntegrator(m, subs[si]).run(rr);
+        ExactStepOptions o;
+        o.substeps = std::abs(subs[si]);
+        o.hold = subs[si] < 0 ? ForceHold::quadratic : ForceHold::linear;
+        const BallOnBeamResult x = ExactStepIntegrator(m, o).run(rr);
         loss = std::max(loss, x.loss_of_contact_share);
         const auto la = band_levels(x, plan, ws);
         if (a[si].empty()) a[si].assign(la.size(), 0.0);
@@ -202,9 +215,10 @@ int main(int argc, char** argv) {
       }
     }
     std::printf("# ensemble: %d realisations, mean band levels 100 Hz - 5 kHz, exact-step vs DOPRI5 rtol 1e-9\n", nr);
-    std::printf("substeps,dt_s,realisations,max_loss_share,max_band_difference_db\n");
+    std::printf("hold,substeps,dt_s,realisations,max_loss_share,max_band_difference_db\n");
     for (std::size_t si = 0; si < subs.size(); ++si)
-      std::printf("%d,%.4e,%d,%.4f,%.3e\n", subs[si], 1.0 / (fs * subs[si]), nr, loss, max_db_error(a[si], b));
+      std::printf("%s,%d,%.4e,%d,%.4f,%.3e\n", subs[si] < 0 ? "quadratic" : "linear", std::abs(subs[si]),
+                  1.0 / (fs * std::abs(subs[si])), nr, loss, max_db_error(a[si], b));
   }
   return 0;
 }

@@ -7,25 +7,32 @@
 
 namespace rollspec::beam {
 
-ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, int substeps, double solver_tolerance,
-                                         long max_table_entries)
-    : model_(std::move(model)), contact_(model_.contact), substeps_(substeps), tol_(solver_tolerance) {
-  if (substeps < 1) throw std::invalid_argument("ExactStepIntegrator: substeps must be >= 1");
+ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepOptions& o)
+    : model_(std::move(model)), contact_(model_.contact), substeps_(o.substeps), hold_(o.hold), tol_(o.solver_tolerance) {
+  if (o.substeps < 1) throw std::invalid_argument("ExactStepIntegrator: substeps must be >= 1");
   samples_ = output_samples(model_);
-  steps_ = static_cast<long>(samples_ - 1) * substeps;
-  h_ = 1.0 / (model_.sample_rate * substeps);
+  steps_ = static_cast<long>(samples_ - 1) * substeps_;
+  h_ = 1.0 / (model_.sample_rate * substeps_);
   total_rate_ = !contact_.linearised() && model_.contact.rate == DampingRate::total;
   const ModalBeam& b = model_.beam;
   const int n = b.modes();
-  const double m = b.modal_mass(), m2 = model_.ball.mass;
+  const double m = b.modal_mass(), m2 = model_.ball.mass, h = h_;
   if (!(m2 > 0.0)) throw std::invalid_argument("ExactStepIntegrator: ball mass must be > 0");
-  osc_.reserve(n);
   for (int i = 0; i < n; ++i) {
-    osc_.push_back(integrators::ExactOscillatorStep::make(b.omega(i), b.zeta(i), h_));
-    b1m_.push_back(osc_.back().b1 / m);
-    c1m_.push_back(osc_.back().c1 / m);
+    const auto f = integrators::ExactOscillatorStep::make(b.omega(i), b.zeta(i), h);  // (B23)
+    first_.push_back({f.a00, f.a01, f.a10, f.a11, 0.0, f.b0, f.b1, 0.0, f.c0, f.c1});
+    if (hold_ == ForceHold::quadratic) {
+      const auto q = QuadraticHoldStep::make(b.omega(i), b.zeta(i), h);  // (B36)
+      coef_.push_back({q.a00, q.a01, q.a10, q.a11, q.bm, q.b0, q.b1, q.cm, q.c0, q.c1});
+    }
   }
-  const bool table = static_cast<double>(steps_ + 1) * n <= static_cast<double>(max_table_entries);
+  if (hold_ == ForceHold::linear) coef_ = first_;
+  // (B24) linear force over the step; (B37) the parabola through F_m, F_0, F_1.
+  ball_first_ = {0.0, h * h / 3.0, h * h / 6.0, 0.0, h / 2.0, h / 2.0};
+  ball_ = hold_ == ForceHold::linear ? ball_first_
+                                     : BallCoefficients{-h * h / 24.0, 5.0 * h * h / 12.0, h * h / 8.0, -h / 12.0,
+                                                        2.0 * h / 3.0, 5.0 * h / 12.0};
+  const bool table = static_cast<double>(steps_ + 1) * n <= static_cast<double>(o.max_table_entries);
   if (table) {  // slopes only when the damper sees the convective rate (B20)
     phi_table_.resize(static_cast<std::size_t>(steps_ + 1) * n);
     if (total_rate_) slope_table_.resize(phi_table_.size());
@@ -42,24 +49,31 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, int substeps, do
       std::copy(phi.begin(), phi.end(), phi_table_.begin() + k * n);
       if (total_rate_) std::copy(slope.begin(), slope.end(), slope_table_.begin() + k * n);
     }
-    // (B25): C = sum b1 phi^2 / m + h^2 / (6 m2) + R,  D = sum c1 phi^2 / m + h / (2 m2),
-    //        convective part of D: v sum b1 phi phi' / m.
-    double c = 0.0, d = 0.0, s = 0.0;
-    for (int i = 0; i < n; ++i) {
-      c += b1m_[i] * phi[i] * phi[i];
-      d += c1m_[i] * phi[i] * phi[i];
-      s += b1m_[i] * phi[i] * slope[i];
-    }
     // (B12) from the shapes already at hand
     double modal = 0.0;
     for (int i = 0; i < n; ++i) modal += phi[i] * phi[i] / (m * b.omega(i) * b.omega(i));
     residual_[k] = b.static_correction() ? b.static_flexibility(x, x) - modal : 0.0;
-    comp_[k] = c + h_ * h_ / (6.0 * m2) + residual_[k];
-    rate_comp_[k] = d + h_ / (2.0 * m2);
-    conv_comp_[k] = model_.traverse.speed * s;
+    compliance(phi.data(), slope.data(), residual_[k], coef_, ball_, comp_[k], rate_comp_[k], conv_comp_[k]);
   }
   sensor_phi_.resize(model_.sensors.size() * n);
   for (std::size_t s = 0; s < model_.sensors.size(); ++s) b.shapes(model_.sensors[s], sensor_phi_.data() + s * n);
+}
+
+// (B25): C = sum b1 phi^2 / m + a1 / m2 + R,  D = sum c1 phi^2 / m + u1 / m2,
+//        convective part of D: v sum b1 phi phi' / m.
+void ExactStepIntegrator::compliance(const double* phi, const double* slope, double residual,
+                                     const std::vector<Coefficients>& c, const BallCoefficients& bc, double& comp,
+                                     double& rate, double& conv) const {
+  const double m = model_.beam.modal_mass(), m2 = model_.ball.mass;
+  double cs = 0.0, ds = 0.0, ss = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    cs += c[i].b1 * phi[i] * phi[i];
+    ds += c[i].c1 * phi[i] * phi[i];
+    ss += c[i].b1 * phi[i] * slope[i];
+  }
+  comp = cs / m + bc.a1 / m2 + residual;
+  rate = ds / m + bc.u1 / m2;
+  conv = model_.traverse.speed * ss / m;
 }
 
 double ExactStepIntegrator::position(long k) const {
@@ -126,14 +140,19 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
   }
 
   long lost = 0;
-  double f_prev = f;  // force one step back, for the extrapolated Newton guess
+  double f_prev = f;  // force one step back: Newton guess and the quadratic hold
+  std::vector<double> g0(n), gm(n, 0.0);
   for (long k = 0; k < steps_; ++k) {
-    // Free part of the step: start force only (B23), with the ramp's start coefficient.
+    // The first step of a quadratic hold has no previous value: it is linear.
+    const bool first = hold_ == ForceHold::quadratic && k == 0;
+    const std::vector<Coefficients>& co = first ? first_ : coef_;
+    const BallCoefficients& bc = first ? ball_first_ : ball_;
+    // Free part of the step: previous and start forces only (B23, B36).
     for (int i = 0; i < n; ++i) {
-      const auto& o = osc_[i];
-      const double g0 = -phi[i] * f / m;
-      qf[i] = o.a00 * q[i] + o.a01 * dq[i] + o.b0 * g0;
-      vf[i] = o.a10 * q[i] + o.a11 * dq[i] + o.c0 * g0;
+      const Coefficients& o = co[i];
+      g0[i] = -phi[i] * f / m;
+      qf[i] = o.a00 * q[i] + o.a01 * dq[i] + o.bm * gm[i] + o.b0 * g0[i];
+      vf[i] = o.a10 * q[i] + o.a11 * dq[i] + o.cm * gm[i] + o.c0 * g0[i];
     }
     const long k1 = k + 1;
     shapes_at(k1, phi, slope, sp, ss);
@@ -144,31 +163,33 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     }
     if (total_rate_)
       for (int i = 0; i < n; ++i) sf += slope[i] * qf[i];
-    // Ball (B24): exact for a linear force; the F1 parts are in C and D.
-    const double a0 = f / m2 - g;
-    const double w2f = w2 + u2 * h + a0 * h * h / 2.0 - f * h * h / (6.0 * m2);
-    const double u2f = u2 + a0 * h - f * h / (2.0 * m2);
+    // Ball (B24, B37): exact for the held force; the F1 parts are in C and D.
+    const double w2f = w2 + u2 * h - g * h * h / 2.0 + (bc.am * f_prev + bc.a0 * f) / m2;
+    const double u2f = u2 - g * h + (bc.um * f_prev + bc.u0 * f) / m2;
     const double x1 = position(k1), t1 = static_cast<double>(k1) * h;
     double h1, dh1;
     detail::roughness_at(r, x1, h1, dh1);
     const double f0 = contact_.linearised() ? detail::blocked_force_at(model_, r, t1) : 0.0;
-    double rate_free = vfree - u2f, d = rate_comp_[k1];
+    double comp = comp_[k1], d = rate_comp_[k1], conv = conv_comp_[k1];
+    if (first) compliance(phi, slope, residual_[k1], first_, ball_first_, comp, d, conv);
+    double rate_free = vfree - u2f;
     if (total_rate_) {  // (B20)
       rate_free += v * (sf + dh1);
-      d += conv_comp_[k1];
+      d += conv;
     }
     const ContactSolution cs =
-        solve_contact_force(contact_, wf + h1 - w2f, rate_free, comp_[k1], d, f0, 2.0 * f - f_prev, weight, tol_);
+        solve_contact_force(contact_, wf + h1 - w2f, rate_free, comp, d, f0, 2.0 * f - f_prev, weight, tol_);
     const double f1 = cs.force;
     for (int i = 0; i < n; ++i) {
       const double g1 = -phi[i] * f1 / m;
-      q[i] = qf[i] + osc_[i].b1 * g1;
-      dq[i] = vf[i] + osc_[i].c1 * g1;
+      q[i] = qf[i] + co[i].b1 * g1;
+      dq[i] = vf[i] + co[i].c1 * g1;
     }
-    w2 = w2f + f1 * h * h / (6.0 * m2);
-    u2 = u2f + f1 * h / (2.0 * m2);
+    w2 = w2f + bc.a1 * f1 / m2;
+    u2 = u2f + bc.u1 * f1 / m2;
     f_prev = f;
     f = f1;
+    gm.swap(g0);
     if (!cs.contact) ++lost;
     if (k1 % substeps_ == 0) record(static_cast<std::size_t>(k1 / substeps_), x1, cs.delta, h1, cs.contact);
   }

@@ -10,6 +10,7 @@
 #include "ball_on_beam_fixture.hpp"
 #include "kernels/beam/dopri5_reference.hpp"
 #include "kernels/beam/exact_step_integrator.hpp"
+#include "kernels/beam/quadratic_hold_step.hpp"
 
 using namespace rollspec::beam;
 
@@ -153,7 +154,44 @@ TEST_CASE("exact-step agrees with DOPRI5 for every contact law, and through loss
   const double e = relative_error(fast, ref);
   MESSAGE("loss of contact: share " << fast.loss_of_contact_share << " (reference, by samples " << ref.loss_of_contact_share
                                     << "), max rel. acceleration error " << e);
+  ExactStepOptions o;
+  o.hold = ForceHold::quadratic;
+  o.substeps = 64;
+  const double eq = relative_error(ExactStepIntegrator(m, o).run(rough), ref);
+  MESSAGE("loss of contact, quadratic hold: max rel. acceleration error " << eq);
+  CHECK(eq <= 1e-2);
   CHECK(fast.loss_of_contact_share > 0.1);
   CHECK(std::abs(fast.loss_of_contact_share - ref.loss_of_contact_share) < 0.02);
   CHECK(e <= 1e-2);
+}
+
+TEST_CASE("quadratic force hold: equals the linear hold on a line, converges at third order") {
+  // Collinear values: the parabola is the line, so both propagators agree.
+  for (double w : {0.0, 300.0, 2.0e4}) {
+    const auto l = rollspec::integrators::ExactOscillatorStep::make(w, 0.03, 1e-5);
+    const auto q = QuadraticHoldStep::make(w, 0.03, 1e-5);
+    const double fm = 0.3, f0 = 0.5, f1 = 0.7;  // on a line
+    CHECK(q.bm * fm + q.b0 * f0 + q.b1 * f1 == doctest::Approx(l.b0 * f0 + l.b1 * f1).epsilon(1e-9));
+    CHECK(q.cm * fm + q.c0 * f0 + q.c1 * f1 == doctest::Approx(l.c0 * f0 + l.c1 * f1).epsilon(1e-9));
+    CHECK(q.a01 == doctest::Approx(l.a01).epsilon(1e-12));
+  }
+  const BallOnBeamModel m = test::hertz_model(12, 0.02, 0.07, 10000.0);
+  Realisation r;
+  r.roughness = test::sine_roughness(0.39, 2e-5, {3e-8, 2e-8, 1e-8}, {4e-3, 1.3e-3, 0.7e-3});
+  ExactStepOptions o;
+  o.hold = ForceHold::quadratic;
+  o.substeps = 256;
+  const BallOnBeamResult ref = ExactStepIntegrator(m, o).run(r);
+  CHECK(relative_error(ExactStepIntegrator(m, 512).run(r), ref) < 1e-5);  // both holds converge to one answer
+  std::vector<double> err;
+  for (int s : {2, 4, 8, 16}) {
+    o.substeps = s;
+    err.push_back(relative_error(ExactStepIntegrator(m, o).run(r), ref));
+    MESSAGE("quadratic hold, dt = " << 1.0 / (10000.0 * s) << " s: max rel. acceleration error " << err.back());
+  }
+  for (std::size_t i = 1; i < err.size(); ++i) {
+    const double slope = std::log2(err[i - 1] / err[i]);
+    MESSAGE("observed order " << slope);
+    CHECK(slope == doctest::Approx(3.0).epsilon(0.1));  // 2.7 .. 3.3
+  }
 }
