@@ -533,6 +533,7 @@ StepReport Solver::advance(double t_target) {
         ok_in_row = 0;
       }
     } else {
+      rep.iterations += sub.iterations;  // failed attempts count too
       rep.residual_norms = sub.residual_norms;
       if (++rep.cuts > opt_.max_cuts) return rep;
       h *= 0.5;

@@ -62,7 +62,7 @@ struct ContactOutput {
 
 struct StepReport {
   bool converged = false;
-  int iterations = 0;
+  int iterations = 0;                 // Newton iterations (line-search trials and failed attempts included)
   int cuts = 0;                       // halvings used to reach the target time
   std::vector<double> residual_norms; // Newton history of the last sub-step
 };

@@ -31,7 +31,7 @@ TEST_CASE("seed 000 example 4.2 (20 elements): rolling gives friction torsion, n
       // global equilibrium: contact forces + support reactions + weight = 0
       const Vector3d reac_B(0, s.reaction_y, 0);
       const Vector3d bal = s.contact_force_sum + s.root_reaction + reac_B + Vector3d(0, 0, -W);
-      CHECK(bal.norm() < 1e-6 * W);
+      CHECK(bal.norm() < 1e-5 * W);  // Newton stops at ‖R_free‖ ≤ 1e-6 W
       // Coulomb: the lateral force cannot exceed mu times the weight
       CHECK(std::abs(s.reaction_y) < p.mu * W);
     }
