@@ -19,6 +19,9 @@
 
 namespace rollspec::beam {
 
+// roughness: h enters spring and damper, F = (k0 + i w c0) delta (a linearised table/Hertz law
+//   whose damper sees the total rate, B20). The linearised law of the time integrator (D-11, B18)
+//   with a roughness h puts h through k0 only: use blocked_force with G_F0 = k0^2 G_h for it.
 enum class Excitation { roughness, blocked_force };
 
 struct LinearResponse {
