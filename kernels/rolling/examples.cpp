@@ -102,7 +102,7 @@ CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
   o.analysis = Analysis::QuasiStatic;
   o.force_tol = 1e-6 * p.rho * 0.25 * 3.14159265358979 * p.D * p.D * p.L * p.g;  // relative to the weight
   o.disp_tol = 1e-10;
-  o.max_iterations = 25;
+  o.max_iterations = 60;  // stick/slip fronts move about one node per iteration
   o.max_cuts = 12;
   o.max_line_search = 12;
   Solver S(cantilever_model(p), o);

@@ -395,8 +395,9 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
   rep.residual_norms.clear();
   double last = std::numeric_limits<double>::infinity();
   VectorXd q_acc = q;
-  double G0 = 0.0, step = 1.0;
-  int nback = 0;
+  double G0 = 0.0, step = 1.0, best_rn = std::numeric_limits<double>::infinity(), best_step = 1.0;
+  int nback = 0, newton = 0;  // newton: Newton directions (line-search trials not counted)
+  bool forced = false;
   for (int it = 0;; ++it) {
     I.sink.begin();
     I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals);
@@ -414,22 +415,34 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     rep.iterations = it;
     // Backtracking line search on G(s) = dq . R(q_acc + s dq) (README R-42): a full
     // Newton step that overshoots (|G(1)| > 0.8 |G(0)|, e.g. across a stick/slip kink of the
-    // friction law) is halved, up to max_line_search times.
-    if (it > 0 && opt_.max_line_search > 0) {
+    // friction law) is halved, up to max_line_search times; if no trial qualifies, the
+    // trial with the smallest residual is taken.
+    if (newton > 0 && opt_.max_line_search > 0 && !forced) {
       const double G = dq.dot(rf);
       const bool bad = !std::isfinite(rn) || std::abs(G) > 0.8 * std::abs(G0);
-      if (bad && nback < opt_.max_line_search) {
-        ++nback;
-        step *= 0.5;
+      if (std::isfinite(rn) && rn < best_rn) {
+        best_rn = rn;
+        best_step = step;
+      }
+      if (bad && (nback < opt_.max_line_search || best_step != step)) {
+        if (nback < opt_.max_line_search) {
+          ++nback;
+          step *= 0.5;
+        } else {
+          step = best_step;  // exhausted: go back to the best trial and accept it
+          forced = true;
+        }
         for (std::size_t i = 0; i < I.eq.size(); ++i)
           if (I.eq[i] >= 0) q(static_cast<Eigen::Index>(i)) = q_acc(static_cast<Eigen::Index>(i)) + step * dq(I.eq[i]);
         last = step * dq.lpNorm<Eigen::Infinity>();
         continue;
       }
     }
+    forced = false;
     if (!std::isfinite(rn)) return false;
-    if (rn <= opt_.force_tol || (it > 0 && last <= opt_.disp_tol)) break;
-    if (it >= opt_.max_iterations) return false;
+    if (rn <= opt_.force_tol || (newton > 0 && last <= opt_.disp_tol)) break;
+    if (newton >= opt_.max_iterations) return false;
+    ++newton;
     if (I.sink.new_pattern) {
       I.lu.analyzePattern(I.sink.A);  // once (again only if the pattern ever changes)
       I.sink.new_pattern = false;
@@ -441,6 +454,8 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     q_acc = q;
     step = 1.0;
     nback = 0;
+    best_rn = std::numeric_limits<double>::infinity();
+    best_step = 1.0;
     for (std::size_t i = 0; i < I.eq.size(); ++i)
       if (I.eq[i] >= 0) q(static_cast<Eigen::Index>(i)) += dq(I.eq[i]);
     last = dq.lpNorm<Eigen::Infinity>();
