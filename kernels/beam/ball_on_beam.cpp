@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/contact_solve.hpp"
 
 namespace rollspec::beam {
@@ -66,10 +67,12 @@ InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& 
     const double lo = std::max(x0 - e, -b.offset()), hi = std::min(x0 + e, b.effective_length() - b.offset());
     if (hi > lo) dres = (b.residual_flexibility(hi) - b.residual_flexibility(lo)) / (hi - lo);
   }
-  double h, dh;
-  roughness_at(r, x0, h, dh);
   const double f0 = blocked_force_at(m, r, 0.0);
   const double delta = contact.static_compression(weight, f0);
+  double h, dh;
+  roughness_at(r, x0, h, dh);
+  if (m.patch_radius > 0.0 && !r.roughness.empty())  // (B38) at the static contact length
+    PatchAverager(r.roughness).evaluate(x0, std::sqrt(m.patch_radius * std::max(delta, 0.0)), h, dh);
   // Linearised law (D-11): roughness enters through F0 or, if given, through h as in D-1.
   s.y[2 * n] = w1 + h - delta;
   s.y[2 * n + 1] = v * (2.0 * dw1 - dres * weight + dh);

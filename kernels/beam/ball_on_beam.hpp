@@ -41,6 +41,10 @@ struct BallOnBeamModel {
   Traverse traverse;
   double sample_rate = 25600.0;    // output rate, Hz
   std::vector<double> sensors;     // physical sensor positions, m
+  // Contact-patch filter (README B38, exact-step integrator only): > 0 averages the roughness
+  // over the instantaneous Hertz contact length 2a, a = sqrt(patch_radius * delta), with delta
+  // from the start of each step (one step lag); 0 = point contact (seed 001 Eq. 7).
+  double patch_radius = 0.0;       // m
 };
 
 // One realisation's sampled random inputs. An empty roughness means a smooth beam (h = 0); an

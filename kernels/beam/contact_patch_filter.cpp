@@ -33,4 +33,36 @@ UniformSamples contact_patch_average(const UniformSamples& h, double a) {
   return out;
 }
 
+PatchAverager::PatchAverager(const UniformSamples& h) : h_(&h) {
+  const std::size_t n = h.values.size();
+  if (n < 2 || !(h.step > 0.0)) throw std::invalid_argument("PatchAverager: need >= 2 samples and step > 0");
+  s_.assign(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) s_[i] = s_[i - 1] + 0.5 * (h.values[i - 1] + h.values[i]);
+}
+
+double PatchAverager::prefix(double u) const {
+  const std::size_t n = s_.size();
+  const std::vector<double>& y = h_->values;
+  u = std::min(std::max(u, 0.0), static_cast<double>(n - 1));
+  std::size_t i = static_cast<std::size_t>(u);
+  if (i >= n - 1) i = n - 2;
+  const double t = u - static_cast<double>(i);
+  return s_[i] + t * y[i] + 0.5 * t * t * (y[i + 1] - y[i]);
+}
+
+void PatchAverager::evaluate(double x, double a, double& value, double& derivative) const {
+  const double dx = h_->step;
+  if (!(a >= 0.1 * dx)) {
+    h_->evaluate(x, value, derivative);
+    return;
+  }
+  const double u = (x - h_->origin) / dx, w = a / dx;
+  const double last = static_cast<double>(s_.size() - 1);
+  if (!(u >= -1e-9 && u <= last + 1e-9)) throw std::out_of_range("PatchAverager: position outside the sampled range");
+  // (B38), the window truncated at the record ends as in contact_patch_average
+  const double lo = std::max(u - w, 0.0), hi = std::min(u + w, last);
+  value = (prefix(hi) - prefix(lo)) / (hi - lo);
+  derivative = (h_->value(h_->origin + hi * dx) - h_->value(h_->origin + lo * dx)) / ((hi - lo) * dx);
+}
+
 }  // namespace rollspec::beam

@@ -7,12 +7,28 @@
 // the weight): the instantaneous width a(delta(t)) would make the contact solve a fixed point in a
 // and is not implemented. A sinusoid of wavenumber k is scaled by sin(k a) / (k a).
 #include <cmath>
+#include <vector>
 
 #include "kernels/beam/uniform_samples.hpp"
 
 namespace rollspec::beam {
 
 UniformSamples contact_patch_average(const UniformSamples& h, double half_width);
+
+// Patch average at any position and half-width (README B38), for the instantaneous contact
+// length of the ball-on-beam integrator: prefix integral of the linear interpolant, built once
+// per realisation. value = (1/2a) int_{x-a}^{x+a} h, derivative = (h(x+a) - h(x-a)) / 2a; for
+// a below a tenth of the sample step, the point value and slope (Catmull–Rom, B13).
+class PatchAverager {
+ public:
+  explicit PatchAverager(const UniformSamples& h);
+  void evaluate(double x, double a, double& value, double& derivative) const;
+
+ private:
+  double prefix(double u) const;  // integral from origin, u in sample units
+  const UniformSamples* h_;
+  std::vector<double> s_;
+};
 
 inline double hertz_half_width(double radius, double compression) {
   return compression > 0.0 ? std::sqrt(radius * compression) : 0.0;

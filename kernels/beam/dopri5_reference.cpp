@@ -1,6 +1,7 @@
 #include "kernels/beam/dopri5_reference.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "kernels/beam/contact_solve.hpp"
 #include "kernels/beam/dopri5.hpp"
@@ -8,6 +9,7 @@
 namespace rollspec::beam {
 
 BallOnBeamResult simulate_dopri5(const BallOnBeamModel& model, const Realisation& r, const ReferenceTolerances& tol) {
+  if (model.patch_radius > 0.0) throw std::invalid_argument("simulate_dopri5: the contact-patch filter is exact-step only");
   const ModalBeam& b = model.beam;
   const int n = b.modes();
   const ContactModel contact(model.contact);

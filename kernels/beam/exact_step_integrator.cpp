@@ -1,8 +1,11 @@
 #include "kernels/beam/exact_step_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
+#include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/contact_solve.hpp"
 
 namespace rollspec::beam {
@@ -131,14 +134,23 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     out.contact_position[j] = xi;
     out.loss_of_contact[j] = contact ? 0 : 1;
   };
+  // (B38) instantaneous contact-patch average of the roughness, width from the last compression
+  const bool patch = model_.patch_radius > 0.0 && !r.roughness.empty();
+  std::unique_ptr<PatchAverager> averager;
+  if (patch) averager = std::make_unique<PatchAverager>(r.roughness);
   {
     double h0, dh0, w1 = -residual_[0] * f;
     detail::roughness_at(r, model_.traverse.x_start, h0, dh0);
+    if (patch)  // as in the initial state: the width under the weight
+      averager->evaluate(model_.traverse.x_start,
+                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, detail::blocked_force_at(model_, r, 0.0)), 0.0)),
+                         h0, dh0);
     for (int i = 0; i < n; ++i) w1 += phi[i] * q[i];
     const double delta = w1 + h0 - w2;
     record(0, model_.traverse.x_start, delta, h0, contact_.evaluate(delta, 0.0, detail::blocked_force_at(model_, r, 0.0)).contact);
   }
 
+  double delta_last = out.compression[0];
   long lost = 0;
   double f_prev = f;  // force one step back: Newton guess and the quadratic hold
   std::vector<double> g0(n), gm(n, 0.0);
@@ -168,7 +180,10 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     const double u2f = u2 - g * h + (bc.um * f_prev + bc.u0 * f) / m2;
     const double x1 = position(k1), t1 = static_cast<double>(k1) * h;
     double h1, dh1;
-    detail::roughness_at(r, x1, h1, dh1);
+    if (patch)
+      averager->evaluate(x1, std::sqrt(model_.patch_radius * std::max(delta_last, 0.0)), h1, dh1);
+    else
+      detail::roughness_at(r, x1, h1, dh1);
     const double f0 = contact_.linearised() ? detail::blocked_force_at(model_, r, t1) : 0.0;
     double comp = comp_[k1], d = rate_comp_[k1], conv = conv_comp_[k1];
     if (first) compliance(phi, slope, residual_[k1], first_, ball_first_, comp, d, conv);
@@ -190,6 +205,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     f_prev = f;
     f = f1;
     gm.swap(g0);
+    delta_last = cs.delta;
     if (!cs.contact) ++lost;
     if (k1 % substeps_ == 0) record(static_cast<std::size_t>(k1 / substeps_), x1, cs.delta, h1, cs.contact);
   }

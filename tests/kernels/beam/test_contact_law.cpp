@@ -8,6 +8,7 @@
 #include "kernels/beam/contact_law.hpp"
 #include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/contact_solve.hpp"
+#include "kernels/beam/dopri5_reference.hpp"
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/beam/monotone_table.hpp"
 #include "kernels/beam/uniform_samples.hpp"
@@ -168,4 +169,31 @@ TEST_CASE("contact-patch filter: a sinusoid is scaled by sin(ka)/(ka)") {
   MESSAGE("gain " << gain << ", max deviation " << worst);
   CHECK(worst <= 1e-4);
   CHECK(contact_patch_average(h, 0.0).values[123] == h.values[123]);
+}
+
+TEST_CASE("instantaneous contact-patch filter in the integrator") {
+  BallOnBeamModel m = test::hertz_model(12, 0.05, 0.09, 20000.0);
+  const double a_w = hertz_half_width(m.contact.radius, ContactModel(m.contact).static_compression(m.ball.mass * m.ball.gravity, 0.0));
+  // Small roughness: the compression stays near its static value, so the instantaneous width is
+  // close to a_W and the result close to a point contact on the roughness pre-averaged over a_W.
+  Realisation r;
+  r.roughness = test::sine_roughness(0.39, 2e-6, {1e-9, 1e-9}, {0.6e-3, 0.25e-3});
+  Realisation pre;
+  pre.roughness = contact_patch_average(r.roughness, a_w);
+  BallOnBeamModel mp = m;
+  mp.patch_radius = m.contact.radius;
+  const BallOnBeamResult with_patch = ExactStepIntegrator(mp, 8).run(r);
+  const BallOnBeamResult prefiltered = ExactStepIntegrator(m, 8).run(pre);
+  const BallOnBeamResult point = ExactStepIntegrator(m, 8).run(r);
+  double d = 0.0, peak = 0.0, peak_point = 0.0;
+  for (std::size_t j = 0; j < point.samples(); ++j) {
+    d = std::max(d, std::abs(with_patch.contact_force[j] - prefiltered.contact_force[j]));
+    peak = std::max(peak, std::abs(prefiltered.contact_force[j] - m.ball.mass * m.ball.gravity));
+    peak_point = std::max(peak_point, std::abs(point.contact_force[j] - m.ball.mass * m.ball.gravity));
+  }
+  MESSAGE("a_W = " << a_w << " m; dynamic force: point contact " << peak_point << " N, patch-filtered " << peak
+                   << " N; instantaneous vs pre-filtered width: max difference " << d << " N");
+  CHECK(peak < 0.7 * peak_point);  // short wavelengths are filtered (sin(ka)/(ka) = 0.91 and 0.56 here)
+  CHECK(d <= 0.05 * peak);
+  CHECK_THROWS(simulate_dopri5(mp, r));
 }
