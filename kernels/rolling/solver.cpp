@@ -624,15 +624,19 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
     for (int a = 0; a < static_cast<int>(model.X.size()); ++a) rec.push_back(a);
   auto record = [&]() {
     h.time.push_back(S.time());
-    std::vector<Vector3d> p, v, w;
+    std::vector<Vector3d> p, v, w, acc, wd;
     std::vector<Matrix3d> R;
     for (int a : rec) {
       const NodeState& n = S.nodes()[static_cast<std::size_t>(a)];
       p.push_back(n.x);
       v.push_back(n.v);
       w.push_back(n.R * n.W);
+      acc.push_back(n.a);
+      wd.push_back(n.R * n.A);
       R.push_back(n.R);
     }
+    h.acceleration.push_back(acc);
+    h.angular_acceleration.push_back(wd);
     h.position.push_back(p);
     h.velocity.push_back(v);
     h.angular_velocity.push_back(w);

@@ -127,7 +127,8 @@ struct RunOptions {
 
 struct History {
   std::vector<double> time;
-  std::vector<std::vector<Eigen::Vector3d>> position, velocity, angular_velocity;  // [record][node]
+  std::vector<std::vector<Eigen::Vector3d>> position, velocity, angular_velocity;  // [record][node], spatial
+  std::vector<std::vector<Eigen::Vector3d>> acceleration, angular_acceleration;    // spatial (R A for the latter)
   std::vector<std::vector<Eigen::Matrix3d>> rotation;
   std::vector<std::vector<ContactOutput>> contact;  // [record][contact pair]
   std::vector<Energies> energy;

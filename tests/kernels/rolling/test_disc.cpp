@@ -53,6 +53,9 @@ TEST_CASE("seed 000 example 4.1: disc sliding then rolling (dt = 1e-3, t = 0..6 
   // sliding all the way to t_roll (no early sticking), rolling after it
   const std::size_t k_half = static_cast<std::size_t>(std::lround(1.5 / ro.dt));
   CHECK(h.contact[k_half][0].slip);
+  // while sliding: a = mu g, angular acceleration 2 mu g / r (seed 000 Eq. 48-49)
+  CHECK(rel(h.acceleration[k_half][0].x(), p.mu * p.g) < 1e-6);
+  CHECK(rel(h.angular_acceleration[k_half][0].z(), 2 * p.mu * p.g / p.radius) < 1e-6);
 }
 
 TEST_CASE("seed 000 example 4.1, no-rolling variant: the disc never rolls") {
