@@ -344,6 +344,7 @@ Solver::~Solver() = default;
 // acceleration, open contacts and unknown slip directions contribute no friction.
 void Solver::initial_acceleration() {
   Impl& I = *impl_;
+  if (I.neq == 0) return;  // fully imposed motion
   VectorXd R;
   SparseSink ms;
   ms.eq = &I.eq;
