@@ -14,6 +14,7 @@ int psd_command(const Args& args);
 int compare_command(const Args& args);
 int keys_command(const Args& args);
 int texture_command(const Args& args);
+int modes_command(const Args& args);
 int version_command(const Args& args);
 
 }  // namespace rollspec::cli

@@ -2,6 +2,7 @@
 
 #include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
+#include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/random_oscillator.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/scenes/texture_scene.hpp"
@@ -26,6 +27,8 @@ const std::vector<SceneInfo>& scene_registry() {
       {"random-oscillator",
        "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
        random_oscillator_keys, [](const Study& s) { return make_random_oscillator(s); }},
+      {"ball-on-beam", "smooth rigid ball rolling over a rough modal beam; sensor acceleration PSDs (seeds 001, 002)",
+       ball_on_beam_keys, [](const Study& s) { return make_ball_on_beam(s); }},
       {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
        texture_scene_keys, [](const Study& s) { return make_texture_scene(s); }},
   };

@@ -249,7 +249,7 @@ SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd
       r.amplitudes = study_amplitudes(s);
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::exception& e) {  // invalid_argument from the spec, domain_error from a table PSD
     throw config_error(s.where("surface.spacing") + ": " + e.what());
   }
   return g;

@@ -1,0 +1,39 @@
+// rollspec modes: the modal frequencies of a ball-on-beam study's beam, mode by mode.
+#include <cstdio>
+
+#include "kernels/beam/modal_beam.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/parse_options.hpp"
+#include "src/scenes/ball_on_beam.hpp"
+#include "src/scenes/scene.hpp"
+#include "src/study/study.hpp"
+
+namespace rollspec::cli {
+
+int modes_command(const Args& args) {
+  const std::string usage =
+      "usage: rollspec modes STUDY.ini [--set section.key=value ...]\n"
+      "\n"
+      "Prints the beam's undamped modal frequencies (Hz), damping ratios and the effective length of a\n"
+      "ball-on-beam study. Nothing is computed beyond the eigenvalues.";
+  po::options_description opts("options");
+  std::string study_file;
+  std::vector<std::string> sets;
+  opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
+      "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)");
+  po::positional_options_description pos;
+  pos.add("study", 1);
+  po::variables_map vm;
+  if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
+  if (s.scene() != "ball-on-beam") s.refuse("study.scene", "rollspec modes needs a ball-on-beam study");
+  const beam::ModalBeam b = scenes::study_modal_beam(s);
+  std::printf("# %s beam, span %.6g m, effective length %.6g m, EI %.6g N m^2, rho A %.6g kg/m\n",
+              s.text("beam.support").c_str(), b.properties().length, b.effective_length(), b.bending_stiffness(),
+              b.mass_per_length());
+  std::printf("%6s %16s %12s\n", "mode", "frequency_hz", "damping");
+  for (int i = 0; i < b.modes(); ++i) std::printf("%6d %16.6f %12.6g\n", i + 1, b.frequency(i), b.zeta(i));
+  return 0;
+}
+
+}  // namespace rollspec::cli

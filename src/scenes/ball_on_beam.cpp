@@ -1,0 +1,439 @@
+#include "src/scenes/ball_on_beam.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <sstream>
+
+#include "kernels/beam/ball_on_beam.hpp"
+#include "kernels/beam/contact_patch_filter.hpp"
+#include "kernels/beam/dopri5_reference.hpp"
+#include "kernels/beam/exact_step_integrator.hpp"
+#include "kernels/beam/linear_response.hpp"
+#include "kernels/beam/modal_beam.hpp"
+#include "kernels/contact/geometry.hpp"
+#include "kernels/spectral/welch.hpp"
+#include "kernels/spectral/welch_expectation.hpp"
+#include "kernels/texture/line_texture.hpp"
+#include "kernels/texture/psd_units.hpp"
+#include "kernels/texture/time_signal.hpp"
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/io/psd_result.hpp"
+#include "src/rng/philox_stream.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+
+namespace {
+const double inf = std::numeric_limits<double>::infinity();
+
+std::vector<double> parse_positions(const Study& s, const std::string& key) {
+  std::vector<double> out;
+  std::istringstream in(s.text(key));
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    while (end && (*end == ' ' || *end == '\t')) ++end;
+    if (end == item.c_str() || (end && *end != '\0') || !std::isfinite(v))
+      s.refuse(key, "'" + item + "' is not a number; allowed: comma-separated positions in m");
+    out.push_back(v);
+  }
+  if (out.empty()) s.refuse(key, "lists no position; allowed: comma-separated positions in m");
+  return out;
+}
+}  // namespace
+
+std::vector<KeySpec> ball_on_beam_keys() {
+  std::vector<KeySpec> k = {
+      choice_key("beam", "support", "boundary conditions", std::string("clamped-clamped"),
+                 {"clamped-clamped", "simply-supported"}),
+      real_key("beam", "length", "m", "physical span l between the supports", std::string("0.4"), 0.0, inf, false),
+      real_key("beam", "effective_length", "m", "modal length l_eff >= l (clamp rotation, seed 002: l + 30 mm); 0: l",
+               std::string("0"), 0.0, inf),
+      real_key("beam", "width", "m", "section width", std::string("0.05"), 0.0, inf, false),
+      real_key("beam", "thickness", "m", "section thickness (bending direction)", std::string("0.0068"), 0.0, inf, false),
+      real_key("beam", "youngs_modulus", "Pa", "Young's modulus E", std::string("210e9"), 0.0, inf, false),
+      real_key("beam", "poisson", "-", "Poisson's ratio (contact modulus)", std::string("0.3"), -1.0, 0.5, false, false),
+      real_key("beam", "density", "kg/m^3", "density rho", std::string("7850"), 0.0, inf, false),
+      integer_key("beam", "modes", "number of modes (0: all up to max_frequency)", std::string("0"), 0, 5000),
+      real_key("beam", "max_frequency", "Hz", "highest modal frequency kept when modes = 0", std::string("20000"), 0.0, inf),
+      real_key("beam", "loss_factor", "-", "modal loss factor eta (zeta = eta/2)", std::string("0.01"), 0.0, 2.0),
+      bool_key("beam", "static_correction", "residual flexibility of the truncated modes", std::string("true")),
+      real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
+      real_key("ball", "density", "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", std::string("7850"), 0.0, inf, false),
+      real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
+      real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
+      real_key("ball", "speed", "m/s", "rolling speed v", std::string("1"), 0.0, inf, false),
+      real_key("ball", "start", "m", "ball position where the record starts", std::string("0.05"), 0.0, inf),
+      real_key("ball", "end", "m", "ball position where the record ends", std::string("0.35"), 0.0, inf),
+      real_key("ball", "gravity", "m/s^2", "gravitational acceleration", std::string("9.81"), 0.0, inf),
+      choice_key("contact", "law", "contact law: hertz (D-10) or linearised blocked force (D-11)", std::string("hertz"),
+                 {"hertz", "linearised"}),
+      real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"), 0.0, inf),
+      choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
+                 std::string("damping_only"), {"damping_only", "zero"}),
+      real_key("contact", "k0", "N/m", "linearised contact stiffness k0", std::string("6.8e6"), 0.0, inf, false),
+      bool_key("contact", "patch_filter", "average the roughness over the Hertz contact width at the static load",
+               std::string("true")),
+      real_key("roughness", "spacing", "m",
+               "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
+               "step, v / (sample_rate x substeps)",
+               std::string("0"), 0.0, inf),
+      real_key("signal", "sample_rate", "Hz", "output sample rate of accelerations and forces", std::string("25600"), 0.0,
+               inf, false),
+      integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"), 1,
+                  1000),
+      choice_key("signal", "hold",
+                 "modal force over a step: quadratic (order 3, default) or linear (order 2) (kernels/beam B23, B36)",
+                 std::string("quadratic"), {"quadratic", "linear"}),
+      choice_key("signal", "integrator", "exact (exact modal step, implicit contact) or dopri5 (reference)",
+                 std::string("exact"), {"exact", "dopri5"}),
+      real_key("signal", "rtol", "-", "relative tolerance of the dopri5 reference", std::string("1e-8"), 1e-14, 1e-2),
+      text_key("sensors", "positions", "accelerometer positions along the beam, m, comma-separated", std::string("0.2")),
+      bool_key("sensors", "average", "add the mean PSD over sensors (seed 002 averages 5 sensors x 25 rolls)",
+               std::string("true")),
+      real_key("spectrum", "skip_start", "s",
+               "time at the start of each record left out of the PSDs (start-up of the random response)", std::string("0"),
+               0.0, inf),
+      integer_key("output", "time_histories", "store time histories of realisations 0..n-1", std::string("0"), 0, 1000),
+  };
+  for (auto& t : texture_io::psd_keys()) k.push_back(t);
+  return k;
+}
+
+beam::ModalBeam study_modal_beam(const Study& s) {
+  beam::BeamProperties p;
+  p.support = s.text("beam.support") == "clamped-clamped" ? beam::Support::clamped_clamped : beam::Support::simply_supported;
+  p.youngs_modulus = s.real("beam.youngs_modulus");
+  p.density = s.real("beam.density");
+  p.width = s.real("beam.width");
+  p.thickness = s.real("beam.thickness");
+  p.length = s.real("beam.length");
+  p.effective_length = s.real("beam.effective_length");
+  if (p.effective_length > 0.0 && p.effective_length < p.length)
+    s.refuse("beam.effective_length", "is shorter than [beam] length; allowed: 0 or >= length");
+  beam::ModeSelection sel;
+  sel.count = static_cast<int>(s.integer("beam.modes"));
+  sel.max_frequency = s.real("beam.max_frequency");
+  if (sel.count == 0 && sel.max_frequency <= 0.0) s.refuse("beam.max_frequency", "must be > 0 when [beam] modes = 0");
+  beam::ModalDamping d;
+  d.loss_factor = s.real("beam.loss_factor");
+  try {
+    return beam::ModalBeam(p, sel, d, s.boolean("beam.static_correction"));
+  } catch (const std::exception& e) {
+    throw config_error(s.where("beam.modes") + ": " + e.what());
+  }
+}
+
+namespace {
+
+struct Workspace {
+  std::vector<double> texture, u_phase, u_amp;
+  beam::BallOnBeamResult result;
+  spectral::WelchWorkspace welch;
+  Workspace(std::size_t n_texture, std::size_t harmonics, std::size_t segment)
+      : texture(n_texture), u_phase(harmonics), u_amp(harmonics), welch(segment) {}
+};
+
+class BallOnBeam final : public Scene {
+ public:
+  explicit BallOnBeam(const Study& s)
+      : seed_(static_cast<std::uint64_t>(s.integer("study.seed"))),
+        model_{study_modal_beam(s), {}, {}, {}, s.real("signal.sample_rate"), parse_positions(s, "sensors.positions")},
+        psd_(texture_io::study_psd(s)),
+        average_(s.boolean("sensors.average")),
+        dopri_(s.text("signal.integrator") == "dopri5"),
+        rtol_(s.real("signal.rtol")),
+        confidence_(s.real("spectrum.confidence")),
+        band_min_(s.real("spectrum.band_min")),
+        band_max_(s.real("spectrum.band_max")),
+        time_histories_(static_cast<std::size_t>(s.integer("output.time_histories"))) {
+    const double l = s.real("beam.length");
+    for (double x : model_.sensors)
+      if (x < 0.0 || x > l) s.refuse("sensors.positions", "position " + std::to_string(x) + " m lies outside the span [0, length]");
+    // Ball.
+    const double radius = s.real("ball.radius");
+    model_.ball.mass = 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density");
+    model_.ball.gravity = s.real("ball.gravity");
+    model_.traverse.x_start = s.real("ball.start");
+    model_.traverse.x_end = s.real("ball.end");
+    model_.traverse.speed = s.real("ball.speed");
+    if (!(model_.traverse.x_end > model_.traverse.x_start)) s.refuse("ball.end", "must exceed [ball] start");
+    if (model_.traverse.x_end > l) s.refuse("ball.end", "lies beyond the span [0, length]");
+    // Contact.
+    beam::ContactLaw& law = model_.contact;
+    linearised_ = s.text("contact.law") == "linearised";
+    law.kind = linearised_ ? beam::ContactLawKind::linearised : beam::ContactLawKind::hertz;
+    law.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
+                                                       s.real("beam.youngs_modulus"), s.real("beam.poisson"));
+    law.radius = radius;
+    law.k0 = s.real("contact.k0");
+    law.damping = s.real("contact.damping");
+    law.loss = s.text("contact.loss") == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
+    const double weight = model_.ball.mass * model_.ball.gravity;
+    static_compression_ = linearised_ ? weight / law.k0 : std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
+    patch_half_width_ = s.boolean("contact.patch_filter") ? beam::hertz_half_width(radius, linearised_ ? std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0) : static_compression_) : 0.0;
+    // Roughness line over the whole span, so the patch filter and the traverse never run off it.
+    // One roughness sample per integration step by default: the interpolation between samples then
+    // low-passes the excitation only near the step's own Nyquist frequency.
+    dx_ = s.real("roughness.spacing") > 0.0
+              ? s.real("roughness.spacing")
+              : model_.traverse.speed / (model_.sample_rate * static_cast<double>(s.integer("signal.substeps")));
+    texture::LineTextureSpec ls;
+    ls.spacing = dx_;
+    ls.samples = static_cast<std::size_t>(std::floor(l / dx_)) + 1;
+    if (ls.samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
+    ls.amplitudes = texture_io::study_amplitudes(s);
+    ls.allow_truncation = true;
+    try {
+      lines_ = std::make_unique<texture::LineTextureGenerator>(psd_, ls);
+    } catch (const std::exception& e) {
+      throw config_error(s.where("roughness.spacing") + ": " + e.what());
+    }
+    // Integrator.
+    const auto substeps = static_cast<int>(s.integer("signal.substeps"));
+    beam::ExactStepOptions eo;
+    eo.substeps = substeps;
+    eo.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
+    integrator_ = std::make_unique<beam::ExactStepIntegrator>(model_, eo);
+    samples_ = beam::output_samples(model_);
+    skip_ = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * model_.sample_rate));
+    if (skip_ >= samples_) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(samples_) + " samples)");
+    const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
+    if (segment > samples_ - skip_)
+      s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(samples_ - skip_) +
+                                       " samples = ((end - start) / speed - skip_start) x sample_rate)");
+    spectral::WelchConfig wc;
+    wc.sample_rate = model_.sample_rate;
+    wc.segment = segment;
+    wc.overlap = static_cast<std::size_t>(std::floor(s.real("spectrum.overlap") * static_cast<double>(segment)));
+    wc.window = s.text("spectrum.window") == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
+    welch_ = std::make_unique<spectral::WelchPlan>(wc);
+    for (int t = 0; t < ensemble::ensemble_threads(); ++t)
+      workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
+  }
+
+  std::vector<StagePlan> plan() const override {
+    return {
+        {"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + psd_.description + ")"},
+        {"surface", StageStatus::skipped, "the point-contact laws need no isotropic surface"},
+        {"stiffness_table", StageStatus::skipped,
+         linearised_ ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"},
+        {"blocked_force", linearised_ ? StageStatus::run : StageStatus::skipped,
+         linearised_ ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)" : "only the linearised law uses F0"},
+        {"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step, implicit contact (D-9, D-10)"},
+        {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
+    };
+  }
+
+  std::size_t rows() const { return model_.sensors.size() + (average_ && model_.sensors.size() > 1 ? 1 : 0); }
+  std::size_t values_per_realisation() const override { return (rows() + 2) * welch_->n_freq() + 1; }
+
+  // Simulates realisation `id` into ws.result (shared by the ensemble and the time-history output).
+  void simulate(std::uint64_t id, Workspace& ws) const {
+    const std::size_t nh = lines_->harmonics();
+    rng::PhiloxStream(seed_, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
+    rng::PhiloxStream(seed_, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
+    lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data());
+    beam::UniformSamples h{0.0, dx_, ws.texture};
+    if (patch_half_width_ > 0.0) h = beam::contact_patch_average(h, patch_half_width_);
+    beam::Realisation r;
+    if (linearised_) {
+      // Blocked force of a linear contact spring: F0(t) = W + k0 h(x_start + v t) (D-11).
+      const double v = model_.traverse.speed, x0 = model_.traverse.x_start, dt = dx_ / v;
+      const auto first = static_cast<std::size_t>(std::floor(x0 / dx_));
+      r.blocked_force.origin = (static_cast<double>(first) * dx_ - x0) / v;
+      r.blocked_force.step = dt;
+      const double weight = model_.ball.mass * model_.ball.gravity;
+      for (std::size_t i = first; i < h.values.size(); ++i) r.blocked_force.values.push_back(weight + model_.contact.k0 * h.values[i]);
+    } else {
+      r.roughness = std::move(h);
+    }
+    if (dopri_) {
+      beam::ReferenceTolerances tol;
+      tol.rtol = rtol_;
+      ws.result = beam::simulate_dopri5(model_, r, tol);
+    } else {
+      integrator_->run(r, ws.result);
+    }
+  }
+
+  void run_realisation(std::uint64_t id, int thread, double* values) const override {
+    Workspace& ws = *workspaces_[static_cast<std::size_t>(thread)];
+    simulate(id, ws);
+    const std::size_t nf = welch_->n_freq(), ns = model_.sensors.size(), n = ws.result.samples() - skip_;
+    for (std::size_t s = 0; s < ns; ++s)
+      welch_->psd(ws.result.sensor_acceleration[s].data() + skip_, n, values + s * nf, ws.welch);
+    if (rows() > ns)
+      for (std::size_t k = 0; k < nf; ++k) {
+        double m = 0.0;
+        for (std::size_t s = 0; s < ns; ++s) m += values[s * nf + k];
+        values[ns * nf + k] = m / static_cast<double>(ns);
+      }
+    welch_->psd(ws.result.contact_force.data() + skip_, n, values + rows() * nf, ws.welch);
+    welch_->psd(ws.result.ball_acceleration.data() + skip_, n, values + (rows() + 1) * nf, ws.welch);
+    values[(rows() + 2) * nf] = ws.result.loss_of_contact_share;
+  }
+
+  void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
+    const std::size_t nf = welch_->n_freq(), nr = rows();
+    const double K = static_cast<double>(sums.count);
+    auto mean_of = [&](std::size_t i) { return sums.sum[i] / K; };
+    auto std_of = [&](std::size_t i) {
+      const double m = mean_of(i);
+      return sums.count > 1 ? std::sqrt(std::max(0.0, (sums.sum_sq[i] - K * m * m) / (K - 1))) : 0.0;
+    };
+    io::PsdEnsemble e;
+    e.frequency = welch_->frequencies();
+    for (std::size_t s = 0; s < model_.sensors.size(); ++s) e.sensors.push_back("sensor_" + std::to_string(s + 1));
+    if (nr > model_.sensors.size()) e.sensors.push_back("sensor_mean");
+    for (std::size_t i = 0; i < nr * nf; ++i) {
+      e.mean.push_back(mean_of(i));
+      e.std_dev.push_back(std_of(i));
+    }
+    e.realisations = sums.count;
+    // Sensors of one roll are correlated, so the sensor mean keeps the single-sensor dof (conservative).
+    e.dof_per_bin = K * welch_->equivalent_dof(samples_ - skip_);
+    e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
+    e.record_seconds = K * static_cast<double>(samples_ - skip_) / model_.sample_rate;
+    e.confidence = confidence_;
+    e.band_min = band_min_;
+    e.band_max = band_max_;
+    io::write_psd_result(w, e);
+
+    std::vector<double> force(nf), ball(nf);
+    for (std::size_t k = 0; k < nf; ++k) {
+      force[k] = mean_of(nr * nf + k);
+      ball[k] = mean_of((nr + 1) * nf + k);
+    }
+    w.write("/contact/force_psd", {nf}, force.data(), "N^2/Hz", "ensemble mean PSD of the contact force");
+    w.write("/ball/acceleration_psd", {nf}, ball.data(), "(m/s^2)^2/Hz", "ensemble mean PSD of the ball acceleration");
+    w.attach_scale("/contact/force_psd", "/psd/frequency", 0);
+    w.attach_scale("/ball/acceleration_psd", "/psd/frequency", 0);
+    const double share = mean_of((nr + 2) * nf), share_std = std_of((nr + 2) * nf);
+    w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
+    w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
+    w.attribute("/contact", "law", linearised_ ? std::string("linearised") : std::string("hertz"));
+    w.attribute("/contact", "static_compression", static_compression_);
+    w.attribute("/contact", "patch_half_width", patch_half_width_);
+    w.attribute("/contact", "effective_modulus", model_.contact.effective_modulus);
+
+    const auto& b = model_.beam;
+    std::vector<double> fm(static_cast<std::size_t>(b.modes()));
+    for (int i = 0; i < b.modes(); ++i) fm[static_cast<std::size_t>(i)] = b.frequency(i);
+    w.write("/beam/modal_frequency", {fm.size()}, fm.data(), "Hz", "undamped modal frequencies");
+    const auto& p = b.properties();
+    w.attribute("/beam", "length", p.length);
+    w.attribute("/beam", "effective_length", b.effective_length());
+    w.attribute("/beam", "width", p.width);
+    w.attribute("/beam", "thickness", p.thickness);
+    w.attribute("/beam", "youngs_modulus", p.youngs_modulus);
+    w.attribute("/beam", "density", p.density);
+    w.attribute("/beam", "static_correction", static_cast<std::int64_t>(b.static_correction()));
+    w.write("/sensors/position", {model_.sensors.size()}, model_.sensors.data(), "m", "sensor positions along the span");
+    w.attribute("/ball", "mass", model_.ball.mass);
+    w.attribute("/ball", "speed", model_.traverse.speed);
+
+    if (linearised_) write_linear_reference(w, e.frequency);
+    if (time_histories_) write_time_histories(w);
+  }
+
+ private:
+  // Frequency-domain solution of the linearised model (seed 002 check): blocked-force PSD
+  // k0^2 G_t(f) |patch(f)|^2 through the receptances, averaged over ball positions.
+  void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f) const {
+    // On a grid 8 times finer than the bins, then through the Welch expectation (D-20): the
+    // estimate converges to the PSD smoothed by the window, which resolves no resonance narrower
+    // than a bin.
+    const std::size_t refine = 8, nfine = refine * (f.size() - 1) + 1;
+    const double v = model_.traverse.speed, k0 = model_.contact.k0, a = patch_half_width_;
+    const auto gt = texture::time_psd(psd_, v);
+    const double k_nyq = M_PI / dx_, dfine = welch_->frequency_step() / static_cast<double>(refine);
+    std::vector<double> fine(nfine), exc(nfine, 0.0);
+    for (std::size_t i = 0; i < nfine; ++i) {
+      fine[i] = dfine * static_cast<double>(i);
+      const double k = 2.0 * M_PI * fine[i] / v;
+      if (i == 0 || k > k_nyq) continue;  // harmonics above pi/dx are not synthesised
+      const double patch = a > 0.0 ? std::sin(k * a) / (k * a) : 1.0;
+      exc[i] = k0 * k0 * gt(fine[i]) * patch * patch;
+    }
+    // Ball positions over the analysed part of the record (after skip_start).
+    const double x0 = model_.traverse.x_start + v * static_cast<double>(skip_) / model_.sample_rate;
+    std::vector<double> xi;
+    for (int i = 0; i < 200; ++i) xi.push_back(x0 + (model_.traverse.x_end - x0) * (i + 0.5) / 200.0);
+    const auto lr = beam::linear_response_psd(model_.beam, model_.ball.mass, k0, model_.contact.damping, xi,
+                                              model_.sensors, fine, exc, beam::Excitation::blocked_force);
+    std::vector<std::vector<double>> rows_fine = lr.sensor_psd;
+    if (rows() > model_.sensors.size()) {
+      std::vector<double> m(nfine, 0.0);
+      for (const auto& row : lr.sensor_psd)
+        for (std::size_t k = 0; k < nfine; ++k) m[k] += row[k] / static_cast<double>(lr.sensor_psd.size());
+      rows_fine.push_back(m);
+    }
+    std::vector<double> expected, raw;
+    for (const auto& row : rows_fine) {
+      const auto e = spectral::welch_expectation(*welch_, row, refine);
+      expected.insert(expected.end(), e.begin(), e.end());
+      for (std::size_t k = 0; k < f.size(); ++k) raw.push_back(row[k * refine]);
+    }
+    w.write("/reference/psd", {rows(), f.size()}, expected.data(), "(m/s^2)^2/Hz",
+            "expected Welch estimate (D-20) of the linearised model's frequency-domain PSD, averaged over ball positions");
+    w.write("/reference/psd_raw", {rows(), f.size()}, raw.data(), "(m/s^2)^2/Hz",
+            "the frequency-domain PSD itself at the bin frequencies (not window-smoothed)");
+    for (const char* d : {"/reference/psd", "/reference/psd_raw"}) {
+      w.attach_scale(d, "/psd/sensor", 0);
+      w.attach_scale(d, "/psd/frequency", 1);
+    }
+  }
+
+  // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume.
+  void write_time_histories(io::Hdf5Writer& w) const {
+    Workspace& ws = *workspaces_[0];
+    const std::size_t n = samples_, ns = model_.sensors.size(), nh = time_histories_;
+    std::vector<double> t(n), acc(nh * ns * n), force(nh * n), ball(nh * n), delta(nh * n);
+    for (std::size_t j = 0; j < n; ++j) t[j] = static_cast<double>(j) / model_.sample_rate;
+    for (std::size_t r = 0; r < nh; ++r) {
+      simulate(r, ws);
+      for (std::size_t s = 0; s < ns; ++s)
+        std::copy(ws.result.sensor_acceleration[s].begin(), ws.result.sensor_acceleration[s].end(), acc.begin() + static_cast<std::ptrdiff_t>((r * ns + s) * n));
+      std::copy(ws.result.contact_force.begin(), ws.result.contact_force.end(), force.begin() + static_cast<std::ptrdiff_t>(r * n));
+      std::copy(ws.result.ball_acceleration.begin(), ws.result.ball_acceleration.end(), ball.begin() + static_cast<std::ptrdiff_t>(r * n));
+      std::copy(ws.result.compression.begin(), ws.result.compression.end(), delta.begin() + static_cast<std::ptrdiff_t>(r * n));
+    }
+    w.write("/time_history/time", {n}, t.data(), "s", "time from the start of the record");
+    w.write("/time_history/sensor_acceleration", {nh, ns, n}, acc.data(), "m/s^2", "realisation x sensor x time");
+    w.write("/time_history/contact_force", {nh, n}, force.data(), "N", "realisation x time");
+    w.write("/time_history/ball_acceleration", {nh, n}, ball.data(), "m/s^2", "realisation x time");
+    w.write("/time_history/compression", {nh, n}, delta.data(), "m", "contact compression delta (D-1)");
+    w.make_scale("/time_history/time", "time");
+    w.attach_scale("/time_history/sensor_acceleration", "/time_history/time", 2);
+    for (const char* d : {"/time_history/contact_force", "/time_history/ball_acceleration", "/time_history/compression"})
+      w.attach_scale(d, "/time_history/time", 1);
+  }
+
+  std::uint64_t seed_;
+  beam::BallOnBeamModel model_;
+  texture::Psd psd_;
+  bool average_, dopri_;
+  double rtol_, confidence_, band_min_, band_max_;
+  std::size_t time_histories_;
+  bool linearised_ = false;
+  double static_compression_ = 0.0, patch_half_width_ = 0.0, dx_ = 0.0;
+  std::unique_ptr<texture::LineTextureGenerator> lines_;
+  std::unique_ptr<beam::ExactStepIntegrator> integrator_;
+  std::size_t samples_ = 0, skip_ = 0;
+  std::unique_ptr<spectral::WelchPlan> welch_;
+  std::vector<std::unique_ptr<Workspace>> workspaces_;
+};
+
+}  // namespace
+
+std::unique_ptr<Scene> make_ball_on_beam(const Study& s) { return std::make_unique<BallOnBeam>(s); }
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,25 @@
+#pragma once
+// Scene `ball-on-beam` (design §5; seeds 001 and 002): a smooth rigid ball rolls at constant speed
+// over a rough modal Euler-Bernoulli beam. Per realisation: a line texture of the beam's surface
+// from [texture] (Philox streams roughness_*), the ball-on-beam integration of kernels/beam
+// (exact-step default, Dormand-Prince reference), Welch PSDs of the sensor accelerations, the
+// contact force and the ball acceleration over the traverse, and the share of time in loss of
+// contact. Averaged over realisations (and over sensors as seed 002 does).
+#include <memory>
+#include <vector>
+
+#include "src/scenes/scene.hpp"
+
+namespace rollspec::beam {
+class ModalBeam;
+}
+
+namespace rollspec::scenes {
+
+std::vector<study::KeySpec> ball_on_beam_keys();
+std::unique_ptr<Scene> make_ball_on_beam(const study::Study& s);
+
+// The modal beam a study describes (for `rollspec modes`).
+beam::ModalBeam study_modal_beam(const study::Study& s);
+
+}  // namespace rollspec::scenes
