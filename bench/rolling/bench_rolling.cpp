@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   std::printf("%s,%d,%d,%d,%.4f,t_roll,%.5f,%.5f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.t_roll, s.t_roll_exact);
   std::printf("%s,%d,%d,%d,%.4f,final_speed,%.5f,%.5f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.final_speed, s.final_speed_exact);
   std::printf("%s,%d,%d,%d,%.4f,energy_loss,%.2f,%.2f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.energy_loss, s.energy_loss_exact);
+  std::printf("%s,%d,%d,%d,%.4f,friction_work,%.2f,%.2f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.friction_work, s.energy_loss_exact);
 
   // ---- example 4.2 ----
   for (const bool rolling : {true, false}) {
@@ -60,7 +61,8 @@ int main(int argc, char** argv) {
       std::printf("%s,%d,%d,%d,%.3f,max_torsion_t%.0f,%.2f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, sn.time, sn.max_abs_torsion);
       std::printf("%s,%d,%d,%d,%.3f,tip_x_t%.0f,%.5f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, sn.time, sn.tip.x());
     }
-    std::printf("%s,%d,%d,%d,%.3f,friction_work,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, r.friction_dissipation);
+    std::printf("%s,%d,%d,%d,%.3f,friction_dissipation,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, r.friction_dissipation);
+    std::printf("%s,%d,%d,%d,%.3f,friction_work,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, r.friction_work);
   }
   return 0;
 }

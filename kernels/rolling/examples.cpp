@@ -48,10 +48,11 @@ DiscSummary summarize_disc(const DiscParams& p, const History& h) {
   s.final_omega = h.angular_velocity[e][0].norm();
   auto mech = [&](std::size_t k) {
     const Energies& E = h.energy[k];
-    return E.kinetic + E.penalty - E.external_work;  // gravity work = -potential change
+    return E.kinetic + E.penalty + E.tangential_elastic - E.external_work;  // gravity work = -potential change
   };
   s.energy_loss = mech(0) - mech(e);
   s.dissipation = h.energy[e].friction_dissipation;
+  s.friction_work = h.energy[e].friction_work - h.energy[e].tangential_elastic;
   s.slip_after_roll = s.dissipation - h.energy[k_roll].friction_dissipation;
   int n = 0;
   for (std::size_t k = 0; k < h.time.size(); ++k)
@@ -142,6 +143,7 @@ CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
     }
   }
   out.friction_dissipation = S.energies().friction_dissipation;
+  out.friction_work = S.energies().friction_work;
   return out;
 }
 

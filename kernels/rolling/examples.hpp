@@ -29,7 +29,8 @@ struct DiscSummary {
   double mean_roll_speed = 0.0;  // mean r |w| over the last second
   double slip_after_roll = 0.0;  // friction work after t_roll (chatter at the spring peaks)
   double energy_loss = 0.0;      // mechanical energy lost (kinetic + penalty + gravity)
-  double dissipation = 0.0;      // accumulated friction work (return mapping)
+  double dissipation = 0.0;      // accumulated return-mapping dissipation
+  double friction_work = 0.0;    // mechanical energy removed by friction (trapezoidal)
   double penetration = 0.0;      // -g_n at the end
   // analytic references (seed 000 Eq. 48-50)
   double t_roll_exact = 0.0, final_speed_exact = 0.0, energy_loss_exact = 0.0, penetration_exact = 0.0;
@@ -71,7 +72,8 @@ struct CantileverRun {
   bool completed = true;
   double failed_at = 0.0;
   int steps = 0, newton_iterations = 0, cuts = 0;
-  double friction_dissipation = 0.0;
+  double friction_dissipation = 0.0;  // return mapping
+  double friction_work = 0.0;         // trapezoidal work of friction forces and moments
 };
 // Quasi-static run to t_end with steps dt, snapshots at the given times.
 CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,

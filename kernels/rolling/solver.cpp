@@ -124,7 +124,7 @@ struct Solver::Impl {
   SparseSink sink;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
   std::vector<ContactEval> cevals;
-  double penalty_energy = 0.0;
+  double penalty_energy = 0.0, tangential_energy = 0.0;
 
   void assemble(const Solver& S, const VectorXd& q, double t1, double dt, Mode mode, VectorXd& R,
                 Sink* K, std::vector<ContactEval>* ce) const;
@@ -467,9 +467,10 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
   const VectorXd f0 = I.external(*this, t_), f1 = I.external(*this, t1);
   for (int a = 0; a < I.nn; ++a) {
     const Vector3d du = q.segment<3>(6 * a), al = q.segment<3>(6 * a + 3);
-    const Vector3d th = rotation_vector_from_rodrigues(al);
+    // rotations: the Newmark energy identity pairs spatial moments with the Rodrigues
+    // increment a (b.R^T m = a.m for b = R_n^T a), R-43
     acc_.external_work += 0.5 * (f0.segment<3>(6 * a) + f1.segment<3>(6 * a)).dot(du) +
-                          0.5 * (f0.segment<3>(6 * a + 3) + f1.segment<3>(6 * a + 3)).dot(th);
+                          0.5 * (f0.segment<3>(6 * a + 3) + f1.segment<3>(6 * a + 3)).dot(al);
   }
   for (std::size_t k = 0; k < m.imposed.size(); ++k) {
     const ImposedDof& d = m.imposed[k];
@@ -478,11 +479,19 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     reactions_[k] = reac;
   }
   I.penalty_energy = 0.0;
+  I.tangential_energy = 0.0;
   for (std::size_t c = 0; c < m.contacts.size(); ++c) {
     const ContactEval& ev = I.cevals[c];
     acc_.friction_dissipation += ev.dissipation;
+    {  // trapezoidal work of friction force and moment on the node
+      const int nd = m.contacts[c].node;
+      const ContactOutput& prev = contact_out_[c];
+      acc_.friction_work -= 0.5 * (prev.friction + ev.friction).dot(q.segment<3>(6 * nd)) +
+                            0.5 * (prev.moment + ev.moment).dot(q.segment<3>(6 * nd + 3));
+    }
     if (ev.active) {
-      I.penalty_energy += 0.5 * m.contacts[c].law.eps_n * ev.g_n * ev.g_n + ev.tangential_energy;
+      I.penalty_energy += 0.5 * m.contacts[c].law.eps_n * ev.g_n * ev.g_n;
+      I.tangential_energy += ev.tangential_energy;
       cstate_[c] = ev.next;
     } else {
       cstate_[c] = ContactState{};  // reset on separation
@@ -564,6 +573,7 @@ Energies Solver::energies() const {
   const Impl& I = *impl_;
   Energies E = acc_;
   E.penalty = I.penalty_energy;
+  E.tangential_elastic = I.tangential_energy;
   for (std::size_t e = 0; e < model_.beams.size(); ++e) {
     const BeamElement& be = model_.beams[e];
     const BeamSection& sec = model_.sections[static_cast<std::size_t>(be.section)];

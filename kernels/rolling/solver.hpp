@@ -41,13 +41,19 @@ struct NodeState {
 struct Energies {
   double kinetic = 0.0;
   double strain = 0.0;
-  double penalty = 0.0;              // normal (eps_n g_n^2/2) + tangential (|f_t|^2/(2 eps_t))
-  double external_work = 0.0;       // gravity and nodal loads (trapezoidal in time)
-  double imposed_work = 0.0;        // work of the reactions at imposed DOFs
+  double penalty = 0.0;              // normal penalty energy eps_n g_n^2 / 2
+  double tangential_elastic = 0.0;   // energy in the stick springs |f_t|^2 / (2 eps_t)
+  double external_work = 0.0;        // gravity and nodal loads (trapezoidal, R-43)
+  double imposed_work = 0.0;         // work of the reactions at imposed DOFs
+  // Mechanical energy removed by the friction forces and moments, trapezoidal in time
+  // as the Newmark energy identity requires; includes what the stick springs store.
+  double friction_work = 0.0;
+  // Return-mapping dissipation: sum of f_max * slip increment (>= 0, seed 000 Eq. 13-14).
   double friction_dissipation = 0.0;
-  // kinetic + strain + penalty - external_work - imposed_work + friction_dissipation
+  // kinetic + strain + penalty - external_work - imposed_work + friction_work: constant up to
+  // the normal-penalty kink at opening/closing and the O(dt^2) rotation terms.
   double balance() const {
-    return kinetic + strain + penalty - external_work - imposed_work + friction_dissipation;
+    return kinetic + strain + penalty - external_work - imposed_work + friction_work;
   }
 };
 

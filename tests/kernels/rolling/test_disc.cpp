@@ -49,6 +49,9 @@ TEST_CASE("seed 000 example 4.1: disc sliding then rolling (dt = 1e-3, t = 0..6 
   CHECK(s.slip_after_roll < 1e-4 * s.dissipation);  // sliding has stopped
   CHECK(rel(s.energy_loss, s.energy_loss_exact) < 0.005);
   CHECK(rel(s.dissipation, s.energy_loss_exact) < 0.005);
+  MESSAGE("trapezoidal friction work (minus spring storage) " << s.friction_work << ", rel "
+                                                             << rel(s.friction_work, s.energy_loss_exact));
+  CHECK(rel(s.friction_work, s.energy_loss_exact) < 0.005);
   CHECK(rel(s.penetration, s.penetration_exact) < 0.02);
   // sliding all the way to t_roll (no early sticking), rolling after it
   const std::size_t k_half = static_cast<std::size_t>(std::lround(1.5 / ro.dt));
