@@ -125,6 +125,7 @@ struct Solver::Impl {
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
   std::vector<ContactEval> cevals;
   double penalty_energy = 0.0, tangential_energy = 0.0;
+  int analyses = 0;  // SparseLU::analyzePattern calls
 
   void assemble(const Solver& S, const VectorXd& q, double t1, double dt, Mode mode, VectorXd& R,
                 Sink* K, std::vector<ContactEval>* ce) const;
@@ -447,6 +448,7 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     if (I.sink.new_pattern) {
       I.lu.analyzePattern(I.sink.A);  // once (again only if the pattern ever changes)
       I.sink.new_pattern = false;
+      ++I.analyses;
     }
     I.lu.factorize(I.sink.A);
     if (I.lu.info() != Eigen::Success) return false;
@@ -598,6 +600,8 @@ Energies Solver::energies() const {
   }
   return E;
 }
+
+int Solver::pattern_analyses() const { return impl_->analyses; }
 
 std::vector<BeamResultant> Solver::beam_resultants() const {
   std::vector<BeamResultant> out;

@@ -101,6 +101,8 @@ class Solver {
   // Reactions at the imposed DOFs (model.imposed order), from the last converged step.
   const std::vector<double>& reactions() const { return reactions_; }
   std::vector<BeamResultant> beam_resultants() const;
+  // Number of SparseLU::analyzePattern calls so far (1 after the first iteration).
+  int pattern_analyses() const;
 
   // Residual and tangent of the full model (6 DOFs per node, [du, a] per node) for the
   // given increments from the committed state; for tests (finite-difference checks).

@@ -43,6 +43,7 @@ TEST_CASE("contact state resets on separation and restarts at the new projection
   CHECK(s_off.x_f.norm() == 0.0);
   CHECK(s_off.g_st.norm() == 0.0);
   go(0.5);
+  CHECK(S.pattern_analyses() == (spin ? 1 : 0));  // contacts opened and closed, pattern analysed once
   const ContactState s_re = S.contact_states()[0];
   MESSAGE("spin " << spin << ": in contact x_f " << s_in.x_f.transpose() << " g_st " << s_in.g_st.transpose() << "; after re-contact x_f "
                             << s_re.x_f.transpose() << " g_st " << s_re.g_st.transpose());
