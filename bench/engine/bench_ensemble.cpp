@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
     auto scene = scenes::find_scene(s.scene()).make(s);
-    scene->prepare(true);
+    scene->prepare(true, false);
     ensemble::EnsembleConfig cfg;
     cfg.realisations = static_cast<std::uint64_t>(s.integer("study.realisations"));
     cfg.chunk_size = static_cast<std::uint64_t>(s.integer("ensemble.chunk_size"));

@@ -15,6 +15,7 @@ int compare_command(const Args& args);
 int keys_command(const Args& args);
 int texture_command(const Args& args);
 int modes_command(const Args& args);
+int stiffness_command(const Args& args);
 int version_command(const Args& args);
 
 }  // namespace rollspec::cli

@@ -6,6 +6,7 @@
 //   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor K] [--fmin HZ] [--fmax HZ] [--format table|csv]
 //   rollspec texture STUDY.ini [--out FILE.h5] [--count N]
 //   rollspec modes STUDY.ini
+//   rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild]
 //   rollspec keys [SCENE]
 //   rollspec version
 //
@@ -32,6 +33,7 @@ const char* kUsage =
     "  psd       Welch PSD of a measured time series (CSV in, CSV out)\n"
     "  compare   compare a result's band levels with a measured PSD\n"
     "  texture   line textures and isotropic surfaces from a roughness PSD\n"
+    "  stiffness build or reuse a contact stiffness table (elastic-plastic rough contact)\n"
     "  modes     modal frequencies of a ball-on-beam study's beam\n"
     "  keys      list the study keys of a scene with units, ranges and defaults\n"
     "  version   print the version, git sha and library versions\n";
@@ -54,6 +56,7 @@ int main(int argc, char** argv) {
       {"run", cli::run_command},         {"plan", cli::plan_command}, {"psd", cli::psd_command},
       {"compare", cli::compare_command}, {"keys", cli::keys_command}, {"version", cli::version_command},
       {"texture", cli::texture_command}, {"modes", cli::modes_command},
+      {"stiffness", cli::stiffness_command},
   };
   const auto it = commands.find(command);
   if (it == commands.end()) {

@@ -1,6 +1,11 @@
 // rollspec psd: Welch PSD (D-15) of a measured time series, CSV in, CSV out.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -51,7 +56,18 @@ int psd_command(const Args& args) {
   const spectral::WelchPlan plan(cfg);
   spectral::WelchWorkspace ws(cfg.segment);
   std::vector<std::vector<double>> psd(t.columns.size(), std::vector<double>(plan.n_freq()));
-  for (std::size_t c = 0; c < t.columns.size(); ++c) plan.psd(t.values[c].data(), t.rows(), psd[c].data(), ws);
+  for (std::size_t c = 0; c < t.columns.size(); ++c) {
+    plan.psd(t.values[c].data(), t.rows(), psd[c].data(), ws);
+    for (std::size_t k = 0; k < psd[c].size(); ++k)
+      if (!std::isfinite(psd[c][k])) {
+        double peak = 0.0;
+        for (double v : t.values[c]) peak = std::max(peak, std::fabs(v));
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.6g", peak);
+        throw data_error(input + ": column '" + t.columns[c] + "': the PSD overflows a double (largest |value| " + buf +
+                         "); allowed: samples whose squares stay finite, e.g. |value| < 1e100 (rescale the unit)");
+      }
+  }
 
   std::ostringstream s;
   s << "frequency_hz";
@@ -72,15 +88,28 @@ int psd_command(const Args& args) {
     std::cout << s.str();
     return 0;
   }
-  const std::string tmp = out + ".tmp";
+  // Written beside the output and renamed onto it: an existing file is replaced whole or not at all,
+  // and the temporary file never outlives a failure.
+  const std::string tmp = out + ".tmp-" + std::to_string(::getpid());
   {
     std::ofstream o(tmp, std::ios::trunc);
+    if (!o) {
+      const std::string why = std::strerror(errno);
+      throw cannot_create("cannot create output file '" + out + "' (writing " + tmp + ": " + why + ")");
+    }
     o << s.str();
-    if (!o) throw cannot_create("cannot write " + tmp);
+    o.close();
+    if (!o) {
+      std::remove(tmp.c_str());
+      throw cannot_create("cannot write output file '" + out + "' (writing " + tmp + " failed)");
+    }
   }
   std::error_code ec;
   std::filesystem::rename(tmp, out, ec);
-  if (ec) throw cannot_create("cannot rename " + tmp + " to " + out + ": " + ec.message());
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw cannot_create("cannot create output file '" + out + "': " + ec.message());
+  }
   return 0;
 }
 

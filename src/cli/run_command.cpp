@@ -35,7 +35,8 @@ int run_command(const Args& args) {
   opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
       "out,o", po::value(&out), "result file (default: the study's name with .h5, in the current directory)")(
       "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)")(
-      "resume", "reuse the completed chunks of an interrupted run")("quiet,q", "no progress output");
+      "resume", "reuse the completed chunks of an interrupted run")(
+      "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q", "no progress output");
   po::positional_options_description pos;
   pos.add("study", 1);
   po::variables_map vm;
@@ -44,14 +45,14 @@ int run_command(const Args& args) {
   const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
   auto scene = scenes::find_scene(s.scene()).make(s);
   if (!scene->runs_ensemble())
-    s.refuse("study.scene", "has no ensemble to run; use rollspec texture " + study_file + " for this scene");
+    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + study_file);
   if (out.empty()) out = fs::path(study_file).stem().string() + ".h5";
   const fs::path out_dir = fs::absolute(out).parent_path();
   if (!fs::is_directory(out_dir)) throw cannot_create("output directory " + out_dir.string() + " does not exist (for --out " + out + ")");
   const bool quiet = vm.count("quiet") > 0;
 
   ensemble::install_stop_handlers();
-  scene->prepare(quiet);
+  scene->prepare(quiet, vm.count("rebuild") > 0);
   ensemble::EnsembleConfig cfg;
   cfg.realisations = static_cast<std::uint64_t>(s.integer("study.realisations"));
   cfg.chunk_size = static_cast<std::uint64_t>(s.integer("ensemble.chunk_size"));

@@ -27,6 +27,26 @@ void print_statistics(const char* what, std::size_t i, const texture::HeightStat
   if (surface) std::printf(" %14.5g", s.correlation_length_y);
   std::printf("\n");
 }
+// Heights or statistics that overflowed: the PSD is too large for double precision. Refused,
+// naming where the PSD comes from, before anything is written.
+void refuse_overflow(const study::Study& s, const char* what, std::size_t i, const texture::HeightStatistics& st,
+                     const double* z, std::size_t n) {
+  bool finite = std::isfinite(st.rms) && (st.rms == 0.0 || (std::isfinite(st.skewness) && std::isfinite(st.kurtosis)));
+  for (std::size_t k = 0; k < n && finite; ++k) finite = std::isfinite(z[k]);
+  if (finite) return;
+  const std::string source = s.text("texture.source");
+  std::string where = s.where("texture.source");
+  if (source == "table") where = s.path("texture.table") + " (" + where + ")";
+  if (source == "profiles") where = s.where("texture.profiles");
+  char buf[160];
+  std::snprintf(buf, sizeof buf, ": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)", what,
+                i, st.rms, st.skewness, st.kurtosis);
+  const std::string m = where + buf +
+                        ": the PSD's heights overflow double precision; allowed: a PSD whose heights and their fourth "
+                        "powers stay finite (rms height well below 1e50 m)";
+  if (source == "table" || source == "profiles") throw data_error(m);
+  throw config_error(m);
+}
 }  // namespace
 
 int texture_command(const Args& args) {
@@ -93,6 +113,7 @@ int texture_command(const Args& args) {
       rng::PhiloxStream(seed, r, rng::Stream::roughness_amplitude).uniform_open(ua.data(), nh);
       lines->generate(up.data(), ua.data(), all.data() + r * n);
       const auto st = texture::line_statistics(all.data() + r * n, n, ls.spacing);
+      refuse_overflow(s, "line", r, st, all.data() + r * n, n);
       print_statistics("line", r, st, false);
       mean.rms += st.rms / static_cast<double>(n_lines);
       mean.skewness += st.skewness / static_cast<double>(n_lines);
@@ -126,6 +147,7 @@ int texture_command(const Args& args) {
       surfaces.generate(seed, r, surf);
       heights.insert(heights.end(), surf.heights.begin(), surf.heights.end());
       const auto st = texture::surface_statistics(surf);
+      refuse_overflow(s, "surface", r, st, surf.heights.data(), surf.heights.size());
       print_statistics("surface", r, st, true);
       mean.rms += st.rms / static_cast<double>(n_surf);
       mean.skewness += st.skewness / static_cast<double>(n_surf);

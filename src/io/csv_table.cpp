@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -35,6 +36,9 @@ std::size_t CsvTable::column_index(const std::string& name) const {
 }
 
 CsvTable read_csv(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw missing_input("cannot read '" + path + "': it is a directory; expected a CSV file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open '" + path + "'");
   CsvTable t;
@@ -43,8 +47,15 @@ CsvTable read_csv(const std::string& path) {
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
-    if (line.find('\0') != std::string::npos)
-      throw data_error(path + ":" + std::to_string(n) + ": binary data; expected CSV text");
+    // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
+    if (n == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
+    // Control characters other than tab and carriage return mean binary data, not text.
+    for (const char ch : line) {
+      const auto u = static_cast<unsigned char>(ch);
+      if ((u < 0x20 && ch != '\t' && ch != '\r') || u == 0x7f)
+        throw data_error(path + ":" + std::to_string(n) + ": binary data (byte " + std::to_string(u) +
+                         "); expected CSV text");
+    }
     const std::string s = trim(line);
     if (s.empty() || s[0] == '#') continue;
     const auto cells = split(s);
@@ -57,6 +68,11 @@ CsvTable read_csv(const std::string& path) {
                            c + "'");
         if (c.empty()) throw data_error(path + ":" + std::to_string(n) + ": empty column name in the header");
       }
+      for (std::size_t i = 0; i < cells.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (cells[i] == cells[j])
+            throw data_error(path + ":" + std::to_string(n) + ": column '" + cells[i] + "' appears twice in the header (columns " +
+                             std::to_string(j + 1) + " and " + std::to_string(i + 1) + "); each column name may appear once");
       t.columns = cells;
       t.values.assign(cells.size(), {});
       continue;

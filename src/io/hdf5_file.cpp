@@ -25,6 +25,14 @@ void close_id(hid_t id) {
   }
 }
 
+// Opens an attribute and returns its number of elements (1 for a scalar); -1 if it cannot be read.
+hssize_t attribute_elements(hid_t file, const std::string& object, const std::string& name, Hdf5Handle& attr) {
+  attr = Hdf5Handle(H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+  if (!attr.valid()) return -1;
+  const Hdf5Handle space(H5Aget_space(attr.get()));
+  return space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+}
+
 Hdf5Handle open_object(hid_t file, const std::string& path) {
   Hdf5Handle h(H5Oopen(file, path.c_str(), H5P_DEFAULT));
   return h;
@@ -133,6 +141,8 @@ void Hdf5Writer::commit() {
 Hdf5Reader::Hdf5Reader(const std::string& path) : path_(path) {
   quiet_hdf5_errors();
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw missing_input("cannot read '" + path + "': it is a directory; expected an HDF5 file");
   if (!std::filesystem::is_regular_file(path, ec)) throw missing_input("cannot open '" + path + "': no such file");
   if (H5Fis_hdf5(path.c_str()) <= 0) throw data_error(path + ": not an HDF5 file (or truncated)");
   file_ = Hdf5Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
@@ -173,13 +183,34 @@ bool Hdf5Reader::has_attribute(const std::string& object, const std::string& nam
 
 std::string Hdf5Reader::string_attribute(const std::string& object, const std::string& name) const {
   if (!has_attribute(object, name)) throw data_error(path_ + ": missing attribute " + object + "@" + name);
-  hsize_t d = 0;
-  H5T_class_t cls;
-  std::size_t size = 0;
-  if (H5LTget_attribute_info(file_.get(), object.c_str(), name.c_str(), &d, &cls, &size) < 0 || cls != H5T_STRING)
+  // Read through the attribute's own type: fixed-length (as rollspec writes) or variable-length
+  // strings (as h5py writes), and exactly one of them (an array would overrun the buffer).
+  Hdf5Handle attr;
+  const hssize_t n = attribute_elements(file_.get(), object, name, attr);
+  if (n < 0) throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
+  const Hdf5Handle ftype(H5Aget_type(attr.get()));
+  if (!ftype.valid() || H5Tget_class(ftype.get()) != H5T_STRING)
     throw data_error(path_ + ": attribute " + object + "@" + name + " is not text");
-  std::string s(size + 1, '\0');
-  if (H5LTget_attribute_string(file_.get(), object.c_str(), name.c_str(), s.data()) < 0)
+  if (n != 1)
+    throw data_error(path_ + ": attribute " + object + "@" + name + " holds " + std::to_string(n) +
+                     " strings; expected one");
+  Hdf5Handle mtype(H5Tcopy(H5T_C_S1));
+  H5Tset_cset(mtype.get(), H5Tget_cset(ftype.get()));
+  std::string s;
+  if (H5Tis_variable_str(ftype.get()) > 0) {
+    H5Tset_size(mtype.get(), H5T_VARIABLE);
+    char* p = nullptr;
+    if (H5Aread(attr.get(), mtype.get(), &p) < 0)
+      throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
+    if (p) s = p;
+    H5free_memory(p);
+    return s;
+  }
+  const std::size_t size = H5Tget_size(ftype.get());
+  H5Tset_size(mtype.get(), size + 1);
+  H5Tset_strpad(mtype.get(), H5T_STR_NULLTERM);
+  s.assign(size + 1, '\0');
+  if (H5Aread(attr.get(), mtype.get(), s.data()) < 0)
     throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
   s.resize(s.find('\0'));
   return s;
@@ -187,9 +218,13 @@ std::string Hdf5Reader::string_attribute(const std::string& object, const std::s
 
 double Hdf5Reader::double_attribute(const std::string& object, const std::string& name) const {
   if (!has_attribute(object, name)) throw data_error(path_ + ": missing attribute " + object + "@" + name);
+  Hdf5Handle attr;
+  const hssize_t n = attribute_elements(file_.get(), object, name, attr);
+  const Hdf5Handle ftype(attr.valid() ? H5Aget_type(attr.get()) : -1);
+  if (n != 1 || !ftype.valid() || (H5Tget_class(ftype.get()) != H5T_FLOAT && H5Tget_class(ftype.get()) != H5T_INTEGER))
+    throw data_error(path_ + ": attribute " + object + "@" + name + " is not one number");
   double v = 0.0;
-  if (H5LTget_attribute_double(file_.get(), object.c_str(), name.c_str(), &v) < 0)
-    throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
+  if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0) throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
   return v;
 }
 

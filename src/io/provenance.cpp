@@ -43,8 +43,8 @@ void check_filetype(const Hdf5Reader& r, const std::string& filetype, int schema
   const std::string v = r.string_attribute("/", "schema_version");
   const int major = std::atoi(v.c_str());
   if (major != schema_major)
-    throw data_error(r.path() + ": schema_version " + v + " is not readable by this rollspec (reads major version " +
-                     std::to_string(schema_major) + ")");
+    throw data_error(r.path() + ": schema_version '" + v + "' is not readable by this rollspec (reads major version " +
+                     std::to_string(schema_major) + "; allowed: " + std::to_string(schema_major) + ".x)");
 }
 
 }  // namespace rollspec::io

@@ -1,6 +1,7 @@
 #include "src/scenes/ball_on_beam.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -23,6 +24,8 @@
 #include "src/io/psd_result.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/study.hpp"
+#include "src/stiffness/stiffness_keys.hpp"
+#include "src/stiffness/stiffness_table.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -73,8 +76,10 @@ std::vector<KeySpec> ball_on_beam_keys() {
       real_key("ball", "start", "m", "ball position where the record starts", std::string("0.05"), 0.0, inf),
       real_key("ball", "end", "m", "ball position where the record ends", std::string("0.35"), 0.0, inf),
       real_key("ball", "gravity", "m/s^2", "gravitational acceleration", std::string("9.81"), 0.0, inf),
-      choice_key("contact", "law", "contact law: hertz (D-10) or linearised blocked force (D-11)", std::string("hertz"),
-                 {"hertz", "linearised"}),
+      choice_key("contact", "law",
+                 "contact law: hertz (D-10), table (rough-surface P(delta) from the stiffness stage, D-10), literal "
+                 "(seed 001 Eq. 7: k_c(delta) delta from the same table) or linearised blocked force (D-11)",
+                 std::string("hertz"), {"hertz", "table", "literal", "linearised"}),
       real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"), 0.0, inf),
       choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
                  std::string("damping_only"), {"damping_only", "zero"}),
@@ -104,6 +109,8 @@ std::vector<KeySpec> ball_on_beam_keys() {
       integer_key("output", "time_histories", "store time histories of realisations 0..n-1", std::string("0"), 0, 1000),
   };
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
+  for (auto& t : texture_io::surface_keys()) k.push_back(t);
+  for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
   return k;
 }
 
@@ -168,8 +175,14 @@ class BallOnBeam final : public Scene {
     if (model_.traverse.x_end > l) s.refuse("ball.end", "lies beyond the span [0, length]");
     // Contact.
     beam::ContactLaw& law = model_.contact;
-    linearised_ = s.text("contact.law") == "linearised";
-    law.kind = linearised_ ? beam::ContactLawKind::linearised : beam::ContactLawKind::hertz;
+    const std::string law_name = s.text("contact.law");
+    law_name_ = law_name;
+    linearised_ = law_name == "linearised";
+    uses_table_ = law_name == "table" || law_name == "literal";
+    law.kind = linearised_ ? beam::ContactLawKind::linearised
+               : law_name == "table" ? beam::ContactLawKind::table
+               : law_name == "literal" ? beam::ContactLawKind::literal_stiffness
+                                       : beam::ContactLawKind::hertz;
     law.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
                                                        s.real("beam.youngs_modulus"), s.real("beam.poisson"));
     law.radius = radius;
@@ -196,12 +209,14 @@ class BallOnBeam final : public Scene {
     } catch (const std::exception& e) {
       throw config_error(s.where("roughness.spacing") + ": " + e.what());
     }
-    // Integrator.
-    const auto substeps = static_cast<int>(s.integer("signal.substeps"));
-    beam::ExactStepOptions eo;
-    eo.substeps = substeps;
-    eo.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
-    integrator_ = std::make_unique<beam::ExactStepIntegrator>(model_, eo);
+    // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
+    step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
+    step_options_.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
+    if (uses_table_) {
+      study_ = &s;
+      table_spec_ = stiffness::table_spec(s, radius, law.effective_modulus);
+      table_path_ = stiffness::table_path(s, table_spec_);
+    }
     samples_ = beam::output_samples(model_);
     skip_ = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * model_.sample_rate));
     if (skip_ >= samples_) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(samples_) + " samples)");
@@ -219,12 +234,44 @@ class BallOnBeam final : public Scene {
       workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
   }
 
+  void prepare(bool quiet, bool rebuild) override {
+    if (uses_table_) {
+      std::string status;
+      const auto t = stiffness::resolve_table(*study_, model_.contact.radius, model_.contact.effective_modulus, rebuild,
+                                              quiet, status);
+      if (!quiet) std::fprintf(stderr, "stiffness table: %s\n", status.c_str());
+      model_.contact.compression = t.approach;
+      if (model_.contact.kind == beam::ContactLawKind::table) {
+        model_.contact.values = t.force_mean;
+      } else {  // seed 001 Eq. 7 literally: k_c(delta) from the table's stiffness, F = k_c(delta) delta
+        model_.contact.values = t.stiffness_mean;
+        model_.contact.values[0] = t.stiffness_mean[1];
+      }
+      static_compression_ = t.approach_at(model_.ball.mass * model_.ball.gravity);
+      if (!(static_compression_ > 0.0))
+        study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
+                                                     " N does not reach the ball's weight; raise approach_max");
+    }
+    integrator_ = std::make_unique<beam::ExactStepIntegrator>(model_, step_options_);
+  }
+
   std::vector<StagePlan> plan() const override {
+    std::string why;
+    const auto state = uses_table_ ? stiffness::inspect_table(table_path_, table_spec_, why) : stiffness::TableState::missing;
+    const StagePlan table_stage =
+        !uses_table_ ? StagePlan{"stiffness_table", StageStatus::skipped,
+                                 linearised_ ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"}
+        : state == stiffness::TableState::valid
+            ? StagePlan{"stiffness_table", StageStatus::cached, table_path_ + " (input hash " + table_spec_.hash + ")"}
+        : state == stiffness::TableState::missing
+            ? StagePlan{"stiffness_table", StageStatus::run, "no table with input hash " + table_spec_.hash + " at " + table_path_}
+            : StagePlan{"stiffness_table", StageStatus::run, "REFUSED unless --rebuild: " + why};
     return {
         {"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + psd_.description + ")"},
-        {"surface", StageStatus::skipped, "the point-contact laws need no isotropic surface"},
-        {"stiffness_table", StageStatus::skipped,
-         linearised_ ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"},
+        {"surface", uses_table_ && state != stiffness::TableState::valid ? StageStatus::run : StageStatus::skipped,
+         uses_table_ ? (state == stiffness::TableState::valid ? "inside the cached stiffness table" : "isotropic surfaces for the stiffness table")
+                     : "the point-contact laws need no isotropic surface"},
+        table_stage,
         {"blocked_force", linearised_ ? StageStatus::run : StageStatus::skipped,
          linearised_ ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)" : "only the linearised law uses F0"},
         {"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step, implicit contact (D-9, D-10)"},
@@ -319,7 +366,7 @@ class BallOnBeam final : public Scene {
     const double share = mean_of((nr + 2) * nf), share_std = std_of((nr + 2) * nf);
     w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
     w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
-    w.attribute("/contact", "law", linearised_ ? std::string("linearised") : std::string("hertz"));
+    w.attribute("/contact", "law", law_name_);
     w.attribute("/contact", "static_compression", static_compression_);
     w.attribute("/contact", "patch_half_width", patch_half_width_);
     w.attribute("/contact", "effective_modulus", model_.contact.effective_modulus);
@@ -423,7 +470,12 @@ class BallOnBeam final : public Scene {
   bool average_, dopri_;
   double rtol_, confidence_, band_min_, band_max_;
   std::size_t time_histories_;
-  bool linearised_ = false;
+  bool linearised_ = false, uses_table_ = false;
+  std::string law_name_;
+  beam::ExactStepOptions step_options_;
+  const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene
+  stiffness::TableSpec table_spec_;
+  std::string table_path_;
   double static_compression_ = 0.0, patch_half_width_ = 0.0, dx_ = 0.0;
   std::unique_ptr<texture::LineTextureGenerator> lines_;
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;

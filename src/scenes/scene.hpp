@@ -34,7 +34,8 @@ class Scene {
   virtual ~Scene() = default;
   virtual std::vector<StagePlan> plan() const = 0;
   // Builds or loads what the realisations share (tables, plans); runs once before the ensemble.
-  virtual void prepare(bool /*quiet*/) {}
+  // `rebuild` replaces cached tables whose inputs no longer match instead of refusing them.
+  virtual void prepare(bool /*quiet*/, bool /*rebuild*/) {}
   virtual std::size_t values_per_realisation() const = 0;
   // Thread-safe for distinct `thread` indices in [0, ensemble_threads()).
   virtual void run_realisation(std::uint64_t id, int thread, double* values) const = 0;

@@ -122,6 +122,8 @@ std::string check_value(const KeySpec& spec, const std::string& value, const Ori
       if (value == "none") return value;
       const fs::path p = fs::path(value).is_absolute() ? fs::path(value) : fs::path(directory) / value;
       std::error_code ec;
+      if (fs::is_directory(p, ec))
+        throw missing_input(head + "is a directory, not a file (looked for " + p.string() + ")" + allowed);
       if (!fs::is_regular_file(p, ec))
         throw missing_input(head + "no such file (looked for " + p.string() + ")" + allowed);
       return value;
@@ -174,11 +176,16 @@ std::string Origin::describe() const {
 }
 
 Study Study::load(const std::string& path, const std::vector<std::string>& overrides, const SchemaLookup& schema) {
+  std::error_code dir_ec;
+  if (fs::is_directory(path, dir_ec))
+    throw missing_input("cannot read study file '" + path + "': it is a directory; expected an INI file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open study file '" + path + "'");
   std::ostringstream buf;
   buf << in.rdbuf();
-  const std::string text = buf.str();
+  std::string text = buf.str();
+  // A UTF-8 byte-order mark (editors on Windows) is not part of the first section header.
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   if (text.empty()) throw config_error(path + ": the study file is empty; it needs at least [study] scene, realisations and seed");
 
   std::vector<RawEntry> lines = scan_lines(path, text);

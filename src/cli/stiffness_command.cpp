@@ -1,0 +1,64 @@
+// rollspec stiffness: build (or reuse) a study's contact stiffness table and print it.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "src/cli/commands.hpp"
+#include "src/cli/parse_options.hpp"
+#include "src/ensemble/stop_signal.hpp"
+#include "src/error.hpp"
+#include "src/scenes/scene.hpp"
+#include "src/scenes/stiffness_scene.hpp"
+#include "src/stiffness/stiffness_table.hpp"
+#include "src/study/study.hpp"
+
+namespace rollspec::cli {
+
+int stiffness_command(const Args& args) {
+  const std::string usage =
+      "usage: rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild] [--quiet] [--set section.key=value ...]\n"
+      "\n"
+      "Builds the contact stiffness table of a `stiffness` or `ball-on-beam` study: force P(delta), stiffness\n"
+      "k = dP/d delta and contact area against the approach from first contact, mean and standard deviation over\n"
+      "rough-surface realisations (elastic-plastic half-space, FFT-accelerated). A table whose input hash\n"
+      "matches is reused; one whose inputs differ, or a damaged file, is refused unless --rebuild.\n"
+      "Prints the table and the stiffness at the ball's own weight next to the smooth Hertz value 2 E* a.";
+  po::options_description opts("options");
+  std::string study_file, out;
+  std::vector<std::string> sets;
+  opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
+      "out,o", po::value(&out), "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
+      "rebuild", "replace a table whose inputs differ or that is damaged")("quiet,q", "no progress output")(
+      "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)");
+  po::positional_options_description pos;
+  pos.add("study", 1);
+  po::variables_map vm;
+  if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  if (!out.empty()) sets.push_back("stiffness.table=" + std::filesystem::absolute(out).string());
+  const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
+  if (s.scene() != "stiffness" && s.scene() != "ball-on-beam")
+    s.refuse("study.scene", "rollspec stiffness needs a stiffness or ball-on-beam study");
+  const auto pair = scenes::study_contact_pair(s);
+  ensemble::install_stop_handlers();
+  std::string status;
+  const auto t = stiffness::resolve_table(s, pair.radius, pair.effective_modulus, vm.count("rebuild") > 0,
+                                          vm.count("quiet") > 0, status);
+  std::printf("# stiffness table: %s\n# input hash %s, %lld realisation(s), ball radius %g m, E* %.6g Pa, H %g Pa\n",
+              status.c_str(), t.input_hash.c_str(), static_cast<long long>(t.realisations), t.ball_radius,
+              t.effective_modulus, t.hardness);
+  std::printf("%14s %14s %12s %14s %14s %12s %10s\n", "approach_m", "force_N", "force_std_N", "stiffness_N/m",
+              "area_m2", "plastic", "iter");
+  for (std::size_t j = 0; j < t.approach.size(); ++j)
+    std::printf("%14.6g %14.6g %12.4g %14.6g %14.6g %12.4g %10.1f\n", t.approach[j], t.force_mean[j], t.force_std[j],
+                t.stiffness_mean[j], t.contact_area_mean[j], t.plastic_cells_mean[j], t.iterations_mean[j]);
+  std::printf("fit: P = %.6g * delta^%.4f (max relative error %.3g)\n", t.fit_coefficient, t.fit_exponent,
+              t.fit_max_relative_error);
+  const double w = pair.weight;
+  const double delta_h = std::pow(3.0 * w / (4.0 * t.effective_modulus * std::sqrt(t.ball_radius)), 2.0 / 3.0);
+  const double k_h = 2.0 * t.effective_modulus * std::sqrt(t.ball_radius * delta_h);
+  std::printf("at the ball's weight W = %.6g N: approach %.6g m, k = %.6g N/m (smooth Hertz: approach %.6g m, k = %.6g N/m)\n",
+              w, t.approach_at(w), t.stiffness_at(w), delta_h, k_h);
+  return 0;
+}
+
+}  // namespace rollspec::cli

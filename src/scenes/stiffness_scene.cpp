@@ -1,0 +1,83 @@
+#include "src/scenes/stiffness_scene.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "kernels/contact/geometry.hpp"
+#include "src/error.hpp"
+#include "src/stiffness/stiffness_keys.hpp"
+#include "src/stiffness/stiffness_table.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+
+std::vector<KeySpec> stiffness_scene_keys() {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<KeySpec> k = {
+      real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
+      real_key("ball", "density", "kg/m^3", "ball density (weight = 4/3 pi R^3 rho g)", std::string("7850"), 0.0, inf, false),
+      real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
+      real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
+      real_key("ball", "gravity", "m/s^2", "gravitational acceleration (for the ball's weight)", std::string("9.81"), 0.0, inf),
+      real_key("flat", "youngs_modulus", "Pa", "flat's Young's modulus", std::string("210e9"), 0.0, inf, false),
+      real_key("flat", "poisson", "-", "flat's Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
+  };
+  for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
+  for (auto& t : texture_io::surface_keys()) k.push_back(t);
+  for (auto& t : texture_io::psd_keys()) k.push_back(t);
+  return k;
+}
+
+ContactPair study_contact_pair(const Study& s) {
+  const std::string other = s.scene() == "stiffness" ? "flat" : "beam";
+  ContactPair p{};
+  p.radius = s.real("ball.radius");
+  p.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
+                                                   s.real(other + ".youngs_modulus"), s.real(other + ".poisson"));
+  p.weight = 4.0 / 3.0 * M_PI * std::pow(p.radius, 3) * s.real("ball.density") * s.real("ball.gravity");
+  return p;
+}
+
+namespace {
+class StiffnessScene final : public Scene {
+ public:
+  explicit StiffnessScene(const Study& s) : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
+    spec_ = stiffness::table_spec(s, pair_.radius, pair_.effective_modulus);
+    path_ = stiffness::table_path(s, spec_);
+    if (s.text("stiffness.surface") == "rough") texture_io::study_psd(s);  // validates the PSD source now
+  }
+  std::vector<StagePlan> plan() const override {
+    std::string why;
+    const auto state = stiffness::inspect_table(path_, spec_, why);
+    const bool valid = state == stiffness::TableState::valid;
+    return {
+        {"surface", valid || !rough_ ? StageStatus::skipped : StageStatus::run,
+         !rough_ ? "smooth flat ([stiffness] surface = smooth)"
+         : valid ? "inside the cached table" : "isotropic surfaces ([surface], [texture]) per table realisation"},
+        {"stiffness_table", valid ? StageStatus::cached : StageStatus::run,
+         valid ? path_ + " (input hash " + spec_.hash + ")"
+               : state == stiffness::TableState::missing ? "no table with input hash " + spec_.hash + " at " + path_
+                                                         : "REFUSED unless --rebuild: " + why},
+        {"dynamics", StageStatus::skipped, "the scene has no dynamics"},
+        {"spectra", StageStatus::skipped, "the scene has no sensors"},
+    };
+  }
+  std::size_t values_per_realisation() const override { return 0; }
+  void run_realisation(std::uint64_t, int, double*) const override {}
+  void write_results(io::Hdf5Writer&, const ensemble::EnsembleSums&) const override {}
+  bool runs_ensemble() const override { return false; }
+
+ private:
+  ContactPair pair_;
+  bool rough_;
+  stiffness::TableSpec spec_;
+  std::string path_;
+};
+}  // namespace
+
+std::unique_ptr<Scene> make_stiffness_scene(const Study& s) { return std::make_unique<StiffnessScene>(s); }
+
+}  // namespace rollspec::scenes

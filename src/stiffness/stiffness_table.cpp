@@ -1,0 +1,348 @@
+#include "src/stiffness/stiffness_table.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "kernels/contact/geometry.hpp"
+#include "kernels/contact/sweep.hpp"
+#include "kernels/contact/version.hpp"
+#include "src/ensemble/checkpoint.hpp"
+#include "src/ensemble/progress.hpp"
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/io/provenance.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rollspec::stiffness {
+
+namespace {
+
+std::string hex16(std::uint64_t h) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+double hardness_of(const study::Study& s) {
+  const double h = s.real("stiffness.hardness");
+  return h > 0.0 ? h : std::numeric_limits<double>::infinity();
+}
+
+bool rough(const study::Study& s) { return s.text("stiffness.surface") == "rough"; }
+
+// Datasets in checksum order.
+const char* kDatasets[] = {"approach", "force_mean", "force_std", "stiffness_mean", "stiffness_std", "contact_area_mean",
+                           "plastic_cells_mean", "max_pressure_mean", "iterations_mean"};
+
+std::vector<const std::vector<double>*> columns(const StiffnessTable& t) {
+  return {&t.approach, &t.force_mean, &t.force_std, &t.stiffness_mean, &t.stiffness_std, &t.contact_area_mean,
+          &t.plastic_cells_mean, &t.max_pressure_mean, &t.iterations_mean};
+}
+
+std::string checksum(const StiffnessTable& t) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (const auto* c : columns(t)) h = ensemble::fnv1a64(c->data(), c->size() * sizeof(double), h);
+  return hex16(h);
+}
+
+std::map<std::string, std::string> parse_lines(const std::string& text) {
+  std::map<std::string, std::string> out;
+  std::istringstream in(text);
+  std::string line, section;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line[0] == '[') section = line;
+    const auto eq = line.find(" = ");
+    if (eq != std::string::npos) out[section + " " + line.substr(0, eq)] = line.substr(eq + 3);
+  }
+  return out;
+}
+
+std::string differences(const std::string& stored, const std::string& wanted) {
+  const auto a = parse_lines(stored), b = parse_lines(wanted);
+  std::string out;
+  for (const auto& [k, v] : b) {
+    const auto it = a.find(k);
+    if (it == a.end()) out += "\n  " + k + ": not in the table, study has " + v;
+    else if (it->second != v) out += "\n  " + k + ": table has " + it->second + ", study has " + v;
+  }
+  for (const auto& [k, v] : a)
+    if (!b.count(k)) out += "\n  " + k + ": table has " + v + ", the study does not";
+  return out.empty() ? " (no key differs; the stored hash is inconsistent)" : out;
+}
+
+}  // namespace
+
+double StiffnessTable::approach_at(double load) const {
+  for (std::size_t j = 1; j < approach.size(); ++j)
+    if (force_mean[j] >= load) {
+      const double f = (load - force_mean[j - 1]) / (force_mean[j] - force_mean[j - 1]);
+      return approach[j - 1] + f * (approach[j] - approach[j - 1]);
+    }
+  return std::nan("");
+}
+
+double StiffnessTable::stiffness_at(double load) const {
+  const double d = approach_at(load);
+  for (std::size_t j = 1; j < approach.size(); ++j)
+    if (approach[j] >= d) {
+      const double f = (d - approach[j - 1]) / (approach[j] - approach[j - 1]);
+      return stiffness_mean[j - 1] + f * (stiffness_mean[j] - stiffness_mean[j - 1]);
+    }
+  return std::nan("");
+}
+
+TableSpec table_spec(const study::Study& s, double ball_radius, double effective_modulus) {
+  std::ostringstream in;
+  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
+     << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << s.text("stiffness.shape") << "\n\n[stiffness]\n";
+  for (const char* k : {"surface", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
+    in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
+  in << "realisations = " << (rough(s) ? s.text("stiffness.realisations") : "1") << "\nseed = " << s.text("study.seed") << "\n";
+  in << "\n[surface]\n";
+  for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
+    in << k << " = " << s.text(std::string("surface.") + k) << "\n";
+  if (rough(s)) {
+    in << "\n[texture]\n";
+    for (const auto& k : texture_io::psd_keys())
+      if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
+    in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+  }
+  TableSpec spec;
+  spec.inputs = in.str();
+  spec.hash = hex16(ensemble::fnv1a64(spec.inputs));
+  return spec;
+}
+
+std::string table_path(const study::Study& s, const TableSpec& spec) {
+  const fs::path dir = fs::path(s.file()).parent_path();
+  const std::string t = s.text("stiffness.table");
+  if (t != "auto") return (fs::path(t).is_absolute() ? fs::path(t) : dir / t).string();
+  return (dir / s.text("stiffness.table_dir") / ("stiffness-" + spec.hash + ".h5")).string();
+}
+
+StiffnessTable read_table(const std::string& path) {
+  const io::Hdf5Reader r(path);
+  io::check_filetype(r, kTableFileType, kTableSchemaMajor);
+  StiffnessTable t;
+  std::vector<std::vector<double>*> cols = {&t.approach, &t.force_mean, &t.force_std, &t.stiffness_mean,
+                                            &t.stiffness_std, &t.contact_area_mean, &t.plastic_cells_mean,
+                                            &t.max_pressure_mean, &t.iterations_mean};
+  for (std::size_t i = 0; i < cols.size(); ++i) *cols[i] = r.read(std::string("/stiffness/") + kDatasets[i]);
+  for (const auto* c : cols)
+    if (c->size() != t.approach.size() || c->size() < 2) throw data_error(path + ": table columns have different lengths");
+  t.ball_radius = r.double_attribute("/stiffness", "ball_radius");
+  t.effective_modulus = r.double_attribute("/stiffness", "effective_modulus");
+  t.hardness = r.double_attribute("/stiffness", "hardness");
+  t.tolerance = r.double_attribute("/stiffness", "solver_tolerance");
+  t.fit_coefficient = r.double_attribute("/stiffness/fit", "coefficient");
+  t.fit_exponent = r.double_attribute("/stiffness/fit", "exponent");
+  t.fit_max_relative_error = r.double_attribute("/stiffness/fit", "max_relative_error");
+  t.realisations = static_cast<std::int64_t>(r.double_attribute("/stiffness", "realisations"));
+  t.inputs = r.string_attribute("/stiffness", "inputs");
+  t.input_hash = r.string_attribute("/stiffness", "input_hash");
+  const double kv = r.double_attribute("/stiffness", "kernel_version");
+  if (static_cast<int>(kv) != contact::kernel_version)
+    throw data_error(path + ": built by contact kernel version " + num(kv) + ", this rollspec has version " +
+                     std::to_string(contact::kernel_version) + "; rebuild with --rebuild");
+  if (r.string_attribute("/stiffness", "data_checksum") != checksum(t))
+    throw data_error(path + ": the table's data do not match its checksum (damaged or edited file); rebuild with --rebuild");
+  return t;
+}
+
+TableState inspect_table(const std::string& path, const TableSpec& spec, std::string& why) {
+  if (!fs::exists(path)) return TableState::missing;
+  try {
+    const StiffnessTable t = read_table(path);
+    if (t.input_hash != spec.hash) {
+      why = path + ": table inputs differ from the study's (hash " + t.input_hash + " vs " + spec.hash + "):" +
+            differences(t.inputs, spec.inputs);
+      return TableState::mismatched;
+    }
+    if (t.inputs != spec.inputs) {
+      why = path + ": table hash matches but its inputs differ:" + differences(t.inputs, spec.inputs);
+      return TableState::mismatched;
+    }
+    return TableState::valid;
+  } catch (const UserError& e) {
+    why = e.what();
+    return TableState::mismatched;
+  }
+}
+
+StiffnessTable build_table(const study::Study& s, double ball_radius, double effective_modulus, const TableSpec& spec,
+                           bool quiet) {
+  contact::Grid grid;
+  grid.nx = static_cast<std::size_t>(s.integer("surface.nx"));
+  grid.ny = static_cast<std::size_t>(s.integer("surface.ny"));
+  grid.dx = grid.dy = s.real("surface.spacing");
+  const bool is_rough = rough(s);
+  const int R = is_rough ? static_cast<int>(s.integer("stiffness.realisations")) : 1;
+  const auto steps = static_cast<std::size_t>(s.integer("stiffness.steps"));
+  const double dmax = s.real("stiffness.approach_max");
+  const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
+  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  contact::SolverOptions opts;
+  opts.hardness = hardness_of(s);
+  opts.tolerance = s.real("stiffness.tolerance");
+  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  std::vector<double> deltas(steps);
+  for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);
+  texture_io::SurfaceGenerator surfaces;
+  if (is_rough) surfaces = texture_io::study_surface_generator(s, texture_io::study_psd(s));
+
+  std::vector<std::vector<contact::ContactResult>> results(static_cast<std::size_t>(R));
+  std::exception_ptr failure;
+  ensemble::Progress progress("stiffness realisations", static_cast<std::uint64_t>(R), quiet);
+#pragma omp parallel
+  {
+    std::unique_ptr<contact::ContactSolver> solver;
+#pragma omp for schedule(dynamic, 1)
+    for (int r = 0; r < R; ++r) {
+      if (failure) continue;
+      try {
+        if (!solver) solver = std::make_unique<contact::ContactSolver>(grid, effective_modulus);
+        texture::Surface surf;
+        if (is_rough) surfaces.generate(seed, static_cast<std::uint64_t>(r), surf);
+        const auto gap = contact::ball_gap(grid, ball_radius, surf.heights, shape);
+        // Rough: from first contact (the highest summit under the ball). Smooth: from the touching
+        // position itself (min gap on the grid is dx^2 / 4R, not 0, when no cell centre is under the ball).
+        const double first = is_rough ? *std::min_element(gap.begin(), gap.end()) : 0.0;
+        std::vector<double> w(steps);
+        for (std::size_t j = 0; j < steps; ++j) w[j] = first + deltas[j];
+        results[static_cast<std::size_t>(r)] = contact::sweep(*solver, gap, w, opts);
+        for (std::size_t j = 0; j < steps; ++j) {
+          const auto& c = results[static_cast<std::size_t>(r)][j];
+          if (!c.converged)
+            throw data_error("stiffness table: the contact solve of realisation " + std::to_string(r) + ", step " +
+                             std::to_string(j + 1) + " (approach " + num(deltas[j]) + " m) did not converge: error " +
+                             num(c.error) + " > tolerance " + num(opts.tolerance) + " after " +
+                             std::to_string(c.iterations) + " iterations; raise [stiffness] max_iterations or tolerance");
+        }
+        progress.advance();
+      } catch (...) {
+#pragma omp critical(rollspec_stiffness_failure)
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  progress.finish();
+
+  // Mean and standard deviation in realisation order: the same bits for any thread count.
+  StiffnessTable t;
+  t.approach.push_back(0.0);
+  for (auto* c : {&t.force_mean, &t.force_std, &t.stiffness_mean, &t.stiffness_std, &t.contact_area_mean,
+                  &t.plastic_cells_mean, &t.max_pressure_mean, &t.iterations_mean})
+    c->push_back(0.0);
+  for (std::size_t j = 0; j < steps; ++j) {
+    double f = 0, f2 = 0, k = 0, k2 = 0, a = 0, pc = 0, pm = 0, it = 0;
+    for (const auto& res : results) {
+      const auto& c = res[j];
+      f += c.force, f2 += c.force * c.force, k += c.stiffness, k2 += c.stiffness * c.stiffness;
+      a += c.contact_area, pc += static_cast<double>(c.plastic_cells), pm += c.max_pressure, it += c.iterations;
+    }
+    const double n = R;
+    auto sd = [n](double s1, double s2) { return n > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / n) / (n - 1))) : 0.0; };
+    t.approach.push_back(deltas[j]);
+    t.force_mean.push_back(f / n), t.force_std.push_back(sd(f, f2));
+    t.stiffness_mean.push_back(k / n), t.stiffness_std.push_back(sd(k, k2));
+    t.contact_area_mean.push_back(a / n), t.plastic_cells_mean.push_back(pc / n);
+    t.max_pressure_mean.push_back(pm / n), t.iterations_mean.push_back(it / n);
+  }
+  // Power-law fit P = c delta^n by least squares in log-log (a smooth monotone summary; the dynamics
+  // interpolate the table itself with a monotone cubic).
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  for (std::size_t j = 1; j < t.approach.size(); ++j)
+    if (t.force_mean[j] > 0) {
+      const double x = std::log(t.approach[j]), y = std::log(t.force_mean[j]);
+      sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
+    }
+  if (m >= 2) {
+    t.fit_exponent = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+    t.fit_coefficient = std::exp((sy - t.fit_exponent * sx) / m);
+    for (std::size_t j = 1; j < t.approach.size(); ++j)
+      if (t.force_mean[j] > 0)
+        t.fit_max_relative_error = std::max(t.fit_max_relative_error,
+            std::abs(t.fit_coefficient * std::pow(t.approach[j], t.fit_exponent) / t.force_mean[j] - 1.0));
+  }
+  t.ball_radius = ball_radius;
+  t.effective_modulus = effective_modulus;
+  t.hardness = opts.hardness;
+  t.realisations = R;
+  t.tolerance = opts.tolerance;
+  t.inputs = spec.inputs;
+  t.input_hash = spec.hash;
+  return t;
+}
+
+void write_table(const std::string& path, const StiffnessTable& t, const std::string& study_text, std::uint64_t seed) {
+  std::error_code ec;
+  fs::create_directories(fs::path(path).parent_path(), ec);
+  io::Hdf5Writer w(path);
+  io::write_provenance(w, kTableFileType, kTableSchemaVersion, study_text, seed);
+  const std::size_t n = t.approach.size();
+  const char* units[] = {"m", "N", "N", "N/m", "N/m", "m^2", "1", "Pa", "1"};
+  const char* what[] = {"approach from first contact", "mean force over realisations", "standard deviation of the force",
+                        "mean frozen-set stiffness dP/d delta", "standard deviation of the stiffness",
+                        "mean real contact area", "mean number of plastic cells (p = H)", "mean of the maximum pressure",
+                        "mean CG iterations of the contact solve"};
+  const auto cols = columns(t);
+  for (std::size_t i = 0; i < cols.size(); ++i)
+    w.write(std::string("/stiffness/") + kDatasets[i], {n}, cols[i]->data(), units[i], what[i]);
+  w.make_scale("/stiffness/approach", "approach");
+  for (std::size_t i = 1; i < cols.size(); ++i) w.attach_scale(std::string("/stiffness/") + kDatasets[i], "/stiffness/approach", 0);
+  w.attribute("/stiffness", "ball_radius", t.ball_radius);
+  w.attribute("/stiffness", "effective_modulus", t.effective_modulus);
+  w.attribute("/stiffness", "hardness", t.hardness);
+  w.attribute("/stiffness", "realisations", static_cast<double>(t.realisations));
+  w.attribute("/stiffness", "solver_tolerance", t.tolerance);
+  w.attribute("/stiffness", "stopping_rule",
+              std::string("max_i C_ii |p_i - clamp(p_i - g_i / C_ii, 0, H)| / max_i (w - s_i) < solver_tolerance"));
+  w.attribute("/stiffness", "schema_version", std::string(kTableSchemaVersion));
+  w.attribute("/stiffness", "kernel_version", static_cast<double>(contact::kernel_version));
+  w.attribute("/stiffness", "inputs", t.inputs);
+  w.attribute("/stiffness", "input_hash", t.input_hash);
+  w.attribute("/stiffness", "data_checksum", checksum(t));
+  const double fit[] = {t.fit_coefficient, t.fit_exponent, t.fit_max_relative_error};
+  w.write("/stiffness/fit/parameters", {3}, fit, "1", "P = coefficient * approach^exponent (SI), and its max relative error");
+  w.attribute("/stiffness/fit", "form", std::string("P = coefficient * approach^exponent"));
+  w.attribute("/stiffness/fit", "coefficient", t.fit_coefficient);
+  w.attribute("/stiffness/fit", "exponent", t.fit_exponent);
+  w.attribute("/stiffness/fit", "max_relative_error", t.fit_max_relative_error);
+  w.commit();
+}
+
+StiffnessTable resolve_table(const study::Study& s, double ball_radius, double effective_modulus, bool rebuild, bool quiet,
+                             std::string& status) {
+  const TableSpec spec = table_spec(s, ball_radius, effective_modulus);
+  const std::string path = table_path(s, spec);
+  std::string why;
+  const TableState state = inspect_table(path, spec, why);
+  if (state == TableState::valid && !rebuild) {
+    status = "cached " + path;
+    return read_table(path);
+  }
+  if (state == TableState::mismatched && !rebuild) throw data_error(why + "\nrun with --rebuild to replace it");
+  StiffnessTable t = build_table(s, ball_radius, effective_modulus, spec, quiet);
+  write_table(path, t, s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
+  status = "built " + path;
+  return t;
+}
+
+}  // namespace rollspec::stiffness

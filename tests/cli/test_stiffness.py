@@ -1,0 +1,123 @@
+"""rollspec stiffness: the Hertz check through the whole stage, table reuse by input hash, refusal of
+changed inputs and damaged files, rough tables, and the table law in the ball-on-beam scene."""
+import re
+import shutil
+
+import h5py
+import numpy as np
+
+from conftest import EX_DATAERR, SOURCE, assert_bitwise_equal, run
+
+
+def copy_study(tmp_path, name):
+    dst = tmp_path / name
+    shutil.copy(SOURCE / "studies" / name, dst)
+    return dst
+
+
+def weight_line(stdout):
+    line = next(l for l in stdout.splitlines() if l.startswith("at the ball's weight"))
+    nums = [float(x) for x in re.findall(r"[-+]?\d+\.?\d*(?:e[-+]?\d+)?", line)]
+    # W, approach, k, Hertz approach, Hertz k
+    return dict(zip(("weight", "approach", "k", "hertz_approach", "hertz_k"), nums))
+
+
+def test_hertz_table_reuse_and_refusal(tmp_path):
+    study = copy_study(tmp_path, "hertz.ini")
+    r = run(["stiffness", study, "--quiet"])
+    assert r.returncode == 0, r.stderr
+    assert "built" in r.stdout
+    w = weight_line(r.stdout)
+    assert abs(w["k"] / w["hertz_k"] - 1) < 1e-3 and abs(w["approach"] / w["hertz_approach"] - 1) < 1e-3
+    tables = list((tmp_path / "tables").glob("stiffness-*.h5"))
+    assert len(tables) == 1
+    with h5py.File(tables[0]) as f:
+        s = f["/stiffness"]
+        for a in ("ball_radius", "effective_modulus", "hardness", "schema_version", "kernel_version", "inputs",
+                  "input_hash", "data_checksum"):
+            assert a in s.attrs
+        assert s.attrs["input_hash"].decode() in tables[0].name if isinstance(s.attrs["input_hash"], bytes) else True
+        d, p = s["approach"][:], s["force_mean"][:]
+        estar, rad = s.attrs["effective_modulus"], s.attrs["ball_radius"]
+        # Where the contact radius spans >= 16 cells (a = sqrt(R delta), 2.17 um cells) the discrete
+        # solution is within 1e-3 of Hertz; the kernel tests show the error falling with refinement.
+        sel = np.sqrt(rad * d) >= 16 * 2.17e-6
+        hertz = 4 / 3 * estar * np.sqrt(rad) * d[sel] ** 1.5
+        assert sel.sum() >= 10 and np.abs(p[sel] / hertz - 1).max() < 1e-3
+        for name in ("force_mean", "stiffness_mean", "contact_area_mean"):
+            assert "units" in s[name].attrs
+    # Unchanged inputs: reused, and plan says so.
+    r = run(["stiffness", study, "--quiet"])
+    assert r.returncode == 0 and "cached" in r.stdout
+    plan = run(["plan", study]).stdout
+    assert re.search(r"^stiffness_table\s+cached", plan, re.M)
+    # A changed input with the same table file is refused, naming what differs; --rebuild replaces it.
+    r = run(["stiffness", study, "--out", tables[0], "--quiet", "--set", "ball.radius=0.021"])
+    assert r.returncode == EX_DATAERR
+    assert "radius: table has 0.02" in r.stderr and "0.021" in r.stderr and "--rebuild" in r.stderr
+    r = run(["stiffness", study, "--out", tables[0], "--quiet", "--set", "ball.radius=0.021", "--rebuild"])
+    assert r.returncode == 0 and "built" in r.stdout
+
+
+def test_damaged_tables_are_refused(tmp_path):
+    study = copy_study(tmp_path, "hertz.ini")
+    assert run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4"]).returncode == 0
+    table = next((tmp_path / "tables").glob("stiffness-*.h5"))
+    good = table.read_bytes()
+    # Edited data: the checksum catches it.
+    with h5py.File(table, "r+") as f:
+        f["/stiffness/force_mean"][2] *= 1.01
+    r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4"])
+    assert r.returncode == EX_DATAERR and "checksum" in r.stderr and table.name in r.stderr
+    # Truncated file.
+    table.write_bytes(good[: len(good) // 2])
+    r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4"])
+    assert r.returncode == EX_DATAERR and table.name in r.stderr
+    # Not a table at all.
+    table.write_bytes(b"\x00garbage" * 100)
+    r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4"])
+    assert r.returncode == EX_DATAERR
+    r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4", "--rebuild"])
+    assert r.returncode == 0
+
+
+SMALL_ROUGH = ["--quiet", "--set", "surface.nx=64", "--set", "surface.ny=64", "--set", "surface.spacing=2e-6",
+               "--set", "stiffness.realisations=3", "--set", "stiffness.steps=6", "--set", "stiffness.approach_max=1e-6"]
+
+
+def test_rough_table_is_reproducible_and_softer_than_hertz(tmp_path):
+    study = copy_study(tmp_path, "seed002-table.ini")
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    r = run(["stiffness", study, "--out", a, *SMALL_ROUGH], env={"OMP_NUM_THREADS": "1"})
+    assert r.returncode == 0, r.stderr
+    assert run(["stiffness", study, "--out", b, *SMALL_ROUGH], env={"OMP_NUM_THREADS": "2"}).returncode == 0
+    with h5py.File(a) as fa, h5py.File(b) as fb:
+        for name in ("force_mean", "force_std", "stiffness_mean", "contact_area_mean"):
+            assert fa["/stiffness/" + name][:].tobytes() == fb["/stiffness/" + name][:].tobytes()
+        assert (fa["/stiffness/force_std"][1:] > 0).all()
+        assert (np.diff(fa["/stiffness/force_mean"][:]) > 0).all()
+    w = weight_line(r.stdout)
+    assert w["k"] < w["hertz_k"]
+
+
+def test_ball_on_beam_with_table_law(tmp_path):
+    study = copy_study(tmp_path, "seed001-beam-s.ini")
+    common = ["--set", "contact.law=table", "--set", "study.realisations=2", "--set", "ball.end=0.1",
+              "--set", "stiffness.surface=smooth", "--set", "stiffness.approach_max=1e-6", "--set", "stiffness.steps=10",
+              "--set", "surface.nx=64", "--set", "surface.ny=64", "--set", "surface.spacing=5e-6",
+              "--set", "texture.rms=0.05e-6"]
+    plan = run(["plan", study, *common]).stdout
+    assert re.search(r"^stiffness_table\s+run", plan, re.M)
+    out = tmp_path / "r.h5"
+    r = run(["run", study, "--out", out, "--quiet", *common])
+    assert r.returncode == 0, r.stderr
+    assert re.search(r"^stiffness_table\s+cached", run(["plan", study, *common]).stdout, re.M)
+    # Against the analytic Hertz law (no loss of contact at this roughness): the same dynamics to within
+    # the table's discretisation (64 x 64 cells of 5 um, 10 steps, monotone cubic interpolation).
+    hertz = tmp_path / "h.h5"
+    assert run(["run", study, "--out", hertz, "--quiet", *common, "--set", "contact.law=hertz"]).returncode == 0
+    with h5py.File(out) as f, h5py.File(hertz) as g:
+        assert f["/contact"].attrs["law"] in (b"table", "table")
+        lt, lh = f["/bands/level_db"][-1], g["/bands/level_db"][-1]
+        assert f["/contact/loss_of_contact_share"][0] == 0.0
+        assert np.abs(lt - lh).max() < 0.2
