@@ -36,6 +36,7 @@ int run_command(const Args& args) {
       "out,o", po::value(&out), "result file (default: the study's name with .h5, in the current directory)")(
       "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)")(
       "resume", "reuse the completed chunks of an interrupted run")(
+      "only", po::value<long long>(), "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
       "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q", "no progress output");
   po::positional_options_description pos;
   pos.add("study", 1);
@@ -62,6 +63,11 @@ int run_command(const Args& args) {
   cfg.resume = vm.count("resume") > 0;
   cfg.quiet = quiet;
   cfg.log_prefix = ensemble::rank_prefix();
+  if (vm.count("only")) {
+    cfg.only = vm["only"].as<long long>();
+    if (cfg.only < 0) throw usage_error("--only " + std::to_string(cfg.only) + ": allowed: a realisation id >= 0");
+    cfg.checkpoint_dir.clear();
+  }
   const ensemble::EnsembleSums sums = ensemble::run_ensemble(
       cfg, scene->values_per_realisation(),
       [&](std::uint64_t id, int thread, double* values) { scene->run_realisation(id, thread, values); });
@@ -76,9 +82,10 @@ int run_command(const Args& args) {
     w.attribute("/run", "threads", static_cast<std::int64_t>(omp_get_max_threads()));
     w.attribute("/run", "ranks", static_cast<std::int64_t>(ensemble::mpi_size()));
     w.attribute("/run", "realisations_computed", static_cast<std::int64_t>(sums.computed));
+    if (cfg.only >= 0) w.attribute("/run", "only_realisation", static_cast<std::int64_t>(cfg.only));
     w.commit();
   }
-  ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear();
+  if (!cfg.checkpoint_dir.empty()) ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear();
   if (!quiet)
     std::cout << "wrote " << out << " (" << sums.count << " realisations, " << sums.computed << " computed in "
               << sums.seconds << " s, " << ensemble::mpi_size() << " rank(s) x " << omp_get_max_threads()

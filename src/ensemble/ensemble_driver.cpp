@@ -76,6 +76,22 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
   const std::uint64_t K = cfg.realisations, C = cfg.chunk_size;
   if (K == 0 || C == 0 || (C & (C - 1)) != 0) throw std::invalid_argument("ensemble needs K > 0 and a power-of-two chunk size");
   const auto rank = static_cast<std::uint64_t>(mpi_rank()), ranks = static_cast<std::uint64_t>(mpi_size());
+  if (cfg.only >= 0) {
+    const auto id = static_cast<std::uint64_t>(cfg.only);
+    if (id >= K) throw usage_error("--only " + std::to_string(id) + ": the study has realisations 0.." + std::to_string(K - 1));
+    EnsembleSums out;
+    std::vector<double> v(n_values);
+    if (rank == 0) {
+      realisation(id, 0, v.data());
+      check_finite(v.data(), n_values, id, cfg.seed);
+    }
+    out.sum = v;
+    out.sum_sq.resize(n_values);
+    for (std::size_t i = 0; i < n_values; ++i) out.sum_sq[i] = v[i] * v[i];
+    out.count = out.computed = 1;
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  }
 
   // This rank's chunks: [lo, lo + C) for lo / C = rank (mod ranks).
   CheckpointStore store(cfg.checkpoint_dir, cfg.study_hash);

@@ -22,6 +22,7 @@ struct EnsembleConfig {
   bool resume = false;
   bool quiet = false;
   std::string log_prefix;          // e.g. "[rank 1] "
+  std::int64_t only = -1;          // >= 0: run just this realisation (no checkpoints), to investigate it
 };
 
 struct EnsembleSums {
