@@ -45,7 +45,7 @@ int run_command(const Args& args) {
 
   const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
   auto scene = scenes::find_scene(s.scene()).make(s);
-  if (!scene->runs_ensemble())
+  if (!scene->runs_ensemble() && !scene->single_run())
     s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + study_file);
   if (out.empty()) out = fs::path(study_file).stem().string() + ".h5";
   const fs::path out_dir = fs::absolute(out).parent_path();
@@ -54,6 +54,16 @@ int run_command(const Args& args) {
 
   ensemble::install_stop_handlers();
   scene->prepare(quiet, vm.count("rebuild") > 0);
+  if (scene->single_run()) {
+    io::Hdf5Writer w(out);
+    io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, s.canonical_text(),
+                         static_cast<std::uint64_t>(s.integer("study.seed")));
+    w.attribute("/", "scene", s.scene());
+    scene->write_results(w, {});
+    w.commit();
+    if (!quiet) std::cout << "wrote " << out << "\n";
+    return 0;
+  }
   ensemble::EnsembleConfig cfg;
   cfg.realisations = static_cast<std::uint64_t>(s.integer("study.realisations"));
   cfg.chunk_size = static_cast<std::uint64_t>(s.integer("ensemble.chunk_size"));

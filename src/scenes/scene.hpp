@@ -42,6 +42,9 @@ class Scene {
   virtual void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const = 0;
   // False for scenes with no ensemble (e.g. `texture`, written by `rollspec texture`).
   virtual bool runs_ensemble() const { return true; }
+  // True for scenes whose result is one deterministic run, done in prepare() and written by
+  // write_results() (e.g. `rolling-beam`).
+  virtual bool single_run() const { return false; }
 };
 
 struct SceneInfo {

@@ -5,6 +5,7 @@
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/random_oscillator.hpp"
 #include "src/scenes/scene.hpp"
+#include "src/scenes/rolling_beam.hpp"
 #include "src/scenes/stiffness_scene.hpp"
 #include "src/scenes/texture_scene.hpp"
 #include "src/study/study.hpp"
@@ -30,6 +31,8 @@ const std::vector<SceneInfo>& scene_registry() {
        random_oscillator_keys, [](const Study& s) { return make_random_oscillator(s); }},
       {"ball-on-beam", "smooth rigid ball rolling over a rough modal beam; sensor acceleration PSDs (seeds 001, 002)",
        ball_on_beam_keys, [](const Study& s) { return make_ball_on_beam(s); }},
+      {"rolling-beam", "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
+       rolling_beam_keys, [](const Study& s) { return make_rolling_beam(s); }},
       {"stiffness", "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
        stiffness_scene_keys, [](const Study& s) { return make_stiffness_scene(s); }},
       {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",

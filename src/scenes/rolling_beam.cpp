@@ -1,0 +1,307 @@
+#include "src/scenes/rolling_beam.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "kernels/rolling/model.hpp"
+#include "kernels/rolling/solver.hpp"
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/study/study.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+using Eigen::Vector3d;
+
+namespace {
+const double inf = std::numeric_limits<double>::infinity();
+
+std::vector<double> numbers(const Study& s, const std::string& key, std::size_t expected = 0) {
+  std::vector<double> out;
+  std::istringstream in(s.text(key));
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    while (end && (*end == ' ' || *end == '\t')) ++end;
+    if (end == item.c_str() || *end != '\0' || !std::isfinite(v)) s.refuse(key, "'" + item + "' is not a finite number");
+    out.push_back(v);
+  }
+  if (expected && out.size() != expected)
+    s.refuse(key, "has " + std::to_string(out.size()) + " numbers; allowed: " + std::to_string(expected) + " comma-separated");
+  return out;
+}
+
+Vector3d vec(const Study& s, const std::string& key) {
+  const auto v = numbers(s, key, 3);
+  return {v[0], v[1], v[2]};
+}
+}  // namespace
+
+std::vector<KeySpec> rolling_beam_keys() {
+  return {
+      choice_key("body", "kind", "a geometrically exact beam, or a rigid disc (one node)", std::string("beam"), {"beam", "disc"}),
+      text_key("beam", "start", "first end of the straight beam, x,y,z (m)", std::string("0,0,0")),
+      text_key("beam", "end", "second end, x,y,z (m)", std::string("10,0,0")),
+      text_key("beam", "up", "direction of the section's e2 axis, x,y,z", std::string("0,1,0")),
+      integer_key("beam", "elements", "quadratic 3-node elements", std::string("20"), 1, 100000),
+      real_key("beam", "diameter", "m", "outer diameter (also the contact sphere's diameter)", std::string("0.3"), 0.0, inf, false),
+      real_key("beam", "inner_diameter", "m", "inner diameter of a tube (0: solid)", std::string("0"), 0.0, inf),
+      real_key("beam", "youngs_modulus", "Pa", "Young's modulus", std::string("1e7"), 0.0, inf, false),
+      real_key("beam", "poisson", "-", "Poisson's ratio", std::string("0"), -1.0, 0.5, false, true),
+      real_key("beam", "density", "kg/m^3", "density", std::string("1e5"), 0.0, inf, false),
+      real_key("disc", "radius", "m", "disc radius (contact sphere radius)", std::string("0.2"), 0.0, inf, false),
+      real_key("disc", "length", "m", "disc length along its axis (transverse inertia)", std::string("1"), 0.0, inf, false),
+      real_key("disc", "mass", "kg", "disc mass", std::string("1000"), 0.0, inf, false),
+      text_key("disc", "position", "centre x,y,z (m); 'rest' puts it on the plane at its static penetration", std::string("rest")),
+      text_key("disc", "velocity", "initial velocity x,y,z (m/s)", std::string("0,0,0")),
+      text_key("disc", "angular_velocity", "initial angular velocity x,y,z (rad/s); the disc's axis is z", std::string("0,0,0")),
+      text_key("plane", "point", "a point of the rigid plane, x,y,z (m)", std::string("0,0,0")),
+      text_key("plane", "normal", "plane normal toward the body, x,y,z", std::string("0,0,1")),
+      real_key("contact", "friction", "-", "Coulomb coefficient mu", std::string("0.5"), 0.0, inf),
+      real_key("contact", "penalty_normal", "N/m", "normal penalty eps_n", std::string("1e9"), 0.0, inf, false),
+      real_key("contact", "penalty_tangential", "N/m", "tangential penalty eps_t", std::string("1e7"), 0.0, inf, false),
+      bool_key("contact", "rolling", "rolling correction of the tangential gap (false: the paper's 'no rolling')", std::string("true")),
+      text_key("contact", "nodes", "contact nodes: all, or comma-separated node indices", std::string("all")),
+      text_key("gravity", "acceleration", "gravity x,y,z (m/s^2)", std::string("0,0,-9.81")),
+      real_key("gravity", "ramp_time", "s", "gravity ramped in linearly over [0, ramp_time] (0: constant)", std::string("0"), 0.0, inf),
+      choice_key("support", "clamp", "clamped end nodes of the beam", std::string("none"), {"none", "first", "last", "both"}),
+      choice_key("imposed", "node", "node with an imposed displacement series", std::string("none"), {"none", "first", "last"}),
+      choice_key("imposed", "dof", "imposed displacement component", std::string("y"), {"x", "y", "z"}),
+      text_key("imposed", "times", "times of the piecewise-linear series (s), comma-separated", std::string("0")),
+      text_key("imposed", "values", "displacements at those times (m)", std::string("0")),
+      choice_key("analysis", "type", "dynamic (Newmark trapezoidal) or static (quasi-static load steps)", std::string("dynamic"),
+                 {"dynamic", "static"}),
+      real_key("analysis", "dt", "s", "time (load) step", std::string("1e-3"), 0.0, inf, false),
+      real_key("analysis", "t_end", "s", "end time", std::string("1"), 0.0, inf, false),
+      integer_key("analysis", "record_every", "steps between recorded states", std::string("1"), 1, 1e9),
+      integer_key("analysis", "max_iterations", "Newton iterations per step before cutting it", std::string("30"), 1, 10000),
+      integer_key("analysis", "max_cuts", "step halvings allowed", std::string("12"), 0, 60),
+      integer_key("analysis", "line_search", "backtracking halvings per Newton iteration", std::string("12"), 0, 60),
+      real_key("analysis", "tolerance", "-",
+               "Newton convergence: residual 2-norm relative to the body's weight (1 N without gravity)",
+               std::string("1e-6"), 0.0, 1.0, false),
+      text_key("output", "nodes", "recorded nodes: all, or comma-separated indices", std::string("all")),
+  };
+}
+
+namespace {
+
+class RollingBeam final : public Scene {
+ public:
+  explicit RollingBeam(const Study& s) : study_(s) {
+    using namespace rolling;
+    const bool disc = s.text("body.kind") == "disc";
+    const Vector3d g = vec(s, "gravity.acceleration");
+    model_.gravity = g;
+    if (s.real("gravity.ramp_time") > 0) model_.gravity_series = TimeSeries::ramp(0.0, s.real("gravity.ramp_time"));
+    const Vector3d normal = vec(s, "plane.normal");
+    if (normal.norm() == 0.0) s.refuse("plane.normal", "is the zero vector");
+    model_.planes.push_back(make_plane(vec(s, "plane.point"), normal));
+    ContactLaw law{0.0, s.real("contact.friction"), s.real("contact.penalty_normal"), s.real("contact.penalty_tangential"),
+                   s.boolean("contact.rolling")};
+    std::vector<int> ids;
+    if (disc) {
+      const double r = s.real("disc.radius"), m = s.real("disc.mass"), len = s.real("disc.length");
+      Vector3d x0;
+      if (s.text("disc.position") == "rest") {
+        const auto& pl = model_.planes[0];
+        const double pen = m * std::abs(g.dot(pl.normal)) / law.eps_n;  // static penetration m g / eps_n
+        x0 = pl.point + (r - pen) * pl.normal;
+      } else {
+        x0 = vec(s, "disc.position");
+      }
+      ids.push_back(model_.add_node(x0));
+      model_.v0 = {vec(s, "disc.velocity")};
+      model_.w0 = {vec(s, "disc.angular_velocity")};
+      const double ia = 0.5 * m * r * r, it = m * (3.0 * r * r + len * len) / 12.0;
+      model_.bodies.push_back(RigidBody{ids[0], m, Vector3d(it, it, ia).asDiagonal()});
+      law.radius = r;
+    } else {
+      const double d = s.real("beam.diameter"), di = s.real("beam.inner_diameter");
+      if (di >= d) s.refuse("beam.inner_diameter", "must be smaller than [beam] diameter");
+      model_.sections.push_back(circular_section(s.real("beam.youngs_modulus"), s.real("beam.poisson"),
+                                                 s.real("beam.density"), d, di));
+      const Vector3d a = vec(s, "beam.start"), b = vec(s, "beam.end");
+      if ((b - a).norm() == 0.0) s.refuse("beam.end", "coincides with [beam] start");
+      ids = add_straight_beam(model_, a, b, static_cast<int>(s.integer("beam.elements")), 0, vec(s, "beam.up"));
+      law.radius = 0.5 * d;
+    }
+    // Contacts.
+    std::vector<int> contact_nodes;
+    if (s.text("contact.nodes") == "all") contact_nodes = ids;
+    else
+      for (double v : numbers(s, "contact.nodes")) contact_nodes.push_back(node_index(s, "contact.nodes", v, ids));
+    for (int n : contact_nodes) model_.contacts.push_back(ContactPair{n, 0, law});
+    // Supports and imposed series.
+    const std::string clamp = s.text("support.clamp");
+    if (disc && clamp != "none") s.refuse("support.clamp", "a disc has no ends to clamp");
+    if (clamp == "first" || clamp == "both")
+      for (int d = 0; d < 6; ++d) model_.imposed.push_back(ImposedDof{ids.front(), d, 0.0, TimeSeries::constant()});
+    if (clamp == "last" || clamp == "both")
+      for (int d = 0; d < 6; ++d) model_.imposed.push_back(ImposedDof{ids.back(), d, 0.0, TimeSeries::constant()});
+    if (s.text("imposed.node") != "none") {
+      const auto t = numbers(s, "imposed.times"), v = numbers(s, "imposed.values");
+      if (t.size() != v.size()) s.refuse("imposed.values", "needs one value per entry of [imposed] times");
+      for (std::size_t i = 1; i < t.size(); ++i)
+        if (!(t[i] > t[i - 1])) s.refuse("imposed.times", "must increase strictly");
+      const int node = s.text("imposed.node") == "first" ? ids.front() : ids.back();
+      const int dof = s.text("imposed.dof") == "x" ? 0 : s.text("imposed.dof") == "y" ? 1 : 2;
+      model_.imposed.push_back(ImposedDof{node, dof, 1.0, TimeSeries{t, v}});
+    }
+    if (s.text("output.nodes") == "all") record_ = ids;
+    else
+      for (double v : numbers(s, "output.nodes")) record_.push_back(node_index(s, "output.nodes", v, ids));
+    options_.analysis = s.text("analysis.type") == "dynamic" ? Analysis::Dynamic : Analysis::QuasiStatic;
+    options_.max_iterations = static_cast<int>(s.integer("analysis.max_iterations"));
+    options_.max_cuts = static_cast<int>(s.integer("analysis.max_cuts"));
+    options_.max_line_search = static_cast<int>(s.integer("analysis.line_search"));
+    options_.disp_tol = 1e-10;
+    double mass = 0.0;
+    for (const auto& b : model_.bodies) mass += b.mass;
+    if (!disc) mass = model_.sections[0].rhoA * (vec(s, "beam.end") - vec(s, "beam.start")).norm();
+    const double weight = mass * g.norm();
+    options_.force_tol = s.real("analysis.tolerance") * (weight > 0.0 ? weight : 1.0);
+    run_.dt = s.real("analysis.dt");
+    run_.t_end = s.real("analysis.t_end");
+    if (run_.dt > run_.t_end) s.refuse("analysis.dt", "exceeds [analysis] t_end");
+    if (run_.t_end / run_.dt > 1e8) s.refuse("analysis.dt", "gives more than 1e8 steps");
+    run_.record_every = static_cast<int>(s.integer("analysis.record_every"));
+    run_.record_nodes = record_;
+  }
+
+  std::vector<StagePlan> plan() const override {
+    return {
+        {"texture", StageStatus::skipped, "flat rigid plane"},
+        {"stiffness_table", StageStatus::skipped, "penalty contact"},
+        {"dynamics", StageStatus::run,
+         std::string(options_.analysis == rolling::Analysis::Dynamic ? "Newmark dynamics" : "quasi-static load steps") +
+             ", " + std::to_string(static_cast<long long>(std::llround(run_.t_end / run_.dt))) + " steps, " +
+             std::to_string(model_.contacts.size()) + " rolling contact node(s)"},
+        {"spectra", StageStatus::skipped, "a single deterministic run has no ensemble spectra"},
+    };
+  }
+
+  bool runs_ensemble() const override { return false; }
+  bool single_run() const override { return true; }
+  std::size_t values_per_realisation() const override { return 0; }
+  void run_realisation(std::uint64_t, int, double*) const override {}
+
+  void prepare(bool quiet, bool) override {
+    history_ = rolling::run(model_, options_, run_);
+    if (!history_.completed)
+      throw data_error(study_.where("analysis.dt") + ": Newton did not converge at t = " + std::to_string(history_.failed_at) +
+                       " s even after " + std::to_string(options_.max_cuts) +
+                       " step halvings; reduce the step, raise [analysis] max_iterations or max_cuts, or soften the penalties");
+    if (!quiet)
+      std::fprintf(stderr, "rolling-beam: %d steps, %d Newton iterations, %d step cuts\n", history_.steps,
+                   history_.newton_iterations, history_.cuts);
+  }
+
+  void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums&) const override {
+    const auto& h = history_;
+    const std::size_t nt = h.time.size(), nn = record_.size(), nc = model_.contacts.size();
+    auto block = [&](const std::vector<std::vector<Vector3d>>& v) {
+      std::vector<double> out(nt * nn * 3);
+      for (std::size_t t = 0; t < nt; ++t)
+        for (std::size_t n = 0; n < nn; ++n)
+          for (int k = 0; k < 3; ++k) out[(t * nn + n) * 3 + static_cast<std::size_t>(k)] = v[t][n](k);
+      return out;
+    };
+    w.write("/time_history/time", {nt}, h.time.data(), "s", "time of each recorded state");
+    w.make_scale("/time_history/time", "time");
+    const struct {
+      const char* name;
+      const std::vector<std::vector<Vector3d>>* data;
+      const char* units;
+      const char* what;
+    } fields[] = {{"position", &h.position, "m", "node positions"},
+                  {"velocity", &h.velocity, "m/s", "node velocities"},
+                  {"acceleration", &h.acceleration, "m/s^2", "node accelerations"},
+                  {"angular_velocity", &h.angular_velocity, "rad/s", "node angular velocities (spatial)"}};
+    for (const auto& f : fields) {
+      const auto v = block(*f.data);
+      w.write(std::string("/time_history/") + f.name, {nt, nn, 3}, v.data(), f.units, f.what);
+      w.attach_scale(std::string("/time_history/") + f.name, "/time_history/time", 0);
+    }
+    std::vector<double> nodes(record_.begin(), record_.end());
+    w.write("/time_history/node", {nn}, nodes.data(), "1", "model node index of each recorded node");
+    // Energies (seed 000 §4; kernels/rolling README R-43).
+    const struct {
+      const char* name;
+      double rolling::Energies::*member;
+      const char* what;
+    } energies[] = {{"kinetic", &rolling::Energies::kinetic, "kinetic energy, translation and rotation"},
+                    {"strain", &rolling::Energies::strain, "beam strain energy"},
+                    {"penalty", &rolling::Energies::penalty, "normal penalty energy eps_n g_n^2 / 2"},
+                    {"tangential_elastic", &rolling::Energies::tangential_elastic, "energy in the stick springs"},
+                    {"external_work", &rolling::Energies::external_work, "work of gravity and nodal loads"},
+                    {"imposed_work", &rolling::Energies::imposed_work, "work of the reactions at imposed DOFs"},
+                    {"friction_work", &rolling::Energies::friction_work, "mechanical energy removed by friction"},
+                    {"friction_dissipation", &rolling::Energies::friction_dissipation,
+                     "return-mapping dissipation sum f_max |slip increment|"}};
+    for (const auto& e : energies) {
+      std::vector<double> v(nt);
+      for (std::size_t t = 0; t < nt; ++t) v[t] = h.energy[t].*e.member;
+      w.write(std::string("/time_history/energy/") + e.name, {nt}, v.data(), "J", e.what);
+    }
+    std::vector<double> balance(nt);
+    for (std::size_t t = 0; t < nt; ++t) balance[t] = h.energy[t].balance() - h.energy[0].balance();
+    w.write("/time_history/energy/balance_error", {nt}, balance.data(), "J",
+            "kinetic + strain + penalty - external work - imposed work + friction work, minus its initial value");
+    // Contacts.
+    std::vector<double> force(nt * nc * 3), moment(nt * nc * 3), slip(nt * nc), active(nt * nc), gap(nt * nc);
+    for (std::size_t t = 0; t < nt; ++t)
+      for (std::size_t c = 0; c < nc; ++c) {
+        const auto& o = h.contact[t][c];
+        for (int k = 0; k < 3; ++k) {
+          force[(t * nc + c) * 3 + static_cast<std::size_t>(k)] = o.force(k);
+          moment[(t * nc + c) * 3 + static_cast<std::size_t>(k)] = o.moment(k);
+        }
+        slip[t * nc + c] = o.slip ? 1.0 : 0.0;
+        active[t * nc + c] = o.active ? 1.0 : 0.0;
+        gap[t * nc + c] = o.g_n;
+      }
+    w.write("/time_history/contact/force", {nt, nc, 3}, force.data(), "N", "contact force on the node (normal + friction)");
+    w.write("/time_history/contact/moment", {nt, nc, 3}, moment.data(), "N m", "friction moment (C - x_o) x f on the node");
+    w.write("/time_history/contact/slip", {nt, nc}, slip.data(), "1", "1 while the contact slips, 0 while it sticks");
+    w.write("/time_history/contact/active", {nt, nc}, active.data(), "1", "1 while in contact");
+    w.write("/time_history/contact/normal_gap", {nt, nc}, gap.data(), "m", "normal gap g_n (negative: penetration)");
+    std::vector<double> cnode;
+    for (const auto& c : model_.contacts) cnode.push_back(c.node);
+    w.write("/time_history/contact/node", {nc}, cnode.data(), "1", "model node index of each contact");
+    if (!model_.imposed.empty()) {
+      const std::size_t ni = model_.imposed.size();
+      std::vector<double> r(nt * ni);
+      for (std::size_t t = 0; t < nt; ++t)
+        for (std::size_t i = 0; i < ni; ++i) r[t * ni + i] = h.reactions[t][i];
+      w.write("/time_history/reaction", {nt, ni}, r.data(), "N", "reactions at the imposed DOFs (support order)");
+    }
+    w.attribute("/time_history", "steps", static_cast<std::int64_t>(h.steps));
+    w.attribute("/time_history", "newton_iterations", static_cast<std::int64_t>(h.newton_iterations));
+    w.attribute("/time_history", "step_cuts", static_cast<std::int64_t>(h.cuts));
+  }
+
+ private:
+  static int node_index(const Study& s, const std::string& key, double v, const std::vector<int>& ids) {
+    if (v < 0 || v != std::floor(v) || v >= static_cast<double>(ids.size()))
+      s.refuse(key, "node " + std::to_string(v) + " does not exist; allowed: 0.." + std::to_string(ids.size() - 1));
+    return ids[static_cast<std::size_t>(v)];
+  }
+
+  const Study& study_;
+  rolling::Model model_;
+  rolling::SolverOptions options_;
+  rolling::RunOptions run_;
+  std::vector<int> record_;
+  rolling::History history_;
+};
+
+}  // namespace
+
+std::unique_ptr<Scene> make_rolling_beam(const Study& s) { return std::make_unique<RollingBeam>(s); }
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,17 @@
+#pragma once
+// Scene `rolling-beam` (design §6; seed 000): a geometrically exact beam (or a rigid disc) rolling
+// and sliding on a rigid plane, each contact node a sphere of the section's radius with the rolling
+// correction of the tangential gap (D-13, D-14), Coulomb stick/slip, friction moment. One
+// deterministic run (quasi-static load stepping or Newmark dynamics, kernels/rolling); the result
+// file holds the time histories under /time_history/.
+#include <memory>
+#include <vector>
+
+#include "src/scenes/scene.hpp"
+
+namespace rollspec::scenes {
+
+std::vector<study::KeySpec> rolling_beam_keys();
+std::unique_ptr<Scene> make_rolling_beam(const study::Study& s);
+
+}  // namespace rollspec::scenes
