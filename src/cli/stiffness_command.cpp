@@ -56,8 +56,13 @@ int stiffness_command(const Args& args) {
   const double w = pair.weight;
   const double delta_h = std::pow(3.0 * w / (4.0 * t.effective_modulus * std::sqrt(t.ball_radius)), 2.0 / 3.0);
   const double k_h = 2.0 * t.effective_modulus * std::sqrt(t.ball_radius * delta_h);
-  std::printf("at the ball's weight W = %.6g N: approach %.6g m, k = %.6g N/m (smooth Hertz: approach %.6g m, k = %.6g N/m)\n",
-              w, t.approach_at(w), t.stiffness_at(w), delta_h, k_h);
+  if (std::isnan(t.approach_at(w)))
+    std::printf("at the ball's weight W = %.6g N: beyond the table (largest force %.6g N at approach %.6g m); raise "
+                "[stiffness] approach_max (smooth Hertz: approach %.6g m, k = %.6g N/m)\n",
+                w, t.force_mean.back(), t.approach.back(), delta_h, k_h);
+  else
+    std::printf("at the ball's weight W = %.6g N: approach %.6g m, k = %.6g N/m (smooth Hertz: approach %.6g m, k = %.6g N/m)\n",
+                w, t.approach_at(w), t.stiffness_at(w), delta_h, k_h);
   return 0;
 }
 

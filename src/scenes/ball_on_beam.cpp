@@ -35,6 +35,12 @@ using namespace study;
 namespace {
 const double inf = std::numeric_limits<double>::infinity();
 
+std::string g4(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
 std::vector<double> parse_positions(const Study& s, const std::string& key) {
   std::vector<double> out;
   std::istringstream in(s.text(key));
@@ -209,6 +215,8 @@ class BallOnBeam final : public Scene {
     } catch (const std::exception& e) {
       throw config_error(s.where("roughness.spacing") + ": " + e.what());
     }
+    if (!uses_table_)
+      check_contact_resolution(s, linearised_ ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * static_compression_));
     // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
     step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
     step_options_.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
@@ -251,6 +259,7 @@ class BallOnBeam final : public Scene {
       if (!(static_compression_ > 0.0))
         study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
                                                      " N does not reach the ball's weight; raise approach_max");
+      check_contact_resolution(*study_, t.stiffness_at(model_.ball.mass * model_.ball.gravity));
     }
     integrator_ = std::make_unique<beam::ExactStepIntegrator>(model_, step_options_);
   }
@@ -277,6 +286,22 @@ class BallOnBeam final : public Scene {
         {"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step, implicit contact (D-9, D-10)"},
         {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
     };
+  }
+
+  // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
+  // T_c = 2 pi sqrt(m_ball / k_contact) at the static load (theory D-21). Coarser steps stay finite
+  // but misstate loss of contact and the high-frequency levels, so they are refused.
+  void check_contact_resolution(const Study& s, double k_contact) const {
+    const double tc = 2.0 * M_PI * std::sqrt(model_.ball.mass / k_contact);
+    const double h = 1.0 / (model_.sample_rate * static_cast<double>(s.integer("signal.substeps")));
+    if (h > tc / 20.0) {
+      const auto need = static_cast<long long>(std::ceil(20.0 / (tc * model_.sample_rate)));
+      s.refuse("signal.substeps", "the integration step 1 / (sample_rate x substeps) = " + g4(h) +
+                                      " s exceeds the contact resolution limit dt <= T_c / 20 = " + g4(tc / 20.0) +
+                                      " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + g4(k_contact) +
+                                      " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
+                                      " at this sample rate");
+    }
   }
 
   std::size_t rows() const { return model_.sensors.size() + (average_ && model_.sensors.size() > 1 ? 1 : 0); }
