@@ -1,0 +1,54 @@
+// libFuzzer harness over the numeric CSV reader (rollspec::io::read_csv) that reads measured
+// signals (`rollspec psd`), measured PSDs (`rollspec compare`), PSD tables and profiles.
+//
+// The input is written to a temporary file and read; a table that is accepted is then checked
+// the way the commands check theirs (named columns, strictly increasing axis). A UserError is
+// the expected refusal; any other exception, a crash or a sanitizer report is a finding.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "src/error.hpp"
+#include "src/io/csv_table.hpp"
+
+namespace {
+const std::string& temp_path() {
+  static const std::string p = "/tmp/rollspec-fuzz-csv-" + std::to_string(::getpid()) + ".csv";
+  return p;
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  {
+    std::ofstream out(temp_path(), std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
+  try {
+    const rollspec::io::CsvTable t = rollspec::io::read_csv(temp_path());
+    // Invariants of an accepted table: a header, at least one row, every column as long as the
+    // row list, every value finite.
+    if (t.columns.empty() || t.rows() == 0 || t.values.size() != t.columns.size()) std::abort();
+    for (const auto& col : t.values) {
+      if (col.size() != t.rows()) std::abort();
+      for (double v : col)
+        if (!std::isfinite(v)) std::abort();
+    }
+    for (std::size_t r = 0; r < t.rows(); ++r) (void)t.where(r);
+    for (std::size_t c = 0; c < t.columns.size(); ++c) {
+      if (t.column_index(t.columns[c]) != c) std::abort();  // column names are unique
+      try {
+        rollspec::io::require_increasing(t, c);
+      } catch (const rollspec::UserError&) {
+      }
+    }
+    (void)t.column("frequency_hz");
+  } catch (const rollspec::UserError&) {
+    // Refused with a message naming the file (and line/column): the expected outcome.
+  }
+  return 0;
+}
