@@ -89,6 +89,7 @@ int run_command(const Args& args) {
     w.attribute("/", "scene", s.scene());
     scene->write_results(w, sums);
     w.write("/run/wall_seconds", {1}, &sums.seconds, "s", "wall time of the ensemble (this run; not part of the result data)");
+    w.write("/run/reduce_seconds", {1}, &sums.reduce_seconds, "s", "gathering and adding chunk sums (part of wall_seconds)");
     w.attribute("/run", "threads", static_cast<std::int64_t>(omp_get_max_threads()));
     w.attribute("/run", "ranks", static_cast<std::int64_t>(ensemble::mpi_size()));
     w.attribute("/run", "realisations_computed", static_cast<std::int64_t>(sums.computed));

@@ -5,6 +5,7 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
 #include "src/scenes/scene.hpp"
@@ -43,6 +44,7 @@ int stiffness_command(const Args& args) {
   std::string status;
   const auto t = stiffness::resolve_table(s, pair.radius, pair.effective_modulus, vm.count("rebuild") > 0,
                                           vm.count("quiet") > 0, status);
+  if (ensemble::mpi_rank() != 0) return 0;  // every rank holds the table; rank 0 reports it
   std::printf("# stiffness table: %s\n# input hash %s, %lld realisation(s), ball radius %g m, E* %.6g Pa, H %g Pa\n",
               status.c_str(), t.input_hash.c_str(), static_cast<long long>(t.realisations), t.ball_radius,
               t.effective_modulus, t.hardness);

@@ -142,6 +142,7 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
   }
   progress.finish();
 
+  const auto reduce_start = std::chrono::steady_clock::now();
   const std::map<std::uint64_t, ChunkSums> all = gather_chunks(chunks, 2 * n_values);
   out.count = K;
   if (rank == 0) {
@@ -153,6 +154,7 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
     out.sum.assign(total.begin(), total.begin() + static_cast<std::ptrdiff_t>(n_values));
     out.sum_sq.assign(total.begin() + static_cast<std::ptrdiff_t>(n_values), total.end());
   }
+  out.reduce_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reduce_start).count();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -30,6 +30,7 @@ struct EnsembleSums {
   std::uint64_t count = 0;
   std::uint64_t computed = 0;       // realisations computed in this run (the rest came from checkpoints)
   double seconds = 0.0;
+  double reduce_seconds = 0.0;      // gathering chunk sums to rank 0 and adding them (part of `seconds`)
 };
 
 // Fills values[0..n_values) for realisation `id` using the workspace of thread `thread`.

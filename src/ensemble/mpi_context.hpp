@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "src/ensemble/checkpoint.hpp"
 
@@ -27,6 +28,9 @@ bool any_rank(bool flag);  // logical OR over ranks
 std::uint64_t sum_over_ranks(std::uint64_t v);
 // Rank 0 receives every rank's chunks (its own included); other ranks get an empty map.
 std::map<std::uint64_t, ChunkSums> gather_chunks(const std::map<std::uint64_t, ChunkSums>& mine, std::size_t n_values);
+// Every rank receives every rank's rows (keyed by id, all of length row_size).
+std::map<std::uint64_t, std::vector<double>> allgather_rows(const std::map<std::uint64_t, std::vector<double>>& mine,
+                                                           std::size_t row_size);
 std::string rank_prefix();  // "[rank r/n] " under MPI with n > 1, else ""
 
 }  // namespace rollspec::ensemble

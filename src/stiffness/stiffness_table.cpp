@@ -14,6 +14,7 @@
 #include "kernels/contact/sweep.hpp"
 #include "kernels/contact/version.hpp"
 #include "src/ensemble/checkpoint.hpp"
+#include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
@@ -206,15 +207,21 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
   texture_io::SurfaceGenerator surfaces;
   if (is_rough) surfaces = texture_io::study_surface_generator(s, texture_io::study_psd(s));
 
+  // Realisation r runs on rank r mod ranks (OpenMP inside each rank); every rank then holds every
+  // realisation's results and reduces them in realisation order, so the table has the same bits
+  // for any rank and thread count.
+  const int rank = ensemble::mpi_rank(), ranks = ensemble::mpi_size();
   std::vector<std::vector<contact::ContactResult>> results(static_cast<std::size_t>(R));
   std::exception_ptr failure;
-  ensemble::Progress progress("stiffness realisations", static_cast<std::uint64_t>(R), quiet);
+  int mine = 0;
+  for (int r = rank; r < R; r += ranks) ++mine;
+  ensemble::Progress progress("stiffness realisations", static_cast<std::uint64_t>(mine), quiet, ensemble::rank_prefix());
 #pragma omp parallel
   {
     std::unique_ptr<contact::ContactSolver> solver;
 #pragma omp for schedule(dynamic, 1)
     for (int r = 0; r < R; ++r) {
-      if (failure) continue;
+      if (failure || r % ranks != rank) continue;
       try {
         if (!solver) solver = std::make_unique<contact::ContactSolver>(grid, effective_modulus);
         texture::Surface surf;
@@ -241,8 +248,29 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
       }
     }
   }
+  const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
   if (failure) std::rethrow_exception(failure);
+  if (failed_somewhere) throw UserError(EX_SOFTWARE, ensemble::rank_prefix() + "stiffness table: another rank failed (see its message)");
   progress.finish();
+  {
+    // Six numbers per step and realisation travel to every rank.
+    std::map<std::uint64_t, std::vector<double>> rows;
+    for (int r = rank; r < R; r += ranks) {
+      auto& row = rows[static_cast<std::uint64_t>(r)];
+      for (const auto& c : results[static_cast<std::size_t>(r)])
+        row.insert(row.end(), {c.force, c.stiffness, c.contact_area, static_cast<double>(c.plastic_cells), c.max_pressure,
+                               static_cast<double>(c.iterations)});
+    }
+    for (const auto& [r, row] : ensemble::allgather_rows(rows, 6 * steps)) {
+      auto& res = results[static_cast<std::size_t>(r)];
+      res.resize(steps);
+      for (std::size_t j = 0; j < steps; ++j) {
+        res[j].force = row[6 * j], res[j].stiffness = row[6 * j + 1], res[j].contact_area = row[6 * j + 2];
+        res[j].plastic_cells = static_cast<std::size_t>(row[6 * j + 3]), res[j].max_pressure = row[6 * j + 4];
+        res[j].iterations = static_cast<int>(row[6 * j + 5]);
+      }
+    }
+  }
 
   // Mean and standard deviation in realisation order: the same bits for any thread count.
   StiffnessTable t;
@@ -340,7 +368,8 @@ StiffnessTable resolve_table(const study::Study& s, double ball_radius, double e
   }
   if (state == TableState::mismatched && !rebuild) throw data_error(why + "\nrun with --rebuild to replace it");
   StiffnessTable t = build_table(s, ball_radius, effective_modulus, spec, quiet);
-  write_table(path, t, s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
+  if (ensemble::mpi_rank() == 0) write_table(path, t, s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
+  ensemble::mpi_barrier();  // the table file exists for every rank from here on
   status = "built " + path;
   return t;
 }
