@@ -13,6 +13,16 @@ double band_dof(double dof_per_bin, double band_width, double df, double enbw_bi
   return std::max(dof_per_bin, std::min(dof_per_bin * band_width / (df * enbw_bins), 2.0 * band_width * record_seconds));
 }
 
+void write_frequency_scale(Hdf5Writer& w, const std::string& group, const std::vector<double>& frequency) {
+  w.write(group + "/frequency", {frequency.size()}, frequency.data(), "Hz", "frequency of the one-sided PSD bins");
+  w.make_scale(group + "/frequency", "frequency");
+}
+
+void write_sensor_scale(Hdf5Writer& w, const std::string& group, const std::vector<std::string>& sensors) {
+  w.write_strings(group + "/sensor", sensors, "sensor names");
+  w.make_scale(group + "/sensor", "sensor");
+}
+
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
   const double df = e.frequency.size() > 1 ? e.frequency[1] - e.frequency[0] : 1.0;
@@ -22,14 +32,12 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     lo[i] = e.mean[i] * f.lower;
     hi[i] = e.mean[i] * f.upper;
   }
-  w.write("/psd/frequency", {nf}, e.frequency.data(), "Hz", "frequency of the one-sided PSD bins");
-  w.write_strings("/psd/sensor", e.sensors, "sensor names");
+  write_frequency_scale(w, "/psd", e.frequency);
+  write_sensor_scale(w, "/psd", e.sensors);
   w.write("/psd/mean", {ns, nf}, e.mean.data(), e.units, "ensemble mean of the one-sided Welch PSD of the " + e.quantity);
   w.write("/psd/ci_lower", {ns, nf}, lo.data(), e.units, "lower bound of the chi-square confidence interval");
   w.write("/psd/ci_upper", {ns, nf}, hi.data(), e.units, "upper bound of the chi-square confidence interval");
   w.write("/psd/std", {ns, nf}, e.std_dev.data(), e.units, "ensemble standard deviation of one realisation's PSD");
-  w.make_scale("/psd/frequency", "frequency");
-  w.make_scale("/psd/sensor", "sensor");
   for (const char* d : {"/psd/mean", "/psd/ci_lower", "/psd/ci_upper", "/psd/std"}) {
     w.attach_scale(d, "/psd/sensor", 0);
     w.attach_scale(d, "/psd/frequency", 1);
@@ -67,10 +75,11 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   w.write("/bands/ci_lower_db", {ns, nb}, cil.data(), db, "lower bound of the band level's confidence interval");
   w.write("/bands/ci_upper_db", {ns, nb}, ciu.data(), db, "upper bound of the band level's confidence interval");
   w.make_scale("/bands/centre_frequency", "band");
+  write_sensor_scale(w, "/bands", e.sensors);
   for (const char* d : {"/bands/nominal_frequency", "/bands/lower_frequency", "/bands/upper_frequency", "/bands/degrees_of_freedom"})
     w.attach_scale(d, "/bands/centre_frequency", 0);
   for (const char* d : {"/bands/level_db", "/bands/ci_lower_db", "/bands/ci_upper_db"}) {
-    w.attach_scale(d, "/psd/sensor", 0);
+    w.attach_scale(d, "/bands/sensor", 0);
     w.attach_scale(d, "/bands/centre_frequency", 1);
   }
 }

@@ -35,6 +35,12 @@ struct PsdEnsemble {
 
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);
 
+// Coordinate scales of a group: <group>/frequency (Hz) and <group>/sensor (names). Dimension
+// scales are visible only in their own group and below (netCDF semantics, which xarray's
+// h5netcdf engine follows), so every group with spectra carries its own.
+void write_frequency_scale(Hdf5Writer& w, const std::string& group, const std::vector<double>& frequency);
+void write_sensor_scale(Hdf5Writer& w, const std::string& group, const std::vector<std::string>& sensors);
+
 // Band degrees of freedom from the per-bin value (D-17).
 double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins, double record_seconds);
 

@@ -386,8 +386,10 @@ class BallOnBeam final : public Scene {
     }
     w.write("/contact/force_psd", {nf}, force.data(), "N^2/Hz", "ensemble mean PSD of the contact force");
     w.write("/ball/acceleration_psd", {nf}, ball.data(), "(m/s^2)^2/Hz", "ensemble mean PSD of the ball acceleration");
-    w.attach_scale("/contact/force_psd", "/psd/frequency", 0);
-    w.attach_scale("/ball/acceleration_psd", "/psd/frequency", 0);
+    io::write_frequency_scale(w, "/contact", e.frequency);
+    io::write_frequency_scale(w, "/ball", e.frequency);
+    w.attach_scale("/contact/force_psd", "/contact/frequency", 0);
+    w.attach_scale("/ball/acceleration_psd", "/ball/frequency", 0);
     const double share = mean_of((nr + 2) * nf), share_std = std_of((nr + 2) * nf);
     w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
     w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
@@ -412,14 +414,14 @@ class BallOnBeam final : public Scene {
     w.attribute("/ball", "mass", model_.ball.mass);
     w.attribute("/ball", "speed", model_.traverse.speed);
 
-    if (linearised_) write_linear_reference(w, e.frequency);
+    if (linearised_) write_linear_reference(w, e.frequency, e.sensors);
     if (time_histories_) write_time_histories(w);
   }
 
  private:
   // Frequency-domain solution of the linearised model (seed 002 check): blocked-force PSD
   // k0^2 G_t(f) |patch(f)|^2 through the receptances, averaged over ball positions.
-  void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f) const {
+  void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors) const {
     // On a grid 8 times finer than the bins, then through the Welch expectation (D-20): the
     // estimate converges to the PSD smoothed by the window, which resolves no resonance narrower
     // than a bin.
@@ -458,9 +460,11 @@ class BallOnBeam final : public Scene {
             "expected Welch estimate (D-20) of the linearised model's frequency-domain PSD, averaged over ball positions");
     w.write("/reference/psd_raw", {rows(), f.size()}, raw.data(), "(m/s^2)^2/Hz",
             "the frequency-domain PSD itself at the bin frequencies (not window-smoothed)");
+    io::write_frequency_scale(w, "/reference", f);
+    io::write_sensor_scale(w, "/reference", sensors);
     for (const char* d : {"/reference/psd", "/reference/psd_raw"}) {
-      w.attach_scale(d, "/psd/sensor", 0);
-      w.attach_scale(d, "/psd/frequency", 1);
+      w.attach_scale(d, "/reference/sensor", 0);
+      w.attach_scale(d, "/reference/frequency", 1);
     }
   }
 

@@ -153,8 +153,10 @@ class RandomOscillator final : public Scene {
       exact[i] = random_oscillator_exact_psd(e.frequency[i], force_psd(e.frequency[i]), mass_, fn_, zeta_, fs_);
     w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units,
             "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator (D-19)");
-    w.attach_scale("/reference/psd", "/psd/sensor", 0);
-    w.attach_scale("/reference/psd", "/psd/frequency", 1);
+    io::write_frequency_scale(w, "/reference", e.frequency);
+    io::write_sensor_scale(w, "/reference", e.sensors);
+    w.attach_scale("/reference/psd", "/reference/sensor", 0);
+    w.attach_scale("/reference/psd", "/reference/frequency", 1);
     w.write("/oscillator/force_psd", {1}, &level_, "N^2/Hz", "flat force PSD level");
     w.attribute("/oscillator", "mass", mass_);
     w.attribute("/oscillator", "natural_frequency", fn_);

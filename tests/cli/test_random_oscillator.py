@@ -68,3 +68,21 @@ def test_compare_against_the_exact_psd(tmp_path):
     np.savetxt(meas, np.c_[freq[1:], 2 * exact[1:]], delimiter=",", header="frequency_hz,psd", comments="", fmt="%.17g")
     last = run(["compare", out, meas, "--fmin", 20, "--fmax", 600]).stdout.strip().splitlines()[-1]
     assert abs(float(last.split()[1]) - 3.01) < 0.1 and last.endswith(f" 0/{total}")
+
+
+def test_xarray_opens_the_result_with_named_dimensions(tmp_path):
+    import xarray as xr
+    out = tmp_path / "ro.h5"
+    assert run(["run", SOURCE / "studies" / "random-oscillator.ini", "--out", out, "--quiet",
+                "--set", "study.realisations=4"]).returncode == 0
+    psd = xr.open_dataset(out, engine="h5netcdf", group="psd")
+    assert psd["mean"].dims == ("sensor", "frequency")
+    assert float(psd["frequency"][1]) == 0.5 and str(psd["sensor"].values[0]) == "mass"
+    assert psd["mean"].attrs["units"] == "(m/s^2)^2/Hz"
+    bands = xr.open_dataset(out, engine="h5netcdf", group="bands")
+    assert bands["level_db"].dims == ("sensor", "centre_frequency")
+    ref = xr.open_dataset(out, engine="h5netcdf", group="reference")
+    assert ref["psd"].dims == ("sensor", "frequency")
+    # The exact PSD and the mean share coordinates, so xarray aligns them by label.
+    ratio = psd["mean"].sel(frequency=slice(20, 200)) / ref["psd"].sel(frequency=slice(20, 200))
+    assert ratio.dims == ("sensor", "frequency") and float(ratio.mean()) > 0.5
