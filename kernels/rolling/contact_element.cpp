@@ -22,8 +22,26 @@ Plane make_plane(const Vector3d& point, const Vector3d& normal) {
   return p;
 }
 
+PenaltyGradient penalty_discrete_gradient(double eps_n, double g0, double g1) {
+  // V(g) = eps_n <-g>^2 / 2, V'(g) = eps_n min(g, 0), V'' = eps_n on g < 0 (README R-50)
+  auto V = [&](double g) { return g < 0.0 ? 0.5 * eps_n * g * g : 0.0; };
+  auto dV = [&](double g) { return g < 0.0 ? eps_n * g : 0.0; };
+  PenaltyGradient d;
+  const double dg = g1 - g0;
+  if (std::abs(dg) <= 1e-12 * (std::abs(g0) + std::abs(g1)) || dg == 0.0) {
+    const double gm = 0.5 * (g0 + g1);  // limit: V'(g_mid), derivative V''/2
+    d.value = dV(gm);
+    d.derivative = gm < 0.0 ? 0.5 * eps_n : 0.0;
+    return d;
+  }
+  d.value = (V(g1) - V(g0)) / dg;
+  d.derivative = (dV(g1) - d.value) / dg;
+  return d;
+}
+
 ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const ContactState& state,
-                             const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha) {
+                             const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha,
+                             NormalForce normal_force) {
   ContactEval e;
   const Vector3d& n = plane.normal;
   const Matrix3d P = Matrix3d::Identity() - n * n.transpose();  // t1 t1^T + t2 t2^T
@@ -41,7 +59,23 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
   e.point = x - r * n;
   // touching (g_n = 0) counts as closed, so that a predictor from a touching state sees
   // the normal penalty stiffness
-  if (!(e.g_n <= 0.0)) return e;  // open: no force, state reset at commit
+  // normal force magnitude along n: end point eps_n <-g_n> (R-22) or discrete gradient
+  double fn = e.g_n <= 0.0 ? law.eps_n * (-e.g_n) : 0.0, dfn = law.eps_n;  // dfn = -d fn / d g_n
+  if (normal_force == NormalForce::DiscreteGradient) {
+    const double g0 = (x_start - plane.point).dot(n) - r;
+    const PenaltyGradient dg = penalty_discrete_gradient(law.eps_n, g0, e.g_n);
+    fn = -dg.value;
+    dfn = dg.derivative;
+  }
+  if (!(e.g_n <= 0.0)) {  // open at the end: no friction, state reset at commit
+    if (fn != 0.0) {      // discrete gradient of a step that opens the contact
+      e.normal_force = fn;
+      e.force = fn * n;
+      e.residual.head<3>() = -e.force;
+      e.tangent.block<3, 3>(0, 0) = dfn * n * n.transpose();
+    }
+    return e;
+  }
   e.active = true;
 
   const Vector3d gt = P * (x - x_f) - gst0;  // (D-14), seed 000 Eq. 8-10, elastic gap
@@ -82,12 +116,13 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
     e.tangential_energy = 0.5 * fmax * fmax / law.eps_t;
   }
   e.friction = f;
-  e.force = law.eps_n * (-e.g_n) * n + f;
+  e.normal_force = fn;
+  e.force = fn * n + f;
   e.moment = -rr * n.cross(f);  // (C - x_o) x f with C - x_o = -r n (seed 000 Eq. 33)
   e.next.active = true;
   e.next.x_f = x_f;
 
-  const Matrix3d dF_dx = -law.eps_n * n * n.transpose() + df_dx;
+  const Matrix3d dF_dx = -dfn * n * n.transpose() + df_dx;
   const Matrix3d& dF_da = df_da;
   const Matrix3d dM_dx = -rr * skew(n) * df_dx;
   const Matrix3d dM_da = -rr * skew(n) * df_da;

@@ -39,6 +39,7 @@ struct ContactEval {
   bool active = false;
   bool slip = false;
   double g_n = 0.0;                                      // normal gap (D-14), < 0 in contact
+  double normal_force = 0.0;                             // magnitude of the normal force along n
   Eigen::Vector3d g_t = Eigen::Vector3d::Zero();         // elastic tangential gap (D-14)
   Eigen::Vector3d force = Eigen::Vector3d::Zero();       // total force on the node (normal + friction)
   Eigen::Vector3d friction = Eigen::Vector3d::Zero();    // friction part f
@@ -51,10 +52,23 @@ struct ContactEval {
   Eigen::Matrix<double, 6, 6> tangent = Eigen::Matrix<double, 6, 6>::Zero();   // d residual / d[du; a]
 };
 
+// Normal force of a step: end-of-step penalty (R-22, Newmark) or the discrete gradient of the
+// penalty potential V(g) = eps_n <-g>^2 / 2 between the step's end points, for which
+// f_N . (x_{n+1} - x_n) = -(V(g_{n+1}) - V(g_n)) holds exactly.
+enum class NormalForce { EndPoint, DiscreteGradient };
+
 // x_start: node position at the start of the step; x: current iterate; alpha: incremental
 // Rodrigues parameters of the node in this step.
 ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const ContactState& state,
                              const Eigen::Vector3d& x_start, const Eigen::Vector3d& x,
-                             const Eigen::Vector3d& alpha);
+                             const Eigen::Vector3d& alpha,
+                             NormalForce normal_force = NormalForce::EndPoint);
+
+// Discrete gradient of V(g) = eps_n <-g>^2 / 2 (README R-50): value D = (V(g1) - V(g0))/(g1 - g0)
+// (V'(g_mid) when g1 = g0) and its derivative dD/dg1.
+struct PenaltyGradient {
+  double value = 0.0, derivative = 0.0;
+};
+PenaltyGradient penalty_discrete_gradient(double eps_n, double g0, double g1);
 
 }  // namespace rollspec::rolling

@@ -147,4 +147,95 @@ CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
   return out;
 }
 
+double puck_axial_inertia(const PuckParams& p) { return 0.5 * p.mass * p.radius * p.radius; }
+
+Model puck_model(const PuckParams& p) {
+  Model m;
+  const int n = m.add_node(Vector3d::Zero());
+  const double Ia = puck_axial_inertia(p), It = p.mass * (3.0 * p.radius * p.radius + p.height * p.height) / 12.0;
+  m.bodies.push_back(RigidBody{n, p.mass, Vector3d(It, Ia, It).asDiagonal()});
+  m.v0 = {p.v0};
+  m.w0 = {Vector3d(0.0, p.omega0, 0.0)};
+  for (int dof : {1, 3, 5}) m.imposed.push_back(ImposedDof{n, dof, 0.0, TimeSeries::constant(1.0)});
+  const double a = p.half_width;
+  m.planes = {make_plane(Vector3d(a, 0, 0), -Vector3d::UnitX()), make_plane(Vector3d(-a, 0, 0), Vector3d::UnitX()),
+              make_plane(Vector3d(0, 0, a), -Vector3d::UnitZ()), make_plane(Vector3d(0, 0, -a), Vector3d::UnitZ())};
+  for (int w = 0; w < 4; ++w) m.contacts.push_back(ContactPair{n, w, ContactLaw{p.radius, p.mu, p.eps_n, p.eps_t, true}});
+  if (p.force_peak != 0.0 || p.moment_peak != 0.0) {
+    const TimeSeries pulse{{0.0, 0.5 * p.pulse, p.pulse}, {0.0, 1.0, 0.0}};
+    m.loads.push_back(NodalLoad{n, Vector3d(0, 0, p.force_peak), Vector3d(0, p.moment_peak, 0), pulse});
+  }
+  return m;
+}
+
+std::vector<Impact> find_impacts(const History& h, int node) {
+  std::vector<Impact> out;
+  const std::size_t nd = static_cast<std::size_t>(node);
+  auto active = [&](std::size_t k, int* pair) {
+    for (std::size_t c = 0; c < h.contact[k].size(); ++c)
+      if (h.contact[k][c].active || h.contact[k][c].force.squaredNorm() > 0.0) {
+        if (pair) *pair = static_cast<int>(c);
+        return true;
+      }
+    return false;
+  };
+  auto energy = [&](std::size_t k) {
+    const Energies& e = h.energy[k];
+    return e.kinetic + e.penalty + e.tangential_elastic;
+  };
+  std::size_t k = 1;
+  while (k < h.time.size()) {
+    int pair = -1;
+    if (!active(k, &pair)) {
+      ++k;
+      continue;
+    }
+    Impact im;
+    im.pair = pair;
+    im.t_start = h.time[k];
+    im.energy_before = energy(k - 1);
+    im.v_before = h.velocity[k - 1][nd];
+    im.w_before = h.angular_velocity[k - 1][nd];
+    while (k < h.time.size() && active(k, nullptr)) {
+      for (const ContactOutput& c : h.contact[k]) im.max_penetration = std::max(im.max_penetration, -c.g_n);
+      ++k;
+    }
+    if (k >= h.time.size()) break;  // still in contact at the end: incomplete impact
+    im.t_end = h.time[k];
+    im.energy_after = energy(k);
+    im.v_after = h.velocity[k][nd];
+    im.w_after = h.angular_velocity[k][nd];
+    out.push_back(im);
+  }
+  return out;
+}
+
+Model flying_beam_model(const FlyingBeamParams& p) {
+  Model m;
+  BeamSection s;
+  s.EA = p.EA;
+  s.GA2 = s.GA3 = p.GA;
+  s.GJ = p.GJ;
+  s.EI2 = s.EI3 = p.EI;
+  s.rhoA = p.mass_per_length;
+  s.rhoI2 = s.rhoI3 = 0.25 * p.mass_per_length * p.radius * p.radius;
+  s.rhoJ1 = 0.5 * p.mass_per_length * p.radius * p.radius;
+  s.outer_radius = p.radius;
+  m.sections.push_back(s);
+  const double node_mass = p.mass_per_length * p.length / (2.0 * p.n_elements);
+  const double pen = p.start_penetration >= 0.0 ? p.start_penetration : node_mass * p.g / p.eps_n;
+  const double z = p.radius - pen;
+  const std::vector<int> ids = add_straight_beam(m, Vector3d(-0.5 * p.length, 0, z), Vector3d(0.5 * p.length, 0, z),
+                                                 p.n_elements, 0, Vector3d::UnitY());
+  m.planes.push_back(make_plane(Vector3d::Zero(), Vector3d::UnitZ()));
+  m.planes.push_back(make_plane(Vector3d(0, p.wall_distance, 0), Vector3d(-1, -1, 0)));
+  for (int pl = 0; pl < 2; ++pl)
+    for (int id : ids) m.contacts.push_back(ContactPair{id, pl, ContactLaw{p.radius, p.mu, p.eps_n, p.eps_t, true}});
+  m.gravity = Vector3d(0, 0, -p.g);
+  TimeSeries ts = TimeSeries::ramp(0.0, p.ramp);
+  if (p.force_end > p.ramp) ts = TimeSeries{{0.0, p.ramp, p.force_end}, {0.0, 1.0, 0.0}};
+  m.loads.push_back(NodalLoad{ids[ids.size() / 2], Vector3d(0, p.force_peak, 0), Vector3d::Zero(), ts});
+  return m;
+}
+
 }  // namespace rollspec::rolling

@@ -79,4 +79,51 @@ struct CantileverRun {
 CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
                              const std::vector<double>& snapshot_times);
 
+// ---- seed 000 example 4.3: puck sliding between walls ------------------------------
+// Rigid puck (one rigid-body node, sphere radius r, axis y, height h) in the plane y = 0:
+// y displacement and the x, z rotations imposed (the floor is frictionless and never
+// opens, as in the seed); four walls x = +-half_width, z = +-half_width (normals inward),
+// one rolling contact pair per wall. Optional seed-style start: force (0, 0, Fz) and moment
+// (0, My, 0) with a triangular pulse 0 -> peak at pulse/2 -> 0 at pulse (seed Fig. 19 gives
+// the peaks 3 x 1e4 N and 3 x 5e3 N m over 0.1 s; the pulse shape is our reading of it).
+struct PuckParams {
+  double radius = 0.25, mass = 1e3, height = 1.0, half_width = 1.0;
+  double mu = 0.0, eps_n = 1e8, eps_t = 1e7;
+  Eigen::Vector3d v0 = Eigen::Vector3d::Zero();  // initial velocity (x, 0, z)
+  double omega0 = 0.0;                           // initial spin about y
+  double force_peak = 0.0, moment_peak = 0.0, pulse = 0.1;
+};
+Model puck_model(const PuckParams& p);
+double puck_axial_inertia(const PuckParams& p);  // m r^2 / 2
+
+// Impacts found in a history recorded every step: maximal runs of records with at least
+// one active contact. Values just before the first and just after the last contact record.
+struct Impact {
+  double t_start = 0.0, t_end = 0.0;
+  int pair = -1;  // contact pair of the first active record
+  double energy_before = 0.0, energy_after = 0.0;  // kinetic + penalty + tangential_elastic
+  Eigen::Vector3d v_before = Eigen::Vector3d::Zero(), v_after = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_before = Eigen::Vector3d::Zero(), w_after = Eigen::Vector3d::Zero();
+  double max_penetration = 0.0;
+};
+std::vector<Impact> find_impacts(const History& h, int node = 0);
+
+// ---- seed 000 example 4.4: flying beam ----------------------------------------------
+// Straight beam of length L along x centred at (0, 0, r) lying on the plane z = 0 (normal +z),
+// a second plane through (0, wall_distance, 0) with normal (-1, -1, 0) (seed: 1000), gravity
+// -g z, every node a rolling contact sphere of radius r with both planes. Seed data: EA = 3.6e8,
+// EI = GJ = 9.2e9, GA = 1.8e8, mass 1.3e-3 per length, r = 25, L = 1000, mu = 0.8,
+// eps_n = eps_t = 1e3, 10 elements, dt = 1e-3, t = 0..20, lateral force F_y at the centre node
+// ramped 0 -> force_peak over ramp (seed Fig. 25: 1e3 at t = 1). Rotary inertia per length from
+// the mass per length and a solid circular section (rho I = m r^2 / 4, rho J = m r^2 / 2).
+struct FlyingBeamParams {
+  double EA = 3.6e8, EI = 9.2e9, GJ = 9.2e9, GA = 1.8e8, mass_per_length = 1.3e-3;
+  double radius = 25.0, length = 1000.0, g = 9.81, wall_distance = 1000.0;
+  double mu = 0.8, eps_n = 1e3, eps_t = 1e3;
+  int n_elements = 10;
+  double force_peak = 1e3, ramp = 1.0, force_end = -1.0;  // force_end > 0: force back to 0 at force_end
+  double start_penetration = -1.0;  // < 0: the static value (mass per node) g / eps_n
+};
+Model flying_beam_model(const FlyingBeamParams& p);
+
 }  // namespace rollspec::rolling

@@ -39,4 +39,34 @@ void rotary_newmark_update(const Matrix3d& Rn, double dt, const Vector3d& alpha,
   A = A1;
 }
 
+RotaryInertiaEval rotary_inertia_midpoint(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn,
+                                          double dt, const Vector3d& alpha) {
+  using J3 = Jet2<3>;
+  Vec3<J3> a;
+  for (int i = 0; i < 3; ++i) a[i] = J3::variable(alpha(i), i);
+  const Vec3<J3> b = mul_t(Rn, a);
+  Vec3<J3> W, Wm, D;
+  for (int i = 0; i < 3; ++i) {
+    W[i] = (2.0 / dt) * b[i] - Wn(i);
+    Wm[i] = (1.0 / dt) * b[i];
+    D[i] = (2.0 / (dt * dt)) * (b[i] - dt * Wn(i));  // (W_{n+1} - W_n)/dt
+  }
+  const Vec3<J3> h = add(mul(J, D), cross(Wm, mul(J, Wm)));
+  const Vec3<J3> r = xit_apply(a, q_apply(a, mul(Rn, h)));
+  RotaryInertiaEval out;
+  for (int i = 0; i < 3; ++i) {
+    out.residual(i) = r[i].v;
+    out.W(i) = W[i].v;
+    out.A(i) = D[i].v;
+    for (int j = 0; j < 3; ++j) out.tangent(i, j) = r[i].g[j];
+  }
+  return out;
+}
+
+void rotary_midpoint_update(const Matrix3d& Rn, double dt, const Vector3d& alpha, Vector3d& W, Vector3d& A) {
+  const Vector3d b = Rn.transpose() * alpha;
+  A = 2.0 / (dt * dt) * (b - dt * W);
+  W = 2.0 / dt * b - W;
+}
+
 }  // namespace rollspec::rolling

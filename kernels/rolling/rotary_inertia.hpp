@@ -27,4 +27,15 @@ RotaryInertiaEval rotary_inertia(const Eigen::Matrix3d& J, const Eigen::Matrix3d
 void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
                            Eigen::Vector3d& W, Eigen::Vector3d& A);
 
+// Energy-consistent (implicit midpoint) variant, README R-51: with b = R_n^T a,
+//   W_{n+1} = 2 b/dt - W_n,  W_m = b/dt = (W_n + W_{n+1})/2,
+//   h = J (W_{n+1} - W_n)/dt + W_m x J W_m,  r(a) = Xi(a)^T Q(a) R_n h,
+// so that T_{n+1} - T_n = b . h  (= a . m for r = Xi^T m): kinetic energy changes exactly by
+// the work a . m of the applied spatial moment m. A is set to (W_{n+1} - W_n)/dt.
+RotaryInertiaEval rotary_inertia_midpoint(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
+                                          const Eigen::Vector3d& Wn, double dt,
+                                          const Eigen::Vector3d& alpha);
+void rotary_midpoint_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
+                            Eigen::Vector3d& W, Eigen::Vector3d& A);
+
 }  // namespace rollspec::rolling

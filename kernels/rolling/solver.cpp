@@ -139,13 +139,19 @@ void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, doubl
   const Model& m = S.model_;
   const auto& nodes = S.nodes_;
   R.setZero(6 * nn);
-  const double gs = m.gravity_series(t1);
+  // energy-consistent integrator: midpoint rule, loads averaged over the step
+  const bool mid = mode == Mode::Dynamic && S.opt_.integrator == Integrator::EnergyConsistent;
+  auto series = [&](const TimeSeries& ts) { return mid ? 0.5 * (ts(S.t_) + ts(t1)) : ts(t1); };
+  const double gs = series(m.gravity_series);
   const Vector3d grav = gs * m.gravity;
-  const double c2 = (mode == Mode::Dynamic) ? 4.0 / (dt * dt) : 0.0;
+  const double c2 = (mode == Mode::Dynamic) ? (mid ? 2.0 : 4.0) / (dt * dt) : 0.0;
   auto du = [&](int a) { return Vector3d(q.segment<3>(6 * a)); };
   auto al = [&](int a) { return Vector3d(q.segment<3>(6 * a + 3)); };
-  // translational Newmark acceleration of node a (trapezoidal, beta = 1/4, gamma = 1/2)
-  auto acc = [&](int a) { return Vector3d(c2 * (du(a) - dt * nodes[a].v) - nodes[a].a); };
+  // translational acceleration of node a: Newmark trapezoidal a_{n+1}, or the midpoint
+  // mean acceleration (v_{n+1} - v_n)/dt = 2 (du - dt v_n)/dt^2
+  auto acc = [&](int a) {
+    return mid ? Vector3d(c2 * (du(a) - dt * nodes[a].v)) : Vector3d(c2 * (du(a) - dt * nodes[a].v) - nodes[a].a);
+  };
 
   if (K) {  // every node's diagonal block is part of the pattern
     const Eigen::Matrix<double, 6, 6> Z = Eigen::Matrix<double, 6, 6>::Zero();
@@ -210,7 +216,8 @@ void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, doubl
     R.segment<3>(6 * nd) -= b.mass * grav;
     Eigen::Matrix<double, 6, 6> Kb = Eigen::Matrix<double, 6, 6>::Zero();
     if (mode == Mode::Dynamic) {
-      const RotaryInertiaEval ri = rotary_inertia(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd));
+      const RotaryInertiaEval ri = mid ? rotary_inertia_midpoint(b.inertia, nodes[nd].R, nodes[nd].W, dt, al(nd))
+                                       : rotary_inertia(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd));
       R.segment<3>(6 * nd) += b.mass * acc(nd);
       R.segment<3>(6 * nd + 3) += ri.residual;
       Kb.block<3, 3>(0, 0).diagonal().array() += b.mass * c2;
@@ -225,7 +232,7 @@ void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, doubl
   }
 
   for (const NodalLoad& L : m.loads) {
-    const double s = L.series(t1);
+    const double s = series(L.series);
     const int nd = L.node;
     R.segment<3>(6 * nd) -= s * L.force;
     // pseudo-moment Xi^T m of a fixed-axis spatial moment and its load stiffness
@@ -240,7 +247,8 @@ void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, doubl
     const ContactPair& cp = m.contacts[c];
     const int nd = cp.node;
     const ContactEval ev = evaluate_contact(m.planes[static_cast<std::size_t>(cp.plane)], cp.law,
-                                            S.cstate_[c], nodes[nd].x, nodes[nd].x + du(nd), al(nd));
+                                            S.cstate_[c], nodes[nd].x, nodes[nd].x + du(nd), al(nd),
+                                            mid ? NormalForce::DiscreteGradient : NormalForce::EndPoint);
     R.segment<6>(6 * nd) += ev.residual;
     add_block<6>(K, dofs6(nd), mode == Mode::Mass ? Eigen::Matrix<double, 6, 6>::Zero() : ev.tangent);
     if (ce) (*ce)[c] = ev;
@@ -333,10 +341,53 @@ Solver::Solver(Model model, SolverOptions options, double t0)
     }
     I.mpts.push_back(mp);
   }
+  if (opt_.integrator == Integrator::EnergyConsistent && !m.beams.empty())
+    throw std::invalid_argument("Solver: the energy-consistent integrator supports rigid bodies only (no beams)");
+  // lumped node masses: rigid bodies plus row sums of the consistent beam mass
+  node_mass_.assign(m.X.size(), 0.0);
+  for (const RigidBody& b : m.bodies) node_mass_[static_cast<std::size_t>(b.node)] += b.mass;
+  for (std::size_t e = 0; e < m.beams.size(); ++e) {
+    const BeamSection& sec = m.sections[static_cast<std::size_t>(m.beams[e].section)];
+    for (const MassPoint& p : I.mpts[e]) {
+      double N[3], dN[3];
+      quadratic_shape(p.xi, N, dN);
+      for (int k = 0; k < 3; ++k) node_mass_[static_cast<std::size_t>(m.beams[e].nodes[k])] += N[k] * p.weight * p.jac * sec.rhoA;
+    }
+  }
   cstate_.assign(m.contacts.size(), ContactState{});
   contact_out_.assign(m.contacts.size(), ContactOutput{});
+  // initial penalty energy of contacts closed at t0 (forces follow in the first step)
+  for (std::size_t c = 0; c < m.contacts.size(); ++c) {
+    const ContactPair& cp = m.contacts[c];
+    const Plane& pl = m.planes[static_cast<std::size_t>(cp.plane)];
+    const double g = (nodes_[static_cast<std::size_t>(cp.node)].x - pl.point).dot(pl.normal) - cp.law.radius;
+    contact_out_[c].g_n = g;
+    if (g < 0.0) {
+      contact_out_[c].penalty = 0.5 * cp.law.eps_n * g * g;
+      I.penalty_energy += contact_out_[c].penalty;
+    }
+  }
   reactions_.assign(m.imposed.size(), 0.0);
   if (opt_.analysis == Analysis::Dynamic && opt_.consistent_initial_acceleration) initial_acceleration();
+  acc_.initial_balance = energies().balance();
+}
+
+double Solver::impact_step_limit(double dt) const {
+  double lim = dt;
+  if (!(opt_.impact_step_fraction > 0.0)) return lim;
+  const double two_pi = 6.283185307179586;
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const ContactPair& cp = model_.contacts[c];
+    const std::size_t nd = static_cast<std::size_t>(cp.node);
+    if (!(node_mass_[nd] > 0.0) || !(cp.law.eps_n > 0.0)) continue;
+    const Plane& pl = model_.planes[static_cast<std::size_t>(cp.plane)];
+    const double g = (nodes_[nd].x - pl.point).dot(pl.normal) - cp.law.radius;
+    const double gdot = nodes_[nd].v.dot(pl.normal);
+    // closed, or predicted to close within dt at the current normal velocity
+    if (cstate_[c].active || g <= 0.0 || g + dt * gdot <= 0.0)
+      lim = std::min(lim, opt_.impact_step_fraction * two_pi * std::sqrt(node_mass_[nd] / cp.law.eps_n));
+  }
+  return lim;
 }
 
 Solver::~Solver() = default;
@@ -384,7 +435,7 @@ void Solver::residual_and_tangent(const VectorXd& q, double t_next, double dt, V
   impl_->assemble(*this, q, t_next, dt, mode, r, K ? &ds : nullptr, nullptr);
 }
 
-bool Solver::try_step(double t1, double dt, StepReport& rep) {
+bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetration_cut) {
   Impl& I = *impl_;
   const Model& m = model_;
   const Mode mode = opt_.analysis == Analysis::Dynamic ? Mode::Dynamic : Mode::Static;
@@ -465,7 +516,17 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     if (!std::isfinite(last)) return false;
   }
 
+  // ---- impact control: reject a step that opens a contact too deep (R-54) ----
+  if (allow_penetration_cut && opt_.max_new_penetration > 0.0)
+    for (std::size_t c = 0; c < m.contacts.size(); ++c)
+      if (!cstate_[c].active && I.cevals[c].active && -I.cevals[c].g_n > opt_.max_new_penetration) {
+        rep.penetration_cuts = 1;
+        return false;
+      }
+
   // ---- commit (README R-41) ----
+  const bool mid = mode == Mode::Dynamic && opt_.integrator == Integrator::EnergyConsistent;
+  // external work: trapezoidal (Newmark, R-43) = exact work of the step-averaged loads
   const VectorXd f0 = I.external(*this, t_), f1 = I.external(*this, t1);
   for (int a = 0; a < I.nn; ++a) {
     const Vector3d du = q.segment<3>(6 * a), al = q.segment<3>(6 * a + 3);
@@ -484,15 +545,19 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
   I.tangential_energy = 0.0;
   for (std::size_t c = 0; c < m.contacts.size(); ++c) {
     const ContactEval& ev = I.cevals[c];
+    if (ev.active && !cstate_[c].active) rep.new_penetration = std::max(rep.new_penetration, -ev.g_n);
     acc_.friction_dissipation += ev.dissipation;
-    {  // trapezoidal work of friction force and moment on the node
+    {  // trapezoidal work of friction force and moment on the node; midpoint: the
+       // end-point friction acts over the whole step
       const int nd = m.contacts[c].node;
       const ContactOutput& prev = contact_out_[c];
-      acc_.friction_work -= 0.5 * (prev.friction + ev.friction).dot(q.segment<3>(6 * nd)) +
-                            0.5 * (prev.moment + ev.moment).dot(q.segment<3>(6 * nd + 3));
+      const Vector3d fa = mid ? ev.friction : Vector3d(0.5 * (prev.friction + ev.friction));
+      const Vector3d ma = mid ? ev.moment : Vector3d(0.5 * (prev.moment + ev.moment));
+      acc_.friction_work -= fa.dot(q.segment<3>(6 * nd)) + ma.dot(q.segment<3>(6 * nd + 3));
     }
+    const double pen = ev.active ? 0.5 * m.contacts[c].law.eps_n * ev.g_n * ev.g_n : 0.0;
     if (ev.active) {
-      I.penalty_energy += 0.5 * m.contacts[c].law.eps_n * ev.g_n * ev.g_n;
+      I.penalty_energy += pen;
       I.tangential_energy += ev.tangential_energy;
       cstate_[c] = ev.next;
     } else {
@@ -502,6 +567,7 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
     o.active = ev.active;
     o.slip = ev.slip;
     o.g_n = ev.g_n;
+    o.penalty = pen;
     o.force = ev.force;
     o.friction = ev.friction;
     o.moment = ev.moment;
@@ -530,7 +596,11 @@ bool Solver::try_step(double t1, double dt, StepReport& rep) {
   for (int a = 0; a < I.nn; ++a) {
     NodeState& n = nodes_[a];
     const Vector3d du = q.segment<3>(6 * a), al = q.segment<3>(6 * a + 3);
-    if (mode == Mode::Dynamic) {
+    if (mid) {  // midpoint: v_{n+1} = 2 du/dt - v_n, a = mean acceleration of the step
+      n.a = 2.0 / (dt * dt) * (du - dt * n.v);
+      n.v = 2.0 / dt * du - n.v;
+      rotary_midpoint_update(n.R, dt, al, n.W, n.A);
+    } else if (mode == Mode::Dynamic) {
       const Vector3d a1 = 4.0 / (dt * dt) * (du - dt * n.v) - n.a;
       n.v += 0.5 * dt * (n.a + a1);
       n.a = a1;
@@ -550,9 +620,20 @@ StepReport Solver::advance(double t_target) {
   double h = h0;
   int ok_in_row = 0;
   while (t_ < t_target - 1e-12 * h0) {
-    const double dt = std::min(h, t_target - t_);
+    const double rest = t_target - t_;
+    double dt = std::min(h, rest);
+    if (opt_.impact_step_fraction > 0.0) {  // equal sub-steps no longer than the limit
+      const double lim = impact_step_limit(dt);
+      if (lim < dt) {
+        dt = rest / std::ceil(rest / lim - 1e-9);
+        dt = std::min(dt, lim * (1.0 + 1e-9));
+        ++rep.limited_steps;
+      }
+    }
     StepReport sub;
-    if (try_step(t_ + dt, dt, sub)) {
+    if (try_step(t_ + dt, dt, sub, rep.cuts < opt_.max_cuts)) {
+      ++rep.steps;
+      rep.new_penetration = std::max(rep.new_penetration, sub.new_penetration);
       rep.iterations += sub.iterations;
       rep.residual_norms = sub.residual_norms;
       if (++ok_in_row >= 2 && h < h0) {
@@ -562,6 +643,7 @@ StepReport Solver::advance(double t_target) {
     } else {
       rep.iterations += sub.iterations;  // failed attempts count too
       rep.residual_norms = sub.residual_norms;
+      rep.penetration_cuts += sub.penetration_cuts;
       if (++rep.cuts > opt_.max_cuts) return rep;
       h *= 0.5;
       ok_in_row = 0;
@@ -591,13 +673,16 @@ Energies Solver::energies() const {
       quadratic_shape(p.xi, N, dN);
       Vector3d v = Vector3d::Zero();
       for (int k = 0; k < 3; ++k) v += N[k] * nodes_[be.nodes[k]].v;
-      E.kinetic += 0.5 * p.weight * p.jac * (sec.rhoA * v.squaredNorm() + p.W.dot(Js * p.W));
+      E.kinetic_translation += 0.5 * p.weight * p.jac * sec.rhoA * v.squaredNorm();
+      E.kinetic_rotation += 0.5 * p.weight * p.jac * p.W.dot(Js * p.W);
     }
   }
   for (const RigidBody& b : model_.bodies) {
     const NodeState& n = nodes_[b.node];
-    E.kinetic += 0.5 * b.mass * n.v.squaredNorm() + 0.5 * n.W.dot(b.inertia * n.W);
+    E.kinetic_translation += 0.5 * b.mass * n.v.squaredNorm();
+    E.kinetic_rotation += 0.5 * n.W.dot(b.inertia * n.W);
   }
+  E.kinetic = E.kinetic_translation + E.kinetic_rotation;
   return E;
 }
 
@@ -666,6 +751,10 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
     const StepReport rep = S.advance(double(k) * ro.dt);
     h.newton_iterations += rep.iterations;
     h.cuts += rep.cuts;
+    h.substeps += rep.steps;
+    h.limited_steps += rep.limited_steps;
+    h.penetration_cuts += rep.penetration_cuts;
+    h.new_penetration = std::max(h.new_penetration, rep.new_penetration);
     if (!rep.converged) {
       h.completed = false;
       h.failed_at = S.time();

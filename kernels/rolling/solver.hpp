@@ -21,6 +21,13 @@ namespace rollspec::rolling {
 
 enum class Analysis { QuasiStatic, Dynamic };
 
+// Dynamic time integrator. Newmark: trapezoidal rule, forces at t_{n+1}.
+// EnergyConsistent: implicit midpoint for translations and rotations with the
+// discrete-gradient normal penalty force, loads averaged over the step and friction at
+// t_{n+1}; the discrete energy balance then holds to the Newton tolerance. Rigid-body
+// models only (beam strain energy has no discrete gradient here): the Solver refuses beams.
+enum class Integrator { Newmark, EnergyConsistent };
+
 struct SolverOptions {
   Analysis analysis = Analysis::Dynamic;
   int max_iterations = 30;
@@ -29,6 +36,15 @@ struct SolverOptions {
   int max_cuts = 10;         // step halvings allowed below the nominal step
   int max_line_search = 0;   // backtracking halvings per Newton iteration (0: pure Newton)
   bool consistent_initial_acceleration = true;  // dynamic: solve M a0 = f(0) at t0
+  Integrator integrator = Integrator::Newmark;
+  // Impact step control (README R-54), both off when 0:
+  // impact_step_fraction > 0: while a contact is closed, or predicted to close within the step
+  // from the current normal velocity, the step is limited to fraction * 2 pi sqrt(m_node/eps_n)
+  // (m_node: rigid-body mass plus lumped beam mass of the node).
+  double impact_step_fraction = 0.0;
+  // max_new_penetration > 0: a converged step in which a contact closes with -g_n larger than
+  // this is rejected and halved (counts as a cut; accepted once max_cuts is reached).
+  double max_new_penetration = 0.0;
 };
 
 struct NodeState {
@@ -39,7 +55,9 @@ struct NodeState {
 };
 
 struct Energies {
-  double kinetic = 0.0;
+  double kinetic = 0.0;              // kinetic_translation + kinetic_rotation
+  double kinetic_translation = 0.0;  // sum m v^2 / 2 (consistent beam mass, rigid bodies)
+  double kinetic_rotation = 0.0;     // sum W . J W / 2 (beam mass points, rigid bodies)
   double strain = 0.0;
   double penalty = 0.0;              // normal penalty energy eps_n g_n^2 / 2
   double tangential_elastic = 0.0;   // energy in the stick springs |f_t|^2 / (2 eps_t)
@@ -55,11 +73,15 @@ struct Energies {
   double balance() const {
     return kinetic + strain + penalty - external_work - imposed_work + friction_work;
   }
+  double initial_balance = 0.0;  // balance() at the solver's start time
+  // balance() - initial_balance: 0 for an exact discrete energy balance
+  double balance_error() const { return balance() - initial_balance; }
 };
 
 struct ContactOutput {
   bool active = false, slip = false;
   double g_n = 0.0;
+  double penalty = 0.0;  // normal penalty energy eps_n <-g_n>^2 / 2 of this pair
   Eigen::Vector3d force = Eigen::Vector3d::Zero();     // on the node, normal + friction
   Eigen::Vector3d friction = Eigen::Vector3d::Zero();
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();    // (C - x_o) x f
@@ -69,7 +91,11 @@ struct ContactOutput {
 struct StepReport {
   bool converged = false;
   int iterations = 0;                 // Newton iterations (line-search trials and failed attempts included)
-  int cuts = 0;                       // halvings used to reach the target time
+  int cuts = 0;                       // halvings used to reach the target time (penetration cuts included)
+  int steps = 0;                      // converged sub-steps taken to reach the target time
+  int limited_steps = 0;              // sub-steps shortened by impact_step_fraction
+  int penetration_cuts = 0;           // steps rejected for a new contact deeper than max_new_penetration
+  double new_penetration = 0.0;       // deepest -g_n of contacts that closed in the accepted sub-steps
   std::vector<double> residual_norms; // Newton history of the last sub-step
 };
 
@@ -103,6 +129,11 @@ class Solver {
   std::vector<BeamResultant> beam_resultants() const;
   // Number of SparseLU::analyzePattern calls so far (1 after the first iteration).
   int pattern_analyses() const;
+  // Lumped node masses (rigid-body mass + row sums of the consistent beam mass), R-54.
+  const std::vector<double>& node_masses() const { return node_mass_; }
+  // Largest step allowed by impact_step_fraction for a step of length dt from the current
+  // state (dt itself when no contact is closed or closing), R-54.
+  double impact_step_limit(double dt) const;
 
   // Residual and tangent of the full model (6 DOFs per node, [du, a] per node) for the
   // given increments from the committed state; for tests (finite-difference checks).
@@ -120,8 +151,9 @@ class Solver {
   std::vector<ContactOutput> contact_out_;
   std::vector<double> reactions_;
   Energies acc_;  // accumulated works and dissipation
+  std::vector<double> node_mass_;
 
-  bool try_step(double t_next, double dt, StepReport& rep);
+  bool try_step(double t_next, double dt, StepReport& rep, bool allow_penetration_cut);
   void initial_acceleration();
 };
 
@@ -142,6 +174,8 @@ struct History {
   std::vector<Energies> energy;
   std::vector<std::vector<double>> reactions;       // [record][imposed dof]
   int steps = 0, newton_iterations = 0, cuts = 0;
+  int substeps = 0, limited_steps = 0, penetration_cuts = 0;  // sums of the StepReport fields
+  double new_penetration = 0.0;  // max of StepReport::new_penetration
   bool completed = true;
   double failed_at = 0.0;
 };
