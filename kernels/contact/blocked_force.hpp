@@ -1,0 +1,136 @@
+#pragma once
+// Blocked force F0 and stiffness k0 of the linearised contact model (seed 002 §4.2, design.md D-11,
+// issue 4 item 6): a smooth ball slid along a rough strip at a fixed rigid approach d0.
+//
+// Theory (equations BF-1 … BF-7; README Eq. n are the contact kernel's README equations).
+//
+// Strip and path. The strip is a height field h on the strip grid (x-fastest, centred on the
+// origin as in Grid, longer in x than in y). The ball centre moves along y = y_c through the
+// positions x_k (strictly increasing, every step x_k − x_{k−1} = m_k dx with m_k a positive
+// integer). At position k the undeformed gap (README Eq. 5) is
+//
+//     s_i^(k) = z_ball(|r_i − (x_k, y_c)|) − h_i                                          (BF-1)
+//
+// and the blocked force is the force of the contact solve (D-7, README Eq. 6) at the FIXED rigid
+// approach w = d (the ball's lowest point at z = d below the plane h = 0, i.e. d is measured from
+// the plane h = 0 — the strip's mean plane when the heights have zero mean —, not from first
+// contact):
+//
+//     F0(x_k; d) = ΔA Σ_i p_i^(k)(d),    k(x_k; d) = dF0/dd  (frozen set, README Eq. 11)   (BF-2)
+//
+// Path means over the N positions: F̄(d) = (1/N) Σ_k F0(x_k; d), K̄(d) = (1/N) Σ_k k(x_k; d).
+// Between contact-set changes K̄ is the exact derivative of F̄ (README Eq. 11 summed), so
+//
+//     d0 solves F̄(d0) = W (the ball's weight);   k0 = K̄(d0)                               (BF-3)
+//
+// found by safeguarded Newton on d: d ← d + (W − F̄(d)) / K̄(d) inside the bracket
+// [d_lo, d_hi] with F̄(d_lo) < W ≤ F̄(d_hi) (F̄ is non-decreasing in d), bisection when the Newton
+// step leaves the bracket or K̄ = 0, the bracket grown by doubling steps while one side is
+// unknown. Start: the smooth Hertz approach for W (design.md §4),
+//
+//     d_start = (3 W / (4 E* R^{1/2}))^{2/3}                                               (BF-4)
+//
+// Stop when |F̄(d) − W| ≤ load_tolerance · W (every solve of that path converged).
+//
+// Moving window. The contact solver's grid is a window of the strip: same dx, dy, nx_w ≤ nx_s,
+// ny_w ≤ ny_s. Its rows are fixed, centred on y_c (clamped to the strip); at position k it covers
+// strip columns j_k … j_k + nx_w − 1 with
+// j_k = clamp(j_0 + Σ_{l≤k} m_l, 0, nx_s − nx_w), j_0 the column start that centres the window on
+// x_0 (so the ball sits at the same sub-cell offset at every position). On the open half-space
+// (README Eq. 3) the window solve equals the solve on the whole strip exactly as long as every
+// cell that can touch lies inside the window; a cell can touch only if it has rigid interference,
+// so the kernel requires, at every position,
+//
+//     s_i^(k) ≥ d  for every strip cell i outside the window and for every cell on the strip's
+//     edge (first/last row and column: beyond them the surface is unknown)                (BF-5)
+//
+// i.e. d ≤ d_max(k) = min of s_i^(k) over those cells, computed once per path set-up (columns outside
+// the window are screened with the bound s_i ≥ z_ball(|x_i − x_k|) − max_iy h(x_i, ·)). A path at
+// d > d_max(k) is refused with std::invalid_argument naming the position k; the load search keeps
+// d ≤ min_k d_max(k) and is refused, naming the limiting position, if W needs more.
+// A solver grid equal to the strip grid is the special case j_k = 0 (the ball moves in the grid).
+//
+// Warm start. The ball moves by σ_k = m_k − (j_k − j_{k−1}) cells relative to the window; the
+// start of solve k is the previous field shifted with the ball (cells shifted in are 0),
+//
+//     p^(k, start)[ix, iy] = p^(k−1)[ix − σ_k, iy]                                          (BF-6)
+//
+// (`PathWarmStart::Ball`, exact for a smooth strip), or kept fixed to the strip,
+// shift −(j_k − j_{k−1}) (`PathWarmStart::Strip`: the contact spots of a rough strip stay on
+// their asperities), or cold (`PathWarmStart::Cold`). In blocked_force_at_load every path after
+// the first starts each position from the same position on the previous path (approach d'),
+// extrapolated along its frozen-set rate (README Eq. 12),
+//
+//     p^(k, start)(d) = p^(k)(d') + (d − d') dp^(k)/dd                                    (BF-6')
+//
+// (Cold: no reuse). The start only changes the iteration count: every solve is run to the
+// solver's stopping rule (README Eq. 9).
+//
+// Use in the dynamics (D-11): F_c = F0(t) + k0 (w1(ξ) − w2 + d0) + c0 (ẇ1 − ẇ2) with
+// F0(t) = F0(x = v t); the PSD of F0 along the path in cycles/m (sample rate 1/Δx) is mapped to
+// time by D-2.                                                                              (BF-7)
+#include <vector>
+
+#include "kernels/contact/contact_solver.hpp"
+#include "kernels/contact/geometry.hpp"
+#include "kernels/contact/grid.hpp"
+
+namespace rollspec::contact {
+
+enum class PathWarmStart {
+  Ball,   // previous field shifted with the ball (BF-6), the default
+  Strip,  // previous field kept on the strip (contact spots stay on their asperities)
+  Cold,   // every position from a cold start (reference)
+};
+
+struct BlockedForceOptions {
+  double centre_y = 0.0;  // lateral coordinate y_c of the path in the strip grid (m)
+  PathWarmStart warm_start = PathWarmStart::Ball;
+  double load_tolerance = 1e-10;  // blocked_force_at_load: stop when |F̄ − W| ≤ load_tolerance · W
+  int max_paths = 60;             // blocked_force_at_load: path evaluations allowed (BF-3)
+  // blocked_force_at_load keeps each position's field and rate dp/dd (16 bytes per window cell and
+  // position) to start the next path from (BF-6') while they fit in this many bytes;
+  // beyond it only the first position's.
+  std::size_t max_stored_bytes = std::size_t{256} << 20;
+};
+
+struct BlockedForcePath {
+  std::vector<double> position;   // x_k (m, strip coordinates)
+  std::vector<double> force;      // F0(x_k; d0) (N), BF-2
+  std::vector<double> stiffness;  // k(x_k; d0) (N/m), frozen set; NaN if not computed
+  double approach = 0.0;          // d0 (m), from the plane h = 0 (BF-2)
+  double k0 = 0.0;                // K̄(d0) (N/m), BF-3; NaN if stiffness not computed
+  double mean_force = 0.0;        // F̄(d0) (N)
+  double max_error = 0.0;         // largest stopping-rule ε (README Eq. 9) of the returned path
+  int paths = 0;                  // path evaluations (1 for blocked_force_path)
+  int solves = 0;                 // contact solves over all paths
+  int iterations = 0;             // CG iterations of those solves
+  int stiffness_iterations = 0;   // CG iterations of their frozen-set stiffness solves
+  // Every solve (and stiffness solve, if computed) of the returned path converged; for
+  // blocked_force_at_load also |F̄ − W| ≤ load_tolerance · W. Never true for an unfinished result.
+  bool converged = false;
+};
+
+// F0 and k along the path at the fixed approach d = `approach` (BF-1, BF-2), warm-started (BF-6).
+// `solver` must be an open-boundary solver on a window of `strip` (same dx, dy; nx, ny ≤ the strip's).
+// `strip_heights`: strip.size() values (m), or empty for a smooth strip. `options` are the
+// contact solver's (hardness, tolerance, …; stiffness only if options.compute_stiffness).
+// Throws std::invalid_argument on inconsistent sizes/grids, bad positions (not strictly
+// increasing, a step that is not a whole number of cells dx), or a position where the contact
+// can leave the window or the strip (BF-5; the message names the position).
+BlockedForcePath blocked_force_path(ContactSolver& solver, const Grid& strip, const std::vector<double>& strip_heights,
+                                    double radius, BallShape shape, const std::vector<double>& positions,
+                                    double approach, const SolverOptions& options = {},
+                                    const BlockedForceOptions& path_options = {});
+
+// The path at the approach d0 whose mean force equals `load` W > 0 (BF-3, BF-4); stiffness is
+// always computed. `solves`/`iterations` count every path evaluated. An unconverged solve stops
+// the search and is returned with converged = false. Throws std::invalid_argument as
+// blocked_force_path, and when W needs an approach beyond the confinement limit (BF-5).
+BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
+                                       const std::vector<double>& strip_heights, double radius, BallShape shape,
+                                       const std::vector<double>& positions, double load,
+                                       const SolverOptions& options = {},
+                                       const BlockedForceOptions& path_options = {});
+
+}  // namespace rollspec::contact
