@@ -17,15 +17,12 @@ int modes_command(const Args& args) {
       "Prints the beam's undamped modal frequencies (Hz), damping ratios and the effective length of a\n"
       "ball-on-beam study. Nothing is computed beyond the eigenvalues.";
   po::options_description opts("options");
-  std::string study_file;
-  std::vector<std::string> sets;
-  opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
-      "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)");
+  StudyArgs study;
   po::positional_options_description pos;
-  pos.add("study", 1);
+  add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
+  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
   if (s.scene() != "ball-on-beam") s.refuse("study.scene", "rollspec modes needs a ball-on-beam study");
   const beam::ModalBeam b = scenes::study_modal_beam(s);
   std::printf("# %s beam, span %.6g m, effective length %.6g m, EI %.6g N m^2, rho A %.6g kg/m\n",

@@ -22,4 +22,11 @@ bool parse_options(const std::vector<std::string>& args, const std::string& usag
   return true;
 }
 
+void add_study_options(po::options_description& options, po::positional_options_description& positional,
+                       StudyArgs& study) {
+  options.add_options()("study", po::value(&study.file)->required(), "study file (INI)")(
+      "set", po::value(&study.sets)->composing(), "override a study key: --set section.key=value (repeatable)");
+  positional.add("study", 1);
+}
+
 }  // namespace rollspec::cli

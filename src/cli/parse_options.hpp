@@ -14,4 +14,12 @@ namespace po = boost::program_options;
 bool parse_options(const std::vector<std::string>& args, const std::string& usage, po::options_description& options,
                    const po::positional_options_description& positional, po::variables_map& vm);
 
+// The study-file positional argument and repeatable --set overrides every study command takes.
+struct StudyArgs {
+  std::string file;
+  std::vector<std::string> sets;
+};
+void add_study_options(po::options_description& options, po::positional_options_description& positional,
+                       StudyArgs& study);
+
 }  // namespace rollspec::cli

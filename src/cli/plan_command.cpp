@@ -16,18 +16,15 @@ int plan_command(const Args& args) {
       "Validates the study and prints each stage of its scene as run / cached / skipped with the\n"
       "reason. Nothing is computed and no file is written.";
   po::options_description opts("options");
-  std::string study_file;
-  std::vector<std::string> sets;
-  opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
-      "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)");
+  StudyArgs study;
   po::positional_options_description pos;
-  pos.add("study", 1);
+  add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
 
-  const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
+  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
   const auto scene = scenes::find_scene(s.scene()).make(s);
-  std::cout << "study " << study_file << ": scene " << s.scene() << ", " << s.integer("study.realisations")
+  std::cout << "study " << study.file << ": scene " << s.scene() << ", " << s.integer("study.realisations")
             << " realisations, seed " << s.integer("study.seed") << "\n";
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");
   for (const auto& p : scene->plan())

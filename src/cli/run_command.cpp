@@ -30,24 +30,22 @@ int run_command(const Args& args) {
       "--resume finishes the ensemble with a result bitwise identical to an uninterrupted run.\n"
       "Threads: OMP_NUM_THREADS. The result data do not depend on the thread count.";
   po::options_description opts("options");
-  std::string study_file, out;
-  std::vector<std::string> sets;
-  opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
-      "out,o", po::value(&out), "result file (default: the study's name with .h5, in the current directory)")(
-      "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)")(
+  StudyArgs study;
+  std::string out;
+  opts.add_options()("out,o", po::value(&out), "result file (default: the study's name with .h5, in the current directory)")(
       "resume", "reuse the completed chunks of an interrupted run")(
       "only", po::value<long long>(), "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
       "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q", "no progress output");
   po::positional_options_description pos;
-  pos.add("study", 1);
+  add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
 
-  const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
+  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
   auto scene = scenes::find_scene(s.scene()).make(s);
   if (!scene->runs_ensemble() && !scene->single_run())
-    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + study_file);
-  if (out.empty()) out = fs::path(study_file).stem().string() + ".h5";
+    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + study.file);
+  if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
   const fs::path out_dir = fs::absolute(out).parent_path();
   if (!fs::is_directory(out_dir)) throw cannot_create("output directory " + out_dir.string() + " does not exist (for --out " + out + ")");
   const bool quiet = vm.count("quiet") > 0;

@@ -25,18 +25,16 @@ int stiffness_command(const Args& args) {
       "matches is reused; one whose inputs differ, or a damaged file, is refused unless --rebuild.\n"
       "Prints the table and the stiffness at the ball's own weight next to the smooth Hertz value 2 E* a.";
   po::options_description opts("options");
-  std::string study_file, out;
-  std::vector<std::string> sets;
-  opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
-      "out,o", po::value(&out), "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
-      "rebuild", "replace a table whose inputs differ or that is damaged")("quiet,q", "no progress output")(
-      "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)");
+  StudyArgs study;
+  std::string out;
+  opts.add_options()("out,o", po::value(&out), "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
+      "rebuild", "replace a table whose inputs differ or that is damaged")("quiet,q", "no progress output");
   po::positional_options_description pos;
-  pos.add("study", 1);
+  add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (!out.empty()) sets.push_back("stiffness.table=" + std::filesystem::absolute(out).string());
-  const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
+  if (!out.empty()) study.sets.push_back("stiffness.table=" + std::filesystem::absolute(out).string());
+  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
   if (s.scene() != "stiffness" && s.scene() != "ball-on-beam")
     s.refuse("study.scene", "rollspec stiffness needs a stiffness or ball-on-beam study");
   const auto pair = scenes::study_contact_pair(s);

@@ -59,24 +59,22 @@ int texture_command(const Args& args) {
       "/surface/x, /surface/y, /surface/heights. Prints rms, skewness, kurtosis and correlation\n"
       "length per realisation and their mean. The study's scene must be `texture`.";
   po::options_description opts("options");
-  std::string study_file, out;
-  std::vector<std::string> sets;
+  StudyArgs study;
+  std::string out;
   long long count = -1;
-  opts.add_options()("study", po::value(&study_file)->required(), "study file (INI)")(
-      "out,o", po::value(&out), "texture file (default: the study's name with .h5)")(
-      "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)")(
-      "set", po::value(&sets)->composing(), "override a study key: --set section.key=value (repeatable)");
+  opts.add_options()("out,o", po::value(&out), "texture file (default: the study's name with .h5)")(
+      "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)");
   po::positional_options_description pos;
-  pos.add("study", 1);
+  add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   if (vm.count("count") && (count < 0 || count > 1000000))
     throw usage_error("--count " + std::to_string(count) + ": allowed: a whole number in [0, 1000000]");
 
-  const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
+  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
   if (s.scene() != "texture")
     s.refuse("study.scene", "rollspec texture needs a study of scene texture (this one is " + s.scene() + ")");
-  if (out.empty()) out = fs::path(study_file).stem().string() + ".h5";
+  if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   const std::size_t n_lines = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("lines.count"));
   const std::size_t n_surf = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("surface.count"));

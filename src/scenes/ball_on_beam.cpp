@@ -41,22 +41,13 @@ std::string g4(double v) {
   return buf;
 }
 
-std::vector<double> parse_positions(const Study& s, const std::string& key) {
-  std::vector<double> out;
-  std::istringstream in(s.text(key));
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    while (end && (*end == ' ' || *end == '\t')) ++end;
-    if (end == item.c_str() || (end && *end != '\0') || !std::isfinite(v))
-      s.refuse(key, "'" + item + "' is not a number; allowed: comma-separated positions in m");
-    out.push_back(v);
-  }
-  if (out.empty()) s.refuse(key, "lists no position; allowed: comma-separated positions in m");
-  return out;
-}
 }  // namespace
+
+std::vector<double> sensor_positions(const Study& s) {
+  auto v = s.numbers("sensors.positions");
+  if (v.empty()) s.refuse("sensors.positions", "lists no position; allowed: comma-separated positions in m");
+  return v;
+}
 
 std::vector<KeySpec> ball_on_beam_keys() {
   std::vector<KeySpec> k = {
@@ -158,7 +149,7 @@ class BallOnBeam final : public Scene {
  public:
   explicit BallOnBeam(const Study& s)
       : seed_(static_cast<std::uint64_t>(s.integer("study.seed"))),
-        model_{study_modal_beam(s), {}, {}, {}, s.real("signal.sample_rate"), parse_positions(s, "sensors.positions")},
+        model_{study_modal_beam(s), {}, {}, {}, s.real("signal.sample_rate"), sensor_positions(s)},
         psd_(texture_io::study_psd(s)),
         average_(s.boolean("sensors.average")),
         dopri_(s.text("signal.integrator") == "dopri5"),

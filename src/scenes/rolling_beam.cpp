@@ -19,24 +19,8 @@ using Eigen::Vector3d;
 namespace {
 const double inf = std::numeric_limits<double>::infinity();
 
-std::vector<double> numbers(const Study& s, const std::string& key, std::size_t expected = 0) {
-  std::vector<double> out;
-  std::istringstream in(s.text(key));
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    while (end && (*end == ' ' || *end == '\t')) ++end;
-    if (end == item.c_str() || *end != '\0' || !std::isfinite(v)) s.refuse(key, "'" + item + "' is not a finite number");
-    out.push_back(v);
-  }
-  if (expected && out.size() != expected)
-    s.refuse(key, "has " + std::to_string(out.size()) + " numbers; allowed: " + std::to_string(expected) + " comma-separated");
-  return out;
-}
-
 Vector3d vec(const Study& s, const std::string& key) {
-  const auto v = numbers(s, key, 3);
+  const auto v = s.numbers(key, 3);
   return {v[0], v[1], v[2]};
 }
 }  // namespace
@@ -134,7 +118,7 @@ class RollingBeam final : public Scene {
     std::vector<int> contact_nodes;
     if (s.text("contact.nodes") == "all") contact_nodes = ids;
     else
-      for (double v : numbers(s, "contact.nodes")) contact_nodes.push_back(node_index(s, "contact.nodes", v, ids));
+      for (double v : s.numbers("contact.nodes")) contact_nodes.push_back(node_index(s, "contact.nodes", v, ids));
     for (int n : contact_nodes) model_.contacts.push_back(ContactPair{n, 0, law});
     // Supports and imposed series.
     const std::string clamp = s.text("support.clamp");
@@ -144,7 +128,7 @@ class RollingBeam final : public Scene {
     if (clamp == "last" || clamp == "both")
       for (int d = 0; d < 6; ++d) model_.imposed.push_back(ImposedDof{ids.back(), d, 0.0, TimeSeries::constant()});
     if (s.text("imposed.node") != "none") {
-      const auto t = numbers(s, "imposed.times"), v = numbers(s, "imposed.values");
+      const auto t = s.numbers("imposed.times"), v = s.numbers("imposed.values");
       if (t.size() != v.size()) s.refuse("imposed.values", "needs one value per entry of [imposed] times");
       for (std::size_t i = 1; i < t.size(); ++i)
         if (!(t[i] > t[i - 1])) s.refuse("imposed.times", "must increase strictly");
@@ -154,7 +138,7 @@ class RollingBeam final : public Scene {
     }
     if (s.text("output.nodes") == "all") record_ = ids;
     else
-      for (double v : numbers(s, "output.nodes")) record_.push_back(node_index(s, "output.nodes", v, ids));
+      for (double v : s.numbers("output.nodes")) record_.push_back(node_index(s, "output.nodes", v, ids));
     options_.analysis = s.text("analysis.type") == "dynamic" ? Analysis::Dynamic : Analysis::QuasiStatic;
     options_.max_iterations = static_cast<int>(s.integer("analysis.max_iterations"));
     options_.max_cuts = static_cast<int>(s.integer("analysis.max_cuts"));

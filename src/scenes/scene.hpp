@@ -47,6 +47,15 @@ class Scene {
   virtual bool single_run() const { return false; }
 };
 
+// A scene with stages but no ensemble (`texture`, `stiffness`): its work is done by its own command.
+class StageOnlyScene : public Scene {
+ public:
+  std::size_t values_per_realisation() const override { return 0; }
+  void run_realisation(std::uint64_t, int, double*) const override {}
+  void write_results(io::Hdf5Writer&, const ensemble::EnsembleSums&) const override {}
+  bool runs_ensemble() const override { return false; }
+};
+
 struct SceneInfo {
   std::string name;
   std::string description;

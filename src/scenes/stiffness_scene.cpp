@@ -42,7 +42,7 @@ ContactPair study_contact_pair(const Study& s) {
 }
 
 namespace {
-class StiffnessScene final : public Scene {
+class StiffnessScene final : public StageOnlyScene {
  public:
   explicit StiffnessScene(const Study& s) : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
     spec_ = stiffness::table_spec(s, pair_.radius, pair_.effective_modulus);
@@ -65,10 +65,6 @@ class StiffnessScene final : public Scene {
         {"spectra", StageStatus::skipped, "the scene has no sensors"},
     };
   }
-  std::size_t values_per_realisation() const override { return 0; }
-  void run_realisation(std::uint64_t, int, double*) const override {}
-  void write_results(io::Hdf5Writer&, const ensemble::EnsembleSums&) const override {}
-  bool runs_ensemble() const override { return false; }
 
  private:
   ContactPair pair_;

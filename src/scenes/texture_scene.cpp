@@ -23,7 +23,7 @@ std::vector<KeySpec> texture_scene_keys() {
 }
 
 namespace {
-class TextureScene final : public Scene {
+class TextureScene final : public StageOnlyScene {
  public:
   explicit TextureScene(const Study& s) : lines_(s.integer("lines.count")), surfaces_(s.integer("surface.count")) {
     texture_io::study_psd(s);  // validates the PSD source (files, ranges) now
@@ -39,10 +39,6 @@ class TextureScene final : public Scene {
         {"spectra", StageStatus::skipped, "the scene has no sensors"},
     };
   }
-  std::size_t values_per_realisation() const override { return 0; }
-  void run_realisation(std::uint64_t, int, double*) const override {}
-  void write_results(io::Hdf5Writer&, const ensemble::EnsembleSums&) const override {}
-  bool runs_ensemble() const override { return false; }
 
  private:
   long long lines_, surfaces_;

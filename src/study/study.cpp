@@ -296,6 +296,31 @@ std::string Study::path(const std::string& k) const {
   return (fs::path(directory_) / p).string();
 }
 
+std::vector<std::string> Study::list(const std::string& k) const {
+  std::vector<std::string> out;
+  std::istringstream in(entry(k).value);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    item = trim(item);
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+std::vector<double> Study::numbers(const std::string& k, std::size_t expected) const {
+  std::vector<double> out;
+  for (const auto& item : list(k)) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0' || !std::isfinite(v))
+      refuse(k, "'" + item + "' is not a finite number; allowed: comma-separated numbers");
+    out.push_back(v);
+  }
+  if (expected && out.size() != expected)
+    refuse(k, "has " + std::to_string(out.size()) + " numbers; allowed: " + std::to_string(expected) + " comma-separated");
+  return out;
+}
+
 std::string Study::where(const std::string& k) const {
   const Entry& e = entry(k);
   const auto dot = k.find('.');

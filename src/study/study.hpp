@@ -43,6 +43,11 @@ class Study {
   std::string text(const std::string& full_key) const;
   bool boolean(const std::string& full_key) const;
   std::string path(const std::string& full_key) const;  // usable from the current directory
+  // A comma-separated text value as trimmed items (empty items dropped).
+  std::vector<std::string> list(const std::string& full_key) const;
+  // A comma-separated list of finite numbers; refuses a non-number, or a count other than
+  // `expected` when it is > 0.
+  std::vector<double> numbers(const std::string& full_key, std::size_t expected = 0) const;
   const Entry& entry(const std::string& full_key) const;
   const std::vector<KeySpec>& keys() const { return keys_; }
 

@@ -33,16 +33,6 @@ texture::Extension extension_of(const std::string& s) {
   return texture::Extension::error;
 }
 
-std::vector<std::string> split_list(const std::string& text) {
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(text);
-  while (std::getline(in, item, ',')) {
-    const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
-    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
-  }
-  return out;
-}
 
 std::string study_relative(const Study& s, const std::string& p) {
   if (fs::path(p).is_absolute()) return p;
@@ -98,7 +88,7 @@ texture::Profile read_profile(const std::string& path) {
 }
 
 texture::Psd profile_psd(const Study& s) {
-  const auto files = split_list(s.text("texture.profiles"));
+  const auto files = s.list("texture.profiles");
   if (files.size() < 2)
     s.refuse("texture.profiles", "names " + std::to_string(files.size()) +
                                      " profile file(s); allowed: at least 2 comma-separated CSV files");
@@ -202,7 +192,7 @@ std::string psd_input_fingerprint(const Study& s) {
   const std::string source = s.text("texture.source");
   if (source == "table") add_file(s.path("texture.table"));
   if (source == "profiles")
-    for (const auto& f : split_list(s.text("texture.profiles"))) add_file(study_relative(s, f));
+    for (const auto& f : s.list("texture.profiles")) add_file(study_relative(s, f));
   return out.str();
 }
 
