@@ -19,6 +19,28 @@ using Eigen::Vector3d;
 namespace {
 const double inf = std::numeric_limits<double>::infinity();
 
+// ';'-separated x,y,z triples.
+std::vector<Vector3d> triples(const Study& s, const std::string& key) {
+  std::vector<Vector3d> out;
+  std::istringstream in(s.text(key));
+  std::string item;
+  while (std::getline(in, item, ';')) {
+    std::vector<double> v;
+    std::istringstream parts(item);
+    std::string part;
+    while (std::getline(parts, part, ',')) {
+      char* end = nullptr;
+      const double x = std::strtod(part.c_str(), &end);
+      while (end && (*end == ' ' || *end == '\t')) ++end;
+      if (end == part.c_str() || *end != '\0' || !std::isfinite(x)) s.refuse(key, "'" + part + "' is not a finite number");
+      v.push_back(x);
+    }
+    if (v.size() != 3) s.refuse(key, "'" + item + "' is not x,y,z; allowed: x,y,z triples separated by ';'");
+    out.emplace_back(v[0], v[1], v[2]);
+  }
+  return out;
+}
+
 Vector3d vec(const Study& s, const std::string& key) {
   const auto v = s.numbers(key, 3);
   return {v[0], v[1], v[2]};
@@ -43,8 +65,9 @@ std::vector<KeySpec> rolling_beam_keys() {
       text_key("disc", "position", "centre x,y,z (m); 'rest' puts it on the plane at its static penetration", std::string("rest")),
       text_key("disc", "velocity", "initial velocity x,y,z (m/s)", std::string("0,0,0")),
       text_key("disc", "angular_velocity", "initial angular velocity x,y,z (rad/s); the disc's axis is z", std::string("0,0,0")),
-      text_key("plane", "point", "a point of the rigid plane, x,y,z (m)", std::string("0,0,0")),
-      text_key("plane", "normal", "plane normal toward the body, x,y,z", std::string("0,0,1")),
+      text_key("plane", "point", "a point of each rigid plane, x,y,z (m); several planes separated by ';'",
+               std::string("0,0,0")),
+      text_key("plane", "normal", "normal of each plane toward the body, x,y,z; ';' between planes", std::string("0,0,1")),
       real_key("contact", "friction", "-", "Coulomb coefficient mu", std::string("0.5"), 0.0, inf),
       real_key("contact", "penalty_normal", "N/m", "normal penalty eps_n", std::string("1e9"), 0.0, inf, false),
       real_key("contact", "penalty_tangential", "N/m", "tangential penalty eps_t", std::string("1e7"), 0.0, inf, false),
@@ -82,9 +105,14 @@ class RollingBeam final : public Scene {
     const Vector3d g = vec(s, "gravity.acceleration");
     model_.gravity = g;
     if (s.real("gravity.ramp_time") > 0) model_.gravity_series = TimeSeries::ramp(0.0, s.real("gravity.ramp_time"));
-    const Vector3d normal = vec(s, "plane.normal");
-    if (normal.norm() == 0.0) s.refuse("plane.normal", "is the zero vector");
-    model_.planes.push_back(make_plane(vec(s, "plane.point"), normal));
+    const auto points = triples(s, "plane.point"), normals = triples(s, "plane.normal");
+    if (points.size() != normals.size())
+      s.refuse("plane.normal", "gives " + std::to_string(normals.size()) + " normals for " + std::to_string(points.size()) +
+                                   " points; allowed: one normal per plane");
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (normals[i].norm() == 0.0) s.refuse("plane.normal", "plane " + std::to_string(i) + " has the zero vector as normal");
+      model_.planes.push_back(make_plane(points[i], normals[i]));
+    }
     ContactLaw law{0.0, s.real("contact.friction"), s.real("contact.penalty_normal"), s.real("contact.penalty_tangential"),
                    s.boolean("contact.rolling")};
     std::vector<int> ids;
@@ -93,7 +121,7 @@ class RollingBeam final : public Scene {
       Vector3d x0;
       if (s.text("disc.position") == "rest") {
         const auto& pl = model_.planes[0];
-        const double pen = m * std::abs(g.dot(pl.normal)) / law.eps_n;  // static penetration m g / eps_n
+        const double pen = m * std::abs(g.dot(pl.normal)) / law.eps_n;  // on the first plane  // static penetration m g / eps_n
         x0 = pl.point + (r - pen) * pl.normal;
       } else {
         x0 = vec(s, "disc.position");
@@ -119,7 +147,9 @@ class RollingBeam final : public Scene {
     if (s.text("contact.nodes") == "all") contact_nodes = ids;
     else
       for (double v : s.numbers("contact.nodes")) contact_nodes.push_back(node_index(s, "contact.nodes", v, ids));
-    for (int n : contact_nodes) model_.contacts.push_back(ContactPair{n, 0, law});
+    // Every contact node meets every plane (floor and walls); each pair keeps its own history.
+    for (int n : contact_nodes)
+      for (int p = 0; p < static_cast<int>(model_.planes.size()); ++p) model_.contacts.push_back(ContactPair{n, p, law});
     // Supports and imposed series.
     const std::string clamp = s.text("support.clamp");
     if (disc && clamp != "none") s.refuse("support.clamp", "a disc has no ends to clamp");
@@ -254,9 +284,10 @@ class RollingBeam final : public Scene {
     w.write("/time_history/contact/slip", {nt, nc}, slip.data(), "1", "1 while the contact slips, 0 while it sticks");
     w.write("/time_history/contact/active", {nt, nc}, active.data(), "1", "1 while in contact");
     w.write("/time_history/contact/normal_gap", {nt, nc}, gap.data(), "m", "normal gap g_n (negative: penetration)");
-    std::vector<double> cnode;
-    for (const auto& c : model_.contacts) cnode.push_back(c.node);
+    std::vector<double> cnode, cplane;
+    for (const auto& c : model_.contacts) cnode.push_back(c.node), cplane.push_back(c.plane);
     w.write("/time_history/contact/node", {nc}, cnode.data(), "1", "model node index of each contact");
+    w.write("/time_history/contact/plane", {nc}, cplane.data(), "1", "plane index of each contact (order of [plane] point)");
     if (!model_.imposed.empty()) {
       const std::size_t ni = model_.imposed.size();
       std::vector<double> r(nt * ni);
