@@ -294,49 +294,32 @@ BlockedForcePath blocked_force_path(ContactSolver& solver, const Grid& strip, co
   return runner.run(approach, options, nullptr, nullptr, 0);
 }
 
-BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
-                                       const std::vector<double>& strip_heights, double radius, BallShape shape,
-                                       const std::vector<double>& positions, double load, const SolverOptions& options,
-                                       const BlockedForceOptions& path_options) {
-  if (!(load > 0.0) || !std::isfinite(load)) fail("load must be finite, > 0");
-  if (!(path_options.load_tolerance > 0.0)) fail("load_tolerance must be > 0");
-  PathRunner runner(solver, strip, strip_heights, radius, shape, positions, path_options);
-  SolverOptions opt = options;
-  opt.compute_stiffness = true;
-  const double e_star = solver.half_space().e_star();
-  // BF-4: smooth Hertz approach for W; also the first bracket-growth step.
-  double d = std::pow(3.0 * load / (4.0 * e_star * std::sqrt(radius)), 2.0 / 3.0);
-  double step = d;
+namespace {
+
+// BF-3: safeguarded Newton on d for F̄(d) = W over `runner`'s positions, from d_start; `step` grows
+// the bracket while one side is unknown. Counts go to `total`; returns the last path, converged
+// only if |F̄ − W| ≤ tolerance · W.
+BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double load, double tolerance, int max_paths,
+                        bool warm, std::size_t store_count, double d_start, double step, BlockedForcePath& total) {
   // BF-5 caps the approach: the search stays at or below d_cap.
   std::size_t limiting = 0;
   const double d_cap = runner.max_approach(&limiting);
-  d = std::min(d, d_cap);
+  double d = std::min(d_start, d_cap);
   double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
-  BlockedForcePath total;
-  // Fields kept between paths: all positions if they fit in max_stored_bytes, else the first.
-  const bool warm = path_options.warm_start != PathWarmStart::Cold;
-  const std::size_t field_bytes = 2 * sizeof(double) * solver.grid().size();
-  const std::size_t store_count =
-      warm ? std::max<std::size_t>(1, std::min(positions.size(), path_options.max_stored_bytes / field_bytes)) : 0;
   PathFields previous, current;
-  for (;;) {
-    BlockedForcePath path = runner.run(d, opt, total.paths > 0 && warm ? &previous : nullptr,
-                                       warm ? &current : nullptr, store_count);
+  for (int paths = 0;;) {
+    BlockedForcePath path =
+        runner.run(d, opt, paths > 0 && warm ? &previous : nullptr, warm ? &current : nullptr, store_count);
+    ++paths;
     std::swap(previous, current);
     accumulate(total, path);
-    const bool on_load = std::fabs(path.mean_force - load) <= path_options.load_tolerance * load;
-    const bool stop = !path.converged || on_load || total.paths >= path_options.max_paths;
-    // BF-3: bracket and safeguarded Newton step.
+    const bool on_load = std::fabs(path.mean_force - load) <= tolerance * load;
     if (path.mean_force < load) lo = d;
     else hi = d;
     const bool exhausted = std::isfinite(lo) && std::isfinite(hi) &&
                            hi - lo <= 1e-15 * std::max(std::fabs(hi), std::fabs(lo));
-    if (stop || exhausted) {
+    if (!path.converged || on_load || paths >= max_paths || exhausted) {
       path.converged = path.converged && on_load;
-      path.paths = total.paths;
-      path.solves = total.solves;
-      path.iterations = total.iterations;
-      path.stiffness_iterations = total.stiffness_iterations;
       return path;
     }
     double next = path.k0 > 0.0 ? d + (load - path.mean_force) / path.k0 : std::numeric_limits<double>::quiet_NaN();
@@ -360,6 +343,51 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     }
     d = next;
   }
+}
+
+}  // namespace
+
+BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
+                                       const std::vector<double>& strip_heights, double radius, BallShape shape,
+                                       const std::vector<double>& positions, double load, const SolverOptions& options,
+                                       const BlockedForceOptions& path_options) {
+  if (!(load > 0.0) || !std::isfinite(load)) fail("load must be finite, > 0");
+  if (!(path_options.load_tolerance > 0.0)) fail("load_tolerance must be > 0");
+  PathRunner runner(solver, strip, strip_heights, radius, shape, positions, path_options);
+  SolverOptions opt = options;
+  opt.compute_stiffness = true;
+  // BF-4: smooth Hertz approach for W; also the first bracket-growth step.
+  const double d_hertz = std::pow(3.0 * load / (4.0 * solver.half_space().e_star() * std::sqrt(radius)), 2.0 / 3.0);
+  // Fields kept between paths: all positions if they fit in max_stored_bytes, else the first.
+  const bool warm = path_options.warm_start != PathWarmStart::Cold;
+  const std::size_t field_bytes = 2 * sizeof(double) * solver.grid().size();
+  const auto store_count = [&](std::size_t count) {
+    return warm ? std::max<std::size_t>(1, std::min(count, path_options.max_stored_bytes / field_bytes)) : 0;
+  };
+  BlockedForcePath total;
+  double d_start = d_hertz;
+  // BF-4': pre-search on every S-th position to 1e-6, then the full path from there.
+  const std::size_t m = path_options.presearch_positions;
+  if (m > 0 && positions.size() >= 4 * m) {
+    const std::size_t stride = positions.size() / m;
+    std::vector<double> subset;
+    for (std::size_t k = 0; k < positions.size(); k += stride) subset.push_back(positions[k]);
+    PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, path_options);
+    const BlockedForcePath sub = search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance),
+                                        path_options.max_paths, warm, store_count(subset.size()), d_hertz, d_hertz,
+                                        total);
+    total.presearch_paths = total.paths;
+    total.paths = 0;
+    if (sub.converged) d_start = sub.approach;
+  }
+  BlockedForcePath path = search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
+                                 store_count(positions.size()), d_start, d_hertz, total);
+  path.paths = total.paths;
+  path.presearch_paths = total.presearch_paths;
+  path.solves = total.solves;
+  path.iterations = total.iterations;
+  path.stiffness_iterations = total.stiffness_iterations;
+  return path;
 }
 
 }  // namespace rollspec::contact

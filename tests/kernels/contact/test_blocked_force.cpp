@@ -221,6 +221,14 @@ TEST_CASE("long wave: F0 follows quasi-static Hertz, mean F0 = W, k0 = dF/dd, PS
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   REQUIRE(path.converged);
   CHECK(std::fabs(path.mean_force / load - 1.0) < 1e-8);
+  CHECK(path.presearch_paths > 0);  // 192 ≥ 4·32 positions: pre-search on every 6th (BF-4')
+  BlockedForceOptions no_presearch;
+  no_presearch.presearch_positions = 0;
+  const BlockedForcePath direct =
+      blocked_force_at_load(solver, strip, heights, h.radius, BallShape::Paraboloid, x, load, {}, no_presearch);
+  REQUIRE(direct.converged);
+  CHECK(direct.presearch_paths == 0);
+  CHECK(direct.approach == doctest::Approx(path.approach).epsilon(1e-8));
 
   // Quasi-static Hertz following the wave: F0(x) ≈ P(d0 + h(x)). Stated tolerance 1e-3 of P:
   // Hertz discretisation at 8 cells/a (4.1e-4, README table) plus the wave's curvature
@@ -277,7 +285,8 @@ TEST_CASE("long wave: F0 follows quasi-static Hertz, mean F0 = W, k0 = dF/dd, PS
   // (measured 4.2e-6, with the grid's ring effects).
   CHECK(psd[peak] > 1e5 * others);
   CHECK(psd[2 * peak] / psd[peak] < 1e-5);
-  MESSAGE("long wave: " << path.paths << " paths, " << path.solves << " solves, " << path.iterations
+  MESSAGE("long wave: " << path.paths << " paths + " << path.presearch_paths << " pre-search paths (without: "
+                        << direct.paths << " paths, " << direct.solves << " solves), " << path.solves << " solves, " << path.iterations
                         << " CG + " << path.stiffness_iterations << " stiffness iterations, " << seconds << " s ("
                         << 1e3 * seconds / path.solves << " ms per solve); max |F0/P(d0+h) - 1| = " << worst
                         << ", d0/d_ref - 1 = " << path.approach / d_ref - 1.0 << ", k0/k_fd - 1 = "
