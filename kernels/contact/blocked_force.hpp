@@ -69,7 +69,11 @@
 //     p^(k, start)(d) = p^(k)(d') + (d − d') dp^(k)/dd                                    (BF-6')
 //
 // (Cold: no reuse). The start only changes the iteration count: every solve is run to the
-// solver's stopping rule (README Eq. 9).
+// solver's stopping rule (README Eq. 9). Measured (tolerance 1e-10, H = 5 GPa, 40 mm ball, Gaussian
+// strip σ = 0.3 µm, correlation length 10 µm, 4 µm cells, 100² window, steps of 8 µm): CG
+// iterations per solve along one path 23.9 (Ball), 20.6 (Strip), 23.4 (Cold) — on a rough strip
+// the shifted start saves little; BF-6' brings the load search to 9.2 per solve, and the
+// frozen-set stiffness (cold-started inside ContactSolver) adds 21.3 per solve.
 //
 // Use in the dynamics (D-11): F_c = F0(t) + k0 (w1(ξ) − w2 + d0) + c0 (ẇ1 − ẇ2) with
 // F0(t) = F0(x = v t); the PSD of F0 along the path in cycles/m (sample rate 1/Δx) is mapped to
