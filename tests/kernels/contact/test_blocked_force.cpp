@@ -172,6 +172,24 @@ TEST_CASE("rough elastic-plastic strip: warm starts equal cold solves and whole-
       blocked_force_path(strip_solver, c.strip, heights, h.radius, BallShape::Sphere, x, h.approach, opt);
   REQUIRE(p_grid.converged);
   CHECK(max_relative_difference(p_grid.force, whole) < 1e-8);
+  // Off-centre path y_c = 3.4 dy (window rows shifted by 3, ball 0.4 cell off the cell centres).
+  BlockedForceOptions off_centre;
+  off_centre.centre_y = 3.4 * c.strip.dy;
+  const std::vector<double> x6(x.begin(), x.begin() + 6);
+  const BlockedForcePath p_off = blocked_force_path(window_solver, c.strip, heights, h.radius, BallShape::Sphere, x6,
+                                                    h.approach, opt, off_centre);
+  REQUIRE(p_off.converged);
+  std::vector<double> whole_off(x6.size());
+  for (std::size_t k = 0; k < x6.size(); ++k) {
+    std::vector<double> p;
+    const auto gap = ball_gap(c.strip, h.radius, heights, BallShape::Sphere, x6[k], off_centre.centre_y);
+    const ContactResult r = strip_solver.solve(gap, h.approach, p, opt);
+    REQUIRE(r.converged);
+    whole_off[k] = r.force;
+  }
+  CHECK(max_relative_difference(p_off.force, whole_off) < 1e-8);
+  CHECK(std::fabs(p_off.force[0] / whole[0] - 1.0) > 1e-4);  // a different path indeed
+
   // Load search on the rough path (BF-3): mean F0 = W, with and without stored fields (BF-6').
   const double load = 1.1 * p_cold.mean_force;
   BlockedForceOptions first_only;
