@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "kernels/rolling/contact_element.hpp"
+#include "kernels/rolling/height_field.hpp"
+#include "kernels/rolling/surface_contact.hpp"
 #include "kernels/rolling/time_series.hpp"
 
 namespace rollspec::rolling {
@@ -44,6 +46,13 @@ struct ContactPair {
   ContactLaw law;
 };
 
+// Frictionless node-sphere contact with a rough surface (Model::surfaces), README R-61.
+struct SurfaceContactPair {
+  int node = 0;
+  int surface = 0;
+  SurfaceContactLaw law;
+};
+
 struct NodalLoad {
   int node = 0;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // spatial, fixed direction
@@ -70,6 +79,8 @@ struct Model {
   std::vector<RigidBody> bodies;
   std::vector<Plane> planes;
   std::vector<ContactPair> contacts;
+  std::vector<HeightField> surfaces;               // rough rigid surfaces (plane + height field)
+  std::vector<SurfaceContactPair> surface_contacts;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   TimeSeries gravity_series;
   std::vector<NodalLoad> loads;

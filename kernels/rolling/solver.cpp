@@ -124,18 +124,20 @@ struct Solver::Impl {
   SparseSink sink;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
   std::vector<ContactEval> cevals;
+  std::vector<SurfaceContactEval> sevals;
   double penalty_energy = 0.0, tangential_energy = 0.0;
   int analyses = 0;  // SparseLU::analyzePattern calls
 
   void assemble(const Solver& S, const VectorXd& q, double t1, double dt, Mode mode, VectorXd& R,
-                Sink* K, std::vector<ContactEval>* ce) const;
+                Sink* K, std::vector<ContactEval>* ce, std::vector<SurfaceContactEval>* se = nullptr) const;
   VectorXd external(const Solver& S, double t) const;
 };
 
 // Residual R = f_int + f_inertia - f_ext - f_contact and its tangent dR/dq, q = [du, a] per
 // node (README Eq. R-40).
 void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, double dt, Mode mode,
-                            VectorXd& R, Sink* K, std::vector<ContactEval>* ce) const {
+                            VectorXd& R, Sink* K, std::vector<ContactEval>* ce,
+                            std::vector<SurfaceContactEval>* se) const {
   const Model& m = S.model_;
   const auto& nodes = S.nodes_;
   R.setZero(6 * nn);
@@ -253,6 +255,18 @@ void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, doubl
     add_block<6>(K, dofs6(nd), mode == Mode::Mass ? Eigen::Matrix<double, 6, 6>::Zero() : ev.tangent);
     if (ce) (*ce)[c] = ev;
   }
+
+  // rough surfaces: frictionless closest-point penalty contact, end-point force
+  if (se) se->resize(m.surface_contacts.size());
+  for (std::size_t c = 0; c < m.surface_contacts.size(); ++c) {
+    const SurfaceContactPair& sp = m.surface_contacts[c];
+    const int nd = sp.node;
+    const SurfaceContactEval ev =
+        evaluate_surface_contact(m.surfaces[static_cast<std::size_t>(sp.surface)], sp.law, nodes[nd].x + du(nd));
+    R.segment<3>(6 * nd) -= ev.force;
+    add_block<3>(K, dofs3(6 * nd), mode == Mode::Mass ? Matrix3d::Zero() : ev.tangent);
+    if (se) (*se)[c] = ev;
+  }
 }
 
 // External nodal forces and spatial moments at time t (gravity as consistent loads).
@@ -367,6 +381,17 @@ Solver::Solver(Model model, SolverOptions options, double t0)
       I.penalty_energy += contact_out_[c].penalty;
     }
   }
+  surface_out_.assign(m.surface_contacts.size(), ContactOutput{});
+  for (std::size_t c = 0; c < m.surface_contacts.size(); ++c) {
+    const SurfaceContactPair& sp = m.surface_contacts[c];
+    const SurfaceContactEval ev = evaluate_surface_contact(m.surfaces[static_cast<std::size_t>(sp.surface)], sp.law,
+                                                           nodes_[static_cast<std::size_t>(sp.node)].x);
+    surface_out_[c].g_n = ev.g_n;
+    if (ev.active) {
+      surface_out_[c].penalty = 0.5 * sp.law.eps_n * ev.g_n * ev.g_n;
+      I.penalty_energy += surface_out_[c].penalty;
+    }
+  }
   reactions_.assign(m.imposed.size(), 0.0);
   if (opt_.analysis == Analysis::Dynamic && opt_.consistent_initial_acceleration) initial_acceleration();
   acc_.initial_balance = energies().balance();
@@ -453,12 +478,12 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
   bool forced = false;
   for (int it = 0;; ++it) {
     I.sink.begin();
-    I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals);
+    I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals, &I.sevals);
     I.sink.finish();
     if (I.sink.mismatch) {  // pattern changed (should not happen): record it again
       I.sink.recording = true;
       I.sink.begin();
-      I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals);
+      I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals, &I.sevals);
       I.sink.finish();
     }
     for (std::size_t i = 0; i < I.eq.size(); ++i)
@@ -572,6 +597,16 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
     o.friction = ev.friction;
     o.moment = ev.moment;
     o.point = ev.point;
+  }
+  for (std::size_t c = 0; c < m.surface_contacts.size(); ++c) {
+    const SurfaceContactEval& ev = I.sevals[c];
+    ContactOutput& o = surface_out_[c];
+    o.active = ev.active;
+    o.g_n = ev.g_n;
+    o.penalty = ev.active ? 0.5 * m.surface_contacts[c].law.eps_n * ev.g_n * ev.g_n : 0.0;
+    o.force = ev.force;
+    o.point = ev.point;
+    I.penalty_energy += o.penalty;
   }
   for (std::size_t e = 0; e < m.beams.size(); ++e) {
     std::array<Vector3d, 3> x, a;
@@ -742,6 +777,7 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
     h.angular_velocity.push_back(w);
     h.rotation.push_back(R);
     h.contact.push_back(S.contacts());
+    h.surface_contact.push_back(S.surface_contacts());
     h.energy.push_back(S.energies());
     h.reactions.push_back(S.reactions());
   };

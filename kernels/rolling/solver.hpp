@@ -123,6 +123,8 @@ class Solver {
   const std::vector<NodeState>& nodes() const { return nodes_; }
   const std::vector<ContactOutput>& contacts() const { return contact_out_; }
   const std::vector<ContactState>& contact_states() const { return cstate_; }
+  // Rough-surface contacts (model.surface_contacts order); friction fields stay zero.
+  const std::vector<ContactOutput>& surface_contacts() const { return surface_out_; }
   Energies energies() const;
   // Reactions at the imposed DOFs (model.imposed order), from the last converged step.
   const std::vector<double>& reactions() const { return reactions_; }
@@ -149,6 +151,7 @@ class Solver {
   std::vector<NodeState> nodes_;
   std::vector<ContactState> cstate_;
   std::vector<ContactOutput> contact_out_;
+  std::vector<ContactOutput> surface_out_;
   std::vector<double> reactions_;
   Energies acc_;  // accumulated works and dissipation
   std::vector<double> node_mass_;
@@ -171,6 +174,7 @@ struct History {
   std::vector<std::vector<Eigen::Vector3d>> acceleration, angular_acceleration;    // spatial (R A for the latter)
   std::vector<std::vector<Eigen::Matrix3d>> rotation;
   std::vector<std::vector<ContactOutput>> contact;  // [record][contact pair]
+  std::vector<std::vector<ContactOutput>> surface_contact;  // [record][surface contact pair]
   std::vector<Energies> energy;
   std::vector<std::vector<double>> reactions;       // [record][imposed dof]
   int steps = 0, newton_iterations = 0, cuts = 0;

@@ -1,0 +1,126 @@
+#include "kernels/rolling/height_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rollspec::rolling {
+
+namespace {
+
+// Catmull-Rom weights of samples i-1, i, i+1, i+2 at t in [0, 1] and their first and
+// second derivatives in t.
+void catmull_rom(double t, double w[4], double dw[4], double ddw[4]) {
+  const double t2 = t * t, t3 = t2 * t;
+  w[0] = 0.5 * (-t + 2.0 * t2 - t3);
+  w[1] = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
+  w[2] = 0.5 * (t + 4.0 * t2 - 3.0 * t3);
+  w[3] = 0.5 * (-t2 + t3);
+  dw[0] = 0.5 * (-1.0 + 4.0 * t - 3.0 * t2);
+  dw[1] = 0.5 * (-10.0 * t + 9.0 * t2);
+  dw[2] = 0.5 * (1.0 + 8.0 * t - 9.0 * t2);
+  dw[3] = 0.5 * (-2.0 * t + 3.0 * t2);
+  ddw[0] = 0.5 * (4.0 - 6.0 * t);
+  ddw[1] = 0.5 * (-10.0 + 18.0 * t);
+  ddw[2] = 0.5 * (8.0 - 18.0 * t);
+  ddw[3] = 0.5 * (-2.0 + 6.0 * t);
+}
+
+// Cell index, local t and whether s lies inside the table (outside: clamped, zero slope).
+struct Axis {
+  int i = 0;
+  double t = 0.0;
+  bool inside = true;
+};
+Axis locate(double s, double s0, double ds, int n) {
+  Axis a;
+  if (n < 2) {
+    a.inside = false;
+    return a;
+  }
+  double u = (s - s0) / ds;
+  if (u < 0.0 || u > n - 1) {
+    a.inside = false;
+    u = std::clamp(u, 0.0, double(n - 1));
+  }
+  a.i = std::min(static_cast<int>(std::floor(u)), n - 2);
+  a.t = u - a.i;
+  return a;
+}
+
+}  // namespace
+
+HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
+  HeightSample out;
+  const Axis a1 = locate(s(0), f.s1_0, f.ds1, f.n1);
+  const bool grid = f.n2 > 1;
+  const Axis a2 = grid ? locate(s(1), f.s2_0, f.ds2, f.n2) : Axis{};
+  double w1[4], d1[4], dd1[4], w2[4] = {0, 1, 0, 0}, d2[4] = {0, 0, 0, 0}, dd2[4] = {0, 0, 0, 0};
+  catmull_rom(a1.t, w1, d1, dd1);
+  if (grid) catmull_rom(a2.t, w2, d2, dd2);
+  auto at = [&](int i1, int i2) {
+    i1 = std::clamp(i1, 0, f.n1 - 1);
+    i2 = std::clamp(i2, 0, f.n2 - 1);
+    return f.h[static_cast<std::size_t>(i2) * static_cast<std::size_t>(f.n1) + static_cast<std::size_t>(i1)];
+  };
+  const int j0 = grid ? -1 : 0, j1 = grid ? 2 : 0;
+  for (int j = j0; j <= j1; ++j)
+    for (int i = -1; i <= 2; ++i) {
+      const double v = at(a1.i + i, a2.i + j);
+      const int ii = i + 1, jj = j + 1;
+      out.h += w1[ii] * w2[jj] * v;
+      out.grad(0) += d1[ii] * w2[jj] * v;
+      out.grad(1) += w1[ii] * d2[jj] * v;
+      out.hess(0, 0) += dd1[ii] * w2[jj] * v;
+      out.hess(0, 1) += d1[ii] * d2[jj] * v;
+      out.hess(1, 1) += w1[ii] * dd2[jj] * v;
+    }
+  out.grad(0) /= f.ds1;
+  out.hess(0, 0) /= f.ds1 * f.ds1;
+  if (grid) {
+    out.grad(1) /= f.ds2;
+    out.hess(0, 1) /= f.ds1 * f.ds2;
+    out.hess(1, 1) /= f.ds2 * f.ds2;
+  }
+  out.hess(1, 0) = out.hess(0, 1);
+  if (!a1.inside) {  // clamped: flat continuation along s1
+    out.grad(0) = 0.0;
+    out.hess.row(0).setZero();
+    out.hess.col(0).setZero();
+  }
+  if (grid && !a2.inside) {
+    out.grad(1) = 0.0;
+    out.hess.row(1).setZero();
+    out.hess.col(1).setZero();
+  }
+  return out;
+}
+
+ContactValidity check_single_point_contact(const HeightField& f, double radius) {
+  ContactValidity v;
+  const bool grid = f.n2 > 1;
+  const int m1 = 2 * f.n1 - 1, m2 = grid ? 2 * f.n2 - 1 : 1;
+  for (int j = 0; j < m2; ++j)
+    for (int i = 0; i < m1; ++i) {
+      // samples and cell midpoints; a sample on a cell boundary is taken from the cell on its left
+      const Eigen::Vector2d s(f.s1_0 + 0.5 * i * f.ds1, grid ? f.s2_0 + 0.5 * j * f.ds2 : 0.0);
+      const HeightSample hs = sample_height(f, s);
+      const double g2 = 1.0 + hs.grad.squaredNorm();
+      double k = 0.0;
+      if (grid) {
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(hs.hess);
+        k = es.eigenvalues()(1) / std::sqrt(g2);
+      } else {
+        k = hs.hess(0, 0) / (g2 * std::sqrt(g2));
+      }
+      if (k > v.max_concave_curvature) {
+        v.max_concave_curvature = k;
+        v.where = s;
+      }
+    }
+  v.radius_limit = v.max_concave_curvature > 0.0 ? 1.0 / v.max_concave_curvature : std::numeric_limits<double>::infinity();
+  v.valid = radius * v.max_concave_curvature < 1.0;
+  return v;
+}
+
+}  // namespace rollspec::rolling

@@ -1,0 +1,35 @@
+// Frictionless contact of a node sphere with a rigid rough surface (plane + height field,
+// README Sec. 10, R-61). The contact point is the closest point S(s*) of the interpolated
+// surface to the sphere centre x (Newton on the stationarity of |x - S(s)|^2 / 2), the normal
+// nu = (x - S)/|x - S|, the gap g = +-|x - S| - r (negative when x lies below the surface or
+// within r of it). Penalty force eps_n <-g> nu and the exact tangent
+// eps_n (nu nu^T + g d2g/dx2), d2g/dx2 = (I - S_s H^-1 S_s^T)/d.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "kernels/rolling/height_field.hpp"
+
+namespace rollspec::rolling {
+
+struct SurfaceContactLaw {
+  double radius = 0.0;
+  double eps_n = 0.0;
+};
+
+struct SurfaceContactEval {
+  bool active = false;
+  bool converged = true;  // closest-point Newton converged
+  double g_n = 0.0;
+  Eigen::Vector2d s = Eigen::Vector2d::Zero();       // tangent coordinates of the contact point
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // nu, surface toward the centre
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // S(s*)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the node
+  Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero(); // d(-force)/dx
+};
+
+// Closest point and gap for the centre x (Newton from the projection of x on the base plane).
+SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law,
+                                            const Eigen::Vector3d& x);
+
+}  // namespace rollspec::rolling

@@ -1,0 +1,155 @@
+// Rough rigid surfaces (README Sec. 10, R-60..R-62): Catmull-Rom height field derivatives,
+// closest-point contact tangent against central differences, single-point validity, and a
+// sphere node moved over a sinusoidal bump following the offset curve of the bump.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "kernels/rolling/solver.hpp"
+
+using namespace rollspec::rolling;
+using Eigen::Matrix3d;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+namespace {
+const double kPi = 3.141592653589793;
+
+HeightField wavy_grid() {
+  HeightField f;
+  f.base = make_plane(Vector3d(0.1, -0.2, 0.05), Vector3d(0.1, 0.2, 1.0));
+  f.n1 = 40;
+  f.n2 = 30;
+  f.ds1 = 0.02;
+  f.ds2 = 0.025;
+  f.s1_0 = -0.4;
+  f.s2_0 = -0.35;
+  for (int j = 0; j < f.n2; ++j)
+    for (int i = 0; i < f.n1; ++i) {
+      const double s1 = f.s1_0 + i * f.ds1, s2 = f.s2_0 + j * f.ds2;
+      f.h.push_back(0.01 * std::sin(7.0 * s1 + 1.0) * std::cos(5.0 * s2) + 0.004 * std::sin(11.0 * s2));
+    }
+  return f;
+}
+
+HeightField bump_line(double H, double lambda, double ds) {
+  return line_height_field(make_plane(Vector3d::Zero(), Vector3d::UnitZ()), -0.3, 0.5,
+                           static_cast<int>(std::lround(0.8 / ds)) + 1, [&](double s) {
+                             return (s >= 0.0 && s <= lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * s / lambda)) : 0.0;
+                           });
+}
+}  // namespace
+
+TEST_CASE("height field: gradient and Hessian consistent with the interpolated height") {
+  const HeightField f = wavy_grid();
+  const double hstep = 1e-6;
+  double eg = 0.0, eh = 0.0;
+  for (const Vector2d& s : {Vector2d(-0.111, 0.013), Vector2d(0.207, -0.19), Vector2d(0.33, 0.31)}) {
+    const HeightSample c = sample_height(f, s);
+    for (int k = 0; k < 2; ++k) {
+      Vector2d d = Vector2d::Zero();
+      d(k) = hstep;
+      const HeightSample p = sample_height(f, s + d), m = sample_height(f, s - d);
+      eg = std::max(eg, std::abs((p.h - m.h) / (2 * hstep) - c.grad(k)) / c.grad.norm());
+      eh = std::max(eh, ((p.grad - m.grad) / (2 * hstep) - c.hess.col(k)).norm() / c.hess.norm());
+    }
+  }
+  std::printf("height field FD: gradient %.2e, Hessian %.2e (relative)\n", eg, eh);
+  CHECK(eg < 1e-7);
+  CHECK(eh < 1e-6);
+  // interpolating: the samples are reproduced
+  CHECK(std::abs(sample_height(f, Vector2d(f.s1_0 + 7 * f.ds1, f.s2_0 + 11 * f.ds2)).h - f.h[11 * 40 + 7]) < 1e-15);
+}
+
+TEST_CASE("rough-surface contact: force = -eps_n g grad g, tangent vs central differences") {
+  for (int kind = 0; kind < 2; ++kind) {
+    const HeightField f = kind == 0 ? wavy_grid() : bump_line(0.01, 0.2, 0.01);
+    const SurfaceContactLaw law{0.05, 1e6};
+    const Vector3d xs[3] = {Vector3d(0.05, 0.02, 0.045), Vector3d(-0.07, 0.1, 0.04), Vector3d(0.16, -0.04, 0.048)};
+    double et = 0.0, eg = 0.0;
+    for (const Vector3d& x0 : xs) {
+      const Vector3d x = f.base.point + x0(0) * f.base.t1 + x0(1) * f.base.t2 + x0(2) * f.base.normal;
+      const SurfaceContactEval c = evaluate_surface_contact(f, law, x);
+      REQUIRE(c.active);
+      REQUIRE(c.converged);
+      const double h = 1e-7;
+      Matrix3d Kfd;
+      Vector3d gfd;
+      for (int k = 0; k < 3; ++k) {
+        Vector3d d = Vector3d::Zero();
+        d(k) = h;
+        const SurfaceContactEval p = evaluate_surface_contact(f, law, x + d), m = evaluate_surface_contact(f, law, x - d);
+        Kfd.col(k) = -(p.force - m.force) / (2 * h);
+        gfd(k) = (p.g_n - m.g_n) / (2 * h);
+      }
+      et = std::max(et, (Kfd - c.tangent).norm() / c.tangent.norm());
+      eg = std::max(eg, (gfd - c.normal).norm());
+      // the normal is the surface normal at the contact point: (-grad h, 1)/|.|
+      const HeightSample hs = sample_height(f, c.s);
+      const Vector3d ns = (f.base.normal - hs.grad(0) * f.base.t1 - hs.grad(1) * f.base.t2).normalized();
+      CHECK((ns - c.normal).norm() < 1e-10);
+    }
+    std::printf("surface contact (%s): tangent vs FD %.2e, grad g vs nu %.2e\n", kind == 0 ? "grid" : "line", et, eg);
+    CHECK(et < 1e-6);
+    CHECK(eg < 1e-7);
+  }
+}
+
+TEST_CASE("single-point contact validity: r kappa_max < 1") {
+  // smooth sinusoid h = H/2 cos(2 pi s/lambda): valley curvature H/2 (2 pi/lambda)^2 = 4.935
+  const double H = 0.01, lambda = 0.2;
+  const double kappa = 0.5 * H * std::pow(2.0 * kPi / lambda, 2);
+  const HeightField f = line_height_field(make_plane(Vector3d::Zero(), Vector3d::UnitZ()), -0.4, 0.4, 1601,
+                                          [&](double s) { return 0.5 * H * std::cos(2.0 * kPi * s / lambda); });
+  const ContactValidity ok = check_single_point_contact(f, 0.05), bad = check_single_point_contact(f, 0.25);
+  // the cosine bump of the path test joins the flat with a jump of h'' (0 -> kappa); the
+  // Catmull-Rom interpolant overshoots there, and the check reports the interpolant's value
+  const ContactValidity kink = check_single_point_contact(bump_line(H, lambda, 0.002), 0.05);
+  std::printf("sinusoid H = %.3f, lambda = %.2f: kappa_max %.4f (analytic %.4f), radius limit %.4f; "
+              "bump with curvature jump: kappa_max %.4f\n",
+              H, lambda, ok.max_concave_curvature, kappa, ok.radius_limit, kink.max_concave_curvature);
+  CHECK(ok.valid);
+  CHECK_FALSE(bad.valid);
+  CHECK(kink.valid);
+  CHECK(std::abs(ok.max_concave_curvature / kappa - 1.0) < 0.01);
+}
+
+TEST_CASE("sphere node moved over a sinusoidal bump follows the offset curve") {
+  // Rigid ball (m = 1 kg) pressed by F = 10 N, x imposed at 0.4 m/s (dynamic, dt = 1e-4, the
+  // contact period 2 pi sqrt(m/eps_n) = 2e-3 s resolved):
+  // frictionless, so it slides rather than rolls; the centre must follow the offset curve
+  // z(x) = max_s h(s) + sqrt(r^2 - (s - x)^2) of the analytic bump. The centripetal force
+  // m v^2 kappa_path <= 0.7 N < F keeps the contact closed; penetration F/eps_n = 1e-6 m.
+  const double H = 0.01, lambda = 0.2, r = 0.05, F = 10.0, eps_n = 1e7, v = 0.4;
+  auto bump = [&](double s) { return (s >= 0.0 && s <= lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * s / lambda)) : 0.0; };
+  Model m;
+  const int n = m.add_node(Vector3d(-0.1, 0.0, r - F / eps_n));
+  m.bodies.push_back(RigidBody{n, 1.0, Matrix3d::Identity() * 1e-3});
+  m.v0 = {Vector3d(v, 0, 0)};
+  m.surfaces.push_back(bump_line(H, lambda, 0.002));
+  m.surface_contacts.push_back(SurfaceContactPair{n, 0, SurfaceContactLaw{r, eps_n}});
+  m.imposed.push_back(ImposedDof{n, 0, v, TimeSeries{{0.0, 1.0}, {0.0, 1.0}}});  // x: -0.1 -> 0.3
+  m.loads.push_back(NodalLoad{n, Vector3d(0, 0, -F), Vector3d::Zero(), TimeSeries::constant(1.0)});
+  SolverOptions o;
+  o.force_tol = 1e-8;
+  Solver S(m, o);
+  double worst = 0.0, zmax = 0.0;
+  const int steps = 10000;
+  for (int k = 1; k <= steps; ++k) {
+    REQUIRE(S.advance(double(k) / steps).converged);
+    const Vector3d x = S.nodes()[0].x;
+    double zc = 0.0;
+    for (int i = 0; i <= 2000; ++i) {
+      const double s = x.x() - r + 2.0 * r * i / 2000.0;
+      zc = std::max(zc, bump(s) + std::sqrt(std::max(0.0, r * r - (s - x.x()) * (s - x.x()))));
+    }
+    worst = std::max(worst, std::abs(x.z() - zc));
+    zmax = std::max(zmax, x.z());
+    CHECK(S.surface_contacts()[0].active);
+  }
+  std::printf("bump path: max |z - z_offset| = %.3e m (%.2e of H), top of path %.6f (r + H = %.6f)\n", worst, worst / H,
+              zmax, r + H);
+  CHECK(worst <= 1e-3 * H);
+  CHECK(std::abs(zmax - (r + H)) <= 1e-3 * H);
+}
