@@ -121,7 +121,9 @@ struct FlyingBeamParams {
   double radius = 25.0, length = 1000.0, g = 9.81, wall_distance = 1000.0;
   double mu = 0.8, eps_n = 1e3, eps_t = 1e3;
   int n_elements = 10;
-  double force_peak = 1e3, ramp = 1.0, force_end = -1.0;  // force_end > 0: force back to 0 at force_end
+  // F_y(t): 0 -> force_peak linearly over [0, ramp], back to 0 at force_end (> ramp; seed Fig. 25
+  // shows the rise to 1e3 at t = 1; that it is then removed within one step is our reading)
+  double force_peak = 1e3, ramp = 1.0, force_end = 1.001;
   double start_penetration = -1.0;  // < 0: the static value (mass per node) g / eps_n
 };
 Model flying_beam_model(const FlyingBeamParams& p);
