@@ -412,6 +412,14 @@ double Solver::impact_step_limit(double dt) const {
     if (cstate_[c].active || g <= 0.0 || g + dt * gdot <= 0.0)
       lim = std::min(lim, opt_.impact_step_fraction * two_pi * std::sqrt(node_mass_[nd] / cp.law.eps_n));
   }
+  for (std::size_t c = 0; c < model_.surface_contacts.size(); ++c) {  // rough surfaces: gap and normal R-61
+    const SurfaceContactPair& sp = model_.surface_contacts[c];
+    const std::size_t nd = static_cast<std::size_t>(sp.node);
+    if (!(node_mass_[nd] > 0.0) || !(sp.law.eps_n > 0.0)) continue;
+    const SurfaceContactEval ev = evaluate_surface_contact(model_.surfaces[static_cast<std::size_t>(sp.surface)], sp.law, nodes_[nd].x);
+    if (ev.g_n <= 0.0 || ev.g_n + dt * nodes_[nd].v.dot(ev.normal) <= 0.0)
+      lim = std::min(lim, opt_.impact_step_fraction * two_pi * std::sqrt(node_mass_[nd] / sp.law.eps_n));
+  }
   return lim;
 }
 
@@ -548,6 +556,12 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
         rep.penetration_cuts = 1;
         return false;
       }
+  if (allow_penetration_cut && opt_.max_new_penetration > 0.0)
+    for (std::size_t c = 0; c < m.surface_contacts.size(); ++c)
+      if (!surface_out_[c].active && I.sevals[c].active && -I.sevals[c].g_n > opt_.max_new_penetration) {
+        rep.penetration_cuts = 1;
+        return false;
+      }
 
   // ---- commit (README R-41) ----
   const bool mid = mode == Mode::Dynamic && opt_.integrator == Integrator::EnergyConsistent;
@@ -601,6 +615,7 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
   for (std::size_t c = 0; c < m.surface_contacts.size(); ++c) {
     const SurfaceContactEval& ev = I.sevals[c];
     ContactOutput& o = surface_out_[c];
+    if (ev.active && !o.active) rep.new_penetration = std::max(rep.new_penetration, -ev.g_n);
     o.active = ev.active;
     o.g_n = ev.g_n;
     o.penalty = ev.active ? 0.5 * m.surface_contacts[c].law.eps_n * ev.g_n * ev.g_n : 0.0;
