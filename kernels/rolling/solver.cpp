@@ -494,6 +494,8 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
       I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals, &I.sevals);
       I.sink.finish();
     }
+    for (const SurfaceContactEval& se : I.sevals)
+      if (!se.converged) return false;  // closest point not found: cut the step
     for (std::size_t i = 0; i < I.eq.size(); ++i)
       if (I.eq[i] >= 0) rf(I.eq[i]) = R(static_cast<Eigen::Index>(i));
     const double rn = rf.norm();

@@ -39,7 +39,8 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
     if (dn > cell) d *= cell / dn;  // at most one cell per iteration
     s += d;
     hs = sample_height(f, s);
-    if (d.norm() <= 1e-14 * (1.0 + cell)) {
+    // converged at round-off of the coordinates (length scale: cell, |s|, |zeta|)
+    if (d.norm() <= 1e-13 * (cell + s.lpNorm<Eigen::Infinity>() + std::abs(zeta))) {
       e.converged = true;
       break;
     }
