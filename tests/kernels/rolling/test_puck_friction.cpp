@@ -71,3 +71,45 @@ TEST_CASE("puck with friction: energy never increases, impulse exchange of spin 
     }
   }
 }
+
+TEST_CASE("seed 000 example 4.3 loads: straight path without friction, spin traded for translation with mu = 0.4") {
+  // seed loads: 3 x 1e4 N along z and 3 x 5e3 N m about y, triangular pulse over 0.1 s:
+  // impulse 1500 N s -> v_z = 1.5 m/s, angular impulse 750 N m s -> w_y = 750 / 31.25 = 24 rad/s
+  for (const double mu : {0.0, 0.4}) {
+    PuckParams p;
+    p.mu = mu;
+    p.force_peak = 3e4;
+    p.moment_peak = 1.5e4;
+    SolverOptions o;
+    o.integrator = Integrator::EnergyConsistent;
+    o.force_tol = 1e-6;
+    o.max_line_search = 8;
+    RunOptions ro;
+    ro.dt = 1e-4;
+    ro.t_end = 1.5;
+    ro.record_every = 10;
+    const History h = run(puck_model(p), o, ro);
+    REQUIRE(h.completed);
+    std::size_t k01 = 0;
+    while (h.time[k01] < 0.1 - 1e-12) ++k01;
+    const Vector3d v1 = h.velocity[k01][0], w1 = h.angular_velocity[k01][0];
+    const Vector3d vend = h.velocity.back()[0], wend = h.angular_velocity.back()[0];
+    double xmax = 0.0;
+    for (const auto& pos : h.position) xmax = std::max(xmax, std::abs(pos[0].x()));
+    std::printf("ex. 4.3 seed loads mu = %.1f: after the pulse v_z %.4f, w_y %.4f; at 1.5 s v = (%.4f, %.4f), w_y %.4f, "
+                "max |x| %.4f, T %.2f of %.2f J\n",
+                mu, v1.z(), w1.y(), vend.x(), vend.z(), wend.y(), xmax, h.energy.back().kinetic, h.energy[k01].kinetic);
+    CHECK(std::abs(v1.z() - 1.5) < 1e-9);
+    CHECK(std::abs(w1.y() - 24.0) < 1e-9);
+    if (mu == 0.0) {  // seed Fig. 20a: straight line between two walls, spin untouched
+      CHECK(xmax < 1e-12);
+      CHECK(std::abs(wend.y() - 24.0) < 1e-9);
+      CHECK(std::abs(std::abs(vend.z()) - 1.5) < 1e-6);
+    } else {  // friction converts spin into sideways translation (seed Fig. 20b-22)
+      CHECK(xmax > 0.05);
+      CHECK(std::abs(vend.x()) > 0.1);
+      CHECK(std::abs(wend.y()) < 24.0 - 1.0);
+      CHECK(h.energy.back().kinetic < h.energy[k01].kinetic);
+    }
+  }
+}
