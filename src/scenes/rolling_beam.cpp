@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "kernels/rolling/examples.hpp"
 #include "kernels/rolling/model.hpp"
 #include "kernels/rolling/solver.hpp"
 #include "src/error.hpp"
@@ -49,7 +50,18 @@ Vector3d vec(const Study& s, const std::string& key) {
 
 std::vector<KeySpec> rolling_beam_keys() {
   return {
-      choice_key("body", "kind", "a geometrically exact beam, or a rigid disc (one node)", std::string("beam"), {"beam", "disc"}),
+      choice_key("body", "kind",
+                 "a geometrically exact beam, a rigid disc (one node), or the seed 000 builders: puck (4.3, four walls, "
+                 "[puck] keys) and flying-beam (4.4, floor and an oblique wall); the builders define their own planes",
+                 std::string("beam"), {"beam", "disc", "puck", "flying-beam"}),
+      real_key("puck", "half_width", "m", "walls at x, z = +-half_width (seed 000 example 4.3)", std::string("1"), 0.0, inf, false),
+      real_key("puck", "force_peak", "N", "peak of the triangular force pulse along z", std::string("3e4"), -inf, inf),
+      real_key("puck", "moment_peak", "N m", "peak of the triangular moment pulse about y", std::string("1.5e4"), -inf, inf),
+      real_key("puck", "pulse", "s", "duration of the triangular pulse", std::string("0.1"), 0.0, inf, false),
+      real_key("flying_beam", "force_peak", "N", "lateral force at the centre node, ramped up over [0, ramp]",
+               std::string("1e3"), -inf, inf),
+      real_key("flying_beam", "ramp", "s", "ramp time of the lateral force", std::string("1"), 0.0, inf, false),
+      real_key("flying_beam", "wall_distance", "m", "distance of the oblique wall", std::string("1000"), 0.0, inf, false),
       text_key("beam", "start", "first end of the straight beam, x,y,z (m)", std::string("0,0,0")),
       text_key("beam", "end", "second end, x,y,z (m)", std::string("10,0,0")),
       text_key("beam", "up", "direction of the section's e2 axis, x,y,z", std::string("0,1,0")),
@@ -84,6 +96,15 @@ std::vector<KeySpec> rolling_beam_keys() {
                  {"dynamic", "static"}),
       real_key("analysis", "dt", "s", "time (load) step", std::string("1e-3"), 0.0, inf, false),
       real_key("analysis", "t_end", "s", "end time", std::string("1"), 0.0, inf, false),
+      choice_key("analysis", "integrator",
+                 "dynamic integrator: newmark (trapezoidal) or energy-consistent (midpoint + discrete-gradient penalty; "
+                 "rigid bodies only, kernels/rolling R-50..R-53)",
+                 std::string("newmark"), {"newmark", "energy-consistent"}),
+      real_key("analysis", "impact_step_fraction", "-",
+               "while a contact is closed or closing, limit the step to this fraction of 2 pi sqrt(m/eps_n) (0: off)",
+               std::string("0"), 0.0, 1.0),
+      real_key("analysis", "max_new_penetration", "m", "cut steps in which a contact closes deeper than this (0: off)",
+               std::string("0"), 0.0, inf),
       integer_key("analysis", "record_every", "steps between recorded states", std::string("1"), 1, 1e9),
       integer_key("analysis", "max_iterations", "Newton iterations per step before cutting it", std::string("30"), 1, 10000),
       integer_key("analysis", "max_cuts", "step halvings allowed", std::string("12"), 0, 60),
@@ -116,7 +137,12 @@ class RollingBeam final : public Scene {
     ContactLaw law{0.0, s.real("contact.friction"), s.real("contact.penalty_normal"), s.real("contact.penalty_tangential"),
                    s.boolean("contact.rolling")};
     std::vector<int> ids;
-    if (disc) {
+    const std::string kind = s.text("body.kind");
+    if (kind == "puck" || kind == "flying-beam") {
+      build_example(s, kind, law);
+      ids.resize(model_.X.size());
+      for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<int>(i);
+    } else if (disc) {
       const double r = s.real("disc.radius"), m = s.real("disc.mass"), len = s.real("disc.length");
       Vector3d x0;
       if (s.text("disc.position") == "rest") {
@@ -142,14 +168,17 @@ class RollingBeam final : public Scene {
       ids = add_straight_beam(model_, a, b, static_cast<int>(s.integer("beam.elements")), 0, vec(s, "beam.up"));
       law.radius = 0.5 * d;
     }
-    // Contacts.
+    // Contacts (the example builders made theirs).
     std::vector<int> contact_nodes;
-    if (s.text("contact.nodes") == "all") contact_nodes = ids;
-    else
-      for (double v : s.numbers("contact.nodes")) contact_nodes.push_back(node_index(s, "contact.nodes", v, ids));
-    // Every contact node meets every plane (floor and walls); each pair keeps its own history.
-    for (int n : contact_nodes)
-      for (int p = 0; p < static_cast<int>(model_.planes.size()); ++p) model_.contacts.push_back(ContactPair{n, p, law});
+
+    if (model_.contacts.empty()) {
+      if (s.text("contact.nodes") == "all") contact_nodes = ids;
+      else
+        for (double v : s.numbers("contact.nodes")) contact_nodes.push_back(node_index(s, "contact.nodes", v, ids));
+      // Every contact node meets every plane (floor and walls); each pair keeps its own history.
+      for (int n : contact_nodes)
+        for (int p = 0; p < static_cast<int>(model_.planes.size()); ++p) model_.contacts.push_back(ContactPair{n, p, law});
+    }
     // Supports and imposed series.
     const std::string clamp = s.text("support.clamp");
     if (disc && clamp != "none") s.refuse("support.clamp", "a disc has no ends to clamp");
@@ -170,13 +199,20 @@ class RollingBeam final : public Scene {
     else
       for (double v : s.numbers("output.nodes")) record_.push_back(node_index(s, "output.nodes", v, ids));
     options_.analysis = s.text("analysis.type") == "dynamic" ? Analysis::Dynamic : Analysis::QuasiStatic;
+    options_.integrator =
+        s.text("analysis.integrator") == "energy-consistent" ? Integrator::EnergyConsistent : Integrator::Newmark;
+    if (options_.integrator == Integrator::EnergyConsistent && !model_.beams.empty())
+      s.refuse("analysis.integrator", "energy-consistent integration covers rigid bodies only; this model has beam elements");
+    options_.impact_step_fraction = s.real("analysis.impact_step_fraction");
+    options_.max_new_penetration = s.real("analysis.max_new_penetration");
     options_.max_iterations = static_cast<int>(s.integer("analysis.max_iterations"));
     options_.max_cuts = static_cast<int>(s.integer("analysis.max_cuts"));
     options_.max_line_search = static_cast<int>(s.integer("analysis.line_search"));
     options_.disp_tol = 1e-10;
     double mass = 0.0;
     for (const auto& b : model_.bodies) mass += b.mass;
-    if (!disc) mass = model_.sections[0].rhoA * (vec(s, "beam.end") - vec(s, "beam.start")).norm();
+    if (kind == "beam") mass = model_.sections[0].rhoA * (vec(s, "beam.end") - vec(s, "beam.start")).norm();
+    if (kind == "flying-beam") mass = flying_.mass_per_length * flying_.length;
     const double weight = mass * g.norm();
     options_.force_tol = s.real("analysis.tolerance") * (weight > 0.0 ? weight : 1.0);
     run_.dt = s.real("analysis.dt");
@@ -298,9 +334,38 @@ class RollingBeam final : public Scene {
     w.attribute("/time_history", "steps", static_cast<std::int64_t>(h.steps));
     w.attribute("/time_history", "newton_iterations", static_cast<std::int64_t>(h.newton_iterations));
     w.attribute("/time_history", "step_cuts", static_cast<std::int64_t>(h.cuts));
+    w.attribute("/time_history", "substeps", static_cast<std::int64_t>(h.substeps));
+    w.attribute("/time_history", "limited_steps", static_cast<std::int64_t>(h.limited_steps));
+    w.attribute("/time_history", "penetration_cuts", static_cast<std::int64_t>(h.penetration_cuts));
   }
 
  private:
+  // Seed 000 examples 4.3 and 4.4 from the kernel's builders, with the study's contact law.
+  void build_example(const Study& s, const std::string& kind, const rolling::ContactLaw& law) {
+    if (kind == "puck") {
+      rolling::PuckParams p;
+      p.radius = s.real("disc.radius");
+      p.mass = s.real("disc.mass");
+      p.height = s.real("disc.length");
+      p.half_width = s.real("puck.half_width");
+      p.mu = law.mu, p.eps_n = law.eps_n, p.eps_t = law.eps_t;
+      p.v0 = vec(s, "disc.velocity");
+      p.omega0 = vec(s, "disc.angular_velocity")(1);
+      p.force_peak = s.real("puck.force_peak");
+      p.moment_peak = s.real("puck.moment_peak");
+      p.pulse = s.real("puck.pulse");
+      model_ = rolling::puck_model(p);
+    } else {
+      flying_.mu = law.mu, flying_.eps_n = law.eps_n, flying_.eps_t = law.eps_t;
+      flying_.force_peak = s.real("flying_beam.force_peak");
+      flying_.ramp = s.real("flying_beam.ramp");
+      flying_.force_end = flying_.ramp + 1e-3;
+      flying_.wall_distance = s.real("flying_beam.wall_distance");
+      flying_.g = vec(s, "gravity.acceleration").norm();
+      model_ = rolling::flying_beam_model(flying_);
+    }
+  }
+
   static int node_index(const Study& s, const std::string& key, double v, const std::vector<int>& ids) {
     if (v < 0 || v != std::floor(v) || v >= static_cast<double>(ids.size()))
       s.refuse(key, "node " + std::to_string(v) + " does not exist; allowed: 0.." + std::to_string(ids.size() - 1));
@@ -313,6 +378,7 @@ class RollingBeam final : public Scene {
   rolling::RunOptions run_;
   std::vector<int> record_;
   rolling::History history_;
+  rolling::FlyingBeamParams flying_;
 };
 
 }  // namespace
