@@ -105,7 +105,7 @@ int texture_command(const Args& args) {
     std::vector<double> x(n), all(n_lines * n), up(nh), ua(nh);
     for (std::size_t i = 0; i < n; ++i) x[i] = ls.spacing * static_cast<double>(i);
     std::vector<texture::Profile> profiles(n_lines);
-    texture::HeightStatistics mean{};
+    std::vector<texture::HeightStatistics> stats;
     for (std::size_t r = 0; r < n_lines; ++r) {
       rng::PhiloxStream(seed, r, rng::Stream::roughness_phase).uniform_open(up.data(), nh);
       rng::PhiloxStream(seed, r, rng::Stream::roughness_amplitude).uniform_open(ua.data(), nh);
@@ -113,14 +113,12 @@ int texture_command(const Args& args) {
       const auto st = texture::line_statistics(all.data() + r * n, n, ls.spacing);
       refuse_overflow(s, "line", r, st, all.data() + r * n, n);
       print_statistics("line", r, st, false);
-      mean.rms += st.rms / static_cast<double>(n_lines);
-      mean.skewness += st.skewness / static_cast<double>(n_lines);
-      mean.kurtosis += st.kurtosis / static_cast<double>(n_lines);
-      mean.correlation_length_x += st.correlation_length_x / static_cast<double>(n_lines);
+      stats.push_back(st);
       profiles[r].x = x;
       profiles[r].z.assign(all.begin() + static_cast<std::ptrdiff_t>(r * n), all.begin() + static_cast<std::ptrdiff_t>((r + 1) * n));
     }
-    print_statistics("line_mean", n_lines, mean, false);
+    // Mean over realisations; a correlation length that never reaches 1/e (NaN) is left out.
+    print_statistics("line_mean", n_lines, texture::mean_statistics(stats), false);
     w.write("/texture/x", {n}, x.data(), "m", "position along the line");
     w.write("/texture/lines", {n_lines, n}, all.data(), "m", "line texture heights, one realisation per row");
     w.make_scale("/texture/x", "x");
@@ -140,20 +138,16 @@ int texture_command(const Args& args) {
   if (n_surf) {
     texture::Surface surf;
     std::vector<double> heights;
-    texture::HeightStatistics mean{};
+    std::vector<texture::HeightStatistics> stats;
     for (std::size_t r = 0; r < n_surf; ++r) {
       surfaces.generate(seed, r, surf);
       heights.insert(heights.end(), surf.heights.begin(), surf.heights.end());
       const auto st = texture::surface_statistics(surf);
       refuse_overflow(s, "surface", r, st, surf.heights.data(), surf.heights.size());
       print_statistics("surface", r, st, true);
-      mean.rms += st.rms / static_cast<double>(n_surf);
-      mean.skewness += st.skewness / static_cast<double>(n_surf);
-      mean.kurtosis += st.kurtosis / static_cast<double>(n_surf);
-      mean.correlation_length_x += st.correlation_length_x / static_cast<double>(n_surf);
-      mean.correlation_length_y += st.correlation_length_y / static_cast<double>(n_surf);
+      stats.push_back(st);
     }
-    print_statistics("surf_mean", n_surf, mean, true);
+    print_statistics("surf_mean", n_surf, texture::mean_statistics(stats), true);
     std::vector<double> xs(surf.nx), ys(surf.ny);
     for (std::size_t i = 0; i < surf.nx; ++i) xs[i] = surf.dx * static_cast<double>(i);
     for (std::size_t i = 0; i < surf.ny; ++i) ys[i] = surf.dy * static_cast<double>(i);

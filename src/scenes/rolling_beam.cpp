@@ -277,6 +277,14 @@ class RollingBeam final : public Scene {
       w.write(std::string("/time_history/") + f.name, {nt, nn, 3}, v.data(), f.units, f.what);
       w.attach_scale(std::string("/time_history/") + f.name, "/time_history/time", 0);
     }
+    std::vector<double> rot(nt * nn * 9);
+    for (std::size_t t = 0; t < nt; ++t)
+      for (std::size_t n = 0; n < nn; ++n)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) rot[((t * nn + n) * 3 + static_cast<std::size_t>(i)) * 3 + static_cast<std::size_t>(j)] = h.rotation[t][n](i, j);
+    w.write("/time_history/rotation", {nt, nn, 3, 3}, rot.data(), "1",
+            "node rotation matrices Q (columns: the node's frame vectors e1, e2, e3 in space)");
+    w.attach_scale("/time_history/rotation", "/time_history/time", 0);
     std::vector<double> nodes(record_.begin(), record_.end());
     w.write("/time_history/node", {nn}, nodes.data(), "1", "model node index of each recorded node");
     // Energies (seed 000 §4; kernels/rolling README R-43).

@@ -18,6 +18,16 @@ def test_disc_slides_then_rolls(tmp_path):
         v = np.linalg.norm(f["/time_history/velocity"][:, 0, :], axis=1)
         gap = f["/time_history/contact/normal_gap"][:, 0]
         friction_work = f["/time_history/energy/friction_work"][-1]
+        q = f["/time_history/rotation"][:, 0]
+        w_z = f["/time_history/angular_velocity"][:, 0, 2]
+    # Rotations: orthonormal, about the disc axis z, and each step turns by the incremental Rodrigues
+    # rotation of the trapezoidal angular velocity, theta = 2 atan(alpha / 2), alpha = h (w_n + w_n+1) / 2
+    # (D-12; kernels/rolling README R-30..R-33).
+    assert np.allclose(np.einsum("tij,tkj->tik", q, q), np.eye(3), atol=1e-12)
+    angle = np.unwrap(np.arctan2(q[:, 1, 0], q[:, 0, 0]))
+    alpha = 0.5 * (w_z[1:] + w_z[:-1]) * np.diff(t)
+    assert np.abs(np.diff(angle) - 2 * np.arctan(alpha / 2)).max() < 1e-9
+    with h5py.File(out) as f:
         for name in ("kinetic", "penalty", "friction_work", "balance_error"):
             assert f["/time_history/energy/" + name].attrs["units"] in (b"J", "J")
     sliding = np.flatnonzero(slip == 1)
