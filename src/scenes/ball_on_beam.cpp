@@ -14,6 +14,7 @@
 #include "kernels/beam/linear_response.hpp"
 #include "kernels/beam/modal_beam.hpp"
 #include "kernels/contact/geometry.hpp"
+#include "kernels/spectral/harmonic_synthesis.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "kernels/spectral/welch_expectation.hpp"
 #include "kernels/texture/line_texture.hpp"
@@ -24,6 +25,7 @@
 #include "src/io/psd_result.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/study.hpp"
+#include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -81,6 +83,10 @@ std::vector<KeySpec> ball_on_beam_keys() {
       choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
                  std::string("damping_only"), {"damping_only", "zero"}),
       real_key("contact", "k0", "N/m", "linearised contact stiffness k0", std::string("6.8e6"), 0.0, inf, false),
+      choice_key("contact", "blocked_force",
+                 "linearised law's F0(t): spring (W + k0 h_patch(v t), k0 from [contact]) or solver (the contact "
+                 "solver's blocked force along a rough strip, seed 002 §4.2: k0, d0 and the F0 PSD from a cached table)",
+                 std::string("spring"), {"spring", "solver"}),
       bool_key("contact", "patch_filter", "average the roughness over the Hertz contact width at the static load",
                std::string("true")),
       real_key("roughness", "spacing", "m",
@@ -108,6 +114,7 @@ std::vector<KeySpec> ball_on_beam_keys() {
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
   for (auto& t : texture_io::surface_keys()) k.push_back(t);
   for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
+  for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
   return k;
 }
 
@@ -174,6 +181,8 @@ class BallOnBeam final : public Scene {
     beam::ContactLaw& law = model_.contact;
     const std::string law_name = s.text("contact.law");
     law_name_ = law_name;
+    blocked_solver_ = law_name == "linearised" && s.text("contact.blocked_force") == "solver";
+    if (blocked_solver_) study_ = &s;
     linearised_ = law_name == "linearised";
     uses_table_ = law_name == "table" || law_name == "literal";
     law.kind = linearised_ ? beam::ContactLawKind::linearised
@@ -206,7 +215,7 @@ class BallOnBeam final : public Scene {
     } catch (const std::exception& e) {
       throw config_error(s.where("roughness.spacing") + ": " + e.what());
     }
-    if (!uses_table_)
+    if (!uses_table_ && !blocked_solver_)
       check_contact_resolution(s, linearised_ ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * static_compression_));
     // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
     step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
@@ -252,7 +261,39 @@ class BallOnBeam final : public Scene {
                                                      " N does not reach the ball's weight; raise approach_max");
       check_contact_resolution(*study_, t.stiffness_at(model_.ball.mass * model_.ball.gravity));
     }
+    if (blocked_solver_) prepare_blocked_force(quiet, rebuild);
     integrator_ = std::make_unique<beam::ExactStepIntegrator>(model_, step_options_);
+  }
+
+  // The contact solver's blocked force (seed 002 §4.2): k0 from the table, F0(t) synthesised per
+  // realisation from the table's PSD along the path, G_t(f) = 2 pi G_k(2 pi f / v) / v (D-2),
+  // sampled at the integration step.
+  void prepare_blocked_force(bool quiet, bool rebuild) {
+    std::string status;
+    const double weight = model_.ball.mass * model_.ball.gravity;
+    blocked_ = stiffness::resolve_blocked_force(*study_, model_.contact.radius, model_.contact.effective_modulus, weight,
+                                                rebuild, quiet, status);
+    if (!quiet) std::fprintf(stderr, "blocked force table: %s (k0 = %.4g N/m, d0 = %.4g m)\n", status.c_str(), blocked_.k0,
+                             blocked_.approach);
+    model_.contact.k0 = blocked_.k0;
+    static_compression_ = weight / blocked_.k0;
+    check_contact_resolution(*study_, blocked_.k0);
+    f0_step_ = 1.0 / (model_.sample_rate * static_cast<double>(step_options_.substeps));
+    auto n = static_cast<std::size_t>(std::ceil(beam::traverse_duration(model_.traverse) / f0_step_)) + 4;
+    n = texture::fast_even_length(n);
+    f0_synth_ = std::make_unique<spectral::HarmonicSynthesiser>(n);
+    const double df = 1.0 / (static_cast<double>(n) * f0_step_), v = model_.traverse.speed;
+    f0_psd_.assign(f0_synth_->harmonics(), 0.0);
+    for (std::size_t j = 1; j < f0_psd_.size(); ++j) {
+      const double f = df * static_cast<double>(j);
+      f0_psd_[j] = 2.0 * M_PI * blocked_.psd_at(2.0 * M_PI * f / v) / v;
+    }
+    f0_df_ = df;
+  }
+
+  double blocked_force_time_psd(double f) const {
+    const double v = model_.traverse.speed;
+    return 2.0 * M_PI * blocked_.psd_at(2.0 * M_PI * f / v) / v;
   }
 
   std::vector<StagePlan> plan() const override {
@@ -273,7 +314,9 @@ class BallOnBeam final : public Scene {
                      : "the point-contact laws need no isotropic surface"},
         table_stage,
         {"blocked_force", linearised_ ? StageStatus::run : StageStatus::skipped,
-         linearised_ ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)" : "only the linearised law uses F0"},
+         !linearised_ ? "only the linearised law uses F0"
+         : blocked_solver_ ? "contact solver along a rough strip ([blocked_force], cached by input hash); F0(t) synthesised from its PSD"
+                           : "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"},
         {"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step, implicit contact (D-9, D-10)"},
         {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
     };
@@ -301,13 +344,26 @@ class BallOnBeam final : public Scene {
   // Simulates realisation `id` into ws.result (shared by the ensemble and the time-history output).
   void simulate(std::uint64_t id, Workspace& ws) const {
     const std::size_t nh = lines_->harmonics();
+    if (!blocked_solver_) {
     rng::PhiloxStream(seed_, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
     rng::PhiloxStream(seed_, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
     lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data());
-    beam::UniformSamples h{0.0, dx_, ws.texture};
-    if (patch_half_width_ > 0.0) h = beam::contact_patch_average(h, patch_half_width_);
+    }
+    beam::UniformSamples h{0.0, dx_, blocked_solver_ ? std::vector<double>() : ws.texture};
+    if (patch_half_width_ > 0.0 && !blocked_solver_) h = beam::contact_patch_average(h, patch_half_width_);
     beam::Realisation r;
-    if (linearised_) {
+    if (blocked_solver_) {
+      const std::size_t nh = f0_synth_->harmonics(), n = f0_synth_->samples();
+      std::vector<double> up(nh), ua(nh);
+      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_phase).uniform_open(up.data(), nh);
+      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_amplitude).uniform_open(ua.data(), nh);
+      r.blocked_force.origin = 0.0;
+      r.blocked_force.step = f0_step_;
+      r.blocked_force.values.resize(n);
+      f0_synth_->synthesise(f0_psd_.data(), f0_df_, spectral::Amplitudes::rayleigh, up.data(), ua.data(),
+                            r.blocked_force.values.data());
+      for (double& f : r.blocked_force.values) f += model_.ball.mass * model_.ball.gravity;
+    } else if (linearised_) {
       // Blocked force of a linear contact spring: F0(t) = W + k0 h(x_start + v t) (D-11).
       const double v = model_.traverse.speed, x0 = model_.traverse.x_start, dt = dx_ / v;
       const auto first = static_cast<std::size_t>(std::floor(x0 / dx_));
@@ -388,6 +444,11 @@ class BallOnBeam final : public Scene {
     w.attribute("/contact", "static_compression", static_compression_);
     w.attribute("/contact", "patch_half_width", patch_half_width_);
     w.attribute("/contact", "effective_modulus", model_.contact.effective_modulus);
+    if (linearised_) w.attribute("/contact", "k0", model_.contact.k0);
+    if (blocked_solver_) {
+      w.attribute("/contact", "blocked_force_approach", blocked_.approach);
+      w.attribute("/contact", "blocked_force_input_hash", blocked_.input_hash);
+    }
 
     const auto& b = model_.beam;
     std::vector<double> fm(static_cast<std::size_t>(b.modes()));
@@ -424,7 +485,12 @@ class BallOnBeam final : public Scene {
     for (std::size_t i = 0; i < nfine; ++i) {
       fine[i] = dfine * static_cast<double>(i);
       const double k = 2.0 * M_PI * fine[i] / v;
-      if (i == 0 || k > k_nyq) continue;  // harmonics above pi/dx are not synthesised
+      if (i == 0) continue;
+      if (blocked_solver_) {
+        exc[i] = blocked_force_time_psd(fine[i]);
+        continue;
+      }
+      if (k > k_nyq) continue;  // harmonics above pi/dx are not synthesised
       const double patch = a > 0.0 ? std::sin(k * a) / (k * a) : 1.0;
       exc[i] = k0 * k0 * gt(fine[i]) * patch * patch;
     }
@@ -490,7 +556,11 @@ class BallOnBeam final : public Scene {
   bool average_, dopri_;
   double rtol_, confidence_, band_min_, band_max_;
   std::size_t time_histories_;
-  bool linearised_ = false, uses_table_ = false;
+  bool linearised_ = false, uses_table_ = false, blocked_solver_ = false;
+  stiffness::BlockedForceTable blocked_;
+  std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
+  std::vector<double> f0_psd_;
+  double f0_step_ = 0.0, f0_df_ = 0.0;
   std::string law_name_;
   beam::ExactStepOptions step_options_;
   const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene

@@ -1,0 +1,220 @@
+#include "src/stiffness/blocked_force_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+
+#include "kernels/contact/blocked_force.hpp"
+#include "kernels/contact/version.hpp"
+#include "kernels/spectral/welch.hpp"
+#include "src/ensemble/checkpoint.hpp"
+#include "src/ensemble/mpi_context.hpp"
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/io/provenance.hpp"
+#include "src/stiffness/stiffness_table.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rollspec::stiffness {
+
+using namespace study;
+
+namespace {
+std::string hex16(std::uint64_t h) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+const char* kColumns[] = {"position", "force", "stiffness", "psd_wavenumber", "psd"};
+
+std::vector<const std::vector<double>*> columns(const BlockedForceTable& t) {
+  return {&t.position, &t.force, &t.stiffness, &t.psd_wavenumber, &t.psd};
+}
+std::string checksum(const BlockedForceTable& t) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (const auto* c : columns(t)) h = ensemble::fnv1a64(c->data(), c->size() * sizeof(double), h);
+  for (double v : {t.approach, t.k0, t.mean_force}) h = ensemble::fnv1a64(&v, sizeof v, h);
+  return hex16(h);
+}
+}  // namespace
+
+double BlockedForceTable::psd_at(double k) const {
+  if (psd_wavenumber.size() < 2 || k > psd_wavenumber.back()) return 0.0;
+  if (k <= psd_wavenumber[1]) return psd[1];
+  const auto it = std::upper_bound(psd_wavenumber.begin(), psd_wavenumber.end(), k);
+  const std::size_t j = static_cast<std::size_t>(it - psd_wavenumber.begin());
+  const double k0 = psd_wavenumber[j - 1], k1 = psd_wavenumber[j], g0 = psd[j - 1], g1 = psd[j];
+  if (g0 <= 0.0 || g1 <= 0.0) return g0 + (g1 - g0) * (k - k0) / (k1 - k0);
+  return g0 * std::pow(k / k0, std::log(g1 / g0) / std::log(k1 / k0));
+}
+
+std::vector<KeySpec> blocked_force_keys() {
+  return {
+      real_key("blocked_force", "strip_length", "m", "length of the rough strip the ball slides along", std::string("4e-3"),
+               0.0, std::numeric_limits<double>::infinity(), false),
+      integer_key("blocked_force", "window", "cells of the contact solver's square window (holds the contact patch)",
+                  std::string("64"), 8, 4096),
+      integer_key("blocked_force", "step", "path step in cells", std::string("2"), 1, 1000),
+      integer_key("blocked_force", "segment", "Welch segment (positions) of the F0 PSD along the path", std::string("256"),
+                  16, 1 << 20),
+  };
+}
+
+namespace {
+
+std::string inputs_text(const Study& s, double radius, double e_star, double load) {
+  std::ostringstream in;
+  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
+     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
+     << "\n\n[blocked_force]\n";
+  for (const char* k : {"strip_length", "window", "step", "segment"}) in << k << " = " << s.text(std::string("blocked_force.") + k) << "\n";
+  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
+  in << "seed = " << s.text("study.seed") << "\n\n[surface]\n";
+  for (const char* k : {"ny", "spacing", "anisotropy"}) in << k << " = " << s.text(std::string("surface.") + k) << "\n";
+  in << "\n[texture]\n";
+  for (const auto& k : texture_io::psd_keys())
+    if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
+  in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+  return in.str();
+}
+
+BlockedForceTable read(const std::string& path) {
+  const io::Hdf5Reader r(path);
+  io::check_filetype(r, kBlockedForceFileType, 1);
+  BlockedForceTable t;
+  std::vector<std::vector<double>*> cols = {&t.position, &t.force, &t.stiffness, &t.psd_wavenumber, &t.psd};
+  for (std::size_t i = 0; i < cols.size(); ++i) *cols[i] = r.read(std::string("/blocked_force/") + kColumns[i]);
+  t.approach = r.double_attribute("/blocked_force", "approach");
+  t.k0 = r.double_attribute("/blocked_force", "k0");
+  t.mean_force = r.double_attribute("/blocked_force", "mean_force");
+  t.load = r.double_attribute("/blocked_force", "load");
+  t.inputs = r.string_attribute("/blocked_force", "inputs");
+  t.input_hash = r.string_attribute("/blocked_force", "input_hash");
+  if (r.string_attribute("/blocked_force", "data_checksum") != checksum(t))
+    throw data_error(path + ": the blocked-force table's data do not match its checksum; rebuild with --rebuild");
+  return t;
+}
+
+BlockedForceTable build(const Study& s, double radius, double e_star, double load, bool quiet) {
+  const double dx = s.real("surface.spacing");
+  const auto ny = static_cast<std::size_t>(s.integer("surface.ny"));
+  auto nx = static_cast<std::size_t>(std::round(s.real("blocked_force.strip_length") / dx));
+  nx += nx % 2;
+  const auto window = std::min<std::size_t>(static_cast<std::size_t>(s.integer("blocked_force.window")), ny);
+  const auto step = static_cast<std::size_t>(s.integer("blocked_force.step"));
+  if (nx < window + 16 * step) s.refuse("blocked_force.strip_length", "leaves fewer than 16 path positions outside the window");
+  // One strip realisation (Philox surface streams of realisation 0) from the study's PSD.
+  texture::SpectralSurfaceSpec spec;
+  spec.nx = nx;
+  spec.ny = ny;
+  spec.dx = spec.dy = dx;
+  spec.amplitudes = texture_io::study_amplitudes(s);
+  spec.anisotropy = s.real("surface.anisotropy");
+  texture::Surface strip;
+  try {
+    texture_io::SurfaceGenerator g;
+    g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(texture_io::study_psd(s), spec);
+    g.generate(static_cast<std::uint64_t>(s.integer("study.seed")), 0, strip);
+  } catch (const std::exception& e) {
+    throw config_error(s.where("blocked_force.strip_length") + ": " + e.what());
+  }
+  contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
+  std::vector<double> positions;
+  for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
+  contact::SolverOptions opts;
+  const double h = s.real("stiffness.hardness");
+  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
+  opts.tolerance = s.real("stiffness.tolerance");
+  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  if (!quiet) std::fprintf(stderr, "%sblocked force: %zu positions on a %zu x %zu strip\n", ensemble::rank_prefix().c_str(), positions.size(), nx, ny);
+  contact::ContactSolver solver(window_grid, e_star);
+  contact::BlockedForcePath path;
+  try {
+    path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts);
+  } catch (const std::invalid_argument& e) {
+    throw config_error(s.where("blocked_force.window") + ": " + e.what() + "; widen the window or the strip ([surface] ny)");
+  }
+  if (!path.converged)
+    throw data_error("blocked force: the path search did not converge (largest error " + num(path.max_error) +
+                     "); raise [stiffness] max_iterations or tolerance");
+  BlockedForceTable t;
+  t.position = path.position;
+  t.force = path.force;
+  t.stiffness = path.stiffness;
+  t.approach = path.approach;
+  t.k0 = path.k0;
+  t.mean_force = path.mean_force;
+  t.load = load;
+  // PSD of F0 along the path: Welch with f_s = 1 / (step dx) cycles/m, then per rad/m.
+  spectral::WelchConfig wc;
+  wc.sample_rate = 1.0 / (static_cast<double>(step) * dx);
+  wc.segment = std::min<std::size_t>(static_cast<std::size_t>(s.integer("blocked_force.segment")), path.force.size());
+  wc.overlap = wc.segment / 2;
+  const spectral::WelchPlan plan(wc);
+  spectral::WelchWorkspace ws(wc.segment);
+  std::vector<double> g(plan.n_freq());
+  plan.psd(path.force.data(), path.force.size(), g.data(), ws);
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));
+    t.psd.push_back(g[k] / (2.0 * M_PI));
+  }
+  return t;
+}
+
+void write(const std::string& path, const BlockedForceTable& t, const Study& s) {
+  std::error_code ec;
+  fs::create_directories(fs::path(path).parent_path(), ec);
+  io::Hdf5Writer w(path);
+  io::write_provenance(w, kBlockedForceFileType, "1.0", s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
+  w.write("/blocked_force/position", {t.position.size()}, t.position.data(), "m", "ball position along the strip");
+  w.write("/blocked_force/force", {t.force.size()}, t.force.data(), "N", "blocked force F0 at the fixed approach d0");
+  w.write("/blocked_force/stiffness", {t.stiffness.size()}, t.stiffness.data(), "N/m", "frozen-set stiffness along the path");
+  w.write("/blocked_force/psd_wavenumber", {t.psd_wavenumber.size()}, t.psd_wavenumber.data(), "rad/m", "wavenumber");
+  w.write("/blocked_force/psd", {t.psd.size()}, t.psd.data(), "N^2 m/rad", "one-sided PSD of F0 along the path (Welch)");
+  w.attribute("/blocked_force", "approach", t.approach);
+  w.attribute("/blocked_force", "k0", t.k0);
+  w.attribute("/blocked_force", "mean_force", t.mean_force);
+  w.attribute("/blocked_force", "load", t.load);
+  w.attribute("/blocked_force", "kernel_version", static_cast<double>(contact::kernel_version));
+  w.attribute("/blocked_force", "inputs", t.inputs);
+  w.attribute("/blocked_force", "input_hash", t.input_hash);
+  w.attribute("/blocked_force", "data_checksum", checksum(t));
+  w.commit();
+}
+
+}  // namespace
+
+BlockedForceTable resolve_blocked_force(const Study& s, double radius, double effective_modulus, double load, bool rebuild,
+                                        bool quiet, std::string& status) {
+  const std::string inputs = inputs_text(s, radius, effective_modulus, load);
+  const std::string hash = hex16(ensemble::fnv1a64(inputs));
+  const std::string path =
+      (fs::path(s.file()).parent_path() / s.text("stiffness.table_dir") / ("blocked-force-" + hash + ".h5")).string();
+  if (fs::exists(path) && !rebuild) {
+    BlockedForceTable t = read(path);  // refuses damaged files
+    if (t.inputs != inputs) throw data_error(path + ": table inputs differ from the study's; run with --rebuild");
+    status = "cached " + path;
+    return t;
+  }
+  BlockedForceTable t = build(s, radius, effective_modulus, load, quiet);
+  t.inputs = inputs;
+  t.input_hash = hash;
+  if (ensemble::mpi_rank() == 0) write(path, t, s);
+  ensemble::mpi_barrier();
+  status = "built " + path;
+  return t;
+}
+
+}  // namespace rollspec::stiffness

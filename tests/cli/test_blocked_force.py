@@ -1,0 +1,60 @@
+"""The linearised law's blocked force from the contact solver (seed 002 §4.2): Hertz on a smooth
+strip, a cached table for a rough one, F0(t) realisations from its PSD."""
+import glob
+import shutil
+
+import h5py
+import numpy as np
+
+from conftest import SOURCE, run
+
+E_STAR = 1.0 / (2 * (1 - 0.3**2) / 210e9)
+R = 0.02
+W = 4 / 3 * np.pi * R**3 * 7850 * 9.81
+
+
+def rig(tmp_path, *sets, realisations=4):
+    study = tmp_path / "rig.ini"
+    shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
+    out = tmp_path / "r.h5"
+    args = [a for kv in sets for a in ("--set", kv)]
+    r = run(["run", study, "--out", out, "--set", "contact.blocked_force=solver", "--set", f"study.realisations={realisations}",
+             "--set", "ball.end=0.12", *args])
+    return r, out
+
+
+def test_smooth_strip_gives_hertz(tmp_path):
+    # 4 um cells: 17 cells per Hertz contact radius at the weight (a = 69 um).
+    r, out = rig(tmp_path, "texture.rms=1e-12", "surface.spacing=4e-6", "texture.short_wavelength=8e-6",
+                 "surface.ny=64", "blocked_force.window=64", "blocked_force.strip_length=1e-3", "blocked_force.step=4",
+                 "blocked_force.segment=16")
+    assert r.returncode == 0, r.stderr
+    d_hertz = (3 * W / (4 * E_STAR * np.sqrt(R))) ** (2 / 3)
+    k_hertz = 2 * E_STAR * np.sqrt(R * d_hertz)
+    with h5py.File(out) as f:
+        k0, d0 = f["/contact"].attrs["k0"][0], f["/contact"].attrs["blocked_force_approach"][0]
+        assert abs(k0 / k_hertz - 1) < 5e-3, (k0, k_hertz)
+        assert abs(d0 / d_hertz - 1) < 2e-3, (d0, d_hertz)
+        # A smooth strip has no force fluctuation: the ball rides on its weight, never losing contact.
+        assert f["/contact/loss_of_contact_share"][0] == 0.0
+
+
+def test_rough_strip_table_is_built_once_and_reused(tmp_path):
+    common = ["surface.spacing=8e-6", "texture.short_wavelength=16e-6", "surface.ny=96", "blocked_force.window=96",
+              "blocked_force.strip_length=3e-3", "stiffness.hardness=6e9", "blocked_force.segment=64"]
+    r, out = rig(tmp_path, *common)
+    assert r.returncode == 0, r.stderr
+    assert "blocked force table: built" in r.stderr
+    tables = glob.glob(str(tmp_path / "tables" / "blocked-force-*.h5"))
+    assert len(tables) == 1
+    with h5py.File(tables[0]) as t:
+        f0 = t["/blocked_force/force"][:]
+        assert abs(f0.mean() / W - 1) < 1e-8  # d0 puts the mean blocked force at the ball's weight
+        assert f0.std() > 0.01 * W
+        k0 = t["/blocked_force"].attrs["k0"]
+        assert (t["/blocked_force/psd"][1:] > 0).all()
+    with h5py.File(out) as f:
+        assert f["/contact"].attrs["k0"][0] == k0
+        assert "/reference/psd" in f
+    r, out = rig(tmp_path, *common)
+    assert r.returncode == 0 and "blocked force table: cached" in r.stderr
