@@ -15,6 +15,10 @@ std::vector<KeySpec> stiffness_keys() {
                  std::string("rough"), {"rough", "smooth"}),
       choice_key("stiffness", "shape", "ball geometry: exact sphere or Hertz's paraboloid", std::string("sphere"),
                  {"sphere", "paraboloid"}),
+      real_key("stiffness", "ball_rms", "m",
+               "rms roughness of the ball (rough on rough: composite surface h_flat + h_ball, the ball's heights from "
+               "the [texture] PSD's shape scaled to this rms); 0: smooth ball",
+               std::string("0"), 0.0, inf),
       real_key("stiffness", "approach_max", "m", "largest approach from first contact", std::string("0.5e-6"), 0.0, inf, false),
       integer_key("stiffness", "steps", "approach steps (uniform, warm-started)", std::string("20"), 2, 10000),
       integer_key("stiffness", "realisations", "rough-surface realisations averaged", std::string("10"), 1, 100000),

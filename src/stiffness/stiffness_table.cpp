@@ -28,6 +28,9 @@ namespace rollspec::stiffness {
 
 namespace {
 
+// Realisation ids of the ball's own roughness start here, clear of the flat's 0..R-1.
+constexpr std::uint64_t kBallRealisations = 1u << 30;
+
 std::string hex16(std::uint64_t h) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
@@ -112,7 +115,7 @@ TableSpec table_spec(const study::Study& s, double ball_radius, double effective
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
      << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << s.text("stiffness.shape") << "\n\n[stiffness]\n";
-  for (const char* k : {"surface", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
+  for (const char* k : {"surface", "ball_rms", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
     in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
   in << "realisations = " << (rough(s) ? s.text("stiffness.realisations") : "1") << "\nseed = " << s.text("study.seed") << "\n";
   in << "\n[surface]\n";
@@ -198,6 +201,8 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
   const double dmax = s.real("stiffness.approach_max");
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  const double ball_rms = s.real("stiffness.ball_rms");
+  if (ball_rms > 0.0 && !is_rough) s.refuse("stiffness.ball_rms", "needs [stiffness] surface = rough (the flat's realisations)");
   contact::SolverOptions opts;
   opts.hardness = hardness_of(s);
   opts.tolerance = s.real("stiffness.tolerance");
@@ -226,6 +231,17 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
         if (!solver) solver = std::make_unique<contact::ContactSolver>(grid, effective_modulus);
         texture::Surface surf;
         if (is_rough) surfaces.generate(seed, static_cast<std::uint64_t>(r), surf);
+        if (is_rough && ball_rms > 0.0) {
+          // Rough on rough: the gap depends only on h_flat + h_ball (design §4); the ball's heights are
+          // an independent realisation (ids offset by kBallRealisations) scaled to the ball's rms.
+          texture::Surface ball;
+          surfaces.generate(seed, kBallRealisations + static_cast<std::uint64_t>(r), ball);
+          double sq = 0.0;
+          for (double v : ball.heights) sq += v * v;
+          const double scale = ball_rms / std::sqrt(sq / static_cast<double>(ball.heights.size()));
+          for (double& v : ball.heights) v *= scale;
+          surf.heights = contact::composite_heights(surf.heights, ball.heights);
+        }
         const auto gap = contact::ball_gap(grid, ball_radius, surf.heights, shape);
         // Rough: from first contact (the highest summit under the ball). Smooth: from the touching
         // position itself (min gap on the grid is dx^2 / 4R, not 0, when no cell centre is under the ball).

@@ -121,3 +121,18 @@ def test_ball_on_beam_with_table_law(tmp_path):
         lt, lh = f["/bands/level_db"][-1], g["/bands/level_db"][-1]
         assert f["/contact/loss_of_contact_share"][0] == 0.0
         assert np.abs(lt - lh).max() < 0.2
+
+
+def test_rough_ball_on_rough_flat_uses_the_composite_surface(tmp_path):
+    study = copy_study(tmp_path, "seed002-table.ini")
+    smooth_ball = run(["stiffness", study, "--out", tmp_path / "a.h5", *SMALL_ROUGH])
+    rough_ball = run(["stiffness", study, "--out", tmp_path / "b.h5", *SMALL_ROUGH, "--set", "stiffness.ball_rms=0.3e-6"])
+    assert smooth_ball.returncode == 0 and rough_ball.returncode == 0, rough_ball.stderr
+    # The composite is rougher (rms sqrt(0.38^2 + 0.3^2) um): first contact comes earlier, so the
+    # weight needs a larger approach from it and the contact is softer.
+    a, b = weight_line(smooth_ball.stdout), weight_line(rough_ball.stdout)
+    assert b["approach"] > a["approach"] and b["k"] < a["k"]
+    with h5py.File(tmp_path / "a.h5") as fa, h5py.File(tmp_path / "b.h5") as fb:
+        assert fa["/stiffness"].attrs["input_hash"] != fb["/stiffness"].attrs["input_hash"]
+    r = run(["stiffness", copy_study(tmp_path, "hertz.ini"), "--quiet", "--set", "stiffness.ball_rms=1e-7"])
+    assert r.returncode == 78 and "ball_rms" in r.stderr and "surface = rough" in r.stderr
