@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -17,9 +18,15 @@
 #include "src/io/csv_table.hpp"
 
 namespace {
+// One temporary file per fuzzing process, removed when the process exits.
+struct TempFile {
+  std::string path = "/tmp/rollspec-fuzz-csv-" + std::to_string(::getpid()) + ".csv";
+  ~TempFile() { std::remove(path.c_str()); }
+};
+
 const std::string& temp_path() {
-  static const std::string p = "/tmp/rollspec-fuzz-csv-" + std::to_string(::getpid()) + ".csv";
-  return p;
+  static const TempFile file;
+  return file.path;
 }
 }  // namespace
 

@@ -21,9 +21,15 @@
 
 namespace {
 
+// One temporary file per fuzzing process, removed when the process exits.
+struct TempFile {
+  std::string path = "/tmp/rollspec-fuzz-study-" + std::to_string(::getpid()) + ".ini";
+  ~TempFile() { std::remove(path.c_str()); }
+};
+
 const std::string& temp_path() {
-  static const std::string p = "/tmp/rollspec-fuzz-study-" + std::to_string(::getpid()) + ".ini";
-  return p;
+  static const TempFile file;
+  return file.path;
 }
 
 void read_back(const rollspec::study::Study& s) {
