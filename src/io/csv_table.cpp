@@ -79,13 +79,13 @@ CsvTable read_csv(const std::string& path) {
     }
     if (cells.size() != t.columns.size())
       throw data_error(path + ":" + std::to_string(n) + ": " + std::to_string(cells.size()) + " values, but the header names " +
-                       std::to_string(t.columns.size()) + " columns");
+                       std::to_string(t.columns.size()) + " columns; allowed: one value per column");
     for (std::size_t c = 0; c < cells.size(); ++c) {
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || end == cells[c].c_str() || *end != '\0')
         throw data_error(path + ":" + std::to_string(n) + ": column '" + t.columns[c] + "' value '" + cells[c] +
-                         "' is not a number");
+                         "' is not a number; allowed: a decimal number such as 1.5e-3");
       if (!std::isfinite(v))
         throw data_error(path + ":" + std::to_string(n) + ": column '" + t.columns[c] + "' value '" + cells[c] +
                          "' is not finite; allowed: finite numbers");
@@ -94,7 +94,7 @@ CsvTable read_csv(const std::string& path) {
     t.lines.push_back(n);
   }
   if (t.columns.empty()) throw data_error(path + ": empty file; expected a header line and data rows");
-  if (t.lines.empty()) throw data_error(path + ": header but no data rows");
+  if (t.lines.empty()) throw data_error(path + ": header but no data rows; expected at least one row of numbers after the header");
   return t;
 }
 

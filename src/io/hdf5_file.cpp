@@ -144,7 +144,7 @@ Hdf5Reader::Hdf5Reader(const std::string& path) : path_(path) {
   if (std::filesystem::is_directory(path, ec))
     throw missing_input("cannot read '" + path + "': it is a directory; expected an HDF5 file");
   if (!std::filesystem::is_regular_file(path, ec)) throw missing_input("cannot open '" + path + "': no such file");
-  if (H5Fis_hdf5(path.c_str()) <= 0) throw data_error(path + ": not an HDF5 file (or truncated)");
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw data_error(path + ": not an HDF5 file (or truncated); expected an HDF5 file written by rollspec");
   file_ = Hdf5Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (!file_.valid()) throw data_error(path + ": cannot open as HDF5 (truncated or damaged)");
 }
@@ -159,7 +159,7 @@ bool Hdf5Reader::exists(const std::string& object) const {
 }
 
 std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std::size_t>* dims) const {
-  if (!exists(dataset)) throw data_error(path_ + ": no dataset " + dataset);
+  if (!exists(dataset)) throw data_error(path_ + ": no dataset " + dataset + "; expected it in a complete rollspec file");
   int rank = 0;
   if (H5LTget_dataset_ndims(file_.get(), dataset.c_str(), &rank) < 0) throw data_error(path_ + ": cannot read " + dataset);
   std::vector<hsize_t> d(static_cast<std::size_t>(rank));

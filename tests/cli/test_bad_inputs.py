@@ -70,7 +70,7 @@ GARBAGE = bytes(range(256)) * 3
 MEASUREMENTS = [
     # name, file bytes, exit code, fragments besides the file name
     ("empty", b"", EX_DATAERR, ["m.csv: empty file", "expected a header line"]),
-    ("header only", b"frequency_hz,psd\n", EX_DATAERR, ["m.csv: header but no data rows"]),
+    ("header only", b"frequency_hz,psd\n", EX_DATAERR, ["m.csv: header but no data rows", "expected at least one row of numbers"]),
     ("wrong header", b"f,psd\n10,1\n20,1\n", EX_DATAERR,
      ["m.csv:1: no column 'frequency_hz'", "columns found: f, psd"]),
     ("wrong units header", b"frequency_hz,psd_db\n10,1\n20,1\n", EX_DATAERR,
@@ -86,8 +86,8 @@ MEASUREMENTS = [
     ("huge number 1e999", b"frequency_hz,psd\n10,1\n20,1e999\n", EX_DATAERR,
      ["m.csv:3: column 'psd' value '1e999' is not finite", "allowed: finite numbers"]),
     ("too many columns", b"frequency_hz,psd\n10,1\n20,1,3\n", EX_DATAERR,
-     ["m.csv:3: 3 values, but the header names 2 columns"]),
-    ("empty cell", b"frequency_hz,psd\n10,1\n20,\n", EX_DATAERR, ["m.csv:3: column 'psd' value '' is not a number"]),
+     ["m.csv:3: 3 values, but the header names 2 columns", "allowed: one value per column"]),
+    ("empty cell", b"frequency_hz,psd\n10,1\n20,\n", EX_DATAERR, ["m.csv:3: column 'psd' value '' is not a number", "allowed: a decimal number"]),
     ("duplicated column", b"frequency_hz,psd,psd\n10,1,2\n20,1,2\n", EX_DATAERR,
      ["m.csv:1: column 'psd' appears twice", "each column name may appear once"]),
     ("band average overflows", b"frequency_hz,psd\n1,1.5e308\n5000,1.5e308\n", EX_DATAERR,
@@ -127,15 +127,15 @@ def signal_text(n=64, overrides=None, header="a,b"):
 
 SIGNALS = [
     ("empty", b"", EX_DATAERR, ["s.csv: empty file"]),
-    ("header only", b"a,b\n", EX_DATAERR, ["s.csv: header but no data rows"]),
+    ("header only", b"a,b\n", EX_DATAERR, ["s.csv: header but no data rows", "expected at least one row"]),
     ("fewer samples than a segment", signal_text(8), EX_DATAERR,
      ["s.csv: 8 samples, fewer than one segment (--segment 16)"]),
     ("number as header", signal_text(64, header="0.5,1.5"), EX_DATAERR,
      ["s.csv:1: the first line must be a header", "'0.5'"]),
     ("nan sample", signal_text(64, {9: "0.1,nan"}), EX_DATAERR, ["s.csv:11: column 'b' value 'nan' is not finite"]),
     ("huge number 1e999", signal_text(64, {3: "1e999,0"}), EX_DATAERR, ["s.csv:5: column 'a' value '1e999' is not finite"]),
-    ("too many columns", signal_text(64, {20: "1,2,3"}), EX_DATAERR, ["s.csv:22: 3 values, but the header names 2 columns"]),
-    ("text in a cell", signal_text(64, {5: "0.1,volts"}), EX_DATAERR, ["s.csv:7: column 'b' value 'volts' is not a number"]),
+    ("too many columns", signal_text(64, {20: "1,2,3"}), EX_DATAERR, ["s.csv:22: 3 values, but the header names 2 columns", "allowed: one value per column"]),
+    ("text in a cell", signal_text(64, {5: "0.1,volts"}), EX_DATAERR, ["s.csv:7: column 'b' value 'volts' is not a number", "allowed: a decimal number"]),
     ("binary garbage", b"a,b\n0.1,0.2\n\x00\x01\x02\x03\xff\xfe\n", EX_DATAERR, ["s.csv:3: binary data"]),
     ("duplicated channel names", signal_text(64, header="a,a"), EX_DATAERR, ["s.csv:1: column 'a' appears twice"]),
     ("samples whose PSD overflows", signal_text(64, {30: "1e300,0"}), EX_DATAERR,
@@ -248,7 +248,7 @@ TABLES = [
     ("decreasing wavenumbers", TABLE_HEAD + b"1e6,1e-23\n1e5,1e-20\n1e3,1e-18\n", EX_DATAERR,
      ["psd.csv:3: column 'wavenumber_rad_per_m'", "does not increase"]),
     ("one row", TABLE_HEAD + b"1e3,1e-18\n", EX_DATAERR, ["psd.csv: a PSD table needs at least 2 rows"]),
-    ("header only", TABLE_HEAD, EX_DATAERR, ["psd.csv: header but no data rows"]),
+    ("header only", TABLE_HEAD, EX_DATAERR, ["psd.csv: header but no data rows", "expected at least one row"]),
     ("three columns", b"wavenumber_rad_per_m,psd_m3,weight\n1e3,1e-18,1\n1e6,1e-23,1\n", EX_DATAERR,
      ["psd.csv:1: a PSD table has 2 columns (abscissa, psd), found 3"]),
     ("one column", b"wavenumber_rad_per_m\n1e3\n1e6\n", EX_DATAERR, ["psd.csv:1: a PSD table has 2 columns", "found 1"]),
@@ -422,7 +422,7 @@ def level_db(f):
 RESULTS = [
     # name, how to make the file from a good result, exit code, fragments besides the file name
     ("truncated HDF5", truncate_half, EX_DATAERR, ["truncated"]),
-    ("zero bytes", lambda g, d: (d.write_bytes(b""), d)[1], EX_DATAERR, ["not an HDF5 file"]),
+    ("zero bytes", lambda g, d: (d.write_bytes(b""), d)[1], EX_DATAERR, ["not an HDF5 file", "expected an HDF5 file written by rollspec"]),
     ("random bytes", lambda g, d: (d.write_bytes(np.random.default_rng(9).bytes(4096)), d)[1], EX_DATAERR,
      ["not an HDF5 file"]),
     ("a CSV file", lambda g, d: (d.write_text(GOOD_MEASUREMENT), d)[1], EX_DATAERR, ["not an HDF5 file"]),
@@ -441,7 +441,7 @@ RESULTS = [
     ("schema_version 9.0 (h5py string)", lambda g, d: edited_copy(g, d, set_attr("schema_version", "9.0")),
      EX_DATAERR, ["schema_version '9.0' is not readable", "allowed: 1.x"]),
     ("no /bands/level_db", lambda g, d: edited_copy(g, d, lambda f: f.__delitem__("/bands/level_db")), EX_DATAERR,
-     ["no dataset /bands/level_db"]),
+     ["no dataset /bands/level_db", "expected it in a complete rollspec file"]),
     ("integer /bands/level_db", lambda g, d: edited_copy(g, d, lambda f: replace_dataset(
         "/bands/level_db", level_db(f).astype(np.int32))(f)), EX_DATAERR, ["dataset /bands/level_db is not floating point"]),
     ("band edges shorter than the levels", lambda g, d: edited_copy(g, d, lambda f: replace_dataset(
