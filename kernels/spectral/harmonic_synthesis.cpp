@@ -3,6 +3,8 @@
 #include <fftw3.h>
 
 #include <cmath>
+#include <memory>
+#include <new>
 #include <stdexcept>
 
 #include "kernels/spectral/fftw_planner_lock.hpp"
@@ -40,8 +42,12 @@ HarmonicSynthesiser::~HarmonicSynthesiser() {
 void HarmonicSynthesiser::synthesise(const double* psd, double fundamental, Amplitudes mode, const double* u_phase,
                                      const double* u_amplitude, double* out) const {
   const std::size_t nh = harmonics();
-  fftw_complex* spec = fftw_alloc_complex(nh);
-  double* buf = fftw_alloc_real(n_);
+  // FFTW-aligned buffers owned for the call, so a PSD refused by amplitude() leaks nothing.
+  const std::unique_ptr<fftw_complex, decltype(&fftw_free)> spec_owner(fftw_alloc_complex(nh), fftw_free);
+  const std::unique_ptr<double, decltype(&fftw_free)> buf_owner(fftw_alloc_real(n_), fftw_free);
+  fftw_complex* spec = spec_owner.get();
+  double* buf = buf_owner.get();
+  if (!spec || !buf) throw std::bad_alloc();
   spec[0][0] = spec[0][1] = 0.0;
   spec[nh - 1][0] = spec[nh - 1][1] = 0.0;
   // FFTW's c2r computes x_i = X_0 + 2 Re sum_j X_j e^{2 pi i j i/N} + X_{N/2}(-1)^i, so X_j = A_j/2 e^{i phi_j}.
@@ -53,8 +59,6 @@ void HarmonicSynthesiser::synthesise(const double* psd, double fundamental, Ampl
   }
   fftw_execute_dft_c2r(static_cast<fftw_plan>(plan_), spec, buf);
   for (std::size_t i = 0; i < n_; ++i) out[i] = buf[i];
-  fftw_free(spec);
-  fftw_free(buf);
 }
 
 std::vector<double> synthesise_direct(const std::vector<double>& psd, double fundamental, Amplitudes mode,

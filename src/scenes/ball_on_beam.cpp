@@ -353,10 +353,10 @@ class BallOnBeam final : public Scene {
     if (patch_half_width_ > 0.0 && !blocked_solver_) h = beam::contact_patch_average(h, patch_half_width_);
     beam::Realisation r;
     if (blocked_solver_) {
-      const std::size_t nh = f0_synth_->harmonics(), n = f0_synth_->samples();
-      std::vector<double> up(nh), ua(nh);
-      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_phase).uniform_open(up.data(), nh);
-      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_amplitude).uniform_open(ua.data(), nh);
+      const std::size_t nh_f0 = f0_synth_->harmonics(), n = f0_synth_->samples();
+      std::vector<double> up(nh_f0), ua(nh_f0);
+      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_phase).uniform_open(up.data(), nh_f0);
+      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_amplitude).uniform_open(ua.data(), nh_f0);
       r.blocked_force.origin = 0.0;
       r.blocked_force.step = f0_step_;
       r.blocked_force.values.resize(n);

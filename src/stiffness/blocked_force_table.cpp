@@ -54,9 +54,9 @@ double BlockedForceTable::psd_at(double k) const {
   if (k <= psd_wavenumber[1]) return psd[1];
   const auto it = std::upper_bound(psd_wavenumber.begin(), psd_wavenumber.end(), k);
   const std::size_t j = static_cast<std::size_t>(it - psd_wavenumber.begin());
-  const double k0 = psd_wavenumber[j - 1], k1 = psd_wavenumber[j], g0 = psd[j - 1], g1 = psd[j];
-  if (g0 <= 0.0 || g1 <= 0.0) return g0 + (g1 - g0) * (k - k0) / (k1 - k0);
-  return g0 * std::pow(k / k0, std::log(g1 / g0) / std::log(k1 / k0));
+  const double ka = psd_wavenumber[j - 1], kb = psd_wavenumber[j], ga = psd[j - 1], gb = psd[j];
+  if (ga <= 0.0 || gb <= 0.0) return ga + (gb - ga) * (k - ka) / (kb - ka);
+  return ga * std::pow(k / ka, std::log(gb / ga) / std::log(kb / ka));
 }
 
 std::vector<KeySpec> blocked_force_keys() {
