@@ -517,6 +517,8 @@ class BallOnBeam final : public Scene {
             "expected Welch estimate (D-20) of the linearised model's frequency-domain PSD, averaged over ball positions");
     w.write("/reference/psd_raw", {rows(), f.size()}, raw.data(), "(m/s^2)^2/Hz",
             "the frequency-domain PSD itself at the bin frequencies (not window-smoothed)");
+    w.attribute("/reference/psd", "label",
+                std::string("linear, quasi-stationary (no moving-weight response, no loss of contact)"));
     io::write_frequency_scale(w, "/reference", f);
     io::write_sensor_scale(w, "/reference", sensors);
     for (const char* d : {"/reference/psd", "/reference/psd_raw"}) {

@@ -153,6 +153,7 @@ class RandomOscillator final : public Scene {
       exact[i] = random_oscillator_exact_psd(e.frequency[i], force_psd(e.frequency[i]), mass_, fn_, zeta_, fs_);
     w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units,
             "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator (D-19)");
+    w.attribute("/reference/psd", "label", std::string("exact"));
     io::write_frequency_scale(w, "/reference", e.frequency);
     io::write_sensor_scale(w, "/reference", e.sensors);
     w.attach_scale("/reference/psd", "/reference/sensor", 0);
