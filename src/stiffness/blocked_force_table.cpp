@@ -16,6 +16,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/stiffness/stiffness_table.hpp"
+#include "src/stiffness/table_text.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -26,24 +27,13 @@ namespace rollspec::stiffness {
 using namespace study;
 
 namespace {
-std::string hex16(std::uint64_t h) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 const char* kColumns[] = {"position", "force", "stiffness", "psd_wavenumber", "psd"};
 
 std::vector<const std::vector<double>*> columns(const BlockedForceTable& t) {
   return {&t.position, &t.force, &t.stiffness, &t.psd_wavenumber, &t.psd};
 }
 std::string checksum(const BlockedForceTable& t) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (const auto* c : columns(t)) h = ensemble::fnv1a64(c->data(), c->size() * sizeof(double), h);
+  std::uint64_t h = column_hash(columns(t));
   for (double v : {t.approach, t.k0, t.mean_force}) h = ensemble::fnv1a64(&v, sizeof v, h);
   return hex16(h);
 }

@@ -1,4 +1,5 @@
 #include "src/stiffness/stiffness_table.hpp"
+#include "src/stiffness/table_text.hpp"
 
 #include <omp.h>
 
@@ -31,17 +32,7 @@ namespace {
 // Realisation ids of the ball's own roughness start here, clear of the flat's 0..R-1.
 constexpr std::uint64_t kBallRealisations = 1u << 30;
 
-std::string hex16(std::uint64_t h) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 double hardness_of(const study::Study& s) {
   const double h = s.real("stiffness.hardness");
@@ -60,8 +51,7 @@ std::vector<const std::vector<double>*> columns(const StiffnessTable& t) {
 }
 
 std::string checksum(const StiffnessTable& t) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (const auto* c : columns(t)) h = ensemble::fnv1a64(c->data(), c->size() * sizeof(double), h);
+  std::uint64_t h = column_hash(columns(t));
   return hex16(h);
 }
 

@@ -1,0 +1,32 @@
+#pragma once
+// Text forms shared by the cached stage tables: hashes as 16 hex digits, numbers in round-trip
+// precision (so a table's canonical inputs compare exactly), and the FNV-1a checksum over columns.
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "src/ensemble/checkpoint.hpp"
+
+namespace rollspec::stiffness {
+
+inline std::string hex16(std::uint64_t h) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+inline std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// FNV-1a over the bytes of the columns, in order, continuing from `h`.
+inline std::uint64_t column_hash(const std::vector<const std::vector<double>*>& columns,
+                                 std::uint64_t h = 14695981039346656037ull) {
+  for (const auto* c : columns) h = ensemble::fnv1a64(c->data(), c->size() * sizeof(double), h);
+  return h;
+}
+
+}  // namespace rollspec::stiffness
