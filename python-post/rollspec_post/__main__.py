@@ -1,11 +1,12 @@
-"""python3 -m rollspec_post COMMAND ...: plots from rollspec result files."""
+"""python3 -m rollspec_post COMMAND ...: plots and reports from rollspec result files."""
 import argparse
+import os
 import sys
 
-from .result_file import PostError
+from .result_file import EX_CANTCREAT, PostError
 
 
-def main(argv=None):
+def build_parser():
     parser = argparse.ArgumentParser(prog="python3 -m rollspec_post",
                                      description="Plots and reports from rollspec result files.")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -18,19 +19,57 @@ def main(argv=None):
     t = sub.add_parser("texture", help="line texture, surface image, target vs realised PSD")
     t.add_argument("texture_file", help="file written by rollspec texture")
     t.add_argument("--out", "-o", required=True, help="output PNG")
-    args = parser.parse_args(argv)
+    s = sub.add_parser("stiffness", help="P(δ) and k(δ) with their spread over realisations, and Hertz")
+    s.add_argument("table", help="stiffness table (HDF5, filetype rollspec-stiffness-table)")
+    s.add_argument("--out", "-o", required=True, help="output PNG")
+    j = sub.add_parser("trajectory", help="rolling-beam node paths, speeds and energies over time")
+    j.add_argument("result", help="rollspec result file with /time_history/position")
+    j.add_argument("--out", "-o", required=True, help="output PNG")
+    b = sub.add_parser("bench", help="work-precision plot: error against run time, log-log, one line per method")
+    b.add_argument("csv", help="CSV with columns method (or integrator), seconds (or time_s), error_db (or error)")
+    b.add_argument("--out", "-o", required=True, help="output PNG")
+    r = sub.add_parser("report", help="one self-contained HTML page: key figures, PSD, provenance, study")
+    r.add_argument("result", help="rollspec result file (HDF5)")
+    r.add_argument("--measurement", help="measured PSD, CSV frequency_hz,psd (band rule of `rollspec compare`)")
+    r.add_argument("--sensor", type=int, default=0, help="sensor index (default 0)")
+    r.add_argument("--fmin", type=float, default=0.0, help="lowest band edge compared (Hz)")
+    r.add_argument("--fmax", type=float, default=float("inf"), help="highest band edge compared (Hz)")
+    r.add_argument("--out", "-o", required=True, help="output HTML")
+    return parser
+
+
+def run(args):
+    out_dir = os.path.dirname(os.path.abspath(args.out))
+    if not os.path.isdir(out_dir):
+        raise PostError(f"{args.out}: cannot create (no directory {out_dir})", EX_CANTCREAT)
+    if args.command == "psd":
+        from .psd_plot import plot_psd
+        plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor)
+    elif args.command == "texture":
+        from .texture_plot import plot_texture
+        plot_texture(args.texture_file, args.out)
+    elif args.command == "stiffness":
+        from .stiffness_plot import plot_stiffness
+        plot_stiffness(args.table, args.out)
+    elif args.command == "trajectory":
+        from .trajectory_plot import plot_trajectory
+        plot_trajectory(args.result, args.out)
+    elif args.command == "bench":
+        from .bench_plot import plot_bench
+        plot_bench(args.csv, args.out)
+    elif args.command == "report":
+        from .report_page import build_report
+        build_report(args.result, args.out, args.measurement, args.sensor, args.fmin, args.fmax)
+
+
+def main(argv=None):
+    args = build_parser().parse_args(argv)
     try:
-        if args.command == "psd":
-            from .psd_plot import plot_psd
-            plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor)
-            print(f"wrote {args.out}")
-        elif args.command == "texture":
-            from .texture_plot import plot_texture
-            plot_texture(args.texture_file, args.out)
-            print(f"wrote {args.out}")
+        run(args)
     except PostError as e:
         print(f"rollspec_post {args.command}: error: {e}", file=sys.stderr)
         return e.exit_code
+    print(f"wrote {args.out}")
     return 0
 
 

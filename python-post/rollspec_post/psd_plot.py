@@ -4,7 +4,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .measurement import band_average, read_measurement
+from .measurement import compare_bands, read_measurement
 from .result_file import open_rollspec, text_attr
 
 
@@ -48,17 +48,18 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     if rows == 2:
-        s = sensors[0]
-        mlev = np.array([band_average(meas[0], meas[1], a, b) for a, b in
-                         zip(band_data["lower_frequency"], band_data["upper_frequency"])])
-        ok = np.isfinite(mlev) & (mlev > 0)
-        delta = band_data["level_db"][s][ok] - db(mlev[ok])
+        cmp = compare_bands(meas, band_data, sensors[0])
+        ok = cmp["used"]
         ax2 = fig.add_subplot(2, 1, 2)
-        ax2.bar(np.arange(ok.sum()), delta, color="C0")
+        # bars coloured by whether the measured level lies in the simulated interval
+        ax2.bar(np.arange(ok.sum()), cmp["delta_db"][ok], color=np.where(cmp["inside"][ok], "C0", "C3"))
         ax2.set_xticks(np.arange(ok.sum()))
         ax2.set_xticklabels([f"{v:g}" for v in band_data["nominal_frequency"][ok]], rotation=90, fontsize=7)
         ax2.axhline(0, color="k", lw=0.8)
         ax2.set_ylabel("ΔL sim − meas (dB)")
+        ax2.set_title(f"rms {cmp['rms_db_error']:.2f} dB; measured level inside the interval in "
+                      f"{cmp['inside_count']}/{cmp['count']} bands (blue: inside, red: outside)"
+                      if cmp["count"] else "the measurement covers none of the bands", fontsize=9)
         ax2.set_xlabel("third-octave band (Hz)")
         ax2.grid(True, axis="y", alpha=0.3)
     FigureCanvasAgg(fig).print_png(out)

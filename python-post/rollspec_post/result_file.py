@@ -4,7 +4,7 @@ import os
 
 import h5py
 
-EX_DATAERR, EX_NOINPUT, EX_CANTCREAT = 65, 66, 73
+EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_CANTCREAT = 64, 65, 66, 73
 KNOWN_SCHEMA_MAJOR = {"rollspec-result": 1, "rollspec-texture": 1, "rollspec-stiffness-table": 1}
 
 
@@ -46,3 +46,17 @@ def open_rollspec(path, filetypes=("rollspec-result",)):
         raise PostError(f"{path}: schema_version {version!r} is not readable by rollspec_post "
                         f"(reads major version {KNOWN_SCHEMA_MAJOR[filetype]})", EX_DATAERR)
     return f
+
+
+def read(f, name):
+    """Dataset `name` as an array; a clear error (not a KeyError) when the file lacks it."""
+    if name not in f:
+        raise PostError(f"{f.filename}: has no {name}", EX_DATAERR)
+    return f[name][()]
+
+
+def scalar(f, name, default=None):
+    """A one-element dataset as a float, or `default` when absent (optional key figures)."""
+    if name not in f:
+        return default
+    return float(f[name][()].reshape(-1)[0])

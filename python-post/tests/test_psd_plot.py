@@ -2,13 +2,7 @@
 import h5py
 import numpy as np
 
-from conftest import post
-
-
-def is_png_with_content(path):
-    import matplotlib.image
-    img = matplotlib.image.imread(path)
-    return path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and img.shape[0] > 100 and img[..., :3].std() > 0.05
+from conftest import is_png_with_content, post
 
 
 def test_psd_plot_with_bands_and_measurement(oscillator_result, tmp_path):

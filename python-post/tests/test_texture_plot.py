@@ -1,8 +1,7 @@
 """`python3 -m rollspec_post texture` on a file made by `rollspec texture` in the test run."""
 import subprocess
 
-from conftest import BIN, SOURCE, post
-from test_psd_plot import is_png_with_content
+from conftest import BIN, SOURCE, is_png_with_content, post
 
 
 def test_texture_plot(tmp_path):

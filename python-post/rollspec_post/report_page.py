@@ -1,0 +1,161 @@
+"""`report`: one self-contained HTML page from a result file (the page a user sends to a colleague):
+key figures, the PSD plot (embedded as a PNG data URI), the band comparison with a measurement,
+provenance and the resolved study text. No scripts and no external resources."""
+import base64
+import html
+import io
+import os
+import re
+
+import numpy as np
+
+from .measurement import compare_bands, read_measurement
+from .psd_plot import plot_psd
+from .result_file import EX_DATAERR, EX_USAGE, PostError, open_rollspec, read, scalar, text_attr
+from . import __version__
+
+PROVENANCE = ("filetype", "schema_version", "rollspec_version", "git_sha", "seed", "rng", "library_versions", "scene")
+BANDS = ("nominal_frequency", "lower_frequency", "upper_frequency", "level_db", "ci_lower_db", "ci_upper_db")
+
+STYLE = """
+body { font-family: "DejaVu Sans", Arial, sans-serif; margin: 0; background: #f4f5f7; color: #1d2330; }
+main { max-width: 1080px; margin: 0 auto; padding: 24px 32px 40px; background: #fff; }
+h1 { font-size: 1.6em; margin: 0 0 4px; } h2 { font-size: 1.15em; margin: 28px 0 8px; border-bottom: 1px solid #dde; }
+.sub { color: #556; margin: 0 0 18px; }
+.cards { display: grid; grid-template-columns: repeat(3, 1fr); gap: 12px; }
+.card { border: 1px solid #d6dae3; border-radius: 6px; padding: 10px 14px; background: #fafbfd; }
+.card .v { font-size: 1.45em; font-weight: bold; } .card .k { color: #445; } .card .n { color: #667; font-size: .85em; }
+table { border-collapse: collapse; font-size: .9em; } td, th { border: 1px solid #d6dae3; padding: 3px 8px; text-align: left; }
+th { background: #eef0f5; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
+tr.out td { background: #fdecec; }
+img { width: 100%; border: 1px solid #e3e6ed; }
+pre { background: #f6f7f9; border: 1px solid #e3e6ed; padding: 10px; font-size: .85em; white-space: pre-wrap; }
+footer { color: #778; font-size: .8em; margin-top: 28px; }
+"""
+
+
+def esc(value):
+    return html.escape(str(value), quote=True)
+
+
+def png_data_uri(render):
+    """Run `render(buffer)` (a plot function writing PNG) and return the PNG as a data URI."""
+    buf = io.BytesIO()
+    render(buf)
+    return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
+
+
+def plain(value):
+    if isinstance(value, np.ndarray):
+        value = value.reshape(-1)[0] if value.size == 1 else value.tolist()
+    return value.decode() if isinstance(value, bytes) else value
+
+
+def read_result(path, sensor):
+    with open_rollspec(path) as f:
+        r = {"provenance": {k: plain(text_attr(f, k, "—")) for k in PROVENANCE},
+             "study": plain(text_attr(f, "study", "")),
+             "bands": {n: np.asarray(read(f, "/bands/" + n), float) for n in BANDS},
+             "sensors": [plain(s) for s in read(f, "/psd/sensor")],
+             "realisations": int(np.reshape(f["/psd"].attrs["realisations"], -1)[0]),
+             "confidence": float(np.reshape(f["/psd"].attrs.get("confidence_level", 0.95), -1)[0]),
+             "wall_seconds": scalar(f, "/run/wall_seconds"),
+             "threads": plain(f["/run"].attrs.get("threads")) if "/run" in f else None,
+             "loss": scalar(f, "/contact/loss_of_contact_share"),
+             "loss_std": scalar(f, "/contact/loss_of_contact_share_std")}
+        if not 0 <= sensor < len(r["sensors"]):
+            raise PostError(f"--sensor {sensor}: the result has sensors 0..{len(r['sensors']) - 1}", EX_USAGE)
+        if "/reference/psd" in f:
+            # share of PSD bins over the band range whose interval holds the exact answer
+            freq = read(f, "/psd/frequency")
+            lo, hi, ref = (read(f, n)[sensor] for n in ("/psd/ci_lower", "/psd/ci_upper", "/reference/psd"))
+            sel = (freq >= r["bands"]["lower_frequency"][0]) & (freq <= r["bands"]["upper_frequency"][-1])
+            r["reference"] = (int(((ref >= lo) & (ref <= hi))[sel].sum()), int(sel.sum()),
+                              freq[sel][0], freq[sel][-1])
+    return r
+
+
+def card(key, value, note=""):
+    return f'<div class="card"><div class="k">{esc(key)}</div><div class="v">{esc(value)}</div>' \
+           f'<div class="n">{esc(note)}</div></div>'
+
+
+def key_figures(r, cmp):
+    level = f"{100 * r['confidence']:.0f} %"
+    cards = [card("realisations", r["realisations"], f"sensor {r['sensor_name']}")]
+    if cmp is not None:
+        cards.append(card("rms dB error vs measurement", f"{cmp['rms_db_error']:.2f} dB",
+                          f"over {cmp['count']} third-octave bands"))
+        cards.append(card(f"bands with the measurement inside the {level} interval",
+                          f"{100 * cmp['inside_count'] / cmp['count']:.0f} %",
+                          f"{cmp['inside_count']} of {cmp['count']} bands"))
+    else:
+        cards.append(card("rms dB error vs measurement", "—", "no measurement given (--measurement CSV)"))
+        cards.append(card(f"bands with the measurement inside the {level} interval", "—", "no measurement given"))
+    if r["loss"] is not None:
+        note = f"± {100 * r['loss_std']:.2g} % over realisations" if r["loss_std"] is not None else ""
+        cards.append(card("loss-of-contact share", f"{100 * r['loss']:.3g} %", note))
+    else:
+        cards.append(card("loss-of-contact share", "—", "no contact in this scene"))
+    if r["wall_seconds"] is not None:
+        threads = f"{r['threads']} threads" if r["threads"] is not None else ""
+        cards.append(card("run time", f"{r['wall_seconds']:.3g} s", threads))
+    else:
+        cards.append(card("run time", "—", "not recorded"))
+    if "reference" in r:
+        n_in, n, f0, f1 = r["reference"]
+        cards.append(card(f"bins holding the exact PSD in their {level} interval", f"{100 * n_in / n:.1f} %",
+                          f"{n_in} of {n} bins, {f0:g}–{f1:g} Hz"))
+    return '<div class="cards">' + "".join(cards) + "</div>"
+
+
+def band_table(r, cmp):
+    b, s = r["bands"], r["sensor"]
+    rows = []
+    for i in np.flatnonzero(cmp["used"]):
+        cls = "" if cmp["inside"][i] else ' class="out"'
+        cells = (f"{b['nominal_frequency'][i]:g}", f"{b['level_db'][s][i]:.2f}", f"{cmp['measured_db'][i]:.2f}",
+                 f"{cmp['delta_db'][i]:+.2f}", f"{b['ci_lower_db'][s][i]:.2f} … {b['ci_upper_db'][s][i]:.2f}",
+                 "yes" if cmp["inside"][i] else "no")
+        rows.append(f"<tr{cls}>" + "".join(f'<td class="num">{esc(c)}</td>' for c in cells) + "</tr>")
+    head = "".join(f"<th>{esc(h)}</th>" for h in ("band (Hz)", "simulated (dB)", "measured (dB)", "Δ (dB)",
+                                                  "interval (dB)", "inside"))
+    return f"<table><tr>{head}</tr>{''.join(rows)}</table>"
+
+
+def description(study):
+    m = re.search(r"^\s*description\s*=\s*(.+)$", study, re.MULTILINE)
+    return m.group(1).strip() if m else ""
+
+
+def build_report(result, out, measurement=None, sensor=0, fmin=0.0, fmax=np.inf):
+    r = read_result(result, sensor)
+    r["sensor"], r["sensor_name"] = sensor, r["sensors"][sensor]
+    meas = read_measurement(measurement) if measurement else None
+    cmp = compare_bands(meas, r["bands"], sensor, fmin, fmax) if meas is not None else None
+    if cmp is not None and cmp["count"] == 0:
+        raise PostError(f"{measurement}: covers none of the result's bands inside [{fmin:g}, {fmax:g}] Hz",
+                        EX_DATAERR)
+    psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurement, True, sensor))
+    prov = dict(r["provenance"], result_file=os.path.basename(result))
+    if measurement:
+        prov["measurement_file"] = os.path.basename(measurement)
+    scene = prov["scene"]
+    parts = [f"<h1>rollspec report: {esc(scene)}</h1>",
+             f'<p class="sub">{esc(description(r["study"]) or os.path.basename(result))}</p>',
+             "<h2>Key figures</h2>", key_figures(r, cmp),
+             "<h2>Acceleration PSD</h2>",
+             f'<img alt="acceleration PSD of sensor {esc(r["sensor_name"])}" src="{psd_uri}">']
+    if cmp is not None:
+        parts += ["<h2>Third-octave bands against the measurement</h2>", band_table(r, cmp)]
+    parts += ["<h2>Provenance</h2>",
+              "<table>" + "".join(f"<tr><th>{esc(k)}</th><td>{esc(v)}</td></tr>" for k, v in prov.items())
+              + "</table>",
+              "<h2>Study (resolved, defaults included)</h2>", f"<pre>{esc(r['study'])}</pre>",
+              f"<footer>made by rollspec_post {esc(__version__)} from {esc(os.path.basename(result))}</footer>"]
+    page = (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+            f"<title>{esc('rollspec report: ' + str(scene))}</title><style>{STYLE}</style></head>\n"
+            f"<body><main>\n" + "\n".join(parts) + "\n</main></body></html>\n")
+    with open(out, "w", encoding="utf-8") as fh:
+        fh.write(page)
+    return out

@@ -1,0 +1,26 @@
+"""`python3 -m rollspec_post stiffness` on a table in the engine's layout; wrong files refused."""
+import numpy as np
+
+from conftest import is_png_with_content, post
+
+
+def test_hertz_curve():
+    from rollspec_post.stiffness_plot import hertz
+    d = np.array([1e-6])
+    p, k = hertz(d, 0.01, 100e9)
+    assert np.isclose(p[0], 4 / 3 * 100e9 * 0.1 * 1e-9) and np.isclose(k[0], 1.5 * p[0] / d[0])
+
+
+def test_stiffness_plot(stiffness_table, tmp_path):
+    out = tmp_path / "k.png"
+    r = post("stiffness", stiffness_table, "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert is_png_with_content(out)
+
+
+def test_stiffness_refuses_a_result_file(oscillator_result, tmp_path):
+    r = post("stiffness", oscillator_result, "--out", tmp_path / "x.png")
+    assert r.returncode == 65 and "rollspec-stiffness-table" in r.stderr
+    r = post("stiffness", tmp_path / "missing.h5", "--out", tmp_path / "x.png")
+    assert r.returncode == 66 and "no such file" in r.stderr
+    assert not (tmp_path / "x.png").exists()

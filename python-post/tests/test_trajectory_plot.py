@@ -1,0 +1,25 @@
+"""`python3 -m rollspec_post trajectory` on an analytic rolling disc (slides, then rolls)."""
+import h5py
+import numpy as np
+
+from conftest import is_png_with_content, post
+
+
+def test_plane_is_the_two_widest_coordinates(rolling_disc_result):
+    from rollspec_post.trajectory_plot import plane_axes
+    with h5py.File(rolling_disc_result) as f:
+        assert plane_axes(f["/time_history/position"][()]) == (0, 2)  # x travels, z spans the beam
+    assert plane_axes(np.random.default_rng(1).normal(size=(5, 2, 3)) * [1, 5, 9]) == (1, 2)
+
+
+def test_trajectory_plot(rolling_disc_result, tmp_path):
+    out = tmp_path / "traj.png"
+    r = post("trajectory", rolling_disc_result, "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert is_png_with_content(out)
+
+
+def test_trajectory_refuses_a_psd_result(oscillator_result, tmp_path):
+    r = post("trajectory", oscillator_result, "--out", tmp_path / "x.png")
+    assert r.returncode == 65 and "/time_history/position" in r.stderr
+    assert not (tmp_path / "x.png").exists()
