@@ -24,3 +24,28 @@ def test_stiffness_refuses_a_result_file(oscillator_result, tmp_path):
     r = post("stiffness", tmp_path / "missing.h5", "--out", tmp_path / "x.png")
     assert r.returncode == 66 and "no such file" in r.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+def test_stiffness_plot_of_an_engine_table(tmp_path):
+    import subprocess
+
+    import h5py
+    import pytest
+
+    from conftest import BIN, SOURCE
+    if "stiffness" not in subprocess.run([BIN, "--help"], capture_output=True, text=True).stdout:
+        pytest.skip("this rollspec build has no stiffness command")
+    table = tmp_path / "hertz.h5"
+    r = subprocess.run([BIN, "stiffness", SOURCE / "studies" / "hertz.ini", "--out", table, "--quiet"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    out = tmp_path / "hertz.png"
+    r = post("stiffness", table, "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert is_png_with_content(out)
+    from rollspec_post.stiffness_plot import hertz, read_table
+    cols, meta = read_table(str(table))
+    p, _ = hertz(cols["approach"], meta["ball_radius"], meta["effective_modulus"])
+    assert np.allclose(cols["force_mean"][1:], p[1:], rtol=0.02)  # the smooth ball is Hertz
+    with h5py.File(table) as f:
+        assert f.attrs["filetype"] in (b"rollspec-stiffness-table", "rollspec-stiffness-table")
