@@ -43,7 +43,8 @@ def plot_stiffness(path, out):
     d = cols["approach"]
     p_h, k_h = hertz(d, meta["ball_radius"], meta["effective_modulus"])
     um = d * 1e6
-    spread = "±1 std" + (f" over {meta['realisations']} realisations" if meta["realisations"] else "")
+    n = meta["realisations"]
+    spread = "±1 std" + (f" over {n} realisation{'s' if n != 1 else ''}" if n else "")
     has_area = "contact_area_mean" in cols
     fig = Figure(figsize=(15 if has_area else 11, 4.5), constrained_layout=True)
     axes = fig.subplots(1, 3 if has_area else 2)
@@ -53,9 +54,9 @@ def plot_stiffness(path, out):
                                              (ax_k, "stiffness_mean", "stiffness_std", k_h, 1e-6,
                                               "stiffness k (N/µm)")):
         m, s = cols[mean] * scale, cols[std] * scale
-        ax.plot(um, m, "C0", lw=1.5, label="rough ball: mean")
+        ax.plot(um, m, "C0", lw=1.5, label="table: mean")
         ax.fill_between(um, m - s, m + s, color="C0", alpha=0.25, lw=0, label=spread)
-        ax.plot(um, ref * scale, "k--", lw=1.0, label="Hertz (smooth ball)")
+        ax.plot(um, ref * scale, "k--", lw=1.0, label="Hertz (smooth ball, same R, E*)")
         ax.set_xlabel("approach δ (µm)")
         ax.set_ylabel(label)
         ax.grid(True, alpha=0.3)
@@ -64,7 +65,7 @@ def plot_stiffness(path, out):
     ax_k.set_title("contact stiffness dP/dδ")
     if has_area:
         # Hertz area π a² with a² = R δ: the rough ball touches on a fraction of it
-        axes[2].plot(um, cols["contact_area_mean"] * 1e12, "C0", lw=1.5, label="rough ball: mean")
+        axes[2].plot(um, cols["contact_area_mean"] * 1e12, "C0", lw=1.5, label="table: mean")
         axes[2].plot(um, np.pi * meta["ball_radius"] * np.clip(d, 0, None) * 1e12, "k--", lw=1.0,
                      label="Hertz π R δ")
         axes[2].set_xlabel("approach δ (µm)")
