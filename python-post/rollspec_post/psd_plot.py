@@ -19,6 +19,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None):
         mean, lo, hi = f["/psd/mean"][:], f["/psd/ci_lower"][:], f["/psd/ci_upper"][:]
         names = [n.decode() if isinstance(n, bytes) else n for n in f["/psd/sensor"][:]]
         ref = f["/reference/psd"][:] if "/reference/psd" in f else None
+        ref_label = text_attr(f["/reference/psd"], "label", "reference") if ref is not None else None
         units = text_attr(f["/psd/mean"], "units")
         k = int(f["/psd"].attrs["realisations"])
         level = float(f["/psd"].attrs["confidence_level"])
@@ -36,7 +37,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None):
         ax.fill_between(freq[sel], db(lo[s, sel]), db(hi[s, sel]), color=line.get_color(), alpha=0.25, lw=0,
                         label=f"{100 * level:.0f} % interval")
         if ref is not None:
-            ax.semilogx(freq[sel], db(ref[s, sel]), "k--", lw=0.8, label="exact")
+            ax.semilogx(freq[sel], db(ref[s, sel]), "k--", lw=0.8, label=ref_label)
         if bands:
             ax.hlines(band_data["level_db"][s], band_data["lower_frequency"], band_data["upper_frequency"],
                       color=line.get_color(), lw=2.5, alpha=0.8, label="third-octave bands")
