@@ -3,9 +3,11 @@
 // contact), README Eq. (B35): the roughness averaged over a contact length 2a,
 //   h_a(x) = (1 / 2a) int_{x-a}^{x+a} h(s) ds,   a Hertz half-width a = sqrt(R delta),
 // integrated exactly on the piecewise-linear interpolant of the samples (prefix sums), the window
-// truncated at the ends of the record. The width is fixed (e.g. a at the static compression under
-// the weight): the instantaneous width a(delta(t)) would make the contact solve a fixed point in a
-// and is not implemented. A sinusoid of wavenumber k is scaled by sin(k a) / (k a).
+// truncated at the ends of the record. contact_patch_average uses one fixed width (e.g. a at the
+// static compression under the weight); PatchAverager (B38) evaluates the average at any width,
+// which the exact-step integrator uses with the width of the previous step (an exact
+// instantaneous a(delta(t)) would make the contact solve a fixed point in a). A sinusoid of
+// wavenumber k is scaled by sin(k a) / (k a).
 #include <cmath>
 #include <vector>
 
