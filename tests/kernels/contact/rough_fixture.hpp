@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "hertz_fixture.hpp"
+#include "kernels/contact/geometry.hpp"
 
 namespace rollspec::contact::test {
 
@@ -17,6 +18,12 @@ inline std::vector<double> wavy_heights(const Grid& grid, double amplitude, doub
                                           0.4 * std::sin(2.1 * q * (x + 0.5 * y) + 1.0));
     }
   return h;
+}
+
+// The rough ball the elastic-plastic tests share: the Hertz ball of `h` with waves of 0.15 times
+// its approach and 0.4 times its contact radius.
+inline std::vector<double> wavy_ball_gap(const Hertz& h, const Grid& grid) {
+  return ball_gap(grid, h.radius, wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a()));
 }
 
 }  // namespace rollspec::contact::test

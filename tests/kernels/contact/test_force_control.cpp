@@ -33,8 +33,7 @@ TEST_CASE("solve_force: Hertz approach under the seed ball's weight") {
 TEST_CASE("solve_force: rough elastic-plastic ball lands between the bracketing sweep steps") {
   const Hertz h;
   const Grid grid = h.grid(10.0, 1.6);
-  const auto heights = rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a());
-  const auto gap = ball_gap(grid, h.radius, heights);
+  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
   ContactSolver solver(grid, h.e_star);
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();

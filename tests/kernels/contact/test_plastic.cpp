@@ -89,8 +89,7 @@ TEST_CASE("H = 0.01 p0: force within 2 % of the bearing-area limit 2 pi R delta 
 TEST_CASE("rough ball: cap holds, saturated cells are released when unloading") {
   const Hertz h;
   const Grid grid = h.grid(12.0, 1.6);
-  const auto heights = rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a());
-  const auto gap = ball_gap(grid, h.radius, heights);
+  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
   ContactSolver solver(grid, h.e_star);
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();
@@ -112,8 +111,7 @@ TEST_CASE("rough ball: cap holds, saturated cells are released when unloading") 
 TEST_CASE("warm start with every cell saturated (empty CG set) converges to the cold solution") {
   const Hertz h;
   const Grid grid = h.grid(8.0, 1.6);
-  const auto heights = rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a());
-  const auto gap = ball_gap(grid, h.radius, heights);
+  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
   ContactSolver solver(grid, h.e_star);
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();

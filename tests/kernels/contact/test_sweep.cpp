@@ -16,8 +16,7 @@ using rollspec::contact::test::Hertz;
 TEST_CASE("sweep equals cold solves (rough, elastic-plastic)") {
   const Hertz h;
   const Grid grid = h.grid(12.0, 1.6);
-  const auto heights = rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a());
-  const auto gap = ball_gap(grid, h.radius, heights);
+  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
   ContactSolver solver(grid, h.e_star);
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();
