@@ -33,6 +33,7 @@ struct ContactState {
   bool active = false;
   Eigen::Vector3d x_f = Eigen::Vector3d::Zero();   // fictitious initial contact point (D-13)
   Eigen::Vector3d g_st = Eigen::Vector3d::Zero();  // accumulated slip (seed 000 Eq. 13)
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero(); // contact normal x_f refers to (rough surfaces, R-63)
 };
 
 struct ContactEval {

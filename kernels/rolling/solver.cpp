@@ -113,6 +113,28 @@ Matrix3d section_inertia(const BeamSection& s) {
   return Eigen::Vector3d(s.rhoJ1, s.rhoI2, s.rhoI3).asDiagonal();
 }
 
+// Rolling frictional contact with a rough surface (README R-63): the plane element (D-13, D-14)
+// on the tangent plane at the closest point S(s*) with normal nu, so gap, normal force and the
+// stick/slip return mapping are those of R-61 and seed 000 Eq. 8-16. The history is carried
+// over to the turned plane: x_f += r (nu_old - nu) and g_st projected, so that pure rolling over
+// a curved surface (centre step r alpha, contact point step r (alpha - dtheta)) leaves g_t = 0.
+// The normal block of the tangent takes the exact curvature term of R-61; the friction blocks
+// neglect the turning of the plane with x, which costs Newton iterations, not accuracy.
+ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceContactEval& sv, const ContactState& state,
+                                   const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha) {
+  const Plane tangent_plane = make_plane(sv.point, sv.normal);
+  const ContactLaw cl{law.radius, law.mu, law.eps_n, law.eps_t, law.rolling};
+  ContactState carried = state;
+  if (state.active) {
+    carried.x_f += law.radius * (state.normal - sv.normal);
+    carried.g_st -= carried.g_st.dot(sv.normal) * sv.normal;
+  }
+  ContactEval fe = evaluate_contact(tangent_plane, cl, carried, x_start, x, alpha, NormalForce::EndPoint);
+  fe.next.normal = sv.normal;
+  if (fe.active) fe.tangent.block<3, 3>(0, 0) += sv.tangent - law.eps_n * sv.normal * sv.normal.transpose();
+  return fe;
+}
+
 }  // namespace
 
 struct Solver::Impl {
@@ -125,11 +147,13 @@ struct Solver::Impl {
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
   std::vector<ContactEval> cevals;
   std::vector<SurfaceContactEval> sevals;
+  std::vector<ContactEval> sfevals;  // friction part of rough-surface pairs with mu > 0
   double penalty_energy = 0.0, tangential_energy = 0.0;
   int analyses = 0;  // SparseLU::analyzePattern calls
 
   void assemble(const Solver& S, const VectorXd& q, double t1, double dt, Mode mode, VectorXd& R,
-                Sink* K, std::vector<ContactEval>* ce, std::vector<SurfaceContactEval>* se = nullptr) const;
+                Sink* K, std::vector<ContactEval>* ce, std::vector<SurfaceContactEval>* se = nullptr,
+                std::vector<ContactEval>* sfe = nullptr) const;
   VectorXd external(const Solver& S, double t) const;
 };
 
@@ -137,7 +161,7 @@ struct Solver::Impl {
 // node (README Eq. R-40).
 void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, double dt, Mode mode,
                             VectorXd& R, Sink* K, std::vector<ContactEval>* ce,
-                            std::vector<SurfaceContactEval>* se) const {
+                            std::vector<SurfaceContactEval>* se, std::vector<ContactEval>* sfe) const {
   const Model& m = S.model_;
   const auto& nodes = S.nodes_;
   R.setZero(6 * nn);
@@ -256,16 +280,25 @@ void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, doubl
     if (ce) (*ce)[c] = ev;
   }
 
-  // rough surfaces: frictionless closest-point penalty contact, end-point force
+  // rough surfaces: closest-point penalty contact, end-point force; with friction the
+  // rolling contact element on the tangent plane at the closest point
   if (se) se->resize(m.surface_contacts.size());
+  if (sfe) sfe->resize(m.surface_contacts.size());
   for (std::size_t c = 0; c < m.surface_contacts.size(); ++c) {
     const SurfaceContactPair& sp = m.surface_contacts[c];
     const int nd = sp.node;
     const SurfaceContactEval ev =
         evaluate_surface_contact(m.surfaces[static_cast<std::size_t>(sp.surface)], sp.law, nodes[nd].x + du(nd));
-    R.segment<3>(6 * nd) -= ev.force;
-    add_block<3>(K, dofs3(6 * nd), mode == Mode::Mass ? Matrix3d::Zero() : ev.tangent);
     if (se) (*se)[c] = ev;
+    if (!(sp.law.mu > 0.0)) {
+      R.segment<3>(6 * nd) -= ev.force;
+      add_block<3>(K, dofs3(6 * nd), mode == Mode::Mass ? Matrix3d::Zero() : ev.tangent);
+      continue;
+    }
+    const ContactEval fe = rough_friction_contact(sp.law, ev, S.sstate_[c], nodes[nd].x, nodes[nd].x + du(nd), al(nd));
+    R.segment<6>(6 * nd) += fe.residual;
+    add_block<6>(K, dofs6(nd), mode == Mode::Mass ? Eigen::Matrix<double, 6, 6>::Zero() : fe.tangent);
+    if (sfe) (*sfe)[c] = fe;
   }
 }
 
@@ -382,6 +415,7 @@ Solver::Solver(Model model, SolverOptions options, double t0)
     }
   }
   surface_out_.assign(m.surface_contacts.size(), ContactOutput{});
+  sstate_.assign(m.surface_contacts.size(), ContactState{});
   for (std::size_t c = 0; c < m.surface_contacts.size(); ++c) {
     const SurfaceContactPair& sp = m.surface_contacts[c];
     const SurfaceContactEval ev = evaluate_surface_contact(m.surfaces[static_cast<std::size_t>(sp.surface)], sp.law,
@@ -486,12 +520,12 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
   bool forced = false;
   for (int it = 0;; ++it) {
     I.sink.begin();
-    I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals, &I.sevals);
+    I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals, &I.sevals, &I.sfevals);
     I.sink.finish();
     if (I.sink.mismatch) {  // pattern changed (should not happen): record it again
       I.sink.recording = true;
       I.sink.begin();
-      I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals, &I.sevals);
+      I.assemble(*this, q, t1, dt, mode, R, &I.sink, &I.cevals, &I.sevals, &I.sfevals);
       I.sink.finish();
     }
     for (const SurfaceContactEval& se : I.sevals)
@@ -618,11 +652,26 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
     const SurfaceContactEval& ev = I.sevals[c];
     ContactOutput& o = surface_out_[c];
     if (ev.active && !o.active) rep.new_penetration = std::max(rep.new_penetration, -ev.g_n);
+    if (m.surface_contacts[c].law.mu > 0.0) {  // friction: works and history as the plane pairs
+      const ContactEval& fe = I.sfevals[c];
+      const int nd = m.surface_contacts[c].node;
+      acc_.friction_dissipation += fe.dissipation;
+      acc_.friction_work -= (0.5 * (o.friction + fe.friction)).dot(q.segment<3>(6 * nd)) +
+                            (0.5 * (o.moment + fe.moment)).dot(q.segment<3>(6 * nd + 3));
+      sstate_[c] = fe.active ? fe.next : ContactState{};
+      if (fe.active) I.tangential_energy += fe.tangential_energy;
+      o.slip = fe.slip;
+      o.friction = fe.friction;
+      o.moment = fe.moment;
+      o.force = fe.force;
+      o.point = fe.point;
+    } else {
+      o.force = ev.force;
+      o.point = ev.point;
+    }
     o.active = ev.active;
     o.g_n = ev.g_n;
     o.penalty = ev.active ? 0.5 * m.surface_contacts[c].law.eps_n * ev.g_n * ev.g_n : 0.0;
-    o.force = ev.force;
-    o.point = ev.point;
     I.penalty_energy += o.penalty;
   }
   for (std::size_t e = 0; e < m.beams.size(); ++e) {

@@ -123,7 +123,7 @@ class Solver {
   const std::vector<NodeState>& nodes() const { return nodes_; }
   const std::vector<ContactOutput>& contacts() const { return contact_out_; }
   const std::vector<ContactState>& contact_states() const { return cstate_; }
-  // Rough-surface contacts (model.surface_contacts order); friction fields stay zero.
+  // Rough-surface contacts (model.surface_contacts order); friction fields zero when mu = 0.
   const std::vector<ContactOutput>& surface_contacts() const { return surface_out_; }
   Energies energies() const;
   // Reactions at the imposed DOFs (model.imposed order), from the last converged step.
@@ -152,6 +152,7 @@ class Solver {
   std::vector<ContactState> cstate_;
   std::vector<ContactOutput> contact_out_;
   std::vector<ContactOutput> surface_out_;
+  std::vector<ContactState> sstate_;  // friction history of rough-surface pairs
   std::vector<double> reactions_;
   Energies acc_;  // accumulated works and dissipation
   std::vector<double> node_mass_;

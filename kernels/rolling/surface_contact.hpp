@@ -15,6 +15,11 @@ namespace rollspec::rolling {
 struct SurfaceContactLaw {
   double radius = 0.0;
   double eps_n = 0.0;
+  // Coulomb friction on the surface: mu > 0 runs the rolling contact element (D-13, D-14)
+  // on the tangent plane at the closest point; mu = 0 keeps the frictionless law above.
+  double mu = 0.0;
+  double eps_t = 0.0;
+  bool rolling = true;
 };
 
 struct SurfaceContactEval {

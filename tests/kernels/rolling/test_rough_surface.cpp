@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "kernels/rolling/examples.hpp"
 #include "kernels/rolling/solver.hpp"
 
 using namespace rollspec::rolling;
@@ -227,4 +228,102 @@ TEST_CASE("beam pressed on a rough grid surface: full-model tangent = central di
               active, err, e.balance_error(), e.kinetic, e.imposed_work);
   CHECK(err < 1e-6);
   CHECK(std::abs(e.balance_error()) < 1e-2 * (e.kinetic + std::abs(e.imposed_work) + std::abs(e.external_work)));
+}
+
+namespace {
+// The seed 000 disc (sliding with backspin, then rolling) with its plane replaced by a height
+// field over the same plane: `bump` = 0 gives a flat field.
+Model disc_on_field(const DiscParams& p, double bump_height, double lambda) {
+  Model m = disc_model(p);
+  const Plane base = m.planes[0];
+  m.surfaces.push_back(line_height_field(base, -1.0, 6.0, 3501, [&](double s) {
+    return (s >= 1.0 && s <= 1.0 + lambda) ? 0.5 * bump_height * (1.0 - std::cos(2.0 * kPi * (s - 1.0) / lambda)) : 0.0;
+  }));
+  const ContactLaw& c = m.contacts[0].law;
+  m.surface_contacts.push_back(SurfaceContactPair{m.contacts[0].node, 0, SurfaceContactLaw{c.radius, c.eps_n, c.mu, c.eps_t, c.rolling}});
+  m.contacts.clear();
+  m.planes.clear();
+  return m;
+}
+}  // namespace
+
+TEST_CASE("rolling friction on a height field (R-63): a flat field reproduces the plane contact") {
+  // Seed 000 example 4.1: slip, then rolling at t_roll. The rough-surface element on a flat
+  // field runs the plane element on the same plane, so the two runs agree to round-off.
+  DiscParams p;
+  RunOptions ro;
+  ro.t_end = 2.0;
+  ro.dt = 1e-3;
+  SolverOptions o;
+  o.force_tol = 1e-6 * p.mass * p.g;
+  o.max_line_search = 8;
+  const History hp = run(disc_model(p), o, ro), hs = run(disc_on_field(p, 0.0, 0.2), o, ro);
+  REQUIRE(hp.completed);
+  REQUIRE(hs.completed);
+  double dx = 0.0, dv = 0.0, dw = 0.0, dslip = 0;
+  for (std::size_t k = 0; k < hp.time.size(); ++k) {
+    dx = std::max(dx, (hp.position[k][0] - hs.position[k][0]).norm());
+    dv = std::max(dv, (hp.velocity[k][0] - hs.velocity[k][0]).norm());
+    dw = std::max(dw, (hp.angular_velocity[k][0] - hs.angular_velocity[k][0]).norm());
+    dslip += hp.contact[k][0].slip != hs.surface_contact[k][0].slip;
+  }
+  const double ediff = std::abs(hp.energy.back().friction_dissipation - hs.energy.back().friction_dissipation);
+  std::printf("flat field vs plane, disc 2 s: max |dx| %.2e m, |dv| %.2e m/s, |dw| %.2e rad/s, dissipation %.3e vs %.3e J\n",
+              dx, dv, dw, hp.energy.back().friction_dissipation, hs.energy.back().friction_dissipation);
+  CHECK(dx < 1e-9);
+  CHECK(dv < 1e-8);
+  CHECK(dw < 1e-7);
+  CHECK(dslip == 0);
+  CHECK(ediff < 1e-8 * hp.energy.back().friction_dissipation);
+}
+
+TEST_CASE("rolling friction on a height field (R-63): a disc rolls over a bump without slipping") {
+  // Disc rolling (v = r w) at 1 m/s over a cosine bump H = 2 mm, lambda = 0.2 m (r kappa = 0.2):
+  // stick throughout, r |w| = |v| (the contact point is the instantaneous centre), the centre on
+  // the offset curve lowered by the penetration N/eps_n, and friction removes no energy.
+  DiscParams p;
+  p.mu = 0.5;
+  p.eps_n = 1e10;
+  p.eps_t = 1e9;
+  p.V0 = 1.0;
+  p.omega0 = p.V0 / p.radius;  // disc_model spins at -omega0 about z: v + w x (C - x) = 0
+  const double H = 0.002, lambda = 0.2;
+  Model m = disc_on_field(p, H, lambda);
+  m.X[0].x() = 0.5;
+  RunOptions ro;
+  ro.t_end = 1.2;
+  ro.dt = 2e-4;  // contact period 2 pi sqrt(m/eps_n) = 2e-3 s
+  SolverOptions o;
+  o.force_tol = 1e-7 * p.mass * p.g;
+  o.max_line_search = 8;
+  const History h = run(m, o, ro);
+  REQUIRE(h.completed);
+  auto bump = [&](double s) { return (s >= 1.0 && s <= 1.0 + lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * (s - 1.0) / lambda)) : 0.0; };
+  double worst_path = 0.0, worst_roll = 0.0, top = 0.0;
+  int slips = 0;
+  for (std::size_t k = 1; k < h.time.size(); ++k) {
+    const Vector3d x = h.position[k][0];
+    double zc = 0.0;
+    for (int i = 0; i <= 4000; ++i) {
+      const double s = x.x() - p.radius + 2.0 * p.radius * i / 4000.0;
+      zc = std::max(zc, bump(s) + std::sqrt(std::max(0.0, p.radius * p.radius - (s - x.x()) * (s - x.x()))));
+    }
+    const double pen = -h.surface_contact[k][0].g_n;
+    worst_path = std::max(worst_path, std::abs(x.y() - (zc - pen)));
+    worst_roll = std::max(worst_roll, std::abs(p.radius * h.angular_velocity[k][0].norm() / h.velocity[k][0].norm() - 1.0));
+    top = std::max(top, x.y());
+    slips += h.surface_contact[k][0].slip;
+    CHECK(h.surface_contact[k][0].active);
+  }
+  const Energies& E = h.energy.back();
+  std::printf("disc over bump with friction: centre vs offset curve %.2e m (%.2e of H), max |r w/v - 1| %.2e, slip steps %d, "
+              "friction dissipation %.2e J of kinetic %.1f J, balance error %.2e J, top %.6f (r + H = %.6f)\n",
+              worst_path, worst_path / H, worst_roll, slips, E.friction_dissipation, E.kinetic, E.balance_error(), top,
+              p.radius + H);
+  CHECK(top > p.radius + 0.99 * H);  // the disc went over the bump
+  CHECK(worst_path <= 1e-3 * H);
+  CHECK(worst_roll < 2e-3);
+  CHECK(slips == 0);
+  CHECK(E.friction_dissipation < 1e-9 * E.kinetic);
+  CHECK(std::abs(E.balance_error()) < 1e-4 * E.kinetic);
 }
