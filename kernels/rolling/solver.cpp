@@ -287,8 +287,25 @@ void Solver::Impl::assemble(const Solver& S, const VectorXd& q, double t1, doubl
   for (std::size_t c = 0; c < m.surface_contacts.size(); ++c) {
     const SurfaceContactPair& sp = m.surface_contacts[c];
     const int nd = sp.node;
-    const SurfaceContactEval ev =
+    SurfaceContactEval ev =
         evaluate_surface_contact(m.surfaces[static_cast<std::size_t>(sp.surface)], sp.law, nodes[nd].x + du(nd));
+    if (sp.law.damping > 0.0 && mode == Mode::Dynamic && !mid) {
+      // normal damper on the Newmark end velocity v1 = 2 du/dt - v_n
+      Matrix3d Kd = Matrix3d::Zero();
+      if (ev.active) {
+        const double gdot = ev.normal.dot(2.0 / dt * du(nd) - nodes[nd].v);
+        const double fn = sp.law.eps_n * (-ev.g_n);
+        ev.damping_force = -sp.law.damping * gdot;
+        if (fn + ev.damping_force < 0.0) {  // the contact never pulls: the normal force is zero
+          ev.damping_force = -fn;
+          Kd = -sp.law.eps_n * ev.normal * ev.normal.transpose();
+        } else {
+          Kd = sp.law.damping * 2.0 / dt * ev.normal * ev.normal.transpose();
+        }
+        R.segment<3>(6 * nd) -= ev.damping_force * ev.normal;
+      }
+      add_block<3>(K, dofs3(6 * nd), Kd);
+    }
     if (se) (*se)[c] = ev;
     if (!(sp.law.mu > 0.0)) {
       R.segment<3>(6 * nd) -= ev.force;
@@ -669,6 +686,9 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
       o.force = ev.force;
       o.point = ev.point;
     }
+    const Vector3d damping = ev.damping_force * ev.normal;  // trapezoidal work of the damper
+    acc_.damping_work -= (0.5 * (o.damping + damping)).dot(q.segment<3>(6 * m.surface_contacts[c].node));
+    o.damping = damping;
     o.active = ev.active;
     o.g_n = ev.g_n;
     o.penalty = ev.active ? 0.5 * m.surface_contacts[c].law.eps_n * ev.g_n * ev.g_n : 0.0;

@@ -68,10 +68,12 @@ struct Energies {
   double friction_work = 0.0;
   // Return-mapping dissipation: sum of f_max * slip increment (>= 0, seed 000 Eq. 13-14).
   double friction_dissipation = 0.0;
-  // kinetic + strain + penalty - external_work - imposed_work + friction_work: constant up to
+  // Energy removed by the normal contact dampers of rough-surface pairs (trapezoidal, R-64).
+  double damping_work = 0.0;
+  // kinetic + strain + penalty - external_work - imposed_work + friction_work + damping_work: constant up to
   // the normal-penalty kink at opening/closing and the O(dt^2) rotation terms.
   double balance() const {
-    return kinetic + strain + penalty - external_work - imposed_work + friction_work;
+    return kinetic + strain + penalty - external_work - imposed_work + friction_work + damping_work;
   }
   double initial_balance = 0.0;  // balance() at the solver's start time
   // balance() - initial_balance: 0 for an exact discrete energy balance
@@ -86,6 +88,7 @@ struct ContactOutput {
   Eigen::Vector3d friction = Eigen::Vector3d::Zero();
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();    // (C - x_o) x f
   Eigen::Vector3d point = Eigen::Vector3d::Zero();     // C
+  Eigen::Vector3d damping = Eigen::Vector3d::Zero();   // normal damper force (rough surfaces, R-64)
 };
 
 struct StepReport {

@@ -20,6 +20,9 @@ struct SurfaceContactLaw {
   double mu = 0.0;
   double eps_t = 0.0;
   bool rolling = true;
+  // Normal contact damper c_n (N s/m) on the gap rate nu . v while closed, Newmark only;
+  // the total normal force never pulls.
+  double damping = 0.0;
 };
 
 struct SurfaceContactEval {
@@ -31,6 +34,7 @@ struct SurfaceContactEval {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   // S(s*)
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the node
   Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero(); // d(-force)/dx
+  double damping_force = 0.0;  // c_n damper along nu (set by the solver, R-64)
 };
 
 // Closest point and gap for the centre x (Newton from the projection of x on the base plane).

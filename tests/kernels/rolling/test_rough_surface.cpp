@@ -327,3 +327,44 @@ TEST_CASE("rolling friction on a height field (R-63): a disc rolls over a bump w
   CHECK(E.friction_dissipation < 1e-9 * E.kinetic);
   CHECK(std::abs(E.balance_error()) < 1e-4 * E.kinetic);
 }
+
+TEST_CASE("normal contact damper on a rough surface (R-64): logarithmic decrement and energy balance") {
+  // Ball m = 1 kg resting on a flat field with eps_n = 1e6 N/m and c_n = 2 zeta sqrt(eps_n m),
+  // zeta = 0.05, kicked downward by 1e-4 m/s (amplitude 1e-7 m << static penetration 9.81e-6 m,
+  // so the contact stays closed): successive peaks of the gap decay by exp(-2 pi zeta/sqrt(1-zeta^2)),
+  // and the damper's trapezoidal work closes the energy balance.
+  const double m = 1.0, k = 1e6, zeta = 0.05, g = 9.81, c = 2.0 * zeta * std::sqrt(k * m);
+  Model model;
+  const Plane base = make_plane(Vector3d::Zero(), Vector3d::UnitZ());
+  model.surfaces.push_back(line_height_field(base, -1.0, 1.0, 201, [](double) { return 0.0; }));
+  const int n = model.add_node(Vector3d(0.0, 0.0, 0.05 - m * g / k));
+  model.bodies.push_back(RigidBody{n, m, Matrix3d::Identity() * 1e-3});
+  model.v0 = {Vector3d(0.0, 0.0, -1e-4)};
+  SurfaceContactLaw law{0.05, k};
+  law.damping = c;
+  model.surface_contacts.push_back(SurfaceContactPair{n, 0, law});
+  model.gravity = Vector3d(0, 0, -g);
+  const double T = 2.0 * kPi / std::sqrt(k / m);
+  RunOptions ro;
+  ro.dt = T / 200.0;
+  ro.t_end = 6.0 * T;
+  SolverOptions o;
+  o.force_tol = 1e-12;
+  const History h = run(model, o, ro);
+  REQUIRE(h.completed);
+  std::vector<double> peaks;  // minima of the gap (deepest penetration) per period
+  for (std::size_t i = 1; i + 1 < h.time.size(); ++i) {
+    const double a = h.surface_contact[i - 1][0].g_n, b = h.surface_contact[i][0].g_n, d = h.surface_contact[i + 1][0].g_n;
+    if (b < a && b <= d) peaks.push_back(-(b + m * g / k));
+  }
+  REQUIRE(peaks.size() >= 4);
+  const double expected = std::exp(-2.0 * kPi * zeta / std::sqrt(1.0 - zeta * zeta));
+  double worst = 0.0;
+  for (std::size_t i = 1; i < peaks.size(); ++i) worst = std::max(worst, std::abs(peaks[i] / peaks[i - 1] / expected - 1.0));
+  const Energies& E = h.energy.back();
+  std::printf("contact damper zeta = %.2f: %zu peaks, worst peak ratio error %.2e (expected ratio %.4f); damper work %.3e J, "
+              "balance error %.2e J\n", zeta, peaks.size(), worst, expected, E.damping_work, E.balance_error());
+  CHECK(worst < 5e-3);
+  CHECK(E.damping_work > 0.9 * 0.5 * m * 1e-8);  // most of the kick's 5e-9 J is gone
+  CHECK(std::abs(E.balance_error()) < 1e-3 * 0.5 * m * 1e-8);
+}
