@@ -27,10 +27,14 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
   const double df = e.frequency.size() > 1 ? e.frequency[1] - e.frequency[0] : 1.0;
   const auto f = spectral::chi_square_interval(e.dof_per_bin, e.confidence);
-  std::vector<double> lo(e.mean.size()), hi(e.mean.size());
+  std::vector<double> lo(e.mean.size()), hi(e.mean.size()), nu(e.mean.size(), e.dof_per_bin);
+  const double K = static_cast<double>(e.realisations);
   for (std::size_t i = 0; i < e.mean.size(); ++i) {
-    lo[i] = e.mean[i] * f.lower;
-    hi[i] = e.mean[i] * f.upper;
+    if (e.empirical_dof && e.realisations > 1 && e.std_dev[i] > 0.0)
+      nu[i] = std::max(1.0, std::min(e.dof_per_bin, 2.0 * K * e.mean[i] * e.mean[i] / (e.std_dev[i] * e.std_dev[i])));
+    const auto fi = e.empirical_dof ? spectral::chi_square_interval(nu[i], e.confidence) : f;
+    lo[i] = e.mean[i] * fi.lower;
+    hi[i] = e.mean[i] * fi.upper;
   }
   write_frequency_scale(w, "/psd", e.frequency);
   write_sensor_scale(w, "/psd", e.sensors);
@@ -44,6 +48,13 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   }
   w.attribute("/psd", "realisations", static_cast<std::int64_t>(e.realisations));
   w.attribute("/psd", "degrees_of_freedom", e.dof_per_bin);
+  if (e.empirical_dof) {
+    w.write("/psd/degrees_of_freedom", {ns, nf}, nu.data(), "1",
+            "chi-square dof of each bin's mean: min(K x Welch dof, 2 K mean^2 / std^2) (Satterthwaite)");
+    w.attach_scale("/psd/degrees_of_freedom", "/psd/sensor", 0);
+    w.attach_scale("/psd/degrees_of_freedom", "/psd/frequency", 1);
+  }
+  w.attribute("/psd", "degrees_of_freedom_kind", std::string(e.empirical_dof ? "empirical" : "welch"));
   w.attribute("/psd", "confidence_level", e.confidence);
   w.attribute("/psd", "window_enbw_bins", e.window_enbw_bins);
   w.attribute("/psd", "quantity", e.quantity);
@@ -57,8 +68,15 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     lower[b] = bands[b].lower;
     upper[b] = bands[b].upper;
     dof[b] = band_dof(e.dof_per_bin, bands[b].upper - bands[b].lower, df, e.window_enbw_bins, e.record_seconds);
-    const auto fb = spectral::chi_square_interval(dof[b], e.confidence);
     for (std::size_t s = 0; s < ns; ++s) {
+      double nu_b = dof[b];
+      if (e.empirical_dof) {  // mean empirical dof of the band's bins, never above the Welch value
+        double sum = 0.0, count = 0.0;
+        for (std::size_t k = 0; k < nf; ++k)
+          if (e.frequency[k] >= bands[b].lower && e.frequency[k] < bands[b].upper) sum += nu[s * nf + k], count += 1.0;
+        if (count > 0.0) nu_b = std::min(dof[b], sum / count);
+      }
+      const auto fb = spectral::chi_square_interval(nu_b, e.confidence);
       const double avg = spectral::band_average(e.mean.data() + s * nf, nf, df, bands[b].lower, bands[b].upper);
       level[s * nb + b] = 10.0 * std::log10(avg);
       cil[s * nb + b] = 10.0 * std::log10(avg * fb.lower);

@@ -31,6 +31,11 @@ struct PsdEnsemble {
   double band_min = 0.0, band_max = 0.0;  // Hz
   std::string units = "(m/s^2)^2/Hz";
   std::string quantity = "acceleration";
+  // Per-bin dof from the realisations' scatter (Satterthwaite): nu_i = min(dof_per_bin,
+  // 2 K mean_i^2 / std_i^2), for scenes whose realisations differ by more than Welch noise
+  // (intermittent contact, impacts). Band levels then take the mean nu_i over the band's bins
+  // (bins of one realisation rise and fall together, so averaging them gains nothing).
+  bool empirical_dof = false;
 };
 
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);

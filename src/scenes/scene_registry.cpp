@@ -6,6 +6,7 @@
 #include "src/scenes/random_oscillator.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/scenes/rolling_beam.hpp"
+#include "src/scenes/rolling_pipe.hpp"
 #include "src/scenes/stiffness_scene.hpp"
 #include "src/scenes/texture_scene.hpp"
 #include "src/study/study.hpp"
@@ -33,6 +34,9 @@ const std::vector<SceneInfo>& scene_registry() {
        ball_on_beam_keys, [](const Study& s) { return make_ball_on_beam(s); }},
       {"rolling-beam", "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
        rolling_beam_keys, [](const Study& s) { return make_rolling_beam(s); }},
+      {"rolling-pipe",
+       "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs (issue 7)",
+       rolling_pipe_keys, [](const Study& s) { return make_rolling_pipe(s); }},
       {"stiffness", "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
        stiffness_scene_keys, [](const Study& s) { return make_stiffness_scene(s); }},
       {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",

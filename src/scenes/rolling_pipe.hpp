@@ -1,0 +1,19 @@
+#pragma once
+// Scene `rolling-pipe` (issue 7; seed 000's beam model as a Monte-Carlo scene): a tube of
+// geometrically exact beam elements lies across the rolling direction on a rigid rough surface
+// and rolls over it under gravity. Per realisation: the surface (a line texture along the
+// rolling direction, or an isotropic surface) drawn from the realisation's Philox streams, the
+// rolling-contact dynamics of kernels/rolling (node spheres with Coulomb rolling friction and a
+// normal damper on the height field, R-61..R-64), and Welch PSDs of the vertical acceleration at
+// the sensor nodes. Same result layout as the ball-on-beam scenes (/psd/..., /bands/...).
+#include <memory>
+#include <vector>
+
+#include "src/scenes/scene.hpp"
+
+namespace rollspec::scenes {
+
+std::vector<study::KeySpec> rolling_pipe_keys();
+std::unique_ptr<Scene> make_rolling_pipe(const study::Study& s);
+
+}  // namespace rollspec::scenes

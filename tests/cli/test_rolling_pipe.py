@@ -1,0 +1,119 @@
+"""Monte-Carlo rolling pipe (issue 7): a tube of beam elements rolling with friction over random
+rough surfaces. Ensemble bits independent of thread count and chunking; the ensemble mean stays
+inside its own chi-square interval when the realisation count doubles; bad studies refused."""
+import h5py
+import numpy as np
+
+from conftest import EX_CONFIG, SOURCE, assert_bitwise_equal, run
+
+# Half-metre tube, 2 elements (5 node spheres), 0.1 m rolled at 0.5 m/s on an isotropic floor.
+SMALL_PIPE = """\
+[study]
+scene = rolling-pipe
+realisations = {realisations}
+seed = 77
+
+[ensemble]
+chunk_size = {chunk}
+
+[pipe]
+length = 0.5
+elements = 2
+
+[roll]
+speed = 0.5
+distance = 0.1
+
+[roughness]
+kind = {kind}
+spacing = 2e-3
+
+[texture]
+source = self-affine
+hurst = 0.8
+rolloff_wavelength = 0.05
+short_wavelength = 0.008
+rms = 20e-6
+
+[surface]
+method = spectral
+nx = 96
+ny = 288
+spacing = 2e-3
+
+[contact]
+penalty_normal = 2e6
+penalty_tangential = 4e5
+
+[analysis]
+dt = 1e-4
+
+[spectrum]
+segment = 256
+skip_start = 0.02
+band_min = 40
+band_max = 4000
+"""
+
+
+def small_pipe(tmp_path, realisations, chunk=4, kind="isotropic", name="pipe.ini"):
+    p = tmp_path / name
+    p.write_text(SMALL_PIPE.format(realisations=realisations, chunk=chunk, kind=kind))
+    return p
+
+
+def test_one_and_two_threads_give_identical_bits(tmp_path):
+    study = small_pipe(tmp_path, 4, chunk=2)
+    a, b = tmp_path / "t1.h5", tmp_path / "t2.h5"
+    r1 = run(["run", study, "--out", a, "--quiet"], env={"OMP_NUM_THREADS": "1"})
+    assert r1.returncode == 0, r1.stderr
+    r2 = run(["run", study, "--out", b, "--quiet", "--set", "ensemble.chunk_size=4"], env={"OMP_NUM_THREADS": "2"})
+    assert r2.returncode == 0, r2.stderr
+    assert_bitwise_equal(a, b)
+    with h5py.File(a) as f:
+        assert f["/psd/mean"].shape[0] == 4  # three sensors and their mean
+        assert np.all(f["/psd/mean"][:, 1:] > 0)
+        # rolling without slip at the start, and the floor barely slows the tube
+        assert abs(f["/roll/speed_ratio"][0] - 1) < 0.01
+        # r kappa_max < 1 under every node sphere: single-point contact (R-62)
+        assert f["/contact/two_point_realisations"][0] == 0
+        assert f["/contact/curvature_ratio"][0] < 1
+
+
+def test_mean_stays_inside_its_interval_when_realisations_double(tmp_path):
+    study = small_pipe(tmp_path, 32)
+    half, full = tmp_path / "k16.h5", tmp_path / "k32.h5"
+    r = run(["run", study, "--out", half, "--quiet", "--set", "study.realisations=16"])
+    assert r.returncode == 0, r.stderr
+    r = run(["run", study, "--out", full, "--quiet"])
+    assert r.returncode == 0, r.stderr
+    with h5py.File(half) as a, h5py.File(full) as b:
+        f = a["/psd/frequency"][:]
+        band = (f >= 40) & (f <= 4000)
+        lo, hi = a["/psd/ci_lower"][:, band], a["/psd/ci_upper"][:, band]
+        m16 = b["/psd/mean"][:, band]
+        inside = (m16 >= lo) & (m16 <= hi)
+        share = inside.mean(axis=1)
+        print("share of bins of the K = 32 mean inside the K = 16 interval, per sensor row:", share)
+        assert np.all(share >= 0.9), share
+        # and the interval is the chi-square one of K x (Welch dof): it narrows as K doubles
+        assert np.all(np.median(b["/psd/ci_upper"][:, band] / b["/psd/ci_lower"][:, band], axis=1)
+                      < np.median(hi / lo, axis=1))
+
+
+def test_coarse_step_and_sharp_roughness_are_refused(tmp_path):
+    study = small_pipe(tmp_path, 2)
+    r = run(["run", study, "--out", tmp_path / "x.h5", "--set", "analysis.dt=5e-4"])
+    assert r.returncode == EX_CONFIG
+    assert "[analysis] dt" in r.stderr and "T_c/20" in r.stderr
+    assert not (tmp_path / "x.h5").exists()
+    r = run(["run", study, "--out", tmp_path / "x.h5", "--set", "texture.short_wavelength=1e-4",
+             "--set", "roughness.kind=line", "--set", "roughness.spacing=5e-5"])
+    assert r.returncode == EX_CONFIG
+    assert "[roughness] spacing" in r.stderr and "two points" in r.stderr
+
+
+def test_default_study_plans():
+    r = run(["plan", SOURCE / "studies" / "rolling-pipe.ini"])
+    assert r.returncode == 0, r.stderr
+    assert "surface" in r.stdout and "dynamics" in r.stdout
