@@ -9,6 +9,13 @@
 //                  (σ = 0.3 µm, correlation length 10 µm) at 256², 20 approach steps × 10
 //                  realisations, OpenMP over realisations; ratio = mean k at the step nearest the
 //                  ball weight 2.58 N / smooth Hertz k there
+//   blocked_force_path   seed-002-like blocked force (blocked_force.hpp, BF-1 … BF-6): the 40 mm
+//                  ball slid along a rough strip (Gaussian, σ = 0.3 µm, correlation length 10 µm,
+//                  4 µm cells, 384 × 384 strip, 128 × 128 moving window, H = 5 GPa, tolerance
+//                  1e-10) at the fixed approach of Hertz under 2.58 N, 64 positions 8 µm apart;
+//                  seconds = whole path, ratio = seconds per position, stiffness included
+//   blocked_force_load   the same path at the approach whose mean force is 2.58 N (BF-3, BF-4');
+//                  ratio = seconds per contact solve
 //
 // Times are thread CPU seconds (min of 5 interleaved trials for the ratio) except seed_table (wall).
 // Usage: bench_contact [--quick]   (--quick: 256² and 512² only, 3 realisations)
@@ -26,6 +33,7 @@
 
 #include <fftw3.h>
 
+#include "kernels/contact/blocked_force.hpp"
 #include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "kernels/contact/half_space_operator.hpp"
@@ -146,8 +154,9 @@ void bench_hertz_solve() {
   t0 = thread_cpu_seconds();
   const ContactResult rk = solver.solve(gap, w, p, opt);
   const double tk = thread_cpu_seconds() - t0;
-  std::printf("hertz_stiffness,%zu,%.4f,%.3e,%d,frozen-set CG to 1e-12 (ratio = k / 2E*a - 1)\n", n, tk,
-              rk.stiffness / (2 * e_star * a) - 1.0, rk.stiffness_iterations);
+  std::printf("hertz_stiffness,%zu,%.4f,%.3e,%d,frozen-set CG to 1e-12 + sub-cell edge (ratio = k / 2E*a - 1; frozen set alone %.3e)\n",
+              n, tk, rk.stiffness / (2 * e_star * a) - 1.0, rk.stiffness_iterations,
+              rk.frozen_stiffness / (2 * e_star * a) - 1.0);
   std::fflush(stdout);
 }
 
@@ -203,6 +212,34 @@ void bench_seed_table(int realisations) {
               n, t, k_ratio, iterations, realisations, steps, omp_get_max_threads(), cpu, failures, f_at);
   std::fflush(stdout);
 }
+void bench_blocked_force() {
+  const std::size_t n_strip = 384, n_window = 128, count = 64;
+  const double e_star = 115.4e9, radius = 0.02, hardness = 5e9, sigma = 0.3e-6, corr = 10e-6, dx = 4e-6, load = 2.58;
+  const Grid strip{n_strip, n_strip, dx, dx}, window{n_window, n_window, dx, dx};
+  const auto heights = rough_surface(n_strip, dx, sigma, corr, 2002u);
+  std::vector<double> x(count);
+  for (std::size_t k = 0; k < count; ++k) x[k] = (static_cast<double>(k) - 0.5 * static_cast<double>(count)) * 2.0 * dx;
+  ContactSolver solver(window, e_star, Boundary::Open, PlannerEffort::Measure);
+  SolverOptions opt;
+  opt.hardness = hardness;
+  opt.tolerance = 1e-10;
+  // BF-4: the smooth Hertz approach for the load.
+  const double d = std::pow(3.0 * load / (4.0 * e_star * std::sqrt(radius)), 2.0 / 3.0);
+  double t0 = thread_cpu_seconds();
+  const BlockedForcePath path = blocked_force_path(solver, strip, heights, radius, BallShape::Sphere, x, d, opt);
+  const double t = thread_cpu_seconds() - t0;
+  std::printf("blocked_force_path,%zu,%.4f,%.4e,%d,%zu positions at d = %.4g um window %zux%zu (ratio = s per position; +%d stiffness iterations) converged=%d mean F0 %.4g N k0 %.4g N/m (frozen set %.4g)\n",
+              n_window, t, t / double(count), path.iterations, count, d * 1e6, n_window, n_window,
+              path.stiffness_iterations, int(path.converged), path.mean_force, path.k0, path.k0_frozen);
+  std::fflush(stdout);
+  t0 = thread_cpu_seconds();
+  const BlockedForcePath at = blocked_force_at_load(solver, strip, heights, radius, BallShape::Sphere, x, load, opt);
+  const double tl = thread_cpu_seconds() - t0;
+  std::printf("blocked_force_load,%zu,%.4f,%.4e,%d,W = %.3g N: %d paths + %d pre-search paths %d solves (ratio = s per solve; +%d stiffness iterations) converged=%d d0 = %.4g um k0 %.4g N/m\n",
+              n_window, tl, tl / double(at.solves), at.iterations, load, at.paths, at.presearch_paths, at.solves,
+              at.stiffness_iterations, int(at.converged), at.approach * 1e6, at.k0);
+  std::fflush(stdout);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -213,6 +250,7 @@ int main(int argc, char** argv) {
     bench_iteration(n);
   }
   bench_hertz_solve();
+  bench_blocked_force();
   bench_seed_table(quick ? 3 : 10);
   return 0;
 }

@@ -136,7 +136,7 @@ class PathRunner {
       store->rate.resize(store_count);
     }
     std::vector<double> p, shifted(n);
-    double force_sum = 0.0, stiffness_sum = 0.0;
+    double force_sum = 0.0, stiffness_sum = 0.0, frozen_sum = 0.0;
     for (std::size_t k = 0; k < count; ++k) {
       const Index j = start_[k];
       for (std::size_t iy = 0; iy < ny; ++iy)
@@ -191,11 +191,14 @@ class PathRunner {
       if (opt.compute_stiffness) {
         out.stiffness[k] = r.stiffness;
         stiffness_sum += r.stiffness;
+        frozen_sum += r.frozen_stiffness;
       }
     }
     out.mean_force = force_sum / static_cast<double>(count);
     out.k0 = opt.compute_stiffness ? stiffness_sum / static_cast<double>(count)
                                    : std::numeric_limits<double>::quiet_NaN();
+    out.k0_frozen = opt.compute_stiffness ? frozen_sum / static_cast<double>(count)
+                                          : std::numeric_limits<double>::quiet_NaN();
     return out;
   }
 
@@ -322,7 +325,9 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
       path.converged = path.converged && on_load;
       return path;
     }
-    double next = path.k0 > 0.0 ? d + (load - path.mean_force) / path.k0 : std::numeric_limits<double>::quiet_NaN();
+    // Newton on F̄ with its exact slope K̄_f (BF-3).
+    double next = path.k0_frozen > 0.0 ? d + (load - path.mean_force) / path.k0_frozen
+                                       : std::numeric_limits<double>::quiet_NaN();
     if (!(next > lo && next < hi)) {
       if (std::isfinite(lo) && std::isfinite(hi)) {
         next = 0.5 * (lo + hi);

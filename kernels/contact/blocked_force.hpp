@@ -18,14 +18,16 @@
 //
 //     F0(x_k; d) = ΔA Σ_i p_i^(k)(d),    k(x_k; d) = dF0/dd  (frozen set, README Eq. 11)   (BF-2)
 //
-// Path means over the N positions: F̄(d) = (1/N) Σ_k F0(x_k; d), K̄(d) = (1/N) Σ_k k(x_k; d).
-// Between contact-set changes K̄ is the exact derivative of F̄ (README Eq. 11 summed), so
+// Path means over the N positions: F̄(d) = (1/N) Σ_k F0(x_k; d), K̄(d) = (1/N) Σ_k k(x_k; d),
+// k the frozen-set stiffness with the sub-cell contact edge (README Eq. 13–15); K̄_f the same mean
+// of the frozen-set k_frozen (README Eq. 11), which between contact-set changes is the exact
+// derivative of F̄, so
 //
 //     d0 solves F̄(d0) = W (the ball's weight);   k0 = K̄(d0)                               (BF-3)
 //
-// found by safeguarded Newton on d: d ← d + (W − F̄(d)) / K̄(d) inside the bracket
+// found by safeguarded Newton on d: d ← d + (W − F̄(d)) / K̄_f(d) inside the bracket
 // [d_lo, d_hi] with F̄(d_lo) < W ≤ F̄(d_hi) (F̄ is non-decreasing in d), bisection when the Newton
-// step leaves the bracket or K̄ = 0, the bracket grown by doubling steps while one side is
+// step leaves the bracket or K̄_f = 0, the bracket grown by doubling steps while one side is
 // unknown. Start: the smooth Hertz approach for W (design.md §4),
 //
 //     d_start = (3 W / (4 E* R^{1/2}))^{2/3}                                               (BF-4)
@@ -107,9 +109,10 @@ struct BlockedForceOptions {
 struct BlockedForcePath {
   std::vector<double> position;   // x_k (m, strip coordinates)
   std::vector<double> force;      // F0(x_k; d0) (N), BF-2
-  std::vector<double> stiffness;  // k(x_k; d0) (N/m), frozen set; NaN if not computed
+  std::vector<double> stiffness;  // k(x_k; d0) (N/m), frozen set + sub-cell edge (README Eq. 13–15); NaN if not computed
   double approach = 0.0;          // d0 (m), from the plane h = 0 (BF-2)
-  double k0 = 0.0;                // K̄(d0) (N/m), BF-3; NaN if stiffness not computed
+  double k0 = 0.0;                // K̄(d0) (N/m), BF-3, mean of `stiffness`; NaN if stiffness not computed
+  double k0_frozen = 0.0;         // the same mean of the frozen-set k (README Eq. 11): exact dF̄/dd
   double mean_force = 0.0;        // F̄(d0) (N)
   double max_error = 0.0;         // largest stopping-rule ε (README Eq. 9) of the returned path
   int paths = 0;                  // full-path evaluations (1 for blocked_force_path)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kernels/contact/edge_correction.hpp"
+
 namespace rollspec::contact {
 
 namespace {
@@ -28,6 +30,7 @@ ContactSolver::ContactSolver(const Grid& grid, double e_star, Boundary boundary,
   t_.assign(n, 0.0);
   r_.assign(n, 0.0);
   x_.assign(n, 0.0);
+  gap_.assign(n, 0.0);
   set_.assign(n, kOut);
 }
 
@@ -76,6 +79,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     res.approach = w;
     res.converged = true;
     res.stiffness = 0.0;
+    res.frozen_stiffness = 0.0;
     res.stiffness_converged = true;
     return res;
   }
@@ -226,6 +230,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
 
 // k = dP/dw with the contact set frozen (README Eq. 11): on the elastic contact cells E
 // (0 < p < H) solve C_EE Δp = 1 by CG; plastic cells stay at H, open cells at 0; k = ΔA Σ Δp.
+// Then the sub-cell edge correction δk (README Eq. 13–15): stiffness = k_frozen + δk.
 void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverOptions& opt, ContactResult& res) {
   const std::size_t n = p.size();
   const double hardness = opt.hardness;
@@ -237,9 +242,11 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   dp_.assign(n, 0.0);
   if (m == 0) {
     res.stiffness = 0.0;
+    res.frozen_stiffness = 0.0;
     res.stiffness_converged = true;
     return;
   }
+  gap_ = g_;  // the converged gap (g_ is the CG residual below)
   // x = Δp, g_ = residual, t_ = direction, r_ = C t.
   std::fill(x_.begin(), x_.end(), 0.0);
   double rr = 0.0;
@@ -273,9 +280,14 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) sum += x_[i];
   dp_ = x_;
-  res.stiffness = op_.grid().cell_area() * sum;
+  res.frozen_stiffness = op_.grid().cell_area() * sum;
   res.stiffness_converged = ok;
   res.stiffness_iterations = it;
+  // Sub-cell contact edge (README Eq. 13–15): one more half-space product, u' = C dp.
+  op_.apply(dp_.data(), r_.data());
+  const EdgeCorrection edge = edge_correction(op_.grid(), op_.e_star(), res.approach, p, dp_, gap_, r_, hardness);
+  res.edge_correction = edge.delta_k;
+  res.stiffness = res.frozen_stiffness + edge.delta_k;
 }
 
 }  // namespace rollspec::contact

@@ -1,7 +1,7 @@
 #pragma once
 // Elastic–perfectly-plastic rough contact by constrained conjugate gradients
 // (Polonsky & Keer 1999, pressure cap after Almqvist et al. 2007; design.md D-6, D-7,
-// README Eq. 6–12).
+// README Eq. 6–15).
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -43,7 +43,13 @@ struct ContactResult {
   std::size_t plastic_cells = 0;  // #{p_i = H}
   double plastic_volume = 0.0;  // V_p = ΔA Σ_{p_i = H} max(0, −g_i) (m³), README Eq. 10
   double max_pressure = 0.0;    // max_i p_i (Pa)
-  double stiffness = std::numeric_limits<double>::quiet_NaN();  // k = dP/dw (N/m), Eq. 11
+  // k (N/m): the frozen-set stiffness with the sub-cell contact edge, k_frozen + δk (README
+  // Eq. 11, 13–15): the continuum-consistent contact stiffness (tables, blocked force k0).
+  double stiffness = std::numeric_limits<double>::quiet_NaN();
+  // k_frozen = dP/dw of the discrete problem on the frozen set (README Eq. 11): the exact derivative
+  // of `force` between contact-set changes (Newton steps on w use it).
+  double frozen_stiffness = std::numeric_limits<double>::quiet_NaN();
+  double edge_correction = 0.0;  // δk = stiffness − frozen_stiffness (README Eq. 15)
   bool stiffness_converged = false;
   int stiffness_iterations = 0;
 };
@@ -77,7 +83,7 @@ class ContactSolver {
   void frozen_stiffness(const std::vector<double>& pressure, const SolverOptions& options, ContactResult& result);
 
   HalfSpaceOperator op_;
-  std::vector<double> u_, g_, t_, r_, x_;  // work arrays, one set per solver (thread-private use)
+  std::vector<double> u_, g_, t_, r_, x_, gap_;  // work arrays, one set per solver (thread-private use)
   std::vector<unsigned char> set_;
   std::vector<double> dp_;
 };

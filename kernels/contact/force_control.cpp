@@ -46,7 +46,8 @@ ContactResult solve_force(ContactSolver& solver, const std::vector<double>& gap,
   double w = w_hi;
   while (solves < control.max_solves) {
     if (r.force >= force) w_hi = w; else w_lo = w;
-    double w_next = r.stiffness > 0.0 ? w + (force - r.force) / r.stiffness : 0.5 * (w_lo + w_hi);
+    // Newton on the discrete P(w): its exact slope is the frozen-set k (README Eq. 11).
+    double w_next = r.frozen_stiffness > 0.0 ? w + (force - r.force) / r.frozen_stiffness : 0.5 * (w_lo + w_hi);
     if (!(w_next > w_lo && w_next < w_hi)) w_next = 0.5 * (w_lo + w_hi);
     w = w_next;
     r = solver.solve(gap, w, pressure, opt);

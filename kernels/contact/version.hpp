@@ -4,6 +4,6 @@
 // tables built by an older kernel are refused (issue 4, `kernel_version` / `input_hash`).
 namespace rollspec::contact {
 
-inline constexpr int kernel_version = 1;
+inline constexpr int kernel_version = 2;  // 2: sub-cell contact edge in the stiffness (README Eq. 13–15)
 
 }  // namespace rollspec::contact

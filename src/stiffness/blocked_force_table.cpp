@@ -170,7 +170,7 @@ void write(const std::string& path, const BlockedForceTable& t, const Study& s) 
   io::write_provenance(w, kBlockedForceFileType, "1.0", s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
   w.write("/blocked_force/position", {t.position.size()}, t.position.data(), "m", "ball position along the strip");
   w.write("/blocked_force/force", {t.force.size()}, t.force.data(), "N", "blocked force F0 at the fixed approach d0");
-  w.write("/blocked_force/stiffness", {t.stiffness.size()}, t.stiffness.data(), "N/m", "frozen-set stiffness along the path");
+  w.write("/blocked_force/stiffness", {t.stiffness.size()}, t.stiffness.data(), "N/m", "frozen-set stiffness with the sub-cell contact edge along the path (contact README Eq. 11, 13-15)");
   w.write("/blocked_force/psd_wavenumber", {t.psd_wavenumber.size()}, t.psd_wavenumber.data(), "rad/m", "wavenumber");
   w.write("/blocked_force/psd", {t.psd.size()}, t.psd.data(), "N^2 m/rad", "one-sided PSD of F0 along the path (Welch)");
   w.attribute("/blocked_force", "approach", t.approach);
