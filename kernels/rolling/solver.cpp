@@ -864,7 +864,7 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
     h.rotation.push_back(R);
     h.contact.push_back(S.contacts());
     h.surface_contact.push_back(S.surface_contacts());
-    h.energy.push_back(S.energies());
+    if (ro.record_energies) h.energy.push_back(S.energies());
     h.reactions.push_back(S.reactions());
   };
   record();

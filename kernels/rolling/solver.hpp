@@ -170,6 +170,7 @@ struct RunOptions {
   double dt = 1e-3;
   int record_every = 1;
   std::vector<int> record_nodes;  // empty: all nodes
+  bool record_energies = true;    // false: History::energy stays empty (saves a strain-energy pass per record)
 };
 
 struct History {

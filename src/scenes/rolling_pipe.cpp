@@ -245,6 +245,7 @@ class RollingPipe final : public Scene {
     ro.dt = dt_;
     ro.t_end = static_cast<double>(steps_) * dt_;
     for (int sn : sensors_) ro.record_nodes.push_back(ids[static_cast<std::size_t>(sn)]);
+    ro.record_energies = false;  // spectra need accelerations only
     const History h = run(m, options_, ro);
     if (!h.completed) {
       std::ostringstream e;
