@@ -33,6 +33,26 @@ UniformSamples contact_patch_average(const UniformSamples& h, double a) {
   return out;
 }
 
+double contact_patch_transfer(double k, double a, double dx) {
+  if (!(dx > 0.0) || !(a >= 0.0)) throw std::invalid_argument("contact_patch_transfer: need dx > 0 and a >= 0");
+  if (a == 0.0) return 1.0;  // contact_patch_average returns the samples themselves
+  const double w = a / dx, theta = k * dx;
+  // Antiderivative of the hat Lambda(u) = max(1 - |u|, 0).
+  auto hat_integral = [](double x) {
+    if (x <= -1.0) return 0.0;
+    if (x < 0.0) return 0.5 * (x + 1.0) * (x + 1.0);
+    if (x < 1.0) return 1.0 - 0.5 * (1.0 - x) * (1.0 - x);
+    return 1.0;
+  };
+  const auto nmax = static_cast<long>(std::ceil(w)) + 1;
+  double t = 0.0;
+  for (long n = -nmax; n <= nmax; ++n) {  // (B35a)
+    const double c = (hat_integral(w - static_cast<double>(n)) - hat_integral(-w - static_cast<double>(n))) / (2.0 * w);
+    t += c * std::cos(static_cast<double>(n) * theta);
+  }
+  return t;
+}
+
 PatchAverager::PatchAverager(const UniformSamples& h) : h_(&h) {
   const std::size_t n = h.values.size();
   if (n < 2 || !(h.step > 0.0)) throw std::invalid_argument("PatchAverager: need >= 2 samples and step > 0");

@@ -17,6 +17,13 @@ namespace rollspec::beam {
 
 UniformSamples contact_patch_average(const UniformSamples& h, double half_width);
 
+// What contact_patch_average does to a sampled sinusoid of wavenumber k (|k| <= pi/dx), away from
+// the record ends, README Eq. (B35a): the output samples are sum_n c_n h_{j+n} with
+//   c_n = (1/2w) int_{-w}^{w} Lambda(u - n) du,   w = a/dx,  Lambda the hat of linear interpolation,
+//   T(k) = sum_n c_n cos(n k dx)  ->  sin(ka)/(ka) sinc^2(k dx/2) + (aliases of order dx/a),
+// i.e. the continuous patch filter times the linear interpolation's low-pass. Real, even in k.
+double contact_patch_transfer(double k, double half_width, double dx);
+
 // Patch average at any position and half-width (README B38), for the instantaneous contact
 // length of the ball-on-beam integrator: prefix integral of the linear interpolant, built once
 // per realisation. value = (1/2a) int_{x-a}^{x+a} h, derivative = (h(x+a) - h(x-a)) / 2a; for

@@ -8,9 +8,12 @@ namespace rollspec::beam {
 
 LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, double c0,
                                    const std::vector<double>& xi, const std::vector<double>& sensors,
-                                   const std::vector<double>& freq, const std::vector<double>& gx, Excitation kind) {
+                                   const std::vector<double>& freq, const std::vector<double>& gx, Excitation kind,
+                                   const std::vector<double>& weights) {
   if (freq.size() != gx.size()) throw std::invalid_argument("linear_response_psd: frequencies and PSD differ in length");
   if (xi.empty()) throw std::invalid_argument("linear_response_psd: no contact positions");
+  if (!weights.empty() && weights.size() != xi.size())
+    throw std::invalid_argument("linear_response_psd: one weight per contact position");
   if (!(m2 > 0.0 && k0 > 0.0 && c0 >= 0.0)) throw std::invalid_argument("linear_response_psd: need m2 > 0, k0 > 0, c0 >= 0");
   using cd = std::complex<double>;
   const int n = b.modes();
@@ -25,7 +28,17 @@ LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, dou
   out.sensor_psd.assign(sensors.size(), std::vector<double>(freq.size(), 0.0));
   out.force_psd.assign(freq.size(), 0.0);
   std::vector<cd> modal(n), alpha_s(sensors.size());
-  const double inv = 1.0 / static_cast<double>(xi.size());
+  // (B34a) normalised position weights
+  std::vector<double> wp(xi.size(), 1.0 / static_cast<double>(xi.size()));
+  if (!weights.empty()) {
+    double sum = 0.0;
+    for (double v : weights) {
+      if (!(v >= 0.0)) throw std::invalid_argument("linear_response_psd: weights must be >= 0");
+      sum += v;
+    }
+    if (!(sum > 0.0)) throw std::invalid_argument("linear_response_psd: weights sum to 0");
+    for (std::size_t p = 0; p < xi.size(); ++p) wp[p] = weights[p] / sum;
+  }
   for (std::size_t k = 0; k < freq.size(); ++k) {
     const double w = two_pi * freq[k];
     if (!(w > 0.0)) continue;
@@ -36,6 +49,8 @@ LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, dou
     const cd kc(k0, w * c0);
     const double alpha_ball = -1.0 / (m2 * w * w);
     for (std::size_t p = 0; p < xi.size(); ++p) {
+      const double inv = wp[p];
+      if (inv == 0.0) continue;
       const double* pc = phi_c.data() + p * n;
       cd alpha_b = 0.0;
       for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] = 0.0;
@@ -52,6 +67,38 @@ LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, dou
       for (std::size_t s = 0; s < sensors.size(); ++s)
         out.sensor_psd[s][k] += inv * std::norm(w * w * alpha_s[s]) * f2 * gx[k];  // (B33), (B34)
     }
+  }
+  return out;
+}
+
+std::vector<std::vector<std::complex<double>>> linear_response_transfer(const ModalBeam& b, double m2, double k0,
+                                                                        double c0, double xi,
+                                                                        const std::vector<double>& sensors,
+                                                                        const std::vector<double>& freq, Excitation kind) {
+  if (!(m2 > 0.0 && k0 > 0.0 && c0 >= 0.0)) throw std::invalid_argument("linear_response_transfer: need m2 > 0, k0 > 0, c0 >= 0");
+  using cd = std::complex<double>;
+  const int n = b.modes();
+  const double m = b.modal_mass(), two_pi = 6.28318530717958647692;
+  std::vector<double> pc(n), ps(sensors.size() * n);
+  b.shapes(xi, pc.data());
+  const double res = b.residual_flexibility(xi);
+  for (std::size_t s = 0; s < sensors.size(); ++s) b.shapes(sensors[s], ps.data() + s * n);
+  std::vector<std::vector<cd>> out(sensors.size(), std::vector<cd>(freq.size(), 0.0));
+  for (std::size_t k = 0; k < freq.size(); ++k) {
+    const double w = two_pi * freq[k];
+    if (!(w > 0.0)) continue;
+    const cd kc(k0, w * c0);
+    cd alpha_b = 0.0;
+    std::vector<cd> alpha_s(sensors.size(), 0.0);
+    for (int i = 0; i < n; ++i) {
+      const double wn = b.omega(i);
+      const cd modal = 1.0 / (m * cd(wn * wn - w * w, 2.0 * b.zeta(i) * wn * w));
+      alpha_b += pc[i] * pc[i] * modal;
+      for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] += ps[s * n + i] * pc[i] * modal;
+    }
+    cd total = 1.0 / kc + alpha_b - 1.0 / (m2 * w * w) + res * k0 / kc;  // (B32), as linear_response_psd
+    if (kind == Excitation::blocked_force) total *= kc;
+    for (std::size_t s = 0; s < sensors.size(); ++s) out[s][k] = w * w * alpha_s[s] / total;  // (B33)
   }
   return out;
 }

@@ -10,9 +10,12 @@
 // Roughness excitation (D-1 with F = k0 delta + i w c0 delta_dyn):  F = h / (alpha_c + alpha_b + alpha_2)  (B32)
 // Blocked-force excitation (D-11):                          F = F0 / ((k0 + i w c0)(alpha_c + alpha_b + alpha_2))
 // Sensor acceleration: A_s = w^2 alpha_b(x_s, xi) F (modal sum only, as in the time domain).  (B33)
-// The ball's position is averaged out: E|A_s|^2 is the mean over the given contact positions of
-// |H(x_s, xi)|^2 times the excitation PSD in time (one-sided, D-2)                         (B34)
+// The ball's position is averaged out: E|A_s|^2 is the weighted mean over the given contact
+// positions of |H(x_s, xi)|^2 times the excitation PSD in time (one-sided, D-2)            (B34)
 // (quasi-stationary: valid when the ball moves slowly compared with the modal decay, Tf/tau << 1).
+// The weights are the share of the estimate each position carries (for a Welch estimate the
+// summed squared windows, B34a); none given: uniform.
+#include <complex>
 #include <vector>
 
 #include "kernels/beam/modal_beam.hpp"
@@ -34,6 +37,14 @@ struct LinearResponse {
 LinearResponse linear_response_psd(const ModalBeam& beam, double ball_mass, double k0, double c0,
                                    const std::vector<double>& contact_positions, const std::vector<double>& sensors,
                                    const std::vector<double>& frequencies, const std::vector<double>& excitation_psd,
-                                   Excitation kind);
+                                   Excitation kind, const std::vector<double>& position_weights = {});
+
+// Complex sensor accelerations per unit excitation amplitude at one contact position, H[s][k] =
+// A_s / h or A_s / F0 (B32–B33), for cross-spectra between sensors: S_ss'(f) = H_s H_s'^* G(f).
+std::vector<std::vector<std::complex<double>>> linear_response_transfer(const ModalBeam& beam, double ball_mass, double k0,
+                                                                        double c0, double contact_position,
+                                                                        const std::vector<double>& sensors,
+                                                                        const std::vector<double>& frequencies,
+                                                                        Excitation kind);
 
 }  // namespace rollspec::beam

@@ -2,6 +2,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
@@ -12,45 +13,51 @@ namespace rollspec::spectral {
 
 namespace {
 void check(const WelchPlan& plan, const std::vector<double>& fine, std::size_t refine) {
-  if (refine < 1 || fine.size() != refine * (plan.n_freq() - 1) + 1)
-    throw std::invalid_argument("welch_expectation: fine PSD must hold refine * (n_freq - 1) + 1 values");
+  if (refine < 1 || fine.size() < refine * (plan.n_freq() - 1) + 1)
+    throw std::invalid_argument("welch_expectation: fine PSD must hold at least refine * (n_freq - 1) + 1 values");
 }
 
 // Trapezoid weights on the fine grid [0, f_s/2].
 double trapezoid(std::size_t j, std::size_t n) { return (j == 0 || j + 1 == n) ? 0.5 : 1.0; }
 }  // namespace
 
-std::vector<double> welch_expectation(const WelchPlan& plan, const std::vector<double>& fine, std::size_t refine) {
-  check(plan, fine, refine);
+std::vector<double> welch_kernel(const WelchPlan& plan, std::size_t refine) {
+  if (refine < 1) throw std::invalid_argument("welch_kernel: refine must be >= 1");
   const auto& w = plan.window();
-  const std::size_t L = w.size(), N = L * refine, nf = plan.n_freq(), nfine = fine.size();
-  const double fs = plan.config().sample_rate, dfine = fs / static_cast<double>(N);
+  const std::size_t L = w.size(), N = L * refine;
+  const double fs = plan.config().sample_rate;
   double s2 = 0.0;
   for (double v : w) s2 += v * v;
   // K at nu = m f_s / N, m = 0..N-1 (periodic in m).
   std::vector<double> kernel(N);
+  double* in = fftw_alloc_real(N);
+  fftw_complex* out = fftw_alloc_complex(N / 2 + 1);
+  fftw_plan p;
   {
-    double* in = fftw_alloc_real(N);
-    fftw_complex* out = fftw_alloc_complex(N / 2 + 1);
-    fftw_plan p;
-    {
-      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-      p = fftw_plan_dft_r2c_1d(static_cast<int>(N), in, out, FFTW_ESTIMATE);
-    }
-    for (std::size_t i = 0; i < N; ++i) in[i] = i < L ? w[i] : 0.0;
-    fftw_execute(p);
-    for (std::size_t m = 0; m <= N / 2; ++m) {
-      const double v = (out[m][0] * out[m][0] + out[m][1] * out[m][1]) / (fs * s2);
-      kernel[m] = v;
-      if (m > 0 && m < N - m) kernel[N - m] = v;  // K is even
-    }
-    {
-      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-      fftw_destroy_plan(p);
-    }
-    fftw_free(in);
-    fftw_free(out);
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    p = fftw_plan_dft_r2c_1d(static_cast<int>(N), in, out, FFTW_ESTIMATE);
   }
+  for (std::size_t i = 0; i < N; ++i) in[i] = i < L ? w[i] : 0.0;
+  fftw_execute(p);
+  for (std::size_t m = 0; m <= N / 2; ++m) {
+    const double v = (out[m][0] * out[m][0] + out[m][1] * out[m][1]) / (fs * s2);
+    kernel[m] = v;
+    if (m > 0 && m < N - m) kernel[N - m] = v;  // K is even
+  }
+  {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    fftw_destroy_plan(p);
+  }
+  fftw_free(in);
+  fftw_free(out);
+  return kernel;
+}
+
+std::vector<double> welch_expectation(const WelchPlan& plan, const std::vector<double>& fine, std::size_t refine) {
+  check(plan, fine, refine);
+  const std::size_t N = plan.window().size() * refine, nf = plan.n_freq(), nfine = fine.size();
+  const double dfine = plan.config().sample_rate / static_cast<double>(N);
+  const std::vector<double> kernel = welch_kernel(plan, refine);
   std::vector<double> out(nf, 0.0);
   for (std::size_t k = 0; k < nf; ++k) {
     const std::size_t mk = k * refine;  // f_k on the fine grid
@@ -86,6 +93,81 @@ std::vector<double> welch_expectation_direct(const WelchPlan& plan, const std::v
     }
   }
   return out;
+}
+
+std::vector<double> welch_time_weights(const WelchPlan& plan, std::size_t n) {
+  const std::size_t nb = plan.segments(n), L = plan.config().segment, hop = L - plan.config().overlap;
+  if (nb == 0) throw std::invalid_argument("welch_time_weights: record shorter than one segment");
+  const auto& w = plan.window();
+  double s2 = 0.0;
+  for (double v : w) s2 += v * v;
+  std::vector<double> tw(n, 0.0);
+  for (std::size_t a = 0; a < nb; ++a)
+    for (std::size_t t = 0; t < L; ++t) tw[a * hop + t] += w[t] * w[t] / (static_cast<double>(nb) * s2);
+  return tw;
+}
+
+std::vector<double> welch_block_dof(const WelchPlan& plan, std::size_t n, const std::vector<std::size_t>& edges,
+                                    std::size_t channels, std::size_t bins,
+                                    const std::vector<std::complex<double>>& cross) {
+  const std::size_t nb = plan.segments(n), L = plan.config().segment, hop = L - plan.config().overlap;
+  if (nb == 0) throw std::invalid_argument("welch_block_dof: record shorter than one segment");
+  if (edges.size() < 2 || edges.front() != 0 || edges.back() != n)
+    throw std::invalid_argument("welch_block_dof: block edges must run from 0 to n");
+  for (std::size_t p = 1; p < edges.size(); ++p)
+    if (edges[p] <= edges[p - 1]) throw std::invalid_argument("welch_block_dof: block edges must increase");
+  const std::size_t blocks = edges.size() - 1, pairs = channels * (channels + 1) / 2;
+  if (channels < 1 || cross.size() != blocks * pairs * bins)
+    throw std::invalid_argument("welch_block_dof: need blocks x channel pairs x bins cross-spectra");
+  const auto& w = plan.window();
+  double s2 = 0.0;
+  for (double v : w) s2 += v * v;
+  std::size_t mmax = 0;
+  while ((mmax + 1) * hop < L) ++mmax;
+  // u_ab(p) for b = a + m, m = 0..mmax: nonzero only for the blocks inside segment a
+  // (kernels/beam README B34b).
+  struct Term {
+    std::size_t a, m, p;
+    double u;
+  };
+  std::vector<Term> terms;
+  for (std::size_t a = 0; a < nb; ++a)
+    for (std::size_t m = 0; m <= mmax && a + m < nb; ++m) {
+      const std::size_t lo = (a + m) * hop, hi = a * hop + L;  // samples in both segments
+      std::size_t p = static_cast<std::size_t>(std::upper_bound(edges.begin(), edges.end(), lo) - edges.begin()) - 1;
+      for (; p < blocks && edges[p] < hi; ++p) {
+        double u = 0.0;
+        for (std::size_t t = std::max(lo, edges[p]); t < std::min(hi, edges[p + 1]); ++t)
+          u += w[t - a * hop] * w[t - (a + m) * hop];
+        if (u != 0.0) terms.push_back({a, m, p, u / s2});
+      }
+    }
+  std::vector<double> dof(bins, 0.0);
+  std::vector<std::complex<double>> c(pairs);
+  for (std::size_t k = 0; k < bins; ++k) {
+    double mean = 0.0, var = 0.0;
+    std::size_t i = 0;
+    while (i < terms.size()) {  // one (a, m) at a time
+      const std::size_t a = terms[i].a, m = terms[i].m;
+      std::fill(c.begin(), c.end(), std::complex<double>(0.0));
+      for (; i < terms.size() && terms[i].a == a && terms[i].m == m; ++i)
+        for (std::size_t q = 0; q < pairs; ++q) c[q] += terms[i].u * cross[(terms[i].p * pairs + q) * bins + k];
+      double sum = 0.0;  // sum over ordered channel pairs of |C_ab^{ss'}|^2
+      std::size_t q = 0;
+      for (std::size_t s = 0; s < channels; ++s)
+        for (std::size_t s2i = s; s2i < channels; ++s2i, ++q) sum += (s2i == s ? 1.0 : 2.0) * std::norm(c[q]);
+      var += (m == 0 ? 1.0 : 2.0) * sum;
+      if (m == 0) {
+        q = 0;
+        for (std::size_t s = 0; s < channels; ++s)
+          for (std::size_t s2i = s; s2i < channels; ++s2i, ++q)
+            if (s2i == s) mean += c[q].real();
+      }
+    }
+    // E = mean / (nb channels), Var = var / (nb channels)^2: nu = 2 E^2 / Var = 2 mean^2 / var.
+    dof[k] = var > 0.0 ? 2.0 * mean * mean / var : 0.0;
+  }
+  return dof;
 }
 
 }  // namespace rollspec::spectral

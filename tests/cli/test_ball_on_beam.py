@@ -71,23 +71,61 @@ def test_default_integrator_matches_dopri5_in_band_levels(tmp_path):
 
 
 def test_linearised_model_against_frequency_domain_solution(tmp_path):
-    """Quasi-stationary frequency-domain solution (force = blocked force / receptance sum, averaged
-    over the analysed ball positions, smoothed by the Welch window). Slow ball (0.1 m/s), light
-    roughness (no loss of contact), start-up left out. Measured agreement (K = 100, this set-up):
-    median deviation -0.03..-0.07 dB, 90 % of bins within about -0.3..+0.1 dB; the remaining
-    deviation comes from the moving load (it shrinks with speed) and the step's force hold."""
+    """Issue 5: the linearised model's Monte-Carlo mean lies inside its own chi-square 95 % interval
+    around the frequency-domain solution in >= 90 % of the bins 100 Hz - 5 kHz.
+
+    /reference/psd is the frequency-domain solution made exact for what the ensemble simulates
+    (kernels/beam README B34a-c, B35a): the patch filter acting on the roughness samples (its linear
+    interpolant adds sinc^2(k dx/2): -0.1 dB at 6 kHz, the main bias before), the Welch estimate's
+    own time weights over ball positions, the Catmull-Rom reading of F0 at the steps, aliasing of the
+    sampled outputs, the Welch window. /reference/degrees_of_freedom is the chi-square dof of the
+    ensemble mean per bin for this non-stationary record (B34b): about 0.5-0.75 of the stationary
+    value in /psd, which is why /psd/ci_* (stationary) is too narrow here.
+
+    What the reference leaves out is the moving load (quasi-stationary in the ball position); its
+    bias grows with the ball's travel while the modes respond. Measured (worst sensor, 100 Hz - 5 kHz,
+    rms bias beyond the sampling noise): 0.020 / 0.025 / 0.033 / 0.053 dB at 0.025 / 0.05 / 0.1 /
+    0.2 m/s here; seed 002's own 1 m/s with loss factor 0.01 keeps only 82-87 % of the bins inside
+    (K = 100-200), there v / (zeta_1 omega_1) = 0.18 m, half the traverse. So the check runs where the
+    quasi-stationary approximation holds: 0.05 m/s, loss factor 0.05, Tf/tau = (1/f_1)/(traverse
+    time) ~ 1e-3 and the ball's travel during the fundamental's decay time, v / (zeta_1 omega_1),
+    ~ 1 % of the analysed length (asserted below). Light roughness: no loss of contact; start-up left
+    out. Measured at this set-up (K = 100, seed 2002): 93 % of the bins inside for the sensor mean,
+    89-94 % per sensor (92 % on average); median deviation within 0.01 dB. The former reference (continuous patch
+    filter, uniform positions, no aliasing) holds 69-80 % of the bins here with the same dof, 57-72 % with
+    the stationary /psd interval."""
     out = tmp_path / "lin.h5"
-    r = run(["run", RIG, "--out", out, "--quiet", "--set", "study.realisations=40", "--set", "texture.rms=0.01e-6",
-             "--set", "ball.speed=0.1", "--set", "ball.start=0.1", "--set", "ball.end=0.3",
-             "--set", "beam.loss_factor=0.05", "--set", "spectrum.skip_start=0.15", "--set", "spectrum.segment=1024"])
+    speed, start, end, skip, loss_factor, realisations = 0.05, 0.1, 0.3, 0.15, 0.05, 100
+    r = run(["run", RIG, "--out", out, "--quiet", "--set", f"study.realisations={realisations}", "--set", "texture.rms=0.01e-6",
+             "--set", f"ball.speed={speed}", "--set", f"ball.start={start}", "--set", f"ball.end={end}",
+             "--set", f"beam.loss_factor={loss_factor}", "--set", f"spectrum.skip_start={skip}",
+             "--set", "spectrum.segment=1024"])
     assert r.returncode == 0, r.stderr
     with h5py.File(out) as f:
         assert f["/contact/loss_of_contact_share"][0] == 0.0
+        f1 = f["/beam/modal_frequency"][0]
         freq = f["/psd/frequency"][:]
         sel = (freq >= 100) & (freq <= 5000)
-        d = 10 * np.log10(f["/psd/mean"][-1][sel] / f["/reference/psd"][-1][sel])
-        raw = 10 * np.log10(f["/psd/mean"][-1][sel] / f["/reference/psd_raw"][-1][sel])
-    assert abs(np.median(d)) < 0.15
-    assert np.percentile(np.abs(d), 90) < 0.6
+        mean, std, ref = f["/psd/mean"][:, sel], f["/psd/std"][:, sel], f["/reference/psd"][:, sel]
+        lower, upper = f["/reference/mean_lower"][:, sel], f["/reference/mean_upper"][:, sel]
+        dof, dof_stationary = f["/reference/degrees_of_freedom"][:, sel], f["/psd"].attrs["degrees_of_freedom"]
+        raw = f["/reference/psd_raw"][:, sel]
+    # Quasi-stationary conditions (the reference's one approximation).
+    analysed = end - (start + speed * skip)
+    tf_over_tau = (1.0 / f1) / ((end - start) / speed)
+    decay_travel = speed / (loss_factor / 2 * 2 * np.pi * f1)
+    assert tf_over_tau < 0.01 and decay_travel / analysed < 0.02, (tf_over_tau, decay_travel / analysed)
+    # The per-bin dof agrees with the realisations' own scatter (2 mean^2 / std^2 per realisation);
+    # the stationary value overstates it.
+    empirical = 2 * realisations * mean ** 2 / std ** 2
+    assert np.all(np.abs(np.median(empirical / dof, axis=1) - 1) < 0.12), np.median(empirical / dof, axis=1)
+    assert np.all(np.median(empirical / dof_stationary, axis=1) < 0.85)
+    # The issue's criterion: sensor mean, and the sensors on average.
+    inside = ((mean >= lower) & (mean <= upper)).mean(axis=1)
+    assert inside[-1] >= 0.90, inside
+    assert inside[:-1].mean() >= 0.90, inside
+    d = 10 * np.log10(mean[-1] / ref[-1])
+    assert abs(np.median(d)) < 0.03, np.median(d)
     # The window smoothing matters: the unsmoothed solution misses resonances and dips by several dB.
-    assert np.percentile(np.abs(raw), 95) > 2 * np.percentile(np.abs(d), 95)
+    raw_d = 10 * np.log10(mean[-1] / raw[-1])
+    assert np.percentile(np.abs(raw_d), 95) > 2 * np.percentile(np.abs(d), 95)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ball_on_beam_fixture.hpp"
+#include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/beam/linear_response.hpp"
 
@@ -76,4 +77,41 @@ TEST_CASE("roughness and blocked-force excitation are the same model with F0 = (
     CHECK(a.sensor_psd[1][k] == doctest::Approx(b.sensor_psd[1][k]).epsilon(1e-12));
     CHECK(a.sensor_psd[0][k] > 0.0);
   }
+}
+
+TEST_CASE("weighted position average and complex transfer agree with single-position solutions") {
+  const ModalBeam beam(test::rig_beam(), {12, 0.0}, {0.05, {}});
+  const double k0 = 6.8e6, c0 = 100.0, m2 = 0.2631;
+  const std::vector<double> f = {150.0, 700.0, 2500.0, 4400.0}, g = {1.0, 2.0, 0.5, 0.25};
+  const std::vector<double> xi = {0.07, 0.15, 0.31}, wts = {1.0, 3.0, 0.0}, sensors = {0.065, 0.195};
+  const LinearResponse avg = linear_response_psd(beam, m2, k0, c0, xi, sensors, f, g, Excitation::blocked_force, wts);
+  std::vector<double> expect(f.size(), 0.0);
+  for (std::size_t p = 0; p < xi.size(); ++p) {
+    const LinearResponse one = linear_response_psd(beam, m2, k0, c0, {xi[p]}, sensors, f, g, Excitation::blocked_force);
+    const auto H = linear_response_transfer(beam, m2, k0, c0, xi[p], sensors, f, Excitation::blocked_force);
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      expect[k] += wts[p] / 4.0 * one.sensor_psd[1][k];
+      CHECK(std::norm(H[0][k]) * g[k] == doctest::Approx(one.sensor_psd[0][k]).epsilon(1e-12));
+      CHECK(std::norm(H[1][k]) * g[k] == doctest::Approx(one.sensor_psd[1][k]).epsilon(1e-12));
+    }
+  }
+  for (std::size_t k = 0; k < f.size(); ++k) CHECK(avg.sensor_psd[1][k] == doctest::Approx(expect[k]).epsilon(1e-12));
+  CHECK_THROWS(linear_response_psd(beam, m2, k0, c0, xi, sensors, f, g, Excitation::blocked_force, {1.0, 2.0}));
+}
+
+TEST_CASE("contact_patch_transfer is what contact_patch_average does to a sampled sinusoid (B35a)") {
+  const double dx = 1e-6, a = 69.4e-6;
+  UniformSamples h{0.0, dx, {}};
+  for (double k : {2.0e4, 1.3e5, 3.1e5, 9.0e5}) {
+    h.values.assign(4001, 0.0);
+    for (std::size_t i = 0; i < h.values.size(); ++i) h.values[i] = std::cos(k * dx * static_cast<double>(i) + 0.3);
+    const UniformSamples out = contact_patch_average(h, a);
+    const double t = contact_patch_transfer(k, a, dx);
+    for (std::size_t i = 1000; i < 3000; i += 37) CHECK(out.values[i] == doctest::Approx(t * h.values[i]).scale(1.0).epsilon(1e-12));
+    // The continuous filter times the linear interpolant's low-pass, to the aliases' O(dx / a).
+    const double sinc = std::sin(k * a) / (k * a), lin = std::pow(std::sin(k * dx / 2) / (k * dx / 2), 2);
+    MESSAGE("k = " << k << ": T = " << t << ", sin(ka)/(ka) = " << sinc << ", times sinc^2(k dx/2) = " << sinc * lin);
+    CHECK(t == doctest::Approx(sinc * lin).scale(1.0).epsilon(dx / a));
+  }
+  CHECK(contact_patch_transfer(1e5, 0.0, dx) == 1.0);
 }

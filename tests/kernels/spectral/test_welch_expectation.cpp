@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <complex>
 #include <random>
 #include <vector>
 
@@ -70,4 +71,71 @@ TEST_CASE("Welch estimates of a lightly damped oscillator converge to the expect
   CHECK(exact[k * refine] / est[k] > 3.0);
   // ~16000 segments: 1.2 % standard error per bin.
   for (std::size_t kk = 12; kk <= 28; ++kk) CHECK(est[kk] == doctest::Approx(expected[kk]).epsilon(0.05));
+}
+
+TEST_CASE("welch_expectation beyond f_s/2 is the expectation with aliasing (the folded PSD)") {
+  WelchConfig cfg;
+  cfg.sample_rate = 64.0;
+  cfg.segment = 32;
+  cfg.overlap = 16;
+  WelchPlan plan(cfg);
+  const std::size_t refine = 4, half = refine * (plan.n_freq() - 1);
+  std::vector<double> wide(3 * half + 1), folded(half + 1, 0.0);
+  for (std::size_t j = 0; j < wide.size(); ++j) {
+    const double f = 0.25 * static_cast<double>(j);
+    wide[j] = 1.0 / (1.0 + std::pow((f - 40.0) / 0.7, 2)) + 0.2 / (1.0 + f / 20.0);  // a peak above f_s/2 = 32 Hz
+  }
+  // The one-sided PSD of the sampled signal: S(f) + S(f_s - f) + S(f_s + f) on [0, f_s/2] (the
+  // trapezoid nodes and weights of the two integrals coincide).
+  for (std::size_t j = 0; j <= half; ++j) folded[j] = wide[j] + wide[2 * half - j] + wide[2 * half + j];
+  const auto a = welch_expectation(plan, wide, refine), b = welch_expectation(plan, folded, refine);
+  const auto c = welch_expectation_direct(plan, wide, refine);
+  const auto narrow = welch_expectation(plan, std::vector<double>(wide.begin(), wide.begin() + half + 1), refine);
+  for (std::size_t k = 1; k + 1 < a.size(); ++k) {
+    CHECK(a[k] == doctest::Approx(c[k]).epsilon(1e-12));
+    CHECK(a[k] == doctest::Approx(b[k]).epsilon(1e-12));
+  }
+  // The aliased peak (40 Hz -> 24 Hz) is there; without the wide grid it is not.
+  CHECK(a[24 * 32 / 64] > 2.0 * narrow[24 * 32 / 64]);
+}
+
+TEST_CASE("Welch time weights sum to 1 and taper at the ends; block dof reduces to D-16") {
+  WelchConfig cfg;
+  cfg.sample_rate = 100.0;
+  cfg.segment = 64;
+  cfg.overlap = 32;
+  WelchPlan plan(cfg);
+  const std::size_t n = 64 * 40 + 17;  // 17 samples after the last segment
+  const auto tw = welch_time_weights(plan, n);
+  double sum = 0.0;
+  for (double v : tw) sum += v;
+  CHECK(sum == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(tw[0] == 0.0);
+  CHECK(tw[n - 1] == 0.0);
+  CHECK(tw[n / 2] == doctest::Approx(1.0 / static_cast<double>(plan.segments(n) * 32)).epsilon(1e-9));
+  // Blocks of 50 samples; stationary single channel: the D-16 value.
+  std::vector<std::size_t> edges;
+  for (std::size_t e = 0; e < n; e += 50) edges.push_back(e);
+  edges.push_back(n);
+  const std::size_t blocks = edges.size() - 1, bins = 3;
+  std::vector<std::complex<double>> one(blocks * bins, 2.0);
+  const auto d1 = welch_block_dof(plan, n, edges, 1, bins, one);
+  for (double v : d1) CHECK(v == doctest::Approx(plan.equivalent_dof(n)).epsilon(1e-9));
+  // Three uncorrelated channels of equal level: three times; three identical channels: once.
+  std::vector<std::complex<double>> unc(blocks * 6 * bins, 0.0), same(blocks * 6 * bins, 2.0);
+  for (std::size_t p = 0; p < blocks; ++p)
+    for (std::size_t q : {0u, 3u, 5u})
+      for (std::size_t k = 0; k < bins; ++k) unc[(p * 6 + q) * bins + k] = 2.0;
+  const auto d3 = welch_block_dof(plan, n, edges, 3, bins, unc), ds = welch_block_dof(plan, n, edges, 3, bins, same);
+  for (std::size_t k = 0; k < bins; ++k) {
+    CHECK(d3[k] == doctest::Approx(3.0 * plan.equivalent_dof(n)).epsilon(1e-9));
+    CHECK(ds[k] == doctest::Approx(plan.equivalent_dof(n)).epsilon(1e-9));
+  }
+  // A level that rises and falls like sin^2 over the record keeps (E S)^2 / E S^2 = 2/3 of it.
+  std::vector<std::complex<double>> wave(blocks * bins);
+  for (std::size_t p = 0; p < blocks; ++p)
+    for (std::size_t k = 0; k < bins; ++k)
+      wave[p * bins + k] = std::pow(std::sin(M_PI * 3.0 * static_cast<double>(edges[p] + edges[p + 1]) / 2.0 / static_cast<double>(n)), 2);
+  const auto dw = welch_block_dof(plan, n, edges, 1, bins, wave);
+  CHECK(dw[0] / plan.equivalent_dof(n) == doctest::Approx(2.0 / 3.0).epsilon(0.03));
 }
