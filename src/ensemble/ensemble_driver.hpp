@@ -6,6 +6,8 @@
 // Completed chunks are checkpointed; SIGINT/SIGTERM stop cleanly with exit 130 and --resume
 // recomputes only missing chunks. A realisation that produces NaN/Inf stops the run, naming its
 // id and the seed.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -31,6 +33,13 @@ struct EnsembleSums {
   std::uint64_t computed = 0;       // realisations computed in this run (the rest came from checkpoints)
   double seconds = 0.0;
   double reduce_seconds = 0.0;      // gathering chunk sums to rank 0 and adding them (part of `seconds`)
+
+  // Ensemble mean of value i, and the standard deviation of one realisation's value (K - 1).
+  double mean(std::size_t i) const { return sum[i] / static_cast<double>(count); }
+  double std_dev(std::size_t i) const {
+    const double K = static_cast<double>(count), m = mean(i);
+    return count > 1 ? std::sqrt(std::max(0.0, (sum_sq[i] - K * m * m) / (K - 1.0))) : 0.0;
+  }
 };
 
 // Fills values[0..n_values) for realisation `id` using the workspace of thread `thread`.

@@ -137,7 +137,7 @@ class RandomOscillator final : public Scene {
     e.std_dev.resize(sums.sum.size());
     for (std::size_t i = 0; i < sums.sum.size(); ++i) {
       e.mean[i] = sums.sum[i] / K;
-      e.std_dev[i] = sums.count > 1 ? std::sqrt(std::max(0.0, (sums.sum_sq[i] - K * e.mean[i] * e.mean[i]) / (K - 1))) : 0.0;
+      e.std_dev[i] = sums.std_dev(i);
     }
     e.realisations = sums.count;
     e.dof_per_bin = K * welch_->equivalent_dof(n_);

@@ -285,11 +285,8 @@ class RollingPipe final : public Scene {
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
     const std::size_t nf = welch_->n_freq(), nr = rows();
     const double K = static_cast<double>(sums.count);
-    auto mean_of = [&](std::size_t i) { return sums.sum[i] / K; };
-    auto std_of = [&](std::size_t i) {
-      const double m = mean_of(i);
-      return sums.count > 1 ? std::sqrt(std::max(0.0, (sums.sum_sq[i] - K * m * m) / (K - 1))) : 0.0;
-    };
+    auto mean_of = [&](std::size_t i) { return sums.mean(i); };
+    auto std_of = [&](std::size_t i) { return sums.std_dev(i); };
     io::PsdEnsemble e;
     e.frequency = welch_->frequencies();
     for (std::size_t j = 0; j < sensors_.size(); ++j) e.sensors.push_back("sensor_" + std::to_string(j + 1));
