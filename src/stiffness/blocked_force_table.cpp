@@ -42,6 +42,7 @@ std::string checksum(const BlockedForceTable& t) {
 double BlockedForceTable::psd_at(double k) const {
   if (psd_wavenumber.size() < 2 || k > psd_wavenumber.back()) return 0.0;
   if (k <= psd_wavenumber[1]) return psd[1];
+  if (k == psd_wavenumber.back()) return psd.back();  // upper_bound would point past the end
   const auto it = std::upper_bound(psd_wavenumber.begin(), psd_wavenumber.end(), k);
   const std::size_t j = static_cast<std::size_t>(it - psd_wavenumber.begin());
   const double ka = psd_wavenumber[j - 1], kb = psd_wavenumber[j], ga = psd[j - 1], gb = psd[j];
