@@ -1,4 +1,5 @@
 #include "src/scenes/ball_on_beam.hpp"
+#include "src/scenes/study_welch.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -234,12 +235,7 @@ class BallOnBeam final : public Scene {
     if (segment > samples_ - skip_)
       s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(samples_ - skip_) +
                                        " samples = ((end - start) / speed - skip_start) x sample_rate)");
-    spectral::WelchConfig wc;
-    wc.sample_rate = model_.sample_rate;
-    wc.segment = segment;
-    wc.overlap = static_cast<std::size_t>(std::floor(s.real("spectrum.overlap") * static_cast<double>(segment)));
-    wc.window = s.text("spectrum.window") == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
-    welch_ = std::make_unique<spectral::WelchPlan>(wc);
+    welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, model_.sample_rate));
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
   }

@@ -1,4 +1,5 @@
 #include "src/scenes/random_oscillator.hpp"
+#include "src/scenes/study_welch.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -70,12 +71,7 @@ class RandomOscillator final : public Scene {
     const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
     if (segment > n_)
       s.refuse("spectrum.segment", "is longer than one realisation's record (" + std::to_string(n_) + " samples = duration x sample_rate)");
-    spectral::WelchConfig wc;
-    wc.sample_rate = fs_;
-    wc.segment = segment;
-    wc.overlap = static_cast<std::size_t>(std::floor(s.real("spectrum.overlap") * static_cast<double>(segment)));
-    wc.window = s.text("spectrum.window") == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
-    welch_ = std::make_unique<spectral::WelchPlan>(wc);
+    welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, fs_));
     synth_ = std::make_unique<spectral::HarmonicSynthesiser>(n_);
     df_ = fs_ / static_cast<double>(n_);
     psd_at_harmonics_.resize(synth_->harmonics());

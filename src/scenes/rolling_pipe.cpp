@@ -1,4 +1,5 @@
 #include "src/scenes/rolling_pipe.hpp"
+#include "src/scenes/study_welch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -182,12 +183,7 @@ class RollingPipe final : public Scene {
     if (segment > samples_ - skip_)
       s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(samples_ - skip_) +
                                        " samples = (distance / speed - skip_start) / dt)");
-    spectral::WelchConfig wc;
-    wc.sample_rate = 1.0 / dt_;
-    wc.segment = segment;
-    wc.overlap = static_cast<std::size_t>(std::floor(s.real("spectrum.overlap") * static_cast<double>(segment)));
-    wc.window = s.text("spectrum.window") == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
-    welch_ = std::make_unique<spectral::WelchPlan>(wc);
+    welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, 1.0 / dt_));
     for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(segment));
     options_.analysis = Analysis::Dynamic;
     options_.max_iterations = 30;
