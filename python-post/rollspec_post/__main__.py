@@ -12,9 +12,9 @@ def build_parser():
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("psd", help="acceleration PSD with confidence band, measurement and band levels")
     p.add_argument("result", help="rollspec result file (HDF5)")
-    p.add_argument("--measurement", help="measured PSD, CSV frequency_hz,psd")
+    p.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column")
     p.add_argument("--bands", action="store_true", help="draw third-octave band levels (and ΔL with a measurement)")
-    p.add_argument("--sensor", type=int, help="plot only this sensor index")
+    p.add_argument("--sensor", help="plot only this sensor (name or index)")
     p.add_argument("--out", "-o", required=True, help="output PNG")
     t = sub.add_parser("texture", help="line texture, surface image, target vs realised PSD")
     t.add_argument("texture_file", help="file written by rollspec texture")
@@ -30,11 +30,15 @@ def build_parser():
     b.add_argument("--out", "-o", required=True, help="output PNG")
     r = sub.add_parser("report", help="one self-contained HTML page: key figures, PSD, provenance, study")
     r.add_argument("result", help="rollspec result file (HDF5)")
-    r.add_argument("--measurement", help="measured PSD, CSV frequency_hz,psd (band rule of `rollspec compare`)")
-    r.add_argument("--sensor", type=int, default=0, help="sensor index (default 0)")
+    r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
+    r.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
     r.add_argument("--fmin", type=float, default=0.0, help="lowest band edge compared (Hz)")
     r.add_argument("--fmax", type=float, default=float("inf"), help="highest band edge compared (Hz)")
     r.add_argument("--out", "-o", required=True, help="output HTML")
+    for q in (p, r):
+        q.add_argument("--column", help="PSD column of the measurement CSV (default: psd)")
+        q.add_argument("--measured-averages", type=float, metavar="M",
+                       help="independent records averaged into the measurement: judge it by its prediction interval")
     return parser
 
 
@@ -44,7 +48,7 @@ def run(args):
         raise PostError(f"{args.out}: cannot create (no directory {out_dir})", EX_CANTCREAT)
     if args.command == "psd":
         from .psd_plot import plot_psd
-        plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor)
+        plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor, args.column, args.measured_averages)
     elif args.command == "texture":
         from .texture_plot import plot_texture
         plot_texture(args.texture_file, args.out)
@@ -59,7 +63,8 @@ def run(args):
         plot_bench(args.csv, args.out)
     elif args.command == "report":
         from .report_page import build_report
-        build_report(args.result, args.out, args.measurement, args.sensor, args.fmin, args.fmax)
+        build_report(args.result, args.out, args.measurement, args.sensor, args.fmin, args.fmax, args.column,
+                     args.measured_averages)
 
 
 def main(argv=None):

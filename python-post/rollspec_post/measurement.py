@@ -1,28 +1,67 @@
-"""Measured PSDs (CSV `frequency_hz,psd`) and band averages on any frequency grid."""
+"""Measured PSDs (CSV with `frequency_hz` and a PSD column) and their comparison with a result's
+bands by the rule of `rollspec compare` (kernels/spectral/README.md D-21, D-22): the same bands,
+the same sensor by default, the same intervals and the same question."""
 import numpy as np
+from scipy import stats
 
-from .result_file import EX_DATAERR, EX_NOINPUT, PostError
+from .result_file import EX_DATAERR, EX_NOINPUT, EX_USAGE, PostError, read, text_attr
+
+MIN_REALISATIONS = 5  # kernels/spectral kMinRealisationsForInterval
+BANDS = ("nominal_frequency", "lower_frequency", "upper_frequency", "level_db", "ci_lower_db", "ci_upper_db", "std",
+         "log_std")
 
 
-def read_measurement(path):
+def read_measurement(path, column=None):
+    """(frequency, psd) from a CSV with a header; `column` names the PSD column (default `psd`), so
+    the output of `rollspec psd` is read directly."""
+    column = column or "psd"
     try:
-        with open(path) as fh:
+        with open(path, encoding="utf-8-sig") as fh:
             header = [c.strip() for c in fh.readline().strip().split(",")]
     except FileNotFoundError:
         raise PostError(f"{path}: no such file", EX_NOINPUT) from None
-    if header[:2] != ["frequency_hz", "psd"]:
-        raise PostError(f"{path}:1: header must be 'frequency_hz,psd', found {','.join(header)!r}", EX_DATAERR)
+    except (UnicodeDecodeError, IsADirectoryError) as e:
+        raise PostError(f"{path}: not a CSV text file ({e})", EX_DATAERR) from None
+    for name in ("frequency_hz", column):
+        if name not in header:
+            raise PostError(f"{path}:1: no column {name!r}; columns found: {', '.join(header)}", EX_DATAERR)
     try:
-        data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+        data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2, encoding="utf-8-sig")
     except ValueError as e:
         raise PostError(f"{path}: not numeric CSV ({e})", EX_DATAERR) from None
-    f, p = data[:, 0], data[:, 1]
+    if data.shape[0] == 0 or data.shape[1] != len(header):
+        raise PostError(f"{path}: expected rows of {len(header)} numbers under the header", EX_DATAERR)
+    f, p = data[:, header.index("frequency_hz")], data[:, header.index(column)]
+    if not (np.all(np.isfinite(f)) and np.all(np.isfinite(p))):
+        raise PostError(f"{path}: values must be finite numbers", EX_DATAERR)
     if np.any(np.diff(f) <= 0):
         raise PostError(f"{path}: frequency_hz must increase strictly", EX_DATAERR)
     if np.any(p < 0):
-        raise PostError(f"{path}:{np.argmax(p < 0) + 2}: psd value {p[p < 0][0]:g} is negative; allowed: >= 0",
+        raise PostError(f"{path}:{np.argmax(p < 0) + 2}: {column} value {p[p < 0][0]:g} is negative; allowed: >= 0",
                         EX_DATAERR)
     return f, p
+
+
+def sensor_row(names, sensor=None):
+    """The row `rollspec compare` uses: a name or an index; by default sensor_mean if present, else 0."""
+    if sensor is None:
+        return names.index("sensor_mean") if "sensor_mean" in names else 0
+    if str(sensor) in names:
+        return names.index(str(sensor))
+    if str(sensor).isdigit() and int(sensor) < len(names):
+        return int(sensor)
+    listed = ", ".join(f"{i} = {n}" for i, n in enumerate(names))
+    raise PostError(f"--sensor {sensor}: the result has the sensors {listed}; allowed: a name or an index", EX_USAGE)
+
+
+def read_bands(f):
+    """The /bands datasets `compare_bands` needs, the sensor names and the interval settings."""
+    bands = {n: np.asarray(read(f, "/bands/" + n), float) for n in BANDS}
+    bands["sensor"] = [s.decode() if isinstance(s, bytes) else str(s) for s in read(f, "/bands/sensor")]
+    bands["realisations"] = int(np.reshape(f["/psd"].attrs["realisations"], -1)[0])
+    bands["confidence"] = float(np.reshape(f["/psd"].attrs.get("confidence_level", 0.95), -1)[0])
+    bands["interval_method"] = str(text_attr(f["/psd"], "interval_method", ""))
+    return bands
 
 
 def band_average(f, p, lower, upper):
@@ -34,19 +73,64 @@ def band_average(f, p, lower, upper):
     return np.trapz(np.interp(grid, f, p), grid) / (upper - lower)
 
 
-def compare_bands(meas, bands, sensor=0, fmin=0.0, fmax=np.inf):
-    """Simulated band levels of one sensor against a measurement, by the rule of `rollspec compare`:
-    bands inside [fmin, fmax] that the measurement covers with a positive average count; a band is
-    inside when the measured level lies in [ci_lower_db, ci_upper_db]. `bands` maps the /bands names."""
+def prediction_factors(mean, std, log_std, realisations, records, level):
+    """D-22, the union of two laws of one realisation's value: (a) gamma, m_M / m_K ~ F(M nu_1, K nu_1),
+    nu_1 = 2 m^2 / s^2, quantiles widened by t_{K-1}/z in log space; (b) lognormal, both means
+    lognormal with their moments, CV^2 = exp(s_y^2) - 1, t_{K-1} on the log ratio."""
+    a, K, M = 1.0 - level, realisations, records
+    t = stats.t.ppf(1 - a / 2, K - 1)
+    w = t / stats.norm.ppf(1 - a / 2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        nu1 = np.where(std > 0, 2.0 * (mean / std) ** 2, np.inf)
+    nu1 = np.minimum(nu1, 1e12 / max(K, M))
+    gamma = (mean > 0) & (K * nu1 < 1e12)
+    lo = np.where(gamma, stats.f.ppf(a / 2, M * nu1, K * nu1) ** w, 1.0)
+    hi = np.where(gamma, stats.f.ppf(1 - a / 2, M * nu1, K * nu1) ** w, 1.0)
+    cv2 = np.expm1(np.square(np.where(np.isfinite(log_std), log_std, 0.0)))
+    vm, vk = np.log1p(cv2 / M), np.log1p(cv2 / K)
+    half, centre = t * np.sqrt(vm + vk), (vk - vm) / 2
+    lognormal = (mean > 0) & np.isfinite(log_std) & (log_std > 0)
+    lo = np.where(lognormal, np.minimum(lo, np.exp(centre - half)), lo)
+    hi = np.where(lognormal, np.maximum(hi, np.exp(centre + half)), hi)
+    return lo, hi
+
+
+def question(bands, measured_averages=None):
+    pct = f"{100 * bands['confidence']:.0f} %"
+    if bands["realisations"] < MIN_REALISATIONS:
+        return "none: " + bands["interval_method"]
+    if measured_averages:
+        return (f"is the measured level inside the {pct} prediction interval of a measurement averaged over "
+                f"M = {measured_averages:g} independent records?")
+    return f"is the measured level inside the {pct} interval of the simulated mean?"
+
+
+def compare_bands(meas, bands, sensor=None, fmin=0.0, fmax=np.inf, measured_averages=None):
+    """Band levels of one row against a measurement, by the rule of `rollspec compare`: bands inside
+    [fmin, fmax] that the measurement covers with a positive average; `inside` answers the question
+    `question()` states (the interval of the simulated mean, or with `measured_averages` M the
+    prediction interval for a measurement of M independent records). `bands` is read_bands()."""
+    if measured_averages is not None and not (np.isfinite(measured_averages) and measured_averages >= 1):
+        raise PostError(f"--measured-averages {measured_averages:g}: allowed: a finite count >= 1 of independent records",
+                        EX_USAGE)
+    s = sensor_row(bands["sensor"], sensor)
     lower, upper = bands["lower_frequency"], bands["upper_frequency"]
     measured = np.array([band_average(meas[0], meas[1], a, b) for a, b in zip(lower, upper)])
     used = (lower >= fmin) & (upper <= fmax) & np.isfinite(measured) & (measured > 0)
     measured_db = np.full(lower.shape, np.nan)
     measured_db[used] = 10.0 * np.log10(measured[used])
-    level = bands["level_db"][sensor]
+    level = bands["level_db"][s]
     delta = level - measured_db
-    inside = used & (measured_db >= bands["ci_lower_db"][sensor]) & (measured_db <= bands["ci_upper_db"][sensor])
+    judged = bands["realisations"] >= MIN_REALISATIONS
+    lo_db, hi_db = bands["ci_lower_db"][s], bands["ci_upper_db"][s]
+    if measured_averages and judged:
+        lo, hi = prediction_factors(10.0 ** (level / 10.0), bands["std"][s], bands["log_std"][s],
+                                    bands["realisations"], float(measured_averages), bands["confidence"])
+        lo_db, hi_db = level + 10.0 * np.log10(lo), level + 10.0 * np.log10(hi)
+    inside = used & judged & (measured_db >= lo_db) & (measured_db <= hi_db)
     count = int(used.sum())
     rms = float(np.sqrt(np.mean(delta[used] ** 2))) if count else np.nan
-    return {"used": used, "measured_db": measured_db, "delta_db": delta, "inside": inside,
-            "count": count, "inside_count": int(inside.sum()), "rms_db_error": rms}
+    return {"row": s, "sensor": bands["sensor"][s], "used": used, "measured_db": measured_db, "delta_db": delta,
+            "lower_db": lo_db, "upper_db": hi_db, "inside": inside, "count": count,
+            "judged": count if judged else 0, "inside_count": int(inside.sum()), "rms_db_error": rms,
+            "question": question(bands, measured_averages)}

@@ -4,7 +4,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .measurement import compare_bands, read_measurement
+from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .result_file import open_rollspec, text_attr
 
 
@@ -13,7 +13,9 @@ def db(x):
         return 10.0 * np.log10(x)
 
 
-def plot_psd(result, out, measurement=None, bands=False, sensor=None):
+def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None):
+    """`sensor` (name or index) limits the plot to one row; the ΔL panel uses the row `rollspec
+    compare` would (that one, else sensor_mean if present, else the first) and says which."""
     with open_rollspec(result) as f:
         freq = f["/psd/frequency"][:]
         mean, lo, hi = f["/psd/mean"][:], f["/psd/ci_lower"][:], f["/psd/ci_upper"][:]
@@ -24,10 +26,9 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None):
         k = int(f["/psd"].attrs["realisations"])
         level = float(f["/psd"].attrs["confidence_level"])
         scene = text_attr(f, "scene", "")
-        band_data = {n: f["/bands/" + n][:] for n in ("nominal_frequency", "lower_frequency", "upper_frequency",
-                                                     "level_db", "ci_lower_db", "ci_upper_db")}
-    sensors = range(len(names)) if sensor is None else [sensor]
-    meas = read_measurement(measurement) if measurement else None
+        band_data = read_bands(f)
+    sensors = range(len(names)) if sensor is None else [sensor_row(names, sensor)]
+    meas = read_measurement(measurement, column) if measurement else None
     fig = Figure(figsize=(9, 7 if (bands and meas is not None) else 5.5), constrained_layout=True)
     rows = 2 if (bands and meas is not None) else 1
     ax = fig.add_subplot(rows, 1, 1)
@@ -49,17 +50,22 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     if rows == 2:
-        cmp = compare_bands(meas, band_data, sensors[0])
+        cmp = compare_bands(meas, band_data, sensor, measured_averages=measured_averages)
         ok = cmp["used"]
         ax2 = fig.add_subplot(2, 1, 2)
-        # bars coloured by whether the measured level lies in the simulated interval
-        ax2.bar(np.arange(ok.sum()), cmp["delta_db"][ok], color=np.where(cmp["inside"][ok], "C0", "C3"))
-        ax2.set_xticks(np.arange(ok.sum()))
+        # ΔL bars coloured by the answer to compare's question; grey: the ΔL the interval allows
+        x = np.arange(ok.sum())
+        level = band_data["level_db"][cmp["row"]][ok]
+        if cmp["judged"]:
+            ax2.bar(x, cmp["upper_db"][ok] - cmp["lower_db"][ok], bottom=level - cmp["upper_db"][ok],
+                    width=0.8, color="0.85", label="ΔL the interval allows")
+        ax2.bar(x, cmp["delta_db"][ok], width=0.4, color=np.where(cmp["inside"][ok], "C0", "C3"))
+        ax2.set_xticks(x)
         ax2.set_xticklabels([f"{v:g}" for v in band_data["nominal_frequency"][ok]], rotation=90, fontsize=7)
         ax2.axhline(0, color="k", lw=0.8)
         ax2.set_ylabel("ΔL sim − meas (dB)")
-        ax2.set_title(f"rms {cmp['rms_db_error']:.2f} dB; measured level inside the interval in "
-                      f"{cmp['inside_count']}/{cmp['count']} bands (blue: inside, red: outside)"
+        ax2.set_title(f"{cmp['sensor']}: rms {cmp['rms_db_error']:.2f} dB; inside {cmp['inside_count']}/"
+                      f"{cmp['judged']} bands (blue: inside, red: outside)\n{cmp['question']}"
                       if cmp["count"] else "the measurement covers none of the bands", fontsize=9)
         ax2.set_xlabel("third-octave band (Hz)")
         ax2.grid(True, axis="y", alpha=0.3)

@@ -9,13 +9,12 @@ import re
 
 import numpy as np
 
-from .measurement import compare_bands, read_measurement
+from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .psd_plot import plot_psd
-from .result_file import EX_DATAERR, EX_USAGE, PostError, open_rollspec, read, scalar, text_attr
+from .result_file import EX_DATAERR, PostError, open_rollspec, read, scalar, text_attr
 from . import __version__
 
 PROVENANCE = ("filetype", "schema_version", "rollspec_version", "git_sha", "seed", "rng", "library_versions", "scene")
-BANDS = ("nominal_frequency", "lower_frequency", "upper_frequency", "level_db", "ci_lower_db", "ci_upper_db")
 
 STYLE = """
 body { font-family: "DejaVu Sans", Arial, sans-serif; margin: 0; background: #f4f5f7; color: #1d2330; }
@@ -55,7 +54,7 @@ def read_result(path, sensor):
     with open_rollspec(path) as f:
         r = {"provenance": {k: plain(text_attr(f, k, "—")) for k in PROVENANCE},
              "study": plain(text_attr(f, "study", "")),
-             "bands": {n: np.asarray(read(f, "/bands/" + n), float) for n in BANDS},
+             "bands": read_bands(f),
              "sensors": [plain(s) for s in read(f, "/psd/sensor")],
              "realisations": int(np.reshape(f["/psd"].attrs["realisations"], -1)[0]),
              "confidence": float(np.reshape(f["/psd"].attrs.get("confidence_level", 0.95), -1)[0]),
@@ -63,10 +62,11 @@ def read_result(path, sensor):
              "threads": plain(f["/run"].attrs.get("threads")) if "/run" in f else None,
              "loss": scalar(f, "/contact/loss_of_contact_share"),
              "loss_std": scalar(f, "/contact/loss_of_contact_share_std")}
-        if not 0 <= sensor < len(r["sensors"]):
-            raise PostError(f"--sensor {sensor}: the result has sensors 0..{len(r['sensors']) - 1}", EX_USAGE)
+        r["sensor"] = sensor = sensor_row(r["sensors"], sensor)
+        r["sensor_name"] = r["sensors"][sensor]
         if "/reference/psd" in f:
-            # share of PSD bins over the band range whose interval holds the exact answer
+            # share of PSD bins over the band range whose interval holds the reference, named by what it is
+            r["reference_label"] = str(text_attr(f["/reference/psd"], "label", "reference"))
             freq = read(f, "/psd/frequency")
             lo, hi, ref = (read(f, n)[sensor] for n in ("/psd/ci_lower", "/psd/ci_upper", "/reference/psd"))
             sel = (freq >= r["bands"]["lower_frequency"][0]) & (freq <= r["bands"]["upper_frequency"][-1])
@@ -86,9 +86,10 @@ def key_figures(r, cmp):
     if cmp is not None:
         cards.append(card("rms dB error vs measurement", f"{cmp['rms_db_error']:.2f} dB",
                           f"over {cmp['count']} third-octave bands"))
-        cards.append(card(f"bands with the measurement inside the {level} interval",
-                          f"{100 * cmp['inside_count'] / cmp['count']:.0f} %",
-                          f"{cmp['inside_count']} of {cmp['count']} bands"))
+        kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the simulated mean"
+        cards.append(card(f"bands with the measurement inside the {level} {kind}",
+                          f"{100 * cmp['inside_count'] / cmp['judged']:.0f} %" if cmp["judged"] else "—",
+                          f"{cmp['inside_count']} of {cmp['judged']} bands" if cmp["judged"] else cmp["question"]))
     else:
         cards.append(card("rms dB error vs measurement", "—", "no measurement given (--measurement CSV)"))
         cards.append(card(f"bands with the measurement inside the {level} interval", "—", "no measurement given"))
@@ -104,23 +105,26 @@ def key_figures(r, cmp):
         cards.append(card("run time", "—", "not recorded"))
     if "reference" in r:
         n_in, n, f0, f1 = r["reference"]
-        cards.append(card(f"bins holding the exact PSD in their {level} interval", f"{100 * n_in / n:.1f} %",
-                          f"{n_in} of {n} bins, {f0:g}–{f1:g} Hz"))
+        cards.append(card(f"bins holding the reference PSD ({r['reference_label']}) in their {level} interval",
+                          f"{100 * n_in / n:.1f} %", f"{n_in} of {n} bins, {f0:g}–{f1:g} Hz"))
     return '<div class="cards">' + "".join(cards) + "</div>"
 
 
 def band_table(r, cmp):
     b, s = r["bands"], r["sensor"]
+    predicted = "prediction" in cmp["question"]
     rows = []
     for i in np.flatnonzero(cmp["used"]):
         cls = "" if cmp["inside"][i] else ' class="out"'
         cells = (f"{b['nominal_frequency'][i]:g}", f"{b['level_db'][s][i]:.2f}", f"{cmp['measured_db'][i]:.2f}",
                  f"{cmp['delta_db'][i]:+.2f}", f"{b['ci_lower_db'][s][i]:.2f} … {b['ci_upper_db'][s][i]:.2f}",
-                 "yes" if cmp["inside"][i] else "no")
+                 f"{cmp['lower_db'][i]:.2f} … {cmp['upper_db'][i]:.2f}" if predicted else "",
+                 ("yes" if cmp["inside"][i] else "no") if cmp["judged"] else "—")
         rows.append(f"<tr{cls}>" + "".join(f'<td class="num">{esc(c)}</td>' for c in cells) + "</tr>")
     head = "".join(f"<th>{esc(h)}</th>" for h in ("band (Hz)", "simulated (dB)", "measured (dB)", "Δ (dB)",
-                                                  "interval (dB)", "inside"))
-    return f"<table><tr>{head}</tr>{''.join(rows)}</table>"
+                                                  "interval of the mean (dB)", "prediction interval (dB)", "inside"))
+    return (f'<p>Question: {esc(cmp["question"])}</p>'
+            f"<table><tr>{head}</tr>{''.join(rows)}</table>")
 
 
 def description(study):
@@ -128,15 +132,15 @@ def description(study):
     return m.group(1).strip() if m else ""
 
 
-def build_report(result, out, measurement=None, sensor=0, fmin=0.0, fmax=np.inf):
+def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None):
     r = read_result(result, sensor)
-    r["sensor"], r["sensor_name"] = sensor, r["sensors"][sensor]
-    meas = read_measurement(measurement) if measurement else None
-    cmp = compare_bands(meas, r["bands"], sensor, fmin, fmax) if meas is not None else None
+    sensor = r["sensor"]
+    meas = read_measurement(measurement, column) if measurement else None
+    cmp = compare_bands(meas, r["bands"], sensor, fmin, fmax, measured_averages) if meas is not None else None
     if cmp is not None and cmp["count"] == 0:
         raise PostError(f"{measurement}: covers none of the result's bands inside [{fmin:g}, {fmax:g}] Hz",
                         EX_DATAERR)
-    psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurement, True, sensor))
+    psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurement, True, sensor, column, measured_averages))
     prov = dict(r["provenance"], result_file=os.path.basename(result))
     if measurement:
         prov["measurement_file"] = os.path.basename(measurement)

@@ -35,7 +35,8 @@ def is_png_with_content(path):
 def write_rollspec(path, filetype="rollspec-result"):
     import h5py
     f = h5py.File(path, "w")
-    f.attrs["filetype"], f.attrs["schema_version"] = filetype, "1.0"
+    from rollspec_post.result_file import KNOWN_SCHEMA_MAJOR
+    f.attrs["filetype"], f.attrs["schema_version"] = filetype, f"{KNOWN_SCHEMA_MAJOR[filetype]}.0"
     return f
 
 

@@ -1,15 +1,19 @@
 // rollspec compare: simulated third-octave band levels against a measured PSD (design §7).
+// Two questions, said in the output: is the measured level inside the interval of the simulated
+// *mean* (the default), or, given --measured-averages M, inside the prediction interval of a
+// measurement that averages M independent records (kernels/spectral D-22)?
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "kernels/spectral/ensemble_interval.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
+#include "src/io/band_levels.hpp"
 #include "src/io/csv_table.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
@@ -17,121 +21,202 @@
 namespace rollspec::cli {
 
 namespace {
+
 std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (const unsigned char c : s) {
+    if (c == '"' || c == '\\') out += '\\', out += static_cast<char>(c);
+    else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else out += static_cast<char>(c);
+  }
+  return out + "\"";
+}
+
+std::string json_number(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+struct BandRow {
+  double centre, simulated, measured, delta, ci_lower, ci_upper, pred_lower, pred_upper;
+  bool inside_ci, inside_prediction;
+};
+
+struct Measurement {
+  std::vector<double> frequency, psd;
+};
+
+Measurement read_measurement(const std::string& path, const std::string& column) {
+  const io::CsvTable m = io::read_csv(path);
+  const std::size_t fc = m.column_index("frequency_hz");
+  io::require_increasing(m, fc);
+  Measurement out{m.values[fc], m.values[m.column_index(column.empty() ? "psd" : column)]};
+  const std::string name = column.empty() ? "psd" : column;
+  for (std::size_t i = 0; i < out.frequency.size(); ++i)
+    if (out.frequency[i] < 0.0)
+      throw data_error(m.where(i) + ": frequency_hz value " + number(out.frequency[i]) + " is negative; allowed: >= 0 (one-sided PSD)");
+  for (std::size_t i = 0; i < out.psd.size(); ++i)
+    if (out.psd[i] < 0.0) throw data_error(m.where(i) + ": " + name + " value " + number(out.psd[i]) + " is negative; allowed: >= 0");
+  return out;
+}
+
 }  // namespace
 
 int compare_command(const Args& args) {
   const std::string usage =
-      "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor K] [--fmin HZ] [--fmax HZ] [--format table|csv]\n"
+      "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M]\n"
+      "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json]\n"
       "\n"
-      "MEASUREMENT.csv holds frequency_hz,psd (one-sided, (m/s^2)^2/Hz). For every third-octave band of\n"
-      "the result inside [fmin, fmax] that the measurement covers, prints the simulated and measured\n"
-      "band levels (dB re 1 (m/s^2)^2/Hz), their difference, and whether the measured level lies in the\n"
-      "simulated confidence interval; the last line is `rms_db_error: X  inside_ci: Y/Z`.";
+      "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: `psd`, or the one\n"
+      "--column names (so the output of `rollspec psd` is read directly). For every third-octave band of the\n"
+      "result inside [fmin, fmax] that the measurement covers, prints the simulated and measured band levels\n"
+      "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
+      "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
+      "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
+      "answers the question the output states. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
+      "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
+      "--format json writes everything.";
   po::options_description opts("options");
-  std::string result, measurement, format = "table";
-  long long sensor = 0;
-  double fmin = 0.0, fmax = 1e12;
+  std::string result, measurement, format = "table", sensor, column;
+  double fmin = 0.0, fmax = INFINITY, records = 0.0;
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
-      "sensor", po::value(&sensor)->default_value(0), "sensor index in the result")(
+      "sensor", po::value(&sensor), "sensor name or index in the result (default: sensor_mean if present, else 0)")(
+      "column", po::value(&column), "PSD column of the measurement CSV (default: psd)")(
+      "measured-averages", po::value(&records), "independent records averaged into the measurement (>= 1)")(
       "fmin", po::value(&fmin)->default_value(0.0), "lowest band edge (Hz)")(
-      "fmax", po::value(&fmax)->default_value(1e12), "highest band edge (Hz)")(
-      "format", po::value(&format)->default_value("table"), "table or csv");
+      "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
+      "format", po::value(&format)->default_value("table"), "table, csv or json");
   po::positional_options_description pos;
   pos.add("result", 1).add("measurement", 1);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (format != "table" && format != "csv") throw usage_error("--format " + format + ": allowed: table or csv");
+  if (format != "table" && format != "csv" && format != "json")
+    throw usage_error("--format " + format.substr(0, 200) + ": allowed: table, csv or json");
+  if (!(fmin >= 0.0) || std::isinf(fmin)) throw usage_error("--fmin " + number(fmin) + ": allowed: a finite frequency >= 0 Hz");
+  if (!(fmax > fmin)) throw usage_error("--fmax " + number(fmax) + ": allowed: a frequency above --fmin (" + number(fmin) + " Hz)");
+  const bool predict = vm.count("measured-averages") > 0;
+  if (predict && !(records >= 1.0 && std::isfinite(records)))
+    throw usage_error("--measured-averages " + number(records) + ": allowed: a finite count >= 1 of independent records");
 
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
-  std::vector<std::size_t> dims, dims_lower, dims_upper;
-  const auto level = r.read("/bands/level_db", &dims);
-  const auto lower_db = r.read("/bands/ci_lower_db", &dims_lower);
-  const auto upper_db = r.read("/bands/ci_upper_db", &dims_upper);
-  const auto lo = r.read("/bands/lower_frequency"), hi = r.read("/bands/upper_frequency");
-  const auto centre = r.read("/bands/nominal_frequency");
-  if (dims.size() != 2) throw data_error(result + ": /bands/level_db is not sensor x band");
-  const std::size_t ns = dims[0], nb = dims[1];
-  if (ns == 0 || nb == 0)
-    throw data_error(result + ": /bands/level_db is empty (" + std::to_string(ns) + " sensors x " + std::to_string(nb) +
-                     " bands)");
-  // Every band dataset must match /bands/level_db, or the loop below would read past its end.
-  const std::string shape = std::to_string(ns) + " x " + std::to_string(nb);
-  if (dims_lower != dims) throw data_error(result + ": /bands/ci_lower_db does not have the shape of /bands/level_db (" + shape + ")");
-  if (dims_upper != dims) throw data_error(result + ": /bands/ci_upper_db does not have the shape of /bands/level_db (" + shape + ")");
-  for (const auto& [name, v] : {std::pair<const char*, const std::vector<double>*>{"/bands/lower_frequency", &lo},
-                                {"/bands/upper_frequency", &hi},
-                                {"/bands/nominal_frequency", &centre}})
-    if (v->size() != nb)
-      throw data_error(result + ": " + name + " has " + std::to_string(v->size()) + " values; expected " + std::to_string(nb) +
-                       " (one per band of /bands/level_db)");
-  for (std::size_t b = 0; b < nb; ++b)
-    if (!(std::isfinite(lo[b]) && std::isfinite(hi[b]) && lo[b] > 0.0 && lo[b] < hi[b]))
-      throw data_error(result + ": band " + std::to_string(b) + " has edges " + number(lo[b]) + " .. " + number(hi[b]) +
-                       " Hz in /bands/lower_frequency, /bands/upper_frequency; allowed: finite, 0 < lower < upper");
-  if (sensor < 0 || static_cast<std::size_t>(sensor) >= ns)
-    throw usage_error("--sensor " + std::to_string(sensor) + ": the result has sensors 0.." + std::to_string(ns - 1));
-  const std::size_t off = static_cast<std::size_t>(sensor) * nb;
-  for (const auto& [name, v] : {std::pair<const char*, const std::vector<double>*>{"/bands/level_db", &level},
-                                {"/bands/ci_lower_db", &lower_db},
-                                {"/bands/ci_upper_db", &upper_db}})
-    for (std::size_t b = 0; b < nb; ++b)
-      if (std::isnan((*v)[off + b]))
-        throw data_error(result + ": " + name + "[" + std::to_string(sensor) + ", " + std::to_string(b) +
-                         "] is NaN; allowed: a level in dB (or -inf for a band without power)");
+  const io::BandLevels b = io::read_band_levels(r, sensor);
+  const Measurement m = read_measurement(measurement, column);
+  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
+  const int pct = static_cast<int>(std::lround(100.0 * b.confidence));
+  const std::string question =
+      !has_interval ? "none: " + b.interval_method
+      : predict     ? "is the measured level inside the " + std::to_string(pct) +
+                      " % prediction interval of a measurement averaged over M = " + number(records) + " independent records?"
+                    : "is the measured level inside the " + std::to_string(pct) +
+                      " % interval of the simulated mean? (it ignores the measurement's own scatter; give "
+                      "--measured-averages M to ask whether a measurement of M records agrees with the model)";
 
-  const io::CsvTable m = io::read_csv(measurement);
-  const auto& mf = m.column("frequency_hz");
-  const auto& mp = m.column("psd");
-  io::require_increasing(m, m.column_index("frequency_hz"));
-  for (std::size_t i = 0; i < mf.size(); ++i)
-    if (mf[i] < 0.0)
-      throw data_error(m.where(i) + ": frequency_hz value " + number(mf[i]) + " is negative; allowed: >= 0 (one-sided PSD)");
-  for (std::size_t i = 0; i < mp.size(); ++i)
-    if (mp[i] < 0.0) throw data_error(m.where(i) + ": psd value " + number(mp[i]) + " is negative; allowed: >= 0");
-
-  // The table is printed only once every band is computed: a refused input leaves no partial output.
-  std::string text;
-  char buf[256];
-  if (format == "csv")
-    text += "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,inside_ci\n";
-  else {
-    std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %10s\n", "centre_Hz", "simulated_dB", "measured_dB", "delta_dB",
-                  "inside_CI");
-    text += buf;
-  }
-  double sq = 0.0;
-  int inside = 0, count = 0;
-  for (std::size_t b = 0; b < nb; ++b) {
-    if (lo[b] < fmin || hi[b] > fmax) continue;
-    if (mf.size() < 2 || mf.front() > lo[b] || mf.back() < hi[b]) continue;  // the measurement does not cover the band
-    const double meas = spectral::band_average_irregular(mf.data(), mp.data(), mf.size(), lo[b], hi[b]);
+  std::vector<BandRow> rows;
+  for (std::size_t k = 0; k < b.level_db.size(); ++k) {
+    if (b.lower[k] < fmin || b.upper[k] > fmax) continue;
+    if (m.frequency.size() < 2 || m.frequency.front() > b.lower[k] || m.frequency.back() < b.upper[k]) continue;
+    const double meas = spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
     if (!std::isfinite(meas))
-      throw data_error(measurement + ": the measured PSD averaged over the band " + number(lo[b]) + " .. " + number(hi[b]) +
-                       " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
+      throw data_error(measurement + ": the measured PSD averaged over the band " + number(b.lower[k]) + " .. " +
+                       number(b.upper[k]) + " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
     if (meas <= 0.0) continue;
-    const double mdb = 10.0 * std::log10(meas), sdb = level[off + b];
-    const double d = sdb - mdb;
-    const bool in = mdb >= lower_db[off + b] && mdb <= upper_db[off + b];
-    sq += d * d;
-    inside += in;
-    ++count;
-    if (format == "csv")
-      std::snprintf(buf, sizeof buf, "%g,%.4f,%.4f,%.4f,%.4f,%.4f,%s\n", centre[b], sdb, mdb, d, lower_db[off + b],
-                    upper_db[off + b], in ? "yes" : "no");
-    else
-      std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %10s\n", centre[b], sdb, mdb, d, in ? "yes" : "no");
+    BandRow row{};
+    row.centre = b.nominal[k];
+    row.simulated = b.level_db[k];
+    row.measured = 10.0 * std::log10(meas);
+    row.delta = row.simulated - row.measured;
+    row.ci_lower = b.ci_lower_db[k];
+    row.ci_upper = b.ci_upper_db[k];
+    row.inside_ci = has_interval && row.measured >= row.ci_lower && row.measured <= row.ci_upper;
+    row.pred_lower = row.pred_upper = NAN;
+    if (predict && has_interval) {
+      const double level = std::pow(10.0, row.simulated / 10.0);
+      // The realisations' band averages: mean, spread, and the spread of their log (the level stands in
+      // for the mean of the logs' law, which only needs the spread).
+      const spectral::Scatter sc{level, b.std_dev[k], std::log(level), b.log_std[k]};
+      const auto p = spectral::prediction_interval(sc, b.realisations, records, b.confidence);
+      row.pred_lower = row.simulated + 10.0 * std::log10(p.lower);
+      row.pred_upper = row.simulated + 10.0 * std::log10(p.upper);
+      row.inside_prediction = row.measured >= row.pred_lower && row.measured <= row.pred_upper;
+    }
+    rows.push_back(row);
+  }
+  if (rows.empty()) throw data_error(measurement + ": covers none of the result's bands inside [fmin, fmax]");
+  double sq = 0.0;
+  int inside = 0;
+  for (const auto& row : rows) {
+    sq += row.delta * row.delta;
+    inside += predict ? row.inside_prediction : row.inside_ci;
+  }
+  const double rms = std::sqrt(sq / static_cast<double>(rows.size()));
+  const int judged = has_interval ? static_cast<int>(rows.size()) : 0;
+  const std::string source = "result " + result + " (" + std::to_string(b.realisations) + " realisations), sensor " +
+                             b.sensor + "; measurement " + measurement + ", column " + (column.empty() ? "psd" : column);
+
+  // Printed only once every band is computed: a refused input leaves no partial output.
+  std::string text;
+  char buf[320];
+  if (format == "json") {
+    text += "{\n  \"result\": " + json_string(result) + ",\n  \"sensor\": " + json_string(b.sensor) +
+            ",\n  \"measurement\": " + json_string(measurement) + ",\n  \"column\": " + json_string(column.empty() ? "psd" : column) +
+            ",\n  \"realisations\": " + std::to_string(b.realisations) + ",\n  \"confidence_level\": " + json_number(b.confidence) +
+            ",\n  \"interval_method\": " + json_string(b.interval_method) +
+            ",\n  \"measured_averages\": " + (predict ? json_number(records) : "null") + ",\n  \"question\": " + json_string(question) +
+            ",\n  \"bands\": [\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const auto& x = rows[i];
+      text += "    {\"centre_hz\": " + json_number(x.centre) + ", \"simulated_db\": " + json_number(x.simulated) +
+              ", \"measured_db\": " + json_number(x.measured) + ", \"delta_db\": " + json_number(x.delta) +
+              ", \"ci_lower_db\": " + json_number(x.ci_lower) + ", \"ci_upper_db\": " + json_number(x.ci_upper) +
+              ", \"prediction_lower_db\": " + json_number(x.pred_lower) + ", \"prediction_upper_db\": " + json_number(x.pred_upper) +
+              ", \"inside\": " + (!has_interval ? "null" : (predict ? x.inside_prediction : x.inside_ci) ? "true" : "false") + "}" +
+              (i + 1 < rows.size() ? ",\n" : "\n");
+    }
+    text += "  ],\n  \"rms_db_error\": " + json_number(rms) + ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
+            ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) + "\n}\n";
+    std::fputs(text.c_str(), stdout);
+    return 0;
+  }
+  if (format == "csv")
+    text += "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,prediction_upper_db,inside\n";
+  else {
+    text += source + "\nquestion: " + question + "\n";
+    std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
+                  "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
     text += buf;
   }
-  if (count == 0) throw data_error(measurement + ": covers none of the result's bands inside [fmin, fmax]");
-  std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", std::sqrt(sq / count), inside, count);
-  text += buf;
+  for (const auto& x : rows) {
+    const bool in = predict ? x.inside_prediction : x.inside_ci;
+    if (format == "csv") {
+      auto cell = [](double v) { return std::isfinite(v) ? json_number(v) : std::isnan(v) ? std::string() : v > 0 ? "inf" : "-inf"; };
+      text += number(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," + cell(x.ci_lower) +
+              "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
+              (has_interval ? (in ? "1" : "0") : "") + "\n";
+    } else {
+      char ci[40] = "", pi[40] = "";
+      std::snprintf(ci, sizeof ci, "%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
+      if (predict && has_interval) std::snprintf(pi, sizeof pi, "%7.2f..%-7.2f", x.pred_lower, x.pred_upper);
+      std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured, x.delta, ci, pi,
+                    has_interval ? (in ? "yes" : "no") : "-");
+      text += buf;
+    }
+  }
+  std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", rms, has_interval ? inside : 0, judged);
+  if (format == "csv") text += "# " + source + "\n# question: " + question + "\n# " + buf;
+  else text += buf;
   std::fputs(text.c_str(), stdout);
   return 0;
 }

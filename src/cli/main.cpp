@@ -3,7 +3,7 @@
 //   rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume] [--quiet]
 //   rollspec plan STUDY.ini
 //   rollspec psd SIGNAL.csv --fs HZ [--segment N] [--overlap F] [--window hann|rect] [--out FILE.csv]
-//   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor K] [--fmin HZ] [--fmax HZ] [--format table|csv]
+//   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M] [--format table|csv|json]
 //   rollspec texture STUDY.ini [--out FILE.h5] [--count N]
 //   rollspec modes STUDY.ini
 //   rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild]

@@ -176,6 +176,28 @@ std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std
   return out;
 }
 
+std::vector<std::string> Hdf5Reader::read_strings(const std::string& dataset) const {
+  if (!exists(dataset)) throw data_error(path_ + ": no dataset " + dataset + "; expected it in a complete rollspec file");
+  const Hdf5Handle set(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  const Hdf5Handle ftype(set.valid() ? H5Dget_type(set.get()) : -1);
+  const Hdf5Handle space(set.valid() ? H5Dget_space(set.get()) : -1);
+  if (!ftype.valid() || !space.valid() || H5Tget_class(ftype.get()) != H5T_STRING || H5Tis_variable_str(ftype.get()) <= 0 ||
+      H5Sget_simple_extent_ndims(space.get()) != 1)
+    throw data_error(path_ + ": dataset " + dataset + " is not a list of variable-length strings");
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space.get(), &n, nullptr);
+  Hdf5Handle mtype(H5Tcopy(H5T_C_S1));
+  H5Tset_size(mtype.get(), H5T_VARIABLE);
+  H5Tset_cset(mtype.get(), H5Tget_cset(ftype.get()));
+  std::vector<char*> p(static_cast<std::size_t>(n), nullptr);
+  if (n > 0 && H5Dread(set.get(), mtype.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) < 0)
+    throw data_error(path_ + ": cannot read dataset " + dataset + " (truncated or damaged file)");
+  std::vector<std::string> out;
+  for (char* c : p) out.emplace_back(c ? c : "");
+  if (n > 0) H5Dvlen_reclaim(mtype.get(), space.get(), H5P_DEFAULT, p.data());
+  return out;
+}
+
 bool Hdf5Reader::has_attribute(const std::string& object, const std::string& name) const {
   if (object != "/" && !exists(object)) return false;
   return H5Aexists_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT) > 0;

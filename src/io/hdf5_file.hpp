@@ -65,6 +65,8 @@ class Hdf5Reader {
   const std::string& path() const { return path_; }
   bool exists(const std::string& object) const;
   std::vector<double> read(const std::string& dataset, std::vector<std::size_t>* dims = nullptr) const;
+  // A one-dimensional dataset of variable-length strings (as write_strings makes, e.g. sensor names).
+  std::vector<std::string> read_strings(const std::string& dataset) const;
   std::string string_attribute(const std::string& object, const std::string& name) const;
   double double_attribute(const std::string& object, const std::string& name) const;
   bool has_attribute(const std::string& object, const std::string& name) const;

@@ -11,8 +11,8 @@ class Hdf5Writer;
 class Hdf5Reader;
 
 constexpr const char* kResultFileType = "rollspec-result";
-constexpr int kResultSchemaMajor = 1;
-constexpr const char* kResultSchemaVersion = "1.0";
+constexpr int kResultSchemaMajor = 2;
+constexpr const char* kResultSchemaVersion = "2.0";
 constexpr const char* kRngName = "philox4x64-10";
 
 std::string library_versions();

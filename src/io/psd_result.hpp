@@ -1,18 +1,20 @@
 #pragma once
-// The spectral part of a result file, shared by every scene (schema 1):
+// The spectral part of a result file, shared by every scene (schema 2):
 //   /psd/frequency (Hz, scale "frequency"), /psd/sensor (names, scale "sensor"),
-//   /psd/mean, /psd/ci_lower, /psd/ci_upper, /psd/std   (sensor x frequency, PSD unit)
+//   /psd/mean, /psd/ci_lower, /psd/ci_upper, /psd/std, /psd/degrees_of_freedom (sensor x frequency)
 //   /bands/centre_frequency (Hz, scale "band"), /bands/nominal_frequency, /bands/lower_frequency,
-//   /bands/upper_frequency, /bands/level_db, /bands/ci_lower_db, /bands/ci_upper_db (sensor x band),
-//   /bands/degrees_of_freedom (band)
-// The interval is chi-square (theory D-16) with nu = K * nu_Welch per bin, and per band
-// nu_band = max(nu_bin, min(nu_bin * B / (df * ENBW), 2 B T)) for B the band width and T the
-// record time behind the mean (D-17: bins closer than the window's noise bandwidth are
-// correlated, and no estimate holds more than the 2 B T degrees of freedom of the record,
-// Bendat & Piersol 2010 §8.5).
+//   /bands/upper_frequency (band), /bands/level_db, /bands/ci_lower_db, /bands/ci_upper_db,
+//   /bands/std, /bands/log_std, /bands/degrees_of_freedom (sensor x band)
+// Every interval comes from the realisations' own scatter (kernels/spectral D-21): realisations
+// are independent, nothing inside one is (adjacent Welch bins, segments of a moving-load record).
+// The band interval uses the scatter of each realisation's band average, not a count of bins;
+// /bands/std and /bands/log_std let `rollspec compare` predict a measurement's scatter (D-22).
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "kernels/spectral/ensemble_interval.hpp"
+#include "kernels/spectral/third_octave_bands.hpp"
 
 namespace rollspec::io {
 
@@ -20,33 +22,32 @@ class Hdf5Writer;
 
 struct PsdEnsemble {
   std::vector<double> frequency;       // Hz, uniform from 0
-  std::vector<std::string> sensors;
-  std::vector<double> mean;            // sensors x frequency
+  std::vector<std::string> sensors;    // rows
+  std::vector<double> mean;            // rows x frequency
   std::vector<double> std_dev;         // ensemble standard deviation of one realisation's PSD
+  std::vector<spectral::Scatter> scatter;       // rows x frequency: moments of x and ln x
+  std::vector<spectral::Scatter> band_scatter;  // rows x bands: of the realisations' band averages
   std::uint64_t realisations = 0;
-  double dof_per_bin = 0.0;            // of the ensemble mean
+  double welch_dof = 0.0;              // K x the Welch dof (D-16) of a stationary record: information only
   double window_enbw_bins = 1.5;
-  double record_seconds = 0.0;         // total analysed time behind the mean (all realisations)
   double confidence = 0.95;
   double band_min = 0.0, band_max = 0.0;  // Hz
   std::string units = "(m/s^2)^2/Hz";
   std::string quantity = "acceleration";
-  // Per-bin dof from the realisations' scatter (Satterthwaite): nu_i = min(dof_per_bin,
-  // 2 K mean_i^2 / std_i^2), for scenes whose realisations differ by more than Welch noise
-  // (intermittent contact, impacts). Band levels then take the mean nu_i over the band's bins
-  // (bins of one realisation rise and fall together, so averaging them gains nothing).
-  bool empirical_dof = false;
 };
 
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);
+
+// The third-octave bands of a result: those inside [max(band_min, df), min(band_max, f_max)].
+std::vector<spectral::Band> result_bands(const std::vector<double>& frequency, double band_min, double band_max);
+
+// How the intervals were made, as stored in the /psd attribute interval_method.
+std::string interval_method(std::uint64_t realisations);
 
 // Coordinate scales of a group: <group>/frequency (Hz) and <group>/sensor (names). Dimension
 // scales are visible only in their own group and below (netCDF semantics, which xarray's
 // h5netcdf engine follows), so every group with spectra carries its own.
 void write_frequency_scale(Hdf5Writer& w, const std::string& group, const std::vector<double>& frequency);
 void write_sensor_scale(Hdf5Writer& w, const std::string& group, const std::vector<std::string>& sensors);
-
-// Band degrees of freedom from the per-bin value (D-17).
-double band_dof(double dof_per_bin, double band_width, double df, double enbw_bins, double record_seconds);
 
 }  // namespace rollspec::io

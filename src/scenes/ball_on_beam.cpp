@@ -1,4 +1,5 @@
 #include "src/scenes/ball_on_beam.hpp"
+#include "src/scenes/psd_rows.hpp"
 #include "src/scenes/study_welch.hpp"
 
 #include <algorithm>
@@ -236,6 +237,9 @@ class BallOnBeam final : public Scene {
       s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(samples_ - skip_) +
                                        " samples = ((end - start) / speed - skip_start) x sample_rate)");
     welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, model_.sample_rate));
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < model_.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
+    rows_ = std::make_unique<PsdRows>(names, average_, welch_->frequencies(), band_min_, band_max_, 2 * welch_->n_freq() + 1);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
   }
@@ -336,8 +340,9 @@ class BallOnBeam final : public Scene {
     }
   }
 
-  std::size_t rows() const { return model_.sensors.size() + (average_ && model_.sensors.size() > 1 ? 1 : 0); }
-  std::size_t values_per_realisation() const override { return (rows() + 2) * welch_->n_freq() + 1; }
+  std::size_t rows() const { return rows_->rows(); }
+  // PsdRows layout, then the extras: contact-force PSD, ball-acceleration PSD, loss-of-contact share.
+  std::size_t values_per_realisation() const override { return rows_->size(); }
 
   // Simulates realisation `id` into ws.result (shared by the ensemble and the time-history output).
   void simulate(std::uint64_t id, Workspace& ws) const {
@@ -386,48 +391,29 @@ class BallOnBeam final : public Scene {
     simulate(id, ws);
     const std::size_t nf = welch_->n_freq(), ns = model_.sensors.size(), n = ws.result.samples() - skip_;
     for (std::size_t s = 0; s < ns; ++s)
-      welch_->psd(ws.result.sensor_acceleration[s].data() + skip_, n, values + s * nf, ws.welch);
-    if (rows() > ns)
-      for (std::size_t k = 0; k < nf; ++k) {
-        double m = 0.0;
-        for (std::size_t s = 0; s < ns; ++s) m += values[s * nf + k];
-        values[ns * nf + k] = m / static_cast<double>(ns);
-      }
-    welch_->psd(ws.result.contact_force.data() + skip_, n, values + rows() * nf, ws.welch);
-    welch_->psd(ws.result.ball_acceleration.data() + skip_, n, values + (rows() + 1) * nf, ws.welch);
-    values[(rows() + 2) * nf] = ws.result.loss_of_contact_share;
+      welch_->psd(ws.result.sensor_acceleration[s].data() + skip_, n, rows_->row(values, s), ws.welch);
+    rows_->finish(values);
+    double* x = rows_->extras(values);
+    welch_->psd(ws.result.contact_force.data() + skip_, n, x, ws.welch);
+    welch_->psd(ws.result.ball_acceleration.data() + skip_, n, x + nf, ws.welch);
+    x[2 * nf] = ws.result.loss_of_contact_share;
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    const std::size_t nf = welch_->n_freq(), nr = rows();
+    const std::size_t nf = welch_->n_freq();
     const double K = static_cast<double>(sums.count);
     auto mean_of = [&](std::size_t i) { return sums.mean(i); };
     auto std_of = [&](std::size_t i) { return sums.std_dev(i); };
-    io::PsdEnsemble e;
-    e.frequency = welch_->frequencies();
-    for (std::size_t s = 0; s < model_.sensors.size(); ++s) e.sensors.push_back("sensor_" + std::to_string(s + 1));
-    if (nr > model_.sensors.size()) e.sensors.push_back("sensor_mean");
-    for (std::size_t i = 0; i < nr * nf; ++i) {
-      e.mean.push_back(mean_of(i));
-      e.std_dev.push_back(std_of(i));
-    }
-    e.realisations = sums.count;
-    // Sensors of one roll are correlated, so the sensor mean keeps the single-sensor dof. Both are the
-    // stationary D-16 value, which overstates the dof of a traverse whose response rises and falls
-    // with the ball's position (measured 0.5-0.75 of it for the seed 002 rig); the linearised law
-    // also writes the per-bin value of the ensemble mean, /reference/degrees_of_freedom (B34b).
-    e.dof_per_bin = K * welch_->equivalent_dof(samples_ - skip_);
+    io::PsdEnsemble e = rows_->ensemble(sums);
+    e.welch_dof = K * welch_->equivalent_dof(samples_ - skip_);  // stationary D-16 value, for information
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
-    e.record_seconds = K * static_cast<double>(samples_ - skip_) / model_.sample_rate;
     e.confidence = confidence_;
-    e.band_min = band_min_;
-    e.band_max = band_max_;
     io::write_psd_result(w, e);
 
     std::vector<double> force(nf), ball(nf);
     for (std::size_t k = 0; k < nf; ++k) {
-      force[k] = mean_of(nr * nf + k);
-      ball[k] = mean_of((nr + 1) * nf + k);
+      force[k] = mean_of(rows_->extra_index(k));
+      ball[k] = mean_of(rows_->extra_index(nf + k));
     }
     w.write("/contact/force_psd", {nf}, force.data(), "N^2/Hz", "ensemble mean PSD of the contact force");
     w.write("/ball/acceleration_psd", {nf}, ball.data(), "(m/s^2)^2/Hz", "ensemble mean PSD of the ball acceleration");
@@ -435,7 +421,7 @@ class BallOnBeam final : public Scene {
     io::write_frequency_scale(w, "/ball", e.frequency);
     w.attach_scale("/contact/force_psd", "/contact/frequency", 0);
     w.attach_scale("/ball/acceleration_psd", "/ball/frequency", 0);
-    const double share = mean_of((nr + 2) * nf), share_std = std_of((nr + 2) * nf);
+    const double share = mean_of(rows_->extra_index(2 * nf)), share_std = std_of(rows_->extra_index(2 * nf));
     w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
     w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
     w.attribute("/contact", "law", law_name_);
@@ -685,6 +671,7 @@ class BallOnBeam final : public Scene {
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;
   std::size_t samples_ = 0, skip_ = 0;
   std::unique_ptr<spectral::WelchPlan> welch_;
+  std::unique_ptr<PsdRows> rows_;
   std::vector<std::unique_ptr<Workspace>> workspaces_;
 };
 

@@ -1,4 +1,5 @@
 #include "src/scenes/random_oscillator.hpp"
+#include "src/scenes/psd_rows.hpp"
 #include "src/scenes/study_welch.hpp"
 
 #include <Eigen/Dense>
@@ -72,6 +73,7 @@ class RandomOscillator final : public Scene {
     if (segment > n_)
       s.refuse("spectrum.segment", "is longer than one realisation's record (" + std::to_string(n_) + " samples = duration x sample_rate)");
     welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, fs_));
+    rows_ = std::make_unique<PsdRows>(std::vector<std::string>{"mass"}, false, welch_->frequencies(), band_min_, band_max_, 0);
     synth_ = std::make_unique<spectral::HarmonicSynthesiser>(n_);
     df_ = fs_ / static_cast<double>(n_);
     psd_at_harmonics_.resize(synth_->harmonics());
@@ -101,7 +103,7 @@ class RandomOscillator final : public Scene {
     };
   }
 
-  std::size_t values_per_realisation() const override { return welch_->n_freq(); }
+  std::size_t values_per_realisation() const override { return rows_->size(); }
 
   void run_realisation(std::uint64_t id, int thread, double* values) const override {
     Workspace& ws = *workspaces_[static_cast<std::size_t>(thread)];
@@ -121,27 +123,15 @@ class RandomOscillator final : public Scene {
       ws.accel[i] = ws.force[i] - c * v - k * q;
       step_.advance(q, v, ws.force[i], ws.force[(i + 1) % n_]);
     }
-    welch_->psd(ws.accel.data(), n_, values, ws.welch);
+    welch_->psd(ws.accel.data(), n_, rows_->row(values, 0), ws.welch);
+    rows_->finish(values);
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    io::PsdEnsemble e;
-    e.frequency = welch_->frequencies();
-    e.sensors = {"mass"};
-    const double K = static_cast<double>(sums.count);
-    e.mean.resize(sums.sum.size());
-    e.std_dev.resize(sums.sum.size());
-    for (std::size_t i = 0; i < sums.sum.size(); ++i) {
-      e.mean[i] = sums.sum[i] / K;
-      e.std_dev[i] = sums.std_dev(i);
-    }
-    e.realisations = sums.count;
-    e.dof_per_bin = K * welch_->equivalent_dof(n_);
+    io::PsdEnsemble e = rows_->ensemble(sums);
+    e.welch_dof = static_cast<double>(sums.count) * welch_->equivalent_dof(n_);
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
-    e.record_seconds = K * static_cast<double>(n_) / fs_;
     e.confidence = confidence_;
-    e.band_min = band_min_;
-    e.band_max = band_max_;
     io::write_psd_result(w, e);
 
     std::vector<double> exact(e.frequency.size());
@@ -171,6 +161,7 @@ class RandomOscillator final : public Scene {
   double f_max_ = 0.0, df_ = 0.0, omega_ = 0.0;
   std::size_t n_ = 0;
   std::unique_ptr<spectral::WelchPlan> welch_;
+  std::unique_ptr<PsdRows> rows_;
   std::unique_ptr<spectral::HarmonicSynthesiser> synth_;
   std::vector<double> psd_at_harmonics_;
   integrators::ExactOscillatorStep step_{};

@@ -1,4 +1,5 @@
 #include "src/scenes/rolling_pipe.hpp"
+#include "src/scenes/psd_rows.hpp"
 #include "src/scenes/study_welch.hpp"
 
 #include <algorithm>
@@ -184,6 +185,9 @@ class RollingPipe final : public Scene {
       s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(samples_ - skip_) +
                                        " samples = (distance / speed - skip_start) / dt)");
     welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, 1.0 / dt_));
+    std::vector<std::string> names;
+    for (std::size_t j = 0; j < sensors_.size(); ++j) names.push_back("sensor_" + std::to_string(j + 1));
+    rows_ = std::make_unique<PsdRows>(names, average_, welch_->frequencies(), band_min_, band_max_, extras);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(segment));
     options_.analysis = Analysis::Dynamic;
     options_.max_iterations = 30;
@@ -207,8 +211,7 @@ class RollingPipe final : public Scene {
     };
   }
 
-  std::size_t rows() const { return sensors_.size() + (average_ && sensors_.size() > 1 ? 1 : 0); }
-  std::size_t values_per_realisation() const override { return rows() * welch_->n_freq() + extras; }
+  std::size_t values_per_realisation() const override { return rows_->size(); }
 
   void run_realisation(std::uint64_t id, int thread, double* values) const override {
     using namespace rolling;
@@ -250,20 +253,15 @@ class RollingPipe final : public Scene {
         << " step halvings; reduce [analysis] dt, soften the penalties or smooth the roughness; rerun it alone with --only " << id;
       throw data_error(e.str());
     }
-    const std::size_t nf = welch_->n_freq(), ns = sensors_.size(), n = h.time.size() - skip_;
+    const std::size_t ns = sensors_.size(), n = h.time.size() - skip_;
     std::vector<double>& a = ws.signal;
     a.resize(h.time.size());
     for (std::size_t j = 0; j < ns; ++j) {
       for (std::size_t k = 0; k < h.time.size(); ++k) a[k] = h.acceleration[k][j].z();
-      welch_->psd(a.data() + skip_, n, values + j * nf, ws.welch);
+      welch_->psd(a.data() + skip_, n, rows_->row(values, j), ws.welch);
     }
-    if (rows() > ns)
-      for (std::size_t k = 0; k < nf; ++k) {
-        double sum = 0.0;
-        for (std::size_t j = 0; j < ns; ++j) sum += values[j * nf + k];
-        values[ns * nf + k] = sum / static_cast<double>(ns);
-      }
-    double* x = values + rows() * nf;
+    rows_->finish(values);
+    double* x = rows_->extras(values);
     x[curvature_ratio] = radius_ * validity.max_concave_curvature;
     x[invalid_contact] = validity.valid ? 0.0 : 1.0;
     std::size_t open = 0, pairs = 0;
@@ -279,32 +277,18 @@ class RollingPipe final : public Scene {
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    const std::size_t nf = welch_->n_freq(), nr = rows();
     const double K = static_cast<double>(sums.count);
     auto mean_of = [&](std::size_t i) { return sums.mean(i); };
     auto std_of = [&](std::size_t i) { return sums.std_dev(i); };
-    io::PsdEnsemble e;
-    e.frequency = welch_->frequencies();
-    for (std::size_t j = 0; j < sensors_.size(); ++j) e.sensors.push_back("sensor_" + std::to_string(j + 1));
-    if (nr > sensors_.size()) e.sensors.push_back("sensor_mean");
-    for (std::size_t i = 0; i < nr * nf; ++i) {
-      e.mean.push_back(mean_of(i));
-      e.std_dev.push_back(std_of(i));
-    }
-    e.realisations = sums.count;
-    // The sensors of one tube see the same surface, so the sensor mean keeps the single-sensor dof.
+    io::PsdEnsemble e = rows_->ensemble(sums);
     // Realisations differ by which nodes touch the floor (intermittent contact), far more than
-    // Welch noise: the interval takes its dof from their scatter (Satterthwaite, psd_result.hpp).
-    e.dof_per_bin = K * welch_->equivalent_dof(samples_ - skip_);
-    e.empirical_dof = true;
+    // Welch noise; the intervals come from their scatter (D-21), the Welch value is information.
+    e.welch_dof = K * welch_->equivalent_dof(samples_ - skip_);
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
-    e.record_seconds = K * static_cast<double>(samples_ - skip_) * dt_;
     e.confidence = confidence_;
-    e.band_min = band_min_;
-    e.band_max = band_max_;
     io::write_psd_result(w, e);
 
-    const std::size_t x0 = nr * nf;
+    const std::size_t x0 = rows_->extra_index(0);
     const double invalid = mean_of(x0 + invalid_contact) * K;
     const struct {
       const char* name;
@@ -424,6 +408,7 @@ class RollingPipe final : public Scene {
   std::unique_ptr<texture::LineTextureGenerator> lines_;
   std::unique_ptr<texture_io::SurfaceGenerator> surfaces_;
   std::unique_ptr<spectral::WelchPlan> welch_;
+  std::unique_ptr<PsdRows> rows_;
   std::vector<std::unique_ptr<Workspace>> workspaces_;
 };
 

@@ -437,9 +437,9 @@ RESULTS = [
     ("no filetype", lambda g, d: edited_copy(g, d, lambda f: f.attrs.__delitem__("filetype")), EX_DATAERR,
      ["not a rollspec file (no filetype attribute)"]),
     ("schema_version 9.0 (fixed-length)", lambda g, d: edited_copy(g, d, set_attr("schema_version", np.bytes_(b"9.0"))),
-     EX_DATAERR, ["schema_version '9.0' is not readable", "allowed: 1.x"]),
+     EX_DATAERR, ["schema_version '9.0' is not readable", "allowed: 2.x"]),
     ("schema_version 9.0 (h5py string)", lambda g, d: edited_copy(g, d, set_attr("schema_version", "9.0")),
-     EX_DATAERR, ["schema_version '9.0' is not readable", "allowed: 1.x"]),
+     EX_DATAERR, ["schema_version '9.0' is not readable", "allowed: 2.x"]),
     ("no /bands/level_db", lambda g, d: edited_copy(g, d, lambda f: f.__delitem__("/bands/level_db")), EX_DATAERR,
      ["no dataset /bands/level_db", "expected it in a complete rollspec file"]),
     ("integer /bands/level_db", lambda g, d: edited_copy(g, d, lambda f: replace_dataset(

@@ -80,7 +80,8 @@ def test_linearised_model_against_frequency_domain_solution(tmp_path):
     own time weights over ball positions, the Catmull-Rom reading of F0 at the steps, aliasing of the
     sampled outputs, the Welch window. /reference/degrees_of_freedom is the chi-square dof of the
     ensemble mean per bin for this non-stationary record (B34b): about 0.5-0.75 of the stationary
-    value in /psd, which is why /psd/ci_* (stationary) is too narrow here.
+    Welch value (/psd@welch_degrees_of_freedom), which is why /psd/ci_* take theirs from the
+    realisations' scatter instead (kernels/spectral D-21).
 
     What the reference leaves out is the moving load (quasi-stationary in the ball position); its
     bias grows with the ball's travel while the modes respond. Measured (worst sensor, 100 Hz - 5 kHz,
@@ -108,7 +109,7 @@ def test_linearised_model_against_frequency_domain_solution(tmp_path):
         sel = (freq >= 100) & (freq <= 5000)
         mean, std, ref = f["/psd/mean"][:, sel], f["/psd/std"][:, sel], f["/reference/psd"][:, sel]
         lower, upper = f["/reference/mean_lower"][:, sel], f["/reference/mean_upper"][:, sel]
-        dof, dof_stationary = f["/reference/degrees_of_freedom"][:, sel], f["/psd"].attrs["degrees_of_freedom"]
+        dof, dof_stationary = f["/reference/degrees_of_freedom"][:, sel], f["/psd"].attrs["welch_degrees_of_freedom"]
         raw = f["/reference/psd_raw"][:, sel]
     # Quasi-stationary conditions (the reference's one approximation).
     analysed = end - (start + speed * skip)

@@ -4,57 +4,7 @@ inside its own chi-square interval when the realisation count doubles; bad studi
 import h5py
 import numpy as np
 
-from conftest import EX_CONFIG, SOURCE, assert_bitwise_equal, run
-
-# Half-metre tube, 2 elements (5 node spheres), 0.1 m rolled at 0.5 m/s on an isotropic floor.
-SMALL_PIPE = """\
-[study]
-scene = rolling-pipe
-realisations = {realisations}
-seed = 77
-
-[ensemble]
-chunk_size = {chunk}
-
-[pipe]
-length = 0.5
-elements = 2
-
-[roll]
-speed = 0.5
-distance = 0.1
-
-[roughness]
-kind = {kind}
-spacing = 2e-3
-
-[texture]
-source = self-affine
-hurst = 0.8
-rolloff_wavelength = 0.05
-short_wavelength = 0.008
-rms = 20e-6
-
-[surface]
-method = spectral
-nx = 96
-ny = 288
-spacing = 2e-3
-
-[contact]
-penalty_normal = 2e6
-penalty_tangential = 4e5
-
-[analysis]
-dt = 1e-4
-
-[spectrum]
-segment = 256
-skip_start = 0.02
-band_min = 40
-band_max = 4000
-"""
-
+from conftest import EX_CONFIG, SMALL_PIPE, SOURCE, assert_bitwise_equal, run
 
 def small_pipe(tmp_path, realisations, chunk=4, kind="isotropic", name="pipe.ini"):
     p = tmp_path / name

@@ -1,0 +1,72 @@
+"""python-post's band comparison is `rollspec compare`'s: same default sensor, same intervals, same
+question, same numbers (kernels/spectral D-21, D-22), in the ΔL panel and the report."""
+import json
+import subprocess
+
+import h5py
+import numpy as np
+import pytest
+
+from conftest import BIN, SOURCE, is_png_with_content, post
+
+
+@pytest.fixture(scope="module")
+def beam(tmp_path_factory):
+    d = tmp_path_factory.mktemp("rule")
+    files = {}
+    for name, seed in (("model", 11), ("measured", 12)):
+        out = d / f"{name}.h5"
+        r = subprocess.run([BIN, "run", SOURCE / "studies" / "seed001-beam-s.ini", "--out", out, "--quiet",
+                            "--set", f"study.seed={seed}"], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        files[name] = out
+    with h5py.File(files["measured"]) as f:
+        freq, psd = f["/psd/frequency"][1:], f["/psd/mean"][-1, 1:]
+    files["csv"] = d / "m.csv"
+    np.savetxt(files["csv"], np.c_[freq, psd], delimiter=",", header="frequency_hz,level", comments="", fmt="%.17g")
+    return files
+
+
+def engine(beam, *args):
+    r = subprocess.run([BIN, "compare", beam["model"], beam["csv"], "--column", "level", "--format", "json", *map(str, args)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+@pytest.mark.parametrize("extra", [[], ["--measured-averages", 25], ["--sensor", "sensor_2", "--fmin", 200]])
+def test_python_and_engine_give_the_same_bands_and_answers(beam, extra):
+    from rollspec_post.measurement import compare_bands, read_bands, read_measurement
+    j = engine(beam, *extra)
+    opts = dict(zip(extra[::2], extra[1::2]))
+    with h5py.File(beam["model"]) as f:
+        bands = read_bands(f)
+    cmp = compare_bands(read_measurement(beam["csv"], "level"), bands, opts.get("--sensor"),
+                        float(opts.get("--fmin", 0.0)), np.inf, opts.get("--measured-averages"))
+    assert cmp["sensor"] == j["sensor"] and cmp["question"] in j["question"]
+    used = cmp["used"]
+    assert used.sum() == len(j["bands"]) and cmp["inside_count"] == j["inside"] and cmp["judged"] == j["judged"]
+    np.testing.assert_allclose(cmp["measured_db"][used], [b["measured_db"] for b in j["bands"]], atol=1e-9)
+    key = "prediction" if "--measured-averages" in opts else "ci"
+    np.testing.assert_allclose(cmp["lower_db"][used], [b[f"{key}_lower_db"] for b in j["bands"]], atol=1e-6)
+    np.testing.assert_allclose(cmp["upper_db"][used], [b[f"{key}_upper_db"] for b in j["bands"]], atol=1e-6)
+    np.testing.assert_allclose(cmp["rms_db_error"], j["rms_db_error"], rtol=1e-9)
+
+
+def test_report_and_plot_state_the_same_figures(beam, tmp_path):
+    j = engine(beam, "--measured-averages", 25)
+    out = tmp_path / "r.html"
+    r = post("report", beam["model"], "--measurement", beam["csv"], "--column", "level", "--measured-averages", 25,
+             "--out", out)
+    assert r.returncode == 0, r.stderr
+    page = out.read_text()
+    assert f"{j['inside']} of {j['judged']} bands" in page and "prediction interval" in page
+    assert "sensor sensor_mean" in page
+    png = tmp_path / "p.png"
+    r = post("psd", beam["model"], "--bands", "--measurement", beam["csv"], "--column", "level",
+             "--measured-averages", 25, "--out", png)
+    assert r.returncode == 0, r.stderr
+    assert is_png_with_content(png)
+    r = post("report", beam["model"], "--measurement", beam["csv"], "--column", "level", "--measured-averages", 0,
+             "--out", out)
+    assert r.returncode == 64 and "--measured-averages 0" in r.stderr

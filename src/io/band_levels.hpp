@@ -1,0 +1,29 @@
+#pragma once
+// One row (a sensor or the sensor mean) of a result's third-octave bands, as `rollspec compare`
+// reads it: levels, the interval of the simulated mean, and the realisations' scatter of their
+// band averages, from which a measurement's prediction interval follows (kernels/spectral D-22).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "src/io/hdf5_file.hpp"
+
+namespace rollspec::io {
+
+struct BandLevels {
+  std::string sensor;                       // the row's name in /bands/sensor
+  std::vector<double> nominal, lower, upper;  // Hz
+  std::vector<double> level_db, ci_lower_db, ci_upper_db;
+  std::vector<double> std_dev;              // of one realisation's band average, PSD unit
+  std::vector<double> log_std;              // of its natural log
+  std::uint64_t realisations = 0;
+  double confidence = 0.95;
+  std::string interval_method;
+};
+
+// `sensor`: a name from /bands/sensor or an index; empty picks "sensor_mean" when the result has
+// it, else the first row. Refuses (exit 64) an unknown sensor, naming the ones there are, and
+// (exit 65) datasets of the wrong shape or with NaN.
+BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor);
+
+}  // namespace rollspec::io

@@ -1,0 +1,62 @@
+#include "src/scenes/psd_rows.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <utility>
+
+namespace rollspec::scenes {
+
+PsdRows::PsdRows(std::vector<std::string> sensors, bool sensor_mean, std::vector<double> frequency, double band_min,
+                 double band_max, std::size_t extras)
+    : sensors_(sensors.size()),
+      names_(std::move(sensors)),
+      frequency_(std::move(frequency)),
+      df_(frequency_.size() > 1 ? frequency_[1] - frequency_[0] : 1.0),
+      band_min_(band_min),
+      band_max_(band_max),
+      bands_(io::result_bands(frequency_, band_min, band_max)),
+      extras_(extras) {
+  if (sensor_mean && sensors_ > 1) names_.emplace_back("sensor_mean");
+}
+
+void PsdRows::finish(double* values) const {
+  const std::size_t nf = n_freq(), nb = bands_.size();
+  if (rows() > sensors_)
+    for (std::size_t k = 0; k < nf; ++k) {
+      double m = 0.0;
+      for (std::size_t s = 0; s < sensors_; ++s) m += values[s * nf + k];
+      values[sensors_ * nf + k] = m / static_cast<double>(sensors_);
+    }
+  double* band = values + rows() * nf;
+  for (std::size_t r = 0; r < rows(); ++r)
+    for (std::size_t b = 0; b < nb; ++b)
+      band[r * nb + b] = spectral::band_average(values + r * nf, nf, df_, bands_[b].lower, bands_[b].upper);
+  // ln x for the lognormal law. A value without power (exactly 0, only for a signal without any)
+  // takes ln DBL_MIN: finite, as the driver requires, and so far below the rest that the lognormal
+  // law there widens the interval rather than pretend to fit.
+  const std::size_t n = spectra();
+  for (std::size_t i = 0; i < n; ++i) values[n + i] = std::log(std::max(values[i], DBL_MIN));
+}
+
+io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
+  io::PsdEnsemble e;
+  e.frequency = frequency_;
+  e.sensors = names_;
+  e.realisations = sums.count;
+  e.band_min = band_min_;
+  e.band_max = band_max_;
+  const std::size_t n = rows() * n_freq(), nb = rows() * bands_.size(), logs = spectra();
+  auto moments = [&](std::size_t i) {
+    return spectral::Scatter{sums.mean(i), sums.std_dev(i), sums.mean(logs + i), sums.std_dev(logs + i)};
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    e.mean.push_back(sums.mean(i));
+    e.std_dev.push_back(sums.std_dev(i));
+    e.scatter.push_back(moments(i));
+  }
+  for (std::size_t i = 0; i < nb; ++i) e.band_scatter.push_back(moments(n + i));
+  return e;
+}
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,52 @@
+#pragma once
+// One realisation's result vector for a scene that writes /psd and /bands:
+//   [PSD rows: rows x nf][band values: rows x nb][ln of both: rows x (nf + nb)][the scene's extras]
+// Rows are the sensors, then their mean when the study asks for it. A row's band values are its
+// third-octave band averages (D-17); their scatter over realisations gives the band intervals
+// (D-21), which the band average of the mean PSD alone cannot. The logarithms give the moments of
+// ln x that the lognormal law of D-21b needs (the driver sums values and their squares).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "kernels/spectral/third_octave_bands.hpp"
+#include "src/ensemble/ensemble_driver.hpp"
+#include "src/io/psd_result.hpp"
+
+namespace rollspec::scenes {
+
+class PsdRows {
+ public:
+  // `sensor_mean` adds a row "sensor_mean" when there is more than one sensor.
+  PsdRows(std::vector<std::string> sensors, bool sensor_mean, std::vector<double> frequency, double band_min,
+          double band_max, std::size_t extras);
+
+  std::size_t rows() const { return names_.size(); }
+  std::size_t sensors() const { return sensors_; }
+  std::size_t n_freq() const { return frequency_.size(); }
+  std::size_t size() const { return 2 * spectra() + extras_; }
+
+  double* row(double* values, std::size_t r) const { return values + r * n_freq(); }
+  std::size_t extra_index(std::size_t i) const { return 2 * spectra() + i; }
+  double* extras(double* values) const { return values + extra_index(0); }
+
+  // After the sensor rows are written: fills the sensor-mean row, every row's band values and the
+  // logarithms of all of them.
+  void finish(double* values) const;
+
+  // The ensemble of the rows (means, scatter of bins and bands) for io::write_psd_result; the
+  // caller sets units, quantity and confidence.
+  io::PsdEnsemble ensemble(const ensemble::EnsembleSums& sums) const;
+
+ private:
+  std::size_t spectra() const { return rows() * (n_freq() + bands_.size()); }  // PSD and band values
+
+  std::size_t sensors_;
+  std::vector<std::string> names_;
+  std::vector<double> frequency_;
+  double df_, band_min_, band_max_;
+  std::vector<spectral::Band> bands_;
+  std::size_t extras_;
+};
+
+}  // namespace rollspec::scenes
