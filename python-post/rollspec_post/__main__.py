@@ -35,6 +35,8 @@ def build_parser():
     r.add_argument("--fmin", type=float, default=0.0, help="lowest band edge compared (Hz)")
     r.add_argument("--fmax", type=float, default=float("inf"), help="highest band edge compared (Hz)")
     r.add_argument("--out", "-o", required=True, help="output HTML")
+    p.add_argument("--fmin", type=float, default=0.0, help="lowest band edge in the ΔL panel (Hz)")
+    p.add_argument("--fmax", type=float, default=float("inf"), help="highest band edge in the ΔL panel (Hz)")
     for q in (p, r):
         q.add_argument("--column", help="PSD column of the measurement CSV (default: psd)")
         q.add_argument("--measured-averages", type=float, metavar="M",
@@ -48,7 +50,8 @@ def run(args):
         raise PostError(f"{args.out}: cannot create (no directory {out_dir})", EX_CANTCREAT)
     if args.command == "psd":
         from .psd_plot import plot_psd
-        plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor, args.column, args.measured_averages)
+        plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor, args.column, args.measured_averages,
+                 args.fmin, args.fmax)
     elif args.command == "texture":
         from .texture_plot import plot_texture
         plot_texture(args.texture_file, args.out)

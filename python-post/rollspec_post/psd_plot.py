@@ -13,7 +13,8 @@ def db(x):
         return 10.0 * np.log10(x)
 
 
-def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None):
+def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None,
+             fmin=0.0, fmax=np.inf):
     """`sensor` (name or index) limits the plot to one row; the ΔL panel uses the row `rollspec
     compare` would (that one, else sensor_mean if present, else the first) and says which."""
     with open_rollspec(result) as f:
@@ -50,7 +51,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     if rows == 2:
-        cmp = compare_bands(meas, band_data, sensor, measured_averages=measured_averages)
+        cmp = compare_bands(meas, band_data, sensor, fmin, fmax, measured_averages)
         ok = cmp["used"]
         ax2 = fig.add_subplot(2, 1, 2)
         # ΔL bars coloured by the answer to compare's question; grey: the ΔL the interval allows
@@ -70,4 +71,4 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
         ax2.set_xlabel("third-octave band (Hz)")
         ax2.grid(True, axis="y", alpha=0.3)
     FigureCanvasAgg(fig).print_png(out)
-    return out
+    return cmp if rows == 2 else None

@@ -140,7 +140,8 @@ def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.i
     if cmp is not None and cmp["count"] == 0:
         raise PostError(f"{measurement}: covers none of the result's bands inside [{fmin:g}, {fmax:g}] Hz",
                         EX_DATAERR)
-    psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurement, True, sensor, column, measured_averages))
+    psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurement, True, sensor, column, measured_averages,
+                                                        fmin, fmax))
     prov = dict(r["provenance"], result_file=os.path.basename(result))
     if measurement:
         prov["measurement_file"] = os.path.basename(measurement)

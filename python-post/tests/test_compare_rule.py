@@ -1,5 +1,6 @@
 """python-post's band comparison is `rollspec compare`'s: same default sensor, same intervals, same
 question, same numbers (kernels/spectral D-21, D-22), in the ΔL panel and the report."""
+import io
 import json
 import subprocess
 
@@ -62,6 +63,11 @@ def test_report_and_plot_state_the_same_figures(beam, tmp_path):
     page = out.read_text()
     assert f"{j['inside']} of {j['judged']} bands" in page and "prediction interval" in page
     assert "sensor sensor_mean" in page
+    # The ΔL panel (embedded in the report) states the same count for the same band range.
+    from rollspec_post.psd_plot import plot_psd
+    cmp = plot_psd(beam["model"], io.BytesIO(), beam["csv"], True, None, "level", 25, 100.0, 5000.0)
+    j2 = engine(beam, "--measured-averages", 25, "--fmin", 100, "--fmax", 5000)
+    assert (cmp["sensor"], cmp["inside_count"], cmp["judged"]) == (j2["sensor"], j2["inside"], j2["judged"])
     png = tmp_path / "p.png"
     r = post("psd", beam["model"], "--bands", "--measurement", beam["csv"], "--column", "level",
              "--measured-averages", 25, "--out", png)

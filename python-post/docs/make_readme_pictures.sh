@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Regenerates every picture the README shows, from the current Release build, so none can go stale:
+#   cmake --build --preset release && bash python-post/docs/make_readme_pictures.sh
+# About 2-3 minutes on 2 cores (the rolling-pipe study is most of it). Needs /usr/bin/chromium for
+# the report screenshot (.ci/setup installs it).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+bin=build/release/rollspec
+docs=python-post/docs
+post() { PYTHONPATH=python-post /usr/bin/python3 -m rollspec_post "$@"; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# Random-oscillator verification study: mean of 200, 95 % interval, exact answer, bands.
+"$bin" run studies/random-oscillator.ini --out "$work/ro.h5" --quiet
+post psd "$work/ro.h5" --bands --out "$docs/random-oscillator-psd.png"
+
+# Seed 002 rig at 1 m/s: the mean of the 5 sensors beside the frequency-domain solution.
+"$bin" run studies/seed002-rig-1ms.ini --out "$work/rig.h5" --quiet
+post psd "$work/rig.h5" --bands --sensor sensor_mean --out "$docs/seed002-rig-psd.png"
+
+# Report of the rig against a "measurement": the sensor mean of 25 other rolls of the same model,
+# judged by the prediction interval for a 25-roll measurement.
+"$bin" run studies/seed002-rig-1ms.ini --out "$work/rig-measured.h5" --quiet --set study.seed=2026
+/usr/bin/python3 - "$work/rig-measured.h5" "$work/measured.csv" <<'PY'
+import sys, h5py, numpy as np
+with h5py.File(sys.argv[1]) as f:
+    freq, psd = f["/psd/frequency"][1:], f["/psd/mean"][-1, 1:]
+np.savetxt(sys.argv[2], np.c_[freq, psd], delimiter=",", header="frequency_hz,psd", comments="", fmt="%.17g")
+PY
+post report "$work/rig.h5" --measurement "$work/measured.csv" --measured-averages 25 --fmin 100 --fmax 5000 \
+  --out "$work/report.html"
+/usr/bin/chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking \
+  --disable-component-update --disable-sync --user-data-dir="$work/profile" --hide-scrollbars \
+  --screenshot="$docs/report-screenshot.png" --window-size=1200,2000 "file://$work/report.html" 2>/dev/null
+
+# Seed 000 example 4.4, the flying beam.
+"$bin" run studies/seed000-flying-beam.ini --out "$work/flying.h5" --quiet
+post trajectory "$work/flying.h5" --out "$docs/flying-beam-trajectory.png"
+
+# The rolling-pipe study, 32 realisations.
+"$bin" run studies/rolling-pipe.ini --out "$work/pipe.h5" --quiet
+post psd "$work/pipe.h5" --bands --out "$docs/rolling-pipe-psd.png"
+
+# Line textures and surfaces of the texture demo.
+"$bin" texture studies/texture-demo.ini --out "$work/texture.h5"
+post texture "$work/texture.h5" --out "$docs/texture-demo.png"
+
+# Work-precision of the ball-on-beam integrators, from the table bench/beam/bench_beam wrote.
+post bench "$docs/work-precision.csv" --out "$docs/work-precision.png"
