@@ -16,17 +16,14 @@
 #include "src/io/band_levels.hpp"
 #include "src/io/csv_table.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
 
 namespace rollspec::cli {
 
 namespace {
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+using io::number_text;
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";
@@ -65,9 +62,9 @@ Measurement read_measurement(const std::string& path, const std::string& column)
   const std::string name = column.empty() ? "psd" : column;
   for (std::size_t i = 0; i < out.frequency.size(); ++i)
     if (out.frequency[i] < 0.0)
-      throw data_error(m.where(i) + ": frequency_hz value " + number(out.frequency[i]) + " is negative; allowed: >= 0 (one-sided PSD)");
+      throw data_error(m.where(i) + ": frequency_hz value " + number_text(out.frequency[i]) + " is negative; allowed: >= 0 (one-sided PSD)");
   for (std::size_t i = 0; i < out.psd.size(); ++i)
-    if (out.psd[i] < 0.0) throw data_error(m.where(i) + ": " + name + " value " + number(out.psd[i]) + " is negative; allowed: >= 0");
+    if (out.psd[i] < 0.0) throw data_error(m.where(i) + ": " + name + " value " + number_text(out.psd[i]) + " is negative; allowed: >= 0");
   return out;
 }
 
@@ -104,11 +101,11 @@ int compare_command(const Args& args) {
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   if (format != "table" && format != "csv" && format != "json")
     throw usage_error("--format " + format.substr(0, 200) + ": allowed: table, csv or json");
-  if (!(fmin >= 0.0) || std::isinf(fmin)) throw usage_error("--fmin " + number(fmin) + ": allowed: a finite frequency >= 0 Hz");
-  if (!(fmax > fmin)) throw usage_error("--fmax " + number(fmax) + ": allowed: a frequency above --fmin (" + number(fmin) + " Hz)");
+  if (!(fmin >= 0.0) || std::isinf(fmin)) throw usage_error("--fmin " + number_text(fmin) + ": allowed: a finite frequency >= 0 Hz");
+  if (!(fmax > fmin)) throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) + " Hz)");
   const bool predict = vm.count("measured-averages") > 0;
   if (predict && !(records >= 1.0 && std::isfinite(records)))
-    throw usage_error("--measured-averages " + number(records) + ": allowed: a finite count >= 1 of independent records");
+    throw usage_error("--measured-averages " + number_text(records) + ": allowed: a finite count >= 1 of independent records");
 
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
@@ -119,7 +116,7 @@ int compare_command(const Args& args) {
   const std::string question =
       !has_interval ? "none: " + b.interval_method
       : predict     ? "is the measured level inside the " + std::to_string(pct) +
-                      " % prediction interval of a measurement averaged over M = " + number(records) + " independent records?"
+                      " % prediction interval of a measurement averaged over M = " + number_text(records) + " independent records?"
                     : "is the measured level inside the " + std::to_string(pct) +
                       " % interval of the simulated mean? (it ignores the measurement's own scatter; give "
                       "--measured-averages M to ask whether a measurement of M records agrees with the model)";
@@ -130,8 +127,8 @@ int compare_command(const Args& args) {
     if (m.frequency.size() < 2 || m.frequency.front() > b.lower[k] || m.frequency.back() < b.upper[k]) continue;
     const double meas = spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
     if (!std::isfinite(meas))
-      throw data_error(measurement + ": the measured PSD averaged over the band " + number(b.lower[k]) + " .. " +
-                       number(b.upper[k]) + " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
+      throw data_error(measurement + ": the measured PSD averaged over the band " + number_text(b.lower[k]) + " .. " +
+                       number_text(b.upper[k]) + " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
     if (meas <= 0.0) continue;
     BandRow row{};
     row.centre = b.nominal[k];
@@ -202,7 +199,7 @@ int compare_command(const Args& args) {
     const bool in = predict ? x.inside_prediction : x.inside_ci;
     if (format == "csv") {
       auto cell = [](double v) { return std::isfinite(v) ? json_number(v) : std::isnan(v) ? std::string() : v > 0 ? "inf" : "-inf"; };
-      text += number(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," + cell(x.ci_lower) +
+      text += number_text(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," + cell(x.ci_lower) +
               "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
               (has_interval ? (in ? "1" : "0") : "") + "\n";
     } else {

@@ -4,16 +4,11 @@
 #include <cstdio>
 
 #include "src/error.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::io {
 
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 std::string join(const std::vector<std::string>& names) {
   std::string s;
@@ -86,8 +81,8 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
   for (std::size_t k = 0; k < nb; ++k)
     if (!(std::isfinite(b.lower[k]) && std::isfinite(b.upper[k]) && std::isfinite(b.nominal[k]) && b.lower[k] > 0.0 &&
           b.lower[k] < b.upper[k]))
-      throw data_error(file + ": band " + std::to_string(k) + " has edges " + number(b.lower[k]) + " .. " + number(b.upper[k]) +
-                       " Hz and nominal centre " + number(b.nominal[k]) +
+      throw data_error(file + ": band " + std::to_string(k) + " has edges " + number_text(b.lower[k]) + " .. " + number_text(b.upper[k]) +
+                       " Hz and nominal centre " + number_text(b.nominal[k]) +
                        " Hz; allowed: finite, 0 < lower < upper (/bands/lower_frequency, upper_frequency, nominal_frequency)");
   return b;
 }
