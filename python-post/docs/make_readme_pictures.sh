@@ -40,7 +40,7 @@ post trajectory "$work/flying.h5" --out "$docs/flying-beam-trajectory.png"
 
 # The rolling-pipe study, 32 realisations.
 "$bin" run studies/rolling-pipe.ini --out "$work/pipe.h5" --quiet
-post psd "$work/pipe.h5" --bands --out "$docs/rolling-pipe-psd.png"
+post psd "$work/pipe.h5" --bands --sensors all --xscale log --out "$docs/rolling-pipe-psd.png"
 
 # Line textures and surfaces of the texture demo.
 "$bin" texture studies/texture-demo.ini --out "$work/texture.h5"

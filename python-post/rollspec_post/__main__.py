@@ -14,8 +14,11 @@ def build_parser():
     p.add_argument("result", help="rollspec result file (HDF5)")
     p.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column")
     p.add_argument("--bands", action="store_true", help="draw third-octave band levels (and ΔL with a measurement)")
-    p.add_argument("--sensor", help="plot only this sensor (name or index)")
-    p.add_argument("--out", "-o", required=True, help="output PNG")
+    p.add_argument("--sensor", help="the row drawn and compared: name or index (default: sensor_mean if present, else 0)")
+    p.add_argument("--sensors", choices=("one", "all"), default="one", help="all: every sensor as thin grey lines too")
+    p.add_argument("--xscale", choices=("linear", "log"), default="linear", help="frequency axis (default linear)")
+    p.add_argument("--dpi", type=float, default=150, help="resolution of a PNG (default 150)")
+    p.add_argument("--out", "-o", required=True, help="output picture: .png, .pdf or .svg")
     t = sub.add_parser("texture", help="line texture, surface image, target vs realised PSD")
     t.add_argument("texture_file", help="file written by rollspec texture")
     t.add_argument("--out", "-o", required=True, help="output PNG")
@@ -35,8 +38,9 @@ def build_parser():
     r.add_argument("--fmin", type=float, default=0.0, help="lowest band edge compared (Hz)")
     r.add_argument("--fmax", type=float, default=float("inf"), help="highest band edge compared (Hz)")
     r.add_argument("--out", "-o", required=True, help="output HTML")
-    p.add_argument("--fmin", type=float, default=0.0, help="lowest band edge in the ΔL panel (Hz)")
-    p.add_argument("--fmax", type=float, default=float("inf"), help="highest band edge in the ΔL panel (Hz)")
+    p.add_argument("--fmin", type=float, help="lowest frequency drawn and compared (Hz; default: the study's band range, "
+                   "from 0 on a linear axis)")
+    p.add_argument("--fmax", type=float, help="highest frequency drawn and compared (Hz; default: the study's band range)")
     for q in (p, r):
         q.add_argument("--column", help="PSD column of the measurement CSV (default: psd)")
         q.add_argument("--measured-averages", type=float, metavar="M",
@@ -51,7 +55,7 @@ def run(args):
     if args.command == "psd":
         from .psd_plot import plot_psd
         plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor, args.column, args.measured_averages,
-                 args.fmin, args.fmax)
+                 args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi)
     elif args.command == "texture":
         from .texture_plot import plot_texture
         plot_texture(args.texture_file, args.out)

@@ -1,11 +1,17 @@
-"""`psd`: acceleration PSD in dB re 1 (m/s^2)^2/Hz with its confidence band, an exact reference or
-a measurement overlaid, and (with --bands) the third-octave levels with a per-band difference panel."""
+"""`psd`: the acceleration PSD of one row of a result (by default the sensor mean) with its interval,
+the reference dashed, a measurement solid black, and (with --bands) the third-octave levels and a
+ΔL panel that judges the measurement by the rule of `rollspec compare`. Made for a paper: level in
+dB re 1 (m/s²)²/Hz (the seeds' "dB re 1 m/s²"), a linear frequency axis over the study's band range
+by default, a legend of at most six entries above the axes, PNG, PDF or SVG by the file name."""
+import os
+
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
-from .result_file import open_rollspec, text_attr
+from .result_file import EX_USAGE, PostError, open_rollspec, text_attr
+
+FORMATS = {".png": "png", ".pdf": "pdf", ".svg": "svg"}
 
 
 def db(x):
@@ -13,10 +19,30 @@ def db(x):
         return 10.0 * np.log10(x)
 
 
+def output_format(out):
+    """png, pdf or svg from the file name; PNG for a buffer (the report embeds one)."""
+    if not isinstance(out, (str, os.PathLike)):
+        return "png"
+    ext = os.path.splitext(os.fspath(out))[1].lower()
+    if ext not in FORMATS:
+        raise PostError(f"{out}: unknown picture type {ext or '(none)'!r}; allowed: .png, .pdf, .svg", EX_USAGE)
+    return FORMATS[ext]
+
+
+def short(label):
+    """A legend label without its parenthesised explanation."""
+    return label.split(" (")[0]
+
+
 def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None,
-             fmin=0.0, fmax=np.inf):
-    """`sensor` (name or index) limits the plot to one row; the ΔL panel uses the row `rollspec
-    compare` would (that one, else sensor_mean if present, else the first) and says which."""
+             fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150):
+    """`sensor` (name or index) picks the row drawn and compared (default: the row `rollspec compare`
+    uses, sensor_mean when present). `sensors_all` adds every sensor as a thin grey line. fmin/fmax
+    bound the axis and the compared bands (default: the study's band range, from 0 Hz on a linear
+    axis). Returns {"legend": labels, "comparison": compare_bands(...) or None}."""
+    if xscale not in ("linear", "log"):
+        raise PostError(f"--xscale {xscale}: allowed: linear or log", EX_USAGE)
+    fmt = output_format(out)
     with open_rollspec(result) as f:
         freq = f["/psd/frequency"][:]
         mean, lo, hi = f["/psd/mean"][:], f["/psd/ci_lower"][:], f["/psd/ci_upper"][:]
@@ -28,47 +54,65 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
         level = float(f["/psd"].attrs["confidence_level"])
         scene = text_attr(f, "scene", "")
         band_data = read_bands(f)
-    sensors = range(len(names)) if sensor is None else [sensor_row(names, sensor)]
+    row = sensor_row(names, sensor)
+    have_bands = band_data["lower_frequency"].size > 0
+    if fmin is None:
+        fmin = band_data["lower_frequency"][0] if (xscale == "log" and have_bands) else (freq[1] if xscale == "log" else 0.0)
+    if fmax is None:
+        fmax = band_data["upper_frequency"][-1] if have_bands else freq[-1]
+    if not (np.isfinite(fmin) and np.isfinite(fmax) and 0 <= fmin < fmax):
+        raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: 0 <= fmin < fmax, both finite", EX_USAGE)
     meas = read_measurement(measurement, column) if measurement else None
-    fig = Figure(figsize=(9, 7 if (bands and meas is not None) else 5.5), constrained_layout=True)
-    rows = 2 if (bands and meas is not None) else 1
-    ax = fig.add_subplot(rows, 1, 1)
-    sel = freq > 0
-    for s in sensors:
-        line, = ax.semilogx(freq[sel], db(mean[s, sel]), lw=1.0, label=f"{names[s]}: mean of {k}")
-        ax.fill_between(freq[sel], db(lo[s, sel]), db(hi[s, sel]), color=line.get_color(), alpha=0.25, lw=0,
-                        label=f"{100 * level:.0f} % interval")
-        if ref is not None:
-            ax.semilogx(freq[sel], db(ref[s, sel]), "k--", lw=0.8, label=ref_label)
-        if bands:
-            ax.hlines(band_data["level_db"][s], band_data["lower_frequency"], band_data["upper_frequency"],
-                      color=line.get_color(), lw=2.5, alpha=0.8, label="third-octave bands")
+    delta_panel = bands and meas is not None
+    fig = Figure(figsize=(7.5, 6.6 if delta_panel else 4.6), layout="constrained")
+    ax = fig.add_subplot(2, 1, 1) if delta_panel else fig.add_subplot(1, 1, 1)
+    sel = (freq > 0) & (freq >= fmin) & (freq <= fmax)
+    if sensors_all:
+        for s in range(len(names)):
+            if s != row:
+                ax.plot(freq[sel], db(mean[s, sel]), color="0.6", lw=0.5,
+                        label="individual sensors" if s == (1 if row == 0 else 0) else None)
+    ax.fill_between(freq[sel], db(lo[row, sel]), db(hi[row, sel]), color="C0", alpha=0.25, lw=0,
+                    label=f"{100 * level:.0f} % interval of the mean")
+    ax.plot(freq[sel], db(mean[row, sel]), color="C0", lw=1.0, label=f"{names[row]}, mean of {k}")
+    if ref is not None:
+        ax.plot(freq[sel], db(ref[row, sel]), "--", color="0.25", lw=0.8, label=short(ref_label))
     if meas is not None:
-        ax.semilogx(meas[0], db(meas[1]), color="C3", lw=1.0, label="measurement")
+        m = (meas[0] > 0) & (meas[0] >= fmin) & (meas[0] <= fmax)
+        ax.plot(meas[0][m], db(meas[1][m]), color="k", lw=1.0, label="measurement")
+    if bands and have_bands:
+        inb = (band_data["lower_frequency"] >= fmin) & (band_data["upper_frequency"] <= fmax)
+        ax.hlines(band_data["level_db"][row][inb], band_data["lower_frequency"][inb], band_data["upper_frequency"][inb],
+                  color="C1", lw=2.0, label="third-octave bands")
+    ax.set_xscale(xscale)
+    ax.set_xlim(fmin if xscale == "linear" else max(fmin, freq[1]), fmax)
     ax.set_xlabel("frequency (Hz)")
-    ax.set_ylabel("PSD (dB re 1 " + str(units) + ")")
-    ax.set_title(f"{scene}: acceleration PSD" if scene else "acceleration PSD")
+    ax.set_ylabel(f"PSD level (dB re 1 {str(units).replace('^2', '²')})")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    if rows == 2:
-        cmp = compare_bands(meas, band_data, sensor, fmin, fmax, measured_averages)
+    # Above the axes, so it never covers data.
+    labels = ax.get_legend_handles_labels()[1]
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.01, 1.0, 0.1), mode="expand", ncol=3, fontsize=8,
+              frameon=False, borderaxespad=0.0)
+    cmp = None
+    if delta_panel:
+        cmp = compare_bands(meas, band_data, row, fmin, fmax, measured_averages)
         ok = cmp["used"]
         ax2 = fig.add_subplot(2, 1, 2)
-        # ΔL bars coloured by the answer to compare's question; grey: the ΔL the interval allows
         x = np.arange(ok.sum())
-        level = band_data["level_db"][cmp["row"]][ok]
-        if cmp["judged"]:
-            ax2.bar(x, cmp["upper_db"][ok] - cmp["lower_db"][ok], bottom=level - cmp["upper_db"][ok],
-                    width=0.8, color="0.85", label="ΔL the interval allows")
+        lvl = band_data["level_db"][row][ok]
+        if cmp["judged"]:  # grey: the ΔL the interval allows; bars coloured by compare's answer
+            ax2.bar(x, cmp["upper_db"][ok] - cmp["lower_db"][ok], bottom=lvl - cmp["upper_db"][ok], width=0.8,
+                    color="0.85")
         ax2.bar(x, cmp["delta_db"][ok], width=0.4, color=np.where(cmp["inside"][ok], "C0", "C3"))
         ax2.set_xticks(x)
         ax2.set_xticklabels([f"{v:g}" for v in band_data["nominal_frequency"][ok]], rotation=90, fontsize=7)
         ax2.axhline(0, color="k", lw=0.8)
         ax2.set_ylabel("ΔL sim − meas (dB)")
-        ax2.set_title(f"{cmp['sensor']}: rms {cmp['rms_db_error']:.2f} dB; inside {cmp['inside_count']}/"
-                      f"{cmp['judged']} bands (blue: inside, red: outside)\n{cmp['question']}"
-                      if cmp["count"] else "the measurement covers none of the bands", fontsize=9)
+        kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the mean"
+        ax2.set_title(f"rms {cmp['rms_db_error']:.2f} dB; inside the {kind} (grey) in {cmp['inside_count']}/"
+                      f"{cmp['judged']} bands (blue: inside, red: outside)"
+                      if cmp["count"] else "the measurement covers none of the bands", fontsize=8)
         ax2.set_xlabel("third-octave band (Hz)")
         ax2.grid(True, axis="y", alpha=0.3)
-    FigureCanvasAgg(fig).print_png(out)
-    return cmp if rows == 2 else None
+    fig.savefig(out, format=fmt, dpi=dpi, metadata=None if fmt == "png" else {"Creator": "rollspec_post"})
+    return {"legend": labels, "comparison": cmp}

@@ -141,7 +141,8 @@ def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.i
         raise PostError(f"{measurement}: covers none of the result's bands inside [{fmin:g}, {fmax:g}] Hz",
                         EX_DATAERR)
     psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurement, True, sensor, column, measured_averages,
-                                                        fmin, fmax))
+                                                        fmin if fmin > 0 else None,
+                                                        fmax if np.isfinite(fmax) else None))
     prov = dict(r["provenance"], result_file=os.path.basename(result))
     if measurement:
         prov["measurement_file"] = os.path.basename(measurement)

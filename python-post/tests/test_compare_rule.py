@@ -65,7 +65,7 @@ def test_report_and_plot_state_the_same_figures(beam, tmp_path):
     assert "sensor sensor_mean" in page
     # The ΔL panel (embedded in the report) states the same count for the same band range.
     from rollspec_post.psd_plot import plot_psd
-    cmp = plot_psd(beam["model"], io.BytesIO(), beam["csv"], True, None, "level", 25, 100.0, 5000.0)
+    cmp = plot_psd(beam["model"], io.BytesIO(), beam["csv"], True, None, "level", 25, 100.0, 5000.0)["comparison"]
     j2 = engine(beam, "--measured-averages", 25, "--fmin", 100, "--fmax", 5000)
     assert (cmp["sensor"], cmp["inside_count"], cmp["judged"]) == (j2["sensor"], j2["inside"], j2["judged"])
     png = tmp_path / "p.png"
