@@ -14,7 +14,8 @@ from .psd_plot import plot_psd
 from .result_file import EX_DATAERR, PostError, open_rollspec, read, scalar, text_attr
 from . import __version__
 
-PROVENANCE = ("filetype", "schema_version", "rollspec_version", "git_sha", "seed", "rng", "library_versions", "scene")
+PROVENANCE = ("filetype", "schema_version", "rollspec_version", "git_sha", "seed", "rng", "library_versions", "scene",
+              "created", "host", "command_line")
 
 STYLE = """
 body { font-family: "DejaVu Sans", Arial, sans-serif; margin: 0; background: #f4f5f7; color: #1d2330; }

@@ -19,6 +19,7 @@
 #include "src/cli/commands.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
+#include "src/io/provenance.hpp"
 
 namespace {
 
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
     return EX_USAGE;
   }
   const ensemble::MpiSession mpi(&argc, &argv);
+  io::record_command_line(argc, argv);
   try {
     return it->second(cli::Args(argv + 2, argv + argc));
   } catch (const UserError& e) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "src/error.hpp"
+#include "src/io/free_dimensions.hpp"
 
 namespace rollspec::io {
 
@@ -130,6 +131,7 @@ void Hdf5Writer::attribute(const std::string& object, const std::string& name, s
 }
 
 void Hdf5Writer::commit() {
+  if (!name_free_dimensions(file_.get())) throw cannot_create("cannot name the dimensions of the datasets in " + temp_path_);
   if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) throw cannot_create("cannot flush " + temp_path_);
   file_ = Hdf5Handle();
   std::error_code ec;

@@ -5,6 +5,9 @@
 
 #include <Eigen/Core>
 #include <boost/version.hpp>
+#include <unistd.h>
+
+#include <ctime>
 #include <sstream>
 
 #include "src/error.hpp"
@@ -12,6 +15,37 @@
 #include "src/version.hpp"
 
 namespace rollspec::io {
+
+namespace {
+std::string g_command_line;
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  return ::gethostname(buf, sizeof buf - 1) == 0 ? std::string(buf) : std::string("unknown");
+}
+}  // namespace
+
+void record_command_line(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool plain = !a.empty() && a.find_first_not_of(
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./=:,+@%") == std::string::npos;
+    std::string quoted = "'";
+    for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    s += (i ? " " : "") + (plain ? a : quoted + "'");
+  }
+  g_command_line = s;
+}
 
 std::string library_versions() {
   unsigned maj = 0, min = 0, rel = 0;
@@ -33,6 +67,9 @@ void write_provenance(Hdf5Writer& w, const std::string& filetype, const std::str
   w.attribute("/", "study", study_text);
   w.attribute("/", "seed", static_cast<std::int64_t>(seed));
   w.attribute("/", "rng", std::string(kRngName));
+  w.attribute("/", "created", utc_now());
+  w.attribute("/", "host", host_name());
+  w.attribute("/", "command_line", g_command_line);
 }
 
 void check_filetype(const Hdf5Reader& r, const std::string& filetype, int schema_major) {

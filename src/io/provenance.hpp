@@ -17,6 +17,9 @@ constexpr const char* kRngName = "philox4x64-10";
 
 std::string library_versions();
 
+// The command line that made the files of this process, for their provenance (quoted as a shell would).
+void record_command_line(int argc, char** argv);
+
 void write_provenance(Hdf5Writer& w, const std::string& filetype, const std::string& schema_version,
                       const std::string& study_text, std::uint64_t seed);
 

@@ -105,6 +105,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
                         "/bands/degrees_of_freedom"}) {
     w.attach_scale(d, "/bands/sensor", 0);
     w.attach_scale(d, "/bands/centre_frequency", 1);
+    w.attribute(d, "coordinates", std::string("nominal_frequency"));  // CF: xarray shows the IEC label as a coordinate
   }
   if (K < spectral::kMinRealisationsForInterval)
     std::fprintf(stderr, "rollspec: note: confidence intervals: %s\n", interval_method(K).c_str());

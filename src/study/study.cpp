@@ -330,15 +330,20 @@ std::string Study::where(const std::string& k) const {
 void Study::refuse(const std::string& k, const std::string& why) const { throw config_error(where(k) + ": " + why); }
 
 std::string Study::canonical_text_without(const std::vector<std::string>& excluded) const {
+  // Sections in the order they first appear, each once with all its keys: valid INI for any reader
+  // (Python's configparser refuses a repeated section), though a scene adds keys to a common section.
+  std::vector<std::string> sections;
+  for (const auto& k : keys_)
+    if (std::find(sections.begin(), sections.end(), k.section) == sections.end()) sections.push_back(k.section);
   std::ostringstream s;
-  std::string section;
-  for (const auto& k : keys_) {
-    if (std::find(excluded.begin(), excluded.end(), k.full_name()) != excluded.end()) continue;
-    if (k.section != section) {
-      s << (section.empty() ? "" : "\n") << "[" << k.section << "]\n";
-      section = k.section;
+  for (const auto& section : sections) {
+    bool header = false;
+    for (const auto& k : keys_) {
+      if (k.section != section || std::find(excluded.begin(), excluded.end(), k.full_name()) != excluded.end()) continue;
+      if (!header) s << (s.tellp() > 0 ? "\n" : "") << "[" << section << "]\n";
+      header = true;
+      s << k.key << " = " << entry(k.full_name()).value << "\n";
     }
-    s << k.key << " = " << entry(k.full_name()).value << "\n";
   }
   return s.str();
 }
