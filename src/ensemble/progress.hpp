@@ -1,6 +1,7 @@
 #pragma once
-// Progress of a long loop on stderr: a bar with rate and ETA on a terminal, a log line every
-// few seconds otherwise, nothing when quiet. Safe to call from several threads.
+// Progress of a long loop on stderr: a bar with rate and ETA on a terminal (fitted to its width,
+// ended by a "took" line, its line closed if the loop is interrupted), a log line every few
+// seconds otherwise, nothing when quiet. Safe to call from several threads.
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -12,6 +13,9 @@ namespace rollspec::ensemble {
 class Progress {
  public:
   Progress(std::string label, std::uint64_t total, bool quiet, std::string prefix = "");
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
   void advance(std::uint64_t n = 1);
   void finish();
 
@@ -20,6 +24,7 @@ class Progress {
   std::string label_, prefix_;
   std::uint64_t total_;
   bool quiet_, tty_;
+  bool on_screen_ = false, finished_ = false;
   std::atomic<std::uint64_t> done_{0};
   std::chrono::steady_clock::time_point start_, last_;
   std::mutex mutex_;
