@@ -5,7 +5,8 @@ import os
 import h5py
 
 EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_CANTCREAT = 64, 65, 66, 73
-KNOWN_SCHEMA_MAJOR = {"rollspec-result": 2, "rollspec-texture": 1, "rollspec-stiffness-table": 1}
+KNOWN_SCHEMA_MAJOR = {"rollspec-result": 2, "rollspec-texture": 1, "rollspec-stiffness-table": 1,
+                      "rollspec-blocked-force": 1}
 
 
 class PostError(Exception):

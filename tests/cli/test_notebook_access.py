@@ -92,3 +92,23 @@ def test_bands_carry_the_nominal_frequency_as_a_coordinate(files):
         assert 1000.0 in b["level_db"].coords["nominal_frequency"].values
     with xr.open_dataset(files["ball_on_beam"], engine="h5netcdf", group="beam") as beam:
         assert beam["modal_frequency"].dims == ("modal_frequency_index",)
+
+
+@pytest.mark.parametrize("kind", ["oscillator", "texture", "stiffness", "blocked_force"])
+def test_open_result_gives_every_group(files, kind):
+    from rollspec_post import open_result
+    r = open_result(files[kind])
+    assert set(r) == {g.strip("/") or "/" for g in groups(files[kind])}
+    assert r["/"].attrs["filetype"].startswith("rollspec-")
+
+
+def test_run_from_python(tmp_path):
+    from rollspec_post import run as run_study
+    from rollspec_post.result_file import PostError
+    r = run_study(SOURCE / "studies" / "seed001-beam-s.ini", out=tmp_path / "r.h5", set={"study.realisations": 6})
+    level = r["bands"]["level_db"].sel(sensor="sensor_mean")
+    assert level.dims == ("centre_frequency",) and int(r["psd"].attrs["realisations"]) == 6
+    with pytest.raises(PostError) as e:
+        run_study(SOURCE / "studies" / "seed001-beam-s.ini", out=tmp_path / "x.h5", set={"study.realisations": -1})
+    assert e.value.exit_code == 78 and "realisations = -1" in str(e.value)
+    assert not (tmp_path / "x.h5").exists()

@@ -1,0 +1,55 @@
+"""Notebook access: `open_result` reads every group of a rollspec file as xarray Datasets, and
+`run` runs the engine from Python and opens what it wrote."""
+import os
+import pathlib
+import shutil
+import subprocess
+
+import h5py
+
+from .result_file import EX_NOINPUT, EX_USAGE, PostError, open_rollspec
+
+FILETYPES = ("rollspec-result", "rollspec-texture", "rollspec-stiffness-table", "rollspec-blocked-force")
+
+
+def open_result(path):
+    """{group: xarray.Dataset} for every group of a rollspec file ("/" holds the root attributes:
+    provenance and the resolved study). The data are loaded, the file is closed."""
+    import xarray as xr
+    with open_rollspec(path, FILETYPES) as f:
+        groups = ["/"]
+        f.visititems(lambda name, obj: groups.append("/" + name) if isinstance(obj, h5py.Group) else None)
+    out = {}
+    for g in groups:
+        with xr.open_dataset(path, engine="h5netcdf", group=g) as ds:
+            out[g.strip("/") or "/"] = ds.load()
+    return out
+
+
+def engine_binary():
+    """$ROLLSPEC_BIN, else `rollspec` on PATH, else this checkout's build/release/rollspec."""
+    if os.environ.get("ROLLSPEC_BIN"):
+        return os.environ["ROLLSPEC_BIN"]
+    found = shutil.which("rollspec")
+    if found:
+        return found
+    local = pathlib.Path(__file__).resolve().parents[2] / "build" / "release" / "rollspec"
+    if local.exists():
+        return str(local)
+    raise PostError("no rollspec binary: set ROLLSPEC_BIN, put rollspec on PATH or build this checkout", EX_NOINPUT)
+
+
+def run(study, out, set=None, quiet=True):  # noqa: A002 (the engine's own word for it)
+    """Runs `rollspec run STUDY --out OUT --set k=v ...` and returns open_result(OUT). A refused or
+    failed run raises PostError with the engine's message and exit code."""
+    args = [engine_binary(), "run", str(study), "--out", str(out)]
+    for key, value in (set or {}).items():
+        if "=" in str(key) or "\n" in f"{key}{value}":
+            raise PostError(f"set: key {key!r} = {value!r}: allowed: section.key and a one-line value", EX_USAGE)
+        args += ["--set", f"{key}={value}"]
+    if quiet:
+        args.append("--quiet")
+    r = subprocess.run(args, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise PostError(r.stderr.strip() or f"rollspec run exited {r.returncode}", r.returncode)
+    return open_result(out)
