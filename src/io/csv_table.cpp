@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "src/error.hpp"
+#include "src/io/input_file.hpp"
 
 namespace rollspec::io {
 
@@ -39,6 +40,7 @@ CsvTable read_csv(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw missing_input("cannot read '" + path + "': it is a directory; expected a CSV file");
+  require_regular_input(path, "CSV file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open '" + path + "'");
   CsvTable t;

@@ -465,7 +465,7 @@ class BallOnBeam final : public Scene {
     w.attribute("/ball", "speed", model_.traverse.speed);
 
     if (linearised_) write_linear_reference(w, e.frequency, e.sensors, K);
-    if (time_histories_) write_time_histories(w);
+    if (time_histories_) write_time_histories(w, sums.only);
   }
 
  private:
@@ -639,14 +639,15 @@ class BallOnBeam final : public Scene {
     }
   }
 
-  // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume.
-  void write_time_histories(io::Hdf5Writer& w) const {
+  // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume;
+  // with --only, the history of that one realisation.
+  void write_time_histories(io::Hdf5Writer& w, std::int64_t only) const {
     Workspace& ws = *workspaces_[0];
-    const std::size_t n = samples_, ns = model_.sensors.size(), nh = time_histories_;
+    const std::size_t n = samples_, ns = model_.sensors.size(), nh = only >= 0 ? 1 : time_histories_;
     std::vector<double> t(n), acc(nh * ns * n), force(nh * n), ball(nh * n), delta(nh * n);
     for (std::size_t j = 0; j < n; ++j) t[j] = static_cast<double>(j) / model_.sample_rate;
     for (std::size_t r = 0; r < nh; ++r) {
-      simulate(r, ws);
+      simulate(only >= 0 ? static_cast<std::uint64_t>(only) : r, ws);
       for (std::size_t s = 0; s < ns; ++s)
         std::copy(ws.result.sensor_acceleration[s].begin(), ws.result.sensor_acceleration[s].end(), acc.begin() + static_cast<std::ptrdiff_t>((r * ns + s) * n));
       std::copy(ws.result.contact_force.begin(), ws.result.contact_force.end(), force.begin() + static_cast<std::ptrdiff_t>(r * n));
@@ -662,6 +663,8 @@ class BallOnBeam final : public Scene {
     w.attach_scale("/time_history/sensor_acceleration", "/time_history/time", 2);
     for (const char* d : {"/time_history/contact_force", "/time_history/ball_acceleration", "/time_history/compression"})
       w.attach_scale(d, "/time_history/time", 1);
+    w.attribute("/time_history", "realisations",
+                only >= 0 ? std::to_string(only) : "0.." + std::to_string(time_histories_ - 1));
   }
 
   std::uint64_t seed_;

@@ -233,7 +233,12 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
     const auto eq = o.find('=');
     const auto dot = o.find('.');
     if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || dot + 1 == eq)
-      throw usage_error("--set " + o + ": expected section.key=value, e.g. --set study.realisations=100");
+      throw usage_error("--set " + clip(o) + ": expected section.key=value, e.g. --set study.realisations=100");
+    // A line break would inject lines into the resolved study stored in every output.
+    for (const char ch : o)
+      if ((static_cast<unsigned char>(ch) < 0x20 && ch != '\t') || ch == 0x7f)
+        throw usage_error("--set " + clip(o) + ": holds a line break or control character (byte " +
+                          std::to_string(static_cast<unsigned char>(ch)) + "); allowed: one line of text");
     sets.push_back({trim(o.substr(0, eq)), trim(o.substr(eq + 1))});
   }
 
@@ -344,5 +349,21 @@ std::string Study::canonical_text_without(const std::vector<std::string>& exclud
 }
 
 std::string Study::canonical_text() const { return canonical_text_without({}); }
+
+std::vector<std::string> Study::overrides() const {
+  std::vector<std::string> out;
+  for (const auto& k : keys_) {
+    const Entry& e = entry(k.full_name());
+    if (e.origin.line < 0) out.push_back(k.full_name() + "=" + e.value);
+  }
+  return out;
+}
+
+std::vector<std::string> Study::input_files() const {
+  std::vector<std::string> out = {file_};
+  for (const auto& k : keys_)
+    if (k.type == KeyType::path && entry(k.full_name()).value != "none") out.push_back(path(k.full_name()));
+  return out;
+}
 
 }  // namespace rollspec::study
