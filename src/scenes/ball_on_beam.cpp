@@ -1,6 +1,9 @@
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/study_welch.hpp"
 
+#include "kernels/beam/quadratic_hold_step.hpp"
+#include "kernels/integrators/exact_oscillator_step.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
@@ -223,6 +226,7 @@ class BallOnBeam final : public Scene {
     // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
     step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
     step_options_.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
+    check_step_coefficients(s);
     if (uses_table_) {
       study_ = &s;
       table_spec_ = stiffness::table_spec(s, radius, law.effective_modulus);
@@ -238,6 +242,30 @@ class BallOnBeam final : public Scene {
     welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, model_.sample_rate));
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
+  }
+
+  // The exact modal step of very high modes (omega h in the thousands) overflows double precision:
+  // every realisation would be non-finite. Refused here, before any work, with the largest mode
+  // count whose step is finite.
+  void check_step_coefficients(const Study& s) const {
+    if (dopri_) return;
+    const double h = 1.0 / (model_.sample_rate * static_cast<double>(step_options_.substeps));
+    const beam::ModalBeam& b = model_.beam;
+    for (int i = 0; i < b.modes(); ++i) {
+      const auto f = integrators::ExactOscillatorStep::make(b.omega(i), b.zeta(i), h);
+      bool ok = std::isfinite(f.a00) && std::isfinite(f.a01) && std::isfinite(f.a10) && std::isfinite(f.a11) &&
+                std::isfinite(f.b0) && std::isfinite(f.b1) && std::isfinite(f.c0) && std::isfinite(f.c1);
+      if (ok && step_options_.hold == beam::ForceHold::quadratic) {
+        const auto q = beam::QuadraticHoldStep::make(b.omega(i), b.zeta(i), h);
+        for (double v : {q.a00, q.a01, q.a10, q.a11, q.bm, q.b0, q.b1, q.cm, q.c0, q.c1}) ok = ok && std::isfinite(v);
+      }
+      if (ok) continue;
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
+                    b.modes(), i + 1, b.frequency(i), b.omega(i) * h);
+      s.refuse(s.integer("beam.modes") > 0 ? "beam.modes" : "beam.max_frequency",
+               std::string(buf) + "; allowed: at most " + std::to_string(i) + " modes at this step (or signal.integrator = dopri5)");
+    }
   }
 
   void prepare(bool quiet, bool rebuild) override {
