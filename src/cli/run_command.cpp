@@ -15,6 +15,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
+#include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -41,7 +42,8 @@ int run_command(const Args& args) {
                      "result file (default: the study's name with .h5, or -only-ID.h5 with --only, in the current directory)")(
       "resume", "finish an interrupted run from its checkpoint (with the checkpoint's settings)")(
       "restart", "discard the checkpoint of an unfinished run and start over")(
-      "force", "replace an existing --out file even if it is not a rollspec result")(
+      "force", "replace an existing --out file even if it is not a rollspec result, and run a study whose memory "
+               "estimate exceeds the available memory")(
       "only", po::value<long long>(), "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
       "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q", "no progress output");
   po::positional_options_description pos;
@@ -58,6 +60,8 @@ int run_command(const Args& args) {
   }
 
   study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
+  // Before any workspace, FFT plan or table is allocated (an allocation failure inside FFTW aborts).
+  scenes::check_memory(s, ensemble::ensemble_threads(), vm.count("force") > 0);
   if (out.empty())
     out = fs::path(study.file).stem().string() + (only >= 0 ? "-only-" + std::to_string(only) : std::string()) + ".h5";
   const fs::path out_dir = fs::absolute(out).parent_path();
@@ -71,6 +75,7 @@ int run_command(const Args& args) {
     throw usage_error("study " + study.file + " (scene " + s.scene() + ") is one deterministic run with no checkpoint; drop --resume/--restart");
   io::OutputTarget target{out, io::kResultFileType};
   target.force = vm.count("force") > 0;
+  target.clean_stale = ensemble::mpi_rank() == 0;
   target.inputs = s.input_files();
   for (const auto& p : texture_io::profile_files(s)) target.inputs.push_back(p);
   const std::string write_path = io::check_output_target(target);

@@ -14,6 +14,7 @@
 #include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
 #include "src/rng/philox_stream.hpp"
+#include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -65,7 +66,8 @@ int texture_command(const Args& args) {
   long long count = -1;
   opts.add_options()("out,o", po::value(&out), "texture file (default: the study's name with .h5)")(
       "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)")(
-      "force", "replace an existing --out file even if it is not a rollspec texture file");
+      "force", "replace an existing --out file even if it is not a rollspec texture file, and run a study whose "
+               "memory estimate exceeds the available memory");
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
   po::variables_map vm;
@@ -77,6 +79,12 @@ int texture_command(const Args& args) {
   if (s.scene() != "texture")
     s.refuse("study.scene", "rollspec texture needs a study of scene texture (this one is " + s.scene() + ")");
   if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
+  if (count >= 0) {  // --count overrides both counts: estimate with it
+    study.sets.push_back("lines.count=" + std::to_string(count));
+    study.sets.push_back("surface.count=" + std::to_string(count));
+  }
+  scenes::check_memory(count >= 0 ? study::Study::load(study.file, study.sets, scenes::schema_for) : s, 1,
+                       vm.count("force") > 0);
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   const std::size_t n_lines = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("lines.count"));
   const std::size_t n_surf = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("surface.count"));

@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "src/error.hpp"
+#include "src/io/available_memory.hpp"
 #include "src/io/input_file.hpp"
 #include "src/io/temp_files.hpp"
 
@@ -225,6 +226,15 @@ std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std
   std::size_t size = 0;
   if (H5LTget_dataset_info(file_.get(), dataset.c_str(), d.data(), &cls, &size) < 0 || cls != H5T_FLOAT)
     throw data_error(path_ + ": dataset " + dataset + " is not floating point");
+  // The size first: a 1e6 x 1e6 dataset must be refused, not attempted.
+  double n_values = 1.0;
+  for (auto v : d) n_values *= static_cast<double>(v);
+  if (n_values * sizeof(double) > available_memory())
+  {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " holds %.0f values (%.3g GiB)", n_values, n_values * 8.0 / 1073741824.0);
+    throw data_error(path_ + ": dataset " + dataset + buf + ", more than the memory available; allowed: a dataset that fits in memory");
+  }
   std::size_t n = 1;
   for (auto v : d) n *= v;
   std::vector<double> out(n);

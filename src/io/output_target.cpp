@@ -44,7 +44,7 @@ std::string check_output_target(const OutputTarget& t) {
   const std::string& out = t.path;
   struct stat lst {}, st {};
   if (::lstat(out.c_str(), &lst) != 0) {
-    remove_stale_temps(out);
+    if (t.clean_stale) remove_stale_temps(out);
     return out;  // nothing there: created fresh
   }
   const bool link = S_ISLNK(lst.st_mode);
@@ -69,7 +69,7 @@ std::string check_output_target(const OutputTarget& t) {
                         "; refusing to replace it; choose another " + t.option + (t.option.rfind("--", 0) == 0 ? ", or add --force to replace it" : ""));
   const std::string target = link ? fs::canonical(out, ec).string() : out;
   if (ec) throw cannot_create("cannot resolve the symbolic link '" + out + "': " + ec.message());
-  remove_stale_temps(target);
+  if (t.clean_stale) remove_stale_temps(target);
   return target;
 }
 

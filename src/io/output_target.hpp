@@ -24,6 +24,7 @@ struct OutputTarget {
   bool force = false;        // replace any existing regular file
   std::vector<std::string> inputs;  // files the run reads
   bool check_kind = true;    // false: only the checks that never depend on the file's contents
+  bool clean_stale = true;   // remove stale temporaries (one process only, e.g. MPI rank 0)
 };
 
 // Refuses (exit 73, or 64 for an output equal to an input) with a message naming the path, what it
