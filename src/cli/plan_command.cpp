@@ -77,7 +77,8 @@ int plan_command(const Args& args) {
   probe->run_realisation(0, 0, values.data());
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double K = static_cast<double>(s.integer("study.realisations"));
-  std::printf("run time: %.3g s per realisation (probe of realisation 0); %.0f realisations on %d thread(s): about %.3g s\n",
+  std::printf("run time: %.3g s per realisation (probe of realisation 0); the ensemble of %.0f on %d thread(s): about %.3g s "
+              "(plus stage tables and the final write)\n",
               t, K, threads, t * K / threads);
   return 0;
 }
