@@ -73,6 +73,19 @@ def test_signal_stops_every_phase_within_a_second(tmp_path, name, args, sig, del
             assert not list((tmp_path / d).glob("*.h5")), "no table is written after the signal"
 
 
+def test_signal_during_the_final_write_keeps_the_chunks(tmp_path):
+    """Ball-on-beam's post-ensemble phase (time histories recomputed while the result is written)."""
+    rig = copy_study(tmp_path, "seed002-rig-1ms.ini")
+    args = ["run", rig.name, "--out", "r.h5", "--quiet", "--set", "study.realisations=4", "--set", "ball.end=0.1",
+            "--set", "output.time_histories=400", "--set", "ensemble.chunk_size=2"]
+    code, err, seconds = interrupt_after(args, 0, signal.SIGTERM, cwd=tmp_path,
+                                         ready=lambda: bool(list(tmp_path.glob("r.h5.tmp-*"))))
+    assert code == EX_INTERRUPTED, err
+    assert seconds < 1.5, f"took {seconds:.2f} s after the signal"
+    assert not temps(tmp_path) and not (tmp_path / "r.h5").exists()
+    assert len(list((tmp_path / "r.h5.checkpoint").glob("chunk_*.bin"))) == 2, "completed chunks are kept"
+
+
 # --- concurrent runs on the same --out ---------------------------------------------------------------
 
 def test_a_second_run_on_the_same_out_is_refused_while_the_first_runs(tmp_path):
