@@ -22,7 +22,7 @@ std::atomic<int> g_critical{0};
 std::atomic<bool> g_installed{false};
 
 // The ensemble loop stops within one realisation; any other phase is ended after this grace.
-constexpr auto kGrace = std::chrono::milliseconds(600);
+constexpr auto kGrace = std::chrono::milliseconds(400);
 
 extern "C" void on_stop_signal(int sig) {
   const int saved = errno;
