@@ -80,6 +80,10 @@ std::vector<Item> items(const study::Study& s, int threads) {
     const std::string law = s.text("contact.law");
     if ((law == "table" || law == "literal") && s.text("stiffness.surface") == "rough") out.push_back(contact_grid(s));
     if (law == "linearised" && s.text("contact.blocked_force") == "solver") out.push_back(blocked_force_window(s));
+  } else if (scene == "rolling-pipe" && s.text("roughness.kind") != "line") {
+    // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
+    const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
+    out.push_back({8.0 * nx * ny * (t + 10.0), where(s, {"surface.nx", "surface.ny"}), "rough floor per thread"});
   }
   return out;
 }

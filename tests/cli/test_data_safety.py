@@ -232,7 +232,7 @@ def test_a_regular_file_is_replaced_only_if_it_is_a_result_or_forced(tmp_path):
 # --- item 5: --only has its own default name and its own time history ---------------------------------
 
 def test_only_without_out_keeps_the_ensemble_result(tmp_path):
-    study = study_file(tmp_path)
+    study_file(tmp_path)
     assert run(["run", "s.ini", "--quiet"], cwd=tmp_path).returncode == 0
     full = (tmp_path / "s.h5").read_bytes()
     r = run(["run", "s.ini", "--quiet", "--only", 3], cwd=tmp_path)
