@@ -110,7 +110,9 @@ def test_a_second_run_on_the_same_out_is_refused_while_the_first_runs(tmp_path):
 
 def test_stress_pairs_of_concurrent_runs(tmp_path):
     study = tmp_path / "s.ini"
-    study.write_text(SMALL_OSCILLATOR.format(realisations=64, chunk=4, duration=4))
+    # One realisation per chunk: many checkpoint writes, so unlocked pairs race on the directory
+    # (before the lock: 3 of 24 runs failed with "cannot rename checkpoint").
+    study.write_text(SMALL_OSCILLATOR.format(realisations=128, chunk=1, duration=2))
     ref = tmp_path / "ref.h5"
     assert run(["run", study, "--out", ref, "--quiet"]).returncode == 0
     outcomes = []
@@ -122,7 +124,6 @@ def test_stress_pairs_of_concurrent_runs(tmp_path):
         for code, err in results:
             assert code in (0, EX_CANTCREAT), err
             if code:
-                assert "another rollspec run" in err or "holds an unfinished run" not in err, err
                 assert "another rollspec run" in err, err
         assert any(code == 0 for code, _ in results), results
         outcomes.append(sorted(code for code, _ in results))
