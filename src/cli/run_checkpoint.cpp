@@ -121,7 +121,7 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
   }
   const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
   if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere) throw UserError(EX_SOFTWARE, ensemble::rank_prefix() + "stopped because another rank failed (see its message)");
+  if (failed_somewhere) throw UserError(EX_SOFTWARE, "stopped because another rank failed (see its message)");
   return session;
 }
 

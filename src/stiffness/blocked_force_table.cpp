@@ -198,7 +198,7 @@ BlockedForceTable resolve_blocked_force(const Study& s, double radius, double ef
     status = "cached " + path;
     return t;
   }
-  const std::string write_path = ensemble::mpi_rank() == 0 ? prepare_table_path(s, path, kBlockedForceFileType) : path;
+  const std::string write_path = table_write_path(s, path, kBlockedForceFileType);
   BlockedForceTable t = build(s, radius, effective_modulus, load, quiet);
   t.inputs = inputs;
   t.input_hash = hash;

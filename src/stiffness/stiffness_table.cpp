@@ -373,7 +373,7 @@ StiffnessTable resolve_table(const study::Study& s, double ball_radius, double e
   }
   if (state == TableState::mismatched && !rebuild) throw data_error(why + "\nrun with --rebuild to replace it");
   // Before the build: never replace anything but a rollspec table.
-  const std::string write_path = ensemble::mpi_rank() == 0 ? prepare_table_path(s, path, kTableFileType) : path;
+  const std::string write_path = table_write_path(s, path, kTableFileType);
   StiffnessTable t = build_table(s, ball_radius, effective_modulus, spec, quiet);
   if (ensemble::mpi_rank() == 0) write_table(write_path, t, s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
   ensemble::mpi_barrier();  // the table file exists for every rank from here on

@@ -1,7 +1,9 @@
 #include "src/stiffness/table_location.hpp"
 
+#include <exception>
 #include <filesystem>
 
+#include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
 #include "src/io/output_target.hpp"
 #include "src/study/study.hpp"
@@ -47,6 +49,23 @@ std::string prepare_table_path(const study::Study& s, const std::string& path, c
   } catch (const UserError& e) {
     throw UserError(e.exit_code(), std::string(e.what()) + " (--rebuild replaces only rollspec tables)");
   }
+}
+
+std::string table_write_path(const study::Study& s, const std::string& path, const std::string& filetype) {
+  std::string out = path;
+  std::exception_ptr failure;
+  if (ensemble::mpi_rank() == 0) {
+    try {
+      out = prepare_table_path(s, path, filetype);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  }
+  const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
+  if (failure) std::rethrow_exception(failure);
+  if (failed_somewhere)
+    throw UserError(EX_SOFTWARE, "stopped because rank 0 refused the table path (see its message)");
+  return out;
 }
 
 }  // namespace rollspec::stiffness

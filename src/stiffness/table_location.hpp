@@ -19,4 +19,8 @@ namespace rollspec::stiffness {
 // rank 0 before building the table.
 std::string prepare_table_path(const study::Study& s, const std::string& path, const std::string& filetype);
 
+// prepare_table_path on rank 0, with the decision shared by every rank (collective under MPI), so
+// a refused path stops all ranks before the build instead of leaving them at a barrier.
+std::string table_write_path(const study::Study& s, const std::string& path, const std::string& filetype);
+
 }  // namespace rollspec::stiffness
