@@ -20,6 +20,13 @@ class UserError : public std::runtime_error {
   int exit_code_;
 };
 
+// Input echoed in a message, cut to about 200 characters: a 1 MB key or a 50 MB cell must not flood
+// the terminal.
+inline std::string clip(const std::string& s, std::size_t limit = 200) {
+  if (s.size() <= limit) return s;
+  return s.substr(0, limit) + "... (" + std::to_string(s.size()) + " bytes in all)";
+}
+
 inline UserError config_error(const std::string& m) { return UserError(EX_CONFIG, m); }
 inline UserError data_error(const std::string& m) { return UserError(EX_DATAERR, m); }
 inline UserError missing_input(const std::string& m) { return UserError(EX_NOINPUT, m); }

@@ -12,13 +12,18 @@
 //
 // Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
 // output, 78 bad configuration, 130 interrupted.
+#include <unistd.h>
+
+#include <cstdio>
 #include <iostream>
 #include <map>
 #include <string>
 
 #include "src/cli/commands.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
 
 namespace {
@@ -41,8 +46,24 @@ const char* kUsage =
 
 }  // namespace
 
+namespace {
+// After a failed HDF5 write (a full disk) the library still holds the file whose close failed, and
+// its exit-time cleanup can crash on it: report, flush, and leave without running it.
+int finish(int code) {
+  if (code != 0 && rollspec::io::hdf5_write_failed()) {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    ::_exit(code);
+  }
+  return code;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace rollspec;
+  // First: a signal from here on stops the command cleanly (exit 130), in every phase.
+  ensemble::install_stop_handlers();
   if (argc < 2) {
     std::cerr << kUsage;
     return EX_USAGE;
@@ -70,9 +91,14 @@ int main(int argc, char** argv) {
     return it->second(cli::Args(argv + 2, argv + argc));
   } catch (const UserError& e) {
     std::cerr << ensemble::rank_prefix() << "rollspec " << command << ": error: " << e.what() << "\n";
-    return e.exit_code();
+    return finish(e.exit_code());
+  } catch (const std::bad_alloc&) {
+    std::cerr << ensemble::rank_prefix() << "rollspec " << command
+              << ": error: out of memory; the study needs more memory than is available (see rollspec plan "
+                 "for the estimate; reduce the grid, duration or sample rate)\n";
+    return finish(EX_OSERR);
   } catch (const std::exception& e) {
     std::cerr << "rollspec " << command << ": internal error: " << e.what() << "\n";
-    return EX_SOFTWARE;
+    return finish(EX_SOFTWARE);
   }
 }

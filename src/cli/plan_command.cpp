@@ -1,9 +1,15 @@
 // rollspec plan: which stages a study runs, reuses from cache, or skips, and why.
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <vector>
 
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/ensemble/ensemble_driver.hpp"
+#include "src/io/available_memory.hpp"
+#include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
 
@@ -14,8 +20,11 @@ int plan_command(const Args& args) {
       "usage: rollspec plan STUDY.ini [--set section.key=value ...]\n"
       "\n"
       "Validates the study and prints each stage of its scene as run / cached / skipped with the\n"
-      "reason. Nothing is computed and no file is written.";
+      "reason, and the estimated peak memory and checkpoint disk. Nothing is computed and no file is\n"
+      "written, except with --probe: realisation 0 is run once (when the stage tables exist) to\n"
+      "estimate the run time.";
   po::options_description opts("options");
+  opts.add_options()("probe", "run realisation 0 once to estimate the run time");
   StudyArgs study;
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
@@ -23,12 +32,54 @@ int plan_command(const Args& args) {
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
 
   const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
-  const auto scene = scenes::find_scene(s.scene()).make(s);
   std::cout << "study " << study.file << ": scene " << s.scene() << ", " << s.integer("study.realisations")
             << " realisations, seed " << s.integer("study.seed") << "\n";
+  const int threads = ensemble::ensemble_threads();
+  const auto memory = scenes::estimate_memory(s, threads);
+  const double available = io::available_memory();
+  std::string keys;
+  for (const auto& k : memory.keys) keys += (keys.empty() ? "" : ", ") + k;
+  std::cout << "memory: estimated peak " << scenes::format_bytes(memory.bytes) << " on " << threads << " thread(s)"
+            << (memory.what.empty() ? std::string() : " (largest: " + memory.what + ", from " + keys + ")") << "; available "
+            << scenes::format_bytes(available) << "\n";
+  if (memory.bytes > available) {
+    std::cout << "the study needs more memory than is available: rollspec run refuses it (unless --force); stages not shown\n";
+    return 0;
+  }
+  const auto scene = scenes::find_scene(s.scene()).make(s);
+  if (scene->runs_ensemble() && !scene->single_run()) {
+    const double K = static_cast<double>(s.integer("study.realisations")), C = static_cast<double>(s.integer("ensemble.chunk_size"));
+    const double chunk_bytes = 48.0 + 16.0 * static_cast<double>(scene->values_per_realisation());
+    std::cout << "checkpoint disk: " << std::ceil(K / C) << " chunk(s) of " << scenes::format_bytes(chunk_bytes) << " = "
+              << scenes::format_bytes(std::ceil(K / C) * chunk_bytes) << " beside the result while the run lasts\n";
+  }
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");
-  for (const auto& p : scene->plan())
+  bool tables_missing = false;
+  for (const auto& p : scene->plan()) {
     std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::to_string(p.status), p.reason.c_str());
+    const bool solver_table = p.stage == "blocked_force" && s.has("contact.blocked_force") &&
+                              s.text("contact.blocked_force") == "solver";
+    if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
+  }
+  if (!vm.count("probe")) return 0;
+  if (!scene->runs_ensemble() || scene->single_run()) {
+    std::cout << "run time: not probed (no ensemble: the run is one deterministic computation)\n";
+    return 0;
+  }
+  if (tables_missing) {
+    std::cout << "run time: not probed (the stage tables are not built yet; rollspec stiffness builds them)\n";
+    return 0;
+  }
+  auto probe = scenes::find_scene(s.scene()).make(s);
+  probe->prepare(true, false);
+  std::vector<double> values(probe->values_per_realisation());
+  const auto start = std::chrono::steady_clock::now();
+  probe->run_realisation(0, 0, values.data());
+  const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double K = static_cast<double>(s.integer("study.realisations"));
+  std::printf("run time: %.3g s per realisation (probe of realisation 0); the ensemble of %.0f on %d thread(s): about %.3g s "
+              "(plus stage tables and the final write)\n",
+              t, K, threads, t * K / threads);
   return 0;
 }
 

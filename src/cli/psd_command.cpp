@@ -16,6 +16,8 @@
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/csv_table.hpp"
+#include "src/io/output_target.hpp"
+#include "src/io/temp_files.hpp"
 
 namespace rollspec::cli {
 
@@ -34,7 +36,8 @@ int psd_command(const Args& args) {
       "fs", po::value(&fs)->required(), "sample rate (Hz)")("segment", po::value(&segment)->default_value(1024),
                                                            "segment length (samples)")(
       "overlap", po::value(&overlap)->default_value(0.5), "overlap as a fraction of the segment, in [0, 0.95]")(
-      "window", po::value(&window)->default_value("hann"), "hann or rect")("out,o", po::value(&out), "output CSV");
+      "window", po::value(&window)->default_value("hann"), "hann or rect")("out,o", po::value(&out), "output CSV")(
+      "force", "replace an existing --out file even if it is not a PSD written by rollspec psd");
   po::positional_options_description pos;
   pos.add("signal", 1);
   po::variables_map vm;
@@ -44,6 +47,12 @@ int psd_command(const Args& args) {
   if (!(overlap >= 0.0 && overlap <= 0.95)) throw usage_error("--overlap " + std::to_string(overlap) + ": allowed: a fraction in [0, 0.95]");
   if (window != "hann" && window != "rect") throw usage_error("--window " + window + ": allowed: hann or rect");
 
+  if (!out.empty()) {  // an output that is the input is refused before the input is read
+    std::error_code ec;
+    if (std::filesystem::exists(out, ec) && std::filesystem::equivalent(out, input, ec))
+      throw usage_error("--out " + out + " is also the input signal ('" + input +
+                        "'); refusing to overwrite an input; choose another --out");
+  }
   const io::CsvTable t = io::read_csv(input);
   if (t.rows() < static_cast<std::size_t>(segment))
     throw data_error(input + ": " + std::to_string(t.rows()) + " samples, fewer than one segment (--segment " +
@@ -90,26 +99,30 @@ int psd_command(const Args& args) {
   }
   // Written beside the output and renamed onto it: an existing file is replaced whole or not at all,
   // and the temporary file never outlives a failure.
-  const std::string tmp = out + ".tmp-" + std::to_string(::getpid());
+  io::OutputTarget target{out, io::kPsdCsvKind};
+  target.force = vm.count("force") > 0;
+  target.inputs = {input};
+  const std::string write_path = io::check_output_target(target);
+  const std::string tmp = io::temp_name(write_path);
+  io::register_temp(tmp);
+  const auto fail = [&](const std::string& what, int err) {
+    std::remove(tmp.c_str());
+    io::unregister_temp(tmp);
+    return cannot_create(what + " (writing " + tmp + ": " +
+                         (err == ENOSPC ? std::string("no space left on device") : std::string(std::strerror(err))) + ")");
+  };
   {
+    errno = 0;
     std::ofstream o(tmp, std::ios::trunc);
-    if (!o) {
-      const std::string why = std::strerror(errno);
-      throw cannot_create("cannot create output file '" + out + "' (writing " + tmp + ": " + why + ")");
-    }
+    if (!o) throw fail("cannot create output file '" + out + "'", errno ? errno : EIO);
     o << s.str();
     o.close();
-    if (!o) {
-      std::remove(tmp.c_str());
-      throw cannot_create("cannot write output file '" + out + "' (writing " + tmp + " failed)");
-    }
+    if (!o) throw fail("cannot write output file '" + out + "'", errno ? errno : EIO);
   }
   std::error_code ec;
-  std::filesystem::rename(tmp, out, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw cannot_create("cannot create output file '" + out + "': " + ec.message());
-  }
+  std::filesystem::rename(tmp, write_path, ec);
+  if (ec) throw fail("cannot create output file '" + out + "': " + ec.message(), ec.value());
+  io::unregister_temp(tmp);
   return 0;
 }
 

@@ -6,15 +6,19 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/cli/run_checkpoint.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
+#include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
 
@@ -22,38 +26,63 @@ namespace fs = std::filesystem;
 
 int run_command(const Args& args) {
   const std::string usage =
-      "usage: rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume] [--quiet]\n"
+      "usage: rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume | --restart] [--force] [--quiet]\n"
       "\n"
       "Runs the study's Monte-Carlo ensemble and writes the result file (HDF5, schema 1: /psd, /bands,\n"
       "provenance). The study is validated completely before any work starts. Completed chunks of\n"
       "realisations are checkpointed in FILE.h5.checkpoint/; after Ctrl-C (exit 130) or a crash,\n"
-      "--resume finishes the ensemble with a result bitwise identical to an uninterrupted run.\n"
+      "--resume finishes the ensemble with the checkpoint's own settings and a result bitwise identical\n"
+      "to an uninterrupted run; --restart discards the checkpoint and starts over. An existing FILE.h5\n"
+      "is replaced only if it is a rollspec result (or with --force).\n"
       "Threads: OMP_NUM_THREADS. The result data do not depend on the thread count.";
   po::options_description opts("options");
   StudyArgs study;
   std::string out;
-  opts.add_options()("out,o", po::value(&out), "result file (default: the study's name with .h5, in the current directory)")(
-      "resume", "reuse the completed chunks of an interrupted run")(
+  opts.add_options()("out,o", po::value(&out),
+                     "result file (default: the study's name with .h5, or -only-ID.h5 with --only, in the current directory)")(
+      "resume", "finish an interrupted run from its checkpoint (with the checkpoint's settings)")(
+      "restart", "discard the checkpoint of an unfinished run and start over")(
+      "force", "replace an existing --out file even if it is not a rollspec result, and run a study whose memory "
+               "estimate exceeds the available memory")(
       "only", po::value<long long>(), "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
       "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q", "no progress output");
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  const bool resume = vm.count("resume") > 0, restart = vm.count("restart") > 0;
+  if (resume && restart) throw usage_error("--resume and --restart exclude each other: finish the checkpoint, or discard it");
+  long long only = -1;
+  if (vm.count("only")) {
+    only = vm["only"].as<long long>();
+    if (only < 0) throw usage_error("--only " + std::to_string(only) + ": allowed: a realisation id >= 0");
+    if (resume || restart) throw usage_error("--only runs one realisation without checkpoints; it takes no --resume or --restart");
+  }
 
-  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
-  auto scene = scenes::find_scene(s.scene()).make(s);
-  if (!scene->runs_ensemble() && !scene->single_run())
-    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + study.file);
-  if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
+  study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
+  // Before any workspace, FFT plan or table is allocated (an allocation failure inside FFTW aborts).
+  scenes::check_memory(s, ensemble::ensemble_threads(), vm.count("force") > 0);
+  if (out.empty())
+    out = fs::path(study.file).stem().string() + (only >= 0 ? "-only-" + std::to_string(only) : std::string()) + ".h5";
   const fs::path out_dir = fs::absolute(out).parent_path();
   if (!fs::is_directory(out_dir)) throw cannot_create("output directory " + out_dir.string() + " does not exist (for --out " + out + ")");
   const bool quiet = vm.count("quiet") > 0;
 
-  ensemble::install_stop_handlers();
-  scene->prepare(quiet, vm.count("rebuild") > 0);
+  auto scene = scenes::find_scene(s.scene()).make(s);
+  if (!scene->runs_ensemble() && !scene->single_run())
+    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + study.file);
+  if (scene->single_run() && (resume || restart))
+    throw usage_error("study " + study.file + " (scene " + s.scene() + ") is one deterministic run with no checkpoint; drop --resume/--restart");
+  io::OutputTarget target{out, io::kResultFileType};
+  target.force = vm.count("force") > 0;
+  target.clean_stale = ensemble::mpi_rank() == 0;
+  target.inputs = s.input_files();
+  for (const auto& p : texture_io::profile_files(s)) target.inputs.push_back(p);
+  const std::string write_path = io::check_output_target(target);
+
   if (scene->single_run()) {
-    io::Hdf5Writer w(out);
+    scene->prepare(quiet, vm.count("rebuild") > 0);
+    io::Hdf5Writer w(write_path);
     io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, s.canonical_text(),
                          static_cast<std::uint64_t>(s.integer("study.seed")));
     w.attribute("/", "scene", s.scene());
@@ -62,27 +91,32 @@ int run_command(const Args& args) {
     if (!quiet) std::cout << "wrote " << out << "\n";
     return 0;
   }
+
   ensemble::EnsembleConfig cfg;
+  CheckpointSession checkpoint;
+  if (only < 0) {
+    // Resolves the study a --resume runs (the checkpoint's), so the scene is made after this.
+    const std::string asked = s.canonical_text();
+    checkpoint = open_checkpoint(out + ".checkpoint", s, study.sets, resume, restart, quiet);
+    cfg.checkpoint_dir = checkpoint.directory;
+    if (s.canonical_text() != asked) scene = scenes::find_scene(s.scene()).make(s);
+  }
+  scene->prepare(quiet, vm.count("rebuild") > 0);
   cfg.realisations = static_cast<std::uint64_t>(s.integer("study.realisations"));
   cfg.chunk_size = static_cast<std::uint64_t>(s.integer("ensemble.chunk_size"));
   cfg.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
-  cfg.checkpoint_dir = out + ".checkpoint";
   cfg.study_hash = scenes::study_result_hash(s);
-  cfg.resume = vm.count("resume") > 0;
+  cfg.resume = resume;
   cfg.quiet = quiet;
   cfg.log_prefix = ensemble::rank_prefix();
-  if (vm.count("only")) {
-    cfg.only = vm["only"].as<long long>();
-    if (cfg.only < 0) throw usage_error("--only " + std::to_string(cfg.only) + ": allowed: a realisation id >= 0");
-    cfg.checkpoint_dir.clear();
-  }
+  cfg.only = only;
   const ensemble::EnsembleSums sums = ensemble::run_ensemble(
       cfg, scene->values_per_realisation(),
       [&](std::uint64_t id, int thread, double* values) { scene->run_realisation(id, thread, values); });
 
   if (ensemble::mpi_rank() != 0) return 0;  // rank 0 holds the sums and writes the result
   {
-    io::Hdf5Writer w(out);
+    io::Hdf5Writer w(write_path);
     io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, s.canonical_text(), cfg.seed);
     w.attribute("/", "scene", s.scene());
     scene->write_results(w, sums);
@@ -92,9 +126,13 @@ int run_command(const Args& args) {
     w.attribute("/run", "ranks", static_cast<std::int64_t>(ensemble::mpi_size()));
     w.attribute("/run", "realisations_computed", static_cast<std::int64_t>(sums.computed));
     if (cfg.only >= 0) w.attribute("/run", "only_realisation", static_cast<std::int64_t>(cfg.only));
+    const ensemble::CriticalSection finishing;  // an interrupt waits until the bookkeeping is done
     w.commit();
+    if (!cfg.checkpoint_dir.empty()) {
+      ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear(/*keep_lock=*/true);
+      checkpoint.lock->remove();
+    }
   }
-  if (!cfg.checkpoint_dir.empty()) ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear();
   if (!quiet)
     std::cout << "wrote " << out << " (" << sums.count << " realisations, " << sums.computed << " computed in "
               << sums.seconds << " s, " << ensemble::mpi_size() << " rank(s) x " << omp_get_max_threads()

@@ -6,8 +6,10 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/ensemble_driver.hpp"
 #include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
+#include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/scenes/stiffness_scene.hpp"
 #include "src/stiffness/stiffness_table.hpp"
@@ -28,7 +30,8 @@ int stiffness_command(const Args& args) {
   StudyArgs study;
   std::string out;
   opts.add_options()("out,o", po::value(&out), "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
-      "rebuild", "replace a table whose inputs differ or that is damaged")("quiet,q", "no progress output");
+      "rebuild", "replace a table whose inputs differ or that is damaged")("quiet,q", "no progress output")(
+      "force", "build a table whose memory estimate exceeds the available memory");
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
   po::variables_map vm;
@@ -37,8 +40,8 @@ int stiffness_command(const Args& args) {
   const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
   if (s.scene() != "stiffness" && s.scene() != "ball-on-beam")
     s.refuse("study.scene", "rollspec stiffness needs a stiffness or ball-on-beam study");
+  scenes::check_memory(s, ensemble::ensemble_threads(), vm.count("force") > 0);
   const auto pair = scenes::study_contact_pair(s);
-  ensemble::install_stop_handlers();
   std::string status;
   const auto t = stiffness::resolve_table(s, pair.radius, pair.effective_modulus, vm.count("rebuild") > 0,
                                           vm.count("quiet") > 0, status);

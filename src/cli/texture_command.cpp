@@ -11,8 +11,10 @@
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
 #include "src/rng/philox_stream.hpp"
+#include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -63,7 +65,9 @@ int texture_command(const Args& args) {
   std::string out;
   long long count = -1;
   opts.add_options()("out,o", po::value(&out), "texture file (default: the study's name with .h5)")(
-      "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)");
+      "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)")(
+      "force", "replace an existing --out file even if it is not a rollspec texture file, and run a study whose "
+               "memory estimate exceeds the available memory");
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
   po::variables_map vm;
@@ -75,6 +79,12 @@ int texture_command(const Args& args) {
   if (s.scene() != "texture")
     s.refuse("study.scene", "rollspec texture needs a study of scene texture (this one is " + s.scene() + ")");
   if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
+  if (count >= 0) {  // --count overrides both counts: estimate with it
+    study.sets.push_back("lines.count=" + std::to_string(count));
+    study.sets.push_back("surface.count=" + std::to_string(count));
+  }
+  scenes::check_memory(count >= 0 ? study::Study::load(study.file, study.sets, scenes::schema_for) : s, 1,
+                       vm.count("force") > 0);
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   const std::size_t n_lines = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("lines.count"));
   const std::size_t n_surf = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("surface.count"));
@@ -95,7 +105,12 @@ int texture_command(const Args& args) {
   }
   const texture_io::SurfaceGenerator surfaces = n_surf ? texture_io::study_surface_generator(s, psd) : texture_io::SurfaceGenerator{};
 
-  io::Hdf5Writer w(out);
+  io::OutputTarget target{out, "rollspec-texture"};
+  target.force = vm.count("force") > 0;
+  target.inputs = s.input_files();
+  for (const auto& p : texture_io::profile_files(s)) target.inputs.push_back(p);
+  target.check_kind = false;  // the file's kind is checked before the commit, after the data are known good
+  io::Hdf5Writer w(io::check_output_target(target));
   io::write_provenance(w, "rollspec-texture", "1.0", s.canonical_text(), seed);
   w.attribute("/", "psd", psd.description);
   std::printf("%-8s %6s %12s %10s %10s %14s %14s\n", "kind", "index", "rms_m", "skewness", "kurtosis", "corr_len_x_m",
@@ -160,6 +175,8 @@ int texture_command(const Args& args) {
     w.attach_scale("/surface/heights", "/surface/x", 2);
     w.attribute("/surface", "method", s.text("surface.method"));
   }
+  target.check_kind = true;
+  io::check_output_target(target);
   w.commit();
   std::fprintf(stderr, "wrote %s (%zu lines, %zu surfaces)\n", out.c_str(), n_lines, n_surf);
   return 0;

@@ -1,11 +1,17 @@
 #include "src/ensemble/checkpoint.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 
 #include "src/error.hpp"
+#include "src/io/temp_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -49,14 +55,25 @@ void CheckpointStore::write(const ChunkSums& c) const {
   const std::uint64_t sum = fnv1a64(buf.data(), buf.size());
   const std::string final_name = (fs::path(directory_) / chunk_name(c.lo, c.hi)).string();
   const std::string tmp = final_name + ".tmp";
+  io::register_temp(tmp);
+  auto fail = [&](const std::string& what, int err) {
+    std::remove(tmp.c_str());
+    io::unregister_temp(tmp);
+    return cannot_create("cannot " + what + " checkpoint " + tmp + ": " +
+                         (err == ENOSPC ? "no space left on device; free some space and rerun with --resume"
+                                        : std::string(std::strerror(err))));
+  };
   {
+    errno = 0;
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
     out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
-    if (!out) throw cannot_create("cannot write checkpoint " + tmp);
+    out.close();  // the last buffered bytes are written here: a full disk shows up now
+    if (!out) throw fail("write", errno ? errno : EIO);
   }
   fs::rename(tmp, final_name, ec);
-  if (ec) throw cannot_create("cannot rename checkpoint " + tmp + ": " + ec.message());
+  if (ec) throw fail("rename", ec.value());
+  io::unregister_temp(tmp);
 }
 
 std::map<std::uint64_t, ChunkSums> CheckpointStore::load(std::size_t n_values) const {
@@ -66,20 +83,28 @@ std::map<std::uint64_t, ChunkSums> CheckpointStore::load(std::size_t n_values) c
   for (const auto& entry : fs::directory_iterator(directory_)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("chunk_", 0) != 0 || entry.path().extension() != ".bin") continue;  // skips *.tmp leftovers
-    std::ifstream in(entry.path(), std::ios::binary);
-    std::vector<char> buf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::size_t expect = sizeof kMagic + 4 * sizeof(std::uint64_t) + n_values * sizeof(double) + sizeof(std::uint64_t);
     const std::string where = entry.path().string();
-    if (buf.size() != expect || std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0)
-      throw data_error(where + ": damaged checkpoint (size or magic); remove the checkpoint directory or run without --resume");
+    // Size and kind first: a FIFO would block the read, a huge file would be read whole.
+    struct stat st {};
+    if (::lstat(where.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+      throw data_error(where + ": not a regular file; a checkpoint chunk is a file rollspec wrote");
+    if (static_cast<std::size_t>(st.st_size) != expect)
+      throw data_error(where + ": damaged checkpoint (size " + std::to_string(st.st_size) + " bytes, expected " +
+                       std::to_string(expect) + "); start over with --restart");
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::vector<char> buf(expect);
+    in.read(buf.data(), static_cast<std::streamsize>(expect));
+    if (static_cast<std::size_t>(in.gcount()) != expect || std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0)
+      throw data_error(where + ": damaged checkpoint (size or magic); start over with --restart");
     std::uint64_t stored = 0;
     std::memcpy(&stored, buf.data() + buf.size() - sizeof stored, sizeof stored);
     if (stored != fnv1a64(buf.data(), buf.size() - sizeof stored))
-      throw data_error(where + ": damaged checkpoint (checksum); remove it or run without --resume");
+      throw data_error(where + ": damaged checkpoint (checksum); start over with --restart");
     std::uint64_t h[4];
     std::memcpy(h, buf.data() + sizeof kMagic, sizeof h);
     if (h[0] != hash_)
-      throw data_error(where + ": checkpoint belongs to a different study (input hash differs); run without --resume");
+      throw data_error(where + ": checkpoint belongs to a different study (input hash differs); start over with --restart");
     ChunkSums c;
     c.lo = h[1];
     c.hi = h[2];
@@ -90,9 +115,72 @@ std::map<std::uint64_t, ChunkSums> CheckpointStore::load(std::size_t n_values) c
   return out;
 }
 
-void CheckpointStore::clear() const {
+bool is_checkpoint_file_name(const std::string& name) {
+  if (name == kManifestName || name == kLockName || name == std::string(kManifestName) + ".tmp") return true;
+  if (name.rfind("chunk_", 0) != 0) return false;
+  const auto ends_with = [&](const std::string& suffix) {
+    return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  return ends_with(".bin") || ends_with(".bin.tmp");
+}
+
+bool is_chunk_file(const std::string& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return false;
+  std::ifstream in(path, std::ios::binary);
+  char magic[sizeof kMagic] = {};
+  in.read(magic, sizeof magic);
+  return in.gcount() == sizeof magic && std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+}
+
+std::vector<std::string> CheckpointStore::foreign_entries() const {
+  std::vector<std::string> out;
   std::error_code ec;
-  fs::remove_all(directory_, ec);
+  fs::directory_iterator it(directory_, ec);
+  if (ec) return out;
+  for (const auto& entry : it) {
+    const std::string name = entry.path().filename().string();
+    struct stat st {};
+    const bool regular = ::lstat(entry.path().c_str(), &st) == 0 && S_ISREG(st.st_mode);
+    const bool ours = regular && is_checkpoint_file_name(name) &&
+                      (name.size() < 4 || name.compare(name.size() - 4, 4, ".bin") != 0 || is_chunk_file(entry.path().string()));
+    if (!ours) out.push_back(name);
+  }
+  return out;
+}
+
+std::size_t CheckpointStore::chunk_count() const {
+  std::size_t n = 0;
+  std::error_code ec;
+  fs::directory_iterator it(directory_, ec);
+  if (ec) return 0;
+  for (const auto& entry : it) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("chunk_", 0) == 0 && entry.path().extension() == ".bin" && is_chunk_file(entry.path().string())) ++n;
+  }
+  return n;
+}
+
+void CheckpointStore::clear(bool keep_lock) const {
+  std::error_code ec;
+  fs::directory_iterator it(directory_, ec);
+  if (ec) return;
+  std::vector<fs::path> ours;
+  for (const auto& entry : it) {
+    const std::string name = entry.path().filename().string();
+    if (keep_lock && name == kLockName) continue;
+    if (!is_checkpoint_file_name(name)) continue;  // the user's own files stay
+    struct stat st {};
+    if (::lstat(entry.path().c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (entry.path().extension() == ".bin" && !is_chunk_file(entry.path().string())) continue;
+    ours.push_back(entry.path());
+  }
+  // The manifest goes last: a directory with chunks but no manifest is never left behind.
+  std::sort(ours.begin(), ours.end(), [](const fs::path& a, const fs::path& b) {
+    return (a.filename() == kManifestName) < (b.filename() == kManifestName);
+  });
+  for (const auto& p : ours) fs::remove(p, ec);
+  if (!keep_lock) fs::remove(directory_, ec);  // only if now empty
 }
 
 }  // namespace rollspec::ensemble

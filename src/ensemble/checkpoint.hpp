@@ -19,6 +19,13 @@ struct ChunkSums {
 std::uint64_t fnv1a64(const void* data, std::size_t n, std::uint64_t h = 14695981039346656037ull);
 std::uint64_t fnv1a64(const std::string& s);
 
+// Files rollspec writes in a checkpoint directory: the manifest (checkpoint_guard.hpp), the lock,
+// chunk_<lo>_<hi>.bin and their temporaries. Nothing else is ever removed.
+constexpr const char* kManifestName = "manifest";
+constexpr const char* kLockName = "lock";
+bool is_checkpoint_file_name(const std::string& name);
+bool is_chunk_file(const std::string& path);  // a regular file starting with the chunk magic
+
 class CheckpointStore {
  public:
   CheckpointStore(std::string directory, std::uint64_t study_hash);
@@ -27,7 +34,12 @@ class CheckpointStore {
   // Completed chunks on disk, keyed by lo. A chunk from another study (hash) or a damaged file is
   // refused with exit 65 naming the file: resuming must never mix studies.
   std::map<std::uint64_t, ChunkSums> load(std::size_t n_values) const;
-  void clear() const;  // removes the directory (fresh run, or after the result is committed)
+  // Removes the files rollspec wrote (known names; chunks recognised by their magic), then the
+  // directory if it is empty. The user's own files stay. keep_lock keeps the lock file (and so the
+  // directory) for a run that goes on.
+  void clear(bool keep_lock = false) const;
+  std::vector<std::string> foreign_entries() const;  // names rollspec did not write
+  std::size_t chunk_count() const;
 
  private:
   std::string directory_;

@@ -89,6 +89,7 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
     out.sum_sq.resize(n_values);
     for (std::size_t i = 0; i < n_values; ++i) out.sum_sq[i] = v[i] * v[i];
     out.count = out.computed = 1;
+    out.only = cfg.only;
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
   }
@@ -103,8 +104,6 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
         // Chunks of another size or count are recomputed; those of other ranks are theirs to add.
         if (lo % C == 0 && c.hi == hi && (lo / C) % ranks == rank) chunks[lo] = std::move(c);
       }
-    } else if (rank == 0) {
-      store.clear();
     }
     mpi_barrier();
   }

@@ -33,6 +33,7 @@ struct EnsembleSums {
   std::uint64_t computed = 0;       // realisations computed in this run (the rest came from checkpoints)
   double seconds = 0.0;
   double reduce_seconds = 0.0;      // gathering chunk sums to rank 0 and adding them (part of `seconds`)
+  std::int64_t only = -1;           // >= 0: the one realisation these sums hold (--only)
 
   // Ensemble mean of value i, and the standard deviation of one realisation's value (K - 1).
   double mean(std::size_t i) const { return sum[i] / static_cast<double>(count); }

@@ -1,12 +1,28 @@
 #pragma once
-// SIGINT / SIGTERM ask a running ensemble to stop: workers finish nothing new, completed
-// chunks are already on disk, and the command exits 130 so `--resume` can finish the job.
+// SIGINT, SIGTERM and SIGHUP stop every phase of every command within about a second, with exit 130:
+//   - the ensemble loop sees stop_requested() between realisations and stops cleanly (completed
+//     chunks are already checkpointed; `--resume` finishes the job);
+//   - any other phase (table builds, single runs, texture synthesis, writing) is ended by a
+//     watchdog thread once a short grace period has passed: it removes the registered temporary
+//     files (io/temp_files.hpp) and exits 130. Completed tables and chunks were renamed into place
+//     whole, so they are kept; nothing partial is.
+// A CriticalSection (renaming a finished result, clearing its checkpoint) delays that exit until it
+// ends, so a committed result never loses its bookkeeping half-way.
 #include <atomic>
 
 namespace rollspec::ensemble {
 
+// Installs the handlers (first thing in main; idempotent).
 void install_stop_handlers();
 bool stop_requested();
 void request_stop();  // for tests
+
+class CriticalSection {
+ public:
+  CriticalSection();
+  ~CriticalSection();
+  CriticalSection(const CriticalSection&) = delete;
+  CriticalSection& operator=(const CriticalSection&) = delete;
+};
 
 }  // namespace rollspec::ensemble

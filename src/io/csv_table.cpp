@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
 
 #include "src/error.hpp"
+#include "src/io/input_file.hpp"
 
 namespace rollspec::io {
 
@@ -32,13 +34,14 @@ std::size_t CsvTable::column_index(const std::string& name) const {
     if (columns[i] == name) return i;
   std::string found;
   for (const auto& c : columns) found += (found.empty() ? "" : ", ") + c;
-  throw data_error(file + ":1: no column '" + name + "' in the header; columns found: " + found);
+  throw data_error(file + ":1: no column '" + clip(name) + "' in the header; columns found: " + clip(found));
 }
 
 CsvTable read_csv(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw missing_input("cannot read '" + path + "': it is a directory; expected a CSV file");
+  require_regular_input(path, "CSV file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open '" + path + "'");
   CsvTable t;
@@ -65,14 +68,16 @@ CsvTable read_csv(const std::string& path) {
         std::strtod(c.c_str(), &end);
         if (!c.empty() && end != c.c_str() && *end == '\0')
           throw data_error(path + ":" + std::to_string(n) + ": the first line must be a header naming the columns, found the number '" +
-                           c + "'");
+                           clip(c) + "'");
         if (c.empty()) throw data_error(path + ":" + std::to_string(n) + ": empty column name in the header");
       }
-      for (std::size_t i = 0; i < cells.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-          if (cells[i] == cells[j])
-            throw data_error(path + ":" + std::to_string(n) + ": column '" + cells[i] + "' appears twice in the header (columns " +
-                             std::to_string(j + 1) + " and " + std::to_string(i + 1) + "); each column name may appear once");
+      std::unordered_map<std::string, std::size_t> seen;  // linear: 300k columns must not take a minute
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        const auto [it, fresh] = seen.emplace(cells[i], i);
+        if (!fresh)
+          throw data_error(path + ":" + std::to_string(n) + ": column '" + clip(cells[i]) + "' appears twice in the header (columns " +
+                           std::to_string(it->second + 1) + " and " + std::to_string(i + 1) + "); each column name may appear once");
+      }
       t.columns = cells;
       t.values.assign(cells.size(), {});
       continue;
@@ -84,15 +89,20 @@ CsvTable read_csv(const std::string& path) {
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || end == cells[c].c_str() || *end != '\0')
-        throw data_error(path + ":" + std::to_string(n) + ": column '" + t.columns[c] + "' value '" + cells[c] +
+        throw data_error(path + ":" + std::to_string(n) + ": column '" + clip(t.columns[c]) + "' value '" + clip(cells[c]) +
                          "' is not a number; allowed: a decimal number such as 1.5e-3");
       if (!std::isfinite(v))
-        throw data_error(path + ":" + std::to_string(n) + ": column '" + t.columns[c] + "' value '" + cells[c] +
+        throw data_error(path + ":" + std::to_string(n) + ": column '" + clip(t.columns[c]) + "' value '" + clip(cells[c]) +
                          "' is not finite; allowed: finite numbers");
       t.values[c].push_back(v);
     }
     t.lines.push_back(n);
   }
+  // getline stops on a read error, or a line it cannot hold in memory (bad_alloc is swallowed by the
+  // stream), exactly as at the end of the file: only eof() tells them apart. Never drop the rest.
+  if (!in.eof() || in.bad())
+    throw data_error(path + ":" + std::to_string(n + 1) + ": cannot read this line (a read error, or a line too long " +
+                     "to hold in memory); the data after it were not read; allowed: CSV text with lines of sensible length");
   if (t.columns.empty()) throw data_error(path + ": empty file; expected a header line and data rows");
   if (t.lines.empty()) throw data_error(path + ": header but no data rows; expected at least one row of numbers after the header");
   return t;

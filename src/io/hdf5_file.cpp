@@ -2,13 +2,20 @@
 
 #include <H5DSpublic.h>
 #include <H5LTpublic.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "src/error.hpp"
 #include "src/io/free_dimensions.hpp"
+#include "src/io/available_memory.hpp"
+#include "src/io/input_file.hpp"
+#include "src/io/temp_files.hpp"
 
 namespace rollspec::io {
 
@@ -34,6 +41,29 @@ hssize_t attribute_elements(hid_t file, const std::string& object, const std::st
   return space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
 }
 
+herr_t collect_error(unsigned, const H5E_error2_t* e, void* text) {
+  auto* s = static_cast<std::string*>(text);
+  if (e->desc) *s += std::string(e->desc) + "\n";
+  return 0;
+}
+
+bool g_write_failed = false;
+
+// Why a write failed: "no space left on device" when the file system is full (the HDF5 error
+// stack carries the system error), else the failing call.
+std::string failure_reason(const std::string& what) {
+  g_write_failed = true;
+  const int saved = errno;
+  std::string stack;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collect_error, &stack);
+  if (saved == ENOSPC || stack.find("No space left on device") != std::string::npos)
+    return what + ": no space left on device; free some space (or choose another --out) and rerun";
+  if (saved == EDQUOT || stack.find("quota exceeded") != std::string::npos)
+    return what + ": disk quota exceeded; free some space and rerun";
+  if (saved == EIO) return what + ": input/output error (" + std::strerror(saved) + ")";
+  return what;
+}
+
 Hdf5Handle open_object(hid_t file, const std::string& path) {
   Hdf5Handle h(H5Oopen(file, path.c_str(), H5P_DEFAULT));
   return h;
@@ -53,17 +83,26 @@ Hdf5Handle& Hdf5Handle::operator=(Hdf5Handle&& o) noexcept {
 
 void quiet_hdf5_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
-Hdf5Writer::Hdf5Writer(const std::string& final_path)
-    : final_path_(final_path), temp_path_(final_path + ".tmp-" + std::to_string(::getpid())) {
+bool hdf5_write_failed() { return g_write_failed; }
+
+Hdf5Writer::Hdf5Writer(const std::string& final_path) : final_path_(final_path), temp_path_(temp_name(final_path)) {
   quiet_hdf5_errors();
+  register_temp(temp_path_);
   file_ = Hdf5Handle(H5Fcreate(temp_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-  if (!file_.valid()) throw cannot_create("cannot create output file '" + temp_path_ + "' (for " + final_path_ + ")");
+  if (!file_.valid()) {
+    const int saved = errno;
+    std::remove(temp_path_.c_str());  // H5Fcreate may leave an empty file behind (a full disk)
+    unregister_temp(temp_path_);
+    throw cannot_create("cannot create output file '" + temp_path_ + "' (for " + final_path_ + ")" +
+                        (saved == ENOSPC ? ": no space left on device" : saved ? std::string(": ") + std::strerror(saved) : ""));
+  }
 }
 
 Hdf5Writer::~Hdf5Writer() {
   if (!committed_) {
     file_ = Hdf5Handle();
     std::remove(temp_path_.c_str());
+    unregister_temp(temp_path_);
   }
 }
 
@@ -72,7 +111,7 @@ void Hdf5Writer::ensure_parent_groups(const std::string& path) {
     const std::string g = path.substr(0, pos);
     if (H5Lexists(file_.get(), g.c_str(), H5P_DEFAULT) > 0) continue;
     Hdf5Handle h(H5Gcreate2(file_.get(), g.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-    if (!h.valid()) throw cannot_create("cannot create group " + g + " in " + temp_path_);
+    if (!h.valid()) throw cannot_create(failure_reason("cannot create group " + g + " in " + temp_path_));
   }
 }
 
@@ -81,7 +120,7 @@ void Hdf5Writer::write(const std::string& path, const std::vector<std::size_t>& 
   ensure_parent_groups(path);
   std::vector<hsize_t> d(dims.begin(), dims.end());
   if (H5LTmake_dataset_double(file_.get(), path.c_str(), static_cast<int>(d.size()), d.data(), data) < 0)
-    throw cannot_create("cannot write dataset " + path + " to " + temp_path_);
+    throw cannot_create(failure_reason("cannot write dataset " + path + " to " + temp_path_));
   attribute(path, "units", units);
   if (!description.empty()) attribute(path, "description", description);
 }
@@ -98,45 +137,65 @@ void Hdf5Writer::write_strings(const std::string& path, const std::vector<std::s
   std::vector<const char*> ptrs;
   for (const auto& v : values) ptrs.push_back(v.c_str());
   if (!set.valid() || H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
-    throw cannot_create("cannot write dataset " + path + " to " + temp_path_);
+    throw cannot_create(failure_reason("cannot write dataset " + path + " to " + temp_path_));
   attribute(path, "units", "1");
   if (!description.empty()) attribute(path, "description", description);
 }
 
 void Hdf5Writer::make_scale(const std::string& scale, const std::string& name) {
   Hdf5Handle s = open_object(file_.get(), scale);
-  if (!s.valid() || H5DSset_scale(s.get(), name.c_str()) < 0) throw cannot_create("cannot make dimension scale " + scale);
+  if (!s.valid() || H5DSset_scale(s.get(), name.c_str()) < 0) throw cannot_create(failure_reason("cannot make dimension scale " + scale + " in " + temp_path_));
 }
 
 void Hdf5Writer::attach_scale(const std::string& dataset, const std::string& scale, unsigned dim) {
   Hdf5Handle d = open_object(file_.get(), dataset), s = open_object(file_.get(), scale);
   if (!d.valid() || !s.valid() || H5DSattach_scale(d.get(), s.get(), dim) < 0)
-    throw cannot_create("cannot attach dimension scale " + scale + " to " + dataset);
+    throw cannot_create(failure_reason("cannot attach dimension scale " + scale + " to " + dataset + " in " + temp_path_));
 }
 
 void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
   if (H5LTset_attribute_string(file_.get(), object.c_str(), name.c_str(), value.c_str()) < 0)
-    throw cannot_create("cannot write attribute " + object + "@" + name);
+    throw cannot_create(failure_reason("cannot write attribute " + object + "@" + name + " to " + temp_path_));
 }
 
 void Hdf5Writer::attribute(const std::string& object, const std::string& name, double value) {
   if (H5LTset_attribute_double(file_.get(), object.c_str(), name.c_str(), &value, 1) < 0)
-    throw cannot_create("cannot write attribute " + object + "@" + name);
+    throw cannot_create(failure_reason("cannot write attribute " + object + "@" + name + " to " + temp_path_));
 }
 
 void Hdf5Writer::attribute(const std::string& object, const std::string& name, std::int64_t value) {
   long long v = value;
   if (H5LTset_attribute_long_long(file_.get(), object.c_str(), name.c_str(), &v, 1) < 0)
-    throw cannot_create("cannot write attribute " + object + "@" + name);
+    throw cannot_create(failure_reason("cannot write attribute " + object + "@" + name + " to " + temp_path_));
 }
 
 void Hdf5Writer::commit() {
-  if (!name_free_dimensions(file_.get())) throw cannot_create("cannot name the dimensions of the datasets in " + temp_path_);
-  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) throw cannot_create("cannot flush " + temp_path_);
-  file_ = Hdf5Handle();
+  if (!name_free_dimensions(file_.get()))
+    throw cannot_create(failure_reason("cannot write " + final_path_ + " (naming the dimensions in " + temp_path_ + ")"));
+  errno = 0;
+  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) throw cannot_create(failure_reason("cannot write " + final_path_ + " (flushing " + temp_path_ + ")"));
+  const hid_t id = file_.get();
+  file_.release();
+  if (H5Fclose(id) < 0) throw cannot_create(failure_reason("cannot write " + final_path_ + " (closing " + temp_path_ + ")"));
+  // The data must be on disk before the rename makes them the result (a full disk or a crash
+  // must not leave a complete-looking, empty file).
+  const int fd = ::open(temp_path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const int saved = errno;
+    if (fd >= 0) ::close(fd);
+    throw cannot_create("cannot write " + final_path_ + " (syncing " + temp_path_ + "): " +
+                        (saved == ENOSPC ? "no space left on device" : std::strerror(saved)));
+  }
+  ::close(fd);
+  // Refuse to rename onto something that is no longer a regular file (it may have changed since
+  // the output was checked).
+  struct stat st {};
+  if (::lstat(final_path_.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    throw cannot_create("cannot create output file '" + final_path_ + "': it is no longer a regular file; nothing was replaced");
   std::error_code ec;
   std::filesystem::rename(temp_path_, final_path_, ec);
   if (ec) throw cannot_create("cannot rename " + temp_path_ + " to " + final_path_ + ": " + ec.message());
+  unregister_temp(temp_path_);
   committed_ = true;
 }
 
@@ -145,6 +204,7 @@ Hdf5Reader::Hdf5Reader(const std::string& path) : path_(path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw missing_input("cannot read '" + path + "': it is a directory; expected an HDF5 file");
+  require_regular_input(path, "HDF5 file");
   if (!std::filesystem::is_regular_file(path, ec)) throw missing_input("cannot open '" + path + "': no such file");
   if (H5Fis_hdf5(path.c_str()) <= 0) throw data_error(path + ": not an HDF5 file (or truncated); expected an HDF5 file written by rollspec");
   file_ = Hdf5Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
@@ -169,6 +229,15 @@ std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std
   std::size_t size = 0;
   if (H5LTget_dataset_info(file_.get(), dataset.c_str(), d.data(), &cls, &size) < 0 || cls != H5T_FLOAT)
     throw data_error(path_ + ": dataset " + dataset + " is not floating point");
+  // The size first: a 1e6 x 1e6 dataset must be refused, not attempted.
+  double n_values = 1.0;
+  for (auto v : d) n_values *= static_cast<double>(v);
+  if (n_values * sizeof(double) > available_memory())
+  {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " holds %.0f values (%.3g GiB)", n_values, n_values * 8.0 / 1073741824.0);
+    throw data_error(path_ + ": dataset " + dataset + buf + ", more than the memory available; allowed: a dataset that fits in memory");
+  }
   std::size_t n = 1;
   for (auto v : d) n *= v;
   std::vector<double> out(n);

@@ -24,6 +24,11 @@ class Hdf5Handle {
   Hdf5Handle(const Hdf5Handle&) = delete;
   Hdf5Handle& operator=(const Hdf5Handle&) = delete;
   hid_t get() const { return id_; }
+  hid_t release() {
+    const hid_t id = id_;
+    id_ = -1;
+    return id;
+  }
   bool valid() const { return id_ >= 0; }
 
  private:
@@ -32,6 +37,11 @@ class Hdf5Handle {
 
 // Silences HDF5's own error printing; rollspec reports errors itself.
 void quiet_hdf5_errors();
+
+// True once a write to an HDF5 file failed (e.g. a full disk). The library then still holds the
+// file whose close failed, and its exit-time cleanup (H5_term_library) can crash on it, so main()
+// leaves with _exit after reporting the error.
+bool hdf5_write_failed();
 
 class Hdf5Writer {
  public:

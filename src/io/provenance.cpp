@@ -10,6 +10,7 @@
 #include <ctime>
 #include <sstream>
 
+#include "kernels/contact/version.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/version.hpp"
@@ -55,6 +56,11 @@ std::string library_versions() {
     << EIGEN_MAJOR_VERSION << "." << EIGEN_MINOR_VERSION << "; boost " << BOOST_VERSION / 100000 << "."
     << BOOST_VERSION / 100 % 1000 << "; compiler " << __VERSION__;
   return s.str();
+}
+
+std::string code_identity() {
+  return std::string("rollspec ") + kVersion + "; git " + kGitSha + "; contact kernel " +
+         std::to_string(contact::kernel_version);
 }
 
 void write_provenance(Hdf5Writer& w, const std::string& filetype, const std::string& schema_version,

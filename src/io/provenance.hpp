@@ -20,6 +20,10 @@ std::string library_versions();
 // The command line that made the files of this process, for their provenance (quoted as a shell would).
 void record_command_line(int argc, char** argv);
 
+// What a result depends on besides the study: rollspec version, git sha of the build and the kernel
+// versions. Checkpoints record it, and --resume refuses chunks of another build.
+std::string code_identity();
+
 void write_provenance(Hdf5Writer& w, const std::string& filetype, const std::string& schema_version,
                       const std::string& study_text, std::uint64_t seed);
 

@@ -2,6 +2,9 @@
 #include "src/scenes/psd_rows.hpp"
 #include "src/scenes/study_welch.hpp"
 
+#include "kernels/beam/quadratic_hold_step.hpp"
+#include "kernels/integrators/exact_oscillator_step.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
@@ -224,6 +227,7 @@ class BallOnBeam final : public Scene {
     // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
     step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
     step_options_.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
+    check_step_coefficients(s);
     if (uses_table_) {
       study_ = &s;
       table_spec_ = stiffness::table_spec(s, radius, law.effective_modulus);
@@ -242,6 +246,30 @@ class BallOnBeam final : public Scene {
     rows_ = std::make_unique<PsdRows>(names, average_, welch_->frequencies(), band_min_, band_max_, 2 * welch_->n_freq() + 1);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
+  }
+
+  // The exact modal step of very high modes (omega h in the thousands) overflows double precision:
+  // every realisation would be non-finite. Refused here, before any work, with the largest mode
+  // count whose step is finite.
+  void check_step_coefficients(const Study& s) const {
+    if (dopri_) return;
+    const double h = 1.0 / (model_.sample_rate * static_cast<double>(step_options_.substeps));
+    const beam::ModalBeam& b = model_.beam;
+    for (int i = 0; i < b.modes(); ++i) {
+      const auto f = integrators::ExactOscillatorStep::make(b.omega(i), b.zeta(i), h);
+      bool ok = std::isfinite(f.a00) && std::isfinite(f.a01) && std::isfinite(f.a10) && std::isfinite(f.a11) &&
+                std::isfinite(f.b0) && std::isfinite(f.b1) && std::isfinite(f.c0) && std::isfinite(f.c1);
+      if (ok && step_options_.hold == beam::ForceHold::quadratic) {
+        const auto q = beam::QuadraticHoldStep::make(b.omega(i), b.zeta(i), h);
+        for (double v : {q.a00, q.a01, q.a10, q.a11, q.bm, q.b0, q.b1, q.cm, q.c0, q.c1}) ok = ok && std::isfinite(v);
+      }
+      if (ok) continue;
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
+                    b.modes(), i + 1, b.frequency(i), b.omega(i) * h);
+      s.refuse(s.integer("beam.modes") > 0 ? "beam.modes" : "beam.max_frequency",
+               std::string(buf) + "; allowed: at most " + std::to_string(i) + " modes at this step (or signal.integrator = dopri5)");
+    }
   }
 
   void prepare(bool quiet, bool rebuild) override {
@@ -451,7 +479,7 @@ class BallOnBeam final : public Scene {
     w.attribute("/ball", "speed", model_.traverse.speed);
 
     if (linearised_) write_linear_reference(w, e.frequency, e.sensors, K);
-    if (time_histories_) write_time_histories(w);
+    if (time_histories_) write_time_histories(w, sums.only);
   }
 
  private:
@@ -625,14 +653,15 @@ class BallOnBeam final : public Scene {
     }
   }
 
-  // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume.
-  void write_time_histories(io::Hdf5Writer& w) const {
+  // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume;
+  // with --only, the history of that one realisation.
+  void write_time_histories(io::Hdf5Writer& w, std::int64_t only) const {
     Workspace& ws = *workspaces_[0];
-    const std::size_t n = samples_, ns = model_.sensors.size(), nh = time_histories_;
+    const std::size_t n = samples_, ns = model_.sensors.size(), nh = only >= 0 ? 1 : time_histories_;
     std::vector<double> t(n), acc(nh * ns * n), force(nh * n), ball(nh * n), delta(nh * n);
     for (std::size_t j = 0; j < n; ++j) t[j] = static_cast<double>(j) / model_.sample_rate;
     for (std::size_t r = 0; r < nh; ++r) {
-      simulate(r, ws);
+      simulate(only >= 0 ? static_cast<std::uint64_t>(only) : r, ws);
       for (std::size_t s = 0; s < ns; ++s)
         std::copy(ws.result.sensor_acceleration[s].begin(), ws.result.sensor_acceleration[s].end(), acc.begin() + static_cast<std::ptrdiff_t>((r * ns + s) * n));
       std::copy(ws.result.contact_force.begin(), ws.result.contact_force.end(), force.begin() + static_cast<std::ptrdiff_t>(r * n));
@@ -648,6 +677,8 @@ class BallOnBeam final : public Scene {
     w.attach_scale("/time_history/sensor_acceleration", "/time_history/time", 2);
     for (const char* d : {"/time_history/contact_force", "/time_history/ball_acceleration", "/time_history/compression"})
       w.attach_scale(d, "/time_history/time", 1);
+    w.attribute("/time_history", "realisations",
+                only >= 0 ? std::to_string(only) : "0.." + std::to_string(time_histories_ - 1));
   }
 
   std::uint64_t seed_;

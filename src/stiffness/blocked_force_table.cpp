@@ -16,6 +16,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/stiffness/stiffness_table.hpp"
+#include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -165,8 +166,6 @@ BlockedForceTable build(const Study& s, double radius, double e_star, double loa
 }
 
 void write(const std::string& path, const BlockedForceTable& t, const Study& s) {
-  std::error_code ec;
-  fs::create_directories(fs::path(path).parent_path(), ec);
   io::Hdf5Writer w(path);
   io::write_provenance(w, kBlockedForceFileType, "1.0", s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
   w.write("/blocked_force/position", {t.position.size()}, t.position.data(), "m", "ball position along the strip");
@@ -199,10 +198,11 @@ BlockedForceTable resolve_blocked_force(const Study& s, double radius, double ef
     status = "cached " + path;
     return t;
   }
+  const std::string write_path = table_write_path(s, path, kBlockedForceFileType);
   BlockedForceTable t = build(s, radius, effective_modulus, load, quiet);
   t.inputs = inputs;
   t.input_hash = hash;
-  if (ensemble::mpi_rank() == 0) write(path, t, s);
+  if (ensemble::mpi_rank() == 0) write(write_path, t, s);
   ensemble::mpi_barrier();
   status = "built " + path;
   return t;

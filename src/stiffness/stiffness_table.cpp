@@ -1,4 +1,5 @@
 #include "src/stiffness/stiffness_table.hpp"
+#include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
 
 #include <omp.h>
@@ -326,8 +327,6 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
 }
 
 void write_table(const std::string& path, const StiffnessTable& t, const std::string& study_text, std::uint64_t seed) {
-  std::error_code ec;
-  fs::create_directories(fs::path(path).parent_path(), ec);
   io::Hdf5Writer w(path);
   io::write_provenance(w, kTableFileType, kTableSchemaVersion, study_text, seed);
   const std::size_t n = t.approach.size();
@@ -373,8 +372,10 @@ StiffnessTable resolve_table(const study::Study& s, double ball_radius, double e
     return read_table(path);
   }
   if (state == TableState::mismatched && !rebuild) throw data_error(why + "\nrun with --rebuild to replace it");
+  // Before the build: never replace anything but a rollspec table.
+  const std::string write_path = table_write_path(s, path, kTableFileType);
   StiffnessTable t = build_table(s, ball_radius, effective_modulus, spec, quiet);
-  if (ensemble::mpi_rank() == 0) write_table(path, t, s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
+  if (ensemble::mpi_rank() == 0) write_table(write_path, t, s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
   ensemble::mpi_barrier();  // the table file exists for every rank from here on
   status = "built " + path;
   return t;

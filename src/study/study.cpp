@@ -1,5 +1,7 @@
 #include "src/study/study.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <charconv>
@@ -11,6 +13,7 @@
 #include <sstream>
 
 #include "src/error.hpp"
+#include "src/io/input_file.hpp"
 
 namespace po = boost::program_options;
 namespace fs = std::filesystem;
@@ -50,19 +53,19 @@ std::vector<RawEntry> scan_lines(const std::string& file, const std::string& tex
     if (s.empty() || s[0] == ';') continue;
     if (s.front() == '[') {
       if (s.back() != ']' || s.size() < 3)
-        throw config_error(file + ":" + std::to_string(line) + ": malformed section header '" + trim(raw) +
+        throw config_error(file + ":" + std::to_string(line) + ": malformed section header '" + clip(trim(raw)) +
                            "'; expected [name]");
       section = trim(s.substr(1, s.size() - 2));
       continue;
     }
     const auto eq = s.find('=');
     if (eq == std::string::npos)
-      throw config_error(file + ":" + std::to_string(line) + ": cannot read '" + trim(raw) +
+      throw config_error(file + ":" + std::to_string(line) + ": cannot read '" + clip(trim(raw)) +
                          "'; expected [section] or key = value");
     const std::string key = trim(s.substr(0, eq));
     if (key.empty()) throw config_error(file + ":" + std::to_string(line) + ": a line '= value' has no key");
     if (section.empty())
-      throw config_error(file + ":" + std::to_string(line) + ": key '" + key +
+      throw config_error(file + ":" + std::to_string(line) + ": key '" + clip(key) +
                          "' stands before any [section]; every key belongs to a section");
     out.push_back({section + "." + key, trim(s.substr(eq + 1)), line});
   }
@@ -80,7 +83,7 @@ bool is_power_of_two(long long v) { return v > 0 && (v & (v - 1)) == 0; }
 // Validates one value against its key; returns the canonical text of the value.
 std::string check_value(const KeySpec& spec, const std::string& value, const Origin& origin,
                         const std::string& directory) {
-  const std::string head = origin.describe() + ": [" + spec.section + "] " + spec.key + " = " + value + ": ";
+  const std::string head = origin.describe() + ": [" + spec.section + "] " + spec.key + " = " + clip(value) + ": ";
   const std::string allowed = "; allowed: " + spec.allowed();
   if (value.empty() && spec.type == KeyType::text) return value;
   if (value.empty()) throw config_error(origin.describe() + ": [" + spec.section + "] " + spec.key + " has no value" + allowed);
@@ -124,6 +127,10 @@ std::string check_value(const KeySpec& spec, const std::string& value, const Ori
       std::error_code ec;
       if (fs::is_directory(p, ec))
         throw missing_input(head + "is a directory, not a file (looked for " + p.string() + ")" + allowed);
+      struct stat st {};
+      if (::stat(p.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw missing_input(head + "is " + io::file_kind(st.st_mode) + ", not a regular file (looked for " + p.string() +
+                            ")" + allowed);
       if (!fs::is_regular_file(p, ec))
         throw missing_input(head + "no such file (looked for " + p.string() + ")" + allowed);
       return value;
@@ -161,10 +168,10 @@ void refuse_unknown(const std::vector<KeySpec>& keys, const std::string& full, c
   const std::string section = full.substr(0, dot), key = full.substr(dot + 1);
   const std::string known = known_keys_of(keys, section);
   if (known.empty())
-    throw config_error(origin.describe() + ": unknown section [" + section + "] (key " + key + " = " + value +
-                       ") for scene " + scene + "; allowed sections: " + known_sections(keys));
-  throw config_error(origin.describe() + ": unknown key [" + section + "] " + key + " = " + value + " for scene " +
-                     scene + "; allowed keys in [" + section + "]: " + known);
+    throw config_error(origin.describe() + ": unknown section [" + clip(section) + "] (key " + clip(key) + " = " +
+                       clip(value) + ") for scene " + scene + "; allowed sections: " + known_sections(keys));
+  throw config_error(origin.describe() + ": unknown key [" + section + "] " + clip(key) + " = " + clip(value) +
+                     " for scene " + scene + "; allowed keys in [" + section + "]: " + known);
 }
 
 }  // namespace
@@ -179,6 +186,7 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
   std::error_code dir_ec;
   if (fs::is_directory(path, dir_ec))
     throw missing_input("cannot read study file '" + path + "': it is a directory; expected an INI file");
+  io::require_regular_input(path, "study file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open study file '" + path + "'");
   std::ostringstream buf;
@@ -203,7 +211,7 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const auto& opt = parsed.options[i];
     if (opt.string_key != lines[i].full_key)
-      throw config_error(path + ":" + std::to_string(lines[i].line) + ": could not read key '" + lines[i].full_key + "'");
+      throw config_error(path + ":" + std::to_string(lines[i].line) + ": could not read key '" + clip(lines[i].full_key) + "'");
     lines[i].value = opt.value.empty() ? std::string() : trim(opt.value.front());
   }
 
@@ -217,8 +225,8 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
     const auto it = first_line.find(e.full_key);
     if (it != first_line.end()) {
       const auto dot = e.full_key.find('.');
-      throw config_error(path + ":" + std::to_string(e.line) + ": duplicated key [" + e.full_key.substr(0, dot) + "] " +
-                         e.full_key.substr(dot + 1) + " = " + e.value + " (first set at line " +
+      throw config_error(path + ":" + std::to_string(e.line) + ": duplicated key [" + clip(e.full_key.substr(0, dot)) + "] " +
+                         clip(e.full_key.substr(dot + 1)) + " = " + clip(e.value) + " (first set at line " +
                          std::to_string(it->second) + "); each key may appear once");
     }
     first_line[e.full_key] = e.line;
@@ -233,7 +241,12 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
     const auto eq = o.find('=');
     const auto dot = o.find('.');
     if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || dot + 1 == eq)
-      throw usage_error("--set " + o + ": expected section.key=value, e.g. --set study.realisations=100");
+      throw usage_error("--set " + clip(o) + ": expected section.key=value, e.g. --set study.realisations=100");
+    // A line break would inject lines into the resolved study stored in every output.
+    for (const char ch : o)
+      if ((static_cast<unsigned char>(ch) < 0x20 && ch != '\t') || ch == 0x7f)
+        throw usage_error("--set " + clip(o) + ": holds a line break or control character (byte " +
+                          std::to_string(static_cast<unsigned char>(ch)) + "); allowed: one line of text");
     sets.push_back({trim(o.substr(0, eq)), trim(o.substr(eq + 1))});
   }
 
@@ -272,6 +285,18 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
       throw config_error(path + ": missing required key [" + k.section + "] " + k.key + " (" + k.doc +
                          "); allowed: " + k.allowed());
     s.entries_[k.full_name()] = {check_value(k, *k.default_value, Origin{path, 0}, s.directory_), Origin{path, 0}};
+  }
+  // The resolved study is stored as one HDF5 attribute in every output, and an attribute holds at
+  // most 64 KiB: refuse a longer study now, naming its longest value, not at the final write.
+  constexpr std::size_t kMaxStudyText = 60 * 1024;
+  const std::size_t size = s.canonical_text().size();
+  if (size > kMaxStudyText) {
+    std::string longest;
+    for (const auto& [key, e] : s.entries_)
+      if (longest.empty() || e.value.size() > s.entries_.at(longest).value.size()) longest = key;
+    s.refuse(longest, "makes the resolved study " + std::to_string(size) + " bytes long (this value: " +
+                          std::to_string(s.entries_.at(longest).value.size()) + " bytes); allowed: a study of at most " +
+                          std::to_string(kMaxStudyText) + " bytes, which every output file stores");
   }
   return s;
 }
@@ -313,7 +338,7 @@ std::vector<double> Study::numbers(const std::string& k, std::size_t expected) c
     char* end = nullptr;
     const double v = std::strtod(item.c_str(), &end);
     if (end == item.c_str() || *end != '\0' || !std::isfinite(v))
-      refuse(k, "'" + item + "' is not a finite number; allowed: comma-separated numbers");
+      refuse(k, "'" + clip(item) + "' is not a finite number; allowed: comma-separated numbers");
     out.push_back(v);
   }
   if (expected && out.size() != expected)
@@ -324,7 +349,7 @@ std::vector<double> Study::numbers(const std::string& k, std::size_t expected) c
 std::string Study::where(const std::string& k) const {
   const Entry& e = entry(k);
   const auto dot = k.find('.');
-  return e.origin.describe() + ": [" + k.substr(0, dot) + "] " + k.substr(dot + 1) + " = " + e.value;
+  return e.origin.describe() + ": [" + k.substr(0, dot) + "] " + k.substr(dot + 1) + " = " + clip(e.value);
 }
 
 void Study::refuse(const std::string& k, const std::string& why) const { throw config_error(where(k) + ": " + why); }
@@ -349,5 +374,21 @@ std::string Study::canonical_text_without(const std::vector<std::string>& exclud
 }
 
 std::string Study::canonical_text() const { return canonical_text_without({}); }
+
+std::vector<std::string> Study::overrides() const {
+  std::vector<std::string> out;
+  for (const auto& k : keys_) {
+    const Entry& e = entry(k.full_name());
+    if (e.origin.line < 0) out.push_back(k.full_name() + "=" + e.value);
+  }
+  return out;
+}
+
+std::vector<std::string> Study::input_files() const {
+  std::vector<std::string> out = {file_};
+  for (const auto& k : keys_)
+    if (k.type == KeyType::path && entry(k.full_name()).value != "none") out.push_back(path(k.full_name()));
+  return out;
+}
 
 }  // namespace rollspec::study

@@ -60,6 +60,11 @@ class Study {
   std::string canonical_text() const;
   // The same without the listed keys (e.g. study.realisations for checkpoint hashes).
   std::string canonical_text_without(const std::vector<std::string>& excluded) const;
+  // The --set overrides as "section.key=value" with canonical values (paths made absolute), so a
+  // later run (--resume) can repeat them from another directory.
+  std::vector<std::string> overrides() const;
+  // Files the study reads: the study file and every path-valued key that is not "none".
+  std::vector<std::string> input_files() const;
 
  private:
   std::string file_;

@@ -13,6 +13,7 @@
 #include "kernels/texture/self_affine_psd.hpp"
 #include "kernels/texture/tabulated_psd.hpp"
 #include "src/error.hpp"
+#include "src/io/input_file.hpp"
 #include "src/io/csv_table.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/study.hpp"
@@ -95,6 +96,7 @@ texture::Psd profile_psd(const Study& s) {
   std::vector<texture::Profile> profiles;
   for (const auto& f : files) {
     const std::string p = study_relative(s, f);
+    io::require_regular_input(p, "profile file (" + s.where("texture.profiles") + ")");
     if (!fs::is_regular_file(p)) throw missing_input(s.where("texture.profiles") + ": no such profile file " + p);
     profiles.push_back(read_profile(p));
     if (profiles.back().z.size() < 8)
@@ -181,6 +183,13 @@ texture::Psd study_psd(const Study& s) {
 
 spectral::Amplitudes study_amplitudes(const Study& s) {
   return s.text("texture.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
+}
+
+std::vector<std::string> profile_files(const Study& s) {
+  std::vector<std::string> out;
+  if (!s.has("texture.source") || s.text("texture.source") != "profiles") return out;
+  for (const auto& f : s.list("texture.profiles")) out.push_back(study_relative(s, f));
+  return out;
 }
 
 std::string psd_input_fingerprint(const Study& s) {

@@ -28,6 +28,9 @@ std::vector<study::KeySpec> surface_keys();
 texture::Psd study_psd(const study::Study& s);
 spectral::Amplitudes study_amplitudes(const study::Study& s);
 
+// The measured profile files of [texture] profiles (empty for other sources or scenes without [texture]).
+std::vector<std::string> profile_files(const study::Study& s);
+
 // Contents of every input file the PSD depends on, for hashes of cached tables.
 std::string psd_input_fingerprint(const study::Study& s);
 

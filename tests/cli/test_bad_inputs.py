@@ -7,12 +7,15 @@ existed is left byte-identical with no temporary file (`*.tmp*`) beside it. `rol
 writes no file: there the check is that nothing at all reaches stdout (no partial table)."""
 import os
 import shutil
+import signal
+import subprocess
+import time
 
 import h5py
 import numpy as np
 import pytest
 
-from conftest import EX_CANTCREAT, EX_CONFIG, EX_DATAERR, EX_NOINPUT, SMALL_OSCILLATOR, run
+from conftest import BIN, EX_CANTCREAT, EX_CONFIG, EX_DATAERR, EX_NOINPUT, SMALL_OSCILLATOR, run
 
 SENTINEL = b"precious output that a refused run must not touch\n"
 
@@ -481,28 +484,39 @@ def test_result_is_a_directory(tmp_path):
 
 # --- checkpoints of `rollspec run --resume` ----------------------------------------------------------
 
-def test_checkpoint_of_another_study_and_damaged_checkpoint(tmp_path, small_study):
-    """A run whose final rename fails keeps its checkpoints; resuming a different study on them is
-    refused (hash mismatch), and so is a truncated checkpoint; the output in place is untouched."""
-    study_a = small_study(realisations=8, chunk=4, duration=4, name="a.ini")
+def test_checkpoint_of_another_study_and_damaged_checkpoint(tmp_path, good_result):
+    """An interrupted run keeps its checkpoints; resuming a different study on them is refused
+    (naming the differing key), and so is a truncated checkpoint; the result in place is untouched."""
+    study_a = small_study_text(tmp_path / "a.ini", realisations=3000, chunk=16, duration=16)
     out = tmp_path / "r.h5"
-    out.mkdir()
-    (out / "keep").write_bytes(b"x")  # a non-empty directory: the final rename onto it fails
-    r = run(["run", study_a, "--out", out, "--quiet"])
-    assert_refused(r, EX_CANTCREAT, ["r.h5"])
-    chunks = sorted((tmp_path / "r.h5.checkpoint").glob("chunk_*.bin"))
+    shutil.copyfile(good_result, out)
+    before = out.read_bytes()
+    ck = tmp_path / "r.h5.checkpoint"
+    p = subprocess.Popen([BIN, "run", study_a, "--out", out, "--quiet"], stderr=subprocess.PIPE, text=True,
+                         env={**os.environ, "OMP_NUM_THREADS": "1"})
+    deadline = time.time() + 30
+    while time.time() < deadline and p.poll() is None and not list(ck.glob("chunk_*.bin")):
+        time.sleep(0.005)
+    p.send_signal(signal.SIGINT)
+    assert p.wait(timeout=30) == 130, p.stderr.read()
+    chunks = sorted(ck.glob("chunk_*.bin"))
     assert chunks, "the completed chunks stay checkpointed"
     assert not list(tmp_path.glob("r.h5.tmp*"))
-    shutil.rmtree(out)
-    put_sentinel(out)
 
     study_b = tmp_path / "b.ini"
     study_b.write_text(study_a.read_text().replace("seed = 42", "seed = 43"))
     r = run(["run", study_b, "--out", out, "--resume", "--quiet"])
-    assert_refused(r, EX_DATAERR, ["r.h5.checkpoint/chunk_", "belongs to a different study", "without --resume"])
-    assert_untouched(out)
+    assert_refused(r, EX_DATAERR, ["r.h5.checkpoint", "belongs to a different study", "[study] seed = 43 (checkpoint: 42)",
+                                   "--restart"])
+    assert out.read_bytes() == before
 
     chunks[0].write_bytes(chunks[0].read_bytes()[:-5])
     r = run(["run", study_a, "--out", out, "--resume", "--quiet"])
     assert_refused(r, EX_DATAERR, [chunks[0].name, "damaged checkpoint"])
-    assert_untouched(out)
+    assert out.read_bytes() == before
+    assert not list(tmp_path.rglob("*.tmp*"))
+
+
+def small_study_text(path, realisations, chunk, duration):
+    path.write_text(SMALL_OSCILLATOR.format(realisations=realisations, chunk=chunk, duration=duration))
+    return path
