@@ -1,5 +1,6 @@
 """The progress bar on a real terminal (tmux): fitted to 50 and 200 columns without wrapping, no
 stale characters, a final "took" line, and Ctrl-C's message on a line of its own."""
+import os
 import re
 import shutil
 import subprocess
@@ -13,44 +14,49 @@ pytestmark = pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux absen
 STUDY = SOURCE / "studies" / "seed001-beam-s.ini"
 
 
-def tmux(*args):
-    return subprocess.run(["tmux", "-L", "rollspec-test", *args], capture_output=True, text=True, timeout=30)
+class Terminal:
+    """A tmux server of its own (a socket per test, so one test's shutdown never meets the next)."""
 
+    def __init__(self, name):
+        self.name = name
 
-def screen():
-    return tmux("capture-pane", "-p", "-t", "t").stdout.splitlines()
+    def tmux(self, *args):
+        return subprocess.run(["tmux", "-L", self.name, *args], capture_output=True, text=True, timeout=30)
+
+    def start(self, tmp_path, columns, realisations):
+        out = tmp_path / "r.h5"
+        cmd = f"{BIN} run {STUDY} --out {out} --set study.realisations={realisations} --set ensemble.chunk_size=4; sleep 60"
+        r = self.tmux("new-session", "-d", "-s", "t", "-x", str(columns), "-y", "30", cmd)
+        assert r.returncode == 0, r.stderr
+
+    def screen(self):
+        return self.tmux("capture-pane", "-p", "-t", "t").stdout.splitlines()
+
+    def wait_for(self, pattern, seconds=60):
+        end = time.time() + seconds
+        while time.time() < end:
+            lines = self.screen()
+            if any(re.search(pattern, line) for line in lines):
+                return lines
+            time.sleep(0.2)
+        raise AssertionError(f"{pattern!r} never appeared:\n" + "\n".join(self.screen()))
 
 
 @pytest.fixture
-def terminal():
-    yield
-    tmux("kill-server")
-
-
-def start(tmp_path, columns, realisations):
-    out = tmp_path / "r.h5"
-    cmd = f"{BIN} run {STUDY} --out {out} --set study.realisations={realisations} --set ensemble.chunk_size=4; sleep 60"
-    assert tmux("new-session", "-d", "-s", "t", "-x", str(columns), "-y", "30", cmd).returncode == 0
-
-
-def wait_for(pattern, seconds=60):
-    end = time.time() + seconds
-    while time.time() < end:
-        lines = screen()
-        if any(re.search(pattern, line) for line in lines):
-            return lines
-        time.sleep(0.2)
-    raise AssertionError(f"{pattern!r} never appeared:\n" + "\n".join(screen()))
+def terminal(request):
+    t = Terminal(f"rollspec-test-{os.getpid()}-{request.node.name}".replace("[", "-").replace("]", ""))
+    yield t
+    t.tmux("kill-server")
 
 
 @pytest.mark.parametrize("columns", [50, 200])
 def test_bar_fits_and_ends_with_took(tmp_path, terminal, columns):
-    start(tmp_path, columns, 160)
-    during = wait_for(r"^realisations .*ETA")
+    terminal.start(tmp_path, columns, 160)
+    during = terminal.wait_for(r"^realisations .*ETA")
     bar = next(line for line in during if line.startswith("realisations"))
     assert len(bar) < columns and "ETA" in bar
     assert not any(line.startswith(("ETA", "s", "/s")) for line in during), "the bar wrapped"
-    lines = wait_for(r"^wrote ")
+    lines = terminal.wait_for(r"^wrote ")
     took = [line for line in lines if line.startswith("realisations")]
     assert len(took) == 1, lines
     assert re.fullmatch(r"realisations( \[#+\])? 160/160  [0-9.]+/s  took [0-9]+s", took[0]), took[0]
@@ -58,8 +64,8 @@ def test_bar_fits_and_ends_with_took(tmp_path, terminal, columns):
 
 
 def test_interrupt_message_starts_its_own_line(tmp_path, terminal):
-    start(tmp_path, 120, 100000)
-    wait_for(r"^realisations .*ETA")
-    tmux("send-keys", "-t", "t", "C-c")
-    lines = wait_for(r"error: interrupted")
+    terminal.start(tmp_path, 120, 100000)
+    terminal.wait_for(r"^realisations .*ETA")
+    terminal.tmux("send-keys", "-t", "t", "C-c")
+    lines = terminal.wait_for(r"error: interrupted")
     assert any(line.startswith("rollspec run: error: interrupted") for line in lines), lines
