@@ -13,7 +13,7 @@ trap 'rm -rf "$work"' EXIT
 
 # Random-oscillator verification study: mean of 200, 95 % interval, exact answer, bands.
 "$bin" run studies/random-oscillator.ini --out "$work/ro.h5" --quiet
-post psd "$work/ro.h5" --bands --out "$docs/random-oscillator-psd.png"
+post psd "$work/ro.h5" --bands --xscale log --out "$docs/random-oscillator-psd.png"
 
 # Seed 002 rig at 1 m/s: the mean of the 5 sensors beside the frequency-domain solution.
 "$bin" run studies/seed002-rig-1ms.ini --out "$work/rig.h5" --quiet

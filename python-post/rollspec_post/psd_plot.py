@@ -84,6 +84,15 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
         inb = (band_data["lower_frequency"] >= fmin) & (band_data["upper_frequency"] <= fmax)
         ax.hlines(band_data["level_db"][row][inb], band_data["lower_frequency"][inb], band_data["upper_frequency"][inb],
                   color="C1", lw=2.0, label="third-octave bands")
+    # y from the data inside the band range: the bins next to 0 Hz on a linear axis carry no power
+    # worth the scale.
+    lowest = max(fmin, band_data["lower_frequency"][0]) if have_bands else fmin
+    inside = sel & (freq >= lowest)
+    if inside.any():
+        shown = [db(lo[row, inside]), db(hi[row, inside])] + ([db(ref[row, inside])] if ref is not None else [])
+        finite = np.concatenate([v[np.isfinite(v)] for v in shown])
+        if finite.size:
+            ax.set_ylim(finite.min() - 3.0, finite.max() + 3.0)
     ax.set_xscale(xscale)
     ax.set_xlim(fmin if xscale == "linear" else max(fmin, freq[1]), fmax)
     ax.set_xlabel("frequency (Hz)")
