@@ -2,4 +2,6 @@
 
 __version__ = "0.1.0"
 
-from .notebook import open_result, run  # noqa: E402,F401
+from .notebook import open_result, run  # noqa: E402,F401  (the package API)
+
+__all__ = ["open_result", "run"]

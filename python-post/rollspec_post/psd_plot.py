@@ -52,7 +52,6 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
         units = text_attr(f["/psd/mean"], "units")
         k = int(f["/psd"].attrs["realisations"])
         level = float(f["/psd"].attrs["confidence_level"])
-        scene = text_attr(f, "scene", "")
         band_data = read_bands(f)
     row = sensor_row(names, sensor)
     have_bands = band_data["lower_frequency"].size > 0

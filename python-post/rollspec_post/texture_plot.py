@@ -1,5 +1,4 @@
 """`texture`: a line texture, a surface image, and the target PSD against the realised one."""
-import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 

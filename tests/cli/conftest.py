@@ -91,6 +91,21 @@ band_max = 4000
 """
 
 
+def assert_refused(r, code, fragments):
+    """A clean refusal: the exit code, no internal error, and every fragment in the message."""
+    assert r.returncode == code, f"exit {r.returncode}, expected {code}: {r.stderr[:2000]}"
+    assert "internal error" not in r.stderr and "Traceback" not in r.stderr, r.stderr[:2000]
+    for frag in fragments:
+        assert frag in r.stderr, f"{frag!r} not in {r.stderr[:2000]!r}"
+
+
+def oscillator_study(tmp_path, realisations=4):
+    """SMALL_OSCILLATOR with 4 s records, chunks of 4, as s.ini in tmp_path."""
+    p = tmp_path / "s.ini"
+    p.write_text(SMALL_OSCILLATOR.format(realisations=realisations, chunk=4, duration=4))
+    return p
+
+
 def run(args, env=None, **kw):
     full_env = dict(os.environ)
     if env:

@@ -15,16 +15,10 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import BIN, EX_CANTCREAT, EX_CONFIG, EX_DATAERR, EX_NOINPUT, SMALL_OSCILLATOR, run
+from conftest import BIN, EX_CANTCREAT, EX_DATAERR, EX_NOINPUT, SMALL_OSCILLATOR, assert_refused, run
 
 SENTINEL = b"precious output that a refused run must not touch\n"
 
-
-def assert_refused(r, code, fragments):
-    assert r.returncode == code, f"exit {r.returncode}, expected {code}: {r.stderr}"
-    assert "internal error" not in r.stderr, r.stderr
-    for frag in fragments:
-        assert frag in r.stderr, f"{frag!r} not in {r.stderr!r}"
 
 
 def put_sentinel(path):

@@ -13,16 +13,10 @@ import numpy as np
 import pytest
 
 from conftest import (BIN, EX_CANTCREAT, EX_DATAERR, EX_INTERRUPTED, EX_USAGE, SMALL_OSCILLATOR, SOURCE,
-                      assert_bitwise_equal, run)
+                      assert_bitwise_equal, assert_refused, run)
 
 SENTINEL = b"precious user data\n"
 
-
-def refused(r, code, fragments):
-    assert r.returncode == code, f"exit {r.returncode}, expected {code}: {r.stderr}"
-    assert "internal error" not in r.stderr and "Traceback" not in r.stderr, r.stderr
-    for frag in fragments:
-        assert frag in r.stderr, f"{frag!r} not in {r.stderr!r}"
 
 
 def no_temps(d):
@@ -66,12 +60,12 @@ def test_resume_without_set_reuses_the_checkpoint_study(tmp_path):
 
     # A different --set is refused, naming the key and both values; nothing changes.
     r = run(["run", study, "--out", out, "--resume", "--quiet", "--set", "study.realisations=500"])
-    refused(r, EX_DATAERR, ["[study] realisations: --set 500, the checkpoint has 3000", "--restart"])
+    assert_refused(r, EX_DATAERR, ["[study] realisations: --set 500, the checkpoint has 3000", "--restart"])
     assert chunks(ck) == saved and not out.exists()
 
     # A plain run refuses to delete the unfinished work.
     r = run(["run", study, "--out", out, "--quiet"])
-    refused(r, EX_CANTCREAT, ["r.h5.checkpoint holds an unfinished run", "--resume", "--restart"])
+    assert_refused(r, EX_CANTCREAT, ["r.h5.checkpoint holds an unfinished run", "--resume", "--restart"])
     assert chunks(ck) == saved and not out.exists()
 
     # The README's resume line, without the --set: the checkpoint's 3000 realisations are finished.
@@ -97,7 +91,7 @@ def test_restart_discards_an_unfinished_checkpoint(tmp_path):
     with h5py.File(out) as f:
         assert b"realisations = 8" in f.attrs["study"]
     assert not (tmp_path / "r.h5.checkpoint").exists()
-    refused(run(["run", study, "--out", out, "--resume", "--restart"]), EX_USAGE, ["--resume and --restart"])
+    assert_refused(run(["run", study, "--out", out, "--resume", "--restart"]), EX_USAGE, ["--resume and --restart"])
 
 
 def test_resume_after_the_study_file_changed_is_refused(tmp_path):
@@ -107,7 +101,7 @@ def test_resume_after_the_study_file_changed_is_refused(tmp_path):
     saved = chunks(ck)
     study.write_text(study.read_text().replace("seed = 42", "seed = 43"))
     r = run(["run", study, "--out", out, "--resume", "--quiet"])
-    refused(r, EX_DATAERR, ["belongs to a different study", "[study] seed = 43 (checkpoint: 42)", "--restart"])
+    assert_refused(r, EX_DATAERR, ["belongs to a different study", "[study] seed = 43 (checkpoint: 42)", "--restart"])
     assert chunks(ck) == saved
 
 
@@ -135,11 +129,11 @@ def test_resume_refuses_a_checkpoint_of_another_build(tmp_path):
     manifest.write_text(body + "checksum = %016x\n" % fnv1a64(body.encode()))
     saved = chunks(ck)
     r = run(["run", study, "--out", out, "--resume", "--quiet"])
-    refused(r, EX_DATAERR, ["written by another build (rollspec 0.1.0; git 0123456789ab; contact kernel 1)",
+    assert_refused(r, EX_DATAERR, ["written by another build (rollspec 0.1.0; git 0123456789ab; contact kernel 1)",
                             "never mixed", "--restart"])
     assert chunks(ck) == saved
     manifest.write_text(body + "checksum = 0000000000000000\n")
-    refused(run(["run", study, "--out", out, "--resume", "--quiet"]), EX_DATAERR, ["damaged checkpoint manifest"])
+    assert_refused(run(["run", study, "--out", out, "--resume", "--quiet"]), EX_DATAERR, ["damaged checkpoint manifest"])
 
 
 def test_version_records_the_build_git_sha():
@@ -162,11 +156,11 @@ def test_checkpoint_directory_with_user_files_is_not_touched(tmp_path):
     (ck / "notes.txt").write_bytes(SENTINEL)
     for extra in ([], ["--restart"]):
         r = run(["run", study, "--out", out, "--quiet", *extra])
-        refused(r, EX_CANTCREAT, ["r.h5.checkpoint holds files rollspec did not write (notes.txt)", "never removes them"])
+        assert_refused(r, EX_CANTCREAT, ["r.h5.checkpoint holds files rollspec did not write (notes.txt)", "never removes them"])
         assert (ck / "notes.txt").read_bytes() == SENTINEL and sorted(os.listdir(ck)) == ["notes.txt"]
     shutil.rmtree(ck)
     ck.write_bytes(SENTINEL)
-    refused(run(["run", study, "--out", out, "--quiet"]), EX_CANTCREAT, ["r.h5.checkpoint exists and is a regular file"])
+    assert_refused(run(["run", study, "--out", out, "--quiet"]), EX_CANTCREAT, ["r.h5.checkpoint exists and is a regular file"])
     assert ck.read_bytes() == SENTINEL
     assert not out.exists()
 
@@ -176,19 +170,19 @@ def test_checkpoint_directory_with_user_files_is_not_touched(tmp_path):
 def test_output_equal_to_an_input_is_refused(tmp_path):
     study = study_file(tmp_path)
     before = study.read_bytes()
-    refused(run(["run", study, "--out", study, "--quiet"]), EX_USAGE, ["is also an input", "s.ini"])
+    assert_refused(run(["run", study, "--out", study, "--quiet"]), EX_USAGE, ["is also an input", "s.ini"])
     link = tmp_path / "link.h5"
     link.symlink_to(study)
-    refused(run(["run", study, "--out", link, "--quiet"]), EX_USAGE, ["is also an input"])
+    assert_refused(run(["run", study, "--out", link, "--quiet"]), EX_USAGE, ["is also an input"])
     h5study = tmp_path / "study.h5"
     h5study.write_bytes(before)
     r = run(["run", "study.h5", "--quiet"], cwd=tmp_path)  # the default output name is the study itself
-    refused(r, EX_USAGE, ["study.h5 is also an input"])
+    assert_refused(r, EX_USAGE, ["study.h5 is also an input"])
     assert study.read_bytes() == before and h5study.read_bytes() == before and link.is_symlink()
     sig = tmp_path / "sig.csv"
     sig.write_text("a\n" + "".join(f"{np.sin(i)}\n" for i in range(64)))
     sig_before = sig.read_bytes()
-    refused(run(["psd", sig, "--fs", 100, "--segment", 16, "--out", sig]), EX_USAGE, ["is also the input"])
+    assert_refused(run(["psd", sig, "--fs", 100, "--segment", 16, "--out", sig]), EX_USAGE, ["is also the input"])
     assert sig.read_bytes() == sig_before
     no_temps(tmp_path)
 
@@ -203,7 +197,7 @@ def test_devices_fifos_and_links_to_them_are_not_replaced(tmp_path):
     link.symlink_to("/dev/null")
     for target, what in ((os.devnull, "a character device"), (fifo, "a FIFO"), (link, "a symbolic link to a character device")):
         r = run(["run", study, "--out", target, "--quiet", "--force"])
-        refused(r, EX_CANTCREAT, ["cannot create output file", what, "never replaces"])
+        assert_refused(r, EX_CANTCREAT, ["cannot create output file", what, "never replaces"])
     assert os.path.exists("/dev/null") and not os.path.isfile("/dev/null")
     assert fifo.is_fifo() and link.is_symlink()
     no_temps(tmp_path)
@@ -213,7 +207,7 @@ def test_a_regular_file_is_replaced_only_if_it_is_a_result_or_forced(tmp_path):
     study = study_file(tmp_path)
     out = tmp_path / "r.h5"
     out.write_bytes(SENTINEL)
-    refused(run(["run", study, "--out", out, "--quiet"]), EX_CANTCREAT,
+    assert_refused(run(["run", study, "--out", out, "--quiet"]), EX_CANTCREAT,
             ["exists and is not a rollspec file of filetype 'rollspec-result'", "--force"])
     assert out.read_bytes() == SENTINEL
     assert run(["run", study, "--out", out, "--quiet", "--force"]).returncode == 0
@@ -222,7 +216,7 @@ def test_a_regular_file_is_replaced_only_if_it_is_a_result_or_forced(tmp_path):
     sig.write_text("a\n" + "".join(f"{np.sin(i)}\n" for i in range(64)))
     psd = tmp_path / "psd.csv"
     psd.write_bytes(SENTINEL)
-    refused(run(["psd", sig, "--fs", 100, "--segment", 16, "--out", psd]), EX_CANTCREAT, ["not a PSD written by rollspec psd"])
+    assert_refused(run(["psd", sig, "--fs", 100, "--segment", 16, "--out", psd]), EX_CANTCREAT, ["not a PSD written by rollspec psd"])
     assert psd.read_bytes() == SENTINEL
     assert run(["psd", sig, "--fs", 100, "--segment", 16, "--out", psd, "--force"]).returncode == 0
     assert run(["psd", sig, "--fs", 100, "--segment", 16, "--out", psd]).returncode == 0
@@ -269,10 +263,10 @@ def test_rebuild_never_overwrites_a_file_that_is_not_a_table(tmp_path):
     victim = tmp_path / "victim.txt"
     victim.write_bytes(SENTINEL)
     r = run(["stiffness", s, "--quiet", "--rebuild", "--set", "stiffness.table=victim.txt"])
-    refused(r, EX_CANTCREAT, ["victim.txt", "rollspec-stiffness-table", "--rebuild replaces only rollspec tables"])
+    assert_refused(r, EX_CANTCREAT, ["victim.txt", "rollspec-stiffness-table", "--rebuild replaces only rollspec tables"])
     assert victim.read_bytes() == SENTINEL
     r = run(["stiffness", s, "--quiet", "--rebuild", "--set", "stiffness.table=hertz.ini"])
-    refused(r, EX_USAGE, ["is also an input"])
+    assert_refused(r, EX_USAGE, ["is also an input"])
     no_temps(tmp_path)
 
 
@@ -281,10 +275,10 @@ def test_table_dir_is_not_created_outside_the_study_directory(tmp_path):
     d.mkdir()
     s = hertz_study(d)
     r = run(["stiffness", s, "--quiet", "--set", "stiffness.table_dir=../made/by/rollspec"])
-    refused(r, 78, ["[stiffness] table_dir = ../made/by/rollspec", "only below the study's directory"])
+    assert_refused(r, 78, ["[stiffness] table_dir = ../made/by/rollspec", "only below the study's directory"])
     assert not (tmp_path / "made").exists()
     r = run(["stiffness", s, "--quiet", "--set", f"stiffness.table_dir={tmp_path}/abs"])
-    refused(r, 78, ["only below the study's directory"])
+    assert_refused(r, 78, ["only below the study's directory"])
     assert not (tmp_path / "abs").exists()
 
 

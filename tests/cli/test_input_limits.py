@@ -5,22 +5,12 @@ import time
 
 import pytest
 
-from conftest import (EX_CANTCREAT, EX_CONFIG, EX_DATAERR, EX_NOINPUT, EX_USAGE, SMALL_OSCILLATOR, SOURCE, run)
+from conftest import (EX_CANTCREAT, EX_CONFIG, EX_DATAERR, EX_NOINPUT, EX_USAGE, SMALL_OSCILLATOR, SOURCE,
+                      assert_refused, oscillator_study, run)
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 
 
-def refused(r, code, fragments):
-    assert r.returncode == code, f"exit {r.returncode}, expected {code}: {r.stderr[:2000]}"
-    assert "internal error" not in r.stderr
-    for frag in fragments:
-        assert frag in r.stderr, f"{frag!r} not in {r.stderr[:2000]!r}"
-
-
-def study(tmp_path, realisations=4):
-    p = tmp_path / "s.ini"
-    p.write_text(SMALL_OSCILLATOR.format(realisations=realisations, chunk=4, duration=4))
-    return p
 
 
 # --- item 14: cross-key checks before the ensemble -------------------------------------------------
@@ -33,8 +23,8 @@ def study(tmp_path, realisations=4):
 def test_band_range_is_checked_before_the_run(tmp_path, sets, key, fragment):
     out = tmp_path / "r.h5"
     args = [a for kv in sets for a in ("--set", kv)]
-    r = run(["run", study(tmp_path, realisations=4000), "--out", out, "--quiet", *args], timeout=20)
-    refused(r, EX_CONFIG, [key, fragment])
+    r = run(["run", oscillator_study(tmp_path, realisations=4000), "--out", out, "--quiet", *args], timeout=20)
+    assert_refused(r, EX_CONFIG, [key, fragment])
     assert not out.exists() and not (tmp_path / "r.h5.checkpoint").exists()
 
 
@@ -42,13 +32,13 @@ def test_too_many_beam_modes_are_refused_up_front(tmp_path):
     out = tmp_path / "r.h5"
     start = time.time()
     r = run(["run", RIG, "--out", out, "--quiet", "--set", "beam.modes=640", "--set", "study.realisations=1000"])
-    refused(r, EX_CONFIG, ["[beam] modes = 640", "overflows double precision", "allowed: at most 629 modes"])
+    assert_refused(r, EX_CONFIG, ["[beam] modes = 640", "overflows double precision", "allowed: at most 629 modes"])
     assert time.time() - start < 10 and not out.exists()
 
 
 def test_description_longer_than_an_attribute_is_refused(tmp_path):
-    r = run(["run", study(tmp_path), "--out", tmp_path / "r.h5", "--quiet", "--set", "study.description=" + "x" * 70000])
-    refused(r, EX_CONFIG, ["[study] description = xxxx", "(70000 bytes in all)", "allowed: a study of at most 61440 bytes"])
+    r = run(["run", oscillator_study(tmp_path), "--out", tmp_path / "r.h5", "--quiet", "--set", "study.description=" + "x" * 70000])
+    assert_refused(r, EX_CONFIG, ["[study] description = xxxx", "(70000 bytes in all)", "allowed: a study of at most 61440 bytes"])
     assert len(r.stderr) < 1000
 
 
@@ -56,30 +46,30 @@ def test_description_longer_than_an_attribute_is_refused(tmp_path):
 
 def test_set_with_a_line_break_is_refused(tmp_path):
     out = tmp_path / "r.h5"
-    r = run(["run", study(tmp_path), "--out", out, "--quiet", "--set", "study.description=x\n[force]\nlevel = 9"])
-    refused(r, EX_USAGE, ["holds a line break", "allowed: one line of text"])
+    r = run(["run", oscillator_study(tmp_path), "--out", out, "--quiet", "--set", "study.description=x\n[force]\nlevel = 9"])
+    assert_refused(r, EX_USAGE, ["holds a line break", "allowed: one line of text"])
     assert not out.exists()
 
 
 def test_fifo_inputs_are_refused_without_blocking(tmp_path):
     fifo = tmp_path / "in.fifo"
     os.mkfifo(fifo)
-    refused(run(["run", fifo, "--out", tmp_path / "r.h5"], timeout=10), EX_NOINPUT, ["study file", "a FIFO", "allowed: a regular file"])
-    refused(run(["plan", fifo], timeout=10), EX_NOINPUT, ["a FIFO"])
-    refused(run(["psd", fifo, "--fs", 100], timeout=10), EX_NOINPUT, ["CSV file", "a FIFO"])
-    refused(run(["compare", fifo, fifo], timeout=10), EX_NOINPUT, ["a FIFO"])
+    assert_refused(run(["run", fifo, "--out", tmp_path / "r.h5"], timeout=10), EX_NOINPUT, ["study file", "a FIFO", "allowed: a regular file"])
+    assert_refused(run(["plan", fifo], timeout=10), EX_NOINPUT, ["a FIFO"])
+    assert_refused(run(["psd", fifo, "--fs", 100], timeout=10), EX_NOINPUT, ["CSV file", "a FIFO"])
+    assert_refused(run(["compare", fifo, fifo], timeout=10), EX_NOINPUT, ["a FIFO"])
     ck = tmp_path / "r.h5.checkpoint"
     ck.mkdir()
     os.mkfifo(ck / "chunk_000000000000_000000000004.bin")
-    r = run(["run", study(tmp_path), "--out", tmp_path / "r.h5", "--resume", "--quiet"], timeout=10)
-    refused(r, EX_CANTCREAT, ["holds files rollspec did not write (chunk_000000000000_000000000004.bin)"])
+    r = run(["run", oscillator_study(tmp_path), "--out", tmp_path / "r.h5", "--resume", "--quiet"], timeout=10)
+    assert_refused(r, EX_CANTCREAT, ["holds files rollspec did not write (chunk_000000000000_000000000004.bin)"])
 
 
 def test_a_device_as_table_is_named_as_such(tmp_path):
     s = tmp_path / "t.ini"
     s.write_text("[study]\nscene = texture\nrealisations = 1\nseed = 1\n[texture]\nsource = table\ntable = /dev/zero\n")
     r = run(["texture", s, "--out", tmp_path / "t.h5"], timeout=10)
-    refused(r, EX_NOINPUT, ["[texture] table = /dev/zero", "is a character device, not a regular file"])
+    assert_refused(r, EX_NOINPUT, ["[texture] table = /dev/zero", "is a character device, not a regular file"])
     assert "no such file" not in r.stderr
 
 
@@ -91,7 +81,7 @@ def test_huge_keys_and_cells_are_cut_in_messages(tmp_path):
     sig = tmp_path / "sig.csv"
     sig.write_text("a\n1\n" + "9" * 5_000_000 + "x\n")
     r = run(["psd", sig, "--fs", 100])
-    refused(r, EX_DATAERR, ["sig.csv:3: column 'a' value '999", "bytes in all", "is not a number"])
+    assert_refused(r, EX_DATAERR, ["sig.csv:3: column 'a' value '999", "bytes in all", "is not a number"])
     assert len(r.stderr) < 1000
 
 
@@ -101,5 +91,5 @@ def test_duplicate_column_check_is_linear(tmp_path):
     sig.write_text(",".join(f"c{i}" for i in range(n)) + ",c7\n" + ",".join("1" for _ in range(n + 1)) + "\n")
     start = time.time()
     r = run(["psd", sig, "--fs", 100], timeout=30)
-    refused(r, EX_DATAERR, ["column 'c7' appears twice in the header (columns 8 and 300001)"])
+    assert_refused(r, EX_DATAERR, ["column 'c7' appears twice in the header (columns 8 and 300001)"])
     assert time.time() - start < 10

@@ -5,22 +5,11 @@ dropped data."""
 import resource
 import subprocess
 
-from conftest import BIN, EX_CONFIG, EX_DATAERR, SMALL_OSCILLATOR, SOURCE, run
+from conftest import BIN, EX_CONFIG, EX_DATAERR, SOURCE, assert_refused, oscillator_study, run
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 
 
-def refused(r, code, fragments):
-    assert r.returncode == code, f"exit {r.returncode}, expected {code}: {r.stderr[:2000]}"
-    assert "internal error" not in r.stderr
-    for frag in fragments:
-        assert frag in r.stderr, f"{frag!r} not in {r.stderr[:2000]!r}"
-
-
-def study(tmp_path, realisations=4):
-    p = tmp_path / "s.ini"
-    p.write_text(SMALL_OSCILLATOR.format(realisations=realisations, chunk=4, duration=4))
-    return p
 
 
 # --- item 10: a read error is an error, never the end of the file -----------------------------------
@@ -36,7 +25,7 @@ def test_a_line_longer_than_memory_is_an_error_not_the_end(tmp_path):
         resource.setrlimit(resource.RLIMIT_AS, (400 << 20, 400 << 20))
     r = subprocess.run([BIN, "psd", str(sig), "--fs", "100", "--segment", "16"], capture_output=True, text=True,
                        preexec_fn=limit)
-    refused(r, EX_DATAERR, ["sig.csv:66: cannot read this line", "the data after it were not read"])
+    assert_refused(r, EX_DATAERR, ["sig.csv:66: cannot read this line", "the data after it were not read"])
     assert r.stdout == ""
 
 
@@ -53,11 +42,11 @@ def run_limited(args, gib=2):
 
 
 def test_memory_estimate_refuses_before_any_allocation(tmp_path):
-    s = study(tmp_path)
+    s = oscillator_study(tmp_path)
     out = tmp_path / "r.h5"
     big = ["--set", "signal.sample_rate=1e6", "--set", "signal.duration=200", "--set", "spectrum.band_max=1e5"]
     r = run_limited(["run", s, "--out", out, "--quiet", *big])
-    refused(r, EX_CONFIG, ["needs an estimated", "[signal] sample_rate = 1e+06", "[signal] duration = 200",
+    assert_refused(r, EX_CONFIG, ["needs an estimated", "[signal] sample_rate = 1e+06", "[signal] duration = 200",
                            "is available", "--force"])
     assert not out.exists() and not (tmp_path / "r.h5.checkpoint").exists()
     r = run_limited(["plan", s, *big])
@@ -75,11 +64,11 @@ def test_documented_maximum_surface_grid_is_refused_not_crashed(tmp_path):
     t = tmp_path / "t.ini"
     t.write_text((SOURCE / "studies" / "texture-demo.ini").read_text())
     r = run_limited(["texture", t, "--out", tmp_path / "t.h5", "--set", "surface.nx=16384", "--set", "surface.ny=16384"])
-    refused(r, EX_CONFIG, ["[surface] nx = 16384", "[surface] ny = 16384", "--force"])
+    assert_refused(r, EX_CONFIG, ["[surface] nx = 16384", "[surface] ny = 16384", "--force"])
     h = tmp_path / "h.ini"
     h.write_text((SOURCE / "studies" / "hertz.ini").read_text())
     r = run_limited(["stiffness", h, "--quiet", "--set", "surface.nx=16384", "--set", "surface.ny=16384"])
-    refused(r, EX_CONFIG, ["contact solver grid", "[surface] nx = 16384"])
+    assert_refused(r, EX_CONFIG, ["contact solver grid", "[surface] nx = 16384"])
     assert not (tmp_path / "tables").exists()
 
 
@@ -87,13 +76,13 @@ def test_blocked_force_window_at_its_maximum_is_refused(tmp_path):
     r = run_limited(["run", RIG, "--out", tmp_path / "r.h5", "--quiet", "--set", "contact.law=linearised",
                      "--set", "contact.blocked_force=solver", "--set", "blocked_force.window=4096",
                      "--set", "surface.ny=4096"])
-    refused(r, EX_CONFIG, ["blocked-force contact window", "[blocked_force] window = 4096", "[surface] ny = 4096"])
+    assert_refused(r, EX_CONFIG, ["blocked-force contact window", "[blocked_force] window = 4096", "[surface] ny = 4096"])
 
 
 def test_a_dataset_larger_than_memory_is_refused_by_compare(tmp_path):
     import h5py
     big = tmp_path / "big.h5"
-    s = study(tmp_path)
+    s = oscillator_study(tmp_path)
     assert run(["run", s, "--out", big, "--quiet"]).returncode == 0
     with h5py.File(big, "r+") as f:
         del f["/bands/level_db"]
@@ -101,4 +90,4 @@ def test_a_dataset_larger_than_memory_is_refused_by_compare(tmp_path):
     m = tmp_path / "m.csv"
     m.write_text("frequency_hz,psd\n1,1e-3\n300,2e-3\n500,1e-3\n")
     r = run_limited(["compare", big, m])
-    refused(r, EX_DATAERR, ["/bands/level_db holds 1000000000000 values", "more than the memory available"])
+    assert_refused(r, EX_DATAERR, ["/bands/level_db holds 1000000000000 values", "more than the memory available"])
