@@ -71,8 +71,9 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
             if s != row:
                 ax.plot(freq[sel], db(mean[s, sel]), color="0.6", lw=0.5,
                         label="individual sensors" if s == (1 if row == 0 else 0) else None)
-    ax.fill_between(freq[sel], db(lo[row, sel]), db(hi[row, sel]), color="C0", alpha=0.25, lw=0,
-                    label=f"{100 * level:.0f} % interval of the mean")
+    if np.isfinite(hi[row, sel]).any():  # fewer than 5 realisations give no interval
+        ax.fill_between(freq[sel], db(lo[row, sel]), db(hi[row, sel]), color="C0", alpha=0.25, lw=0,
+                        label=f"{100 * level:.0f} % interval of the mean")
     ax.plot(freq[sel], db(mean[row, sel]), color="C0", lw=1.0, label=f"{names[row]}, mean of {k}")
     if ref is not None:
         ax.plot(freq[sel], db(ref[row, sel]), "--", color="0.25", lw=0.8, label=short(ref_label))

@@ -39,8 +39,8 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   std::vector<double> lo(e.mean.size()), hi(e.mean.size()), nu(e.mean.size());
   for (std::size_t i = 0; i < e.mean.size(); ++i) {
     const auto ci = spectral::mean_interval(e.scatter[i], K, e.confidence);
-    lo[i] = e.mean[i] * ci.lower;
-    hi[i] = e.mean[i] * ci.upper;
+    lo[i] = ci.defined() ? e.mean[i] * ci.lower : 0.0;  // no interval: [0, inf), even for a bin without power
+    hi[i] = ci.defined() ? e.mean[i] * ci.upper : HUGE_VAL;
     nu[i] = ci.dof;
   }
   write_frequency_scale(w, "/psd", e.frequency);
@@ -77,8 +77,8 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
       const double avg = spectral::band_average(e.mean.data() + s * nf, nf, df, bands[b].lower, bands[b].upper);
       const auto ci = spectral::mean_interval(e.band_scatter[i], K, e.confidence);
       level[i] = 10.0 * std::log10(avg);
-      cil[i] = 10.0 * std::log10(avg * ci.lower);
-      ciu[i] = 10.0 * std::log10(avg * ci.upper);
+      cil[i] = ci.defined() ? 10.0 * std::log10(avg * ci.lower) : -HUGE_VAL;
+      ciu[i] = ci.defined() ? 10.0 * std::log10(avg * ci.upper) : HUGE_VAL;
       dof[i] = ci.dof;
       sd[i] = e.band_scatter[i].std_dev;
       log_sd[i] = e.band_scatter[i].log_std;
