@@ -170,6 +170,27 @@ HeightStatistics mean_statistics(const std::vector<HeightStatistics>& all) {
   return m;
 }
 
+HeightStatistics std_statistics(const std::vector<HeightStatistics>& all) {
+  const HeightStatistics m = mean_statistics(all);
+  const auto spread = [&](double HeightStatistics::*field) {
+    double sum = 0.0, n = 0.0;
+    for (const HeightStatistics& s : all)
+      if (std::isfinite(s.*field)) {
+        sum += (s.*field - m.*field) * (s.*field - m.*field);
+        n += 1.0;
+      }
+    return n >= 2.0 ? std::sqrt(sum / (n - 1.0)) : std::numeric_limits<double>::quiet_NaN();
+  };
+  HeightStatistics d;
+  d.mean = spread(&HeightStatistics::mean);
+  d.rms = spread(&HeightStatistics::rms);
+  d.skewness = spread(&HeightStatistics::skewness);
+  d.kurtosis = spread(&HeightStatistics::kurtosis);
+  d.correlation_length_x = spread(&HeightStatistics::correlation_length_x);
+  d.correlation_length_y = spread(&HeightStatistics::correlation_length_y);
+  return d;
+}
+
 std::vector<double> surface_periodogram(const Surface& s) {
   if (s.heights.size() != s.nx * s.ny || s.nx < 2 || s.ny < 2) throw std::invalid_argument("surface periodogram: bad surface size");
   const std::size_t nh = s.nx / 2 + 1;

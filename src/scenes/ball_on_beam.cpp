@@ -31,6 +31,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/rng/philox_stream.hpp"
+#include "src/ensemble/progress.hpp"
 #include "src/study/study.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
@@ -273,6 +274,7 @@ class BallOnBeam final : public Scene {
   }
 
   void prepare(bool quiet, bool rebuild) override {
+    quiet_ = quiet;
     if (uses_table_) {
       std::string status;
       const auto t = stiffness::resolve_table(*study_, model_.contact.radius, model_.contact.effective_modulus, rebuild,
@@ -568,8 +570,13 @@ class BallOnBeam final : public Scene {
       xw.push_back(sw);
     }
     edges.push_back(n);
+    // The reference runs after the ensemble and can take longer than it: shown when over a second.
+    const std::size_t n_rows = model_.sensors.size() + (rows() > model_.sensors.size() ? 1 : 0);
+    ensemble::Progress progress("linearised reference", 1 + n_rows + (edges.size() - 1), quiet_);
+    progress.show_after(1.0);
     const auto lr = beam::linear_response_psd(model_.beam, model_.ball.mass, k0, model_.contact.damping, xi,
                                               model_.sensors, fine, exc, beam::Excitation::blocked_force, xw);
+    progress.advance();
     std::vector<std::vector<double>> rows_fine = lr.sensor_psd;
     if (rows() > model_.sensors.size()) {
       std::vector<double> m(nfine, 0.0);
@@ -581,6 +588,7 @@ class BallOnBeam final : public Scene {
     for (const auto& row : rows_fine) {
       const auto e = spectral::welch_expectation(*welch_, row, refine);
       expected.insert(expected.end(), e.begin(), e.end());
+      progress.advance();
       for (std::size_t k = 0; k < f.size(); ++k) raw.push_back(row[k * refine]);
     }
     // Degrees of freedom of the ensemble mean per bin (B34b): the record is not stationary (the
@@ -594,6 +602,7 @@ class BallOnBeam final : public Scene {
     const std::vector<double> band(fine.begin(), fine.begin() + static_cast<std::ptrdiff_t>(half + 1));
     std::vector<std::complex<double>> cross((edges.size() - 1) * pairs * nf, 0.0);
     for (std::size_t p = 0; p + 1 < edges.size(); ++p) {
+      progress.advance();
       if (xw[p] == 0.0) continue;  // no segment sees this block
       const auto H = beam::linear_response_transfer(model_.beam, model_.ball.mass, k0, model_.contact.damping, xi[p],
                                                     model_.sensors, band, beam::Excitation::blocked_force);
@@ -610,6 +619,7 @@ class BallOnBeam final : public Scene {
           }
       }
     }
+    progress.finish();
     std::vector<double> dof;
     for (std::size_t s = 0; s < ns; ++s) {
       std::vector<std::complex<double>> own((edges.size() - 1) * nf);
@@ -687,7 +697,7 @@ class BallOnBeam final : public Scene {
   bool average_, dopri_;
   double rtol_, confidence_, band_min_, band_max_;
   std::size_t time_histories_;
-  bool linearised_ = false, uses_table_ = false, blocked_solver_ = false;
+  bool linearised_ = false, uses_table_ = false, blocked_solver_ = false, quiet_ = false;
   stiffness::BlockedForceTable blocked_;
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
   std::vector<double> f0_psd_;

@@ -11,6 +11,7 @@
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/study/study.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::scenes {
 
@@ -230,7 +231,7 @@ class RollingBeam final : public Scene {
         {"dynamics", StageStatus::run,
          std::string(options_.analysis == rolling::Analysis::Dynamic ? "Newmark dynamics" : "quasi-static load steps") +
              ", " + std::to_string(static_cast<long long>(std::llround(run_.t_end / run_.dt))) + " steps, " +
-             std::to_string(model_.contacts.size()) + " rolling contact node(s)"},
+             io::counted(model_.contacts.size(), "rolling contact node")},
         {"spectra", StageStatus::skipped, "a single deterministic run has no ensemble spectra"},
     };
   }
