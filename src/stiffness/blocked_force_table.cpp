@@ -134,7 +134,17 @@ BlockedForceTable build(const Study& s, double radius, double e_star, double loa
   contact::ContactSolver solver(window_grid, e_star);
   contact::BlockedForcePath path;
   try {
-    path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts);
+    // The search evaluates whole paths until the mean force meets the load: one line per path
+    // (each a solve at every position, seconds on a large strip) says it is alive and converging.
+    contact::BlockedForceOptions path_opts;
+    int evaluated = 0;
+    if (!quiet)
+      path_opts.on_path = [&](std::size_t count, double error) {
+        std::fprintf(stderr, "%sblocked force: path %d on %zu positions, mean force off the load by %.2e\n",
+                     ensemble::rank_prefix().c_str(), ++evaluated, count, error);
+      };
+    path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts,
+                                          path_opts);
   } catch (const std::invalid_argument& e) {
     throw config_error(s.where("blocked_force.window") + ": " + e.what() + "; widen the window or the strip ([surface] ny)");
   }
