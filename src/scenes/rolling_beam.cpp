@@ -222,9 +222,10 @@ class RollingBeam final : public Scene {
     if (run_.t_end / run_.dt > 1e8) s.refuse("analysis.dt", "gives more than 1e8 steps");
     run_.record_every = static_cast<int>(s.integer("analysis.record_every"));
     run_.record_nodes = record_;
+    add_stages(fixed_stages());  // after the members the descriptions name
   }
 
-  std::vector<StagePlan> plan() const override {
+  std::vector<StagePlan> fixed_stages() const {
     return {
         {"texture", StageStatus::skipped, "flat rigid plane"},
         {"stiffness_table", StageStatus::skipped, "penalty contact"},
