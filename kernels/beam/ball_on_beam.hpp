@@ -1,5 +1,5 @@
 #pragma once
-// Ball-on-beam model (design.md §5: D-1, D-9, D-10, D-11; seed 001 Eq. 1–8, seed 002 Eq. 4–14):
+// Ball-on-beam model (kernels/README.md (ball on beam): D-1, D-9, D-10, D-11; seed 001 Eq. 1–8, seed 002 Eq. 4–14):
 // a rigid ball of mass m2 crosses the modal beam at constant speed v from x_start to x_end,
 // pressed on by gravity; the point contact force F_c drives the modes and the ball.
 //

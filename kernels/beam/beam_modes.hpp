@@ -1,5 +1,5 @@
 #pragma once
-// Euler–Bernoulli beam eigenvalues and eigenfunctions (design.md D-8; seed 001 Eq. 1, seed 002
+// Euler–Bernoulli beam eigenvalues and eigenfunctions (kernels/README.md D-8; seed 001 Eq. 1, seed 002
 // Eq. 5–6). Theory: kernels/beam/README.md Eq. (B1)–(B6).
 //
 // Clamped–clamped: cos(x) cosh(x) = 1, x = kappa_n l, solved as cos x - sech x = 0 (B1) by a

@@ -1,5 +1,5 @@
 #pragma once
-// Point contact laws of the ball-on-beam model (design.md D-10, D-11; seed 001 Eq. 7–8,
+// Point contact laws of the ball-on-beam model (kernels/README.md D-10, D-11; seed 001 Eq. 7–8,
 // seed 002 Eq. 4, 14), README Eq. (B15)–(B19). The compression delta = w1(xi) + h(xi) - w2 (D-1),
 // its rate delta_dot, and, for the linearised law, the blocked force F0(t) come from the caller.
 //

@@ -17,14 +17,15 @@
 
 namespace rollspec::beam {
 
-// How the modal force and the ball force vary over a step: linear between the step ends (the
-// default, B23, order 2), or the parabola through the previous, current and end values (B36,
-// order 3; the first step is linear). Both keep the end state affine in the end force.
+// How the modal force and the ball force vary over a step: linear between the step ends (B23,
+// order 2), or the parabola through the previous, current and end values (B36, order 3; the first
+// step is linear; the default, as the study key [signal] hold). Both keep the end state affine in
+// the end force.
 enum class ForceHold { linear, quadratic };
 
 struct ExactStepOptions {
   int substeps = 4;                     // integration steps per output sample
-  ForceHold hold = ForceHold::linear;
+  ForceHold hold = ForceHold::quadratic;
   double solver_tolerance = 1e-13;      // relative, contact force (B21)
   long max_table_entries = 8'000'000;   // tabulate shapes if steps * modes <= this
 };
@@ -35,6 +36,7 @@ class ExactStepIntegrator {
   // Mode shapes are tabulated at every step if steps * modes <= max_table_entries, else evaluated
   // on the fly (slower, same answer).
   ExactStepIntegrator(BallOnBeamModel model, const ExactStepOptions& options);
+  // The linear hold (B23) at `substeps`: the second-order rule its own convergence tests measure.
   ExactStepIntegrator(BallOnBeamModel model, int substeps = 4, double solver_tolerance = 1e-13,
                       long max_table_entries = 8'000'000)
       : ExactStepIntegrator(std::move(model), ExactStepOptions{substeps, ForceHold::linear, solver_tolerance,

@@ -1,5 +1,5 @@
 #pragma once
-// Modal Euler–Bernoulli beam (design.md D-8, D-9; seed 001 Eq. 1–2, seed 002 Eq. 5–8).
+// Modal Euler–Bernoulli beam (kernels/README.md D-8, D-9; seed 001 Eq. 1–2, seed 002 Eq. 5–8).
 // README Eq. (B9)–(B12).
 //
 // The modal model spans the effective length l_eff (seed 002 §4.1: clamp rotation is modelled by

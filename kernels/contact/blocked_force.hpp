@@ -1,5 +1,5 @@
 #pragma once
-// Blocked force F0 and stiffness k0 of the linearised contact model (seed 002 §4.2, design.md D-11,
+// Blocked force F0 and stiffness k0 of the linearised contact model (seed 002 §4.2, kernels/README.md D-11,
 // issue 4 item 6): a smooth ball slid along a rough strip at a fixed rigid approach d0.
 //
 // Theory (equations BF-1 … BF-7; README Eq. n are the contact kernel's README equations).
@@ -28,7 +28,7 @@
 // found by safeguarded Newton on d: d ← d + (W − F̄(d)) / K̄_f(d) inside the bracket
 // [d_lo, d_hi] with F̄(d_lo) < W ≤ F̄(d_hi) (F̄ is non-decreasing in d), bisection when the Newton
 // step leaves the bracket or K̄_f = 0, the bracket grown by doubling steps while one side is
-// unknown. Start: the smooth Hertz approach for W (design.md §4),
+// unknown. Start: the smooth Hertz approach for W (kernels/README.md (contact)),
 //
 //     d_start = (3 W / (4 E* R^{1/2}))^{2/3}                                               (BF-4)
 //

@@ -1,6 +1,6 @@
 #pragma once
 // Elastic–perfectly-plastic rough contact by constrained conjugate gradients
-// (Polonsky & Keer 1999, pressure cap after Almqvist et al. 2007; design.md D-6, D-7,
+// (Polonsky & Keer 1999, pressure cap after Almqvist et al. 2007; kernels/README.md D-6, D-7,
 // README Eq. 6–15).
 #include <cstddef>
 #include <limits>

@@ -1,5 +1,5 @@
 #pragma once
-// Approach for a given total force, with any hardness (e.g. the ball's own weight, design.md §4).
+// Approach for a given total force, with any hardness (e.g. the ball's own weight, kernels/README.md (contact)).
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"

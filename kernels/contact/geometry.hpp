@@ -1,5 +1,5 @@
 #pragma once
-// Undeformed gap of a ball on a rough flat, effective modulus (design.md §4, D-6, D-7).
+// Undeformed gap of a ball on a rough flat, effective modulus (kernels/README.md (contact), D-6, D-7).
 #include <vector>
 
 #include "kernels/contact/grid.hpp"

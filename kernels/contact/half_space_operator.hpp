@@ -1,5 +1,5 @@
 #pragma once
-// Fast product u = C p of the half-space influence matrix with a pressure field (design.md D-6).
+// Fast product u = C p of the half-space influence matrix with a pressure field (kernels/README.md D-6).
 #include <cstddef>
 
 #include "kernels/contact/grid.hpp"

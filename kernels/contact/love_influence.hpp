@@ -1,5 +1,5 @@
 #pragma once
-// Love's closed-form influence coefficient of a uniformly loaded rectangle (design.md D-6).
+// Love's closed-form influence coefficient of a uniformly loaded rectangle (kernels/README.md D-6).
 #include "kernels/contact/grid.hpp"
 
 namespace rollspec::contact {

@@ -1,5 +1,5 @@
 #pragma once
-// A warm-started sweep along increasing approach (seed 001 §3.3, design.md §4).
+// A warm-started sweep along increasing approach (seed 001 §3.3, kernels/README.md (contact)).
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"

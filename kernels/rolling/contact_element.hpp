@@ -1,4 +1,4 @@
-// Rolling node-to-plane contact element (seed 000 Sec. 3; design.md D-13, D-14).
+// Rolling node-to-plane contact element (seed 000 Sec. 3; kernels/README.md D-13, D-14).
 // The node is a rigid sphere of radius r; the plane is rigid. DOFs of the element are the
 // node's incremental displacement and incremental Rodrigues parameters in the current
 // step (updated Lagrangian, D-12). Penalty normal force, Coulomb stick/slip return

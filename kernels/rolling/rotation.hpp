@@ -1,4 +1,4 @@
-// Incremental Rodrigues rotation parameters (design.md D-12, seed 000 Eq. 1-4, 23-25).
+// Incremental Rodrigues rotation parameters (kernels/README.md D-12, seed 000 Eq. 1-4, 23-25).
 // Q(a) = I + g (A + A^2/2), A = skew(a), g = 4/(4 + a.a); spatial spin of Q(a(t)):
 // w = Xi(a) a_dot, Xi = g (I + A/2). Generic (templated) versions act on 3-vectors of any
 // scalar (doubles or jets), the Eigen versions are for the hand-derived contact tangent.

@@ -1,5 +1,5 @@
 #pragma once
-// Isotropic 2D PSD C_iso(q) from a one-sided line PSD G(k) (design.md D-5; README Eq. 18-21).
+// Isotropic 2D PSD C_iso(q) from a one-sided line PSD G(k) (kernels/README.md D-5; README Eq. 18-21).
 //
 // Jacobs, Junge & Pastewka (2017) normalise h_rms^2 = (2 pi)^-2 int C_iso d^2q and
 // h_rms^2 = (1/pi) int_0^inf C_1D dq, so the kernel's one-sided G = C_1D / pi, and D-5 reads

@@ -1,5 +1,5 @@
 #pragma once
-// Line textures h(x_i), x_i = i dx, by spectral representation (design.md D-3; README Eq. 12):
+// Line textures h(x_i), x_i = i dx, by spectral representation (kernels/README.md D-3; README Eq. 12):
 //
 //   h(x) = sum_{j=1}^{P/2-1} A_j cos(k_j x + phi_j),  k_j = j dk,  dk = 2 pi / (P dx),
 //   A_j = sqrt(2 G(k_j) dk) [deterministic]  or  sqrt(2 G(k_j) dk) sqrt(-ln u_j) [Rayleigh],

@@ -1,5 +1,5 @@
 #pragma once
-// PSD of a roughness from measured short profiles (design.md §3; seed 001 §3.1, seed 002 §4.2;
+// PSD of a roughness from measured short profiles (kernels/README.md (textures); seed 001 §3.1, seed 002 §4.2;
 // README Eq. 15-17). Per profile of N samples at spacing dx:
 //   1. remove the least-squares line a + b x (for a 2D map: the quadratic surface
 //      a + b x + c y + d x^2 + e x y + f y^2 over the whole map)                      (Eq. 15)

@@ -1,5 +1,5 @@
 #pragma once
-// Unit conversions of one-sided PSDs (design.md §2, D-2; kernels/texture/README.md Eq. 1-3).
+// Unit conversions of one-sided PSDs (kernels/README.md (conventions), D-2; kernels/texture/README.md Eq. 1-3).
 //
 //   wavenumber k [rad/m] = 2 pi n,  n = spatial frequency [cycles/m]
 //   G_n(n) = 2 pi G_k(k)                         (same variance: G_n dn = G_k dk)     (Eq. 1)

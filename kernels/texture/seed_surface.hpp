@@ -1,5 +1,5 @@
 #pragma once
-// Seed line-sum surfaces (design.md D-4; seed 001 §3.1, Eq. 9-10; README Eq. 29-32).
+// Seed line-sum surfaces (kernels/README.md D-4; seed 001 §3.1, Eq. 9-10; README Eq. 29-32).
 //
 // Rows d (line textures along x, one per y index) and columns g (line textures along y, one
 // per x index), box lengths n, m (samples, the seed's "correlation lengths"):

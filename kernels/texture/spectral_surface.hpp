@@ -1,5 +1,5 @@
 #pragma once
-// Isotropic (or anisotropic) Gaussian surfaces by 2D Fourier filtering (design.md D-5; README
+// Isotropic (or anisotropic) Gaussian surfaces by 2D Fourier filtering (kernels/README.md D-5; README
 // Eq. 26-28). On an nx x ny grid (both even), dqx = 2 pi / (nx dx), dqy = 2 pi / (ny dy):
 //
 //   z(x, y) = sum_q Z_q e^{i q.x},  Z_{-q} = conj(Z_q),

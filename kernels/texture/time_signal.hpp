@@ -1,5 +1,5 @@
 #pragma once
-// A line texture seen by a contact rolling at constant speed v (design.md D-2; README Eq. 2-3):
+// A line texture seen by a contact rolling at constant speed v (kernels/README.md D-2; README Eq. 2-3):
 // h(t_i) = h(x_i) with t_i = x_i / v, so the samples are unchanged and dt = dx / v; the
 // one-sided PSD in time is G_t(f) = G_n(f / v) / v = 2 pi G_k(2 pi f / v) / v.
 #include <functional>

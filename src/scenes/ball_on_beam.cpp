@@ -372,7 +372,7 @@ class BallOnBeam final : public Scene {
   }
 
   // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
-  // T_c = 2 pi sqrt(m_ball / k_contact) at the static load (theory D-21). Coarser steps stay finite
+  // T_c = 2 pi sqrt(m_ball / k_contact) at the static load (kernels/README.md D-23). Coarser steps stay finite
   // but misstate loss of contact and the high-frequency levels, so they are refused.
   void check_contact_resolution(const Study& s, double k_contact) const {
     const double tc = 2.0 * M_PI * std::sqrt(model_.ball.mass / k_contact);

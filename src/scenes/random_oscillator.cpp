@@ -29,7 +29,7 @@ std::vector<KeySpec> random_oscillator_keys() {
                false),
       real_key("force", "f_max", "Hz", "highest force frequency; 0 means the Nyquist frequency", std::string("0"), 0.0,
                inf),
-      choice_key("force", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian force) or deterministic (D-3)",
+      choice_key("force", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian force) or deterministic (the target PSD exactly)",
                  std::string("rayleigh"), {"rayleigh", "deterministic"}),
       real_key("signal", "sample_rate", "Hz", "sample rate f_s of force and response", std::string("2048"), 0.0, inf,
                false),
@@ -139,7 +139,7 @@ class RandomOscillator final : public Scene {
     for (std::size_t i = 0; i < exact.size(); ++i)
       exact[i] = random_oscillator_exact_psd(e.frequency[i], force_psd(e.frequency[i]), mass_, fn_, zeta_, fs_);
     w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units,
-            "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator (D-19)");
+            "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator");
     w.attribute("/reference/psd", "label", std::string("exact"));
     io::write_frequency_scale(w, "/reference", e.frequency);
     io::write_sensor_scale(w, "/reference", e.sensors);

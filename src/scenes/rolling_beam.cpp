@@ -99,7 +99,7 @@ std::vector<KeySpec> rolling_beam_keys() {
       real_key("analysis", "t_end", "s", "end time", std::string("1"), 0.0, inf, false),
       choice_key("analysis", "integrator",
                  "dynamic integrator: newmark (trapezoidal) or energy-consistent (midpoint + discrete-gradient penalty; "
-                 "rigid bodies only, kernels/rolling R-50..R-53)",
+                 "rigid bodies only)",
                  std::string("newmark"), {"newmark", "energy-consistent"}),
       real_key("analysis", "impact_step_fraction", "-",
                "while a contact is closed or closing, limit the step to this fraction of 2 pi sqrt(m/eps_n) (0: off)",

@@ -120,7 +120,7 @@ class RollingPipe final : public Scene {
       const double mn = i % 2 == 1 ? m_mid : (i == 0 || i == nodes - 1 ? m_light : 2.0 * m_light);
       damping_.push_back(2.0 * zeta_ * std::sqrt(law_.eps_n * mn));
     }
-    // The step must resolve the contact oscillation of the lightest node: dt <= T_c / 20 (D-21).
+    // The step must resolve the contact oscillation of the lightest node: dt <= T_c / 20 (kernels/README.md D-23).
     const double tc = 2.0 * kPi * std::sqrt(m_light / law_.eps_n);
     if (dt_ > tc / 20.0) {
       std::ostringstream m;
@@ -173,7 +173,7 @@ class RollingPipe final : public Scene {
       std::ostringstream m;
       m << "rms curvature of the roughness sqrt(m4) = " << rms_curvature_ << " 1/m times the contact radius " << radius_
         << " m is " << radius_ * rms_curvature_
-        << ": the node spheres would touch at two points in most valleys (R-62); allowed: r sqrt(m4) <= 0.5 (raise the "
+        << ": the node spheres would touch at two points in most valleys; allowed: r sqrt(m4) <= 0.5 (raise the "
            "short wavelength cut-off or the roughness spacing)";
       s.refuse(line_ ? "roughness.spacing" : "surface.spacing", m.str());
     }
@@ -204,10 +204,10 @@ class RollingPipe final : public Scene {
          line_ ? "line texture along the rolling direction per realisation (" + psd_.description + ")" : "isotropic surface instead"},
         {"surface", line_ ? StageStatus::skipped : StageStatus::run,
          line_ ? "a line texture is used" : "isotropic surface per realisation from [surface] (" + psd_.description + ")"},
-        {"stiffness_table", StageStatus::skipped, "penalty node-sphere contact (R-61)"},
+        {"stiffness_table", StageStatus::skipped, "penalty node-sphere contact"},
         {"dynamics", StageStatus::run,
          "Newmark, " + std::to_string(steps_) + " steps, " + std::to_string(2 * elements_ + 1) +
-             " rolling contact nodes with friction on the height field (R-61..R-64)"},
+             " rolling contact nodes with friction on the height field"},
         {"spectra", StageStatus::run, "Welch PSDs of the vertical acceleration at the sensor nodes; ensemble mean"},
     };
   }
@@ -297,7 +297,7 @@ class RollingPipe final : public Scene {
       const char* units;
       const char* what;
     } extras_out[] = {
-        {"/contact/curvature_ratio", curvature_ratio, "1", "r kappa_max of the realisation's surface (R-62; < 1: single-point contact)"},
+        {"/contact/curvature_ratio", curvature_ratio, "1", "r kappa_max of the realisation's surface (< 1: single-point contact)"},
         {"/contact/open_share", open_share, "1", "share of node-time in loss of contact over the analysed record"},
         {"/contact/newton_per_step", newton_per_step, "1", "Newton iterations per time step"},
         {"/roll/speed_ratio", speed_ratio, "1", "rolling speed at the end of the record over the initial speed"},
@@ -307,11 +307,11 @@ class RollingPipe final : public Scene {
       w.write(o.name, {2}, v, o.units, std::string(o.what) + " (ensemble mean, standard deviation)");
     }
     w.write("/contact/two_point_realisations", {1}, &invalid, "1",
-            "realisations whose surface has valleys sharper than the node sphere somewhere (r kappa_max >= 1, R-62)");
+            "realisations whose surface has valleys sharper than the node sphere somewhere (r kappa_max >= 1)");
     if (invalid > 0.0)
       std::fprintf(stderr,
                    "rolling-pipe: warning: %.0f of %llu realisations have valleys sharper than the node spheres somewhere "
-                   "(r kappa_max >= 1): contact there is a closest-point approximation (R-62)\n",
+                   "(r kappa_max >= 1): contact there is a closest-point approximation\n",
                    invalid, static_cast<unsigned long long>(sums.count));
     w.attribute("/contact", "friction", law_.mu);
     w.attribute("/contact", "penalty_normal", law_.eps_n);

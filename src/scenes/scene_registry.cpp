@@ -26,7 +26,7 @@ const std::vector<SceneInfo>& scene_registry() {
       {"rolling-beam", "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
        rolling_beam_keys, [](const Study& s) { return make_rolling_beam(s); }},
       {"rolling-pipe",
-       "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs (issue 7)",
+       "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs",
        rolling_pipe_keys, [](const Study& s) { return make_rolling_pipe(s); }},
       {"stiffness", "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
        stiffness_scene_keys, [](const Study& s) { return make_stiffness_scene(s); }},

@@ -132,14 +132,14 @@ std::vector<KeySpec> psd_keys() {
       real_key("texture", "rms", "m (height) or - (slope)", "rms height or rms slope of the self-affine PSD",
                std::string("1e-6"), 0.0, inf, false),
       choice_key("texture", "road_class", "ISO 8608 road class", std::string("A"), {"A", "B", "C", "D", "E", "F", "G", "H"}),
-      choice_key("texture", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian) or deterministic (D-3)",
+      choice_key("texture", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian) or deterministic (the target PSD exactly)",
                  std::string("rayleigh"), {"rayleigh", "deterministic"}),
   };
 }
 
 std::vector<KeySpec> surface_keys() {
   return {
-      choice_key("surface", "method", "isotropic surfaces: spectral (2D Fourier filter, D-5) or seed (line sums, D-4)",
+      choice_key("surface", "method", "isotropic surfaces: spectral (2D Fourier filter of the isotropic PSD) or seed (seed 001 Eq. 9-10: sums of line textures)",
                  std::string("spectral"), {"spectral", "seed"}),
       integer_key("surface", "nx", "grid points along x (even)", std::string("128"), 4, 1 << 14),
       integer_key("surface", "ny", "grid points along y (even)", std::string("128"), 4, 1 << 14),

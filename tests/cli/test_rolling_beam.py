@@ -76,7 +76,7 @@ def test_cantilever_friction_moment_twists_only_with_rolling(tmp_path):
 def test_frictionless_impact_on_a_wall(tmp_path):
     """A floor and a wall (two planes): a frictionless disc sliding at 2 m/s hits the wall and comes
     back; trapezoidal Newmark with the penalty force changes the energy by at most 0.2 % per impact
-    at dt = 1e-3 (issue 7; measured +0.16 %)."""
+    at dt = 1e-3 (measured +0.16 %)."""
     out = tmp_path / "wall.h5"
     r = run(["run", SOURCE / "studies" / "seed000-disc.ini", "--out", out, "--quiet",
              "--set", "plane.point=0,0,0; 1,0,0", "--set", "plane.normal=0,1,0; -1,0,0", "--set", "contact.friction=0",

@@ -1,4 +1,4 @@
-"""Monte-Carlo rolling pipe (issue 7): a tube of beam elements rolling with friction over random
+"""Monte-Carlo rolling pipe: a tube of beam elements rolling with friction over random
 rough surfaces. Ensemble bits independent of thread count and chunking; the ensemble mean stays
 inside its own chi-square interval when the realisation count doubles; bad studies refused."""
 import h5py

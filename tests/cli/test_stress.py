@@ -1,6 +1,6 @@
 """Numerical stability stress suite (issue 9). Each case states its expectation: finite results (and
 energy balance where there is one), or a clear refusal naming the parameter and the limit.
-Limits: ball-on-beam integration step dt <= T_c / 20, T_c = 2 pi sqrt(m_ball / k_contact) (D-21)."""
+Limits: ball-on-beam integration step dt <= T_c / 20, T_c = 2 pi sqrt(m_ball / k_contact) (kernels/README.md D-23)."""
 import h5py
 import numpy as np
 import pytest
@@ -27,7 +27,7 @@ def finite_result(out):
 
 @pytest.mark.parametrize("k0,substeps", [("1e3", "4"), ("1e6", "4"), ("1e9", "8")])
 def test_contact_stiffness_decades_give_finite_spectra(tmp_path, k0, substeps):
-    # Expectation: finite PSDs for 1e3..1e9 N/m with the substeps the D-21 limit asks for (stiff
+    # Expectation: finite PSDs for 1e3..1e9 N/m with the substeps the D-23 limit asks for (stiff
     # contacts bounce: loss of contact is physical there, not an error).
     r, out = run_rig(tmp_path, f"contact.k0={k0}", f"signal.substeps={substeps}")
     assert r.returncode == 0, r.stderr

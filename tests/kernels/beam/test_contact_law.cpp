@@ -34,7 +34,7 @@ TEST_CASE("monotone table: linear data exact, monotone without overshoot, deriva
   }
 }
 
-TEST_CASE("Hertz law: seed ball numbers (design.md §4) and a force table sampled from it") {
+TEST_CASE("Hertz law: seed ball numbers (kernels/README.md (contact)) and a force table sampled from it") {
   ContactLaw law;  // E* = 115.4 GPa, R = 20 mm
   const ContactModel hertz(law);
   const double w = 2.58;
@@ -67,7 +67,7 @@ TEST_CASE("Hertz law: seed ball numbers (design.md §4) and a force table sample
     l.elastic(d, pl, kl);
     CHECK(pt == doctest::Approx(ph).epsilon(2e-3));
     CHECK(kt == doctest::Approx(kh).epsilon(2e-2));
-    // design.md §4 note on seed 001 Eq. 7: k_c(delta) delta overestimates the Hertz force by 1.5x.
+    // kernels/README.md (contact) note on seed 001 Eq. 7: k_c(delta) delta overestimates the Hertz force by 1.5x.
     CHECK(pl / ph == doctest::Approx(1.5).epsilon(3e-3));
   }
   CHECK(t.static_compression(w, 0.0) == doctest::Approx(delta).epsilon(2e-3));

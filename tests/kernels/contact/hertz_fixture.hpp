@@ -1,5 +1,5 @@
 #pragma once
-// Smooth paraboloid on a flat: the continuum Hertz solution is exact for this gap (design.md §4).
+// Smooth paraboloid on a flat: the continuum Hertz solution is exact for this gap (kernels/README.md (contact)).
 #include <cmath>
 #include <cstddef>
 #include <vector>

@@ -1,5 +1,5 @@
 // Blocked force F0 and stiffness k0 along a strip (blocked_force.hpp, BF-1 … BF-7; seed 002 §4.2,
-// design.md D-11): Hertz on a smooth strip, quasi-static Hertz on a long wave, load search,
+// kernels/README.md D-11): Hertz on a smooth strip, quasi-static Hertz on a long wave, load search,
 // warm start vs cold solves vs the whole strip, PSD peak, and the confinement check (BF-5).
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-// Hertz: smooth paraboloid at fixed approach against the continuum solution (design.md §4).
+// Hertz: smooth paraboloid at fixed approach against the continuum solution (kernels/README.md (contact)).
 #include <doctest/doctest.h>
 
 #include <algorithm>

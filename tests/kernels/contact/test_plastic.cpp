@@ -1,4 +1,4 @@
-// Pressure cap H (design.md D-7): saturation, the elastic limit H → ∞, the fully plastic limit.
+// Pressure cap H (kernels/README.md D-7): saturation, the elastic limit H → ∞, the fully plastic limit.
 #include <doctest/doctest.h>
 
 #include <cmath>

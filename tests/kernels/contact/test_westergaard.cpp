@@ -1,5 +1,5 @@
 // Westergaard: periodic sinusoid, 1D wave extruded on a 2D periodic grid, load control
-// (Johnson, Contact Mechanics §13.2; design.md §4 analytic checks).
+// (Johnson, Contact Mechanics §13.2; kernels/README.md (contact) analytic checks).
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 
 using namespace rollspec::spectral;
 
-TEST_CASE("25 averaged periodograms give -1.55 / +1.89 dB at 95 % (design.md §7)") {
+TEST_CASE("25 averaged periodograms give -1.55 / +1.89 dB at 95 % (kernels/README.md (spectra))") {
   const auto f = chi_square_interval(50.0, 0.95);
   CHECK(10.0 * std::log10(f.lower) == doctest::Approx(-1.55).epsilon(0.005));
   CHECK(10.0 * std::log10(f.upper) == doctest::Approx(1.89).epsilon(0.005));
