@@ -38,6 +38,7 @@
 #include "kernels/contact/geometry.hpp"
 #include "kernels/contact/half_space_operator.hpp"
 #include "kernels/contact/sweep.hpp"
+#include "kernels/spectral/fftw_handles.hpp"
 
 using namespace rollspec::contact;
 
@@ -58,17 +59,19 @@ std::vector<double> rough_surface(std::size_t n, double dx, double sigma, double
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   const std::size_t nc = n / 2 + 1;
-  double* real = fftw_alloc_real(n * n);
-  fftw_complex* spec = fftw_alloc_complex(n * nc);
+  const rollspec::spectral::RealBuffer real(n * n);
+  const rollspec::spectral::ComplexBuffer spec(n * nc);
   for (std::size_t i = 0; i < n * n; i += 2) {
     const double u1 = 1.0 - uni(gen), u2 = uni(gen);
     const double r = std::sqrt(-2.0 * std::log(u1));
     real[i] = r * std::cos(2 * kPi * u2);
     if (i + 1 < n * n) real[i + 1] = r * std::sin(2 * kPi * u2);
   }
-  fftw_plan fwd = fftw_plan_dft_r2c_2d(int(n), int(n), real, spec, FFTW_ESTIMATE);
-  fftw_plan bwd = fftw_plan_dft_c2r_2d(int(n), int(n), spec, real, FFTW_ESTIMATE);
-  fftw_execute(fwd);
+  const rollspec::spectral::FftwPlan fwd(
+      [&] { return fftw_plan_dft_r2c_2d(int(n), int(n), real.data(), spec.data(), FFTW_ESTIMATE); }, "bench surface r2c");
+  const rollspec::spectral::FftwPlan bwd(
+      [&] { return fftw_plan_dft_c2r_2d(int(n), int(n), spec.data(), real.data(), FFTW_ESTIMATE); }, "bench surface c2r");
+  fftw_execute(fwd.get());
   const double len = double(n) * dx;
   for (std::size_t r = 0; r < n; ++r) {
     const double my = r <= n / 2 ? double(r) : double(r) - double(n);
@@ -79,12 +82,8 @@ std::vector<double> rough_surface(std::size_t n, double dx, double sigma, double
       spec[r * nc + c][1] *= f;
     }
   }
-  fftw_execute(bwd);
-  std::vector<double> h(real, real + n * n);
-  fftw_destroy_plan(fwd);
-  fftw_destroy_plan(bwd);
-  fftw_free(real);
-  fftw_free(spec);
+  fftw_execute(bwd.get());
+  std::vector<double> h(real.data(), real.data() + n * n);
   double mean = 0.0, var = 0.0;
   for (double v : h) mean += v / double(h.size());
   for (double v : h) var += (v - mean) * (v - mean) / double(h.size());

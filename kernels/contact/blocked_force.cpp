@@ -303,7 +303,8 @@ namespace {
 // the bracket while one side is unknown. Counts go to `total`; returns the last path, converged
 // only if |F̄ − W| ≤ tolerance · W.
 BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double load, double tolerance, int max_paths,
-                        bool warm, std::size_t store_count, double d_start, double step, BlockedForcePath& total) {
+                        bool warm, std::size_t store_count, double d_start, double step, BlockedForcePath& total,
+                        const std::function<void(std::size_t, double)>& on_path) {
   // BF-5 caps the approach: the search stays at or below d_cap.
   std::size_t limiting = 0;
   const double d_cap = runner.max_approach(&limiting);
@@ -317,6 +318,7 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
     std::swap(previous, current);
     accumulate(total, path);
     const bool on_load = std::fabs(path.mean_force - load) <= tolerance * load;
+    if (on_path) on_path(path.position.size(), std::fabs(path.mean_force - load) / load);
     if (path.mean_force < load) lo = d;
     else hi = d;
     const bool exhausted = std::isfinite(lo) && std::isfinite(hi) &&
@@ -380,13 +382,13 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, path_options);
     const BlockedForcePath sub = search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance),
                                         path_options.max_paths, warm, store_count(subset.size()), d_hertz, d_hertz,
-                                        total);
+                                        total, path_options.on_path);
     total.presearch_paths = total.paths;
     total.paths = 0;
     if (sub.converged) d_start = sub.approach;
   }
   BlockedForcePath path = search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
-                                 store_count(positions.size()), d_start, d_hertz, total);
+                                 store_count(positions.size()), d_start, d_hertz, total, path_options.on_path);
   path.paths = total.paths;
   path.presearch_paths = total.presearch_paths;
   path.solves = total.solves;

@@ -80,6 +80,7 @@
 // Use in the dynamics (D-11): F_c = F0(t) + k0 (w1(ξ) − w2 + d0) + c0 (ẇ1 − ẇ2) with
 // F0(t) = F0(x = v t); the PSD of F0 along the path in cycles/m (sample rate 1/Δx) is mapped to
 // time by D-2.                                                                              (BF-7)
+#include <functional>
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"
@@ -104,6 +105,10 @@ struct BlockedForceOptions {
   // position) to start the next path from (BF-6') while they fit in this many bytes;
   // beyond it only the first position's.
   std::size_t max_stored_bytes = std::size_t{256} << 20;
+  // blocked_force_at_load calls this after every path it evaluates (pre-search paths on the subset
+  // too), with the positions of that path and its relative load error |F̄ − W| / W: a search can
+  // take many seconds, and its caller shows progress. No effect on the result.
+  std::function<void(std::size_t positions, double load_error)> on_path;
 };
 
 struct BlockedForcePath {

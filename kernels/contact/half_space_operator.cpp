@@ -1,28 +1,14 @@
 #include "kernels/contact/half_space_operator.hpp"
 
 #include <cmath>
+#include <fftw3.h>
+
 #include <cstring>
-#include <mutex>
-#include <new>
 #include <stdexcept>
 
 #include "kernels/contact/love_influence.hpp"
 
 namespace rollspec::contact {
-
-namespace {
-// FFTW's planner (plan creation and destruction) is not thread-safe; execution is.
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-template <class T>
-T* fftw_alloc(std::size_t n) {
-  void* ptr = fftw_malloc(sizeof(T) * n);
-  if (ptr == nullptr) throw std::bad_alloc();
-  return static_cast<T*>(ptr);
-}
-}  // namespace
 
 HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary boundary, PlannerEffort effort)
     : grid_(grid), e_star_(e_star), boundary_(boundary) {
@@ -33,18 +19,17 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary b
   fny_ = open ? 2 * grid.ny : grid.ny;
   ncomplex_ = fny_ * (fnx_ / 2 + 1);
   const std::size_t nreal = fnx_ * fny_;
-  in_ = fftw_alloc<double>(nreal);
-  out_ = fftw_alloc<double>(nreal);
-  spectrum_ = fftw_alloc<fftw_complex>(ncomplex_);
-  kernel_ = fftw_alloc<fftw_complex>(ncomplex_);
-  {
-    std::lock_guard<std::mutex> lock(planner_mutex());
-    const unsigned flags = effort == PlannerEffort::Measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-    // Row-major (fny rows of fnx): x is the fastest index, as in Grid.
-    forward_ = fftw_plan_dft_r2c_2d(static_cast<int>(fny_), static_cast<int>(fnx_), in_, spectrum_, flags);
-    backward_ = fftw_plan_dft_c2r_2d(static_cast<int>(fny_), static_cast<int>(fnx_), spectrum_, out_, flags);
-  }
-  if (forward_ == nullptr || backward_ == nullptr) throw std::runtime_error("HalfSpaceOperator: FFTW planning failed");
+  in_ = spectral::RealBuffer(nreal);
+  out_ = spectral::RealBuffer(nreal);
+  spectrum_ = spectral::ComplexBuffer(ncomplex_);
+  kernel_ = spectral::ComplexBuffer(ncomplex_);
+  const unsigned flags = effort == PlannerEffort::Measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+  // Row-major (fny rows of fnx): x is the fastest index, as in Grid.
+  const int rows = static_cast<int>(fny_), cols = static_cast<int>(fnx_);
+  forward_ = spectral::FftwPlan([&] { return fftw_plan_dft_r2c_2d(rows, cols, in_.data(), spectrum_.data(), flags); },
+                                "HalfSpaceOperator forward");
+  backward_ = spectral::FftwPlan([&] { return fftw_plan_dft_c2r_2d(rows, cols, spectrum_.data(), out_.data(), flags); },
+                                 "HalfSpaceOperator backward");
 
   const double scale = 1.0 / static_cast<double>(nreal);  // FFTW transforms are unnormalised
   if (open) {
@@ -60,7 +45,7 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary b
       }
     }
     self_ = love_coefficient(0, 0, grid.dx, grid.dy, e_star);
-    fftw_execute_dft_r2c(forward_, in_, kernel_);
+    fftw_execute_dft_r2c(forward_.get(), in_.data(), kernel_.data());
     for (std::size_t k = 0; k < ncomplex_; ++k) {
       kernel_[k][0] *= scale;
       kernel_[k][1] *= scale;
@@ -86,35 +71,23 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary b
     }
     self_ = diag * scale;
   }
-  std::memset(in_, 0, sizeof(double) * nreal);
-}
-
-HalfSpaceOperator::~HalfSpaceOperator() {
-  {
-    std::lock_guard<std::mutex> lock(planner_mutex());
-    if (forward_ != nullptr) fftw_destroy_plan(forward_);
-    if (backward_ != nullptr) fftw_destroy_plan(backward_);
-  }
-  fftw_free(in_);
-  fftw_free(out_);
-  fftw_free(spectrum_);
-  fftw_free(kernel_);
+  std::memset(in_.data(), 0, sizeof(double) * nreal);
 }
 
 void HalfSpaceOperator::apply(const double* p, double* u) {
   const std::size_t nx = grid_.nx, ny = grid_.ny;
   // Only the nx × ny corner of in_ is ever written: the zero padding of DC-FFT persists
   // (out-of-place r2c preserves its input).
-  for (std::size_t iy = 0; iy < ny; ++iy) std::memcpy(in_ + iy * fnx_, p + iy * nx, sizeof(double) * nx);
-  fftw_execute_dft_r2c(forward_, in_, spectrum_);
+  for (std::size_t iy = 0; iy < ny; ++iy) std::memcpy(in_.data() + iy * fnx_, p + iy * nx, sizeof(double) * nx);
+  fftw_execute_dft_r2c(forward_.get(), in_.data(), spectrum_.data());
   for (std::size_t k = 0; k < ncomplex_; ++k) {
     const double re = spectrum_[k][0] * kernel_[k][0] - spectrum_[k][1] * kernel_[k][1];
     const double im = spectrum_[k][0] * kernel_[k][1] + spectrum_[k][1] * kernel_[k][0];
     spectrum_[k][0] = re;
     spectrum_[k][1] = im;
   }
-  fftw_execute_dft_c2r(backward_, spectrum_, out_);
-  for (std::size_t iy = 0; iy < ny; ++iy) std::memcpy(u + iy * nx, out_ + iy * fnx_, sizeof(double) * nx);
+  fftw_execute_dft_c2r(backward_.get(), spectrum_.data(), out_.data());
+  for (std::size_t iy = 0; iy < ny; ++iy) std::memcpy(u + iy * nx, out_.data() + iy * fnx_, sizeof(double) * nx);
 }
 
 }  // namespace rollspec::contact

@@ -1,9 +1,9 @@
 #pragma once
 // Fast product u = C p of the half-space influence matrix with a pressure field (design.md D-6).
 #include <cstddef>
-#include <fftw3.h>
 
 #include "kernels/contact/grid.hpp"
+#include "kernels/spectral/fftw_handles.hpp"
 
 namespace rollspec::contact {
 
@@ -19,15 +19,14 @@ enum class Boundary {
 
 enum class PlannerEffort { Estimate, Measure };
 
-// Owns its FFTW plans and aligned buffers: plans are made once (under a process-wide mutex, FFTW's
-// planner is not thread-safe) and re-executed with fftw_execute_dft_r2c/c2r on the object's own
+// Owns its FFTW plans and aligned buffers: plans are made once (under the one planner lock of
+// kernels/spectral/fftw_handles.hpp) and re-executed with fftw_execute_dft_r2c/c2r on the object's own
 // buffers, so distinct objects may be used concurrently from different threads. One object must not
 // be used by two threads at once.
 class HalfSpaceOperator {
  public:
   HalfSpaceOperator(const Grid& grid, double e_star, Boundary boundary = Boundary::Open,
                     PlannerEffort effort = PlannerEffort::Estimate);
-  ~HalfSpaceOperator();
   HalfSpaceOperator(const HalfSpaceOperator&) = delete;
   HalfSpaceOperator& operator=(const HalfSpaceOperator&) = delete;
 
@@ -49,12 +48,11 @@ class HalfSpaceOperator {
   Boundary boundary_;
   std::size_t fnx_, fny_, ncomplex_;
   double self_ = 0.0;
-  double* in_ = nullptr;             // padded pressure (padding stays zero)
-  double* out_ = nullptr;            // padded displacement
-  fftw_complex* spectrum_ = nullptr;
-  fftw_complex* kernel_ = nullptr;   // transformed coefficients, scaled by 1/(fnx·fny)
-  fftw_plan forward_ = nullptr;
-  fftw_plan backward_ = nullptr;
+  spectral::RealBuffer in_;         // padded pressure (padding stays zero)
+  spectral::RealBuffer out_;        // padded displacement
+  spectral::ComplexBuffer spectrum_;
+  spectral::ComplexBuffer kernel_;  // transformed coefficients, scaled by 1/(fnx·fny)
+  spectral::FftwPlan forward_, backward_;  // declared after the buffers: destroyed before them
 };
 
 }  // namespace rollspec::contact

@@ -3,11 +3,7 @@
 #include <fftw3.h>
 
 #include <cmath>
-#include <memory>
-#include <new>
 #include <stdexcept>
-
-#include "kernels/spectral/fftw_planner_lock.hpp"
 
 namespace rollspec::spectral {
 
@@ -21,33 +17,20 @@ double amplitude(double g, double fundamental, Amplitudes mode, double u_amp) {
 }
 }  // namespace
 
-HarmonicSynthesiser::HarmonicSynthesiser(std::size_t n_samples) : n_(n_samples), plan_(nullptr) {
+HarmonicSynthesiser::HarmonicSynthesiser(std::size_t n_samples) : n_(n_samples) {
   if (n_ < 4 || n_ % 2 != 0) throw std::invalid_argument("synthesis length must be even and at least 4");
-  double* out = fftw_alloc_real(n_);
-  fftw_complex* in = fftw_alloc_complex(n_ / 2 + 1);
-  {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    plan_ = fftw_plan_dft_c2r_1d(static_cast<int>(n_), in, out, FFTW_ESTIMATE);
-  }
-  fftw_free(out);
-  fftw_free(in);
-  if (!plan_) throw std::runtime_error("FFTW could not plan the synthesis transform");
-}
-
-HarmonicSynthesiser::~HarmonicSynthesiser() {
-  const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-  fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+  const RealBuffer out(n_);
+  const ComplexBuffer in(n_ / 2 + 1);
+  plan_ = FftwPlan([&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n_), in.data(), out.data(), FFTW_ESTIMATE); },
+                   "harmonic synthesis (c2r)");
 }
 
 void HarmonicSynthesiser::synthesise(const double* psd, double fundamental, Amplitudes mode, const double* u_phase,
                                      const double* u_amplitude, double* out) const {
   const std::size_t nh = harmonics();
-  // FFTW-aligned buffers owned for the call, so a PSD refused by amplitude() leaks nothing.
-  const std::unique_ptr<fftw_complex, decltype(&fftw_free)> spec_owner(fftw_alloc_complex(nh), fftw_free);
-  const std::unique_ptr<double, decltype(&fftw_free)> buf_owner(fftw_alloc_real(n_), fftw_free);
-  fftw_complex* spec = spec_owner.get();
-  double* buf = buf_owner.get();
-  if (!spec || !buf) throw std::bad_alloc();
+  // Buffers owned for the call, so a PSD refused by amplitude() leaks nothing.
+  const ComplexBuffer spec(nh);
+  const RealBuffer buf(n_);
   spec[0][0] = spec[0][1] = 0.0;
   spec[nh - 1][0] = spec[nh - 1][1] = 0.0;
   // FFTW's c2r computes x_i = X_0 + 2 Re sum_j X_j e^{2 pi i j i/N} + X_{N/2}(-1)^i, so X_j = A_j/2 e^{i phi_j}.
@@ -57,7 +40,7 @@ void HarmonicSynthesiser::synthesise(const double* psd, double fundamental, Ampl
     spec[j][0] = a * std::cos(phi);
     spec[j][1] = a * std::sin(phi);
   }
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(plan_), spec, buf);
+  fftw_execute_dft_c2r(plan_.get(), spec.data(), buf.data());
   for (std::size_t i = 0; i < n_; ++i) out[i] = buf[i];
 }
 

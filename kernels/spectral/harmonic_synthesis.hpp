@@ -14,6 +14,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "kernels/spectral/fftw_handles.hpp"
+
 namespace rollspec::spectral {
 
 enum class Amplitudes { deterministic, rayleigh };
@@ -21,7 +23,6 @@ enum class Amplitudes { deterministic, rayleigh };
 class HarmonicSynthesiser {
  public:
   explicit HarmonicSynthesiser(std::size_t n_samples);
-  ~HarmonicSynthesiser();
   HarmonicSynthesiser(const HarmonicSynthesiser&) = delete;
   HarmonicSynthesiser& operator=(const HarmonicSynthesiser&) = delete;
 
@@ -36,7 +37,7 @@ class HarmonicSynthesiser {
 
  private:
   std::size_t n_;
-  void* plan_;  // fftw_plan, c2r, made once
+  FftwPlan plan_;  // c2r, made once, executed on per-call buffers
 };
 
 // Plain O(N * N/2) cosine sum of the same series: the reference oracle for tests.

@@ -5,23 +5,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "kernels/spectral/fftw_planner_lock.hpp"
 
 namespace rollspec::spectral {
 
-WelchWorkspace::WelchWorkspace(std::size_t segment)
-    : segment_(segment),
-      in_(fftw_alloc_real(segment)),
-      out_(fftw_alloc_complex(segment / 2 + 1)) {
-  if (!in_ || !out_) throw std::bad_alloc();
-}
-
-WelchWorkspace::~WelchWorkspace() {
-  fftw_free(in_);
-  fftw_free(out_);
-}
-
-WelchPlan::WelchPlan(const WelchConfig& config) : config_(config), plan_(nullptr) {
+WelchPlan::WelchPlan(const WelchConfig& config) : config_(config) {
   if (config_.segment < 2) throw std::invalid_argument("Welch segment must hold at least 2 samples");
   if (config_.overlap >= config_.segment) throw std::invalid_argument("Welch overlap must be shorter than the segment");
   if (!(config_.sample_rate > 0.0) || !std::isfinite(config_.sample_rate))
@@ -31,15 +18,9 @@ WelchPlan::WelchPlan(const WelchConfig& config) : config_(config), plan_(nullptr
   for (double w : window_) s2 += w * w;
   scale_ = 1.0 / (config_.sample_rate * s2);
   WelchWorkspace probe(config_.segment);
-  const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-  plan_ = fftw_plan_dft_r2c_1d(static_cast<int>(config_.segment), probe.in(),
-                               static_cast<fftw_complex*>(probe.out()), FFTW_ESTIMATE);
-  if (!plan_) throw std::runtime_error("FFTW could not plan the Welch transform");
-}
-
-WelchPlan::~WelchPlan() {
-  const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-  fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+  plan_ = FftwPlan(
+      [&] { return fftw_plan_dft_r2c_1d(static_cast<int>(config_.segment), probe.in(), probe.out(), FFTW_ESTIMATE); },
+      "Welch (r2c)");
 }
 
 std::vector<double> WelchPlan::frequencies() const {
@@ -61,7 +42,7 @@ void WelchPlan::psd(const double* x, std::size_t n, double* out, WelchWorkspace&
   if (ws.segment() != L) throw std::invalid_argument("Welch workspace has the wrong segment length");
   for (std::size_t k = 0; k < nf; ++k) out[k] = 0.0;
   double* in = ws.in();
-  auto* spec = static_cast<fftw_complex*>(ws.out());
+  FftwComplex* spec = ws.out();
   for (std::size_t s = 0; s < ns; ++s) {
     const double* seg = x + s * step;
     double mean = 0.0;
@@ -70,7 +51,7 @@ void WelchPlan::psd(const double* x, std::size_t n, double* out, WelchWorkspace&
       mean /= static_cast<double>(L);
     }
     for (std::size_t i = 0; i < L; ++i) in[i] = (seg[i] - mean) * window_[i];
-    fftw_execute_dft_r2c(static_cast<fftw_plan>(plan_), in, spec);
+    fftw_execute_dft_r2c(plan_.get(), in, spec);
     for (std::size_t k = 0; k < nf; ++k) out[k] += spec[k][0] * spec[k][0] + spec[k][1] * spec[k][1];
   }
   // D-15: density scaling, one-sided doubling except DC and (even L) Nyquist, mean over segments.

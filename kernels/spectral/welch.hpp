@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "kernels/spectral/fftw_handles.hpp"
 #include "kernels/spectral/window.hpp"
 
 namespace rollspec::spectral {
@@ -28,24 +29,20 @@ struct WelchConfig {
 // Per-thread scratch buffers for WelchPlan::psd (FFTW-aligned).
 class WelchWorkspace {
  public:
-  explicit WelchWorkspace(std::size_t segment);
-  ~WelchWorkspace();
-  WelchWorkspace(const WelchWorkspace&) = delete;
-  WelchWorkspace& operator=(const WelchWorkspace&) = delete;
-  double* in() { return in_; }
-  void* out() { return out_; }
+  explicit WelchWorkspace(std::size_t segment) : segment_(segment), in_(segment), out_(segment / 2 + 1) {}
+  double* in() { return in_.data(); }
+  FftwComplex* out() { return out_.data(); }
   std::size_t segment() const { return segment_; }
 
  private:
   std::size_t segment_;
-  double* in_;
-  void* out_;  // fftw_complex[segment/2+1]
+  RealBuffer in_;
+  ComplexBuffer out_;  // segment/2+1 values
 };
 
 class WelchPlan {
  public:
   explicit WelchPlan(const WelchConfig& config);
-  ~WelchPlan();
   WelchPlan(const WelchPlan&) = delete;
   WelchPlan& operator=(const WelchPlan&) = delete;
 
@@ -72,7 +69,7 @@ class WelchPlan {
   WelchConfig config_;
   std::vector<double> window_;
   double scale_;  // 1 / (f_s sum w^2)
-  void* plan_;    // fftw_plan
+  FftwPlan plan_;  // r2c, executed on a workspace's buffers
 };
 
 }  // namespace rollspec::spectral

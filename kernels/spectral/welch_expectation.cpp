@@ -7,7 +7,7 @@
 #include <complex>
 #include <stdexcept>
 
-#include "kernels/spectral/fftw_planner_lock.hpp"
+#include "kernels/spectral/fftw_handles.hpp"
 
 namespace rollspec::spectral {
 
@@ -30,26 +30,17 @@ std::vector<double> welch_kernel(const WelchPlan& plan, std::size_t refine) {
   for (double v : w) s2 += v * v;
   // K at nu = m f_s / N, m = 0..N-1 (periodic in m).
   std::vector<double> kernel(N);
-  double* in = fftw_alloc_real(N);
-  fftw_complex* out = fftw_alloc_complex(N / 2 + 1);
-  fftw_plan p;
-  {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    p = fftw_plan_dft_r2c_1d(static_cast<int>(N), in, out, FFTW_ESTIMATE);
-  }
+  const RealBuffer in(N);
+  const ComplexBuffer out(N / 2 + 1);
+  const FftwPlan p([&] { return fftw_plan_dft_r2c_1d(static_cast<int>(N), in.data(), out.data(), FFTW_ESTIMATE); },
+                   "Welch kernel (r2c)");
   for (std::size_t i = 0; i < N; ++i) in[i] = i < L ? w[i] : 0.0;
-  fftw_execute(p);
+  fftw_execute(p.get());
   for (std::size_t m = 0; m <= N / 2; ++m) {
     const double v = (out[m][0] * out[m][0] + out[m][1] * out[m][1]) / (fs * s2);
     kernel[m] = v;
     if (m > 0 && m < N - m) kernel[N - m] = v;  // K is even
   }
-  {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    fftw_destroy_plan(p);
-  }
-  fftw_free(in);
-  fftw_free(out);
   return kernel;
 }
 

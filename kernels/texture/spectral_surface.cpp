@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernels/spectral/fftw_planner_lock.hpp"
 
 namespace rollspec::texture {
 
@@ -28,7 +27,7 @@ void validate(const Psd& psd, const SpectralSurfaceSpec& s) {
 }
 }  // namespace
 
-SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const SpectralSurfaceSpec& spec) : spec_(spec), plan_(nullptr) {
+SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const SpectralSurfaceSpec& spec) : spec_(spec) {
   validate(psd, spec_);
   const std::size_t nh = spec_.nx / 2 + 1;
   const double dqx = 2.0 * M_PI / (static_cast<double>(spec_.nx) * spec_.dx);
@@ -48,20 +47,11 @@ SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const Spectra
       c_[iy * nh + ix] = iso_->cell_average(q, width);                        // Eq. 21
     }
   }
-  double* out = fftw_alloc_real(spec_.nx * spec_.ny);
-  fftw_complex* in = fftw_alloc_complex(modes());
-  {
-    const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
-    plan_ = fftw_plan_dft_c2r_2d(static_cast<int>(spec_.ny), static_cast<int>(spec_.nx), in, out, FFTW_ESTIMATE);
-  }
-  fftw_free(out);
-  fftw_free(in);
-  if (!plan_) throw std::runtime_error("FFTW could not plan the 2D surface transform");
-}
-
-SpectralSurfaceGenerator::~SpectralSurfaceGenerator() {
-  const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
-  fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+  const spectral::RealBuffer out(spec_.nx * spec_.ny);
+  const spectral::ComplexBuffer in(modes());
+  plan_ = spectral::FftwPlan(
+      [&] { return fftw_plan_dft_c2r_2d(static_cast<int>(spec_.ny), static_cast<int>(spec_.nx), in.data(), out.data(), FFTW_ESTIMATE); },
+      "spectral surface (2D c2r)");
 }
 
 double SpectralSurfaceGenerator::target_variance() const {
@@ -96,18 +86,16 @@ std::vector<std::complex<double>> SpectralSurfaceGenerator::coefficients(const d
 
 void SpectralSurfaceGenerator::generate(const double* u_phase, const double* u_amplitude, Surface& out) const {
   const std::vector<std::complex<double>> z = coefficients(u_phase, u_amplitude);
-  fftw_complex* in = fftw_alloc_complex(modes());
-  double* buf = fftw_alloc_real(spec_.nx * spec_.ny);
+  const spectral::ComplexBuffer in(modes());
+  const spectral::RealBuffer buf(spec_.nx * spec_.ny);
   for (std::size_t i = 0; i < z.size(); ++i) {
     in[i][0] = z[i].real();
     in[i][1] = z[i].imag();
   }
   // FFTW's c2r sums the implicit conjugates of 0 < ix < nx/2, which is exactly Eq. 26.
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(plan_), in, buf);
+  fftw_execute_dft_c2r(plan_.get(), in.data(), buf.data());
   out = Surface(spec_.nx, spec_.ny, spec_.dx, spec_.dy);
-  std::copy(buf, buf + spec_.nx * spec_.ny, out.heights.begin());
-  fftw_free(in);
-  fftw_free(buf);
+  std::copy(buf.data(), buf.data() + spec_.nx * spec_.ny, out.heights.begin());
 }
 
 Surface spectral_surface_direct(const SpectralSurfaceGenerator& gen, const double* u_phase, const double* u_amplitude) {

@@ -26,6 +26,7 @@
 #include "kernels/texture/isotropic_psd.hpp"
 #include "kernels/texture/psd.hpp"
 #include "kernels/texture/surface.hpp"
+#include "kernels/spectral/fftw_handles.hpp"
 
 namespace rollspec::texture {
 
@@ -43,7 +44,6 @@ struct SpectralSurfaceSpec {
 class SpectralSurfaceGenerator {
  public:
   SpectralSurfaceGenerator(const Psd& psd, const SpectralSurfaceSpec& spec);
-  ~SpectralSurfaceGenerator();
   SpectralSurfaceGenerator(const SpectralSurfaceGenerator&) = delete;
   SpectralSurfaceGenerator& operator=(const SpectralSurfaceGenerator&) = delete;
 
@@ -62,7 +62,7 @@ class SpectralSurfaceGenerator {
   SpectralSurfaceSpec spec_;
   std::unique_ptr<IsotropicPsd> iso_;
   std::vector<double> c_;
-  void* plan_;  // fftw_plan, 2D c2r
+  spectral::FftwPlan plan_;  // 2D c2r, executed on per-call buffers (new-array interface)
 };
 
 // Reference oracle: the plain double sum of Eq. 26 over all modes, O((nx ny)^2).

@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "kernels/spectral/fftw_planner_lock.hpp"
+#include "kernels/spectral/fftw_handles.hpp"
 
 namespace rollspec::texture {
 
@@ -39,28 +39,23 @@ Moments moments(const double* h, std::size_t n) {
 // accumulated over the batch, by FFT of length >= 2n (no wrap-around).
 class AcfPlan {
  public:
-  explicit AcfPlan(std::size_t n) : n_(n), m_(2 * n), in_(fftw_alloc_real(m_)), spec_(fftw_alloc_complex(m_ / 2 + 1)) {
-    const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
-    fwd_ = fftw_plan_dft_r2c_1d(static_cast<int>(m_), in_, spec_, FFTW_ESTIMATE);
-    bwd_ = fftw_plan_dft_c2r_1d(static_cast<int>(m_), spec_, in_, FFTW_ESTIMATE);
-  }
-  ~AcfPlan() {
-    {
-      const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
-      fftw_destroy_plan(fwd_);
-      fftw_destroy_plan(bwd_);
-    }
-    fftw_free(in_);
-    fftw_free(spec_);
-  }
+  explicit AcfPlan(std::size_t n)
+      : n_(n),
+        m_(2 * n),
+        in_(m_),
+        spec_(m_ / 2 + 1),
+        fwd_([&] { return fftw_plan_dft_r2c_1d(static_cast<int>(m_), in_.data(), spec_.data(), FFTW_ESTIMATE); },
+             "autocorrelation (r2c)"),
+        bwd_([&] { return fftw_plan_dft_c2r_1d(static_cast<int>(m_), spec_.data(), in_.data(), FFTW_ESTIMATE); },
+             "autocorrelation (c2r)") {}
   AcfPlan(const AcfPlan&) = delete;
   AcfPlan& operator=(const AcfPlan&) = delete;
 
   // Adds |Z|^2 of one sequence (n values at stride, minus mean) to acc (m/2+1 values).
   void add(const double* z, std::size_t stride, double mean, std::vector<double>& acc) {
     for (std::size_t i = 0; i < n_; ++i) in_[i] = z[i * stride] - mean;
-    std::fill(in_ + n_, in_ + m_, 0.0);
-    fftw_execute(fwd_);
+    std::fill(in_.data() + n_, in_.data() + m_, 0.0);
+    fftw_execute(fwd_.get());
     for (std::size_t k = 0; k < acc.size(); ++k) acc[k] += spec_[k][0] * spec_[k][0] + spec_[k][1] * spec_[k][1];
   }
   // rho(0..max_lag) from the accumulated power.
@@ -69,7 +64,7 @@ class AcfPlan {
       spec_[k][0] = acc[k];
       spec_[k][1] = 0.0;
     }
-    fftw_execute(bwd_);
+    fftw_execute(bwd_.get());
     std::vector<double> rho(std::min(max_lag, n_ - 1) + 1);
     for (std::size_t t = 0; t < rho.size(); ++t) rho[t] = in_[t] / in_[0];
     return rho;
@@ -78,9 +73,9 @@ class AcfPlan {
 
  private:
   std::size_t n_, m_;
-  double* in_;
-  fftw_complex* spec_;
-  fftw_plan fwd_, bwd_;
+  spectral::RealBuffer in_;
+  spectral::ComplexBuffer spec_;
+  spectral::FftwPlan fwd_, bwd_;  // after the buffers: destroyed before them
 };
 }  // namespace
 
@@ -170,28 +165,41 @@ HeightStatistics mean_statistics(const std::vector<HeightStatistics>& all) {
   return m;
 }
 
+HeightStatistics std_statistics(const std::vector<HeightStatistics>& all) {
+  const HeightStatistics m = mean_statistics(all);
+  const auto spread = [&](double HeightStatistics::*field) {
+    double sum = 0.0, n = 0.0;
+    for (const HeightStatistics& s : all)
+      if (std::isfinite(s.*field)) {
+        sum += (s.*field - m.*field) * (s.*field - m.*field);
+        n += 1.0;
+      }
+    return n >= 2.0 ? std::sqrt(sum / (n - 1.0)) : std::numeric_limits<double>::quiet_NaN();
+  };
+  HeightStatistics d;
+  d.mean = spread(&HeightStatistics::mean);
+  d.rms = spread(&HeightStatistics::rms);
+  d.skewness = spread(&HeightStatistics::skewness);
+  d.kurtosis = spread(&HeightStatistics::kurtosis);
+  d.correlation_length_x = spread(&HeightStatistics::correlation_length_x);
+  d.correlation_length_y = spread(&HeightStatistics::correlation_length_y);
+  return d;
+}
+
 std::vector<double> surface_periodogram(const Surface& s) {
   if (s.heights.size() != s.nx * s.ny || s.nx < 2 || s.ny < 2) throw std::invalid_argument("surface periodogram: bad surface size");
   const std::size_t nh = s.nx / 2 + 1;
-  double* in = fftw_alloc_real(s.nx * s.ny);
-  fftw_complex* out = fftw_alloc_complex(s.ny * nh);
-  fftw_plan plan;
-  {
-    const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
-    plan = fftw_plan_dft_r2c_2d(static_cast<int>(s.ny), static_cast<int>(s.nx), in, out, FFTW_ESTIMATE);
-  }
+  const spectral::RealBuffer in(s.nx * s.ny);
+  const spectral::ComplexBuffer out(s.ny * nh);
+  const spectral::FftwPlan plan(
+      [&] { return fftw_plan_dft_r2c_2d(static_cast<int>(s.ny), static_cast<int>(s.nx), in.data(), out.data(), FFTW_ESTIMATE); },
+      "surface periodogram (2D r2c)");
   const Moments mo = moments(s.heights.data(), s.heights.size());
   for (std::size_t i = 0; i < s.heights.size(); ++i) in[i] = s.heights[i] - mo.mean;
-  fftw_execute(plan);
+  fftw_execute(plan.get());
   const double scale = s.dx * s.dy / static_cast<double>(s.nx * s.ny);  // Eq. 25
   std::vector<double> c(s.ny * nh);
   for (std::size_t i = 0; i < c.size(); ++i) c[i] = scale * (out[i][0] * out[i][0] + out[i][1] * out[i][1]);
-  {
-    const std::lock_guard<std::mutex> lock(spectral::fftw_planner_mutex());
-    fftw_destroy_plan(plan);
-  }
-  fftw_free(in);
-  fftw_free(out);
   return c;
 }
 

@@ -29,6 +29,9 @@ HeightStatistics surface_statistics(const Surface& s);
 // Ensemble mean of per-realisation statistics (each field averaged; a correlation length that is
 // NaN in some realisations is averaged over the others, NaN if it is NaN in all).
 HeightStatistics mean_statistics(const std::vector<HeightStatistics>& per_realisation);
+// Sample standard deviation (n - 1) over realisations of each field, with the same NaN rule; NaN
+// for fewer than two values. Says how far one realisation strays from the mean.
+HeightStatistics std_statistics(const std::vector<HeightStatistics>& per_realisation);
 
 // rho(0..max_lag) of Eq. 23 by zero-padded FFT; the direct O(N max_lag) sum is the oracle.
 std::vector<double> autocorrelation(const double* h, std::size_t n, std::size_t max_lag);

@@ -18,23 +18,25 @@ def test_stiffness_plot(stiffness_table, tmp_path):
     assert is_png_with_content(out)
 
 
-def test_stiffness_refuses_a_result_file(oscillator_result, tmp_path):
-    r = post("stiffness", oscillator_result, "--out", tmp_path / "x.png")
+def test_stiffness_refuses_a_result_file(stiffness_table, oscillator_result, tmp_path):
+    # A figure from an earlier good run is neither replaced nor removed by refused ones.
+    out = tmp_path / "x.png"
+    assert post("stiffness", stiffness_table, "--out", out).returncode == 0
+    before = out.read_bytes()
+    r = post("stiffness", oscillator_result, "--out", out)
     assert r.returncode == 65 and "rollspec-stiffness-table" in r.stderr
-    r = post("stiffness", tmp_path / "missing.h5", "--out", tmp_path / "x.png")
+    r = post("stiffness", tmp_path / "missing.h5", "--out", out)
     assert r.returncode == 66 and "no such file" in r.stderr
-    assert not (tmp_path / "x.png").exists()
+    assert out.read_bytes() == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["stiffness.h5", "x.png"]  # no temporary file left
 
 
 def test_stiffness_plot_of_an_engine_table(tmp_path):
     import subprocess
 
     import h5py
-    import pytest
 
     from conftest import BIN, SOURCE
-    if "stiffness" not in subprocess.run([BIN, "--help"], capture_output=True, text=True).stdout:
-        pytest.skip("this rollspec build has no stiffness command")
     table = tmp_path / "hertz.h5"
     r = subprocess.run([BIN, "stiffness", SOURCE / "studies" / "hertz.ini", "--out", table, "--quiet"],
                        capture_output=True, text=True)

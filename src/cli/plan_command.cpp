@@ -12,6 +12,7 @@
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
@@ -32,14 +33,14 @@ int plan_command(const Args& args) {
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
 
   const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
-  std::cout << "study " << study.file << ": scene " << s.scene() << ", " << s.integer("study.realisations")
-            << " realisations, seed " << s.integer("study.seed") << "\n";
+  std::cout << "study " << study.file << ": scene " << s.scene() << ", "
+            << io::counted(static_cast<unsigned long long>(s.integer("study.realisations")), "realisation") << ", seed " << s.integer("study.seed") << "\n";
   const int threads = ensemble::ensemble_threads();
   const auto memory = scenes::estimate_memory(s, threads);
   const double available = io::available_memory();
   std::string keys;
   for (const auto& k : memory.keys) keys += (keys.empty() ? "" : ", ") + k;
-  std::cout << "memory: estimated peak " << scenes::format_bytes(memory.bytes) << " on " << threads << " thread(s)"
+  std::cout << "memory: estimated peak " << scenes::format_bytes(memory.bytes) << " on " << threads << " thread" << (threads == 1 ? "" : "s")
             << (memory.what.empty() ? std::string() : " (largest: " + memory.what + ", from " + keys + ")") << "; available "
             << scenes::format_bytes(available) << "\n";
   if (memory.bytes > available) {
@@ -50,7 +51,7 @@ int plan_command(const Args& args) {
   if (scene->runs_ensemble() && !scene->single_run()) {
     const double K = static_cast<double>(s.integer("study.realisations")), C = static_cast<double>(s.integer("ensemble.chunk_size"));
     const double chunk_bytes = 48.0 + 16.0 * static_cast<double>(scene->values_per_realisation());
-    std::cout << "checkpoint disk: " << std::ceil(K / C) << " chunk(s) of " << scenes::format_bytes(chunk_bytes) << " = "
+    std::cout << "checkpoint disk: " << io::counted(static_cast<unsigned long long>(std::ceil(K / C)), "chunk") << " of " << scenes::format_bytes(chunk_bytes) << " = "
               << scenes::format_bytes(std::ceil(K / C) * chunk_bytes) << " beside the result while the run lasts\n";
   }
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");

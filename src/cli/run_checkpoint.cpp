@@ -12,6 +12,7 @@
 #include "src/io/input_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/scenes/scene.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
@@ -109,8 +110,8 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
       throw data_error(dir + ": the checkpoint has chunks but no manifest (written by an older rollspec, or "
                        "damaged); start over with --restart");
     } else if (chunks && !restart) {
-      throw cannot_create(dir + " holds an unfinished run (" + std::to_string(chunks) +
-                          " checkpointed chunk(s)); finish it with --resume, or start over with --restart");
+      throw cannot_create(dir + " holds an unfinished run (" + std::to_string(chunks) + " checkpointed chunk" +
+                          (chunks == 1 ? "" : "s") + "); finish it with --resume, or start over with --restart");
     }
     if (root && !(resume && manifest)) {
       store.clear(/*keep_lock=*/true);  // stale chunks (--restart), temporaries, an old manifest

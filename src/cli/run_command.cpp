@@ -19,6 +19,7 @@
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
@@ -134,9 +135,9 @@ int run_command(const Args& args) {
     }
   }
   if (!quiet)
-    std::cout << "wrote " << out << " (" << sums.count << " realisations, " << sums.computed << " computed in "
-              << sums.seconds << " s, " << ensemble::mpi_size() << " rank(s) x " << omp_get_max_threads()
-              << " threads)\n";
+    std::cout << "wrote " << out << " (" << io::counted(sums.count, "realisation") << ", " << sums.computed << " computed in "
+              << sums.seconds << " s, " << io::counted(static_cast<unsigned long long>(ensemble::mpi_size()), "rank") << " x "
+              << io::counted(static_cast<unsigned long long>(omp_get_max_threads()), "thread") << ")\n";
   return 0;
 }
 

@@ -14,6 +14,7 @@
 #include "src/scenes/stiffness_scene.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/study/study.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
@@ -46,8 +47,9 @@ int stiffness_command(const Args& args) {
   const auto t = stiffness::resolve_table(s, pair.radius, pair.effective_modulus, vm.count("rebuild") > 0,
                                           vm.count("quiet") > 0, status);
   if (ensemble::mpi_rank() != 0) return 0;  // every rank holds the table; rank 0 reports it
-  std::printf("# stiffness table: %s\n# input hash %s, %lld realisation(s), ball radius %g m, E* %.6g Pa, H %g Pa\n",
-              status.c_str(), t.input_hash.c_str(), static_cast<long long>(t.realisations), t.ball_radius,
+  std::printf("# stiffness table: %s\n# input hash %s, %s, ball radius %g m, E* %.6g Pa, H %g Pa\n",
+              status.c_str(), t.input_hash.c_str(),
+              io::counted(static_cast<unsigned long long>(t.realisations), "realisation").c_str(), t.ball_radius,
               t.effective_modulus, t.hardness);
   std::printf("%14s %14s %12s %14s %14s %12s %10s\n", "approach_m", "force_N", "force_std_N", "stiffness_N/m",
               "area_m2", "plastic", "iter");

@@ -24,8 +24,9 @@ namespace rollspec::cli {
 namespace fs = std::filesystem;
 
 namespace {
-void print_statistics(const char* what, std::size_t i, const texture::HeightStatistics& s, bool surface) {
-  std::printf("%-8s %6zu %12.5g %10.4f %10.4f %14.5g", what, i, s.rms, s.skewness, s.kurtosis, s.correlation_length_x);
+void print_statistics(const char* what, std::size_t i, const texture::HeightStatistics& s, bool surface, bool quiet) {
+  if (quiet) return;
+  std::printf("%-9s %6zu %12.5g %10.4f %10.4f %14.5g", what, i, s.rms, s.skewness, s.kurtosis, s.correlation_length_x);
   if (surface) std::printf(" %14.5g", s.correlation_length_y);
   std::printf("\n");
 }
@@ -53,18 +54,20 @@ void refuse_overflow(const study::Study& s, const char* what, std::size_t i, con
 
 int texture_command(const Args& args) {
   const std::string usage =
-      "usage: rollspec texture STUDY.ini [--out FILE.h5] [--count N] [--set section.key=value ...]\n"
+      "usage: rollspec texture STUDY.ini [--out FILE.h5] [--count N] [--list | --quiet] [--set section.key=value ...]\n"
       "\n"
       "Generates the line textures ([lines]) and isotropic surfaces ([surface]) of the study's roughness\n"
       "PSD ([texture]) for realisations 0..N-1 (Philox keyed by seed and realisation) and writes\n"
       "/texture/x, /texture/lines, /texture/psd_wavenumber, /texture/psd_target, /texture/psd_realised,\n"
-      "/surface/x, /surface/y, /surface/heights. Prints rms, skewness, kurtosis and correlation\n"
-      "length per realisation and their mean. The study's scene must be `texture`.";
+      "/surface/x, /surface/y, /surface/heights. Prints the mean and the standard deviation over\n"
+      "realisations of rms, skewness, kurtosis and correlation lengths (--list: every realisation too).\n"
+      "The study's scene must be `texture`.";
   po::options_description opts("options");
   StudyArgs study;
   std::string out;
   long long count = -1;
-  opts.add_options()("out,o", po::value(&out), "texture file (default: the study's name with .h5)")(
+  opts.add_options()("list", "print the statistics of every realisation, not only their mean and spread")(
+      "quiet,q", "print nothing but errors")("out,o", po::value(&out), "texture file (default: the study's name with .h5)")(
       "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)")(
       "force", "replace an existing --out file even if it is not a rollspec texture file, and run a study whose "
                "memory estimate exceeds the available memory");
@@ -72,6 +75,8 @@ int texture_command(const Args& args) {
   add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  const bool quiet = vm.count("quiet") > 0, list = vm.count("list") > 0;
+  if (quiet && list) throw usage_error("--list and --quiet: allowed: one of them");
   if (vm.count("count") && (count < 0 || count > 1000000))
     throw usage_error("--count " + std::to_string(count) + ": allowed: a whole number in [0, 1000000]");
 
@@ -113,8 +118,10 @@ int texture_command(const Args& args) {
   io::Hdf5Writer w(io::check_output_target(target));
   io::write_provenance(w, "rollspec-texture", "1.0", s.canonical_text(), seed);
   w.attribute("/", "psd", psd.description);
-  std::printf("%-8s %6s %12s %10s %10s %14s %14s\n", "kind", "index", "rms_m", "skewness", "kurtosis", "corr_len_x_m",
-              "corr_len_y_m");
+  // Per-realisation rows name their index; the summary rows, how many realisations they summarise.
+  if (!quiet)
+    std::printf("%-9s %6s %12s %10s %10s %14s %14s\n", "kind", list ? "index" : "count", "rms_m", "skewness", "kurtosis",
+                "corr_len_x_m", "corr_len_y_m");
   if (n_lines) {
     const std::size_t n = ls.samples, nh = lines->harmonics();
     std::vector<double> x(n), all(n_lines * n), up(nh), ua(nh);
@@ -127,13 +134,14 @@ int texture_command(const Args& args) {
       lines->generate(up.data(), ua.data(), all.data() + r * n);
       const auto st = texture::line_statistics(all.data() + r * n, n, ls.spacing);
       refuse_overflow(s, "line", r, st, all.data() + r * n, n);
-      print_statistics("line", r, st, false);
+      print_statistics("line", r, st, false, !list);
       stats.push_back(st);
       profiles[r].x = x;
       profiles[r].z.assign(all.begin() + static_cast<std::ptrdiff_t>(r * n), all.begin() + static_cast<std::ptrdiff_t>((r + 1) * n));
     }
     // Mean over realisations; a correlation length that never reaches 1/e (NaN) is left out.
-    print_statistics("line_mean", n_lines, texture::mean_statistics(stats), false);
+    print_statistics("line_mean", n_lines, texture::mean_statistics(stats), false, quiet);
+    if (n_lines >= 2) print_statistics("line_std", n_lines, texture::std_statistics(stats), false, quiet);
     w.write("/texture/x", {n}, x.data(), "m", "position along the line");
     w.write("/texture/lines", {n_lines, n}, all.data(), "m", "line texture heights, one realisation per row");
     w.make_scale("/texture/x", "x");
@@ -159,10 +167,11 @@ int texture_command(const Args& args) {
       heights.insert(heights.end(), surf.heights.begin(), surf.heights.end());
       const auto st = texture::surface_statistics(surf);
       refuse_overflow(s, "surface", r, st, surf.heights.data(), surf.heights.size());
-      print_statistics("surface", r, st, true);
+      print_statistics("surface", r, st, true, !list);
       stats.push_back(st);
     }
-    print_statistics("surf_mean", n_surf, texture::mean_statistics(stats), true);
+    print_statistics("surf_mean", n_surf, texture::mean_statistics(stats), true, quiet);
+    if (n_surf >= 2) print_statistics("surf_std", n_surf, texture::std_statistics(stats), true, quiet);
     std::vector<double> xs(surf.nx), ys(surf.ny);
     for (std::size_t i = 0; i < surf.nx; ++i) xs[i] = surf.dx * static_cast<double>(i);
     for (std::size_t i = 0; i < surf.ny; ++i) ys[i] = surf.dy * static_cast<double>(i);
@@ -178,7 +187,9 @@ int texture_command(const Args& args) {
   target.check_kind = true;
   io::check_output_target(target);
   w.commit();
-  std::fprintf(stderr, "wrote %s (%zu lines, %zu surfaces)\n", out.c_str(), n_lines, n_surf);
+  if (!quiet)
+    std::fprintf(stderr, "wrote %s (%zu line%s, %zu surface%s)\n", out.c_str(), n_lines, n_lines == 1 ? "" : "s", n_surf,
+                 n_surf == 1 ? "" : "s");
   return 0;
 }
 

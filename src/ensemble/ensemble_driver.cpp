@@ -14,6 +14,7 @@
 #include "src/ensemble/progress.hpp"
 #include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::ensemble {
 
@@ -134,8 +135,9 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
   out.computed = sum_over_ranks(out.computed);
   if (any_rank(stop_requested())) {
     std::ostringstream s;
-    s << cfg.log_prefix << "interrupted: " << (sum_over_ranks(reused) + out.computed) << " of " << K
-      << " realisations are complete";
+    const auto complete = sum_over_ranks(reused) + out.computed;
+    s << cfg.log_prefix << "interrupted: " << complete << " of " << io::counted(K, "realisation")
+      << (complete == 1 ? " is" : " are") << " complete";
     if (!cfg.checkpoint_dir.empty()) s << " and checkpointed in " << cfg.checkpoint_dir << "; finish with --resume";
     throw UserError(kExitInterrupted, s.str());
   }

@@ -51,6 +51,8 @@ void Progress::advance(std::uint64_t n) {
   const auto now = std::chrono::steady_clock::now();
   const double since = std::chrono::duration<double>(now - last_).count();
   if (since < (tty_ ? 0.2 : 5.0) && done != total_) return;
+  if (!tty_ && done == total_) return;  // a log gets one final line, from finish()
+  if (!shown_ && std::chrono::duration<double>(now - start_).count() < show_after_) return;
   const std::lock_guard<std::mutex> lock(mutex_);
   if (finished_) return;
   last_ = now;
@@ -61,11 +63,13 @@ void Progress::finish() {
   if (quiet_) return;
   const std::lock_guard<std::mutex> lock(mutex_);
   if (finished_) return;
+  if (!shown_ && std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() < show_after_) return;
   print(done_, true);
   finished_ = true;
 }
 
 void Progress::print(std::uint64_t done, bool final) {
+  shown_ = true;
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
   const double eta = rate > 0 ? static_cast<double>(total_ - done) / rate : 0.0;

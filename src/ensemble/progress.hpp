@@ -13,6 +13,9 @@ namespace rollspec::ensemble {
 class Progress {
  public:
   Progress(std::string label, std::uint64_t total, bool quiet, std::string prefix = "");
+  // Shows nothing (not even the final line) unless the loop is still running after `seconds`:
+  // for phases that are usually quick.
+  void show_after(double seconds) { show_after_ = seconds; }
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
@@ -24,7 +27,8 @@ class Progress {
   std::string label_, prefix_;
   std::uint64_t total_;
   bool quiet_, tty_;
-  bool on_screen_ = false, finished_ = false;
+  bool on_screen_ = false, finished_ = false, shown_ = false;
+  double show_after_ = 0.0;
   std::atomic<std::uint64_t> done_{0};
   std::chrono::steady_clock::time_point start_, last_;
   std::mutex mutex_;

@@ -1,5 +1,6 @@
 #pragma once
-// A number as messages and tables print it: six significant digits ("%.6g"), nan and inf spelled out.
+// Numbers as messages and tables print them.
+// number_text: six significant digits ("%.6g"), nan and inf spelled out.
 #include <cstdio>
 #include <string>
 
@@ -9,6 +10,11 @@ inline std::string number_text(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
+}
+
+// A count with its noun, singular for one: "1 realisation", "3 realisations" (nouns with a plain -s plural).
+inline std::string counted(unsigned long long n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
 }  // namespace rollspec::io

@@ -6,6 +6,7 @@
 
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::io {
 
@@ -17,7 +18,7 @@ std::vector<spectral::Band> result_bands(const std::vector<double>& frequency, d
 
 std::string interval_method(std::uint64_t realisations) {
   if (realisations < spectral::kMinRealisationsForInterval)
-    return "none (" + std::to_string(realisations) + " realisations, fewer than the " +
+    return "none (" + counted(realisations, "realisation") + ", fewer than the " +
            std::to_string(spectral::kMinRealisationsForInterval) + " that an interval from their scatter needs)";
   return "realisation scatter: union of a chi-square law (Satterthwaite dof 2 K mean^2 / std^2) and a lognormal "
          "law (Cox), both with Student t on K - 1 dof (kernels/spectral/README.md D-21)";

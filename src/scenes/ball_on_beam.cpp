@@ -31,6 +31,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/rng/philox_stream.hpp"
+#include "src/ensemble/progress.hpp"
 #include "src/study/study.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
@@ -228,11 +229,7 @@ class BallOnBeam final : public Scene {
     step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
     step_options_.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
     check_step_coefficients(s);
-    if (uses_table_) {
-      study_ = &s;
-      table_spec_ = stiffness::table_spec(s, radius, law.effective_modulus);
-      table_path_ = stiffness::table_path(s, table_spec_);
-    }
+    if (uses_table_) study_ = &s;
     samples_ = beam::output_samples(model_);
     skip_ = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * model_.sample_rate));
     if (skip_ >= samples_) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(samples_) + " samples)");
@@ -246,6 +243,57 @@ class BallOnBeam final : public Scene {
     rows_ = std::make_unique<PsdRows>(names, average_, welch_->frequencies(), band_min_, band_max_, 2 * welch_->n_freq() + 1);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
+    add_pipeline_stages(s);
+  }
+
+  // texture, surface, stiffness_table, blocked_force, dynamics, spectra: the tables are stage
+  // objects whose inspection `plan` prints and whose resolution prepare() runs.
+  void add_pipeline_stages(const Study& s) {
+    add_stages({{"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + psd_.description + ")"}});
+    std::unique_ptr<TableStage> table;
+    if (uses_table_) {
+      const double radius = model_.contact.radius, e_star = model_.contact.effective_modulus;
+      table = std::make_unique<TableStage>(
+          "stiffness_table", stiffness::stiffness_cached_table(s, radius, e_star),
+          [] { return std::make_unique<stiffness::StiffnessTable>(); },
+          [&s, radius, e_star](stiffness::TableData& out, bool quiet) {
+            static_cast<stiffness::StiffnessTable&>(out) = stiffness::build_table(s, radius, e_star, quiet);
+          },
+          [this](const stiffness::TableData& t, const std::string& status, bool quiet) {
+            use_stiffness_table(static_cast<const stiffness::StiffnessTable&>(t), status, quiet);
+          });
+    }
+    const TableStage* t = table.get();
+    add_stage(std::make_unique<DerivedStage>([t] {
+      const bool valid = t && t->state() == stiffness::TableState::valid;
+      return StagePlan{"surface", t && !valid ? StageStatus::run : StageStatus::skipped,
+                       !t      ? "the point-contact laws need no isotropic surface"
+                       : valid ? "inside the cached stiffness table"
+                               : "isotropic surfaces for the stiffness table"};
+    }));
+    if (table) add_stage(std::move(table));
+    else
+      add_stages({{"stiffness_table", StageStatus::skipped,
+                   linearised_ ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"}});
+    if (blocked_solver_) {
+      const double radius = model_.contact.radius, e_star = model_.contact.effective_modulus;
+      const double weight = model_.ball.mass * model_.ball.gravity;
+      add_stage(std::make_unique<TableStage>(
+          "blocked_force", stiffness::blocked_force_cached_table(s, radius, e_star, weight),
+          [] { return std::make_unique<stiffness::BlockedForceTable>(); },
+          [&s, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
+            static_cast<stiffness::BlockedForceTable&>(out) = stiffness::build_blocked_force(s, radius, e_star, weight, quiet);
+          },
+          [this](const stiffness::TableData& b, const std::string& status, bool quiet) {
+            use_blocked_force(static_cast<const stiffness::BlockedForceTable&>(b), status, quiet);
+          }));
+    } else {
+      add_stages({{"blocked_force", linearised_ ? StageStatus::run : StageStatus::skipped,
+                   linearised_ ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
+                               : "only the linearised law uses F0"}});
+    }
+    add_stages({{"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step, implicit contact (D-9, D-10)"},
+                {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"}});
   }
 
   // The exact modal step of very high modes (omega h in the thousands) overflows double precision:
@@ -273,38 +321,35 @@ class BallOnBeam final : public Scene {
   }
 
   void prepare(bool quiet, bool rebuild) override {
-    if (uses_table_) {
-      std::string status;
-      const auto t = stiffness::resolve_table(*study_, model_.contact.radius, model_.contact.effective_modulus, rebuild,
-                                              quiet, status);
-      if (!quiet) std::fprintf(stderr, "stiffness table: %s\n", status.c_str());
-      model_.contact.compression = t.approach;
-      if (model_.contact.kind == beam::ContactLawKind::table) {
-        model_.contact.values = t.force_mean;
-      } else {  // seed 001 Eq. 7 literally: k_c(delta) from the table's stiffness, F = k_c(delta) delta
-        model_.contact.values = t.stiffness_mean;
-        model_.contact.values[0] = t.stiffness_mean[1];
-      }
-      static_compression_ = t.approach_at(model_.ball.mass * model_.ball.gravity);
-      if (!(static_compression_ > 0.0))
-        study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
-                                                     " N does not reach the ball's weight; raise approach_max");
-      check_contact_resolution(*study_, t.stiffness_at(model_.ball.mass * model_.ball.gravity));
-    }
-    if (blocked_solver_) prepare_blocked_force(quiet, rebuild);
+    quiet_ = quiet;
+    resolve_stages(quiet, rebuild);  // the tables' use_* complete the contact law
     integrator_ = std::make_unique<beam::ExactStepIntegrator>(model_, step_options_);
+  }
+
+  void use_stiffness_table(const stiffness::StiffnessTable& t, const std::string& status, bool quiet) {
+    if (!quiet) std::fprintf(stderr, "stiffness table: %s\n", status.c_str());
+    model_.contact.compression = t.approach;
+    if (model_.contact.kind == beam::ContactLawKind::table) {
+      model_.contact.values = t.force_mean;
+    } else {  // seed 001 Eq. 7 literally: k_c(delta) from the table's stiffness, F = k_c(delta) delta
+      model_.contact.values = t.stiffness_mean;
+      model_.contact.values[0] = t.stiffness_mean[1];
+    }
+    static_compression_ = t.approach_at(model_.ball.mass * model_.ball.gravity);
+    if (!(static_compression_ > 0.0))
+      study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
+                                                   " N does not reach the ball's weight; raise approach_max");
+    check_contact_resolution(*study_, t.stiffness_at(model_.ball.mass * model_.ball.gravity));
   }
 
   // The contact solver's blocked force (seed 002 §4.2): k0 from the table, F0(t) synthesised per
   // realisation from the table's PSD along the path, G_t(f) = 2 pi G_k(2 pi f / v) / v (D-2),
   // sampled at the integration step.
-  void prepare_blocked_force(bool quiet, bool rebuild) {
-    std::string status;
-    const double weight = model_.ball.mass * model_.ball.gravity;
-    blocked_ = stiffness::resolve_blocked_force(*study_, model_.contact.radius, model_.contact.effective_modulus, weight,
-                                                rebuild, quiet, status);
+  void use_blocked_force(const stiffness::BlockedForceTable& table, const std::string& status, bool quiet) {
+    blocked_ = table;
     if (!quiet) std::fprintf(stderr, "blocked force table: %s (k0 = %.4g N/m, d0 = %.4g m)\n", status.c_str(), blocked_.k0,
                              blocked_.approach);
+    const double weight = model_.ball.mass * model_.ball.gravity;
     model_.contact.k0 = blocked_.k0;
     static_compression_ = weight / blocked_.k0;
     check_contact_resolution(*study_, blocked_.k0);
@@ -324,32 +369,6 @@ class BallOnBeam final : public Scene {
   double blocked_force_time_psd(double f) const {
     const double v = model_.traverse.speed;
     return 2.0 * M_PI * blocked_.psd_at(2.0 * M_PI * f / v) / v;
-  }
-
-  std::vector<StagePlan> plan() const override {
-    std::string why;
-    const auto state = uses_table_ ? stiffness::inspect_table(table_path_, table_spec_, why) : stiffness::TableState::missing;
-    const StagePlan table_stage =
-        !uses_table_ ? StagePlan{"stiffness_table", StageStatus::skipped,
-                                 linearised_ ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"}
-        : state == stiffness::TableState::valid
-            ? StagePlan{"stiffness_table", StageStatus::cached, table_path_ + " (input hash " + table_spec_.hash + ")"}
-        : state == stiffness::TableState::missing
-            ? StagePlan{"stiffness_table", StageStatus::run, "no table with input hash " + table_spec_.hash + " at " + table_path_}
-            : StagePlan{"stiffness_table", StageStatus::run, "REFUSED unless --rebuild: " + why};
-    return {
-        {"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + psd_.description + ")"},
-        {"surface", uses_table_ && state != stiffness::TableState::valid ? StageStatus::run : StageStatus::skipped,
-         uses_table_ ? (state == stiffness::TableState::valid ? "inside the cached stiffness table" : "isotropic surfaces for the stiffness table")
-                     : "the point-contact laws need no isotropic surface"},
-        table_stage,
-        {"blocked_force", linearised_ ? StageStatus::run : StageStatus::skipped,
-         !linearised_ ? "only the linearised law uses F0"
-         : blocked_solver_ ? "contact solver along a rough strip ([blocked_force], cached by input hash); F0(t) synthesised from its PSD"
-                           : "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"},
-        {"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step, implicit contact (D-9, D-10)"},
-        {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
-    };
   }
 
   // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
@@ -568,8 +587,13 @@ class BallOnBeam final : public Scene {
       xw.push_back(sw);
     }
     edges.push_back(n);
+    // The reference runs after the ensemble and can take longer than it: shown when over a second.
+    const std::size_t n_rows = model_.sensors.size() + (rows() > model_.sensors.size() ? 1 : 0);
+    ensemble::Progress progress("linearised reference", 1 + n_rows + (edges.size() - 1), quiet_);
+    progress.show_after(1.0);
     const auto lr = beam::linear_response_psd(model_.beam, model_.ball.mass, k0, model_.contact.damping, xi,
                                               model_.sensors, fine, exc, beam::Excitation::blocked_force, xw);
+    progress.advance();
     std::vector<std::vector<double>> rows_fine = lr.sensor_psd;
     if (rows() > model_.sensors.size()) {
       std::vector<double> m(nfine, 0.0);
@@ -581,6 +605,7 @@ class BallOnBeam final : public Scene {
     for (const auto& row : rows_fine) {
       const auto e = spectral::welch_expectation(*welch_, row, refine);
       expected.insert(expected.end(), e.begin(), e.end());
+      progress.advance();
       for (std::size_t k = 0; k < f.size(); ++k) raw.push_back(row[k * refine]);
     }
     // Degrees of freedom of the ensemble mean per bin (B34b): the record is not stationary (the
@@ -594,6 +619,7 @@ class BallOnBeam final : public Scene {
     const std::vector<double> band(fine.begin(), fine.begin() + static_cast<std::ptrdiff_t>(half + 1));
     std::vector<std::complex<double>> cross((edges.size() - 1) * pairs * nf, 0.0);
     for (std::size_t p = 0; p + 1 < edges.size(); ++p) {
+      progress.advance();
       if (xw[p] == 0.0) continue;  // no segment sees this block
       const auto H = beam::linear_response_transfer(model_.beam, model_.ball.mass, k0, model_.contact.damping, xi[p],
                                                     model_.sensors, band, beam::Excitation::blocked_force);
@@ -610,6 +636,7 @@ class BallOnBeam final : public Scene {
           }
       }
     }
+    progress.finish();
     std::vector<double> dof;
     for (std::size_t s = 0; s < ns; ++s) {
       std::vector<std::complex<double>> own((edges.size() - 1) * nf);
@@ -687,7 +714,7 @@ class BallOnBeam final : public Scene {
   bool average_, dopri_;
   double rtol_, confidence_, band_min_, band_max_;
   std::size_t time_histories_;
-  bool linearised_ = false, uses_table_ = false, blocked_solver_ = false;
+  bool linearised_ = false, uses_table_ = false, blocked_solver_ = false, quiet_ = false;
   stiffness::BlockedForceTable blocked_;
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
   std::vector<double> f0_psd_;
@@ -695,8 +722,6 @@ class BallOnBeam final : public Scene {
   std::string law_name_;
   beam::ExactStepOptions step_options_;
   const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene
-  stiffness::TableSpec table_spec_;
-  std::string table_path_;
   double static_compression_ = 0.0, patch_half_width_ = 0.0, dx_ = 0.0;
   std::unique_ptr<texture::LineTextureGenerator> lines_;
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;

@@ -89,9 +89,10 @@ class RandomOscillator final : public Scene {
       if (e & 1) p = p * b;
     periodic_inverse_ = (Eigen::Matrix2d::Identity() - p).inverse();
     for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(n_, segment));
+    add_stages(fixed_stages());  // after the members the descriptions name
   }
 
-  std::vector<StagePlan> plan() const override {
+  std::vector<StagePlan> fixed_stages() const {
     return {
         {"texture", StageStatus::skipped, "the scene has no rough surface"},
         {"surface", StageStatus::skipped, "the scene has no contact"},

@@ -11,6 +11,7 @@
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/study/study.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::scenes {
 
@@ -221,16 +222,17 @@ class RollingBeam final : public Scene {
     if (run_.t_end / run_.dt > 1e8) s.refuse("analysis.dt", "gives more than 1e8 steps");
     run_.record_every = static_cast<int>(s.integer("analysis.record_every"));
     run_.record_nodes = record_;
+    add_stages(fixed_stages());  // after the members the descriptions name
   }
 
-  std::vector<StagePlan> plan() const override {
+  std::vector<StagePlan> fixed_stages() const {
     return {
         {"texture", StageStatus::skipped, "flat rigid plane"},
         {"stiffness_table", StageStatus::skipped, "penalty contact"},
         {"dynamics", StageStatus::run,
          std::string(options_.analysis == rolling::Analysis::Dynamic ? "Newmark dynamics" : "quasi-static load steps") +
              ", " + std::to_string(static_cast<long long>(std::llround(run_.t_end / run_.dt))) + " steps, " +
-             std::to_string(model_.contacts.size()) + " rolling contact node(s)"},
+             io::counted(model_.contacts.size(), "rolling contact node")},
         {"spectra", StageStatus::skipped, "a single deterministic run has no ensemble spectra"},
     };
   }

@@ -195,9 +195,10 @@ class RollingPipe final : public Scene {
     options_.max_line_search = 8;
     options_.disp_tol = 1e-14;
     options_.force_tol = s.real("analysis.tolerance") * section_.rhoA * length_ * g_;
+    add_stages(fixed_stages());  // after the members the descriptions name
   }
 
-  std::vector<StagePlan> plan() const override {
+  std::vector<StagePlan> fixed_stages() const {
     return {
         {"texture", line_ ? StageStatus::run : StageStatus::skipped,
          line_ ? "line texture along the rolling direction per realisation (" + psd_.description + ")" : "isotropic surface instead"},

@@ -1,6 +1,8 @@
 #pragma once
-// A scene turns a validated study into realisations. It names the stages it needs; the planner
-// (`rollspec plan`) prints them, and a stage a scene does not need is never computed.
+// A scene turns a validated study into realisations. It holds the stages it needs as objects
+// (stage.hpp): `rollspec plan` prints their inspect(), prepare() resolves them, and a stage a scene
+// does not need is never computed. To add a scene: a SceneInfo in scene_registry.cpp; to add a
+// stage: a Stage object added in the scene's constructor.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "src/ensemble/ensemble_driver.hpp"
+#include "src/scenes/stage.hpp"
 #include "src/study/key_spec.hpp"
 
 namespace rollspec::io {
@@ -19,23 +22,19 @@ class Study;
 
 namespace rollspec::scenes {
 
-enum class StageStatus { run, cached, skipped };
-
-struct StagePlan {
-  std::string stage;   // texture, surface, stiffness_table, blocked_force, force, dynamics, spectra
-  StageStatus status;
-  std::string reason;
-};
-
-const char* to_string(StageStatus s);
-
 class Scene {
  public:
   virtual ~Scene() = default;
-  virtual std::vector<StagePlan> plan() const = 0;
+  // inspect() of every stage, in pipeline order.
+  std::vector<StagePlan> plan() const {
+    std::vector<StagePlan> out;
+    for (const auto& s : stages_) out.push_back(s->inspect());
+    return out;
+  }
   // Builds or loads what the realisations share (tables, plans); runs once before the ensemble.
   // `rebuild` replaces cached tables whose inputs no longer match instead of refusing them.
-  virtual void prepare(bool /*quiet*/, bool /*rebuild*/) {}
+  // By default resolve() of every stage; scenes that finish their set-up afterwards call it first.
+  virtual void prepare(bool quiet, bool rebuild) { resolve_stages(quiet, rebuild); }
   virtual std::size_t values_per_realisation() const = 0;
   // Thread-safe for distinct `thread` indices in [0, ensemble_threads()).
   virtual void run_realisation(std::uint64_t id, int thread, double* values) const = 0;
@@ -45,6 +44,23 @@ class Scene {
   // True for scenes whose result is one deterministic run, done in prepare() and written by
   // write_results() (e.g. `rolling-beam`).
   virtual bool single_run() const { return false; }
+
+ protected:
+  template <class S>
+  S& add_stage(std::unique_ptr<S> stage) {
+    S& s = *stage;
+    stages_.push_back(std::move(stage));
+    return s;
+  }
+  void add_stages(const std::vector<StagePlan>& fixed) {
+    for (const auto& p : fixed) stages_.push_back(std::make_unique<FixedStage>(p));
+  }
+  void resolve_stages(bool quiet, bool rebuild) {
+    for (auto& s : stages_) s->resolve(rebuild, quiet);
+  }
+
+ private:
+  std::vector<std::unique_ptr<Stage>> stages_;
 };
 
 // A scene with stages but no ensemble (`texture`, `stiffness`): its work is done by its own command.

@@ -16,15 +16,6 @@ namespace rollspec::scenes {
 
 using namespace study;
 
-const char* to_string(StageStatus s) {
-  switch (s) {
-    case StageStatus::run: return "run";
-    case StageStatus::cached: return "cached";
-    case StageStatus::skipped: return "skipped";
-  }
-  return "?";
-}
-
 const std::vector<SceneInfo>& scene_registry() {
   static const std::vector<SceneInfo> scenes = {
       {"random-oscillator",

@@ -45,32 +45,34 @@ namespace {
 class StiffnessScene final : public StageOnlyScene {
  public:
   explicit StiffnessScene(const Study& s) : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
-    spec_ = stiffness::table_spec(s, pair_.radius, pair_.effective_modulus);
-    path_ = stiffness::table_path(s, spec_);
-    if (s.text("stiffness.surface") == "rough") texture_io::study_psd(s);  // validates the PSD source now
-  }
-  std::vector<StagePlan> plan() const override {
-    std::string why;
-    const auto state = stiffness::inspect_table(path_, spec_, why);
-    const bool valid = state == stiffness::TableState::valid;
-    return {
-        {"surface", valid || !rough_ ? StageStatus::skipped : StageStatus::run,
-         !rough_ ? "smooth flat ([stiffness] surface = smooth)"
-         : valid ? "inside the cached table" : "isotropic surfaces ([surface], [texture]) per table realisation"},
-        {"stiffness_table", valid ? StageStatus::cached : StageStatus::run,
-         valid ? path_ + " (input hash " + spec_.hash + ")"
-               : state == stiffness::TableState::missing ? "no table with input hash " + spec_.hash + " at " + path_
-                                                         : "REFUSED unless --rebuild: " + why},
-        {"dynamics", StageStatus::skipped, "the scene has no dynamics"},
-        {"spectra", StageStatus::skipped, "the scene has no sensors"},
-    };
+    if (rough_) texture_io::study_psd(s);  // validates the PSD source now
+    // `rollspec stiffness` builds and prints the table through stiffness::resolve_table, the same
+    // CachedTable, so this stage and that command agree.
+    const ContactPair pair = pair_;
+    auto table = std::make_unique<TableStage>(
+        "stiffness_table", stiffness::stiffness_cached_table(s, pair.radius, pair.effective_modulus),
+        [] { return std::make_unique<stiffness::StiffnessTable>(); },
+        [&s, pair](stiffness::TableData& out, bool quiet) {
+          static_cast<stiffness::StiffnessTable&>(out) = stiffness::build_table(s, pair.radius, pair.effective_modulus, quiet);
+        },
+        [](const stiffness::TableData&, const std::string&, bool) {});
+    const TableStage* t = table.get();
+    const bool rough = rough_;
+    add_stage(std::make_unique<DerivedStage>([t, rough] {
+      const bool valid = t->state() == stiffness::TableState::valid;
+      return StagePlan{"surface", valid || !rough ? StageStatus::skipped : StageStatus::run,
+                       !rough  ? "smooth flat ([stiffness] surface = smooth)"
+                       : valid ? "inside the cached table"
+                               : "isotropic surfaces ([surface], [texture]) per table realisation"};
+    }));
+    add_stage(std::move(table));
+    add_stages({{"dynamics", StageStatus::skipped, "the scene has no dynamics"},
+                {"spectra", StageStatus::skipped, "the scene has no sensors"}});
   }
 
  private:
   ContactPair pair_;
   bool rough_;
-  stiffness::TableSpec spec_;
-  std::string path_;
 };
 }  // namespace
 

@@ -27,8 +27,9 @@ class TextureScene final : public StageOnlyScene {
  public:
   explicit TextureScene(const Study& s) : lines_(s.integer("lines.count")), surfaces_(s.integer("surface.count")) {
     texture_io::study_psd(s);  // validates the PSD source (files, ranges) now
+    add_stages(fixed_stages());  // after the members the descriptions name
   }
-  std::vector<StagePlan> plan() const override {
+  std::vector<StagePlan> fixed_stages() const {
     return {
         {"texture", lines_ ? StageStatus::run : StageStatus::skipped,
          lines_ ? std::to_string(lines_) + " line textures from [texture] ([lines])" : "[lines] count = 0"},

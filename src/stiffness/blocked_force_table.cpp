@@ -33,12 +33,15 @@ const char* kColumns[] = {"position", "force", "stiffness", "psd_wavenumber", "p
 std::vector<const std::vector<double>*> columns(const BlockedForceTable& t) {
   return {&t.position, &t.force, &t.stiffness, &t.psd_wavenumber, &t.psd};
 }
-std::string checksum(const BlockedForceTable& t) {
-  std::uint64_t h = column_hash(columns(t));
-  for (double v : {t.approach, t.k0, t.mean_force}) h = ensemble::fnv1a64(&v, sizeof v, h);
+}  // namespace
+
+const TableKind kBlockedForceTableKind = {kBlockedForceFileType, "/blocked_force", "blocked-force-", "blocked-force table"};
+
+std::string BlockedForceTable::checksum() const {
+  std::uint64_t h = column_hash(columns(*this));
+  for (double v : {approach, k0, mean_force}) h = ensemble::fnv1a64(&v, sizeof v, h);
   return hex16(h);
 }
-}  // namespace
 
 double BlockedForceTable::psd_at(double k) const {
   if (psd_wavenumber.size() < 2 || k > psd_wavenumber.back()) return 0.0;
@@ -81,24 +84,18 @@ std::string inputs_text(const Study& s, double radius, double e_star, double loa
   return in.str();
 }
 
-BlockedForceTable read(const std::string& path) {
-  const io::Hdf5Reader r(path);
-  io::check_filetype(r, kBlockedForceFileType, 1);
-  BlockedForceTable t;
-  std::vector<std::vector<double>*> cols = {&t.position, &t.force, &t.stiffness, &t.psd_wavenumber, &t.psd};
+}  // namespace
+
+void BlockedForceTable::load_from(const io::Hdf5Reader& r) {
+  std::vector<std::vector<double>*> cols = {&position, &force, &stiffness, &psd_wavenumber, &psd};
   for (std::size_t i = 0; i < cols.size(); ++i) *cols[i] = r.read(std::string("/blocked_force/") + kColumns[i]);
-  t.approach = r.double_attribute("/blocked_force", "approach");
-  t.k0 = r.double_attribute("/blocked_force", "k0");
-  t.mean_force = r.double_attribute("/blocked_force", "mean_force");
-  t.load = r.double_attribute("/blocked_force", "load");
-  t.inputs = r.string_attribute("/blocked_force", "inputs");
-  t.input_hash = r.string_attribute("/blocked_force", "input_hash");
-  if (r.string_attribute("/blocked_force", "data_checksum") != checksum(t))
-    throw data_error(path + ": the blocked-force table's data do not match its checksum; rebuild with --rebuild");
-  return t;
+  approach = r.double_attribute("/blocked_force", "approach");
+  k0 = r.double_attribute("/blocked_force", "k0");
+  mean_force = r.double_attribute("/blocked_force", "mean_force");
+  load = r.double_attribute("/blocked_force", "load");
 }
 
-BlockedForceTable build(const Study& s, double radius, double e_star, double load, bool quiet) {
+BlockedForceTable build_blocked_force(const Study& s, double radius, double e_star, double load, bool quiet) {
   const double dx = s.real("surface.spacing");
   const auto ny = static_cast<std::size_t>(s.integer("surface.ny"));
   auto nx = static_cast<std::size_t>(std::round(s.real("blocked_force.strip_length") / dx));
@@ -134,7 +131,17 @@ BlockedForceTable build(const Study& s, double radius, double e_star, double loa
   contact::ContactSolver solver(window_grid, e_star);
   contact::BlockedForcePath path;
   try {
-    path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts);
+    // The search evaluates whole paths until the mean force meets the load: one line per path
+    // (each a solve at every position, seconds on a large strip) says it is alive and converging.
+    contact::BlockedForceOptions path_opts;
+    int evaluated = 0;
+    if (!quiet)
+      path_opts.on_path = [&](std::size_t count, double error) {
+        std::fprintf(stderr, "%sblocked force: path %d on %zu positions, mean force off the load by %.2e\n",
+                     ensemble::rank_prefix().c_str(), ++evaluated, count, error);
+      };
+    path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts,
+                                          path_opts);
   } catch (const std::invalid_argument& e) {
     throw config_error(s.where("blocked_force.window") + ": " + e.what() + "; widen the window or the strip ([surface] ny)");
   }
@@ -165,46 +172,30 @@ BlockedForceTable build(const Study& s, double radius, double e_star, double loa
   return t;
 }
 
-void write(const std::string& path, const BlockedForceTable& t, const Study& s) {
-  io::Hdf5Writer w(path);
-  io::write_provenance(w, kBlockedForceFileType, "1.0", s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
-  w.write("/blocked_force/position", {t.position.size()}, t.position.data(), "m", "ball position along the strip");
-  w.write("/blocked_force/force", {t.force.size()}, t.force.data(), "N", "blocked force F0 at the fixed approach d0");
-  w.write("/blocked_force/stiffness", {t.stiffness.size()}, t.stiffness.data(), "N/m", "frozen-set stiffness with the sub-cell contact edge along the path (contact README Eq. 11, 13-15)");
-  w.write("/blocked_force/psd_wavenumber", {t.psd_wavenumber.size()}, t.psd_wavenumber.data(), "rad/m", "wavenumber");
-  w.write("/blocked_force/psd", {t.psd.size()}, t.psd.data(), "N^2 m/rad", "one-sided PSD of F0 along the path (Welch)");
-  w.attribute("/blocked_force", "approach", t.approach);
-  w.attribute("/blocked_force", "k0", t.k0);
-  w.attribute("/blocked_force", "mean_force", t.mean_force);
-  w.attribute("/blocked_force", "load", t.load);
-  w.attribute("/blocked_force", "kernel_version", static_cast<double>(contact::kernel_version));
-  w.attribute("/blocked_force", "inputs", t.inputs);
-  w.attribute("/blocked_force", "input_hash", t.input_hash);
-  w.attribute("/blocked_force", "data_checksum", checksum(t));
-  w.commit();
+void BlockedForceTable::save_to(io::Hdf5Writer& w) const {
+  w.write("/blocked_force/position", {position.size()}, position.data(), "m", "ball position along the strip");
+  w.write("/blocked_force/force", {force.size()}, force.data(), "N", "blocked force F0 at the fixed approach d0");
+  w.write("/blocked_force/stiffness", {stiffness.size()}, stiffness.data(), "N/m", "frozen-set stiffness with the sub-cell contact edge along the path (contact README Eq. 11, 13-15)");
+  w.write("/blocked_force/psd_wavenumber", {psd_wavenumber.size()}, psd_wavenumber.data(), "rad/m", "wavenumber");
+  w.write("/blocked_force/psd", {psd.size()}, psd.data(), "N^2 m/rad", "one-sided PSD of F0 along the path (Welch)");
+  w.attribute("/blocked_force", "approach", approach);
+  w.attribute("/blocked_force", "k0", k0);
+  w.attribute("/blocked_force", "mean_force", mean_force);
+  w.attribute("/blocked_force", "load", load);
 }
 
-}  // namespace
+CachedTable blocked_force_cached_table(const Study& s, double radius, double effective_modulus, double load) {
+  return CachedTable(kBlockedForceTableKind, s, inputs_text(s, radius, effective_modulus, load));
+}
 
 BlockedForceTable resolve_blocked_force(const Study& s, double radius, double effective_modulus, double load, bool rebuild,
                                         bool quiet, std::string& status) {
-  const std::string inputs = inputs_text(s, radius, effective_modulus, load);
-  const std::string hash = hex16(ensemble::fnv1a64(inputs));
-  const std::string path =
-      (fs::path(s.file()).parent_path() / s.text("stiffness.table_dir") / ("blocked-force-" + hash + ".h5")).string();
-  if (fs::exists(path) && !rebuild) {
-    BlockedForceTable t = read(path);  // refuses damaged files
-    if (t.inputs != inputs) throw data_error(path + ": table inputs differ from the study's; run with --rebuild");
-    status = "cached " + path;
-    return t;
-  }
-  const std::string write_path = table_write_path(s, path, kBlockedForceFileType);
-  BlockedForceTable t = build(s, radius, effective_modulus, load, quiet);
-  t.inputs = inputs;
-  t.input_hash = hash;
-  if (ensemble::mpi_rank() == 0) write(write_path, t, s);
-  ensemble::mpi_barrier();
-  status = "built " + path;
+  const CachedTable cached = blocked_force_cached_table(s, radius, effective_modulus, load);
+  BlockedForceTable t;
+  cached.resolve(t, rebuild,
+                 [&](TableData& out) { static_cast<BlockedForceTable&>(out) = build_blocked_force(s, radius, effective_modulus, load, quiet); },
+                 status);
+  t.input_hash = cached.hash();
   return t;
 }
 

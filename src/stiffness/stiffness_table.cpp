@@ -51,36 +51,6 @@ std::vector<const std::vector<double>*> columns(const StiffnessTable& t) {
           &t.plastic_cells_mean, &t.max_pressure_mean, &t.iterations_mean};
 }
 
-std::string checksum(const StiffnessTable& t) {
-  std::uint64_t h = column_hash(columns(t));
-  return hex16(h);
-}
-
-std::map<std::string, std::string> parse_lines(const std::string& text) {
-  std::map<std::string, std::string> out;
-  std::istringstream in(text);
-  std::string line, section;
-  while (std::getline(in, line)) {
-    if (!line.empty() && line[0] == '[') section = line;
-    const auto eq = line.find(" = ");
-    if (eq != std::string::npos) out[section + " " + line.substr(0, eq)] = line.substr(eq + 3);
-  }
-  return out;
-}
-
-std::string differences(const std::string& stored, const std::string& wanted) {
-  const auto a = parse_lines(stored), b = parse_lines(wanted);
-  std::string out;
-  for (const auto& [k, v] : b) {
-    const auto it = a.find(k);
-    if (it == a.end()) out += "\n  " + k + ": not in the table, study has " + v;
-    else if (it->second != v) out += "\n  " + k + ": table has " + it->second + ", study has " + v;
-  }
-  for (const auto& [k, v] : a)
-    if (!b.count(k)) out += "\n  " + k + ": table has " + v + ", the study does not";
-  return out.empty() ? " (no key differs; the stored hash is inconsistent)" : out;
-}
-
 }  // namespace
 
 double StiffnessTable::approach_at(double load) const {
@@ -102,7 +72,11 @@ double StiffnessTable::stiffness_at(double load) const {
   return std::nan("");
 }
 
-TableSpec table_spec(const study::Study& s, double ball_radius, double effective_modulus) {
+const TableKind kStiffnessTableKind = {kTableFileType, "/stiffness", "stiffness-", "stiffness table"};
+
+std::string StiffnessTable::checksum() const { return hex16(column_hash(columns(*this))); }
+
+CachedTable stiffness_cached_table(const study::Study& s, double ball_radius, double effective_modulus) {
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
      << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << s.text("stiffness.shape") << "\n\n[stiffness]\n";
@@ -118,70 +92,27 @@ TableSpec table_spec(const study::Study& s, double ball_radius, double effective
       if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
     in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
   }
-  TableSpec spec;
-  spec.inputs = in.str();
-  spec.hash = hex16(ensemble::fnv1a64(spec.inputs));
-  return spec;
+  const std::string explicit_path = s.text("stiffness.table");
+  return CachedTable(kStiffnessTableKind, s, in.str(), explicit_path == "auto" ? "" : explicit_path);
 }
 
-std::string table_path(const study::Study& s, const TableSpec& spec) {
-  const fs::path dir = fs::path(s.file()).parent_path();
-  const std::string t = s.text("stiffness.table");
-  if (t != "auto") return (fs::path(t).is_absolute() ? fs::path(t) : dir / t).string();
-  return (dir / s.text("stiffness.table_dir") / ("stiffness-" + spec.hash + ".h5")).string();
-}
-
-StiffnessTable read_table(const std::string& path) {
-  const io::Hdf5Reader r(path);
-  io::check_filetype(r, kTableFileType, kTableSchemaMajor);
-  StiffnessTable t;
-  std::vector<std::vector<double>*> cols = {&t.approach, &t.force_mean, &t.force_std, &t.stiffness_mean,
-                                            &t.stiffness_std, &t.contact_area_mean, &t.plastic_cells_mean,
-                                            &t.max_pressure_mean, &t.iterations_mean};
+void StiffnessTable::load_from(const io::Hdf5Reader& r) {
+  std::vector<std::vector<double>*> cols = {&approach, &force_mean, &force_std, &stiffness_mean, &stiffness_std,
+                                            &contact_area_mean, &plastic_cells_mean, &max_pressure_mean, &iterations_mean};
   for (std::size_t i = 0; i < cols.size(); ++i) *cols[i] = r.read(std::string("/stiffness/") + kDatasets[i]);
   for (const auto* c : cols)
-    if (c->size() != t.approach.size() || c->size() < 2) throw data_error(path + ": table columns have different lengths");
-  t.ball_radius = r.double_attribute("/stiffness", "ball_radius");
-  t.effective_modulus = r.double_attribute("/stiffness", "effective_modulus");
-  t.hardness = r.double_attribute("/stiffness", "hardness");
-  t.tolerance = r.double_attribute("/stiffness", "solver_tolerance");
-  t.fit_coefficient = r.double_attribute("/stiffness/fit", "coefficient");
-  t.fit_exponent = r.double_attribute("/stiffness/fit", "exponent");
-  t.fit_max_relative_error = r.double_attribute("/stiffness/fit", "max_relative_error");
-  t.realisations = static_cast<std::int64_t>(r.double_attribute("/stiffness", "realisations"));
-  t.inputs = r.string_attribute("/stiffness", "inputs");
-  t.input_hash = r.string_attribute("/stiffness", "input_hash");
-  const double kv = r.double_attribute("/stiffness", "kernel_version");
-  if (static_cast<int>(kv) != contact::kernel_version)
-    throw data_error(path + ": built by contact kernel version " + num(kv) + ", this rollspec has version " +
-                     std::to_string(contact::kernel_version) + "; rebuild with --rebuild");
-  if (r.string_attribute("/stiffness", "data_checksum") != checksum(t))
-    throw data_error(path + ": the table's data do not match its checksum (damaged or edited file); rebuild with --rebuild");
-  return t;
+    if (c->size() != approach.size() || c->size() < 2) throw data_error(r.path() + ": table columns have different lengths");
+  ball_radius = r.double_attribute("/stiffness", "ball_radius");
+  effective_modulus = r.double_attribute("/stiffness", "effective_modulus");
+  hardness = r.double_attribute("/stiffness", "hardness");
+  tolerance = r.double_attribute("/stiffness", "solver_tolerance");
+  fit_coefficient = r.double_attribute("/stiffness/fit", "coefficient");
+  fit_exponent = r.double_attribute("/stiffness/fit", "exponent");
+  fit_max_relative_error = r.double_attribute("/stiffness/fit", "max_relative_error");
+  realisations = static_cast<std::int64_t>(r.double_attribute("/stiffness", "realisations"));
 }
 
-TableState inspect_table(const std::string& path, const TableSpec& spec, std::string& why) {
-  if (!fs::exists(path)) return TableState::missing;
-  try {
-    const StiffnessTable t = read_table(path);
-    if (t.input_hash != spec.hash) {
-      why = path + ": table inputs differ from the study's (hash " + t.input_hash + " vs " + spec.hash + "):" +
-            differences(t.inputs, spec.inputs);
-      return TableState::mismatched;
-    }
-    if (t.inputs != spec.inputs) {
-      why = path + ": table hash matches but its inputs differ:" + differences(t.inputs, spec.inputs);
-      return TableState::mismatched;
-    }
-    return TableState::valid;
-  } catch (const UserError& e) {
-    why = e.what();
-    return TableState::mismatched;
-  }
-}
-
-StiffnessTable build_table(const study::Study& s, double ball_radius, double effective_modulus, const TableSpec& spec,
-                           bool quiet) {
+StiffnessTable build_table(const study::Study& s, double ball_radius, double effective_modulus, bool quiet) {
   contact::Grid grid;
   grid.nx = static_cast<std::size_t>(s.integer("surface.nx"));
   grid.ny = static_cast<std::size_t>(s.integer("surface.ny"));
@@ -321,63 +252,44 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
   t.hardness = opts.hardness;
   t.realisations = R;
   t.tolerance = opts.tolerance;
-  t.inputs = spec.inputs;
-  t.input_hash = spec.hash;
   return t;
 }
 
-void write_table(const std::string& path, const StiffnessTable& t, const std::string& study_text, std::uint64_t seed) {
-  io::Hdf5Writer w(path);
-  io::write_provenance(w, kTableFileType, kTableSchemaVersion, study_text, seed);
-  const std::size_t n = t.approach.size();
+void StiffnessTable::save_to(io::Hdf5Writer& w) const {
+  const std::size_t n = approach.size();
   const char* units[] = {"m", "N", "N", "N/m", "N/m", "m^2", "1", "Pa", "1"};
   const char* what[] = {"approach from first contact", "mean force over realisations", "standard deviation of the force",
                         "mean frozen-set stiffness dP/d delta", "standard deviation of the stiffness",
                         "mean real contact area", "mean number of plastic cells (p = H)", "mean of the maximum pressure",
                         "mean CG iterations of the contact solve"};
-  const auto cols = columns(t);
+  const auto cols = columns(*this);
   for (std::size_t i = 0; i < cols.size(); ++i)
     w.write(std::string("/stiffness/") + kDatasets[i], {n}, cols[i]->data(), units[i], what[i]);
   w.make_scale("/stiffness/approach", "approach");
   for (std::size_t i = 1; i < cols.size(); ++i) w.attach_scale(std::string("/stiffness/") + kDatasets[i], "/stiffness/approach", 0);
-  w.attribute("/stiffness", "ball_radius", t.ball_radius);
-  w.attribute("/stiffness", "effective_modulus", t.effective_modulus);
-  w.attribute("/stiffness", "hardness", t.hardness);
-  w.attribute("/stiffness", "realisations", static_cast<double>(t.realisations));
-  w.attribute("/stiffness", "solver_tolerance", t.tolerance);
+  w.attribute("/stiffness", "ball_radius", ball_radius);
+  w.attribute("/stiffness", "effective_modulus", effective_modulus);
+  w.attribute("/stiffness", "hardness", hardness);
+  w.attribute("/stiffness", "realisations", static_cast<double>(realisations));
+  w.attribute("/stiffness", "solver_tolerance", tolerance);
   w.attribute("/stiffness", "stopping_rule",
               std::string("max_i C_ii |p_i - clamp(p_i - g_i / C_ii, 0, H)| / max_i (w - s_i) < solver_tolerance"));
-  w.attribute("/stiffness", "schema_version", std::string(kTableSchemaVersion));
-  w.attribute("/stiffness", "kernel_version", static_cast<double>(contact::kernel_version));
-  w.attribute("/stiffness", "inputs", t.inputs);
-  w.attribute("/stiffness", "input_hash", t.input_hash);
-  w.attribute("/stiffness", "data_checksum", checksum(t));
-  const double fit[] = {t.fit_coefficient, t.fit_exponent, t.fit_max_relative_error};
+  const double fit[] = {fit_coefficient, fit_exponent, fit_max_relative_error};
   w.write("/stiffness/fit/parameters", {3}, fit, "1", "P = coefficient * approach^exponent (SI), and its max relative error");
   w.attribute("/stiffness/fit", "form", std::string("P = coefficient * approach^exponent"));
-  w.attribute("/stiffness/fit", "coefficient", t.fit_coefficient);
-  w.attribute("/stiffness/fit", "exponent", t.fit_exponent);
-  w.attribute("/stiffness/fit", "max_relative_error", t.fit_max_relative_error);
-  w.commit();
+  w.attribute("/stiffness/fit", "coefficient", fit_coefficient);
+  w.attribute("/stiffness/fit", "exponent", fit_exponent);
+  w.attribute("/stiffness/fit", "max_relative_error", fit_max_relative_error);
 }
 
 StiffnessTable resolve_table(const study::Study& s, double ball_radius, double effective_modulus, bool rebuild, bool quiet,
                              std::string& status) {
-  const TableSpec spec = table_spec(s, ball_radius, effective_modulus);
-  const std::string path = table_path(s, spec);
-  std::string why;
-  const TableState state = inspect_table(path, spec, why);
-  if (state == TableState::valid && !rebuild) {
-    status = "cached " + path;
-    return read_table(path);
-  }
-  if (state == TableState::mismatched && !rebuild) throw data_error(why + "\nrun with --rebuild to replace it");
-  // Before the build: never replace anything but a rollspec table.
-  const std::string write_path = table_write_path(s, path, kTableFileType);
-  StiffnessTable t = build_table(s, ball_radius, effective_modulus, spec, quiet);
-  if (ensemble::mpi_rank() == 0) write_table(write_path, t, s.canonical_text(), static_cast<std::uint64_t>(s.integer("study.seed")));
-  ensemble::mpi_barrier();  // the table file exists for every rank from here on
-  status = "built " + path;
+  const CachedTable cached = stiffness_cached_table(s, ball_radius, effective_modulus);
+  StiffnessTable t;
+  cached.resolve(t, rebuild,
+                 [&](TableData& out) { static_cast<StiffnessTable&>(out) = build_table(s, ball_radius, effective_modulus, quiet); },
+                 status);
+  t.input_hash = cached.hash();
   return t;
 }
 

@@ -21,8 +21,8 @@ bool climbs(const fs::path& p) {
 }
 }  // namespace
 
-std::string prepare_table_path(const study::Study& s, const std::string& path, const std::string& filetype) {
-  const bool automatic = s.text("stiffness.table") == "auto";
+std::string prepare_table_path(const study::Study& s, const std::string& path, const std::string& filetype,
+                               bool automatic) {
   const std::string key = automatic ? "stiffness.table_dir" : "stiffness.table";
   const fs::path dir = fs::path(path).parent_path();
   std::error_code ec;
@@ -51,12 +51,13 @@ std::string prepare_table_path(const study::Study& s, const std::string& path, c
   }
 }
 
-std::string table_write_path(const study::Study& s, const std::string& path, const std::string& filetype) {
+std::string table_write_path(const study::Study& s, const std::string& path, const std::string& filetype,
+                             bool automatic) {
   std::string out = path;
   std::exception_ptr failure;
   if (ensemble::mpi_rank() == 0) {
     try {
-      out = prepare_table_path(s, path, filetype);
+      out = prepare_table_path(s, path, filetype, automatic);
     } catch (...) {
       failure = std::current_exception();
     }

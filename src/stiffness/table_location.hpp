@@ -17,10 +17,13 @@ namespace rollspec::stiffness {
 // Refuses (exit 73 / 78) a table path rollspec must not write, naming the key; returns the path to
 // write (symbolic links to a table followed). Creates the table directory where allowed. Call on
 // rank 0 before building the table.
-std::string prepare_table_path(const study::Study& s, const std::string& path, const std::string& filetype);
+// `automatic`: the path is rollspec's own name in [stiffness] table_dir (else an explicit path).
+std::string prepare_table_path(const study::Study& s, const std::string& path, const std::string& filetype,
+                               bool automatic);
 
 // prepare_table_path on rank 0, with the decision shared by every rank (collective under MPI), so
 // a refused path stops all ranks before the build instead of leaving them at a barrier.
-std::string table_write_path(const study::Study& s, const std::string& path, const std::string& filetype);
+std::string table_write_path(const study::Study& s, const std::string& path, const std::string& filetype,
+                             bool automatic);
 
 }  // namespace rollspec::stiffness

@@ -188,22 +188,38 @@ def test_run_out_into_missing_directory(tmp_path, small_study):
     assert not (tmp_path / "nodir").exists()
 
 
-@pytest.mark.skipif(os.geteuid() == 0, reason="root ignores directory permissions, so a read-only directory is writable")
-def test_read_only_output_directory(tmp_path, small_study):
+@pytest.fixture
+def read_only_dir(tmp_path):
+    """A directory nobody may write, root included (as CI runs): a tmpfs remounted read-only when
+    running as root, permissions otherwise. Yields (directory, make_read_only)."""
     ro = tmp_path / "ro"
     ro.mkdir()
+    if os.geteuid() != 0:
+        yield ro, lambda: ro.chmod(0o555)
+        ro.chmod(0o755)
+        return
+    r = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(ro)], capture_output=True, text=True)
+    if r.returncode != 0:
+        pytest.skip(f"root ignores permissions, and no read-only mount can be made here: {r.stderr.strip()}")
+
+    def make_read_only():
+        subprocess.run(["mount", "-o", "remount,ro", str(ro)], check=True, capture_output=True)
+
+    yield ro, make_read_only
+    subprocess.run(["umount", str(ro)], check=False)
+
+
+def test_read_only_output_directory(tmp_path, small_study, read_only_dir):
+    ro, make_read_only = read_only_dir
     out = put_sentinel(ro / "r.h5")
     psd_out = put_sentinel(ro / "psd.csv")
     sig = tmp_path / "s.csv"
     sig.write_bytes(signal_text())
-    ro.chmod(0o555)
-    try:
-        r = run(["run", small_study(realisations=2, duration=4), "--out", out, "--quiet"])
-        assert_refused(r, EX_CANTCREAT, ["r.h5"])
-        r = run(["psd", sig, "--fs", 100, "--segment", 16, "--out", psd_out])
-        assert_refused(r, EX_CANTCREAT, ["psd.csv"])
-    finally:
-        ro.chmod(0o755)
+    make_read_only()
+    r = run(["run", small_study(realisations=2, duration=4), "--out", out, "--quiet"])
+    assert_refused(r, EX_CANTCREAT, ["r.h5"])
+    r = run(["psd", sig, "--fs", 100, "--segment", 16, "--out", psd_out])
+    assert_refused(r, EX_CANTCREAT, ["psd.csv"])
     assert_untouched(out)
     assert_untouched(psd_out)
 

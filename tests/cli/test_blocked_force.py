@@ -29,6 +29,10 @@ def test_smooth_strip_gives_hertz(tmp_path):
                  "surface.ny=64", "blocked_force.window=64", "blocked_force.strip_length=1e-3", "blocked_force.step=4",
                  "blocked_force.segment=16")
     assert r.returncode == 0, r.stderr
+    # One progress line per path of the load search; the last meets the load (BlockedForceOptions).
+    paths = [l for l in r.stderr.splitlines() if l.startswith("blocked force: path ")]
+    assert paths and paths[0].startswith("blocked force: path 1 on "), r.stderr
+    assert float(paths[-1].rsplit(" ", 1)[1]) <= 1e-10, paths
     d_hertz = (3 * W / (4 * E_STAR * np.sqrt(R))) ** (2 / 3)
     k_hertz = 2 * E_STAR * np.sqrt(R * d_hertz)
     with h5py.File(out) as f:

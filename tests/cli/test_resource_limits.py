@@ -53,7 +53,7 @@ def test_memory_estimate_refuses_before_any_allocation(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "memory: estimated peak" in r.stdout and "rollspec run refuses it" in r.stdout
     r = run(["plan", s])
-    assert r.returncode == 0 and "memory: estimated peak" in r.stdout and "checkpoint disk: 1 chunk(s)" in r.stdout
+    assert r.returncode == 0 and "memory: estimated peak" in r.stdout and "checkpoint disk: 1 chunk of" in r.stdout
     assert "run time" not in r.stdout  # plan computes nothing unless asked
     r = run(["plan", s, "--probe"])
     assert r.returncode == 0 and "s per realisation (probe of realisation 0); the ensemble of 4 on" in r.stdout

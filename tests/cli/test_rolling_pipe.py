@@ -30,23 +30,27 @@ def test_one_and_two_threads_give_identical_bits(tmp_path):
         assert f["/contact/curvature_ratio"][0] < 1
 
 
-def test_mean_stays_inside_its_interval_when_realisations_double(tmp_path):
+def test_an_independent_larger_ensemble_falls_inside_the_interval(tmp_path):
+    # Two ensembles with different seeds share no realisation. The K = 32 mean differs from the
+    # K = 16 mean by a scatter of variance s^2/16 + s^2/32 = 1.5 s^2/16, so it falls inside the
+    # K = 16 interval of the mean (half-width ~1.96 s/4) for a share P(|Z| < 1.96/sqrt(1.5)) = 0.89
+    # of the bins if that interval is right (measured here: 0.98-1.0, the union of laws errs wide);
+    # a too narrow one gives far less.
     study = small_pipe(tmp_path, 32)
     half, full = tmp_path / "k16.h5", tmp_path / "k32.h5"
-    r = run(["run", study, "--out", half, "--quiet", "--set", "study.realisations=16"])
+    r = run(["run", study, "--out", half, "--quiet", "--set", "study.realisations=16", "--set", "study.seed=11"])
     assert r.returncode == 0, r.stderr
-    r = run(["run", study, "--out", full, "--quiet"])
+    r = run(["run", study, "--out", full, "--quiet", "--set", "study.seed=12"])
     assert r.returncode == 0, r.stderr
     with h5py.File(half) as a, h5py.File(full) as b:
         f = a["/psd/frequency"][:]
         band = (f >= 40) & (f <= 4000)
         lo, hi = a["/psd/ci_lower"][:, band], a["/psd/ci_upper"][:, band]
-        m16 = b["/psd/mean"][:, band]
-        inside = (m16 >= lo) & (m16 <= hi)
-        share = inside.mean(axis=1)
+        m32 = b["/psd/mean"][:, band]
+        share = ((m32 >= lo) & (m32 <= hi)).mean(axis=1)
         print("share of bins of the K = 32 mean inside the K = 16 interval, per sensor row:", share)
-        assert np.all(share >= 0.9), share
-        # and the interval is the chi-square one of K x (Welch dof): it narrows as K doubles
+        assert np.all(share >= 0.8), share
+        # the interval narrows as K doubles
         assert np.all(np.median(b["/psd/ci_upper"][:, band] / b["/psd/ci_lower"][:, band], axis=1)
                       < np.median(hi / lo, axis=1))
 

@@ -69,3 +69,23 @@ def test_interrupt_message_starts_its_own_line(tmp_path, terminal):
     terminal.tmux("send-keys", "-t", "t", "C-c")
     lines = terminal.wait_for(r"error: interrupted")
     assert any(line.startswith("rollspec run: error: interrupted") for line in lines), lines
+
+
+def test_every_slow_phase_reports_progress_once_in_a_log(tmp_path):
+    """Not a terminal (a log): the ensemble's one final line, and the post-ensemble linearised
+    reference of seed 002 (seconds of work whatever K is) shows its own progress when it is slow."""
+    study = SOURCE / "studies" / "seed002-rig-1ms.ini"
+    start = time.monotonic()
+    r = subprocess.run([str(BIN), "run", str(study), "--out", str(tmp_path / "r.h5"), "--set", "study.realisations=1"],
+                       capture_output=True, text=True, timeout=600)
+    elapsed = time.monotonic() - start
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith("wrote ") and "(1 realisation, 1 computed in" in r.stdout and "1 rank x" in r.stdout
+    finals = [line for line in r.stderr.splitlines() if line.startswith("realisations: 1/1")]
+    assert len(finals) == 1 and "took" in finals[0], r.stderr
+    reference = [line for line in r.stderr.splitlines() if line.startswith("linearised reference:")]
+    if elapsed > 3.0:  # the reference (run after the ensemble's one realisation) took over a second
+        assert reference and "took" in reference[-1] and re.search(r"(\d+)/\1 ", reference[-1]), r.stderr
+    quiet = subprocess.run([str(BIN), "run", str(study), "--out", str(tmp_path / "q.h5"), "--set", "study.realisations=1",
+                            "-q"], capture_output=True, text=True, timeout=600)
+    assert quiet.returncode == 0 and quiet.stdout == "" and "linearised reference" not in quiet.stderr

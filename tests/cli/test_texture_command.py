@@ -10,11 +10,15 @@ DEMO = SOURCE / "studies" / "texture-demo.ini"
 
 def test_texture_file_layout_statistics_and_reproducibility(tmp_path):
     out = tmp_path / "t.h5"
-    r = run(["texture", DEMO, "--out", out, "--count", 12])
+    r = run(["texture", DEMO, "--out", out, "--count", 12, "--list"])
     assert r.returncode == 0, r.stderr
     rows = [l.split() for l in r.stdout.splitlines()]
     assert sum(1 for l in rows if l[0] == "line") == 12 and sum(1 for l in rows if l[0] == "surface") == 12
     assert any(l[0] == "line_mean" for l in rows) and any(l[0] == "surf_mean" for l in rows)
+    # The summary's spread is the sample standard deviation of the listed rows.
+    listed = np.array([float(l[2]) for l in rows if l[0] == "line"])
+    std_row = next(l for l in rows if l[0] == "line_std")
+    assert float(std_row[2]) == pytest.approx(listed.std(ddof=1), rel=1e-3)
     with h5py.File(out) as f:
         assert f.attrs["filetype"] in (b"rollspec-texture", "rollspec-texture")
         lines = f["/texture/lines"][:]
@@ -130,3 +134,20 @@ def test_profiles(tmp_path):
 def test_texture_refuses_other_scenes(tmp_path, small_study):
     r = run(["texture", small_study(), "--out", tmp_path / "o.h5"])
     assert r.returncode == EX_CONFIG and "scene texture" in r.stderr
+
+
+def test_texture_summarises_by_default_lists_on_request_and_is_quiet_with_q(tmp_path):
+    r = run(["texture", DEMO, "--out", tmp_path / "a.h5"])
+    assert r.returncode == 0, r.stderr
+    kinds = [l.split()[0] for l in r.stdout.splitlines()]
+    assert kinds == ["kind", "line_mean", "line_std", "surf_mean", "surf_std"]
+    assert "(200 lines, 20 surfaces)" in r.stderr
+    q = run(["texture", DEMO, "--out", tmp_path / "b.h5", "-q"])
+    assert q.returncode == 0 and q.stdout == "" and q.stderr == ""
+    with h5py.File(tmp_path / "a.h5") as a, h5py.File(tmp_path / "b.h5") as b:
+        assert a["/texture/lines"][:].tobytes() == b["/texture/lines"][:].tobytes()
+    one = run(["texture", DEMO, "--out", tmp_path / "c.h5", "--count", 1])
+    assert one.returncode == 0 and "(1 line, 1 surface)" in one.stderr
+    assert [l.split()[0] for l in one.stdout.splitlines()] == ["kind", "line_mean", "surf_mean"]  # no spread of one
+    both = run(["texture", DEMO, "--out", tmp_path / "d.h5", "--list", "--quiet"])
+    assert both.returncode == 64 and "--list and --quiet" in both.stderr

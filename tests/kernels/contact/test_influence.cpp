@@ -100,6 +100,45 @@ TEST_CASE("operators built and applied concurrently agree with the serial produc
   for (const auto& r : results) CHECK(r == serial);
 }
 
+#include "kernels/spectral/welch.hpp"
+
+// Contact and spectral plans once took two different planner locks, so a contact operator and a
+// Welch plan made at the same time raced in FFTW's planner. Both now take the one lock.
+TEST_CASE("contact operators and Welch plans made at the same time agree with serial ones") {
+  const double e_star = 115.4e9;
+  const Grid grid{24, 20, 1e-6, 1e-6};
+  const std::vector<double> p = test_pressure(grid.size());
+  rollspec::spectral::WelchConfig wc;
+  wc.sample_rate = 1000.0;
+  wc.segment = 96;
+  wc.overlap = 48;
+  std::vector<double> serial_u(grid.size()), serial_psd(wc.segment / 2 + 1);
+  {
+    HalfSpaceOperator op(grid, e_star);
+    op.apply(p.data(), serial_u.data());
+    const rollspec::spectral::WelchPlan plan(wc);
+    rollspec::spectral::WelchWorkspace ws(wc.segment);
+    plan.psd(p.data(), p.size(), serial_psd.data(), ws);
+  }
+  const int n = 64;
+  std::vector<std::vector<double>> results(static_cast<std::size_t>(n));
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+  for (int k = 0; k < n; ++k) {
+    auto& r = results[static_cast<std::size_t>(k)];
+    if (k % 2 == 0) {
+      r.resize(grid.size());
+      HalfSpaceOperator op(grid, e_star);
+      op.apply(p.data(), r.data());
+    } else {
+      r.resize(serial_psd.size());
+      const rollspec::spectral::WelchPlan plan(wc);
+      rollspec::spectral::WelchWorkspace ws(wc.segment);
+      plan.psd(p.data(), p.size(), r.data(), ws);
+    }
+  }
+  for (int k = 0; k < n; ++k) CHECK(results[static_cast<std::size_t>(k)] == (k % 2 == 0 ? serial_u : serial_psd));
+}
+
 #include "kernels/contact/geometry.hpp"
 
 TEST_CASE("ball gap: exact sphere, paraboloid, roughness and composite heights") {

@@ -85,3 +85,20 @@ TEST_CASE("mean statistics: field-wise mean, NaN correlation lengths skipped") {
   CHECK(m.correlation_length_x == 2.0);
   CHECK(std::isnan(m.correlation_length_y));
 }
+
+TEST_CASE("spread over realisations: sample standard deviation, NaN fields left out") {
+  HeightStatistics a, b, c;
+  a.rms = 1.0;
+  b.rms = 2.0;
+  c.rms = 6.0;  // mean 3, squares 4 + 1 + 9 = 14, / (3 - 1) = 7
+  a.correlation_length_x = 1.0;
+  b.correlation_length_x = std::nan("");
+  c.correlation_length_x = 3.0;  // two finite values: |1 - 3| / sqrt(2)
+  a.correlation_length_y = 5.0;
+  b.correlation_length_y = c.correlation_length_y = std::nan("");  // one finite value: no spread
+  const HeightStatistics d = std_statistics({a, b, c});
+  CHECK(d.rms == doctest::Approx(std::sqrt(7.0)).epsilon(1e-15));
+  CHECK(d.correlation_length_x == doctest::Approx(std::sqrt(2.0)).epsilon(1e-15));
+  CHECK(std::isnan(d.correlation_length_y));
+  CHECK(d.skewness == 0.0);
+}

@@ -1,0 +1,59 @@
+"""Stages are objects: `rollspec plan` prints the same inspection `rollspec run` acts on. A table a
+run builds shows as cached in the next plan, and the next run reuses it, for every table stage."""
+import shutil
+
+import h5py
+import pytest
+
+from conftest import SOURCE, run
+
+SMOOTH_STRIP = ["contact.blocked_force=solver", "texture.rms=1e-12", "surface.spacing=4e-6",
+                "texture.short_wavelength=8e-6", "surface.ny=64", "blocked_force.window=64",
+                "blocked_force.strip_length=1e-3", "blocked_force.step=4", "blocked_force.segment=16", "ball.end=0.12"]
+TABLE_LAW = ["contact.law=table", "surface.nx=64", "surface.ny=64", "stiffness.approach_max=3e-6", "ball.end=0.12"]
+
+# (study, the table stage, the --set list, the command that builds it)
+CASES = [
+    ("hertz.ini", "stiffness_table", [], "stiffness"),
+    ("seed002-rig-1ms.ini", "stiffness_table", TABLE_LAW, "run"),
+    ("seed002-rig-1ms.ini", "blocked_force", SMOOTH_STRIP, "run"),
+]
+
+
+def stage_status(plan_stdout, stage):
+    rows = [line.split(None, 2) for line in plan_stdout.splitlines()]
+    row = next(r for r in rows if r and r[0] == stage)
+    return row[1], row[2] if len(row) > 2 else ""
+
+
+@pytest.mark.parametrize("study,stage,sets,command", CASES, ids=["stiffness-scene", "ball-on-beam-table", "blocked-force"])
+def test_a_table_built_by_a_run_is_cached_in_the_next_plan(tmp_path, study, stage, sets, command):
+    shutil.copy(SOURCE / "studies" / study, tmp_path / study)
+    s = tmp_path / study
+    args = [a for kv in sets for a in ("--set", kv)]
+    plan = run(["plan", s, *args])
+    assert plan.returncode == 0, plan.stderr
+    status, reason = stage_status(plan.stdout, stage)
+    assert status == "run" and "no " in reason and "input hash" in reason, plan.stdout
+    out = ["--out", tmp_path / "r.h5"] if command == "run" else []
+    extra = ["--set", "study.realisations=2"] if command == "run" else []
+    first = run([command, s, *args, *extra, *out])
+    assert first.returncode == 0, first.stderr
+    assert "built " in first.stderr + first.stdout
+    again = run(["plan", s, *args])
+    status, reason = stage_status(again.stdout, stage)
+    assert status == "cached", again.stdout
+    table = reason.split(" (input hash ")[0]
+    assert (tmp_path / table).is_file()
+    second = run([command, s, *args, *extra, *out, "--force"] if command == "run" else [command, s, *args])
+    assert second.returncode == 0, second.stderr
+    assert "cached " + table in second.stderr + second.stdout
+    # An edited table: the plan says the run will refuse it, and the run does (unless --rebuild).
+    with h5py.File(tmp_path / table, "r+") as f:
+        column = f["/stiffness/force_mean" if stage == "stiffness_table" else "/blocked_force/force"]
+        column[1] = column[1] * (1 + 1e-12)
+    damaged = run(["plan", s, *args])
+    status, reason = stage_status(damaged.stdout, stage)
+    assert status == "run" and reason.startswith("REFUSED unless --rebuild"), damaged.stdout
+    refused = run([command, s, *args, *extra, *out, "--force"] if command == "run" else [command, s, *args])
+    assert refused.returncode == 65, refused.stderr
