@@ -1,4 +1,4 @@
-"""python3 -m rollspec_post COMMAND ...: plots and reports from rollspec result files."""
+"""python3 -m rollspec_post COMMAND ... (installed: rollspec-post COMMAND ...): plots and reports from rollspec result files."""
 import argparse
 import os
 import sys
@@ -6,8 +6,14 @@ import sys
 from .result_file import EX_CANTCREAT, PostError
 
 
+def program_name():
+    """`rollspec-post` when run as the installed command (pyproject.toml), else `python3 -m rollspec_post`."""
+    name = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else ""
+    return name if name == "rollspec-post" else "python3 -m rollspec_post"
+
+
 def build_parser():
-    parser = argparse.ArgumentParser(prog="python3 -m rollspec_post",
+    parser = argparse.ArgumentParser(prog=program_name(),
                                      description="Plots and reports from rollspec result files.")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("psd", help="acceleration PSD with confidence band, measurement and band levels")

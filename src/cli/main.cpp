@@ -8,7 +8,7 @@
 //   rollspec modes STUDY.ini
 //   rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild]
 //   rollspec keys [SCENE]
-//   rollspec version
+//   rollspec version (or rollspec --version, rollspec -V)
 //
 // Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
 // output, 78 bad configuration, 130 interrupted.
@@ -34,15 +34,19 @@ const char* kUsage =
     "usage: rollspec COMMAND [ARGS] (rollspec COMMAND --help for each)\n"
     "\n"
     "commands:\n"
-    "  run       run a study's ensemble and write the result file (HDF5)\n"
-    "  plan      show which stages a study runs, reuses from cache, or skips, and why\n"
-    "  psd       Welch PSD of a measured time series (CSV in, CSV out)\n"
-    "  compare   compare a result's band levels with a measured PSD\n"
-    "  texture   line textures and isotropic surfaces from a roughness PSD\n"
-    "  stiffness build or reuse a contact stiffness table (elastic-plastic rough contact)\n"
-    "  modes     modal frequencies of a ball-on-beam study's beam\n"
-    "  keys      list the study keys of a scene with units, ranges and defaults\n"
-    "  version   print the version, git sha and library versions\n";
+    "  run        run a study's ensemble and write the result file (HDF5)\n"
+    "  plan       show which stages a study runs, reuses from cache, or skips, and why\n"
+    "  psd        Welch PSD of a measured time series (CSV in, CSV out)\n"
+    "  compare    compare a result's band levels with a measured PSD\n"
+    "  texture    line textures and isotropic surfaces from a roughness PSD\n"
+    "  stiffness  build or reuse a contact stiffness table (elastic-plastic rough contact)\n"
+    "  modes      modal frequencies of a ball-on-beam study's beam\n"
+    "  keys       list the study keys of a scene with units, ranges and defaults\n"
+    "  version    print the version, git sha and library versions\n"
+    "\n"
+    "options:\n"
+    "  -h, --help       print this help and exit\n"
+    "  -V, --version    print the version and exit (the same as rollspec version)\n";
 
 }  // namespace
 
@@ -73,7 +77,7 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return 0;
   }
-  if (command == "--version") return cli::version_command({});
+  if (command == "--version" || command == "-V") return cli::version_command({});
   const std::map<std::string, int (*)(const cli::Args&)> commands = {
       {"run", cli::run_command},         {"plan", cli::plan_command}, {"psd", cli::psd_command},
       {"compare", cli::compare_command}, {"keys", cli::keys_command}, {"version", cli::version_command},

@@ -1,0 +1,53 @@
+# What `cmake --install BUILD --prefix P` puts where (GNUInstallDirs; included by the top-level
+# CMakeLists.txt after kernels/ and src/):
+#   P/bin/rollspec                                  src/CMakeLists.txt
+#   P/lib/librollspec_kernels.a                     kernels/CMakeLists.txt (EXPORT rollspecTargets)
+#   P/include/rollspec/kernels/<area>/*.hpp         kernels/CMakeLists.txt
+#   P/lib/cmake/rollspec/rollspecConfig.cmake, rollspecConfigVersion.cmake, rollspecTargets.cmake,
+#     rollspecFFTW3.cmake: find_package(rollspec) -> rollspec::kernels          here
+#   P/share/man/man1/rollspec.1                     here, help2man on the built binary
+#   P/share/bash-completion/completions/rollspec    here, from the built binary's help texts
+# Nothing here needs the tests or the benchmarks.
+include(CMakePackageConfigHelpers)
+
+# --- CMake package --------------------------------------------------------------------------------
+set(ROLLSPEC_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/rollspec)
+install(EXPORT rollspecTargets NAMESPACE rollspec:: DESTINATION ${ROLLSPEC_CMAKE_DIR})
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/rollspecConfig.cmake.in
+  ${CMAKE_BINARY_DIR}/package/rollspecConfig.cmake INSTALL_DESTINATION ${ROLLSPEC_CMAKE_DIR})
+# 0.x: a minor version may change the kernels' interfaces, so only the same 0.minor is compatible.
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/package/rollspecConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/package/rollspecConfig.cmake ${CMAKE_BINARY_DIR}/package/rollspecConfigVersion.cmake
+  ${CMAKE_CURRENT_LIST_DIR}/rollspecFFTW3.cmake DESTINATION ${ROLLSPEC_CMAKE_DIR})
+
+# --- Man page and bash completion, generated from the built rollspec's own help ---------------------
+# cmake/cli_docs.cmake runs `rollspec --help`, `rollspec COMMAND --help` for every command it lists,
+# `rollspec keys` and `rollspec --version`, and writes the completion (template
+# cmake/rollspec-completion.bash.in) and, with help2man, the man page (cmake/rollspec.h2m plus
+# every command's help as the COMMANDS section). Both are rebuilt whenever rollspec is.
+find_program(HELP2MAN_EXECUTABLE help2man)
+set(ROLLSPEC_COMPLETION ${CMAKE_BINARY_DIR}/share/bash-completion/completions/rollspec)
+set(ROLLSPEC_MAN_PAGE ${CMAKE_BINARY_DIR}/share/man/man1/rollspec.1)
+set(cli_docs_outputs ${ROLLSPEC_COMPLETION})
+set(cli_docs_args -DROLLSPEC=$<TARGET_FILE:rollspec> -DCOMPLETION=${ROLLSPEC_COMPLETION}
+  -DCOMPLETION_TEMPLATE=${CMAKE_CURRENT_LIST_DIR}/rollspec-completion.bash.in)
+if(HELP2MAN_EXECUTABLE)
+  set(ROLLSPEC_MAN_PAGE_BUILT ON)
+  list(APPEND cli_docs_outputs ${ROLLSPEC_MAN_PAGE})
+  list(APPEND cli_docs_args -DHELP2MAN=${HELP2MAN_EXECUTABLE} -DMAN=${ROLLSPEC_MAN_PAGE}
+    -DMAN_INCLUDE=${CMAKE_CURRENT_LIST_DIR}/rollspec.h2m)
+else()
+  set(ROLLSPEC_MAN_PAGE_BUILT OFF)
+  message(STATUS "help2man not found: no man page (apt-get install help2man, or bash .ci/setup)")
+endif()
+add_custom_command(OUTPUT ${cli_docs_outputs}
+  COMMAND ${CMAKE_COMMAND} ${cli_docs_args} -P ${CMAKE_CURRENT_LIST_DIR}/cli_docs.cmake
+  DEPENDS rollspec ${CMAKE_CURRENT_LIST_DIR}/cli_docs.cmake ${CMAKE_CURRENT_LIST_DIR}/rollspec-completion.bash.in
+          ${CMAKE_CURRENT_LIST_DIR}/rollspec.h2m
+  COMMENT "rollspec man page and bash completion from its help texts")
+add_custom_target(rollspec_cli_docs ALL DEPENDS ${cli_docs_outputs})
+install(FILES ${ROLLSPEC_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions)
+if(ROLLSPEC_MAN_PAGE_BUILT)
+  install(FILES ${ROLLSPEC_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+endif()
