@@ -50,7 +50,7 @@ class ContactSet {
   const std::vector<ContactState>& plane_states() const { return plane_state_; }
   const std::vector<ContactOutput>& surface_outputs() const { return surface_out_; }
 
-  class Pair;
+  class Pair;  // one pair of either kind (the interface the kinds implement, contact_set.cpp)
 
  private:
   std::vector<ContactOutput> plane_out_, surface_out_;

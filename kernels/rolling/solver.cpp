@@ -38,7 +38,7 @@ struct Solver::Impl {
   Impl(const Model& m, const std::vector<NodeState>& nodes, const SolverOptions& o)
       : eq(equation_numbers(m, neq)), points(make_beam_points(m)), contacts(m, nodes), rule(TimeRule::from(o)),
         newton(eq, neq) {}
-  int neq = 0;
+  int neq = 0;          // declared first: the initialiser of eq counts the free equations into it
   std::vector<int> eq;  // global DOF -> equation (-1: imposed)
   BeamPoints points;
   ContactSet contacts;
