@@ -3,12 +3,12 @@
 // rolling contact, Eigen SparseLU with the sparsity pattern analysed once, step cutting
 // (halving) when Newton fails. Updated Lagrangian: the unknowns of a step are the nodal
 // incremental displacements du and incremental Rodrigues parameters a (D-12), updated
-// additively during the Newton iterations of the step.
+// additively during the Newton iterations of the step. The parts: time_rule (the integrator),
+// assembly (residual and tangent, R-40), contact_set (plane and rough-surface pairs), newton (the
+// iteration of a step); solver.cpp sets up, steps, cuts and commits.
 #pragma once
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <array>
 #include <memory>
 #include <vector>
@@ -124,10 +124,10 @@ class Solver {
   double time() const { return t_; }
   const Model& model() const { return model_; }
   const std::vector<NodeState>& nodes() const { return nodes_; }
-  const std::vector<ContactOutput>& contacts() const { return contact_out_; }
-  const std::vector<ContactState>& contact_states() const { return cstate_; }
+  const std::vector<ContactOutput>& contacts() const;
+  const std::vector<ContactState>& contact_states() const;
   // Rough-surface contacts (model.surface_contacts order); friction fields zero when mu = 0.
-  const std::vector<ContactOutput>& surface_contacts() const { return surface_out_; }
+  const std::vector<ContactOutput>& surface_contacts() const;
   Energies energies() const;
   // Reactions at the imposed DOFs (model.imposed order), from the last converged step.
   const std::vector<double>& reactions() const { return reactions_; }
@@ -146,21 +146,18 @@ class Solver {
                             Eigen::MatrixXd* K);
 
  private:
-  struct Impl;
+  struct Impl;  // equations, beam Gauss points, contact set, time rule, Newton driver
   std::unique_ptr<Impl> impl_;
   Model model_;
   SolverOptions opt_;
   double t_ = 0.0;
   std::vector<NodeState> nodes_;
-  std::vector<ContactState> cstate_;
-  std::vector<ContactOutput> contact_out_;
-  std::vector<ContactOutput> surface_out_;
-  std::vector<ContactState> sstate_;  // friction history of rough-surface pairs
   std::vector<double> reactions_;
   Energies acc_;  // accumulated works and dissipation
   std::vector<double> node_mass_;
 
   bool try_step(double t_next, double dt, StepReport& rep, bool allow_penetration_cut);
+  void commit_step(const Eigen::VectorXd& q, const Eigen::VectorXd& R, double t_next, double dt, StepReport& rep);
   void initial_acceleration();
 };
 

@@ -95,19 +95,13 @@ int texture_command(const Args& args) {
   const std::size_t n_surf = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("surface.count"));
 
   const texture::Psd psd = texture_io::study_psd(s);
-  texture::LineTextureSpec ls;
-  ls.spacing = s.real("lines.spacing");
-  const double samples = std::floor(s.real("lines.length") / ls.spacing);
+  const double spacing = s.real("lines.spacing");
+  const double samples = std::floor(s.real("lines.length") / spacing);
   if (samples < 8 || samples > 1 << 26)
     s.refuse("lines.length", "gives " + std::to_string(samples) + " samples at [lines] spacing; allowed: 8 to 2^26");
-  ls.samples = static_cast<std::size_t>(samples);
-  ls.amplitudes = texture_io::study_amplitudes(s);
-  std::unique_ptr<texture::LineTextureGenerator> lines;
-  try {
-    lines = std::make_unique<texture::LineTextureGenerator>(psd, ls);
-  } catch (const std::exception& e) {
-    throw config_error(s.where("lines.spacing") + ": " + e.what());
-  }
+  const auto lines =
+      texture_io::study_line_generator(s, psd, spacing, static_cast<std::size_t>(samples), "lines.spacing", false);
+  const texture::LineTextureSpec& ls = lines->spec();
   const texture_io::SurfaceGenerator surfaces = n_surf ? texture_io::study_surface_generator(s, psd) : texture_io::SurfaceGenerator{};
 
   io::OutputTarget target{out, "rollspec-texture"};

@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
-#include <complex>
-#include <limits>
 #include <mutex>
 #include <sstream>
 
@@ -17,13 +15,11 @@
 #include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/dopri5_reference.hpp"
 #include "kernels/beam/exact_step_integrator.hpp"
-#include "kernels/beam/linear_response.hpp"
+#include "kernels/beam/linear_reference.hpp"
 #include "kernels/beam/modal_beam.hpp"
 #include "kernels/contact/geometry.hpp"
-#include "kernels/spectral/confidence.hpp"
 #include "kernels/spectral/harmonic_synthesis.hpp"
 #include "kernels/spectral/welch.hpp"
-#include "kernels/spectral/welch_expectation.hpp"
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/psd_units.hpp"
 #include "kernels/texture/time_signal.hpp"
@@ -43,7 +39,6 @@ namespace rollspec::scenes {
 using namespace study;
 
 namespace {
-const double inf = std::numeric_limits<double>::infinity();
 
 std::string g4(double v) {
   char buf[32];
@@ -57,97 +52,6 @@ std::vector<double> sensor_positions(const Study& s) {
   auto v = s.numbers("sensors.positions");
   if (v.empty()) s.refuse("sensors.positions", "lists no position; allowed: comma-separated positions in m");
   return v;
-}
-
-std::vector<KeySpec> ball_on_beam_keys() {
-  std::vector<KeySpec> k = {
-      choice_key("beam", "support", "boundary conditions", std::string("clamped-clamped"),
-                 {"clamped-clamped", "simply-supported"}),
-      real_key("beam", "length", "m", "physical span l between the supports", std::string("0.4"), 0.0, inf, false),
-      real_key("beam", "effective_length", "m", "modal length l_eff >= l (clamp rotation, seed 002: l + 30 mm); 0: l",
-               std::string("0"), 0.0, inf),
-      real_key("beam", "width", "m", "section width", std::string("0.05"), 0.0, inf, false),
-      real_key("beam", "thickness", "m", "section thickness (bending direction)", std::string("0.0068"), 0.0, inf, false),
-      real_key("beam", "youngs_modulus", "Pa", "Young's modulus E", std::string("210e9"), 0.0, inf, false),
-      real_key("beam", "poisson", "-", "Poisson's ratio (contact modulus)", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("beam", "density", "kg/m^3", "density rho", std::string("7850"), 0.0, inf, false),
-      integer_key("beam", "modes", "number of modes (0: all up to max_frequency)", std::string("0"), 0, 5000),
-      real_key("beam", "max_frequency", "Hz", "highest modal frequency kept when modes = 0", std::string("20000"), 0.0, inf),
-      real_key("beam", "loss_factor", "-", "modal loss factor eta (zeta = eta/2)", std::string("0.01"), 0.0, 2.0),
-      bool_key("beam", "static_correction", "residual flexibility of the truncated modes", std::string("true")),
-      real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
-      real_key("ball", "density", "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", std::string("7850"), 0.0, inf, false),
-      real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
-      real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("ball", "speed", "m/s", "rolling speed v", std::string("1"), 0.0, inf, false),
-      real_key("ball", "start", "m", "ball position where the record starts", std::string("0.05"), 0.0, inf),
-      real_key("ball", "end", "m", "ball position where the record ends", std::string("0.35"), 0.0, inf),
-      real_key("ball", "gravity", "m/s^2", "gravitational acceleration", std::string("9.81"), 0.0, inf),
-      choice_key("contact", "law",
-                 "contact law: hertz (D-10), table (rough-surface P(delta) from the stiffness stage, D-10), literal "
-                 "(seed 001 Eq. 7: k_c(delta) delta from the same table) or linearised blocked force (D-11)",
-                 std::string("hertz"), {"hertz", "table", "literal", "linearised"}),
-      real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"), 0.0, inf),
-      choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
-                 std::string("damping_only"), {"damping_only", "zero"}),
-      real_key("contact", "k0", "N/m", "linearised contact stiffness k0", std::string("6.8e6"), 0.0, inf, false),
-      choice_key("contact", "blocked_force",
-                 "linearised law's F0(t): spring (W + k0 h_patch(v t), k0 from [contact]) or solver (the contact "
-                 "solver's blocked force along a rough strip, seed 002 §4.2: k0, d0 and the F0 PSD from a cached table)",
-                 std::string("spring"), {"spring", "solver"}),
-      bool_key("contact", "patch_filter", "average the roughness over the Hertz contact width at the static load",
-               std::string("true")),
-      real_key("roughness", "spacing", "m",
-               "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
-               "step, v / (sample_rate x substeps)",
-               std::string("0"), 0.0, inf),
-      real_key("signal", "sample_rate", "Hz", "output sample rate of accelerations and forces", std::string("25600"), 0.0,
-               inf, false),
-      integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"), 1,
-                  1000),
-      choice_key("signal", "hold",
-                 "modal force over a step: quadratic (order 3, default) or linear (order 2) (kernels/beam B23, B36)",
-                 std::string("quadratic"), {"quadratic", "linear"}),
-      choice_key("signal", "integrator", "exact (exact modal step, implicit contact) or dopri5 (reference)",
-                 std::string("exact"), {"exact", "dopri5"}),
-      real_key("signal", "rtol", "-", "relative tolerance of the dopri5 reference", std::string("1e-8"), 1e-14, 1e-2),
-      text_key("sensors", "positions", "accelerometer positions along the beam, m, comma-separated", std::string("0.2")),
-      bool_key("sensors", "average", "add the mean PSD over sensors (seed 002 averages 5 sensors x 25 rolls)",
-               std::string("true")),
-      real_key("spectrum", "skip_start", "s",
-               "time at the start of each record left out of the PSDs (start-up of the random response)", std::string("0"),
-               0.0, inf),
-      integer_key("output", "time_histories", "store time histories of realisations 0..n-1", std::string("0"), 0, 1000),
-  };
-  for (auto& t : texture_io::psd_keys()) k.push_back(t);
-  for (auto& t : texture_io::surface_keys()) k.push_back(t);
-  for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
-  for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
-  return k;
-}
-
-beam::ModalBeam study_modal_beam(const Study& s) {
-  beam::BeamProperties p;
-  p.support = s.text("beam.support") == "clamped-clamped" ? beam::Support::clamped_clamped : beam::Support::simply_supported;
-  p.youngs_modulus = s.real("beam.youngs_modulus");
-  p.density = s.real("beam.density");
-  p.width = s.real("beam.width");
-  p.thickness = s.real("beam.thickness");
-  p.length = s.real("beam.length");
-  p.effective_length = s.real("beam.effective_length");
-  if (p.effective_length > 0.0 && p.effective_length < p.length)
-    s.refuse("beam.effective_length", "is shorter than [beam] length; allowed: 0 or >= length");
-  beam::ModeSelection sel;
-  sel.count = static_cast<int>(s.integer("beam.modes"));
-  sel.max_frequency = s.real("beam.max_frequency");
-  if (sel.count == 0 && sel.max_frequency <= 0.0) s.refuse("beam.max_frequency", "must be > 0 when [beam] modes = 0");
-  beam::ModalDamping d;
-  d.loss_factor = s.real("beam.loss_factor");
-  try {
-    return beam::ModalBeam(p, sel, d, s.boolean("beam.static_correction"));
-  } catch (const std::exception& e) {
-    throw config_error(s.where("beam.modes") + ": " + e.what());
-  }
 }
 
 namespace {
@@ -212,17 +116,9 @@ class BallOnBeam final : public Scene {
     dx_ = s.real("roughness.spacing") > 0.0
               ? s.real("roughness.spacing")
               : model_.traverse.speed / (model_.sample_rate * static_cast<double>(s.integer("signal.substeps")));
-    texture::LineTextureSpec ls;
-    ls.spacing = dx_;
-    ls.samples = static_cast<std::size_t>(std::floor(l / dx_)) + 1;
-    if (ls.samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
-    ls.amplitudes = texture_io::study_amplitudes(s);
-    ls.allow_truncation = true;
-    try {
-      lines_ = std::make_unique<texture::LineTextureGenerator>(psd_, ls);
-    } catch (const std::exception& e) {
-      throw config_error(s.where("roughness.spacing") + ": " + e.what());
-    }
+    const std::size_t line_samples = static_cast<std::size_t>(std::floor(l / dx_)) + 1;
+    if (line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
+    lines_ = texture_io::study_line_generator(s, psd_, dx_, line_samples, "roughness.spacing");
     if (!uses_table_ && !blocked_solver_)
       check_contact_resolution(s, linearised_ ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * static_compression_));
     // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
@@ -242,7 +138,7 @@ class BallOnBeam final : public Scene {
     for (std::size_t k = 0; k < model_.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
     rows_ = std::make_unique<PsdRows>(names, average_, welch_->frequencies(), band_min_, band_max_, 2 * welch_->n_freq() + 1);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
-      workspaces_.push_back(std::make_unique<Workspace>(ls.samples, lines_->harmonics(), segment));
+      workspaces_.push_back(std::make_unique<Workspace>(line_samples, lines_->harmonics(), segment));
     add_pipeline_stages(s);
   }
 
@@ -292,7 +188,7 @@ class BallOnBeam final : public Scene {
                    linearised_ ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
                                : "only the linearised law uses F0"}});
     }
-    add_stages({{"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step, implicit contact (D-9, D-10)"},
+    add_stages({{"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
                 {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"}});
   }
 
@@ -502,172 +398,50 @@ class BallOnBeam final : public Scene {
   }
 
  private:
-  // Frequency-domain solution of the linearised model (seed 002 check), made exact for what the
-  // Monte-Carlo simulates (kernels/beam README B34, B34a-c, B35a; D-20):
-  //  - excitation: the blocked-force samples the integrator sees, W + k0 (patch-averaged samples of
-  //    the synthesised roughness): k0^2 G_t(f) T(k)^2 with T the patch filter acting on samples
-  //    (B35a: sin(ka)/(ka) times the linear interpolant's sinc^2(k dx/2)), no harmonic above pi/dx,
-  //    times |C|^2 of the Catmull-Rom interpolation (B13) at the steps' offset from the samples;
-  //  - receptances averaged over ball positions with the Welch estimate's own time weights (B34a:
-  //    sum over segments of the squared window), not uniformly;
-  //  - the PSD continues to the integration step's Nyquist frequency and aliases into [0, f_s/2]
-  //    when the outputs are sampled (B34c: the D-20 integral taken beyond f_s/2);
-  //  - then the expected Welch estimate (D-20): the window resolves no resonance narrower than a bin.
-  //  - the chi-square dof of the ensemble mean per bin for this non-stationary record (B34b).
-  // Left out: the moving load (quasi-stationary in the ball position). Its bias grows with the
-  // distance the ball travels while the modes respond (v / (zeta_1 omega_1) against the analysed
-  // length), not only with the seeds' Tf/tau (fundamental period over traverse time): measured
-  // in tests/cli/test_ball_on_beam.py.
+  // Frequency-domain solution of the linearised model made exact for what the Monte-Carlo
+  // simulates (kernels/beam/linear_reference.hpp; README B34, B34a-c, B35a; D-20).
   void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,
                               double realisations) const {
-    const std::size_t refine = 8, half = refine * (f.size() - 1);
-    const double fs = model_.sample_rate, step = 1.0 / (fs * static_cast<double>(step_options_.substeps));
-    const auto aliases = static_cast<std::size_t>(std::ceil(0.5 / step / (0.5 * fs) - 1e-9));
-    const std::size_t nfine = half * aliases + 1;
-    const double v = model_.traverse.speed, k0 = model_.contact.k0, a = patch_half_width_;
-    const auto gt = texture::time_psd(psd_, v);
-    const double k_nyq = M_PI / dx_, dfine = welch_->frequency_step() / static_cast<double>(refine);
-    // Catmull-Rom weights of y_{i-1}, y_i, y_{i+1}, y_{i+2} at fraction tau between samples (B13).
-    auto catmull_rom_gain = [](double tau, double theta) {
-      const double t2 = tau * tau, t3 = t2 * tau;
-      const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + tau, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
-      const double c[4] = {-0.5 * h10, h00 - 0.5 * h11, h01 + 0.5 * h10, 0.5 * h11};
-      std::complex<double> g = 0.0;
-      for (int n = 0; n < 4; ++n) g += c[n] * std::polar(1.0, static_cast<double>(n - 1) * theta);
-      return std::norm(g);
-    };
-    // Offset of the integration steps from the F0 samples (the same at every step when the samples
-    // are one per step, the default); otherwise F0 is read at every fraction: mean gain over tau.
-    const double dt_f0 = dx_ / v;
-    const bool one_per_step = std::abs(dt_f0 / step - 1.0) < 1e-9;
-    double tau = 0.0;
-    if (one_per_step) {
-      const double x0 = model_.traverse.x_start, first = std::floor(x0 / dx_);
-      tau = (x0 - first * dx_) / dx_;
-      tau -= std::floor(tau);
+    beam::LinearReferenceInput in;
+    in.beam = &model_.beam;
+    in.ball_mass = model_.ball.mass;
+    in.damping = model_.contact.damping;
+    in.sensors = model_.sensors;
+    in.sensor_mean = rows() > model_.sensors.size();
+    in.welch = welch_.get();
+    in.sample_rate = model_.sample_rate;
+    beam::ReferenceExcitation& ex = in.excitation;
+    if (blocked_solver_) {
+      ex.time_psd = [this](double fi) { return blocked_force_time_psd(fi); };
+    } else {
+      ex.time_psd = texture::time_psd(psd_, model_.traverse.speed);
     }
-    std::vector<double> fine(nfine), exc(nfine, 0.0);
-    for (std::size_t i = 0; i < nfine; ++i) {
-      fine[i] = dfine * static_cast<double>(i);
-      const double k = 2.0 * M_PI * fine[i] / v;
-      if (i == 0) continue;
-      if (blocked_solver_) {
-        exc[i] = blocked_force_time_psd(fine[i]);  // synthesised at the step, up to its Nyquist frequency
-        continue;
-      }
-      if (k > k_nyq) continue;  // harmonics above pi/dx are not synthesised
-      const double patch = beam::contact_patch_transfer(k, a, dx_);  // (B35a)
-      const double theta = 2.0 * M_PI * fine[i] * dt_f0;
-      double hold = 0.0;
-      if (one_per_step) {
-        hold = catmull_rom_gain(tau, theta);
-      } else {
-        for (int j = 0; j < 16; ++j) hold += catmull_rom_gain((j + 0.5) / 16.0, theta) / 16.0;
-      }
-      exc[i] = k0 * k0 * gt(fine[i]) * patch * patch * hold;
-    }
-    // Ball positions with the Welch time weights of the analysed record (B34a): sample i of the
-    // analysed part weighs sum_segments w^2(i - segment start); the samples after the last segment
-    // weigh nothing. Blocks of consecutive samples, at their weighted mean position.
-    const std::size_t n = samples_ - skip_;
-    const auto tw = spectral::welch_time_weights(*welch_, n);
-    const std::size_t blocks = std::min<std::size_t>(n, 256), per = (n + blocks - 1) / blocks;
-    std::vector<std::size_t> edges;
-    std::vector<double> xi, xw;
-    for (std::size_t b0 = 0; b0 < n; b0 += per) {
-      const std::size_t b1 = std::min(n, b0 + per);
-      double sw = 0.0, sx = 0.0;
-      for (std::size_t i = b0; i < b1; ++i) {
-        const double x = model_.traverse.x_start + v * static_cast<double>(skip_ + i) / fs;
-        sw += tw[i];
-        sx += tw[i] * x;
-      }
-      edges.push_back(b0);
-      xi.push_back(sw > 0.0 ? sx / sw : model_.traverse.x_start + v * static_cast<double>(skip_ + (b0 + b1) / 2) / fs);
-      xw.push_back(sw);
-    }
-    edges.push_back(n);
+    ex.blocked_force = blocked_solver_;
+    ex.k0 = model_.contact.k0;
+    ex.speed = model_.traverse.speed;
+    ex.spacing = dx_;
+    ex.patch_half_width = patch_half_width_;
+    ex.x_start = model_.traverse.x_start;
+    ex.step = 1.0 / (model_.sample_rate * static_cast<double>(step_options_.substeps));
+    in.positions = beam::welch_position_blocks(*welch_, samples_ - skip_, skip_, model_.traverse.x_start,
+                                               model_.traverse.speed, model_.sample_rate);
+    in.realisations = realisations;
+    in.confidence = confidence_;
     // The reference runs after the ensemble and can take longer than it: shown when over a second.
-    const std::size_t n_rows = model_.sensors.size() + (rows() > model_.sensors.size() ? 1 : 0);
-    ensemble::Progress progress("linearised reference", 1 + n_rows + (edges.size() - 1), quiet_);
+    ensemble::Progress progress("linearised reference", beam::linear_reference_steps(in), quiet_);
     progress.show_after(1.0);
-    const auto lr = beam::linear_response_psd(model_.beam, model_.ball.mass, k0, model_.contact.damping, xi,
-                                              model_.sensors, fine, exc, beam::Excitation::blocked_force, xw);
-    progress.advance();
-    std::vector<std::vector<double>> rows_fine = lr.sensor_psd;
-    if (rows() > model_.sensors.size()) {
-      std::vector<double> m(nfine, 0.0);
-      for (const auto& row : lr.sensor_psd)
-        for (std::size_t k = 0; k < nfine; ++k) m[k] += row[k] / static_cast<double>(lr.sensor_psd.size());
-      rows_fine.push_back(m);
-    }
-    std::vector<double> expected, raw;
-    for (const auto& row : rows_fine) {
-      const auto e = spectral::welch_expectation(*welch_, row, refine);
-      expected.insert(expected.end(), e.begin(), e.end());
-      progress.advance();
-      for (std::size_t k = 0; k < f.size(); ++k) raw.push_back(row[k * refine]);
-    }
-    // Degrees of freedom of the ensemble mean per bin (B34b): the record is not stationary (the
-    // response at a bin rises and falls with the ball's position, e.g. with phi_n(xi)^2 at a
-    // resonance), so a Welch estimate holds fewer dof than the stationary D-16 value; the sensors
-    // of one roll are correlated, so their mean holds fewer than n_sensors times one sensor's.
-    // Cross-spectra per position block, smoothed by the Welch kernel truncated at +-4 bins.
-    const std::size_t nf = f.size(), ns = model_.sensors.size(), pairs = ns * (ns + 1) / 2, reach = 4 * refine;
-    const auto kern = spectral::welch_kernel(*welch_, refine);
-    const std::size_t nk = kern.size();
-    const std::vector<double> band(fine.begin(), fine.begin() + static_cast<std::ptrdiff_t>(half + 1));
-    std::vector<std::complex<double>> cross((edges.size() - 1) * pairs * nf, 0.0);
-    for (std::size_t p = 0; p + 1 < edges.size(); ++p) {
-      progress.advance();
-      if (xw[p] == 0.0) continue;  // no segment sees this block
-      const auto H = beam::linear_response_transfer(model_.beam, model_.ball.mass, k0, model_.contact.damping, xi[p],
-                                                    model_.sensors, band, beam::Excitation::blocked_force);
-      for (std::size_t k = 0; k < nf; ++k) {
-        const std::size_t c = k * refine, j0 = c > reach ? c - reach : 0, j1 = std::min(half, c + reach);
-        double norm = 0.0;
-        for (std::size_t j = j0; j <= j1; ++j) norm += kern[(c + nk - j) % nk];
-        std::size_t q = 0;
-        for (std::size_t s1 = 0; s1 < ns; ++s1)
-          for (std::size_t s2 = s1; s2 < ns; ++s2, ++q) {
-            std::complex<double> acc = 0.0;
-            for (std::size_t j = j0; j <= j1; ++j) acc += kern[(c + nk - j) % nk] * exc[j] * H[s1][j] * std::conj(H[s2][j]);
-            cross[(p * pairs + q) * nf + k] = acc / norm;
-          }
-      }
-    }
+    const beam::LinearReference ref = beam::linear_reference(in, [&progress] { progress.advance(); });
     progress.finish();
-    std::vector<double> dof;
-    for (std::size_t s = 0; s < ns; ++s) {
-      std::vector<std::complex<double>> own((edges.size() - 1) * nf);
-      const std::size_t q = s * ns - s * (s - 1) / 2;  // the (s, s) pair
-      for (std::size_t p = 0; p + 1 < edges.size(); ++p)
-        for (std::size_t k = 0; k < nf; ++k) own[p * nf + k] = cross[(p * pairs + q) * nf + k];
-      const auto d = spectral::welch_block_dof(*welch_, n, edges, 1, nf, own);
-      for (double v1 : d) dof.push_back(realisations * v1);
-    }
-    if (rows() > ns) {
-      const auto d = spectral::welch_block_dof(*welch_, n, edges, ns, nf, cross);
-      for (double v1 : d) dof.push_back(realisations * v1);
-    }
-    // Where the ensemble mean of K realisations falls with probability `confidence` if the
-    // reference is right: nu P / S ~ chi2(nu) (D-16) with this dof.
-    std::vector<double> lower(expected.size()), upper(expected.size());
-    for (std::size_t i = 0; i < expected.size(); ++i) {
-      const auto fi = spectral::chi_square_interval(std::max(dof[i], 1.0), confidence_);
-      lower[i] = expected[i] / fi.upper;
-      upper[i] = expected[i] / fi.lower;
-    }
-    w.write("/reference/psd", {rows(), f.size()}, expected.data(), "(m/s^2)^2/Hz",
-            "expected Welch estimate (D-20) of the linearised model's frequency-domain PSD, averaged over ball positions");
-    w.write("/reference/psd_raw", {rows(), f.size()}, raw.data(), "(m/s^2)^2/Hz",
+    w.write("/reference/psd", {rows(), f.size()}, ref.psd.data(), "(m/s^2)^2/Hz",
+            "expected Welch estimate of the linearised model's frequency-domain PSD, averaged over ball positions");
+    w.write("/reference/psd_raw", {rows(), f.size()}, ref.raw.data(), "(m/s^2)^2/Hz",
             "the frequency-domain PSD itself at the bin frequencies (not window-smoothed)");
-    w.write("/reference/degrees_of_freedom", {rows(), f.size()}, dof.data(), "1",
-            "chi-square dof of the ensemble mean per bin for the non-stationary record (kernels/beam B34b; "
-            "/psd/degrees_of_freedom is the stationary value)");
-    w.write("/reference/mean_lower", {rows(), f.size()}, lower.data(), "(m/s^2)^2/Hz",
+    w.write("/reference/degrees_of_freedom", {rows(), f.size()}, ref.dof.data(), "1",
+            "chi-square dof of the ensemble mean per bin for the non-stationary record, from the Welch window "
+            "and the ball's positions (/psd/degrees_of_freedom comes from the realisations' scatter)");
+    w.write("/reference/mean_lower", {rows(), f.size()}, ref.mean_lower.data(), "(m/s^2)^2/Hz",
             "lower end of the range that holds the ensemble mean with the study's confidence if /reference/psd is right");
-    w.write("/reference/mean_upper", {rows(), f.size()}, upper.data(), "(m/s^2)^2/Hz",
+    w.write("/reference/mean_upper", {rows(), f.size()}, ref.mean_upper.data(), "(m/s^2)^2/Hz",
             "upper end of that range");
     w.attribute("/reference/psd", "label",
                 std::string("linear, quasi-stationary (no moving-weight response, no loss of contact)"));
@@ -699,7 +473,7 @@ class BallOnBeam final : public Scene {
     w.write("/time_history/sensor_acceleration", {nh, ns, n}, acc.data(), "m/s^2", "realisation x sensor x time");
     w.write("/time_history/contact_force", {nh, n}, force.data(), "N", "realisation x time");
     w.write("/time_history/ball_acceleration", {nh, n}, ball.data(), "m/s^2", "realisation x time");
-    w.write("/time_history/compression", {nh, n}, delta.data(), "m", "contact compression delta (D-1)");
+    w.write("/time_history/compression", {nh, n}, delta.data(), "m", "contact compression delta = w_beam + h - w_ball (> 0: contact)");
     w.make_scale("/time_history/time", "time");
     w.attach_scale("/time_history/sensor_acceleration", "/time_history/time", 2);
     for (const char* d : {"/time_history/contact_force", "/time_history/ball_acceleration", "/time_history/compression"})

@@ -140,17 +140,9 @@ class RollingPipe final : public Scene {
     x_hi_ = distance_ + radius_ + 0.02 * distance_ + 0.01;
     if (line_) {
       dx_ = s.real("roughness.spacing");
-      texture::LineTextureSpec ls;
-      ls.spacing = dx_;
-      ls.samples = static_cast<std::size_t>(std::ceil((x_hi_ - x_lo_) / dx_)) + 1;
-      if (ls.samples > (1u << 24)) s.refuse("roughness.spacing", "gives more than 2^24 samples over the rolled strip");
-      ls.amplitudes = texture_io::study_amplitudes(s);
-      ls.allow_truncation = true;
-      try {
-        lines_ = std::make_unique<texture::LineTextureGenerator>(psd_, ls);
-      } catch (const std::exception& e) {
-        throw config_error(s.where("roughness.spacing") + ": " + e.what());
-      }
+      const std::size_t samples = static_cast<std::size_t>(std::ceil((x_hi_ - x_lo_) / dx_)) + 1;
+      if (samples > (1u << 24)) s.refuse("roughness.spacing", "gives more than 2^24 samples over the rolled strip");
+      lines_ = texture_io::study_line_generator(s, psd_, dx_, samples, "roughness.spacing");
     } else {
       surfaces_ = std::make_unique<texture_io::SurfaceGenerator>(texture_io::study_surface_generator(s, psd_));
       dx_ = s.real("surface.spacing");

@@ -185,6 +185,21 @@ spectral::Amplitudes study_amplitudes(const Study& s) {
   return s.text("texture.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
 }
 
+std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study& s, const texture::Psd& psd, double spacing,
+                                                                    std::size_t samples, const std::string& key,
+                                                                    bool truncate) {
+  texture::LineTextureSpec ls;
+  ls.spacing = spacing;
+  ls.samples = samples;
+  ls.amplitudes = study_amplitudes(s);
+  ls.allow_truncation = truncate;
+  try {
+    return std::make_unique<texture::LineTextureGenerator>(psd, ls);
+  } catch (const std::exception& e) {
+    throw config_error(s.where(key) + ": " + e.what());
+  }
+}
+
 std::vector<std::string> profile_files(const Study& s) {
   std::vector<std::string> out;
   if (!s.has("texture.source") || s.text("texture.source") != "profiles") return out;

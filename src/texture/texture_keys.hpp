@@ -28,6 +28,13 @@ std::vector<study::KeySpec> surface_keys();
 texture::Psd study_psd(const study::Study& s);
 spectral::Amplitudes study_amplitudes(const study::Study& s);
 
+// Line-texture generator of `samples` samples at `spacing` from the PSD and the study's [texture]
+// amplitudes; truncate: harmonics above pi/spacing are dropped instead of refused. Errors of the
+// generator are reported at the study key `key` (the one that set the spacing).
+std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study::Study& s, const texture::Psd& psd,
+                                                                    double spacing, std::size_t samples,
+                                                                    const std::string& key, bool truncate = true);
+
 // The measured profile files of [texture] profiles (empty for other sources or scenes without [texture]).
 std::vector<std::string> profile_files(const study::Study& s);
 

@@ -1,0 +1,173 @@
+#include "kernels/beam/linear_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+
+#include "kernels/beam/contact_patch_filter.hpp"
+#include "kernels/beam/linear_response.hpp"
+#include "kernels/spectral/confidence.hpp"
+#include "kernels/spectral/welch_expectation.hpp"
+
+namespace rollspec::beam {
+
+double catmull_rom_gain(double tau, double theta) {
+  // weights of y_{i-1}, y_i, y_{i+1}, y_{i+2} at fraction tau (Hermite basis, B13)
+  const double t2 = tau * tau, t3 = t2 * tau;
+  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + tau, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+  const double c[4] = {-0.5 * h10, h00 - 0.5 * h11, h01 + 0.5 * h10, 0.5 * h11};
+  std::complex<double> g = 0.0;
+  for (int n = 0; n < 4; ++n) g += c[n] * std::polar(1.0, static_cast<double>(n - 1) * theta);
+  return std::norm(g);
+}
+
+std::vector<double> reference_excitation(const ReferenceExcitation& e, const std::vector<double>& fine) {
+  const double v = e.speed, dx = e.spacing, k_nyq = M_PI / dx;
+  // Offset of the integration steps from the F0 samples (the same at every step when the samples
+  // are one per step, the default); otherwise F0 is read at every fraction: mean gain over tau.
+  const double dt_f0 = dx / v;
+  const bool one_per_step = std::abs(dt_f0 / e.step - 1.0) < 1e-9;
+  double tau = 0.0;
+  if (one_per_step) {
+    const double first = std::floor(e.x_start / dx);
+    tau = (e.x_start - first * dx) / dx;
+    tau -= std::floor(tau);
+  }
+  std::vector<double> exc(fine.size(), 0.0);
+  for (std::size_t i = 1; i < fine.size(); ++i) {
+    if (e.blocked_force) {
+      exc[i] = e.time_psd(fine[i]);  // synthesised at the step, up to its Nyquist frequency
+      continue;
+    }
+    const double k = 2.0 * M_PI * fine[i] / v;
+    if (k > k_nyq) continue;  // harmonics above pi/dx are not synthesised
+    const double patch = contact_patch_transfer(k, e.patch_half_width, dx);  // (B35a)
+    const double theta = 2.0 * M_PI * fine[i] * dt_f0;
+    double hold = 0.0;
+    if (one_per_step) {
+      hold = catmull_rom_gain(tau, theta);
+    } else {
+      for (int j = 0; j < 16; ++j) hold += catmull_rom_gain((j + 0.5) / 16.0, theta) / 16.0;
+    }
+    exc[i] = e.k0 * e.k0 * e.time_psd(fine[i]) * patch * patch * hold;
+  }
+  return exc;
+}
+
+PositionBlocks welch_position_blocks(const spectral::WelchPlan& plan, std::size_t n, std::size_t skip, double x_start,
+                                     double v, double fs, std::size_t max_blocks) {
+  // sample i of the analysed part weighs sum_segments w^2(i - segment start); the samples after
+  // the last segment weigh nothing
+  const auto tw = spectral::welch_time_weights(plan, n);
+  const std::size_t blocks = std::min<std::size_t>(n, max_blocks), per = (n + blocks - 1) / blocks;
+  PositionBlocks out;
+  for (std::size_t b0 = 0; b0 < n; b0 += per) {
+    const std::size_t b1 = std::min(n, b0 + per);
+    double sw = 0.0, sx = 0.0;
+    for (std::size_t i = b0; i < b1; ++i) {
+      const double x = x_start + v * static_cast<double>(skip + i) / fs;
+      sw += tw[i];
+      sx += tw[i] * x;
+    }
+    out.edges.push_back(b0);
+    out.position.push_back(sw > 0.0 ? sx / sw : x_start + v * static_cast<double>(skip + (b0 + b1) / 2) / fs);
+    out.weight.push_back(sw);
+  }
+  out.edges.push_back(n);
+  return out;
+}
+
+std::size_t linear_reference_steps(const LinearReferenceInput& in) {
+  return 1 + in.sensors.size() + (in.sensor_mean ? 1 : 0) + in.positions.count();
+}
+
+LinearReference linear_reference(const LinearReferenceInput& in, const std::function<void()>& step) {
+  if (!in.beam || !in.welch) throw std::invalid_argument("linear_reference: no beam or Welch plan");
+  auto done = [&] {
+    if (step) step();
+  };
+  const spectral::WelchPlan& welch = *in.welch;
+  const ReferenceExcitation& ex = in.excitation;
+  const std::size_t refine = in.refine, nf = welch.n_freq(), half = refine * (nf - 1);
+  const double fs = in.sample_rate;
+  const auto aliases = static_cast<std::size_t>(std::ceil(0.5 / ex.step / (0.5 * fs) - 1e-9));
+  const std::size_t nfine = half * aliases + 1;
+  const double dfine = welch.frequency_step() / static_cast<double>(refine);
+  std::vector<double> fine(nfine);
+  for (std::size_t i = 0; i < nfine; ++i) fine[i] = dfine * static_cast<double>(i);
+  const std::vector<double> exc = reference_excitation(ex, fine);
+  const PositionBlocks& pos = in.positions;
+  const std::vector<std::size_t>& edges = pos.edges;
+  const std::size_t n = edges.back();
+
+  const auto lr = linear_response_psd(*in.beam, in.ball_mass, ex.k0, in.damping, pos.position, in.sensors, fine, exc,
+                                      Excitation::blocked_force, pos.weight);
+  done();
+  std::vector<std::vector<double>> rows_fine = lr.sensor_psd;
+  if (in.sensor_mean) {
+    std::vector<double> m(nfine, 0.0);
+    for (const auto& row : lr.sensor_psd)
+      for (std::size_t k = 0; k < nfine; ++k) m[k] += row[k] / static_cast<double>(lr.sensor_psd.size());
+    rows_fine.push_back(m);
+  }
+  LinearReference out;
+  out.rows = rows_fine.size();
+  out.bins = nf;
+  for (const auto& row : rows_fine) {
+    const auto e = spectral::welch_expectation(welch, row, refine);
+    out.psd.insert(out.psd.end(), e.begin(), e.end());
+    done();
+    for (std::size_t k = 0; k < nf; ++k) out.raw.push_back(row[k * refine]);
+  }
+  // Degrees of freedom of the ensemble mean per bin (B34b): the record is not stationary (the
+  // response at a bin rises and falls with the ball's position, e.g. with phi_n(xi)^2 at a
+  // resonance), so a Welch estimate holds fewer dof than the stationary D-16 value; the sensors
+  // of one roll are correlated, so their mean holds fewer than n_sensors times one sensor's.
+  // Cross-spectra per position block, smoothed by the Welch kernel truncated at +-4 bins.
+  const std::size_t ns = in.sensors.size(), pairs = ns * (ns + 1) / 2, reach = 4 * refine;
+  const auto kern = spectral::welch_kernel(welch, refine);
+  const std::size_t nk = kern.size();
+  const std::vector<double> band(fine.begin(), fine.begin() + static_cast<std::ptrdiff_t>(half + 1));
+  std::vector<std::complex<double>> cross((edges.size() - 1) * pairs * nf, 0.0);
+  for (std::size_t p = 0; p + 1 < edges.size(); ++p) {
+    done();
+    if (pos.weight[p] == 0.0) continue;  // no segment sees this block
+    const auto H = linear_response_transfer(*in.beam, in.ball_mass, ex.k0, in.damping, pos.position[p], in.sensors, band,
+                                            Excitation::blocked_force);
+    for (std::size_t k = 0; k < nf; ++k) {
+      const std::size_t c = k * refine, j0 = c > reach ? c - reach : 0, j1 = std::min(half, c + reach);
+      double norm = 0.0;
+      for (std::size_t j = j0; j <= j1; ++j) norm += kern[(c + nk - j) % nk];
+      std::size_t q = 0;
+      for (std::size_t s1 = 0; s1 < ns; ++s1)
+        for (std::size_t s2 = s1; s2 < ns; ++s2, ++q) {
+          std::complex<double> acc = 0.0;
+          for (std::size_t j = j0; j <= j1; ++j) acc += kern[(c + nk - j) % nk] * exc[j] * H[s1][j] * std::conj(H[s2][j]);
+          cross[(p * pairs + q) * nf + k] = acc / norm;
+        }
+    }
+  }
+  for (std::size_t s = 0; s < ns; ++s) {
+    std::vector<std::complex<double>> own((edges.size() - 1) * nf);
+    const std::size_t q = s * ns - s * (s - 1) / 2;  // the (s, s) pair
+    for (std::size_t p = 0; p + 1 < edges.size(); ++p)
+      for (std::size_t k = 0; k < nf; ++k) own[p * nf + k] = cross[(p * pairs + q) * nf + k];
+    const auto d = spectral::welch_block_dof(welch, n, edges, 1, nf, own);
+    for (double v1 : d) out.dof.push_back(in.realisations * v1);
+  }
+  if (in.sensor_mean) {
+    const auto d = spectral::welch_block_dof(welch, n, edges, ns, nf, cross);
+    for (double v1 : d) out.dof.push_back(in.realisations * v1);
+  }
+  out.mean_lower.resize(out.psd.size());
+  out.mean_upper.resize(out.psd.size());
+  for (std::size_t i = 0; i < out.psd.size(); ++i) {
+    const auto fi = spectral::chi_square_interval(std::max(out.dof[i], 1.0), in.confidence);
+    out.mean_lower[i] = out.psd[i] / fi.upper;
+    out.mean_upper[i] = out.psd[i] / fi.lower;
+  }
+  return out;
+}
+
+}  // namespace rollspec::beam

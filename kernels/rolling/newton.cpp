@@ -1,0 +1,92 @@
+#include "kernels/rolling/newton.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace rollspec::rolling {
+
+using Eigen::VectorXd;
+
+NewtonDriver::NewtonDriver(const std::vector<int>& eq, int neq) : eq_(eq), neq_(neq) {
+  sink_.eq = &eq_;
+  sink_.neq = neq_;
+}
+
+bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, VectorXd& q, VectorXd& R,
+                         StepReport& rep) {
+  VectorXd rf(neq_), dq;
+  rep.residual_norms.clear();
+  double last = std::numeric_limits<double>::infinity();
+  VectorXd q_acc = q;
+  double G0 = 0.0, step = 1.0, best_rn = std::numeric_limits<double>::infinity(), best_step = 1.0;
+  int nback = 0, newton = 0;  // newton: Newton directions (line-search trials not counted)
+  bool forced = false;
+  for (int it = 0;; ++it) {
+    sink_.begin();
+    bool usable = assemble(q, R, &sink_);
+    sink_.finish();
+    if (sink_.mismatch) {  // pattern changed (should not happen): record it again
+      sink_.recording = true;
+      sink_.begin();
+      usable = assemble(q, R, &sink_);
+      sink_.finish();
+    }
+    if (!usable) return false;
+    for (std::size_t i = 0; i < eq_.size(); ++i)
+      if (eq_[i] >= 0) rf(eq_[i]) = R(static_cast<Eigen::Index>(i));
+    const double rn = rf.norm();
+    rep.residual_norms.push_back(rn);
+    rep.iterations = it;
+    // Backtracking line search on G(s) = dq . R(q_acc + s dq) (README R-42): a full
+    // Newton step that overshoots (|G(1)| > 0.8 |G(0)|, e.g. across a stick/slip kink of the
+    // friction law) is halved, up to max_line_search times; if no trial qualifies, the
+    // trial with the smallest residual is taken.
+    if (newton > 0 && opt.max_line_search > 0 && !forced) {
+      const double G = dq.dot(rf);
+      const bool bad = !std::isfinite(rn) || std::abs(G) > 0.8 * std::abs(G0);
+      if (std::isfinite(rn) && rn < best_rn) {
+        best_rn = rn;
+        best_step = step;
+      }
+      if (bad && (nback < opt.max_line_search || best_step != step)) {
+        if (nback < opt.max_line_search) {
+          ++nback;
+          step *= 0.5;
+        } else {
+          step = best_step;  // exhausted: go back to the best trial and accept it
+          forced = true;
+        }
+        for (std::size_t i = 0; i < eq_.size(); ++i)
+          if (eq_[i] >= 0) q(static_cast<Eigen::Index>(i)) = q_acc(static_cast<Eigen::Index>(i)) + step * dq(eq_[i]);
+        last = step * dq.lpNorm<Eigen::Infinity>();
+        continue;
+      }
+    }
+    forced = false;
+    if (!std::isfinite(rn)) return false;
+    if (rn <= opt.force_tol || (newton > 0 && last <= opt.disp_tol)) break;
+    if (newton >= opt.max_iterations) return false;
+    ++newton;
+    if (sink_.new_pattern) {
+      lu_.analyzePattern(sink_.A);  // once (again only if the pattern ever changes)
+      sink_.new_pattern = false;
+      ++analyses_;
+    }
+    lu_.factorize(sink_.A);
+    if (lu_.info() != Eigen::Success) return false;
+    dq = lu_.solve(-rf);
+    G0 = dq.dot(rf);
+    q_acc = q;
+    step = 1.0;
+    nback = 0;
+    best_rn = std::numeric_limits<double>::infinity();
+    best_step = 1.0;
+    for (std::size_t i = 0; i < eq_.size(); ++i)
+      if (eq_[i] >= 0) q(static_cast<Eigen::Index>(i)) += dq(eq_[i]);
+    last = dq.lpNorm<Eigen::Infinity>();
+    if (!std::isfinite(last)) return false;
+  }
+  return true;
+}
+
+}  // namespace rollspec::rolling

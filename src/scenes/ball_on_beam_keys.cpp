@@ -1,0 +1,114 @@
+// Study keys of scene `ball-on-beam` and the modal beam they describe (ball_on_beam.hpp).
+#include <exception>
+#include <limits>
+#include <string>
+
+#include "kernels/beam/modal_beam.hpp"
+#include "src/error.hpp"
+#include "src/scenes/ball_on_beam.hpp"
+#include "src/stiffness/blocked_force_table.hpp"
+#include "src/stiffness/stiffness_keys.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+
+namespace {
+const double inf = std::numeric_limits<double>::infinity();
+}  // namespace
+
+std::vector<KeySpec> ball_on_beam_keys() {
+  std::vector<KeySpec> k = {
+      choice_key("beam", "support", "boundary conditions", std::string("clamped-clamped"),
+                 {"clamped-clamped", "simply-supported"}),
+      real_key("beam", "length", "m", "physical span l between the supports", std::string("0.4"), 0.0, inf, false),
+      real_key("beam", "effective_length", "m", "modal length l_eff >= l (clamp rotation, seed 002: l + 30 mm); 0: l",
+               std::string("0"), 0.0, inf),
+      real_key("beam", "width", "m", "section width", std::string("0.05"), 0.0, inf, false),
+      real_key("beam", "thickness", "m", "section thickness (bending direction)", std::string("0.0068"), 0.0, inf, false),
+      real_key("beam", "youngs_modulus", "Pa", "Young's modulus E", std::string("210e9"), 0.0, inf, false),
+      real_key("beam", "poisson", "-", "Poisson's ratio (contact modulus)", std::string("0.3"), -1.0, 0.5, false, false),
+      real_key("beam", "density", "kg/m^3", "density rho", std::string("7850"), 0.0, inf, false),
+      integer_key("beam", "modes", "number of modes (0: all up to max_frequency)", std::string("0"), 0, 5000),
+      real_key("beam", "max_frequency", "Hz", "highest modal frequency kept when modes = 0", std::string("20000"), 0.0, inf),
+      real_key("beam", "loss_factor", "-", "modal loss factor eta (zeta = eta/2)", std::string("0.01"), 0.0, 2.0),
+      bool_key("beam", "static_correction", "residual flexibility of the truncated modes", std::string("true")),
+      real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
+      real_key("ball", "density", "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", std::string("7850"), 0.0, inf, false),
+      real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
+      real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
+      real_key("ball", "speed", "m/s", "rolling speed v", std::string("1"), 0.0, inf, false),
+      real_key("ball", "start", "m", "ball position where the record starts", std::string("0.05"), 0.0, inf),
+      real_key("ball", "end", "m", "ball position where the record ends", std::string("0.35"), 0.0, inf),
+      real_key("ball", "gravity", "m/s^2", "gravitational acceleration", std::string("9.81"), 0.0, inf),
+      choice_key("contact", "law",
+                 "contact law: hertz (smooth Hertz P(delta)), table (rough-surface P(delta) from the stiffness stage), "
+                 "literal (seed 001 Eq. 7: k_c(delta) delta from the same table) or linearised (seed 002: blocked "
+                 "force F0 and contact stiffness k0)",
+                 std::string("hertz"), {"hertz", "table", "literal", "linearised"}),
+      real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"), 0.0, inf),
+      choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
+                 std::string("damping_only"), {"damping_only", "zero"}),
+      real_key("contact", "k0", "N/m", "linearised contact stiffness k0", std::string("6.8e6"), 0.0, inf, false),
+      choice_key("contact", "blocked_force",
+                 "linearised law's F0(t): spring (W + k0 h_patch(v t), k0 from [contact]) or solver (the contact "
+                 "solver's blocked force along a rough strip, seed 002 §4.2: k0, d0 and the F0 PSD from a cached table)",
+                 std::string("spring"), {"spring", "solver"}),
+      bool_key("contact", "patch_filter", "average the roughness over the Hertz contact width at the static load",
+               std::string("true")),
+      real_key("roughness", "spacing", "m",
+               "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
+               "step, v / (sample_rate x substeps)",
+               std::string("0"), 0.0, inf),
+      real_key("signal", "sample_rate", "Hz", "output sample rate of accelerations and forces", std::string("25600"), 0.0,
+               inf, false),
+      integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"), 1,
+                  1000),
+      choice_key("signal", "hold",
+                 "modal force over a step: quadratic (order 3, default) or linear (order 2)",
+                 std::string("quadratic"), {"quadratic", "linear"}),
+      choice_key("signal", "integrator", "exact (exact modal step, implicit contact) or dopri5 (reference)",
+                 std::string("exact"), {"exact", "dopri5"}),
+      real_key("signal", "rtol", "-", "relative tolerance of the dopri5 reference", std::string("1e-8"), 1e-14, 1e-2),
+      text_key("sensors", "positions", "accelerometer positions along the beam, m, comma-separated", std::string("0.2")),
+      bool_key("sensors", "average", "add the mean PSD over sensors (seed 002 averages 5 sensors x 25 rolls)",
+               std::string("true")),
+      real_key("spectrum", "skip_start", "s",
+               "time at the start of each record left out of the PSDs (start-up of the random response)", std::string("0"),
+               0.0, inf),
+      integer_key("output", "time_histories", "store time histories of realisations 0..n-1", std::string("0"), 0, 1000),
+  };
+  for (auto& t : texture_io::psd_keys()) k.push_back(t);
+  for (auto& t : texture_io::surface_keys()) k.push_back(t);
+  for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
+  for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
+  return k;
+}
+
+beam::ModalBeam study_modal_beam(const Study& s) {
+  beam::BeamProperties p;
+  p.support = s.text("beam.support") == "clamped-clamped" ? beam::Support::clamped_clamped : beam::Support::simply_supported;
+  p.youngs_modulus = s.real("beam.youngs_modulus");
+  p.density = s.real("beam.density");
+  p.width = s.real("beam.width");
+  p.thickness = s.real("beam.thickness");
+  p.length = s.real("beam.length");
+  p.effective_length = s.real("beam.effective_length");
+  if (p.effective_length > 0.0 && p.effective_length < p.length)
+    s.refuse("beam.effective_length", "is shorter than [beam] length; allowed: 0 or >= length");
+  beam::ModeSelection sel;
+  sel.count = static_cast<int>(s.integer("beam.modes"));
+  sel.max_frequency = s.real("beam.max_frequency");
+  if (sel.count == 0 && sel.max_frequency <= 0.0) s.refuse("beam.max_frequency", "must be > 0 when [beam] modes = 0");
+  beam::ModalDamping d;
+  d.loss_factor = s.real("beam.loss_factor");
+  try {
+    return beam::ModalBeam(p, sel, d, s.boolean("beam.static_correction"));
+  } catch (const std::exception& e) {
+    throw config_error(s.where("beam.modes") + ": " + e.what());
+  }
+}
+
+}  // namespace rollspec::scenes
