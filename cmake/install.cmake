@@ -1,7 +1,7 @@
 # What `cmake --install BUILD --prefix P` puts where (GNUInstallDirs; included by the top-level
 # CMakeLists.txt after kernels/ and src/):
 #   P/bin/rollspec                                  src/CMakeLists.txt
-#   P/lib/librollspec_kernels.a                     kernels/CMakeLists.txt (EXPORT rollspecTargets)
+#   P/lib/librollspec_<area>.a (one per kernel area) kernels/CMakeLists.txt (EXPORT rollspecTargets)
 #   P/include/rollspec/kernels/<area>/*.hpp         kernels/CMakeLists.txt
 #   P/lib/cmake/rollspec/rollspecConfig.cmake, rollspecConfigVersion.cmake, rollspecTargets.cmake,
 #     rollspecFFTW3.cmake: find_package(rollspec) -> rollspec::kernels          here
