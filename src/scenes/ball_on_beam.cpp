@@ -91,16 +91,17 @@ class BallOnBeam final : public Scene {
     if (model_.traverse.x_end > l) s.refuse("ball.end", "lies beyond the span [0, length]");
     // Contact.
     beam::ContactLaw& law = model_.contact;
-    const std::string law_name = s.text("contact.law");
-    law_name_ = law_name;
-    blocked_solver_ = law_name == "linearised" && s.text("contact.blocked_force") == "solver";
-    if (blocked_solver_) study_ = &s;
-    linearised_ = law_name == "linearised";
-    uses_table_ = law_name == "table" || law_name == "literal";
-    law.kind = linearised_ ? beam::ContactLawKind::linearised
-               : law_name == "table" ? beam::ContactLawKind::table
-               : law_name == "literal" ? beam::ContactLawKind::literal_stiffness
-                                       : beam::ContactLawKind::hertz;
+    law_name_ = s.text("contact.law");
+    contact_model_ = law_name_ == "table"     ? ContactModel::table
+                     : law_name_ == "literal" ? ContactModel::literal
+                     : law_name_ == "hertz"   ? ContactModel::hertz
+                     : s.text("contact.blocked_force") == "solver" ? ContactModel::linearised_solver
+                                                                   : ContactModel::linearised_spring;
+    if (blocked_solver() || uses_table()) study_ = &s;
+    law.kind = linearised() ? beam::ContactLawKind::linearised
+               : contact_model_ == ContactModel::table   ? beam::ContactLawKind::table
+               : contact_model_ == ContactModel::literal ? beam::ContactLawKind::literal_stiffness
+                                                         : beam::ContactLawKind::hertz;
     law.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
                                                        s.real("beam.youngs_modulus"), s.real("beam.poisson"));
     law.radius = radius;
@@ -108,8 +109,8 @@ class BallOnBeam final : public Scene {
     law.damping = s.real("contact.damping");
     law.loss = s.text("contact.loss") == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
     const double weight = model_.ball.mass * model_.ball.gravity;
-    static_compression_ = linearised_ ? weight / law.k0 : std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
-    patch_half_width_ = s.boolean("contact.patch_filter") ? beam::hertz_half_width(radius, linearised_ ? std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0) : static_compression_) : 0.0;
+    static_compression_ = linearised() ? weight / law.k0 : std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
+    patch_half_width_ = s.boolean("contact.patch_filter") ? beam::hertz_half_width(radius, linearised() ? std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0) : static_compression_) : 0.0;
     // Roughness line over the whole span, so the patch filter and the traverse never run off it.
     // One roughness sample per integration step by default: the interpolation between samples then
     // low-passes the excitation only near the step's own Nyquist frequency.
@@ -119,13 +120,12 @@ class BallOnBeam final : public Scene {
     const std::size_t line_samples = static_cast<std::size_t>(std::floor(l / dx_)) + 1;
     if (line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
     lines_ = texture_io::study_line_generator(s, psd_, dx_, line_samples, "roughness.spacing");
-    if (!uses_table_ && !blocked_solver_)
-      check_contact_resolution(s, linearised_ ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * static_compression_));
+    if (!uses_table() && !blocked_solver())
+      check_contact_resolution(s, linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * static_compression_));
     // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
     step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
     step_options_.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
     check_step_coefficients(s);
-    if (uses_table_) study_ = &s;
     samples_ = beam::output_samples(model_);
     skip_ = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * model_.sample_rate));
     if (skip_ >= samples_) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(samples_) + " samples)");
@@ -147,7 +147,7 @@ class BallOnBeam final : public Scene {
   void add_pipeline_stages(const Study& s) {
     add_stages({{"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + psd_.description + ")"}});
     std::unique_ptr<TableStage> table;
-    if (uses_table_) {
+    if (uses_table()) {
       const double radius = model_.contact.radius, e_star = model_.contact.effective_modulus;
       table = std::make_unique<TableStage>(
           "stiffness_table", stiffness::stiffness_cached_table(s, radius, e_star),
@@ -170,8 +170,8 @@ class BallOnBeam final : public Scene {
     if (table) add_stage(std::move(table));
     else
       add_stages({{"stiffness_table", StageStatus::skipped,
-                   linearised_ ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"}});
-    if (blocked_solver_) {
+                   linearised() ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"}});
+    if (blocked_solver()) {
       const double radius = model_.contact.radius, e_star = model_.contact.effective_modulus;
       const double weight = model_.ball.mass * model_.ball.gravity;
       add_stage(std::make_unique<TableStage>(
@@ -184,8 +184,8 @@ class BallOnBeam final : public Scene {
             use_blocked_force(static_cast<const stiffness::BlockedForceTable&>(b), status, quiet);
           }));
     } else {
-      add_stages({{"blocked_force", linearised_ ? StageStatus::run : StageStatus::skipped,
-                   linearised_ ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
+      add_stages({{"blocked_force", linearised() ? StageStatus::run : StageStatus::skipped,
+                   linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
                                : "only the linearised law uses F0"}});
     }
     add_stages({{"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
@@ -290,15 +290,15 @@ class BallOnBeam final : public Scene {
   // Simulates realisation `id` into ws.result (shared by the ensemble and the time-history output).
   void simulate(std::uint64_t id, Workspace& ws) const {
     const std::size_t nh = lines_->harmonics();
-    if (!blocked_solver_) {
+    if (!blocked_solver()) {
     rng::PhiloxStream(seed_, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
     rng::PhiloxStream(seed_, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
     lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data());
     }
-    beam::UniformSamples h{0.0, dx_, blocked_solver_ ? std::vector<double>() : ws.texture};
-    if (patch_half_width_ > 0.0 && !blocked_solver_) h = beam::contact_patch_average(h, patch_half_width_);
+    beam::UniformSamples h{0.0, dx_, blocked_solver() ? std::vector<double>() : ws.texture};
+    if (patch_half_width_ > 0.0 && !blocked_solver()) h = beam::contact_patch_average(h, patch_half_width_);
     beam::Realisation r;
-    if (blocked_solver_) {
+    if (blocked_solver()) {
       const std::size_t nh_f0 = f0_synth_->harmonics(), n = f0_synth_->samples();
       std::vector<double> up(nh_f0), ua(nh_f0);
       rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_phase).uniform_open(up.data(), nh_f0);
@@ -309,7 +309,7 @@ class BallOnBeam final : public Scene {
       f0_synth_->synthesise(f0_psd_.data(), f0_df_, spectral::Amplitudes::rayleigh, up.data(), ua.data(),
                             r.blocked_force.values.data());
       for (double& f : r.blocked_force.values) f += model_.ball.mass * model_.ball.gravity;
-    } else if (linearised_) {
+    } else if (linearised()) {
       // Blocked force of a linear contact spring: F0(t) = W + k0 h(x_start + v t) (D-11).
       const double v = model_.traverse.speed, x0 = model_.traverse.x_start, dt = dx_ / v;
       const auto first = static_cast<std::size_t>(std::floor(x0 / dx_));
@@ -371,8 +371,8 @@ class BallOnBeam final : public Scene {
     w.attribute("/contact", "static_compression", static_compression_);
     w.attribute("/contact", "patch_half_width", patch_half_width_);
     w.attribute("/contact", "effective_modulus", model_.contact.effective_modulus);
-    if (linearised_) w.attribute("/contact", "k0", model_.contact.k0);
-    if (blocked_solver_) {
+    if (linearised()) w.attribute("/contact", "k0", model_.contact.k0);
+    if (blocked_solver()) {
       w.attribute("/contact", "blocked_force_approach", blocked_.approach);
       w.attribute("/contact", "blocked_force_input_hash", blocked_.input_hash);
     }
@@ -393,7 +393,7 @@ class BallOnBeam final : public Scene {
     w.attribute("/ball", "mass", model_.ball.mass);
     w.attribute("/ball", "speed", model_.traverse.speed);
 
-    if (linearised_) write_linear_reference(w, e.frequency, e.sensors, K);
+    if (linearised()) write_linear_reference(w, e.frequency, e.sensors, K);
     if (time_histories_) write_time_histories(w, sums.only);
   }
 
@@ -411,12 +411,12 @@ class BallOnBeam final : public Scene {
     in.welch = welch_.get();
     in.sample_rate = model_.sample_rate;
     beam::ReferenceExcitation& ex = in.excitation;
-    if (blocked_solver_) {
+    if (blocked_solver()) {
       ex.time_psd = [this](double fi) { return blocked_force_time_psd(fi); };
     } else {
       ex.time_psd = texture::time_psd(psd_, model_.traverse.speed);
     }
-    ex.blocked_force = blocked_solver_;
+    ex.blocked_force = blocked_solver();
     ex.k0 = model_.contact.k0;
     ex.speed = model_.traverse.speed;
     ex.spacing = dx_;
@@ -488,7 +488,15 @@ class BallOnBeam final : public Scene {
   bool average_, dopri_;
   double rtol_, confidence_, band_min_, band_max_;
   std::size_t time_histories_;
-  bool linearised_ = false, uses_table_ = false, blocked_solver_ = false, quiet_ = false;
+  // One value for the contact law and the blocked force's source ([contact] law, blocked_force).
+  enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver };
+  ContactModel contact_model_ = ContactModel::hertz;
+  bool linearised() const {
+    return contact_model_ == ContactModel::linearised_spring || contact_model_ == ContactModel::linearised_solver;
+  }
+  bool uses_table() const { return contact_model_ == ContactModel::table || contact_model_ == ContactModel::literal; }
+  bool blocked_solver() const { return contact_model_ == ContactModel::linearised_solver; }
+  bool quiet_ = false;
   stiffness::BlockedForceTable blocked_;
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
   std::vector<double> f0_psd_;
