@@ -7,7 +7,7 @@ import scipy.io
 import scipy.io.wavfile
 import scipy.signal
 
-from conftest import EX_DATAERR, EX_NOINPUT, EX_USAGE, assert_refused, run
+from conftest import EX_DATAERR, EX_NOINPUT, EX_USAGE, assert_refused, oscillator_study, run
 
 G = 9.80665
 
@@ -223,6 +223,23 @@ def test_mat_v73(tmp_path):
     mat = tmp_path / "rec73.mat"
     write_mat73(mat, {"acc": x[:, 0], "pair": x[:, 1:], "fs": fs})
     assert psd([mat, "--segment", 1024], tmp_path, "mat73-psd.csv")[2] == want
+
+
+def test_compare_reads_a_semicolon_measured_psd_with_decimal_commas(tmp_path):
+    # The measured-PSD reader is the same: a spreadsheet export gives the same comparison, digit for digit.
+    res = tmp_path / "r.h5"
+    assert run(["run", oscillator_study(tmp_path, realisations=6), "--out", res, "--quiet"]).returncode == 0
+    f = np.linspace(0, 512, 2049)
+    p = 1e-4 / (1 + ((f - 40) / 4) ** 2)
+    plain, semi = tmp_path / "m.csv", tmp_path / "m-semi.csv"
+    plain.write_text("frequency_hz,psd\n" + "".join(f"{a:.17g},{b:.17g}\n" for a, b in zip(f, p)))
+    semi.write_text('"frequency_hz";"psd"\r\n' + "".join(f"{a:.17g};{b:.17g}\r\n".replace(".", ",") for a, b in zip(f, p)))
+    want = run(["compare", res, plain, "--format", "csv"])
+    assert want.returncode == 0, want.stderr
+    assert len(want.stdout.splitlines()) > 10
+    got = run(["compare", res, semi, "--format", "csv"])
+    assert got.returncode == 0, got.stderr
+    assert got.stdout == want.stdout.replace("m.csv", "m-semi.csv")  # the summary names the file
 
 
 def test_refusals(tmp_path):
