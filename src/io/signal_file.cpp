@@ -15,9 +15,14 @@ namespace rollspec::io {
 namespace {
 enum class Family { text, sound, mat };
 
+// Magic numbers checked far enough that a text header (say "RIFFLE;acc") is not taken for sound.
 Family by_content(const std::string& head) {
-  for (const char* magic : {"RIFF", "RIFX", "RF64", "FORM", "fLaC", "OggS", ".snd", "caff", "riff"})
-    if (head.compare(0, 4, magic) == 0) return Family::sound;
+  const auto at = [&](std::size_t pos, const char* magic) { return head.compare(pos, std::strlen(magic), magic) == 0; };
+  for (const char* riff : {"RIFF", "RIFX", "RF64"})
+    if (at(0, riff) && at(8, "WAVE")) return Family::sound;
+  if (at(0, "FORM") && (at(8, "AIFF") || at(8, "AIFC"))) return Family::sound;
+  for (const char* magic : {"fLaC", "OggS", ".snd", "caff", "riff."})
+    if (at(0, magic)) return Family::sound;
   if (head.compare(0, 6, "MATLAB") == 0) return Family::mat;  // v5 and v7.3 headers; v4 has none
   return Family::text;
 }
@@ -42,7 +47,7 @@ SignalTable read_signal(const std::string& path) {
   if (!in)
     throw missing_input("cannot open '" + path + "': " + (errno ? std::strerror(errno) : "no such file") +
                         "; expected a signal file (CSV/text, WAV/FLAC, .mat)");
-  char head[8] = {};
+  char head[12] = {};
   in.read(head, sizeof head);
   Family family = by_content(std::string(head, static_cast<std::size_t>(in.gcount())));
   if (family == Family::text) family = by_extension(path);

@@ -161,13 +161,18 @@ SignalTable read_mat_signal(const std::string& path) {
     const std::string why = not_numeric(v);
     const bool scalar = why.empty() && v.rows() * v.cols() == 1;
     const bool vector = why.empty() && !scalar && (v.rows() == 1 || v.cols() == 1);
-    if (is_rate_name(v.name)) {
-      if (!scalar)
-        throw data_error(path + ": variable '" + v.name + "' is named like a sample rate but is " +
-                         (why.empty() ? v.shape() : why) + "; allowed: a real numeric scalar in Hz");
+    // A variable named like a rate or a time that cannot be one is listed, not fatal: the file may
+    // still be read with --fs, and matio cannot rename variables.
+    if (is_rate_name(v.name) && !scalar) {
+      s.skipped.emplace_back(v.name, "named like a sample rate, but " + (why.empty() ? v.shape() : why) + ", not a scalar");
+    } else if (time_column_unit(v.name) != 0.0 && !vector) {
+      s.skipped.emplace_back(v.name, "named like a time vector, but " + (why.empty() ? v.shape() : why) + ", not a vector");
+    } else if (is_rate_name(v.name)) {
       const double fs = read_values(m.get(), s, v).front();
-      if (!(fs > 0.0))
-        throw data_error(path + ": variable '" + v.name + "' = " + number_text(fs) + "; allowed: a sample rate > 0 Hz");
+      if (!(fs > 0.0)) {
+        s.skipped.emplace_back(v.name, "named like a sample rate, but " + number_text(fs) + " Hz");
+        continue;
+      }
       if (s.sample_rate > 0.0 && std::fabs(fs - s.sample_rate) > kRateTolerance * s.sample_rate)
         throw data_error(path + ": variable '" + v.name + "' = " + rate_text(fs) + " Hz but variable '" + rate_var + "' = " +
                          rate_text(s.sample_rate) + " Hz; allowed: one sample rate");
@@ -175,9 +180,6 @@ SignalTable read_mat_signal(const std::string& path) {
       rate_var = v.name;
       s.rate_source = "variable '" + v.name + "'";
     } else if (time_column_unit(v.name) != 0.0) {
-      if (!vector)
-        throw data_error(path + ": variable '" + v.name + "' is named like a time vector but is " +
-                         (why.empty() ? v.shape() : why) + "; allowed: a real numeric vector of stamps");
       if (!s.time_column.empty())
         throw data_error(path + ": two time variables, '" + s.time_column + "' and '" + v.name + "'; allowed: at most one");
       s.time_column = v.name;

@@ -144,7 +144,8 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
   } else {
     throw usage_error(path + ": no sample rate in this " + s.format +
                       "; give --fs HZ, or a time column (t, time, time_s, Time (s), t [ms], ...)" +
-                      (s.format.rfind("MATLAB", 0) == 0 ? " or a scalar variable fs" : ""));
+                      (s.format.rfind("MATLAB", 0) == 0 ? " or a scalar variable fs" : "") +
+                      (s.skipped.empty() ? "" : "; not used: " + skipped_list(s)));
   }
 
   // Samples are scaled, not the PSD: the table then holds what it says, m/s².

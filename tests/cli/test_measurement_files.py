@@ -177,6 +177,14 @@ def test_mat_v5_vector_matrix_and_fs_match_csv(tmp_path):
     assert_refused(run(["psd", mat, "--column", "meta"]), EX_DATAERR, ["--column meta", "variable 'meta' is a struct"])
     assert_refused(run(["psd", mat, "--column", "spectrum"]), EX_DATAERR, ["variable 'spectrum' is complex"])
     assert_refused(run(["psd", mat, "--fs", 4000]), EX_USAGE, ["--fs 4000 Hz disagrees with", "4096 Hz from variable 'fs'"])
+    # what cannot be a rate or a channel is listed, not fatal: --fs reads the rest
+    odd = tmp_path / "odd.mat"
+    scipy.io.savemat(odd, {"acc": x[:, 0], "fs": np.array([[1.0, 2.0, 3.0]]), "wide": x[:, 1:].T})
+    assert_refused(run(["psd", odd, "--segment", 1024]), EX_USAGE,
+                   ["odd.mat: no sample rate", "or a scalar variable fs", "fs (named like a sample rate, but 1x3, not a scalar)",
+                    "wide (a 2x8192 matrix, wider than tall", "probably transposed"])
+    header, data, _ = psd([odd, "--segment", 1024, "--fs", fs], tmp_path, "odd.csv")
+    assert header == ["frequency_hz", "acc"]
     # a time vector instead of fs; single and int16 classes; channels of another length are an error unless left out
     t = np.arange(n) / fs
     mat2 = tmp_path / "rec2.mat"
@@ -306,3 +314,11 @@ def test_refusals(tmp_path):
     # missing files of every kind
     for name in ("absent.csv", "absent.wav", "absent.mat"):
         assert_refused(run(["psd", tmp_path / name, "--fs", 100]), EX_NOINPUT, [name])
+
+
+def test_text_that_starts_like_a_sound_file_is_read_as_text(tmp_path):
+    # Content decides only on a full magic number (RIFF....WAVE, FORM....AIFF, fLaC, ...), not 4 letters.
+    sig = tmp_path / "riffle.csv"
+    sig.write_text("RIFFLE_WAVE,FORM\n" + "".join(f"{np.sin(i)},{np.cos(i)}\n" for i in range(64)))
+    header, data, _ = psd([sig, "--fs", 64, "--segment", 16], tmp_path)
+    assert header == ["frequency_hz", "RIFFLE_WAVE", "FORM"] and data.shape == (9, 3)
