@@ -11,33 +11,81 @@ BANDS = ("nominal_frequency", "lower_frequency", "upper_frequency", "level_db", 
          "log_std")
 
 
-def read_measurement(path, column=None):
-    """(frequency, psd) from a CSV with a header; `column` names the PSD column (default `psd`), so
-    the output of `rollspec psd` is read directly."""
-    column = column or "psd"
+def _cells(line, delimiter):
+    """Cells of a line, trimmed, one pair of enclosing double quotes removed (spreadsheet exports)."""
+    out = []
+    for c in line.split(delimiter):
+        c = c.strip(" \t\r")
+        if len(c) >= 2 and c[0] == c[-1] == '"':
+            c = c[1:-1].strip(" \t\r")
+        out.append(c)
+    return out
+
+
+def _read_table(path):
+    """(header, values[row, column], file line of each row) by the rule of rollspec's CSV reader (src/io/csv_table.hpp): the
+    delimiter from the header line (tab, else ';', else ','); with ';' a decimal comma, one decimal mark
+    per file; blank lines and '#' lines skipped."""
     try:
         with open(path, encoding="utf-8-sig") as fh:
-            header = [c.strip() for c in fh.readline().strip().split(",")]
+            lines = fh.read().split("\n")
     except FileNotFoundError:
         raise PostError(f"{path}: no such file", EX_NOINPUT) from None
     except (UnicodeDecodeError, IsADirectoryError) as e:
         raise PostError(f"{path}: not a CSV text file ({e})", EX_DATAERR) from None
+    header, delimiter, mark, rows, numbers = None, ",", None, [], []
+    for n, line in enumerate(lines, 1):
+        s = line.strip(" \r")
+        if not s.strip() or s.startswith("#"):
+            continue
+        if header is None:
+            delimiter = "\t" if "\t" in s else ";" if ";" in s else ","
+            header = _cells(s, delimiter)
+            continue
+        cells = _cells(s, delimiter)
+        if len(cells) != len(header):
+            raise PostError(f"{path}:{n}: {len(cells)} values, but the header names {len(header)} columns; "
+                            "allowed: one value per column", EX_DATAERR)
+        row = []
+        for name, c in zip(header, cells):
+            text = c
+            if delimiter == ";":
+                if "," in c and "." in c:
+                    raise PostError(f"{path}:{n}: column {name!r} value {c!r} holds both ',' and '.'; allowed: one "
+                                    "decimal mark and no thousands separator", EX_DATAERR)
+                used = "," if "," in c else "." if "." in c else None
+                if used and mark and used != mark[0]:
+                    raise PostError(f"{path}:{n}: column {name!r} value {c!r} has another decimal mark than line "
+                                    f"{mark[1]}; allowed: one decimal mark in a file", EX_DATAERR)
+                if used and not mark:
+                    mark = (used, n)
+                text = c.replace(",", ".", 1)
+            try:
+                row.append(float(text))
+            except ValueError:
+                raise PostError(f"{path}:{n}: column {name!r} value {c!r} is not a number", EX_DATAERR) from None
+        rows.append(row)
+        numbers.append(n)
+    if header is None or not rows:
+        raise PostError(f"{path}: expected a header and rows of numbers under it", EX_DATAERR)
+    return header, np.array(rows, dtype=float), numbers
+
+
+def read_measurement(path, column=None):
+    """(frequency, psd) from a CSV with a header; `column` names the PSD column (default `psd`), so
+    the output of `rollspec psd` is read directly. Delimiters and decimal commas as `rollspec compare`."""
+    column = column or "psd"
+    header, data, numbers = _read_table(path)
     for name in ("frequency_hz", column):
         if name not in header:
             raise PostError(f"{path}:1: no column {name!r}; columns found: {', '.join(header)}", EX_DATAERR)
-    try:
-        data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2, encoding="utf-8-sig")
-    except ValueError as e:
-        raise PostError(f"{path}: not numeric CSV ({e})", EX_DATAERR) from None
-    if data.shape[0] == 0 or data.shape[1] != len(header):
-        raise PostError(f"{path}: expected rows of {len(header)} numbers under the header", EX_DATAERR)
     f, p = data[:, header.index("frequency_hz")], data[:, header.index(column)]
     if not (np.all(np.isfinite(f)) and np.all(np.isfinite(p))):
         raise PostError(f"{path}: values must be finite numbers", EX_DATAERR)
     if np.any(np.diff(f) <= 0):
         raise PostError(f"{path}: frequency_hz must increase strictly", EX_DATAERR)
     if np.any(p < 0):
-        raise PostError(f"{path}:{np.argmax(p < 0) + 2}: {column} value {p[p < 0][0]:g} is negative; allowed: >= 0",
+        raise PostError(f"{path}:{numbers[np.argmax(p < 0)]}: {column} value {p[p < 0][0]:g} is negative; allowed: >= 0",
                         EX_DATAERR)
     return f, p
 

@@ -76,3 +76,24 @@ def test_report_and_plot_state_the_same_figures(beam, tmp_path):
     r = post("report", beam["model"], "--measurement", beam["csv"], "--column", "level", "--measured-averages", 0,
              "--out", out)
     assert r.returncode == 64 and "--measured-averages 0" in r.stderr
+
+
+def test_a_semicolon_export_with_decimal_commas_reads_as_compare_reads_it(beam, tmp_path):
+    # The rule of rollspec's CSV reader: delimiter from the header, decimal comma with ';', quotes, CRLF.
+    from rollspec_post.measurement import read_measurement
+    from rollspec_post.result_file import PostError
+    f, p = read_measurement(beam["csv"], "level")
+    semi = tmp_path / "m-semi.csv"
+    semi.write_text('"frequency_hz";"level"\r\n' + "".join(f"{a:.17g};{b:.17g}\r\n".replace(".", ",") for a, b in zip(f, p)))
+    f2, p2 = read_measurement(semi, "level")
+    assert f2.tobytes() == f.tobytes() and p2.tobytes() == p.tobytes()
+    tab = tmp_path / "m-tab.csv"
+    tab.write_text("frequency_hz\tlevel\n" + "".join(f"{a:.17g}\t{b:.17g}\n" for a, b in zip(f, p)))
+    assert read_measurement(tab, "level")[1].tobytes() == p.tobytes()
+    mixed = tmp_path / "m-mixed.csv"
+    mixed.write_text("frequency_hz;level\n10;0,5\n20,5;0.25\n")
+    with pytest.raises(PostError, match=r"m-mixed.csv:3: column 'level' value '0.25' has another decimal mark than line 2"):
+        read_measurement(mixed, "level")
+    model = json.loads(subprocess.run([BIN, "compare", beam["model"], semi, "--column", "level", "--format", "json"],
+                                      capture_output=True, text=True, check=True).stdout)
+    assert model["rms_db_error"] == engine(beam)["rms_db_error"]

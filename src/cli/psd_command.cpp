@@ -1,4 +1,4 @@
-// rollspec psd: Welch PSD (D-15) of a measured time series, CSV in, CSV out.
+// rollspec psd: Welch PSD (D-15) of a measured time series (CSV/text, sound file or .mat; src/io/signal_file.hpp), CSV out.
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
-#include "src/io/csv_table.hpp"
+#include "src/io/signal_file.hpp"
 #include "src/io/output_target.hpp"
 #include "src/io/temp_files.hpp"
 
@@ -23,18 +23,43 @@ namespace rollspec::cli {
 
 int psd_command(const Args& args) {
   const std::string usage =
-      "usage: rollspec psd SIGNAL.csv --fs HZ [--segment N] [--overlap F] [--window hann|rect] [--out FILE.csv]\n"
+      "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit m/s2|g] [--scale X] [--segment N]\n"
+      "                    [--overlap F] [--window hann|rect] [--out FILE.csv]\n"
       "\n"
-      "One-sided Welch PSD of each column of SIGNAL.csv (a header line naming the channels, then one\n"
-      "sample per row). Segments are mean-detrended and windowed; density scaling (unit^2/Hz).\n"
-      "Output CSV: frequency_hz,<channel>,... (to stdout without --out).";
+      "One-sided Welch PSD of each channel of a measured signal, in (m/s^2)^2/Hz: segments mean-detrended and\n"
+      "windowed, density scaling. Output CSV: frequency_hz,<channel>,... (to stdout without --out; a ',', ';',\n"
+      "tab or '\"' in a channel name is written as '_').\n"
+      "\n"
+      "SIGNAL is read by its content, else by its extension:\n"
+      "  CSV/text  a header line naming the columns, then one sample per row. Delimiter ',', ';' or tab, from\n"
+      "            the header line (tab, else ';', else ','); with ';' a decimal comma is accepted (0,125;1,5),\n"
+      "            one decimal mark per file. A column named t or time, alone or with the unit s or ms written\n"
+      "            _s, [s], (s) or /s (time_s, Time (s), t [ms]; case and spaces ignored) is the time column:\n"
+      "            never a channel, it gives the sample rate. Its stamps must increase, each within 0.1 sample\n"
+      "            interval of the uniform grid through the first and last stamps.\n"
+      "  WAV, FLAC, AIFF, AU, CAF, Ogg (libsndfile)  rate from the header, channels channel_1..channel_N.\n"
+      "            Integer PCM is read as a fraction of full scale (within +-1: a 16-bit sample / 32768),\n"
+      "            float data as stored.\n"
+      "  .mat      MATLAB v4, v5 (scipy.io.savemat) or v7.3: each real numeric vector is a channel named by\n"
+      "            its variable; an N x C matrix M holds channels M_1..M_C (one per column, a sample per row;\n"
+      "            --column M picks them all); a scalar fs (fs_hz, sample_rate, sampling_rate) or a time\n"
+      "            vector t, time, time_s, ... gives the rate. Complex, logical, char, struct and cell\n"
+      "            variables are not channels.\n"
+      "--fs is needed when the file gives no rate; when it does, --fs must agree with it within 0.1 %.\n"
+      "--unit says what the values are in after --scale: m/s2 (default) or g (times 9.80665 m/s^2 per g).\n"
+      "--scale X multiplies every value: the physical value (in --unit) of one file unit, or for integer PCM\n"
+      "of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).";
   po::options_description opts("options");
   std::string input, out, window = "hann";
-  double fs = 0.0, overlap = 0.5;
+  double overlap = 0.5;
+  io::SignalRequest request;
   long long segment = 1024;
-  opts.add_options()("signal", po::value(&input)->required(), "input CSV")(
-      "fs", po::value(&fs)->required(), "sample rate (Hz)")("segment", po::value(&segment)->default_value(1024),
-                                                           "segment length (samples)")(
+  opts.add_options()("signal", po::value(&input)->required(), "input signal (CSV/text, WAV/FLAC/..., .mat)")(
+      "fs", po::value(&request.fs), "sample rate (Hz); default: from the file")(
+      "column", po::value(&request.columns)->composing(), "channel(s) to analyse, repeatable or comma-separated (default: all)")(
+      "unit", po::value(&request.unit)->default_value("m/s2"), "unit of the values: m/s2 or g")(
+      "scale", po::value(&request.scale)->default_value(1.0), "physical units per file unit, or per full scale (integer PCM)")(
+      "segment", po::value(&segment)->default_value(1024), "segment length (samples)")(
       "overlap", po::value(&overlap)->default_value(0.5), "overlap as a fraction of the segment, in [0, 0.95]")(
       "window", po::value(&window)->default_value("hann"), "hann or rect")("out,o", po::value(&out), "output CSV")(
       "force", "replace an existing --out file even if it is not a PSD written by rollspec psd");
@@ -42,7 +67,8 @@ int psd_command(const Args& args) {
   pos.add("signal", 1);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (!(fs > 0.0) || !std::isfinite(fs)) throw usage_error("--fs " + std::to_string(fs) + ": allowed: a finite number > 0 (Hz)");
+  if (vm.count("fs") && (!(request.fs > 0.0) || !std::isfinite(request.fs)))
+    throw usage_error("--fs " + std::to_string(request.fs) + ": allowed: a finite number > 0 (Hz)");
   if (segment < 4) throw usage_error("--segment " + std::to_string(segment) + ": allowed: a whole number >= 4");
   if (!(overlap >= 0.0 && overlap <= 0.95)) throw usage_error("--overlap " + std::to_string(overlap) + ": allowed: a fraction in [0, 0.95]");
   if (window != "hann" && window != "rect") throw usage_error("--window " + window + ": allowed: hann or rect");
@@ -53,34 +79,39 @@ int psd_command(const Args& args) {
       throw usage_error("--out " + out + " is also the input signal ('" + input +
                         "'); refusing to overwrite an input; choose another --out");
   }
-  const io::CsvTable t = io::read_csv(input);
-  if (t.rows() < static_cast<std::size_t>(segment))
-    throw data_error(input + ": " + std::to_string(t.rows()) + " samples, fewer than one segment (--segment " +
+  const io::SignalTable t = io::prepare_signal(input, request);
+  if (t.samples() < static_cast<std::size_t>(segment))
+    throw data_error(input + ": " + std::to_string(t.samples()) + " samples, fewer than one segment (--segment " +
                      std::to_string(segment) + ")");
   spectral::WelchConfig cfg;
-  cfg.sample_rate = fs;
+  cfg.sample_rate = t.sample_rate;
   cfg.segment = static_cast<std::size_t>(segment);
   cfg.overlap = static_cast<std::size_t>(std::floor(overlap * static_cast<double>(segment)));
   cfg.window = window == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
   const spectral::WelchPlan plan(cfg);
   spectral::WelchWorkspace ws(cfg.segment);
-  std::vector<std::vector<double>> psd(t.columns.size(), std::vector<double>(plan.n_freq()));
-  for (std::size_t c = 0; c < t.columns.size(); ++c) {
-    plan.psd(t.values[c].data(), t.rows(), psd[c].data(), ws);
+  std::vector<std::vector<double>> psd(t.channels.size(), std::vector<double>(plan.n_freq()));
+  for (std::size_t c = 0; c < t.channels.size(); ++c) {
+    plan.psd(t.values[c].data(), t.samples(), psd[c].data(), ws);
     for (std::size_t k = 0; k < psd[c].size(); ++k)
       if (!std::isfinite(psd[c][k])) {
         double peak = 0.0;
         for (double v : t.values[c]) peak = std::max(peak, std::fabs(v));
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.6g", peak);
-        throw data_error(input + ": column '" + t.columns[c] + "': the PSD overflows a double (largest |value| " + buf +
-                         "); allowed: samples whose squares stay finite, e.g. |value| < 1e100 (rescale the unit)");
+        throw data_error(input + ": column '" + t.channels[c] + "': the PSD overflows a double (largest |value| " + buf +
+                         " m/s^2); allowed: samples whose squares stay finite, e.g. |value| < 1e100 (rescale the unit)");
       }
   }
 
   std::ostringstream s;
   s << "frequency_hz";
-  for (const auto& c : t.columns) s << "," << c;
+  for (std::string c : t.channels) {
+    // The output is comma-delimited and read back by the same reader: no delimiter inside a name.
+    for (char& ch : c)
+      if (ch == ',' || ch == ';' || ch == '\t' || ch == '"') ch = '_';
+    s << "," << c;
+  }
   s << "\n";
   const auto f = plan.frequencies();
   char buf[32];

@@ -2,8 +2,9 @@
 // signals (`rollspec psd`), measured PSDs (`rollspec compare`), PSD tables and profiles.
 //
 // The input is written to a temporary file and read; a table that is accepted is then checked
-// the way the commands check theirs (named columns, strictly increasing axis). A UserError is
-// the expected refusal; any other exception, a crash or a sanitizer report is a finding.
+// the way the commands check theirs (named columns, strictly increasing axis). It is also read as a
+// measured signal (delimiter and decimal-comma detection, time column and its sample rate). A
+// UserError is the expected refusal; any other exception, a crash or a sanitizer report is a finding.
 #include <unistd.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 
 #include "src/error.hpp"
 #include "src/io/csv_table.hpp"
+#include "src/io/signal_file.hpp"
 
 namespace {
 // One temporary file per fuzzing process, removed when the process exits.
@@ -56,6 +58,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)t.column("frequency_hz");
   } catch (const rollspec::UserError&) {
     // Refused with a message naming the file (and line/column): the expected outcome.
+  }
+  try {
+    // As a signal: channels are the columns minus at most one time column, all of one length; a time
+    // column gives a finite rate > 0, and there is no rate without one.
+    const rollspec::io::SignalTable s = rollspec::io::read_csv_signal(temp_path());
+    if (s.channels.size() != s.values.size() || s.groups.size() != s.channels.size()) std::abort();
+    for (const auto& col : s.values)
+      if (col.size() != s.values.front().size()) std::abort();
+    if (s.time_column.empty() != (s.sample_rate == 0.0)) std::abort();
+    if (!s.time_column.empty() && !(std::isfinite(s.sample_rate) && s.sample_rate > 0.0)) std::abort();
+  } catch (const rollspec::UserError&) {
   }
   return 0;
 }

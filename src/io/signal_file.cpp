@@ -1,0 +1,62 @@
+// Which reader a signal file needs: its first bytes, else its extension, else text.
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "src/error.hpp"
+#include "src/io/input_file.hpp"
+#include "src/io/signal_file.hpp"
+
+namespace rollspec::io {
+
+namespace {
+enum class Family { text, sound, mat };
+
+// Magic numbers checked far enough that a text header (say "RIFFLE;acc") is not taken for sound.
+Family by_content(const std::string& head) {
+  const auto at = [&](std::size_t pos, const char* magic) { return head.compare(pos, std::strlen(magic), magic) == 0; };
+  for (const char* riff : {"RIFF", "RIFX", "RF64"})
+    if (at(0, riff) && at(8, "WAVE")) return Family::sound;
+  if (at(0, "FORM") && (at(8, "AIFF") || at(8, "AIFC"))) return Family::sound;
+  for (const char* magic : {"fLaC", "OggS", ".snd", "caff", "riff."})
+    if (at(0, magic)) return Family::sound;
+  if (head.compare(0, 6, "MATLAB") == 0) return Family::mat;  // v5 and v7.3 headers; v4 has none
+  return Family::text;
+}
+
+Family by_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".mat") return Family::mat;
+  for (const char* e : {".wav", ".wave", ".flac", ".aif", ".aiff", ".aifc", ".au", ".snd", ".ogg", ".oga", ".caf", ".w64", ".rf64"})
+    if (ext == e) return Family::sound;
+  return Family::text;
+}
+}  // namespace
+
+SignalTable read_signal(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw missing_input("cannot read '" + path + "': it is a directory; expected a signal file (CSV/text, WAV/FLAC, .mat)");
+  require_regular_input(path, "signal file (CSV file, sound file or .mat)");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw missing_input("cannot open '" + path + "': " + (errno ? std::strerror(errno) : "no such file") +
+                        "; expected a signal file (CSV/text, WAV/FLAC, .mat)");
+  char head[12] = {};
+  in.read(head, sizeof head);
+  Family family = by_content(std::string(head, static_cast<std::size_t>(in.gcount())));
+  if (family == Family::text) family = by_extension(path);
+  switch (family) {
+    case Family::sound: return read_sound_signal(path);
+    case Family::mat: return read_mat_signal(path);
+    case Family::text: break;
+  }
+  return read_csv_signal(path);
+}
+
+}  // namespace rollspec::io

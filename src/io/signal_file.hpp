@@ -1,0 +1,56 @@
+#pragma once
+// Measured time signals for `rollspec psd`: CSV/text, sound files (libsndfile: WAV, FLAC, AIFF, ...)
+// and MATLAB .mat (matio: v4, v5, v7.3), chosen by content, else by extension, else text.
+// Every reader yields a SignalTable; prepare_signal() then picks channels, settles the sample rate
+// and converts to m/s². Errors name the file and the line, variable or channel at fault (exit 65),
+// a bad option (64) or a missing file (66).
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rollspec::io {
+
+struct SignalTable {
+  std::string file;
+  std::string format;                        // for messages: "CSV text (semicolon-delimited, decimal comma)"
+  std::vector<std::string> channels;         // names, file order
+  std::vector<std::string> groups;           // what each channel came from: the .mat variable of a matrix column, else its name
+  std::vector<std::vector<double>> values;   // values[channel][sample]; .mat channels may differ in length until picked
+  double sample_rate = 0.0;                  // Hz; 0 if the file does not say
+  std::string rate_source;                   // where sample_rate came from: "time column 'time_s'", "the file header"
+  std::string time_column;                   // the time column or variable, never a channel ("" if none)
+  std::size_t time_samples = 0;              // its length (a .mat time vector must match the channels)
+  std::string unit;                          // unit of values: "as stored", "full scale" (integer PCM), then "m/s^2"
+  std::vector<std::pair<std::string, std::string>> skipped;  // .mat variables that are not channels, and why
+
+  std::size_t samples() const { return values.empty() ? 0 : values.front().size(); }
+};
+
+// Readers, one per family (signal_csv.cpp, signal_sound.cpp, signal_mat.cpp). The path exists and is a
+// regular file.
+SignalTable read_csv_signal(const std::string& path);
+SignalTable read_sound_signal(const std::string& path);
+SignalTable read_mat_signal(const std::string& path);
+
+// Any of the above, by content (RIFF/FORM/fLaC/OggS/.snd magic, "MATLAB" header), else by extension
+// (.wav .flac .aif(f) .au .ogg .caf .w64 .rf64: sound; .mat: MATLAB), else text.
+SignalTable read_signal(const std::string& path);
+
+struct SignalRequest {
+  std::vector<std::string> columns;  // --column values (each a name, or comma-separated names); empty: all channels
+  double fs = 0.0;                   // --fs; 0: from the file
+  std::string unit = "m/s2";         // --unit: m/s2 or g
+  double scale = 1.0;                // --scale: physical units (of --unit) per file unit / per full scale
+};
+
+constexpr double kStandardGravity = 9.80665;  // m/s² per g, exact (CGPM 1901)
+
+// Accepted --unit values, for messages.
+constexpr const char* kSignalUnits = "m/s2 (also m/s^2) or g";
+
+// Reads `path` and returns the picked channels, all of one length, in m/s², with sample_rate set (the
+// file's, or --fs where they agree within kRateTolerance, or --fs alone).
+SignalTable prepare_signal(const std::string& path, const SignalRequest& request);
+
+}  // namespace rollspec::io

@@ -1,0 +1,80 @@
+#include "src/io/time_column.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "src/error.hpp"
+#include "src/io/number_text.hpp"
+
+namespace rollspec::io {
+
+namespace {
+std::string stamp_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+const char* const kAllowed = "strictly increasing, uniformly spaced stamps (each within 0.1 sample interval of t_0 + i*dt)";
+}  // namespace
+
+double time_column_unit(const std::string& name) {
+  std::string n;
+  for (const char c : name)
+    if (!std::isspace(static_cast<unsigned char>(c))) n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* base : {"time", "t"}) {
+    const std::string b = base;
+    if (n.compare(0, b.size(), b) != 0) continue;
+    const std::string unit = n.substr(b.size());
+    if (unit.empty()) return 1.0;
+    for (const auto& [u, seconds] : {std::pair<const char*, double>{"s", 1.0}, {"ms", 1e-3}})
+      for (const auto& [open, close] : {std::pair<const char*, const char*>{"_", ""}, {"[", "]"}, {"(", ")"}, {"/", ""}})
+        if (unit == std::string(open) + u + close) return seconds;
+  }
+  return 0.0;
+}
+
+double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_unit, const std::string& name,
+                             const std::function<std::string(std::size_t)>& where) {
+  const std::size_t n = t.size();
+  const std::string col = "time column '" + clip(name) + "'";
+  if (n < 2)
+    throw data_error(where(0) + ": " + col + " holds " + std::to_string(n) + " stamp; a sample rate needs at least 2");
+  for (std::size_t i = 1; i < n; ++i)
+    if (!(t[i] > t[i - 1]))
+      throw data_error(where(i) + ": " + col + " value " + stamp_text(t[i]) + " does not increase (previous stamp " +
+                       stamp_text(t[i - 1]) + "); allowed: " + kAllowed);
+  const double dt = (t[n - 1] - t[0]) / static_cast<double>(n - 1);
+  // Steps first: a gap or a repeated sample is named at its own line, not where the drift it causes
+  // first shows on the grid.
+  for (std::size_t i = 1; i < n; ++i) {
+    const double step = t[i] - t[i - 1];
+    if (std::fabs(step - dt) > 0.5 * dt)
+      throw data_error(where(i) + ": " + col + " steps by " + stamp_text(step) + " (from " + stamp_text(t[i - 1]) + " to " +
+                       stamp_text(t[i]) + "), " + number_text(step / dt) + " sample intervals of the record (dt = " +
+                       stamp_text(dt) + " from the first and last stamps): a missing, repeated or shifted sample; allowed: " +
+                       kAllowed);
+  }
+  for (std::size_t i = 1; i < n; ++i) {
+    const double off = (t[i] - t[0]) - static_cast<double>(i) * dt;
+    if (std::fabs(off) > kTimeGridTolerance * dt)
+      throw data_error(where(i) + ": " + col + " value " + stamp_text(t[i]) + " is " + number_text(off / dt) +
+                       " sample intervals off the uniform grid t_0 + i*dt (dt = " + stamp_text(dt) +
+                       " from the first and last stamps): the sample rate is not constant; allowed: " + kAllowed);
+  }
+  const double rate = 1.0 / (dt * seconds_per_unit);
+  if (!std::isfinite(rate) || !(rate > 0.0))
+    throw data_error(where(n - 1) + ": " + col + " implies the sample rate " + number_text(rate) +
+                     " Hz; allowed: stamps whose spacing gives a finite rate > 0");
+  return rate;
+}
+
+std::string rate_text(double hz) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", hz);
+  return buf;
+}
+
+}  // namespace rollspec::io

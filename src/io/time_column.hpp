@@ -1,0 +1,33 @@
+#pragma once
+// A time column (or .mat time variable) gives the sample rate of a measured signal and is never a
+// channel. Recognised names, case-insensitive, spaces ignored: `t` or `time`, alone (seconds) or with
+// a unit of s or ms written as `_s`, `[s]`, `(s)` or `/s` (`time_s`, `Time (s)`, `t [ms]`, `time/ms`).
+//
+// The stamps must increase and lie on a uniform grid: every stamp within kTimeGridTolerance sample
+// intervals of t_0 + i·Δ, Δ = (t_last − t_0)/(n − 1). Rounded stamps pass (six decimals at 51.2 kHz are
+// off by at most 0.03 intervals); a missing, repeated or inserted sample moves a stamp by half an
+// interval or more, a change of rate further still.
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rollspec::io {
+
+constexpr double kTimeGridTolerance = 0.1;  // sample intervals
+
+// Two sample rates agree if they differ by at most this fraction (--fs against the file's own rate).
+constexpr double kRateTolerance = 1e-3;
+
+// Seconds per unit of a time column's values (1 or 1e-3), or 0 if `name` is not a time column name.
+double time_column_unit(const std::string& name);
+
+// The sample rate (Hz) the stamps imply. `where(i)` names stamp i in messages ("file.csv:12",
+// "variable 't' element 12"); refusals are data errors naming the first offending stamp.
+double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_unit, const std::string& name,
+                             const std::function<std::string(std::size_t)>& where);
+
+// "25600" or "25600.000001": a rate in messages, as many digits as it needs.
+std::string rate_text(double hz);
+
+}  // namespace rollspec::io
