@@ -52,7 +52,6 @@ class TableStage final : public Stage {
   void resolve(bool rebuild, bool quiet) override;
   // Missing, valid or mismatched now (a stage that lives inside the table, e.g. its surfaces, asks).
   stiffness::TableState state() const;
-  const stiffness::CachedTable& table() const { return table_; }
 
  private:
   std::string name_;

@@ -99,11 +99,6 @@ TableState CachedTable::inspect(TableData& scratch, std::string& why) const {
   }
 }
 
-void CachedTable::read(TableData& t) const {
-  std::string why;
-  if (inspect(t, why) == TableState::mismatched) throw data_error(why + "\nrun with --rebuild to replace it");
-}
-
 void CachedTable::resolve(TableData& t, bool rebuild, const std::function<void(TableData&)>& build,
                           std::string& status) const {
   std::string why;

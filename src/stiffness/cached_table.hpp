@@ -51,8 +51,6 @@ class CachedTable {
   // Without building anything: missing, valid, or mismatched (`why` names the differing inputs or
   // the damage). `scratch` receives the stored data while they are checked.
   TableState inspect(TableData& scratch, std::string& why) const;
-  // The stored table's data, after every identity check (throws data_error naming the damage).
-  void read(TableData& t) const;
   // Reuses a valid table, builds a missing one with `build`, refuses a mismatched or damaged one
   // (exit 65, naming the differences) unless `rebuild`. Collective under MPI: every rank builds or
   // reads, rank 0 writes. `status` says "cached <path>" or "built <path>".
