@@ -1,15 +1,8 @@
 #include "src/scenes/ball_on_beam.hpp"
-#include "src/scenes/psd_rows.hpp"
-#include "src/scenes/study_welch.hpp"
-
-#include "kernels/beam/quadratic_hold_step.hpp"
-#include "kernels/integrators/exact_oscillator_step.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
-#include <mutex>
-#include <sstream>
+#include <cstdio>
 
 #include "kernels/beam/ball_on_beam.hpp"
 #include "kernels/beam/contact_patch_filter.hpp"
@@ -28,6 +21,8 @@
 #include "src/io/psd_result.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/ensemble/progress.hpp"
+#include "src/scenes/ball_on_beam_settings.hpp"
+#include "src/scenes/psd_rows.hpp"
 #include "src/study/study.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
@@ -37,22 +32,6 @@
 namespace rollspec::scenes {
 
 using namespace study;
-
-namespace {
-
-std::string g4(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
-
-}  // namespace
-
-std::vector<double> sensor_positions(const Study& s) {
-  auto v = s.numbers("sensors.positions");
-  if (v.empty()) s.refuse("sensors.positions", "lists no position; allowed: comma-separated positions in m");
-  return v;
-}
 
 namespace {
 
@@ -66,89 +45,26 @@ struct Workspace {
 
 class BallOnBeam final : public Scene {
  public:
-  explicit BallOnBeam(const Study& s)
-      : seed_(static_cast<std::uint64_t>(s.integer("study.seed"))),
-        model_{study_modal_beam(s), {}, {}, {}, s.real("signal.sample_rate"), sensor_positions(s)},
-        psd_(texture_io::study_psd(s)),
-        average_(s.boolean("sensors.average")),
-        dopri_(s.text("signal.integrator") == "dopri5"),
-        rtol_(s.real("signal.rtol")),
-        confidence_(s.real("spectrum.confidence")),
-        band_min_(s.real("spectrum.band_min")),
-        band_max_(s.real("spectrum.band_max")),
-        time_histories_(static_cast<std::size_t>(s.integer("output.time_histories"))) {
-    const double l = s.real("beam.length");
-    for (double x : model_.sensors)
-      if (x < 0.0 || x > l) s.refuse("sensors.positions", "position " + std::to_string(x) + " m lies outside the span [0, length]");
-    // Ball.
-    const double radius = s.real("ball.radius");
-    model_.ball.mass = 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density");
-    model_.ball.gravity = s.real("ball.gravity");
-    model_.traverse.x_start = s.real("ball.start");
-    model_.traverse.x_end = s.real("ball.end");
-    model_.traverse.speed = s.real("ball.speed");
-    if (!(model_.traverse.x_end > model_.traverse.x_start)) s.refuse("ball.end", "must exceed [ball] start");
-    if (model_.traverse.x_end > l) s.refuse("ball.end", "lies beyond the span [0, length]");
-    // Contact.
-    beam::ContactLaw& law = model_.contact;
-    law_name_ = s.text("contact.law");
-    contact_model_ = law_name_ == "table"     ? ContactModel::table
-                     : law_name_ == "literal" ? ContactModel::literal
-                     : law_name_ == "hertz"   ? ContactModel::hertz
-                     : s.text("contact.blocked_force") == "solver" ? ContactModel::linearised_solver
-                                                                   : ContactModel::linearised_spring;
-    if (blocked_solver() || uses_table()) study_ = &s;
-    law.kind = linearised() ? beam::ContactLawKind::linearised
-               : contact_model_ == ContactModel::table   ? beam::ContactLawKind::table
-               : contact_model_ == ContactModel::literal ? beam::ContactLawKind::literal_stiffness
-                                                         : beam::ContactLawKind::hertz;
-    law.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
-                                                       s.real("beam.youngs_modulus"), s.real("beam.poisson"));
-    law.radius = radius;
-    law.k0 = s.real("contact.k0");
-    law.damping = s.real("contact.damping");
-    law.loss = s.text("contact.loss") == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
-    const double weight = model_.ball.mass * model_.ball.gravity;
-    static_compression_ = linearised() ? weight / law.k0 : std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
-    patch_half_width_ = s.boolean("contact.patch_filter") ? beam::hertz_half_width(radius, linearised() ? std::pow(3.0 * weight / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0) : static_compression_) : 0.0;
-    // Roughness line over the whole span, so the patch filter and the traverse never run off it.
-    // One roughness sample per integration step by default: the interpolation between samples then
-    // low-passes the excitation only near the step's own Nyquist frequency.
-    dx_ = s.real("roughness.spacing") > 0.0
-              ? s.real("roughness.spacing")
-              : model_.traverse.speed / (model_.sample_rate * static_cast<double>(s.integer("signal.substeps")));
-    const std::size_t line_samples = static_cast<std::size_t>(std::floor(l / dx_)) + 1;
-    if (line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
-    lines_ = texture_io::study_line_generator(s, psd_, dx_, line_samples, "roughness.spacing");
-    if (!uses_table() && !blocked_solver())
-      check_contact_resolution(s, linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * static_compression_));
-    // Integrator options (the integrator itself is built in prepare(), once the contact law is complete).
-    step_options_.substeps = static_cast<int>(s.integer("signal.substeps"));
-    step_options_.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
-    check_step_coefficients(s);
-    samples_ = beam::output_samples(model_);
-    skip_ = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * model_.sample_rate));
-    if (skip_ >= samples_) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(samples_) + " samples)");
-    const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
-    if (segment > samples_ - skip_)
-      s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(samples_ - skip_) +
-                                       " samples = ((end - start) / speed - skip_start) x sample_rate)");
-    welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, model_.sample_rate));
+  explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
+    if (b_.blocked_solver() || b_.uses_table()) study_ = &s;
+    lines_ = texture_io::study_line_generator(s, b_.psd, b_.spacing, b_.line_samples, "roughness.spacing");
+    welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
-    for (std::size_t k = 0; k < model_.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
-    rows_ = std::make_unique<PsdRows>(names, average_, welch_->frequencies(), band_min_, band_max_, 2 * welch_->n_freq() + 1);
+    for (std::size_t k = 0; k < b_.model.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
+    rows_ = std::make_unique<PsdRows>(names, b_.sensor_mean, welch_->frequencies(), b_.band_min, b_.band_max,
+                                      2 * welch_->n_freq() + 1);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
-      workspaces_.push_back(std::make_unique<Workspace>(line_samples, lines_->harmonics(), segment));
+      workspaces_.push_back(std::make_unique<Workspace>(b_.line_samples, lines_->harmonics(), b_.welch.segment));
     add_pipeline_stages(s);
   }
 
   // texture, surface, stiffness_table, blocked_force, dynamics, spectra: the tables are stage
   // objects whose inspection `plan` prints and whose resolution prepare() runs.
   void add_pipeline_stages(const Study& s) {
-    add_stages({{"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + psd_.description + ")"}});
+    add_stages({{"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + b_.psd.description + ")"}});
     std::unique_ptr<TableStage> table;
     if (uses_table()) {
-      const double radius = model_.contact.radius, e_star = model_.contact.effective_modulus;
+      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
       table = std::make_unique<TableStage>(
           "stiffness_table", stiffness::stiffness_cached_table(s, radius, e_star),
           [] { return std::make_unique<stiffness::StiffnessTable>(); },
@@ -172,8 +88,8 @@ class BallOnBeam final : public Scene {
       add_stages({{"stiffness_table", StageStatus::skipped,
                    linearised() ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"}});
     if (blocked_solver()) {
-      const double radius = model_.contact.radius, e_star = model_.contact.effective_modulus;
-      const double weight = model_.ball.mass * model_.ball.gravity;
+      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
+      const double weight = b_.weight();
       add_stage(std::make_unique<TableStage>(
           "blocked_force", stiffness::blocked_force_cached_table(s, radius, e_star, weight),
           [] { return std::make_unique<stiffness::BlockedForceTable>(); },
@@ -188,54 +104,30 @@ class BallOnBeam final : public Scene {
                    linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
                                : "only the linearised law uses F0"}});
     }
-    add_stages({{"dynamics", StageStatus::run, dopri_ ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
+    add_stages({{"dynamics", StageStatus::run, b_.dopri ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
                 {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"}});
-  }
-
-  // The exact modal step of very high modes (omega h in the thousands) overflows double precision:
-  // every realisation would be non-finite. Refused here, before any work, with the largest mode
-  // count whose step is finite.
-  void check_step_coefficients(const Study& s) const {
-    if (dopri_) return;
-    const double h = 1.0 / (model_.sample_rate * static_cast<double>(step_options_.substeps));
-    const beam::ModalBeam& b = model_.beam;
-    for (int i = 0; i < b.modes(); ++i) {
-      const auto f = integrators::ExactOscillatorStep::make(b.omega(i), b.zeta(i), h);
-      bool ok = std::isfinite(f.a00) && std::isfinite(f.a01) && std::isfinite(f.a10) && std::isfinite(f.a11) &&
-                std::isfinite(f.b0) && std::isfinite(f.b1) && std::isfinite(f.c0) && std::isfinite(f.c1);
-      if (ok && step_options_.hold == beam::ForceHold::quadratic) {
-        const auto q = beam::QuadraticHoldStep::make(b.omega(i), b.zeta(i), h);
-        for (double v : {q.a00, q.a01, q.a10, q.a11, q.bm, q.b0, q.b1, q.cm, q.c0, q.c1}) ok = ok && std::isfinite(v);
-      }
-      if (ok) continue;
-      char buf[200];
-      std::snprintf(buf, sizeof buf, "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
-                    b.modes(), i + 1, b.frequency(i), b.omega(i) * h);
-      s.refuse(s.integer("beam.modes") > 0 ? "beam.modes" : "beam.max_frequency",
-               std::string(buf) + "; allowed: at most " + std::to_string(i) + " modes at this step (or signal.integrator = dopri5)");
-    }
   }
 
   void prepare(bool quiet, bool rebuild) override {
     quiet_ = quiet;
     resolve_stages(quiet, rebuild);  // the tables' use_* complete the contact law
-    integrator_ = std::make_unique<beam::ExactStepIntegrator>(model_, step_options_);
+    integrator_ = std::make_unique<beam::ExactStepIntegrator>(b_.model, b_.step);
   }
 
   void use_stiffness_table(const stiffness::StiffnessTable& t, const std::string& status, bool quiet) {
     if (!quiet) std::fprintf(stderr, "stiffness table: %s\n", status.c_str());
-    model_.contact.compression = t.approach;
-    if (model_.contact.kind == beam::ContactLawKind::table) {
-      model_.contact.values = t.force_mean;
+    b_.model.contact.compression = t.approach;
+    if (b_.model.contact.kind == beam::ContactLawKind::table) {
+      b_.model.contact.values = t.force_mean;
     } else {  // seed 001 Eq. 7 literally: k_c(delta) from the table's stiffness, F = k_c(delta) delta
-      model_.contact.values = t.stiffness_mean;
-      model_.contact.values[0] = t.stiffness_mean[1];
+      b_.model.contact.values = t.stiffness_mean;
+      b_.model.contact.values[0] = t.stiffness_mean[1];
     }
-    static_compression_ = t.approach_at(model_.ball.mass * model_.ball.gravity);
-    if (!(static_compression_ > 0.0))
+    b_.static_compression = t.approach_at(b_.weight());
+    if (!(b_.static_compression > 0.0))
       study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
                                                    " N does not reach the ball's weight; raise approach_max");
-    check_contact_resolution(*study_, t.stiffness_at(model_.ball.mass * model_.ball.gravity));
+    check_contact_resolution(*study_, b_, t.stiffness_at(b_.weight()));
   }
 
   // The contact solver's blocked force (seed 002 §4.2): k0 from the table, F0(t) synthesised per
@@ -245,15 +137,15 @@ class BallOnBeam final : public Scene {
     blocked_ = table;
     if (!quiet) std::fprintf(stderr, "blocked force table: %s (k0 = %.4g N/m, d0 = %.4g m)\n", status.c_str(), blocked_.k0,
                              blocked_.approach);
-    const double weight = model_.ball.mass * model_.ball.gravity;
-    model_.contact.k0 = blocked_.k0;
-    static_compression_ = weight / blocked_.k0;
-    check_contact_resolution(*study_, blocked_.k0);
-    f0_step_ = 1.0 / (model_.sample_rate * static_cast<double>(step_options_.substeps));
-    auto n = static_cast<std::size_t>(std::ceil(beam::traverse_duration(model_.traverse) / f0_step_)) + 4;
+    const double weight = b_.weight();
+    b_.model.contact.k0 = blocked_.k0;
+    b_.static_compression = weight / blocked_.k0;
+    check_contact_resolution(*study_, b_, blocked_.k0);
+    f0_step_ = b_.integration_step();
+    auto n = static_cast<std::size_t>(std::ceil(beam::traverse_duration(b_.model.traverse) / f0_step_)) + 4;
     n = texture::fast_even_length(n);
     f0_synth_ = std::make_unique<spectral::HarmonicSynthesiser>(n);
-    const double df = 1.0 / (static_cast<double>(n) * f0_step_), v = model_.traverse.speed;
+    const double df = 1.0 / (static_cast<double>(n) * f0_step_), v = b_.model.traverse.speed;
     f0_psd_.assign(f0_synth_->harmonics(), 0.0);
     for (std::size_t j = 1; j < f0_psd_.size(); ++j) {
       const double f = df * static_cast<double>(j);
@@ -263,24 +155,8 @@ class BallOnBeam final : public Scene {
   }
 
   double blocked_force_time_psd(double f) const {
-    const double v = model_.traverse.speed;
+    const double v = b_.model.traverse.speed;
     return 2.0 * M_PI * blocked_.psd_at(2.0 * M_PI * f / v) / v;
-  }
-
-  // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
-  // T_c = 2 pi sqrt(m_ball / k_contact) at the static load (kernels/README.md D-23). Coarser steps stay finite
-  // but misstate loss of contact and the high-frequency levels, so they are refused.
-  void check_contact_resolution(const Study& s, double k_contact) const {
-    const double tc = 2.0 * M_PI * std::sqrt(model_.ball.mass / k_contact);
-    const double h = 1.0 / (model_.sample_rate * static_cast<double>(s.integer("signal.substeps")));
-    if (h > tc / 20.0) {
-      const auto need = static_cast<long long>(std::ceil(20.0 / (tc * model_.sample_rate)));
-      s.refuse("signal.substeps", "the integration step 1 / (sample_rate x substeps) = " + g4(h) +
-                                      " s exceeds the contact resolution limit dt <= T_c / 20 = " + g4(tc / 20.0) +
-                                      " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + g4(k_contact) +
-                                      " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
-                                      " at this sample rate");
-    }
   }
 
   std::size_t rows() const { return rows_->rows(); }
@@ -291,39 +167,39 @@ class BallOnBeam final : public Scene {
   void simulate(std::uint64_t id, Workspace& ws) const {
     const std::size_t nh = lines_->harmonics();
     if (!blocked_solver()) {
-    rng::PhiloxStream(seed_, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
-    rng::PhiloxStream(seed_, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
+    rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
+    rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
     lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data());
     }
-    beam::UniformSamples h{0.0, dx_, blocked_solver() ? std::vector<double>() : ws.texture};
-    if (patch_half_width_ > 0.0 && !blocked_solver()) h = beam::contact_patch_average(h, patch_half_width_);
+    beam::UniformSamples h{0.0, b_.spacing, blocked_solver() ? std::vector<double>() : ws.texture};
+    if (b_.patch_half_width > 0.0 && !blocked_solver()) h = beam::contact_patch_average(h, b_.patch_half_width);
     beam::Realisation r;
     if (blocked_solver()) {
       const std::size_t nh_f0 = f0_synth_->harmonics(), n = f0_synth_->samples();
       std::vector<double> up(nh_f0), ua(nh_f0);
-      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_phase).uniform_open(up.data(), nh_f0);
-      rng::PhiloxStream(seed_, id, rng::Stream::blocked_force_amplitude).uniform_open(ua.data(), nh_f0);
+      rng::PhiloxStream(b_.seed, id, rng::Stream::blocked_force_phase).uniform_open(up.data(), nh_f0);
+      rng::PhiloxStream(b_.seed, id, rng::Stream::blocked_force_amplitude).uniform_open(ua.data(), nh_f0);
       r.blocked_force.origin = 0.0;
       r.blocked_force.step = f0_step_;
       r.blocked_force.values.resize(n);
       f0_synth_->synthesise(f0_psd_.data(), f0_df_, spectral::Amplitudes::rayleigh, up.data(), ua.data(),
                             r.blocked_force.values.data());
-      for (double& f : r.blocked_force.values) f += model_.ball.mass * model_.ball.gravity;
+      for (double& f : r.blocked_force.values) f += b_.weight();
     } else if (linearised()) {
       // Blocked force of a linear contact spring: F0(t) = W + k0 h(x_start + v t) (D-11).
-      const double v = model_.traverse.speed, x0 = model_.traverse.x_start, dt = dx_ / v;
-      const auto first = static_cast<std::size_t>(std::floor(x0 / dx_));
-      r.blocked_force.origin = (static_cast<double>(first) * dx_ - x0) / v;
+      const double v = b_.model.traverse.speed, x0 = b_.model.traverse.x_start, dt = b_.spacing / v;
+      const auto first = static_cast<std::size_t>(std::floor(x0 / b_.spacing));
+      r.blocked_force.origin = (static_cast<double>(first) * b_.spacing - x0) / v;
       r.blocked_force.step = dt;
-      const double weight = model_.ball.mass * model_.ball.gravity;
-      for (std::size_t i = first; i < h.values.size(); ++i) r.blocked_force.values.push_back(weight + model_.contact.k0 * h.values[i]);
+      const double weight = b_.weight();
+      for (std::size_t i = first; i < h.values.size(); ++i) r.blocked_force.values.push_back(weight + b_.model.contact.k0 * h.values[i]);
     } else {
       r.roughness = std::move(h);
     }
-    if (dopri_) {
+    if (b_.dopri) {
       beam::ReferenceTolerances tol;
-      tol.rtol = rtol_;
-      ws.result = beam::simulate_dopri5(model_, r, tol);
+      tol.rtol = b_.rtol;
+      ws.result = beam::simulate_dopri5(b_.model, r, tol);
     } else {
       integrator_->run(r, ws.result);
     }
@@ -332,13 +208,13 @@ class BallOnBeam final : public Scene {
   void run_realisation(std::uint64_t id, int thread, double* values) const override {
     Workspace& ws = *workspaces_[static_cast<std::size_t>(thread)];
     simulate(id, ws);
-    const std::size_t nf = welch_->n_freq(), ns = model_.sensors.size(), n = ws.result.samples() - skip_;
+    const std::size_t nf = welch_->n_freq(), ns = b_.model.sensors.size(), n = ws.result.samples() - b_.skip;
     for (std::size_t s = 0; s < ns; ++s)
-      welch_->psd(ws.result.sensor_acceleration[s].data() + skip_, n, rows_->row(values, s), ws.welch);
+      welch_->psd(ws.result.sensor_acceleration[s].data() + b_.skip, n, rows_->row(values, s), ws.welch);
     rows_->finish(values);
     double* x = rows_->extras(values);
-    welch_->psd(ws.result.contact_force.data() + skip_, n, x, ws.welch);
-    welch_->psd(ws.result.ball_acceleration.data() + skip_, n, x + nf, ws.welch);
+    welch_->psd(ws.result.contact_force.data() + b_.skip, n, x, ws.welch);
+    welch_->psd(ws.result.ball_acceleration.data() + b_.skip, n, x + nf, ws.welch);
     x[2 * nf] = ws.result.loss_of_contact_share;
   }
 
@@ -348,9 +224,9 @@ class BallOnBeam final : public Scene {
     auto mean_of = [&](std::size_t i) { return sums.mean(i); };
     auto std_of = [&](std::size_t i) { return sums.std_dev(i); };
     io::PsdEnsemble e = rows_->ensemble(sums);
-    e.welch_dof = K * welch_->equivalent_dof(samples_ - skip_);  // stationary D-16 value, for information
+    e.welch_dof = K * welch_->equivalent_dof(b_.samples - b_.skip);  // stationary D-16 value, for information
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
-    e.confidence = confidence_;
+    e.confidence = b_.confidence;
     io::write_psd_result(w, e);
 
     std::vector<double> force(nf), ball(nf);
@@ -367,17 +243,17 @@ class BallOnBeam final : public Scene {
     const double share = mean_of(rows_->extra_index(2 * nf)), share_std = std_of(rows_->extra_index(2 * nf));
     w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
     w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
-    w.attribute("/contact", "law", law_name_);
-    w.attribute("/contact", "static_compression", static_compression_);
-    w.attribute("/contact", "patch_half_width", patch_half_width_);
-    w.attribute("/contact", "effective_modulus", model_.contact.effective_modulus);
-    if (linearised()) w.attribute("/contact", "k0", model_.contact.k0);
+    w.attribute("/contact", "law", b_.law_name);
+    w.attribute("/contact", "static_compression", b_.static_compression);
+    w.attribute("/contact", "patch_half_width", b_.patch_half_width);
+    w.attribute("/contact", "effective_modulus", b_.model.contact.effective_modulus);
+    if (linearised()) w.attribute("/contact", "k0", b_.model.contact.k0);
     if (blocked_solver()) {
       w.attribute("/contact", "blocked_force_approach", blocked_.approach);
       w.attribute("/contact", "blocked_force_input_hash", blocked_.input_hash);
     }
 
-    const auto& b = model_.beam;
+    const auto& b = b_.model.beam;
     std::vector<double> fm(static_cast<std::size_t>(b.modes()));
     for (int i = 0; i < b.modes(); ++i) fm[static_cast<std::size_t>(i)] = b.frequency(i);
     w.write("/beam/modal_frequency", {fm.size()}, fm.data(), "Hz", "undamped modal frequencies");
@@ -389,12 +265,12 @@ class BallOnBeam final : public Scene {
     w.attribute("/beam", "youngs_modulus", p.youngs_modulus);
     w.attribute("/beam", "density", p.density);
     w.attribute("/beam", "static_correction", static_cast<std::int64_t>(b.static_correction()));
-    w.write("/sensors/position", {model_.sensors.size()}, model_.sensors.data(), "m", "sensor positions along the span");
-    w.attribute("/ball", "mass", model_.ball.mass);
-    w.attribute("/ball", "speed", model_.traverse.speed);
+    w.write("/sensors/position", {b_.model.sensors.size()}, b_.model.sensors.data(), "m", "sensor positions along the span");
+    w.attribute("/ball", "mass", b_.model.ball.mass);
+    w.attribute("/ball", "speed", b_.model.traverse.speed);
 
     if (linearised()) write_linear_reference(w, e.frequency, e.sensors, K);
-    if (time_histories_) write_time_histories(w, sums.only);
+    if (b_.time_histories) write_time_histories(w, sums.only);
   }
 
  private:
@@ -403,30 +279,30 @@ class BallOnBeam final : public Scene {
   void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,
                               double realisations) const {
     beam::LinearReferenceInput in;
-    in.beam = &model_.beam;
-    in.ball_mass = model_.ball.mass;
-    in.damping = model_.contact.damping;
-    in.sensors = model_.sensors;
-    in.sensor_mean = rows() > model_.sensors.size();
+    in.beam = &b_.model.beam;
+    in.ball_mass = b_.model.ball.mass;
+    in.damping = b_.model.contact.damping;
+    in.sensors = b_.model.sensors;
+    in.sensor_mean = rows() > b_.model.sensors.size();
     in.welch = welch_.get();
-    in.sample_rate = model_.sample_rate;
+    in.sample_rate = b_.model.sample_rate;
     beam::ReferenceExcitation& ex = in.excitation;
     if (blocked_solver()) {
       ex.time_psd = [this](double fi) { return blocked_force_time_psd(fi); };
     } else {
-      ex.time_psd = texture::time_psd(psd_, model_.traverse.speed);
+      ex.time_psd = texture::time_psd(b_.psd, b_.model.traverse.speed);
     }
     ex.blocked_force = blocked_solver();
-    ex.k0 = model_.contact.k0;
-    ex.speed = model_.traverse.speed;
-    ex.spacing = dx_;
-    ex.patch_half_width = patch_half_width_;
-    ex.x_start = model_.traverse.x_start;
-    ex.step = 1.0 / (model_.sample_rate * static_cast<double>(step_options_.substeps));
-    in.positions = beam::welch_position_blocks(*welch_, samples_ - skip_, skip_, model_.traverse.x_start,
-                                               model_.traverse.speed, model_.sample_rate);
+    ex.k0 = b_.model.contact.k0;
+    ex.speed = b_.model.traverse.speed;
+    ex.spacing = b_.spacing;
+    ex.patch_half_width = b_.patch_half_width;
+    ex.x_start = b_.model.traverse.x_start;
+    ex.step = b_.integration_step();
+    in.positions = beam::welch_position_blocks(*welch_, b_.samples - b_.skip, b_.skip, b_.model.traverse.x_start,
+                                               b_.model.traverse.speed, b_.model.sample_rate);
     in.realisations = realisations;
-    in.confidence = confidence_;
+    in.confidence = b_.confidence;
     // The reference runs after the ensemble and can take longer than it: shown when over a second.
     ensemble::Progress progress("linearised reference", beam::linear_reference_steps(in), quiet_);
     progress.show_after(1.0);
@@ -458,9 +334,9 @@ class BallOnBeam final : public Scene {
   // with --only, the history of that one realisation.
   void write_time_histories(io::Hdf5Writer& w, std::int64_t only) const {
     Workspace& ws = *workspaces_[0];
-    const std::size_t n = samples_, ns = model_.sensors.size(), nh = only >= 0 ? 1 : time_histories_;
+    const std::size_t n = b_.samples, ns = b_.model.sensors.size(), nh = only >= 0 ? 1 : b_.time_histories;
     std::vector<double> t(n), acc(nh * ns * n), force(nh * n), ball(nh * n), delta(nh * n);
-    for (std::size_t j = 0; j < n; ++j) t[j] = static_cast<double>(j) / model_.sample_rate;
+    for (std::size_t j = 0; j < n; ++j) t[j] = static_cast<double>(j) / b_.model.sample_rate;
     for (std::size_t r = 0; r < nh; ++r) {
       simulate(only >= 0 ? static_cast<std::uint64_t>(only) : r, ws);
       for (std::size_t s = 0; s < ns; ++s)
@@ -479,35 +355,21 @@ class BallOnBeam final : public Scene {
     for (const char* d : {"/time_history/contact_force", "/time_history/ball_acceleration", "/time_history/compression"})
       w.attach_scale(d, "/time_history/time", 1);
     w.attribute("/time_history", "realisations",
-                only >= 0 ? std::to_string(only) : "0.." + std::to_string(time_histories_ - 1));
+                only >= 0 ? std::to_string(only) : "0.." + std::to_string(b_.time_histories - 1));
   }
 
-  std::uint64_t seed_;
-  beam::BallOnBeamModel model_;
-  texture::Psd psd_;
-  bool average_, dopri_;
-  double rtol_, confidence_, band_min_, band_max_;
-  std::size_t time_histories_;
-  // One value for the contact law and the blocked force's source ([contact] law, blocked_force).
-  enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver };
-  ContactModel contact_model_ = ContactModel::hertz;
-  bool linearised() const {
-    return contact_model_ == ContactModel::linearised_spring || contact_model_ == ContactModel::linearised_solver;
-  }
-  bool uses_table() const { return contact_model_ == ContactModel::table || contact_model_ == ContactModel::literal; }
-  bool blocked_solver() const { return contact_model_ == ContactModel::linearised_solver; }
+  BallOnBeamSettings b_;
+  bool linearised() const { return b_.linearised(); }
+  bool uses_table() const { return b_.uses_table(); }
+  bool blocked_solver() const { return b_.blocked_solver(); }
   bool quiet_ = false;
   stiffness::BlockedForceTable blocked_;
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
   std::vector<double> f0_psd_;
   double f0_step_ = 0.0, f0_df_ = 0.0;
-  std::string law_name_;
-  beam::ExactStepOptions step_options_;
   const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene
-  double static_compression_ = 0.0, patch_half_width_ = 0.0, dx_ = 0.0;
   std::unique_ptr<texture::LineTextureGenerator> lines_;
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;
-  std::size_t samples_ = 0, skip_ = 0;
   std::unique_ptr<spectral::WelchPlan> welch_;
   std::unique_ptr<PsdRows> rows_;
   std::vector<std::unique_ptr<Workspace>> workspaces_;

@@ -1,4 +1,5 @@
 #include "src/scenes/random_oscillator.hpp"
+#include "src/scenes/random_oscillator_settings.hpp"
 #include "src/scenes/psd_rows.hpp"
 #include "src/scenes/study_welch.hpp"
 
@@ -18,26 +19,6 @@ namespace rollspec::scenes {
 
 using namespace study;
 
-std::vector<KeySpec> random_oscillator_keys() {
-  const double inf = std::numeric_limits<double>::infinity();
-  return {
-      real_key("oscillator", "mass", "kg", "oscillator mass m", std::string("1"), 0.0, inf, false),
-      real_key("oscillator", "natural_frequency", "Hz", "undamped natural frequency f_n", std::nullopt, 0.0, inf, false),
-      real_key("oscillator", "damping_ratio", "-", "viscous damping ratio zeta", std::string("0.02"), 0.0, 10.0, false),
-      choice_key("force", "spectrum", "force PSD shape: flat up to f_max", std::string("flat"), {"flat"}),
-      real_key("force", "level", "N^2/Hz", "one-sided force PSD S_F of the flat spectrum", std::string("1"), 0.0, inf,
-               false),
-      real_key("force", "f_max", "Hz", "highest force frequency; 0 means the Nyquist frequency", std::string("0"), 0.0,
-               inf),
-      choice_key("force", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian force) or deterministic (the target PSD exactly)",
-                 std::string("rayleigh"), {"rayleigh", "deterministic"}),
-      real_key("signal", "sample_rate", "Hz", "sample rate f_s of force and response", std::string("2048"), 0.0, inf,
-               false),
-      real_key("signal", "duration", "s", "length of one realisation's record (the force's period)", std::string("32"),
-               0.0, inf, false),
-  };
-}
-
 namespace {
 
 struct Workspace {
@@ -49,46 +30,24 @@ struct Workspace {
 
 class RandomOscillator final : public Scene {
  public:
-  explicit RandomOscillator(const Study& s)
-      : seed_(static_cast<std::uint64_t>(s.integer("study.seed"))),
-        mass_(s.real("oscillator.mass")),
-        fn_(s.real("oscillator.natural_frequency")),
-        zeta_(s.real("oscillator.damping_ratio")),
-        fs_(s.real("signal.sample_rate")),
-        mode_(s.text("force.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh
-                                                         : spectral::Amplitudes::deterministic),
-        level_(s.real("force.level")),
-        confidence_(s.real("spectrum.confidence")),
-        band_min_(s.real("spectrum.band_min")),
-        band_max_(s.real("spectrum.band_max")) {
-    // Cross-key checks, each naming the key that must change.
-    const double samples = std::round(s.real("signal.duration") * fs_ / 2.0) * 2.0;
-    if (samples < 4 || samples > 1e9)
-      s.refuse("signal.duration", "gives " + std::to_string(samples) + " samples at the sample rate; allowed: 4 to 1e9 samples");
-    n_ = static_cast<std::size_t>(samples);
-    if (fn_ >= fs_ / 2) s.refuse("oscillator.natural_frequency", "must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs_ / 2) + " Hz");
-    f_max_ = s.real("force.f_max") == 0.0 ? fs_ / 2 : s.real("force.f_max");
-    if (f_max_ > fs_ / 2) s.refuse("force.f_max", "exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs_ / 2) + " Hz");
-    const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
-    if (segment > n_)
-      s.refuse("spectrum.segment", "is longer than one realisation's record (" + std::to_string(n_) + " samples = duration x sample_rate)");
-    welch_ = std::make_unique<spectral::WelchPlan>(study_welch_config(s, fs_));
-    rows_ = std::make_unique<PsdRows>(std::vector<std::string>{"mass"}, false, welch_->frequencies(), band_min_, band_max_, 0);
-    synth_ = std::make_unique<spectral::HarmonicSynthesiser>(n_);
-    df_ = fs_ / static_cast<double>(n_);
+  explicit RandomOscillator(const Study& s) : o_(read_random_oscillator_settings(s)) {
+    welch_ = std::make_unique<spectral::WelchPlan>(o_.welch);
+    rows_ = std::make_unique<PsdRows>(std::vector<std::string>{"mass"}, false, welch_->frequencies(), o_.band_min, o_.band_max, 0);
+    synth_ = std::make_unique<spectral::HarmonicSynthesiser>(o_.samples);
+    df_ = o_.sample_rate / static_cast<double>(o_.samples);
     psd_at_harmonics_.resize(synth_->harmonics());
     for (std::size_t j = 0; j < psd_at_harmonics_.size(); ++j)
       psd_at_harmonics_[j] = force_psd(df_ * static_cast<double>(j));
-    omega_ = 2.0 * M_PI * fn_;
-    step_ = integrators::ExactOscillatorStep::make(omega_, zeta_, 1.0 / fs_);
+    omega_ = 2.0 * M_PI * o_.natural_frequency;
+    step_ = integrators::ExactOscillatorStep::make(omega_, o_.damping_ratio, 1.0 / o_.sample_rate);
     // Phi^N, the free response over one period, for the periodic steady state.
     Eigen::Matrix2d phi;
     phi << step_.a00, step_.a01, step_.a10, step_.a11;
     Eigen::Matrix2d p = Eigen::Matrix2d::Identity(), b = phi;
-    for (std::size_t e = n_; e; e >>= 1, b = b * b)
+    for (std::size_t e = o_.samples; e; e >>= 1, b = b * b)
       if (e & 1) p = p * b;
     periodic_inverse_ = (Eigen::Matrix2d::Identity() - p).inverse();
-    for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(n_, segment));
+    for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(o_.samples, o_.welch.segment));
     add_stages(fixed_stages());  // after the members the descriptions name
   }
 
@@ -109,35 +68,35 @@ class RandomOscillator final : public Scene {
   void run_realisation(std::uint64_t id, int thread, double* values) const override {
     Workspace& ws = *workspaces_[static_cast<std::size_t>(thread)];
     const std::size_t nh = synth_->harmonics();
-    rng::PhiloxStream(seed_, id, rng::Stream::force_phase).uniform_open(ws.u_phase.data(), nh);
-    rng::PhiloxStream(seed_, id, rng::Stream::force_amplitude).uniform_open(ws.u_amp.data(), nh);
-    synth_->synthesise(psd_at_harmonics_.data(), df_, mode_, ws.u_phase.data(), ws.u_amp.data(), ws.force.data());
-    for (double& f : ws.force) f /= mass_;
+    rng::PhiloxStream(o_.seed, id, rng::Stream::force_phase).uniform_open(ws.u_phase.data(), nh);
+    rng::PhiloxStream(o_.seed, id, rng::Stream::force_amplitude).uniform_open(ws.u_amp.data(), nh);
+    synth_->synthesise(psd_at_harmonics_.data(), df_, o_.amplitudes, ws.u_phase.data(), ws.u_amp.data(), ws.force.data());
+    for (double& f : ws.force) f /= o_.mass;
     // Pass 1 from rest over one period gives the forced part r; the periodic start is (I - Phi^N)^-1 r.
     double q = 0.0, v = 0.0;
-    for (std::size_t i = 0; i < n_; ++i) step_.advance(q, v, ws.force[i], ws.force[(i + 1) % n_]);
+    for (std::size_t i = 0; i < o_.samples; ++i) step_.advance(q, v, ws.force[i], ws.force[(i + 1) % o_.samples]);
     const Eigen::Vector2d start = periodic_inverse_ * Eigen::Vector2d(q, v);
     q = start(0);
     v = start(1);
-    const double c = 2.0 * zeta_ * omega_, k = omega_ * omega_;
-    for (std::size_t i = 0; i < n_; ++i) {
+    const double c = 2.0 * o_.damping_ratio * omega_, k = omega_ * omega_;
+    for (std::size_t i = 0; i < o_.samples; ++i) {
       ws.accel[i] = ws.force[i] - c * v - k * q;
-      step_.advance(q, v, ws.force[i], ws.force[(i + 1) % n_]);
+      step_.advance(q, v, ws.force[i], ws.force[(i + 1) % o_.samples]);
     }
-    welch_->psd(ws.accel.data(), n_, rows_->row(values, 0), ws.welch);
+    welch_->psd(ws.accel.data(), o_.samples, rows_->row(values, 0), ws.welch);
     rows_->finish(values);
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
     io::PsdEnsemble e = rows_->ensemble(sums);
-    e.welch_dof = static_cast<double>(sums.count) * welch_->equivalent_dof(n_);
+    e.welch_dof = static_cast<double>(sums.count) * welch_->equivalent_dof(o_.samples);
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
-    e.confidence = confidence_;
+    e.confidence = o_.confidence;
     io::write_psd_result(w, e);
 
     std::vector<double> exact(e.frequency.size());
     for (std::size_t i = 0; i < exact.size(); ++i)
-      exact[i] = random_oscillator_exact_psd(e.frequency[i], force_psd(e.frequency[i]), mass_, fn_, zeta_, fs_);
+      exact[i] = random_oscillator_exact_psd(e.frequency[i], force_psd(e.frequency[i]), o_.mass, o_.natural_frequency, o_.damping_ratio, o_.sample_rate);
     w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units,
             "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator");
     w.attribute("/reference/psd", "label", std::string("exact"));
@@ -145,22 +104,18 @@ class RandomOscillator final : public Scene {
     io::write_sensor_scale(w, "/reference", e.sensors);
     w.attach_scale("/reference/psd", "/reference/sensor", 0);
     w.attach_scale("/reference/psd", "/reference/frequency", 1);
-    w.write("/oscillator/force_psd", {1}, &level_, "N^2/Hz", "flat force PSD level");
-    w.attribute("/oscillator", "mass", mass_);
-    w.attribute("/oscillator", "natural_frequency", fn_);
-    w.attribute("/oscillator", "damping_ratio", zeta_);
-    w.attribute("/oscillator", "sample_rate", fs_);
+    w.write("/oscillator/force_psd", {1}, &o_.level, "N^2/Hz", "flat force PSD level");
+    w.attribute("/oscillator", "mass", o_.mass);
+    w.attribute("/oscillator", "natural_frequency", o_.natural_frequency);
+    w.attribute("/oscillator", "damping_ratio", o_.damping_ratio);
+    w.attribute("/oscillator", "sample_rate", o_.sample_rate);
   }
 
  private:
-  double force_psd(double f) const { return (f > 0.0 && f <= f_max_) ? level_ : 0.0; }
+  double force_psd(double f) const { return o_.force_psd(f); }
 
-  std::uint64_t seed_;
-  double mass_, fn_, zeta_, fs_;
-  spectral::Amplitudes mode_;
-  double level_, confidence_, band_min_, band_max_;
-  double f_max_ = 0.0, df_ = 0.0, omega_ = 0.0;
-  std::size_t n_ = 0;
+  RandomOscillatorSettings o_;
+  double df_ = 0.0, omega_ = 0.0;
   std::unique_ptr<spectral::WelchPlan> welch_;
   std::unique_ptr<PsdRows> rows_;
   std::unique_ptr<spectral::HarmonicSynthesiser> synth_;

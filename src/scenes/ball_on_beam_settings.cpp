@@ -1,0 +1,155 @@
+#include "src/scenes/ball_on_beam_settings.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "kernels/beam/contact_patch_filter.hpp"
+#include "kernels/beam/modal_beam.hpp"
+#include "kernels/beam/quadratic_hold_step.hpp"
+#include "kernels/contact/geometry.hpp"
+#include "kernels/integrators/exact_oscillator_step.hpp"
+#include "src/scenes/ball_on_beam.hpp"
+#include "src/scenes/study_welch.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::scenes {
+
+using study::Study;
+
+namespace {
+
+std::string g4(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+std::vector<double> sensor_positions(const Study& s, double length) {
+  auto v = s.numbers("sensors.positions");
+  if (v.empty()) s.refuse("sensors.positions", "lists no position; allowed: comma-separated positions in m");
+  for (double x : v)
+    if (x < 0.0 || x > length) s.refuse("sensors.positions", "position " + std::to_string(x) + " m lies outside the span [0, length]");
+  return v;
+}
+
+ContactModel contact_model(const Study& s) {
+  const std::string law = s.text("contact.law");
+  if (law == "table") return ContactModel::table;
+  if (law == "literal") return ContactModel::literal;
+  if (law == "hertz") return ContactModel::hertz;
+  return s.text("contact.blocked_force") == "solver" ? ContactModel::linearised_solver : ContactModel::linearised_spring;
+}
+
+beam::ContactLawKind law_kind(const BallOnBeamSettings& b) {
+  if (b.linearised()) return beam::ContactLawKind::linearised;
+  if (b.contact == ContactModel::table) return beam::ContactLawKind::table;
+  if (b.contact == ContactModel::literal) return beam::ContactLawKind::literal_stiffness;
+  return beam::ContactLawKind::hertz;
+}
+
+// The exact modal step of very high modes (omega h in the thousands) overflows double precision:
+// every realisation would be non-finite. Refused before any work, with the largest mode count
+// whose step is finite.
+void check_step_coefficients(const Study& s, const BallOnBeamSettings& b) {
+  if (b.dopri) return;
+  const double h = b.integration_step();
+  const beam::ModalBeam& m = b.model.beam;
+  for (int i = 0; i < m.modes(); ++i) {
+    const auto f = integrators::ExactOscillatorStep::make(m.omega(i), m.zeta(i), h);
+    bool ok = std::isfinite(f.a00) && std::isfinite(f.a01) && std::isfinite(f.a10) && std::isfinite(f.a11) &&
+              std::isfinite(f.b0) && std::isfinite(f.b1) && std::isfinite(f.c0) && std::isfinite(f.c1);
+    if (ok && b.step.hold == beam::ForceHold::quadratic) {
+      const auto q = beam::QuadraticHoldStep::make(m.omega(i), m.zeta(i), h);
+      for (double v : {q.a00, q.a01, q.a10, q.a11, q.bm, q.b0, q.b1, q.cm, q.c0, q.c1}) ok = ok && std::isfinite(v);
+    }
+    if (ok) continue;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
+                  m.modes(), i + 1, m.frequency(i), m.omega(i) * h);
+    s.refuse(s.integer("beam.modes") > 0 ? "beam.modes" : "beam.max_frequency",
+             std::string(buf) + "; allowed: at most " + std::to_string(i) + " modes at this step (or signal.integrator = dopri5)");
+  }
+}
+
+}  // namespace
+
+// The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
+// T_c = 2 pi sqrt(m_ball / k_contact) at the static load (kernels/README.md D-23). Coarser steps stay
+// finite but misstate loss of contact and the high-frequency levels, so they are refused.
+void check_contact_resolution(const Study& s, const BallOnBeamSettings& b, double k_contact) {
+  const double tc = 2.0 * M_PI * std::sqrt(b.model.ball.mass / k_contact);
+  const double h = b.integration_step();
+  if (h > tc / 20.0) {
+    const auto need = static_cast<long long>(std::ceil(20.0 / (tc * b.model.sample_rate)));
+    s.refuse("signal.substeps", "the integration step 1 / (sample_rate x substeps) = " + g4(h) +
+                                    " s exceeds the contact resolution limit dt <= T_c / 20 = " + g4(tc / 20.0) +
+                                    " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + g4(k_contact) +
+                                    " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
+                                    " at this sample rate");
+  }
+}
+
+BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
+  BallOnBeamSettings b({study_modal_beam(s), {}, {}, {}, s.real("signal.sample_rate"), sensor_positions(s, s.real("beam.length"))});
+  b.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
+  beam::BallOnBeamModel& m = b.model;
+  const double length = s.real("beam.length");
+  b.psd = texture_io::study_psd(s);
+  b.sensor_mean = s.boolean("sensors.average");
+  b.dopri = s.text("signal.integrator") == "dopri5";
+  b.rtol = s.real("signal.rtol");
+  b.confidence = s.real("spectrum.confidence");
+  b.band_min = s.real("spectrum.band_min");
+  b.band_max = s.real("spectrum.band_max");
+  b.time_histories = static_cast<std::size_t>(s.integer("output.time_histories"));
+  // Ball and its traverse.
+  const double radius = s.real("ball.radius");
+  m.ball.mass = 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density");
+  m.ball.gravity = s.real("ball.gravity");
+  m.traverse.x_start = s.real("ball.start");
+  m.traverse.x_end = s.real("ball.end");
+  m.traverse.speed = s.real("ball.speed");
+  if (!(m.traverse.x_end > m.traverse.x_start)) s.refuse("ball.end", "must exceed [ball] start");
+  if (m.traverse.x_end > length) s.refuse("ball.end", "lies beyond the span [0, length]");
+  // Contact.
+  b.law_name = s.text("contact.law");
+  b.contact = contact_model(s);
+  beam::ContactLaw& law = m.contact;
+  law.kind = law_kind(b);
+  law.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
+                                                     s.real("beam.youngs_modulus"), s.real("beam.poisson"));
+  law.radius = radius;
+  law.k0 = s.real("contact.k0");
+  law.damping = s.real("contact.damping");
+  law.loss = s.text("contact.loss") == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
+  const double hertz_compression = std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
+  b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
+  b.patch_half_width = s.boolean("contact.patch_filter") ? beam::hertz_half_width(radius, hertz_compression) : 0.0;
+  // Integration step.
+  b.step.substeps = static_cast<int>(s.integer("signal.substeps"));
+  b.step.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
+  // Roughness line over the whole span, so the patch filter and the traverse never run off it.
+  // One roughness sample per integration step by default: the interpolation between samples then
+  // low-passes the excitation only near the step's own Nyquist frequency.
+  b.spacing = s.real("roughness.spacing") > 0.0 ? s.real("roughness.spacing")
+                                                : m.traverse.speed / (m.sample_rate * static_cast<double>(b.step.substeps));
+  b.line_samples = static_cast<std::size_t>(std::floor(length / b.spacing)) + 1;
+  if (b.line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
+  if (!b.uses_table() && !b.blocked_solver())
+    check_contact_resolution(s, b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
+  check_step_coefficients(s, b);
+  // Record and spectra.
+  b.samples = beam::output_samples(m);
+  b.skip = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * m.sample_rate));
+  if (b.skip >= b.samples) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
+  const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
+  if (segment > b.samples - b.skip)
+    s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
+                                     " samples = ((end - start) / speed - skip_start) x sample_rate)");
+  b.welch = study_welch_config(s, m.sample_rate);
+  return b;
+}
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,60 @@
+#pragma once
+// Scene `ball-on-beam`'s study keys read once, into one value, with the checks that span several
+// keys (the record against the span, the step against the contact's bounce and the modes, the
+// Welch segment against the record). The scene (ball_on_beam.cpp) builds from this value only;
+// the texture, surface and table stages read their own sections (texture_keys, stiffness_keys).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+
+#include "kernels/beam/ball_on_beam.hpp"
+#include "kernels/beam/exact_step_integrator.hpp"
+#include "kernels/spectral/welch.hpp"
+#include "kernels/texture/psd.hpp"
+
+namespace rollspec::study {
+class Study;
+}
+
+namespace rollspec::scenes {
+
+// One value for the contact law and the blocked force's source ([contact] law, blocked_force).
+enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver };
+
+struct BallOnBeamSettings {
+  explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}
+  std::uint64_t seed = 0;
+  // Beam, ball, traverse, sensors, output rate and the contact law as far as the keys fix it;
+  // the table stages complete the law (compression table, or k0 of the blocked force).
+  beam::BallOnBeamModel model;
+  ContactModel contact = ContactModel::hertz;
+  std::string law_name;            // [contact] law as written, for the result file
+  texture::Psd psd;                // [texture]
+  double spacing = 0.0;            // line texture sample spacing, m
+  std::size_t line_samples = 0;    // over the whole span
+  double patch_half_width = 0.0;   // Hertz half-width at the weight; 0: no patch filter
+  double static_compression = 0.0; // point laws: Hertz (or weight / k0) at the weight
+  beam::ExactStepOptions step;
+  bool dopri = false;              // Dormand-Prince reference instead of the exact step
+  double rtol = 1e-8;
+  std::size_t samples = 0, skip = 0;  // output samples per record, left out at its start
+  spectral::WelchConfig welch;
+  bool sensor_mean = true;
+  double confidence = 0.95, band_min = 0.0, band_max = 0.0;
+  std::size_t time_histories = 0;
+
+  bool linearised() const { return contact == ContactModel::linearised_spring || contact == ContactModel::linearised_solver; }
+  bool uses_table() const { return contact == ContactModel::table || contact == ContactModel::literal; }
+  bool blocked_solver() const { return contact == ContactModel::linearised_solver; }
+  double weight() const { return model.ball.mass * model.ball.gravity; }
+  double integration_step() const { return 1.0 / (model.sample_rate * static_cast<double>(step.substeps)); }
+};
+
+BallOnBeamSettings read_ball_on_beam_settings(const study::Study& s);
+
+// Refuses (at [signal] substeps) a step that does not resolve the ball's bounce on a contact
+// stiffness k_contact at the weight; the table laws call it again once their stiffness is known.
+void check_contact_resolution(const study::Study& s, const BallOnBeamSettings& b, double k_contact);
+
+}  // namespace rollspec::scenes

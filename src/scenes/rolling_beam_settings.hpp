@@ -1,0 +1,33 @@
+#pragma once
+// Scene `rolling-beam`'s study keys and their reading, once, into the model they describe (a
+// beam, a disc or one of seed 000's builders on planes), the solver and run options, with the
+// checks that span several keys (normals per point, clamps of a disc, imposed series, the
+// integrator against beam elements, the step against the run length).
+#include <string>
+#include <vector>
+
+#include "kernels/rolling/examples.hpp"
+#include "kernels/rolling/model.hpp"
+#include "kernels/rolling/solver.hpp"
+#include "src/study/key_spec.hpp"
+
+namespace rollspec::study {
+class Study;
+}
+
+namespace rollspec::scenes {
+
+std::vector<study::KeySpec> rolling_beam_keys();
+
+struct RollingBeamSettings {
+  rolling::Model model;
+  rolling::SolverOptions solver;
+  rolling::RunOptions run;
+  std::vector<int> record;          // recorded nodes
+  rolling::FlyingBeamParams flying; // kind = flying-beam
+  std::string step_where;           // "file:line: [analysis] dt = ..." for a run that fails
+};
+
+RollingBeamSettings read_rolling_beam_settings(const study::Study& s);
+
+}  // namespace rollspec::scenes
