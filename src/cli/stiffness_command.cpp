@@ -56,8 +56,14 @@ int stiffness_command(const Args& args) {
   for (std::size_t j = 0; j < t.approach.size(); ++j)
     std::printf("%14.6g %14.6g %12.4g %14.6g %14.6g %12.4g %10.1f\n", t.approach[j], t.force_mean[j], t.force_std[j],
                 t.stiffness_mean[j], t.contact_area_mean[j], t.plastic_cells_mean[j], t.iterations_mean[j]);
-  std::printf("fit: P = %.6g * delta^%.4f (max relative error %.3g)\n", t.fit_coefficient, t.fit_exponent,
-              t.fit_max_relative_error);
+  // The fit is a summary; one beyond its tolerance says so on the same line (the dynamics use the table).
+  if (t.fit_usable())
+    std::printf("fit: P = %.6g * delta^%.4f (max relative error %.3g, within the %.0f %% tolerance)\n", t.fit_coefficient,
+                t.fit_exponent, t.fit_max_relative_error, 100.0 * t.fit_tolerance);
+  else
+    std::printf("fit: NOT USABLE: P = %.6g * delta^%.4f misses the table by up to %.0f %% (tolerance %.0f %%); a power law "
+                "does not describe this table, use the table itself (the dynamics do)\n",
+                t.fit_coefficient, t.fit_exponent, 100.0 * t.fit_max_relative_error, 100.0 * t.fit_tolerance);
   const double w = pair.weight;
   const double delta_h = std::pow(3.0 * w / (4.0 * t.effective_modulus * std::sqrt(t.ball_radius)), 2.0 / 3.0);
   const double k_h = 2.0 * t.effective_modulus * std::sqrt(t.ball_radius * delta_h);

@@ -280,6 +280,10 @@ void StiffnessTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/stiffness/fit", "coefficient", fit_coefficient);
   w.attribute("/stiffness/fit", "exponent", fit_exponent);
   w.attribute("/stiffness/fit", "max_relative_error", fit_max_relative_error);
+  w.attribute("/stiffness/fit", "tolerance", fit_tolerance);
+  w.attribute("/stiffness/fit", "usable", std::string(fit_usable() ? "yes" : "no"));
+  w.attribute("/stiffness/fit", "note",
+              std::string("a summary of the table; the dynamics interpolate the table itself, never this fit"));
 }
 
 StiffnessTable resolve_table(const study::Study& s, double ball_radius, double effective_modulus, bool rebuild, bool quiet,

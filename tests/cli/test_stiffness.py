@@ -22,11 +22,32 @@ def weight_line(stdout):
     return dict(zip(("weight", "approach", "k", "hertz_approach", "hertz_k"), nums))
 
 
+def check_fit(table, stdout):
+    """The printed power-law summary against an independent log-log least-squares fit of the file's
+    table: its error is reported, and a fit beyond its tolerance is flagged in print and file."""
+    with h5py.File(table) as f:
+        d, p = f["/stiffness/approach"][:], f["/stiffness/force_mean"][:]
+        fit = f["/stiffness/fit"].attrs
+        c, n, err, tol = (float(fit[k]) for k in ("coefficient", "exponent", "max_relative_error", "tolerance"))
+        usable = fit["usable"].decode() if isinstance(fit["usable"], bytes) else fit["usable"]
+    sel = p > 0
+    n_ref, lnc_ref = np.polyfit(np.log(d[sel]), np.log(p[sel]), 1)
+    err_ref = np.abs(np.exp(lnc_ref) * d[sel] ** n_ref / p[sel] - 1).max()
+    assert abs(n / n_ref - 1) < 1e-9 and abs(c / np.exp(lnc_ref) - 1) < 1e-6 and abs(err / err_ref - 1) < 1e-6
+    line = next(l for l in stdout.splitlines() if l.startswith("fit:"))
+    assert usable == ("yes" if err <= tol else "no")
+    assert ("NOT USABLE" in line) == (err > tol), line
+    return n, err
+
+
 def test_hertz_table_reuse_and_refusal(tmp_path):
     study = copy_study(tmp_path, "hertz.ini")
     r = run(["stiffness", study, "--quiet"])
     assert r.returncode == 0, r.stderr
     assert "built" in r.stdout
+    # A smooth (Hertz) table is a power law P ~ delta^1.5: its fit is usable and says so.
+    n, err = check_fit(next((tmp_path / "tables").glob("stiffness-*.h5")), r.stdout)
+    assert abs(n - 1.5) < 0.01 and err < 0.05 and "within the 5 % tolerance" in r.stdout
     w = weight_line(r.stdout)
     assert abs(w["k"] / w["hertz_k"] - 1) < 1e-3 and abs(w["approach"] / w["hertz_approach"] - 1) < 1e-3
     tables = list((tmp_path / "tables").glob("stiffness-*.h5"))
@@ -98,6 +119,7 @@ def test_rough_table_is_reproducible_and_softer_than_hertz(tmp_path):
         assert (np.diff(fa["/stiffness/force_mean"][:]) > 0).all()
     w = weight_line(r.stdout)
     assert w["k"] < w["hertz_k"]
+    check_fit(a, r.stdout)
 
 
 def test_ball_on_beam_with_table_law(tmp_path):
@@ -136,3 +158,16 @@ def test_rough_ball_on_rough_flat_uses_the_composite_surface(tmp_path):
         assert fa["/stiffness"].attrs["input_hash"] != fb["/stiffness"].attrs["input_hash"]
     r = run(["stiffness", copy_study(tmp_path, "hertz.ini"), "--quiet", "--set", "stiffness.ball_rms=1e-7"])
     assert r.returncode == 78 and "ball_rms" in r.stderr and "surface = rough" in r.stderr
+
+
+def test_a_fit_beyond_its_tolerance_is_flagged(tmp_path):
+    # From first touch of a rough surface (approach up to 0.3 um, 12 steps) the force does not
+    # follow one power law: the summary misses by far more than 5 % and must say so.
+    study = copy_study(tmp_path, "seed002-table.ini")
+    out = tmp_path / "t.h5"
+    sets = [a for kv in ("surface.nx=64", "surface.ny=64", "surface.spacing=2e-6", "stiffness.realisations=3",
+                         "stiffness.steps=12", "stiffness.approach_max=0.3e-6") for a in ("--set", kv)]
+    r = run(["stiffness", study, "--out", out, "--quiet", *sets])
+    assert r.returncode == 0, r.stderr
+    _, err = check_fit(out, r.stdout)
+    assert err > 0.1 and "NOT USABLE" in r.stdout
