@@ -127,26 +127,50 @@ LinearReference linear_reference(const LinearReferenceInput& in, const std::func
   // Cross-spectra per position block, smoothed by the Welch kernel truncated at +-4 bins.
   const std::size_t ns = in.sensors.size(), pairs = ns * (ns + 1) / 2, reach = 4 * refine;
   const auto kern = spectral::welch_kernel(welch, refine);
-  const std::size_t nk = kern.size();
-  const std::vector<double> band(fine.begin(), fine.begin() + static_cast<std::ptrdiff_t>(half + 1));
+  const std::size_t nk = kern.size(), nb = half + 1;
+  const std::vector<double> band(fine.begin(), fine.begin() + static_cast<std::ptrdiff_t>(nb));
+  // The truncated kernel's taps by offset c - j in [-reach, reach] and, per bin, their sum over the
+  // offsets inside [0, half]: the same for every block.
+  std::vector<double> taps(2 * reach + 1), norm(nf, 0.0);
+  for (std::size_t d = 0; d <= 2 * reach; ++d) taps[d] = kern[(nk + d - reach) % nk];
+  for (std::size_t k = 0; k < nf; ++k) {
+    const std::size_t c = k * refine, j0 = c > reach ? c - reach : 0, j1 = std::min(half, c + reach);
+    for (std::size_t j = j0; j <= j1; ++j) norm[k] += taps[c + reach - j];
+  }
   std::vector<std::complex<double>> cross((edges.size() - 1) * pairs * nf, 0.0);
-  for (std::size_t p = 0; p + 1 < edges.size(); ++p) {
+  // Blocks are independent (each writes its own slice of cross): the same result on any thread.
+  const auto blocks = static_cast<std::ptrdiff_t>(edges.size() - 1);
+#pragma omp parallel
+  {
+  std::vector<std::complex<double>> product(pairs * nb);
+#pragma omp for schedule(dynamic)
+  for (std::ptrdiff_t pp = 0; pp < blocks; ++pp) {
+    const auto p = static_cast<std::size_t>(pp);
+#pragma omp critical(linear_reference_progress)
     done();
     if (pos.weight[p] == 0.0) continue;  // no segment sees this block
     const auto H = linear_response_transfer(*in.beam, in.ball_mass, ex.k0, in.damping, pos.position[p], in.sensors, band,
                                             Excitation::blocked_force);
+    // exc H_1 conj(H_2) once per fine frequency, then the kernel's weighted sums per bin.
+    std::size_t q = 0;
+    for (std::size_t s1 = 0; s1 < ns; ++s1)
+      for (std::size_t s2 = s1; s2 < ns; ++s2, ++q)
+        for (std::size_t j = 0; j < nb; ++j) product[q * nb + j] = exc[j] * H[s1][j] * std::conj(H[s2][j]);
     for (std::size_t k = 0; k < nf; ++k) {
       const std::size_t c = k * refine, j0 = c > reach ? c - reach : 0, j1 = std::min(half, c + reach);
-      double norm = 0.0;
-      for (std::size_t j = j0; j <= j1; ++j) norm += kern[(c + nk - j) % nk];
-      std::size_t q = 0;
-      for (std::size_t s1 = 0; s1 < ns; ++s1)
-        for (std::size_t s2 = s1; s2 < ns; ++s2, ++q) {
-          std::complex<double> acc = 0.0;
-          for (std::size_t j = j0; j <= j1; ++j) acc += kern[(c + nk - j) % nk] * exc[j] * H[s1][j] * std::conj(H[s2][j]);
-          cross[(p * pairs + q) * nf + k] = acc / norm;
+      const double* t = taps.data() + (c + reach - j1);  // tap of j1, then j1 - 1, ...
+      for (q = 0; q < pairs; ++q) {
+        const std::complex<double>* pq = product.data() + q * nb;
+        double re = 0.0, im = 0.0;
+        for (std::size_t j = j0; j <= j1; ++j) {
+          const double w = t[j1 - j];
+          re += w * pq[j].real();
+          im += w * pq[j].imag();
         }
+        cross[(p * pairs + q) * nf + k] = {re / norm[k], im / norm[k]};
+      }
     }
+  }
   }
   for (std::size_t s = 0; s < ns; ++s) {
     std::vector<std::complex<double>> own((edges.size() - 1) * nf);

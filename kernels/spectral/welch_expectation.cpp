@@ -44,20 +44,36 @@ std::vector<double> welch_kernel(const WelchPlan& plan, std::size_t refine) {
   return kernel;
 }
 
+// The integral on the fine grid is a circular convolution: with g_j = trapezoid_j S_j folded onto
+// the circle of N = L refine points (S beyond f_s/2 aliases, K being N-periodic) and K even,
+//   E[P_k] = df (C[M k] + C[-M k]),  C = g (*) K,
+// one FFT product instead of n_freq x n_fine terms.
 std::vector<double> welch_expectation(const WelchPlan& plan, const std::vector<double>& fine, std::size_t refine) {
   check(plan, fine, refine);
-  const std::size_t N = plan.window().size() * refine, nf = plan.n_freq(), nfine = fine.size();
+  const std::size_t N = plan.window().size() * refine, nf = plan.n_freq(), nfine = fine.size(), nc = N / 2 + 1;
   const double dfine = plan.config().sample_rate / static_cast<double>(N);
   const std::vector<double> kernel = welch_kernel(plan, refine);
+  const RealBuffer g(N), k(N);
+  const ComplexBuffer G(nc), K(nc);
+  const int n = static_cast<int>(N);
+  const FftwPlan forward_g([&] { return fftw_plan_dft_r2c_1d(n, g.data(), G.data(), FFTW_ESTIMATE); }, "Welch expectation (r2c)");
+  const FftwPlan forward_k([&] { return fftw_plan_dft_r2c_1d(n, k.data(), K.data(), FFTW_ESTIMATE); }, "Welch expectation (r2c)");
+  const FftwPlan backward([&] { return fftw_plan_dft_c2r_1d(n, G.data(), g.data(), FFTW_ESTIMATE); }, "Welch expectation (c2r)");
+  std::fill(g.data(), g.data() + N, 0.0);
+  for (std::size_t j = 0; j < nfine; ++j) g[j % N] += trapezoid(j, nfine) * fine[j];
+  std::copy(kernel.begin(), kernel.end(), k.data());
+  fftw_execute(forward_g.get());
+  fftw_execute(forward_k.get());
+  for (std::size_t m = 0; m < nc; ++m) {
+    const double re = G[m][0] * K[m][0] - G[m][1] * K[m][1], im = G[m][0] * K[m][1] + G[m][1] * K[m][0];
+    G[m][0] = re;
+    G[m][1] = im;
+  }
+  fftw_execute(backward.get());  // unnormalised: N C
   std::vector<double> out(nf, 0.0);
-  for (std::size_t k = 0; k < nf; ++k) {
-    const std::size_t mk = k * refine;  // f_k on the fine grid
-    double acc = 0.0;
-    for (std::size_t j = 0; j < nfine; ++j) {
-      const std::size_t minus = (mk + N - j) % N, plus = (mk + j) % N;
-      acc += trapezoid(j, nfine) * fine[j] * (kernel[minus] + kernel[plus]);
-    }
-    out[k] = acc * dfine;
+  for (std::size_t i = 0; i < nf; ++i) {
+    const std::size_t mk = (i * refine) % N;
+    out[i] = std::max(0.0, (g[mk] + g[(N - mk) % N]) * dfine / static_cast<double>(N));
   }
   return out;
 }

@@ -105,7 +105,12 @@ class BallOnBeam final : public Scene {
                                : "only the linearised law uses F0"}});
     }
     add_stages({{"dynamics", StageStatus::run, b_.dopri ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
-                {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"}});
+                {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
+                {"reference", writes_reference() ? StageStatus::run : StageStatus::skipped,
+                 !linearised()  ? "only the linearised law has a frequency-domain reference"
+                 : b_.reference ? "frequency-domain PSD of the linearised model, its expected Welch estimate and the "
+                                  "range of the ensemble mean, once after the ensemble"
+                                : "[output] reference = false"}});
   }
 
   void prepare(bool quiet, bool rebuild) override {
@@ -269,7 +274,7 @@ class BallOnBeam final : public Scene {
     w.attribute("/ball", "mass", b_.model.ball.mass);
     w.attribute("/ball", "speed", b_.model.traverse.speed);
 
-    if (linearised()) write_linear_reference(w, e.frequency, e.sensors, K);
+    if (writes_reference()) write_linear_reference(w, e.frequency, e.sensors, K);
     if (b_.time_histories) write_time_histories(w, sums.only);
   }
 
@@ -362,6 +367,7 @@ class BallOnBeam final : public Scene {
   bool linearised() const { return b_.linearised(); }
   bool uses_table() const { return b_.uses_table(); }
   bool blocked_solver() const { return b_.blocked_solver(); }
+  bool writes_reference() const { return b_.linearised() && b_.reference; }
   bool quiet_ = false;
   stiffness::BlockedForceTable blocked_;
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;

@@ -79,6 +79,10 @@ std::vector<KeySpec> ball_on_beam_keys() {
                "time at the start of each record left out of the PSDs (start-up of the random response)", std::string("0"),
                0.0, inf),
       integer_key("output", "time_histories", "store time histories of realisations 0..n-1", std::string("0"), 0, 1000),
+      bool_key("output", "reference",
+               "linearised law: also write the frequency-domain reference (/reference: expected Welch PSD and the "
+               "range that holds the ensemble mean), computed once after the ensemble",
+               std::string("true")),
   };
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
   for (auto& t : texture_io::surface_keys()) k.push_back(t);

@@ -104,6 +104,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.band_min = s.real("spectrum.band_min");
   b.band_max = s.real("spectrum.band_max");
   b.time_histories = static_cast<std::size_t>(s.integer("output.time_histories"));
+  b.reference = s.boolean("output.reference");
   // Ball and its traverse.
   const double radius = s.real("ball.radius");
   m.ball.mass = 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density");

@@ -43,6 +43,7 @@ struct BallOnBeamSettings {
   bool sensor_mean = true;
   double confidence = 0.95, band_min = 0.0, band_max = 0.0;
   std::size_t time_histories = 0;
+  bool reference = true;           // [output] reference (written for the linearised law only)
 
   bool linearised() const { return contact == ContactModel::linearised_spring || contact == ContactModel::linearised_solver; }
   bool uses_table() const { return contact == ContactModel::table || contact == ContactModel::literal; }

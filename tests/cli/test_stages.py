@@ -57,3 +57,26 @@ def test_a_table_built_by_a_run_is_cached_in_the_next_plan(tmp_path, study, stag
     assert status == "run" and reason.startswith("REFUSED unless --rebuild"), damaged.stdout
     refused = run([command, s, *args, *extra, *out, "--force"] if command == "run" else [command, s, *args])
     assert refused.returncode == 65, refused.stderr
+
+
+@pytest.mark.parametrize("sets,expected", [([], "run"), (["--set", "output.reference=false"], "skipped"),
+                                           (["--set", "contact.law=hertz"], "skipped")])
+def test_the_reference_is_a_stage_and_runs_as_planned(tmp_path, sets, expected):
+    # The frequency-domain reference of the linearised law: listed by plan, written exactly when
+    # the plan says it runs; no other result changes with it.
+    study = SOURCE / "studies" / "seed002-rig-1ms.ini"
+    common = ["--set", "study.realisations=2", "--set", "ball.end=0.12"]
+    plan = run(["plan", study, *common, *sets])
+    assert plan.returncode == 0, plan.stderr
+    assert stage_status(plan.stdout, "reference")[0] == expected, plan.stdout
+    out = tmp_path / "r.h5"
+    r = run(["run", study, "--out", out, "--quiet", *common, *sets])
+    assert r.returncode == 0, r.stderr
+    with h5py.File(out) as f:
+        assert ("/reference/psd" in f) == (expected == "run")
+        psd = f["/psd/mean"][:]
+    if sets and sets[1] == "output.reference=false":
+        with_ref = tmp_path / "with.h5"
+        assert run(["run", study, "--out", with_ref, "--quiet", *common]).returncode == 0
+        with h5py.File(with_ref) as f:
+            assert f["/psd/mean"][:].tobytes() == psd.tobytes()
