@@ -1,6 +1,7 @@
 #include "kernels/beam/linear_response.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <complex>
 #include <stdexcept>
 
@@ -13,7 +14,23 @@ inline std::complex<double> reciprocal(std::complex<double> z) {
   const double d = 1.0 / (z.real() * z.real() + z.imag() * z.imag());
   return {z.real() * d, -z.imag() * d};
 }
+
+inline std::complex<double> receptance(const ModalBeam& b, int i, double modal_mass, double w) {
+  const double wn = b.omega(i);
+  return reciprocal({modal_mass * (wn * wn - w * w), modal_mass * 2.0 * b.zeta(i) * wn * w});
+}
 }  // namespace
+
+std::vector<std::complex<double>> modal_receptances(const ModalBeam& b, const std::vector<double>& freq) {
+  const auto n = static_cast<std::size_t>(b.modes());
+  std::vector<std::complex<double>> out(freq.size() * n, 0.0);
+  for (std::size_t k = 0; k < freq.size(); ++k) {
+    const double w = 6.28318530717958647692 * freq[k];
+    if (!(w > 0.0)) continue;
+    for (std::size_t i = 0; i < n; ++i) out[k * n + i] = receptance(b, static_cast<int>(i), b.modal_mass(), w);
+  }
+  return out;
+}
 
 LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, double c0,
                                    const std::vector<double>& xi, const std::vector<double>& sensors,
@@ -57,10 +74,7 @@ LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, dou
     const auto k = static_cast<std::size_t>(kk);
     const double w = two_pi * freq[k];
     if (!(w > 0.0)) continue;
-    for (int i = 0; i < n; ++i) {
-      const double wn = b.omega(i);
-      modal[i] = reciprocal(cd(m * (wn * wn - w * w), m * 2.0 * b.zeta(i) * wn * w));
-    }
+    for (int i = 0; i < n; ++i) modal[i] = receptance(b, i, m, w);
     const cd kc(k0, w * c0), inv_kc = reciprocal(kc);
     const double alpha_ball = -1.0 / (m2 * w * w);
     for (std::size_t p = 0; p < xi.size(); ++p) {
@@ -90,7 +104,8 @@ LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, dou
 std::vector<std::vector<std::complex<double>>> linear_response_transfer(const ModalBeam& b, double m2, double k0,
                                                                         double c0, double xi,
                                                                         const std::vector<double>& sensors,
-                                                                        const std::vector<double>& freq, Excitation kind) {
+                                                                        const std::vector<double>& freq, Excitation kind,
+                                                                        const std::vector<std::complex<double>>* modal) {
   if (!(m2 > 0.0 && k0 > 0.0 && c0 >= 0.0)) throw std::invalid_argument("linear_response_transfer: need m2 > 0, k0 > 0, c0 >= 0");
   using cd = std::complex<double>;
   const int n = b.modes();
@@ -100,17 +115,17 @@ std::vector<std::vector<std::complex<double>>> linear_response_transfer(const Mo
   const double res = b.residual_flexibility(xi);
   for (std::size_t s = 0; s < sensors.size(); ++s) b.shapes(sensors[s], ps.data() + s * n);
   std::vector<std::vector<cd>> out(sensors.size(), std::vector<cd>(freq.size(), 0.0));
+  std::vector<cd> alpha_s(sensors.size());
   for (std::size_t k = 0; k < freq.size(); ++k) {
     const double w = two_pi * freq[k];
     if (!(w > 0.0)) continue;
     const cd kc(k0, w * c0);
     cd alpha_b = 0.0;
-    std::vector<cd> alpha_s(sensors.size(), 0.0);
+    std::fill(alpha_s.begin(), alpha_s.end(), cd(0.0));
     for (int i = 0; i < n; ++i) {
-      const double wn = b.omega(i);
-      const cd modal = reciprocal(cd(m * (wn * wn - w * w), m * 2.0 * b.zeta(i) * wn * w));
-      alpha_b += pc[i] * pc[i] * modal;
-      for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] += ps[s * n + i] * pc[i] * modal;
+      const cd r = modal ? (*modal)[k * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)] : receptance(b, i, m, w);
+      alpha_b += pc[i] * pc[i] * r;
+      for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] += ps[s * n + i] * pc[i] * r;
     }
     const cd inv_kc = reciprocal(kc);
     cd total = inv_kc + alpha_b - 1.0 / (m2 * w * w) + res * k0 * inv_kc;  // (B32), as linear_response_psd

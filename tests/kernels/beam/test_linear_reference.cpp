@@ -2,6 +2,7 @@
 // B13, B34a-c, B35a; D-16, D-20) against what it must reduce to in simple cases.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/linear_reference.hpp"
 #include "kernels/beam/linear_response.hpp"
+#include "kernels/spectral/welch_expectation.hpp"
 
 using namespace rollspec::beam;
 using rollspec::spectral::WelchConfig;
@@ -137,5 +139,50 @@ TEST_CASE("linear reference: the mean of two sensors at one place is that sensor
     CHECK(ref.dof[2 * nb + k] == doctest::Approx(ref.dof[k]).epsilon(1e-10));
     // the ball moves: fewer dof than a stationary record (B34b)
     CHECK(ref.dof[k] <= in.realisations * welch.equivalent_dof(n) * (1.0 + 1e-12));
+  }
+}
+
+TEST_CASE("linear reference equals the plain path: the modal PSD on the whole fine grid, then the direct Welch integral") {
+  // Several weighted positions, modes above f_s/2 (the sparse grid there must follow them), a
+  // blocked force that continues to the step's Nyquist frequency and aliases: the fast reference
+  // against linear_response_psd + welch_expectation_direct on every fine frequency.
+  for (int modes : {12, 3}) {  // modes above f_s/2 (every fine point computed there), none (sparse)
+  const ModalBeam beam(test::rig_beam(), {modes, 0.0}, {0.02, {}});
+  WelchConfig c = welch_config();
+  c.segment = 64;
+  c.overlap = 32;
+  const WelchPlan welch(c);
+  const std::size_t n = 1024;
+  LinearReferenceInput in = white_at_one_position(beam, welch, n, {0.065, 0.195, 0.26}, 1.0);
+  in.sensor_mean = true;
+  in.excitation.time_psd = [](double f) { return 1e-4 / (1.0 + std::pow(f / 700.0, 2)); };
+  in.positions.edges = {0, 300, 700, n};
+  in.positions.position = {0.11, 0.16, 0.23};
+  in.positions.weight = {1.0, 2.5, 0.7};
+  REQUIRE((beam.frequency(beam.modes() - 1) > 0.5 * c.sample_rate) == (modes == 12));
+  const LinearReference ref = linear_reference(in);
+  const std::size_t half = in.refine * (welch.n_freq() - 1), nfine = 4 * half + 1;
+  std::vector<double> fine(nfine);
+  for (std::size_t j = 0; j < nfine; ++j) fine[j] = welch.frequency_step() / static_cast<double>(in.refine) * static_cast<double>(j);
+  const auto exc = reference_excitation(in.excitation, fine);
+  const auto plain = linear_response_psd(beam, in.ball_mass, in.excitation.k0, in.damping, in.positions.position, in.sensors,
+                                         fine, exc, Excitation::blocked_force, in.positions.weight);
+  std::vector<std::vector<double>> rows = plain.sensor_psd;
+  std::vector<double> mean(nfine, 0.0);
+  for (const auto& r : rows)
+    for (std::size_t j = 0; j < nfine; ++j) mean[j] += r[j] / 3.0;
+  rows.push_back(mean);
+  REQUIRE(ref.rows == 4);
+  double worst = 0.0;
+  for (std::size_t r = 0; r < 4; ++r) {
+    const auto expect = rollspec::spectral::welch_expectation_direct(welch, rows[r], in.refine);
+    for (std::size_t k = 1; k < ref.bins; ++k) {
+      CHECK(std::abs(ref.raw[r * ref.bins + k] / rows[r][k * in.refine] - 1.0) < 1e-12);
+      worst = std::max(worst, std::abs(ref.psd[r * ref.bins + k] / expect[k] - 1.0));
+    }
+  }
+  // Dense above f_s/2 where modes lie there: the plain sum to rounding; else interpolated between
+  // one point per Welch bin, which rounds off anti-resonances of the aliased part.
+  CHECK(worst < (modes == 12 ? 1e-12 : 1e-2));
   }
 }

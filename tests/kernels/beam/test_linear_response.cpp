@@ -94,6 +94,11 @@ TEST_CASE("weighted position average and complex transfer agree with single-posi
       CHECK(std::norm(H[0][k]) * g[k] == doctest::Approx(one.sensor_psd[0][k]).epsilon(1e-12));
       CHECK(std::norm(H[1][k]) * g[k] == doctest::Approx(one.sensor_psd[1][k]).epsilon(1e-12));
     }
+    // Receptances computed once for many positions give the same transfer to the last bit.
+    const auto modal = modal_receptances(beam, f);
+    const auto Hm = linear_response_transfer(beam, m2, k0, c0, xi[p], sensors, f, Excitation::blocked_force, &modal);
+    for (std::size_t s = 0; s < sensors.size(); ++s)
+      for (std::size_t k = 0; k < f.size(); ++k) CHECK(Hm[s][k] == H[s][k]);
   }
   for (std::size_t k = 0; k < f.size(); ++k) CHECK(avg.sensor_psd[1][k] == doctest::Approx(expect[k]).epsilon(1e-12));
   CHECK_THROWS(linear_response_psd(beam, m2, k0, c0, xi, sensors, f, g, Excitation::blocked_force, {1.0, 2.0}));

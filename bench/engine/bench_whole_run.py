@@ -1,0 +1,65 @@
+#!/usr/bin/python3
+"""Whole `rollspec run` commands as a user waits for them: wall and CPU time from /usr/bin/time,
+each case repeated and interleaved with the others (so a slow spell of the machine hits all of them
+alike), medians reported. Prints a Markdown table for the README.
+
+  /usr/bin/python3 bench/engine/bench_whole_run.py [--bin build/release/rollspec]
+      [--study studies/seed002-rig-1ms.ini] [--realisations 1000] [--repeats 5]
+
+Cases: 1 realisation (the fixed cost: set-up, the reference, the file), K realisations on 1 and on
+2 threads (parallel efficiency t1 / (2 t2)), and K on 2 threads without the reference.
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+
+def timed(cmd, threads):
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    with tempfile.NamedTemporaryFile("r", suffix=".time") as t:
+        r = subprocess.run(["/usr/bin/time", "-f", "%e %U %S %M", "-o", t.name, *cmd], capture_output=True, text=True,
+                           env=env)
+        if r.returncode != 0:
+            sys.exit(f"failed: {' '.join(map(str, cmd))}\n{r.stderr}")
+        wall, user, system, rss = t.read().split()[-4:]
+    return float(wall), float(user) + float(system), int(rss)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", default="build/release/rollspec")
+    ap.add_argument("--study", default="studies/seed002-rig-1ms.ini")
+    ap.add_argument("--realisations", type=int, default=1000)
+    ap.add_argument("--repeats", type=int, default=5)
+    a = ap.parse_args()
+    K = a.realisations
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "r.h5"
+        base = [a.bin, "run", a.study, "--out", out, "--force", "--quiet"]
+        cases = {
+            "1 realisation, 2 threads": (base + ["--set", "study.realisations=1"], 2),
+            f"{K} realisations, 1 thread": (base + ["--set", f"study.realisations={K}"], 1),
+            f"{K} realisations, 2 threads": (base + ["--set", f"study.realisations={K}"], 2),
+            f"{K} realisations, 2 threads, no reference": (
+                base + ["--set", f"study.realisations={K}", "--set", "output.reference=false"], 2),
+        }
+        runs = {name: [] for name in cases}
+        for _ in range(a.repeats):
+            for name, (cmd, threads) in cases.items():
+                runs[name].append(timed(cmd, threads))
+    med = {n: (statistics.median(r[0] for r in v), statistics.median(r[1] for r in v)) for n, v in runs.items()}
+    print(f"whole `rollspec run {a.study}`, median of {a.repeats} interleaved runs (/usr/bin/time)\n")
+    print("| case | wall | CPU |")
+    print("|---|---|---|")
+    for n, (w, c) in med.items():
+        print(f"| {n} | {w:.2f} s | {c:.2f} s |")
+    t1, t2 = med[f"{K} realisations, 1 thread"][0], med[f"{K} realisations, 2 threads"][0]
+    print(f"\nparallel efficiency of the whole command: {t1 / (2 * t2):.2f}")
+
+
+if __name__ == "__main__":
+    main()
