@@ -137,6 +137,11 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.spacing = s.real("roughness.spacing") > 0.0 ? s.real("roughness.spacing")
                                                 : m.traverse.speed / (m.sample_rate * static_cast<double>(b.step.substeps));
   b.line_samples = static_cast<std::size_t>(std::floor(length / b.spacing)) + 1;
+  // A spacing that does not divide the span leaves the last sample short of it: the line must still
+  // reach the traverse's end and the contact patch around it.
+  const double reach = m.traverse.x_end + b.patch_half_width;
+  if (static_cast<double>(b.line_samples - 1) * b.spacing < reach)
+    b.line_samples = static_cast<std::size_t>(std::ceil(reach / b.spacing)) + 1;
   if (b.line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
   if (!b.uses_table() && !b.blocked_solver())
     check_contact_resolution(s, b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));

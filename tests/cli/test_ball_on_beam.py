@@ -4,6 +4,7 @@ frequency-domain solution."""
 import re
 
 import h5py
+import pytest
 import numpy as np
 
 from conftest import SOURCE, assert_bitwise_equal, run
@@ -130,3 +131,16 @@ def test_linearised_model_against_frequency_domain_solution(tmp_path):
     # The window smoothing matters: the unsmoothed solution misses resonances and dips by several dB.
     raw_d = 10 * np.log10(mean[-1] / raw[-1])
     assert np.percentile(np.abs(raw_d), 95) > 2 * np.percentile(np.abs(d), 95)
+
+
+@pytest.mark.parametrize("spacing", ["0.05", "7e-4", "3.3e-5"])
+@pytest.mark.parametrize("law", ["hertz", "linearised"])
+def test_a_spacing_that_does_not_divide_the_span_still_covers_the_traverse(tmp_path, spacing, law):
+    # 0.39 m / 0.05 m leaves the last sample at 0.35 m, short of the traverse's end at 0.37 m: the
+    # line is extended to it (this once ended in an internal error).
+    out = tmp_path / "r.h5"
+    r = run(["run", SOURCE / "studies" / "seed002-rig-1ms.ini", "--out", out, "--quiet", "--set", "study.realisations=2",
+             "--set", f"roughness.spacing={spacing}", "--set", f"contact.law={law}", "--set", "texture.source=iso8608"])
+    assert r.returncode == 0, r.stderr
+    with h5py.File(out) as f:
+        assert np.isfinite(f["/psd/mean"][:]).all() and (f["/psd/mean"][:, 1:] > 0).all()
