@@ -95,6 +95,13 @@ BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius
     g.nx = g.window + wanted * g.step;
   }
   g.nx += g.nx % 2;
+  // Refused here, so that `plan` refuses what `run` would.
+  if (g.window < 8)
+    s.refuse(window_set ? "blocked_force.window" : "surface.ny",
+             "leaves a solver window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
+  if (g.segment < 16) s.refuse("blocked_force.segment", "is shorter than 16 positions; allowed: 0 (derived) or 16 or more");
+  if (g.nx < g.window + 16 * g.step)
+    s.refuse("blocked_force.strip_length", "leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
   // Cost: about 3 paths of the load search over every position plus a pre-search on 32 of them,

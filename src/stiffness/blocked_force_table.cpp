@@ -106,9 +106,6 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
                                       double load, bool quiet) {
   const double dx = geo.cell;
   const std::size_t ny = geo.ny, nx = geo.nx, window = geo.window, step = geo.step;
-  if (window < 8) s.refuse("blocked_force.window", "leaves a window of " + std::to_string(window) + " cells; allowed: 8 or more");
-  if (geo.segment < 16) s.refuse("blocked_force.segment", "is shorter than 16 positions; allowed: 0 (derived) or 16 or more");
-  if (nx < window + 16 * step) s.refuse("blocked_force.strip_length", "leaves fewer than 16 path positions outside the window");
   // One strip realisation (Philox surface streams of realisation 0) from the study's PSD.
   texture::SpectralSurfaceSpec spec;
   spec.nx = nx;
