@@ -115,7 +115,7 @@ BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius
 }
 
 std::string BlockedForceGeometry::describe() const {
-  char buf[400];
+  char buf[512];
   const double dx = cell;
   std::snprintf(buf, sizeof buf,
                 "cell %s (a/%.3g)%s, window %zu cells (%s), strip %zu x %zu cells (%s wide, %s long), step %zu cells "
