@@ -90,15 +90,20 @@ class BallOnBeam final : public Scene {
     if (blocked_solver()) {
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
       const double weight = b_.weight();
+      // The strip's grid: the study's keys where set, else derived from the contact radius and the
+      // texture; the path step at most v / f_s so F0 reaches the output's Nyquist frequency.
+      const stiffness::BlockedForceGeometry grid =
+          stiffness::blocked_force_geometry(s, radius, e_star, weight, b_.model.traverse.speed / b_.model.sample_rate);
       add_stage(std::make_unique<TableStage>(
-          "blocked_force", stiffness::blocked_force_cached_table(s, radius, e_star, weight),
+          "blocked_force", stiffness::blocked_force_cached_table(s, grid, radius, e_star, weight),
           [] { return std::make_unique<stiffness::BlockedForceTable>(); },
-          [&s, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
-            static_cast<stiffness::BlockedForceTable&>(out) = stiffness::build_blocked_force(s, radius, e_star, weight, quiet);
+          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
+            static_cast<stiffness::BlockedForceTable&>(out) = stiffness::build_blocked_force(s, grid, radius, e_star, weight, quiet);
           },
           [this](const stiffness::TableData& b, const std::string& status, bool quiet) {
             use_blocked_force(static_cast<const stiffness::BlockedForceTable&>(b), status, quiet);
-          }));
+          },
+          grid.describe()));
     } else {
       add_stages({{"blocked_force", linearised() ? StageStatus::run : StageStatus::skipped,
                    linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"

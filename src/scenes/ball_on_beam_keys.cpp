@@ -85,7 +85,12 @@ std::vector<KeySpec> ball_on_beam_keys() {
                std::string("true")),
   };
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
-  for (auto& t : texture_io::surface_keys()) k.push_back(t);
+  for (auto& t : texture_io::surface_keys()) {
+    // The solver's blocked force derives its strip from the contact radius unless the study sets these.
+    if (t.key == "ny") t.doc += "; blocked_force = solver: strip width, the window's by default";
+    if (t.key == "spacing") t.doc += "; blocked_force = solver: derived from the contact radius and the texture unless set";
+    k.push_back(t);
+  }
   for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
   for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
   return k;

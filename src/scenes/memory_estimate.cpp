@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "src/error.hpp"
+#include "kernels/contact/geometry.hpp"
 #include "src/io/available_memory.hpp"
+#include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/study/study.hpp"
 
 namespace rollspec::scenes {
@@ -40,12 +42,18 @@ Item contact_grid(const study::Study& s) {
   return {16.0 * 4.0 * nx * ny * 5.0, where(s, {"surface.nx", "surface.ny"}), "contact solver grid"};
 }
 
-// The solver's square window (at most [surface] ny cells) and the rough strip it slides along.
+// The solver's square window and the rough strip it slides along, on the grid the stage uses
+// (derived from the contact radius where the study leaves it open).
 Item blocked_force_window(const study::Study& s) {
-  const double ny = key_real(s, "surface.ny"), w = std::min(key_real(s, "blocked_force.window"), ny);
-  const double strip = key_real(s, "blocked_force.strip_length") / std::max(key_real(s, "surface.spacing"), 1e-300) * ny;
-  return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0, where(s, {"blocked_force.window", "surface.ny"}),
-          "blocked-force contact window"};
+  const double radius = s.real("ball.radius");
+  const double weight = 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density") * s.real("ball.gravity");
+  const double e_star = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
+                                                   s.real("beam.youngs_modulus"), s.real("beam.poisson"));
+  const auto g = stiffness::blocked_force_geometry(s, radius, e_star, weight, s.real("ball.speed") / s.real("signal.sample_rate"));
+  const double w = static_cast<double>(g.window), strip = static_cast<double>(g.nx) * static_cast<double>(g.ny);
+  return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0, where(s, {"blocked_force.window", "surface.ny", "surface.spacing"}),
+          "blocked-force contact window (" + std::to_string(g.window) + " cells) and strip (" + std::to_string(g.ny) +
+              " x " + std::to_string(g.nx) + " cells)"};
 }
 
 // Isotropic surfaces kept for the output (count x ny x nx) plus the generator's complex FFT grid.

@@ -11,8 +11,13 @@ const char* to_string(StageStatus s) {
   return "?";
 }
 
-TableStage::TableStage(std::string name, stiffness::CachedTable table, Make make, Build build, Use use)
-    : name_(std::move(name)), table_(std::move(table)), make_(std::move(make)), build_(std::move(build)), use_(std::move(use)) {}
+TableStage::TableStage(std::string name, stiffness::CachedTable table, Make make, Build build, Use use, std::string detail)
+    : name_(std::move(name)),
+      table_(std::move(table)),
+      make_(std::move(make)),
+      build_(std::move(build)),
+      use_(std::move(use)),
+      detail_(std::move(detail)) {}
 
 stiffness::TableState TableStage::state() const {
   std::string why;
@@ -25,7 +30,7 @@ StagePlan TableStage::inspect() const {
   const auto scratch = make_();
   const stiffness::TableState state = table_.inspect(*scratch, why);
   return {name_, state == stiffness::TableState::valid ? StageStatus::cached : StageStatus::run,
-          stiffness::table_plan_reason(table_, state, why)};
+          stiffness::table_plan_reason(table_, state, why) + (detail_.empty() ? "" : "; " + detail_)};
 }
 
 void TableStage::resolve(bool rebuild, bool quiet) {

@@ -41,13 +41,14 @@ class FixedStage final : public Stage {
 
 // A cached table shared by all realisations: cached when a valid table is stored, run when none
 // is, run but refused unless --rebuild when a mismatched or damaged one is. resolve() builds or
-// loads it and hands it to `use` with the status ("cached <path>" / "built <path>").
+// loads it and hands it to `use` with the status ("cached <path>" / "built <path>"). `detail`, if
+// any, follows the plan's reason (e.g. the grid a stage derived for its table).
 class TableStage final : public Stage {
  public:
   using Make = std::function<std::unique_ptr<stiffness::TableData>()>;
   using Build = std::function<void(stiffness::TableData&, bool quiet)>;
   using Use = std::function<void(const stiffness::TableData&, const std::string& status, bool quiet)>;
-  TableStage(std::string name, stiffness::CachedTable table, Make make, Build build, Use use);
+  TableStage(std::string name, stiffness::CachedTable table, Make make, Build build, Use use, std::string detail = "");
   StagePlan inspect() const override;
   void resolve(bool rebuild, bool quiet) override;
   // Missing, valid or mismatched now (a stage that lives inside the table, e.g. its surfaces, asks).
@@ -59,6 +60,7 @@ class TableStage final : public Stage {
   Make make_;
   Build build_;
   Use use_;
+  std::string detail_;
 };
 
 // A stage whose status follows another stage's inspection at plan time.

@@ -56,28 +56,35 @@ double BlockedForceTable::psd_at(double k) const {
 
 std::vector<KeySpec> blocked_force_keys() {
   return {
-      real_key("blocked_force", "strip_length", "m", "length of the rough strip the ball slides along", std::string("4e-3"),
-               0.0, std::numeric_limits<double>::infinity(), false),
-      integer_key("blocked_force", "window", "cells of the contact solver's square window (holds the contact patch)",
-                  std::string("64"), 8, 4096),
-      integer_key("blocked_force", "step", "path step in cells", std::string("2"), 1, 1000),
-      integer_key("blocked_force", "segment", "Welch segment (positions) of the F0 PSD along the path", std::string("256"),
-                  16, 1 << 20),
+      real_key("blocked_force", "strip_length", "m",
+               "length of the rough strip the ball slides along; 0: four Welch segments of positions plus the window",
+               std::string("0"), 0.0, std::numeric_limits<double>::infinity()),
+      integer_key("blocked_force", "window",
+                  "cells of the contact solver's square window (8 or more); 0: derived so that the window holds every "
+                  "cell the ball can touch, from the contact radius and the texture rms",
+                  std::string("0"), 0, 4096),
+      integer_key("blocked_force", "step", "path step in cells; 0: a third of the contact radius (at most speed / sample_rate)",
+                  std::string("0"), 0, 1000),
+      integer_key("blocked_force", "segment",
+                  "Welch segment (positions, 16 or more) of the F0 PSD along the path; 0: four times the F0 correlation "
+                  "length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
+                  std::string("0"), 0, 1 << 20),
   };
 }
 
 namespace {
 
-std::string inputs_text(const Study& s, double radius, double e_star, double load) {
+// The grid enters as resolved (derived or set), so the input hash names what was computed.
+std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
      << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
-     << "\n\n[blocked_force]\n";
-  for (const char* k : {"strip_length", "window", "step", "segment"}) in << k << " = " << s.text(std::string("blocked_force.") + k) << "\n";
+     << "\n\n[blocked_force]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
+     << "\nsegment = " << g.segment << "\n";
   for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
-  in << "seed = " << s.text("study.seed") << "\n\n[surface]\n";
-  for (const char* k : {"ny", "spacing", "anisotropy"}) in << k << " = " << s.text(std::string("surface.") + k) << "\n";
-  in << "\n[texture]\n";
+  in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
+     << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.derived_cell ? "allowed" : "refused")
+     << "\n\n[texture]\n";
   for (const auto& k : texture_io::psd_keys())
     if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
   in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
@@ -95,14 +102,10 @@ void BlockedForceTable::load_from(const io::Hdf5Reader& r) {
   load = r.double_attribute("/blocked_force", "load");
 }
 
-BlockedForceTable build_blocked_force(const Study& s, double radius, double e_star, double load, bool quiet) {
-  const double dx = s.real("surface.spacing");
-  const auto ny = static_cast<std::size_t>(s.integer("surface.ny"));
-  auto nx = static_cast<std::size_t>(std::round(s.real("blocked_force.strip_length") / dx));
-  nx += nx % 2;
-  const auto window = std::min<std::size_t>(static_cast<std::size_t>(s.integer("blocked_force.window")), ny);
-  const auto step = static_cast<std::size_t>(s.integer("blocked_force.step"));
-  if (nx < window + 16 * step) s.refuse("blocked_force.strip_length", "leaves fewer than 16 path positions outside the window");
+BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry& geo, double radius, double e_star,
+                                      double load, bool quiet) {
+  const double dx = geo.cell;
+  const std::size_t ny = geo.ny, nx = geo.nx, window = geo.window, step = geo.step;
   // One strip realisation (Philox surface streams of realisation 0) from the study's PSD.
   texture::SpectralSurfaceSpec spec;
   spec.nx = nx;
@@ -110,13 +113,16 @@ BlockedForceTable build_blocked_force(const Study& s, double radius, double e_st
   spec.dx = spec.dy = dx;
   spec.amplitudes = texture_io::study_amplitudes(s);
   spec.anisotropy = s.real("surface.anisotropy");
+  // A derived cell may be coarser than half the texture's shortest wavelength: the finer roughness
+  // is dropped (the plan says from which wavelength); a cell the study set must resolve it.
+  spec.allow_truncation = geo.derived_cell;
   texture::Surface strip;
   try {
     texture_io::SurfaceGenerator g;
     g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(texture_io::study_psd(s), spec);
     g.generate(static_cast<std::uint64_t>(s.integer("study.seed")), 0, strip);
   } catch (const std::exception& e) {
-    throw config_error(s.where("blocked_force.strip_length") + ": " + e.what());
+    throw config_error(s.where("surface.spacing") + ": " + e.what());
   }
   contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
@@ -127,6 +133,7 @@ BlockedForceTable build_blocked_force(const Study& s, double radius, double e_st
   opts.tolerance = s.real("stiffness.tolerance");
   opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
   const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  if (!quiet) std::fprintf(stderr, "%sblocked force grid: %s\n", ensemble::rank_prefix().c_str(), geo.describe().c_str());
   if (!quiet) std::fprintf(stderr, "%sblocked force: %zu positions on a %zu x %zu strip\n", ensemble::rank_prefix().c_str(), positions.size(), nx, ny);
   contact::ContactSolver solver(window_grid, e_star);
   contact::BlockedForcePath path;
@@ -159,7 +166,7 @@ BlockedForceTable build_blocked_force(const Study& s, double radius, double e_st
   // PSD of F0 along the path: Welch with f_s = 1 / (step dx) cycles/m, then per rad/m.
   spectral::WelchConfig wc;
   wc.sample_rate = 1.0 / (static_cast<double>(step) * dx);
-  wc.segment = std::min<std::size_t>(static_cast<std::size_t>(s.integer("blocked_force.segment")), path.force.size());
+  wc.segment = std::min(geo.segment, path.force.size());
   wc.overlap = wc.segment / 2;
   const spectral::WelchPlan plan(wc);
   spectral::WelchWorkspace ws(wc.segment);
@@ -184,19 +191,9 @@ void BlockedForceTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/blocked_force", "load", load);
 }
 
-CachedTable blocked_force_cached_table(const Study& s, double radius, double effective_modulus, double load) {
-  return CachedTable(kBlockedForceTableKind, s, inputs_text(s, radius, effective_modulus, load));
-}
-
-BlockedForceTable resolve_blocked_force(const Study& s, double radius, double effective_modulus, double load, bool rebuild,
-                                        bool quiet, std::string& status) {
-  const CachedTable cached = blocked_force_cached_table(s, radius, effective_modulus, load);
-  BlockedForceTable t;
-  cached.resolve(t, rebuild,
-                 [&](TableData& out) { static_cast<BlockedForceTable&>(out) = build_blocked_force(s, radius, effective_modulus, load, quiet); },
-                 status);
-  t.input_hash = cached.hash();
-  return t;
+CachedTable blocked_force_cached_table(const Study& s, const BlockedForceGeometry& g, double radius,
+                                       double effective_modulus, double load) {
+  return CachedTable(kBlockedForceTableKind, s, inputs_text(s, g, radius, effective_modulus, load));
 }
 
 }  // namespace rollspec::stiffness

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/stiffness/cached_table.hpp"
 #include "src/study/key_spec.hpp"
 
@@ -37,14 +38,13 @@ struct BlockedForceTable : TableData {
 
 std::vector<study::KeySpec> blocked_force_keys();
 
-// What a study asks for (no computation): canonical inputs and <table_dir>/blocked-force-<hash>.h5.
-CachedTable blocked_force_cached_table(const study::Study& s, double radius, double effective_modulus, double load);
+// What a study asks for (no computation): canonical inputs, the grid `g` included, and
+// <table_dir>/blocked-force-<hash>.h5.
+CachedTable blocked_force_cached_table(const study::Study& s, const BlockedForceGeometry& g, double radius,
+                                       double effective_modulus, double load);
 
-// Builds the table: one strip realisation, the load search along the path, the PSD of F0.
-BlockedForceTable build_blocked_force(const study::Study& s, double radius, double effective_modulus, double load,
-                                      bool quiet);
-
-BlockedForceTable resolve_blocked_force(const study::Study& s, double radius, double effective_modulus, double load,
-                                        bool rebuild, bool quiet, std::string& status);
+// Builds the table on the grid `g`: one strip realisation, the load search along the path, the PSD of F0.
+BlockedForceTable build_blocked_force(const study::Study& s, const BlockedForceGeometry& g, double radius,
+                                      double effective_modulus, double load, bool quiet);
 
 }  // namespace rollspec::stiffness

@@ -303,6 +303,8 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
 
 bool Study::has(const std::string& full_key) const { return entries_.count(full_key) > 0; }
 
+bool Study::is_set(const std::string& full_key) const { return entry(full_key).origin.line != 0; }
+
 const Entry& Study::entry(const std::string& full_key) const {
   const auto it = entries_.find(full_key);
   if (it == entries_.end()) throw std::logic_error("study key not in the scene's table: " + full_key);

@@ -38,6 +38,9 @@ class Study {
   const std::string& file() const { return file_; }
   const std::string& scene() const { return scene_; }
   bool has(const std::string& full_key) const;
+  // Whether the study file or a --set override gave the key its value (false: the documented
+  // default), so a stage can derive a value the study left open.
+  bool is_set(const std::string& full_key) const;
   double real(const std::string& full_key) const;
   long long integer(const std::string& full_key) const;
   std::string text(const std::string& full_key) const;

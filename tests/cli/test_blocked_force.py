@@ -1,10 +1,12 @@
 """The linearised law's blocked force from the contact solver (seed 002 §4.2): Hertz on a smooth
 strip, a cached table for a rough one, F0(t) realisations from its PSD."""
 import glob
+import re
 import shutil
 
 import h5py
 import numpy as np
+import pytest
 
 from conftest import SOURCE, run
 
@@ -62,3 +64,62 @@ def test_rough_strip_table_is_built_once_and_reused(tmp_path):
         assert "/reference/psd" in f
     r, out = rig(tmp_path, *common)
     assert r.returncode == 0 and "blocked force table: cached" in r.stderr
+
+
+def blocked_force_row(plan_stdout):
+    row = next(l for l in plan_stdout.splitlines() if l.startswith("blocked_force "))
+    return row.split(None, 2)
+
+
+# A shorter traverse keeps the test short; at 3 m/s the record still holds a 1024-sample segment.
+@pytest.mark.parametrize("name,end", [("seed002-rig-1ms.ini", 0.12), ("seed002-rig-3ms.ini", 0.2)])
+def test_solver_blocked_force_works_with_the_derived_grid(tmp_path, name, end):
+    # No [surface] or [blocked_force] key: the stage derives its grid from the Hertz contact radius
+    # (a = 69.5 um) and the texture, and the plan names it.
+    study = tmp_path / name
+    shutil.copy(SOURCE / "studies" / name, study)
+    plan = run(["plan", study, "--set", "contact.blocked_force=solver"])
+    assert plan.returncode == 0, plan.stderr
+    _, status, reason = blocked_force_row(plan.stdout)
+    assert status == "run", plan.stdout
+    grid = reason.split("; ", 1)[1]
+    for word in ("cell ", "window ", "strip ", "wide", "long", "step ", "positions", "Welch segment", "a = 69.5 um",
+                 "build about"):
+        assert word in grid, grid
+    cell = float(re.search(r"cell ([\d.]+) um", grid).group(1)) * 1e-6
+    window = int(re.search(r"window (\d+) cells", grid).group(1))
+    assert cell <= 69.5e-6 / 8 and window * cell >= 3 * 69.5e-6, grid
+    r = run(["run", study, "--out", tmp_path / "r.h5", "--set", "contact.blocked_force=solver", "--set",
+             "study.realisations=2", "--set", f"ball.end={end}"])
+    assert r.returncode == 0, r.stderr
+    assert "blocked force table: built" in r.stderr and "blocked force grid: " + grid in r.stderr, r.stderr
+    with h5py.File(glob.glob(str(tmp_path / "tables" / "blocked-force-*.h5"))[0]) as t:
+        assert len(t["/blocked_force/force"]) == int(re.search(r"(\d+) positions", grid).group(1))
+        k0 = t["/blocked_force"].attrs["k0"]
+    with h5py.File(tmp_path / "r.h5") as f:
+        assert f["/contact"].attrs["k0"][0] == k0 and k0 > 0
+        assert np.isfinite(f["/psd/mean"][:]).all()
+    again = run(["plan", study, "--set", "contact.blocked_force=solver"])
+    assert blocked_force_row(again.stdout)[1] == "cached", again.stdout
+
+
+def test_a_key_the_study_sets_is_honoured_over_the_derived_value(tmp_path):
+    study = tmp_path / "rig.ini"
+    shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
+    base = ["plan", study, "--set", "contact.blocked_force=solver"]
+    derived = blocked_force_row(run(base).stdout)[2]
+    # A window alone: the cell grows so that the window still holds the contact.
+    window = blocked_force_row(run([*base, "--set", "blocked_force.window=96"]).stdout)[2]
+    assert "window 96 cells" in window and "window 96 cells" not in derived, window
+    assert float(re.search(r"cell ([\d.]+) um", window).group(1)) > float(re.search(r"cell ([\d.]+) um", derived).group(1))
+    # The cell and strip keys: used as given, the rest derived from them.
+    r = run([*base, "--set", "surface.spacing=2e-6", "--set", "surface.ny=300", "--set", "blocked_force.step=7",
+             "--set", "blocked_force.segment=32", "--set", "blocked_force.strip_length=2e-3"])
+    grid = blocked_force_row(r.stdout)[2]
+    for text in ("cell 2 um", "strip 300 x 1000 cells", "step 7 cells", "Welch segment 32"):
+        assert text in grid, grid
+    assert "dropped" not in grid  # a cell the study sets resolves the texture's 4 um cut-off
+    hashes = {re.search(r"input hash (\w+)", g).group(1) for g in (derived, window, grid)}
+    assert len(hashes) == 3  # the derived grid is part of the table's inputs
+    keys = run(["keys", "ball-on-beam"]).stdout
+    assert "0: derived" in keys

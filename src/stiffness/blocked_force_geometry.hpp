@@ -1,0 +1,51 @@
+#pragma once
+// The grid of the blocked-force stage: cell size, strip width and length, solver window, path step
+// and Welch segment. Each comes from the study when it sets the key, and is otherwise derived from
+// the Hertz contact radius under the ball's weight and the texture:
+//
+//   a = (3 W R / (4 E*))^(1/3),  delta_H = a^2 / R,  sigma = rms height of the texture.
+//   Window: every strip cell outside it must stay clear of the ball at the approach the load
+//     search can reach (the kernel refuses the path otherwise). The approach from the mean plane
+//     stays below the smooth delta_H (asperities carry the ball higher), and the strip's highest
+//     point lies within about 5 sigma, so the window holds the disc of radius
+//     L = max(1.5 a, sqrt(2 R (delta_H + 5 sigma))).
+//   Cell: a / 8 (the patch resolved) and half the texture's shortest wavelength (no roughness
+//     truncated) when the window then stays within 128 cells; otherwise the cell that puts 2 L in
+//     128 cells (never coarser than a / 8), with the roughness shorter than two cells dropped.
+//   Strip width: the window.  Step: a / 3 (the F0 PSD along the path is some 45 dB down at the
+//     path's Nyquist wavelength 2 a / 3), and at most v / f_s so the path resolves every frequency
+//     of the output.  Segment: 8 pi a (four times the patch's correlation length 2 pi a, or the
+//     self-affine roll-off wavelength if longer).  Strip length: four segments of positions (seven
+//     half-overlapping Welch segments), at most 1024 positions, plus the window.
+#include <cstddef>
+#include <string>
+
+namespace rollspec::study {
+class Study;
+}
+
+namespace rollspec::stiffness {
+
+struct BlockedForceGeometry {
+  double contact_radius = 0.0;  // Hertz a at the load (m)
+  double rms = 0.0;             // texture rms height used for the window (m)
+  double cell = 0.0;            // strip and window cell dx = dy (m)
+  std::size_t ny = 0;           // strip width (cells)
+  std::size_t nx = 0;           // strip length (cells, even)
+  std::size_t window = 0;       // solver window (cells, square, at most ny)
+  std::size_t step = 0;         // path step (cells)
+  std::size_t segment = 0;      // Welch segment of the F0 PSD (positions; the build clips it to the path)
+  std::size_t positions = 0;    // ball positions along the path
+  bool derived_cell = false;    // [surface] spacing not set: roughness beyond the grid may be truncated
+  double truncated_wavelength = 0.0;  // > 0: texture wavelengths below it are dropped (m)
+  double estimated_seconds = 0.0;     // one core, this engine's solver speed (rough)
+
+  // "cell 4.6 um (a/15), window 128 cells (589 um), ..." for the plan and the run's log.
+  std::string describe() const;
+};
+
+// `max_step_length`: the longest path step the dynamics can use (v / f_s), 0 for no limit.
+BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius, double effective_modulus, double load,
+                                            double max_step_length);
+
+}  // namespace rollspec::stiffness
