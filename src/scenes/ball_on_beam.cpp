@@ -155,18 +155,27 @@ class BallOnBeam final : public Scene {
     auto n = static_cast<std::size_t>(std::ceil(beam::traverse_duration(b_.model.traverse) / f0_step_)) + 4;
     n = texture::fast_even_length(n);
     f0_synth_ = std::make_unique<spectral::HarmonicSynthesiser>(n);
-    const double df = 1.0 / (static_cast<double>(n) * f0_step_), v = b_.model.traverse.speed;
+    const double df = 1.0 / (static_cast<double>(n) * f0_step_);
     f0_psd_.assign(f0_synth_->harmonics(), 0.0);
     for (std::size_t j = 1; j < f0_psd_.size(); ++j) {
       const double f = df * static_cast<double>(j);
-      f0_psd_[j] = 2.0 * M_PI * blocked_.psd_at(2.0 * M_PI * f / v) / v;
+      f0_psd_[j] = blocked_force_time_psd(f);
     }
     f0_df_ = df;
   }
 
+  // F0 PSD along the path: the table's, and below its first resolved wavenumber the ball follows
+  // the texture, F0 = W + k0 h, so the texture's shape continues it (the strip is finite).
+  double blocked_force_psd(double k) const {
+    const double k1 = blocked_.psd_wavenumber.size() > 1 ? blocked_.psd_wavenumber[1] : 0.0;
+    if (k >= k1 || !(k > 0.0)) return blocked_.psd_at(k);
+    const double g1 = b_.psd(k1);
+    return g1 > 0.0 ? blocked_.psd_at(k1) * b_.psd(k) / g1 : blocked_.psd_at(k);
+  }
+
   double blocked_force_time_psd(double f) const {
     const double v = b_.model.traverse.speed;
-    return 2.0 * M_PI * blocked_.psd_at(2.0 * M_PI * f / v) / v;
+    return 2.0 * M_PI * blocked_force_psd(2.0 * M_PI * f / v) / v;
   }
 
   std::size_t rows() const { return rows_->rows(); }

@@ -16,7 +16,7 @@ namespace {
 
 constexpr std::size_t kMaxWindow = 128;      // cells: a 256^2 half-space product per CG iteration
 constexpr std::size_t kMaxPositions = 1024;  // path positions of a derived strip
-constexpr double kPeakSigmas = 5.0;          // the strip's highest point, in rms heights
+constexpr double kPeakSigmas = 7.0;          // the strip's highest point, in rms heights
 
 // x rounded to three significant digits, up or down: readable cell sizes in the plan and the table.
 double round3(double x, bool up) {
@@ -25,10 +25,11 @@ double round3(double x, bool up) {
   return (up ? std::ceil(q - 1e-9) : std::floor(q + 1e-9)) * unit;
 }
 
-// Rms height of the texture over the wavelengths a strip can hold (10 mm down to a / 64, or the
-// PSD's own cut-offs); 0 if the PSD cannot be integrated there.
+// Rms height of the texture over the wavelengths a strip can hold (the longest derived strip,
+// kMaxPositions steps of a / 3, down to a / 64, or the PSD's own cut-offs); 0 if the PSD cannot be
+// integrated there. Waviness longer than the window still lifts its far side against the ball.
 double strip_rms(const texture::Psd& psd, double a) {
-  const double k_lo = std::max(psd.support_min, 2.0 * M_PI / 1e-2);
+  const double k_lo = std::max(psd.support_min, 2.0 * M_PI / (static_cast<double>(kMaxPositions) * a / 3.0));
   const double k_hi = std::min(psd.support_max, 128.0 * M_PI / a);
   if (!(k_hi > k_lo)) return 0.0;
   try {
@@ -83,11 +84,14 @@ BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius
   g.step = s.integer("blocked_force.step") > 0 ? static_cast<std::size_t>(s.integer("blocked_force.step"))
                                                 : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(step_length / dx + 1e-9)));
   const double path_step = static_cast<double>(g.step) * dx;
+  // At least four segments along the path: a roll-off longer than a quarter of the longest strip
+  // leaves the lowest wavenumbers to the first bin (the F0 table holds it flat below).
   double correlation = 2.0 * M_PI * a;
   if (s.text("texture.source") == "self-affine") correlation = std::max(correlation, s.real("texture.rolloff_wavelength"));
   g.segment = s.integer("blocked_force.segment") > 0
                   ? static_cast<std::size_t>(s.integer("blocked_force.segment"))
-                  : texture::fast_even_length(std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(4.0 * correlation / path_step))));
+                  : texture::fast_even_length(std::min<std::size_t>(
+                        kMaxPositions / 4, std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(4.0 * correlation / path_step)))));
   if (s.real("blocked_force.strip_length") > 0.0) {
     g.nx = static_cast<std::size_t>(std::round(s.real("blocked_force.strip_length") / dx));
   } else {
