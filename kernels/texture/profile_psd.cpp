@@ -66,7 +66,13 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   for (std::vector<double> z : rows) {
     if (options.median_filter) median_filter3(z);
     add_periodogram(plan, ws, z, out.psd);
+    double m = 0.0, v = 0.0;
+    for (double h : z) m += h;
+    m /= static_cast<double>(z.size());
+    for (double h : z) v += (h - m) * (h - m);
+    out.sigma += std::sqrt(v / static_cast<double>(z.size()));
   }
+  out.sigma /= static_cast<double>(rows.size());
   for (double& g : out.psd) g /= static_cast<double>(rows.size());  // Eq. 17
   out.wavenumber.resize(out.psd.size());
   for (std::size_t j = 0; j < out.psd.size(); ++j) out.wavenumber[j] = out.dk * static_cast<double>(j);

@@ -9,6 +9,7 @@
 #include "kernels/texture/iso3095_rail_psd.hpp"
 #include "kernels/texture/iso8608_psd.hpp"
 #include "kernels/texture/profile_psd.hpp"
+#include "kernels/texture/psd_smoothing.hpp"
 #include "kernels/texture/psd_units.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
 #include "kernels/texture/tabulated_psd.hpp"
@@ -88,7 +89,8 @@ texture::Profile read_profile(const std::string& path) {
   return p;
 }
 
-texture::Psd profile_psd(const Study& s) {
+// Eq. 15-17 of the study's measured profiles.
+texture::EstimatedPsd profile_estimate(const Study& s) {
   const auto files = s.list("texture.profiles");
   if (files.size() < 2)
     s.refuse("texture.profiles", "names " + std::to_string(files.size()) +
@@ -105,8 +107,18 @@ texture::Psd profile_psd(const Study& s) {
   try {
     texture::ProfilePsdOptions opt;
     opt.median_filter = s.boolean("texture.median_filter");
-    const auto est = texture::profile_psd(profiles, opt);
-    return texture::estimated_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
+    return texture::profile_psd(profiles, opt);
+  } catch (const std::invalid_argument& e) {
+    throw data_error(s.where("texture.profiles") + ": " + e.what());
+  }
+}
+
+// The estimate band-averaged in log k (kernels/texture/README.md Eq. 33-35): the raw periodogram's
+// bin-to-bin scatter would make isotropic surfaces far too rough (inverse Abel transform, Eq. 19).
+texture::Psd profile_psd(const Study& s) {
+  const texture::EstimatedPsd est = profile_estimate(s);
+  try {
+    return texture::smoothed_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
   } catch (const std::invalid_argument& e) {
     throw data_error(s.where("texture.profiles") + ": " + e.what());
   }
@@ -147,7 +159,7 @@ std::vector<KeySpec> surface_keys() {
       real_key("surface", "anisotropy", "-", "correlation length ratio x/y (spectral method)", std::string("1"), 0.0, inf, false),
       real_key("surface", "correlation_x", "m", "correlation length along x (seed method, 1/e)", std::string("1e-5"), 0.0, inf, false),
       real_key("surface", "correlation_y", "m", "correlation length along y (seed method, 1/e)", std::string("1e-5"), 0.0, inf, false),
-      real_key("surface", "sigma", "m", "rms height of seed-method surfaces", std::string("3e-7"), 0.0, inf, false),
+      real_key("surface", "sigma", "m", "rms height of seed-method surfaces (unset with [texture] source = profiles: the profiles' mean standard deviation)", std::string("3e-7"), 0.0, inf, false),
   };
 }
 
@@ -260,6 +272,8 @@ SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd
       r.correlation_x = s.real("surface.correlation_x");
       r.correlation_y = s.real("surface.correlation_y");
       r.sigma = s.real("surface.sigma");
+      // Seed 001 Eq. 10: normalise to the measured profiles' sigma unless [surface] sigma is given.
+      if (s.text("texture.source") == "profiles" && s.entry("surface.sigma").origin.line == 0) r.sigma = profile_estimate(s).sigma;
       r.amplitudes = study_amplitudes(s);
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }
