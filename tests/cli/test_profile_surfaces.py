@@ -87,3 +87,26 @@ def test_surfaces_keep_the_profiles_rms(profiles, count):
 def test_a_given_sigma_still_sets_seed_surfaces(profiles):
     d, names, _ = profiles
     assert surface_rms(d, names[:5], "seed", "sigma = 2e-7\n") == pytest.approx(2e-7, rel=1e-9)
+
+
+def one_over_e_length(z, dx):
+    z = z - z.mean()
+    r = np.fft.irfft(np.abs(np.fft.rfft(z, 2 * len(z))) ** 2)[:len(z)]
+    r /= r[0]
+    k = int(np.argmax(r < np.exp(-1)))
+    return dx * (k - 1 + (r[k - 1] - np.exp(-1)) / (r[k - 1] - r[k]))
+
+
+def test_seed_surfaces_take_the_profiles_correlation_length(profiles):
+    # Seed 001 §3.1: the box lengths n, m come from the measured profiles' correlation length.
+    d, names, lines = profiles
+    i = np.arange(lines.shape[1])
+    measured = np.mean([one_over_e_length(z - np.polyval(np.polyfit(i, z, 1), i), 1e-6) for z in lines[:15]])
+    s = d / "corr.ini"
+    s.write_text(PROFILE_STUDY.format(files=", ".join(names[:15]), method="seed", extra="").replace("count = 4", "count = 8"))
+    r = run(["texture", s, "--out", d / "corr.h5"])
+    assert r.returncode == 0, r.stderr
+    row = next(l.split() for l in r.stdout.splitlines() if l.startswith("surf_mean"))
+    for got in (float(row[5]), float(row[6])):  # corr_len_x_m, corr_len_y_m
+        assert got == pytest.approx(measured, rel=0.15), (got, measured)
+    print(f"profiles 1/e {measured:.4g} m, seed surfaces {row[5]} x, {row[6]} y")
