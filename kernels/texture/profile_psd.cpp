@@ -8,6 +8,7 @@
 #include <string>
 
 #include "kernels/spectral/welch.hpp"
+#include "kernels/texture/statistics.hpp"
 
 namespace rollspec::texture {
 
@@ -63,10 +64,19 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   out.psd.assign(out.samples / 2 + 1, 0.0);
   const spectral::WelchPlan plan(periodogram_config(out.samples, dx));
   spectral::WelchWorkspace ws(out.samples);
+  std::vector<HeightStatistics> lengths;  // seed 001 takes its correlation lengths from the profiles (§3.1)
   for (std::vector<double> z : rows) {
     if (options.median_filter) median_filter3(z);
     add_periodogram(plan, ws, z, out.psd);
+    double m = 0.0, v = 0.0;
+    for (double h : z) m += h;
+    m /= static_cast<double>(z.size());
+    for (double h : z) v += (h - m) * (h - m);
+    out.sigma += std::sqrt(v / static_cast<double>(z.size()));
+    lengths.push_back(line_statistics(z.data(), z.size(), dx));
   }
+  out.sigma /= static_cast<double>(rows.size());
+  out.correlation_length = mean_statistics(lengths).correlation_length_x;  // NaN only if no profile reaches 1/e
   for (double& g : out.psd) g /= static_cast<double>(rows.size());  // Eq. 17
   out.wavenumber.resize(out.psd.size());
   for (std::size_t j = 0; j < out.psd.size(); ++j) out.wavenumber[j] = out.dk * static_cast<double>(j);

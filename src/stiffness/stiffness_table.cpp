@@ -91,6 +91,12 @@ CachedTable stiffness_cached_table(const study::Study& s, double ball_radius, do
     for (const auto& k : texture_io::psd_keys())
       if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
     in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+    const auto measured = texture_io::profile_derived_surface_keys(s);
+    if (!measured.empty()) {  // their values come from the fingerprinted profiles, not from the text above
+      in << "from the profiles =";
+      for (const auto& k : measured) in << " " << k;
+      in << "\n";
+    }
   }
   const std::string explicit_path = s.text("stiffness.table");
   return CachedTable(kStiffnessTableKind, s, in.str(), explicit_path == "auto" ? "" : explicit_path);

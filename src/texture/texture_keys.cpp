@@ -9,6 +9,7 @@
 #include "kernels/texture/iso3095_rail_psd.hpp"
 #include "kernels/texture/iso8608_psd.hpp"
 #include "kernels/texture/profile_psd.hpp"
+#include "kernels/texture/psd_smoothing.hpp"
 #include "kernels/texture/psd_units.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
 #include "kernels/texture/tabulated_psd.hpp"
@@ -88,7 +89,8 @@ texture::Profile read_profile(const std::string& path) {
   return p;
 }
 
-texture::Psd profile_psd(const Study& s) {
+// Eq. 15-17 of the study's measured profiles.
+texture::EstimatedPsd profile_estimate(const Study& s) {
   const auto files = s.list("texture.profiles");
   if (files.size() < 2)
     s.refuse("texture.profiles", "names " + std::to_string(files.size()) +
@@ -105,8 +107,18 @@ texture::Psd profile_psd(const Study& s) {
   try {
     texture::ProfilePsdOptions opt;
     opt.median_filter = s.boolean("texture.median_filter");
-    const auto est = texture::profile_psd(profiles, opt);
-    return texture::estimated_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
+    return texture::profile_psd(profiles, opt);
+  } catch (const std::invalid_argument& e) {
+    throw data_error(s.where("texture.profiles") + ": " + e.what());
+  }
+}
+
+// The estimate band-averaged in log k (kernels/texture/README.md Eq. 33-35): the raw periodogram's
+// bin-to-bin scatter would make isotropic surfaces far too rough (inverse Abel transform, Eq. 19).
+texture::Psd profile_psd(const Study& s) {
+  const texture::EstimatedPsd est = profile_estimate(s);
+  try {
+    return texture::smoothed_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
   } catch (const std::invalid_argument& e) {
     throw data_error(s.where("texture.profiles") + ": " + e.what());
   }
@@ -145,9 +157,9 @@ std::vector<KeySpec> surface_keys() {
       integer_key("surface", "ny", "grid points along y (even)", std::string("128"), 4, 1 << 14),
       real_key("surface", "spacing", "m", "grid spacing dx = dy", std::string("1e-6"), 0.0, inf, false),
       real_key("surface", "anisotropy", "-", "correlation length ratio x/y (spectral method)", std::string("1"), 0.0, inf, false),
-      real_key("surface", "correlation_x", "m", "correlation length along x (seed method, 1/e)", std::string("1e-5"), 0.0, inf, false),
-      real_key("surface", "correlation_y", "m", "correlation length along y (seed method, 1/e)", std::string("1e-5"), 0.0, inf, false),
-      real_key("surface", "sigma", "m", "rms height of seed-method surfaces", std::string("3e-7"), 0.0, inf, false),
+      real_key("surface", "correlation_x", "m", "correlation length along x (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)", std::string("1e-5"), 0.0, inf, false),
+      real_key("surface", "correlation_y", "m", "correlation length along y (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)", std::string("1e-5"), 0.0, inf, false),
+      real_key("surface", "sigma", "m", "rms height of seed-method surfaces (unset with [texture] source = profiles: the profiles' mean standard deviation)", std::string("3e-7"), 0.0, inf, false),
   };
 }
 
@@ -220,6 +232,14 @@ std::string psd_input_fingerprint(const Study& s) {
   return out.str();
 }
 
+std::vector<std::string> profile_derived_surface_keys(const Study& s) {
+  std::vector<std::string> out;
+  if (!s.has("texture.source") || s.text("texture.source") != "profiles" || s.text("surface.method") != "seed") return out;
+  for (const char* k : {"sigma", "correlation_x", "correlation_y"})
+    if (s.entry(std::string("surface.") + k).origin.line == 0) out.push_back(k);  // 0: the documented default, not set
+  return out;
+}
+
 std::size_t SurfaceGenerator::random_count() const {
   return spectral ? 2 * spectral->modes() : seed->random_count();
 }
@@ -260,6 +280,19 @@ SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd
       r.correlation_x = s.real("surface.correlation_x");
       r.correlation_y = s.real("surface.correlation_y");
       r.sigma = s.real("surface.sigma");
+      // Seed 001 §3.1 and Eq. 10: sigma and the correlation lengths (isotropic) are the measured
+      // profiles' unless [surface] gives them.
+      const auto measured = profile_derived_surface_keys(s);
+      if (!measured.empty()) {
+        const texture::EstimatedPsd est = profile_estimate(s);
+        for (const auto& k : measured) {
+          if (k == "sigma") r.sigma = est.sigma;
+          if (std::isfinite(est.correlation_length)) {
+            if (k == "correlation_x") r.correlation_x = est.correlation_length;
+            if (k == "correlation_y") r.correlation_y = est.correlation_length;
+          }
+        }
+      }
       r.amplitudes = study_amplitudes(s);
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }

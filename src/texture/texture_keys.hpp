@@ -38,6 +38,11 @@ std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study:
 // The measured profile files of [texture] profiles (empty for other sources or scenes without [texture]).
 std::vector<std::string> profile_files(const study::Study& s);
 
+// Seed-method [surface] keys (sigma, correlation_x, correlation_y) that are not set and so take the
+// measured profiles' values (seed 001 §3.1, Eq. 10); empty unless source = profiles and method = seed.
+// Cached tables hash this list: the canonical text shows such a key at its default.
+std::vector<std::string> profile_derived_surface_keys(const study::Study& s);
+
 // Contents of every input file the PSD depends on, for hashes of cached tables.
 std::string psd_input_fingerprint(const study::Study& s);
 
