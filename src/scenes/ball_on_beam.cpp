@@ -164,10 +164,12 @@ class BallOnBeam final : public Scene {
     f0_df_ = df;
   }
 
-  // F0 PSD along the path: the table's, and below its first resolved wavenumber the ball follows
-  // the texture, F0 = W + k0 h, so the texture's shape continues it (the strip is finite).
+  // F0 PSD along the path: the table's, and at long wavelengths, where the ball follows the
+  // texture (F0 = W + k0 h), the texture's shape scaled to the table at its third bin: bins 1 and 2
+  // of a Hann-windowed segment hold the leakage of waves longer than the segment (the strip is finite).
   double blocked_force_psd(double k) const {
-    const double k1 = blocked_.psd_wavenumber.size() > 1 ? blocked_.psd_wavenumber[1] : 0.0;
+    const std::size_t anchor = std::min<std::size_t>(3, blocked_.psd_wavenumber.size() - 1);
+    const double k1 = blocked_.psd_wavenumber.size() > 1 ? blocked_.psd_wavenumber[anchor] : 0.0;
     if (k >= k1 || !(k > 0.0)) return blocked_.psd_at(k);
     const double g1 = b_.psd(k1);
     return g1 > 0.0 ? blocked_.psd_at(k1) * b_.psd(k) / g1 : blocked_.psd_at(k);
