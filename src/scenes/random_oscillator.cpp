@@ -37,7 +37,7 @@ class RandomOscillator final : public Scene {
     df_ = o_.sample_rate / static_cast<double>(o_.samples);
     psd_at_harmonics_.resize(synth_->harmonics());
     for (std::size_t j = 0; j < psd_at_harmonics_.size(); ++j)
-      psd_at_harmonics_[j] = force_psd(df_ * static_cast<double>(j));
+      psd_at_harmonics_[j] = o_.force_psd(df_ * static_cast<double>(j));
     omega_ = 2.0 * M_PI * o_.natural_frequency;
     step_ = integrators::ExactOscillatorStep::make(omega_, o_.damping_ratio, 1.0 / o_.sample_rate);
     // Phi^N, the free response over one period, for the periodic steady state.
@@ -96,7 +96,7 @@ class RandomOscillator final : public Scene {
 
     std::vector<double> exact(e.frequency.size());
     for (std::size_t i = 0; i < exact.size(); ++i)
-      exact[i] = random_oscillator_exact_psd(e.frequency[i], force_psd(e.frequency[i]), o_.mass, o_.natural_frequency, o_.damping_ratio, o_.sample_rate);
+      exact[i] = random_oscillator_exact_psd(e.frequency[i], o_.force_psd(e.frequency[i]), o_.mass, o_.natural_frequency, o_.damping_ratio, o_.sample_rate);
     w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units,
             "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator");
     w.attribute("/reference/psd", "label", std::string("exact"));
@@ -112,7 +112,6 @@ class RandomOscillator final : public Scene {
   }
 
  private:
-  double force_psd(double f) const { return o_.force_psd(f); }
 
   RandomOscillatorSettings o_;
   double df_ = 0.0, omega_ = 0.0;

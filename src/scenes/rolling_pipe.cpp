@@ -47,8 +47,7 @@ class RollingPipe final : public Scene {
  public:
   explicit RollingPipe(const Study& s) : p_(read_rolling_pipe_settings(s)) {
     if (p_.line) {
-      const std::size_t samples = static_cast<std::size_t>(std::ceil((p_.x_hi - p_.x_lo) / p_.spacing)) + 1;
-      lines_ = texture_io::study_line_generator(s, p_.psd, p_.spacing, samples, "roughness.spacing");
+      lines_ = texture_io::study_line_generator(s, p_.psd, p_.spacing, p_.line_samples, "roughness.spacing");
     } else {
       surfaces_ = std::make_unique<texture_io::SurfaceGenerator>(texture_io::study_surface_generator(s, p_.psd));
     }

@@ -117,8 +117,8 @@ RollingPipeSettings read_rolling_pipe_settings(const Study& s) {
   p.x_hi = p.distance + p.radius + 0.02 * p.distance + 0.01;
   if (p.line) {
     p.spacing = s.real("roughness.spacing");
-    const std::size_t samples = static_cast<std::size_t>(std::ceil((p.x_hi - p.x_lo) / p.spacing)) + 1;
-    if (samples > (1u << 24)) s.refuse("roughness.spacing", "gives more than 2^24 samples over the rolled strip");
+    p.line_samples = static_cast<std::size_t>(std::ceil((p.x_hi - p.x_lo) / p.spacing)) + 1;
+    if (p.line_samples > (1u << 24)) s.refuse("roughness.spacing", "gives more than 2^24 samples over the rolled strip");
   } else {
     p.spacing = s.real("surface.spacing");
     const double nx = static_cast<double>(s.integer("surface.nx")), ny = static_cast<double>(s.integer("surface.ny"));

@@ -27,6 +27,7 @@ struct RollingPipeSettings {
   texture::Psd psd;
   bool line = true;               // line texture (else an isotropic surface per realisation)
   double spacing = 0.0;           // roughness (or surface) sample spacing, m
+  std::size_t line_samples = 0;   // line texture samples over the rolled strip (line only)
   double x_lo = 0.0, x_hi = 0.0;  // the rolled strip along x, m
   double rms_curvature = 0.0;     // sqrt(m4) of the PSD over the sampled band, 1/m
   // Tube.
