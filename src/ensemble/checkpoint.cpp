@@ -141,7 +141,8 @@ std::vector<std::string> CheckpointStore::foreign_entries() const {
   for (const auto& entry : it) {
     const std::string name = entry.path().filename().string();
     struct stat st {};
-    const bool regular = ::lstat(entry.path().c_str(), &st) == 0 && S_ISREG(st.st_mode);
+    if (::lstat(entry.path().c_str(), &st) != 0 && errno == ENOENT) continue;  // renamed meanwhile by a running writer
+    const bool regular = S_ISREG(st.st_mode);
     const bool ours = regular && is_checkpoint_file_name(name) &&
                       (name.size() < 4 || name.compare(name.size() - 4, 4, ".bin") != 0 || is_chunk_file(entry.path().string()));
     if (!ours) out.push_back(name);
