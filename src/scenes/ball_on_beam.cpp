@@ -47,7 +47,7 @@ class BallOnBeam final : public Scene {
  public:
   explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
     if (b_.blocked_solver() || b_.uses_table()) study_ = &s;
-    lines_ = texture_io::study_line_generator(s, b_.psd, b_.spacing, b_.line_samples, "roughness.spacing");
+    lines_ = texture_io::study_line_generator(s, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
     for (std::size_t k = 0; k < b_.model.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
@@ -168,6 +168,7 @@ class BallOnBeam final : public Scene {
   // texture (F0 = W + k0 h), the texture's shape scaled to the table at its third bin: bins 1 and 2
   // of a Hann-windowed segment hold the leakage of waves longer than the segment (the strip is finite).
   double blocked_force_psd(double k) const {
+    if (k > b_.band_limit_wavenumber) return 0.0;  // B40, as the texture
     const std::size_t anchor = std::min<std::size_t>(3, blocked_.psd_wavenumber.size() - 1);
     const double k1 = blocked_.psd_wavenumber.size() > 1 ? blocked_.psd_wavenumber[anchor] : 0.0;
     if (k >= k1 || !(k > 0.0)) return blocked_.psd_at(k);
@@ -311,7 +312,7 @@ class BallOnBeam final : public Scene {
     if (blocked_solver()) {
       ex.time_psd = [this](double fi) { return blocked_force_time_psd(fi); };
     } else {
-      ex.time_psd = texture::time_psd(b_.psd, b_.model.traverse.speed);
+      ex.time_psd = texture::time_psd(b_.line_psd, b_.model.traverse.speed);
     }
     ex.blocked_force = blocked_solver();
     ex.k0 = b_.model.contact.k0;

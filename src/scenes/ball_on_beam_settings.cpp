@@ -114,6 +114,12 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   m.traverse.speed = s.real("ball.speed");
   if (!(m.traverse.x_end > m.traverse.x_start)) s.refuse("ball.end", "must exceed [ball] start");
   if (m.traverse.x_end > length) s.refuse("ball.end", "lies beyond the span [0, length]");
+  // Anti-alias band limit (kernels/beam B40): the output holds f <= f_s / 2, that is k <= pi f_s / v;
+  // roughness beyond it would drive the linear response above f_s / 2, which the sampling aliases in.
+  if (s.text("roughness.band_limit") == "output") {
+    b.band_limit_wavenumber = M_PI * m.sample_rate / m.traverse.speed;
+    b.psd = texture::band_limited(std::move(b.psd), b.band_limit_wavenumber);
+  }
   // Contact.
   b.law_name = s.text("contact.law");
   b.contact = contact_model(s);
@@ -143,6 +149,11 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   if (static_cast<double>(b.line_samples - 1) * b.spacing < reach)
     b.line_samples = static_cast<std::size_t>(std::ceil(reach / b.spacing)) + 1;
   if (b.line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
+  // The patch average runs on the samples' linear interpolant (B35a: an extra sinc^2(k dx/2));
+  // a band-limited line is drawn with that loss undone (B40a), so it sees the continuous texture.
+  b.line_psd = (b.patch_half_width > 0.0 && b.band_limit_wavenumber * b.spacing < M_PI)
+                   ? texture::interpolation_compensated(b.psd, b.spacing)
+                   : b.psd;
   if (!b.uses_table() && !b.blocked_solver())
     check_contact_resolution(s, b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
   check_step_coefficients(s, b);

@@ -5,6 +5,7 @@
 // the texture, surface and table stages read their own sections (texture_keys, stiffness_keys).
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -30,7 +31,9 @@ struct BallOnBeamSettings {
   beam::BallOnBeamModel model;
   ContactModel contact = ContactModel::hertz;
   std::string law_name;            // [contact] law as written, for the result file
-  texture::Psd psd;                // [texture]
+  texture::Psd psd;                // [texture], band-limited by [roughness] band_limit
+  double band_limit_wavenumber = std::numeric_limits<double>::infinity();  // rad/m; B40
+  texture::Psd line_psd;           // what the line samples are drawn from: psd, or B40a-compensated
   double spacing = 0.0;            // line texture sample spacing, m
   std::size_t line_samples = 0;    // over the whole span
   double patch_half_width = 0.0;   // Hertz half-width at the weight; 0: no patch filter
