@@ -24,8 +24,8 @@ post psd "$work/rig.h5" --bands --sensor sensor_mean --out "$docs/seed002-rig-ps
 "$bin" run studies/seed002-rig-3ms.ini --out "$work/rig3.h5" --quiet
 "$bin" run studies/seed002-rig-1ms.ini --out "$work/rig-solver.h5" --quiet --set contact.blocked_force=solver
 "$bin" run studies/seed002-rig-3ms.ini --out "$work/rig3-solver.h5" --quiet --set contact.blocked_force=solver
-post panels --panel "1 m/s" "$work/rig.h5=spring F0 (study)" "$work/rig-solver.h5=contact-solver F0" \
-  --panel "3 m/s" "$work/rig3.h5=spring F0 (study)" "$work/rig3-solver.h5=contact-solver F0" \
+post panels --panel "1 m/s" "$work/rig.h5=spring F0, as shipped" "$work/rig-solver.h5=contact-solver F0" \
+  --panel "3 m/s" "$work/rig3.h5=spring F0, as shipped" "$work/rig3-solver.h5=contact-solver F0" \
   --out "$docs/seed002-seed-style.png"
 
 # Seed 001 in its own style (Fig. 8): beams S and R, the seed's chain (profiles -> stiffness table)
