@@ -1,6 +1,8 @@
 #include "src/scenes/ball_on_beam_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <cstdio>
 #include <string>
 
@@ -9,6 +11,7 @@
 #include "kernels/beam/quadratic_hold_step.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "kernels/integrators/exact_oscillator_step.hpp"
+#include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/study.hpp"
@@ -73,6 +76,25 @@ void check_step_coefficients(const Study& s, const BallOnBeamSettings& b) {
   }
 }
 
+// [contact] filter and the contact radius a it uses: Hertz under the weight (kernels/beam B35).
+void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
+  b.filter_name = s.text("contact.filter");
+  b.filter = b.filter_name == "none" ? ContactFilter::none : b.filter_name == "patch" ? ContactFilter::patch : ContactFilter::iso2d;
+  b.contact_half_width = a;
+  b.patch_half_width = b.filter == ContactFilter::patch ? a : 0.0;
+  if (b.filter == ContactFilter::iso2d && b.blocked_solver())
+    s.refuse("contact.filter", "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
+                               "resolves the contact itself); allowed with solver: none or patch (both ignored)");
+}
+
+texture::Psd iso2d_study_psd(const Study& s, const BallOnBeamSettings& b) {
+  try {
+    return iso2d_line_psd(b);
+  } catch (const std::exception& e) {
+    s.refuse("contact.filter", std::string("cannot filter the [texture] PSD: ") + e.what());
+  }
+}
+
 }  // namespace
 
 // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
@@ -89,6 +111,15 @@ void check_contact_resolution(const Study& s, const BallOnBeamSettings& b, doubl
                                     " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
                                     " at this sample rate");
   }
+}
+
+// G_eq of the study's PSD (kernels/texture README Eq. 38) from below the line's fundamental; a PSD
+// without upper end is cut where the flat-punch weight (Eq. 37) has fallen below 1e-6 in power, or
+// at ten times the line's Nyquist wavenumber if that is further.
+texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
+  const double k_min = M_PI / (static_cast<double>(b.line_samples) * b.spacing);
+  const double q_cap = std::max(1e3 / b.contact_half_width, 10.0 * M_PI / b.spacing);
+  return texture::contact_filtered_psd(b.psd, b.contact_half_width, k_min, q_cap);
 }
 
 BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
@@ -127,7 +158,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   law.loss = s.text("contact.loss") == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
   const double hertz_compression = std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
-  b.patch_half_width = s.boolean("contact.patch_filter") ? beam::hertz_half_width(radius, hertz_compression) : 0.0;
+  read_contact_filter(s, b, beam::hertz_half_width(radius, hertz_compression));
   // Integration step.
   b.step.substeps = static_cast<int>(s.integer("signal.substeps"));
   b.step.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
@@ -155,6 +186,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
     s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
                                      " samples = ((end - start) / speed - skip_start) x sample_rate)");
   b.welch = study_welch_config(s, m.sample_rate);
+  b.line_psd = b.filter == ContactFilter::iso2d ? iso2d_study_psd(s, b) : b.psd;
   return b;
 }
 

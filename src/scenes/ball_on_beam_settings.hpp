@@ -22,6 +22,11 @@ namespace rollspec::scenes {
 // One value for the contact law and the blocked force's source ([contact] law, blocked_force).
 enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver };
 
+// [contact] filter: what the contact does to the roughness it rolls over (kernels/beam README B35;
+// kernels/texture README Eq. 36-40): none (point contact), patch (1D average over the Hertz width,
+// B35) or iso2d (the line synthesised from G_eq, the path PSD a Hertz disc sees on an isotropic surface).
+enum class ContactFilter { none, patch, iso2d };
+
 struct BallOnBeamSettings {
   explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}
   std::uint64_t seed = 0;
@@ -31,9 +36,13 @@ struct BallOnBeamSettings {
   ContactModel contact = ContactModel::hertz;
   std::string law_name;            // [contact] law as written, for the result file
   texture::Psd psd;                // [texture]
+  texture::Psd line_psd;           // the line texture's PSD: psd, or G_eq of psd for filter = iso2d
+  ContactFilter filter = ContactFilter::patch;
+  std::string filter_name;         // [contact] filter as written
+  double contact_half_width = 0.0; // Hertz contact radius a at the weight (what the filters use)
   double spacing = 0.0;            // line texture sample spacing, m
   std::size_t line_samples = 0;    // over the whole span
-  double patch_half_width = 0.0;   // Hertz half-width at the weight; 0: no patch filter
+  double patch_half_width = 0.0;   // contact_half_width for filter = patch, else 0 (no patch average)
   double static_compression = 0.0; // point laws: Hertz (or weight / k0) at the weight
   beam::ExactStepOptions step;
   bool dopri = false;              // Dormand-Prince reference instead of the exact step
@@ -53,6 +62,10 @@ struct BallOnBeamSettings {
 };
 
 BallOnBeamSettings read_ball_on_beam_settings(const study::Study& s);
+
+// G_eq of b.psd for the Hertz radius b.contact_half_width (filter = iso2d), over the line's
+// wavenumbers; throws std::invalid_argument where the PSD has no isotropic form.
+texture::Psd iso2d_line_psd(const BallOnBeamSettings& b);
 
 // Refuses (at [signal] substeps) a step that does not resolve the ball's bounce on a contact
 // stiffness k_contact at the weight; the table laws call it again once their stiffness is known.
