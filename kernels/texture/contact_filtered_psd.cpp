@@ -136,32 +136,45 @@ double contact_filtered_line_psd_reference(const IsotropicSpectrum& c, double a,
   return smooth * dy / (M_PI * M_PI) + 2.0 * c.jump / M_PI * jump * dth;
 }
 
-Psd contact_filtered_psd(const Psd& g, double a, double k_min, double q_cap, std::size_t points_per_decade) {
+Psd contact_filtered_psd(const Psd& g, double a, double k_min, double q_cap, double k_max, std::size_t points_per_decade) {
   if (!(a > 0.0) || !std::isfinite(a)) throw std::invalid_argument("contact-filtered PSD: contact radius must be > 0");
   if (!(k_min > 0.0)) throw std::invalid_argument("contact-filtered PSD: k_min must be > 0");
+  if (!(k_max > k_min)) throw std::invalid_argument("contact-filtered PSD: k_max must exceed k_min");
   if (points_per_decade < 10) throw std::invalid_argument("contact-filtered PSD: at least 10 points per decade");
   const IsotropicPsd iso(g, 0.5 * k_min, q_cap, 100);
   const IsotropicSpectrum c = isotropic_spectrum(iso, g.breakpoints);
-  const double q_e = iso.q_end();
+  const double q_e = iso.q_end(), k_end = std::min(q_e, k_max);
   std::vector<double> k;
   const double ppd = static_cast<double>(points_per_decade);
   // Log spacing, but at most pi / (64 a): G_eq ripples with period ~pi/a in k (the ring zeros of
   // Eq. 37 crossing the line y = 0), which log-log interpolation must resolve at large ka.
   const double ratio = std::pow(10.0, 1.0 / ppd), max_step = M_PI / (64.0 * a);
-  for (double v = k_min; v < q_e; v = std::min(v * ratio, v + max_step)) k.push_back(v);
+  for (double v = k_min; v < k_end; v = std::min(v * ratio, v + max_step)) k.push_back(v);
   for (double b : g.breakpoints)
-    if (b > k_min && b < q_e) k.push_back(b);
-  k.push_back(q_e);
+    if (b > k_min && b < k_end) k.push_back(b);
+  k.push_back(k_end);
   std::sort(k.begin(), k.end());
   k.erase(std::unique(k.begin(), k.end()), k.end());
   std::vector<double> v(k.size());
   for (std::size_t i = 0; i < k.size(); ++i) v[i] = contact_filtered_line_psd(c, a, k[i]);  // Eq. 38
   Psd out = TabulatedPsd(k, v, Extension::zero).to_psd();
   out.support_min = k_min;
-  out.support_max = q_e;  // the table's nodes (g's breakpoints among them) are its breakpoints
+  out.support_max = k_end;  // the table's nodes (g's breakpoints among them) are its breakpoints
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.4g", a * 1e6);
   out.description = g.description + ", iso2d contact filter a = " + buf + " um";
+  return out;
+}
+
+std::vector<double> contact_filtered_psd_at(const Psd& g, double a, const std::vector<double>& k, double q_cap) {
+  if (!(a > 0.0) || !std::isfinite(a)) throw std::invalid_argument("contact-filtered PSD: contact radius must be > 0");
+  if (k.empty()) return {};
+  const double k_min = *std::min_element(k.begin(), k.end());
+  if (!(k_min > 0.0)) throw std::invalid_argument("contact-filtered PSD: wavenumbers must be > 0");
+  const IsotropicPsd iso(g, 0.5 * k_min, q_cap, 100);
+  const IsotropicSpectrum c = isotropic_spectrum(iso, g.breakpoints);
+  std::vector<double> out(k.size());
+  for (std::size_t i = 0; i < k.size(); ++i) out[i] = contact_filtered_line_psd(c, a, k[i]);  // Eq. 38
   return out;
 }
 

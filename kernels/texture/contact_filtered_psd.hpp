@@ -51,10 +51,14 @@ double contact_filtered_line_psd(const IsotropicSpectrum& c, double a, double k)
 double contact_filtered_line_psd_reference(const IsotropicSpectrum& c, double a, double k, std::size_t intervals);
 
 // The engine's step: line PSD g -> C_iso (Eq. 19-20, q from k_min / 2) -> G_eq (Eq. 38) on a log grid of
-// `points_per_decade` from k_min to q_e, steps at most pi / (64 a), plus g's breakpoints, log-log
-// interpolated (Eq. 40), zero
-// outside [k_min, q_e]. q_cap: where a PSD without upper end is cut (IsotropicPsd). Throws
-// std::invalid_argument for a <= 0 or k_min <= 0.
-Psd contact_filtered_psd(const Psd& g, double a, double k_min, double q_cap, std::size_t points_per_decade = 200);
+// `points_per_decade` from k_min to min(q_e, k_max), steps at most pi / (64 a), plus g's breakpoints,
+// log-log interpolated (Eq. 40), zero outside. q_cap: where a PSD without upper end is cut
+// (IsotropicPsd); k_max: the largest k anyone asks for (a line's Nyquist wavenumber: the surface
+// above it still counts, through y). Throws std::invalid_argument for a <= 0, k_min <= 0 or k_max <= k_min.
+Psd contact_filtered_psd(const Psd& g, double a, double k_min, double q_cap, double k_max,
+                         std::size_t points_per_decade = 200);
+
+// Eq. 38 of g at the given wavenumbers (all > 0) directly, without the table: for a few points.
+std::vector<double> contact_filtered_psd_at(const Psd& g, double a, const std::vector<double>& k, double q_cap);
 
 }  // namespace rollspec::texture

@@ -329,13 +329,12 @@ class BallOnBeam final : public Scene {
     }
     const double a = b_.contact_half_width;
     std::vector<double> raw(k.size()), patch(k.size()), iso(k.size());
-    texture::Psd geq;
     bool have_iso = true;
     if (b_.filter == ContactFilter::iso2d) {
-      geq = b_.line_psd;
+      for (std::size_t i = 0; i < k.size(); ++i) iso[i] = b_.line_psd(k[i]);  // what the line was synthesised from
     } else {
-      try {
-        geq = iso2d_line_psd(b_);
+      try {  // Eq. 38 at these k only: cheaper than the synthesis table
+        iso = iso2d_line_psd_at(b_, k);
       } catch (const std::exception&) {
         have_iso = false;
       }
@@ -344,7 +343,6 @@ class BallOnBeam final : public Scene {
       raw[i] = b_.psd(k[i]);
       const double t = beam::contact_patch_transfer(k[i], a, b_.spacing);
       patch[i] = raw[i] * t * t;  // (B35a)
-      if (have_iso) iso[i] = geq(k[i]);
     }
     w.write("/roughness/wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the rolling path (log grid)");
     w.make_scale("/roughness/wavenumber", "wavenumber");

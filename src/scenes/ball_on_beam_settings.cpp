@@ -116,10 +116,19 @@ void check_contact_resolution(const Study& s, const BallOnBeamSettings& b, doubl
 // G_eq of the study's PSD (kernels/texture README Eq. 38) from below the line's fundamental; a PSD
 // without upper end is cut where the flat-punch weight (Eq. 37) has fallen below 1e-6 in power, or
 // at ten times the line's Nyquist wavenumber if that is further.
+namespace {
+double iso2d_q_cap(const BallOnBeamSettings& b) { return std::max(1e3 / b.contact_half_width, 10.0 * M_PI / b.spacing); }
+}  // namespace
+
+std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::vector<double>& k) {
+  return texture::contact_filtered_psd_at(b.psd, b.contact_half_width, k, iso2d_q_cap(b));
+}
+
 texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
   const double k_min = M_PI / (static_cast<double>(b.line_samples) * b.spacing);
-  const double q_cap = std::max(1e3 / b.contact_half_width, 10.0 * M_PI / b.spacing);
-  return texture::contact_filtered_psd(b.psd, b.contact_half_width, k_min, q_cap);
+  const double q_cap = iso2d_q_cap(b);
+  // The line's harmonics reach pi / spacing at most: G_eq is tabulated up to there.
+  return texture::contact_filtered_psd(b.psd, b.contact_half_width, k_min, q_cap, M_PI / b.spacing);
 }
 
 BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "kernels/beam/ball_on_beam.hpp"
 #include "kernels/beam/exact_step_integrator.hpp"
@@ -66,6 +67,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const study::Study& s);
 // G_eq of b.psd for the Hertz radius b.contact_half_width (filter = iso2d), over the line's
 // wavenumbers; throws std::invalid_argument where the PSD has no isotropic form.
 texture::Psd iso2d_line_psd(const BallOnBeamSettings& b);
+// The same G_eq at the wavenumbers k directly (for /roughness when the study uses another filter).
+std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::vector<double>& k);
 
 // Refuses (at [signal] substeps) a step that does not resolve the ball's bounce on a contact
 // stiffness k_contact at the weight; the table laws call it again once their stiffness is known.

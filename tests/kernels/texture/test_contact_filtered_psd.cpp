@@ -140,7 +140,7 @@ TEST_CASE("the tabulated G_eq the engine synthesises from") {
   const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 1.26e5, 1.57e6, RmsTarget::height, 0.36e-6});
   const Psd g = model.to_psd();
   const double a = 69e-6;
-  const Psd geq = contact_filtered_psd(g, a, 5.0, 1e9, 200);
+  const Psd geq = contact_filtered_psd(g, a, 5.0, 1e9, 4e5, 200);
   const IsotropicPsd iso(g, 2.5, 1e9, 100);
   const IsotropicSpectrum c = isotropic_spectrum(iso, g.breakpoints);
   double worst = 0.0;
@@ -150,6 +150,7 @@ TEST_CASE("the tabulated G_eq the engine synthesises from") {
   // ka << 1: the contact sees the line PSD; ka >> 1: far less (2D averaging).
   CHECK(geq(100.0) == doctest::Approx(model(100.0)).epsilon(2e-3));
   CHECK(geq(2e5) < 0.1 * model(2e5));
-  CHECK(geq(2e6) == 0.0);
-  CHECK_THROWS_AS(contact_filtered_psd(g, 0.0, 5.0, 1e9), std::invalid_argument);
+  CHECK(geq(5e5) == 0.0);  // beyond k_max: nobody asks
+  CHECK_THROWS_AS(contact_filtered_psd(g, 0.0, 5.0, 1e9, 4e5), std::invalid_argument);
+  CHECK_THROWS_AS(contact_filtered_psd(g, a, 5.0, 1e9, 4.0), std::invalid_argument);
 }
