@@ -21,8 +21,8 @@ import numpy as np
 
 SOURCE = pathlib.Path(__file__).resolve().parents[1]
 BIN = os.environ.get("ROLLSPEC_BIN", str(SOURCE / "build" / "release" / "rollspec"))
-STUDIES = (("seed 001 beam S, Hertz law", "seed001-beam-s.ini"),
-           ("seed 001 beam S, the seed's chain (profiles -> stiffness table law)", "seed001-beam-s-profiles.ini"),
+STUDIES = (("seed 001 beam S, Hertz law", "seed001-beam-s-hertz.ini"),
+           ("seed 001 beam S, the seed's chain (profiles -> stiffness table law)", "seed001-beam-s.ini"),
            ("seed 002 rig 1 m/s", "seed002-rig-1ms.ini"))
 FILTERS = ("none", "patch", "iso2d")
 F_LOW = 2000.0

@@ -19,6 +19,28 @@ std::vector<double> psd_at_harmonics(const Psd& psd, double dk, std::size_t coun
   return g;
 }
 
+Psd band_limited(Psd psd, double k_max) {
+  if (!(k_max > 0.0)) throw std::invalid_argument("band limit k_max must be positive");
+  if (!(k_max < psd.support_max)) return psd;
+  psd.density = [g = std::move(psd.density), k_max](double k) { return k > k_max ? 0.0 : g(k); };
+  psd.support_max = k_max;
+  psd.breakpoints.push_back(k_max);
+  psd.description += ", band-limited to k <= " + std::to_string(k_max) + " rad/m";
+  return psd;
+}
+
+Psd interpolation_compensated(Psd psd, double dx) {
+  if (!(dx > 0.0) || !(psd.support_max * dx < M_PI))
+    throw std::invalid_argument("interpolation_compensated needs a PSD band-limited below pi/dx");
+  psd.density = [g = std::move(psd.density), dx](double k) {
+    const double x = 0.5 * k * dx;
+    const double sinc = x < 1e-8 ? 1.0 : std::sin(x) / x;
+    return g(k) / (sinc * sinc * sinc * sinc);
+  };
+  psd.description += ", compensated for the linear interpolant at dx = " + std::to_string(dx) + " m";
+  return psd;
+}
+
 double integrate_psd(const Psd& psd, double k0, double k1, double p, std::size_t points) {
   if (!(k0 > 0.0) || !(k1 > k0) || points < 2) throw std::invalid_argument("integrate_psd needs 0 < k0 < k1, >= 2 points");
   const double r = std::log(k1 / k0) / static_cast<double>(points - 1);

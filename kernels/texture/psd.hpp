@@ -26,6 +26,16 @@ struct Psd {
   double operator()(double k) const { return density(k); }
 };
 
+// G with every wavenumber above k_max removed: G(k) = 0 for k > k_max (support_max and a breakpoint
+// at k_max). An ideal low-pass of the roughness, used as the anti-alias band limit (beam README B40).
+Psd band_limited(Psd psd, double k_max);
+
+// G(k) / sinc^4(k dx / 2), sinc(x) = sin(x)/x: the PSD to synthesise samples at spacing dx from so
+// that their piecewise-linear interpolant, whose hat kernel scales a wave of wavenumber k by
+// sinc^2(k dx / 2), carries G's power (beam README B40a). Only for a band-limited G, k_max dx < pi
+// (the gain at k dx = pi would be 6.1); throws otherwise.
+Psd interpolation_compensated(Psd psd, double dx);
+
 // G at the harmonics j dk, j = 0..count-1 (entry 0 is the DC term and set to 0). Evaluates the
 // density at every harmonic, so a table without extension throws for a harmonic it does not cover.
 std::vector<double> psd_at_harmonics(const Psd& psd, double dk, std::size_t count);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates every picture the README shows, from the current Release build, so none can go stale:
 #   cmake --build --preset release && bash python-post/docs/make_readme_pictures.sh
-# About 2-3 minutes on 2 cores (the rolling-pipe study is most of it). Needs /usr/bin/chromium for
+# About 10 minutes on 2 cores (seed 002 with the contact-solver F0 and seed 001's stiffness tables are most of it). Needs /usr/bin/chromium for
 # the report screenshot (.ci/setup installs it).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -18,6 +18,26 @@ post psd "$work/ro.h5" --bands --xscale log --out "$docs/random-oscillator-psd.p
 # Seed 002 rig at 1 m/s: the mean of the 5 sensors beside the frequency-domain solution.
 "$bin" run studies/seed002-rig-1ms.ini --out "$work/rig.h5" --quiet
 post psd "$work/rig.h5" --bands --sensor sensor_mean --out "$docs/seed002-rig-psd.png"
+
+# Seed 002 in its own style (linear 0-5 kHz, dB): both speeds, the spring F0 the study ships against the
+# contact-solver F0 on its derived grid (issue 15 part 3).
+"$bin" run studies/seed002-rig-3ms.ini --out "$work/rig3.h5" --quiet
+"$bin" run studies/seed002-rig-1ms.ini --out "$work/rig-solver.h5" --quiet --set contact.blocked_force=solver
+"$bin" run studies/seed002-rig-3ms.ini --out "$work/rig3-solver.h5" --quiet --set contact.blocked_force=solver
+post panels --panel "1 m/s" "$work/rig.h5=spring F0 (study)" "$work/rig-solver.h5=contact-solver F0" \
+  --panel "3 m/s" "$work/rig3.h5=spring F0 (study)" "$work/rig3-solver.h5=contact-solver F0" \
+  --out "$docs/seed002-seed-style.png"
+
+# Seed 001 in its own style (Fig. 8): beams S and R, the seed's chain (profiles -> stiffness table)
+# against the Hertz law with a parametric PSD.
+for beam in s r; do
+  "$bin" run studies/seed001-beam-$beam.ini --out "$work/seed001-$beam.h5" --quiet
+  "$bin" run studies/seed001-beam-$beam-hertz.ini --out "$work/seed001-$beam-hertz.h5" --quiet
+done
+post panels --panel "Beam S (ground, Ra 0.29 µm)" "$work/seed001-s.h5=stiffness table from profiles" \
+  "$work/seed001-s-hertz.h5=Hertz, parametric PSD" \
+  --panel "Beam R (milled, Ra 2.25 µm)" "$work/seed001-r.h5=stiffness table from profiles" \
+  "$work/seed001-r-hertz.h5=Hertz, parametric PSD" --out "$docs/seed001-seed-style.png"
 
 # Report of the rig against a "measurement": the sensor mean of 25 other rolls of the same model,
 # judged by the prediction interval for a 25-roll measurement.
@@ -47,7 +67,7 @@ post psd "$work/pipe.h5" --bands --sensors all --xscale log --out "$docs/rolling
 post texture "$work/texture.h5" --out "$docs/texture-demo.png"
 
 # Seed 001 beam S: the roughness PSD along the path, raw and under each contact filter (/roughness).
-"$bin" run studies/seed001-beam-s.ini --out "$work/beam-s.h5" --quiet --set study.realisations=1 --set contact.filter=iso2d
+"$bin" run studies/seed001-beam-s-hertz.ini --out "$work/beam-s.h5" --quiet --set study.realisations=1 --set contact.filter=iso2d
 post roughness "$work/beam-s.h5" --out "$docs/seed001-contact-filter.png"
 
 # Work-precision of the ball-on-beam integrators, from the table bench/beam/bench_beam wrote.

@@ -40,6 +40,12 @@ def build_parser():
     b = sub.add_parser("bench", help="work-precision plot: error against run time, log-log, one line per method")
     b.add_argument("csv", help="CSV with columns method (or integrator), seconds (or time_s), error_db (or error)")
     b.add_argument("--out", "-o", required=True, help="output PNG")
+    n = sub.add_parser("panels", help="results side by side in the seeds' style: PSD level in dB, linear 0-5 kHz")
+    n.add_argument("--panel", nargs="+", action="append", required=True, metavar="WORD",
+                   help="TITLE FILE=LABEL [FILE=LABEL ...]: one panel; the first curve solid black, the others dotted/dashed")
+    n.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
+    n.add_argument("--fmax", type=float, default=5000.0, help="highest frequency drawn (Hz; default 5000)")
+    n.add_argument("--out", "-o", required=True, help="output picture: .png, .pdf or .svg")
     r = sub.add_parser("report", help="one self-contained HTML page: key figures, PSD, provenance, study")
     r.add_argument("result", help="rollspec result file (HDF5)")
     r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
@@ -80,6 +86,9 @@ def run(args):
     elif args.command == "bench":
         from .bench_plot import plot_bench
         plot_bench(args.csv, args.out)
+    elif args.command == "panels":
+        from .panels_plot import parse_panel, plot_panels
+        plot_panels([parse_panel(words) for words in args.panel], args.out, args.fmax, args.sensor)
     elif args.command == "report":
         from .report_page import build_report
         build_report(args.result, args.out, args.measurement, args.sensor, args.fmin, args.fmax, args.column,

@@ -17,7 +17,7 @@ def beam(tmp_path_factory):
     files = {}
     for name, seed in (("model", 11), ("measured", 12)):
         out = d / f"{name}.h5"
-        r = subprocess.run([BIN, "run", SOURCE / "studies" / "seed001-beam-s.ini", "--out", out, "--quiet",
+        r = subprocess.run([BIN, "run", SOURCE / "studies" / "seed001-beam-s-hertz.ini", "--out", out, "--quiet",
                             "--set", f"study.seed={seed}"], capture_output=True, text=True)
         assert r.returncode == 0, r.stderr
         files[name] = out

@@ -171,6 +171,7 @@ class BallOnBeam final : public Scene {
   // texture (F0 = W + k0 h), the texture's shape scaled to the table at its third bin: bins 1 and 2
   // of a Hann-windowed segment hold the leakage of waves longer than the segment (the strip is finite).
   double blocked_force_psd(double k) const {
+    if (k > b_.band_limit_wavenumber) return 0.0;  // B40, as the texture
     const std::size_t anchor = std::min<std::size_t>(3, blocked_.psd_wavenumber.size() - 1);
     const double k1 = blocked_.psd_wavenumber.size() > 1 ? blocked_.psd_wavenumber[anchor] : 0.0;
     if (k >= k1 || !(k > 0.0)) return blocked_.psd_at(k);
@@ -314,10 +315,11 @@ class BallOnBeam final : public Scene {
            " um on the isotropic surface (kernels/texture Eq. 38)";
   }
 
-  // /roughness: the path PSD raw (the study's [texture]) and as each filter passes it, on a log
-  // grid from the line's fundamental to its Nyquist wavenumber: what the contact sees (python-post
-  // roughness_filter_plot). psd_patch is B35a on the samples, psd_iso2d Eq. 38 (absent where the PSD
-  // has no isotropic form and the study does not ask for iso2d).
+  // /roughness: the path PSD raw (the study's [texture], no band limit) and what the contact sees
+  // under each filter, band limit (B40) included, on a log grid from the line's fundamental to its
+  // Nyquist wavenumber (python-post roughness_filter_plot). psd_patch: the patch line (B40a-compensated
+  // where it applies) through B35a on the samples; psd_iso2d: Eq. 38 (absent where the PSD has no
+  // isotropic form and the study does not ask for iso2d).
   void write_roughness(io::Hdf5Writer& w) const {
     if (blocked_solver()) return;
     const double k0 = lines_->fundamental(), k1 = M_PI / b_.spacing;
@@ -339,16 +341,20 @@ class BallOnBeam final : public Scene {
         have_iso = false;
       }
     }
+    // The patch line is drawn compensated for the linear interpolant (B40a) when band-limited below pi/dx.
+    const bool compensated = b_.band_limit_wavenumber * b_.spacing < M_PI;
     for (std::size_t i = 0; i < k.size(); ++i) {
-      raw[i] = b_.psd(k[i]);
-      const double t = beam::contact_patch_transfer(k[i], a, b_.spacing);
-      patch[i] = raw[i] * t * t;  // (B35a)
+      raw[i] = b_.texture_psd(k[i]);
+      const double t = beam::contact_patch_transfer(k[i], a, b_.spacing), h = 0.5 * k[i] * b_.spacing;
+      const double sinc2 = std::pow(std::sin(h) / h, 2);
+      patch[i] = b_.psd(k[i]) * t * t / (compensated ? sinc2 * sinc2 : 1.0);  // (B35a, B40a)
     }
     w.write("/roughness/wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the rolling path (log grid)");
     w.make_scale("/roughness/wavenumber", "wavenumber");
     w.write("/roughness/psd_raw", {k.size()}, raw.data(), "m^3", "one-sided line PSD of [texture] along the path");
     w.write("/roughness/psd_patch", {k.size()}, patch.data(), "m^3",
-            "psd_raw x T(k)^2, T the 1D patch average over 2a on the line's samples (kernels/beam B35a)");
+            "band-limited psd_raw x T(k)^2 / sinc^4(k dx/2) (B40a, where compensated), T the 1D patch average over 2a "
+            "on the line's samples (kernels/beam B35a)");
     if (have_iso)
       w.write("/roughness/psd_iso2d", {k.size()}, iso.data(), "m^3",
               "G_eq: path PSD of the isotropic surface under a Hertz disc of radius a (kernels/texture Eq. 38)");
@@ -357,6 +363,7 @@ class BallOnBeam final : public Scene {
     w.attribute("/roughness", "filter", b_.filter_name);
     w.attribute("/roughness", "contact_half_width", a);
     w.attribute("/roughness", "spacing", b_.spacing);
+    w.attribute("/roughness", "band_limit_wavenumber", b_.band_limit_wavenumber);
   }
 
   // Frequency-domain solution of the linearised model made exact for what the Monte-Carlo

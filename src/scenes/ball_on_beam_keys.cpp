@@ -65,6 +65,11 @@ std::vector<KeySpec> ball_on_beam_keys() {
                "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
                "step, v / (sample_rate x substeps)",
                std::string("0"), 0.0, inf),
+      choice_key("roughness", "band_limit",
+                 "roughness the ball sees: output (wavelengths shorter than v / (sample_rate / 2) dropped, an ideal "
+                 "anti-alias filter on the linear response; kernels/beam B40) or step (up to the sampling's pi/dx: the "
+                 "response above sample_rate / 2 aliases into the bands)",
+                 std::string("output"), {"output", "step"}),
       real_key("signal", "sample_rate", "Hz", "output sample rate of accelerations and forces", std::string("25600"), 0.0,
                inf, false),
       integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"), 1,

@@ -121,14 +121,20 @@ double iso2d_q_cap(const BallOnBeamSettings& b) { return std::max(1e3 / b.contac
 }  // namespace
 
 std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::vector<double>& k) {
-  return texture::contact_filtered_psd_at(b.psd, b.contact_half_width, k, iso2d_q_cap(b));
+  std::vector<double> g = texture::contact_filtered_psd_at(b.texture_psd, b.contact_half_width, k, iso2d_q_cap(b));
+  for (std::size_t i = 0; i < k.size(); ++i)
+    if (k[i] > b.band_limit_wavenumber) g[i] = 0.0;  // B40 along the path
+  return g;
 }
 
 texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
   const double k_min = M_PI / (static_cast<double>(b.line_samples) * b.spacing);
   const double q_cap = iso2d_q_cap(b);
-  // The line's harmonics reach pi / spacing at most: G_eq is tabulated up to there.
-  return texture::contact_filtered_psd(b.psd, b.contact_half_width, k_min, q_cap, M_PI / b.spacing);
+  // From the unlimited [texture]: the band limit (B40) is along the path, while Eq. 38 integrates
+  // across it. The line's harmonics reach pi / spacing at most, the band limit drops what lies
+  // beyond k_B: G_eq is tabulated up to the lower of the two (zero above, as band_limited).
+  return texture::contact_filtered_psd(b.texture_psd, b.contact_half_width, k_min, q_cap,
+                                       std::min(M_PI / b.spacing, b.band_limit_wavenumber));
 }
 
 BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
@@ -136,7 +142,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   beam::BallOnBeamModel& m = b.model;
   const double length = s.real("beam.length");
-  b.psd = texture_io::study_psd(s);
+  b.texture_psd = texture_io::study_psd(s);
+  b.psd = b.texture_psd;
   b.sensor_mean = s.boolean("sensors.average");
   b.dopri = s.text("signal.integrator") == "dopri5";
   b.rtol = s.real("signal.rtol");
@@ -154,6 +161,12 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   m.traverse.speed = s.real("ball.speed");
   if (!(m.traverse.x_end > m.traverse.x_start)) s.refuse("ball.end", "must exceed [ball] start");
   if (m.traverse.x_end > length) s.refuse("ball.end", "lies beyond the span [0, length]");
+  // Anti-alias band limit (kernels/beam B40): the output holds f <= f_s / 2, that is k <= pi f_s / v;
+  // roughness beyond it would drive the linear response above f_s / 2, which the sampling aliases in.
+  if (s.text("roughness.band_limit") == "output") {
+    b.band_limit_wavenumber = M_PI * m.sample_rate / m.traverse.speed;
+    b.psd = texture::band_limited(std::move(b.psd), b.band_limit_wavenumber);
+  }
   // Contact.
   b.law_name = s.text("contact.law");
   b.contact = contact_model(s);
@@ -183,6 +196,14 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   if (static_cast<double>(b.line_samples - 1) * b.spacing < reach)
     b.line_samples = static_cast<std::size_t>(std::ceil(reach / b.spacing)) + 1;
   if (b.line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
+  // The patch average runs on the samples' linear interpolant (B35a: an extra sinc^2(k dx/2));
+  // a band-limited line is drawn with that loss undone (B40a), so it sees the continuous texture.
+  if (b.filter == ContactFilter::iso2d)
+    b.line_psd = iso2d_study_psd(s, b);  // no patch average on the samples: nothing to compensate (B40a)
+  else
+    b.line_psd = (b.patch_half_width > 0.0 && b.band_limit_wavenumber * b.spacing < M_PI)
+                     ? texture::interpolation_compensated(b.psd, b.spacing)
+                     : b.psd;
   if (!b.uses_table() && !b.blocked_solver())
     check_contact_resolution(s, b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
   check_step_coefficients(s, b);
@@ -195,7 +216,6 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
     s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
                                      " samples = ((end - start) / speed - skip_start) x sample_rate)");
   b.welch = study_welch_config(s, m.sample_rate);
-  b.line_psd = b.filter == ContactFilter::iso2d ? iso2d_study_psd(s, b) : b.psd;
   return b;
 }
 

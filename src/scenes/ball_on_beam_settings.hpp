@@ -5,6 +5,7 @@
 // the texture, surface and table stages read their own sections (texture_keys, stiffness_keys).
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,8 +37,12 @@ struct BallOnBeamSettings {
   beam::BallOnBeamModel model;
   ContactModel contact = ContactModel::hertz;
   std::string law_name;            // [contact] law as written, for the result file
-  texture::Psd psd;                // [texture]
-  texture::Psd line_psd;           // the line texture's PSD: psd, or G_eq of psd for filter = iso2d
+  texture::Psd texture_psd;        // [texture] as given: the surface iso2d filters (no band limit across the path)
+  texture::Psd psd;                // [texture], band-limited by [roughness] band_limit
+  double band_limit_wavenumber = std::numeric_limits<double>::infinity();  // rad/m; B40
+  // What the line samples are drawn from: psd (none), psd B40a-compensated (patch on a band-limited
+  // line), or G_eq of texture_psd, band-limited (iso2d).
+  texture::Psd line_psd;
   ContactFilter filter = ContactFilter::patch;
   std::string filter_name;         // [contact] filter as written
   double contact_half_width = 0.0; // Hertz contact radius a at the weight (what the filters use)

@@ -13,7 +13,7 @@ import pytest
 
 from conftest import EX_USAGE, SOURCE, run
 
-STUDY = SOURCE / "studies" / "seed001-beam-s.ini"
+STUDY = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
 
 
 def result(tmp_path, name, *sets):

@@ -9,7 +9,7 @@ from scipy import integrate
 
 from conftest import EX_CONFIG, SOURCE, assert_refused, run
 
-BEAM_S = SOURCE / "studies" / "seed001-beam-s.ini"
+BEAM_S = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 SHORT = ["--set", "ball.end=0.12", "--set", "spectrum.segment=1024"]  # 0.1 s records: fast
 
@@ -92,12 +92,16 @@ def test_roughness_group_against_an_independent_evaluation(tmp_path):
     k_r, k_s = 2 * np.pi / 50e-6, 2 * np.pi / 4e-6
     expected_raw, _ = self_affine(k, 0.8, k_r, k_s, 0.36e-6)
     assert np.allclose(raw, expected_raw, rtol=1e-9)
-    # patch: B35a on the samples, sin(ka)/(ka) sinc^2(k dx/2) up to O(dx/a) (dx/a = 0.14 here)
-    t = np.sinc(k * a / np.pi) * np.sinc(k * dx / 2 / np.pi) ** 2
+    # patch: the band-limited line drawn compensated for the linear interpolant (B40a), then B35a on
+    # the samples: the continuous sin(ka)/(ka) up to O(dx/a) aliases (dx/a = 0.14 here)
+    t = np.sinc(k * a / np.pi)
     low = k * a < 1
     assert np.allclose(patch[low], raw[low] * t[low] ** 2, rtol=0.02)
+    # the band limit (B40, [roughness] band_limit = output): nothing beyond k_B = pi f_s / v
+    k_b = np.pi * 25600 / 1.0
+    assert np.all(iso[k > k_b] == 0) and np.all(patch[k > k_b] == 0) and np.all(iso[k <= k_b] > 0)
     assert np.all(iso <= raw * (1 + 1e-3)) and np.all(patch <= raw * (1 + 1e-9))
-    for kk in (60.0, 4e3, 3e4, 1.5e5):
+    for kk in (60.0, 4e3, 3e4, 7e4):  # below the band limit k_B = 8.0e4 rad/m
         i = np.argmin(abs(np.log(k / kk)))
         ref = iso2d_scipy(k[i], a, 0.8, k_r, k_s, 0.36e-6)
         assert iso[i] == pytest.approx(ref, rel=1e-3, abs=0), (k[i], iso[i], ref)

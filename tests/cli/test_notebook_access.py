@@ -41,7 +41,7 @@ def files(tmp_path_factory):
     out["oscillator"] = d / "ro.h5"
     ok(["run", study("random-oscillator.ini"), "--out", out["oscillator"], "--quiet", "--set", "study.realisations=5"])
     out["ball_on_beam"] = d / "bb.h5"
-    ok(["run", study("seed001-beam-s.ini"), "--out", out["ball_on_beam"], "--quiet", "--set", "study.realisations=5",
+    ok(["run", study("seed001-beam-s-hertz.ini"), "--out", out["ball_on_beam"], "--quiet", "--set", "study.realisations=5",
         "--set", "output.time_histories=2"])
     out["rolling_beam"] = d / "disc.h5"
     ok(["run", study("seed000-disc.ini"), "--out", out["rolling_beam"], "--quiet"])
@@ -105,10 +105,10 @@ def test_open_result_gives_every_group(files, kind):
 def test_run_from_python(tmp_path):
     from rollspec_post import run as run_study
     from rollspec_post.result_file import PostError
-    r = run_study(SOURCE / "studies" / "seed001-beam-s.ini", out=tmp_path / "r.h5", set={"study.realisations": 6})
+    r = run_study(SOURCE / "studies" / "seed001-beam-s-hertz.ini", out=tmp_path / "r.h5", set={"study.realisations": 6})
     level = r["bands"]["level_db"].sel(sensor="sensor_mean")
     assert level.dims == ("centre_frequency",) and int(r["psd"].attrs["realisations"]) == 6
     with pytest.raises(PostError) as e:
-        run_study(SOURCE / "studies" / "seed001-beam-s.ini", out=tmp_path / "x.h5", set={"study.realisations": -1})
+        run_study(SOURCE / "studies" / "seed001-beam-s-hertz.ini", out=tmp_path / "x.h5", set={"study.realisations": -1})
     assert e.value.exit_code == 78 and "realisations = -1" in str(e.value)
     assert not (tmp_path / "x.h5").exists()

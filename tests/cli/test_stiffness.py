@@ -123,7 +123,7 @@ def test_rough_table_is_reproducible_and_softer_than_hertz(tmp_path):
 
 
 def test_ball_on_beam_with_table_law(tmp_path):
-    study = copy_study(tmp_path, "seed001-beam-s.ini")
+    study = copy_study(tmp_path, "seed001-beam-s-hertz.ini")
     common = ["--set", "contact.law=table", "--set", "study.realisations=2", "--set", "ball.end=0.1",
               "--set", "stiffness.surface=smooth", "--set", "stiffness.approach_max=1e-6", "--set", "stiffness.steps=10",
               "--set", "surface.nx=64", "--set", "surface.ny=64", "--set", "surface.spacing=5e-6",

@@ -11,7 +11,7 @@ import pytest
 from conftest import BIN, SOURCE
 
 pytestmark = pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux absent (.ci/setup installs it)")
-STUDY = SOURCE / "studies" / "seed001-beam-s.ini"
+STUDY = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
 
 
 class Terminal:

@@ -1,0 +1,89 @@
+#!/usr/bin/python3
+"""Accuracy of a study's own settings against a converged run of the same study, and their cost per
+realisation, as whole `rollspec run` commands (issue 18 goal 2). Prints a Markdown table for the README.
+
+  /usr/bin/python3 bench/engine/bench_default_accuracy.py [--bin build/release/rollspec]
+      [--study studies/seed002-rig-1ms.ini] [--realisations 25] [--cost-realisations 400]
+
+Error: the largest |ΔL| of the sensor-mean third-octave bands 100 Hz-5 kHz against a converged run
+of the same seed: 64 substeps with the line sampled at a quarter of the case's spacing (the same line
+length, so the same roughness harmonics; checked for band_limit = output: the bands below 300 Hz agree
+to 0.002 dB).
+Cost: CPU seconds per realisation of a 1-thread run without the reference, from /usr/bin/time, minus
+a 1-realisation run's (set-up). Cases: substeps 2/4/8 at their default line spacing v / (f_s substeps),
+[roughness] band_limit = output (the default: roughness beyond f_s/2 dropped, the patch filter's
+interpolation loss undone, kernels/beam B40-B40a) and = step (before issue 18).
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+
+def run(cmd, threads=1):
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    with tempfile.NamedTemporaryFile("r", suffix=".time") as t:
+        r = subprocess.run(["/usr/bin/time", "-f", "%U %S", "-o", t.name, *map(str, cmd)], capture_output=True,
+                           text=True, env=env)
+        if r.returncode != 0:
+            sys.exit(f"failed: {' '.join(map(str, cmd))}\n{r.stderr}")
+        user, system = t.read().split()[-2:]
+    return float(user) + float(system)
+
+
+def bands(path):
+    """Sensor-mean band levels below 300 Hz (the harmonics check) and 100 Hz-5 kHz (the error)."""
+    with h5py.File(path) as f:
+        names = [n.decode() if isinstance(n, bytes) else n for n in f["/bands/sensor"][:]]
+        c = f["/bands/centre_frequency"][:]
+        level = f["/bands/level_db"][names.index("sensor_mean")]
+        return level[c < 300], level[(c >= 100) & (c <= 5000)]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", default="build/release/rollspec")
+    ap.add_argument("--study", default="studies/seed002-rig-1ms.ini")
+    ap.add_argument("--realisations", type=int, default=25)
+    ap.add_argument("--cost-realisations", type=int, default=400)
+    a = ap.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        base = [a.bin, "run", a.study, "--force", "--quiet", "--set", "output.reference=false"]
+        with h5py.File(keep(base, tmp / "probe.h5", ["study.realisations=1"])) as f:
+            speed = float(f["/ball"].attrs["speed"][0])
+            fs = 2.0 * float(f["/psd/frequency"][-1])  # the one-sided PSD ends at f_s / 2
+        setup = run(base + ["--out", tmp / "one.h5", "--set", "study.realisations=1"])
+        print(f"`{a.study}`: largest sensor-mean band error 100 Hz-5 kHz against 64 substeps on a 4x finer line "
+              f"({a.realisations} realisations, same seed); CPU per realisation on 1 thread ({a.cost_realisations} "
+              "realisations, set-up subtracted)\n")
+        print("| band_limit | substeps | max band error | CPU per realisation |")
+        print("|---|---|---|---|")
+        for limit in ("output", "step"):
+            for n in (2, 4, 8):
+                sets = [f"roughness.band_limit={limit}", f"signal.substeps={n}"]
+                case = keep(base, tmp / "case.h5", [f"study.realisations={a.realisations}", *sets])
+                conv = keep(base, tmp / "conv.h5", [f"study.realisations={a.realisations}", f"roughness.band_limit={limit}",
+                                                    "signal.substeps=64", f"roughness.spacing={speed / (fs * n) / 4!r}"])
+                (lc, ec), (lr, er) = bands(case), bands(conv)
+                # (band_limit = step: the finer line adds shorter waves, whose aliases reach the low bands.)
+                if limit == "output" and np.abs(lc - lr).max() > 0.002:
+                    sys.exit(f"{limit}, {n} substeps: the converged run drew other harmonics (line length differs)")
+                cpu = run(base + ["--out", tmp / "cost.h5", "--set", f"study.realisations={a.cost_realisations}",
+                                  *sum((["--set", s] for s in sets), [])])
+                print(f"| {limit} | {n} | {np.abs(ec - er).max():.4f} dB | "
+                      f"{1e3 * (cpu - setup) / (a.cost_realisations - 1):.1f} ms |")
+
+
+def keep(base, out, sets):
+    run(base + ["--out", out, *sum((["--set", s] for s in sets), [])])
+    return out
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,56 @@
+"""Seed 001 as the paper ran it (issue 15 part 1; CTest label `studies`, about 2 min): the shipped
+studies seed001-beam-s.ini and seed001-beam-r.ini run the seed's chain from the stand-in profiles
+(studies/data/seed001-profiles/) through isotropic surfaces and an elastic-plastic stiffness table to
+the table law, 25 realisations each, and reproduce the seed's finding (§4, conclusions): "frequent
+loss of contact" on the rough beam R, rarely on the ground beam S."""
+import shutil
+
+import h5py
+import numpy as np
+import pytest
+
+from conftest import SOURCE, run
+
+
+@pytest.fixture(scope="module")
+def beams(tmp_path_factory):
+    d = tmp_path_factory.mktemp("seed001")
+    studies = d / "studies"
+    shutil.copytree(SOURCE / "studies", studies, ignore=shutil.ignore_patterns("tables"))
+    out = {}
+    for beam in ("s", "r"):
+        study = studies / f"seed001-beam-{beam}.ini"
+        plan = run(["plan", study])
+        assert plan.returncode == 0, plan.stderr
+        stages = {row.split()[0]: row.split()[1] for row in plan.stdout.splitlines() if len(row.split()) >= 2}
+        assert stages.get("stiffness_table") == "run", plan.stdout  # the table is built from the profiles
+        h5 = d / f"beam-{beam}.h5"
+        r = run(["run", study, "--out", h5, "--quiet"], timeout=900)
+        assert r.returncode == 0, r.stderr
+        with h5py.File(h5) as f:
+            law = f["/contact"].attrs["law"]
+            out[beam] = {"law": law.decode() if isinstance(law, bytes) else law,
+                         "loss": float(f["/contact/loss_of_contact_share"][0]),
+                         "bands": f["/bands/level_db"][-1], "centre": f["/bands/centre_frequency"][:]}
+    return out
+
+
+def test_both_beams_run_the_table_law_from_the_profiles(beams):
+    assert beams["s"]["law"] == "table" and beams["r"]["law"] == "table"
+
+
+def test_beam_r_loses_contact_frequently_and_beam_s_rarely(beams):
+    # Measured when written: S 2.1 %, R 50 % of the time out of contact (25 realisations each).
+    s, r = beams["s"]["loss"], beams["r"]["loss"]
+    assert s < 0.05, s
+    assert r > 0.3, r
+    assert r > 10 * s, (s, r)
+
+
+def test_the_rougher_beam_is_louder_where_the_roughness_drives_it(beams):
+    # Ra 2.25 um against 0.29 um (7.8x): beam R's acceleration is higher in every band 100 Hz-5 kHz
+    # even with contact lost half of the time (measured when written: by 3.7 dB at least, at 1 kHz).
+    # The seed gives no band levels in its text, so this is a consistency check, not a published figure.
+    centre = beams["s"]["centre"]
+    band = (centre >= 100) & (centre <= 5000)
+    assert np.all(beams["r"]["bands"][band] > beams["s"]["bands"][band])
