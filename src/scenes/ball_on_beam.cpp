@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 #include <string>
 
 #include "kernels/beam/ball_on_beam.hpp"
@@ -344,7 +345,11 @@ class BallOnBeam final : public Scene {
     // The patch line is drawn compensated for the linear interpolant (B40a) when band-limited below pi/dx.
     const bool compensated = b_.band_limit_wavenumber * b_.spacing < M_PI;
     for (std::size_t i = 0; i < k.size(); ++i) {
-      raw[i] = b_.texture_psd(k[i]);
+      try {
+        raw[i] = b_.texture_psd(k[i]);
+      } catch (const std::domain_error&) {  // a table without extension, beyond the band limit: no power known
+        raw[i] = 0.0;
+      }
       const double t = beam::contact_patch_transfer(k[i], a, b_.spacing), h = 0.5 * k[i] * b_.spacing;
       const double sinc2 = std::pow(std::sin(h) / h, 2);
       patch[i] = b_.psd(k[i]) * t * t / (compensated ? sinc2 * sinc2 : 1.0);  // (B35a, B40a)

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <string>
 
 #include "kernels/beam/contact_patch_filter.hpp"
@@ -113,10 +113,9 @@ void check_contact_resolution(const Study& s, const BallOnBeamSettings& b, doubl
   }
 }
 
-// G_eq of the study's PSD (kernels/texture README Eq. 38) from below the line's fundamental; a PSD
-// without upper end is cut where the flat-punch weight (Eq. 37) has fallen below 1e-6 in power, or
-// at ten times the line's Nyquist wavenumber if that is further.
 namespace {
+// A PSD without upper end is cut where the flat-punch weight (Eq. 37) has fallen below 1e-6 in
+// power, or at ten times the line's Nyquist wavenumber if that is further.
 double iso2d_q_cap(const BallOnBeamSettings& b) { return std::max(1e3 / b.contact_half_width, 10.0 * M_PI / b.spacing); }
 }  // namespace
 
@@ -127,6 +126,7 @@ std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::ve
   return g;
 }
 
+// G_eq of the study's PSD (kernels/texture README Eq. 38, 40) from below the line's fundamental.
 texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
   const double k_min = M_PI / (static_cast<double>(b.line_samples) * b.spacing);
   const double q_cap = iso2d_q_cap(b);
