@@ -66,5 +66,9 @@ post psd "$work/pipe.h5" --bands --sensors all --xscale log --out "$docs/rolling
 "$bin" texture studies/texture-demo.ini --out "$work/texture.h5"
 post texture "$work/texture.h5" --out "$docs/texture-demo.png"
 
+# Seed 001 beam S: the roughness PSD along the path, raw and under each contact filter (/roughness).
+"$bin" run studies/seed001-beam-s-hertz.ini --out "$work/beam-s.h5" --quiet --set study.realisations=1 --set contact.filter=iso2d
+post roughness "$work/beam-s.h5" --out "$docs/seed001-contact-filter.png"
+
 # Work-precision of the ball-on-beam integrators, from the table bench/beam/bench_beam wrote.
 post bench "$docs/work-precision.csv" --out "$docs/work-precision.png"

@@ -34,6 +34,9 @@ def build_parser():
     j = sub.add_parser("trajectory", help="rolling-beam node paths, speeds and energies over time")
     j.add_argument("result", help="rollspec result file with /time_history/position")
     j.add_argument("--out", "-o", required=True, help="output PNG")
+    g = sub.add_parser("roughness", help="roughness PSD along the path: raw and with each contact filter (ball-on-beam)")
+    g.add_argument("result", help="rollspec result file with /roughness")
+    g.add_argument("--out", "-o", required=True, help="output picture: .png, .pdf or .svg")
     b = sub.add_parser("bench", help="work-precision plot: error against run time, log-log, one line per method")
     b.add_argument("csv", help="CSV with columns method (or integrator), seconds (or time_s), error_db (or error)")
     b.add_argument("--out", "-o", required=True, help="output PNG")
@@ -77,6 +80,9 @@ def run(args):
     elif args.command == "trajectory":
         from .trajectory_plot import plot_trajectory
         plot_trajectory(args.result, args.out)
+    elif args.command == "roughness":
+        from .roughness_filter_plot import plot_roughness_filters
+        plot_roughness_filters(args.result, args.out)
     elif args.command == "bench":
         from .bench_plot import plot_bench
         plot_bench(args.csv, args.out)

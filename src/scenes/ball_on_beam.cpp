@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
 
 #include "kernels/beam/ball_on_beam.hpp"
 #include "kernels/beam/contact_patch_filter.hpp"
@@ -61,7 +64,8 @@ class BallOnBeam final : public Scene {
   // texture, surface, stiffness_table, blocked_force, dynamics, spectra: the tables are stage
   // objects whose inspection `plan` prints and whose resolution prepare() runs.
   void add_pipeline_stages(const Study& s) {
-    add_stages({{"texture", StageStatus::run, "beam line texture per realisation from [texture] (" + b_.psd.description + ")"}});
+    add_stages({{"texture", StageStatus::run,
+                 "beam line texture per realisation from [texture] (" + b_.psd.description + "); " + filter_description()}});
     std::unique_ptr<TableStage> table;
     if (uses_table()) {
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
@@ -268,6 +272,8 @@ class BallOnBeam final : public Scene {
     w.attribute("/contact", "law", b_.law_name);
     w.attribute("/contact", "static_compression", b_.static_compression);
     w.attribute("/contact", "patch_half_width", b_.patch_half_width);
+    w.attribute("/contact", "filter", b_.filter_name);
+    w.attribute("/contact", "contact_half_width", b_.contact_half_width);
     w.attribute("/contact", "effective_modulus", b_.model.contact.effective_modulus);
     if (linearised()) w.attribute("/contact", "k0", b_.model.contact.k0);
     if (blocked_solver()) {
@@ -291,11 +297,80 @@ class BallOnBeam final : public Scene {
     w.attribute("/ball", "mass", b_.model.ball.mass);
     w.attribute("/ball", "speed", b_.model.traverse.speed);
 
+    write_roughness(w);
     if (writes_reference()) write_linear_reference(w, e.frequency, e.sensors, K);
     if (b_.time_histories) write_time_histories(w, sums.only);
   }
 
  private:
+  std::string filter_description() const {
+    if (blocked_solver()) return "contact filter: not used (blocked_force = solver)";
+    char a[32];
+    std::snprintf(a, sizeof a, "%.4g", b_.contact_half_width * 1e6);
+    switch (b_.filter) {
+      case ContactFilter::none: return "contact filter: none (point contact)";
+      case ContactFilter::patch: return std::string("contact filter: patch, 1D average over 2a, a = ") + a + " um (B35)";
+      case ContactFilter::iso2d: break;
+    }
+    return std::string("contact filter: iso2d, line PSD G_eq of a Hertz disc of radius a = ") + a +
+           " um on the isotropic surface (kernels/texture Eq. 38)";
+  }
+
+  // /roughness: the path PSD raw (the study's [texture], no band limit) and what the contact sees
+  // under each filter, band limit (B40) included, on a log grid from the line's fundamental to its
+  // Nyquist wavenumber (python-post roughness_filter_plot). psd_patch: the patch line (B40a-compensated
+  // where it applies) through B35a on the samples; psd_iso2d: Eq. 38 (absent where the PSD has no
+  // isotropic form and the study does not ask for iso2d).
+  void write_roughness(io::Hdf5Writer& w) const {
+    if (blocked_solver()) return;
+    const double k0 = lines_->fundamental(), k1 = M_PI / b_.spacing;
+    std::vector<double> k;
+    for (std::size_t i = 0;; ++i) {
+      const double v = k0 * std::pow(10.0, static_cast<double>(i) / 100.0);
+      if (v > k1) break;
+      k.push_back(v);
+    }
+    const double a = b_.contact_half_width;
+    std::vector<double> raw(k.size()), patch(k.size()), iso(k.size());
+    bool have_iso = true;
+    if (b_.filter == ContactFilter::iso2d) {
+      for (std::size_t i = 0; i < k.size(); ++i) iso[i] = b_.line_psd(k[i]);  // what the line was synthesised from
+    } else {
+      try {  // Eq. 38 at these k only: cheaper than the synthesis table
+        iso = iso2d_line_psd_at(b_, k);
+      } catch (const std::exception&) {
+        have_iso = false;
+      }
+    }
+    // The patch line is drawn compensated for the linear interpolant (B40a) when band-limited below pi/dx.
+    const bool compensated = b_.band_limit_wavenumber * b_.spacing < M_PI;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      try {
+        raw[i] = b_.texture_psd(k[i]);
+      } catch (const std::domain_error&) {  // a table without extension, beyond the band limit: no power known
+        raw[i] = 0.0;
+      }
+      const double t = beam::contact_patch_transfer(k[i], a, b_.spacing), h = 0.5 * k[i] * b_.spacing;
+      const double sinc2 = std::pow(std::sin(h) / h, 2);
+      patch[i] = b_.psd(k[i]) * t * t / (compensated ? sinc2 * sinc2 : 1.0);  // (B35a, B40a)
+    }
+    w.write("/roughness/wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the rolling path (log grid)");
+    w.make_scale("/roughness/wavenumber", "wavenumber");
+    w.write("/roughness/psd_raw", {k.size()}, raw.data(), "m^3", "one-sided line PSD of [texture] along the path");
+    w.write("/roughness/psd_patch", {k.size()}, patch.data(), "m^3",
+            "band-limited psd_raw x T(k)^2 / sinc^4(k dx/2) (B40a, where compensated), T the 1D patch average over 2a "
+            "on the line's samples (kernels/beam B35a)");
+    if (have_iso)
+      w.write("/roughness/psd_iso2d", {k.size()}, iso.data(), "m^3",
+              "G_eq: path PSD of the isotropic surface under a Hertz disc of radius a (kernels/texture Eq. 38)");
+    for (const char* d : {"/roughness/psd_raw", "/roughness/psd_patch", "/roughness/psd_iso2d"})
+      if (have_iso || std::string(d) != "/roughness/psd_iso2d") w.attach_scale(d, "/roughness/wavenumber", 0);
+    w.attribute("/roughness", "filter", b_.filter_name);
+    w.attribute("/roughness", "contact_half_width", a);
+    w.attribute("/roughness", "spacing", b_.spacing);
+    w.attribute("/roughness", "band_limit_wavenumber", b_.band_limit_wavenumber);
+  }
+
   // Frequency-domain solution of the linearised model made exact for what the Monte-Carlo
   // simulates (kernels/beam/linear_reference.hpp; README B34, B34a-c, B35a; D-20).
   void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,

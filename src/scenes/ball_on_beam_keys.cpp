@@ -56,8 +56,11 @@ std::vector<KeySpec> ball_on_beam_keys() {
                  "linearised law's F0(t): spring (W + k0 h_patch(v t), k0 from [contact]) or solver (the contact "
                  "solver's blocked force along a rough strip, seed 002 §4.2: k0, d0 and the F0 PSD from a cached table)",
                  std::string("spring"), {"spring", "solver"}),
-      bool_key("contact", "patch_filter", "average the roughness over the Hertz contact width at the static load",
-               std::string("true")),
+      choice_key("contact", "filter",
+                 "what the contact does to the roughness (Hertz radius a at the weight): none (point contact), patch "
+                 "(1D average over 2a along the path, B35) or iso2d (line synthesised from G_eq, the path PSD a Hertz "
+                 "disc sees on an isotropic surface, kernels/texture Eq. 38)",
+                 std::string("patch"), {"none", "patch", "iso2d"}),
       real_key("roughness", "spacing", "m",
                "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
                "step, v / (sample_rate x substeps)",

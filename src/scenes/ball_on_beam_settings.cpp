@@ -1,7 +1,9 @@
 #include "src/scenes/ball_on_beam_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
 
 #include "kernels/beam/contact_patch_filter.hpp"
@@ -9,6 +11,7 @@
 #include "kernels/beam/quadratic_hold_step.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "kernels/integrators/exact_oscillator_step.hpp"
+#include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/study.hpp"
@@ -73,6 +76,25 @@ void check_step_coefficients(const Study& s, const BallOnBeamSettings& b) {
   }
 }
 
+// [contact] filter and the contact radius a it uses: Hertz under the weight (kernels/beam B35).
+void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
+  b.filter_name = s.text("contact.filter");
+  b.filter = b.filter_name == "none" ? ContactFilter::none : b.filter_name == "patch" ? ContactFilter::patch : ContactFilter::iso2d;
+  b.contact_half_width = a;
+  b.patch_half_width = b.filter == ContactFilter::patch ? a : 0.0;
+  if (b.filter == ContactFilter::iso2d && b.blocked_solver())
+    s.refuse("contact.filter", "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
+                               "resolves the contact itself); allowed with solver: none or patch (both ignored)");
+}
+
+texture::Psd iso2d_study_psd(const Study& s, const BallOnBeamSettings& b) {
+  try {
+    return iso2d_line_psd(b);
+  } catch (const std::exception& e) {
+    s.refuse("contact.filter", std::string("cannot filter the [texture] PSD: ") + e.what());
+  }
+}
+
 }  // namespace
 
 // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
@@ -91,12 +113,37 @@ void check_contact_resolution(const Study& s, const BallOnBeamSettings& b, doubl
   }
 }
 
+namespace {
+// A PSD without upper end is cut where the flat-punch weight (Eq. 37) has fallen below 1e-6 in
+// power, or at ten times the line's Nyquist wavenumber if that is further.
+double iso2d_q_cap(const BallOnBeamSettings& b) { return std::max(1e3 / b.contact_half_width, 10.0 * M_PI / b.spacing); }
+}  // namespace
+
+std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::vector<double>& k) {
+  std::vector<double> g = texture::contact_filtered_psd_at(b.texture_psd, b.contact_half_width, k, iso2d_q_cap(b));
+  for (std::size_t i = 0; i < k.size(); ++i)
+    if (k[i] > b.band_limit_wavenumber) g[i] = 0.0;  // B40 along the path
+  return g;
+}
+
+// G_eq of the study's PSD (kernels/texture README Eq. 38, 40) from below the line's fundamental.
+texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
+  const double k_min = M_PI / (static_cast<double>(b.line_samples) * b.spacing);
+  const double q_cap = iso2d_q_cap(b);
+  // From the unlimited [texture]: the band limit (B40) is along the path, while Eq. 38 integrates
+  // across it. The line's harmonics reach pi / spacing at most, the band limit drops what lies
+  // beyond k_B: G_eq is tabulated up to the lower of the two (zero above, as band_limited).
+  return texture::contact_filtered_psd(b.texture_psd, b.contact_half_width, k_min, q_cap,
+                                       std::min(M_PI / b.spacing, b.band_limit_wavenumber));
+}
+
 BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   BallOnBeamSettings b({study_modal_beam(s), {}, {}, {}, s.real("signal.sample_rate"), sensor_positions(s, s.real("beam.length"))});
   b.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   beam::BallOnBeamModel& m = b.model;
   const double length = s.real("beam.length");
-  b.psd = texture_io::study_psd(s);
+  b.texture_psd = texture_io::study_psd(s);
+  b.psd = b.texture_psd;
   b.sensor_mean = s.boolean("sensors.average");
   b.dopri = s.text("signal.integrator") == "dopri5";
   b.rtol = s.real("signal.rtol");
@@ -133,7 +180,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   law.loss = s.text("contact.loss") == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
   const double hertz_compression = std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
-  b.patch_half_width = s.boolean("contact.patch_filter") ? beam::hertz_half_width(radius, hertz_compression) : 0.0;
+  read_contact_filter(s, b, beam::hertz_half_width(radius, hertz_compression));
   // Integration step.
   b.step.substeps = static_cast<int>(s.integer("signal.substeps"));
   b.step.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
@@ -151,9 +198,12 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   if (b.line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
   // The patch average runs on the samples' linear interpolant (B35a: an extra sinc^2(k dx/2));
   // a band-limited line is drawn with that loss undone (B40a), so it sees the continuous texture.
-  b.line_psd = (b.patch_half_width > 0.0 && b.band_limit_wavenumber * b.spacing < M_PI)
-                   ? texture::interpolation_compensated(b.psd, b.spacing)
-                   : b.psd;
+  if (b.filter == ContactFilter::iso2d)
+    b.line_psd = iso2d_study_psd(s, b);  // no patch average on the samples: nothing to compensate (B40a)
+  else
+    b.line_psd = (b.patch_half_width > 0.0 && b.band_limit_wavenumber * b.spacing < M_PI)
+                     ? texture::interpolation_compensated(b.psd, b.spacing)
+                     : b.psd;
   if (!b.uses_table() && !b.blocked_solver())
     check_contact_resolution(s, b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
   check_step_coefficients(s, b);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "kernels/beam/ball_on_beam.hpp"
 #include "kernels/beam/exact_step_integrator.hpp"
@@ -23,6 +24,11 @@ namespace rollspec::scenes {
 // One value for the contact law and the blocked force's source ([contact] law, blocked_force).
 enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver };
 
+// [contact] filter: what the contact does to the roughness it rolls over (kernels/beam README B35;
+// kernels/texture README Eq. 36-40): none (point contact), patch (1D average over the Hertz width,
+// B35) or iso2d (the line synthesised from G_eq, the path PSD a Hertz disc sees on an isotropic surface).
+enum class ContactFilter { none, patch, iso2d };
+
 struct BallOnBeamSettings {
   explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}
   std::uint64_t seed = 0;
@@ -31,12 +37,18 @@ struct BallOnBeamSettings {
   beam::BallOnBeamModel model;
   ContactModel contact = ContactModel::hertz;
   std::string law_name;            // [contact] law as written, for the result file
+  texture::Psd texture_psd;        // [texture] as given: the surface iso2d filters (no band limit across the path)
   texture::Psd psd;                // [texture], band-limited by [roughness] band_limit
   double band_limit_wavenumber = std::numeric_limits<double>::infinity();  // rad/m; B40
-  texture::Psd line_psd;           // what the line samples are drawn from: psd, or B40a-compensated
+  // What the line samples are drawn from: psd (none), psd B40a-compensated (patch on a band-limited
+  // line), or G_eq of texture_psd, band-limited (iso2d).
+  texture::Psd line_psd;
+  ContactFilter filter = ContactFilter::patch;
+  std::string filter_name;         // [contact] filter as written
+  double contact_half_width = 0.0; // Hertz contact radius a at the weight (what the filters use)
   double spacing = 0.0;            // line texture sample spacing, m
   std::size_t line_samples = 0;    // over the whole span
-  double patch_half_width = 0.0;   // Hertz half-width at the weight; 0: no patch filter
+  double patch_half_width = 0.0;   // contact_half_width for filter = patch, else 0 (no patch average)
   double static_compression = 0.0; // point laws: Hertz (or weight / k0) at the weight
   beam::ExactStepOptions step;
   bool dopri = false;              // Dormand-Prince reference instead of the exact step
@@ -56,6 +68,12 @@ struct BallOnBeamSettings {
 };
 
 BallOnBeamSettings read_ball_on_beam_settings(const study::Study& s);
+
+// G_eq of b.psd for the Hertz radius b.contact_half_width (filter = iso2d), over the line's
+// wavenumbers; throws std::invalid_argument where the PSD has no isotropic form.
+texture::Psd iso2d_line_psd(const BallOnBeamSettings& b);
+// The same G_eq at the wavenumbers k directly (for /roughness when the study uses another filter).
+std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::vector<double>& k);
 
 // Refuses (at [signal] substeps) a step that does not resolve the ball's bounce on a contact
 // stiffness k_contact at the weight; the table laws call it again once their stiffness is known.

@@ -162,8 +162,19 @@ std::string known_sections(const std::vector<KeySpec>& keys) {
   return s;
 }
 
+// Keys that were renamed: the error names the new key instead of listing all keys.
+const char* retired_key_hint(const std::string& full) {
+  if (full == "contact.patch_filter")
+    return "was replaced by [contact] filter = none | patch | iso2d (patch_filter = true is filter = patch, false is "
+           "filter = none)";
+  return nullptr;
+}
+
 void refuse_unknown(const std::vector<KeySpec>& keys, const std::string& full, const std::string& value,
                     const Origin& origin, const std::string& scene) {
+  if (const char* hint = retired_key_hint(full))
+    if (find_spec(keys, full.substr(0, full.find('.')) + ".filter"))
+      throw config_error(origin.describe() + ": [contact] patch_filter = " + clip(value) + " " + hint);
   const auto dot = full.find('.');
   const std::string section = full.substr(0, dot), key = full.substr(dot + 1);
   const std::string known = known_keys_of(keys, section);

@@ -1,0 +1,67 @@
+"""`roughness`: the roughness PSD along the rolling path, raw and as each contact filter passes it.
+
+Reads /roughness of a ball-on-beam result (rollspec writes it for every study but blocked_force = solver):
+psd_raw is the study's [texture] line PSD G(k) (filter = none draws it up to the band limit k_B, beam B40),
+psd_patch the 1D patch average over the Hertz width 2a
+(kernels/beam B35a, on the line's samples), psd_iso2d G_eq, the path PSD a Hertz disc of radius a sees on
+the isotropic surface (kernels/texture Eq. 38). The filter the study used is drawn thick.
+"""
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from .result_file import EX_DATAERR, PostError, open_rollspec, text_attr
+
+CURVES = (("none", "psd_raw", "raw G(k) of [texture] (none: the same up to k_B)", "k"),
+          ("patch", "psd_patch", "patch: G(k) T(k)², 1D average over 2a", "C0"),
+          ("iso2d", "psd_iso2d", "iso2d: G_eq(k), Hertz disc on the isotropic surface", "C3"))
+
+
+def read_roughness(path):
+    """(wavenumber, {filter: psd}, used filter, a, speed) from a result file's /roughness group."""
+    with open_rollspec(path, ("rollspec-result",)) as f:
+        if "/roughness/psd_raw" not in f:
+            raise PostError(f"{path}: holds no /roughness (only ball-on-beam results with a line texture do)", EX_DATAERR)
+        g = f["/roughness"]
+        k = g["wavenumber"][:]
+        curves = {name: g[ds][:] for name, ds, _, _ in CURVES if ds in g}
+        used = str(text_attr(g, "filter", ""))
+        a = float(g.attrs["contact_half_width"])
+        speed = float(f["/ball"].attrs["speed"]) if "/ball" in f and "speed" in f["/ball"].attrs else None
+    return k, curves, used, a, speed
+
+
+def plot_roughness_filters(path, out, dpi=150):
+    k, curves, used, a, speed = read_roughness(path)
+    with open_rollspec(path, ("rollspec-result",)) as f:
+        k_b = float(f["/roughness"].attrs.get("band_limit_wavenumber", np.inf))
+    fig = Figure(figsize=(7.5, 4.8), constrained_layout=True)
+    ax = fig.subplots()
+    positive = []
+    for name, _, label, colour in CURVES:
+        if name not in curves:
+            continue
+        g = curves[name]
+        ok = g > 0
+        positive.append(g[ok])
+        ax.loglog(k[ok], g[ok], color=colour, lw=2.2 if name == used else 1.0,
+                  label=label + (" — used" if name == used else ""))
+    if a > 0:
+        ax.axvline(np.pi / a, color="0.5", ls=":", lw=0.8)
+        ax.text(np.pi / a, 0.02, " ka = π", transform=ax.get_xaxis_transform(), fontsize=8, color="0.4")
+    if np.isfinite(k_b) and k_b < k[-1]:
+        ax.axvline(k_b, color="0.5", ls="--", lw=0.8)
+        ax.text(k_b, 0.93, " k_B (band\n limit)", transform=ax.get_xaxis_transform(), fontsize=8, color="0.4", va="top")
+    top = max(v.max() for v in positive)
+    ax.set_ylim(max(min(v.min() for v in positive), top * 1e-12), top * 5)
+    ax.set_xlabel("wavenumber k along the path (rad/m)")
+    ax.set_ylabel("one-sided roughness PSD (m³)")
+    title = f"roughness along the path, Hertz contact radius a = {a * 1e6:.3g} µm"
+    ax.set_title(title, fontsize=10)
+    if speed:  # frequency axis f = v k / 2 pi
+        sec = ax.secondary_xaxis("top", functions=(lambda x: x * speed / (2 * np.pi), lambda f: f * 2 * np.pi / speed))
+        sec.set_xlabel(f"frequency at v = {speed:g} m/s (Hz)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="lower left")
+    FigureCanvasAgg(fig).print_figure(out, dpi=dpi)
+    return out

@@ -1,0 +1,50 @@
+"""`python3 -m rollspec_post roughness`: the path PSD raw and under each contact filter, from /roughness."""
+import subprocess
+
+import numpy as np
+import pytest
+
+from conftest import BIN, SOURCE, is_png_with_content, post
+
+
+@pytest.fixture(scope="module")
+def beam_result(tmp_path_factory):
+    out = tmp_path_factory.mktemp("results") / "beam.h5"
+    r = subprocess.run([BIN, "run", SOURCE / "studies" / "seed001-beam-s-hertz.ini", "--out", out, "--quiet",
+                        "--set", "study.realisations=1", "--set", "ball.end=0.12", "--set", "spectrum.segment=1024",
+                        "--set", "contact.filter=iso2d"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+def test_roughness_plot(beam_result, tmp_path):
+    out = tmp_path / "r.png"
+    r = post("roughness", beam_result, "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert is_png_with_content(out)
+
+
+def test_plotted_curves_obey_the_filters(beam_result):
+    from rollspec_post.roughness_filter_plot import read_roughness
+    k, curves, used, a, speed = read_roughness(beam_result)
+    assert used == "iso2d" and set(curves) == {"none", "patch", "iso2d"} and speed == 1.0
+    raw, patch, iso = curves["none"], curves["patch"], curves["iso2d"]
+    # Both filters only remove power (|w^| <= 1, kernels/texture Eq. 37; B35a <= 1).
+    assert np.all(iso <= raw * (1 + 1e-3)) and np.all(patch <= raw * (1 + 1e-9))
+    # patch at ka << 1 passes the line PSD; its first zero sits at ka = pi (B35).
+    low = k * a < 0.05
+    assert np.allclose(patch[low], raw[low], rtol=2e-3)
+    i = np.argmin(abs(k * a - np.pi))
+    assert patch[i] < 1e-3 * raw[i]
+    # iso2d at ka << 1 is flat like the line PSD's plateau (the contact passes the along-path waves)
+    # but far below it: ground steel's power sits at wavelengths < 2a across the path too.
+    assert np.ptp(np.log(iso[low])) < 0.01
+    assert np.all(iso[low] < 0.2 * raw[low])
+    # iso2d has no zeros: it sums over all directions, sin(qa)/(qa) vanishes only on rings. Up to the
+    # band limit (B40): beyond it the line carries nothing.
+    assert np.all(iso[k <= np.pi * 25600 / speed] > 0)
+
+
+def test_refuses_a_result_without_roughness(oscillator_result, tmp_path):
+    r = post("roughness", oscillator_result, "--out", tmp_path / "x.png")
+    assert r.returncode == 65 and "/roughness" in r.stderr
