@@ -8,21 +8,22 @@
 // a reused SynthesisScratch: spectrum from the U(0,1) arrays, then the inverse FFT) against a bare
 // FFTW c2r of the same length (the same FFTW_ESTIMATE plan on fftw_malloc buffers, the spectrum
 // restored untimed before each call, only fftw_execute timed); ratio = synthesis / c2r (goal <= 2).
+// previous = the synthesis as it was (libm per harmonic, buffers per call), same c2r plan.
 // Also the engine's two Philox draws per harmonic (not part of the kernel), for the whole cost.
 //
 // Compile with: cmake --build <build> --target bench_texture
 // Sample run:   ./bench_texture [seconds_per_case]   -> CSV on stdout, then the goal table
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <random>
-#include <string>
-#include <vector>
-
 #include <fftw3.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <random>
+#include <string>
+#include <vector>
 
 #include "kernels/spectral/fftw_handles.hpp"
 #include "kernels/texture/line_texture.hpp"
@@ -74,11 +75,31 @@ double median_call(F&& f, G&& untimed, double budget) {
   return t[t.size() / 2];
 }
 
-// Goal 5 table: per size, c2r floor, synthesis, ratio, and the Philox draws.
+// The synthesis as it was before issue 18 (libm log, cos, sin per harmonic; amplitudes from the
+// PSD and FFTW buffers per call; output copied), kept here to time against the tabulated path.
+void previous_synthesis(const rollspec::spectral::HarmonicSynthesiser& s, fftw_plan_s* plan, const std::vector<double>& psd, double dk,
+                        const double* up, const double* ua, double* out) {
+  const std::size_t n = s.samples(), nh = s.harmonics();
+  const rollspec::spectral::ComplexBuffer spec(nh);
+  const rollspec::spectral::RealBuffer buf(n);
+  spec[0][0] = spec[0][1] = spec[nh - 1][0] = spec[nh - 1][1] = 0.0;
+  for (std::size_t j = 1; j + 1 < nh; ++j) {
+    const double a = 0.5 * std::sqrt(2.0 * psd[j] * dk) * std::sqrt(-std::log(ua[j]));
+    const double phi = 2.0 * M_PI * up[j];
+    spec[j][0] = a * std::cos(phi);
+    spec[j][1] = a * std::sin(phi);
+  }
+  fftw_execute_dft_c2r(plan, spec.data(), buf.data());
+  std::copy(buf.data(), buf.data() + n, out);
+}
+
+// Goal 5 table: per size, c2r floor, synthesis, ratio, the previous synthesis, and the Philox draws.
 void synthesis_against_floor(double budget) {
   using namespace rollspec;
   std::printf("\n# issue 18 goal 5: line texture synthesis vs a bare FFTW c2r of the same length (median per call)\n");
-  std::printf("samples,c2r_us,synthesis_us,ratio,c2r_ns_per_sample,synthesis_ns_per_sample,philox_draws_us\n");
+  std::printf(
+      "samples,c2r_us,synthesis_us,ratio,c2r_ns_per_sample,synthesis_ns_per_sample,previous_us,previous_ratio,"
+      "philox_draws_us\n");
   const double dx = 1e-5;
   const SelfAffinePsd line(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / 2e-3, M_PI / dx, RmsTarget::height, 1e-6});
   for (int p : {12, 16, 20, 22}) {
@@ -102,6 +123,10 @@ void synthesis_against_floor(double budget) {
     SynthesisScratch scratch = gen.make_scratch();
     spectral::RealBuffer out(n);
     const double synth = median_call([&] { gen.generate(up.data(), ua.data(), out.data(), scratch); }, [] {}, budget / 2);
+    const spectral::HarmonicSynthesiser old(n);
+    const double previous = median_call(
+        [&] { previous_synthesis(old, plan.get(), gen.target_psd(), gen.fundamental(), up.data(), ua.data(), out.data()); },
+        [] {}, budget / 2);
     std::uint64_t id = 0;
     const double draws = median_call(
         [&] {
@@ -110,8 +135,8 @@ void synthesis_against_floor(double budget) {
           ++id;
         },
         [] {}, budget / 4);
-    std::printf("%zu,%.3f,%.3f,%.2f,%.3f,%.3f,%.3f\n", n, c2r * 1e6, synth * 1e6, synth / c2r, c2r * 1e9 / double(n),
-                synth * 1e9 / double(n), draws * 1e6);
+    std::printf("%zu,%.3f,%.3f,%.2f,%.3f,%.3f,%.3f,%.2f,%.3f\n", n, c2r * 1e6, synth * 1e6, synth / c2r,
+                c2r * 1e9 / double(n), synth * 1e9 / double(n), previous * 1e6, previous / c2r, draws * 1e6);
     std::fflush(stdout);
   }
 }

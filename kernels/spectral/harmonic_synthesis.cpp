@@ -11,6 +11,32 @@
 namespace rollspec::spectral {
 
 namespace {
+#if defined(ROLLSPEC_HAVE_AVX2_PATH)
+// Harmonics [j, end) four at a time with AVX2 lanes (D-24, D-25); returns the first not done.
+__attribute__((target("avx2"))) std::size_t fill_avx2(std::size_t j, std::size_t end, const double* half_amplitudes,
+                                                      bool rayleigh, const double* u_phase, const double* u_amplitude,
+                                                      const TabulatedMath& t, FftwComplex* spec) {
+  for (; j + 4 <= end; j += 4) {
+    __m256d a = _mm256_loadu_pd(half_amplitudes + j);
+    if (rayleigh)
+      a = _mm256_mul_pd(
+          a, _mm256_sqrt_pd(_mm256_max_pd(neg_log_open(_mm256_loadu_pd(u_amplitude + j), t), _mm256_setzero_pd())));
+    __m256d c, s;
+    sincos_two_pi(_mm256_loadu_pd(u_phase + j), t, c, s);
+    const __m256d re = _mm256_mul_pd(a, c), im = _mm256_mul_pd(a, s);
+    const __m256d lo = _mm256_unpacklo_pd(re, im), hi = _mm256_unpackhi_pd(re, im);  // (j, j+2), (j+1, j+3)
+    _mm256_storeu_pd(spec[j], _mm256_permute2f128_pd(lo, hi, 0x20));
+    _mm256_storeu_pd(spec[j + 2], _mm256_permute2f128_pd(lo, hi, 0x31));
+  }
+  return j;
+}
+
+bool cpu_has_avx2() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+#endif
+
 double deterministic_amplitude(double g, double fundamental) {
   if (g < 0.0 || !std::isfinite(g)) throw std::invalid_argument("PSD values must be finite and non-negative");
   return std::sqrt(2.0 * g * fundamental);
@@ -50,6 +76,9 @@ void HarmonicSynthesiser::fill_spectrum(const double* half_amplitudes, Amplitude
   spec[nh - 1][0] = spec[nh - 1][1] = 0.0;
   const bool rayleigh = mode == Amplitudes::rayleigh;
   std::size_t j = 1;
+#if defined(ROLLSPEC_HAVE_AVX2_PATH)
+  if (cpu_has_avx2()) j = fill_avx2(j, nh - 1, half_amplitudes, rayleigh, u_phase, u_amplitude, t, spec);
+#endif
 #if defined(__SSE2__)
   // Two harmonics per step; the lanes compute exactly what the scalar tail below does.
   for (; j + 2 < nh; j += 2) {

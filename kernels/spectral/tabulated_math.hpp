@@ -12,6 +12,10 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define ROLLSPEC_HAVE_AVX2_PATH 1
+#endif
 
 namespace rollspec::spectral {
 
@@ -129,6 +133,67 @@ inline void sincos_two_pi(__m128d v, const TabulatedMath& tab, __m128d& c, __m12
   const __m128d cc = _mm_unpacklo_pd(p0, p1), ss = _mm_unpackhi_pd(p0, p1);
   c = _mm_sub_pd(_mm_mul_pd(cc, ct), _mm_mul_pd(ss, st));
   s = _mm_add_pd(_mm_mul_pd(ss, ct), _mm_mul_pd(cc, st));
+}
+#endif
+
+#if defined(ROLLSPEC_HAVE_AVX2_PATH)
+// Four lanes, for CPUs with AVX2 (chosen at run time; the build itself targets baseline x86-64).
+// AVX2 without FMA: again the scalar form's operations in its order, so the same bits.
+__attribute__((target("avx2"))) inline __m256d neg_log_open(__m256d u, const TabulatedMath& t) {
+  using namespace tabulated_detail;
+  const __m256i bits = _mm256_castpd_si256(u);
+  const __m256i two52 = _mm256_set1_epi64x(0x4330000000000000LL);
+  const __m256d ex = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(_mm256_srli_epi64(bits, 52), two52)), _mm256_set1_pd(0x1p52));
+  const __m256d e1 = _mm256_sub_pd(ex, _mm256_set1_pd(1022.0));
+  // Each lane's bin (32 bytes: centre, inverse, half_centre, unused) by one load, then a 4 x 4
+  // transpose (plain loads: gathers are slow on CPUs with the gather-data-sampling fix).
+  const __m256i idx = _mm256_and_si256(_mm256_srli_epi64(bits, 44), _mm256_set1_epi64x(255));
+  const __m128i lo = _mm256_castsi256_si128(idx), hi = _mm256_extracti128_si256(idx, 1);
+  const __m256d b0 = _mm256_load_pd(&t.log_bin[static_cast<std::size_t>(_mm_cvtsi128_si64(lo))].centre);
+  const __m256d b1 = _mm256_load_pd(&t.log_bin[static_cast<std::size_t>(_mm_extract_epi64(lo, 1))].centre);
+  const __m256d b2 = _mm256_load_pd(&t.log_bin[static_cast<std::size_t>(_mm_cvtsi128_si64(hi))].centre);
+  const __m256d b3 = _mm256_load_pd(&t.log_bin[static_cast<std::size_t>(_mm_extract_epi64(hi, 1))].centre);
+  const __m256d t0 = _mm256_unpacklo_pd(b0, b1), t1 = _mm256_unpackhi_pd(b0, b1);  // (c0 c1 h0 h1), (i0 i1 . .)
+  const __m256d t2 = _mm256_unpacklo_pd(b2, b3), t3 = _mm256_unpackhi_pd(b2, b3);
+  const __m256d centre = _mm256_permute2f128_pd(t0, t2, 0x20), half_centre = _mm256_permute2f128_pd(t0, t2, 0x31);
+  const __m256d inverse = _mm256_permute2f128_pd(t1, t3, 0x20);
+  const __m256d m = _mm256_castsi256_pd(_mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi64x(0x000fffffffffffffLL)),
+                                                        _mm256_set1_epi64x(0x3ff0000000000000LL)));
+  const __m256d r = _mm256_mul_pd(_mm256_sub_pd(m, centre), inverse);
+  __m256d p = _mm256_sub_pd(_mm256_set1_pd(1.0 / 6.0), _mm256_mul_pd(r, _mm256_set1_pd(1.0 / 7.0)));
+  p = _mm256_sub_pd(_mm256_set1_pd(0.2), _mm256_mul_pd(r, p));
+  p = _mm256_sub_pd(_mm256_set1_pd(0.25), _mm256_mul_pd(r, p));
+  p = _mm256_sub_pd(_mm256_set1_pd(1.0 / 3.0), _mm256_mul_pd(r, p));
+  p = _mm256_sub_pd(_mm256_set1_pd(0.5), _mm256_mul_pd(r, p));
+  p = _mm256_sub_pd(_mm256_set1_pd(1.0), _mm256_mul_pd(r, p));
+  p = _mm256_mul_pd(r, p);
+  const __m256d sum = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(e1, _mm256_set1_pd(ln2_hi)), half_centre),
+                                    _mm256_add_pd(_mm256_mul_pd(e1, _mm256_set1_pd(ln2_lo)), p));
+  return _mm256_xor_pd(sum, _mm256_set1_pd(-0.0));
+}
+
+__attribute__((target("avx2"))) inline void sincos_two_pi(__m256d v, const TabulatedMath& tab, __m256d& c, __m256d& s) {
+  using namespace tabulated_detail;
+  const __m256d x = _mm256_mul_pd(v, _mm256_set1_pd(1024.0));
+  const __m128i k = _mm256_cvttpd_epi32(_mm256_add_pd(x, _mm256_set1_pd(0.5)));
+  const __m256d t = _mm256_mul_pd(_mm256_sub_pd(x, _mm256_cvtepi32_pd(k)), _mm256_set1_pd(phase_step));
+  const __m256d t2 = _mm256_mul_pd(t, t);
+  __m256d ct = _mm256_sub_pd(_mm256_set1_pd(1.0 / 24.0), _mm256_mul_pd(t2, _mm256_set1_pd(1.0 / 720.0)));
+  ct = _mm256_sub_pd(_mm256_set1_pd(0.5), _mm256_mul_pd(t2, ct));
+  ct = _mm256_sub_pd(_mm256_set1_pd(1.0), _mm256_mul_pd(t2, ct));
+  __m256d st = _mm256_sub_pd(_mm256_set1_pd(1.0 / 120.0), _mm256_mul_pd(t2, _mm256_set1_pd(1.0 / 5040.0)));
+  st = _mm256_sub_pd(_mm256_set1_pd(1.0 / 6.0), _mm256_mul_pd(t2, st));
+  st = _mm256_sub_pd(t, _mm256_mul_pd(_mm256_mul_pd(t, t2), st));
+  // (C, S) of each lane by one 16-byte load; x = lanes 0 and 2, y = lanes 1 and 3.
+  const __m128i at = _mm_and_si128(k, _mm_set1_epi32(1023));
+  const double* cs = tab.cos_sin;
+  const __m128d p0 = _mm_load_pd(cs + 2 * _mm_cvtsi128_si32(at)), p1 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 1));
+  const __m128d p2 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 2)), p3 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 3));
+  const __m256d x02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p0), p2, 1);
+  const __m256d x13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p1), p3, 1);
+  const __m256d cc = _mm256_unpacklo_pd(x02, x13), ss = _mm256_unpackhi_pd(x02, x13);
+  c = _mm256_sub_pd(_mm256_mul_pd(cc, ct), _mm256_mul_pd(ss, st));
+  s = _mm256_add_pd(_mm256_mul_pd(ss, ct), _mm256_mul_pd(cc, st));
 }
 #endif
 
