@@ -79,7 +79,7 @@ void HarmonicSynthesiser::fill_spectrum(const double* half_amplitudes, Amplitude
 #if defined(ROLLSPEC_HAVE_AVX2_PATH)
   if (cpu_has_avx2()) j = fill_avx2(j, nh - 1, half_amplitudes, rayleigh, u_phase, u_amplitude, t, spec);
 #endif
-#if defined(__SSE2__)
+#if defined(ROLLSPEC_HAVE_SSE2_PATH)
   // Two harmonics per step; the lanes compute exactly what the scalar tail below does.
   for (; j + 2 < nh; j += 2) {
     __m128d a = _mm_loadu_pd(half_amplitudes + j);

@@ -3,14 +3,17 @@
 // sqrt(-ln u) needs -ln u, the phase 2 pi v needs cos and sin. Each is a table of exact values at
 // 2^-8 (log) or 2^-10 (phase) steps, computed once, and a short polynomial for the remainder
 // (kernels/spectral/README.md D-24, D-25). Plain +, -, *, / and one table load each: no branch, no
-// fused multiply-add (the build targets baseline x86-64), so the bits are the same on every machine.
-// Accuracy, checked against long-double libm in the tests: within 2 ulp (log: relative to the
-// value; cos and sin: relative to 1).
+// fused multiply-add (the build targets baseline x86-64, and the AVX2 forms do not enable FMA), so
+// the scalar, SSE2 and AVX2 forms give the same bits on every machine. Accuracy, checked against
+// long-double libm in the tests: -ln u within 2 ulp of the value, cos and sin within 1 ulp of 1.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#if defined(__SSE2__)
+// ROLLSPEC_HAVE_SSE2_PATH: two-lane forms (x86-64 always has SSE2); ROLLSPEC_HAVE_AVX2_PATH:
+// four-lane forms, used only where the CPU reports AVX2 at run time.
+#if defined(__SSE2__) && defined(__x86_64__)
 #include <emmintrin.h>
+#define ROLLSPEC_HAVE_SSE2_PATH 1
 #endif
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -76,7 +79,7 @@ inline void sincos_two_pi(double v, const TabulatedMath& tab, double& c, double&
   s = cs[1] * ct + cs[0] * st;
 }
 
-#if defined(__SSE2__)
+#if defined(ROLLSPEC_HAVE_SSE2_PATH)
 // Two lanes at once: the same operations in the same order as the scalar forms above (IEEE
 // double +, -, *, exact conversions), so each lane's bits equal the scalar result.
 namespace tabulated_detail {

@@ -92,7 +92,7 @@ TEST_CASE("D-25: cos and sin of 2 pi v from the table are within 1 ulp of 1 of l
   CHECK(worst_c <= 1.0);
   CHECK(worst_s <= 1.0);
   CHECK(worst_norm <= 4.0 * std::numeric_limits<double>::epsilon());
-#if defined(__SSE2__)
+#if defined(ROLLSPEC_HAVE_SSE2_PATH)
   // The two-lane forms the synthesis loop uses give each lane the scalar form's bits.
   for (std::size_t i = 0; i + 1 < v.size(); i += 2) {
     double c[2], s[2], l[2];
