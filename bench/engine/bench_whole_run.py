@@ -8,6 +8,11 @@ alike), medians reported. Prints a Markdown table for the README.
 
 Cases: 1 realisation (the fixed cost: set-up, the reference, the file), K realisations on 1 and on
 2 threads (parallel efficiency t1 / (2 t2)), and K on 2 threads without the reference.
+
+  --baseline OTHER_BIN   also runs the K-realisation 1-thread command (no reference) with the
+                         previous build, interleaved with this one, and prints the ratio
+                         this / previous and the ms per realisation per core of each (issue 18:
+                         whole-command ratios in one run). With --only-baseline, only that pair.
 """
 import argparse
 import os
@@ -35,18 +40,27 @@ def main():
     ap.add_argument("--study", default="studies/seed002-rig-1ms.ini")
     ap.add_argument("--realisations", type=int, default=1000)
     ap.add_argument("--repeats", type=int, default=5)
+    ap.add_argument("--baseline", help="previous build's rollspec, run interleaved for a ratio")
+    ap.add_argument("--only-baseline", action="store_true", help="only the this-vs-previous pair")
     a = ap.parse_args()
+    if a.only_baseline and not a.baseline:
+        sys.exit("--only-baseline needs --baseline")
     K = a.realisations
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "r.h5"
         base = [a.bin, "run", a.study, "--out", out, "--force", "--quiet"]
-        cases = {
+        cases = {} if a.only_baseline else {
             "1 realisation, 2 threads": (base + ["--set", "study.realisations=1"], 2),
             f"{K} realisations, 1 thread": (base + ["--set", f"study.realisations={K}"], 1),
             f"{K} realisations, 2 threads": (base + ["--set", f"study.realisations={K}"], 2),
             f"{K} realisations, 2 threads, no reference": (
                 base + ["--set", f"study.realisations={K}", "--set", "output.reference=false"], 2),
         }
+        pair = ["--set", f"study.realisations={K}", "--set", "output.reference=false"]
+        if a.baseline:
+            cases[f"{K} realisations, 1 thread, no reference: this build"] = (base + pair, 1)
+            cases[f"{K} realisations, 1 thread, no reference: previous build"] = (
+                [a.baseline, "run", a.study, "--out", out, "--force", "--quiet"] + pair, 1)
         runs = {name: [] for name in cases}
         for _ in range(a.repeats):
             for name, (cmd, threads) in cases.items():
@@ -57,6 +71,14 @@ def main():
     print("|---|---|---|")
     for n, (w, c) in med.items():
         print(f"| {n} | {w:.2f} s | {c:.2f} s |")
+    if a.baseline:
+        this = med[f"{K} realisations, 1 thread, no reference: this build"]
+        prev = med[f"{K} realisations, 1 thread, no reference: previous build"]
+        print(f"\nthis / previous build, {K} realisations on 1 thread: wall {this[0] / prev[0]:.3f}, "
+              f"CPU {this[1] / prev[1]:.3f}; per realisation per core {1e3 * this[1] / K:.2f} ms against "
+              f"{1e3 * prev[1] / K:.2f} ms (CPU time over K, set-up included)")
+    if a.only_baseline:
+        return
     t1, t2 = med[f"{K} realisations, 1 thread"][0], med[f"{K} realisations, 2 threads"][0]
     print(f"\nparallel efficiency of the whole command: {t1 / (2 * t2):.2f}")
 

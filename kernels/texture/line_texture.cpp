@@ -1,5 +1,6 @@
 #include "kernels/texture/line_texture.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -43,6 +44,7 @@ LineTextureGenerator::LineTextureGenerator(const Psd& psd, const LineTextureSpec
   dk_ = 2.0 * M_PI / (static_cast<double>(synth_.samples()) * spec.spacing);
   g_ = psd_at_harmonics(psd, dk_, synth_.harmonics());
   g_.back() = 0.0;  // Nyquist harmonic carries no power (D-3 sum stops at P/2 - 1)
+  half_amplitudes_ = spectral::synthesis_half_amplitudes(g_.data(), g_.size(), dk_);
 }
 
 std::vector<double> LineTextureGenerator::wavenumbers() const {
@@ -57,14 +59,19 @@ double LineTextureGenerator::target_variance() const {
   return v;
 }
 
-void LineTextureGenerator::generate(const double* u_phase, const double* u_amplitude, double* out) const {
+void LineTextureGenerator::generate(const double* u_phase, const double* u_amplitude, double* out,
+                                    SynthesisScratch& scratch) const {
   if (spec_.samples == synth_.samples()) {
-    synth_.synthesise(g_.data(), dk_, spec_.amplitudes, u_phase, u_amplitude, out);
+    synth_.synthesise(half_amplitudes_.data(), spec_.amplitudes, u_phase, u_amplitude, out, scratch);
     return;
   }
-  std::vector<double> full(synth_.samples());
-  synth_.synthesise(g_.data(), dk_, spec_.amplitudes, u_phase, u_amplitude, full.data());
-  std::copy(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(spec_.samples), out);
+  synth_.synthesise_into_scratch(half_amplitudes_.data(), spec_.amplitudes, u_phase, u_amplitude, scratch);
+  std::copy(scratch.real.data(), scratch.real.data() + spec_.samples, out);
+}
+
+void LineTextureGenerator::generate(const double* u_phase, const double* u_amplitude, double* out) const {
+  SynthesisScratch scratch = make_scratch();
+  generate(u_phase, u_amplitude, out, scratch);
 }
 
 std::vector<double> LineTextureGenerator::generate(const std::vector<double>& u_phase,

@@ -11,7 +11,9 @@
 // would be dropped), unless truncation is explicitly allowed.
 //
 // Random numbers come in as two arrays of harmonics() U(0,1) doubles (phase, amplitude); the
-// engine draws them from the realisation's Philox stream. No RNG, no I/O in here.
+// engine draws them from the realisation's Philox stream. No RNG, no I/O in here. The half
+// amplitudes sqrt(2 G_j dk) / 2 and the FFTW plan are made once per generator; a caller that
+// generates many realisations passes a SynthesisScratch per thread, so none allocates.
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -22,6 +24,7 @@
 namespace rollspec::texture {
 
 using spectral::Amplitudes;
+using spectral::SynthesisScratch;
 
 struct LineTextureSpec {
   std::size_t samples = 0;   // output length n
@@ -45,6 +48,8 @@ class LineTextureGenerator {
 
   // out[0..samples): one realisation. u_amplitude is ignored for deterministic amplitudes.
   void generate(const double* u_phase, const double* u_amplitude, double* out) const;
+  void generate(const double* u_phase, const double* u_amplitude, double* out, SynthesisScratch& scratch) const;
+  SynthesisScratch make_scratch() const { return SynthesisScratch(synth_.samples()); }
   std::vector<double> generate(const std::vector<double>& u_phase, const std::vector<double>& u_amplitude) const;
 
  private:
@@ -52,6 +57,7 @@ class LineTextureGenerator {
   spectral::HarmonicSynthesiser synth_;
   double dk_;
   std::vector<double> g_;
+  std::vector<double> half_amplitudes_;  // sqrt(2 G_j dk) / 2
 };
 
 // Smallest even number >= n whose only prime factors are 2, 3, 5, 7 (fast FFT sizes).

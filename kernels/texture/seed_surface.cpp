@@ -171,8 +171,9 @@ void SeedSurfaceGenerator::generate(const double* u, Surface& out) const {
   const std::size_t lx = spec_.nx + spec_.box_x - 1, ly = spec_.ny + spec_.box_y - 1;
   const std::size_t hx = along_x_->harmonics(), hy = along_y_->harmonics();
   std::vector<double> d(lx * ly), g(lx * ly);
-  for (std::size_t l = 0; l < ly; ++l, u += 2 * hx) along_x_->generate(u, u + hx, d.data() + l * lx);
-  for (std::size_t k = 0; k < lx; ++k, u += 2 * hy) along_y_->generate(u, u + hy, g.data() + k * ly);
+  SynthesisScratch sx = along_x_->make_scratch(), sy = along_y_->make_scratch();
+  for (std::size_t l = 0; l < ly; ++l, u += 2 * hx) along_x_->generate(u, u + hx, d.data() + l * lx, sx);
+  for (std::size_t k = 0; k < lx; ++k, u += 2 * hy) along_y_->generate(u, u + hy, g.data() + k * ly, sy);
   out = seed_surface(spec_, d, g);
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels/spectral/tabulated_math.hpp"
 
 namespace rollspec::texture {
 
@@ -47,6 +48,12 @@ SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const Spectra
       c_[iy * nh + ix] = iso_->cell_average(q, width);                        // Eq. 21
     }
   }
+  // |Z_q| of Eq. 26 before the Rayleigh factor: the same every realisation.
+  const double base = std::sqrt(dqx * dqy) / (2.0 * M_PI);
+  amp_.assign(modes(), 0.0);
+  for (std::size_t i = 0; i < amp_.size(); ++i)
+    if (c_[i] > 0.0) amp_[i] = base * std::sqrt(c_[i]);
+  spectral::tabulated_math();
   const spectral::RealBuffer out(spec_.nx * spec_.ny);
   const spectral::ComplexBuffer in(modes());
   plan_ = spectral::FftwPlan(
@@ -66,9 +73,7 @@ double SpectralSurfaceGenerator::target_variance() const {
 
 std::vector<std::complex<double>> SpectralSurfaceGenerator::coefficients(const double* u_phase, const double* u_amplitude) const {
   const std::size_t nh = spec_.nx / 2 + 1, ny = spec_.ny;
-  const double dqx = 2.0 * M_PI / (static_cast<double>(spec_.nx) * spec_.dx);
-  const double dqy = 2.0 * M_PI / (static_cast<double>(ny) * spec_.dy);
-  const double base = std::sqrt(dqx * dqy) / (2.0 * M_PI);
+  const spectral::TabulatedMath& t = spectral::tabulated_math();
   const bool rayleigh = spec_.amplitudes == spectral::Amplitudes::rayleigh;
   std::vector<std::complex<double>> z(modes(), {0.0, 0.0});
   for (std::size_t iy = 0; iy < ny; ++iy)
@@ -76,9 +81,11 @@ std::vector<std::complex<double>> SpectralSurfaceGenerator::coefficients(const d
       const std::size_t i = iy * nh + ix;
       if (c_[i] <= 0.0) continue;
       if (ix == 0 && iy > ny / 2) continue;  // conjugate of (0, ny - iy), set below
-      double amp = base * std::sqrt(c_[i]);  // Eq. 26
-      if (rayleigh) amp *= std::sqrt(-std::log(u_amplitude[i]));
-      z[i] = std::polar(amp, 2.0 * M_PI * u_phase[i]);
+      double amp = amp_[i];  // Eq. 26; -ln u, cos and sin of 2 pi v by spectral D-24, D-25
+      if (rayleigh) amp *= std::sqrt(spectral::neg_log_open(u_amplitude[i], t));
+      double c, s;
+      spectral::sincos_two_pi(u_phase[i], t, c, s);
+      z[i] = {amp * c, amp * s};
     }
   for (std::size_t iy = 1; iy < ny / 2; ++iy) z[(ny - iy) * nh] = std::conj(z[iy * nh]);  // Z_{-q} = conj(Z_q) on qx = 0
   return z;

@@ -62,6 +62,7 @@ class SpectralSurfaceGenerator {
   SpectralSurfaceSpec spec_;
   std::unique_ptr<IsotropicPsd> iso_;
   std::vector<double> c_;
+  std::vector<double> amp_;  // sqrt(dqx dqy) / (2 pi) sqrt(C_q), Eq. 26
   spectral::FftwPlan plan_;  // 2D c2r, executed on per-call buffers (new-array interface)
 };
 

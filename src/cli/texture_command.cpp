@@ -122,10 +122,11 @@ int texture_command(const Args& args) {
     for (std::size_t i = 0; i < n; ++i) x[i] = ls.spacing * static_cast<double>(i);
     std::vector<texture::Profile> profiles(n_lines);
     std::vector<texture::HeightStatistics> stats;
+    spectral::SynthesisScratch scratch = lines->make_scratch();
     for (std::size_t r = 0; r < n_lines; ++r) {
       rng::PhiloxStream(seed, r, rng::Stream::roughness_phase).uniform_open(up.data(), nh);
       rng::PhiloxStream(seed, r, rng::Stream::roughness_amplitude).uniform_open(ua.data(), nh);
-      lines->generate(up.data(), ua.data(), all.data() + r * n);
+      lines->generate(up.data(), ua.data(), all.data() + r * n, scratch);
       const auto st = texture::line_statistics(all.data() + r * n, n, ls.spacing);
       refuse_overflow(s, "line", r, st, all.data() + r * n, n);
       print_statistics("line", r, st, false, !list);

@@ -39,7 +39,8 @@ using namespace study;
 namespace {
 
 struct Workspace {
-  std::vector<double> texture, u_phase, u_amp;
+  std::vector<double> texture, u_phase, u_amp, f0_phase, f0_amp;
+  std::unique_ptr<spectral::SynthesisScratch> line_scratch, f0_scratch;  // made on the thread's first realisation
   beam::BallOnBeamResult result;
   spectral::WelchWorkspace welch;
   Workspace(std::size_t n_texture, std::size_t harmonics, std::size_t segment)
@@ -166,6 +167,7 @@ class BallOnBeam final : public Scene {
       f0_psd_[j] = blocked_force_time_psd(f);
     }
     f0_df_ = df;
+    f0_half_amplitudes_ = spectral::synthesis_half_amplitudes(f0_psd_.data(), f0_psd_.size(), df);
   }
 
   // F0 PSD along the path: the table's, and at long wavelengths, where the ball follows the
@@ -195,21 +197,24 @@ class BallOnBeam final : public Scene {
     if (!blocked_solver()) {
     rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
     rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
-    lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data());
+    if (!ws.line_scratch) ws.line_scratch = std::make_unique<spectral::SynthesisScratch>(lines_->period());
+    lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data(), *ws.line_scratch);
     }
     beam::UniformSamples h{0.0, b_.spacing, blocked_solver() ? std::vector<double>() : ws.texture};
     if (b_.patch_half_width > 0.0 && !blocked_solver()) h = beam::contact_patch_average(h, b_.patch_half_width);
     beam::Realisation r;
     if (blocked_solver()) {
       const std::size_t nh_f0 = f0_synth_->harmonics(), n = f0_synth_->samples();
-      std::vector<double> up(nh_f0), ua(nh_f0);
-      rng::PhiloxStream(b_.seed, id, rng::Stream::blocked_force_phase).uniform_open(up.data(), nh_f0);
-      rng::PhiloxStream(b_.seed, id, rng::Stream::blocked_force_amplitude).uniform_open(ua.data(), nh_f0);
+      ws.f0_phase.resize(nh_f0);
+      ws.f0_amp.resize(nh_f0);
+      if (!ws.f0_scratch) ws.f0_scratch = std::make_unique<spectral::SynthesisScratch>(n);
+      rng::PhiloxStream(b_.seed, id, rng::Stream::blocked_force_phase).uniform_open(ws.f0_phase.data(), nh_f0);
+      rng::PhiloxStream(b_.seed, id, rng::Stream::blocked_force_amplitude).uniform_open(ws.f0_amp.data(), nh_f0);
       r.blocked_force.origin = 0.0;
       r.blocked_force.step = f0_step_;
       r.blocked_force.values.resize(n);
-      f0_synth_->synthesise(f0_psd_.data(), f0_df_, spectral::Amplitudes::rayleigh, up.data(), ua.data(),
-                            r.blocked_force.values.data());
+      f0_synth_->synthesise(f0_half_amplitudes_.data(), spectral::Amplitudes::rayleigh, ws.f0_phase.data(),
+                            ws.f0_amp.data(), r.blocked_force.values.data(), *ws.f0_scratch);
       for (double& f : r.blocked_force.values) f += b_.weight();
     } else if (linearised()) {
       // Blocked force of a linear contact spring: F0(t) = W + k0 h(x_start + v t) (D-11).
@@ -463,7 +468,7 @@ class BallOnBeam final : public Scene {
   bool quiet_ = false;
   stiffness::BlockedForceTable blocked_;
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
-  std::vector<double> f0_psd_;
+  std::vector<double> f0_psd_, f0_half_amplitudes_;
   double f0_step_ = 0.0, f0_df_ = 0.0;
   const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene
   std::unique_ptr<texture::LineTextureGenerator> lines_;

@@ -23,8 +23,9 @@ namespace {
 
 struct Workspace {
   explicit Workspace(std::size_t n, std::size_t segment)
-      : force(n), accel(n), u_phase(n / 2 + 1), u_amp(n / 2 + 1), welch(segment) {}
+      : force(n), accel(n), u_phase(n / 2 + 1), u_amp(n / 2 + 1), scratch(n), welch(segment) {}
   std::vector<double> force, accel, u_phase, u_amp;
+  spectral::SynthesisScratch scratch;
   spectral::WelchWorkspace welch;
 };
 
@@ -38,6 +39,7 @@ class RandomOscillator final : public Scene {
     psd_at_harmonics_.resize(synth_->harmonics());
     for (std::size_t j = 0; j < psd_at_harmonics_.size(); ++j)
       psd_at_harmonics_[j] = o_.force_psd(df_ * static_cast<double>(j));
+    half_amplitudes_ = spectral::synthesis_half_amplitudes(psd_at_harmonics_.data(), psd_at_harmonics_.size(), df_);
     omega_ = 2.0 * M_PI * o_.natural_frequency;
     step_ = integrators::ExactOscillatorStep::make(omega_, o_.damping_ratio, 1.0 / o_.sample_rate);
     // Phi^N, the free response over one period, for the periodic steady state.
@@ -70,7 +72,8 @@ class RandomOscillator final : public Scene {
     const std::size_t nh = synth_->harmonics();
     rng::PhiloxStream(o_.seed, id, rng::Stream::force_phase).uniform_open(ws.u_phase.data(), nh);
     rng::PhiloxStream(o_.seed, id, rng::Stream::force_amplitude).uniform_open(ws.u_amp.data(), nh);
-    synth_->synthesise(psd_at_harmonics_.data(), df_, o_.amplitudes, ws.u_phase.data(), ws.u_amp.data(), ws.force.data());
+    synth_->synthesise(half_amplitudes_.data(), o_.amplitudes, ws.u_phase.data(), ws.u_amp.data(), ws.force.data(),
+                       ws.scratch);
     for (double& f : ws.force) f /= o_.mass;
     // Pass 1 from rest over one period gives the forced part r; the periodic start is (I - Phi^N)^-1 r.
     double q = 0.0, v = 0.0;
@@ -118,7 +121,7 @@ class RandomOscillator final : public Scene {
   std::unique_ptr<spectral::WelchPlan> welch_;
   std::unique_ptr<PsdRows> rows_;
   std::unique_ptr<spectral::HarmonicSynthesiser> synth_;
-  std::vector<double> psd_at_harmonics_;
+  std::vector<double> psd_at_harmonics_, half_amplitudes_;
   integrators::ExactOscillatorStep step_{};
   Eigen::Matrix2d periodic_inverse_;
   std::vector<std::unique_ptr<Workspace>> workspaces_;

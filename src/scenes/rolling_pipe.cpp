@@ -200,6 +200,7 @@ class RollingPipe final : public Scene {
  private:
   struct Workspace {
     std::vector<double> u_phase, u_amp, texture, signal;
+    std::unique_ptr<spectral::SynthesisScratch> line_scratch;  // made on the thread's first line
     texture::Surface grid;
     spectral::WelchWorkspace welch;
     explicit Workspace(std::size_t segment) : welch(segment) {}
@@ -238,7 +239,8 @@ class RollingPipe final : public Scene {
       ws.texture.resize(lines_->spec().samples);
       rng::PhiloxStream(p_.seed, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
       rng::PhiloxStream(p_.seed, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
-      lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data());
+      if (!ws.line_scratch) ws.line_scratch = std::make_unique<spectral::SynthesisScratch>(lines_->period());
+      lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data(), *ws.line_scratch);
       f.n1 = static_cast<int>(ws.texture.size());
       f.n2 = 1;
       f.h = ws.texture;
