@@ -1,6 +1,7 @@
 #include "kernels/contact/contact_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -14,11 +15,29 @@ constexpr unsigned char kFree = 1;  // 0 < p < H: CG set (README Eq. 7)
 
 double clip(double v, double hardness) { return std::min(std::max(v, 0.0), hardness); }
 
-// Natural KKT residual of D-7 in length units (README Eq. 9), maximum over cells.
-double kkt_residual(const std::vector<double>& p, const std::vector<double>& g, double hardness, double c) {
-  double e = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) e = std::max(e, std::fabs(p[i] - clip(p[i] - g[i] / c, hardness)));
-  return c * e;
+// The cell loops run over fixed blocks of cells; a block's partial sums are added in block order
+// afterwards, so every sum has the same bits for any thread count (one block: the plain loop).
+constexpr std::size_t kCellBlock = 8192;
+constexpr std::size_t kParallelCells = 4 * kCellBlock;
+
+// f(lo, hi, partial) for each block [lo, hi), in parallel; partial points at the block's K slots
+// (zero on entry). Slot k of the result is the sum of the blocks' slots, or their maximum if bit k
+// of max_slots is set.
+template <std::size_t K, class F>
+std::array<double, K> block_reduce(std::size_t n, std::vector<double>& part, F&& f, unsigned max_slots = 0) {
+  const std::size_t nb = (n + kCellBlock - 1) / kCellBlock;
+  part.assign(nb * K, 0.0);
+  const long blocks = static_cast<long>(nb);
+#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+  for (long b = 0; b < blocks; ++b) {
+    const std::size_t lo = static_cast<std::size_t>(b) * kCellBlock;
+    f(lo, std::min(n, lo + kCellBlock), part.data() + static_cast<std::size_t>(b) * K);
+  }
+  std::array<double, K> total{};
+  for (std::size_t b = 0; b < nb; ++b)
+    for (std::size_t k = 0; k < K; ++k)
+      total[k] = (max_slots >> k) & 1u ? std::max(total[k], part[b * K + k]) : total[k] + part[b * K + k];
+  return total;
 }
 }  // namespace
 
@@ -91,19 +110,30 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     v = std::isnan(v) ? 0.0 : clip(v, hardness);
     all_zero = all_zero && v == 0.0;
   }
+  // u_ = C p is kept up to date by the step itself while no cell is clipped or released
+  // (README Eq. 7a): then an iteration needs one half-space product, not two.
+  bool u_valid = false;
+  if (all_zero && !load && opt.coarse_start && coarse_start(s, w, p, opt, res)) all_zero = false;
   if (all_zero) {
     if (load) {
       std::fill(p.begin(), p.end(), target);
     } else {
       for (std::size_t i = 0; i < n; ++i) t_[i] = std::max(0.0, w - s[i]);
       op_.apply(t_.data(), r_.data());
-      double num = 0.0, den = 0.0;
+      const auto nd = block_reduce<2>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (std::size_t i = lo; i < hi; ++i) {
+          acc[0] += t_[i] * (w - s[i]);
+          acc[1] += t_[i] * r_[i];
+        }
+      });
+      const double alpha = nd[0] / nd[1];
+      bool clipped = false;
       for (std::size_t i = 0; i < n; ++i) {
-        num += t_[i] * (w - s[i]);
-        den += t_[i] * r_[i];
+        p[i] = clip(alpha * t_[i], hardness);
+        u_[i] = alpha * r_[i];
+        clipped = clipped || p[i] != alpha * t_[i];
       }
-      const double alpha = num / den;
-      for (std::size_t i = 0; i < n; ++i) p[i] = clip(alpha * t_[i], hardness);
+      u_valid = !clipped;
     }
   }
   auto enforce_load = [&]() {
@@ -119,10 +149,10 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   double g_old = 1.0;
   bool conjugate = false;  // δ of Polonsky & Keer: restart after a set change
   std::fill(t_.begin(), t_.end(), 0.0);
-  int it = 0;
-  for (;; ++it) {
-    // Gap g = s − w + C p (D-7, README Eq. 6).
-    op_.apply(p.data(), u_.data());
+  double gg = 0.0;          // Σ_S g_i² on the CG set of this iteration
+  std::size_t free_count = 0;
+  // Gap g = s − w + u (D-7, README Eq. 6), the CG set S = {0 < p < H}, G = Σ_S g², and ε (Eq. 9).
+  auto evaluate = [&]() {
     if (load) {
       // w = mean of s + u over the loaded cells: makes the mean gap there zero.
       double sum = 0.0;
@@ -134,31 +164,56 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
         }
       w = sum / static_cast<double>(cnt);
     }
-    for (std::size_t i = 0; i < n; ++i) g_[i] = s[i] - w + u_[i];
-    res.error = kkt_residual(p, g_, hardness, c) / g_ref;
+    const auto e = block_reduce<3>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      double emax = 0.0, sum = 0.0, count = 0.0;
+      for (std::size_t i = lo; i < hi; ++i) {
+        const double gi = s[i] - w + u_[i];
+        g_[i] = gi;
+        emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
+        const bool is_free = p[i] > 0.0 && p[i] < hardness;
+        set_[i] = is_free ? kFree : kOut;
+        if (is_free) {
+          sum += gi * gi;
+          count += 1.0;
+        }
+      }
+      acc[0] = emax, acc[1] = sum, acc[2] = count;
+    }, 1u);
+    res.error = c * e[0] / g_ref;
+    gg = e[1];
+    free_count = static_cast<std::size_t>(e[2]);
+  };
+  int it = 0;
+  for (;; ++it) {
+    bool fresh = false;  // u_ from a product this iteration (not carried by the steps)
+    if (!u_valid) {
+      op_.apply(p.data(), u_.data());
+      fresh = true;
+    }
+    evaluate();
+    if ((res.error < opt.tolerance || it >= opt.max_iterations) && !fresh) {
+      // Decide on, and report, the exact gap: one product replaces the carried u_.
+      op_.apply(p.data(), u_.data());
+      fresh = true;
+      evaluate();
+    }
     if (res.error < opt.tolerance) {
       res.converged = true;
       break;
     }
     if (it >= opt.max_iterations) break;
 
-    // CG set S = {0 < p < H}. If S is empty, or the gradient on S vanishes (e.g. an exact warm
-    // start whose only defect is cells that must leave a bound), restart with the violating bound
-    // cells added to S: t = g there, no conjugation.
-    std::size_t free_count = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      set_[i] = (p[i] > 0.0 && p[i] < hardness) ? kFree : kOut;
-      free_count += set_[i];
-    }
+    // If S is empty, or the gradient on S vanishes (e.g. an exact warm start whose only defect is
+    // cells that must leave a bound), restart with the violating bound cells added to S: t = g
+    // there, no conjugation.
     double num = 0.0, den = 0.0;
     auto direction_and_step = [&]() {
       // Search direction t = g + δ (G/G_old) t on S (README Eq. 7), r = C t, τ = gᵀt / tᵀC t.
-      double gg = 0.0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (set_[i] == kFree) gg += g_[i] * g_[i];
       const double beta = conjugate ? gg / g_old : 0.0;
       g_old = gg;
-      for (std::size_t i = 0; i < n; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+      block_reduce<0>(n, part_, [&](std::size_t lo, std::size_t hi, double*) {
+        for (std::size_t i = lo; i < hi; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+      });
       op_.apply(t_.data(), r_.data());
       if (load) {
         double sum = 0.0;
@@ -171,38 +226,60 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
         const double mean = cnt > 0 ? sum / static_cast<double>(cnt) : 0.0;
         for (std::size_t i = 0; i < n; ++i) r_[i] -= mean;
       }
-      num = 0.0;
-      den = 0.0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (set_[i] == kFree) {
-          num += g_[i] * t_[i];
-          den += r_[i] * t_[i];
-        }
+      const auto nd = block_reduce<2>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (std::size_t i = lo; i < hi; ++i)
+          if (set_[i] == kFree) {
+            acc[0] += g_[i] * t_[i];
+            acc[1] += r_[i] * t_[i];
+          }
+      });
+      num = nd[0];
+      den = nd[1];
     };
     if (free_count > 0) direction_and_step();
     bool released = false;
     if (!(den > 0.0)) {
       released = true;
-      for (std::size_t i = 0; i < n; ++i)
-        if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) set_[i] = kFree;
+      const auto e = block_reduce<1>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (std::size_t i = lo; i < hi; ++i) {
+          if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) set_[i] = kFree;
+          if (set_[i] == kFree) acc[0] += g_[i] * g_[i];
+        }
+      });
+      gg = e[0];
       conjugate = false;
       direction_and_step();
     }
     if (!(den > 0.0)) {
       ++it;  // nothing left to move: stop; reported unconverged since ε ≥ tolerance
+      if (!fresh) {
+        op_.apply(p.data(), u_.data());
+        evaluate();
+      }
       break;
     }
     const double tau = num / den;
     // Step on S; release bound cells whose gap says so: p = 0 with g < 0, p = H with g > 0
-    // (README Eq. 8); a release restarts the conjugate directions.
-    for (std::size_t i = 0; i < n; ++i) {
-      if (set_[i] == kFree) {
-        p[i] = clip(p[i] - tau * t_[i], hardness);
-      } else if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) {
-        p[i] = clip(p[i] - tau * g_[i], hardness);
-        released = true;
+    // (README Eq. 8); a release restarts the conjugate directions. While the step is exactly
+    // −τ t (nothing clipped, nothing released) the displacement follows as u − τ C t (Eq. 7a).
+    const auto moved = block_reduce<2>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      bool clipped = false, freed = false;
+      for (std::size_t i = lo; i < hi; ++i) {
+        if (set_[i] == kFree) {
+          const double step = p[i] - tau * t_[i];
+          p[i] = clip(step, hardness);
+          clipped = clipped || p[i] != step;
+        } else if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) {
+          p[i] = clip(p[i] - tau * g_[i], hardness);
+          freed = true;
+        }
+        u_[i] -= tau * r_[i];
       }
-    }
+      acc[0] = clipped ? 1.0 : 0.0;
+      acc[1] = freed ? 1.0 : 0.0;
+    });
+    released = released || moved[1] > 0.0;
+    u_valid = !load && !released && moved[0] == 0.0;
     if (load) enforce_load();
     conjugate = !released;
   }
@@ -226,6 +303,38 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   res.max_pressure = pmax;
   if (opt.compute_stiffness && op_.boundary() == Boundary::Open) frozen_stiffness(p, opt, res);
   return res;
+}
+
+// README Eq. 16: restrict the gap to the grid of 2dx × 2dy (2 × 2 means: the coarse cell centre is
+// the mean of its four), solve there (itself coarse-started) to the coarse tolerance, and give each
+// coarse pressure to its four fine cells. False (p untouched) when the grid is odd or too small.
+bool ContactSolver::coarse_start(const std::vector<double>& s, double w, std::vector<double>& p,
+                                 const SolverOptions& opt, ContactResult& res) {
+  constexpr std::size_t kMinCoarse = 32;
+  const Grid& g = op_.grid();
+  if (g.nx % 2 != 0 || g.ny % 2 != 0 || g.nx / 2 < kMinCoarse || g.ny / 2 < kMinCoarse) return false;
+  const std::size_t cnx = g.nx / 2, cny = g.ny / 2;
+  if (!coarse_) coarse_ = std::make_unique<ContactSolver>(Grid{cnx, cny, 2.0 * g.dx, 2.0 * g.dy}, op_.e_star());
+  coarse_gap_.resize(cnx * cny);
+  for (std::size_t y = 0; y < cny; ++y)
+    for (std::size_t x = 0; x < cnx; ++x) {
+      const std::size_t i = 2 * y * g.nx + 2 * x;
+      coarse_gap_[y * cnx + x] = 0.25 * ((s[i] + s[i + 1]) + (s[i + g.nx] + s[i + g.nx + 1]));
+    }
+  SolverOptions o = opt;
+  o.tolerance = std::max(opt.tolerance, opt.coarse_tolerance);
+  o.compute_stiffness = false;
+  coarse_pressure_.assign(cnx * cny, 0.0);
+  const ContactResult r = coarse_->solve(coarse_gap_, w, coarse_pressure_, o);
+  res.coarse_iterations = r.iterations + r.coarse_iterations;
+  bool any = false;
+  for (std::size_t y = 0; y < g.ny; ++y)
+    for (std::size_t x = 0; x < g.nx; ++x) {
+      const double v = coarse_pressure_[(y / 2) * cnx + x / 2];
+      p[y * g.nx + x] = v;
+      any = any || v > 0.0;
+    }
+  return any;
 }
 
 // k = dP/dw with the contact set frozen (README Eq. 11): on the elastic contact cells E
@@ -260,22 +369,26 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   bool ok = rr <= stop;
   while (!ok && it < opt.stiffness_max_iterations) {
     op_.apply(t_.data(), r_.data());
-    double tr = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (set_[i] == kFree) tr += t_[i] * r_[i];
+    const double tr = block_reduce<1>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      for (std::size_t i = lo; i < hi; ++i)
+        if (set_[i] == kFree) acc[0] += t_[i] * r_[i];
+    })[0];
     const double alpha = rr / tr;
-    double rr_new = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (set_[i] == kFree) {
-        x_[i] += alpha * t_[i];
-        g_[i] -= alpha * r_[i];
-        rr_new += g_[i] * g_[i];
-      }
+    const double rr_new = block_reduce<1>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      for (std::size_t i = lo; i < hi; ++i)
+        if (set_[i] == kFree) {
+          x_[i] += alpha * t_[i];
+          g_[i] -= alpha * r_[i];
+          acc[0] += g_[i] * g_[i];
+        }
+    })[0];
     ++it;
     ok = rr_new <= stop;
     const double beta = rr_new / rr;
     rr = rr_new;
-    for (std::size_t i = 0; i < n; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+    block_reduce<0>(n, part_, [&](std::size_t lo, std::size_t hi, double*) {
+      for (std::size_t i = lo; i < hi; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+    });
   }
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) sum += x_[i];

@@ -1,0 +1,76 @@
+// The contact kernel's results have the same bits for any OpenMP thread count: the half-space
+// product runs over fixed blocks of rows/columns with one FFTW plan per block size, the solver's
+// cell sums over fixed blocks added in block order (half_space_operator.hpp, contact_solver.cpp).
+#include <doctest/doctest.h>
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "hertz_fixture.hpp"
+#include "kernels/contact/contact_solver.hpp"
+#include "kernels/contact/half_space_operator.hpp"
+#include "kernels/contact/sweep.hpp"
+#include "rough_fixture.hpp"
+
+using namespace rollspec::contact;
+using rollspec::contact::test::Hertz;
+
+namespace {
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// Runs f with `threads` OpenMP threads, then restores the previous count.
+template <class F>
+void with_threads(int threads, F&& f) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  f();
+  omp_set_num_threads(before);
+}
+}  // namespace
+
+TEST_CASE("half-space product: same bits on 1 and 2 threads") {
+  // 200 × 150: whole and partial blocks of rows (8) and of columns (8 of the 201 complex ones).
+  const Grid grid{200, 150, 1e-6, 1.3e-6};
+  HalfSpaceOperator op(grid, 115.4e9);
+  std::vector<double> p(grid.size()), u1(grid.size()), u2(grid.size());
+  for (std::size_t k = 0; k < p.size(); ++k) p[k] = 1e9 * (1.1 + std::sin(0.37 * static_cast<double>(k)));
+  with_threads(1, [&] { op.apply(p.data(), u1.data()); });
+  with_threads(2, [&] { op.apply(p.data(), u2.data()); });
+  CHECK(same_bits(u1, u2));
+}
+
+TEST_CASE("contact solve and sweep: same bits on 1 and 2 threads (rough, elastic-plastic, coarse start)") {
+  const Hertz h;
+  // Even 192², 32 cells per contact radius: the coarse start (README Eq. 16) runs on 96² and 48².
+  const double dx = h.a() / 32.0;
+  const Grid grid{192, 192, dx, dx};
+  const auto gap = ball_gap(grid, h.radius, rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a()));
+  SolverOptions opt;
+  opt.hardness = 0.5 * h.p0();
+  opt.tolerance = 1e-10;
+  const std::vector<double> approaches = {0.6 * h.approach, 0.8 * h.approach, h.approach};
+  std::vector<ContactResult> r[2];
+  std::vector<double> p[2];
+  for (int k = 0; k < 2; ++k)
+    with_threads(k + 1, [&] {
+      ContactSolver solver(grid, h.e_star);
+      r[k] = sweep(solver, gap, approaches, opt, &p[k]);
+    });
+  REQUIRE(all_converged(r[0]));
+  CHECK(r[0].front().coarse_iterations > 0);
+  CHECK(r[0].back().plastic_cells > 0);
+  CHECK(same_bits(p[0], p[1]));
+  for (std::size_t j = 0; j < approaches.size(); ++j) {
+    CHECK(r[0][j].iterations == r[1][j].iterations);
+    CHECK(r[0][j].coarse_iterations == r[1][j].coarse_iterations);
+    CHECK(same_bits(r[0][j].force, r[1][j].force));
+    CHECK(same_bits(r[0][j].stiffness, r[1][j].stiffness));
+    CHECK(same_bits(r[0][j].error, r[1][j].error));
+  }
+}
