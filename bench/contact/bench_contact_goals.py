@@ -11,9 +11,10 @@ Goals and how each is measured:
       wall seconds, plans made beforehand); the previous build has no --hertz, so its hertz_solve line
       is read from `bench_contact --quick` and the process stopped there (it printed thread CPU
       seconds of the same single-threaded solve).
-  seed-002 table <= 8 s wall                    `rollspec run studies/seed002-table.ini` on 2 threads,
-      /usr/bin/time; the study is copied into a fresh directory for every run so the table is built,
-      never read from a cache.
+  seed-002 table <= 8 s wall                    `rollspec stiffness studies/seed002-table.ini --out
+      NEW.h5` on 2 threads (the table stage; `rollspec run` refuses a stiffness scene), /usr/bin/time;
+      the study is copied into a fresh directory for every run so the table is built, never read
+      from a cache.
   CG iteration <= 1.2 x two convolutions       `bench_contact --quick` cg_iteration lines (this build,
       one thread, thread CPU time, minimum of 5 interleaved trials, same run).
 """
@@ -52,10 +53,10 @@ def table_run(rollspec, threads):
         study = Path(tmp) / "seed002-table.ini"
         shutil.copy(ROOT / "studies" / "seed002-table.ini", study)
         with tempfile.NamedTemporaryFile("r", suffix=".time") as t:
-            r = subprocess.run(["/usr/bin/time", "-f", "%e %U %S", "-o", t.name, rollspec, "run", study, "--out",
+            r = subprocess.run(["/usr/bin/time", "-f", "%e %U %S", "-o", t.name, rollspec, "stiffness", study, "--out",
                                 Path(tmp) / "t.h5", "--quiet"], capture_output=True, text=True, env=env(threads))
             if r.returncode != 0:
-                sys.exit(f"failed: {rollspec} run {study}\n{r.stderr}")
+                sys.exit(f"failed: {rollspec} stiffness {study}\n{r.stderr}")
             wall, user, system = t.read().split()[-3:]
     return float(wall), float(user) + float(system)
 
@@ -94,7 +95,7 @@ def main():
           f"| {hn:.3f} s ({hertz['this'][0][1]} iterations + coarse start) | {hn / hp:.3f} | {hn / 0.6:.2f} |")
     tp, tn = med(table["previous"], 0), med(table["this"], 0)
     cp, cn = med(table["previous"], 1), med(table["this"], 1)
-    print(f"| `rollspec run studies/seed002-table.ini` ≤ 8 s wall | {tp:.2f} s wall, {cp:.1f} s CPU "
+    print(f"| `rollspec stiffness studies/seed002-table.ini` ≤ 8 s wall | {tp:.2f} s wall, {cp:.1f} s CPU "
           f"| {tn:.2f} s wall, {cn:.1f} s CPU | {tn / tp:.3f} | {tn / 8.0:.2f} |")
     for f in iteration.get("cg_iteration", []):
         print(f"| CG iteration / two convolutions ≤ 1.2, {f[1]}² (1 thread CPU) | | {float(f[2]) * 1e3:.2f} ms "

@@ -105,11 +105,21 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
 
   // Start: clip the warm start into [0, H]; cold start from the best multiple of the rigid
   // interference (one line search), or uniform pressure in load control.
+  // Displacement control: only the cells A = {s_i < w} can carry pressure (u = C p ≥ 0, so
+  // g_i ≥ s_i − w > 0 elsewhere): the iteration works on A (README Eq. 6a).
+  active_.clear();
+  if (!load)
+    for (std::size_t i = 0; i < n; ++i)
+      if (s[i] < w) active_.push_back(static_cast<std::uint32_t>(i));
   bool all_zero = true;
-  for (double& v : p) {
-    v = std::isnan(v) ? 0.0 : clip(v, hardness);
+  for (std::size_t i = 0; i < n; ++i) {
+    double& v = p[i];
+    v = std::isnan(v) || (!load && !(s[i] < w)) ? 0.0 : clip(v, hardness);
     all_zero = all_zero && v == 0.0;
   }
+  // C v on A: by direct sums while they are cheaper (Eq. 3b), else everywhere by DC-FFT. True if
+  // the product was the full one.
+  auto product = [&](const double* v, double* out) { return load ? (op_.apply(v, out), true) : apply_on(v, active_, out); };
   // u_ = C p is kept up to date by the step itself while no cell is clipped or released
   // (README Eq. 7a): then an iteration needs one half-space product, not two.
   bool u_valid = false;
@@ -119,7 +129,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
       std::fill(p.begin(), p.end(), target);
     } else {
       for (std::size_t i = 0; i < n; ++i) t_[i] = std::max(0.0, w - s[i]);
-      op_.apply(t_.data(), r_.data());
+      product(t_.data(), r_.data());
       const auto nd = block_reduce<2>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
         for (std::size_t i = lo; i < hi; ++i) {
           acc[0] += t_[i] * (w - s[i]);
@@ -146,6 +156,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   };
   if (load) enforce_load();
 
+  bool u_full = false;  // u_ = C p on every cell (not only on A, not carried)
   double g_old = 1.0;
   bool conjugate = false;  // δ of Polonsky & Keer: restart after a set change
   std::fill(t_.begin(), t_.end(), 0.0);
@@ -167,7 +178,8 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     const auto e = block_reduce<3>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
       double emax = 0.0, sum = 0.0, count = 0.0;
       for (std::size_t i = lo; i < hi; ++i) {
-        const double gi = s[i] - w + u_[i];
+        // Off A the exact u is not needed: g ≥ s − w > 0 there (Eq. 6a).
+        const double gi = load || s[i] < w ? s[i] - w + u_[i] : s[i] - w;
         g_[i] = gi;
         emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
         const bool is_free = p[i] > 0.0 && p[i] < hardness;
@@ -187,13 +199,13 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   for (;; ++it) {
     bool fresh = false;  // u_ from a product this iteration (not carried by the steps)
     if (!u_valid) {
-      op_.apply(p.data(), u_.data());
+      u_full = product(p.data(), u_.data());
       fresh = true;
     }
     evaluate();
     if ((res.error < opt.tolerance || it >= opt.max_iterations) && !fresh) {
       // Decide on, and report, the exact gap: one product replaces the carried u_.
-      op_.apply(p.data(), u_.data());
+      u_full = product(p.data(), u_.data());
       fresh = true;
       evaluate();
     }
@@ -214,7 +226,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
       block_reduce<0>(n, part_, [&](std::size_t lo, std::size_t hi, double*) {
         for (std::size_t i = lo; i < hi; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
       });
-      op_.apply(t_.data(), r_.data());
+      product(t_.data(), r_.data());
       if (load) {
         double sum = 0.0;
         std::size_t cnt = 0;
@@ -253,7 +265,8 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     if (!(den > 0.0)) {
       ++it;  // nothing left to move: stop; reported unconverged since ε ≥ tolerance
       if (!fresh) {
-        op_.apply(p.data(), u_.data());
+        u_full = product(p.data(), u_.data());
+        fresh = true;
         evaluate();
       }
       break;
@@ -280,11 +293,17 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     });
     released = released || moved[1] > 0.0;
     u_valid = !load && !released && moved[0] == 0.0;
+    u_full = false;
     if (load) enforce_load();
     conjugate = !released;
   }
   res.iterations = it;
   res.approach = w;
+  if (!load) {
+    // The outputs (plastic volume, the sub-cell edge's open cells) want the exact gap everywhere.
+    if (!u_full) op_.apply(p.data(), u_.data());
+    for (std::size_t i = 0; i < n; ++i) g_[i] = s[i] - w + u_[i];
+  }
 
   // Outputs (seed 001 Eq. 12; README Eq. 10).
   double force = 0.0, vp = 0.0, pmax = 0.0;
@@ -303,6 +322,23 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   res.max_pressure = pmax;
   if (opt.compute_stiffness && op_.boundary() == Boundary::Open) frozen_stiffness(p, opt, res);
   return res;
+}
+
+// C v on the cells `cells` (v = 0 elsewhere): direct sums over v's non-zero cells for those cells
+// (README Eq. 3b) when they cost less than the DC-FFT product, which is used otherwise (and then
+// gives u everywhere; returns true). The choice depends on the data only, never on threads.
+bool ContactSolver::apply_on(const double* v, const std::vector<std::uint32_t>& cells, double* out) {
+  if (op_.boundary() == Boundary::Open) {
+    sources_.clear();
+    for (std::uint32_t i : cells)
+      if (v[i] != 0.0) sources_.push_back(i);
+    if (static_cast<double>(sources_.size()) * static_cast<double>(cells.size()) < op_.fft_cost()) {
+      op_.apply_direct(v, sources_, cells, out);
+      return false;
+    }
+  }
+  op_.apply(v, out);
+  return true;
 }
 
 // README Eq. 16: restrict the gap to the grid of 2dx × 2dy (2 × 2 means: the coarse cell centre is
@@ -330,8 +366,9 @@ bool ContactSolver::coarse_start(const std::vector<double>& s, double w, std::ve
   bool any = false;
   for (std::size_t y = 0; y < g.ny; ++y)
     for (std::size_t x = 0; x < g.nx; ++x) {
-      const double v = coarse_pressure_[(y / 2) * cnx + x / 2];
-      p[y * g.nx + x] = v;
+      const std::size_t i = y * g.nx + x;
+      const double v = s[i] < w ? coarse_pressure_[(y / 2) * cnx + x / 2] : 0.0;  // only A carries pressure (Eq. 6a)
+      p[i] = v;
       any = any || v > 0.0;
     }
   return any;
@@ -344,9 +381,11 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   const std::size_t n = p.size();
   const double hardness = opt.hardness;
   std::size_t m = 0;
+  elastic_.clear();
   for (std::size_t i = 0; i < n; ++i) {
     set_[i] = (p[i] > 0.0 && p[i] < hardness) ? kFree : kOut;
     m += set_[i];
+    if (set_[i] == kFree) elastic_.push_back(static_cast<std::uint32_t>(i));
   }
   dp_.assign(n, 0.0);
   if (m == 0) {
@@ -368,7 +407,7 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   int it = 0;
   bool ok = rr <= stop;
   while (!ok && it < opt.stiffness_max_iterations) {
-    op_.apply(t_.data(), r_.data());
+    apply_on(t_.data(), elastic_, r_.data());  // C_EE t: only E is read
     const double tr = block_reduce<1>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
       for (std::size_t i = lo; i < hi; ++i)
         if (set_[i] == kFree) acc[0] += t_[i] * r_[i];

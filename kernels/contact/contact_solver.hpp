@@ -3,6 +3,7 @@
 // (Polonsky & Keer 1999, pressure cap after Almqvist et al. 2007; kernels/README.md D-6, D-7,
 // README Eq. 6–15).
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -95,6 +96,8 @@ class ContactSolver {
   std::vector<unsigned char> set_;
   std::vector<double> dp_;
   std::vector<double> part_;  // per-block partial sums of the cell loops
+  bool apply_on(const double* v, const std::vector<std::uint32_t>& cells, double* out);
+  std::vector<std::uint32_t> active_, elastic_, sources_;  // cells that may carry pressure, E, v ≠ 0
   // Coarse start (Eq. 16): the solver on the grid of twice the cell size, made when first needed.
   bool coarse_start(const std::vector<double>& gap, double approach, std::vector<double>& pressure,
                     const SolverOptions& options, ContactResult& result);

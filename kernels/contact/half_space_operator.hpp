@@ -1,6 +1,7 @@
 #pragma once
 // Fast product u = C p of the half-space influence matrix with a pressure field (kernels/README.md D-6).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "kernels/contact/grid.hpp"
@@ -40,6 +41,16 @@ class HalfSpaceOperator {
   // u[i] = Σ_k C_ik p[k] for the nx·ny cells (x-fastest arrays). p and u may not alias.
   void apply(const double* p, double* u);
 
+  // The same sum by direct summation (README Eq. 3b), only over the cells `sources` (where p may be
+  // non-zero) and only for the cells `targets` (u elsewhere is not written); both lists of cell
+  // indices in increasing order. Open boundary only. Each u[t] is one sum in source order: the same
+  // bits for any thread count. Worth it while |targets|·|sources| is small against
+  // fft_cost() (tiny contact spots on a big grid); the first call tabulates C (4 nx ny doubles).
+  void apply_direct(const double* p, const std::vector<std::uint32_t>& sources, const std::vector<std::uint32_t>& targets,
+                    double* u);
+  // Source–target pairs of apply_direct that cost about one apply().
+  double fft_cost() const;
+
   const Grid& grid() const { return grid_; }
   double e_star() const { return e_star_; }
   Boundary boundary() const { return boundary_; }
@@ -73,6 +84,13 @@ class HalfSpaceOperator {
   spectral::RealBuffer out_;         // ny rows: displacement
   spectral::ComplexBuffer spectrum_; // fny rows × cplx_stride
   spectral::ComplexBuffer kernel_;   // transformed coefficients, scaled by 1/(fnx·fny), same layout
+  std::vector<double> table_;        // C at offset (ox, oy): index (oy + ny − 1)(2nx − 1) + ox + nx − 1 (apply_direct)
+  struct Run {                       // sources next to each other in a row (apply_direct)
+    std::int64_t key;                // key of the first: iy (2nx − 1) + ix
+    std::uint32_t first;             // its cell index
+    std::uint32_t length;
+  };
+  std::vector<Run> runs_;
   // Plans last: destroyed before the buffers.
   Pass row_r2c_, col_forward_, col_backward_, row_c2r_;
 };
