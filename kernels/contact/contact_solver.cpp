@@ -20,6 +20,14 @@ double clip(double v, double hardness) { return std::min(std::max(v, 0.0), hardn
 constexpr std::size_t kCellBlock = 8192;
 constexpr std::size_t kParallelCells = 4 * kCellBlock;
 
+// Entries [lo, hi) of a list of cell indices, for range-for.
+struct Slice {
+  const std::uint32_t* list;
+  std::size_t lo, hi;
+  const std::uint32_t* begin() const { return list + lo; }
+  const std::uint32_t* end() const { return list + hi; }
+};
+
 // f(lo, hi, partial) for each block [lo, hi), in parallel; partial points at the block's K slots
 // (zero on entry). Slot k of the result is the sum of the blocks' slots, or their maximum if bit k
 // of max_slots is set.
@@ -156,6 +164,14 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   };
   if (load) enforce_load();
 
+  // The iteration visits the cells of A only (all cells in load control): elsewhere p = 0, t = 0,
+  // and g ≥ s − w > 0 needs no u (Eq. 6a); g is formed everywhere once converged.
+  if (load && all_.size() != n) {
+    all_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) all_[i] = static_cast<std::uint32_t>(i);
+  }
+  const std::vector<std::uint32_t>& cells = load ? all_ : active_;
+  std::fill(set_.begin(), set_.end(), kOut);
   bool u_full = false;  // u_ = C p on every cell (not only on A, not carried)
   double g_old = 1.0;
   bool conjugate = false;  // δ of Polonsky & Keer: restart after a set change
@@ -175,11 +191,10 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
         }
       w = sum / static_cast<double>(cnt);
     }
-    const auto e = block_reduce<3>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+    const auto e = block_reduce<3>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
       double emax = 0.0, sum = 0.0, count = 0.0;
-      for (std::size_t i = lo; i < hi; ++i) {
-        // Off A the exact u is not needed: g ≥ s − w > 0 there (Eq. 6a).
-        const double gi = load || s[i] < w ? s[i] - w + u_[i] : s[i] - w;
+      for (const std::size_t i : Slice{cells.data(), lo, hi}) {
+        const double gi = s[i] - w + u_[i];
         g_[i] = gi;
         emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
         const bool is_free = p[i] > 0.0 && p[i] < hardness;
@@ -223,8 +238,8 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
       // Search direction t = g + δ (G/G_old) t on S (README Eq. 7), r = C t, τ = gᵀt / tᵀC t.
       const double beta = conjugate ? gg / g_old : 0.0;
       g_old = gg;
-      block_reduce<0>(n, part_, [&](std::size_t lo, std::size_t hi, double*) {
-        for (std::size_t i = lo; i < hi; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+      block_reduce<0>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double*) {
+        for (const std::size_t i : Slice{cells.data(), lo, hi}) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
       });
       product(t_.data(), r_.data());
       if (load) {
@@ -238,8 +253,8 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
         const double mean = cnt > 0 ? sum / static_cast<double>(cnt) : 0.0;
         for (std::size_t i = 0; i < n; ++i) r_[i] -= mean;
       }
-      const auto nd = block_reduce<2>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
-        for (std::size_t i = lo; i < hi; ++i)
+      const auto nd = block_reduce<2>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (const std::size_t i : Slice{cells.data(), lo, hi})
           if (set_[i] == kFree) {
             acc[0] += g_[i] * t_[i];
             acc[1] += r_[i] * t_[i];
@@ -252,8 +267,8 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     bool released = false;
     if (!(den > 0.0)) {
       released = true;
-      const auto e = block_reduce<1>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
-        for (std::size_t i = lo; i < hi; ++i) {
+      const auto e = block_reduce<1>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (const std::size_t i : Slice{cells.data(), lo, hi}) {
           if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) set_[i] = kFree;
           if (set_[i] == kFree) acc[0] += g_[i] * g_[i];
         }
@@ -275,9 +290,9 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     // Step on S; release bound cells whose gap says so: p = 0 with g < 0, p = H with g > 0
     // (README Eq. 8); a release restarts the conjugate directions. While the step is exactly
     // −τ t (nothing clipped, nothing released) the displacement follows as u − τ C t (Eq. 7a).
-    const auto moved = block_reduce<2>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+    const auto moved = block_reduce<2>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
       bool clipped = false, freed = false;
-      for (std::size_t i = lo; i < hi; ++i) {
+      for (const std::size_t i : Slice{cells.data(), lo, hi}) {
         if (set_[i] == kFree) {
           const double step = p[i] - tau * t_[i];
           p[i] = clip(step, hardness);
@@ -408,13 +423,13 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   bool ok = rr <= stop;
   while (!ok && it < opt.stiffness_max_iterations) {
     apply_on(t_.data(), elastic_, r_.data());  // C_EE t: only E is read
-    const double tr = block_reduce<1>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
-      for (std::size_t i = lo; i < hi; ++i)
+    const double tr = block_reduce<1>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      for (const std::size_t i : Slice{elastic_.data(), lo, hi})
         if (set_[i] == kFree) acc[0] += t_[i] * r_[i];
     })[0];
     const double alpha = rr / tr;
-    const double rr_new = block_reduce<1>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
-      for (std::size_t i = lo; i < hi; ++i)
+    const double rr_new = block_reduce<1>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      for (const std::size_t i : Slice{elastic_.data(), lo, hi})
         if (set_[i] == kFree) {
           x_[i] += alpha * t_[i];
           g_[i] -= alpha * r_[i];
@@ -425,8 +440,8 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
     ok = rr_new <= stop;
     const double beta = rr_new / rr;
     rr = rr_new;
-    block_reduce<0>(n, part_, [&](std::size_t lo, std::size_t hi, double*) {
-      for (std::size_t i = lo; i < hi; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+    block_reduce<0>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double*) {
+      for (const std::size_t i : Slice{elastic_.data(), lo, hi}) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
     });
   }
   double sum = 0.0;

@@ -97,7 +97,7 @@ class ContactSolver {
   std::vector<double> dp_;
   std::vector<double> part_;  // per-block partial sums of the cell loops
   bool apply_on(const double* v, const std::vector<std::uint32_t>& cells, double* out);
-  std::vector<std::uint32_t> active_, elastic_, sources_;  // cells that may carry pressure, E, v ≠ 0
+  std::vector<std::uint32_t> active_, elastic_, sources_, all_;  // A (Eq. 6a), E, v ≠ 0, every cell
   // Coarse start (Eq. 16): the solver on the grid of twice the cell size, made when first needed.
   bool coarse_start(const std::vector<double>& gap, double approach, std::vector<double>& pressure,
                     const SolverOptions& options, ContactResult& result);
