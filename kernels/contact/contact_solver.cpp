@@ -20,6 +20,13 @@ double clip(double v, double hardness) { return std::min(std::max(v, 0.0), hardn
 constexpr std::size_t kCellBlock = 8192;
 constexpr std::size_t kParallelCells = 4 * kCellBlock;
 
+// γ of the preconditioner I + γ L (README Eq. 7b) for a set of `cells` cells: 0.1 of the radius
+// in cells of a disc of half that area (a ball's contact disc is half its interference disc).
+double precondition_gamma(std::size_t cells) {
+  constexpr double two_pi = 6.28318530717958647692;
+  return 0.1 * std::sqrt(static_cast<double>(cells) / two_pi);
+}
+
 // Entries [lo, hi) of a list of cell indices, for range-for.
 struct Slice {
   const std::uint32_t* list;
@@ -46,6 +53,27 @@ std::array<double, K> block_reduce(std::size_t n, std::vector<double>& part, F&&
     for (std::size_t k = 0; k < K; ++k)
       total[k] = (max_slots >> k) & 1u ? std::max(total[k], part[b * K + k]) : total[k] + part[b * K + k];
   return total;
+}
+
+// z = (I + γ L_S) v on the cells of `list` in S (set == kFree), L_S the 5-point Laplacian with
+// zero outside S (README Eq. 7b); returns Σ_S v z.
+double apply_preconditioner(const std::vector<std::uint32_t>& list, const std::vector<unsigned char>& set,
+                            const std::vector<double>& v, std::vector<double>& z, double gamma, std::size_t nx,
+                            std::vector<double>& part) {
+  const std::size_t n = set.size();
+  return block_reduce<1>(list.size(), part, [&](std::size_t lo, std::size_t hi, double* acc) {
+    for (const std::size_t i : Slice{list.data(), lo, hi})
+      if (set[i] == kFree) {
+        const std::size_t ix = i % nx;
+        double nb = 0.0;
+        if (ix > 0 && set[i - 1] == kFree) nb += v[i - 1];
+        if (ix + 1 < nx && set[i + 1] == kFree) nb += v[i + 1];
+        if (i >= nx && set[i - nx] == kFree) nb += v[i - nx];
+        if (i + nx < n && set[i + nx] == kFree) nb += v[i + nx];
+        z[i] = v[i] + gamma * (4.0 * v[i] - nb);
+        acc[0] += v[i] * z[i];
+      }
+  })[0];
 }
 }  // namespace
 
@@ -173,6 +201,8 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   const std::vector<std::uint32_t>& cells = load ? all_ : active_;
   std::fill(set_.begin(), set_.end(), kOut);
   bool u_full = false;  // u_ = C p on every cell (not only on A, not carried)
+  const bool precondition = !load && opt.precondition;
+  const double gamma = precondition_gamma(active_.size());
   double g_old = 1.0;
   bool conjugate = false;  // δ of Polonsky & Keer: restart after a set change
   std::fill(t_.begin(), t_.end(), 0.0);
@@ -236,10 +266,12 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     double num = 0.0, den = 0.0;
     auto direction_and_step = [&]() {
       // Search direction t = g + δ (G/G_old) t on S (README Eq. 7), r = C t, τ = gᵀt / tᵀC t.
+      if (precondition) gg = apply_preconditioner(cells, set_, g_, x_, gamma, grid.nx, part_);
+      const std::vector<double>& z = precondition ? x_ : g_;
       const double beta = conjugate ? gg / g_old : 0.0;
       g_old = gg;
       block_reduce<0>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double*) {
-        for (const std::size_t i : Slice{cells.data(), lo, hi}) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+        for (const std::size_t i : Slice{cells.data(), lo, hi}) t_[i] = set_[i] == kFree ? z[i] + beta * t_[i] : 0.0;
       });
       product(t_.data(), r_.data());
       if (load) {
@@ -412,12 +444,23 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   gap_ = g_;  // the converged gap (g_ is the CG residual below)
   // x = Δp, g_ = residual, t_ = direction, r_ = C t.
   std::fill(x_.begin(), x_.end(), 0.0);
+  // Preconditioned CG (README Eq. 7b on E; γ for the disc E itself, i.e. for |A| = 2|E|) with the
+  // plain residual's stopping rule. g_ = residual, u_ = preconditioned residual, t_ = direction.
+  const bool precondition = opt.precondition;
+  const double gamma = precondition_gamma(2 * m);
+  const std::size_t nx = op_.grid().nx;
   double rr = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     g_[i] = set_[i] == kFree ? 1.0 : 0.0;
-    t_[i] = g_[i];
     rr += g_[i];
   }
+  double rz = rr;
+  if (precondition) {
+    std::fill(u_.begin(), u_.end(), 0.0);
+    rz = apply_preconditioner(elastic_, set_, g_, u_, gamma, nx, part_);
+  }
+  const std::vector<double>& z = precondition ? u_ : g_;
+  t_ = z;
   const double stop = opt.stiffness_tolerance * opt.stiffness_tolerance * static_cast<double>(m);
   int it = 0;
   bool ok = rr <= stop;
@@ -427,8 +470,8 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
       for (const std::size_t i : Slice{elastic_.data(), lo, hi})
         if (set_[i] == kFree) acc[0] += t_[i] * r_[i];
     })[0];
-    const double alpha = rr / tr;
-    const double rr_new = block_reduce<1>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+    const double alpha = rz / tr;
+    rr = block_reduce<1>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
       for (const std::size_t i : Slice{elastic_.data(), lo, hi})
         if (set_[i] == kFree) {
           x_[i] += alpha * t_[i];
@@ -437,11 +480,12 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
         }
     })[0];
     ++it;
-    ok = rr_new <= stop;
-    const double beta = rr_new / rr;
-    rr = rr_new;
+    ok = rr <= stop;
+    const double rz_new = precondition ? apply_preconditioner(elastic_, set_, g_, u_, gamma, nx, part_) : rr;
+    const double beta = rz_new / rz;
+    rz = rz_new;
     block_reduce<0>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double*) {
-      for (const std::size_t i : Slice{elastic_.data(), lo, hi}) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+      for (const std::size_t i : Slice{elastic_.data(), lo, hi}) t_[i] = set_[i] == kFree ? z[i] + beta * t_[i] : 0.0;
     });
   }
   double sum = 0.0;

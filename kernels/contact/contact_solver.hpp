@@ -36,6 +36,10 @@ struct SolverOptions {
   // nx and ny whose halves are ≥ 32 (else the line-search start of Eq. 7).
   bool coarse_start = true;
   double coarse_tolerance = 1e-3;
+  // Precondition the CG on S with I + γ L_S (README Eq. 7b; L_S the 5-point Laplacian on S with
+  // zero outside it), γ = 0.1 √(|A|/2π) from the interference set A (Eq. 6a): the contact radius
+  // in cells for a ball. Displacement control only; also the frozen-set stiffness CG (on E).
+  bool precondition = true;
   double stiffness_tolerance = 1e-12;
   int stiffness_max_iterations = 10000;
 };
