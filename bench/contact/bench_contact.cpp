@@ -19,7 +19,7 @@
 //                  ratio = seconds per contact solve
 //
 //   hertz_iterations  cold Hertz solves at 256², 512², 1024²: line-search start vs coarse start
-//                  (README Eq. 16), fine and coarse-grid iterations
+//                  (README Eq. 16), plain vs preconditioned CG (Eq. 7b), fine and coarse-grid iterations
 //
 // Times: cg_iteration and convolution are thread CPU seconds on one thread (min of 5 interleaved
 // trials for the ratio), *_wall the same on all threads; hertz_*, seed_table are wall seconds on
@@ -157,7 +157,7 @@ void bench_iteration(std::size_t n) {
 
 // Cold Hertz solve at n² (ball centre on a cell corner, 0.3 n/2 cells per contact radius), with the
 // coarse start of README Eq. 16 or the line-search start: wall and CPU seconds, iterations.
-ContactResult hertz_cold(std::size_t n, bool coarse, double& wall, double& cpu, double& t_plan) {
+ContactResult hertz_cold(std::size_t n, bool coarse, double& wall, double& cpu, double& t_plan, bool precondition = true) {
   const double e_star = 115.4e9, radius = 0.02, w = 0.241e-6;
   const double a = std::sqrt(radius * w), dx = a / (0.3 * double(n) / 2);
   const Grid grid{n, n, dx, dx};
@@ -169,6 +169,7 @@ ContactResult hertz_cold(std::size_t n, bool coarse, double& wall, double& cpu, 
   opt.tolerance = 1e-10;
   opt.compute_stiffness = false;
   opt.coarse_start = coarse;
+  opt.precondition = precondition;
   std::vector<double> p;
   if (coarse) {  // the coarse solvers' plans are made on first use: not part of the solve
     std::vector<double> q;
@@ -184,18 +185,20 @@ ContactResult hertz_cold(std::size_t n, bool coarse, double& wall, double& cpu, 
   return r;
 }
 
-// Iterations of the cold solve, line-search start vs coarse start (README Eq. 16), at each n.
+// Iterations of the cold solve at each n: line-search start vs coarse start (README Eq. 16), plain
+// vs preconditioned CG (Eq. 7b).
 void bench_hertz_iterations(bool quick) {
   for (std::size_t n : {256u, 512u, 1024u}) {
     if (quick && n > 512) continue;
-    for (bool coarse : {false, true}) {
-      double wall = 0, cpu = 0, plan = 0;
-      const ContactResult r = hertz_cold(n, coarse, wall, cpu, plan);
-      std::printf("hertz_iterations,%zu,%.4f,%.3f,%d,%s start: %d fine + %d coarse-grid iterations (ratio = CPU s; wall in seconds; threads=%d)\n",
-                  n, wall, cpu, r.iterations, coarse ? "coarse" : "line-search", r.iterations, r.coarse_iterations,
-                  omp_get_max_threads());
-      std::fflush(stdout);
-    }
+    for (bool precondition : {false, true})
+      for (bool coarse : {false, true}) {
+        double wall = 0, cpu = 0, plan = 0;
+        const ContactResult r = hertz_cold(n, coarse, wall, cpu, plan, precondition);
+        std::printf("hertz_iterations,%zu,%.4f,%.3f,%d,%s start %s CG: %d fine + %d coarse-grid iterations (ratio = CPU s; wall in seconds; threads=%d)\n",
+                    n, wall, cpu, r.iterations, coarse ? "coarse" : "line-search", precondition ? "preconditioned" : "plain",
+                    r.iterations, r.coarse_iterations, omp_get_max_threads());
+        std::fflush(stdout);
+      }
   }
 }
 

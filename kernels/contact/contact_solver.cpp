@@ -18,7 +18,7 @@ double clip(double v, double hardness) { return std::min(std::max(v, 0.0), hardn
 // The cell loops run over fixed blocks of cells; a block's partial sums are added in block order
 // afterwards, so every sum has the same bits for any thread count (one block: the plain loop).
 constexpr std::size_t kCellBlock = 8192;
-constexpr std::size_t kParallelCells = 4 * kCellBlock;
+constexpr std::size_t kParallelCells = 2 * kCellBlock;
 
 // γ of the preconditioner I + γ L (README Eq. 7b) for a set of `cells` cells: 0.1 of the radius
 // in cells of a disc of half that area (a ball's contact disc is half its interference disc).

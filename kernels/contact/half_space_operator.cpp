@@ -14,8 +14,9 @@ namespace rollspec::contact {
 namespace {
 constexpr std::size_t kRowBlock = 8;     // rows per block of the row passes
 constexpr std::size_t kColumnBlock = 8;  // columns per block of the column pass (128 bytes)
-// Below this many FFT points a product takes tens of microseconds: no threads.
-constexpr std::size_t kParallelPoints = std::size_t(1) << 15;
+// Below this many FFT points (padded 512²) a product takes well under a millisecond: no threads
+// (on a busy machine the barriers of a short parallel region cost more than they save).
+constexpr std::size_t kParallelPoints = std::size_t(1) << 18;
 
 std::size_t round_up(std::size_t n, std::size_t m) { return (n + m - 1) / m * m; }
 std::size_t blocks(std::size_t count, std::size_t rest) { return count + (rest > 0 ? 1 : 0); }
@@ -207,7 +208,7 @@ void HalfSpaceOperator::apply_direct(const double* p, const std::vector<std::uin
   const double* table = table_.data();
   const Run* runs = runs_.data();
   const std::size_t nruns = runs_.size();
-#pragma omp parallel for schedule(static) if (static_cast<double>(targets.size()) * static_cast<double>(sources.size()) > 2e5)
+#pragma omp parallel for schedule(static) if (static_cast<double>(targets.size()) * static_cast<double>(sources.size()) > 2e6)
   for (long k = 0; k < count; ++k) {
     const std::uint32_t t = targets[static_cast<std::size_t>(k)];
     const double* row = table + (centre - static_cast<std::int64_t>((t / nx) * width + t % nx));

@@ -36,15 +36,16 @@ void with_threads(int threads, F&& f) {
 }  // namespace
 
 TEST_CASE("half-space product: same bits on 1 and 2 threads") {
-  // 200 × 150: whole and partial blocks of rows (8) and of columns (8 of the 201 complex ones).
-  const Grid grid{200, 150, 1e-6, 1.3e-6};
+  // 300 × 242 (padded 600 × 484: threads from 2^18 points on): whole and partial blocks of rows (8)
+  // and of columns (8 of the 301 complex ones).
+  const Grid grid{300, 242, 1e-6, 1.3e-6};
   HalfSpaceOperator op(grid, 115.4e9);
   std::vector<double> p(grid.size()), u1(grid.size()), u2(grid.size());
   for (std::size_t k = 0; k < p.size(); ++k) p[k] = 1e9 * (1.1 + std::sin(0.37 * static_cast<double>(k)));
   with_threads(1, [&] { op.apply(p.data(), u1.data()); });
   with_threads(2, [&] { op.apply(p.data(), u2.data()); });
   CHECK(same_bits(u1, u2));
-  // Direct sums over chosen cells (Eq. 3b): ~2 000 sources, ~10 000 targets, split among threads.
+  // Direct sums over chosen cells (Eq. 3b): ~4 800 sources, ~24 000 targets, split among threads.
   std::vector<std::uint32_t> sources, targets;
   for (std::size_t k = 0; k < p.size(); ++k) {
     if (k % 15 == 0) sources.push_back(static_cast<std::uint32_t>(k));
@@ -57,9 +58,10 @@ TEST_CASE("half-space product: same bits on 1 and 2 threads") {
 
 TEST_CASE("contact solve and sweep: same bits on 1 and 2 threads (rough, elastic-plastic, coarse start)") {
   const Hertz h;
-  // Even 192², 32 cells per contact radius: the coarse start (README Eq. 16) runs on 96² and 48².
-  const double dx = h.a() / 32.0;
-  const Grid grid{192, 192, dx, dx};
+  // Even 256², 60 cells per contact radius: the products (padded 512²) and, at the last steps, the
+  // cell loops (A > 16 384 cells) run on the threads; the coarse start (README Eq. 16) on 128², 64².
+  const double dx = h.a() / 60.0;
+  const Grid grid{256, 256, dx, dx};
   const auto gap = ball_gap(grid, h.radius, rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a()));
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();
