@@ -139,8 +139,9 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     return res;
   }
 
-  // Start: clip the warm start into [0, H]; cold start from the best multiple of the rigid
-  // interference (one line search), or uniform pressure in load control.
+  // Start: clip the warm start into [0, H]; cold start from the coarse grid's solution (Eq. 16)
+  // or the best multiple of the rigid interference (one line search), or uniform pressure in load
+  // control.
   // Displacement control: only the cells A = {s_i < w} can carry pressure (u = C p ≥ 0, so
   // g_i ≥ s_i − w > 0 elsewhere): the iteration works on A (README Eq. 6a).
   active_.clear();
