@@ -4,6 +4,7 @@
 //                  DC-FFT convolutions of the same padded size, measured in the same run (goal ≤ 1.3)
 //   convolution    time of one half-space product u = C p (padded 2n × 2n r2c/c2r)
 //   hertz_solve    smooth 40 mm ball at 512², cold start, tolerance 1e-10; ratio = force error vs Hertz
+//                  (wall seconds on all threads, plans made beforehand)
 //   hertz_stiffness  the frozen-set stiffness solve on that field; ratio = k error vs 2E*a
 //   seed_table     40 mm steel ball, E* = 115.4 GPa, H = 5 GPa, on Gaussian rough surfaces
 //                  (σ = 0.3 µm, correlation length 10 µm) at 256², 20 approach steps × 10
@@ -17,8 +18,14 @@
 //   blocked_force_load   the same path at the approach whose mean force is 2.58 N (BF-3, BF-4');
 //                  ratio = seconds per contact solve
 //
-// Times are thread CPU seconds (min of 5 interleaved trials for the ratio) except seed_table (wall).
-// Usage: bench_contact [--quick]   (--quick: 256² and 512² only, 3 realisations)
+//   hertz_iterations  cold Hertz solves at 256², 512², 1024²: line-search start vs coarse start
+//                  (README Eq. 16), plain vs preconditioned CG (Eq. 7b), fine and coarse-grid iterations
+//
+// Times: cg_iteration and convolution are thread CPU seconds on one thread (min of 5 interleaved
+// trials for the ratio), *_wall the same on all threads; hertz_*, seed_table are wall seconds on
+// OMP_NUM_THREADS threads.
+// Usage: bench_contact [--quick | --hertz]   (--quick: 256² and 512² only, 3 realisations;
+//                                             --hertz: hertz_solve and hertz_stiffness only)
 #include <omp.h>
 
 #include <algorithm>
@@ -96,6 +103,9 @@ void bench_iteration(std::size_t n) {
   // Smooth ball, contact radius ≈ 0.3 of the half-width: realistic set sizes.
   const double a = 69e-6, dx = a / (0.3 * double(n) / 2);
   const Grid grid{n, n, dx, dx};
+  // Thread CPU time counts only this thread: the ratio is measured on one thread.
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
   ContactSolver solver(grid, e_star, Boundary::Open, PlannerEffort::Measure);
   const auto gap = ball_gap(grid, radius, {});
   const double w = a * a / radius;
@@ -111,6 +121,7 @@ void bench_iteration(std::size_t n) {
   opt.tolerance = 0.0;
   opt.max_iterations = n >= 1024 ? 20 : 60;
   opt.compute_stiffness = false;
+  opt.coarse_start = false;
   const int reps = n >= 1024 ? 10 : 40;
   double t_conv = 1e300, t_iter = 1e300;
   ContactResult r;
@@ -124,36 +135,98 @@ void bench_iteration(std::size_t n) {
     t_iter = std::min(t_iter, (thread_cpu_seconds() - t0) / r.iterations);
   }
   std::printf("convolution,%zu,%.6e,,,padded %zux%zu r2c/c2r\n", n, t_conv, 2 * n, 2 * n);
-  std::printf("cg_iteration,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions)\n", n, t_iter, t_iter / (2 * t_conv),
+  std::printf("cg_iteration,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions) on 1 thread\n", n, t_iter, t_iter / (2 * t_conv),
               r.iterations);
+  // The same on all threads, wall time.
+  omp_set_num_threads(threads);
+  double w_conv = 1e300, w_iter = 1e300;
+  for (int trial = 0; trial < 5; ++trial) {
+    auto t0 = Clock::now();
+    for (int k = 0; k < reps; ++k) op.apply(p.data(), u.data());
+    w_conv = std::min(w_conv, seconds_since(t0) / reps);
+    std::vector<double> pc;
+    t0 = Clock::now();
+    r = solver.solve(gap, w, pc, opt);
+    w_iter = std::min(w_iter, seconds_since(t0) / r.iterations);
+  }
+  std::printf("convolution_wall,%zu,%.6e,%.3f,,wall seconds on %d threads (ratio = vs 1 thread CPU)\n", n, w_conv, w_conv / t_conv, threads);
+  std::printf("cg_iteration_wall,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions), wall on %d threads\n", n, w_iter,
+              w_iter / (2 * w_conv), r.iterations, threads);
   std::fflush(stdout);
+}
+
+// Cold Hertz solve at n² (ball centre on a cell corner, 0.3 n/2 cells per contact radius), with the
+// coarse start of README Eq. 16 or the line-search start: wall and CPU seconds, iterations.
+ContactResult hertz_cold(std::size_t n, bool coarse, double& wall, double& cpu, double& t_plan, bool precondition = true) {
+  const double e_star = 115.4e9, radius = 0.02, w = 0.241e-6;
+  const double a = std::sqrt(radius * w), dx = a / (0.3 * double(n) / 2);
+  const Grid grid{n, n, dx, dx};
+  double t0 = thread_cpu_seconds();
+  ContactSolver solver(grid, e_star, Boundary::Open, PlannerEffort::Measure);
+  t_plan = thread_cpu_seconds() - t0;
+  const auto gap = ball_gap(grid, radius, {}, BallShape::Paraboloid);
+  SolverOptions opt;
+  opt.tolerance = 1e-10;
+  opt.compute_stiffness = false;
+  opt.coarse_start = coarse;
+  opt.precondition = precondition;
+  std::vector<double> p;
+  if (coarse) {  // the coarse solvers' plans are made on first use: not part of the solve
+    std::vector<double> q;
+    SolverOptions o = opt;
+    o.max_iterations = 0;
+    solver.solve(gap, w, q, o);
+  }
+  const auto w0 = Clock::now();
+  const std::clock_t c0 = std::clock();
+  const ContactResult r = solver.solve(gap, w, p, opt);
+  wall = seconds_since(w0);
+  cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  return r;
+}
+
+// Iterations of the cold solve at each n: line-search start vs coarse start (README Eq. 16), plain
+// vs preconditioned CG (Eq. 7b).
+void bench_hertz_iterations(bool quick) {
+  for (std::size_t n : {256u, 512u, 1024u}) {
+    if (quick && n > 512) continue;
+    for (bool precondition : {false, true})
+      for (bool coarse : {false, true}) {
+        double wall = 0, cpu = 0, plan = 0;
+        const ContactResult r = hertz_cold(n, coarse, wall, cpu, plan, precondition);
+        std::printf("hertz_iterations,%zu,%.4f,%.3f,%d,%s start %s CG: %d fine + %d coarse-grid iterations (ratio = CPU s; wall in seconds; threads=%d)\n",
+                    n, wall, cpu, r.iterations, coarse ? "coarse" : "line-search", precondition ? "preconditioned" : "plain",
+                    r.iterations, r.coarse_iterations, omp_get_max_threads());
+        std::fflush(stdout);
+      }
+  }
 }
 
 void bench_hertz_solve() {
   const std::size_t n = 512;
   const double e_star = 115.4e9, radius = 0.02, w = 0.241e-6;
-  const double a = std::sqrt(radius * w), dx = a / (0.3 * double(n) / 2);
-  const Grid grid{n, n, dx, dx};  // ball centre on a cell corner
-  double t0 = thread_cpu_seconds();
+  const double a = std::sqrt(radius * w);
+  double wall = 0, cpu = 0, t_plan = 0;
+  hertz_cold(n, true, wall, cpu, t_plan);  // warm-up: FFTW wisdom, page faults
+  const ContactResult r = hertz_cold(n, true, wall, cpu, t_plan);
+  const double force = 4.0 / 3.0 * e_star * std::sqrt(radius) * std::pow(w, 1.5);
+  std::printf("hertz_solve,%zu,%.4f,%.3e,%d,wall seconds on %d threads; cold (coarse) start to 1e-10 converged=%d +%d coarse-grid iterations; %.2f s CPU (+%.2f s FFTW_MEASURE planning; %.1f cells/a)\n",
+              n, wall, r.force / force - 1.0, r.iterations, omp_get_max_threads(), int(r.converged), r.coarse_iterations,
+              cpu, t_plan, 0.3 * double(n) / 2);
+  // Frozen-set stiffness on the converged field (warm start: 0 contact iterations).
+  const Grid grid{n, n, a / (0.3 * double(n) / 2), a / (0.3 * double(n) / 2)};
   ContactSolver solver(grid, e_star, Boundary::Open, PlannerEffort::Measure);
-  const double t_plan = thread_cpu_seconds() - t0;
   const auto gap = ball_gap(grid, radius, {}, BallShape::Paraboloid);
   SolverOptions opt;
   opt.tolerance = 1e-10;
-  opt.compute_stiffness = false;
   std::vector<double> p;
-  t0 = thread_cpu_seconds();
-  const ContactResult r = solver.solve(gap, w, p, opt);
-  const double t = thread_cpu_seconds() - t0;
-  const double force = 4.0 / 3.0 * e_star * std::sqrt(radius) * std::pow(w, 1.5);
-  std::printf("hertz_solve,%zu,%.4f,%.3e,%d,cold start to 1e-10 converged=%d (+%.2f s FFTW_MEASURE planning; %.1f cells/a)\n",
-              n, t, r.force / force - 1.0, r.iterations, int(r.converged), t_plan, 0.3 * double(n) / 2);
-  // Frozen-set stiffness on the converged field (warm start: 0 contact iterations).
+  opt.compute_stiffness = false;
+  solver.solve(gap, w, p, opt);
   opt.compute_stiffness = true;
-  t0 = thread_cpu_seconds();
+  const auto t0 = Clock::now();
   const ContactResult rk = solver.solve(gap, w, p, opt);
-  const double tk = thread_cpu_seconds() - t0;
-  std::printf("hertz_stiffness,%zu,%.4f,%.3e,%d,frozen-set CG to 1e-12 + sub-cell edge (ratio = k / 2E*a - 1; frozen set alone %.3e)\n",
+  const double tk = seconds_since(t0);
+  std::printf("hertz_stiffness,%zu,%.4f,%.3e,%d,wall seconds; frozen-set CG to 1e-12 + sub-cell edge (ratio = k / 2E*a - 1; frozen set alone %.3e)\n",
               n, tk, rk.stiffness / (2 * e_star * a) - 1.0, rk.stiffness_iterations,
               rk.frozen_stiffness / (2 * e_star * a) - 1.0);
   std::fflush(stdout);
@@ -243,12 +316,18 @@ void bench_blocked_force() {
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const bool hertz_only = argc > 1 && std::strcmp(argv[1], "--hertz") == 0;
   std::printf("case,n,seconds,ratio,iterations,note\n");
+  if (hertz_only) {
+    bench_hertz_solve();
+    return 0;
+  }
   for (std::size_t n : {256u, 512u, 1024u}) {
     if (quick && n > 512) continue;
     bench_iteration(n);
   }
   bench_hertz_solve();
+  bench_hertz_iterations(quick);
   bench_blocked_force();
   bench_seed_table(quick ? 3 : 10);
   return 0;

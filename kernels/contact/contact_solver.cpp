@@ -1,6 +1,7 @@
 #include "kernels/contact/contact_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -14,11 +15,65 @@ constexpr unsigned char kFree = 1;  // 0 < p < H: CG set (README Eq. 7)
 
 double clip(double v, double hardness) { return std::min(std::max(v, 0.0), hardness); }
 
-// Natural KKT residual of D-7 in length units (README Eq. 9), maximum over cells.
-double kkt_residual(const std::vector<double>& p, const std::vector<double>& g, double hardness, double c) {
-  double e = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) e = std::max(e, std::fabs(p[i] - clip(p[i] - g[i] / c, hardness)));
-  return c * e;
+// The cell loops run over fixed blocks of cells; a block's partial sums are added in block order
+// afterwards, so every sum has the same bits for any thread count (one block: the plain loop).
+constexpr std::size_t kCellBlock = 8192;
+constexpr std::size_t kParallelCells = 2 * kCellBlock;
+
+// γ of the preconditioner I + γ L (README Eq. 7b) for a set of `cells` cells: 0.1 of the radius
+// in cells of a disc of half that area (a ball's contact disc is half its interference disc).
+double precondition_gamma(std::size_t cells) {
+  constexpr double two_pi = 6.28318530717958647692;
+  return 0.1 * std::sqrt(static_cast<double>(cells) / two_pi);
+}
+
+// Entries [lo, hi) of a list of cell indices, for range-for.
+struct Slice {
+  const std::uint32_t* list;
+  std::size_t lo, hi;
+  const std::uint32_t* begin() const { return list + lo; }
+  const std::uint32_t* end() const { return list + hi; }
+};
+
+// f(lo, hi, partial) for each block [lo, hi), in parallel; partial points at the block's K slots
+// (zero on entry). Slot k of the result is the sum of the blocks' slots, or their maximum if bit k
+// of max_slots is set.
+template <std::size_t K, class F>
+std::array<double, K> block_reduce(std::size_t n, std::vector<double>& part, F&& f, unsigned max_slots = 0) {
+  const std::size_t nb = (n + kCellBlock - 1) / kCellBlock;
+  part.assign(nb * K, 0.0);
+  const long blocks = static_cast<long>(nb);
+#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+  for (long b = 0; b < blocks; ++b) {
+    const std::size_t lo = static_cast<std::size_t>(b) * kCellBlock;
+    f(lo, std::min(n, lo + kCellBlock), part.data() + static_cast<std::size_t>(b) * K);
+  }
+  std::array<double, K> total{};
+  for (std::size_t b = 0; b < nb; ++b)
+    for (std::size_t k = 0; k < K; ++k)
+      total[k] = (max_slots >> k) & 1u ? std::max(total[k], part[b * K + k]) : total[k] + part[b * K + k];
+  return total;
+}
+
+// z = (I + γ L_S) v on the cells of `list` in S (set == kFree), L_S the 5-point Laplacian with
+// zero outside S (README Eq. 7b); returns Σ_S v z.
+double apply_preconditioner(const std::vector<std::uint32_t>& list, const std::vector<unsigned char>& set,
+                            const std::vector<double>& v, std::vector<double>& z, double gamma, std::size_t nx,
+                            std::vector<double>& part) {
+  const std::size_t n = set.size();
+  return block_reduce<1>(list.size(), part, [&](std::size_t lo, std::size_t hi, double* acc) {
+    for (const std::size_t i : Slice{list.data(), lo, hi})
+      if (set[i] == kFree) {
+        const std::size_t ix = i % nx;
+        double nb = 0.0;
+        if (ix > 0 && set[i - 1] == kFree) nb += v[i - 1];
+        if (ix + 1 < nx && set[i + 1] == kFree) nb += v[i + 1];
+        if (i >= nx && set[i - nx] == kFree) nb += v[i - nx];
+        if (i + nx < n && set[i + nx] == kFree) nb += v[i + nx];
+        z[i] = v[i] + gamma * (4.0 * v[i] - nb);
+        acc[0] += v[i] * z[i];
+      }
+  })[0];
 }
 }  // namespace
 
@@ -84,26 +139,48 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
     return res;
   }
 
-  // Start: clip the warm start into [0, H]; cold start from the best multiple of the rigid
-  // interference (one line search), or uniform pressure in load control.
+  // Start: clip the warm start into [0, H]; cold start from the coarse grid's solution (Eq. 16)
+  // or the best multiple of the rigid interference (one line search), or uniform pressure in load
+  // control.
+  // Displacement control: only the cells A = {s_i < w} can carry pressure (u = C p ≥ 0, so
+  // g_i ≥ s_i − w > 0 elsewhere): the iteration works on A (README Eq. 6a).
+  active_.clear();
+  if (!load)
+    for (std::size_t i = 0; i < n; ++i)
+      if (s[i] < w) active_.push_back(static_cast<std::uint32_t>(i));
   bool all_zero = true;
-  for (double& v : p) {
-    v = std::isnan(v) ? 0.0 : clip(v, hardness);
+  for (std::size_t i = 0; i < n; ++i) {
+    double& v = p[i];
+    v = std::isnan(v) || (!load && !(s[i] < w)) ? 0.0 : clip(v, hardness);
     all_zero = all_zero && v == 0.0;
   }
+  // C v on A: by direct sums while they are cheaper (Eq. 3b), else everywhere by DC-FFT. True if
+  // the product was the full one.
+  auto product = [&](const double* v, double* out) { return load ? (op_.apply(v, out), true) : apply_on(v, active_, out); };
+  // u_ = C p is kept up to date by the step itself while no cell is clipped or released
+  // (README Eq. 7a): then an iteration needs one half-space product, not two.
+  bool u_valid = false;
+  if (all_zero && !load && opt.coarse_start && coarse_start(s, w, p, opt, res)) all_zero = false;
   if (all_zero) {
     if (load) {
       std::fill(p.begin(), p.end(), target);
     } else {
       for (std::size_t i = 0; i < n; ++i) t_[i] = std::max(0.0, w - s[i]);
-      op_.apply(t_.data(), r_.data());
-      double num = 0.0, den = 0.0;
+      product(t_.data(), r_.data());
+      const auto nd = block_reduce<2>(n, part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (std::size_t i = lo; i < hi; ++i) {
+          acc[0] += t_[i] * (w - s[i]);
+          acc[1] += t_[i] * r_[i];
+        }
+      });
+      const double alpha = nd[0] / nd[1];
+      bool clipped = false;
       for (std::size_t i = 0; i < n; ++i) {
-        num += t_[i] * (w - s[i]);
-        den += t_[i] * r_[i];
+        p[i] = clip(alpha * t_[i], hardness);
+        u_[i] = alpha * r_[i];
+        clipped = clipped || p[i] != alpha * t_[i];
       }
-      const double alpha = num / den;
-      for (std::size_t i = 0; i < n; ++i) p[i] = clip(alpha * t_[i], hardness);
+      u_valid = !clipped;
     }
   }
   auto enforce_load = [&]() {
@@ -116,13 +193,24 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   };
   if (load) enforce_load();
 
+  // The iteration visits the cells of A only (all cells in load control): elsewhere p = 0, t = 0,
+  // and g ≥ s − w > 0 needs no u (Eq. 6a); g is formed everywhere once converged.
+  if (load && all_.size() != n) {
+    all_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) all_[i] = static_cast<std::uint32_t>(i);
+  }
+  const std::vector<std::uint32_t>& cells = load ? all_ : active_;
+  std::fill(set_.begin(), set_.end(), kOut);
+  bool u_full = false;  // u_ = C p on every cell (not only on A, not carried)
+  const bool precondition = !load && opt.precondition;
+  const double gamma = precondition_gamma(active_.size());
   double g_old = 1.0;
   bool conjugate = false;  // δ of Polonsky & Keer: restart after a set change
   std::fill(t_.begin(), t_.end(), 0.0);
-  int it = 0;
-  for (;; ++it) {
-    // Gap g = s − w + C p (D-7, README Eq. 6).
-    op_.apply(p.data(), u_.data());
+  double gg = 0.0;          // Σ_S g_i² on the CG set of this iteration
+  std::size_t free_count = 0;
+  // Gap g = s − w + u (D-7, README Eq. 6), the CG set S = {0 < p < H}, G = Σ_S g², and ε (Eq. 9).
+  auto evaluate = [&]() {
     if (load) {
       // w = mean of s + u over the loaded cells: makes the mean gap there zero.
       double sum = 0.0;
@@ -134,32 +222,59 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
         }
       w = sum / static_cast<double>(cnt);
     }
-    for (std::size_t i = 0; i < n; ++i) g_[i] = s[i] - w + u_[i];
-    res.error = kkt_residual(p, g_, hardness, c) / g_ref;
+    const auto e = block_reduce<3>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      double emax = 0.0, sum = 0.0, count = 0.0;
+      for (const std::size_t i : Slice{cells.data(), lo, hi}) {
+        const double gi = s[i] - w + u_[i];
+        g_[i] = gi;
+        emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
+        const bool is_free = p[i] > 0.0 && p[i] < hardness;
+        set_[i] = is_free ? kFree : kOut;
+        if (is_free) {
+          sum += gi * gi;
+          count += 1.0;
+        }
+      }
+      acc[0] = emax, acc[1] = sum, acc[2] = count;
+    }, 1u);
+    res.error = c * e[0] / g_ref;
+    gg = e[1];
+    free_count = static_cast<std::size_t>(e[2]);
+  };
+  int it = 0;
+  for (;; ++it) {
+    bool fresh = false;  // u_ from a product this iteration (not carried by the steps)
+    if (!u_valid) {
+      u_full = product(p.data(), u_.data());
+      fresh = true;
+    }
+    evaluate();
+    if ((res.error < opt.tolerance || it >= opt.max_iterations) && !fresh) {
+      // Decide on, and report, the exact gap: one product replaces the carried u_.
+      u_full = product(p.data(), u_.data());
+      fresh = true;
+      evaluate();
+    }
     if (res.error < opt.tolerance) {
       res.converged = true;
       break;
     }
     if (it >= opt.max_iterations) break;
 
-    // CG set S = {0 < p < H}. If S is empty, or the gradient on S vanishes (e.g. an exact warm
-    // start whose only defect is cells that must leave a bound), restart with the violating bound
-    // cells added to S: t = g there, no conjugation.
-    std::size_t free_count = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      set_[i] = (p[i] > 0.0 && p[i] < hardness) ? kFree : kOut;
-      free_count += set_[i];
-    }
+    // If S is empty, or the gradient on S vanishes (e.g. an exact warm start whose only defect is
+    // cells that must leave a bound), restart with the violating bound cells added to S: t = g
+    // there, no conjugation.
     double num = 0.0, den = 0.0;
     auto direction_and_step = [&]() {
       // Search direction t = g + δ (G/G_old) t on S (README Eq. 7), r = C t, τ = gᵀt / tᵀC t.
-      double gg = 0.0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (set_[i] == kFree) gg += g_[i] * g_[i];
+      if (precondition) gg = apply_preconditioner(cells, set_, g_, x_, gamma, grid.nx, part_);
+      const std::vector<double>& z = precondition ? x_ : g_;
       const double beta = conjugate ? gg / g_old : 0.0;
       g_old = gg;
-      for (std::size_t i = 0; i < n; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
-      op_.apply(t_.data(), r_.data());
+      block_reduce<0>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double*) {
+        for (const std::size_t i : Slice{cells.data(), lo, hi}) t_[i] = set_[i] == kFree ? z[i] + beta * t_[i] : 0.0;
+      });
+      product(t_.data(), r_.data());
       if (load) {
         double sum = 0.0;
         std::size_t cnt = 0;
@@ -171,43 +286,72 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
         const double mean = cnt > 0 ? sum / static_cast<double>(cnt) : 0.0;
         for (std::size_t i = 0; i < n; ++i) r_[i] -= mean;
       }
-      num = 0.0;
-      den = 0.0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (set_[i] == kFree) {
-          num += g_[i] * t_[i];
-          den += r_[i] * t_[i];
-        }
+      const auto nd = block_reduce<2>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (const std::size_t i : Slice{cells.data(), lo, hi})
+          if (set_[i] == kFree) {
+            acc[0] += g_[i] * t_[i];
+            acc[1] += r_[i] * t_[i];
+          }
+      });
+      num = nd[0];
+      den = nd[1];
     };
     if (free_count > 0) direction_and_step();
     bool released = false;
     if (!(den > 0.0)) {
       released = true;
-      for (std::size_t i = 0; i < n; ++i)
-        if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) set_[i] = kFree;
+      const auto e = block_reduce<1>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+        for (const std::size_t i : Slice{cells.data(), lo, hi}) {
+          if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) set_[i] = kFree;
+          if (set_[i] == kFree) acc[0] += g_[i] * g_[i];
+        }
+      });
+      gg = e[0];
       conjugate = false;
       direction_and_step();
     }
     if (!(den > 0.0)) {
       ++it;  // nothing left to move: stop; reported unconverged since ε ≥ tolerance
+      if (!fresh) {
+        u_full = product(p.data(), u_.data());
+        fresh = true;
+        evaluate();
+      }
       break;
     }
     const double tau = num / den;
     // Step on S; release bound cells whose gap says so: p = 0 with g < 0, p = H with g > 0
-    // (README Eq. 8); a release restarts the conjugate directions.
-    for (std::size_t i = 0; i < n; ++i) {
-      if (set_[i] == kFree) {
-        p[i] = clip(p[i] - tau * t_[i], hardness);
-      } else if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) {
-        p[i] = clip(p[i] - tau * g_[i], hardness);
-        released = true;
+    // (README Eq. 8); a release restarts the conjugate directions. While the step is exactly
+    // −τ t (nothing clipped, nothing released) the displacement follows as u − τ C t (Eq. 7a).
+    const auto moved = block_reduce<2>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      bool clipped = false, freed = false;
+      for (const std::size_t i : Slice{cells.data(), lo, hi}) {
+        if (set_[i] == kFree) {
+          const double step = p[i] - tau * t_[i];
+          p[i] = clip(step, hardness);
+          clipped = clipped || p[i] != step;
+        } else if ((p[i] == 0.0 && g_[i] < 0.0) || (p[i] == hardness && g_[i] > 0.0)) {
+          p[i] = clip(p[i] - tau * g_[i], hardness);
+          freed = true;
+        }
+        u_[i] -= tau * r_[i];
       }
-    }
+      acc[0] = clipped ? 1.0 : 0.0;
+      acc[1] = freed ? 1.0 : 0.0;
+    });
+    released = released || moved[1] > 0.0;
+    u_valid = !load && !released && moved[0] == 0.0;
+    u_full = false;
     if (load) enforce_load();
     conjugate = !released;
   }
   res.iterations = it;
   res.approach = w;
+  if (!load) {
+    // The outputs (plastic volume, the sub-cell edge's open cells) want the exact gap everywhere.
+    if (!u_full) op_.apply(p.data(), u_.data());
+    for (std::size_t i = 0; i < n; ++i) g_[i] = s[i] - w + u_[i];
+  }
 
   // Outputs (seed 001 Eq. 12; README Eq. 10).
   double force = 0.0, vp = 0.0, pmax = 0.0;
@@ -228,6 +372,56 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   return res;
 }
 
+// C v on the cells `cells` (v = 0 elsewhere): direct sums over v's non-zero cells for those cells
+// (README Eq. 3b) when they cost less than the DC-FFT product, which is used otherwise (and then
+// gives u everywhere; returns true). The choice depends on the data only, never on threads.
+bool ContactSolver::apply_on(const double* v, const std::vector<std::uint32_t>& cells, double* out) {
+  if (op_.boundary() == Boundary::Open) {
+    sources_.clear();
+    for (std::uint32_t i : cells)
+      if (v[i] != 0.0) sources_.push_back(i);
+    if (static_cast<double>(sources_.size()) * static_cast<double>(cells.size()) < op_.fft_cost()) {
+      op_.apply_direct(v, sources_, cells, out);
+      return false;
+    }
+  }
+  op_.apply(v, out);
+  return true;
+}
+
+// README Eq. 16: restrict the gap to the grid of 2dx × 2dy (2 × 2 means: the coarse cell centre is
+// the mean of its four), solve there (itself coarse-started) to the coarse tolerance, and give each
+// coarse pressure to its four fine cells. False (p untouched) when the grid is odd or too small.
+bool ContactSolver::coarse_start(const std::vector<double>& s, double w, std::vector<double>& p,
+                                 const SolverOptions& opt, ContactResult& res) {
+  constexpr std::size_t kMinCoarse = 32;
+  const Grid& g = op_.grid();
+  if (g.nx % 2 != 0 || g.ny % 2 != 0 || g.nx / 2 < kMinCoarse || g.ny / 2 < kMinCoarse) return false;
+  const std::size_t cnx = g.nx / 2, cny = g.ny / 2;
+  if (!coarse_) coarse_ = std::make_unique<ContactSolver>(Grid{cnx, cny, 2.0 * g.dx, 2.0 * g.dy}, op_.e_star());
+  coarse_gap_.resize(cnx * cny);
+  for (std::size_t y = 0; y < cny; ++y)
+    for (std::size_t x = 0; x < cnx; ++x) {
+      const std::size_t i = 2 * y * g.nx + 2 * x;
+      coarse_gap_[y * cnx + x] = 0.25 * ((s[i] + s[i + 1]) + (s[i + g.nx] + s[i + g.nx + 1]));
+    }
+  SolverOptions o = opt;
+  o.tolerance = std::max(opt.tolerance, opt.coarse_tolerance);
+  o.compute_stiffness = false;
+  coarse_pressure_.assign(cnx * cny, 0.0);
+  const ContactResult r = coarse_->solve(coarse_gap_, w, coarse_pressure_, o);
+  res.coarse_iterations = r.iterations + r.coarse_iterations;
+  bool any = false;
+  for (std::size_t y = 0; y < g.ny; ++y)
+    for (std::size_t x = 0; x < g.nx; ++x) {
+      const std::size_t i = y * g.nx + x;
+      const double v = s[i] < w ? coarse_pressure_[(y / 2) * cnx + x / 2] : 0.0;  // only A carries pressure (Eq. 6a)
+      p[i] = v;
+      any = any || v > 0.0;
+    }
+  return any;
+}
+
 // k = dP/dw with the contact set frozen (README Eq. 11): on the elastic contact cells E
 // (0 < p < H) solve C_EE Δp = 1 by CG; plastic cells stay at H, open cells at 0; k = ΔA Σ Δp.
 // Then the sub-cell edge correction δk (README Eq. 13–15): stiffness = k_frozen + δk.
@@ -235,9 +429,11 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   const std::size_t n = p.size();
   const double hardness = opt.hardness;
   std::size_t m = 0;
+  elastic_.clear();
   for (std::size_t i = 0; i < n; ++i) {
     set_[i] = (p[i] > 0.0 && p[i] < hardness) ? kFree : kOut;
     m += set_[i];
+    if (set_[i] == kFree) elastic_.push_back(static_cast<std::uint32_t>(i));
   }
   dp_.assign(n, 0.0);
   if (m == 0) {
@@ -249,33 +445,49 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   gap_ = g_;  // the converged gap (g_ is the CG residual below)
   // x = Δp, g_ = residual, t_ = direction, r_ = C t.
   std::fill(x_.begin(), x_.end(), 0.0);
+  // Preconditioned CG (README Eq. 7b on E; γ for the disc E itself, i.e. for |A| = 2|E|) with the
+  // plain residual's stopping rule. g_ = residual, u_ = preconditioned residual, t_ = direction.
+  const bool precondition = opt.precondition;
+  const double gamma = precondition_gamma(2 * m);
+  const std::size_t nx = op_.grid().nx;
   double rr = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     g_[i] = set_[i] == kFree ? 1.0 : 0.0;
-    t_[i] = g_[i];
     rr += g_[i];
   }
+  double rz = rr;
+  if (precondition) {
+    std::fill(u_.begin(), u_.end(), 0.0);
+    rz = apply_preconditioner(elastic_, set_, g_, u_, gamma, nx, part_);
+  }
+  const std::vector<double>& z = precondition ? u_ : g_;
+  t_ = z;
   const double stop = opt.stiffness_tolerance * opt.stiffness_tolerance * static_cast<double>(m);
   int it = 0;
   bool ok = rr <= stop;
   while (!ok && it < opt.stiffness_max_iterations) {
-    op_.apply(t_.data(), r_.data());
-    double tr = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (set_[i] == kFree) tr += t_[i] * r_[i];
-    const double alpha = rr / tr;
-    double rr_new = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (set_[i] == kFree) {
-        x_[i] += alpha * t_[i];
-        g_[i] -= alpha * r_[i];
-        rr_new += g_[i] * g_[i];
-      }
+    apply_on(t_.data(), elastic_, r_.data());  // C_EE t: only E is read
+    const double tr = block_reduce<1>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      for (const std::size_t i : Slice{elastic_.data(), lo, hi})
+        if (set_[i] == kFree) acc[0] += t_[i] * r_[i];
+    })[0];
+    const double alpha = rz / tr;
+    rr = block_reduce<1>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
+      for (const std::size_t i : Slice{elastic_.data(), lo, hi})
+        if (set_[i] == kFree) {
+          x_[i] += alpha * t_[i];
+          g_[i] -= alpha * r_[i];
+          acc[0] += g_[i] * g_[i];
+        }
+    })[0];
     ++it;
-    ok = rr_new <= stop;
-    const double beta = rr_new / rr;
-    rr = rr_new;
-    for (std::size_t i = 0; i < n; ++i) t_[i] = set_[i] == kFree ? g_[i] + beta * t_[i] : 0.0;
+    ok = rr <= stop;
+    const double rz_new = precondition ? apply_preconditioner(elastic_, set_, g_, u_, gamma, nx, part_) : rr;
+    const double beta = rz_new / rz;
+    rz = rz_new;
+    block_reduce<0>(elastic_.size(), part_, [&](std::size_t lo, std::size_t hi, double*) {
+      for (const std::size_t i : Slice{elastic_.data(), lo, hi}) t_[i] = set_[i] == kFree ? z[i] + beta * t_[i] : 0.0;
+    });
   }
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) sum += x_[i];

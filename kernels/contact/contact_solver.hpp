@@ -3,7 +3,9 @@
 // (Polonsky & Keer 1999, pressure cap after Almqvist et al. 2007; kernels/README.md D-6, D-7,
 // README Eq. 6–15).
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "kernels/contact/grid.hpp"
@@ -28,6 +30,16 @@ struct SolverOptions {
   // Frozen-set stiffness k = dP/dw (README Eq. 11), by CG on the elastic contact cells, stopped at
   // ‖1 − C_EE Δp‖₂ / ‖1‖₂ < stiffness_tolerance. Open boundary only (NaN for periodic).
   bool compute_stiffness = true;
+  // Cold start (displacement control, no warm start given) from the solution on the grid of
+  // twice the cell size, itself started the same way (README Eq. 16): the 2 × 2 mean of the gap,
+  // solved to coarse_tolerance, each coarse cell's pressure given to its four cells. Only for even
+  // nx and ny whose halves are ≥ 32 (else the line-search start of Eq. 7).
+  bool coarse_start = true;
+  double coarse_tolerance = 1e-3;
+  // Precondition the CG on S with I + γ L_S (README Eq. 7b; L_S the 5-point Laplacian on S with
+  // zero outside it), γ = 0.1 √(|A|/2π) from the interference set A (Eq. 6a): the contact radius
+  // in cells for a ball. Displacement control only; also the frozen-set stiffness CG (on E).
+  bool precondition = true;
   double stiffness_tolerance = 1e-12;
   int stiffness_max_iterations = 10000;
 };
@@ -35,7 +47,8 @@ struct SolverOptions {
 struct ContactResult {
   double approach = 0.0;        // rigid approach w (m): given, or found in load control
   bool converged = false;       // stopping rule met (never true for an unfinished solve)
-  int iterations = 0;           // CG iterations (two half-space products each)
+  int iterations = 0;           // CG iterations (at most two half-space products each)
+  int coarse_iterations = 0;    // CG iterations of the coarse start on all coarser grids (Eq. 16)
   double error = 0.0;           // ε of README Eq. 9 at the returned field
   double force = 0.0;           // P = ΔA Σ p_i (N), seed 001 Eq. 12
   double contact_area = 0.0;    // ΔA · #{p_i > 0} (m²)
@@ -86,6 +99,14 @@ class ContactSolver {
   std::vector<double> u_, g_, t_, r_, x_, gap_;  // work arrays, one set per solver (thread-private use)
   std::vector<unsigned char> set_;
   std::vector<double> dp_;
+  std::vector<double> part_;  // per-block partial sums of the cell loops
+  bool apply_on(const double* v, const std::vector<std::uint32_t>& cells, double* out);
+  std::vector<std::uint32_t> active_, elastic_, sources_, all_;  // A (Eq. 6a), E, v ≠ 0, every cell
+  // Coarse start (Eq. 16): the solver on the grid of twice the cell size, made when first needed.
+  bool coarse_start(const std::vector<double>& gap, double approach, std::vector<double>& pressure,
+                    const SolverOptions& options, ContactResult& result);
+  std::unique_ptr<ContactSolver> coarse_;
+  std::vector<double> coarse_gap_, coarse_pressure_;
 };
 
 }  // namespace rollspec::contact

@@ -1,6 +1,8 @@
 #pragma once
 // Fast product u = C p of the half-space influence matrix with a pressure field (kernels/README.md D-6).
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "kernels/contact/grid.hpp"
 #include "kernels/spectral/fftw_handles.hpp"
@@ -20,9 +22,15 @@ enum class Boundary {
 enum class PlannerEffort { Estimate, Measure };
 
 // Owns its FFTW plans and aligned buffers: plans are made once (under the one planner lock of
-// kernels/spectral/fftw_handles.hpp) and re-executed with fftw_execute_dft_r2c/c2r on the object's own
-// buffers, so distinct objects may be used concurrently from different threads. One object must not
-// be used by two threads at once.
+// kernels/spectral/fftw_handles.hpp) and re-executed with the new-array interface on the object's
+// own buffers, so distinct objects may be used concurrently from different threads. One object
+// must not be used by two threads at once.
+//
+// The 2-D transform is done as its two 1-D passes (README Eq. 3a): rows, then columns. The rows of
+// the zero padding are never transformed forward, and only the nx × ny block is transformed back.
+// Each pass runs over fixed blocks of rows / columns, each block with the same FFTW plan whatever
+// the thread count, under an OpenMP `parallel for` (one thread inside an enclosing parallel
+// region): the product has the same bits for any number of threads.
 class HalfSpaceOperator {
  public:
   HalfSpaceOperator(const Grid& grid, double e_star, Boundary boundary = Boundary::Open,
@@ -32,6 +40,16 @@ class HalfSpaceOperator {
 
   // u[i] = Σ_k C_ik p[k] for the nx·ny cells (x-fastest arrays). p and u may not alias.
   void apply(const double* p, double* u);
+
+  // The same sum by direct summation (README Eq. 3b), only over the cells `sources` (where p may be
+  // non-zero) and only for the cells `targets` (u elsewhere is not written); both lists of cell
+  // indices in increasing order. Open boundary only. Each u[t] is one sum in source order: the same
+  // bits for any thread count. Worth it while |targets|·|sources| is small against
+  // fft_cost() (tiny contact spots on a big grid); the first call tabulates C (4 nx ny doubles).
+  void apply_direct(const double* p, const std::vector<std::uint32_t>& sources, const std::vector<std::uint32_t>& targets,
+                    double* u);
+  // Source–target pairs of apply_direct that cost about one apply().
+  double fft_cost() const;
 
   const Grid& grid() const { return grid_; }
   double e_star() const { return e_star_; }
@@ -43,16 +61,38 @@ class HalfSpaceOperator {
   std::size_t fft_ny() const { return fny_; }
 
  private:
+  // One 1-D pass over a block of rows or columns; the plan is made for the first block and re-run
+  // on the others (same strides; offsets keep FFTW's alignment, checked at construction).
+  struct Pass {
+    spectral::FftwPlan full, tail;  // `count` whole blocks of `block` lines, then `rest` lines
+    std::size_t block = 0, count = 0, rest = 0;
+  };
+  void forward_rows(std::size_t r0, std::size_t lines);   // in_ rows → spectrum_ rows
+  void columns(std::size_t c0, std::size_t lines, bool multiply);
+  void backward_rows(std::size_t r0, std::size_t lines, double* u);
+  void transform_kernel();
+
   Grid grid_;
   double e_star_;
   Boundary boundary_;
-  std::size_t fnx_, fny_, ncomplex_;
+  std::size_t fnx_, fny_;
+  std::size_t ncx_;          // complex entries of a transformed row, fnx/2 + 1
+  std::size_t real_stride_;  // doubles per row of in_/out_ (≥ fnx, a multiple of 8: 64-byte rows)
+  std::size_t cplx_stride_;  // complex entries per row of spectrum_/kernel_ (≥ ncx, a multiple of 4)
   double self_ = 0.0;
-  spectral::RealBuffer in_;         // padded pressure (padding stays zero)
-  spectral::RealBuffer out_;        // padded displacement
-  spectral::ComplexBuffer spectrum_;
-  spectral::ComplexBuffer kernel_;  // transformed coefficients, scaled by 1/(fnx·fny)
-  spectral::FftwPlan forward_, backward_;  // declared after the buffers: destroyed before them
+  spectral::RealBuffer in_;          // ny rows: pressure, zero beyond column nx (the padding stays zero)
+  spectral::RealBuffer out_;         // ny rows: displacement
+  spectral::ComplexBuffer spectrum_; // fny rows × cplx_stride
+  spectral::ComplexBuffer kernel_;   // transformed coefficients, scaled by 1/(fnx·fny), same layout
+  std::vector<double> table_;        // C at offset (ox, oy): index (oy + ny − 1)(2nx − 1) + ox + nx − 1 (apply_direct)
+  struct Run {                       // sources next to each other in a row (apply_direct)
+    std::int64_t key;                // key of the first: iy (2nx − 1) + ix
+    std::uint32_t first;             // its cell index
+    std::uint32_t length;
+  };
+  std::vector<Run> runs_;
+  // Plans last: destroyed before the buffers.
+  Pass row_r2c_, col_forward_, col_backward_, row_c2r_;
 };
 
 }  // namespace rollspec::contact
