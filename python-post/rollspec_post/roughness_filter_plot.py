@@ -51,7 +51,7 @@ def plot_roughness_filters(path, out, dpi=150):
         ax.text(np.pi / a, 0.02, " ka = π", transform=ax.get_xaxis_transform(), fontsize=8, color="0.4")
     if np.isfinite(k_b) and k_b < k[-1]:
         ax.axvline(k_b, color="0.5", ls="--", lw=0.8)
-        ax.text(k_b, 0.93, " k_B (band\n limit)", transform=ax.get_xaxis_transform(), fontsize=8, color="0.4", va="top")
+        ax.text(k_b, 0.2, " k_B, band\n limit", transform=ax.get_xaxis_transform(), fontsize=8, color="0.4", va="top")  # below the curves
     top = max(v.max() for v in positive)
     ax.set_ylim(max(min(v.min() for v in positive), top * 1e-12), top * 5)
     ax.set_xlabel("wavenumber k along the path (rad/m)")
