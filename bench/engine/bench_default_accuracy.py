@@ -15,8 +15,6 @@ a 1-realisation run's (set-up). Cases: substeps 2/4/8 at their default line spac
 interpolation loss undone, kernels/beam B40-B40a) and = step (before issue 18).
 """
 import argparse
-import os
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -24,16 +22,12 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from bench_whole_run import timed  # same folder: /usr/bin/time around a whole command
 
-def run(cmd, threads=1):
-    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
-    with tempfile.NamedTemporaryFile("r", suffix=".time") as t:
-        r = subprocess.run(["/usr/bin/time", "-f", "%U %S", "-o", t.name, *map(str, cmd)], capture_output=True,
-                           text=True, env=env)
-        if r.returncode != 0:
-            sys.exit(f"failed: {' '.join(map(str, cmd))}\n{r.stderr}")
-        user, system = t.read().split()[-2:]
-    return float(user) + float(system)
+
+def run(cmd):
+    """CPU seconds of one whole command on 1 thread."""
+    return timed(cmd, 1)[1]
 
 
 def bands(path):
