@@ -7,7 +7,7 @@ from matplotlib.figure import Figure
 
 from .measurement import sensor_row
 from .psd_plot import db, output_format
-from .result_file import EX_USAGE, PostError, open_rollspec, text_attr
+from .result_file import EX_DATAERR, EX_USAGE, PostError, open_rollspec, text_attr
 
 STYLES = ({"color": "black", "ls": "-", "lw": 0.9}, {"color": "C3", "ls": ":", "lw": 1.3},
           {"color": "C0", "ls": "--", "lw": 1.0}, {"color": "C2", "ls": "-.", "lw": 1.0})
@@ -31,6 +31,8 @@ def parse_panel(words):
 def read_level(path, sensor=None):
     """Frequency, the level in dB of one row (sensor_mean by default), its units and realisation count."""
     with open_rollspec(path) as f:
+        if "/psd/mean" not in f:
+            raise PostError(f"{path}: holds no /psd (a time-history result?); panels draws acceleration PSDs", EX_DATAERR)
         names = [n.decode() if isinstance(n, bytes) else n for n in f["/psd/sensor"][:]]
         row = sensor_row(names, sensor)
         return (f["/psd/frequency"][:], db(f["/psd/mean"][row]), text_attr(f["/psd/mean"], "units"),

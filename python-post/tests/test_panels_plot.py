@@ -45,4 +45,11 @@ def test_panels_command_and_its_errors(tmp_path):
     assert r.returncode == 66 and "no such file" in r.stderr
     r = post("panels", "--panel", "rig", *[f"{a}=c{i}" for i in range(5)], "--out", tmp_path / "x.png")
     assert r.returncode == 64 and "at most 4" in r.stderr
+    disc = tmp_path / "disc.h5"  # a rolling-beam result: time histories, no /psd
+    r = subprocess.run([BIN, "run", SOURCE / "studies" / "seed000-disc.ini", "--out", disc, "--quiet",
+                        "--set", "analysis.t_end=0.1"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    r = post("panels", "--panel", "t", f"{disc}=x", "--out", tmp_path / "x.png")
+    assert r.returncode == 65 and "holds no /psd" in r.stderr, r.stderr
+    assert "Traceback" not in r.stderr
     assert not (tmp_path / "x.png").exists()
