@@ -348,16 +348,17 @@ class BallOnBeam final : public Scene {
       }
     }
     // The patch line is drawn compensated for the linear interpolant (B40a) when band-limited below pi/dx.
-    const bool compensated = b_.band_limit_wavenumber * b_.spacing < M_PI;
+    const texture::Psd patch_line = b_.band_limit_wavenumber * b_.spacing < M_PI
+                                        ? texture::interpolation_compensated(b_.psd, b_.spacing)
+                                        : b_.psd;
     for (std::size_t i = 0; i < k.size(); ++i) {
       try {
         raw[i] = b_.texture_psd(k[i]);
       } catch (const std::domain_error&) {  // a table without extension, beyond the band limit: no power known
         raw[i] = 0.0;
       }
-      const double t = beam::contact_patch_transfer(k[i], a, b_.spacing), h = 0.5 * k[i] * b_.spacing;
-      const double sinc2 = std::pow(std::sin(h) / h, 2);
-      patch[i] = b_.psd(k[i]) * t * t / (compensated ? sinc2 * sinc2 : 1.0);  // (B35a, B40a)
+      const double t = beam::contact_patch_transfer(k[i], a, b_.spacing);
+      patch[i] = patch_line(k[i]) * t * t;  // (B35a, B40a)
     }
     w.write("/roughness/wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the rolling path (log grid)");
     w.make_scale("/roughness/wavenumber", "wavenumber");
