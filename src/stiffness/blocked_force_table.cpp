@@ -16,6 +16,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/stiffness/stiffness_table.hpp"
+#include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/study/study.hpp"
@@ -107,23 +108,7 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
   const double dx = geo.cell;
   const std::size_t ny = geo.ny, nx = geo.nx, window = geo.window, step = geo.step;
   // One strip realisation (Philox surface streams of realisation 0) from the study's PSD.
-  texture::SpectralSurfaceSpec spec;
-  spec.nx = nx;
-  spec.ny = ny;
-  spec.dx = spec.dy = dx;
-  spec.amplitudes = texture_io::study_amplitudes(s);
-  spec.anisotropy = s.real("surface.anisotropy");
-  // A derived cell may be coarser than half the texture's shortest wavelength: the finer roughness
-  // is dropped (the plan says from which wavelength); a cell the study set must resolve it.
-  spec.allow_truncation = geo.derived_cell;
-  texture::Surface strip;
-  try {
-    texture_io::SurfaceGenerator g;
-    g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(texture_io::study_psd(s), spec);
-    g.generate(static_cast<std::uint64_t>(s.integer("study.seed")), 0, strip);
-  } catch (const std::exception& e) {
-    throw config_error(s.where("surface.spacing") + ": " + e.what());
-  }
+  const texture::Surface strip = study_strip(s, StripGrid{nx, ny, dx, geo.derived_cell}, 0);
   contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));

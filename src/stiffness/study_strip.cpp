@@ -1,0 +1,33 @@
+#include "src/stiffness/study_strip.hpp"
+
+#include <exception>
+#include <memory>
+
+#include "src/error.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::stiffness {
+
+texture::Surface study_strip(const study::Study& s, const StripGrid& grid, std::uint64_t index) {
+  texture::SpectralSurfaceSpec spec;
+  spec.nx = grid.nx;
+  spec.ny = grid.ny;
+  spec.dx = spec.dy = grid.cell;
+  spec.amplitudes = texture_io::study_amplitudes(s);
+  spec.anisotropy = s.real("surface.anisotropy");
+  // A derived cell may be coarser than half the texture's shortest wavelength: the finer roughness
+  // is dropped (the plan says from which wavelength); a cell the study set must resolve it.
+  spec.allow_truncation = grid.allow_truncation;
+  texture::Surface strip;
+  try {
+    texture_io::SurfaceGenerator g;
+    g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(texture_io::study_psd(s), spec);
+    g.generate(static_cast<std::uint64_t>(s.integer("study.seed")), index, strip);
+  } catch (const std::exception& e) {
+    throw config_error(s.where("surface.spacing") + ": " + e.what());
+  }
+  return strip;
+}
+
+}  // namespace rollspec::stiffness

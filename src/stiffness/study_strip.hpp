@@ -1,0 +1,27 @@
+#pragma once
+// One rough strip of the study's surface: the height field a contact stage slides the ball along
+// (blocked force, equivalent roughness, path table). Strip `index` is the surface realisation
+// keyed (study.seed, index) on the Philox surface streams, so every stage that asks for strip 0
+// of the same grid sees the same heights.
+#include <cstddef>
+#include <cstdint>
+
+#include "kernels/texture/surface.hpp"
+
+namespace rollspec::study {
+class Study;
+}
+
+namespace rollspec::stiffness {
+
+struct StripGrid {
+  std::size_t nx = 0, ny = 0;  // cells along and across the path
+  double cell = 0.0;           // dx = dy (m)
+  bool allow_truncation = false;  // a derived cell may drop roughness shorter than two cells
+};
+
+// Heights of strip `index` (x fastest, centred as contact::Grid). Bad texture or grid: config_error
+// naming [surface] spacing.
+texture::Surface study_strip(const study::Study& s, const StripGrid& g, std::uint64_t index);
+
+}  // namespace rollspec::stiffness
