@@ -61,6 +61,43 @@ def table_run(rollspec, threads):
     return float(wall), float(user) + float(system)
 
 
+def measure(new, base=None, repeats=3, threads=2):
+    """Medians of the goal figures of this build (and of the previous build when `base` is given)."""
+    builds = {"this": Path(new)}
+    if base is not None:
+        builds["previous"] = Path(base)
+    hertz = {k: [] for k in builds}
+    hertz1 = []  # this build on one thread: thread-CPU-like seconds, like the previous build's figure
+    table = {k: [] for k in builds}
+    for _ in range(repeats):
+        for name, b in builds.items():
+            bench = str(b / "bench" / "contact" / "bench_contact")
+            if name == "this":
+                rows = csv_lines([bench, "--hertz"], threads)
+                one = csv_lines([bench, "--hertz"], 1)["hertz_solve"][0]
+                hertz1.append(float(one[5].split(" s CPU")[0].split("; ")[-1]))
+            else:
+                rows = csv_lines([bench, "--quick"], threads, stop_case="hertz_solve")
+            h = rows["hertz_solve"][0]
+            hertz[name].append((float(h[2]), int(h[4])))
+            table[name].append(table_run(str(b / "rollspec"), threads))
+    iteration = csv_lines([str(builds["this"] / "bench" / "contact" / "bench_contact"), "--quick"], threads,
+                          stop_case="hertz_solve")
+
+    def med(v, i):
+        return statistics.median(x[i] for x in v)
+
+    r = {"threads": threads, "repeats": repeats, "hertz_wall": med(hertz["this"], 0),
+         "hertz_iterations": hertz["this"][0][1], "hertz_cpu_1_thread": statistics.median(hertz1),
+         "table_wall": med(table["this"], 0), "table_cpu": med(table["this"], 1),
+         "iteration": [(int(f[1]), float(f[2]), float(f[3]), kind) for kind in ("cg_iteration", "cg_iteration_wall")
+                       for f in iteration.get(kind, [])]}
+    if base is not None:
+        r.update(previous_hertz=med(hertz["previous"], 0), previous_hertz_iterations=hertz["previous"][0][1],
+                 previous_table_wall=med(table["previous"], 0), previous_table_cpu=med(table["previous"], 1))
+    return r
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--base", required=True, help="previous build directory (has rollspec, bench/contact/bench_contact)")
@@ -68,49 +105,24 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--threads", type=int, default=2)
     a = ap.parse_args()
-    builds = {"previous": Path(a.base), "this": Path(a.new)}
-    hertz = {k: [] for k in builds}
-    hertz1 = []  # this build on one thread: thread-CPU-like seconds, like the previous build's figure
-    table = {k: [] for k in builds}
-    for _ in range(a.repeats):
-        for name, b in builds.items():
-            bench = str(b / "bench" / "contact" / "bench_contact")
-            if name == "this":
-                rows = csv_lines([bench, "--hertz"], a.threads)
-                one = csv_lines([bench, "--hertz"], 1)["hertz_solve"][0]
-                hertz1.append(float(one[5].split(" s CPU")[0].split("; ")[-1]))
-            else:
-                rows = csv_lines([bench, "--quick"], a.threads, stop_case="hertz_solve")
-            h = rows["hertz_solve"][0]
-            hertz[name].append((float(h[2]), int(h[4])))
-            table[name].append(table_run(str(b / "rollspec"), a.threads))
-    iteration = csv_lines([str(builds["this"] / "bench" / "contact" / "bench_contact"), "--quick"], a.threads,
-                          stop_case="hertz_solve")
-
-    def med(v, i):
-        return statistics.median(x[i] for x in v)
-
+    r = measure(a.new, a.base, a.repeats, a.threads)
     load = os.getloadavg()
     print(f"contact goals (issue 18 goal 3), {a.threads} threads, median of {a.repeats} interleaved runs; "
           f"load average at the end {load[0]:.1f} / {load[1]:.1f} / {load[2]:.1f} on {os.cpu_count()} CPUs\n")
     print("| goal | previous build | this build | this / previous | this / goal |")
     print("|---|---|---|---|---|")
-    hp, hn = med(hertz["previous"], 0), med(hertz["this"], 0)
-    h1 = statistics.median(hertz1)
-    print(f"| Hertz 512² to 1e-10, cold solve, 1 thread, CPU s | {hp:.3f} s ({hertz['previous'][0][1]} iterations) "
-          f"| {h1:.3f} s ({hertz['this'][0][1]} iterations + coarse start) | {h1 / hp:.3f} | |")
+    hp, hn, h1 = r["previous_hertz"], r["hertz_wall"], r["hertz_cpu_1_thread"]
+    print(f"| Hertz 512² to 1e-10, cold solve, 1 thread, CPU s | {hp:.3f} s ({r['previous_hertz_iterations']} iterations) "
+          f"| {h1:.3f} s ({r['hertz_iterations']} iterations + coarse start) | {h1 / hp:.3f} | |")
     print(f"| Hertz 512² to 1e-10, cold solve ≤ 0.6 s wall on {a.threads} threads | {hp:.3f} s (1 thread) "
           f"| {hn:.3f} s | {hn / hp:.3f} | {hn / 0.6:.2f} |")
-    tp, tn = med(table["previous"], 0), med(table["this"], 0)
-    cp, cn = med(table["previous"], 1), med(table["this"], 1)
+    tp, tn, cp, cn = r["previous_table_wall"], r["table_wall"], r["previous_table_cpu"], r["table_cpu"]
     print(f"| `rollspec stiffness studies/seed002-table.ini` ≤ 8 s wall | {tp:.2f} s wall, {cp:.1f} s CPU "
           f"| {tn:.2f} s wall, {cn:.1f} s CPU | {tn / tp:.3f} | {tn / 8.0:.2f} |")
-    for f in iteration.get("cg_iteration", []):
-        print(f"| CG iteration / two convolutions ≤ 1.2, {f[1]}² (1 thread CPU) | | {float(f[2]) * 1e3:.2f} ms "
-              f"| | {float(f[3]):.3f} / 1.2 = {float(f[3]) / 1.2:.2f} |")
-    for f in iteration.get("cg_iteration_wall", []):
-        print(f"| CG iteration / two convolutions ≤ 1.2, {f[1]}² ({a.threads} threads wall) | | {float(f[2]) * 1e3:.2f} ms "
-              f"| | {float(f[3]):.3f} / 1.2 = {float(f[3]) / 1.2:.2f} |")
+    for n, seconds, ratio, kind in r["iteration"]:
+        how = "1 thread CPU" if kind == "cg_iteration" else f"{a.threads} threads wall"
+        print(f"| CG iteration / two convolutions ≤ 1.2, {n}² ({how}) | | {seconds * 1e3:.2f} ms "
+              f"| | {ratio:.3f} / 1.2 = {ratio / 1.2:.2f} |")
 
 
 if __name__ == "__main__":

@@ -48,11 +48,7 @@ def main():
     a = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        base = [a.bin, "run", a.study, "--force", "--quiet", "--set", "output.reference=false"]
-        with h5py.File(keep(base, tmp / "probe.h5", ["study.realisations=1"])) as f:
-            speed = float(f["/ball"].attrs["speed"][0])
-            fs = 2.0 * float(f["/psd/frequency"][-1])  # the one-sided PSD ends at f_s / 2
-        setup = run(base + ["--out", tmp / "one.h5", "--set", "study.realisations=1"])
+        speed, fs, setup = probe(a.bin, a.study, tmp)
         print(f"`{a.study}`: largest sensor-mean band error 100 Hz-5 kHz against 64 substeps on a 4x finer line "
               f"({a.realisations} realisations, same seed); CPU per realisation on 1 thread ({a.cost_realisations} "
               "realisations, set-up subtracted)\n")
@@ -60,18 +56,33 @@ def main():
         print("|---|---|---|---|")
         for limit in ("output", "step"):
             for n in (2, 4, 8):
-                sets = [f"roughness.band_limit={limit}", f"signal.substeps={n}"]
-                case = keep(base, tmp / "case.h5", [f"study.realisations={a.realisations}", *sets])
-                conv = keep(base, tmp / "conv.h5", [f"study.realisations={a.realisations}", f"roughness.band_limit={limit}",
-                                                    "signal.substeps=64", f"roughness.spacing={speed / (fs * n) / 4!r}"])
-                (lc, ec), (lr, er) = bands(case), bands(conv)
-                # (band_limit = step: the finer line adds shorter waves, whose aliases reach the low bands.)
-                if limit == "output" and np.abs(lc - lr).max() > 0.002:
-                    sys.exit(f"{limit}, {n} substeps: the converged run drew other harmonics (line length differs)")
-                cpu = run(base + ["--out", tmp / "cost.h5", "--set", f"study.realisations={a.cost_realisations}",
-                                  *sum((["--set", s] for s in sets), [])])
-                print(f"| {limit} | {n} | {np.abs(ec - er).max():.4f} dB | "
-                      f"{1e3 * (cpu - setup) / (a.cost_realisations - 1):.1f} ms |")
+                error, cpu = case(a.bin, a.study, limit, n, a.realisations, a.cost_realisations, speed, fs, setup, tmp)
+                print(f"| {limit} | {n} | {error:.4f} dB | {1e3 * cpu:.1f} ms |")
+
+
+def probe(binary, study, tmp):
+    """(ball speed, output sample rate, set-up CPU seconds) of the study."""
+    base = [binary, "run", study, "--force", "--quiet", "--set", "output.reference=false"]
+    with h5py.File(keep(base, tmp / "probe.h5", ["study.realisations=1"])) as f:
+        speed = float(f["/ball"].attrs["speed"][0])
+        fs = 2.0 * float(f["/psd/frequency"][-1])  # the one-sided PSD ends at f_s / 2
+    return speed, fs, run(base + ["--out", tmp / "one.h5", "--set", "study.realisations=1"])
+
+
+def case(binary, study, limit, n, realisations, cost_realisations, speed, fs, setup, tmp):
+    """(max band error in dB, CPU seconds per realisation) of one band_limit / substeps case."""
+    base = [binary, "run", study, "--force", "--quiet", "--set", "output.reference=false"]
+    sets = [f"roughness.band_limit={limit}", f"signal.substeps={n}"]
+    out = keep(base, tmp / "case.h5", [f"study.realisations={realisations}", *sets])
+    conv = keep(base, tmp / "conv.h5", [f"study.realisations={realisations}", f"roughness.band_limit={limit}",
+                                        "signal.substeps=64", f"roughness.spacing={speed / (fs * n) / 4!r}"])
+    (lc, ec), (lr, er) = bands(out), bands(conv)
+    # (band_limit = step: the finer line adds shorter waves, whose aliases reach the low bands.)
+    if limit == "output" and np.abs(lc - lr).max() > 0.002:
+        sys.exit(f"{limit}, {n} substeps: the converged run drew other harmonics (line length differs)")
+    cpu = run(base + ["--out", tmp / "cost.h5", "--set", f"study.realisations={cost_realisations}",
+                      *sum((["--set", s] for s in sets), [])])
+    return float(np.abs(ec - er).max()), (cpu - setup) / (cost_realisations - 1)
 
 
 def keep(base, out, sets):

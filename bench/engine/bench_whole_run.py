@@ -34,6 +34,30 @@ def timed(cmd, threads):
     return float(wall), float(user) + float(system), int(rss)
 
 
+def measure(binary, study, K, repeats, baseline=None, only_baseline=False):
+    """Median (wall, CPU) seconds per case, cases interleaved; keys as printed."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "r.h5"
+        base = [binary, "run", study, "--out", out, "--force", "--quiet"]
+        cases = {} if only_baseline else {
+            "1 realisation, 2 threads": (base + ["--set", "study.realisations=1"], 2),
+            f"{K} realisations, 1 thread": (base + ["--set", f"study.realisations={K}"], 1),
+            f"{K} realisations, 2 threads": (base + ["--set", f"study.realisations={K}"], 2),
+            f"{K} realisations, 2 threads, no reference": (
+                base + ["--set", f"study.realisations={K}", "--set", "output.reference=false"], 2),
+        }
+        pair = ["--set", f"study.realisations={K}", "--set", "output.reference=false"]
+        if baseline:
+            cases[f"{K} realisations, 1 thread, no reference: this build"] = (base + pair, 1)
+            cases[f"{K} realisations, 1 thread, no reference: previous build"] = (
+                [baseline, "run", study, "--out", out, "--force", "--quiet"] + pair, 1)
+        runs = {name: [] for name in cases}
+        for _ in range(repeats):
+            for name, (cmd, threads) in cases.items():
+                runs[name].append(timed(cmd, threads))
+    return {n: (statistics.median(r[0] for r in v), statistics.median(r[1] for r in v)) for n, v in runs.items()}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--bin", default="build/release/rollspec")
@@ -46,26 +70,7 @@ def main():
     if a.only_baseline and not a.baseline:
         sys.exit("--only-baseline needs --baseline")
     K = a.realisations
-    with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp) / "r.h5"
-        base = [a.bin, "run", a.study, "--out", out, "--force", "--quiet"]
-        cases = {} if a.only_baseline else {
-            "1 realisation, 2 threads": (base + ["--set", "study.realisations=1"], 2),
-            f"{K} realisations, 1 thread": (base + ["--set", f"study.realisations={K}"], 1),
-            f"{K} realisations, 2 threads": (base + ["--set", f"study.realisations={K}"], 2),
-            f"{K} realisations, 2 threads, no reference": (
-                base + ["--set", f"study.realisations={K}", "--set", "output.reference=false"], 2),
-        }
-        pair = ["--set", f"study.realisations={K}", "--set", "output.reference=false"]
-        if a.baseline:
-            cases[f"{K} realisations, 1 thread, no reference: this build"] = (base + pair, 1)
-            cases[f"{K} realisations, 1 thread, no reference: previous build"] = (
-                [a.baseline, "run", a.study, "--out", out, "--force", "--quiet"] + pair, 1)
-        runs = {name: [] for name in cases}
-        for _ in range(a.repeats):
-            for name, (cmd, threads) in cases.items():
-                runs[name].append(timed(cmd, threads))
-    med = {n: (statistics.median(r[0] for r in v), statistics.median(r[1] for r in v)) for n, v in runs.items()}
+    med = measure(a.bin, a.study, K, a.repeats, a.baseline, a.only_baseline)
     print(f"whole `rollspec run {a.study}`, median of {a.repeats} interleaved runs (/usr/bin/time)\n")
     print("| case | wall | CPU |")
     print("|---|---|---|")
