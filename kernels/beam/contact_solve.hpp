@@ -5,6 +5,7 @@
 // so F solves r(F) = F - law(delta(F), delta_dot(F)) = 0. r(0) <= 0 and r' = 1 + C k + D c >= 1 on
 // every branch, so the root is unique; Newton's iteration is safeguarded by the bracket [lo, hi]
 // (bisection when a Newton step leaves it), which also handles the kinks at loss of contact.
+// The linearised law's contact branch is solved in closed form (B21a; `iterations` 0).
 #include "kernels/beam/contact_law.hpp"
 
 namespace rollspec::beam {
