@@ -61,6 +61,28 @@ void SparseSink::finish() {
   new_pattern = true;
 }
 
+void BandSink::add_dense(const int* dofs, int m, const double* K) {
+  if (m > 18) {
+    Sink::add_dense(dofs, m, K);
+    return;
+  }
+  int e[18];
+  for (int i = 0; i < m; ++i) e[i] = (*eq)[static_cast<std::size_t>(dofs[i])];
+  for (int j = 0; j < m; ++j) {
+    const int c = e[j];
+    if (c < 0) continue;
+    for (int i = 0; i < m; ++i) {
+      const int r = e[i];
+      if (r < 0) continue;
+      if (!lu->in_band(r, c)) {
+        mismatch = true;
+        continue;
+      }
+      lu->at(r, c) += K[i + m * j];
+    }
+  }
+}
+
 Matrix3d section_inertia(const BeamSection& s) { return Eigen::Vector3d(s.rhoJ1, s.rhoI2, s.rhoI3).asDiagonal(); }
 
 std::vector<NodeState> initial_nodes(const Model& m) {
