@@ -66,20 +66,25 @@ void BandSink::add_dense(const int* dofs, int m, const double* K) {
     Sink::add_dense(dofs, m, K);
     return;
   }
-  int e[18];
-  for (int i = 0; i < m; ++i) e[i] = (*eq)[static_cast<std::size_t>(dofs[i])];
+  int e[18], lo = 1 << 30, hi = -1;
+  for (int i = 0; i < m; ++i) {
+    e[i] = (*eq)[static_cast<std::size_t>(dofs[i])];
+    if (e[i] >= 0) {
+      lo = std::min(lo, e[i]);
+      hi = std::max(hi, e[i]);
+    }
+  }
   for (int j = 0; j < m; ++j) {
     const int c = e[j];
     if (c < 0) continue;
-    for (int i = 0; i < m; ++i) {
-      const int r = e[i];
-      if (r < 0) continue;
-      if (!lu->in_band(r, c)) {
-        mismatch = true;
-        continue;
-      }
-      lu->at(r, c) += K[i + m * j];
+    if (!lu->in_band(lo, c) || !lu->in_band(hi, c)) {  // part of the block outside the band
+      mismatch = true;
+      continue;
     }
+    double* col = lu->column(c);  // col[r] = A(r, c) within the band
+    const double* k = K + m * j;
+    for (int i = 0; i < m; ++i)
+      if (e[i] >= 0) col[e[i]] += k[i];
   }
 }
 

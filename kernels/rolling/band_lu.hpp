@@ -26,6 +26,8 @@ class BandLU {
   // Entry (i, j) of the matrix before factorize (inside the band only).
   double& at(int i, int j) { return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
   void set_zero();
+  // Pointer p with p[i] = entry (i, j) for the rows i of column j inside the band.
+  double* column(int j) { return ab_.data() + (ld_ * static_cast<std::size_t>(j) + static_cast<std::size_t>(kl_ + ku_)) - j; }
 
   // In place; false if a pivot is exactly zero (singular) or not finite.
   bool factorize();
