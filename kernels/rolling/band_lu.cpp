@@ -28,6 +28,7 @@ bool BandLU::factorize() {
         big = std::abs(f(j + i, j));
         jp = i;
       }
+    if (std::abs(f(j, j)) >= kPivotThreshold * big) jp = 0;  // threshold pivoting
     piv_[static_cast<std::size_t>(j)] = j + jp;
     if (!(big > 0.0) || !std::isfinite(big)) return false;
     ju = std::max(ju, std::min(j + ku_ + jp, n_ - 1));

@@ -21,13 +21,14 @@ using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using Eigen::VectorXd;
 
-TEST_CASE("band LU: equals dense partial-pivoting LU on random band matrices, pivoting included") {
+TEST_CASE("band LU: solves random band matrices as dense partial-pivoting LU does, pivoting included") {
   std::mt19937_64 rng(44);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const int shapes[][3] = {{1, 0, 0}, {5, 1, 1}, {12, 0, 3}, {20, 4, 0}, {54, 17, 17}, {60, 5, 11}, {200, 17, 17}};
   for (const auto& sh : shapes) {
     const int n = sh[0], kl = sh[1], ku = sh[2];
     for (const bool weak_diagonal : {false, true}) {  // weak: the pivots come from below the diagonal
+      if (weak_diagonal && (kl == 0 || ku == 0)) continue;  // a triangular band with a weak diagonal is singular
       MatrixXd A = MatrixXd::Zero(n, n);
       BandLU lu(n, kl, ku);
       for (int j = 0; j < n; ++j)
@@ -49,7 +50,13 @@ TEST_CASE("band LU: equals dense partial-pivoting LU on random band matrices, pi
       CAPTURE(kl);
       CAPTURE(ku);
       CAPTURE(weak_diagonal);
-      CHECK(rel < 1e-11);
+      // forward error within the condition number times round-off (threshold pivoting, R-44, may
+      // take other rows than dense partial pivoting; a weak triangular band is ill-conditioned)
+      const Eigen::VectorXd sv = Eigen::JacobiSVD<MatrixXd>(A).singularValues();
+      const double cond = sv(0) / sv(n - 1);
+      CAPTURE(cond);
+      CHECK(rel < 1e-13 * std::max(1.0, cond));
+      if (!weak_diagonal) CHECK(rel < 1e-12);
       CHECK(res < 1e-14);
     }
   }
