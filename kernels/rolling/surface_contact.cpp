@@ -9,7 +9,8 @@ using Eigen::Matrix3d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law, const Vector3d& x) {
+SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law, const Vector3d& x,
+                                            const Vector2d* start) {
   SurfaceContactEval e;
   const Plane& b = f.base;
   const Vector3d y0 = x - b.point;
@@ -18,9 +19,13 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
   const bool grid = f.n2 > 1;
   // closest point: grad_s D = (s - xi) - (zeta - h) grad h = 0,
   // H = I + grad h grad h^T - (zeta - h) Hess h
-  Vector2d s = xi;
-  HeightSample hs = sample_height(f, s);
   const double cell = grid ? std::min(f.ds1, f.ds2) : f.ds1;
+  Vector2d s = xi;
+  if (start && std::isfinite((*start)(0)) && std::isfinite((*start)(1)) && (*start - xi).norm() <= 4.0 * cell) {
+    s = *start;
+    if (!grid) s(1) = xi(1);  // a line profile: s2 follows the centre exactly
+  }
+  HeightSample hs = sample_height(f, s);
   e.converged = false;
   for (int it = 0; it < 60; ++it) {
     Vector2d G = (s - xi) - (zeta - hs.h) * hs.grad;
