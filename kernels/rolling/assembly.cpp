@@ -61,6 +61,33 @@ void SparseSink::finish() {
   new_pattern = true;
 }
 
+void BandSink::add_dense(const int* dofs, int m, const double* K) {
+  if (m > 18) {
+    Sink::add_dense(dofs, m, K);
+    return;
+  }
+  int e[18], lo = 1 << 30, hi = -1;
+  for (int i = 0; i < m; ++i) {
+    e[i] = (*eq)[static_cast<std::size_t>(dofs[i])];
+    if (e[i] >= 0) {
+      lo = std::min(lo, e[i]);
+      hi = std::max(hi, e[i]);
+    }
+  }
+  for (int j = 0; j < m; ++j) {
+    const int c = e[j];
+    if (c < 0) continue;
+    if (!lu->in_band(lo, c) || !lu->in_band(hi, c)) {  // part of the block outside the band
+      mismatch = true;
+      continue;
+    }
+    double* col = lu->column(c);  // col[r] = A(r, c) within the band
+    const double* k = K + m * j;
+    for (int i = 0; i < m; ++i)
+      if (e[i] >= 0) col[e[i]] += k[i];
+  }
+}
+
 Matrix3d section_inertia(const BeamSection& s) { return Eigen::Vector3d(s.rhoJ1, s.rhoI2, s.rhoI3).asDiagonal(); }
 
 std::vector<NodeState> initial_nodes(const Model& m) {

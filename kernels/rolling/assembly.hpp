@@ -9,6 +9,7 @@
 #include <array>
 #include <vector>
 
+#include "kernels/rolling/band_lu.hpp"
 #include "kernels/rolling/beam_element.hpp"
 #include "kernels/rolling/model.hpp"
 #include "kernels/rolling/solver.hpp"
@@ -22,13 +23,17 @@ class ContactSet;
 struct Sink {
   virtual ~Sink() = default;
   virtual void add(int i, int j, double v) = 0;
+  // An m x m block K (column-major) at the DOFs, entry by entry in the order (j, then i) of add();
+  // one virtual call per block for the sinks that override it.
+  virtual void add_dense(const int* dofs, int m, const double* K) {
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) add(dofs[i], dofs[j], K[i + m * j]);
+  }
 };
 
 template <int M>
 void add_block(Sink* s, const std::array<int, M>& dofs, const Eigen::Matrix<double, M, M>& K) {
-  if (!s) return;
-  for (int j = 0; j < M; ++j)
-    for (int i = 0; i < M; ++i) s->add(dofs[i], dofs[j], K(i, j));
+  if (s) s->add_dense(dofs.data(), M, K.data());
 }
 
 inline std::array<int, 3> dofs3(int first) { return {first, first + 1, first + 2}; }
@@ -60,6 +65,30 @@ struct SparseSink : Sink {
   void begin();
   void add(int i, int j, double v) override;
   void finish();
+};
+
+// Assembly straight into the band storage of a BandLU over the free equations (eq[dof] >= 0), in
+// the same order as SparseSink: each entry receives the same sums. An entry outside the band
+// sets mismatch (the pattern changed: record it again).
+struct BandSink : Sink {
+  const std::vector<int>* eq = nullptr;
+  BandLU* lu = nullptr;
+  bool mismatch = false;
+
+  void begin() {
+    lu->set_zero();
+    mismatch = false;
+  }
+  void add(int i, int j, double v) override {
+    const int r = (*eq)[static_cast<std::size_t>(i)], c = (*eq)[static_cast<std::size_t>(j)];
+    if (r < 0 || c < 0) return;
+    if (!lu->in_band(r, c)) {
+      mismatch = true;
+      return;
+    }
+    lu->at(r, c) += v;
+  }
+  void add_dense(const int* dofs, int m, const double* K) override;
 };
 
 // Beam mass point (3-point Gauss): committed rotation and body-frame rates.

@@ -74,11 +74,12 @@ PointEnergy beam_point_energy_reference(const BeamSection& s, const BeamStiffPoi
   return out;
 }
 
-// Fast path (README R-14): every strain is bilinear, s_i = v_i . phi_i(a) with
+// Jet path (README R-14): every strain is bilinear, s_i = v_i . phi_i(a) with
 //   Gamma_i = (Q r_i) . x' - delta_i1,   K_i = K_n,i + (Xi^T Q r_i) . a',   r_i = R_n e_i,
-// so only the six 3-vectors phi_i(a) need first and second derivatives, with Jet2<3>.
-PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
-                              const Eigen::Matrix<double, 9, 1>& z) {
+// so only the six 3-vectors phi_i(a) need first and second derivatives, with Jet2<3>. Kept as
+// the plain reference of the analytic path below.
+PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p,
+                                  const Eigen::Matrix<double, 9, 1>& z) {
   using J3 = Jet2<3>;
   Vec3<J3> a;
   for (int i = 0; i < 3; ++i) a[i] = J3::variable(z(3 + i), i);
@@ -123,7 +124,107 @@ PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
   return out;
 }
 
+// Analytic point energy, gradient and Hessian (README R-14a). The Cayley form of Q gives
+// Xi^T Q = Xi, so K = K_n + R_n^T Xi^T a' and with R = Q R_n, N = C_N Gamma, M = C_M K,
+// n = R_n N, m = R_n M:
+//   dGamma/da = G_G = R^T skew(x') Xi,   dK/da = G_K = (g/2) R_n^T (skew(a') - (Xi^T a') a^T)
+//   d psi/dx' = R N,  d psi/da = G_G^T N + G_K^T M,  d psi/da' = Xi m
+// and the Hessian from d(Q w)/da = -skew(Q w) Xi, d(Xi w)/da = -(g/2)((Xi w) a^T + skew(w))
+// and the second derivatives of f1 = x'.Q(a) n, f2 = a'.Xi(a) m at fixed n, m, written with
+// g = 4/(4 + a.a), grad g = -(g^2/2) a, hess g = -(g^2/2) I + (g^3/2) a a^T:
+//   f1 = x'.n + g h,  h = p.a + a^T S a / 2,  p = n x x',  S = (x' n^T + n x'^T)/2 - (x'.n) I
+//   f2 = g (a'.m + q.a),  q = (m x a')/2.
+PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
+                              const Eigen::Matrix<double, 9, 1>& z) {
+  const Vector3d xp = z.segment<3>(0), a = z.segment<3>(3), ap = z.segment<3>(6);
+  const double g = rodrigues_g(a);
+  const Matrix3d Xi = rodrigues_xi(a);
+  const Matrix3d R = rodrigues_q(a) * p.R;
+  const Matrix3d XR = Xi * p.R;  // columns Xi r_i
+  const Vector3d CN(s.EA, s.GA2, s.GA3), CM(s.GJ, s.EI2, s.EI3);
+  Vector3d Gam = R.transpose() * xp;
+  Gam(0) -= 1.0;
+  const Vector3d K = p.K + XR.transpose() * ap;
+  const Vector3d N = CN.cwiseProduct(Gam), M = CM.cwiseProduct(K);
+  const Vector3d n = p.R * N, m = p.R * M;
+  const Matrix3d GG = R.transpose() * skew(xp) * Xi;
+  const Matrix3d GK = (0.5 * g) * p.R.transpose() * (skew(ap) - (Xi.transpose() * ap) * a.transpose());
+  PointEnergy out;
+  out.value = 0.5 * (Gam.dot(N) + K.dot(M));
+  out.grad.segment<3>(0) = R * N;
+  out.grad.segment<3>(3) = GG.transpose() * N + GK.transpose() * M;
+  out.grad.segment<3>(6) = Xi * m;
+  // second derivatives of g
+  const Vector3d dg = -0.5 * g * g * a;
+  const Matrix3d ddg = -0.5 * g * g * Matrix3d::Identity() + 0.5 * g * g * g * a * a.transpose();
+  // f1 = x'.Q(a) n
+  const Vector3d pv = n.cross(xp);
+  const Matrix3d S = 0.5 * (xp * n.transpose() + n * xp.transpose()) - xp.dot(n) * Matrix3d::Identity();
+  const double h = pv.dot(a) + 0.5 * a.dot(S * a);
+  const Vector3d dh = pv + S * a;
+  // f2 = a'.Xi(a) m
+  const Vector3d qv = 0.5 * m.cross(ap);
+  const double l2 = ap.dot(m) + qv.dot(a);
+  const Matrix3d haa = GG.transpose() * CN.asDiagonal() * GG + GK.transpose() * CM.asDiagonal() * GK +
+                       h * ddg + dg * dh.transpose() + dh * dg.transpose() + g * S +
+                       l2 * ddg + dg * qv.transpose() + qv * dg.transpose();
+  const Matrix3d hxa = R * CN.asDiagonal() * GG - skew(R * N) * Xi;
+  const Matrix3d hpa = XR * CM.asDiagonal() * GK - (0.5 * g) * ((Xi * m) * a.transpose() + skew(m));
+  out.hess.setZero();
+  out.hess.block<3, 3>(0, 0) = R * CN.asDiagonal() * R.transpose();
+  out.hess.block<3, 3>(6, 6) = XR * CM.asDiagonal() * XR.transpose();
+  out.hess.block<3, 3>(3, 3) = 0.5 * (haa + haa.transpose());
+  out.hess.block<3, 3>(0, 3) = hxa;
+  out.hess.block<3, 3>(3, 0) = hxa.transpose();
+  out.hess.block<3, 3>(6, 3) = hpa;
+  out.hess.block<3, 3>(3, 6) = hpa.transpose();
+  return out;
+}
+
+// Element force and tangent with B applied by node (B maps node k's DOFs to z by the scalars
+// N_k and dN_k/ds on identity blocks): no 9 x 18 products.
 BeamElementEval beam_element_internal(const BeamSection& s, const std::array<BeamStiffPoint, 2>& gp,
+                                      const std::array<Vector3d, 3>& x,
+                                      const std::array<Vector3d, 3>& alpha, bool want_tangent) {
+  BeamElementEval out;
+  for (const BeamStiffPoint& p : gp) {
+    double N[3], dN[3], d[3];
+    quadratic_shape(p.xi, N, dN);
+    Vector3d xp = Vector3d::Zero(), a = Vector3d::Zero(), ap = Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) {
+      d[k] = dN[k] / p.jac;
+      xp += d[k] * x[k];
+      a += N[k] * alpha[k];
+      ap += d[k] * alpha[k];
+    }
+    Eigen::Matrix<double, 9, 1> z;
+    z << xp, a, ap;
+    const PointEnergy e = beam_point_energy(s, p, z);
+    const double w = p.weight * p.jac;
+    out.energy += w * e.value;
+    for (int k = 0; k < 3; ++k) {
+      out.force.segment<3>(6 * k) += (w * d[k]) * e.grad.segment<3>(0);
+      out.force.segment<3>(6 * k + 3) += w * (N[k] * e.grad.segment<3>(3) + d[k] * e.grad.segment<3>(6));
+    }
+    if (!want_tangent) continue;
+    const Matrix3d Hxx = e.hess.block<3, 3>(0, 0), Hxa = e.hess.block<3, 3>(0, 3), Haa = e.hess.block<3, 3>(3, 3),
+                   Hpa = e.hess.block<3, 3>(6, 3), Hpp = e.hess.block<3, 3>(6, 6);
+    for (int l = 0; l < 3; ++l) {
+      // columns of H B for node l: displacement (d_l x') and rotation (N_l a + d_l a')
+      const Matrix3d Cxa = N[l] * Hxa, Caa = N[l] * Haa + d[l] * Hpa.transpose(), Cpa = N[l] * Hpa + d[l] * Hpp;
+      for (int k = 0; k < 3; ++k) {
+        out.tangent.block<3, 3>(6 * k, 6 * l) += (w * d[k] * d[l]) * Hxx;
+        out.tangent.block<3, 3>(6 * k, 6 * l + 3) += (w * d[k]) * Cxa;
+        out.tangent.block<3, 3>(6 * k + 3, 6 * l) += (w * d[l]) * (N[k] * Hxa.transpose());
+        out.tangent.block<3, 3>(6 * k + 3, 6 * l + 3) += w * (N[k] * Caa + d[k] * Cpa);
+      }
+    }
+  }
+  return out;
+}
+
+// Reference of the element (B^T grad, B^T hess B with the Jet2<3> point path), for tests.
+BeamElementEval beam_element_internal_reference(const BeamSection& s, const std::array<BeamStiffPoint, 2>& gp,
                                       const std::array<Vector3d, 3>& x,
                                       const std::array<Vector3d, 3>& alpha, bool want_tangent) {
   BeamElementEval out;
@@ -144,7 +245,7 @@ BeamElementEval beam_element_internal(const BeamSection& s, const std::array<Bea
     }
     Eigen::Matrix<double, 9, 1> z;
     z << xp, a, ap;
-    const PointEnergy e = beam_point_energy(s, p, z);
+    const PointEnergy e = beam_point_energy_jet(s, p, z);
     const double w = p.weight * p.jac;
     out.energy += w * e.value;
     out.force += w * B.transpose() * e.grad;

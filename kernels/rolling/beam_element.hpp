@@ -6,8 +6,9 @@
 // Stiffness with 2-point Gauss (reduced) integration against shear/membrane locking;
 // R_n, K_n are kept at the Gauss points and updated at the end of each step.
 // Internal force and tangent are the exact gradient and Hessian of the energy: strains are
-// bilinear in (x', a') and functions of a, differentiated with second-order jets in a
-// (README R-14); a Jet2<9> of the whole point energy is kept as the reference oracle.
+// bilinear in (x', a') and functions of a; their derivatives are written out analytically
+// (README R-14a), the second-order jets in a and a Jet2<9> of the whole point energy
+// are kept as the reference and the oracle.
 #pragma once
 
 #include <Eigen/Dense>
@@ -44,6 +45,10 @@ struct PointEnergy {
 };
 PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
                               const Eigen::Matrix<double, 9, 1>& z);
+// The same with second-order jets Jet2<3> of the six strain directions (README R-14), the
+// reference the analytic path (R-14a) is tested against.
+PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p,
+                                  const Eigen::Matrix<double, 9, 1>& z);
 // Slow reference oracle of the same (one Jet2<9> evaluation), for tests.
 PointEnergy beam_point_energy_reference(const BeamSection& s, const BeamStiffPoint& p,
                                         const Eigen::Matrix<double, 9, 1>& z);
@@ -58,5 +63,9 @@ struct BeamElementEval {
 BeamElementEval beam_element_internal(const BeamSection& s, const std::array<BeamStiffPoint, 2>& gp,
                                       const std::array<Eigen::Vector3d, 3>& x,
                                       const std::array<Eigen::Vector3d, 3>& alpha, bool want_tangent);
+// Plain reference of the same: B^T grad and B^T hess B with the Jet2<3> point path.
+BeamElementEval beam_element_internal_reference(const BeamSection& s, const std::array<BeamStiffPoint, 2>& gp,
+                                                const std::array<Eigen::Vector3d, 3>& x,
+                                                const std::array<Eigen::Vector3d, 3>& alpha, bool want_tangent);
 
 }  // namespace rollspec::rolling

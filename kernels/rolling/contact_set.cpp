@@ -136,7 +136,9 @@ class SurfacePair final : public ContactSet::Pair {
 
   void assemble(const NodeState& n, const Vector3d& du, const Vector3d& alpha, double dt, const TimeRule& rule,
                 bool mass_matrix, VectorXd& R, Sink* K) override {
-    ev_ = evaluate_surface_contact(field_, law_, n.x + du);
+    ev_ = evaluate_surface_contact(field_, law_, n.x + du, has_start_ ? &start_ : nullptr);
+    has_start_ = ev_.converged;  // the next evaluation starts from this closest point
+    start_ = ev_.s;
     active = ev_.active;
     g_n = ev_.g_n;
     if (law_.damping > 0.0 && !mass_matrix && rule.contact_dampers()) {
@@ -194,6 +196,8 @@ class SurfacePair final : public ContactSet::Pair {
   ContactState& state_;
   SurfaceContactEval ev_;
   ContactEval fe_;  // friction part (mu > 0)
+  bool has_start_ = false;
+  Eigen::Vector2d start_ = Eigen::Vector2d::Zero();  // last closest point found
 };
 
 }  // namespace

@@ -64,9 +64,14 @@ HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
     return f.h[static_cast<std::size_t>(i2) * static_cast<std::size_t>(f.n1) + static_cast<std::size_t>(i1)];
   };
   const int j0 = grid ? -1 : 0, j1 = grid ? 2 : 0;
-  for (int j = j0; j <= j1; ++j)
+  // away from the edges the 4 x 4 samples are read without clamping (the same values, same order)
+  const bool interior = a1.i >= 1 && a1.i + 2 <= f.n1 - 1 && (!grid || (a2.i >= 1 && a2.i + 2 <= f.n2 - 1));
+  for (int j = j0; j <= j1; ++j) {
+    const double* row = interior ? f.h.data() + static_cast<std::size_t>(a2.i + j) * static_cast<std::size_t>(f.n1) +
+                                       static_cast<std::size_t>(a1.i - 1)
+                                 : nullptr;
     for (int i = -1; i <= 2; ++i) {
-      const double v = at(a1.i + i, a2.i + j);
+      const double v = interior ? row[i + 1] : at(a1.i + i, a2.i + j);
       const int ii = i + 1, jj = j + 1;
       out.h += w1[ii] * w2[jj] * v;
       out.grad(0) += d1[ii] * w2[jj] * v;
@@ -75,6 +80,7 @@ HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
       out.hess(0, 1) += d1[ii] * d2[jj] * v;
       out.hess(1, 1) += w1[ii] * dd2[jj] * v;
     }
+  }
   out.grad(0) /= f.ds1;
   out.hess(0, 0) /= f.ds1 * f.ds1;
   if (grid) {

@@ -1,5 +1,6 @@
 #include "kernels/rolling/newton.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -10,27 +11,66 @@ using Eigen::VectorXd;
 NewtonDriver::NewtonDriver(const std::vector<int>& eq, int neq) : eq_(eq), neq_(neq) {
   sink_.eq = &eq_;
   sink_.neq = neq_;
+  band_sink_.eq = &eq_;
+  band_sink_.lu = &band_;
+  rf_.resize(neq_);
+  dq_.resize(neq_);
+}
+
+bool band_pays(int n, int kl, int ku, long long entries) {
+  return static_cast<long long>(n) * (2 * kl + ku + 1) <= 4 * entries;
+}
+
+void NewtonDriver::choose_solver(LinearSolver wanted) {
+  const Eigen::SparseMatrix<double>& A = sink_.A;
+  int kl = 0, ku = 0;
+  for (int c = 0; c < A.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it) {
+      kl = std::max(kl, static_cast<int>(it.row()) - c);
+      ku = std::max(ku, c - static_cast<int>(it.row()));
+    }
+  banded_ = wanted == LinearSolver::Band ||
+            (wanted == LinearSolver::Automatic && band_pays(neq_, kl, ku, A.nonZeros()));
+  if (!banded_) return;
+  // this pass assembled into the sparse matrix: its values (the same sums) seed the band
+  band_.resize(neq_, kl, ku);
+  for (int c = 0; c < A.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it) band_.at(static_cast<int>(it.row()), c) = it.value();
 }
 
 bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, VectorXd& q, VectorXd& R,
                          StepReport& rep) {
-  VectorXd rf(neq_), dq;
+  VectorXd& rf = rf_;
+  VectorXd& dq = dq_;
+  VectorXd& q_acc = q_acc_;
   rep.residual_norms.clear();
   double last = std::numeric_limits<double>::infinity();
-  VectorXd q_acc = q;
+  q_acc = q;
   double G0 = 0.0, step = 1.0, best_rn = std::numeric_limits<double>::infinity(), best_step = 1.0;
   int nback = 0, newton = 0;  // newton: Newton directions (line-search trials not counted)
   bool forced = false;
   for (int it = 0;; ++it) {
-    sink_.begin();
-    bool usable = assemble(q, R, &sink_);
-    sink_.finish();
-    if (sink_.mismatch) {  // pattern changed (should not happen): record it again
-      sink_.recording = true;
+    bool usable = false, mismatch = false, recorded = false;
+    if (banded_) {
+      band_sink_.begin();
+      usable = assemble(q, R, &band_sink_);
+      mismatch = band_sink_.mismatch;
+    } else {
+      recorded = sink_.recording;
       sink_.begin();
       usable = assemble(q, R, &sink_);
       sink_.finish();
+      mismatch = sink_.mismatch;
     }
+    if (mismatch) {  // pattern changed (should not happen): record it again
+      sink_.recording = true;
+      banded_ = false;
+      sink_.begin();
+      usable = assemble(q, R, &sink_);
+      sink_.finish();
+      recorded = true;
+    }
+    if (recorded) choose_solver(opt.linear_solver);
     if (!usable) return false;
     for (std::size_t i = 0; i < eq_.size(); ++i)
       if (eq_[i] >= 0) rf(eq_[i]) = R(static_cast<Eigen::Index>(i));
@@ -67,14 +107,20 @@ bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, Vec
     if (rn <= opt.force_tol || (newton > 0 && last <= opt.disp_tol)) break;
     if (newton >= opt.max_iterations) return false;
     ++newton;
-    if (sink_.new_pattern) {
-      lu_.analyzePattern(sink_.A);  // once (again only if the pattern ever changes)
+    if (sink_.new_pattern) {  // once (again only if the pattern ever changes)
+      if (!banded_) lu_.analyzePattern(sink_.A);
       sink_.new_pattern = false;
       ++analyses_;
     }
-    lu_.factorize(sink_.A);
-    if (lu_.info() != Eigen::Success) return false;
-    dq = lu_.solve(-rf);
+    if (banded_) {
+      if (!band_.factorize()) return false;
+      dq = -rf;
+      band_.solve(dq.data());
+    } else {
+      lu_.factorize(sink_.A);
+      if (lu_.info() != Eigen::Success) return false;
+      dq = lu_.solve(-rf);
+    }
     G0 = dq.dot(rf);
     q_acc = q;
     step = 1.0;

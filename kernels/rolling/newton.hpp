@@ -1,6 +1,7 @@
-// Newton-Raphson iteration of one step of the rolling Solver (README Sec. 6, R-40, R-42): sparse
-// assembly into a fixed pattern (analysed once, again only if it ever changes), SparseLU
-// factorisation per iteration, optional backtracking line search; imposed DOFs eliminated.
+// Newton-Raphson iteration of one step of the rolling Solver (README Sec. 6, R-40, R-42, R-44):
+// the first assembly records the sparse pattern; from it the driver chooses a band LU (assembly
+// straight into its band) or SparseLU (pattern analysed once, again only if it ever changes),
+// factorised per iteration; optional backtracking line search; imposed DOFs eliminated.
 // Only the iteration: the caller commits the converged increments. Internal to kernels/rolling.
 #pragma once
 
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "kernels/rolling/assembly.hpp"
+#include "kernels/rolling/band_lu.hpp"
 #include "kernels/rolling/solver.hpp"
 
 namespace rollspec::rolling {
@@ -32,14 +34,28 @@ class NewtonDriver {
   bool solve(const SolverOptions& options, const Assemble& assemble, Eigen::VectorXd& q, Eigen::VectorXd& R,
              StepReport& rep);
 
+  // Analyses of a new pattern before a factorisation (SparseLU::analyzePattern, or the band set up).
   int pattern_analyses() const { return analyses_; }
+  // The linear solver in use after the first iteration (Band or Sparse).
+  LinearSolver linear_solver() const { return banded_ ? LinearSolver::Band : LinearSolver::Sparse; }
 
  private:
   const std::vector<int>& eq_;
   int neq_ = 0;
   SparseSink sink_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
-  int analyses_ = 0;  // SparseLU::analyzePattern calls
+  int analyses_ = 0;
+  BandLU band_;
+  BandSink band_sink_;
+  bool banded_ = false;
+  Eigen::VectorXd rf_, dq_, q_acc_;  // sized once, reused by every step
+
+  // After a recording pass: band or sparse for the new pattern.
+  void choose_solver(LinearSolver wanted);
 };
+
+// the band when its storage n (2 kl + ku + 1) is at most 4 times the pattern's entries
+// (a beam numbered along its length: about 2.4), else the sparse LU.
+bool band_pays(int n, int kl, int ku, long long entries);
 
 }  // namespace rollspec::rolling

@@ -2,7 +2,8 @@
 // trapezoidal (beta = 1/4, gamma = 1/2) applied to the material incremental Rodrigues
 // vector b = R_n^T a (README Eq. R-30..R-33):
 //   W_{n+1} = 2 b/dt - W_n,  A_{n+1} = 4 (b - dt W_n)/dt^2 - A_n     (body-frame vectors)
-//   inertia pseudo-moment  r(a) = Xi(a)^T Q(a) R_n (J A + W x J W)
+//   inertia pseudo-moment  r(a) = Xi(a)^T Q(a) R_n (J A + W x J W) = Xi(a) R_n (J A + W x J W)
+// with its tangent written out (R-33a); the Jet2<3> versions are kept as references.
 // This is the material-frame Newmark scheme of Simo & Vu-Quoc (1988, CMAME 66:125-161,
 // Sec. 4) with the Cayley/Rodrigues map in place of the exponential map, as used for
 // Rodrigues-parameter beams by Gay Neto, Pimenta & Martins (2013) [seed 000 ref. 12].
@@ -35,6 +36,12 @@ void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Ve
 RotaryInertiaEval rotary_inertia_midpoint(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
                                           const Eigen::Vector3d& Wn, double dt,
                                           const Eigen::Vector3d& alpha);
+// The same with Jet2<3> (R-33): the plain references of the analytic tangents above (R-33a).
+RotaryInertiaEval rotary_inertia_reference(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn, const Eigen::Vector3d& Wn,
+                                           const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha);
+RotaryInertiaEval rotary_inertia_midpoint_reference(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
+                                                    const Eigen::Vector3d& Wn, double dt, const Eigen::Vector3d& alpha);
+
 void rotary_midpoint_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
                             Eigen::Vector3d& W, Eigen::Vector3d& A);
 

@@ -28,6 +28,10 @@ enum class Analysis { QuasiStatic, Dynamic };
 // models only (beam strain energy has no discrete gradient here): the Solver refuses beams.
 enum class Integrator { Newmark, EnergyConsistent };
 
+// Linear solver of the Newton steps (README R-44): a band LU with partial pivoting when the
+// tangent's band holds few zeros (beams numbered along their length), else SparseLU.
+enum class LinearSolver { Automatic, Band, Sparse };
+
 struct SolverOptions {
   Analysis analysis = Analysis::Dynamic;
   int max_iterations = 30;
@@ -45,6 +49,7 @@ struct SolverOptions {
   // max_new_penetration > 0: a converged step in which a contact closes with -g_n larger than
   // this is rejected and halved (counts as a cut; accepted once max_cuts is reached).
   double max_new_penetration = 0.0;
+  LinearSolver linear_solver = LinearSolver::Automatic;
 };
 
 struct NodeState {
@@ -132,7 +137,8 @@ class Solver {
   // Reactions at the imposed DOFs (model.imposed order), from the last converged step.
   const std::vector<double>& reactions() const { return reactions_; }
   std::vector<BeamResultant> beam_resultants() const;
-  // Number of SparseLU::analyzePattern calls so far (1 after the first iteration).
+  // Analyses of the tangent's pattern so far (SparseLU::analyzePattern or the band LU set up; 1
+  // after the first iteration).
   int pattern_analyses() const;
   // Lumped node masses (rigid-body mass + row sums of the consistent beam mass), R-54.
   const std::vector<double>& node_masses() const { return node_mass_; }

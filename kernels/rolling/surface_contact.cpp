@@ -9,7 +9,8 @@ using Eigen::Matrix3d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law, const Vector3d& x) {
+SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law, const Vector3d& x,
+                                            const Vector2d* start) {
   SurfaceContactEval e;
   const Plane& b = f.base;
   const Vector3d y0 = x - b.point;
@@ -18,9 +19,13 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
   const bool grid = f.n2 > 1;
   // closest point: grad_s D = (s - xi) - (zeta - h) grad h = 0,
   // H = I + grad h grad h^T - (zeta - h) Hess h
-  Vector2d s = xi;
-  HeightSample hs = sample_height(f, s);
   const double cell = grid ? std::min(f.ds1, f.ds2) : f.ds1;
+  Vector2d s = xi;
+  if (start && std::isfinite((*start)(0)) && std::isfinite((*start)(1)) && (*start - xi).norm() <= 4.0 * cell) {
+    s = *start;
+    if (!grid) s(1) = xi(1);  // a line profile: s2 follows the centre exactly
+  }
+  HeightSample hs = sample_height(f, s);
   e.converged = false;
   for (int it = 0; it < 60; ++it) {
     Vector2d G = (s - xi) - (zeta - hs.h) * hs.grad;
@@ -32,8 +37,10 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
       H(1, 1) = 1.0;
     }
     Vector2d d;
-    Eigen::SelfAdjointEigenSolver<Matrix2d> es(H);
-    if (es.eigenvalues()(0) > 1e-12) d = -H.ldlt().solve(G);
+    // smallest eigenvalue of the symmetric 2 x 2 H in closed form
+    const double mean = 0.5 * (H(0, 0) + H(1, 1)), half = 0.5 * (H(0, 0) - H(1, 1));
+    const double lambda_min = mean - std::sqrt(half * half + H(0, 1) * H(0, 1));
+    if (lambda_min > 1e-12) d = -H.ldlt().solve(G);
     else d = -G;  // not a minimum yet: descend
     const double dn = d.norm();
     if (dn > cell) d *= cell / dn;  // at most one cell per iteration

@@ -37,8 +37,11 @@ struct SurfaceContactEval {
   double damping_force = 0.0;  // c_n damper along nu (set by the solver, R-64)
 };
 
-// Closest point and gap for the centre x (Newton from the projection of x on the base plane).
+// Closest point and gap for the centre x (Newton from the projection of x on the base plane, or
+// from `start`, the last closest point of the same node, when it lies within 4 cells of it: the
+// node moves far less than a cell between Newton iterates and steps, so the search converges in
+// one or two iterations instead of three or four; the same point to the Newton tolerance).
 SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law,
-                                            const Eigen::Vector3d& x);
+                                            const Eigen::Vector3d& x, const Eigen::Vector2d* start = nullptr);
 
 }  // namespace rollspec::rolling

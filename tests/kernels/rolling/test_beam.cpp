@@ -3,10 +3,13 @@
 // the cantilever rolled into a full circle by an end moment 2 pi E I / L.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "kernels/rolling/beam_element.hpp"
+#include "kernels/rolling/rotary_inertia.hpp"
 #include "kernels/rolling/rotation.hpp"
 #include "kernels/rolling/solver.hpp"
 
@@ -199,6 +202,81 @@ TEST_CASE("beam point energy: fast bilinear path = Jet2<9> reference oracle") {
   CHECK((f.grad - r.grad).cwiseAbs().maxCoeff() < 1e-12 * r.grad.cwiseAbs().maxCoeff());
   CHECK((f.hess - r.hess).cwiseAbs().maxCoeff() < 1e-12 * r.hess.cwiseAbs().maxCoeff());
   CHECK((f.hess - f.hess.transpose()).cwiseAbs().maxCoeff() < 1e-12 * f.hess.cwiseAbs().maxCoeff());
+}
+
+// Largest entry difference over the largest entry of the reference.
+template <class A, class B>
+double rel_diff(const A& a, const B& ref) {
+  return (a - ref).cwiseAbs().maxCoeff() / ref.cwiseAbs().maxCoeff();
+}
+
+TEST_CASE("beam element: analytic force and tangent (R-14a) = the Jet2<3> reference on random states") {
+  std::mt19937_64 rng(18);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto vec = [&](double scale) { return Vector3d(scale * u(rng), scale * u(rng), scale * u(rng)); };
+  double worst_f = 0.0, worst_k = 0.0, worst_p = 0.0;
+  for (int trial = 0; trial < 40; ++trial) {
+    BeamSection s;
+    s.EA = 1e8 * (1.5 + u(rng));
+    s.GA2 = 0.4e8 * (1.5 + u(rng));
+    s.GA3 = 0.3e8 * (1.5 + u(rng));
+    s.GJ = 2e3 * (1.5 + u(rng));
+    s.EI2 = 1e3 * (1.5 + u(rng));
+    s.EI3 = 1.2e3 * (1.5 + u(rng));
+    // element of length 0.25 along a random direction, committed frames and curvatures random;
+    // increments up to 2.4 in |a| (a rotation of 100 degrees) in the large-rotation trials
+    const double big = trial % 2 == 0 ? 1.4 : 0.05;
+    std::array<BeamStiffPoint, 2> gp;
+    for (int k = 0; k < 2; ++k) {
+      gp[k].xi = k == 0 ? -1.0 / std::sqrt(3.0) : 1.0 / std::sqrt(3.0);
+      gp[k].weight = 1.0;
+      gp[k].jac = 0.125 * (1.0 + 0.1 * u(rng));
+      gp[k].R = rodrigues_q(vec(3.0));
+      gp[k].K = vec(2.0);
+    }
+    const Vector3d dir = rodrigues_q(vec(3.0)).col(0);
+    std::array<Vector3d, 3> x, a;
+    for (int k = 0; k < 3; ++k) {
+      x[k] = 0.125 * (k - 1) * dir + vec(0.01);
+      a[k] = vec(big);
+    }
+    const BeamElementEval f = beam_element_internal(s, gp, x, a, true);
+    const BeamElementEval r = beam_element_internal_reference(s, gp, x, a, true);
+    worst_f = std::max(worst_f, rel_diff(f.force, r.force));
+    worst_k = std::max(worst_k, rel_diff(f.tangent, r.tangent));
+    CHECK(std::abs(f.energy - r.energy) <= 1e-12 * std::abs(r.energy));
+    Eigen::Matrix<double, 9, 1> z;
+    z << vec(1.0), a[0], vec(big);
+    const PointEnergy pa = beam_point_energy(s, gp[0], z), pj = beam_point_energy_jet(s, gp[0], z);
+    worst_p = std::max({worst_p, rel_diff(pa.grad, pj.grad), rel_diff(pa.hess, pj.hess)});
+  }
+  MESSAGE("analytic vs Jet2<3>: force " << worst_f << ", tangent " << worst_k << ", point grad/hess " << worst_p);
+  CHECK(worst_f < 1e-10);
+  CHECK(worst_k < 1e-10);
+  CHECK(worst_p < 1e-10);
+}
+
+TEST_CASE("rotary inertia: analytic tangent (R-33a) = the Jet2<3> reference, Newmark and midpoint") {
+  std::mt19937_64 rng(33);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto vec = [&](double scale) { return Vector3d(scale * u(rng), scale * u(rng), scale * u(rng)); };
+  double worst = 0.0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Matrix3d J = Vector3d(2.0 + u(rng), 1.0 + 0.5 * u(rng), 1.0 + 0.5 * u(rng)).asDiagonal();
+    const Matrix3d Rn = rodrigues_q(vec(3.0));
+    const Vector3d Wn = vec(50.0), An = vec(1e3), alpha = vec(trial % 2 == 0 ? 1.5 : 1e-3);
+    const double dt = trial % 2 == 0 ? 1e-2 : 2.5e-5;
+    const RotaryInertiaEval a = rotary_inertia(J, Rn, Wn, An, dt, alpha), r = rotary_inertia_reference(J, Rn, Wn, An, dt, alpha);
+    const RotaryInertiaEval am = rotary_inertia_midpoint(J, Rn, Wn, dt, alpha),
+                            rm = rotary_inertia_midpoint_reference(J, Rn, Wn, dt, alpha);
+    worst = std::max({worst, rel_diff(a.residual, r.residual), rel_diff(a.tangent, r.tangent),
+                      rel_diff(am.residual, rm.residual), rel_diff(am.tangent, rm.tangent)});
+    CHECK(rel_diff(a.W, r.W) < 1e-14);
+    CHECK(rel_diff(a.A, r.A) < 1e-14);
+    CHECK(rel_diff(am.A, rm.A) < 1e-14);
+  }
+  MESSAGE("rotary inertia analytic vs Jet2<3>: " << worst);
+  CHECK(worst < 1e-10);
 }
 
 TEST_CASE("step cutting: a load step too large for Newton is halved and reaches the same state") {

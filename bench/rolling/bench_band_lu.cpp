@@ -1,0 +1,118 @@
+// Linear solvers of the rolling Newton step on a rolling tube's tangent (README R-44): band LU
+// (partial pivoting) against Eigen's dense PartialPivLU and SparseLU (pattern analysed once), each
+// factor + solve timed in the same run (median of repeated batches). CSV on stdout.
+//   usage: bench_band_lu [elements (default 4)] [batches (default 21)]
+#include <Eigen/Dense>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "kernels/rolling/assembly.hpp"
+#include "kernels/rolling/band_lu.hpp"
+#include "kernels/rolling/contact_set.hpp"
+
+using namespace rollspec::rolling;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+namespace {
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+// Steel tube 60 x 4 mm, 1 m, on a wavy grid with rolling friction and dampers at every node (the
+// rolling-pipe study's model), at its initial state.
+Model tube(int elements) {
+  Model m;
+  m.sections.push_back(circular_section(2.1e11, 0.3, 7850, 0.06, 0.052));
+  const double r = 0.03;
+  const std::vector<int> ids = add_straight_beam(m, Vector3d(0.0, -0.5, r - 2e-5), Vector3d(0.0, 0.5, r - 2e-5), elements, 0,
+                                                 Vector3d::UnitX());
+  HeightField f;
+  f.base = make_plane(Vector3d::Zero(), Vector3d::UnitZ());
+  f.n1 = 60;
+  f.n2 = 120;
+  f.ds1 = f.ds2 = 0.01;
+  f.s1_0 = -0.1;
+  f.s2_0 = -0.6;
+  for (int j = 0; j < f.n2; ++j)
+    for (int i = 0; i < f.n1; ++i) f.h.push_back(2e-5 * std::sin(40.0 * (f.s1_0 + i * f.ds1) + 0.3 * j));
+  m.surfaces.push_back(f);
+  for (int id : ids) m.surface_contacts.push_back(SurfaceContactPair{id, 0, SurfaceContactLaw{r, 5e6, 0.3, 1e6, true, 60.0}});
+  m.v0.assign(m.X.size(), Vector3d(0.5, 0.0, 0.0));
+  m.w0.assign(m.X.size(), Vector3d(0.0, 0.5 / r, 0.0));
+  m.gravity = Vector3d(0, 0, -9.81);
+  return m;
+}
+
+template <class F>
+double median_us(int batches, int reps, F&& f) {
+  std::vector<double> t;
+  for (int b = 0; b < batches; ++b) {
+    const double t0 = now();
+    for (int r = 0; r < reps; ++r) f();
+    t.push_back(1e6 * (now() - t0) / reps);
+  }
+  std::nth_element(t.begin(), t.begin() + batches / 2, t.end());
+  return t[static_cast<std::size_t>(batches / 2)];
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int elements = argc > 1 ? std::atoi(argv[1]) : 4;
+  const int batches = argc > 2 ? std::atoi(argv[2]) : 21;
+  const Model m = tube(elements);
+  const std::vector<NodeState> nodes = initial_nodes(m);
+  const BeamPoints points = make_beam_points(m);
+  ContactSet contacts(m, nodes);
+  const int n = 6 * static_cast<int>(m.X.size());
+  std::vector<int> eq(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) eq[static_cast<std::size_t>(i)] = i;
+  VectorXd q(n), R;
+  for (int k = 0; k < n; ++k) q(k) = 1e-6 * std::sin(0.7 * k);
+  SparseSink ss;
+  ss.eq = &eq;
+  ss.neq = n;
+  ss.begin();
+  assemble(AssemblyState{m, nodes, points, 0.0}, TimeRule(TimeRule::Kind::Newmark), contacts, q, 2.5e-5, 2.5e-5, false, R, &ss);
+  ss.finish();
+  int kl = 0, ku = 0;
+  for (int c = 0; c < n; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(ss.A, c); it; ++it) {
+      kl = std::max(kl, static_cast<int>(it.row()) - c);
+      ku = std::max(ku, c - static_cast<int>(it.row()));
+    }
+  const Eigen::MatrixXd D = Eigen::MatrixXd(ss.A);
+  const int reps = std::max(1, 20000 / n);
+  BandLU band(n, kl, ku);
+  VectorXd x(n);
+  const double t_band = median_us(batches, reps, [&]() {
+    band.set_zero();  // as BandSink::begin: the fill rows of the last factorisation are cleared
+    for (int c = 0; c < n; ++c)
+      for (int r = std::max(0, c - ku); r <= std::min(n - 1, c + kl); ++r) band.at(r, c) = D(r, c);
+    band.factorize();
+    x = -R;
+    band.solve(x.data());
+  });
+  Eigen::PartialPivLU<Eigen::MatrixXd> dense(n);
+  VectorXd xd(n);
+  const double t_dense = median_us(batches, reps, [&]() {
+    dense.compute(D);
+    xd = dense.solve(-R);
+  });
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparse;
+  sparse.analyzePattern(ss.A);
+  VectorXd xs(n);
+  const double t_sparse = median_us(batches, reps, [&]() {
+    sparse.factorize(ss.A);
+    xs = sparse.solve(-R);
+  });
+  std::fprintf(stderr, "residuals: band %.2e dense %.2e sparse %.2e; |x| %.2e %.2e %.2e\n", (D * x + R).norm() / R.norm(),
+               (D * xd + R).norm() / R.norm(), (D * xs + R).norm() / R.norm(), x.norm(), xd.norm(), xs.norm());
+  std::printf("n,kl,ku,nonzeros,band_us,dense_us,sparse_us,band_over_dense,band_over_sparse,band_vs_dense_rel\n");
+  std::printf("%d,%d,%d,%ld,%.2f,%.2f,%.2f,%.3f,%.3f,%.2e\n", n, kl, ku, static_cast<long>(ss.A.nonZeros()), t_band, t_dense,
+              t_sparse, t_band / t_dense, t_band / t_sparse, (x - xd).norm() / xd.norm());
+  return 0;
+}

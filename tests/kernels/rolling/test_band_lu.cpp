@@ -1,0 +1,185 @@
+// Band LU with partial pivoting (kernels/rolling/band_lu, README R-44) against Eigen's dense
+// PartialPivLU and the SparseLU it replaces for beams: random band matrices that need row
+// interchanges, the band assembly against the sparse one, and whole runs with either solver.
+#include <doctest/doctest.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "kernels/rolling/assembly.hpp"
+#include "kernels/rolling/band_lu.hpp"
+#include "kernels/rolling/contact_set.hpp"
+#include "kernels/rolling/newton.hpp"
+#include "kernels/rolling/solver.hpp"
+
+using namespace rollspec::rolling;
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+TEST_CASE("band LU: solves random band matrices as dense partial-pivoting LU does, pivoting included") {
+  std::mt19937_64 rng(44);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int shapes[][3] = {{1, 0, 0}, {5, 1, 1}, {12, 0, 3}, {20, 4, 0}, {54, 17, 17}, {60, 5, 11}, {200, 17, 17}};
+  for (const auto& sh : shapes) {
+    const int n = sh[0], kl = sh[1], ku = sh[2];
+    for (const bool weak_diagonal : {false, true}) {  // weak: the pivots come from below the diagonal
+      if (weak_diagonal && (kl == 0 || ku == 0)) continue;  // a triangular band with a weak diagonal is singular
+      MatrixXd A = MatrixXd::Zero(n, n);
+      BandLU lu(n, kl, ku);
+      for (int j = 0; j < n; ++j)
+        for (int i = std::max(0, j - ku); i <= std::min(n - 1, j + kl); ++i) {
+          double v = u(rng);
+          if (i == j) v = weak_diagonal ? 1e-3 * v : v + (v < 0 ? -(kl + ku + 1.0) : kl + ku + 1.0);
+          A(i, j) = v;
+          lu.at(i, j) = v;
+        }
+      VectorXd b(n);
+      for (int i = 0; i < n; ++i) b(i) = u(rng);
+      REQUIRE(lu.factorize());
+      VectorXd x = b;
+      lu.solve(x.data());
+      const VectorXd xd = A.partialPivLu().solve(b);
+      // normwise backward error (a triangular band with a weak diagonal is ill-conditioned)
+      const double rel = (x - xd).norm() / xd.norm(), res = (A * x - b).norm() / (A.norm() * x.norm() + b.norm());
+      CAPTURE(n);
+      CAPTURE(kl);
+      CAPTURE(ku);
+      CAPTURE(weak_diagonal);
+      // forward error within the condition number times round-off (threshold pivoting, R-44, may
+      // take other rows than dense partial pivoting; a weak triangular band is ill-conditioned)
+      const Eigen::VectorXd sv = Eigen::JacobiSVD<MatrixXd>(A).singularValues();
+      const double cond = sv(0) / sv(n - 1);
+      CAPTURE(cond);
+      CHECK(rel < 1e-13 * std::max(1.0, cond));
+      if (!weak_diagonal) CHECK(rel < 1e-12);
+      CHECK(res < 1e-14);
+    }
+  }
+  BandLU singular(3, 1, 1);  // a zero column is refused
+  singular.at(0, 0) = 1.0;
+  singular.at(2, 2) = 1.0;
+  CHECK_FALSE(singular.factorize());
+}
+
+namespace {
+
+// A tube of four quadratic elements on a wavy grid with rolling friction and dampers at every node
+// (the rolling-pipe scene's model at a smaller scale), rolling at 0.5 m/s.
+Model rolling_tube() {
+  Model m;
+  m.sections.push_back(circular_section(2.1e11, 0.3, 7850, 0.06, 0.052));
+  const double r = 0.03;
+  const std::vector<int> ids = add_straight_beam(m, Vector3d(0.0, -0.5, r - 2e-5), Vector3d(0.0, 0.5, r - 2e-5), 4, 0,
+                                                 Vector3d::UnitX());
+  HeightField f;
+  f.base = make_plane(Vector3d::Zero(), Vector3d::UnitZ());
+  f.n1 = 60;
+  f.n2 = 120;
+  f.ds1 = f.ds2 = 0.01;
+  f.s1_0 = -0.1;
+  f.s2_0 = -0.6;
+  for (int j = 0; j < f.n2; ++j)
+    for (int i = 0; i < f.n1; ++i)
+      f.h.push_back(2e-5 * std::sin(40.0 * (f.s1_0 + i * f.ds1) + 0.3 * j) * std::cos(13.0 * (f.s2_0 + j * f.ds2)));
+  m.surfaces.push_back(f);
+  for (int id : ids) {
+    SurfaceContactLaw law;
+    law.radius = r;
+    law.eps_n = 5e6;
+    law.mu = 0.3;
+    law.eps_t = 1e6;
+    law.damping = 60.0;
+    m.surface_contacts.push_back(SurfaceContactPair{id, 0, law});
+  }
+  m.v0.assign(m.X.size(), Vector3d(0.5, 0.0, 0.0));
+  m.w0.assign(m.X.size(), Vector3d(0.0, 0.5 / r, 0.0));
+  m.gravity = Vector3d(0, 0, -9.81);
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("band LU: the rolling tube's tangent, assembled into the band, solves as SparseLU does") {
+  const Model m = rolling_tube();
+  const std::vector<NodeState> nodes = initial_nodes(m);
+  const BeamPoints points = make_beam_points(m);
+  ContactSet contacts(m, nodes);
+  const int n = 6 * static_cast<int>(m.X.size());
+  std::vector<int> eq(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) eq[static_cast<std::size_t>(i)] = i;
+  const AssemblyState state{m, nodes, points, 0.0};
+  const TimeRule rule(TimeRule::Kind::Newmark);
+  VectorXd q(n);
+  for (int k = 0; k < n; ++k) q(k) = 1e-6 * std::sin(0.7 * k);
+  SparseSink ss;
+  ss.eq = &eq;
+  ss.neq = n;
+  VectorXd Rs, Rb;
+  ss.begin();
+  assemble(state, rule, contacts, q, 2.5e-5, 2.5e-5, false, Rs, &ss);
+  ss.finish();
+  int kl = 0, ku = 0;
+  for (int c = 0; c < n; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(ss.A, c); it; ++it) {
+      kl = std::max(kl, static_cast<int>(it.row()) - c);
+      ku = std::max(ku, c - static_cast<int>(it.row()));
+    }
+  CHECK(kl == 17);  // an element couples three neighbouring nodes
+  CHECK(ku == 17);
+  CHECK(band_pays(n, kl, ku, ss.A.nonZeros()));
+  BandLU band(n, kl, ku);
+  BandSink bs;
+  bs.eq = &eq;
+  bs.lu = &band;
+  bs.begin();
+  ContactSet fresh(m, nodes);  // the closest-point searches start as the first pass's did
+  assemble(state, rule, fresh, q, 2.5e-5, 2.5e-5, false, Rb, &bs);
+  CHECK_FALSE(bs.mismatch);
+  const MatrixXd Ks = MatrixXd(ss.A);
+  int differ = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) differ += band.in_band(i, j) ? (band.at(i, j) != Ks(i, j)) : (Ks(i, j) != 0.0);
+  CHECK(differ == 0);  // the same sums in the same order
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> slu(ss.A);
+  REQUIRE(slu.info() == Eigen::Success);
+  const VectorXd xs = slu.solve(-Rs);
+  REQUIRE(band.factorize());
+  VectorXd xb = -Rb;
+  band.solve(xb.data());
+  MESSAGE("band vs SparseLU on the tube tangent: " << (xb - xs).norm() / xs.norm());
+  CHECK((xb - xs).norm() < 1e-12 * xs.norm());
+}
+
+TEST_CASE("band LU: a rolling tube run with the band solver follows the SparseLU run to round-off") {
+  RunOptions ro;
+  ro.dt = 2.5e-5;
+  ro.t_end = 0.02;
+  ro.record_every = 40;
+  ro.record_energies = false;
+  SolverOptions band, sparse;
+  band.linear_solver = LinearSolver::Band;
+  sparse.linear_solver = LinearSolver::Sparse;
+  const History hb = run(rolling_tube(), band, ro), hs = run(rolling_tube(), sparse, ro);
+  REQUIRE(hb.completed);
+  REQUIRE(hs.completed);
+  double worst_x = 0.0, worst_a = 0.0, scale_a = 0.0;
+  for (std::size_t k = 0; k < hb.time.size(); ++k)
+    for (std::size_t j = 0; j < hb.position[k].size(); ++j) {
+      worst_x = std::max(worst_x, (hb.position[k][j] - hs.position[k][j]).norm());
+      worst_a = std::max(worst_a, (hb.acceleration[k][j] - hs.acceleration[k][j]).norm());
+      scale_a = std::max(scale_a, hs.acceleration[k][j].norm());
+    }
+  MESSAGE("band vs sparse over " << hb.steps << " steps (" << hb.newton_iterations << " / " << hs.newton_iterations
+                                 << " Newton iterations): positions " << worst_x << " m, accelerations " << worst_a
+                                 << " of " << scale_a << " m/s^2");
+  CHECK(worst_x < 1e-12);
+  CHECK(worst_a < 1e-6 * scale_a);
+  Solver s(rolling_tube(), SolverOptions{});
+  REQUIRE(s.advance(2.5e-5).converged);
+  CHECK(s.pattern_analyses() == 1);
+}
