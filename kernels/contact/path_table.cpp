@@ -1,0 +1,127 @@
+#include "kernels/contact/path_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+
+#include "kernels/contact/blocked_force.hpp"
+
+namespace rollspec::contact {
+
+namespace {
+
+// z_ball(r) of README Eq. 5 (as ball_gap and blocked_force).
+double ball_height(double r2, double radius, BallShape shape) {
+  if (shape == BallShape::Paraboloid) return r2 / (2.0 * radius);
+  return r2 < radius * radius ? r2 / (radius + std::sqrt(radius * radius - r2)) : radius;
+}
+
+}  // namespace
+
+std::vector<double> first_contact_approach(const Grid& strip, const std::vector<double>& heights, double radius,
+                                           BallShape shape, const std::vector<double>& positions, double centre_y,
+                                           std::size_t half_columns) {
+  check_grid(strip);
+  if (!heights.empty() && heights.size() != strip.size())
+    throw std::invalid_argument("first_contact_approach: heights size != strip grid size");
+  std::vector<double> out(positions.size());
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    std::size_t lo = 0, hi = strip.nx;
+    if (half_columns > 0) {
+      const double col = positions[k] / strip.dx + 0.5 * static_cast<double>(strip.nx - 1);
+      const double a = std::max(0.0, std::floor(col) - static_cast<double>(half_columns));
+      const double b = std::min(static_cast<double>(strip.nx), std::ceil(col) + static_cast<double>(half_columns) + 1.0);
+      lo = static_cast<std::size_t>(a);
+      hi = static_cast<std::size_t>(std::max(a, b));
+    }
+    double m = std::numeric_limits<double>::infinity();  // B42: min_i s_i
+    for (std::size_t iy = 0; iy < strip.ny; ++iy) {
+      const double ry = strip.y(iy) - centre_y;
+      for (std::size_t ix = lo; ix < hi; ++ix) {
+        const double rx = strip.x(ix) - positions[k];
+        const double s = ball_height(rx * rx + ry * ry, radius, shape) - (heights.empty() ? 0.0 : heights[iy * strip.nx + ix]);
+        m = std::min(m, s);
+      }
+    }
+    out[k] = m;
+  }
+  return out;
+}
+
+std::vector<double> path_table_approaches(const std::vector<double>& first_contact, double load, double e_star,
+                                          double radius, const PathTableOptions& o) {
+  if (first_contact.empty()) throw std::invalid_argument("path_table: no positions");
+  if (o.approaches < 2) throw std::invalid_argument("path_table: at least 2 approaches");
+  if (!(load > 0.0) || !(e_star > 0.0) || !(radius > 0.0) || !(o.reach > 0.0))
+    throw std::invalid_argument("path_table: load, E*, radius and reach must be > 0");
+  const double d_hertz = std::pow(3.0 * load / (4.0 * e_star * std::sqrt(radius)), 2.0 / 3.0);  // BF-4
+  const auto mm = std::minmax_element(first_contact.begin(), first_contact.end());
+  const double lo = *mm.first, hi = *mm.second + o.reach * d_hertz;  // B43
+  std::vector<double> d(o.approaches);
+  for (std::size_t j = 0; j < d.size(); ++j)
+    d[j] = lo + (hi - lo) * static_cast<double>(j + 1) / static_cast<double>(o.approaches);
+  return d;
+}
+
+PathTable build_path_table(const Grid& window, double e_star, const Grid& strip, const std::vector<double>& heights,
+                           double radius, BallShape shape, const std::vector<double>& positions, double load,
+                           const SolverOptions& options, const PathTableOptions& path_options) {
+  PathTable t;
+  t.position = positions;
+  t.first_contact = first_contact_approach(strip, heights, radius, shape, positions, path_options.centre_y, window.nx / 2 + 1);
+  t.approach = path_table_approaches(t.first_contact, load, e_star, radius, path_options);
+  const std::size_t nj = t.approach.size(), nk = positions.size();
+  t.force.assign(nj * nk, 0.0);
+  SolverOptions opt = options;
+  opt.compute_stiffness = false;
+  BlockedForceOptions bo;
+  bo.centre_y = path_options.centre_y;
+  std::vector<BlockedForcePath> rows(nj);
+  std::exception_ptr error;
+  // One approach per thread (each its own solver; the product inside runs on that thread alone).
+  // The rows' numbers do not depend on which thread ran them.
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::ptrdiff_t j = static_cast<std::ptrdiff_t>(nj) - 1; j >= 0; --j) {
+    try {
+      ContactSolver solver(window, e_star);
+      rows[static_cast<std::size_t>(j)] =
+          blocked_force_path(solver, strip, heights, radius, shape, positions, t.approach[static_cast<std::size_t>(j)], opt, bo);
+    } catch (...) {
+#pragma omp critical(path_table_error)
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  t.converged = true;
+  for (std::size_t j = 0; j < nj; ++j) {
+    const BlockedForcePath& r = rows[j];
+    t.solves += r.solves;
+    t.iterations += r.iterations;
+    t.max_error = std::max(t.max_error, r.max_error);
+    t.converged = t.converged && r.converged;
+    for (std::size_t k = 0; k < nk; ++k) {
+      // B44: P non-decreasing in δ (the running maximum acts at the solver's tolerance only), 0 at
+      // or below first contact.
+      double p = t.approach[j] > t.first_contact[k] ? std::max(r.force[k], 0.0) : 0.0;
+      if (j > 0) p = std::max(p, t.force[(j - 1) * nk + k]);
+      t.force[j * nk + k] = p;
+    }
+  }
+  return t;
+}
+
+double path_force_direct(const Grid& strip, const std::vector<double>& heights, double e_star, double radius,
+                         BallShape shape, double x, double centre_y, double approach, const SolverOptions& options) {
+  SolverOptions opt = options;
+  opt.compute_stiffness = false;
+  ContactSolver solver(strip, e_star);
+  const std::vector<double> gap = ball_gap(strip, radius, heights, shape, x, centre_y);
+  std::vector<double> p;
+  const ContactResult r = solver.solve(gap, approach, p, opt);
+  if (!r.converged) throw std::runtime_error("path_force_direct: contact solve did not converge");
+  return r.force;
+}
+
+}  // namespace rollspec::contact
