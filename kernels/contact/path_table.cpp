@@ -72,42 +72,72 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
   t.position = positions;
   t.first_contact = first_contact_approach(strip, heights, radius, shape, positions, path_options.centre_y, window.nx / 2 + 1);
   t.approach = path_table_approaches(t.first_contact, load, e_star, radius, path_options);
-  const std::size_t nj = t.approach.size(), nk = positions.size();
-  t.force.assign(nj * nk, 0.0);
+  const std::size_t nk = positions.size();
   SolverOptions opt = options;
   opt.compute_stiffness = false;
   BlockedForceOptions bo;
   bo.centre_y = path_options.centre_y;
-  std::vector<BlockedForcePath> rows(nj);
-  std::exception_ptr error;
   // One approach per thread (each its own solver; the product inside runs on that thread alone).
-  // The rows' numbers do not depend on which thread ran them.
+  // The rows' numbers do not depend on which thread ran them. `strict`: a refused row (BF-5) is an
+  // error; otherwise it and the rows above it are dropped (the extension of B43a stops there).
+  const auto run_rows = [&](const std::vector<double>& d, bool strict) {
+    std::vector<BlockedForcePath> rows(d.size());
+    std::vector<unsigned char> refused(d.size(), 0);
+    std::exception_ptr error;
 #pragma omp parallel for schedule(dynamic, 1)
-  for (std::ptrdiff_t j = static_cast<std::ptrdiff_t>(nj) - 1; j >= 0; --j) {
-    try {
-      ContactSolver solver(window, e_star);
-      rows[static_cast<std::size_t>(j)] =
-          blocked_force_path(solver, strip, heights, radius, shape, positions, t.approach[static_cast<std::size_t>(j)], opt, bo);
-    } catch (...) {
+    for (std::ptrdiff_t j = static_cast<std::ptrdiff_t>(d.size()) - 1; j >= 0; --j) {
+      const auto u = static_cast<std::size_t>(j);
+      try {
+        ContactSolver solver(window, e_star);
+        rows[u] = blocked_force_path(solver, strip, heights, radius, shape, positions, d[u], opt, bo);
+      } catch (const std::invalid_argument&) {
+        if (strict) {
 #pragma omp critical(path_table_error)
-      if (!error) error = std::current_exception();
+          if (!error) error = std::current_exception();
+        }
+        refused[u] = 1;
+      } catch (...) {
+#pragma omp critical(path_table_error)
+        if (!error) error = std::current_exception();
+      }
     }
-  }
-  if (error) std::rethrow_exception(error);
+    if (error) std::rethrow_exception(error);
+    const auto first_refused = static_cast<std::size_t>(std::find(refused.begin(), refused.end(), 1) - refused.begin());
+    rows.resize(first_refused);
+    return rows;
+  };
   t.converged = true;
-  for (std::size_t j = 0; j < nj; ++j) {
-    const BlockedForcePath& r = rows[j];
-    t.solves += r.solves;
-    t.iterations += r.iterations;
-    t.max_error = std::max(t.max_error, r.max_error);
-    t.converged = t.converged && r.converged;
-    for (std::size_t k = 0; k < nk; ++k) {
-      // B44: P non-decreasing in δ (the running maximum acts at the solver's tolerance only), 0 at
-      // or below first contact.
-      double p = t.approach[j] > t.first_contact[k] ? std::max(r.force[k], 0.0) : 0.0;
-      if (j > 0) p = std::max(p, t.force[(j - 1) * nk + k]);
-      t.force[j * nk + k] = p;
+  // Appends rows (B44: P non-decreasing in δ by a running maximum that acts at the solver's
+  // tolerance only; 0 at or below first contact); returns min_k P(δ_last, ξ_k).
+  const auto append = [&](const std::vector<BlockedForcePath>& rows) {
+    for (const BlockedForcePath& r : rows) {
+      const std::size_t j = t.force.size() / nk;
+      t.solves += r.solves;
+      t.iterations += r.iterations;
+      t.max_error = std::max(t.max_error, r.max_error);
+      t.converged = t.converged && r.converged;
+      for (std::size_t k = 0; k < nk; ++k) {
+        double p = r.approach > t.first_contact[k] ? std::max(r.force[k], 0.0) : 0.0;
+        if (j > 0) p = std::max(p, t.force[(j - 1) * nk + k]);
+        t.force.push_back(p);
+      }
     }
+    t.top_force = *std::min_element(t.force.end() - static_cast<std::ptrdiff_t>(nk), t.force.end()) / load;
+  };
+  t.force.clear();
+  append(run_rows(t.approach, true));
+  // B43a: a rough strip carries less than the smooth 3^{3/2} W at max δ_c + 3 δ_H; extend upwards
+  // two rows at a time (a fixed batch, so the rows do not depend on the thread count).
+  const double spacing = t.approach[1] - t.approach[0];
+  const std::size_t batch = 2;
+  while (t.top_force < path_options.top_force && t.approach.size() < path_options.max_approaches) {
+    std::vector<double> more;
+    for (std::size_t i = 0; i < batch && t.approach.size() + more.size() < path_options.max_approaches; ++i)
+      more.push_back(t.approach.back() + spacing * static_cast<double>(i + 1));
+    const std::vector<BlockedForcePath> rows = run_rows(more, false);
+    for (const BlockedForcePath& r : rows) t.approach.push_back(r.approach);
+    append(rows);
+    if (rows.size() < more.size()) break;  // the window holds no more (BF-5)
   }
   return t;
 }

@@ -19,16 +19,22 @@ struct PathTableOptions {
   std::size_t approaches = 8;  // J (B43), 2 or more
   double reach = 3.0;          // δ_hi = max_k δ_c + reach · δ_H (B43)
   double centre_y = 0.0;       // lateral coordinate of the path (m)
+  // B43a: rows are added above δ_J, with the same spacing, until every position carries at least
+  // top_force · load at the last approach (0: none), at most max_approaches rows in all; a row the
+  // solver window cannot hold (BF-5) ends the extension.
+  double top_force = 5.0;
+  std::size_t max_approaches = 24;
 };
 
 struct PathTable {
   std::vector<double> position;       // ξ_k (m, strip coordinates), N values
-  std::vector<double> approach;       // δ_j (m, from the plane h = 0), J values, increasing
+  std::vector<double> approach;       // δ_j (m, from the plane h = 0), J or more values (B43a), increasing
   std::vector<double> first_contact;  // δ_c(ξ_k) (m), B42
   std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k]
   int solves = 0, iterations = 0;     // contact solves and their CG iterations
   double max_error = 0.0;             // largest stopping-rule ε (contact README Eq. 9)
   bool converged = false;             // every solve converged
+  double top_force = 0.0;             // min_k P(δ_last, ξ_k) / load (B43a)
 };
 
 // δ_c(ξ_k) = min_i s_i(ξ_k) over the strip (B42); `heights` empty: a smooth strip (δ_c = 0 up to

@@ -97,7 +97,7 @@ std::string PathTableGeometry::describe() const {
   const double dx = base.cell;
   std::snprintf(buf, sizeof buf,
                 "strip 0 of the surface, cell %s (a/%.3g)%s, strip %zu x %zu cells (%s long, %s wide), window %zu cells, "
-                "%zu approaches x %zu positions (step %zu cells = %s) over the ball's path of %s; contact radius a = %s, "
+                "%zu approaches (more until P >= 5 W at every position, B43a) x %zu positions (step %zu cells = %s) over the ball's path of %s; contact radius a = %s, "
                 "texture rms %s; build about %.2g s on one core",
                 um(dx).c_str(), base.contact_radius / dx,
                 base.truncated_wavelength > 0.0 ? (", texture below " + um(base.truncated_wavelength) + " dropped").c_str() : "",
@@ -186,8 +186,8 @@ PathTableData build_path_table(const Study& s, const PathTableGeometry& g, doubl
     throw data_error("path table: a contact solve did not converge (largest error " + num(t.max_error) +
                      "); raise [stiffness] max_iterations or tolerance");
   if (!quiet)
-    std::fprintf(stderr, "%spath table: %d solves, %d CG iterations, %.3g s wall\n", ensemble::rank_prefix().c_str(),
-                 t.solves, t.iterations,
+    std::fprintf(stderr, "%spath table: %zu approaches (last carries >= %.3g W everywhere), %d solves, %d CG iterations, %.3g s wall\n",
+                 ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   PathTableData d;
   for (double x : t.position) d.position.push_back(x - t.position.front());

@@ -65,7 +65,7 @@ def test_plan_lists_the_stage(tmp_path):
     r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, command="plan")
     assert r.returncode == 0, r.stderr
     row = next(l for l in r.stdout.splitlines() if l.startswith("path_table "))
-    for text in ("8 approaches x", "window", "strip", "build about", "K > 1 repeats the same run"):
+    for text in ("8 approaches (more until P >= 5 W", "window", "strip", "build about", "K > 1 repeats the same run"):
         assert text in row, row
 
 

@@ -4,6 +4,8 @@
 // law = hertz in the integrator.
 #include <doctest/doctest.h>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -69,7 +71,7 @@ TEST_CASE("path table on a smooth strip: P(delta_j, xi_k) and its interpolation 
   const contact::PathTable t = contact::build_path_table(c.window, kE, c.strip, {}, kR, contact::BallShape::Paraboloid,
                                                          c.positions, kW, tight());
   REQUIRE(t.converged);
-  REQUIRE(t.approach.size() == 8);
+  REQUIRE(t.approach.size() == 8);  // 3^{3/2} W > 5 W at delta_8: no row added (B43a)
   const double dh = hertz_approach(kW);
   for (double dc : t.first_contact) CHECK(std::fabs(dc) < 1e-20);  // ball on cell centres: B42 = 0
   CHECK(t.approach.back() == doctest::Approx(3.0 * dh).epsilon(1e-12));  // B43
@@ -113,6 +115,9 @@ TEST_CASE("path table on a rough strip: nodes equal direct whole-strip solves, i
   const contact::PathTable t =
       contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid, c.positions, kW, opt);
   REQUIRE(t.converged);
+  // B43a: rows added until every position carries 5 W at the last approach.
+  MESSAGE("rough strip: " << t.approach.size() << " approaches, the last carries " << t.top_force << " W");
+  CHECK(t.top_force >= 5.0);
   const std::size_t nk = t.position.size();
   // B42 against a brute-force minimum of the gap over the whole strip.
   for (std::size_t k = 0; k < nk; ++k) {
@@ -208,4 +213,23 @@ TEST_CASE("law = path on an exact Hertz table reproduces law = hertz in the ball
   MESSAGE("path vs hertz: force " << worst_f << " N, acceleration " << worst_a / scale_a << " of its peak");
   CHECK(worst_f < 1e-9 * m.ball.mass * m.ball.gravity);
   CHECK(worst_a < 1e-8 * scale_a);
+}
+
+TEST_CASE("path table: the same bits on 1 and 2 threads, the extension rows (B43a) included") {
+  StripCase c(8.0, 57, 3, 2);
+  const double dh = hertz_approach(kW), a = std::sqrt(kR * dh);
+  const std::vector<double> h = wavy(c.strip, 0.3 * dh, 0.5 * a);
+  contact::SolverOptions opt = tight();
+  opt.hardness = 5e9;
+  std::vector<contact::PathTable> t;
+  const int before = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    t.push_back(contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid, c.positions, kW, opt));
+  }
+  omp_set_num_threads(before);
+  CHECK(t[0].approach.size() > 8);
+  CHECK(t[0].approach == t[1].approach);
+  CHECK(t[0].force == t[1].force);
+  CHECK(t[0].iterations == t[1].iterations);
 }
