@@ -118,7 +118,9 @@ std::string inputs_text(const Study& s, const PathTableGeometry& g, double radiu
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
      << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
      << "\n\n[path_table]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
-     << "\npositions = " << g.positions << "\napproaches = " << g.approaches << "\nreach = " << num(kReach) << "\n";
+     << "\npositions = " << g.positions << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
+     << "\ntop_force = " << num(contact::PathTableOptions{}.top_force)
+     << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
   for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
   in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.base.cell)
      << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.base.derived_cell ? "allowed" : "refused")
