@@ -108,7 +108,7 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
   };
   t.converged = true;
   // Appends rows (B44: P non-decreasing in δ by a running maximum that acts at the solver's
-  // tolerance only; 0 at or below first contact); returns min_k P(δ_last, ξ_k).
+  // tolerance only; 0 at or below first contact) and sets top_force = min_k P(δ_last, ξ_k) / W.
   const auto append = [&](const std::vector<BlockedForcePath>& rows) {
     for (const BlockedForcePath& r : rows) {
       const std::size_t j = t.force.size() / nk;
