@@ -133,8 +133,8 @@ class BallOnBeam final : public Scene {
           [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
             static_cast<stiffness::PathTableData&>(out) = stiffness::build_path_table(s, grid, radius, e_star, weight, quiet);
           },
-          [this](const stiffness::TableData& t, const std::string& status, bool quiet) {
-            use_path_table(static_cast<const stiffness::PathTableData&>(t), status, quiet);
+          [this](const stiffness::TableData& table_data, const std::string& status, bool quiet) {
+            use_path_table(static_cast<const stiffness::PathTableData&>(table_data), status, quiet);
           },
           grid.describe() + "; every realisation rolls over this one strip (nothing else is random: K > 1 repeats the same run)"));
     }
