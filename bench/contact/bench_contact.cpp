@@ -24,8 +24,10 @@
 // Times: cg_iteration and convolution are thread CPU seconds on one thread (min of 5 interleaved
 // trials for the ratio), *_wall the same on all threads; hertz_*, seed_table are wall seconds on
 // OMP_NUM_THREADS threads.
-// Usage: bench_contact [--quick | --hertz]   (--quick: 256² and 512² only, 3 realisations;
-//                                             --hertz: hertz_solve and hertz_stiffness only)
+// Usage: bench_contact [--quick | --hertz | --path]   (--quick: 256² and 512² only, 3 realisations;
+//                                             --hertz: hertz_solve and hertz_stiffness only;
+//                                             --path: path_table_build (wall on all threads) and
+//                                             path_table_interpolation (vs direct solves) only)
 #include <omp.h>
 
 #include <algorithm>
@@ -40,10 +42,12 @@
 
 #include <fftw3.h>
 
+#include "kernels/beam/path_contact_table.hpp"
 #include "kernels/contact/blocked_force.hpp"
 #include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "kernels/contact/half_space_operator.hpp"
+#include "kernels/contact/path_table.hpp"
 #include "kernels/contact/sweep.hpp"
 #include "kernels/spectral/fftw_handles.hpp"
 
@@ -312,6 +316,50 @@ void bench_blocked_force() {
               at.stiffness_iterations, int(at.converged), at.approach * 1e6, at.k0);
   std::fflush(stdout);
 }
+// Path table (kernels/beam README B41-B45) on the seed-like strip of bench_blocked_force: build wall
+// time on the threads given, and the interpolated P (B44-B45) against direct whole-strip solves at
+// approaches mid-way between the tabulated ones and positions mid-way between tabulated ones.
+void bench_path_table() {
+  const std::size_t n_strip = 384, n_window = 200, count = 32, step = 2;  // 8 um steps: a/8.7
+  const double e_star = 115.4e9, radius = 0.02, hardness = 5e9, sigma = 0.3e-6, corr = 10e-6, dx = 4e-6, load = 2.58;
+  const Grid strip{n_strip, n_strip, dx, dx}, window{n_window, n_window, dx, dx};
+  const auto heights = rough_surface(n_strip, dx, sigma, corr, 2002u);
+  std::vector<double> x(count);
+  for (std::size_t k = 0; k < count; ++k)
+    x[k] = strip.x(n_strip / 2 - count * step / 2 + k * step);
+  SolverOptions opt;
+  opt.hardness = hardness;
+  opt.tolerance = 1e-10;
+  const auto t0 = Clock::now();
+  const PathTable t = build_path_table(window, e_star, strip, heights, radius, BallShape::Sphere, x, load, opt);
+  const double wall = seconds_since(t0);
+  std::printf("path_table_build,%zu,%.4f,%.4e,%d,%zu approaches x %zu positions window %zu (ratio = wall s per solve) converged=%d delta %.4g..%.4g um\n",
+              n_window, wall, wall / double(t.solves), t.iterations, t.approach.size(), count, n_window, int(t.converged),
+              t.approach.front() * 1e6, t.approach.back() * 1e6);
+  std::fflush(stdout);
+  const rollspec::beam::PathContactTable table({t.position, t.approach, t.first_contact, t.force});
+  double worst_d = 0.0, worst_x = 0.0, sum_d = 0.0, sum_x = 0.0;
+  int n_d = 0, n_x = 0;
+  for (std::size_t j = 0; j + 1 < t.approach.size(); ++j)
+    for (std::size_t k : {std::size_t{5}, std::size_t{20}}) {
+      const double d = 0.5 * (t.approach[j] + t.approach[j + 1]);
+      double p, s;
+      table.evaluate(d, x[k], p, s);
+      const double e = std::fabs(p - path_force_direct(strip, heights, e_star, radius, BallShape::Sphere, x[k], 0.0, d, opt)) / load;
+      worst_d = std::max(worst_d, e);
+      sum_d += e;
+      ++n_d;
+      const double xm = 0.5 * (x[k] + x[k + 1]);
+      table.evaluate(t.approach[j], xm, p, s);
+      const double ex = std::fabs(p - path_force_direct(strip, heights, e_star, radius, BallShape::Sphere, xm, 0.0, t.approach[j], opt)) / load;
+      worst_x = std::max(worst_x, ex);
+      sum_x += ex;
+      ++n_x;
+    }
+  std::printf("path_table_interpolation,%zu,%.4f,%.4e,0,|P_interp - P_direct| / W mid-way in delta: worst %.3g mean %.3g; mid-way in xi (a/17): worst %.3g mean %.3g\n",
+              n_strip, seconds_since(t0) - wall, worst_d, worst_d, sum_d / n_d, worst_x, sum_x / n_x);
+  std::fflush(stdout);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -320,6 +368,10 @@ int main(int argc, char** argv) {
   std::printf("case,n,seconds,ratio,iterations,note\n");
   if (hertz_only) {
     bench_hertz_solve();
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "--path") == 0) {
+    bench_path_table();
     return 0;
   }
   for (std::size_t n : {256u, 512u, 1024u}) {

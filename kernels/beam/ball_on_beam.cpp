@@ -38,6 +38,11 @@ double blocked_force_at(const BallOnBeamModel& m, const Realisation& r, double t
   return r.blocked_force.value(t);
 }
 
+double law_argument(const BallOnBeamModel& m, const ContactModel& contact, const Realisation& r, double t, double x) {
+  if (contact.linearised()) return blocked_force_at(m, r, t);
+  return contact.path() ? x : 0.0;
+}
+
 InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& contact, const Realisation& r) {
   const ModalBeam& b = m.beam;
   const int n = b.modes();
@@ -67,7 +72,7 @@ InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& 
     const double lo = std::max(x0 - e, -b.offset()), hi = std::min(x0 + e, b.effective_length() - b.offset());
     if (hi > lo) dres = (b.residual_flexibility(hi) - b.residual_flexibility(lo)) / (hi - lo);
   }
-  const double f0 = blocked_force_at(m, r, 0.0);
+  const double f0 = law_argument(m, contact, r, 0.0, x0);
   const double delta = contact.static_compression(weight, f0);
   double h, dh;
   roughness_at(r, x0, h, dh);

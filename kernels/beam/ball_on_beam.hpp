@@ -85,6 +85,8 @@ struct InitialState {
 InitialState static_initial_state(const BallOnBeamModel& model, const ContactModel& contact, const Realisation& r);
 void roughness_at(const Realisation& r, double x, double& h, double& dh);
 double blocked_force_at(const BallOnBeamModel& model, const Realisation& r, double t);
+// The contact law's third argument at time t, position x: F0(t) (linearised), x (path, B46), else 0.
+double law_argument(const BallOnBeamModel& model, const ContactModel& contact, const Realisation& r, double t, double x);
 void resize_result(const BallOnBeamModel& model, std::size_t samples, BallOnBeamResult& out);
 }  // namespace detail
 

@@ -22,6 +22,9 @@ ContactModel::ContactModel(const ContactLaw& law) : law_(law) {
     case ContactLawKind::linearised:
       if (!(law.k0 > 0.0)) throw std::invalid_argument("ContactLaw: linearised law needs k0 > 0");
       break;
+    case ContactLawKind::path:
+      if (!law.path || law.path->empty()) throw std::invalid_argument("ContactLaw: path law needs a path table");
+      break;
   }
 }
 
@@ -48,7 +51,8 @@ void ContactModel::elastic(double delta, double& force, double& stiffness) const
       break;
     }
     case ContactLawKind::linearised:
-      throw std::logic_error("ContactModel::elastic: not defined for the linearised law");
+    case ContactLawKind::path:
+      throw std::logic_error("ContactModel::elastic: not defined for the linearised and path laws");
   }
 }
 
@@ -67,13 +71,15 @@ ContactForce ContactModel::evaluate(double delta, double rate, double f0) const 
     if (f <= 0.0) return {0.0, 0.0, 0.0, true};  // (B19) never pulls
     return {f, law_.k0, c, true};
   }
-  if (!(delta > 0.0)) {  // loss of contact: seed 001 Eq. 8, or nothing
+  const bool contact = path() ? in_contact(delta, f0) : delta > 0.0;
+  if (!contact) {  // loss of contact: seed 001 Eq. 8, or nothing (path: B46)
     if (law_.loss == LossOfContact::zero_force) return {0.0, 0.0, 0.0, false};
     const double f = c * rate;
     return f > 0.0 ? ContactForce{f, 0.0, c, false} : ContactForce{0.0, 0.0, 0.0, false};
   }
   double p, k;
-  elastic(delta, p, k);
+  if (path()) law_.path->evaluate(delta, f0 - law_.path_origin, p, k);  // (B46)
+  else elastic(delta, p, k);
   const double f = p + c * rate;
   if (f <= 0.0) return {0.0, 0.0, 0.0, true};  // (B19)
   return {f, k, c, true};
@@ -81,6 +87,7 @@ ContactForce ContactModel::evaluate(double delta, double rate, double f0) const 
 
 double ContactModel::static_compression(double load, double f0) const {
   if (law_.kind == ContactLawKind::linearised) return (load - f0) / law_.k0 - law_.d0;
+  if (path()) return law_.path->static_approach(load, f0 - law_.path_origin);  // (B46, B22)
   if (!(load > 0.0)) return 0.0;
   if (law_.kind == ContactLawKind::hertz) return std::pow(load / hertz_k_, 2.0 / 3.0);
   // Monotone table: bracket then safeguarded Newton.

@@ -7,17 +7,24 @@
 //   literal_stiffness  F = k_c(delta) delta + c delta_dot  seed 001 Eq. 7 as printed        (B16)
 //   hertz              F = (4/3) E* sqrt(R) delta^{3/2} + c delta_dot                       (B17)
 //   linearised         F = F0(t) + k0 (delta + d0) + c0 delta_dot   (D-11, seed 002 Eq. 4)  (B18)
+//   path               F = P(delta, xi - xi_0) + c delta_dot  P: one rough strip's table (B46)
 //
-// Loss of contact (delta <= 0; for the linearised law, F0 + k0 (delta + d0) <= 0): the damping
+// The third argument of evaluate / in_contact / static_compression is the law's argument `aux`:
+// the blocked force F0(t) for the linearised law, the contact position xi (m, physical) for the
+// path law, unused otherwise (detail::law_argument in ball_on_beam.hpp supplies it).
+//
+// Loss of contact (delta <= 0; path: delta <= delta_c(xi) (B45); for the linearised law, F0 + k0 (delta + d0) <= 0): the damping
 // term alone (seed 001 Eq. 8) or zero force. The force never pulls: F = max(F, 0) (B19), unless
 // `allow_tension` is set for the linearised law (the frequency-domain check needs a linear model).
+#include <memory>
 #include <vector>
 
 #include "kernels/beam/monotone_table.hpp"
+#include "kernels/beam/path_contact_table.hpp"
 
 namespace rollspec::beam {
 
-enum class ContactLawKind { table, literal_stiffness, hertz, linearised };
+enum class ContactLawKind { table, literal_stiffness, hertz, linearised, path };
 enum class LossOfContact { damping_only, zero_force };
 // Which compression rate the damper sees for the nonlinear laws: the material relative velocity
 // w1_dot(xi) - w2_dot, or the total d(delta)/dt that also carries the convective terms
@@ -36,6 +43,8 @@ struct ContactLaw {
   LossOfContact loss = LossOfContact::damping_only;
   DampingRate rate = DampingRate::relative_velocity;
   bool allow_tension = false;          // linearised only
+  std::shared_ptr<const PathContactTable> path;  // path: P(delta, xi) of the strip (B41-B45), shared
+  double path_origin = 0.0;            // path: physical xi_0 of the table's position 0 (m)
 };
 
 struct ContactForce {
@@ -57,15 +66,21 @@ class ContactModel {
   ContactForce evaluate(double delta, double rate, double f0) const;
 
   // Contact (not loss of contact) at compression delta: delta > 0, or F0 + k0 (delta + d0) > 0.
+  // Path law: delta > delta_c(xi) (B45), f0 = xi.
   bool in_contact(double delta, double f0) const {
-    return linearised() ? f0 + law_.k0 * (delta + law_.d0) > 0.0 : delta > 0.0;
+    if (linearised()) return f0 + law_.k0 * (delta + law_.d0) > 0.0;
+    if (path()) return delta > law_.path->first_contact(f0 - law_.path_origin);
+    return delta > 0.0;
   }
+  bool path() const { return law_.kind == ContactLawKind::path; }
 
-  // Elastic part only (no damping): P(delta), dP/d delta; zero for delta <= 0. Not for linearised.
+  // Elastic part only (no damping): P(delta), dP/d delta; zero for delta <= 0. Not for linearised
+  // or path (use evaluate).
   void elastic(double delta, double& force, double& stiffness) const;
 
   // Compression carrying a static load W with no motion: the delta with P(delta) = W (nonlinear
-  // laws), or W = f0 + k0 (delta + d0) (linearised). Throws if the load cannot be carried.
+  // laws; path: at xi = f0, B46), or W = f0 + k0 (delta + d0) (linearised). Throws if the load
+  // cannot be carried.
   double static_compression(double load, double f0) const;
 
  private:

@@ -41,7 +41,7 @@ BallOnBeamResult simulate_dopri5(const BallOnBeamModel& model, const Realisation
     detail::roughness_at(r, xi, hx, dhx);
     double rate = wd - y[2 * n + 1];
     if (total) rate += v * (ws + dhx);
-    const double f0 = contact.linearised() ? detail::blocked_force_at(model, r, t) : 0.0;
+    const double f0 = detail::law_argument(model, contact, r, t, xi);
     const ContactSolution cs = solve_contact_force(contact, w + hx - y[2 * n], rate, b.residual_flexibility(xi), 0.0, f0,
                                                    last_force, weight);
     last_force = cs.force;

@@ -143,11 +143,11 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     detail::roughness_at(r, model_.traverse.x_start, h0, dh0);
     if (patch)  // as in the initial state: the width under the weight
       averager->evaluate(model_.traverse.x_start,
-                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, detail::blocked_force_at(model_, r, 0.0)), 0.0)),
+                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start)), 0.0)),
                          h0, dh0);
     for (int i = 0; i < n; ++i) w1 += phi[i] * q[i];
     const double delta = w1 + h0 - w2;
-    record(0, model_.traverse.x_start, delta, h0, contact_.evaluate(delta, 0.0, detail::blocked_force_at(model_, r, 0.0)).contact);
+    record(0, model_.traverse.x_start, delta, h0, contact_.evaluate(delta, 0.0, detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start)).contact);
   }
 
   double delta_last = out.compression[0];
@@ -184,7 +184,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
       averager->evaluate(x1, std::sqrt(model_.patch_radius * std::max(delta_last, 0.0)), h1, dh1);
     else
       detail::roughness_at(r, x1, h1, dh1);
-    const double f0 = contact_.linearised() ? detail::blocked_force_at(model_, r, t1) : 0.0;
+    const double f0 = detail::law_argument(model_, contact_, r, t1, x1);
     double comp = comp_[k1], d = rate_comp_[k1], conv = conv_comp_[k1];
     if (first) compliance(phi, slope, residual_[k1], first_, ball_first_, comp, d, conv);
     double rate_free = vfree - u2f;

@@ -13,6 +13,7 @@
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/beam/linear_reference.hpp"
 #include "kernels/beam/modal_beam.hpp"
+#include "kernels/beam/path_contact_table.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "kernels/spectral/harmonic_synthesis.hpp"
 #include "kernels/spectral/welch.hpp"
@@ -28,6 +29,7 @@
 #include "src/scenes/psd_rows.hpp"
 #include "src/study/study.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
+#include "src/stiffness/path_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -50,7 +52,7 @@ struct Workspace {
 class BallOnBeam final : public Scene {
  public:
   explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
-    if (b_.blocked_solver() || b_.uses_table()) study_ = &s;
+    if (b_.blocked_solver() || b_.uses_table() || b_.path_law()) study_ = &s;
     lines_ = texture_io::study_line_generator(s, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
@@ -65,8 +67,11 @@ class BallOnBeam final : public Scene {
   // texture, surface, stiffness_table, blocked_force, dynamics, spectra: the tables are stage
   // objects whose inspection `plan` prints and whose resolution prepare() runs.
   void add_pipeline_stages(const Study& s) {
-    add_stages({{"texture", StageStatus::run,
-                 "beam line texture per realisation from [texture] (" + b_.psd.description + "); " + filter_description()}});
+    if (b_.path_law())
+      add_stages({{"texture", StageStatus::skipped, "law = path: the path table's strip is the roughness (no line texture)"}});
+    else
+      add_stages({{"texture", StageStatus::run,
+                   "beam line texture per realisation from [texture] (" + b_.psd.description + "); " + filter_description()}});
     std::unique_ptr<TableStage> table;
     if (uses_table()) {
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
@@ -91,7 +96,9 @@ class BallOnBeam final : public Scene {
     if (table) add_stage(std::move(table));
     else
       add_stages({{"stiffness_table", StageStatus::skipped,
-                   linearised() ? "linearised law: k0 from [contact]" : "hertz law: analytic, needs no table"}});
+                   linearised()    ? "linearised law: k0 from [contact]"
+                   : b_.path_law() ? "path law: P(delta, xi) from the path table"
+                                   : "hertz law: analytic, needs no table"}});
     if (blocked_solver()) {
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
       const double weight = b_.weight();
@@ -113,6 +120,23 @@ class BallOnBeam final : public Scene {
       add_stages({{"blocked_force", linearised() ? StageStatus::run : StageStatus::skipped,
                    linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
                                : "only the linearised law uses F0"}});
+    }
+    if (b_.path_law()) {
+      // law = path (kernels/beam B41-B46): P(delta, xi) of strip 0 along the ball's whole path.
+      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
+      const double weight = b_.weight();
+      const stiffness::PathTableGeometry grid = stiffness::path_table_geometry(
+          s, radius, e_star, weight, b_.model.traverse.x_end - b_.model.traverse.x_start);
+      add_stage(std::make_unique<TableStage>(
+          "path_table", stiffness::path_cached_table(s, grid, radius, e_star, weight),
+          [] { return std::make_unique<stiffness::PathTableData>(); },
+          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
+            static_cast<stiffness::PathTableData&>(out) = stiffness::build_path_table(s, grid, radius, e_star, weight, quiet);
+          },
+          [this](const stiffness::TableData& table_data, const std::string& status, bool quiet) {
+            use_path_table(static_cast<const stiffness::PathTableData&>(table_data), status, quiet);
+          },
+          grid.describe() + "; every realisation rolls over this one strip (nothing else is random: K > 1 repeats the same run)"));
     }
     add_stages({{"dynamics", StageStatus::run, b_.dopri ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
                 {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
@@ -143,6 +167,17 @@ class BallOnBeam final : public Scene {
       study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
                                                    " N does not reach the ball's weight; raise approach_max");
     check_contact_resolution(*study_, b_, t.stiffness_at(b_.weight()));
+  }
+
+  // law = path (B46): the table is the law; the line roughness is not used (the strip is the roughness).
+  void use_path_table(const stiffness::PathTableData& t, const std::string& status, bool quiet) {
+    beam::PathContactData d{t.position, t.approach, t.first_contact, t.force};
+    b_.model.contact.path = std::make_shared<const beam::PathContactTable>(std::move(d));
+    b_.model.contact.path_origin = b_.model.traverse.x_start;
+    b_.static_compression = beam::path_table_static_approach(*b_.model.contact.path, b_.weight());
+    if (!quiet)
+      std::fprintf(stderr, "path table: %s (%zu approaches x %zu positions; mean static approach %.4g m from the mean plane)\n",
+                   status.c_str(), t.approach.size(), t.position.size(), b_.static_compression);
   }
 
   // The contact solver's blocked force (seed 002 §4.2): k0 from the table, F0(t) synthesised per
@@ -194,14 +229,15 @@ class BallOnBeam final : public Scene {
   // Simulates realisation `id` into ws.result (shared by the ensemble and the time-history output).
   void simulate(std::uint64_t id, Workspace& ws) const {
     const std::size_t nh = lines_->harmonics();
-    if (!blocked_solver()) {
+    if (!blocked_solver() && !b_.path_law()) {
     rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
     rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
     if (!ws.line_scratch) ws.line_scratch = std::make_unique<spectral::SynthesisScratch>(lines_->period());
     lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data(), *ws.line_scratch);
     }
-    beam::UniformSamples h{0.0, b_.spacing, blocked_solver() ? std::vector<double>() : ws.texture};
-    if (b_.patch_half_width > 0.0 && !blocked_solver()) h = beam::contact_patch_average(h, b_.patch_half_width);
+    const bool no_line = blocked_solver() || b_.path_law();  // their strip resolves the roughness
+    beam::UniformSamples h{0.0, b_.spacing, no_line ? std::vector<double>() : ws.texture};
+    if (b_.patch_half_width > 0.0 && !no_line) h = beam::contact_patch_average(h, b_.patch_half_width);
     beam::Realisation r;
     if (blocked_solver()) {
       const std::size_t nh_f0 = f0_synth_->harmonics(), n = f0_synth_->samples();
@@ -224,7 +260,7 @@ class BallOnBeam final : public Scene {
       r.blocked_force.step = dt;
       const double weight = b_.weight();
       for (std::size_t i = first; i < h.values.size(); ++i) r.blocked_force.values.push_back(weight + b_.model.contact.k0 * h.values[i]);
-    } else {
+    } else if (!b_.path_law()) {
       r.roughness = std::move(h);
     }
     if (b_.dopri) {
@@ -327,7 +363,7 @@ class BallOnBeam final : public Scene {
   // where it applies) through B35a on the samples; psd_iso2d: Eq. 38 (absent where the PSD has no
   // isotropic form and the study does not ask for iso2d).
   void write_roughness(io::Hdf5Writer& w) const {
-    if (blocked_solver()) return;
+    if (blocked_solver() || b_.path_law()) return;
     const double k0 = lines_->fundamental(), k1 = M_PI / b_.spacing;
     std::vector<double> k;
     for (std::size_t i = 0;; ++i) {

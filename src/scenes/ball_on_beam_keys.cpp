@@ -7,6 +7,7 @@
 #include "src/error.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
+#include "src/stiffness/path_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -45,9 +46,10 @@ std::vector<KeySpec> ball_on_beam_keys() {
       real_key("ball", "gravity", "m/s^2", "gravitational acceleration", std::string("9.81"), 0.0, inf),
       choice_key("contact", "law",
                  "contact law: hertz (smooth Hertz P(delta)), table (rough-surface P(delta) from the stiffness stage), "
-                 "literal (seed 001 Eq. 7: k_c(delta) delta from the same table) or linearised (seed 002: blocked "
-                 "force F0 and contact stiffness k0)",
-                 std::string("hertz"), {"hertz", "table", "literal", "linearised"}),
+                 "literal (seed 001 Eq. 7: k_c(delta) delta from the same table), linearised (seed 002: blocked "
+                 "force F0 and contact stiffness k0) or path (P(delta, xi) of one rough strip from a cached table of "
+                 "contact solves along the ball's path, kernels/beam B41-B46; the strip is the roughness)",
+                 std::string("hertz"), {"hertz", "table", "literal", "linearised", "path"}),
       real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"), 0.0, inf),
       choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
                  std::string("damping_only"), {"damping_only", "zero"}),
@@ -101,6 +103,7 @@ std::vector<KeySpec> ball_on_beam_keys() {
   }
   for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
   for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
+  for (auto& t : stiffness::path_table_keys()) k.push_back(t);
   return k;
 }
 

@@ -42,6 +42,7 @@ ContactModel contact_model(const Study& s) {
   if (law == "table") return ContactModel::table;
   if (law == "literal") return ContactModel::literal;
   if (law == "hertz") return ContactModel::hertz;
+  if (law == "path") return ContactModel::path;
   return s.text("contact.blocked_force") == "solver" ? ContactModel::linearised_solver : ContactModel::linearised_spring;
 }
 
@@ -49,6 +50,7 @@ beam::ContactLawKind law_kind(const BallOnBeamSettings& b) {
   if (b.linearised()) return beam::ContactLawKind::linearised;
   if (b.contact == ContactModel::table) return beam::ContactLawKind::table;
   if (b.contact == ContactModel::literal) return beam::ContactLawKind::literal_stiffness;
+  if (b.path_law()) return beam::ContactLawKind::path;
   return beam::ContactLawKind::hertz;
 }
 
@@ -85,6 +87,9 @@ void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
   if (b.filter == ContactFilter::iso2d && b.blocked_solver())
     s.refuse("contact.filter", "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
                                "resolves the contact itself); allowed with solver: none or patch (both ignored)");
+  if (b.filter == ContactFilter::iso2d && b.path_law())
+    s.refuse("contact.filter", "iso2d filters the line texture, which law = path does not use (its strip is the "
+                               "roughness); allowed with path: none or patch (both ignored)");
 }
 
 texture::Psd iso2d_study_psd(const Study& s, const BallOnBeamSettings& b) {

@@ -22,7 +22,7 @@ class Study;
 namespace rollspec::scenes {
 
 // One value for the contact law and the blocked force's source ([contact] law, blocked_force).
-enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver };
+enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver, path };
 
 // [contact] filter: what the contact does to the roughness it rolls over (kernels/beam README B35;
 // kernels/texture README Eq. 36-40): none (point contact), patch (1D average over the Hertz width,
@@ -63,6 +63,7 @@ struct BallOnBeamSettings {
   bool linearised() const { return contact == ContactModel::linearised_spring || contact == ContactModel::linearised_solver; }
   bool uses_table() const { return contact == ContactModel::table || contact == ContactModel::literal; }
   bool blocked_solver() const { return contact == ContactModel::linearised_solver; }
+  bool path_law() const { return contact == ContactModel::path; }  // law = path: the strip is the roughness
   double weight() const { return model.ball.mass * model.ball.gravity; }
   double integration_step() const { return 1.0 / (model.sample_rate * static_cast<double>(step.substeps)); }
 };

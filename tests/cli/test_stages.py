@@ -10,6 +10,8 @@ from conftest import SOURCE, run
 SMOOTH_STRIP = ["contact.blocked_force=solver", "texture.rms=1e-12", "surface.spacing=4e-6",
                 "texture.short_wavelength=8e-6", "surface.ny=64", "blocked_force.window=64",
                 "blocked_force.strip_length=1e-3", "blocked_force.step=4", "blocked_force.segment=16", "ball.end=0.12"]
+PATH_LAW = ["contact.law=path", "texture.rms=1e-20", "surface.spacing=12e-6", "texture.short_wavelength=24e-6",
+            "ball.start=0.1", "ball.end=0.106", "spectrum.segment=128"]
 TABLE_LAW = ["contact.law=table", "surface.nx=64", "surface.ny=64", "stiffness.approach_max=3e-6", "ball.end=0.12"]
 
 # (study, the table stage, the --set list, the command that builds it)
@@ -17,6 +19,7 @@ CASES = [
     ("hertz.ini", "stiffness_table", [], "stiffness"),
     ("seed002-rig-1ms.ini", "stiffness_table", TABLE_LAW, "run"),
     ("seed002-rig-1ms.ini", "blocked_force", SMOOTH_STRIP, "run"),
+    ("seed002-rig-1ms.ini", "path_table", PATH_LAW, "run"),
 ]
 
 
@@ -26,7 +29,7 @@ def stage_status(plan_stdout, stage):
     return row[1], row[2] if len(row) > 2 else ""
 
 
-@pytest.mark.parametrize("study,stage,sets,command", CASES, ids=["stiffness-scene", "ball-on-beam-table", "blocked-force"])
+@pytest.mark.parametrize("study,stage,sets,command", CASES, ids=["stiffness-scene", "ball-on-beam-table", "blocked-force", "path-table"])
 def test_a_table_built_by_a_run_is_cached_in_the_next_plan(tmp_path, study, stage, sets, command):
     shutil.copy(SOURCE / "studies" / study, tmp_path / study)
     s = tmp_path / study
@@ -50,7 +53,7 @@ def test_a_table_built_by_a_run_is_cached_in_the_next_plan(tmp_path, study, stag
     assert "cached " + table in second.stderr + second.stdout
     # An edited table: the plan says the run will refuse it, and the run does (unless --rebuild).
     with h5py.File(tmp_path / table, "r+") as f:
-        column = f["/stiffness/force_mean" if stage == "stiffness_table" else "/blocked_force/force"]
+        column = f[{"stiffness_table": "/stiffness/force_mean", "path_table": "/path_table/position"}.get(stage, "/blocked_force/force")]
         column[1] = column[1] * (1 + 1e-12)
     damaged = run(["plan", s, *args])
     status, reason = stage_status(damaged.stdout, stage)

@@ -1,0 +1,132 @@
+#include "kernels/beam/path_contact_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace rollspec::beam {
+
+namespace {
+[[noreturn]] void fail(const char* what) { throw std::invalid_argument(std::string("PathContactTable: ") + what); }
+}  // namespace
+
+PathContactTable::PathContactTable(PathContactData data) : d_(std::move(data)) {
+  const std::size_t nk = d_.position.size(), nj = d_.approach.size();
+  if (nk == 0 || nj == 0) fail("no positions or approaches");
+  if (d_.first_contact.size() != nk || d_.force.size() != nj * nk) fail("sizes do not match");
+  for (std::size_t k = 1; k < nk; ++k)
+    if (!(d_.position[k] > d_.position[k - 1])) fail("positions must increase");
+  for (std::size_t j = 1; j < nj; ++j)
+    if (!(d_.approach[j] > d_.approach[j - 1])) fail("approaches must increase");
+  for (std::size_t k = 0; k < nk; ++k) {
+    if (!std::isfinite(d_.first_contact[k])) fail("first contact must be finite");
+    for (std::size_t j = 0; j < nj; ++j) {
+      const double p = d_.force[j * nk + k];
+      if (!(p >= 0.0) || !std::isfinite(p)) fail("forces must be finite, >= 0");
+      if (j > 0 && p < d_.force[(j - 1) * nk + k]) fail("forces must be non-decreasing in the approach");
+    }
+  }
+  q_.resize(d_.force.size());
+  for (std::size_t i = 0; i < q_.size(); ++i) q_[i] = std::cbrt(d_.force[i] * d_.force[i]);  // Q = P^{2/3}
+}
+
+void PathContactTable::at_position(std::size_t k, double delta, double& force, double& stiffness) const {
+  force = stiffness = 0.0;
+  const double dc = d_.first_contact[k];
+  if (!(delta > dc)) return;
+  const std::size_t nk = d_.position.size(), nj = d_.approach.size();
+  // Nodes (B44): (δ_c, 0) and (δ_j, Q_j) for δ_j > δ_c. Find the segment [a, b] holding δ, or the
+  // last one (continued beyond the last approach).
+  const auto first = std::upper_bound(d_.approach.begin(), d_.approach.end(), dc);
+  const std::size_t j0 = static_cast<std::size_t>(first - d_.approach.begin());  // first node above δ_c
+  if (j0 == nj) return;  // no tabulated approach above first contact: nothing known, no force
+  const auto it = std::upper_bound(d_.approach.begin() + static_cast<std::ptrdiff_t>(j0), d_.approach.end(), delta);
+  std::size_t jb = static_cast<std::size_t>(it - d_.approach.begin());  // first node above δ
+  if (jb == nj) jb = nj - 1;
+  double da, qa;
+  if (jb == j0) {
+    da = dc;
+    qa = 0.0;
+  } else {
+    da = d_.approach[jb - 1];
+    qa = q_[(jb - 1) * nk + k];
+  }
+  const double db = d_.approach[jb], qb = q_[jb * nk + k];
+  const double slope = (qb - qa) / (db - da);
+  const double q = qa + (delta - da) * slope;
+  if (!(q > 0.0)) return;
+  const double r = std::sqrt(q);
+  force = q * r;
+  stiffness = 1.5 * r * slope;
+}
+
+void PathContactTable::locate(double xi, std::size_t& k, double& t) const {
+  const std::vector<double>& x = d_.position;
+  if (x.size() == 1 || xi <= x.front()) {
+    k = 0;
+    t = 0.0;
+    return;
+  }
+  if (xi >= x.back()) {
+    k = x.size() - 1;
+    t = 0.0;
+    return;
+  }
+  k = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), xi) - x.begin()) - 1;
+  t = (xi - x[k]) / (x[k + 1] - x[k]);
+}
+
+void PathContactTable::evaluate(double delta, double xi, double& force, double& stiffness) const {
+  std::size_t k;
+  double t;
+  locate(xi, k, t);
+  at_position(k, delta, force, stiffness);
+  if (t > 0.0) {  // B45
+    double f1, k1;
+    at_position(k + 1, delta, f1, k1);
+    force = (1.0 - t) * force + t * f1;
+    stiffness = (1.0 - t) * stiffness + t * k1;
+  }
+}
+
+double PathContactTable::first_contact(double xi) const {
+  std::size_t k;
+  double t;
+  locate(xi, k, t);
+  return t > 0.0 ? std::min(d_.first_contact[k], d_.first_contact[k + 1]) : d_.first_contact[k];
+}
+
+double PathContactTable::static_approach(double load, double xi) const {
+  if (!(load > 0.0)) return first_contact(xi);
+  double lo = first_contact(xi), hi = d_.approach.back();
+  double p, k;
+  evaluate(hi, xi, p, k);
+  for (int i = 0; p < load; ++i) {  // beyond the table: the continued last segment grows without bound
+    if (i == 200 || !(k > 0.0)) throw std::runtime_error("PathContactTable: the path table cannot carry the load");
+    lo = hi;
+    hi += std::max(hi - first_contact(xi), 1e-9);
+    evaluate(hi, xi, p, k);
+  }
+  double x = 0.5 * (lo + hi);
+  for (int it = 0; it < 200; ++it) {
+    evaluate(x, xi, p, k);
+    const double r = p - load;
+    if (r > 0.0) hi = x;
+    else lo = x;
+    double xn = k > 0.0 ? x - r / k : 0.5 * (lo + hi);
+    if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
+    if (std::fabs(xn - x) <= 1e-15 * std::fabs(hi - first_contact(xi)) || hi - lo <= 1e-15 * std::fabs(hi)) return xn;
+    x = xn;
+  }
+  return x;
+}
+
+double path_table_static_approach(const PathContactTable& table, double load) {
+  const std::vector<double>& x = table.data().position;
+  double s = 0.0;
+  for (double xi : x) s += table.static_approach(load, xi);
+  return s / static_cast<double>(x.size());
+}
+
+}  // namespace rollspec::beam

@@ -1,0 +1,64 @@
+#pragma once
+// Path table P(δ, ξ) of one rough strip (kernels/beam README B41–B43, issue 19 item 2): the force
+// of the half-space contact solve at rigid approach δ (from the strip's mean plane, BF-1/BF-2) with
+// the ball centred at ξ on the strip, on a grid of J approaches × N positions, and the exact
+// first-contact approach δ_c(ξ_k) (B42). Each approach is one blocked-force path
+// (blocked_force.hpp: moving window BF-5, warm start BF-6); the approaches are independent and run
+// one per OpenMP thread, each on its own solver, so the table has the same bits for any thread count.
+// The interpolation (B44–B45) lives in kernels/beam/path_contact_table.hpp.
+#include <cstddef>
+#include <vector>
+
+#include "kernels/contact/contact_solver.hpp"
+#include "kernels/contact/geometry.hpp"
+#include "kernels/contact/grid.hpp"
+
+namespace rollspec::contact {
+
+struct PathTableOptions {
+  std::size_t approaches = 8;  // J (B43), 2 or more
+  double reach = 3.0;          // δ_hi = max_k δ_c + reach · δ_H (B43)
+  double centre_y = 0.0;       // lateral coordinate of the path (m)
+  // B43a: rows are added above δ_J, with the same spacing, until every position carries at least
+  // top_force · load at the last approach (0: none), at most max_approaches rows in all; a row the
+  // solver window cannot hold (BF-5) ends the extension.
+  double top_force = 5.0;
+  std::size_t max_approaches = 24;
+};
+
+struct PathTable {
+  std::vector<double> position;       // ξ_k (m, strip coordinates), N values
+  std::vector<double> approach;       // δ_j (m, from the plane h = 0), J or more values (B43a), increasing
+  std::vector<double> first_contact;  // δ_c(ξ_k) (m), B42
+  std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k]
+  int solves = 0, iterations = 0;     // contact solves and their CG iterations
+  double max_error = 0.0;             // largest stopping-rule ε (contact README Eq. 9)
+  bool converged = false;             // every solve converged
+  double top_force = 0.0;             // min_k P(δ_last, ξ_k) / load (B43a)
+};
+
+// δ_c(ξ_k) = min_i s_i(ξ_k) over the strip (B42); `heights` empty: a smooth strip (δ_c = 0 up to
+// the cell offset of the ball centre). Only columns within `half_columns` cells of ξ_k are visited
+// (0: all): a cell farther out has s_i above every approach the table reaches (BF-5 checks it).
+std::vector<double> first_contact_approach(const Grid& strip, const std::vector<double>& heights, double radius,
+                                           BallShape shape, const std::vector<double>& positions, double centre_y,
+                                           std::size_t half_columns = 0);
+
+// The approaches of B43 for the ball's weight `load` (δ_H from E* and R).
+std::vector<double> path_table_approaches(const std::vector<double>& first_contact, double load, double e_star,
+                                          double radius, const PathTableOptions& options = {});
+
+// The table (B41–B43) on `window` (the solver grid, a window of `strip`: same cells), positions as
+// blocked_force_path wants them (strictly increasing, whole cells apart). options.compute_stiffness
+// is ignored (no stiffness is needed). Throws std::invalid_argument as blocked_force_path does
+// (a position where the contact at δ_J could leave the window or the strip names it).
+PathTable build_path_table(const Grid& window, double e_star, const Grid& strip, const std::vector<double>& heights,
+                           double radius, BallShape shape, const std::vector<double>& positions, double load,
+                           const SolverOptions& options = {}, const PathTableOptions& path_options = {});
+
+// Plain reference: P(δ, ξ) by one cold contact solve on the whole strip grid (no window, no warm
+// start), ball centred at (x, centre_y).
+double path_force_direct(const Grid& strip, const std::vector<double>& heights, double e_star, double radius,
+                         BallShape shape, double x, double centre_y, double approach, const SolverOptions& options = {});
+
+}  // namespace rollspec::contact

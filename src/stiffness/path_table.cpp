@@ -1,0 +1,203 @@
+#include "src/stiffness/path_table.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "kernels/contact/path_table.hpp"
+#include "kernels/contact/version.hpp"
+#include "kernels/texture/line_texture.hpp"
+#include "src/ensemble/checkpoint.hpp"
+#include "src/ensemble/mpi_context.hpp"
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/stiffness/study_strip.hpp"
+#include "src/stiffness/table_text.hpp"
+#include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::stiffness {
+
+using namespace study;
+
+const TableKind kPathTableKind = {kPathTableFileType, "/path_table", "path-table-", "path table"};
+
+namespace {
+
+constexpr double kPeakSigmas = 7.0;  // the strip's highest point (and deepest valley), in rms heights
+constexpr double kReach = 3.0;       // δ_hi = max δ_c + 3 δ_H (B43)
+
+std::string um(double m) {
+  char buf[32];
+  if (m >= 1e-3) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
+  else std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<KeySpec> path_table_keys() {
+  return {
+      integer_key("path_table", "approaches", "law = path: approaches J of the table P(delta, xi) (kernels/beam B43), 2 or more",
+                  std::string("8"), 2, 64),
+      integer_key("path_table", "step",
+                  "law = path: path step in cells between tabulated positions; 0: at most a quarter of the contact radius",
+                  std::string("0"), 0, 1000),
+      real_key("path_table", "strip_length", "m",
+               "law = path: length of the rough strip; 0: the ball's path in the run ((end - start) + one step) plus "
+               "the solver window",
+               std::string("0"), 0.0, std::numeric_limits<double>::infinity()),
+  };
+}
+
+PathTableGeometry path_table_geometry(const Study& s, double radius, double e_star, double load, double path_length) {
+  PathTableGeometry g;
+  g.base = blocked_force_geometry(s, radius, e_star, load, 0.0);
+  const double a = g.base.contact_radius, dx = g.base.cell, dh = a * a / radius;
+  g.path_length = path_length;
+  g.approaches = static_cast<std::size_t>(s.integer("path_table.approaches"));
+  g.step = s.integer("path_table.step") > 0 ? static_cast<std::size_t>(s.integer("path_table.step"))
+                                             : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(a / 4.0 / dx + 1e-9)));
+  // Window: every cell with rigid interference at δ_hi (BF-5; the build refuses otherwise).
+  const double reach = std::max(2.6 * a, std::sqrt(2.0 * radius * ((kReach + 0.3) * dh + 2.0 * kPeakSigmas * g.base.rms)));
+  g.window = texture::fast_even_length(static_cast<std::size_t>(std::ceil(2.0 * reach / dx - 1e-9)) + 2);
+  g.ny = s.is_set("surface.ny") ? static_cast<std::size_t>(s.integer("surface.ny")) : g.window;
+  g.window = std::min(g.window, g.ny);
+  if (g.window < 8) s.refuse("surface.ny", "leaves a path-table window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
+  const double step_length = static_cast<double>(g.step) * dx;
+  g.positions = static_cast<std::size_t>(std::ceil(path_length / step_length - 1e-9)) + 2;  // one step beyond the end
+  const std::size_t need = g.window + (g.positions - 1) * g.step + 1;
+  if (s.real("path_table.strip_length") > 0.0) {
+    g.nx = static_cast<std::size_t>(std::round(s.real("path_table.strip_length") / dx));
+    if (g.nx < need)
+      s.refuse("path_table.strip_length",
+               "= " + num(s.real("path_table.strip_length")) + " m is shorter than the ball's path in the run (" +
+                   um(path_length) + " plus one step of " + um(step_length) + ") plus the solver window (" +
+                   std::to_string(g.window) + " cells of " + um(dx) + "); allowed: 0 (derived) or at least " +
+                   num(static_cast<double>(need) * dx) + " m");
+  } else {
+    g.nx = need;
+  }
+  g.nx += g.nx % 2;
+  // Cost: J paths over every position, ~25 CG iterations of a (2 window)^2 product per solve
+  // (21 ms per solve measured at a 128 window, as blocked_force_geometry), run J paths at a time
+  // over the threads.
+  const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
+  const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
+  g.estimated_seconds = per_solve * static_cast<double>(g.positions * g.approaches);
+  return g;
+}
+
+std::string PathTableGeometry::describe() const {
+  char buf[512];
+  const double dx = base.cell;
+  std::snprintf(buf, sizeof buf,
+                "strip 0 of the surface, cell %s (a/%.3g)%s, strip %zu x %zu cells (%s long, %s wide), window %zu cells, "
+                "%zu approaches (more until P >= 5 W at every position, B43a) x %zu positions (step %zu cells = %s) over the ball's path of %s; contact radius a = %s, "
+                "texture rms %s; build about %.2g s on one core",
+                um(dx).c_str(), base.contact_radius / dx,
+                base.truncated_wavelength > 0.0 ? (", texture below " + um(base.truncated_wavelength) + " dropped").c_str() : "",
+                nx, ny, um(static_cast<double>(nx) * dx).c_str(), um(static_cast<double>(ny) * dx).c_str(), window,
+                approaches, positions, step, um(static_cast<double>(step) * dx).c_str(), um(path_length).c_str(),
+                um(base.contact_radius).c_str(), um(base.rms).c_str(), estimated_seconds);
+  return buf;
+}
+
+namespace {
+
+std::vector<const std::vector<double>*> columns(const PathTableData& t) {
+  return {&t.position, &t.approach, &t.first_contact, &t.force};
+}
+
+std::string inputs_text(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load) {
+  std::ostringstream in;
+  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
+     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
+     << "\n\n[path_table]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
+     << "\npositions = " << g.positions << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
+     << "\ntop_force = " << num(contact::PathTableOptions{}.top_force)
+     << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
+  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
+  in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.base.cell)
+     << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.base.derived_cell ? "allowed" : "refused")
+     << "\n\n[texture]\n";
+  for (const auto& k : texture_io::psd_keys())
+    if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
+  in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+  return in.str();
+}
+
+}  // namespace
+
+std::string PathTableData::checksum() const {
+  std::uint64_t h = column_hash(columns(*this));
+  h = ensemble::fnv1a64(&load, sizeof load, h);
+  return hex16(h);
+}
+
+void PathTableData::load_from(const io::Hdf5Reader& r) {
+  position = r.read("/path_table/position");
+  approach = r.read("/path_table/approach");
+  first_contact = r.read("/path_table/first_contact");
+  force = r.read("/path_table/force");
+  load = r.double_attribute("/path_table", "load");
+}
+
+void PathTableData::save_to(io::Hdf5Writer& w) const {
+  w.write("/path_table/position", {position.size()}, position.data(), "m", "ball position xi_k along the path, from the traverse's start");
+  w.write("/path_table/approach", {approach.size()}, approach.data(), "m", "rigid approach delta_j from the strip's mean plane (kernels/beam B43)");
+  w.write("/path_table/first_contact", {first_contact.size()}, first_contact.data(), "m", "first-contact approach delta_c(xi_k) (kernels/beam B42)");
+  w.write("/path_table/force", {approach.size(), position.size()}, force.data(), "N",
+          "P(delta_j, xi_k): force of the elastic-plastic half-space solve (kernels/beam B41), approach x position");
+  w.attribute("/path_table", "load", load);
+}
+
+CachedTable path_cached_table(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load) {
+  return CachedTable(kPathTableKind, s, inputs_text(s, g, radius, e_star, load));
+}
+
+PathTableData build_path_table(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load,
+                               bool quiet) {
+  const double dx = g.base.cell;
+  const texture::Surface strip = study_strip(s, StripGrid{g.nx, g.ny, dx, g.base.derived_cell}, 0);
+  const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
+  std::vector<double> positions;
+  for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
+  contact::SolverOptions opts;
+  const double h = s.real("stiffness.hardness");
+  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
+  opts.tolerance = s.real("stiffness.tolerance");
+  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  contact::PathTableOptions po;
+  po.approaches = g.approaches;
+  po.reach = kReach;
+  if (!quiet) std::fprintf(stderr, "%spath table: %s\n", ensemble::rank_prefix().c_str(), g.describe().c_str());
+  const auto start = std::chrono::steady_clock::now();
+  contact::PathTable t;
+  try {
+    t = contact::build_path_table(window_grid, e_star, strip_grid, strip.heights, radius, shape, positions, load, opts, po);
+  } catch (const std::invalid_argument& e) {
+    throw config_error(s.where("surface.ny") + ": " + e.what() + "; widen the strip ([surface] ny)");
+  }
+  if (!t.converged)
+    throw data_error("path table: a contact solve did not converge (largest error " + num(t.max_error) +
+                     "); raise [stiffness] max_iterations or tolerance");
+  if (!quiet)
+    std::fprintf(stderr, "%spath table: %zu approaches (last carries >= %.3g W everywhere), %d solves, %d CG iterations, %.3g s wall\n",
+                 ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  PathTableData d;
+  for (double x : t.position) d.position.push_back(x - t.position.front());
+  d.approach = t.approach;
+  d.first_contact = t.first_contact;
+  d.force = t.force;
+  d.load = load;
+  return d;
+}
+
+}  // namespace rollspec::stiffness

@@ -1,0 +1,81 @@
+"""[contact] law = path (kernels/beam B41-B46): the ball-on-beam law on P(delta, xi) of one strip,
+from a cached path table. On a smooth strip P is the Hertz force (to the contact solver's
+discretisation), so the run must reproduce law = hertz; the table is built once and reused; bad
+keys are refused."""
+import glob
+import shutil
+
+import h5py
+import numpy as np
+
+from conftest import SOURCE, run
+
+# Smooth strip (rms 1e-20 m: its response lies ~100 dB below the moving weight's, against a static approach of 0.24 um), 12 um cells (a / 5.8), a 6 mm
+# path at 1 m/s: 8 approaches x ~500 positions on a 40-cell window, a few seconds.
+SMOOTH = ["texture.rms=1e-20", "surface.spacing=12e-6", "texture.short_wavelength=24e-6", "ball.start=0.1",
+          "ball.end=0.106", "spectrum.segment=128", "spectrum.band_min=400", "spectrum.band_max=5000",
+          "study.realisations=1"]
+
+
+def rig(tmp_path, *sets, name="r.h5", command="run"):
+    study = tmp_path / "rig.ini"
+    shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
+    args = [a for kv in sets for a in ("--set", kv)]
+    if command == "plan":
+        return run(["plan", study, *args]), None
+    out = tmp_path / name
+    return run(["run", study, "--out", out, *args]), out
+
+
+def band_levels(path):
+    with h5py.File(path) as f:
+        return f["/bands/level_db"][:], f["/contact/loss_of_contact_share"][0]
+
+
+def test_smooth_strip_reproduces_hertz_and_the_table_is_cached(tmp_path):
+    r, out = rig(tmp_path, "contact.law=path", *SMOOTH)
+    assert r.returncode == 0, r.stderr
+    assert "path table: built" in r.stderr, r.stderr
+    tables = glob.glob(str(tmp_path / "tables" / "path-table-*.h5"))
+    assert len(tables) == 1
+    with h5py.File(tables[0]) as t:
+        force, approach = t["/path_table/force"][:], t["/path_table/approach"][:]
+        assert force.shape == (8, t["/path_table/position"].shape[0])
+        # Smooth: every position has the same column, the Hertz force to the discretisation.
+        e_star = 1.0 / (2 * (1 - 0.3**2) / 210e9)
+        hertz = 4 / 3 * e_star * np.sqrt(0.02) * approach**1.5
+        assert np.max(np.abs(force / hertz[:, None] - 1)) < 5e-3
+    r2, hz = rig(tmp_path, "contact.law=hertz", "contact.filter=none", *SMOOTH, name="hertz.h5")
+    assert r2.returncode == 0, r2.stderr
+    lp, loss_p = band_levels(out)
+    lh, loss_h = band_levels(hz)
+    # Both laws are the same contact up to the solver's discretisation of P (worst 5e-3 in force,
+    # a few 1e-3 in stiffness): the ball-on-contact resonance moves by ~1e-3 and the levels by far less
+    # than 0.1 dB. A wrong delta, position or static start moves them by dB.
+    print("path - hertz band levels, worst", np.max(np.abs(lp - lh)), "dB")
+    assert np.max(np.abs(lp - lh)) < 0.1, (lp - lh)
+    assert loss_p == loss_h == 0.0
+    with h5py.File(out) as f:
+        assert f["/contact"].attrs["law"] in (b"path", "path")
+    r3, _ = rig(tmp_path, "contact.law=path", *SMOOTH, name="again.h5")
+    assert r3.returncode == 0 and "path table: cached" in r3.stderr, r3.stderr
+
+
+def test_plan_lists_the_stage(tmp_path):
+    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, command="plan")
+    assert r.returncode == 0, r.stderr
+    row = next(l for l in r.stdout.splitlines() if l.startswith("path_table "))
+    for text in ("8 approaches (more until P >= 5 W", "window", "strip", "build about", "K > 1 repeats the same run"):
+        assert text in row, row
+
+
+def test_bad_keys_are_refused(tmp_path):
+    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, "path_table.strip_length=1e-3", command="plan")
+    assert r.returncode != 0
+    assert "path_table" in r.stderr and "strip_length" in r.stderr and "allowed" in r.stderr, r.stderr
+    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, "contact.filter=iso2d", command="plan")
+    assert r.returncode != 0 and "filter" in r.stderr and "allowed" in r.stderr, r.stderr
+    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, "path_table.approaches=1", command="plan")
+    assert r.returncode != 0 and "approaches" in r.stderr, r.stderr
+    r, _ = rig(tmp_path, "contact.law=pathx", *SMOOTH, command="plan")
+    assert r.returncode != 0 and "path" in r.stderr, r.stderr
