@@ -1,0 +1,142 @@
+// Equivalent-roughness stage benchmark (issue 19, `[contact] filter = solver`; kernels/contact
+// equivalent_roughness.hpp, README ER-1 … ER-6). Prints CSV to stdout:
+//   case,positions,seconds,seconds_per_position,iterations_per_position,note
+//
+//   small      the isotropic-PSD doctest's path: 12 cells per Hertz radius, 41² window, rms 1e-3 δ_H
+//   seed002    a seed-002-like strip: 40 mm steel ball, E* = 115.4 GPa, H = 5 GPa, W = 2.58 N, on the
+//              seed 002 rig texture (self-affine H = 0.2, roll-off 50 mm, cut-off 4 µm, rms 0.123 µm)
+//              as an isotropic surface, strip 80 mm × 1.3 mm at 2 µm cells, path steps a/4 along
+//              the centre line; wall seconds on OMP_NUM_THREADS threads (the solver's own threads)
+//
+// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] bench_equivalent_roughness [small | seed002 [length_m] [window_half_width_in_a]]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernels/contact/equivalent_roughness.hpp"
+#include "kernels/texture/self_affine_psd.hpp"
+#include "kernels/texture/spectral_surface.hpp"
+
+using namespace rollspec;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::vector<double> uniforms(std::mt19937_64& rng, std::size_t n) {
+  std::vector<double> u(n);
+  for (double& v : u) v = 1.0 - std::generate_canonical<double, 53>(rng);
+  return u;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct Ball {
+  double radius = 0.02, e_star = 115.4e9, load = 2.58;
+  double hertz_approach() const { return std::pow(3.0 * load / (4.0 * e_star * std::sqrt(radius)), 2.0 / 3.0); }
+  double hertz_radius() const { return std::sqrt(radius * hertz_approach()); }
+};
+
+void run(const char* name, const contact::Grid& strip, const std::vector<double>& heights, const contact::Grid& window,
+         const Ball& b, std::size_t step, const contact::SolverOptions& opt, double load_tolerance, const char* note) {
+  std::vector<double> x;
+  const std::size_t margin = window.nx / 2 + 1;
+  for (std::size_t ix = margin; ix + margin < strip.nx; ix += step) x.push_back(strip.x(ix));
+  contact::ContactSolver solver(window, b.e_star);
+  const auto t0 = std::chrono::steady_clock::now();
+  contact::EquivalentRoughnessOptions path;
+  path.load_tolerance = load_tolerance;
+  const auto r = contact::equivalent_roughness(solver, strip, heights, b.radius, contact::BallShape::Sphere, x,
+                                               b.load, opt, path);
+  const double s = seconds_since(t0);
+  double rms = 0.0, area = 0.0, plastic = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    rms += r.height[k] * r.height[k];
+    area += r.contact_area[k];
+    plastic += r.plastic_cells[k];
+  }
+  const double n = static_cast<double>(x.size());
+  std::printf("%s,%zu,%.3f,%.5f,%.1f,%s; converged %d; rms h_eq %.4g m; mean contact area / flat %.3f; "
+              "plastic cells per position %.1f\n",
+              name, x.size(), s, s / n, r.iterations / n, note, r.converged ? 1 : 0, std::sqrt(rms / n),
+              area / n / r.smooth_contact_area, plastic / n);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string which = argc > 1 ? argv[1] : "small";
+  std::printf("case,positions,seconds,seconds_per_position,iterations_per_position,note\n");
+  std::mt19937_64 rng(2002);
+  // Options: the frozen-set stiffness CG tolerance (Newton's slope) and the load tolerance |P − W|/W.
+  const double stiffness_tolerance = std::getenv("ER_STIFFNESS_TOL") ? std::atof(std::getenv("ER_STIFFNESS_TOL")) : 1e-12;
+  const double load_tolerance = std::getenv("ER_LOAD_TOL") ? std::atof(std::getenv("ER_LOAD_TOL")) : 1e-10;
+  if (which == "small") {
+    Ball b;
+    b.load = 4.0 / 3.0 * b.e_star * std::sqrt(b.radius) * std::pow(0.241e-6, 1.5);
+    const double a = b.hertz_radius(), dx = a / 12.0;
+    texture::SelfAffineSpec spec;
+    spec.hurst = 0.8;
+    spec.k_rolloff = 1.0 / a;
+    spec.k_short = 6.0 / a;
+    spec.rms = 1e-3 * b.hertz_approach();
+    texture::SpectralSurfaceSpec sspec;
+    sspec.nx = 2048;
+    sspec.ny = 96;
+    sspec.dx = sspec.dy = dx;
+    const texture::SpectralSurfaceGenerator gen(texture::SelfAffinePsd(spec).to_psd(), sspec);
+    texture::Surface s;
+    const auto u1 = uniforms(rng, gen.modes()), u2 = uniforms(rng, gen.modes());
+    gen.generate(u1.data(), u2.data(), s);
+    const std::size_t half = 20;  // 40² window (1.67 a half-width): 80² products, no large prime factor
+    contact::SolverOptions opt;
+    opt.stiffness_tolerance = stiffness_tolerance;
+    char note[120];
+    std::snprintf(note, sizeof note, "elastic; stiffness tolerance %.0e; load tolerance %.0e", stiffness_tolerance,
+                  load_tolerance);
+    run("small", contact::Grid{sspec.nx, sspec.ny, dx, dx}, s.heights, contact::Grid{2 * half, 2 * half, dx, dx},
+        b, 3, opt, load_tolerance, note);
+    return 0;
+  }
+  // seed002
+  Ball b;
+  const double length = argc > 2 ? std::atof(argv[2]) : 0.08;
+  const double span = argc > 3 ? std::atof(argv[3]) : 2.0;
+  const double dx = 2e-6, a = b.hertz_radius();
+  texture::SelfAffineSpec spec;
+  spec.hurst = 0.2;
+  spec.k_rolloff = 2.0 * kPi / 50e-3;
+  spec.k_short = 2.0 * kPi / 4e-6;
+  spec.rms = 0.123e-6;
+  texture::SpectralSurfaceSpec sspec;
+  sspec.nx = 2 * static_cast<std::size_t>(std::lround(0.5 * length / dx));
+  sspec.ny = 650;
+  sspec.dx = sspec.dy = dx;
+  const auto tg = std::chrono::steady_clock::now();
+  const texture::SpectralSurfaceGenerator gen(texture::SelfAffinePsd(spec).to_psd(), sspec);
+  texture::Surface s;
+  {
+    const auto u1 = uniforms(rng, gen.modes()), u2 = uniforms(rng, gen.modes());
+    gen.generate(u1.data(), u2.data(), s);
+  }
+  std::fprintf(stderr, "surface %zu x %zu generated in %.1f s\n", sspec.nx, sspec.ny, seconds_since(tg));
+  // Window: 2·span·a wide (nx, ny ≤ the strip), even sizes (FFT-friendly).
+  const std::size_t w = 2 * static_cast<std::size_t>(std::ceil(span * a / dx));
+  contact::SolverOptions opt;
+  opt.hardness = 5e9;
+  opt.stiffness_tolerance = stiffness_tolerance;
+  const std::size_t step = static_cast<std::size_t>(std::floor(0.25 * a / dx));
+  char note[200];
+  std::snprintf(note, sizeof note, "%zu x %zu strip, %zu^2 window, step %zu cells, a = %.1f um, stiffness tol %.0e, load tol %.0e",
+                sspec.nx, sspec.ny, w, step, a * 1e6, stiffness_tolerance, load_tolerance);
+  run("seed002", contact::Grid{sspec.nx, sspec.ny, dx, dx}, s.heights, contact::Grid{w, w, dx, dx}, b, step, opt,
+      load_tolerance, note);
+  return 0;
+}
