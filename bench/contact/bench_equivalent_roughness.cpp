@@ -8,7 +8,12 @@
 //              as an isotropic surface, strip 80 mm × 1.3 mm at 2 µm cells, path steps a/4 along
 //              the centre line; wall seconds on OMP_NUM_THREADS threads (the solver's own threads)
 //
-// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] bench_equivalent_roughness [small | seed002 [length_m] [window_half_width_in_a]]
+//   departure  uniform corrugation h = A cos(kx) at ka = 1 and 2: the fundamental of h_eq over
+//              A sin(ka)/(ka) (1 = the linear-elastic limit ER-4) and the mean of h_eq over A, against
+//              the amplitude A/δ_H (partial contact from A ≈ δ_H/… on) and the hardness H/p0
+//              (22 cells per Hertz radius, ball on a cell centre; the 1e-3 row is the discretisation)
+//
+// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] bench_equivalent_roughness [small | departure | seed002 [length_m] [window_half_width_in_a]]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +21,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernels/contact/equivalent_roughness.hpp"
@@ -69,6 +75,31 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
               area / n / r.smooth_contact_area, plastic / n);
 }
 
+// Least-squares h ≈ c0 + c cos(kx) + s sin(kx): returns {c0, sqrt(c² + s²)} (3 × 3 normal equations, Cramer).
+std::pair<double, double> fit(const std::vector<double>& x, const std::vector<double>& h, double k) {
+  double m[3][3] = {}, r[3] = {};
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double f[3] = {1.0, std::cos(k * x[i]), std::sin(k * x[i])};
+    for (int a = 0; a < 3; ++a) {
+      r[a] += f[a] * h[i];
+      for (int b = 0; b < 3; ++b) m[a][b] += f[a] * f[b];
+    }
+  }
+  auto det = [](const double q[3][3]) {
+    return q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
+           q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
+  };
+  const double d = det(m);
+  double coef[3];
+  for (int c = 0; c < 3; ++c) {
+    double q[3][3];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) q[a][b] = b == c ? r[a] : m[a][b];
+    coef[c] = det(q) / d;
+  }
+  return {coef[0], std::hypot(coef[1], coef[2])};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -105,6 +136,46 @@ int main(int argc, char** argv) {
         b, 3, opt, load_tolerance, note);
     return 0;
   }
+  if (which == "departure") {
+    std::printf("ka,amplitude_over_delta_H,hardness_over_p0,fundamental_over_linear,mean_over_amplitude,"
+                "min_contact_area_over_flat,plastic_cells_per_position\n");
+    Ball b;
+    const double d_h = b.hertz_approach(), a = b.hertz_radius(), dx = a / 22.0;
+    const double p0 = 2.0 * b.e_star * a / (kPi * b.radius);
+    const contact::Grid window{99, 99, dx, dx};  // half-width 2.2 a, odd: ball on a cell centre
+    for (double ka : {1.0, 2.0})
+      for (double hard : {0.0, 1.0, 0.5})
+        for (double amp : {1e-3, 0.1, 0.3, 0.6, 1.0}) {
+          const double k = ka / a;
+          const double wavelength = 2.0 * kPi / k / dx;
+          const std::size_t step = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(wavelength / 16.0)));
+          const std::size_t count = 20;
+          const contact::Grid strip{2 * window.nx + step * count, window.ny + 40, dx, dx};
+          std::vector<double> h(strip.size());
+          for (std::size_t iy = 0; iy < strip.ny; ++iy)
+            for (std::size_t ix = 0; ix < strip.nx; ++ix) h[iy * strip.nx + ix] = amp * d_h * std::cos(k * strip.x(ix));
+          std::vector<double> x(count);
+          for (std::size_t i = 0; i < count; ++i)
+            x[i] = strip.x(window.nx + i * step);
+          contact::SolverOptions opt;
+          if (hard > 0.0) opt.hardness = hard * p0;
+          contact::ContactSolver solver(window, b.e_star);
+          const auto r =
+              contact::equivalent_roughness(solver, strip, h, b.radius, contact::BallShape::Sphere, x, b.load, opt);
+          // Fundamental and mean by least squares on 1, cos, sin over the 20 positions (1.25 wavelengths).
+          const auto [mean_fit, fundamental] = fit(x, r.height, k);
+          double amin = 1e300, plastic = 0.0;
+          for (std::size_t i = 0; i < count; ++i) {
+            amin = std::min(amin, r.contact_area[i] / r.smooth_contact_area);
+            plastic += r.plastic_cells[i];
+          }
+          std::printf("%.1f,%.3g,%s,%.4f,%.4f,%.3f,%.1f%s\n", ka, amp, hard > 0.0 ? std::to_string(hard).c_str() : "inf",
+                      fundamental / (amp * d_h * std::sin(ka) / ka), mean_fit / (amp * d_h), amin,
+                      plastic / static_cast<double>(count), r.converged ? "" : " (not converged)");
+          std::fflush(stdout);
+        }
+    return 0;
+  }
   // seed002
   Ball b;
   const double length = argc > 2 ? std::atof(argv[2]) : 0.08;
@@ -127,8 +198,8 @@ int main(int argc, char** argv) {
     gen.generate(u1.data(), u2.data(), s);
   }
   std::fprintf(stderr, "surface %zu x %zu generated in %.1f s\n", sspec.nx, sspec.ny, seconds_since(tg));
-  // Window: 2·span·a wide (nx, ny ≤ the strip), even sizes (FFT-friendly).
-  const std::size_t w = 2 * static_cast<std::size_t>(std::ceil(span * a / dx));
+  // Window: at least 2·span·a wide, a multiple of 16 cells (FFT-friendly products).
+  const std::size_t w = 16 * static_cast<std::size_t>(std::ceil(2.0 * span * a / dx / 16.0));
   contact::SolverOptions opt;
   opt.hardness = 5e9;
   opt.stiffness_tolerance = stiffness_tolerance;
