@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 #include "kernels/contact/force_control.hpp"
@@ -67,17 +68,49 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   out.iterations += smooth.iterations;
   out.converged = smooth.converged;
   if (smooth.approach > flat.limit(0)) flat.reject(0, smooth.approach, "flat strip: ");
-  for (std::size_t k = 0; k < positions.size(); ++k) {
-    if (path_options.warm_start) {
-      // BF-6: previous field shifted with the ball; Newton from the previous δ_eq (δ_smooth at k = 0).
-      if (k > 0) window.shift_field(p, window.ball_shift(k));
-      control.start_approach = k > 0 ? out.approach[k - 1] : out.smooth_approach;
-    } else {
-      p.assign(solver.grid().size(), 0.0);
+  // One chunk [k0, k1): from the flat field and δ_smooth, then BF-6 and the previous δ_eq.
+  const std::vector<double> p_smooth = p;
+  std::vector<ContactResult> results(positions.size());
+  auto run_chunk = [&](ContactSolver& chunk_solver, std::size_t k0, std::size_t k1) {
+    std::vector<double> field = p_smooth;
+    ForceControlOptions c = control;
+    for (std::size_t k = k0; k < k1; ++k) {
+      if (path_options.warm_start) {
+        // BF-6: previous field shifted with the ball; Newton from the previous δ_eq.
+        if (k > k0) window.shift_field(field, window.ball_shift(k));
+        c.start_approach = k > k0 ? results[k - 1].approach : out.smooth_approach;
+      } else {
+        field.assign(chunk_solver.grid().size(), 0.0);
+      }
+      results[k] = solve_force(chunk_solver, window.gap(k), load, field, options, c);
     }
-    const ContactResult r = solve_force(solver, window.gap(k), load, p, options, control);
-    if (r.approach > window.limit(k)) window.reject(k, r.approach);  // BF-5 at δ_eq
-    record(out, k, r);
+  };
+  const std::size_t n = positions.size();
+  const std::size_t chunk = path_options.chunk_positions == 0 ? n : path_options.chunk_positions;
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  if (chunks <= 1) {
+    run_chunk(solver, 0, n);
+  } else {
+    // Chunks in parallel, a fresh solver per chunk (no state carried from whichever chunk a thread
+    // ran before; the solver's own loops run on that thread: same bits, README test_threads).
+    // Exceptions are carried out of the parallel region.
+    std::exception_ptr error;
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t>(chunks); ++c) {
+      try {
+        ContactSolver own(solver.grid(), solver.half_space().e_star());
+        const std::size_t k0 = static_cast<std::size_t>(c) * chunk;
+        run_chunk(own, k0, std::min(n, k0 + chunk));
+      } catch (...) {
+#pragma omp critical(equivalent_roughness_error)
+        if (!error) error = std::current_exception();
+      }
+    }
+    if (error) std::rethrow_exception(error);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (results[k].approach > window.limit(k)) window.reject(k, results[k].approach);  // BF-5 at δ_eq
+    record(out, k, results[k]);
   }
   finish(out);
   return out;

@@ -35,6 +35,11 @@ struct EquivalentRoughnessOptions {
   double load_tolerance = 1e-10;  // |P − W| ≤ load_tolerance · W at every position
   int max_solves = 100;           // contact solves allowed per position
   bool warm_start = true;         // BF-6 field + previous δ_eq; false: every position cold
+  // Chunks of this many positions (0: one chunk, the whole path in order). Each chunk starts from
+  // the flat strip's field and δ_smooth, then warm-starts along itself; chunks run in parallel
+  // (OpenMP, one solver per thread). The chunk boundaries are fixed by this number alone, so the
+  // result has the same bits for any thread count (ER-1 is solved to the same tolerance either way).
+  std::size_t chunk_positions = 0;
 };
 
 struct EquivalentRoughness {
@@ -50,7 +55,8 @@ struct EquivalentRoughness {
   bool converged = false;            // every position met the stopping rule and the load tolerance
 };
 
-// ER-1, ER-2 on the moving window of `solver` (open boundary, same dx, dy as `strip`, not larger).
+// ER-1, ER-2 on the moving window of `solver` (open boundary, same dx, dy as `strip`, not larger;
+// with chunks, the other threads use solvers of the same grid and E*).
 // `strip_heights`: strip.size() values (m, x-fastest). Throws std::invalid_argument on inconsistent
 // input (as blocked_force_path), load ≤ 0, or a position whose δ_eq breaks BF-5 (message names it).
 EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& strip,

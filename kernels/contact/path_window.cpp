@@ -81,7 +81,6 @@ PathWindow::PathWindow(const Grid& window, const Grid& strip, const std::vector<
       }
     height_max_ = *std::max_element(column_max_.begin(), column_max_.end());
   }
-  window_heights_.assign(win.size(), 0.0);
   limit_.resize(positions.size());
   limit_where_.resize(positions.size());
   for (std::size_t k = 0; k < positions.size(); ++k) approach_limit(k);
@@ -101,17 +100,18 @@ void PathWindow::reject(std::size_t k, double d, const char* prefix) const {
   fail(os.str());
 }
 
-std::vector<double> PathWindow::gap(std::size_t k) {
+std::vector<double> PathWindow::gap(std::size_t k) const {
   const Grid& win = window_;
   const std::size_t nxw = win.nx, ny = win.ny;
   const std::size_t j = static_cast<std::size_t>(start_[k]);
+  std::vector<double> window_heights(win.size());
   for (std::size_t iy = 0; iy < ny; ++iy)
     for (std::size_t ix = 0; ix < nxw; ++ix)
-      window_heights_[iy * nxw + ix] = heights_.empty() ? 0.0 : heights_[(row0_ + iy) * strip_.nx + j + ix];
+      window_heights[iy * nxw + ix] = heights_.empty() ? 0.0 : heights_[(row0_ + iy) * strip_.nx + j + ix];
   // Window coordinates = strip coordinates − (strip.x(j) − win.x(0), strip.y(row0) − win.y(0)).
   const double offset_x = strip_.x(j) - win.x(0);
   const double offset_y = strip_.y(row0_) - win.y(0);
-  return ball_gap(win, radius_, window_heights_, shape_, positions_[k] - offset_x, centre_y_ - offset_y);
+  return ball_gap(win, radius_, window_heights, shape_, positions_[k] - offset_x, centre_y_ - offset_y);
 }
 
 void PathWindow::shift_field(std::vector<double>& field, std::ptrdiff_t s) const {

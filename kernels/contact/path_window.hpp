@@ -27,8 +27,8 @@ class PathWindow {
   // Throws std::invalid_argument: approach d at position k exceeds BF-5 (message names both).
   [[noreturn]] void reject(std::size_t k, double d, const char* prefix = "") const;
   [[noreturn]] void fail(const std::string& what) const;
-  // Undeformed gap s^(k) (BF-1) on the window at position k.
-  std::vector<double> gap(std::size_t k);
+  // Undeformed gap s^(k) (BF-1) on the window at position k (thread-safe: no shared scratch).
+  std::vector<double> gap(std::size_t k) const;
   // Shift of the ball relative to the window from position k−1 to k (σ_k of BF-6), and of the strip.
   std::ptrdiff_t ball_shift(std::size_t k) const { return shift_[k]; }
   std::ptrdiff_t strip_shift(std::size_t k) const { return -(start_[k] - start_[k - 1]); }
@@ -48,7 +48,7 @@ class PathWindow {
   std::string caller_;
   std::vector<std::ptrdiff_t> start_, shift_;
   std::size_t row0_ = 0;  // first strip row of the window
-  std::vector<double> column_max_, row_max_, window_heights_, limit_, shifted_;
+  std::vector<double> column_max_, row_max_, limit_;
   std::vector<const char*> limit_where_;
   double height_max_ = 0.0;
 };

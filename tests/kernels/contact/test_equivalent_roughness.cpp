@@ -111,6 +111,13 @@ TEST_CASE("equivalent roughness: moving window with warm starts equals the cold 
   // approaches agree to ~1e-9 δ (solver tolerance times the P(δ) slope ratio).
   CHECK(worst < 1e-8 * h.approach);
   CHECK(std::fabs(fast.smooth_approach - ref.smooth_approach) < 1e-8 * h.approach);
+  // Chunks of 5 positions (4 chunks, each from the flat field): the same to the tolerance.
+  EquivalentRoughnessOptions chunked;
+  chunked.chunk_positions = 5;
+  const EquivalentRoughness parts =
+      equivalent_roughness(solver, c.strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, chunked);
+  REQUIRE(parts.converged);
+  for (std::size_t k = 0; k < x.size(); ++k) CHECK(std::fabs(parts.height[k] - ref.height[k]) < 1e-8 * h.approach);
 }
 
 TEST_CASE("equivalent roughness: same bits on 1 and 2 threads") {
@@ -120,16 +127,21 @@ TEST_CASE("equivalent roughness: same bits on 1 and 2 threads") {
   const auto x = cell_positions(c.strip, -18, 4, 9);
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();
-  std::vector<EquivalentRoughness> r;
-  for (int threads : {1, 2}) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    ContactSolver solver(c.window, h.e_star);
-    r.push_back(equivalent_roughness(solver, c.strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt));
-    omp_set_num_threads(before);
+  // Serial path, and chunks of 2 positions (5 chunks on the threads, dynamic schedule).
+  EquivalentRoughnessOptions chunked;
+  chunked.chunk_positions = 2;
+  for (const EquivalentRoughnessOptions& po : {EquivalentRoughnessOptions{}, chunked}) {
+    std::vector<EquivalentRoughness> r;
+    for (int threads : {1, 2}) {
+      const int before = omp_get_max_threads();
+      omp_set_num_threads(threads);
+      ContactSolver solver(c.window, h.e_star);
+      r.push_back(equivalent_roughness(solver, c.strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, po));
+      omp_set_num_threads(before);
+    }
+    CHECK(same_bits(r[0].height, r[1].height));
+    CHECK(same_bits(r[0].approach, r[1].approach));
   }
-  CHECK(same_bits(r[0].height, r[1].height));
-  CHECK(same_bits(r[0].approach, r[1].approach));
 }
 
 TEST_CASE("equivalent roughness: confinement (BF-5) refused, naming the position") {
