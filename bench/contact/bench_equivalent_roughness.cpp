@@ -6,14 +6,15 @@
 //   seed002    a seed-002-like strip: 40 mm steel ball, E* = 115.4 GPa, H = 5 GPa, W = 2.58 N, on the
 //              seed 002 rig texture (self-affine H = 0.2, roll-off 50 mm, cut-off 4 µm, rms 0.123 µm)
 //              as an isotropic surface, strip 80 mm × 1.3 mm at 2 µm cells, path steps a/4 along
-//              the centre line; wall seconds on OMP_NUM_THREADS threads (the solver's own threads)
+//              the centre line; wall seconds on OMP_NUM_THREADS threads (the solver's own threads,
+//              or with ER_CHUNK the path's chunks, equivalent_roughness.hpp)
 //
 //   departure  uniform corrugation h = A cos(kx) at ka = 1 and 2: the fundamental of h_eq over
 //              A sin(ka)/(ka) (1 = the linear-elastic limit ER-4) and the mean of h_eq over A, against
 //              the amplitude A/δ_H (partial contact from A ≈ δ_H/… on) and the hardness H/p0
 //              (22 cells per Hertz radius, ball on a cell centre; the 1e-3 row is the discretisation)
 //
-// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] bench_equivalent_roughness [small | departure | seed002 [length_m] [window_half_width_in_a]]
+// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] [ER_CELL=2e-6 (seed002 cell, m)] [ER_CHUNK=0 (positions per parallel chunk)] bench_equivalent_roughness [small | departure | seed002 [length_m] [window_half_width_in_a]]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -59,6 +60,7 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
   const auto t0 = std::chrono::steady_clock::now();
   contact::EquivalentRoughnessOptions path;
   path.load_tolerance = load_tolerance;
+  path.chunk_positions = std::getenv("ER_CHUNK") ? static_cast<std::size_t>(std::atol(std::getenv("ER_CHUNK"))) : 0;
   const auto r = contact::equivalent_roughness(solver, strip, heights, b.radius, contact::BallShape::Sphere, x,
                                                b.load, opt, path);
   const double s = seconds_since(t0);
@@ -69,9 +71,9 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
     plastic += r.plastic_cells[k];
   }
   const double n = static_cast<double>(x.size());
-  std::printf("%s,%zu,%.3f,%.5f,%.1f,%s; converged %d; rms h_eq %.4g m; mean contact area / flat %.3f; "
+  std::printf("%s,%zu,%.3f,%.5f,%.1f,%s; chunks of %zu positions; converged %d; rms h_eq %.4g m; mean contact area / flat %.3f; "
               "plastic cells per position %.1f\n",
-              name, x.size(), s, s / n, r.iterations / n, note, r.converged ? 1 : 0, std::sqrt(rms / n),
+              name, x.size(), s, s / n, r.iterations / n, note, path.chunk_positions, r.converged ? 1 : 0, std::sqrt(rms / n),
               area / n / r.smooth_contact_area, plastic / n);
 }
 
@@ -180,7 +182,7 @@ int main(int argc, char** argv) {
   Ball b;
   const double length = argc > 2 ? std::atof(argv[2]) : 0.08;
   const double span = argc > 3 ? std::atof(argv[3]) : 2.0;
-  const double dx = 2e-6, a = b.hertz_radius();
+  const double dx = std::getenv("ER_CELL") ? std::atof(std::getenv("ER_CELL")) : 2e-6, a = b.hertz_radius();
   texture::SelfAffineSpec spec;
   spec.hurst = 0.2;
   spec.k_rolloff = 2.0 * kPi / 50e-3;
@@ -188,7 +190,8 @@ int main(int argc, char** argv) {
   spec.rms = 0.123e-6;
   texture::SpectralSurfaceSpec sspec;
   sspec.nx = 2 * static_cast<std::size_t>(std::lround(0.5 * length / dx));
-  sspec.ny = 650;
+  sspec.ny = 2 * static_cast<std::size_t>(std::lround(0.5 * 1.3e-3 / dx));
+  sspec.allow_truncation = dx > 2e-6;  // coarser cells drop the roughness below two cells
   sspec.dx = sspec.dy = dx;
   const auto tg = std::chrono::steady_clock::now();
   const texture::SpectralSurfaceGenerator gen(texture::SelfAffinePsd(spec).to_psd(), sspec);
