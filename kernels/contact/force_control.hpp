@@ -1,5 +1,6 @@
 #pragma once
 // Approach for a given total force, with any hardness (e.g. the ball's own weight, kernels/README.md (contact)).
+#include <limits>
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"
@@ -9,6 +10,10 @@ namespace rollspec::contact {
 struct ForceControlOptions {
   double force_tolerance = 1e-10;  // stop when |P − F| ≤ force_tolerance · F
   int max_solves = 100;            // contact solves allowed (bracketing + Newton/bisection)
+  // Warm start (e.g. the previous position of a path, equivalent_roughness.hpp): the first solve at
+  // this approach from `pressure` as given, Newton from there with the bracket [first contact, +inf)
+  // grown by steps; NaN: the cold bracket from first contact described below.
+  double start_approach = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Finds w with P(w) = force (N) on the open half-space by safeguarded Newton on the approach,

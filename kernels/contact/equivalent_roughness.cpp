@@ -1,0 +1,151 @@
+#include "kernels/contact/equivalent_roughness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+
+#include "kernels/contact/force_control.hpp"
+#include "kernels/contact/path_window.hpp"
+
+namespace rollspec::contact {
+
+namespace {
+
+void check_load(double load) {
+  if (!(load > 0.0) || !std::isfinite(load)) throw std::invalid_argument("equivalent_roughness: load must be finite, > 0");
+}
+
+void record(EquivalentRoughness& out, std::size_t k, const ContactResult& r) {
+  out.approach[k] = r.approach;
+  out.contact_area[k] = r.contact_area;
+  out.plastic_cells[k] = static_cast<double>(r.plastic_cells);
+  out.iterations += r.iterations;
+  out.max_error = std::max(out.max_error, r.error);
+  out.converged = out.converged && r.converged;
+}
+
+EquivalentRoughness empty_result(const std::vector<double>& positions) {
+  EquivalentRoughness out;
+  out.position = positions;
+  out.approach.assign(positions.size(), 0.0);
+  out.height.assign(positions.size(), 0.0);
+  out.contact_area.assign(positions.size(), 0.0);
+  out.plastic_cells.assign(positions.size(), 0.0);
+  out.converged = true;
+  return out;
+}
+
+void finish(EquivalentRoughness& out) {
+  for (std::size_t k = 0; k < out.approach.size(); ++k) out.height[k] = out.smooth_approach - out.approach[k];  // ER-2
+}
+
+}  // namespace
+
+EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& strip,
+                                         const std::vector<double>& strip_heights, double radius, BallShape shape,
+                                         const std::vector<double>& positions, double load,
+                                         const SolverOptions& options,
+                                         const EquivalentRoughnessOptions& path_options) {
+  check_load(load);
+  if (solver.half_space().boundary() != Boundary::Open)
+    throw std::invalid_argument("equivalent_roughness: the solver must use the open boundary");
+  PathWindow window(solver.grid(), strip, strip_heights, radius, shape, positions, path_options.centre_y,
+                    "equivalent_roughness");
+  // δ_smooth: the same window at position 0 on a flat strip (whole-cell moves of the ball leave the
+  // discrete flat problem unchanged, so one solve serves every position).
+  const std::vector<double> no_heights;
+  PathWindow flat(solver.grid(), strip, no_heights, radius, shape, {positions[0]}, path_options.centre_y,
+                  "equivalent_roughness");
+  ForceControlOptions control;
+  control.force_tolerance = path_options.load_tolerance;
+  control.max_solves = path_options.max_solves;
+  EquivalentRoughness out = empty_result(positions);
+  std::vector<double> p;
+  const ContactResult smooth = solve_force(solver, flat.gap(0), load, p, options, control);
+  out.smooth_approach = smooth.approach;
+  out.smooth_contact_area = smooth.contact_area;
+  out.iterations += smooth.iterations;
+  out.converged = smooth.converged;
+  if (smooth.approach > flat.limit(0)) flat.reject(0, smooth.approach, "flat strip: ");
+  // One chunk [k0, k1): from the flat field and δ_smooth, then BF-6 and the previous δ_eq.
+  const std::vector<double> p_smooth = p;
+  std::vector<ContactResult> results(positions.size());
+  auto run_chunk = [&](ContactSolver& chunk_solver, std::size_t k0, std::size_t k1) {
+    std::vector<double> field = p_smooth;
+    ForceControlOptions c = control;
+    for (std::size_t k = k0; k < k1; ++k) {
+      if (path_options.warm_start) {
+        // BF-6: previous field shifted with the ball; Newton from the previous δ_eq.
+        if (k > k0) window.shift_field(field, window.ball_shift(k));
+        c.start_approach = k > k0 ? results[k - 1].approach : out.smooth_approach;
+      } else {
+        field.assign(chunk_solver.grid().size(), 0.0);
+      }
+      results[k] = solve_force(chunk_solver, window.gap(k), load, field, options, c);
+    }
+  };
+  const std::size_t n = positions.size();
+  const std::size_t chunk = path_options.chunk_positions == 0 ? n : path_options.chunk_positions;
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  if (chunks <= 1) {
+    run_chunk(solver, 0, n);
+  } else {
+    // Chunks in parallel, a fresh solver per chunk (no state carried from whichever chunk a thread
+    // ran before; the solver's own loops run on that thread: same bits, README test_threads).
+    // Exceptions are carried out of the parallel region.
+    std::exception_ptr error;
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t>(chunks); ++c) {
+      try {
+        ContactSolver own(solver.grid(), solver.half_space().e_star());
+        const std::size_t k0 = static_cast<std::size_t>(c) * chunk;
+        run_chunk(own, k0, std::min(n, k0 + chunk));
+      } catch (...) {
+#pragma omp critical(equivalent_roughness_error)
+        if (!error) error = std::current_exception();
+      }
+    }
+    if (error) std::rethrow_exception(error);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (results[k].approach > window.limit(k)) window.reject(k, results[k].approach);  // BF-5 at δ_eq
+    record(out, k, results[k]);
+  }
+  finish(out);
+  return out;
+}
+
+EquivalentRoughness equivalent_roughness_reference(const Grid& strip, const std::vector<double>& strip_heights,
+                                                   double radius, BallShape shape,
+                                                   const std::vector<double>& positions, double load, double e_star,
+                                                   const SolverOptions& options,
+                                                   const EquivalentRoughnessOptions& path_options) {
+  check_load(load);
+  check_grid(strip);
+  if (!strip_heights.empty() && strip_heights.size() != strip.size())
+    throw std::invalid_argument("equivalent_roughness: strip heights size != strip grid size");
+  ContactSolver solver(strip, e_star);
+  ForceControlOptions control;
+  control.force_tolerance = path_options.load_tolerance;
+  control.max_solves = path_options.max_solves;
+  EquivalentRoughness out = empty_result(positions);
+  std::vector<double> p;
+  const ContactResult smooth =
+      solve_force(solver, ball_gap(strip, radius, {}, shape, positions.at(0), path_options.centre_y), load, p,
+                  options, control);
+  out.smooth_approach = smooth.approach;
+  out.smooth_contact_area = smooth.contact_area;
+  out.converged = smooth.converged;
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    p.clear();
+    const ContactResult r = solve_force(
+        solver, ball_gap(strip, radius, strip_heights, shape, positions[k], path_options.centre_y), load, p, options,
+        control);
+    record(out, k, r);
+  }
+  finish(out);
+  return out;
+}
+
+}  // namespace rollspec::contact
