@@ -43,6 +43,31 @@ def iterations(path, K):
         return float(f["/contact/newton_per_step"][0]) * steps * K
 
 
+def measure(binary, baseline, study, K, repeats):
+    """Medians per (build, length), per-iteration µs per build, iteration counts, result differences."""
+    with open(study) as f:
+        distance = next(float(l.split("=")[1]) for l in f if l.replace(" ", "").startswith("distance="))
+    builds = {"this": binary, "previous": baseline}
+    lengths = {"full": distance, "half": distance / 2}
+    with tempfile.TemporaryDirectory() as tmp:
+        runs, its = {}, {}
+        for _ in range(repeats):
+            for b, exe in builds.items():
+                for l, d in lengths.items():
+                    out = Path(tmp) / f"{b}-{l}.h5"
+                    cmd = [exe, "run", study, "--out", out, "--force", "--quiet", "--set", f"study.realisations={K}",
+                           "--set", f"roll.distance={d}"]
+                    runs.setdefault((b, l), []).append(timed(cmd))
+                    its[(b, l)] = iterations(out, K)
+        with h5py.File(Path(tmp) / "this-full.h5") as f, h5py.File(Path(tmp) / "previous-full.h5") as g:
+            psd, psd0 = f["/psd/mean"][:], g["/psd/mean"][:]
+            band, band0 = f["/bands/level_db"][:], g["/bands/level_db"][:]
+    med = {k: (statistics.median(r[0] for r in v), statistics.median(r[1] for r in v)) for k, v in runs.items()}
+    per_it = {b: 1e6 * (med[(b, "full")][1] - med[(b, "half")][1]) / (its[(b, "full")] - its[(b, "half")]) for b in builds}
+    rel = float(np.abs(psd[:, 1:] - psd0[:, 1:]).max() / np.abs(psd0[:, 1:]).max())
+    return med, per_it, its, rel, float(np.abs(band - band0).max())
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--bin", default="build/release/rollspec")
@@ -52,25 +77,8 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     a = ap.parse_args()
     K = a.realisations
-    with open(a.study) as f:
-        distance = next(float(l.split("=")[1]) for l in f if l.replace(" ", "").startswith("distance="))
-    builds = {"this": a.bin, "previous": a.baseline}
-    lengths = {"full": distance, "half": distance / 2}
-    with tempfile.TemporaryDirectory() as tmp:
-        runs, its = {}, {}
-        for _ in range(a.repeats):
-            for b, binary in builds.items():
-                for l, d in lengths.items():
-                    out = Path(tmp) / f"{b}-{l}.h5"
-                    cmd = [binary, "run", a.study, "--out", out, "--force", "--quiet", "--set", f"study.realisations={K}",
-                           "--set", f"roll.distance={d}"]
-                    runs.setdefault((b, l), []).append(timed(cmd))
-                    its[(b, l)] = iterations(out, K)
-        with h5py.File(Path(tmp) / "this-full.h5") as f, h5py.File(Path(tmp) / "previous-full.h5") as g:
-            psd, psd0 = f["/psd/mean"][:], g["/psd/mean"][:]
-            band, band0 = f["/bands/level_db"][:], g["/bands/level_db"][:]
-    med = {k: (statistics.median(r[0] for r in v), statistics.median(r[1] for r in v)) for k, v in runs.items()}
-    per_it = {b: 1e6 * (med[(b, "full")][1] - med[(b, "half")][1]) / (its[(b, "full")] - its[(b, "half")]) for b in builds}
+    builds = ("this", "previous")
+    med, per_it, its, rel, dband = measure(a.bin, a.baseline, a.study, K, a.repeats)
     print(f"whole `rollspec run {a.study}`, {K} realisations, 1 thread, median of {a.repeats} interleaved runs "
           f"(/usr/bin/time)\n")
     print("| build | wall | CPU | CPU per realisation | Newton iterations per realisation | per Newton iteration |")
@@ -82,9 +90,8 @@ def main():
     pw, pc = med[("previous", "full")]
     print(f"\nthis / previous: whole command wall {tw / pw:.3f}, CPU {tc / pc:.3f} (speed-up {pc / tc:.2f}); "
           f"per Newton iteration {per_it['this'] / per_it['previous']:.3f} (speed-up {per_it['previous'] / per_it['this']:.2f})")
-    rel = np.abs(psd[:, 1:] - psd0[:, 1:]).max() / np.abs(psd0[:, 1:]).max()
     print(f"results: PSD means differ by at most {rel:.2e} of their largest value; band levels by at most "
-          f"{np.abs(band - band0).max():.2e} dB")
+          f"{dband:.2e} dB")
 
 
 if __name__ == "__main__":
