@@ -82,13 +82,7 @@ std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double ra
      << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
      << "\n\n[blocked_force]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
      << "\nsegment = " << g.segment << "\n";
-  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
-  in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
-     << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.derived_cell ? "allowed" : "refused")
-     << "\n\n[texture]\n";
-  for (const auto& k : texture_io::psd_keys())
-    if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
-  in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+  in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
 

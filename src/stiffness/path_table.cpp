@@ -121,13 +121,7 @@ std::string inputs_text(const Study& s, const PathTableGeometry& g, double radiu
      << "\npositions = " << g.positions << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
      << "\ntop_force = " << num(contact::PathTableOptions{}.top_force)
      << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
-  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
-  in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.base.cell)
-     << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.base.derived_cell ? "allowed" : "refused")
-     << "\n\n[texture]\n";
-  for (const auto& k : texture_io::psd_keys())
-    if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
-  in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+  in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
 

@@ -2,8 +2,11 @@
 
 #include <exception>
 #include <memory>
+#include <sstream>
 
+#include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
+#include "src/stiffness/table_text.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -28,6 +31,18 @@ texture::Surface study_strip(const study::Study& s, const StripGrid& grid, std::
     throw config_error(s.where("surface.spacing") + ": " + e.what());
   }
   return strip;
+}
+
+std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
+  std::ostringstream in;
+  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
+  in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
+     << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
+     << "\n\n[texture]\n";
+  for (const auto& k : texture_io::psd_keys())
+    if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
+  in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+  return in.str();
 }
 
 }  // namespace rollspec::stiffness

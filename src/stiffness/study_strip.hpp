@@ -5,6 +5,7 @@
 // of the same grid sees the same heights.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "kernels/texture/surface.hpp"
 
@@ -23,5 +24,10 @@ struct StripGrid {
 // Heights of strip `index` (x fastest, centred as contact::Grid). Bad texture or grid: config_error
 // naming [surface] spacing.
 texture::Surface study_strip(const study::Study& s, const StripGrid& g, std::uint64_t index);
+
+// The part of a contact stage's input text (its cache hash) that fixes the strip's heights and the
+// solver settings: [stiffness] hardness, tolerance, max_iterations, the seed, the strip grid's width
+// and cell, the surface and texture keys and a fingerprint of the texture's input files.
+std::string strip_inputs_text(const study::Study& s, const StripGrid& g);
 
 }  // namespace rollspec::stiffness
