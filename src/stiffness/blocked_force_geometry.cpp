@@ -7,6 +7,7 @@
 
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/psd.hpp"
+#include "src/stiffness/table_text.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -37,13 +38,6 @@ double strip_rms(const texture::Psd& psd, double a) {
   } catch (const std::exception&) {
     return 0.0;
   }
-}
-
-std::string um(double m) {
-  char buf[32];
-  if (m >= 1e-3) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
-  return buf;
 }
 
 }  // namespace

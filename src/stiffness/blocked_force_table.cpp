@@ -106,12 +106,8 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
   contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts;
-  const double h = s.real("stiffness.hardness");
-  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
-  opts.tolerance = s.real("stiffness.tolerance");
-  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
-  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  contact::SolverOptions opts = strip_solver_options(s);
+  const contact::BallShape shape = strip_ball_shape(s);
   if (!quiet) std::fprintf(stderr, "%sblocked force grid: %s\n", ensemble::rank_prefix().c_str(), geo.describe().c_str());
   if (!quiet) std::fprintf(stderr, "%sblocked force: %zu positions on a %zu x %zu strip\n", ensemble::rank_prefix().c_str(), positions.size(), nx, ny);
   contact::ContactSolver solver(window_grid, e_star);

@@ -31,13 +31,6 @@ namespace {
 constexpr double kPeakSigmas = 7.0;  // the strip's highest point (and deepest valley), in rms heights
 constexpr double kReach = 3.0;       // δ_hi = max δ_c + 3 δ_H (B43)
 
-std::string um(double m) {
-  char buf[32];
-  if (m >= 1e-3) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
-  return buf;
-}
-
 }  // namespace
 
 std::vector<KeySpec> path_table_keys() {
@@ -161,12 +154,8 @@ PathTableData build_path_table(const Study& s, const PathTableGeometry& g, doubl
   const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
   std::vector<double> positions;
   for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
-  contact::SolverOptions opts;
-  const double h = s.real("stiffness.hardness");
-  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
-  opts.tolerance = s.real("stiffness.tolerance");
-  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
-  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  contact::SolverOptions opts = strip_solver_options(s);
+  const contact::BallShape shape = strip_ball_shape(s);
   contact::PathTableOptions po;
   po.approaches = g.approaches;
   po.reach = kReach;

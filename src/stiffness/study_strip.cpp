@@ -1,6 +1,7 @@
 #include "src/stiffness/study_strip.hpp"
 
 #include <exception>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -43,6 +44,19 @@ std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
     if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
   in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
   return in.str();
+}
+
+contact::SolverOptions strip_solver_options(const study::Study& s) {
+  contact::SolverOptions opts;
+  const double h = s.real("stiffness.hardness");
+  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
+  opts.tolerance = s.real("stiffness.tolerance");
+  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  return opts;
+}
+
+contact::BallShape strip_ball_shape(const study::Study& s) {
+  return s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
 }
 
 }  // namespace rollspec::stiffness

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <string>
 
+#include "kernels/contact/contact_solver.hpp"
+#include "kernels/contact/geometry.hpp"
 #include "kernels/texture/surface.hpp"
 
 namespace rollspec::study {
@@ -29,5 +31,10 @@ texture::Surface study_strip(const study::Study& s, const StripGrid& g, std::uin
 // solver settings: [stiffness] hardness, tolerance, max_iterations, the seed, the strip grid's width
 // and cell, the surface and texture keys and a fingerprint of the texture's input files.
 std::string strip_inputs_text(const study::Study& s, const StripGrid& g);
+
+// The contact solver's settings for a strip stage, from [stiffness]: hardness (0: elastic), tolerance,
+// max_iterations; and the ball's shape.
+contact::SolverOptions strip_solver_options(const study::Study& s);
+contact::BallShape strip_ball_shape(const study::Study& s);
 
 }  // namespace rollspec::stiffness
