@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -29,6 +30,7 @@
 #include "src/scenes/psd_rows.hpp"
 #include "src/study/study.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
+#include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
 #include "src/stiffness/stiffness_table.hpp"
@@ -52,7 +54,7 @@ struct Workspace {
 class BallOnBeam final : public Scene {
  public:
   explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
-    if (b_.blocked_solver() || b_.uses_table() || b_.path_law()) study_ = &s;
+    if (b_.blocked_solver() || b_.uses_table() || b_.path_law() || solver_filter()) study_ = &s;
     lines_ = texture_io::study_line_generator(s, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
@@ -121,6 +123,25 @@ class BallOnBeam final : public Scene {
                    linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
                                : "only the linearised law uses F0"}});
     }
+    if (solver_filter()) {
+      // filter = solver (kernels/contact ER-1..ER-6): h_eq on the blocked-force grid, the path step
+      // at most v / f_s so the h_eq PSD reaches the band limit (B40).
+      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
+      const double weight = b_.weight();
+      const stiffness::BlockedForceGeometry grid =
+          stiffness::blocked_force_geometry(s, radius, e_star, weight, b_.model.traverse.speed / b_.model.sample_rate);
+      add_stage(std::make_unique<TableStage>(
+          "equivalent_roughness", stiffness::equivalent_roughness_cached_table(s, grid, radius, e_star, weight),
+          [] { return std::make_unique<stiffness::EquivalentRoughnessTable>(); },
+          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
+            static_cast<stiffness::EquivalentRoughnessTable&>(out) =
+                stiffness::build_equivalent_roughness(s, grid, radius, e_star, weight, quiet);
+          },
+          [this](const stiffness::TableData& er, const std::string& status, bool quiet) {
+            use_equivalent_roughness(static_cast<const stiffness::EquivalentRoughnessTable&>(er), status, quiet);
+          },
+          stiffness::equivalent_roughness_describe(s, grid)));
+    }
     if (b_.path_law()) {
       // law = path (kernels/beam B41-B46): P(delta, xi) of strip 0 along the ball's whole path.
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
@@ -178,6 +199,42 @@ class BallOnBeam final : public Scene {
     if (!quiet)
       std::fprintf(stderr, "path table: %s (%zu approaches x %zu positions; mean static approach %.4g m from the mean plane)\n",
                    status.c_str(), t.approach.size(), t.position.size(), b_.static_compression);
+  }
+
+  // filter = solver: the line is synthesised from the strip-mean PSD of h_eq (ER-2), band-limited
+  // (B40), no patch average and so no B40a compensation. Below the table's third bin k1 (bins 1 and
+  // 2 of a Hann segment hold the leakage of waves longer than the segment, as for the blocked force)
+  // the texture times the filter's leading order: the transfer is even and smooth in k with value 1
+  // at k = 0 (h_eq -> h, ER-3: sinc^2(ka) = 1 - (ka)^2 / 3 + ...), so G_raw(k) (1 + (rho1 - 1) (k/k1)^2),
+  // rho1 = G_table(k1) / G_raw(k1), meets the table at k1.
+  void use_equivalent_roughness(const stiffness::EquivalentRoughnessTable& t, const std::string& status, bool quiet) {
+    if (!quiet)
+      std::fprintf(stderr, "equivalent roughness table: %s (%g strips x %zu positions, delta_smooth = %.4g m)\n",
+                   status.c_str(), t.strips, t.position.size(), t.smooth_approach);
+    auto table = std::make_shared<const stiffness::EquivalentRoughnessTable>(t);
+    const texture::Psd raw = b_.texture_psd;
+    const std::size_t anchor = std::min<std::size_t>(3, t.psd_wavenumber.size() - 1);
+    const double k1 = t.psd_wavenumber.size() > 1 ? t.psd_wavenumber[anchor] : 0.0;
+    texture::Psd p;
+    p.density = [table, raw, k1](double k) {
+      if (k >= k1 || !(k > 0.0)) return table->psd_at(k);
+      const double g1 = raw(k1);
+      if (!(g1 > 0.0)) return table->psd_at(k);
+      const double r = k / k1;
+      return raw(k) * (1.0 + (table->psd_at(k1) / g1 - 1.0) * r * r);
+    };
+    p.support_min = b_.texture_psd.support_min;
+    p.support_max = t.psd_wavenumber.empty() ? 0.0 : t.psd_wavenumber.back();
+    p.description = "PSD of the equivalent roughness h_eq on " + std::to_string(t.position.size()) + " positions x " +
+                    std::to_string(static_cast<long long>(t.strips)) + " strips (kernels/contact ER-2)";
+    for (std::size_t j = 1; j < t.psd_wavenumber.size(); ++j) p.breakpoints.push_back(t.psd_wavenumber[j]);
+    b_.line_psd = std::isfinite(b_.band_limit_wavenumber) ? texture::band_limited(std::move(p), b_.band_limit_wavenumber)
+                                                          : std::move(p);
+    lines_ = texture_io::study_line_generator(*study_, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
+    for (auto& ws : workspaces_) {
+      ws->u_phase.resize(lines_->harmonics());
+      ws->u_amp.resize(lines_->harmonics());
+    }
   }
 
   // The contact solver's blocked force (seed 002 §4.2): k0 from the table, F0(t) synthesised per
@@ -352,6 +409,9 @@ class BallOnBeam final : public Scene {
       case ContactFilter::none: return "contact filter: none (point contact)";
       case ContactFilter::patch: return std::string("contact filter: patch, 1D average over 2a, a = ") + a + " um (B35)";
       case ContactFilter::iso2d: break;
+      case ContactFilter::solver:
+        return std::string("contact filter: solver, line PSD of the equivalent roughness h_eq of half-space solves at "
+                           "the weight (kernels/contact ER-1..ER-6), Hertz a = ") + a + " um";
     }
     return std::string("contact filter: iso2d, line PSD G_eq of a Hertz disc of radius a = ") + a +
            " um on the isotropic surface (kernels/texture Eq. 38)";
@@ -372,7 +432,7 @@ class BallOnBeam final : public Scene {
       k.push_back(v);
     }
     const double a = b_.contact_half_width;
-    std::vector<double> raw(k.size()), patch(k.size()), iso(k.size());
+    std::vector<double> raw(k.size()), patch(k.size()), iso(k.size()), solver(k.size());
     bool have_iso = true;
     if (b_.filter == ContactFilter::iso2d) {
       for (std::size_t i = 0; i < k.size(); ++i) iso[i] = b_.line_psd(k[i]);  // what the line was synthesised from
@@ -398,6 +458,13 @@ class BallOnBeam final : public Scene {
     }
     w.write("/roughness/wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the rolling path (log grid)");
     w.make_scale("/roughness/wavenumber", "wavenumber");
+    if (solver_filter()) {
+      for (std::size_t i = 0; i < k.size(); ++i) solver[i] = b_.line_psd(k[i]);  // what the line was synthesised from
+      w.write("/roughness/psd_solver", {k.size()}, solver.data(), "m^3",
+              "band-limited strip-mean PSD of the equivalent roughness h_eq (kernels/contact ER-2) the line was "
+              "synthesised from");
+      w.attach_scale("/roughness/psd_solver", "/roughness/wavenumber", 0);
+    }
     w.write("/roughness/psd_raw", {k.size()}, raw.data(), "m^3", "one-sided line PSD of [texture] along the path");
     w.write("/roughness/psd_patch", {k.size()}, patch.data(), "m^3",
             "band-limited psd_raw x T(k)^2 / sinc^4(k dx/2) (B40a, where compensated), T the 1D patch average over 2a "
@@ -501,6 +568,7 @@ class BallOnBeam final : public Scene {
   bool linearised() const { return b_.linearised(); }
   bool uses_table() const { return b_.uses_table(); }
   bool blocked_solver() const { return b_.blocked_solver(); }
+  bool solver_filter() const { return b_.filter == ContactFilter::solver; }
   bool writes_reference() const { return b_.linearised() && b_.reference; }
   bool quiet_ = false;
   stiffness::BlockedForceTable blocked_;

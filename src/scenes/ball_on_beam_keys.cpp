@@ -7,6 +7,7 @@
 #include "src/error.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
+#include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
 #include "src/study/study.hpp"
@@ -60,9 +61,11 @@ std::vector<KeySpec> ball_on_beam_keys() {
                  std::string("spring"), {"spring", "solver"}),
       choice_key("contact", "filter",
                  "what the contact does to the roughness (Hertz radius a at the weight): none (point contact), patch "
-                 "(1D average over 2a along the path, B35) or iso2d (line synthesised from G_eq, the path PSD a Hertz "
-                 "disc sees on an isotropic surface, kernels/texture Eq. 38)",
-                 std::string("patch"), {"none", "patch", "iso2d"}),
+                 "(1D average over 2a along the path, B35), iso2d (line synthesised from G_eq, the path PSD a Hertz "
+                 "disc sees on an isotropic surface, kernels/texture Eq. 38) or solver (line synthesised from the PSD "
+                 "of the equivalent roughness h_eq of half-space solves at the weight on [equivalent_roughness] strips "
+                 "rough strips, kernels/contact ER-1..ER-6, a cached table; point laws only)",
+                 std::string("patch"), {"none", "patch", "iso2d", "solver"}),
       real_key("roughness", "spacing", "m",
                "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
                "step, v / (sample_rate x substeps)",
@@ -104,6 +107,7 @@ std::vector<KeySpec> ball_on_beam_keys() {
   for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
   for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
   for (auto& t : stiffness::path_table_keys()) k.push_back(t);
+  for (auto& t : stiffness::equivalent_roughness_keys()) k.push_back(t);
   return k;
 }
 

@@ -81,7 +81,10 @@ void check_step_coefficients(const Study& s, const BallOnBeamSettings& b) {
 // [contact] filter and the contact radius a it uses: Hertz under the weight (kernels/beam B35).
 void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
   b.filter_name = s.text("contact.filter");
-  b.filter = b.filter_name == "none" ? ContactFilter::none : b.filter_name == "patch" ? ContactFilter::patch : ContactFilter::iso2d;
+  b.filter = b.filter_name == "none"    ? ContactFilter::none
+             : b.filter_name == "patch" ? ContactFilter::patch
+             : b.filter_name == "iso2d" ? ContactFilter::iso2d
+                                        : ContactFilter::solver;
   b.contact_half_width = a;
   b.patch_half_width = b.filter == ContactFilter::patch ? a : 0.0;
   if (b.filter == ContactFilter::iso2d && b.blocked_solver())
@@ -90,6 +93,17 @@ void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
   if (b.filter == ContactFilter::iso2d && b.path_law())
     s.refuse("contact.filter", "iso2d filters the line texture, which law = path does not use (its strip is the "
                                "roughness); allowed with path: none or patch (both ignored)");
+  // solver: h_eq enters the point law as the line does (ER-2); the linearised law and the path law
+  // have their own treatment of the rough contact.
+  if (b.filter == ContactFilter::solver && b.blocked_solver())
+    s.refuse("contact.filter", "solver filters the line texture, which blocked_force = solver does not use (its strip "
+                               "resolves the contact itself); allowed with blocked_force = solver: none or patch (both ignored)");
+  if (b.filter == ContactFilter::solver && b.path_law())
+    s.refuse("contact.filter", "solver filters the line texture, which law = path does not use (its strip is the "
+                               "roughness); allowed with path: none or patch (both ignored)");
+  if (b.filter == ContactFilter::solver && b.linearised())
+    s.refuse("contact.filter", "solver gives the equivalent roughness of the nonlinear point laws; allowed with law = "
+                               "linearised: none, patch or iso2d (or law = hertz, table or literal with solver)");
 }
 
 texture::Psd iso2d_study_psd(const Study& s, const BallOnBeamSettings& b) {
@@ -205,6 +219,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   // a band-limited line is drawn with that loss undone (B40a), so it sees the continuous texture.
   if (b.filter == ContactFilter::iso2d)
     b.line_psd = iso2d_study_psd(s, b);  // no patch average on the samples: nothing to compensate (B40a)
+  else if (b.filter == ContactFilter::solver)
+    b.line_psd = b.psd;  // until the equivalent-roughness stage (no patch average: nothing to compensate, B40a)
   else
     b.line_psd = (b.patch_half_width > 0.0 && b.band_limit_wavenumber * b.spacing < M_PI)
                      ? texture::interpolation_compensated(b.psd, b.spacing)

@@ -26,8 +26,9 @@ enum class ContactModel { hertz, table, literal, linearised_spring, linearised_s
 
 // [contact] filter: what the contact does to the roughness it rolls over (kernels/beam README B35;
 // kernels/texture README Eq. 36-40): none (point contact), patch (1D average over the Hertz width,
-// B35) or iso2d (the line synthesised from G_eq, the path PSD a Hertz disc sees on an isotropic surface).
-enum class ContactFilter { none, patch, iso2d };
+// B35), iso2d (the line synthesised from G_eq, the path PSD a Hertz disc sees on an isotropic surface)
+// or solver (the line synthesised from the strip-mean PSD of h_eq, kernels/contact ER-1..ER-6, a table stage).
+enum class ContactFilter { none, patch, iso2d, solver };
 
 struct BallOnBeamSettings {
   explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}
@@ -41,7 +42,8 @@ struct BallOnBeamSettings {
   texture::Psd psd;                // [texture], band-limited by [roughness] band_limit
   double band_limit_wavenumber = std::numeric_limits<double>::infinity();  // rad/m; B40
   // What the line samples are drawn from: psd (none), psd B40a-compensated (patch on a band-limited
-  // line), or G_eq of texture_psd, band-limited (iso2d).
+  // line), or G_eq of texture_psd, band-limited (iso2d); for solver, psd until the equivalent-roughness
+  // table stage sets the PSD of h_eq, band-limited.
   texture::Psd line_psd;
   ContactFilter filter = ContactFilter::patch;
   std::string filter_name;         // [contact] filter as written

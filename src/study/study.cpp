@@ -165,7 +165,7 @@ std::string known_sections(const std::vector<KeySpec>& keys) {
 // Keys that were renamed: the error names the new key instead of listing all keys.
 const char* retired_key_hint(const std::string& full) {
   if (full == "contact.patch_filter")
-    return "was replaced by [contact] filter = none | patch | iso2d (patch_filter = true is filter = patch, false is "
+    return "was replaced by [contact] filter = none | patch | iso2d | solver (patch_filter = true is filter = patch, false is "
            "filter = none)";
   return nullptr;
 }

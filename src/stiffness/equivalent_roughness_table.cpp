@@ -1,0 +1,203 @@
+#include "src/stiffness/equivalent_roughness_table.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "kernels/contact/equivalent_roughness.hpp"
+#include "kernels/contact/version.hpp"
+#include "kernels/spectral/welch.hpp"
+#include "src/ensemble/checkpoint.hpp"
+#include "src/ensemble/mpi_context.hpp"
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/stiffness/study_strip.hpp"
+#include "src/stiffness/table_text.hpp"
+#include "src/study/study.hpp"
+
+namespace rollspec::stiffness {
+
+using namespace study;
+
+namespace {
+
+// Positions per warm-started chunk: fixed, so the table has the same bits for any thread count
+// (EquivalentRoughnessOptions::chunk_positions).
+constexpr std::size_t kChunkPositions = 64;
+// Solves per position: the Newton on the approach from the previous delta_eq (ER-1), measured 3-4.
+constexpr double kSolvesPerPosition = 4.0;
+
+std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& t) {
+  return {&t.position, &t.height, &t.psd_wavenumber, &t.psd};
+}
+
+std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
+  std::ostringstream in;
+  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
+     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
+     << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
+     << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
+     << "\nchunk_positions = " << kChunkPositions << "\n";
+  in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
+  return in.str();
+}
+
+std::string um(double m) {
+  char buf[32];
+  if (m >= 1e-3) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
+  else std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
+  return buf;
+}
+
+}  // namespace
+
+const TableKind kEquivalentRoughnessTableKind = {kEquivalentRoughnessFileType, "/equivalent_roughness",
+                                                 "equivalent-roughness-", "equivalent-roughness table"};
+
+std::vector<KeySpec> equivalent_roughness_keys() {
+  return {
+      integer_key("equivalent_roughness", "strips",
+                  "filter = solver: rough strips (surface realisations 0..strips-1) whose h_eq PSD is averaged; the "
+                  "strip grid is the blocked force's ([blocked_force] strip_length, window, step, segment)",
+                  std::string("2"), 1, 1024),
+  };
+}
+
+std::string EquivalentRoughnessTable::checksum() const {
+  std::uint64_t h = column_hash(columns(*this));
+  for (double v : {smooth_approach, load, strips}) h = ensemble::fnv1a64(&v, sizeof v, h);
+  return hex16(h);
+}
+
+double EquivalentRoughnessTable::psd_at(double k) const {
+  if (psd_wavenumber.size() < 2 || k > psd_wavenumber.back()) return 0.0;
+  if (k <= psd_wavenumber[1]) return psd[1];
+  if (k == psd_wavenumber.back()) return psd.back();  // upper_bound would point past the end
+  const auto it = std::upper_bound(psd_wavenumber.begin(), psd_wavenumber.end(), k);
+  const std::size_t j = static_cast<std::size_t>(it - psd_wavenumber.begin());
+  const double ka = psd_wavenumber[j - 1], kb = psd_wavenumber[j], ga = psd[j - 1], gb = psd[j];
+  if (ga <= 0.0 || gb <= 0.0) return ga + (gb - ga) * (k - ka) / (kb - ka);
+  return ga * std::pow(k / ka, std::log(gb / ga) / std::log(kb / ka));
+}
+
+double equivalent_roughness_seconds(const Study& s, const BlockedForceGeometry& g) {
+  // As blocked_force_geometry: 21 ms per solve of a 256^2 FFT product (a 128 window).
+  const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
+  const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
+  return static_cast<double>(s.integer("equivalent_roughness.strips")) * static_cast<double>(g.positions) *
+         kSolvesPerPosition * per_solve;
+}
+
+std::string equivalent_roughness_describe(const Study& s, const BlockedForceGeometry& g) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
+                "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
+                "a = %s; build about %.2g s on one core",
+                static_cast<long long>(s.integer("equivalent_roughness.strips")),
+                static_cast<long long>(s.integer("equivalent_roughness.strips") - 1), g.nx, g.ny,
+                um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),
+                um(g.cell).c_str(), g.contact_radius / g.cell,
+                g.truncated_wavelength > 0.0 ? (", texture below " + um(g.truncated_wavelength) + " dropped").c_str() : "",
+                g.window, g.positions, g.step, um(static_cast<double>(g.step) * g.cell).c_str(), g.segment,
+                um(g.contact_radius).c_str(), equivalent_roughness_seconds(s, g));
+  return buf;
+}
+
+void EquivalentRoughnessTable::load_from(const io::Hdf5Reader& r) {
+  position = r.read("/equivalent_roughness/position");
+  height = r.read("/equivalent_roughness/height");
+  psd_wavenumber = r.read("/equivalent_roughness/psd_wavenumber");
+  psd = r.read("/equivalent_roughness/psd");
+  smooth_approach = r.double_attribute("/equivalent_roughness", "smooth_approach");
+  load = r.double_attribute("/equivalent_roughness", "load");
+  strips = r.double_attribute("/equivalent_roughness", "strips");
+}
+
+void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
+  const auto n_strips = static_cast<std::size_t>(strips);
+  w.write("/equivalent_roughness/position", {position.size()}, position.data(), "m", "ball position along the strip");
+  w.write("/equivalent_roughness/height", {n_strips, position.size()}, height.data(), "m",
+          "equivalent roughness h_eq = delta_smooth - delta_eq at the ball's weight (contact README ER-1, ER-2), strip x position");
+  w.write("/equivalent_roughness/psd_wavenumber", {psd_wavenumber.size()}, psd_wavenumber.data(), "rad/m", "wavenumber");
+  w.write("/equivalent_roughness/psd", {psd.size()}, psd.data(), "m^3",
+          "one-sided PSD of h_eq along the path (Welch per strip, mean over strips)");
+  w.attribute("/equivalent_roughness", "smooth_approach", smooth_approach);
+  w.attribute("/equivalent_roughness", "load", load);
+  w.attribute("/equivalent_roughness", "strips", strips);
+}
+
+CachedTable equivalent_roughness_cached_table(const Study& s, const BlockedForceGeometry& g, double radius, double e_star,
+                                              double load) {
+  return CachedTable(kEquivalentRoughnessTableKind, s, inputs_text(s, g, radius, e_star, load));
+}
+
+EquivalentRoughnessTable build_equivalent_roughness(const Study& s, const BlockedForceGeometry& geo, double radius,
+                                                    double e_star, double load, bool quiet) {
+  const double dx = geo.cell;
+  const std::size_t nx = geo.nx, ny = geo.ny, window = geo.window, step = geo.step;
+  const auto n_strips = static_cast<std::size_t>(s.integer("equivalent_roughness.strips"));
+  const contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
+  std::vector<double> positions;
+  for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
+  contact::SolverOptions opts;
+  const double h = s.real("stiffness.hardness");
+  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
+  opts.tolerance = s.real("stiffness.tolerance");
+  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  contact::EquivalentRoughnessOptions po;
+  po.chunk_positions = kChunkPositions;
+  // ER-1 to the solves' own accuracy: a solve stopped at complementarity error eps knows its force to
+  // about eps W, so a tighter load tolerance cannot be met (h_eq error ~ eps delta_H, far below the roughness).
+  po.load_tolerance = std::max(po.load_tolerance, opts.tolerance);
+  if (!quiet)
+    std::fprintf(stderr, "%sequivalent roughness: %s\n", ensemble::rank_prefix().c_str(),
+                 equivalent_roughness_describe(s, geo).c_str());
+  // PSD of h_eq along the path: Welch with f_s = 1 / (step dx) cycles/m per strip, the strips'
+  // mean, then per rad/m (as the blocked-force F0 PSD; D-5).
+  spectral::WelchConfig wc;
+  wc.sample_rate = 1.0 / (static_cast<double>(step) * dx);
+  wc.segment = std::min(geo.segment, positions.size());
+  wc.overlap = wc.segment / 2;
+  const spectral::WelchPlan plan(wc);
+  spectral::WelchWorkspace ws(wc.segment);
+  std::vector<double> one(plan.n_freq()), mean(plan.n_freq(), 0.0);
+  EquivalentRoughnessTable t;
+  t.position = positions;
+  t.load = load;
+  t.strips = static_cast<double>(n_strips);
+  contact::ContactSolver solver(window_grid, e_star);
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t si = 0; si < n_strips; ++si) {
+    const texture::Surface strip = study_strip(s, StripGrid{nx, ny, dx, geo.derived_cell}, si);
+    contact::EquivalentRoughness r;
+    try {
+      r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, shape, positions, load, opts, po);
+    } catch (const std::invalid_argument& e) {
+      throw config_error(s.where("blocked_force.window") + ": " + e.what() + "; widen the window or the strip ([surface] ny)");
+    }
+    if (!r.converged)
+      throw data_error("equivalent roughness: strip " + std::to_string(si) + " did not converge (largest error " +
+                       num(r.max_error) + "); raise [stiffness] max_iterations or tolerance");
+    t.smooth_approach = r.smooth_approach;
+    t.height.insert(t.height.end(), r.height.begin(), r.height.end());
+    plan.psd(r.height.data(), r.height.size(), one.data(), ws);
+    for (std::size_t k = 0; k < one.size(); ++k) mean[k] += one[k] / static_cast<double>(n_strips);
+    if (!quiet)
+      std::fprintf(stderr, "%sequivalent roughness: strip %zu of %zu, %d CG iterations, %.3g s wall\n",
+                   ensemble::rank_prefix().c_str(), si + 1, n_strips, r.iterations,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  for (std::size_t k = 0; k < mean.size(); ++k) {
+    t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));
+    t.psd.push_back(mean[k] / (2.0 * M_PI));
+  }
+  return t;
+}
+
+}  // namespace rollspec::stiffness

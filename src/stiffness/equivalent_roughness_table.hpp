@@ -1,0 +1,54 @@
+#pragma once
+// Equivalent-roughness table of `[contact] filter = solver` (issue 19; kernels/contact README
+// ER-1..ER-6): on `[equivalent_roughness] strips` rough strips of the study's surface (strip s =
+// study_strip(..., s), the Philox surface realisation s), h_eq(xi) = delta_smooth - delta_eq(xi) at
+// the ball's weight along the blocked-force grid (BlockedForceGeometry: cell, window, step,
+// positions), and the one-sided PSD of h_eq along the path (per rad/m) averaged over the strips,
+// from which the ball-on-beam scene synthesises its line textures. A CachedTable like the
+// blocked-force table (input hash, schema, kernel version, data checksum).
+#include <string>
+#include <vector>
+
+#include "src/stiffness/blocked_force_geometry.hpp"
+#include "src/stiffness/cached_table.hpp"
+#include "src/study/key_spec.hpp"
+
+namespace rollspec::study {
+class Study;
+}
+
+namespace rollspec::stiffness {
+
+constexpr const char* kEquivalentRoughnessFileType = "rollspec-equivalent-roughness";
+
+extern const TableKind kEquivalentRoughnessTableKind;
+
+struct EquivalentRoughnessTable : TableData {
+  std::vector<double> position;                // m along the strip (the same for every strip)
+  std::vector<double> height;                  // h_eq (m), strips x positions (ER-2)
+  std::vector<double> psd_wavenumber, psd;     // rad/m, m^3 (one-sided PSD of h_eq - mean, strip mean)
+  double smooth_approach = 0.0, load = 0.0, strips = 0.0;
+  // G of h_eq at wavenumber k, as BlockedForceTable::psd_at: log-log between bins, the first bin's
+  // level below them, zero above the path's Nyquist wavenumber.
+  double psd_at(double k) const;
+
+  void load_from(const io::Hdf5Reader& r) override;
+  void save_to(io::Hdf5Writer& w) const override;
+  std::string checksum() const override;
+};
+
+std::vector<study::KeySpec> equivalent_roughness_keys();
+
+// Estimated build time on one core (s), for the plan: strips x positions force-controlled solves.
+double equivalent_roughness_seconds(const study::Study& s, const BlockedForceGeometry& g);
+
+// "2 strips of 400 x 64 cells, ... positions, ...; build about ... s" for the plan and the log.
+std::string equivalent_roughness_describe(const study::Study& s, const BlockedForceGeometry& g);
+
+CachedTable equivalent_roughness_cached_table(const study::Study& s, const BlockedForceGeometry& g, double radius,
+                                              double effective_modulus, double load);
+
+EquivalentRoughnessTable build_equivalent_roughness(const study::Study& s, const BlockedForceGeometry& g, double radius,
+                                                    double effective_modulus, double load, bool quiet);
+
+}  // namespace rollspec::stiffness

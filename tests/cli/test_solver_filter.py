@@ -1,0 +1,103 @@
+"""[contact] filter = solver of the ball-on-beam scene (issue 19; kernels/contact README ER-1..ER-6):
+the equivalent-roughness table stage runs, is cached, the plan lists it; the line PSD it gives lies
+below the raw path PSD where the patch filters (ER-3, ka > 1.5); bad combinations are refused."""
+import glob
+import shutil
+
+import h5py
+import numpy as np
+
+from conftest import EX_CONFIG, SOURCE, assert_refused, run
+
+RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
+# The seed 002 rig's surface under the Hertz law, on a coarse strip: 12 um cells (a / 5.8, the
+# texture cut at 24 um), Welch segments of 128 positions (1.5 mm) and four of them along a 6.6 mm
+# strip, 2 strips: ~1000 force-controlled solves on a ~36-cell window, seconds. A 6 mm path.
+SOLVER = ["contact.law=hertz", "contact.filter=solver", "surface.spacing=12e-6", "texture.short_wavelength=24e-6",
+          "blocked_force.segment=128", "blocked_force.strip_length=6.6e-3", "ball.start=0.1", "ball.end=0.106",
+          "spectrum.segment=128", "spectrum.band_min=400", "spectrum.band_max=5000", "study.realisations=2"]
+
+
+def rig(tmp_path, *sets, name="r.h5", command="run"):
+    study = tmp_path / "rig.ini"
+    shutil.copy(RIG, study)
+    args = [a for kv in sets for a in ("--set", kv)]
+    if command == "plan":
+        return run(["plan", study, *args]), None
+    out = tmp_path / name
+    return run(["run", study, "--out", out, *args]), out
+
+
+def stage_row(stdout, name):
+    return next(l for l in stdout.splitlines() if l.startswith(name + " "))
+
+
+def hertz_radius(radius=0.02, density=7850.0, e=210e9, nu=0.3, g=9.81):
+    weight = 4 / 3 * np.pi * radius ** 3 * density * g
+    e_star = 1 / (2 * (1 - nu ** 2) / e)
+    delta = (3 * weight / (4 * e_star * np.sqrt(radius))) ** (2 / 3)
+    return np.sqrt(radius * delta)
+
+
+def test_runs_is_cached_and_filters_below_the_patch_scale(tmp_path):
+    p, _ = rig(tmp_path, *SOLVER, command="plan")
+    assert p.returncode == 0, p.stderr
+    row = stage_row(p.stdout, "equivalent_roughness")
+    assert " run " in row or row.split()[1] == "run", row
+    for text in ("2 strips", "cells", "positions", "build about"):
+        assert text in row, row
+
+    r, out = rig(tmp_path, *SOLVER)
+    assert r.returncode == 0, r.stderr
+    assert "equivalent roughness table: built" in r.stderr, r.stderr
+    tables = glob.glob(str(tmp_path / "tables" / "equivalent-roughness-*.h5"))
+    assert len(tables) == 1
+    with h5py.File(tables[0]) as t:
+        h = t["/equivalent_roughness/height"][:]
+        assert h.shape == (2, t["/equivalent_roughness/position"].shape[0])
+        assert np.all(np.isfinite(h)) and np.std(h) > 0.0
+
+    with h5py.File(out) as f:
+        g = f["/roughness"]
+        k, raw, solver = g["wavenumber"][:], g["psd_raw"][:], g["psd_solver"][:]
+        assert g.attrs["filter"] in (b"solver", "solver")
+    ka = k * hertz_radius()
+    # ER-3: h_eq averages the roughness over the patch; where ka > 1.5 it carries less than the raw line
+    # (sinc^2(1.5) = 0.44 in 1D, less still in 2D), and the table has power there below the band limit.
+    high = (ka > 1.5) & (raw > 0.0)  # the texture ends at 24 um, the line at its Nyquist wavenumber
+    assert np.all(solver[high] < raw[high]), (ka[high][solver[high] >= raw[high]])
+    assert np.any(solver[high] > 0.0)
+    # Long waves pass: h_eq follows h as ka -> 0 (ER-3; below the table's third bin the texture times
+    # the filter's leading order 1 - c k^2).
+    low = ka < 0.2
+    assert np.all(np.abs(10 * np.log10(solver[low] / raw[low])) < 0.5)
+
+    p2, _ = rig(tmp_path, *SOLVER, command="plan")
+    assert p2.returncode == 0, p2.stderr
+    assert "cached" in stage_row(p2.stdout, "equivalent_roughness"), p2.stdout
+    r2, _ = rig(tmp_path, *SOLVER, name="again.h5")
+    assert r2.returncode == 0 and "equivalent roughness table: cached" in r2.stderr, r2.stderr
+
+
+def test_the_table_has_the_same_bits_on_one_and_two_threads(tmp_path):
+    heights = []
+    for n in (1, 2):
+        d = tmp_path / f"t{n}"
+        d.mkdir()
+        shutil.copy(RIG, d / "rig.ini")
+        args = [a for kv in SOLVER for a in ("--set", kv)]
+        r = run(["run", d / "rig.ini", "--out", d / "r.h5", *args], env={"OMP_NUM_THREADS": str(n)}, cwd=d)
+        assert r.returncode == 0, r.stderr
+        with h5py.File(glob.glob(str(d / "tables" / "equivalent-roughness-*.h5"))[0]) as t:
+            heights.append((t["/equivalent_roughness/height"][:], t["/equivalent_roughness/psd"][:]))
+    assert np.array_equal(heights[0][0], heights[1][0]) and np.array_equal(heights[0][1], heights[1][1])
+
+
+def test_bad_combinations_are_refused(tmp_path):
+    for extra, named in ((["contact.law=path"], "law = path"),
+                         (["contact.law=linearised", "contact.blocked_force=solver"], "blocked_force = solver"),
+                         (["contact.law=linearised"], "law = linearised")):
+        r, _ = rig(tmp_path, *SOLVER, *extra, command="plan")
+        assert_refused(r, EX_CONFIG, ["[contact] filter = solver", "allowed", named])
+    r, _ = rig(tmp_path, *SOLVER, "equivalent_roughness.strips=0", command="plan")
+    assert r.returncode != 0 and "strips" in r.stderr, r.stderr
