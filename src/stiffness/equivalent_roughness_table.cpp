@@ -46,13 +46,6 @@ std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double ra
   return in.str();
 }
 
-std::string um(double m) {
-  char buf[32];
-  if (m >= 1e-3) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
-  return buf;
-}
-
 }  // namespace
 
 const TableKind kEquivalentRoughnessTableKind = {kEquivalentRoughnessFileType, "/equivalent_roughness",
@@ -144,12 +137,8 @@ EquivalentRoughnessTable build_equivalent_roughness(const Study& s, const Blocke
   const contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts;
-  const double h = s.real("stiffness.hardness");
-  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
-  opts.tolerance = s.real("stiffness.tolerance");
-  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
-  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  contact::SolverOptions opts = strip_solver_options(s);
+  const contact::BallShape shape = strip_ball_shape(s);
   contact::EquivalentRoughnessOptions po;
   po.chunk_positions = kChunkPositions;
   // ER-1 to the solves' own accuracy: a solve stopped at complementarity error eps knows its force to
