@@ -45,14 +45,7 @@ std::string BlockedForceTable::checksum() const {
 }
 
 double BlockedForceTable::psd_at(double k) const {
-  if (psd_wavenumber.size() < 2 || k > psd_wavenumber.back()) return 0.0;
-  if (k <= psd_wavenumber[1]) return psd[1];
-  if (k == psd_wavenumber.back()) return psd.back();  // upper_bound would point past the end
-  const auto it = std::upper_bound(psd_wavenumber.begin(), psd_wavenumber.end(), k);
-  const std::size_t j = static_cast<std::size_t>(it - psd_wavenumber.begin());
-  const double ka = psd_wavenumber[j - 1], kb = psd_wavenumber[j], ga = psd[j - 1], gb = psd[j];
-  if (ga <= 0.0 || gb <= 0.0) return ga + (gb - ga) * (k - ka) / (kb - ka);
-  return ga * std::pow(k / ka, std::log(gb / ga) / std::log(kb / ka));
+  return path_psd_at(psd_wavenumber, psd, k);
 }
 
 std::vector<KeySpec> blocked_force_keys() {
@@ -78,9 +71,7 @@ namespace {
 // The grid enters as resolved (derived or set), so the input hash names what was computed.
 std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
-     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
-     << "\n\n[blocked_force]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
+  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
      << "\nsegment = " << g.segment << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();

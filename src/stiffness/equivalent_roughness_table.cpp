@@ -37,9 +37,7 @@ std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& 
 
 std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
-     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
-     << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
+  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
      << "\nchunk_positions = " << kChunkPositions << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
@@ -67,14 +65,7 @@ std::string EquivalentRoughnessTable::checksum() const {
 }
 
 double EquivalentRoughnessTable::psd_at(double k) const {
-  if (psd_wavenumber.size() < 2 || k > psd_wavenumber.back()) return 0.0;
-  if (k <= psd_wavenumber[1]) return psd[1];
-  if (k == psd_wavenumber.back()) return psd.back();  // upper_bound would point past the end
-  const auto it = std::upper_bound(psd_wavenumber.begin(), psd_wavenumber.end(), k);
-  const std::size_t j = static_cast<std::size_t>(it - psd_wavenumber.begin());
-  const double ka = psd_wavenumber[j - 1], kb = psd_wavenumber[j], ga = psd[j - 1], gb = psd[j];
-  if (ga <= 0.0 || gb <= 0.0) return ga + (gb - ga) * (k - ka) / (kb - ka);
-  return ga * std::pow(k / ka, std::log(gb / ga) / std::log(kb / ka));
+  return path_psd_at(psd_wavenumber, psd, k);
 }
 
 double equivalent_roughness_seconds(const Study& s, const BlockedForceGeometry& g) {

@@ -108,9 +108,7 @@ std::vector<const std::vector<double>*> columns(const PathTableData& t) {
 
 std::string inputs_text(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
-     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape")
-     << "\n\n[path_table]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
+  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
      << "\npositions = " << g.positions << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
      << "\ntop_force = " << num(contact::PathTableOptions{}.top_force)
      << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";

@@ -1,10 +1,13 @@
 #include "src/stiffness/study_strip.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <exception>
 #include <limits>
 #include <memory>
 #include <sstream>
 
+#include "kernels/contact/version.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -44,6 +47,24 @@ std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
     if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
   in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
   return in.str();
+}
+
+std::string ball_inputs_text(const study::Study& s, double radius, double e_star, double load) {
+  std::ostringstream in;
+  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
+     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape");
+  return in.str();
+}
+
+double path_psd_at(const std::vector<double>& psd_wavenumber, const std::vector<double>& psd, double k) {
+  if (psd_wavenumber.size() < 2 || k > psd_wavenumber.back()) return 0.0;
+  if (k <= psd_wavenumber[1]) return psd[1];
+  if (k == psd_wavenumber.back()) return psd.back();  // upper_bound would point past the end
+  const auto it = std::upper_bound(psd_wavenumber.begin(), psd_wavenumber.end(), k);
+  const std::size_t j = static_cast<std::size_t>(it - psd_wavenumber.begin());
+  const double ka = psd_wavenumber[j - 1], kb = psd_wavenumber[j], ga = psd[j - 1], gb = psd[j];
+  if (ga <= 0.0 || gb <= 0.0) return ga + (gb - ga) * (k - ka) / (kb - ka);
+  return ga * std::pow(k / ka, std::log(gb / ga) / std::log(kb / ka));
 }
 
 contact::SolverOptions strip_solver_options(const study::Study& s) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/geometry.hpp"
@@ -31,6 +32,13 @@ texture::Surface study_strip(const study::Study& s, const StripGrid& g, std::uin
 // solver settings: [stiffness] hardness, tolerance, max_iterations, the seed, the strip grid's width
 // and cell, the surface and texture keys and a fingerprint of the texture's input files.
 std::string strip_inputs_text(const study::Study& s, const StripGrid& g);
+
+// The head of that input text: the contact kernel's version and the ball (radius, E*, load, shape).
+std::string ball_inputs_text(const study::Study& s, double radius, double effective_modulus, double load);
+
+// A one-sided path PSD tabulated at wavenumbers k_0 = 0 < k_1 < ... (a strip stage's Welch PSD) at k:
+// log-log between bins (linear where a bin is 0), the first bin's level below it, 0 above the last.
+double path_psd_at(const std::vector<double>& wavenumbers, const std::vector<double>& psd, double k);
 
 // The contact solver's settings for a strip stage, from [stiffness]: hardness (0: elastic), tolerance,
 // max_iterations; and the ball's shape.

@@ -142,3 +142,11 @@ def assert_bitwise_equal(a, b):
             assert x.tobytes() == y.tobytes(), f"{k} differs"
         else:
             assert np.array_equal(x, y), f"{k} differs"
+
+
+def hertz_radius(radius=0.02, density=7850.0, e=210e9, nu=0.3, g=9.81):
+    """Hertz contact radius a (m) of a steel ball on steel under its own weight."""
+    weight = 4 / 3 * np.pi * radius ** 3 * density * g
+    e_star = 1 / (2 * (1 - nu ** 2) / e)
+    delta = (3 * weight / (4 * e_star * np.sqrt(radius))) ** (2 / 3)
+    return np.sqrt(radius * delta)

@@ -7,18 +7,11 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from conftest import EX_CONFIG, SOURCE, assert_refused, run
+from conftest import EX_CONFIG, SOURCE, assert_refused, hertz_radius, run
 
 BEAM_S = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 SHORT = ["--set", "ball.end=0.12", "--set", "spectrum.segment=1024"]  # 0.1 s records: fast
-
-
-def hertz_radius(radius=0.02, density=7850.0, e=210e9, nu=0.3, g=9.81):
-    weight = 4 / 3 * np.pi * radius ** 3 * density * g
-    e_star = 1 / (2 * (1 - nu ** 2) / e)
-    delta = (3 * weight / (4 * e_star * np.sqrt(radius))) ** (2 / 3)
-    return np.sqrt(radius * delta)
 
 
 def test_bad_filter_value_names_the_allowed_ones(tmp_path):

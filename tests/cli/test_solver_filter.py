@@ -7,7 +7,7 @@ import shutil
 import h5py
 import numpy as np
 
-from conftest import EX_CONFIG, SOURCE, assert_refused, run
+from conftest import EX_CONFIG, SOURCE, assert_refused, hertz_radius, run
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 # The seed 002 rig's surface under the Hertz law, on a coarse strip: 12 um cells (a / 5.8, the
@@ -30,13 +30,6 @@ def rig(tmp_path, *sets, name="r.h5", command="run"):
 
 def stage_row(stdout, name):
     return next(l for l in stdout.splitlines() if l.startswith(name + " "))
-
-
-def hertz_radius(radius=0.02, density=7850.0, e=210e9, nu=0.3, g=9.81):
-    weight = 4 / 3 * np.pi * radius ** 3 * density * g
-    e_star = 1 / (2 * (1 - nu ** 2) / e)
-    delta = (3 * weight / (4 * e_star * np.sqrt(radius))) ** (2 / 3)
-    return np.sqrt(radius * delta)
 
 
 def test_runs_is_cached_and_filters_below_the_patch_scale(tmp_path):
