@@ -49,7 +49,7 @@ def commit():
 def goal_1(a):
     import bench_whole_run
     K = 1000
-    med = bench_whole_run.measure(str(Path(a.bin) / "rollspec"), str(ROOT / "studies" / "seed002-rig-1ms.ini"), K,
+    med = bench_whole_run.measure(need(Path(a.bin) / "rollspec", "build the rollspec target"), str(ROOT / "studies" / "seed002-rig-1ms.ini"), K,
                                   a.repeats)
     t1, t2 = med[f"{K} realisations, 1 thread"][0], med[f"{K} realisations, 2 threads"][0]
     return {"wall_2_threads": t2, "wall_1_thread": t1, "efficiency": t1 / (2 * t2),
@@ -60,7 +60,7 @@ def goal_1(a):
 def goal_2(a):
     import bench_default_accuracy as acc
     study = str(ROOT / "studies" / "seed002-rig-1ms.ini")
-    binary = str(Path(a.bin) / "rollspec")
+    binary = need(Path(a.bin) / "rollspec", "build the rollspec target")
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         speed, fs, setup = acc.probe(binary, study, tmp)
@@ -68,8 +68,19 @@ def goal_2(a):
     return {"error_db": error, "cpu_ms": 1e3 * cpu, "substeps": 4}
 
 
+def need(path, what):
+    """A program a goal runs: refused with a message, not a traceback, when the build lacks it."""
+    if not Path(path).is_file():
+        sys.exit(f"{path}: not found; {what}")
+    return str(path)
+
+
 def goal_3(a):
     import bench_contact_goals
+    need(Path(a.bin) / "bench" / "contact" / "bench_contact", "build the bench_contact target of the measured build")
+    if a.base is not None:
+        need(Path(a.base) / "bench" / "contact" / "bench_contact",
+             "goal 3's comparison needs the bench_contact target in --base too (or leave --base out for goal 3)")
     return bench_contact_goals.measure(a.bin, a.base, a.repeats, 2)
 
 
@@ -79,7 +90,8 @@ def goal_4(a):
         sys.exit("goal 4 needs --base PREVIOUS_BUILD_DIR (the ratio is against the previous build)")
     K = 2
     med, per_it, its, rel, dband = bench_rolling_pipe.measure(
-        str(Path(a.bin) / "rollspec"), str(Path(a.base) / "rollspec"), str(ROOT / "studies" / "rolling-pipe.ini"), K,
+        need(Path(a.bin) / "rollspec", "build the rollspec target"),
+        need(Path(a.base) / "rollspec", "build the rollspec target of the previous build"), str(ROOT / "studies" / "rolling-pipe.ini"), K,
         a.repeats)
     this, prev = med[("this", "full")][1], med[("previous", "full")][1]
     return {"us_per_iteration": per_it["this"], "previous_us_per_iteration": per_it["previous"],
@@ -88,7 +100,8 @@ def goal_4(a):
 
 
 def goal_5(a):
-    out = subprocess.run([str(Path(a.bin) / "bench" / "texture" / "bench_texture"), "--synthesis", "1.0"],
+    out = subprocess.run([need(Path(a.bin) / "bench" / "texture" / "bench_texture", "build the bench_texture target"),
+                          "--synthesis", "1.0"],
                          capture_output=True, text=True, check=True).stdout
     rows = [line.split(",") for line in out.splitlines() if line[:1].isdigit()]
     return {"sizes": [int(r[0]) for r in rows], "ratio": [float(r[3]) for r in rows],
