@@ -4,7 +4,9 @@ Reads /roughness of a ball-on-beam result (rollspec writes it for every study bu
 psd_raw is the study's [texture] line PSD G(k) (filter = none draws it up to the band limit k_B, beam B40),
 psd_patch the 1D patch average over the Hertz width 2a
 (kernels/beam B35a, on the line's samples), psd_iso2d G_eq, the path PSD a Hertz disc of radius a sees on
-the isotropic surface (kernels/texture Eq. 38). The filter the study used is drawn thick.
+the isotropic surface (kernels/texture Eq. 38), and with filter = solver psd_solver, the strip-mean PSD of
+the equivalent roughness h_eq of half-space solves at the weight (kernels/contact ER-2) the line was
+synthesised from. The filter the study used is drawn thick.
 """
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -14,7 +16,8 @@ from .result_file import EX_DATAERR, PostError, open_rollspec, text_attr
 
 CURVES = (("none", "psd_raw", "raw G(k) of [texture] (none: the same up to k_B)", "k"),
           ("patch", "psd_patch", "patch: G(k) T(k)², 1D average over 2a", "C0"),
-          ("iso2d", "psd_iso2d", "iso2d: G_eq(k), Hertz disc on the isotropic surface", "C3"))
+          ("iso2d", "psd_iso2d", "iso2d: G_eq(k), Hertz disc on the isotropic surface", "C3"),
+          ("solver", "psd_solver", "solver: PSD of h_eq, half-space solves on rough strips", "C2"))
 
 
 def read_roughness(path):

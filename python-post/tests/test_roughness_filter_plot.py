@@ -1,4 +1,5 @@
 """`python3 -m rollspec_post roughness`: the path PSD raw and under each contact filter, from /roughness."""
+import shutil
 import subprocess
 
 import numpy as np
@@ -43,6 +44,39 @@ def test_plotted_curves_obey_the_filters(beam_result):
     # iso2d has no zeros: it sums over all directions, sin(qa)/(qa) vanishes only on rings. Up to the
     # band limit (B40): beyond it the line carries nothing.
     assert np.all(iso[k <= np.pi * 25600 / speed] > 0)
+
+
+@pytest.fixture(scope="module")
+def solver_result(tmp_path_factory):
+    """The seed 002 rig with filter = solver on a coarse strip (12 um cells, the texture cut at 24 um; as
+    tests/cli/test_solver_filter.py): seconds."""
+    out = tmp_path_factory.mktemp("solver") / "rig.h5"
+    sets = ["contact.law=hertz", "contact.filter=solver", "surface.spacing=12e-6", "texture.short_wavelength=24e-6",
+            "blocked_force.segment=128", "blocked_force.strip_length=6.6e-3", "ball.start=0.1", "ball.end=0.106",
+            "spectrum.segment=128", "study.realisations=1"]
+    study = out.parent / "rig.ini"  # its tables are written beside it, not in the source tree
+    shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
+    r = subprocess.run([BIN, "run", study, "--out", out, "--quiet", *[a for kv in sets for a in ("--set", kv)]],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+def test_solver_curve_is_drawn_and_follows_the_patch(solver_result, tmp_path):
+    from rollspec_post.roughness_filter_plot import read_roughness
+    k, curves, used, a, speed = read_roughness(solver_result)
+    assert used == "solver" and set(curves) == {"none", "patch", "iso2d", "solver"}
+    raw, iso, solver = curves["none"], curves["iso2d"], curves["solver"]
+    # ER-3: h_eq is the roughness averaged by the flat-punch weight, whose first-order transfer is
+    # G_eq (iso2d) on an isotropic surface: near the patch scale the solver curve is far below the raw
+    # line and within a few dB of G_eq (the strips are few and short: a Welch estimate, not G_eq itself).
+    band = (k * a > 1.0) & (k * a < 2.5) & (raw > 0)
+    assert np.all(solver[band] < 0.5 * raw[band])
+    assert abs(10 * np.log10(np.mean(solver[band]) / np.mean(iso[band]))) < 3.0
+    out = tmp_path / "s.png"
+    r = post("roughness", solver_result, "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert is_png_with_content(out)
 
 
 def test_refuses_a_result_without_roughness(oscillator_result, tmp_path):

@@ -32,6 +32,7 @@
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
+#include "src/stiffness/strip_equivalent_roughness.hpp"
 #include "src/stiffness/stiffness_keys.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -71,6 +72,9 @@ class BallOnBeam final : public Scene {
   void add_pipeline_stages(const Study& s) {
     if (b_.path_law())
       add_stages({{"texture", StageStatus::skipped, "law = path: the path table's strip is the roughness (no line texture)"}});
+    else if (b_.strip_line)
+      add_stages({{"texture", StageStatus::skipped,
+                   "equivalent_roughness.line = strip: h_eq of strip 0 along the path is the line (no synthesis)"}});
     else
       add_stages({{"texture", StageStatus::run,
                    "beam line texture per realisation from [texture] (" + b_.psd.description + "); " + filter_description()}});
@@ -123,7 +127,24 @@ class BallOnBeam final : public Scene {
                    linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
                                : "only the linearised law uses F0"}});
     }
-    if (solver_filter()) {
+    if (solver_filter() && b_.strip_line) {
+      // line = strip: h_eq of strip 0 on the path table's grid and positions (the strip law = path uses).
+      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
+      const double weight = b_.weight();
+      const stiffness::PathTableGeometry grid = stiffness::path_table_geometry(
+          s, radius, e_star, weight, b_.model.traverse.x_end - b_.model.traverse.x_start);
+      add_stage(std::make_unique<TableStage>(
+          "equivalent_roughness", stiffness::strip_equivalent_roughness_cached_table(s, grid, radius, e_star, weight),
+          [] { return std::make_unique<stiffness::EquivalentRoughnessTable>(); },
+          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
+            static_cast<stiffness::EquivalentRoughnessTable&>(out) =
+                stiffness::build_strip_equivalent_roughness(s, grid, radius, e_star, weight, quiet);
+          },
+          [this](const stiffness::TableData& er, const std::string& status, bool quiet) {
+            use_strip_equivalent_roughness(static_cast<const stiffness::EquivalentRoughnessTable&>(er), status, quiet);
+          },
+          stiffness::strip_equivalent_roughness_describe(grid)));
+    } else if (solver_filter()) {
       // filter = solver (kernels/contact ER-1..ER-6): h_eq on the blocked-force grid, the path step
       // at most v / f_s so the h_eq PSD reaches the band limit (B40).
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
@@ -199,6 +220,16 @@ class BallOnBeam final : public Scene {
     if (!quiet)
       std::fprintf(stderr, "path table: %s (%zu approaches x %zu positions; mean static approach %.4g m from the mean plane)\n",
                    status.c_str(), t.approach.size(), t.position.size(), b_.static_compression);
+  }
+
+  // line = strip: h_eq(xi_k) of strip 0 is the line, xi_0 at the traverse's start (as the path law's
+  // path_origin, B46), linear between positions as P(delta, xi) is.
+  void use_strip_equivalent_roughness(const stiffness::EquivalentRoughnessTable& t, const std::string& status,
+                                      bool quiet) {
+    if (!quiet)
+      std::fprintf(stderr, "equivalent roughness table: %s (strip 0, %zu positions, delta_smooth = %.4g m)\n",
+                   status.c_str(), t.position.size(), t.smooth_approach);
+    strip_line_ = beam::UniformSamples{b_.model.traverse.x_start, t.position.at(1) - t.position.at(0), t.height};
   }
 
   // filter = solver: the line is synthesised from the strip-mean PSD of h_eq (ER-2), band-limited
@@ -286,7 +317,7 @@ class BallOnBeam final : public Scene {
   // Simulates realisation `id` into ws.result (shared by the ensemble and the time-history output).
   void simulate(std::uint64_t id, Workspace& ws) const {
     const std::size_t nh = lines_->harmonics();
-    if (!blocked_solver() && !b_.path_law()) {
+    if (!blocked_solver() && !b_.path_law() && !b_.strip_line) {
     rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
     rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
     if (!ws.line_scratch) ws.line_scratch = std::make_unique<spectral::SynthesisScratch>(lines_->period());
@@ -317,6 +348,8 @@ class BallOnBeam final : public Scene {
       r.blocked_force.step = dt;
       const double weight = b_.weight();
       for (std::size_t i = first; i < h.values.size(); ++i) r.blocked_force.values.push_back(weight + b_.model.contact.k0 * h.values[i]);
+    } else if (b_.strip_line) {
+      r.roughness = strip_line_;
     } else if (!b_.path_law()) {
       r.roughness = std::move(h);
     }
@@ -423,7 +456,7 @@ class BallOnBeam final : public Scene {
   // where it applies) through B35a on the samples; psd_iso2d: Eq. 38 (absent where the PSD has no
   // isotropic form and the study does not ask for iso2d).
   void write_roughness(io::Hdf5Writer& w) const {
-    if (blocked_solver() || b_.path_law()) return;
+    if (blocked_solver() || b_.path_law() || b_.strip_line) return;
     const double k0 = lines_->fundamental(), k1 = M_PI / b_.spacing;
     std::vector<double> k;
     for (std::size_t i = 0;; ++i) {
@@ -578,6 +611,7 @@ class BallOnBeam final : public Scene {
   const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene
   std::unique_ptr<texture::LineTextureGenerator> lines_;
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;
+  beam::UniformSamples strip_line_;  // [equivalent_roughness] line = strip: h_eq of strip 0 along the path
   std::unique_ptr<spectral::WelchPlan> welch_;
   std::unique_ptr<PsdRows> rows_;
   std::vector<std::unique_ptr<Workspace>> workspaces_;

@@ -101,6 +101,10 @@ void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
   if (b.filter == ContactFilter::solver && b.path_law())
     s.refuse("contact.filter", "solver filters the line texture, which law = path does not use (its strip is the "
                                "roughness); allowed with path: none or patch (both ignored)");
+  b.strip_line = s.text("equivalent_roughness.line") == "strip";
+  if (b.strip_line && b.filter != ContactFilter::solver)
+    s.refuse("equivalent_roughness.line", "= strip is the line of [contact] filter = solver; allowed with filter = " +
+                                              b.filter_name + ": synthesised");
   if (b.filter == ContactFilter::solver && b.linearised())
     s.refuse("contact.filter", "solver gives the equivalent roughness of the nonlinear point laws; allowed with law = "
                                "linearised: none, patch or iso2d (or law = hertz, table or literal with solver)");

@@ -47,6 +47,9 @@ struct BallOnBeamSettings {
   texture::Psd line_psd;
   ContactFilter filter = ContactFilter::patch;
   std::string filter_name;         // [contact] filter as written
+  // filter = solver with [equivalent_roughness] line = strip: the line is h_eq of strip 0 along the path
+  // (the path table's strip and grid), the same for every realisation, not synthesised.
+  bool strip_line = false;
   double contact_half_width = 0.0; // Hertz contact radius a at the weight (what the filters use)
   double spacing = 0.0;            // line texture sample spacing, m
   std::size_t line_samples = 0;    // over the whole span

@@ -55,6 +55,11 @@ std::vector<KeySpec> equivalent_roughness_keys() {
                   "filter = solver: rough strips (surface realisations 0..strips-1) whose h_eq PSD is averaged; the "
                   "strip grid is the blocked force's ([blocked_force] strip_length, window, step, segment)",
                   std::string("2"), 1, 1024),
+      choice_key("equivalent_roughness", "line",
+                 "filter = solver: synthesised (a Philox line texture per realisation from the strip-mean h_eq PSD) "
+                 "or strip (h_eq of strip 0 itself along the ball's path, on the grid law = path uses: the point law "
+                 "on h_eq against law = path on the same strip; every realisation rolls over this one strip)",
+                 std::string("synthesised"), {"synthesised", "strip"}),
   };
 }
 
