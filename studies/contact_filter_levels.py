@@ -4,10 +4,14 @@
     ROLLSPEC_BIN=build/release/rollspec python3 studies/contact_filter_levels.py [--realisations 25] [--keep DIR]
 
 Runs each study (the profiles chain builds its stiffness table once, about a minute, then reuses
-it from studies/tables/) with --set contact.filter=none|patch|iso2d (same seed, same Philox streams: only the
-line texture's PSD changes) and prints the sensor-mean third-octave levels from 2 kHz up, the power
-sum of those bands and of the 100-1600 Hz bands, the differences between filters, and the rms of
-the path PSD the contact sees at and above 2 kHz (from /roughness). Numbers only from the runs it makes.
+it from studies/tables/; filter = solver builds its equivalent-roughness table once the same way) with
+--set contact.filter=none|patch|iso2d|solver (same seed, same Philox streams: only the line texture's PSD
+changes) and prints the sensor-mean third-octave levels from 2 kHz up, the power sum of those bands and
+of the 100-1600 Hz bands, the differences between filters, and the rms of the path PSD the contact sees
+at and above 2 kHz (from /roughness). The seed 002 rig's own law is linearised, which filter = solver
+does not serve (it is the point laws' filter), so the rig also runs the Hertz law under patch, iso2d and
+solver, and the linearised law with the solver's blocked force (seed 002 §4.2) on the same surface
+statistics. Numbers only from the runs it makes.
 """
 import argparse
 import os
@@ -21,16 +25,25 @@ import numpy as np
 
 SOURCE = pathlib.Path(__file__).resolve().parents[1]
 BIN = os.environ.get("ROLLSPEC_BIN", str(SOURCE / "build" / "release" / "rollspec"))
-STUDIES = (("seed 001 beam S, Hertz law", "seed001-beam-s-hertz.ini"),
-           ("seed 001 beam S, the seed's chain (profiles -> stiffness table law)", "seed001-beam-s.ini"),
-           ("seed 002 rig 1 m/s", "seed002-rig-1ms.ini"))
-FILTERS = ("none", "patch", "iso2d")
+FILTERS = ("none", "patch", "iso2d", "solver")
+POINT = tuple((f, f, [f"contact.filter={f}"]) for f in FILTERS)
+# (row name, the /roughness curve it used, --set values)
+RIG = (tuple((f"linearised, {f}", f, [f"contact.filter={f}"]) for f in FILTERS[:3]) +
+       tuple((f"hertz, {f}", f, ["contact.law=hertz", f"contact.filter={f}"]) for f in FILTERS[1:]) +
+       (("linearised, blocked_force = solver", None, ["contact.blocked_force=solver"]),))
+STUDIES = (("seed 001 beam S, Hertz law", "seed001-beam-s-hertz.ini", POINT,
+            (("patch", "none"), ("iso2d", "none"), ("solver", "none"), ("solver", "patch"), ("solver", "iso2d"))),
+           ("seed 001 beam S, the seed's chain (profiles -> stiffness table law)", "seed001-beam-s.ini", POINT,
+            (("patch", "none"), ("iso2d", "none"), ("solver", "none"), ("solver", "patch"), ("solver", "iso2d"))),
+           ("seed 002 rig 1 m/s", "seed002-rig-1ms.ini", RIG,
+            (("linearised, iso2d", "linearised, none"), ("hertz, solver", "hertz, patch"),
+             ("hertz, solver", "hertz, iso2d"), ("hertz, solver", "linearised, blocked_force = solver"))))
 F_LOW = 2000.0
 
 
-def run(study, filt, realisations, out):
+def run(study, sets, realisations, out):
     cmd = [BIN, "run", str(SOURCE / "studies" / study), "--out", str(out), "--quiet", "--force",
-           "--set", f"contact.filter={filt}", "--set", f"study.realisations={realisations}"]
+           "--set", f"study.realisations={realisations}"] + [a for kv in sets for a in ("--set", kv)]
     r = subprocess.run(cmd, capture_output=True, text=True)
     if r.returncode:
         sys.exit(f"{' '.join(cmd)} failed:\n{r.stderr}")
@@ -41,17 +54,19 @@ def levels(path):
         nominal = f["/bands/nominal_frequency"][:]
         level = f["/bands/level_db"][-1]  # sensor_mean (or the only sensor)
         sel = nominal >= F_LOW * 0.999  # third octaves from the 2 kHz band up
-        k = f["/roughness/wavenumber"][:]
-        g = {n: f[f"/roughness/psd_{n if n != 'none' else 'raw'}"][:] for n in FILTERS
-             if f"/roughness/psd_{n if n != 'none' else 'raw'}" in f}
-        if "none" in g:  # the point contact's line is band-limited too (B40)
-            g["none"] = np.where(k <= f["/roughness"].attrs.get("band_limit_wavenumber", np.inf), g["none"], 0.0)
         speed = float(f["/ball"].attrs["speed"])
         loss = float(f["/contact/loss_of_contact_share"][0])
         low = (nominal >= 100) & (nominal <= 1600)
         low_sum = 10 * np.log10(np.sum(10 ** (level[low] / 10)))
-    high = k >= 2 * np.pi * F_LOW / speed
-    rms = {n: np.sqrt(np.trapz(v[high], k[high])) for n, v in g.items()}
+        rms = {}
+        if "/roughness/wavenumber" in f:  # blocked_force = solver resolves the contact itself: no line
+            k = f["/roughness/wavenumber"][:]
+            g = {n: f[f"/roughness/psd_{n if n != 'none' else 'raw'}"][:] for n in FILTERS
+                 if f"/roughness/psd_{n if n != 'none' else 'raw'}" in f}
+            if "none" in g:  # the point contact's line is band-limited too (B40)
+                g["none"] = np.where(k <= f["/roughness"].attrs.get("band_limit_wavenumber", np.inf), g["none"], 0.0)
+            high = k >= 2 * np.pi * F_LOW / speed
+            rms = {n: np.sqrt(np.trapz(v[high], k[high])) for n, v in g.items()}
     return nominal[sel], level[sel], 10 * np.log10(np.sum(10 ** (level[sel] / 10))), rms, loss, low_sum
 
 
@@ -62,22 +77,23 @@ def main():
     args = ap.parse_args()
     tmp = pathlib.Path(args.keep or tempfile.mkdtemp(prefix="contact-filter-"))
     tmp.mkdir(parents=True, exist_ok=True)
-    for title, study in STUDIES:
+    for title, study, variants, pairs in STUDIES:
         res = {}
-        for filt in FILTERS:
-            out = tmp / f"{pathlib.Path(study).stem}-{filt}.h5"
-            run(study, filt, args.realisations, out)
-            res[filt] = levels(out)
-        bands = res["none"][0]
+        for name, _, sets in variants:
+            out = tmp / f"{pathlib.Path(study).stem}-{name.replace(', ', '-').replace(' ', '_')}.h5"
+            run(study, sets, args.realisations, out)
+            res[name] = levels(out)
+        bands = res[variants[0][0]][0]
         print(f"\n{title}: studies/{study}, {args.realisations} realisations, sensor mean, third-octave levels (dB)")
-        print("| filter | " + " | ".join(f"{b:g} Hz" for b in bands) +
+        print("| law, filter | " + " | ".join(f"{b:g} Hz" for b in bands) +
               " | sum >= 2 kHz | sum 100-1600 Hz | path rms >= 2 kHz | loss of contact |")
         print("|---|" + "---|" * (len(bands) + 4))
-        for filt in FILTERS:
-            _, lv, tot, rms, loss, low = res[filt]
-            print(f"| {filt} | " + " | ".join(f"{v:.1f}" for v in lv) + f" | {tot:.1f} | {low:.1f} | "
-                  f"{rms[filt] * 1e9:.3g} nm | {100 * loss:.3g} % |")
-        for a, b in (("patch", "none"), ("iso2d", "none"), ("iso2d", "patch")):
+        for name, curve, _ in variants:
+            _, lv, tot, rms, loss, low = res[name]
+            path_rms = f"{rms[curve] * 1e9:.3g} nm" if curve in rms else ""
+            print(f"| {name} | " + " | ".join(f"{v:.1f}" for v in lv) + f" | {tot:.1f} | {low:.1f} | "
+                  f"{path_rms} | {100 * loss:.3g} % |")
+        for a, b in pairs:
             d = res[a][1] - res[b][1]
             print(f"| {a} − {b} | " + " | ".join(f"{v:+.1f}" for v in d) +
                   f" | {res[a][2] - res[b][2]:+.1f} | {res[a][5] - res[b][5]:+.1f} | | |")

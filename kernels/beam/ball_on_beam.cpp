@@ -80,7 +80,18 @@ InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& 
     PatchAverager(r.roughness).evaluate(x0, std::sqrt(m.patch_radius * std::max(delta, 0.0)), h, dh);
   // Linearised law (D-11): roughness enters through F0 or, if given, through h as in D-1.
   s.y[2 * n] = w1 + h - delta;
-  s.y[2 * n + 1] = v * (2.0 * dw1 - dres * weight + dh);
+  // The path law (B46) has no line: its strip enters through P(δ, ξ), and a ball that rides it at
+  // constant load follows w1 − δ_W(ξ), so its rate carries −v dδ_W/dξ where the point laws' carries
+  // v dh (B22). Over the table's first interval, where P is linear in ξ (B44), as dh is the line's.
+  double dpath = 0.0;
+  if (contact.path()) {
+    const std::vector<double>& xk = contact.law().path->data().position;
+    if (xk.size() > 1) {
+      const double e = xk[1] - xk[0];
+      dpath = -(contact.static_compression(weight, f0 + e) - delta) / e;
+    }
+  }
+  s.y[2 * n + 1] = v * (2.0 * dw1 - dres * weight + dh + dpath);
   // Contact force consistent with the state (the damper may see a convective rate at t = 0).
   // Damper rate of the initial state: relative velocity w1'(xi) - w2' (+ convective terms).
   double wd = 0.0;

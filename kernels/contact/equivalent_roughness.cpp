@@ -20,6 +20,7 @@ void record(EquivalentRoughness& out, std::size_t k, const ContactResult& r) {
   out.approach[k] = r.approach;
   out.contact_area[k] = r.contact_area;
   out.plastic_cells[k] = static_cast<double>(r.plastic_cells);
+  out.stiffness[k] = r.stiffness;
   out.iterations += r.iterations;
   out.max_error = std::max(out.max_error, r.error);
   out.converged = out.converged && r.converged;
@@ -32,6 +33,7 @@ EquivalentRoughness empty_result(const std::vector<double>& positions) {
   out.height.assign(positions.size(), 0.0);
   out.contact_area.assign(positions.size(), 0.0);
   out.plastic_cells.assign(positions.size(), 0.0);
+  out.stiffness.assign(positions.size(), 0.0);
   out.converged = true;
   return out;
 }
@@ -65,6 +67,7 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   const ContactResult smooth = solve_force(solver, flat.gap(0), load, p, options, control);
   out.smooth_approach = smooth.approach;
   out.smooth_contact_area = smooth.contact_area;
+  out.smooth_stiffness = smooth.stiffness;
   out.iterations += smooth.iterations;
   out.converged = smooth.converged;
   if (smooth.approach > flat.limit(0)) flat.reject(0, smooth.approach, "flat strip: ");
@@ -136,6 +139,7 @@ EquivalentRoughness equivalent_roughness_reference(const Grid& strip, const std:
                   options, control);
   out.smooth_approach = smooth.approach;
   out.smooth_contact_area = smooth.contact_area;
+  out.smooth_stiffness = smooth.stiffness;
   out.converged = smooth.converged;
   for (std::size_t k = 0; k < positions.size(); ++k) {
     p.clear();

@@ -48,7 +48,11 @@ struct EquivalentRoughness {
   std::vector<double> height;        // h_eq(ξ_k) (m), ER-2
   std::vector<double> contact_area;  // real contact area at δ_eq (m²)
   std::vector<double> plastic_cells; // cells at the pressure cap at δ_eq
+  // k_eq(ξ_k) = dP/dδ at δ_eq (N/m): the solve's continuum-consistent stiffness (contact_solver.hpp,
+  // README Eq. 11, 13–15), ER-7.
+  std::vector<double> stiffness;
   double smooth_approach = 0.0;      // δ_smooth (m)
+  double smooth_stiffness = 0.0;     // k of the flat strip at W, the same discretisation (N/m)
   double smooth_contact_area = 0.0;  // contact area of the flat strip at W (m²)
   int iterations = 0;                // CG iterations over all solves (coarse starts excluded)
   double max_error = 0.0;            // largest stopping-rule ε (README Eq. 9) of the returned solves

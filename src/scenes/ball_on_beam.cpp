@@ -230,6 +230,34 @@ class BallOnBeam final : public Scene {
       std::fprintf(stderr, "equivalent roughness table: %s (strip 0, %zu positions, delta_smooth = %.4g m)\n",
                    status.c_str(), t.position.size(), t.smooth_approach);
     strip_line_ = beam::UniformSamples{b_.model.traverse.x_start, t.position.at(1) - t.position.at(0), t.height};
+    apply_equivalent_stiffness(t, quiet);
+  }
+
+  // ER-7 ([equivalent_roughness] stiffness = strip): the point law stretched along the approach,
+  // F'(delta) = F(rho delta), carries the weight at delta_W / rho with the strips' mean contact
+  // stiffness rho k(delta_W): a rough strip is softer than the smooth contact h_eq alone assumes.
+  void apply_equivalent_stiffness(const stiffness::EquivalentRoughnessTable& t, bool quiet) {
+    if (!b_.equivalent_stiffness) return;
+    const double rho = t.stiffness_ratio();
+    beam::ContactLaw& law = b_.model.contact;
+    switch (law.kind) {
+      case beam::ContactLawKind::hertz:
+        law.effective_modulus *= std::pow(rho, 1.5);  // (4/3) E* sqrt(R) (rho delta)^(3/2)
+        break;
+      case beam::ContactLawKind::table:
+        for (double& c : law.compression) c /= rho;
+        break;
+      case beam::ContactLawKind::literal_stiffness:  // k_c'(delta) delta = rho k_c(rho delta) delta
+        for (double& c : law.compression) c /= rho;
+        for (double& v : law.values) v *= rho;
+        break;
+      default:
+        return;
+    }
+    b_.static_compression /= rho;
+    if (!quiet)
+      std::fprintf(stderr, "equivalent stiffness: the strips' mean contact stiffness at the weight is %.4g of the smooth "
+                   "strip's; the point law is stretched along the approach by 1/%.4g (ER-7)\n", rho, rho);
   }
 
   // filter = solver: the line is synthesised from the strip-mean PSD of h_eq (ER-2), band-limited
@@ -261,6 +289,7 @@ class BallOnBeam final : public Scene {
     for (std::size_t j = 1; j < t.psd_wavenumber.size(); ++j) p.breakpoints.push_back(t.psd_wavenumber[j]);
     b_.line_psd = std::isfinite(b_.band_limit_wavenumber) ? texture::band_limited(std::move(p), b_.band_limit_wavenumber)
                                                           : std::move(p);
+    apply_equivalent_stiffness(t, quiet);
     lines_ = texture_io::study_line_generator(*study_, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
     for (auto& ws : workspaces_) {
       ws->u_phase.resize(lines_->harmonics());
@@ -444,7 +473,9 @@ class BallOnBeam final : public Scene {
       case ContactFilter::iso2d: break;
       case ContactFilter::solver:
         return std::string("contact filter: solver, line PSD of the equivalent roughness h_eq of half-space solves at "
-                           "the weight (kernels/contact ER-1..ER-6), Hertz a = ") + a + " um";
+                           "the weight (kernels/contact ER-1..ER-7), Hertz a = ") + a + " um" +
+               (b_.equivalent_stiffness ? "; the point law carries the weight with the strips' mean contact stiffness (ER-7)"
+                                        : "; the point law's own stiffness ([equivalent_roughness] stiffness = law)");
     }
     return std::string("contact filter: iso2d, line PSD G_eq of a Hertz disc of radius a = ") + a +
            " um on the isotropic surface (kernels/texture Eq. 38)";

@@ -64,7 +64,7 @@ std::vector<KeySpec> ball_on_beam_keys() {
                  "(1D average over 2a along the path, B35), iso2d (line synthesised from G_eq, the path PSD a Hertz "
                  "disc sees on an isotropic surface, kernels/texture Eq. 38) or solver (line synthesised from the PSD "
                  "of the equivalent roughness h_eq of half-space solves at the weight on [equivalent_roughness] strips "
-                 "rough strips, kernels/contact ER-1..ER-6, a cached table; point laws only)",
+                 "rough strips, kernels/contact ER-1..ER-7, a cached table; point laws only)",
                  std::string("patch"), {"none", "patch", "iso2d", "solver"}),
       real_key("roughness", "spacing", "m",
                "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "

@@ -27,7 +27,7 @@ enum class ContactModel { hertz, table, literal, linearised_spring, linearised_s
 // [contact] filter: what the contact does to the roughness it rolls over (kernels/beam README B35;
 // kernels/texture README Eq. 36-40): none (point contact), patch (1D average over the Hertz width,
 // B35), iso2d (the line synthesised from G_eq, the path PSD a Hertz disc sees on an isotropic surface)
-// or solver (the line synthesised from the strip-mean PSD of h_eq, kernels/contact ER-1..ER-6, a table stage).
+// or solver (the line synthesised from the strip-mean PSD of h_eq, kernels/contact ER-1..ER-7, a table stage).
 enum class ContactFilter { none, patch, iso2d, solver };
 
 struct BallOnBeamSettings {
@@ -50,6 +50,9 @@ struct BallOnBeamSettings {
   // filter = solver with [equivalent_roughness] line = strip: the line is h_eq of strip 0 along the path
   // (the path table's strip and grid), the same for every realisation, not synthesised.
   bool strip_line = false;
+  // filter = solver with [equivalent_roughness] stiffness = strip: the point law carries the weight with
+  // the strips' mean contact stiffness (kernels/contact ER-7).
+  bool equivalent_stiffness = false;
   double contact_half_width = 0.0; // Hertz contact radius a at the weight (what the filters use)
   double spacing = 0.0;            // line texture sample spacing, m
   std::size_t line_samples = 0;    // over the whole span

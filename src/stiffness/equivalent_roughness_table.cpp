@@ -32,14 +32,14 @@ constexpr std::size_t kChunkPositions = 64;
 constexpr double kSolvesPerPosition = 4.0;
 
 std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& t) {
-  return {&t.position, &t.height, &t.psd_wavenumber, &t.psd};
+  return {&t.position, &t.height, &t.psd_wavenumber, &t.psd, &t.stiffness};
 }
 
 std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
-     << "\nchunk_positions = " << kChunkPositions << "\n";
+     << "\nchunk_positions = " << kChunkPositions << "\noutputs = h_eq, k_eq\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -60,13 +60,24 @@ std::vector<KeySpec> equivalent_roughness_keys() {
                  "or strip (h_eq of strip 0 itself along the ball's path, on the grid law = path uses: the point law "
                  "on h_eq against law = path on the same strip; every realisation rolls over this one strip)",
                  std::string("synthesised"), {"synthesised", "strip"}),
+      choice_key("equivalent_roughness", "stiffness",
+                 "filter = solver: strip (the point law stretched along the approach so that it carries the weight "
+                 "with the strips' mean contact stiffness dP/d delta at delta_eq, kernels/contact ER-7) or law (the "
+                 "law's own stiffness; h_eq alone)",
+                 std::string("strip"), {"strip", "law"}),
   };
 }
 
 std::string EquivalentRoughnessTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
-  for (double v : {smooth_approach, load, strips}) h = ensemble::fnv1a64(&v, sizeof v, h);
+  for (double v : {smooth_approach, smooth_stiffness, load, strips}) h = ensemble::fnv1a64(&v, sizeof v, h);
   return hex16(h);
+}
+
+double EquivalentRoughnessTable::stiffness_ratio() const {
+  double sum = 0.0;
+  for (double k : stiffness) sum += k;
+  return stiffness.empty() || !(smooth_stiffness > 0.0) ? 1.0 : sum / static_cast<double>(stiffness.size()) / smooth_stiffness;
 }
 
 double EquivalentRoughnessTable::psd_at(double k) const {
@@ -102,7 +113,9 @@ void EquivalentRoughnessTable::load_from(const io::Hdf5Reader& r) {
   height = r.read("/equivalent_roughness/height");
   psd_wavenumber = r.read("/equivalent_roughness/psd_wavenumber");
   psd = r.read("/equivalent_roughness/psd");
+  stiffness = r.read("/equivalent_roughness/stiffness");
   smooth_approach = r.double_attribute("/equivalent_roughness", "smooth_approach");
+  smooth_stiffness = r.double_attribute("/equivalent_roughness", "smooth_stiffness");
   load = r.double_attribute("/equivalent_roughness", "load");
   strips = r.double_attribute("/equivalent_roughness", "strips");
 }
@@ -115,7 +128,10 @@ void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
   w.write("/equivalent_roughness/psd_wavenumber", {psd_wavenumber.size()}, psd_wavenumber.data(), "rad/m", "wavenumber");
   w.write("/equivalent_roughness/psd", {psd.size()}, psd.data(), "m^3",
           "one-sided PSD of h_eq along the path (Welch per strip, mean over strips)");
+  w.write("/equivalent_roughness/stiffness", {n_strips, position.size()}, stiffness.data(), "N/m",
+          "contact stiffness k_eq = dP/d delta at delta_eq (contact README ER-7), strip x position");
   w.attribute("/equivalent_roughness", "smooth_approach", smooth_approach);
+  w.attribute("/equivalent_roughness", "smooth_stiffness", smooth_stiffness);
   w.attribute("/equivalent_roughness", "load", load);
   w.attribute("/equivalent_roughness", "strips", strips);
 }
@@ -170,7 +186,9 @@ EquivalentRoughnessTable build_equivalent_roughness(const Study& s, const Blocke
       throw data_error("equivalent roughness: strip " + std::to_string(si) + " did not converge (largest error " +
                        num(r.max_error) + "); raise [stiffness] max_iterations or tolerance");
     t.smooth_approach = r.smooth_approach;
+    t.smooth_stiffness = r.smooth_stiffness;
     t.height.insert(t.height.end(), r.height.begin(), r.height.end());
+    t.stiffness.insert(t.stiffness.end(), r.stiffness.begin(), r.stiffness.end());
     plan.psd(r.height.data(), r.height.size(), one.data(), ws);
     for (std::size_t k = 0; k < one.size(); ++k) mean[k] += one[k] / static_cast<double>(n_strips);
     if (!quiet)

@@ -32,7 +32,7 @@ std::string inputs_text(const Study& s, const PathTableGeometry& g, double radiu
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
-     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment << "\n";
+     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment << "\noutputs = h_eq, k_eq\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
@@ -95,7 +95,9 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const Study& s, const 
   EquivalentRoughnessTable t;
   for (double x : r.position) t.position.push_back(x - r.position.front());
   t.height = r.height;
+  t.stiffness = r.stiffness;
   t.smooth_approach = r.smooth_approach;
+  t.smooth_stiffness = r.smooth_stiffness;
   t.load = load;
   t.strips = 1.0;
   // The strip's own h_eq PSD (per rad/m, D-5), for /roughness and the log.

@@ -215,6 +215,40 @@ TEST_CASE("law = path on an exact Hertz table reproduces law = hertz in the ball
   CHECK(worst_a < 1e-8 * scale_a);
 }
 
+TEST_CASE("law = path on a Hertz table shifted by a wave starts like law = hertz on that wave (B22, B46)") {
+  // P(delta, xi_k) = Hertz(delta + h(xi_k)): the strip is the line h. The ball starts at static
+  // contact on a slope (h' = 2 pi A / lambda at x_start), so both laws must give it the rate v h'
+  // (B22); a path law starting level rings at the contact resonance, ~m w v h' = 2 % of W here.
+  beam::BallOnBeamModel m = beam::test::hertz_model(12, 0.05, 0.07, 25600.0);
+  const double weight = m.ball.mass * m.ball.gravity, dh = hertz_approach(weight);
+  const double step = 0.02e-3, amplitude = 0.1 * dh, wavelength = 5e-3;
+  beam::PathContactData d;
+  beam::UniformSamples line;
+  line.origin = m.traverse.x_start;
+  line.step = step;
+  for (int k = 0; k <= 1050; ++k) {
+    d.position.push_back(static_cast<double>(k) * step);
+    line.values.push_back(amplitude * std::sin(2.0 * M_PI * d.position.back() / wavelength));
+  }
+  for (int j = 1; j <= 8; ++j) d.approach.push_back(3.0 * dh * j / 8.0);
+  for (double h : line.values) d.first_contact.push_back(-h);
+  for (double dj : d.approach)
+    for (double h : line.values) d.force.push_back(hertz_force(dj + h));
+  beam::Realisation wave;
+  wave.roughness = line;
+  const beam::BallOnBeamResult hz = beam::ExactStepIntegrator(m).run(wave);
+  m.contact.kind = beam::ContactLawKind::path;
+  m.contact.path = std::make_shared<const beam::PathContactTable>(d);
+  m.contact.path_origin = m.traverse.x_start;
+  const beam::BallOnBeamResult pt = beam::ExactStepIntegrator(m).run(beam::Realisation{});
+  REQUIRE(pt.samples() == hz.samples());
+  double worst = 0.0;
+  for (std::size_t j = 0; j < hz.samples(); ++j) worst = std::max(worst, std::fabs(pt.contact_force[j] - hz.contact_force[j]));
+  // Between positions P is linear in xi while Hertz(delta + h) is not: O((h' step)^2 / dh^2) W.
+  MESSAGE("path vs hertz on the wave: force up to " << worst / weight << " W");
+  CHECK(worst < 1e-3 * weight);
+}
+
 TEST_CASE("path table: the same bits on 1 and 2 threads, the extension rows (B43a) included") {
   StripCase c(8.0, 57, 3, 2);
   const double dh = hertz_approach(kW), a = std::sqrt(kR * dh);

@@ -80,6 +80,12 @@ TEST_CASE("equivalent roughness: smooth strip gives h_eq = 0 and the Hertz appro
   // ~1e-4 at 32 cells, README Verification; the approach goes as force^(2/3)).
   CHECK(std::fabs(r.smooth_approach / h.approach - 1.0) < 1e-3);
   for (double v : r.height) CHECK(std::fabs(v) < 1e-8 * h.approach);
+  // ER-7 on the flat strip: k_eq = k_s at every position (whole-cell moves leave the discrete problem
+  // unchanged) and k_s is Hertz's 2 E* a (the edge-corrected stiffness, README Eq. 13–15).
+  const double k_hertz = h.stiffness();
+  MESSAGE("flat strip: k_s / (2 E* a) - 1 = " << r.smooth_stiffness / k_hertz - 1.0);
+  CHECK(std::fabs(r.smooth_stiffness / k_hertz - 1.0) < 1e-2);
+  for (double k : r.stiffness) CHECK(std::fabs(k / r.smooth_stiffness - 1.0) < 1e-6);
 }
 
 TEST_CASE("equivalent roughness: moving window with warm starts equals the cold whole-strip reference") {
@@ -111,6 +117,12 @@ TEST_CASE("equivalent roughness: moving window with warm starts equals the cold 
   // approaches agree to ~1e-9 δ (solver tolerance times the P(δ) slope ratio).
   CHECK(worst < 1e-8 * h.approach);
   CHECK(std::fabs(fast.smooth_approach - ref.smooth_approach) < 1e-8 * h.approach);
+  // ER-7: the stiffness at δ_eq of the same solution, the same contact set (to the solves' tolerance).
+  double worst_k = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) worst_k = std::max(worst_k, std::fabs(fast.stiffness[k] / ref.stiffness[k] - 1.0));
+  MESSAGE("k_eq fast / reference - 1 up to " << worst_k);
+  CHECK(worst_k < 1e-6);
+  CHECK(std::fabs(fast.smooth_stiffness / ref.smooth_stiffness - 1.0) < 1e-6);
   // Chunks of 5 positions (4 chunks, each from the flat field): the same to the tolerance.
   EquivalentRoughnessOptions chunked;
   chunked.chunk_positions = 5;
