@@ -39,7 +39,7 @@ std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double ra
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
-     << "\nchunk_positions = " << kChunkPositions << "\noutputs = h_eq, k_eq\n";
+     << "\nchunk_positions = " << kChunkPositions << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(strip_solver_options(s))) << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -153,9 +153,8 @@ EquivalentRoughnessTable build_equivalent_roughness(const Study& s, const Blocke
   const contact::BallShape shape = strip_ball_shape(s);
   contact::EquivalentRoughnessOptions po;
   po.chunk_positions = kChunkPositions;
-  // ER-1 to the solves' own accuracy: a solve stopped at complementarity error eps knows its force to
-  // about eps W, so a tighter load tolerance cannot be met (h_eq error ~ eps delta_H, far below the roughness).
-  po.load_tolerance = std::max(po.load_tolerance, opts.tolerance);
+  // ER-1 to the solves' own accuracy (strip_load_tolerance).
+  po.load_tolerance = strip_load_tolerance(opts);
   if (!quiet)
     std::fprintf(stderr, "%sequivalent roughness: %s\n", ensemble::rank_prefix().c_str(),
                  equivalent_roughness_describe(s, geo).c_str());

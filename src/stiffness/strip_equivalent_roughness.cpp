@@ -32,7 +32,7 @@ std::string inputs_text(const Study& s, const PathTableGeometry& g, double radiu
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
-     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment << "\noutputs = h_eq, k_eq\n";
+     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(strip_solver_options(s))) << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
@@ -72,7 +72,7 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const Study& s, const 
   const contact::SolverOptions opts = strip_solver_options(s);
   contact::EquivalentRoughnessOptions po;
   po.chunk_positions = kChunkPositions;
-  po.load_tolerance = std::max(po.load_tolerance, opts.tolerance);  // as build_equivalent_roughness
+  po.load_tolerance = strip_load_tolerance(opts);
   if (!quiet)
     std::fprintf(stderr, "%sequivalent roughness: %s\n", ensemble::rank_prefix().c_str(),
                  strip_equivalent_roughness_describe(g).c_str());

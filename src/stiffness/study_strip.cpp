@@ -76,6 +76,10 @@ contact::SolverOptions strip_solver_options(const study::Study& s) {
   return opts;
 }
 
+double strip_load_tolerance(const contact::SolverOptions& options) {
+  return std::max(1e-10, 100.0 * options.tolerance);
+}
+
 contact::BallShape strip_ball_shape(const study::Study& s) {
   return s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
 }
