@@ -38,14 +38,35 @@ SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const Spectra
   const double q_grid = std::hypot(a * M_PI / spec_.dx, M_PI / (a * spec_.dy));
   iso_ = std::make_unique<IsotropicPsd>(psd, q_min, 1e3 * q_grid, spec_.points_per_decade);
   const double width = std::sqrt(dqx * dqy);
+  // Eq. 26a: a mode stands for the cell sx x sy around it (stretched axes, Eq. 27). Where that cell
+  // is elongated (a strip: ny dy << nx dx) and near the origin, C_iso changes by orders of magnitude
+  // across it and one radial mean of width sqrt(dqx dqy) overweights the long waves (a 0.6 mm wide
+  // strip had 3x the rms of a square surface); there the mode takes the mean of Eq. 21 over
+  // near-square sub-cells of side min(sx, sy). Square cells: one sub-cell, Eq. 21 as before.
+  const double sx = a * dqx, sy = dqy / a, side = std::min(sx, sy);
+  const auto nsx = static_cast<std::size_t>(std::max(1.0, std::round(sx / side)));
+  const auto nsy = static_cast<std::size_t>(std::max(1.0, std::round(sy / side)));
+  const double near = 4.0 * std::max(sx, sy);  // beyond it the cell spans < 1/8 rad: Eq. 21 holds
   c_.assign(modes(), 0.0);
   for (std::size_t iy = 0; iy < spec_.ny; ++iy) {
     if (iy == spec_.ny / 2) continue;  // Nyquist row
     const double qy = dqy * (iy < spec_.ny / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(spec_.ny));
     for (std::size_t ix = 0; ix + 1 < nh; ++ix) {  // ix = nx/2: Nyquist column
       if (ix == 0 && iy == 0) continue;            // DC
-      const double q = std::hypot(a * dqx * static_cast<double>(ix), qy / a);  // Eq. 27
-      c_[iy * nh + ix] = iso_->cell_average(q, width);                        // Eq. 21
+      const double px = a * dqx * static_cast<double>(ix), py = qy / a;
+      const double q = std::hypot(px, py);  // Eq. 27
+      if (nsx * nsy == 1 || q >= near) {
+        c_[iy * nh + ix] = iso_->cell_average(q, width);  // Eq. 21
+        continue;
+      }
+      double sum = 0.0;  // Eq. 26a
+      for (std::size_t jy = 0; jy < nsy; ++jy)
+        for (std::size_t jx = 0; jx < nsx; ++jx) {
+          const double ux = px + sx * ((static_cast<double>(jx) + 0.5) / static_cast<double>(nsx) - 0.5);
+          const double uy = py + sy * ((static_cast<double>(jy) + 0.5) / static_cast<double>(nsy) - 0.5);
+          sum += iso_->cell_average(std::hypot(ux, uy), side);
+        }
+      c_[iy * nh + ix] = sum / static_cast<double>(nsx * nsy);
     }
   }
   // |Z_q| of Eq. 26 before the Rayleigh factor: the same every realisation.

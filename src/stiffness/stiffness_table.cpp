@@ -86,6 +86,9 @@ CachedTable stiffness_cached_table(const study::Study& s, double ball_radius, do
   in << "\n[surface]\n";
   for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
     in << k << " = " << s.text(std::string("surface.") + k) << "\n";
+  // Eq. 26a changed the spectral surfaces of non-square grids only (square: the same bits), so only
+  // their tables take a new hash.
+  if (s.integer("surface.nx") != s.integer("surface.ny")) in << "mode power = rectangular cell mean (kernels/texture Eq. 26a)\n";
   if (rough(s)) {
     in << "\n[texture]\n";
     for (const auto& k : texture_io::psd_keys())

@@ -42,6 +42,7 @@ std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
   for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
   in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
      << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
+     << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
      << "\n\n[texture]\n";
   for (const auto& k : texture_io::psd_keys())
     if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";

@@ -53,6 +53,18 @@ TEST_CASE("spectral surface, deterministic amplitudes: periodogram = target C at
   CHECK(st.rms * st.rms == doctest::Approx(gen.target_variance()).epsilon(1e-10));
 }
 
+TEST_CASE("a narrow strip holds the variance of a square surface (Eq. 26a)") {
+  // 1024 x 8 cells against 1024 x 1024: the strip's modes of the rows q_y = 0, ±Δq_y stand for cells
+  // 128 times longer in q_y than in q_x, across the roll-off plateau (k_r = 2π/32 cells; Δq_y = 4 k_r).
+  // Both sums (Eq. 28) approximate (2π)⁻² ∫ C d²q without the same DC cell; one radial mean per
+  // mode (Eq. 21 alone) gave the strip 1.31x the variance.
+  const Psd psd = surface_psd().to_psd();
+  const SpectralSurfaceGenerator square(psd, SpectralSurfaceSpec{1024, 1024, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
+  const SpectralSurfaceGenerator strip(psd, SpectralSurfaceSpec{1024, 8, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
+  MESSAGE("strip / square variance = " << strip.target_variance() / square.target_variance());
+  CHECK(strip.target_variance() / square.target_variance() == doctest::Approx(1.0).epsilon(0.03));
+}
+
 TEST_CASE("spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per band; their rows match G within 1 dB") {
   const std::size_t n = 256;
   const SelfAffinePsd model = surface_psd();
