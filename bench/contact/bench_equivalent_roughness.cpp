@@ -19,7 +19,7 @@
 //              linear limit free of sampling scatter), the 1e-3 run against G_eq, and the mean contact
 //              area over the flat one
 //
-// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] [ER_CELL=2e-6 (seed002 cell, m)] [ER_CHUNK=0 (positions per parallel chunk)] bench_equivalent_roughness [small | departure | isotropic | seed002 [length_m] [window_half_width_in_a]]
+// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] [ER_CELL=2e-6 (seed002 cell, m)] [ER_CHUNK=0 (positions per parallel chunk)] [ER_DUMP=file (position,approach,h_eq per line)] bench_equivalent_roughness [small | departure | isotropic | seed002 [length_m] [window_half_width_in_a]]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -79,6 +79,13 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
     plastic += r.plastic_cells[k];
   }
   const double n = static_cast<double>(x.size());
+  if (const char* dump = std::getenv("ER_DUMP")) {  // position, δ_eq, h_eq per line (%.17g: old/new paths compared)
+    if (FILE* f = std::fopen(dump, "w")) {
+      std::fprintf(f, "# smooth_approach %.17g\n", r.smooth_approach);
+      for (std::size_t k = 0; k < x.size(); ++k) std::fprintf(f, "%.17g,%.17g,%.17g\n", x[k], r.approach[k], r.height[k]);
+      std::fclose(f);
+    }
+  }
   std::printf("%s,%zu,%.3f,%.5f,%.1f,%s; chunks of %zu positions; converged %d; rms h_eq %.4g m; mean contact area / flat %.3f; "
               "plastic cells per position %.1f\n",
               name, x.size(), s, s / n, r.iterations / n, note, path.chunk_positions, r.converged ? 1 : 0, std::sqrt(rms / n),

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "kernels/contact/box_product.hpp"
 #include "kernels/contact/grid.hpp"
 #include "kernels/contact/half_space_operator.hpp"
 
@@ -83,6 +84,25 @@ class ContactSolver {
   ContactResult solve_load(const std::vector<double>& gap, double mean_pressure, std::vector<double>& pressure,
                            const SolverOptions& options = {});
 
+  // Load control on the open half-space (Polonsky & Keer's original form with the pressure cap;
+  // README Eq. 17, 17a, 17b): the total force F = ΔA Σ p (N) is given and the approach w is the
+  // Lagrange multiplier of that constraint, w = the mean of s + u over the cells with 0 < p < H.
+  // The CG directions on the free set have zero sum (Eq. 17a), so the steps keep the force; a step
+  // that clips or releases cells is followed by the rescaling of the free cells to F (Eq. 17b).
+  // Stops by the rule of README Eq. 9 with g_ref = max_i (w − s_i) at the current w: the rule of a
+  // displacement-controlled solve at the returned approach (which would return this field at once).
+  // `pressure`: the warm start (empty or all zero: cold start) and the solution. `approach_hint`
+  // (m, optional), an estimate of w (e.g. the previous position's): the iteration then visits only
+  // the cells with s_i < w_L = hint + 0.2 (hint − min s) or p_i > 0 (Eq. 6a: only s_i < w can carry
+  // pressure; w_L is raised and the cells listed again whenever w passes it) with products on the
+  // box that holds them (Eq. 3c); a cold start with a hint starts from max(0, hint − s) scaled to F,
+  // without one from uniform pressure on every cell. No stiffness is computed (NaN; the options'
+  // compute_stiffness and coarse_start are not used). Throws std::invalid_argument for the periodic
+  // boundary, a size mismatch, F < 0 or not finite, hardness ≤ 0, or F > H ΔA nx ny.
+  ContactResult solve_at_force(const std::vector<double>& gap, double force, std::vector<double>& pressure,
+                               const SolverOptions& options = {},
+                               double approach_hint = std::numeric_limits<double>::quiet_NaN());
+
   // dp/dw on the frozen contact set from the last solve with stiffness (empty if none): the sweep
   // uses it to extrapolate the warm start to the next approach.
   const std::vector<double>& pressure_rate() const { return dp_; }
@@ -107,6 +127,11 @@ class ContactSolver {
                     const SolverOptions& options, ContactResult& result);
   std::unique_ptr<ContactSolver> coarse_;
   std::vector<double> coarse_gap_, coarse_pressure_;
+  // Load control (solve_at_force): products on the box of the listed cells; the listed cells L; a
+  // step's departures from −τ t (clipped, released, rescaled cells) and where they are.
+  std::unique_ptr<BoxProduct> box_;
+  std::vector<std::uint32_t> listed_, free_, touched_;
+  std::vector<double> delta_;
 };
 
 }  // namespace rollspec::contact

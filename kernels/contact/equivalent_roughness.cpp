@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 
 #include "kernels/contact/force_control.hpp"
@@ -64,10 +65,37 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   control.max_solves = path_options.max_solves;
   EquivalentRoughness out = empty_result(positions);
   std::vector<double> p;
-  const ContactResult smooth = solve_force(solver, flat.gap(0), load, p, options, control);
+  // ER-1 in load control (README Eq. 17): one solve per position, the approach its multiplier.
+  // A solve that does not converge is redone by the Newton of solve_force from the same start.
+  auto solve = [&](ContactSolver& s, const std::vector<double>& gap, std::vector<double>& field, double hint) {
+    std::vector<double> start = field;
+    ContactResult r = s.solve_at_force(gap, load, field, options, hint);
+    r.converged = r.converged && std::fabs(r.force - load) <= path_options.load_tolerance * load;
+    if (!r.converged) {
+      ForceControlOptions c = control;
+      c.start_approach = hint;
+      field = start;
+      const int first = r.iterations;
+      r = solve_force(s, gap, load, field, options, c);
+      r.iterations += first;
+    }
+    return r;
+  };
+  // ER-7: k at the found approach by a displacement solve from a copy of the field (the field itself
+  // stays the next position's warm start); that solve meets Eq. 9 at once (the same solution).
+  auto stiffness_at = [&](ContactSolver& s, const std::vector<double>& gap, double approach,
+                          const std::vector<double>& field) {
+    std::vector<double> copy = field;
+    SolverOptions o = options;
+    o.compute_stiffness = true;
+    return s.solve(gap, approach, copy, o).stiffness;
+  };
+  const std::size_t every = path_options.stiffness_every;
+  const ContactResult smooth = solve(solver, flat.gap(0), p, std::numeric_limits<double>::quiet_NaN());
   out.smooth_approach = smooth.approach;
   out.smooth_contact_area = smooth.contact_area;
-  out.smooth_stiffness = smooth.stiffness;
+  out.smooth_stiffness = every > 0 ? stiffness_at(solver, flat.gap(0), smooth.approach, p)
+                                   : std::numeric_limits<double>::quiet_NaN();
   out.iterations += smooth.iterations;
   out.converged = smooth.converged;
   if (smooth.approach > flat.limit(0)) flat.reject(0, smooth.approach, "flat strip: ");
@@ -76,16 +104,19 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   std::vector<ContactResult> results(positions.size());
   auto run_chunk = [&](ContactSolver& chunk_solver, std::size_t k0, std::size_t k1) {
     std::vector<double> field = p_smooth;
-    ForceControlOptions c = control;
     for (std::size_t k = k0; k < k1; ++k) {
+      double hint = out.smooth_approach;
       if (path_options.warm_start) {
-        // BF-6: previous field shifted with the ball; Newton from the previous δ_eq.
+        // BF-6: previous field shifted with the ball; the previous δ_eq lists the cells (Eq. 17).
         if (k > k0) window.shift_field(field, window.ball_shift(k));
-        c.start_approach = k > k0 ? results[k - 1].approach : out.smooth_approach;
+        if (k > k0) hint = results[k - 1].approach;
       } else {
         field.assign(chunk_solver.grid().size(), 0.0);
       }
-      results[k] = solve_force(chunk_solver, window.gap(k), load, field, options, c);
+      results[k] = solve(chunk_solver, window.gap(k), field, hint);
+      results[k].stiffness = every > 0 && k % every == 0
+                                 ? stiffness_at(chunk_solver, window.gap(k), results[k].approach, field)
+                                 : std::numeric_limits<double>::quiet_NaN();
     }
   };
   const std::size_t n = positions.size();

@@ -19,8 +19,10 @@
 // D-1, B15) exactly as the raw line h does.
 //
 // Fast path: the moving solver window of the blocked force (BF-5 confinement, checked at δ_eq),
-// each position's solve started from the previous field shifted with the ball (BF-6) and its
-// Newton on the approach from the previous δ_eq (force_control.hpp, start_approach).
+// each position one load-controlled solve (ContactSolver::solve_at_force, README Eq. 17: the
+// approach is the multiplier of ΔA Σ p = W, so ER-1 holds to rounding) started from the previous
+// field shifted with the ball (BF-6), its cells listed from the previous δ_eq. A solve that does not
+// converge is redone by the Newton on the approach of force_control.hpp from the same start.
 #include <cstddef>
 #include <vector>
 
@@ -33,13 +35,17 @@ namespace rollspec::contact {
 struct EquivalentRoughnessOptions {
   double centre_y = 0.0;          // y_c of the path in the strip grid (m)
   double load_tolerance = 1e-10;  // |P − W| ≤ load_tolerance · W at every position
-  int max_solves = 100;           // contact solves allowed per position
-  bool warm_start = true;         // BF-6 field + previous δ_eq; false: every position cold
+  int max_solves = 100;           // Newton's contact solves per position (reference, fast path's fallback)
+  bool warm_start = true;         // BF-6 field + previous δ_eq; false: every position cold (from δ_smooth's interference)
   // Chunks of this many positions (0: one chunk, the whole path in order). Each chunk starts from
   // the flat strip's field and δ_smooth, then warm-starts along itself; chunks run in parallel
   // (OpenMP, one solver per thread). The chunk boundaries are fixed by this number alone, so the
   // result has the same bits for any thread count (ER-1 is solved to the same tolerance either way).
   std::size_t chunk_positions = 0;
+  // k_eq (ER-7) at the positions k = 0, m, 2m, ... (and δ_smooth's k_s): a displacement solve at the
+  // found δ_eq with the frozen-set stiffness (Eq. 11, 13–15), which the load-controlled solve does not
+  // give; NaN elsewhere. 0: none. Their mean is all ER-7 needs, and one in 16 adds ~16 % to the cost.
+  std::size_t stiffness_every = 16;
 };
 
 struct EquivalentRoughness {
@@ -48,13 +54,16 @@ struct EquivalentRoughness {
   std::vector<double> height;        // h_eq(ξ_k) (m), ER-2
   std::vector<double> contact_area;  // real contact area at δ_eq (m²)
   std::vector<double> plastic_cells; // cells at the pressure cap at δ_eq
-  // k_eq(ξ_k) = dP/dδ at δ_eq (N/m): the solve's continuum-consistent stiffness (contact_solver.hpp,
-  // README Eq. 11, 13–15), ER-7.
+  // k_eq(ξ_k) = dP/dδ at δ_eq (N/m): the continuum-consistent stiffness (contact_solver.hpp, README
+  // Eq. 11, 13–15), ER-7; at the positions of `stiffness_every` (the reference: every position), NaN
+  // elsewhere.
   std::vector<double> stiffness;
   double smooth_approach = 0.0;      // δ_smooth (m)
   double smooth_stiffness = 0.0;     // k of the flat strip at W, the same discretisation (N/m)
   double smooth_contact_area = 0.0;  // contact area of the flat strip at W (m²)
-  int iterations = 0;                // CG iterations over all solves (coarse starts excluded)
+  // CG iterations: fast path, of every solve (with the flat one); reference, of each position's last
+  // Newton solve (solve_force returns the last solve); coarse starts excluded.
+  int iterations = 0;
   double max_error = 0.0;            // largest stopping-rule ε (README Eq. 9) of the returned solves
   bool converged = false;            // every position met the stopping rule and the load tolerance
 };

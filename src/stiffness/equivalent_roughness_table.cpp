@@ -28,8 +28,11 @@ namespace {
 // Positions per warm-started chunk: fixed, so the table has the same bits for any thread count
 // (EquivalentRoughnessOptions::chunk_positions).
 constexpr std::size_t kChunkPositions = 64;
-// Solves per position: the Newton on the approach from the previous delta_eq (ER-1), measured 3-4.
-constexpr double kSolvesPerPosition = 4.0;
+// CPU seconds per position: one load-controlled solve (contact README Eq. 17), measured on the
+// seed-002-like strip (bench_equivalent_roughness seed002, 144^2 window, 2 threads: 27 ms of CPU per
+// position, 33 CG iterations, products on a 128^2 box); scaled to other windows as the padded FFT
+// product, N log2 N with N = 4 window^2.
+constexpr double kSecondsPerPosition144 = 27e-3;
 
 std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& t) {
   return {&t.position, &t.height, &t.psd_wavenumber, &t.psd, &t.stiffness};
@@ -39,7 +42,8 @@ std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double ra
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
-     << "\nchunk_positions = " << kChunkPositions << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(strip_solver_options(s))) << "\n";
+     << "\nchunk_positions = " << kChunkPositions << "\nsolve = load control\noutputs = h_eq, k_eq\nload_tolerance = "
+     << num(strip_load_tolerance(strip_solver_options(s))) << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -76,8 +80,13 @@ std::string EquivalentRoughnessTable::checksum() const {
 
 double EquivalentRoughnessTable::stiffness_ratio() const {
   double sum = 0.0;
-  for (double k : stiffness) sum += k;
-  return stiffness.empty() || !(smooth_stiffness > 0.0) ? 1.0 : sum / static_cast<double>(stiffness.size()) / smooth_stiffness;
+  std::size_t n = 0;
+  for (double k : stiffness)
+    if (std::isfinite(k)) {  // the sampled positions (EquivalentRoughnessOptions::stiffness_every)
+      sum += k;
+      ++n;
+    }
+  return n == 0 || !(smooth_stiffness > 0.0) ? 1.0 : sum / static_cast<double>(n) / smooth_stiffness;
 }
 
 double EquivalentRoughnessTable::psd_at(double k) const {
@@ -85,11 +94,9 @@ double EquivalentRoughnessTable::psd_at(double k) const {
 }
 
 double equivalent_roughness_seconds(const Study& s, const BlockedForceGeometry& g) {
-  // As blocked_force_geometry: 21 ms per solve of a 256^2 FFT product (a 128 window).
-  const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
-  const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
-  return static_cast<double>(s.integer("equivalent_roughness.strips")) * static_cast<double>(g.positions) *
-         kSolvesPerPosition * per_solve;
+  const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window), n144 = 4.0 * 144.0 * 144.0;
+  const double per_position = kSecondsPerPosition144 * n2 * std::log2(n2) / (n144 * std::log2(n144));
+  return static_cast<double>(s.integer("equivalent_roughness.strips")) * static_cast<double>(g.positions) * per_position;
 }
 
 std::string equivalent_roughness_describe(const Study& s, const BlockedForceGeometry& g) {
@@ -129,7 +136,7 @@ void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
   w.write("/equivalent_roughness/psd", {psd.size()}, psd.data(), "m^3",
           "one-sided PSD of h_eq along the path (Welch per strip, mean over strips)");
   w.write("/equivalent_roughness/stiffness", {n_strips, position.size()}, stiffness.data(), "N/m",
-          "contact stiffness k_eq = dP/d delta at delta_eq (contact README ER-7), strip x position");
+          "contact stiffness k_eq = dP/d delta at delta_eq (contact README ER-7) at every 16th position (NaN between), strip x position");
   w.attribute("/equivalent_roughness", "smooth_approach", smooth_approach);
   w.attribute("/equivalent_roughness", "smooth_stiffness", smooth_stiffness);
   w.attribute("/equivalent_roughness", "load", load);

@@ -61,3 +61,50 @@ TEST_CASE("solve_force reports failure when the solve budget is too small") {
   const ContactResult r = solve_force(solver, gap, h.force(), p, {}, control);
   CHECK_FALSE(r.converged);
 }
+
+// Load control on the open half-space (README Eq. 17) against the Newton of solve_force (the
+// reference): the same discrete problem, both to the stopping rule 1e-10 and |P − F| ≤ 1e-10 F.
+TEST_CASE("solve_at_force: load control equals the Newton on the approach (Hertz, rough elastic-plastic)") {
+  const Hertz h;
+  SolverOptions opt;
+  opt.tolerance = 1e-10;
+  for (const bool rough : {false, true}) {
+    const Grid grid = h.grid(rough ? 10.0 : 16.0, 1.6);
+    const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid)
+                           : ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
+    SolverOptions o = opt;
+    if (rough) o.hardness = 0.5 * h.p0();
+    ContactSolver solver(grid, h.e_star);
+    std::vector<double> p_ref;
+    const ContactResult ref = solve_force(solver, gap, h.force(), p_ref, o);
+    REQUIRE(ref.converged);
+    // Cold without a hint (uniform start), cold from the interference at a hint 5 % off, and warm
+    // from the reference field with that hint.
+    for (int start = 0; start < 3; ++start) {
+      std::vector<double> p = start == 2 ? p_ref : std::vector<double>{};
+      const double hint = start == 0 ? std::nan("") : 1.05 * ref.approach;
+      const ContactResult r = solver.solve_at_force(gap, h.force(), p, o, hint);
+      REQUIRE(r.converged);
+      MESSAGE((rough ? "rough" : "Hertz") << " start " << start << ": " << r.iterations << " iterations, w − w_ref = "
+                                          << (r.approach - ref.approach) / h.approach << " δ_H, plastic cells "
+                                          << r.plastic_cells << " (reference " << ref.plastic_cells << ")");
+      CHECK(r.error < o.tolerance);
+      CHECK(std::fabs(r.force / h.force() - 1.0) <= 1e-13);  // the constraint holds to rounding
+      CHECK(std::fabs(r.approach - ref.approach) < 1e-8 * h.approach);
+      CHECK(r.contact_cells == ref.contact_cells);
+      CHECK(r.plastic_cells == ref.plastic_cells);
+      if (rough) CHECK(r.plastic_cells > 0);
+      // A displacement-controlled solve at the returned approach accepts the field as it is.
+      std::vector<double> q = p;
+      SolverOptions d = o;
+      d.compute_stiffness = false;
+      const ContactResult check = solver.solve(gap, r.approach, q, d);
+      CHECK(check.iterations == 0);
+    }
+  }
+  ContactSolver solver(h.grid(8.0, 1.4), h.e_star);
+  std::vector<double> p;
+  const auto gap = ball_gap(solver.grid(), h.radius, {}, BallShape::Paraboloid);
+  CHECK(solver.solve_at_force(gap, 0.0, p).force == 0.0);
+  CHECK_THROWS_AS(solver.solve_at_force(gap, -1.0, p), std::invalid_argument);
+}
