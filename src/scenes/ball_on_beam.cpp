@@ -263,24 +263,31 @@ class BallOnBeam final : public Scene {
   // filter = solver: the line is synthesised from the strip-mean PSD of h_eq (ER-2), band-limited
   // (B40), no patch average and so no B40a compensation. Below the table's third bin k1 (bins 1 and
   // 2 of a Hann segment hold the leakage of waves longer than the segment, as for the blocked force)
-  // the texture times the filter's leading order: the transfer is even and smooth in k with value 1
-  // at k = 0 (h_eq -> h, ER-3: sinc^2(ka) = 1 - (ka)^2 / 3 + ...), so G_raw(k) (1 + (rho1 - 1) (k/k1)^2),
-  // rho1 = G_table(k1) / G_raw(k1), meets the table at k1.
+  // the line takes the first-order theory's shape, G_eq of ER-5 (iso2d, Eq. 38), times an even factor
+  // that is 1 at k = 0 and meets the table at k1: G_eq(k) (1 + (rho1 - 1) (k/k1)^2), rho1 =
+  // G_table(k1) / G_eq(k1). At long waves h_eq is the flat-punch average of ER-3 exactly, which on an
+  // isotropic surface also averages the roughness across the path (G_eq(0) < G(0) where the surface
+  // has power at wavelengths below 2a). A PSD without an isotropic form falls back to the raw line
+  // G_raw (h_eq -> h, as for corrugation uniform across the path).
   void use_equivalent_roughness(const stiffness::EquivalentRoughnessTable& t, const std::string& status, bool quiet) {
     if (!quiet)
       std::fprintf(stderr, "equivalent roughness table: %s (%g strips x %zu positions, delta_smooth = %.4g m)\n",
                    status.c_str(), t.strips, t.position.size(), t.smooth_approach);
     auto table = std::make_shared<const stiffness::EquivalentRoughnessTable>(t);
-    const texture::Psd raw = b_.texture_psd;
+    texture::Psd low = b_.texture_psd;
+    try {
+      low = iso2d_line_psd(b_);
+    } catch (const std::exception&) {  // no isotropic form: the raw line's shape
+    }
     const std::size_t anchor = std::min<std::size_t>(3, t.psd_wavenumber.size() - 1);
     const double k1 = t.psd_wavenumber.size() > 1 ? t.psd_wavenumber[anchor] : 0.0;
     texture::Psd p;
-    p.density = [table, raw, k1](double k) {
+    p.density = [table, low, k1](double k) {
       if (k >= k1 || !(k > 0.0)) return table->psd_at(k);
-      const double g1 = raw(k1);
+      const double g1 = low(k1);
       if (!(g1 > 0.0)) return table->psd_at(k);
       const double r = k / k1;
-      return raw(k) * (1.0 + (table->psd_at(k1) / g1 - 1.0) * r * r);
+      return low(k) * (1.0 + (table->psd_at(k1) / g1 - 1.0) * r * r);
     };
     p.support_min = b_.texture_psd.support_min;
     p.support_max = t.psd_wavenumber.empty() ? 0.0 : t.psd_wavenumber.back();

@@ -52,7 +52,7 @@ def test_runs_is_cached_and_filters_below_the_patch_scale(tmp_path):
 
     with h5py.File(out) as f:
         g = f["/roughness"]
-        k, raw, solver = g["wavenumber"][:], g["psd_raw"][:], g["psd_solver"][:]
+        k, raw, solver, iso = g["wavenumber"][:], g["psd_raw"][:], g["psd_solver"][:], g["psd_iso2d"][:]
         assert g.attrs["filter"] in (b"solver", "solver")
     ka = k * hertz_radius()
     # ER-3: h_eq averages the roughness over the patch; where ka > 1.5 it carries less than the raw line
@@ -60,9 +60,11 @@ def test_runs_is_cached_and_filters_below_the_patch_scale(tmp_path):
     high = (ka > 1.5) & (raw > 0.0)  # the texture ends at 24 um, the line at its Nyquist wavenumber
     assert np.all(solver[high] < raw[high]), (ka[high][solver[high] >= raw[high]])
     assert np.any(solver[high] > 0.0)
-    # Long waves pass: h_eq follows h as ka -> 0 (ER-3; below the table's third bin the texture times
-    # the filter's leading order 1 - c k^2).
+    # Long waves: h_eq is the flat-punch average of ER-3, whose path PSD is G_eq (ER-5); below the
+    # table's third bin the line follows G_eq's shape. The rig's waviness has its power at wavelengths
+    # far above 2a, so there G_eq, and the line, keep the raw PSD.
     low = ka < 0.2
+    assert np.all(np.abs(10 * np.log10(solver[low] / iso[low])) < 0.5)
     assert np.all(np.abs(10 * np.log10(solver[low] / raw[low])) < 0.5)
 
     p2, _ = rig(tmp_path, *SOLVER, command="plan")
