@@ -25,24 +25,6 @@ std::size_t output_samples(const BallOnBeamModel& m) {
 
 namespace detail {
 
-void roughness_at(const Realisation& r, double x, double& h, double& dh) {
-  if (r.roughness.empty()) {
-    h = dh = 0.0;
-    return;
-  }
-  r.roughness.evaluate(x, h, dh);
-}
-
-double blocked_force_at(const BallOnBeamModel& m, const Realisation& r, double t) {
-  if (r.blocked_force.empty()) return m.ball.mass * m.ball.gravity;
-  return r.blocked_force.value(t);
-}
-
-double law_argument(const BallOnBeamModel& m, const ContactModel& contact, const Realisation& r, double t, double x) {
-  if (contact.linearised()) return blocked_force_at(m, r, t);
-  return contact.path() ? x : 0.0;
-}
-
 InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& contact, const Realisation& r) {
   const ModalBeam& b = m.beam;
   const int n = b.modes();
