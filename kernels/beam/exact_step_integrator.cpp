@@ -296,12 +296,14 @@ void ExactStepIntegrator::run_reference(const Realisation& r, BallOnBeamResult& 
 // with P, Q from the coefficients of both steps (lanes()). The bracket waits for no contact solve,
 // and the sums sum phi(xi_{k+2}) qf' that the next solve needs are the bracket's sum plus
 // F_{k+1} times a per-step number (fold()): the chain from one contact force to the next is a
-// few scalar operations, not a sum over the modes.
+// few scalar operations, not a sum over the modes. One pass over the modes per step, after the
+// solve: this step's free part, its output (every substeps-th step) and the next step's bracket.
 struct ExactStepIntegrator::LoopState {
   const Realisation* r;
   BallOnBeamResult* out;
   const PatchAverager* averager;
-  std::vector<double> qf, vf, gm, x, y, u, phi_a, phi_b, slope;  // padded
+  std::vector<double> x, y, u, zeros;  // padded: the bracket of the coming step, outputs, zero slopes
+  std::vector<double> ring;            // shapes evaluated on the fly: 3 positions x (phi, slope), padded
   double w2, u2, f, f_prev, delta_last;
   long lost = 0;
 };
@@ -314,11 +316,10 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
   detail::resize_result(model_, samples_, out);
   const detail::InitialState init = detail::static_initial_state(model_, contact_, r);
   LoopState st;
-  for (auto* vec : {&st.qf, &st.vf, &st.gm, &st.x, &st.y, &st.u, &st.phi_a, &st.phi_b, &st.slope})
-    vec->assign(np, 0.0);
+  for (auto* vec : {&st.x, &st.y, &st.u, &st.zeros}) vec->assign(np, 0.0);
   // The start state as a "free part" with no end force of a previous step (lanes_[0]: b1' = c1' = 0).
-  std::copy(init.y.begin(), init.y.begin() + n, st.qf.begin());
-  std::copy(init.y.begin() + n, init.y.begin() + 2 * n, st.vf.begin());
+  const double* q0 = init.y.data();
+  const double* dq0 = init.y.data() + n;
   st.w2 = init.y[2 * n];
   st.u2 = init.y[2 * n + 1];
   st.f = st.f_prev = init.force;
@@ -330,8 +331,9 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
   st.averager = averager.get();
   const double* phi = phi_table_.data();
   if (phi_table_.empty()) {
-    b.shapes(model_.traverse.x_start, st.phi_a.data(), st.slope.data());
-    phi = st.phi_a.data();
+    st.ring.assign(6 * static_cast<std::size_t>(np), 0.0);
+    b.shapes(model_.traverse.x_start, st.ring.data(), st.ring.data() + np);
+    phi = st.ring.data();
   }
   {  // sample 0, as run_reference records it
     const double m = b.modal_mass(), f = st.f;
@@ -341,14 +343,14 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     if (patch)  // as in the initial state: the width under the weight
       averager->evaluate(model_.traverse.x_start,
                          std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, f0), 0.0)), h0, dh0);
-    for (int i = 0; i < n; ++i) w1 += phi[i] * st.qf[i];
+    for (int i = 0; i < n; ++i) w1 += phi[i] * q0[i];
     const double delta = w1 + h0 - st.w2;
     for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
       const double* ps = sensor_phi_.data() + s * np;
       double a = 0.0;
       for (int i = 0; i < n; ++i) {  // exact q_n'' from (D-9)
         const double w = b.omega(i);
-        a += ps[i] * (-phi[i] * f / m - 2.0 * b.zeta(i) * w * st.vf[i] - w * w * st.qf[i]);
+        a += ps[i] * (-phi[i] * f / m - 2.0 * b.zeta(i) * w * dq0[i] - w * w * q0[i]);
       }
       out.sensor_acceleration[s][0] = a;
     }
@@ -361,7 +363,13 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     out.loss_of_contact[0] = contact_.evaluate(delta, 0.0, f0).contact ? 0 : 1;
     st.delta_last = delta;
   }
-  steps(st);
+  // The first step's bracket (B26a) from the start state (gm = 0).
+  const ModeLanes& l0 = lanes_[0];
+  for (int i = 0; i < n; ++i) {
+    st.x[i] = l0.a00[i] * q0[i] + l0.a01[i] * dq0[i] + l0.bm[i] * 0.0;
+    st.y[i] = l0.a10[i] * q0[i] + l0.a11[i] * dq0[i] + l0.cm[i] * 0.0;
+  }
+  if (steps_ > 0) steps(st);
   out.steps = steps_;
   out.loss_of_contact_share = steps_ > 0 ? static_cast<double>(st.lost) / static_cast<double>(steps_) : 0.0;
 }
@@ -385,12 +393,11 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
   const Realisation& r = *st.r;
   BallOnBeamResult& out = *st.out;
   const bool table = !phi_table_.empty();
-  double* __restrict qf = st.qf.data();
-  double* __restrict vf = st.vf.data();
-  double* __restrict gm = st.gm.data();
   double* __restrict x = st.x.data();
   double* __restrict y = st.y.data();
   double* __restrict u = st.u.data();
+  const double* __restrict zeta_omega2 = zeta_omega2_.data();
+  const double* __restrict omega2 = omega2_.data();
   double f = st.f, f_prev = st.f_prev, delta_last = st.delta_last;
   // The ball (B24, B37) with 1/m2 in its coefficients, and, as for the modes (B26a), its free end
   // values w2f = wb + kw F_k, u2f = ub + ku F_k split into what is known before F_k and F_k's share.
@@ -404,46 +411,51 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
   const double c2 = g * h * h / 2.0, gh = g * h;
   double wb = st.w2 + st.u2 * h - c2 + ball_first.am * f_prev, ub = st.u2 - gh + ball_first.um * f_prev;
   double kw = ball_first.a0, ku = ball_first.u0;
+  // Shapes and slopes at step position j: the tables, or a ring of three evaluated on the fly.
+  auto phi_at = [&](long j) -> const double* {
+    return table ? phi_table_.data() + j * np : st.ring.data() + (j % 3) * 2 * np;
+  };
+  auto slope_at = [&](long j) -> const double* {
+    if (table) return total_rate_ ? slope_table_.data() + j * np : st.zeros.data();
+    return st.ring.data() + ((j % 3) * 2 + 1) * np;
+  };
+  auto evaluate_shapes = [&](long j) {
+    if (!table) b.shapes(position(j), st.ring.data() + (j % 3) * 2 * np, st.ring.data() + ((j % 3) * 2 + 1) * np);
+  };
+  evaluate_shapes(1);
+  // The sums of the first step's bracket (then each step's, from the pass after its previous solve).
+  double xsum = 0.0, ysum = 0.0, ssum = 0.0;
+  {
+    const double* p1 = phi_at(1);
+    const double* s1 = slope_at(1);
+    Lanes sw = {0.0, 0.0, 0.0, 0.0}, sv = sw, ss = sw;
+    for (int i = 0; i < np; i += 4) {
+      Lanes pi, si, xi, yi;
+      load(pi, p1 + i), load(si, s1 + i), load(xi, x + i), load(yi, y + i);
+      sw += pi * xi;
+      sv += pi * yi;
+      ss += si * xi;
+    }
+    xsum = lane_sum(sw), ysum = lane_sum(sv), ssum = lane_sum(ss);
+  }
   long lost = 0;
   int sub = 0;  // steps since the last output sample
-  const double* phi0 = table ? phi_table_.data() : st.phi_a.data();
   for (long k = 0; k < steps_; ++k) {
     // The first step of a quadratic hold has no previous value: it is linear.
     const bool first = hold_ == ForceHold::quadratic && k == 0;
     const ModeLanes& l = lanes_of_step(k);
     const BallStep& bk = k == 0 ? ball_first : ball_next;
     const long k1 = k + 1;
-    const double *phi1, *slope1 = st.slope.data();  // zeros in a table without slopes
+    const double* phi0 = phi_at(k);
+    const double* phi1 = phi_at(k1);
+    const double* slope1 = slope_at(k1);
     double fw, fv, fs;
     if (table) {
-      phi1 = phi_table_.data() + k1 * np;
-      if (total_rate_) slope1 = slope_table_.data() + k1 * np;
       fw = fold_w_[k];
       fv = fold_v_[k];
       fs = fold_s_[k];
     } else {
-      double* next = phi0 == st.phi_a.data() ? st.phi_b.data() : st.phi_a.data();
-      b.shapes(position(k1), next, st.slope.data());
-      phi1 = next;
       fold(k, phi0, phi1, slope1, fw, fv, fs);
-    }
-    // Free part without the start force (B26a), then the sums the contact solve needs.
-    Lanes sw = {0.0, 0.0, 0.0, 0.0}, sv = sw, ss = sw;
-    for (int i = 0; i < np; i += 4) {
-      Lanes a00, a01, bm, a10, a11, cm, q, dq, gg, p1;
-      load(a00, l.a00.data() + i), load(a01, l.a01.data() + i), load(bm, l.bm.data() + i);
-      load(a10, l.a10.data() + i), load(a11, l.a11.data() + i), load(cm, l.cm.data() + i);
-      load(q, qf + i), load(dq, vf + i), load(gg, gm + i), load(p1, phi1 + i);
-      const Lanes xi = a00 * q + a01 * dq + bm * gg, yi = a10 * q + a11 * dq + cm * gg;
-      store(x + i, xi);
-      store(y + i, yi);
-      sw += p1 * xi;
-      sv += p1 * yi;
-      if (total_rate_) {
-        Lanes s1;
-        load(s1, slope1 + i);
-        ss += s1 * xi;
-      }
     }
     const double x1 = position(k1), t1 = static_cast<double>(k1) * h;
     double h1, dh1;
@@ -456,10 +468,10 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
     if (first) compliance(phi1, slope1, residual_[k1], first_, ball_first_, comp, d, conv);
     // delta_free = wf + h - w2f and rate_free = vfree - u2f (+ v (sf + h'), B20), each as what is
     // known before F_k plus F_k's share: two operations between F_k and the contact solve.
-    double delta_base = (lane_sum(sw) + h1) - wb, delta_coef = fw - kw;
-    double rate_base = lane_sum(sv) - ub, rate_coef = fv - ku;
+    const double delta_base = (xsum + h1) - wb, delta_coef = fw - kw;
+    double rate_base = ysum - ub, rate_coef = fv - ku;
     if (total_rate_) {  // (B20)
-      rate_base += v * (lane_sum(ss) + dh1);
+      rate_base += v * (ssum + dh1);
       rate_coef += v * fs;
       d += conv;
     }
@@ -467,16 +479,40 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
                                                    comp, d, f0, 2.0 * f - f_prev, weight, tol_);
     const double f1 = cs.force;
     const double w2f = wb + kw * f, u2f = ub + ku * f;
-    // The step's free part with its start force: the state the next step starts from (B26a).
-    const double s0 = -f / m;
+    const bool record = ++sub == substeps_;
+    const bool more = k1 < steps_;
+    if (more) evaluate_shapes(k1 + 1);
+    // One pass over the modes: this step's free part with its start force (B26a); at an output
+    // step its end state q = qf + b1 g1 and q'' from (D-9) (B26); the next step's bracket and sums.
+    const ModeLanes& ln = lanes_of_step(k1);
+    const double* phi2 = more ? phi_at(k1 + 1) : st.zeros.data();
+    const double* slope2 = more ? slope_at(k1 + 1) : st.zeros.data();
+    const double s0 = -f / m, s1 = -f1 / m;
+    Lanes sw = {0.0, 0.0, 0.0, 0.0}, sv = sw, ss = sw;
     for (int i = 0; i < np; i += 4) {
       Lanes p0, xi, yi, p, q;
       load(p0, phi0 + i), load(xi, x + i), load(yi, y + i), load(p, l.p.data() + i), load(q, l.q.data() + i);
       const Lanes g0 = p0 * s0;
-      store(qf + i, xi + p * g0);
-      store(vf + i, yi + q * g0);
-      store(gm + i, g0);
+      const Lanes qf = xi + p * g0, vf = yi + q * g0;
+      if (record) {
+        Lanes p1, b1, c1, zo, o2;
+        load(p1, phi1 + i), load(b1, l.b1.data() + i), load(c1, l.c1.data() + i);
+        load(zo, zeta_omega2 + i), load(o2, omega2 + i);
+        const Lanes g1 = p1 * s1, qe = qf + b1 * g1, ve = vf + c1 * g1;
+        store(u + i, g1 - zo * ve - o2 * qe);
+      }
+      Lanes a00, a01, bm, a10, a11, cm, p2, sl2;
+      load(a00, ln.a00.data() + i), load(a01, ln.a01.data() + i), load(bm, ln.bm.data() + i);
+      load(a10, ln.a10.data() + i), load(a11, ln.a11.data() + i), load(cm, ln.cm.data() + i);
+      load(p2, phi2 + i), load(sl2, slope2 + i);
+      const Lanes xn = a00 * qf + a01 * vf + bm * g0, yn = a10 * qf + a11 * vf + cm * g0;
+      store(x + i, xn);
+      store(y + i, yn);
+      sw += p2 * xn;
+      sv += p2 * yn;
+      ss += sl2 * xn;
     }
+    xsum = lane_sum(sw), ysum = lane_sum(sv), ssum = lane_sum(ss);
     // The next step's ball: w2f' = [w2f + u2f h - c2 + am' F_k] + F_{k+1} (a1 + u1 h + a0'),
     // u2f' = [u2f - g h + um' F_k] + F_{k+1} (u1 + u0').
     wb = w2f + u2f * h - c2 + ball_next.am * f;
@@ -487,19 +523,9 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
     f = f1;
     delta_last = cs.delta;
     if (!cs.contact) ++lost;
-    if (++sub == substeps_) {  // (B26) at the step end: q = qf + b1 g1, q'' from (D-9)
+    if (record) {
       sub = 0;
       const std::size_t j = static_cast<std::size_t>(k1 / substeps_);
-      const double s1 = -f1 / m;
-      for (int i = 0; i < np; i += 4) {
-        Lanes p1, q, dq, b1, c1, zo, o2;
-        load(p1, phi1 + i), load(q, qf + i), load(dq, vf + i), load(b1, l.b1.data() + i), load(c1, l.c1.data() + i);
-        load(zo, zeta_omega2_.data() + i), load(o2, omega2_.data() + i);
-        const Lanes g1 = p1 * s1;
-        q += b1 * g1;
-        dq += c1 * g1;
-        store(u + i, g1 - zo * dq - o2 * q);
-      }
       for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
         const double* ps = sensor_phi_.data() + s * np;
         Lanes a = {0.0, 0.0, 0.0, 0.0};
@@ -519,7 +545,6 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
       out.contact_position[j] = x1;
       out.loss_of_contact[j] = cs.contact ? 0 : 1;
     }
-    phi0 = phi1;
   }
   st.lost = lost;
 }
