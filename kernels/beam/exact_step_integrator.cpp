@@ -501,16 +501,20 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
         const Lanes g1 = p1 * s1, qe = qf + b1 * g1, ve = vf + c1 * g1;
         store(u + i, g1 - zo * ve - o2 * qe);
       }
-      Lanes a00, a01, bm, a10, a11, cm, p2, sl2;
+      Lanes a00, a01, bm, a10, a11, cm, p2;
       load(a00, ln.a00.data() + i), load(a01, ln.a01.data() + i), load(bm, ln.bm.data() + i);
       load(a10, ln.a10.data() + i), load(a11, ln.a11.data() + i), load(cm, ln.cm.data() + i);
-      load(p2, phi2 + i), load(sl2, slope2 + i);
+      load(p2, phi2 + i);
       const Lanes xn = a00 * qf + a01 * vf + bm * g0, yn = a10 * qf + a11 * vf + cm * g0;
       store(x + i, xn);
       store(y + i, yn);
       sw += p2 * xn;
       sv += p2 * yn;
-      ss += sl2 * xn;
+      if (total_rate_) {
+        Lanes sl2;
+        load(sl2, slope2 + i);
+        ss += sl2 * xn;
+      }
     }
     xsum = lane_sum(sw), ysum = lane_sum(sv), ssum = lane_sum(ss);
     // The next step's ball: w2f' = [w2f + u2f h - c2 + am' F_k] + F_{k+1} (a1 + u1 h + a0'),
