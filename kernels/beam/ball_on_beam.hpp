@@ -101,7 +101,9 @@ inline double law_argument(const BallOnBeamModel& m, const ContactModel& contact
   if (contact.linearised()) return blocked_force_at(m, r, t);
   return contact.path() ? x : 0.0;
 }
-void resize_result(const BallOnBeamModel& model, std::size_t samples, BallOnBeamResult& out);
+// Output arrays of `samples` entries, zeroed; clear = false keeps what a previous realisation left
+// (for an integrator that writes every sample).
+void resize_result(const BallOnBeamModel& model, std::size_t samples, BallOnBeamResult& out, bool clear = true);
 }  // namespace detail
 
 }  // namespace rollspec::beam

@@ -313,7 +313,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
   const int n = b.modes(), np = padded_;
   const double m2 = model_.ball.mass, g = model_.ball.gravity;
   const double weight = m2 * g;
-  detail::resize_result(model_, samples_, out);
+  detail::resize_result(model_, samples_, out, false);  // every sample is written below
   const detail::InitialState init = detail::static_initial_state(model_, contact_, r);
   LoopState st;
   for (auto* vec : {&st.x, &st.y, &st.u, &st.zeros}) vec->assign(np, 0.0);
