@@ -150,14 +150,8 @@ std::vector<double> welch_block_dof(const WelchPlan& plan, std::size_t n, const 
       }
     }
   std::vector<double> dof(bins, 0.0);
-  // Bins are independent: each is computed by the same operations on any thread.
-  const auto nbins = static_cast<std::ptrdiff_t>(bins);
-#pragma omp parallel
-  {
   std::vector<std::complex<double>> c(pairs);
-#pragma omp for schedule(static)
-  for (std::ptrdiff_t kk = 0; kk < nbins; ++kk) {
-    const auto k = static_cast<std::size_t>(kk);
+  for (std::size_t k = 0; k < bins; ++k) {
     double mean = 0.0, var = 0.0;
     std::size_t i = 0;
     while (i < terms.size()) {  // one (a, m) at a time
@@ -179,7 +173,6 @@ std::vector<double> welch_block_dof(const WelchPlan& plan, std::size_t n, const 
     }
     // E = mean / (nb channels), Var = var / (nb channels)^2: nu = 2 E^2 / Var = 2 mean^2 / var.
     dof[k] = var > 0.0 ? 2.0 * mean * mean / var : 0.0;
-  }
   }
   return dof;
 }
