@@ -116,7 +116,7 @@ double seconds(F&& f, int repeats) {
 int main(int argc, char** argv) {
   const std::string only = argc > 1 ? argv[1] : "";
   auto want = [&](const char* name) { return only.empty() || only == name; };
-  // Optional argument: work, work_bandlimited, realisation, ensemble, linear_mc.
+  // Optional argument: work, work_bandlimited, realisation, step, ensemble, linear_mc.
   const double fs = 12800.0;
   BallOnBeamModel m = rig(1.0, fs);
   spectral::WelchConfig wc;
@@ -195,6 +195,43 @@ int main(int argc, char** argv) {
     std::printf("%s,%d,%.4e,%.3f,%.3f,%.3f,%.3f,%.1f\n", hold == ForceHold::linear ? "linear" : "quadratic", s, integ.step(), 1e3 * ts, 1e3 * ti, 1e3 * tw, 1e3 * tot, 1.0 / tot);
   }
 
+  }
+
+  // 2b. The exact step as run() takes it (B26a: reordered, four modes per SIMD lane group) against
+  //     run_reference() (the step as B23-B26 write it), interleaved in one run: seed-002 rig at
+  //     25.6 kHz, 4 substeps, quadratic hold, Hertz and linearised (blocked force F0 = W + k0 h) laws.
+  if (want("step")) {
+  std::printf("# step: run() vs run_reference(), one core, best of 7 interleaved\n");
+  std::printf("law,steps,reference_ms,run_ms,reference_over_run\n");
+  for (const bool lin : {false, true}) {
+    BallOnBeamModel sm = rig(1.0, 25600.0);
+    if (lin) {
+      sm.contact.kind = ContactLawKind::linearised;
+      sm.contact.k0 = 6.8e6;
+    }
+    ExactStepOptions o;
+    o.substeps = 4;
+    o.hold = ForceHold::quadratic;
+    const ExactStepIntegrator integ(sm, o);
+    Realisation rr;
+    rr.roughness = src.realise(7, u);
+    if (lin) {  // F0(t) = W + k0 h(x_start + v t) on the line's own samples (D-11)
+      const double v = sm.traverse.speed, x0 = sm.traverse.x_start, dx = rr.roughness.step;
+      const auto first = static_cast<std::size_t>(std::ceil(x0 / dx));
+      rr.blocked_force.origin = (static_cast<double>(first) * dx - x0) / v;
+      rr.blocked_force.step = dx / v;
+      for (std::size_t i = first; i < rr.roughness.values.size(); ++i)
+        rr.blocked_force.values.push_back(sm.ball.mass * sm.ball.gravity + sm.contact.k0 * rr.roughness.values[i]);
+      rr.roughness = UniformSamples{};
+    }
+    BallOnBeamResult res;
+    double tr = 1e30, tf = 1e30;
+    for (int i = 0; i < 7; ++i) {
+      tr = std::min(tr, seconds([&] { integ.run_reference(rr, res); }, 1));
+      tf = std::min(tf, seconds([&] { integ.run(rr, res); }, 1));
+    }
+    std::printf("%s,%ld,%.3f,%.3f,%.2f\n", lin ? "linearised" : "hertz", integ.steps(), 1e3 * tr, 1e3 * tf, tr / tf);
+  }
   }
 
   // 3. Small ensemble (near-linear regime): exact-step (4, 8, 16 substeps) vs DOPRI5 (rtol 1e-9)

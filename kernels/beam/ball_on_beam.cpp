@@ -25,24 +25,6 @@ std::size_t output_samples(const BallOnBeamModel& m) {
 
 namespace detail {
 
-void roughness_at(const Realisation& r, double x, double& h, double& dh) {
-  if (r.roughness.empty()) {
-    h = dh = 0.0;
-    return;
-  }
-  r.roughness.evaluate(x, h, dh);
-}
-
-double blocked_force_at(const BallOnBeamModel& m, const Realisation& r, double t) {
-  if (r.blocked_force.empty()) return m.ball.mass * m.ball.gravity;
-  return r.blocked_force.value(t);
-}
-
-double law_argument(const BallOnBeamModel& m, const ContactModel& contact, const Realisation& r, double t, double x) {
-  if (contact.linearised()) return blocked_force_at(m, r, t);
-  return contact.path() ? x : 0.0;
-}
-
 InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& contact, const Realisation& r) {
   const ModalBeam& b = m.beam;
   const int n = b.modes();
@@ -102,17 +84,21 @@ InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& 
   return s;
 }
 
-void resize_result(const BallOnBeamModel& m, std::size_t ns, BallOnBeamResult& out) {
+void resize_result(const BallOnBeamModel& m, std::size_t ns, BallOnBeamResult& out, bool clear) {
   out.sample_rate = m.sample_rate;
   out.sensor_acceleration.resize(m.sensors.size());
-  for (auto& a : out.sensor_acceleration) a.assign(ns, 0.0);
-  out.contact_force.assign(ns, 0.0);
-  out.ball_acceleration.assign(ns, 0.0);
-  out.compression.assign(ns, 0.0);
-  out.contact_deflection.assign(ns, 0.0);
-  out.ball_displacement.assign(ns, 0.0);
-  out.contact_position.assign(ns, 0.0);
-  out.loss_of_contact.assign(ns, 0);
+  auto size = [&](auto& v) {
+    if (clear) v.assign(ns, 0);
+    else v.resize(ns);
+  };
+  for (auto& a : out.sensor_acceleration) size(a);
+  size(out.contact_force);
+  size(out.ball_acceleration);
+  size(out.compression);
+  size(out.contact_deflection);
+  size(out.ball_displacement);
+  size(out.contact_position);
+  size(out.loss_of_contact);
   out.loss_of_contact_share = 0.0;
   out.steps = out.rejected_steps = 0;
 }

@@ -83,11 +83,27 @@ struct InitialState {
   double force;
 };
 InitialState static_initial_state(const BallOnBeamModel& model, const ContactModel& contact, const Realisation& r);
-void roughness_at(const Realisation& r, double x, double& h, double& dh);
-double blocked_force_at(const BallOnBeamModel& model, const Realisation& r, double t);
+// Inline: the exact-step integrator reads them once per step (a call would spill its registers).
+inline void roughness_at(const Realisation& r, double x, double& h, double& dh) {
+  if (r.roughness.empty()) {
+    h = dh = 0.0;
+    return;
+  }
+  r.roughness.evaluate(x, h, dh);
+}
+inline double blocked_force_at(const BallOnBeamModel& m, const Realisation& r, double t) {
+  if (r.blocked_force.empty()) return m.ball.mass * m.ball.gravity;
+  return r.blocked_force.value(t);
+}
 // The contact law's third argument at time t, position x: F0(t) (linearised), x (path, B46), else 0.
-double law_argument(const BallOnBeamModel& model, const ContactModel& contact, const Realisation& r, double t, double x);
-void resize_result(const BallOnBeamModel& model, std::size_t samples, BallOnBeamResult& out);
+inline double law_argument(const BallOnBeamModel& m, const ContactModel& contact, const Realisation& r, double t,
+                           double x) {
+  if (contact.linearised()) return blocked_force_at(m, r, t);
+  return contact.path() ? x : 0.0;
+}
+// Output arrays of `samples` entries, zeroed; clear = false keeps what a previous realisation left
+// (for an integrator that writes every sample).
+void resize_result(const BallOnBeamModel& model, std::size_t samples, BallOnBeamResult& out, bool clear = true);
 }  // namespace detail
 
 }  // namespace rollspec::beam

@@ -24,7 +24,7 @@ UniformSamples contact_patch_average(const UniformSamples& h, double a) {
     return s[i] + t * h.values[i] + 0.5 * t * t * (h.values[i + 1] - h.values[i]);
   };
   const double w = a / h.step;
-  UniformSamples out = h;
+  UniformSamples out{h.origin, h.step, std::vector<double>(n)};
   for (std::size_t j = 0; j < n; ++j) {
     const double u = static_cast<double>(j);
     const double lo = std::max(u - w, 0.0), hi = std::min(u + w, last);

@@ -6,23 +6,11 @@
 
 namespace rollspec::beam {
 
-ContactSolution solve_contact_force(const ContactModel& model, double delta_free, double rate_free, double compliance,
-                                    double rate_compliance, double f0, double guess, double force_scale,
-                                    double tolerance) {
+ContactSolution solve_contact_force_iterative(const ContactModel& model, double delta_free, double rate_free,
+                                              double compliance, double rate_compliance, double f0, double guess,
+                                              double force_scale, double tolerance) {
   auto at = [&](double f) { return model.evaluate(delta_free - compliance * f, rate_free - rate_compliance * f, f0); };
   const bool tension = model.linearised() && model.law().allow_tension;
-  if (model.linearised()) {
-    // (B21a) The linearised law is affine while the spring carries and the total pushes, so its root
-    // is closed-form: F = (f0 + k0 (delta_free + d0) + c rate_free) / (1 + k0 C + c D). Accepted when
-    // that branch holds at F (or tension is allowed); otherwise the safeguarded iteration below
-    // finds the root on the loss-of-contact branches.
-    const ContactLaw& l = model.law();
-    const double fl = (f0 + l.k0 * (delta_free + l.d0) + l.damping * rate_free) /
-                      (1.0 + l.k0 * compliance + l.damping * rate_compliance);
-    const double d = delta_free - compliance * fl;
-    if (tension || (fl > 0.0 && model.in_contact(d, f0)))
-      return {fl, d, rate_free - rate_compliance * fl, model.in_contact(d, f0), 0};
-  }
   ContactForce c0 = at(0.0);
   if (!tension && c0.force <= 0.0) return {0.0, delta_free, rate_free, c0.contact, 0};
   double lo = tension ? -std::numeric_limits<double>::infinity() : 0.0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 
@@ -9,6 +10,32 @@
 #include "kernels/beam/contact_solve.hpp"
 
 namespace rollspec::beam {
+
+namespace {
+// Modes n, n+1, n+2, n+3 as one value (padded to a multiple of 4 with zero modes): GCC's vector
+// extension gives AVX2 registers in the AVX2 build of the step loop and pairs of SSE2 registers
+// in the plain one, the same element-wise operations (no FMA) and so the same bits. Sums over
+// the modes run in the four lanes (n mod 4), combined as (l0 + l2) + (l1 + l3): one order for
+// every build, and four short dependency chains instead of one. Passed by reference only (a
+// by-value 32-byte vector changes the ABI).
+using Lanes = double __attribute__((vector_size(32)));
+
+__attribute__((always_inline)) inline void load(Lanes& v, const double* p) { std::memcpy(&v, p, sizeof v); }
+__attribute__((always_inline)) inline void store(double* p, const Lanes& v) { std::memcpy(p, &v, sizeof v); }
+__attribute__((always_inline)) inline double lane_sum(const Lanes& v) { return (v[0] + v[2]) + (v[1] + v[3]); }
+
+// sum_n a_n (b_n c_n) in the same lanes and order as the step loop's sums.
+inline double lane_dot3(const double* a, const double* b, const double* c, int np) {
+  double l0 = 0.0, l1 = 0.0, l2 = 0.0, l3 = 0.0;
+  for (int i = 0; i < np; i += 4) {
+    l0 += a[i] * (b[i] * c[i]);
+    l1 += a[i + 1] * (b[i + 1] * c[i + 1]);
+    l2 += a[i + 2] * (b[i + 2] * c[i + 2]);
+    l3 += a[i + 3] * (b[i + 3] * c[i + 3]);
+  }
+  return (l0 + l2) + (l1 + l3);
+}
+}  // namespace
 
 ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepOptions& o)
     : model_(std::move(model)), contact_(model_.contact), substeps_(o.substeps), hold_(o.hold), tol_(o.solver_tolerance) {
@@ -35,10 +62,21 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepO
   ball_ = hold_ == ForceHold::linear ? ball_first_
                                      : BallCoefficients{-h * h / 24.0, 5.0 * h * h / 12.0, h * h / 8.0, -h / 12.0,
                                                         2.0 * h / 3.0, 5.0 * h / 12.0};
+  padded_ = (n + 3) / 4 * 4;
+  const int np = padded_;
+  lanes_[0] = lanes(hold_ == ForceHold::quadratic ? first_ : coef_, nullptr, np);
+  lanes_[1] = lanes(coef_, hold_ == ForceHold::quadratic ? &first_ : &coef_, np);
+  lanes_[2] = lanes(coef_, &coef_, np);
+  zeta_omega2_.assign(np, 0.0);
+  omega2_.assign(np, 0.0);
+  for (int i = 0; i < n; ++i) {
+    zeta_omega2_[i] = 2.0 * b.zeta(i) * b.omega(i);
+    omega2_[i] = b.omega(i) * b.omega(i);
+  }
   const bool table = static_cast<double>(steps_ + 1) * n <= static_cast<double>(o.max_table_entries);
   if (table) {  // slopes only when the damper sees the convective rate (B20)
-    phi_table_.resize(static_cast<std::size_t>(steps_ + 1) * n);
-    if (total_rate_) slope_table_.resize(phi_table_.size());
+    phi_table_.assign(static_cast<std::size_t>(steps_ + 1) * np, 0.0);
+    if (total_rate_) slope_table_.assign(phi_table_.size(), 0.0);
   }
   comp_.resize(steps_ + 1);
   rate_comp_.resize(steps_ + 1);
@@ -49,8 +87,8 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepO
     const double x = position(k);
     b.shapes(x, phi.data(), slope.data());
     if (table) {
-      std::copy(phi.begin(), phi.end(), phi_table_.begin() + k * n);
-      if (total_rate_) std::copy(slope.begin(), slope.end(), slope_table_.begin() + k * n);
+      std::copy(phi.begin(), phi.end(), phi_table_.begin() + k * np);
+      if (total_rate_) std::copy(slope.begin(), slope.end(), slope_table_.begin() + k * np);
     }
     // (B12) from the shapes already at hand
     double modal = 0.0;
@@ -58,8 +96,38 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepO
     residual_[k] = b.static_correction() ? b.static_flexibility(x, x) - modal : 0.0;
     compliance(phi.data(), slope.data(), residual_[k], coef_, ball_, comp_[k], rate_comp_[k], conv_comp_[k]);
   }
-  sensor_phi_.resize(model_.sensors.size() * n);
-  for (std::size_t s = 0; s < model_.sensors.size(); ++s) b.shapes(model_.sensors[s], sensor_phi_.data() + s * n);
+  if (table) {
+    fold_w_.resize(steps_);
+    fold_v_.resize(steps_);
+    fold_s_.resize(steps_);
+    const double* none = total_rate_ ? nullptr : phi_table_.data();  // fold_s unused then
+    for (long k = 0; k < steps_; ++k)
+      fold(k, phi_table_.data() + k * np, phi_table_.data() + (k + 1) * np,
+           total_rate_ ? slope_table_.data() + (k + 1) * np : none, fold_w_[k], fold_v_[k], fold_s_[k]);
+  }
+  sensor_phi_.assign(model_.sensors.size() * np, 0.0);
+  for (std::size_t s = 0; s < model_.sensors.size(); ++s) b.shapes(model_.sensors[s], sensor_phi_.data() + s * np);
+}
+
+ExactStepIntegrator::ModeLanes ExactStepIntegrator::lanes(const std::vector<Coefficients>& cur,
+                                                          const std::vector<Coefficients>* prev, int np) {
+  ModeLanes l;
+  for (auto* v : {&l.a00, &l.a01, &l.a10, &l.a11, &l.bm, &l.cm, &l.b1, &l.c1, &l.p, &l.q}) v->assign(np, 0.0);
+  for (std::size_t i = 0; i < cur.size(); ++i) {
+    const Coefficients& c = cur[i];
+    const double b1p = prev ? (*prev)[i].b1 : 0.0, c1p = prev ? (*prev)[i].c1 : 0.0;
+    l.a00[i] = c.a00;
+    l.a01[i] = c.a01;
+    l.a10[i] = c.a10;
+    l.a11[i] = c.a11;
+    l.bm[i] = c.bm;
+    l.cm[i] = c.cm;
+    l.b1[i] = c.b1;
+    l.c1[i] = c.c1;
+    l.p[i] = c.a00 * b1p + c.a01 * c1p + c.b0;  // (B26a)
+    l.q[i] = c.a10 * b1p + c.a11 * c1p + c.c0;
+  }
+  return l;
 }
 
 // (B25): C = sum b1 phi^2 / m + a1 / m2 + R,  D = sum c1 phi^2 / m + u1 / m2,
@@ -85,15 +153,23 @@ double ExactStepIntegrator::position(long k) const {
 
 void ExactStepIntegrator::shapes_at(long k, const double*& phi, const double*& slope, std::vector<double>& sp,
                                     std::vector<double>& ss) const {
-  const int n = model_.beam.modes();
   if (!phi_table_.empty()) {
-    phi = phi_table_.data() + k * n;
-    slope = total_rate_ ? slope_table_.data() + k * n : ss.data();  // ss stays zero otherwise
+    phi = phi_table_.data() + k * padded_;
+    slope = total_rate_ ? slope_table_.data() + k * padded_ : ss.data();  // ss stays zero otherwise
     return;
   }
   model_.beam.shapes(position(k), sp.data(), ss.data());
   phi = sp.data();
   slope = ss.data();
+}
+
+void ExactStepIntegrator::fold(long k, const double* phi0, const double* phi1, const double* slope1, double& fw,
+                               double& fv, double& fs) const {
+  const ModeLanes& l = lanes_of_step(k);
+  const double m = model_.beam.modal_mass();
+  fw = -lane_dot3(phi1, l.p.data(), phi0, padded_) / m;
+  fv = -lane_dot3(phi1, l.q.data(), phi0, padded_) / m;
+  fs = total_rate_ ? -lane_dot3(slope1, l.p.data(), phi0, padded_) / m : 0.0;
 }
 
 BallOnBeamResult ExactStepIntegrator::run(const Realisation& r) const {
@@ -102,7 +178,7 @@ BallOnBeamResult ExactStepIntegrator::run(const Realisation& r) const {
   return out;
 }
 
-void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const {
+void ExactStepIntegrator::run_reference(const Realisation& r, BallOnBeamResult& out) const {
   const ModalBeam& b = model_.beam;
   const int n = b.modes();
   const double m = b.modal_mass(), m2 = model_.ball.mass, g = model_.ball.gravity, v = model_.traverse.speed;
@@ -118,7 +194,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
   // Outputs at the current state (phi = shapes at the current position).
   auto record = [&](std::size_t j, double xi, double delta, double hx, bool contact) {
     for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
-      const double* ps = sensor_phi_.data() + s * n;
+      const double* ps = sensor_phi_.data() + s * padded_;
       double a = 0.0;
       for (int i = 0; i < n; ++i) {  // exact q_n'' from (D-9)
         const double w = b.omega(i);
@@ -212,5 +288,274 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
   out.steps = steps_;
   out.loss_of_contact_share = steps_ > 0 ? static_cast<double>(lost) / static_cast<double>(steps_) : 0.0;
 }
+
+// run() = run_reference() with the step reordered (README B26a). The state carried from step to
+// step is the free part (qf, vf) of the last step and its start force g0 = -phi(xi_k) F_k / m,
+// not the end state q = qf + b1 g1: the next step's free part is then
+//   qf' = [a00 qf + a01 vf + bm g0] + P g1,  vf' = [a10 qf + a11 vf + cm g0] + Q g1   (B26a)
+// with P, Q from the coefficients of both steps (lanes()). The bracket waits for no contact solve,
+// and the sums sum phi(xi_{k+2}) qf' that the next solve needs are the bracket's sum plus
+// F_{k+1} times a per-step number (fold()): the chain from one contact force to the next is a
+// few scalar operations, not a sum over the modes. One pass over the modes per step, after the
+// solve: this step's free part, its output (every substeps-th step) and the next step's bracket.
+struct ExactStepIntegrator::LoopState {
+  const Realisation* r;
+  BallOnBeamResult* out;
+  const PatchAverager* averager;
+  std::vector<double> x, y, u, zeros;  // padded: the bracket of the coming step, outputs, zero slopes
+  std::vector<double> ring;            // shapes evaluated on the fly: 3 positions x (phi, slope), padded
+  double w2, u2, f, f_prev, delta_last;
+  long lost = 0;
+};
+
+void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const {
+  const ModalBeam& b = model_.beam;
+  const int n = b.modes(), np = padded_;
+  const double m2 = model_.ball.mass, g = model_.ball.gravity;
+  const double weight = m2 * g;
+  detail::resize_result(model_, samples_, out, false);  // every sample is written below
+  const detail::InitialState init = detail::static_initial_state(model_, contact_, r);
+  LoopState st;
+  for (auto* vec : {&st.x, &st.y, &st.u, &st.zeros}) vec->assign(np, 0.0);
+  // The start state as a "free part" with no end force of a previous step (lanes_[0]: b1' = c1' = 0).
+  const double* q0 = init.y.data();
+  const double* dq0 = init.y.data() + n;
+  st.w2 = init.y[2 * n];
+  st.u2 = init.y[2 * n + 1];
+  st.f = st.f_prev = init.force;
+  st.r = &r;
+  st.out = &out;
+  const bool patch = model_.patch_radius > 0.0 && !r.roughness.empty();  // (B38)
+  std::unique_ptr<PatchAverager> averager;
+  if (patch) averager = std::make_unique<PatchAverager>(r.roughness);
+  st.averager = averager.get();
+  const double* phi = phi_table_.data();
+  if (phi_table_.empty()) {
+    st.ring.assign(6 * static_cast<std::size_t>(np), 0.0);
+    b.shapes(model_.traverse.x_start, st.ring.data(), st.ring.data() + np);
+    phi = st.ring.data();
+  }
+  {  // sample 0, as run_reference records it
+    const double m = b.modal_mass(), f = st.f;
+    double h0, dh0, w1 = -residual_[0] * f;
+    detail::roughness_at(r, model_.traverse.x_start, h0, dh0);
+    const double f0 = detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start);
+    if (patch)  // as in the initial state: the width under the weight
+      averager->evaluate(model_.traverse.x_start,
+                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, f0), 0.0)), h0, dh0);
+    for (int i = 0; i < n; ++i) w1 += phi[i] * q0[i];
+    const double delta = w1 + h0 - st.w2;
+    for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
+      const double* ps = sensor_phi_.data() + s * np;
+      double a = 0.0;
+      for (int i = 0; i < n; ++i) {  // exact q_n'' from (D-9)
+        const double w = b.omega(i);
+        a += ps[i] * (-phi[i] * f / m - 2.0 * b.zeta(i) * w * dq0[i] - w * w * q0[i]);
+      }
+      out.sensor_acceleration[s][0] = a;
+    }
+    out.contact_force[0] = f;
+    out.ball_acceleration[0] = f / m2 - g;
+    out.compression[0] = delta;
+    out.contact_deflection[0] = delta - h0 + st.w2;
+    out.ball_displacement[0] = st.w2;
+    out.contact_position[0] = model_.traverse.x_start;
+    out.loss_of_contact[0] = contact_.evaluate(delta, 0.0, f0).contact ? 0 : 1;
+    st.delta_last = delta;
+  }
+  // The first step's bracket (B26a) from the start state (gm = 0).
+  const ModeLanes& l0 = lanes_[0];
+  for (int i = 0; i < n; ++i) {
+    st.x[i] = l0.a00[i] * q0[i] + l0.a01[i] * dq0[i] + l0.bm[i] * 0.0;
+    st.y[i] = l0.a10[i] * q0[i] + l0.a11[i] * dq0[i] + l0.cm[i] * 0.0;
+  }
+  if (steps_ > 0) steps(st);
+  out.steps = steps_;
+  out.loss_of_contact_share = steps_ > 0 ? static_cast<double>(st.lost) / static_cast<double>(steps_) : 0.0;
+}
+
+void ExactStepIntegrator::steps(LoopState& st) const {
+#if defined(__x86_64__) && defined(__GNUC__)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) {
+    steps_avx2(st);
+    return;
+  }
+#endif
+  steps_plain(st);
+}
+
+__attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopState& st) const {
+  const ModalBeam& b = model_.beam;
+  const int np = padded_;
+  const double m = b.modal_mass(), m2 = model_.ball.mass, g = model_.ball.gravity, v = model_.traverse.speed;
+  const double weight = m2 * g, h = h_;
+  const Realisation& r = *st.r;
+  BallOnBeamResult& out = *st.out;
+  const bool table = !phi_table_.empty();
+  double* __restrict x = st.x.data();
+  double* __restrict y = st.y.data();
+  double* __restrict u = st.u.data();
+  const double* __restrict zeta_omega2 = zeta_omega2_.data();
+  const double* __restrict omega2 = omega2_.data();
+  double f = st.f, f_prev = st.f_prev, delta_last = st.delta_last;
+  // The ball (B24, B37) with 1/m2 in its coefficients, and, as for the modes (B26a), its free end
+  // values w2f = wb + kw F_k, u2f = ub + ku F_k split into what is known before F_k and F_k's share.
+  struct BallStep {
+    double am, a0, a1, um, u0, u1;
+  };
+  auto scaled = [m2](const BallCoefficients& c) {
+    return BallStep{c.am / m2, c.a0 / m2, c.a1 / m2, c.um / m2, c.u0 / m2, c.u1 / m2};
+  };
+  const BallStep ball_first = scaled(hold_ == ForceHold::quadratic ? ball_first_ : ball_), ball_next = scaled(ball_);
+  const double c2 = g * h * h / 2.0, gh = g * h;
+  double wb = st.w2 + st.u2 * h - c2 + ball_first.am * f_prev, ub = st.u2 - gh + ball_first.um * f_prev;
+  double kw = ball_first.a0, ku = ball_first.u0;
+  // Shapes and slopes at step position j: the tables, or a ring of three evaluated on the fly.
+  auto phi_at = [&](long j) -> const double* {
+    return table ? phi_table_.data() + j * np : st.ring.data() + (j % 3) * 2 * np;
+  };
+  auto slope_at = [&](long j) -> const double* {
+    if (table) return total_rate_ ? slope_table_.data() + j * np : st.zeros.data();
+    return st.ring.data() + ((j % 3) * 2 + 1) * np;
+  };
+  auto evaluate_shapes = [&](long j) {
+    if (!table) b.shapes(position(j), st.ring.data() + (j % 3) * 2 * np, st.ring.data() + ((j % 3) * 2 + 1) * np);
+  };
+  evaluate_shapes(1);
+  // The sums of the first step's bracket (then each step's, from the pass after its previous solve).
+  double xsum = 0.0, ysum = 0.0, ssum = 0.0;
+  {
+    const double* p1 = phi_at(1);
+    const double* s1 = slope_at(1);
+    Lanes sw = {0.0, 0.0, 0.0, 0.0}, sv = sw, ss = sw;
+    for (int i = 0; i < np; i += 4) {
+      Lanes pi, si, xi, yi;
+      load(pi, p1 + i), load(si, s1 + i), load(xi, x + i), load(yi, y + i);
+      sw += pi * xi;
+      sv += pi * yi;
+      ss += si * xi;
+    }
+    xsum = lane_sum(sw), ysum = lane_sum(sv), ssum = lane_sum(ss);
+  }
+  long lost = 0;
+  int sub = 0;  // steps since the last output sample
+  for (long k = 0; k < steps_; ++k) {
+    // The first step of a quadratic hold has no previous value: it is linear.
+    const bool first = hold_ == ForceHold::quadratic && k == 0;
+    const ModeLanes& l = lanes_of_step(k);
+    const BallStep& bk = k == 0 ? ball_first : ball_next;
+    const long k1 = k + 1;
+    const double* phi0 = phi_at(k);
+    const double* phi1 = phi_at(k1);
+    const double* slope1 = slope_at(k1);
+    double fw, fv, fs;
+    if (table) {
+      fw = fold_w_[k];
+      fv = fold_v_[k];
+      fs = fold_s_[k];
+    } else {
+      fold(k, phi0, phi1, slope1, fw, fv, fs);
+    }
+    const double x1 = position(k1), t1 = static_cast<double>(k1) * h;
+    double h1, dh1;
+    if (st.averager)
+      st.averager->evaluate(x1, std::sqrt(model_.patch_radius * std::max(delta_last, 0.0)), h1, dh1);
+    else
+      detail::roughness_at(r, x1, h1, dh1);
+    const double f0 = detail::law_argument(model_, contact_, r, t1, x1);
+    double comp = comp_[k1], d = rate_comp_[k1], conv = conv_comp_[k1];
+    if (first) compliance(phi1, slope1, residual_[k1], first_, ball_first_, comp, d, conv);
+    // delta_free = wf + h - w2f and rate_free = vfree - u2f (+ v (sf + h'), B20), each as what is
+    // known before F_k plus F_k's share: two operations between F_k and the contact solve.
+    const double delta_base = (xsum + h1) - wb, delta_coef = fw - kw;
+    double rate_base = ysum - ub, rate_coef = fv - ku;
+    if (total_rate_) {  // (B20)
+      rate_base += v * (ssum + dh1);
+      rate_coef += v * fs;
+      d += conv;
+    }
+    const ContactSolution cs = solve_contact_force(contact_, delta_base + delta_coef * f, rate_base + rate_coef * f,
+                                                   comp, d, f0, 2.0 * f - f_prev, weight, tol_);
+    const double f1 = cs.force;
+    const double w2f = wb + kw * f, u2f = ub + ku * f;
+    const bool record = ++sub == substeps_;
+    const bool more = k1 < steps_;
+    if (more) evaluate_shapes(k1 + 1);
+    // One pass over the modes: this step's free part with its start force (B26a); at an output
+    // step its end state q = qf + b1 g1 and q'' from (D-9) (B26); the next step's bracket and sums.
+    const ModeLanes& ln = lanes_of_step(k1);
+    const double* phi2 = more ? phi_at(k1 + 1) : st.zeros.data();
+    const double* slope2 = more ? slope_at(k1 + 1) : st.zeros.data();
+    const double s0 = -f / m, s1 = -f1 / m;
+    Lanes sw = {0.0, 0.0, 0.0, 0.0}, sv = sw, ss = sw;
+    for (int i = 0; i < np; i += 4) {
+      Lanes p0, xi, yi, p, q;
+      load(p0, phi0 + i), load(xi, x + i), load(yi, y + i), load(p, l.p.data() + i), load(q, l.q.data() + i);
+      const Lanes g0 = p0 * s0;
+      const Lanes qf = xi + p * g0, vf = yi + q * g0;
+      if (record) {
+        Lanes p1, b1, c1, zo, o2;
+        load(p1, phi1 + i), load(b1, l.b1.data() + i), load(c1, l.c1.data() + i);
+        load(zo, zeta_omega2 + i), load(o2, omega2 + i);
+        const Lanes g1 = p1 * s1, qe = qf + b1 * g1, ve = vf + c1 * g1;
+        store(u + i, g1 - zo * ve - o2 * qe);
+      }
+      Lanes a00, a01, bm, a10, a11, cm, p2;
+      load(a00, ln.a00.data() + i), load(a01, ln.a01.data() + i), load(bm, ln.bm.data() + i);
+      load(a10, ln.a10.data() + i), load(a11, ln.a11.data() + i), load(cm, ln.cm.data() + i);
+      load(p2, phi2 + i);
+      const Lanes xn = a00 * qf + a01 * vf + bm * g0, yn = a10 * qf + a11 * vf + cm * g0;
+      store(x + i, xn);
+      store(y + i, yn);
+      sw += p2 * xn;
+      sv += p2 * yn;
+      if (total_rate_) {
+        Lanes sl2;
+        load(sl2, slope2 + i);
+        ss += sl2 * xn;
+      }
+    }
+    xsum = lane_sum(sw), ysum = lane_sum(sv), ssum = lane_sum(ss);
+    // The next step's ball: w2f' = [w2f + u2f h - c2 + am' F_k] + F_{k+1} (a1 + u1 h + a0'),
+    // u2f' = [u2f - g h + um' F_k] + F_{k+1} (u1 + u0').
+    wb = w2f + u2f * h - c2 + ball_next.am * f;
+    ub = u2f - gh + ball_next.um * f;
+    kw = bk.a1 + bk.u1 * h + ball_next.a0;
+    ku = bk.u1 + ball_next.u0;
+    f_prev = f;
+    f = f1;
+    delta_last = cs.delta;
+    if (!cs.contact) ++lost;
+    if (record) {
+      sub = 0;
+      const std::size_t j = static_cast<std::size_t>(k1 / substeps_);
+      for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
+        const double* ps = sensor_phi_.data() + s * np;
+        Lanes a = {0.0, 0.0, 0.0, 0.0};
+        for (int i = 0; i < np; i += 4) {
+          Lanes pi, ui;
+          load(pi, ps + i), load(ui, u + i);
+          a += pi * ui;
+        }
+        out.sensor_acceleration[s][j] = lane_sum(a);
+      }
+      const double w2 = w2f + bk.a1 * f1;
+      out.contact_force[j] = f1;
+      out.ball_acceleration[j] = f1 / m2 - g;
+      out.compression[j] = cs.delta;
+      out.contact_deflection[j] = cs.delta - h1 + w2;
+      out.ball_displacement[j] = w2;
+      out.contact_position[j] = x1;
+      out.loss_of_contact[j] = cs.contact ? 0 : 1;
+    }
+  }
+  st.lost = lost;
+}
+
+void ExactStepIntegrator::steps_plain(LoopState& st) const { steps_body(st); }
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) void ExactStepIntegrator::steps_avx2(LoopState& st) const { steps_body(st); }
+#endif
 
 }  // namespace rollspec::beam

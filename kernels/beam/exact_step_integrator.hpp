@@ -49,6 +49,10 @@ class ExactStepIntegrator {
 
   void run(const Realisation& realisation, BallOnBeamResult& out) const;
   BallOnBeamResult run(const Realisation& realisation) const;
+  // Plain reference of run(): the step as (B23)-(B26) write it, one mode at a time, the modal sums
+  // after the start force. run() computes the same step reordered (B26a) and agrees with this to
+  // rounding (tests compare them).
+  void run_reference(const Realisation& realisation, BallOnBeamResult& out) const;
 
  private:
   double position(long k) const;
@@ -64,6 +68,29 @@ class ExactStepIntegrator {
   struct BallCoefficients {
     double am, a0, a1, um, u0, u1;
   };
+  // run()'s step loop (B26a): one body, compiled for baseline x86-64 and for AVX2 (no FMA, so
+  // both give the same bits; the AVX2 form is used where the CPU has it).
+  struct LoopState;
+  void steps(LoopState& st) const;
+  void steps_body(LoopState& st) const;
+  void steps_plain(LoopState& st) const;
+#if defined(__x86_64__) && defined(__GNUC__)
+  __attribute__((target("avx2"))) void steps_avx2(LoopState& st) const;
+#endif
+  // Per-mode step coefficients side by side (structure of arrays, padded with zeros to a multiple
+  // of 4 modes) for one step kind, and the fold of the previous step's end force into this step's
+  // free part (B26a): P = a00 b1' + a01 c1' + b0, Q = a10 b1' + a11 c1' + c0 (b1', c1' of the
+  // previous step; zero before the first step, whose start state is given).
+  struct ModeLanes {
+    std::vector<double> a00, a01, a10, a11, bm, cm, b1, c1, p, q;
+  };
+  static ModeLanes lanes(const std::vector<Coefficients>& cur, const std::vector<Coefficients>* prev, int padded);
+  const ModeLanes& lanes_of_step(long k) const { return lanes_[k < 2 ? k : 2]; }
+  // The start force's share of the free sums at step k (B26a): -sum w_n P_n phi_n(xi_k) / m for
+  // w = phi(xi_{k+1}) (fold_w), with Q (fold_v), and w = phi'(xi_{k+1}) (fold_s).
+  void fold(long k, const double* phi0, const double* phi1, const double* slope1, double& fw, double& fv,
+            double& fs) const;
+
   void compliance(const double* phi, const double* slope, double residual, const std::vector<Coefficients>& c,
                   const BallCoefficients& bc, double& comp, double& rate, double& conv) const;
 
@@ -77,9 +104,13 @@ class ExactStepIntegrator {
   bool total_rate_;
   std::vector<Coefficients> coef_, first_;      // hold of every step; linear hold of the first step
   BallCoefficients ball_, ball_first_;
-  std::vector<double> phi_table_, slope_table_;  // [k * N + n], empty when evaluated on the fly
+  int padded_;                                   // modes rounded up to a multiple of 4
+  ModeLanes lanes_[3];                           // step 0, step 1, steps >= 2
+  std::vector<double> zeta_omega2_, omega2_;     // 2 zeta_n omega_n, omega_n^2, padded
+  std::vector<double> phi_table_, slope_table_;  // [k * padded + n], empty when evaluated on the fly
+  std::vector<double> fold_w_, fold_v_, fold_s_; // per step (B26a), empty when evaluated on the fly
   std::vector<double> comp_, rate_comp_, conv_comp_, residual_;  // C, D parts per step position
-  std::vector<double> sensor_phi_;              // [s * N + n]
+  std::vector<double> sensor_phi_;              // [s * padded + n]
 };
 
 }  // namespace rollspec::beam

@@ -383,6 +383,7 @@ class BallOnBeam final : public Scene {
       r.blocked_force.origin = (static_cast<double>(first) * b_.spacing - x0) / v;
       r.blocked_force.step = dt;
       const double weight = b_.weight();
+      r.blocked_force.values.reserve(h.values.size() - std::min(first, h.values.size()));
       for (std::size_t i = first; i < h.values.size(); ++i) r.blocked_force.values.push_back(weight + b_.model.contact.k0 * h.values[i]);
     } else if (b_.strip_line) {
       r.roughness = strip_line_;
