@@ -1,6 +1,7 @@
 """Shared helpers for the command-line tests: the rollspec binary, small studies, HDF5 comparison."""
 import os
 import pathlib
+import shutil
 import subprocess
 
 import h5py
@@ -111,6 +112,19 @@ def run(args, env=None, **kw):
     if env:
         full_env.update(env)
     return subprocess.run([BIN, *map(str, args)], capture_output=True, text=True, env=full_env, **kw)
+
+
+def run_copied_study(name, tmp_path, *sets, out="r.h5", command="run"):
+    """studies/NAME copied to tmp_path (its tables are written beside it, not in the source tree) and
+    run (returns (result, out path)) or planned (returns (result, None)) with --set SETS."""
+    study = tmp_path / name
+    if not study.exists():
+        shutil.copy(SOURCE / "studies" / name, study)
+    args = [a for kv in sets for a in ("--set", kv)]
+    if command == "plan":
+        return run(["plan", study, *args]), None
+    path = tmp_path / out
+    return run(["run", study, "--out", path, *args]), path
 
 
 @pytest.fixture

@@ -3,12 +3,11 @@ from a cached path table. On a smooth strip P is the Hertz force (to the contact
 discretisation), so the run must reproduce law = hertz; the table is built once and reused; bad
 keys are refused."""
 import glob
-import shutil
 
 import h5py
 import numpy as np
 
-from conftest import SOURCE, run
+from conftest import run_copied_study
 
 # Smooth strip (rms 1e-20 m: its response lies ~100 dB below the moving weight's, against a static approach of 0.24 um), 12 um cells (a / 5.8), a 6 mm
 # path at 1 m/s: 8 approaches x ~500 positions on a 40-cell window, a few seconds.
@@ -18,13 +17,7 @@ SMOOTH = ["texture.rms=1e-20", "surface.spacing=12e-6", "texture.short_wavelengt
 
 
 def rig(tmp_path, *sets, name="r.h5", command="run"):
-    study = tmp_path / "rig.ini"
-    shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
-    args = [a for kv in sets for a in ("--set", kv)]
-    if command == "plan":
-        return run(["plan", study, *args]), None
-    out = tmp_path / name
-    return run(["run", study, "--out", out, *args]), out
+    return run_copied_study("seed002-rig-1ms.ini", tmp_path, *sets, out=name, command=command)
 
 
 def band_levels(path):

@@ -8,14 +8,12 @@ The seed 002 rig under the Hertz law on a coarse strip (12 um cells = a / 5.8, t
 deterministic on the strip, so their band levels differ only by the model. 16 approaches in the path
 table (its interpolation in delta moves the levels by <= 0.11 dB against 32)."""
 import glob
-import shutil
 
 import h5py
 import numpy as np
 
-from conftest import EX_CONFIG, SOURCE, assert_refused, run
+from conftest import EX_CONFIG, assert_refused, run_copied_study
 
-RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 STRIP = ["surface.spacing=12e-6", "texture.short_wavelength=24e-6", "ball.start=0.1", "ball.end=0.13",
          "spectrum.segment=512", "spectrum.band_min=100", "spectrum.band_max=5000", "study.realisations=1"]
 PATH = ["contact.law=path", "path_table.approaches=16"]
@@ -23,14 +21,7 @@ SOLVER = ["contact.law=hertz", "contact.filter=solver", "equivalent_roughness.li
 
 
 def rig(tmp_path, *sets, name="r.h5", command="run"):
-    study = tmp_path / "rig.ini"
-    if not study.exists():
-        shutil.copy(RIG, study)
-    args = [a for kv in sets for a in ("--set", kv)]
-    if command == "plan":
-        return run(["plan", study, *args]), None
-    out = tmp_path / name
-    return run(["run", study, "--out", out, *args]), out
+    return run_copied_study("seed002-rig-1ms.ini", tmp_path, *sets, out=name, command=command)
 
 
 def levels(path):

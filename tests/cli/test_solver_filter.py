@@ -7,7 +7,7 @@ import shutil
 import h5py
 import numpy as np
 
-from conftest import EX_CONFIG, SOURCE, assert_refused, hertz_radius, run
+from conftest import EX_CONFIG, SOURCE, assert_refused, hertz_radius, run, run_copied_study
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 # The seed 002 rig's surface under the Hertz law, on a coarse strip: 12 um cells (a / 5.8, the
@@ -19,13 +19,7 @@ SOLVER = ["contact.law=hertz", "contact.filter=solver", "surface.spacing=12e-6",
 
 
 def rig(tmp_path, *sets, name="r.h5", command="run"):
-    study = tmp_path / "rig.ini"
-    shutil.copy(RIG, study)
-    args = [a for kv in sets for a in ("--set", kv)]
-    if command == "plan":
-        return run(["plan", study, *args]), None
-    out = tmp_path / name
-    return run(["run", study, "--out", out, *args]), out
+    return run_copied_study("seed002-rig-1ms.ini", tmp_path, *sets, out=name, command=command)
 
 
 def stage_row(stdout, name):
