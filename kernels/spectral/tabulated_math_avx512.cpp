@@ -61,8 +61,9 @@ ROLLSPEC_AVX512 inline __m512d neg_log_open8(__m512d u, const TabulatedMath& t) 
 ROLLSPEC_AVX512 inline void sincos_two_pi8(__m512d v, const TabulatedMath& tab, __m512d& c, __m512d& s) {
   using namespace tabulated_detail;
   const __m512d x = _mm512_mul_pd(v, k8(1024.0));
-  const __m256i k = _mm512_cvttpd_epi32(_mm512_add_pd(x, k8(0.5)));
-  const __m512d t = _mm512_mul_pd(_mm512_sub_pd(x, _mm512_cvtepi32_pd(k)), k8(phase_step));
+  // k = trunc(x + 1/2) kept as a double (the scalar form's int32 k, converted back exactly).
+  const __m512d k = _mm512_roundscale_pd(_mm512_add_pd(x, k8(0.5)), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+  const __m512d t = _mm512_mul_pd(_mm512_sub_pd(x, k), k8(phase_step));
   const __m512d t2 = _mm512_mul_pd(t, t);
   __m512d ct = _mm512_sub_pd(k8(1.0 / 24.0), _mm512_mul_pd(t2, k8(1.0 / 720.0)));
   ct = _mm512_sub_pd(k8(0.5), _mm512_mul_pd(t2, ct));
@@ -70,8 +71,9 @@ ROLLSPEC_AVX512 inline void sincos_two_pi8(__m512d v, const TabulatedMath& tab, 
   __m512d st = _mm512_sub_pd(k8(1.0 / 120.0), _mm512_mul_pd(t2, k8(1.0 / 5040.0)));
   st = _mm512_sub_pd(k8(1.0 / 6.0), _mm512_mul_pd(t2, st));
   st = _mm512_sub_pd(t, _mm512_mul_pd(_mm512_mul_pd(t, t2), st));
-  alignas(64) std::int64_t off[8];  // byte offset of each lane's (C_k, S_k), 16 bytes a pair
-  _mm512_store_si512(off, _mm512_slli_epi64(_mm512_cvtepi32_epi64(_mm256_and_si256(k, _mm256_set1_epi32(1023))), 4));
+  // Byte offset of each lane's (C_k, S_k), 16 bytes a pair: k + 2^52 has k in its low mantissa bits.
+  alignas(64) std::int64_t off[8];
+  _mm512_store_si512(off, _mm512_and_si512(_mm512_slli_epi64(_mm512_castpd_si512(_mm512_add_pd(k, k8(0x1p52))), 4), k8i(1023 << 4)));
   __m512d cc, ss;
   gather_pairs(reinterpret_cast<const char*>(tab.cos_sin), off, cc, ss);
   c = _mm512_sub_pd(_mm512_mul_pd(cc, ct), _mm512_mul_pd(ss, st));
