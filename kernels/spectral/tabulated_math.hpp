@@ -40,19 +40,17 @@ namespace tabulated_detail {
 // ln 2 split so that (e + 1) ln2_hi is exact for |e + 1| < 2^11 (Cody-Waite).
 constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
 constexpr double phase_step = 2.0 * 3.14159265358979323846 / 1024.0;  // 2 pi / 1024
-// ln(1 + r) = r - r^2/2 + ... - r^6/6, Horner (|r| <= 2^-9: the next term is below 2^-65).
-// cos t and sin t to t^4 / t^5 (|t| <= pi/1024: the next terms, t^6/720 and t^7/5040, are below
-// 2e-18, a hundredth of an ulp of 1).
+// ln(1 + r) = r - r^2/2 + ... + r^7/7, Horner.
 inline double log1p_series(double r) {
-  return r * (1.0 - r * (0.5 - r * (1.0 / 3.0 - r * (0.25 - r * (0.2 - r * (1.0 / 6.0))))));
+  return r * (1.0 - r * (0.5 - r * (1.0 / 3.0 - r * (0.25 - r * (0.2 - r * (1.0 / 6.0 - r * (1.0 / 7.0)))))));
 }
-inline double cos_series(double t2) { return 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0)); }
-inline double sin_series(double t, double t2) { return t - t * t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0)); }
+inline double cos_series(double t2) { return 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0 - t2 * (1.0 / 720.0))); }
+inline double sin_series(double t, double t2) { return t - t * t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0 - t2 * (1.0 / 5040.0))); }
 }  // namespace tabulated_detail
 
 // -ln u for u in (0, 1) (a positive normal double; D-24):
 //   u = 2^e m, m in [1, 2); c the centre of m's 2^-8 bin (the top bin's: 2); r = (m - c) / c, |r| <= 2^-9:
-//   -ln u = -[(e + 1) ln 2 + ln(c / 2) + ln(1 + r)],  ln(1 + r) by its Taylor series to r^6 (|err| < r^7/7).
+//   -ln u = -[(e + 1) ln 2 + ln(c / 2) + ln(1 + r)],  ln(1 + r) by its Taylor series to r^7 (|err| < r^8/8).
 inline double neg_log_open(double u, const TabulatedMath& t) {
   std::uint64_t bits;
   std::memcpy(&bits, &u, sizeof bits);
@@ -70,7 +68,7 @@ inline double neg_log_open(double u, const TabulatedMath& t) {
 
 // cos(2 pi v) and sin(2 pi v) for v in [0, 1] (D-25):
 //   v = k / 1024 + s / 1024, k = round(1024 v), |s| <= 1/2, t = 2 pi s / 1024 (|t| <= pi / 1024):
-//   cos = C_k cos t - S_k sin t, sin = S_k cos t + C_k sin t, cos t and sin t by Taylor to t^4 / t^5.
+//   cos = C_k cos t - S_k sin t, sin = S_k cos t + C_k sin t, cos t and sin t by Taylor to t^6 / t^7.
 inline void sincos_two_pi(double v, const TabulatedMath& tab, double& c, double& s) {
   const double x = v * 1024.0;                                      // exact
   const auto k = static_cast<std::int32_t>(x + 0.5);                // round half up, x >= 0
@@ -88,7 +86,8 @@ inline void sincos_two_pi(double v, const TabulatedMath& tab, double& c, double&
 namespace tabulated_detail {
 inline __m128d horner_log1p(__m128d r) {
   const auto c = [](double x) { return _mm_set1_pd(x); };
-  __m128d p = _mm_sub_pd(c(0.2), _mm_mul_pd(r, c(1.0 / 6.0)));
+  __m128d p = _mm_sub_pd(c(1.0 / 6.0), _mm_mul_pd(r, c(1.0 / 7.0)));
+  p = _mm_sub_pd(c(0.2), _mm_mul_pd(r, p));
   p = _mm_sub_pd(c(0.25), _mm_mul_pd(r, p));
   p = _mm_sub_pd(c(1.0 / 3.0), _mm_mul_pd(r, p));
   p = _mm_sub_pd(c(0.5), _mm_mul_pd(r, p));
@@ -126,9 +125,11 @@ inline void sincos_two_pi(__m128d v, const TabulatedMath& tab, __m128d& c, __m12
   const __m128i k = _mm_cvttpd_epi32(_mm_add_pd(x, k1(0.5)));
   const __m128d t = _mm_mul_pd(_mm_sub_pd(x, _mm_cvtepi32_pd(k)), k1(phase_step));
   const __m128d t2 = _mm_mul_pd(t, t);
-  __m128d ct = _mm_sub_pd(k1(0.5), _mm_mul_pd(t2, k1(1.0 / 24.0)));
+  __m128d ct = _mm_sub_pd(k1(1.0 / 24.0), _mm_mul_pd(t2, k1(1.0 / 720.0)));
+  ct = _mm_sub_pd(k1(0.5), _mm_mul_pd(t2, ct));
   ct = _mm_sub_pd(k1(1.0), _mm_mul_pd(t2, ct));
-  __m128d st = _mm_sub_pd(k1(1.0 / 6.0), _mm_mul_pd(t2, k1(1.0 / 120.0)));
+  __m128d st = _mm_sub_pd(k1(1.0 / 120.0), _mm_mul_pd(t2, k1(1.0 / 5040.0)));
+  st = _mm_sub_pd(k1(1.0 / 6.0), _mm_mul_pd(t2, st));
   st = _mm_sub_pd(t, _mm_mul_pd(_mm_mul_pd(t, t2), st));
   const auto j0 = static_cast<std::size_t>(_mm_cvtsi128_si32(k) & 1023);
   const auto j1 = static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_srli_si128(k, 4)) & 1023);
@@ -163,7 +164,8 @@ __attribute__((target("avx2"))) inline __m256d neg_log_open(__m256d u, const Tab
   const __m256d m = _mm256_castsi256_pd(_mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi64x(0x000fffffffffffffLL)),
                                                         _mm256_set1_epi64x(0x3ff0000000000000LL)));
   const __m256d r = _mm256_mul_pd(_mm256_sub_pd(m, centre), inverse);
-  __m256d p = _mm256_sub_pd(_mm256_set1_pd(0.2), _mm256_mul_pd(r, _mm256_set1_pd(1.0 / 6.0)));
+  __m256d p = _mm256_sub_pd(_mm256_set1_pd(1.0 / 6.0), _mm256_mul_pd(r, _mm256_set1_pd(1.0 / 7.0)));
+  p = _mm256_sub_pd(_mm256_set1_pd(0.2), _mm256_mul_pd(r, p));
   p = _mm256_sub_pd(_mm256_set1_pd(0.25), _mm256_mul_pd(r, p));
   p = _mm256_sub_pd(_mm256_set1_pd(1.0 / 3.0), _mm256_mul_pd(r, p));
   p = _mm256_sub_pd(_mm256_set1_pd(0.5), _mm256_mul_pd(r, p));
@@ -180,9 +182,11 @@ __attribute__((target("avx2"))) inline void sincos_two_pi(__m256d v, const Tabul
   const __m128i k = _mm256_cvttpd_epi32(_mm256_add_pd(x, _mm256_set1_pd(0.5)));
   const __m256d t = _mm256_mul_pd(_mm256_sub_pd(x, _mm256_cvtepi32_pd(k)), _mm256_set1_pd(phase_step));
   const __m256d t2 = _mm256_mul_pd(t, t);
-  __m256d ct = _mm256_sub_pd(_mm256_set1_pd(0.5), _mm256_mul_pd(t2, _mm256_set1_pd(1.0 / 24.0)));
+  __m256d ct = _mm256_sub_pd(_mm256_set1_pd(1.0 / 24.0), _mm256_mul_pd(t2, _mm256_set1_pd(1.0 / 720.0)));
+  ct = _mm256_sub_pd(_mm256_set1_pd(0.5), _mm256_mul_pd(t2, ct));
   ct = _mm256_sub_pd(_mm256_set1_pd(1.0), _mm256_mul_pd(t2, ct));
-  __m256d st = _mm256_sub_pd(_mm256_set1_pd(1.0 / 6.0), _mm256_mul_pd(t2, _mm256_set1_pd(1.0 / 120.0)));
+  __m256d st = _mm256_sub_pd(_mm256_set1_pd(1.0 / 120.0), _mm256_mul_pd(t2, _mm256_set1_pd(1.0 / 5040.0)));
+  st = _mm256_sub_pd(_mm256_set1_pd(1.0 / 6.0), _mm256_mul_pd(t2, st));
   st = _mm256_sub_pd(t, _mm256_mul_pd(_mm256_mul_pd(t, t2), st));
   // (C, S) of each lane by one 16-byte load; x = lanes 0 and 2, y = lanes 1 and 3.
   const __m128i at = _mm_and_si128(k, _mm_set1_epi32(1023));

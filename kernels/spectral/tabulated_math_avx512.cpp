@@ -45,7 +45,8 @@ ROLLSPEC_AVX512 inline __m512d neg_log_open8(__m512d u, const TabulatedMath& t) 
   const __m512d centre_low = _mm512_castsi512_pd(_mm512_or_si512(top_bits, k8i(0x3ff0080000000000LL)));
   const __m512d centre = _mm512_mask_blend_pd(_mm512_cmpeq_epi64_mask(top_bits, k8i(0x000ff00000000000LL)), centre_low, k8(2.0));
   const __m512d r = _mm512_mul_pd(_mm512_sub_pd(m, centre), inverse);
-  __m512d p = _mm512_sub_pd(k8(0.2), _mm512_mul_pd(r, k8(1.0 / 6.0)));
+  __m512d p = _mm512_sub_pd(k8(1.0 / 6.0), _mm512_mul_pd(r, k8(1.0 / 7.0)));
+  p = _mm512_sub_pd(k8(0.2), _mm512_mul_pd(r, p));
   p = _mm512_sub_pd(k8(0.25), _mm512_mul_pd(r, p));
   p = _mm512_sub_pd(k8(1.0 / 3.0), _mm512_mul_pd(r, p));
   p = _mm512_sub_pd(k8(0.5), _mm512_mul_pd(r, p));
@@ -64,9 +65,11 @@ ROLLSPEC_AVX512 inline void sincos_two_pi8(__m512d v, const TabulatedMath& tab, 
   const __m512d k = _mm512_roundscale_pd(_mm512_add_pd(x, k8(0.5)), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
   const __m512d t = _mm512_mul_pd(_mm512_sub_pd(x, k), k8(phase_step));
   const __m512d t2 = _mm512_mul_pd(t, t);
-  __m512d ct = _mm512_sub_pd(k8(0.5), _mm512_mul_pd(t2, k8(1.0 / 24.0)));
+  __m512d ct = _mm512_sub_pd(k8(1.0 / 24.0), _mm512_mul_pd(t2, k8(1.0 / 720.0)));
+  ct = _mm512_sub_pd(k8(0.5), _mm512_mul_pd(t2, ct));
   ct = _mm512_sub_pd(k8(1.0), _mm512_mul_pd(t2, ct));
-  __m512d st = _mm512_sub_pd(k8(1.0 / 6.0), _mm512_mul_pd(t2, k8(1.0 / 120.0)));
+  __m512d st = _mm512_sub_pd(k8(1.0 / 120.0), _mm512_mul_pd(t2, k8(1.0 / 5040.0)));
+  st = _mm512_sub_pd(k8(1.0 / 6.0), _mm512_mul_pd(t2, st));
   st = _mm512_sub_pd(t, _mm512_mul_pd(_mm512_mul_pd(t, t2), st));
   // Byte offset of each lane's (C_k, S_k), 16 bytes a pair: k + 2^52 has k in its low mantissa bits.
   alignas(64) std::int64_t off[8];
