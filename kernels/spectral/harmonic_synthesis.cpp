@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "kernels/spectral/tabulated_math.hpp"
+#include "kernels/spectral/tabulated_math_avx512.hpp"
 
 namespace rollspec::spectral {
 
@@ -77,6 +78,8 @@ void HarmonicSynthesiser::fill_spectrum(const double* half_amplitudes, Amplitude
   const bool rayleigh = mode == Amplitudes::rayleigh;
   std::size_t j = 1;
 #if defined(ROLLSPEC_HAVE_AVX2_PATH)
+  // Widest lanes first (eight, then four, two, one): every form gives the scalar form's bits.
+  if (cpu_has_avx512f()) j = fill_spectrum_avx512(j, nh - 1, half_amplitudes, rayleigh, u_phase, u_amplitude, t, spec);
   if (cpu_has_avx2()) j = fill_avx2(j, nh - 1, half_amplitudes, rayleigh, u_phase, u_amplitude, t, spec);
 #endif
 #if defined(ROLLSPEC_HAVE_SSE2_PATH)

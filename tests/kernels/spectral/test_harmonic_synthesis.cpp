@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "kernels/spectral/harmonic_synthesis.hpp"
+#include "kernels/spectral/tabulated_math_avx512.hpp"
 
 using namespace rollspec::spectral;
 
@@ -78,4 +79,37 @@ TEST_CASE("tabulated path: one scratch for many realisations; aligned and unalig
   SynthesisScratch wrong(n + 2);
   std::vector<double> up(s.harmonics(), 0.5), ua(s.harmonics(), 0.5), x(n);
   CHECK_THROWS_AS(s.synthesise(h.data(), Amplitudes::rayleigh, up.data(), ua.data(), x.data(), wrong), std::invalid_argument);
+}
+
+TEST_CASE("the eight-lane (AVX-512F) spectrum fill gives the scalar form's bits") {
+  using namespace rollspec::spectral;
+  if (!cpu_has_avx512f()) {
+    MESSAGE("no AVX-512F on this CPU: eight-lane fill not checked");
+    return;
+  }
+  const TabulatedMath& t = tabulated_math();
+  const std::size_t nh = 1001;
+  std::mt19937_64 gen(11);
+  std::uniform_real_distribution<double> u(1e-300, 1.0);
+  std::vector<double> h(nh), up(nh), ua(nh);
+  for (std::size_t j = 0; j < nh; ++j) h[j] = u(gen), up[j] = u(gen), ua[j] = u(gen);
+  for (bool rayleigh : {true, false}) {
+    ComplexBuffer spec(nh);
+    for (std::size_t j = 0; j < nh; ++j) spec[j][0] = spec[j][1] = -1.0;
+    const std::size_t done = fill_spectrum_avx512(3, nh - 1, h.data(), rayleigh, up.data(), ua.data(), t, spec.data());
+    CHECK(done == 3 + (nh - 1 - 3) / 8 * 8);
+    std::size_t mismatches = 0;
+    for (std::size_t j = 3; j < done; ++j) {
+      double a = h[j];
+      if (rayleigh) {
+        const double l = neg_log_open(ua[j], t);
+        a *= std::sqrt(l > 0.0 ? l : 0.0);
+      }
+      double c, s;
+      sincos_two_pi(up[j], t, c, s);
+      mismatches += (spec[j][0] != a * c) + (spec[j][1] != a * s);
+    }
+    CHECK(mismatches == 0);
+    CHECK(spec[done][0] == -1.0);  // nothing written past the last full step
+  }
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "kernels/spectral/tabulated_math.hpp"
+#include "kernels/spectral/tabulated_math_avx512.hpp"
 
 using rollspec::spectral::neg_log_open;
 using rollspec::spectral::sincos_two_pi;
@@ -129,6 +130,24 @@ TEST_CASE("D-25: cos and sin of 2 pi v from the table are within 1 ulp of 1 of l
     MESSAGE("no AVX2 on this CPU: four-lane forms not checked");
   }
 #endif
+  // The eight-lane forms (AVX-512F) too; their source is compiled without contraction into FMA.
+  if (rollspec::spectral::cpu_has_avx512f()) {
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i + 7 < v.size(); i += 8) {
+      double c[8], s[8], l[8], ul[8];
+      for (std::size_t k = 0; k < 8; ++k) ul[k] = v[i + k] > 0.0 && v[i + k] < 1.0 ? v[i + k] : 0.5;
+      rollspec::spectral::sincos_two_pi_x8(&v[i], t, c, s);
+      rollspec::spectral::neg_log_open_x8(ul, t, l);
+      for (std::size_t k = 0; k < 8; ++k) {
+        double cs, ss;
+        sincos_two_pi(v[i + k], t, cs, ss);
+        mismatches += (c[k] != cs) + (s[k] != ss) + (l[k] != neg_log_open(ul[k], t));
+      }
+    }
+    CHECK(mismatches == 0);
+  } else {
+    MESSAGE("no AVX-512F on this CPU: eight-lane forms not checked");
+  }
   // Quarter turns are exact.
   for (int q = 0; q < 4; ++q) {
     double c, s;
