@@ -483,7 +483,9 @@ class BallOnBeam final : public Scene {
         return std::string("contact filter: solver, line PSD of the equivalent roughness h_eq of half-space solves at "
                            "the weight (kernels/contact ER-1..ER-7), Hertz a = ") + a + " um" +
                (b_.equivalent_stiffness ? "; the point law carries the weight with the strips' mean contact stiffness (ER-7)"
-                                        : "; the point law's own stiffness ([equivalent_roughness] stiffness = law)");
+                : uses_table() && study_->text("stiffness.surface") == "rough"
+                    ? "; the table law's own stiffness (its rough surfaces carry the rough contact's compliance: no ER-7)"
+                    : "; the point law's own stiffness ([equivalent_roughness] stiffness = law)");
     }
     return std::string("contact filter: iso2d, line PSD G_eq of a Hertz disc of radius a = ") + a +
            " um on the isotropic surface (kernels/texture Eq. 38)";

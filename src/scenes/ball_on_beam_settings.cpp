@@ -102,7 +102,10 @@ void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
     s.refuse("contact.filter", "solver filters the line texture, which law = path does not use (its strip is the "
                                "roughness); allowed with path: none or patch (both ignored)");
   b.strip_line = s.text("equivalent_roughness.line") == "strip";
-  b.equivalent_stiffness = b.filter == ContactFilter::solver && s.text("equivalent_roughness.stiffness") == "strip";
+  // ER-7 corrects a smooth contact's stiffness; a table law from rough surfaces ([stiffness] surface =
+  // rough, seed 001's chain) carries the rough contact's compliance already.
+  b.equivalent_stiffness = b.filter == ContactFilter::solver && s.text("equivalent_roughness.stiffness") == "strip" &&
+                           !(b.uses_table() && s.text("stiffness.surface") == "rough");
   if (b.strip_line && b.filter != ContactFilter::solver)
     s.refuse("equivalent_roughness.line", "= strip is the line of [contact] filter = solver; allowed with filter = " +
                                               b.filter_name + ": synthesised");
