@@ -85,6 +85,12 @@ struct LinearReference {
 // Units of work linear_reference reports through its callback.
 std::size_t linear_reference_steps(const LinearReferenceInput& in);
 // step (optional) is called after each unit of work, for progress reports.
+// The products behind the dof are summed with the Welch weights u_ab(p) before they are smoothed
+// (B34b is linear in the blocks' spectra), once per segment pair instead of once per block, and
+// the modal sums run over ranges of frequencies at a time: the PSD rows are those of
+// linear_reference_plain to the last bit in the band, the dof to rounding.
 LinearReference linear_reference(const LinearReferenceInput& in, const std::function<void()>& step = {});
+// The same by the plain path, one block at a time (the reference tests compare with).
+LinearReference linear_reference_plain(const LinearReferenceInput& in);
 
 }  // namespace rollspec::beam

@@ -114,18 +114,14 @@ std::vector<double> welch_time_weights(const WelchPlan& plan, std::size_t n) {
   return tw;
 }
 
-std::vector<double> welch_block_dof(const WelchPlan& plan, std::size_t n, const std::vector<std::size_t>& edges,
-                                    std::size_t channels, std::size_t bins,
-                                    const std::vector<std::complex<double>>& cross) {
+WelchBlockTerms welch_block_terms(const WelchPlan& plan, std::size_t n, const std::vector<std::size_t>& edges) {
   const std::size_t nb = plan.segments(n), L = plan.config().segment, hop = L - plan.config().overlap;
   if (nb == 0) throw std::invalid_argument("welch_block_dof: record shorter than one segment");
   if (edges.size() < 2 || edges.front() != 0 || edges.back() != n)
     throw std::invalid_argument("welch_block_dof: block edges must run from 0 to n");
   for (std::size_t p = 1; p < edges.size(); ++p)
     if (edges[p] <= edges[p - 1]) throw std::invalid_argument("welch_block_dof: block edges must increase");
-  const std::size_t blocks = edges.size() - 1, pairs = channels * (channels + 1) / 2;
-  if (channels < 1 || cross.size() != blocks * pairs * bins)
-    throw std::invalid_argument("welch_block_dof: need blocks x channel pairs x bins cross-spectra");
+  const std::size_t blocks = edges.size() - 1;
   const auto& w = plan.window();
   double s2 = 0.0;
   for (double v : w) s2 += v * v;
@@ -133,48 +129,70 @@ std::vector<double> welch_block_dof(const WelchPlan& plan, std::size_t n, const 
   while ((mmax + 1) * hop < L) ++mmax;
   // u_ab(p) for b = a + m, m = 0..mmax: nonzero only for the blocks inside segment a
   // (kernels/beam README B34b).
-  struct Term {
-    std::size_t a, m, p;
-    double u;
-  };
-  std::vector<Term> terms;
+  WelchBlockTerms out;
+  out.segments = nb;
   for (std::size_t a = 0; a < nb; ++a)
     for (std::size_t m = 0; m <= mmax && a + m < nb; ++m) {
       const std::size_t lo = (a + m) * hop, hi = a * hop + L;  // samples in both segments
+      const std::size_t g = out.group_m.size();
       std::size_t p = static_cast<std::size_t>(std::upper_bound(edges.begin(), edges.end(), lo) - edges.begin()) - 1;
+      bool any = false;
       for (; p < blocks && edges[p] < hi; ++p) {
         double u = 0.0;
         for (std::size_t t = std::max(lo, edges[p]); t < std::min(hi, edges[p + 1]); ++t)
           u += w[t - a * hop] * w[t - (a + m) * hop];
-        if (u != 0.0) terms.push_back({a, m, p, u / s2});
+        if (u != 0.0) {
+          out.terms.push_back({g, p, u / s2});
+          any = true;
+        }
       }
+      if (any) out.group_m.push_back(m);
     }
+  return out;
+}
+
+std::vector<double> welch_group_dof(const WelchBlockTerms& t, std::size_t channels, std::size_t bins,
+                                    const std::vector<std::complex<double>>& grouped) {
+  const std::size_t pairs = channels * (channels + 1) / 2, groups = t.group_m.size();
+  if (channels < 1 || grouped.size() != groups * pairs * bins)
+    throw std::invalid_argument("welch_group_dof: need groups x channel pairs x bins cross-spectra");
   std::vector<double> dof(bins, 0.0);
-  std::vector<std::complex<double>> c(pairs);
   for (std::size_t k = 0; k < bins; ++k) {
     double mean = 0.0, var = 0.0;
-    std::size_t i = 0;
-    while (i < terms.size()) {  // one (a, m) at a time
-      const std::size_t a = terms[i].a, m = terms[i].m;
-      std::fill(c.begin(), c.end(), std::complex<double>(0.0));
-      for (; i < terms.size() && terms[i].a == a && terms[i].m == m; ++i)
-        for (std::size_t q = 0; q < pairs; ++q) c[q] += terms[i].u * cross[(terms[i].p * pairs + q) * bins + k];
+    for (std::size_t g = 0; g < groups; ++g) {
+      const std::complex<double>* c = grouped.data() + g * pairs * bins + k;  // c[q * bins]
       double sum = 0.0;  // sum over ordered channel pairs of |C_ab^{ss'}|^2
       std::size_t q = 0;
       for (std::size_t s = 0; s < channels; ++s)
-        for (std::size_t s2i = s; s2i < channels; ++s2i, ++q) sum += (s2i == s ? 1.0 : 2.0) * std::norm(c[q]);
-      var += (m == 0 ? 1.0 : 2.0) * sum;
-      if (m == 0) {
+        for (std::size_t s2i = s; s2i < channels; ++s2i, ++q) sum += (s2i == s ? 1.0 : 2.0) * std::norm(c[q * bins]);
+      const bool diagonal = t.group_m[g] == 0;
+      var += (diagonal ? 1.0 : 2.0) * sum;
+      if (diagonal) {
         q = 0;
         for (std::size_t s = 0; s < channels; ++s)
           for (std::size_t s2i = s; s2i < channels; ++s2i, ++q)
-            if (s2i == s) mean += c[q].real();
+            if (s2i == s) mean += c[q * bins].real();
       }
     }
     // E = mean / (nb channels), Var = var / (nb channels)^2: nu = 2 E^2 / Var = 2 mean^2 / var.
     dof[k] = var > 0.0 ? 2.0 * mean * mean / var : 0.0;
   }
   return dof;
+}
+
+std::vector<double> welch_block_dof(const WelchPlan& plan, std::size_t n, const std::vector<std::size_t>& edges,
+                                    std::size_t channels, std::size_t bins,
+                                    const std::vector<std::complex<double>>& cross) {
+  const WelchBlockTerms t = welch_block_terms(plan, n, edges);
+  const std::size_t pairs = channels * (channels + 1) / 2, blocks = edges.size() - 1;
+  if (channels < 1 || cross.size() != blocks * pairs * bins)
+    throw std::invalid_argument("welch_block_dof: need blocks x channel pairs x bins cross-spectra");
+  std::vector<std::complex<double>> grouped(t.group_m.size() * pairs * bins, 0.0);
+  for (const auto& term : t.terms)
+    for (std::size_t q = 0; q < pairs; ++q)
+      for (std::size_t k = 0; k < bins; ++k)
+        grouped[(term.group * pairs + q) * bins + k] += term.u * cross[(term.block * pairs + q) * bins + k];
+  return welch_group_dof(t, channels, bins, grouped);
 }
 
 }  // namespace rollspec::spectral

@@ -50,4 +50,22 @@ std::vector<double> welch_block_dof(const WelchPlan& plan, std::size_t n, const 
                                     std::size_t channels, std::size_t bins,
                                     const std::vector<std::complex<double>>& cross);
 
+// The same in two steps, for callers that can form C_ab themselves (linear in S_p: a caller may sum
+// u_ab(p) times what it smooths into S_p before smoothing, once per (a, b) instead of once per block).
+// The nonzero u_ab(p) / sum w^2, grouped by (a, b = a + m): terms of one group are consecutive, p
+// ascending; groups in a-major, m-minor order.
+struct WelchBlockTerms {
+  struct Term {
+    std::size_t group, block;
+    double u;
+  };
+  std::vector<Term> terms;
+  std::vector<std::size_t> group_m;  // m = b - a of each group
+  std::size_t segments = 0;          // N_B
+};
+WelchBlockTerms welch_block_terms(const WelchPlan& plan, std::size_t n, const std::vector<std::size_t>& edges);
+// nu per bin from the grouped cross-spectra grouped[(g * pairs + q) * bins + k] = C_ab^q[k] of group g.
+std::vector<double> welch_group_dof(const WelchBlockTerms& t, std::size_t channels, std::size_t bins,
+                                    const std::vector<std::complex<double>>& grouped);
+
 }  // namespace rollspec::spectral
