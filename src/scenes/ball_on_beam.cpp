@@ -106,22 +106,12 @@ class BallOnBeam final : public Scene {
                    : b_.path_law() ? "path law: P(delta, xi) from the path table"
                                    : "hertz law: analytic, needs no table"}});
     if (blocked_solver()) {
-      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
-      const double weight = b_.weight();
       // The strip's grid: the study's keys where set, else derived from the contact radius and the
       // texture; the path step at most v / f_s so F0 reaches the output's Nyquist frequency.
-      const stiffness::BlockedForceGeometry grid =
-          stiffness::blocked_force_geometry(s, radius, e_star, weight, b_.model.traverse.speed / b_.model.sample_rate);
-      add_stage(std::make_unique<TableStage>(
-          "blocked_force", stiffness::blocked_force_cached_table(s, grid, radius, e_star, weight),
-          [] { return std::make_unique<stiffness::BlockedForceTable>(); },
-          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
-            static_cast<stiffness::BlockedForceTable&>(out) = stiffness::build_blocked_force(s, grid, radius, e_star, weight, quiet);
-          },
-          [this](const stiffness::TableData& b, const std::string& status, bool quiet) {
-            use_blocked_force(static_cast<const stiffness::BlockedForceTable&>(b), status, quiet);
-          },
-          grid.describe()));
+      const stiffness::BlockedForceGeometry grid = stiffness::blocked_force_geometry(
+          s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(), b_.model.traverse.speed / b_.model.sample_rate);
+      add_contact_table_stage("blocked_force", s, grid, &stiffness::blocked_force_cached_table, &stiffness::build_blocked_force,
+                              &BallOnBeam::use_blocked_force, grid.describe());
     } else {
       add_stages({{"blocked_force", linearised() ? StageStatus::run : StageStatus::skipped,
                    linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
@@ -129,56 +119,26 @@ class BallOnBeam final : public Scene {
     }
     if (solver_filter() && b_.strip_line) {
       // line = strip: h_eq of strip 0 on the path table's grid and positions (the strip law = path uses).
-      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
-      const double weight = b_.weight();
-      const stiffness::PathTableGeometry grid = stiffness::path_table_geometry(
-          s, radius, e_star, weight, b_.model.traverse.x_end - b_.model.traverse.x_start);
-      add_stage(std::make_unique<TableStage>(
-          "equivalent_roughness", stiffness::strip_equivalent_roughness_cached_table(s, grid, radius, e_star, weight),
-          [] { return std::make_unique<stiffness::EquivalentRoughnessTable>(); },
-          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
-            static_cast<stiffness::EquivalentRoughnessTable&>(out) =
-                stiffness::build_strip_equivalent_roughness(s, grid, radius, e_star, weight, quiet);
-          },
-          [this](const stiffness::TableData& er, const std::string& status, bool quiet) {
-            use_strip_equivalent_roughness(static_cast<const stiffness::EquivalentRoughnessTable&>(er), status, quiet);
-          },
-          stiffness::strip_equivalent_roughness_describe(grid)));
+      const stiffness::PathTableGeometry grid = path_grid(s);
+      add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::strip_equivalent_roughness_cached_table,
+                              &stiffness::build_strip_equivalent_roughness, &BallOnBeam::use_strip_equivalent_roughness,
+                              stiffness::strip_equivalent_roughness_describe(grid));
     } else if (solver_filter()) {
       // filter = solver (kernels/contact ER-1..ER-6): h_eq on the blocked-force grid, the path step
       // at most v / f_s so the h_eq PSD reaches the band limit (B40).
-      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
-      const double weight = b_.weight();
-      const stiffness::BlockedForceGeometry grid =
-          stiffness::blocked_force_geometry(s, radius, e_star, weight, b_.model.traverse.speed / b_.model.sample_rate);
-      add_stage(std::make_unique<TableStage>(
-          "equivalent_roughness", stiffness::equivalent_roughness_cached_table(s, grid, radius, e_star, weight),
-          [] { return std::make_unique<stiffness::EquivalentRoughnessTable>(); },
-          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
-            static_cast<stiffness::EquivalentRoughnessTable&>(out) =
-                stiffness::build_equivalent_roughness(s, grid, radius, e_star, weight, quiet);
-          },
-          [this](const stiffness::TableData& er, const std::string& status, bool quiet) {
-            use_equivalent_roughness(static_cast<const stiffness::EquivalentRoughnessTable&>(er), status, quiet);
-          },
-          stiffness::equivalent_roughness_describe(s, grid)));
+      const stiffness::BlockedForceGeometry grid = stiffness::blocked_force_geometry(
+          s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(), b_.model.traverse.speed / b_.model.sample_rate);
+      add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::equivalent_roughness_cached_table,
+                              &stiffness::build_equivalent_roughness, &BallOnBeam::use_equivalent_roughness,
+                              stiffness::equivalent_roughness_describe(s, grid));
     }
     if (b_.path_law()) {
       // law = path (kernels/beam B41-B46): P(delta, xi) of strip 0 along the ball's whole path.
-      const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
-      const double weight = b_.weight();
-      const stiffness::PathTableGeometry grid = stiffness::path_table_geometry(
-          s, radius, e_star, weight, b_.model.traverse.x_end - b_.model.traverse.x_start);
-      add_stage(std::make_unique<TableStage>(
-          "path_table", stiffness::path_cached_table(s, grid, radius, e_star, weight),
-          [] { return std::make_unique<stiffness::PathTableData>(); },
-          [&s, grid, radius, e_star, weight](stiffness::TableData& out, bool quiet) {
-            static_cast<stiffness::PathTableData&>(out) = stiffness::build_path_table(s, grid, radius, e_star, weight, quiet);
-          },
-          [this](const stiffness::TableData& table_data, const std::string& status, bool quiet) {
-            use_path_table(static_cast<const stiffness::PathTableData&>(table_data), status, quiet);
-          },
-          grid.describe() + "; every realisation rolls over this one strip (nothing else is random: K > 1 repeats the same run)"));
+      const stiffness::PathTableGeometry grid = path_grid(s);
+      add_contact_table_stage("path_table", s, grid, &stiffness::path_cached_table, &stiffness::build_path_table,
+                              &BallOnBeam::use_path_table,
+                              grid.describe() + "; every realisation rolls over this one strip (nothing else is random: K > 1 "
+                                                "repeats the same run)");
     }
     add_stages({{"dynamics", StageStatus::run, b_.dopri ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
                 {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
@@ -187,6 +147,31 @@ class BallOnBeam final : public Scene {
                  : b_.reference ? "frequency-domain PSD of the linearised model, its expected Welch estimate and the "
                                   "range of the ensemble mean, once after the ensemble"
                                 : "[output] reference = false"}});
+  }
+
+  // The path table's grid along the ball's whole path (law = path, and line = strip on its grid).
+  stiffness::PathTableGeometry path_grid(const Study& s) const {
+    return stiffness::path_table_geometry(s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(),
+                                          b_.model.traverse.x_end - b_.model.traverse.x_start);
+  }
+
+  // A cached table of strip 0 that the contact law takes: its file and hash from (study, grid, R, E*,
+  // W), built from the same, completed by a use_* member.
+  template <class Table, class Grid>
+  void add_contact_table_stage(const char* name, const Study& s, const Grid& grid,
+                               stiffness::CachedTable (*cached)(const Study&, const Grid&, double, double, double),
+                               Table (*build)(const Study&, const Grid&, double, double, double, bool),
+                               void (BallOnBeam::*use)(const Table&, const std::string&, bool), std::string detail) {
+    const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus, weight = b_.weight();
+    add_stage(std::make_unique<TableStage>(
+        name, cached(s, grid, radius, e_star, weight), [] { return std::make_unique<Table>(); },
+        [&s, grid, radius, e_star, weight, build](stiffness::TableData& out, bool quiet) {
+          static_cast<Table&>(out) = build(s, grid, radius, e_star, weight, quiet);
+        },
+        [this, use](const stiffness::TableData& t, const std::string& status, bool quiet) {
+          (this->*use)(static_cast<const Table&>(t), status, quiet);
+        },
+        std::move(detail)));
   }
 
   void prepare(bool quiet, bool rebuild) override {
