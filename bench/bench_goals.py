@@ -9,7 +9,7 @@ README's goals table, so no figure there is typed by hand.
 
 `measure` runs the chosen goals, replaces their entries in goals.json (each with the date, the commit,
 whether the tree had changes, and the load average before and after), then rewrites the table.
-Goals needing the previous build (3's and 4's ratios) skip those ratios without --base.
+Goals needing the previous build (1's reference ratio, 3's and 4's ratios) skip those ratios without --base.
 
   1  seed 002 rig, 1000 realisations, whole `rollspec run`: <= 2.0 s on 2 cores, efficiency >= 0.9
      (bench/engine/bench_whole_run.py)
@@ -49,12 +49,18 @@ def commit():
 def goal_1(a):
     import bench_whole_run
     K = 1000
+    base = need(Path(a.base) / "rollspec", "build the rollspec target of the previous build") if a.base else None
     med = bench_whole_run.measure(need(Path(a.bin) / "rollspec", "build the rollspec target"), str(ROOT / "studies" / "seed002-rig-1ms.ini"), K,
-                                  a.repeats)
+                                  a.repeats, baseline=base)
     t1, t2 = med[f"{K} realisations, 1 thread"][0], med[f"{K} realisations, 2 threads"][0]
-    return {"wall_2_threads": t2, "wall_1_thread": t1, "efficiency": t1 / (2 * t2),
-            "one_realisation": med["1 realisation, 2 threads"][0],
-            "no_reference_2_threads": med[f"{K} realisations, 2 threads, no reference"][0]}
+    out = {"wall_2_threads": t2, "wall_1_thread": t1, "efficiency": t1 / (2 * t2),
+           "one_realisation": med["1 realisation, 2 threads"][0],
+           "no_reference_2_threads": med[f"{K} realisations, 2 threads, no reference"][0],
+           "reference_wall": bench_whole_run.reference_cost(med)[0],
+           "reference_cpu": bench_whole_run.reference_cost(med)[1]}
+    if base:
+        out["previous_reference_cpu"] = bench_whole_run.reference_cost(med, ": previous build")[1]
+    return out
 
 
 def goal_2(a):
@@ -128,7 +134,11 @@ def rows(results):
         out.append(("1. seed 002, 1000 realisations, whole `rollspec run`: ≤ 2.0 s on 2 cores, efficiency ≥ 0.9",
                     f"{m['wall_2_threads']:.2f} s on 2 threads, {m['wall_1_thread']:.2f} s on 1 (efficiency "
                     f"{m['efficiency']:.2f}); {m['no_reference_2_threads']:.2f} s without the reference; 1 realisation "
-                    f"{m['one_realisation']:.2f} s",
+                    f"{m['one_realisation']:.2f} s" + (
+                        f"; the reference {m['reference_wall']:.2f} s wall, {m['reference_cpu']:.2f} s CPU"
+                        if "reference_cpu" in m else "") + (
+                        f" ({m['previous_reference_cpu'] / m['reference_cpu']:.1f}× less CPU than the previous build's)"
+                        if "previous_reference_cpu" in m else ""),
                     mark(m["wall_2_threads"] <= 2.0 and m["efficiency"] >= 0.9), when(r)))
     if "2" in results:
         r = results["2"]
@@ -190,7 +200,7 @@ def main():
     ap.add_argument("action", choices=["measure", "table"])
     ap.add_argument("--goals", default="1,2,3,4,5")
     ap.add_argument("--bin", default=str(ROOT / "build" / "release"), help="build directory measured")
-    ap.add_argument("--base", help="previous build directory, for the ratios of goals 3 and 4")
+    ap.add_argument("--base", help="previous build directory, for the ratios of goals 1 (the reference), 3 and 4")
     ap.add_argument("--repeats", type=int, default=3)
     a = ap.parse_args()
     results = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}

@@ -41,6 +41,8 @@ def measure(binary, study, K, repeats, baseline=None, only_baseline=False):
         base = [binary, "run", study, "--out", out, "--force", "--quiet"]
         cases = {} if only_baseline else {
             "1 realisation, 2 threads": (base + ["--set", "study.realisations=1"], 2),
+            "1 realisation, 2 threads, no reference": (base + ["--set", "study.realisations=1", "--set",
+                                                               "output.reference=false"], 2),
             f"{K} realisations, 1 thread": (base + ["--set", f"study.realisations={K}"], 1),
             f"{K} realisations, 2 threads": (base + ["--set", f"study.realisations={K}"], 2),
             f"{K} realisations, 2 threads, no reference": (
@@ -51,6 +53,11 @@ def measure(binary, study, K, repeats, baseline=None, only_baseline=False):
             cases[f"{K} realisations, 1 thread, no reference: this build"] = (base + pair, 1)
             cases[f"{K} realisations, 1 thread, no reference: previous build"] = (
                 [baseline, "run", study, "--out", out, "--force", "--quiet"] + pair, 1)
+            if not only_baseline:  # the reference's own cost in the previous build: 1 realisation with and without
+                prev = [baseline, "run", study, "--out", out, "--force", "--quiet", "--set", "study.realisations=1"]
+                cases["1 realisation, 2 threads: previous build"] = (prev, 2)
+                cases["1 realisation, 2 threads, no reference: previous build"] = (
+                    prev + ["--set", "output.reference=false"], 2)
         runs = {name: [] for name in cases}
         for _ in range(repeats):
             for name, (cmd, threads) in cases.items():
@@ -86,6 +93,16 @@ def main():
         return
     t1, t2 = med[f"{K} realisations, 1 thread"][0], med[f"{K} realisations, 2 threads"][0]
     print(f"\nparallel efficiency of the whole command: {t1 / (2 * t2):.2f}")
+    for build, suffix in (("this build", ""), ("previous build", ": previous build")):
+        if f"1 realisation, 2 threads{suffix}" in med:
+            w, c = reference_cost(med, suffix)
+            print(f"the reference, {build} (1 realisation with it minus without): {w:.3f} s wall, {c:.3f} s CPU")
+
+
+def reference_cost(med, suffix=""):
+    """(wall, CPU) of the reference: the 1-realisation run with it minus the same without it."""
+    a, b = med[f"1 realisation, 2 threads{suffix}"], med[f"1 realisation, 2 threads, no reference{suffix}"]
+    return a[0] - b[0], a[1] - b[1]
 
 
 if __name__ == "__main__":
