@@ -82,7 +82,11 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepO
   rate_comp_.resize(steps_ + 1);
   conv_comp_.resize(steps_ + 1);
   residual_.resize(steps_ + 1);
+  // Positions are independent: the same bits on any thread count.
+#pragma omp parallel
+  {
   std::vector<double> phi(n), slope(n);
+#pragma omp for schedule(static)
   for (long k = 0; k <= steps_; ++k) {
     const double x = position(k);
     b.shapes(x, phi.data(), slope.data());
@@ -95,6 +99,7 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepO
     for (int i = 0; i < n; ++i) modal += phi[i] * phi[i] / (m * b.omega(i) * b.omega(i));
     residual_[k] = b.static_correction() ? b.static_flexibility(x, x) - modal : 0.0;
     compliance(phi.data(), slope.data(), residual_[k], coef_, ball_, comp_[k], rate_comp_[k], conv_comp_[k]);
+  }
   }
   if (table) {
     fold_w_.resize(steps_);

@@ -56,7 +56,11 @@ IsotropicPsd::IsotropicPsd(const Psd& g, double q_min, double q_cap, std::size_t
   jump_ = g_.back();  // G drops to 0 above q_e
   s_.assign(q_.size(), 0.0);
   std::size_t clamped = 0;
-  for (std::size_t i = 0; i + 1 < q_.size(); ++i) {
+  // Each node's integral is independent (the same bits on any thread count); the work shrinks with i.
+  const auto nodes = static_cast<std::ptrdiff_t>(q_.size() - 1);
+#pragma omp parallel for schedule(dynamic, 8) reduction(+ : clamped)
+  for (std::ptrdiff_t ii = 0; ii < nodes; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
     const double r = q_[i];
     double acc = 0.0;
     for (std::size_t c = i; c + 1 < q_.size(); ++c) {
