@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -93,6 +94,30 @@ void previous_synthesis(const rollspec::spectral::HarmonicSynthesiser& s, fftw_p
   std::copy(buf.data(), buf.data() + n, out);
 }
 
+// Medians of per-call times (seconds) of each of `timed`, called in turn (A, B, C, A, B, C, ...)
+// for >= `budget` seconds in all and >= 5 rounds, so a change of machine load during the run
+// reaches every column alike; `untimed[i]` runs before timed[i] outside the clock.
+std::vector<double> interleaved_medians(const std::vector<std::function<void()>>& timed,
+                                        const std::vector<std::function<void()>>& untimed, double budget) {
+  std::vector<std::vector<double>> t(timed.size());
+  double total = 0.0;
+  while (total < budget || t[0].size() < 5) {
+    for (std::size_t i = 0; i < timed.size(); ++i) {
+      untimed[i]();
+      const auto t0 = Clock::now();
+      timed[i]();
+      t[i].push_back(seconds_since(t0));
+      total += t[i].back();
+    }
+  }
+  std::vector<double> medians;
+  for (auto& v : t) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    medians.push_back(v[v.size() / 2]);
+  }
+  return medians;
+}
+
 // Goal 5 table: per size, c2r floor, synthesis, ratio, the previous synthesis, and the Philox draws.
 void synthesis_against_floor(double budget) {
   using namespace rollspec;
@@ -112,9 +137,6 @@ void synthesis_against_floor(double budget) {
     for (std::size_t j = 0; j < nh; ++j) saved[j][0] = z(mt), saved[j][1] = z(mt);
     const spectral::FftwPlan plan(
         [&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n), spec.data(), real.data(), FFTW_ESTIMATE); }, "bench c2r");
-    const double c2r = median_call([&] { fftw_execute_dft_c2r(plan.get(), spec.data(), real.data()); },
-                                   [&] { std::memcpy(spec.data(), saved.data(), nh * sizeof(spectral::FftwComplex)); },
-                                   budget / 2);
     // Synthesis: one realisation into an aligned output, scratch reused (as the engine does).
     const LineTextureGenerator gen(line.to_psd(), LineTextureSpec{n, dx, 0, Amplitudes::rayleigh, false});
     std::vector<double> up(gen.harmonics()), ua(gen.harmonics());
@@ -122,11 +144,14 @@ void synthesis_against_floor(double budget) {
     rng::PhiloxStream(1, 0, rng::Stream::roughness_amplitude).uniform_open(ua.data(), ua.size());
     SynthesisScratch scratch = gen.make_scratch();
     spectral::RealBuffer out(n);
-    const double synth = median_call([&] { gen.generate(up.data(), ua.data(), out.data(), scratch); }, [] {}, budget / 2);
     const spectral::HarmonicSynthesiser old(n);
-    const double previous = median_call(
-        [&] { previous_synthesis(old, plan.get(), gen.target_psd(), gen.fundamental(), up.data(), ua.data(), out.data()); },
-        [] {}, budget / 2);
+    // c2r, synthesis and the previous synthesis in turn, call by call (medians of each).
+    const std::vector<double> m = interleaved_medians(
+        {[&] { fftw_execute_dft_c2r(plan.get(), spec.data(), real.data()); },
+         [&] { gen.generate(up.data(), ua.data(), out.data(), scratch); },
+         [&] { previous_synthesis(old, plan.get(), gen.target_psd(), gen.fundamental(), up.data(), ua.data(), out.data()); }},
+        {[&] { std::memcpy(spec.data(), saved.data(), nh * sizeof(spectral::FftwComplex)); }, [] {}, [] {}}, 1.5 * budget);
+    const double c2r = m[0], synth = m[1], previous = m[2];
     std::uint64_t id = 0;
     const double draws = median_call(
         [&] {
