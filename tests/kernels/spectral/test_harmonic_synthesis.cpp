@@ -117,7 +117,7 @@ TEST_CASE("the eight-lane (AVX-512F) spectrum fill gives the scalar form's bits"
 }
 
 TEST_CASE("the eight-lane fill gives the scalar form's bits at phase ties, log-bin edges and u -> 1") {
-  // The fill takes 24 harmonics a step (three interleaved groups), then eight; k = trunc(1024 v + 1/2)
+  // The fill takes 16 harmonics a step (two interleaved groups), then eight; k = trunc(1024 v + 1/2)
   // comes from a fused multiply-add and a round-down add, e + 1 ln2_hi + ln(c/2) from a fused
   // multiply-add: exact steps, so every bit (signs of zero included) must equal the scalar form's.
   using namespace rollspec::spectral;
