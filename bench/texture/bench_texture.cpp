@@ -96,13 +96,13 @@ void previous_synthesis(const rollspec::spectral::HarmonicSynthesiser& s, fftw_p
 }
 
 // Medians of per-call times (seconds) of each of `timed`, called in turn (A, B, A, B, ...)
-// for >= `budget` seconds in all and >= 5 rounds, so a change of machine load during the run
+// for >= `budget` seconds in all and >= 9 rounds, so a change of machine load during the run
 // reaches every column alike; `untimed[i]` runs before timed[i] outside the clock.
 std::vector<double> interleaved_medians(const std::vector<std::function<void()>>& timed,
                                         const std::vector<std::function<void()>>& untimed, double budget) {
   std::vector<std::vector<double>> t(timed.size());
   double total = 0.0;
-  while (total < budget || t[0].size() < 5) {
+  while (total < budget || t[0].size() < 9) {  // 2^22: ~0.3 s a round
     for (std::size_t i = 0; i < timed.size(); ++i) {
       untimed[i]();
       const auto t0 = Clock::now();
