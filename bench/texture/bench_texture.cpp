@@ -7,7 +7,8 @@
 // 2^12, 2^16, 2^20 and 2^22 samples, the time of one realisation (the generator's generate() with
 // a reused SynthesisScratch: spectrum from the U(0,1) arrays, then the inverse FFT) against a bare
 // FFTW c2r of the same length (the same FFTW_ESTIMATE plan on fftw_malloc buffers, the spectrum
-// restored untimed before each call, only fftw_execute timed); ratio = synthesis / c2r (goal <= 2).
+// restored untimed before each call, only fftw_execute timed), the two timed call by call in turn
+// so that a change of machine load reaches both; ratio = synthesis / c2r (goal <= 2).
 // previous = the synthesis as it was (libm per harmonic, buffers per call), same c2r plan.
 // Also the engine's two Philox draws per harmonic (not part of the kernel), for the whole cost.
 //
@@ -21,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -93,6 +95,30 @@ void previous_synthesis(const rollspec::spectral::HarmonicSynthesiser& s, fftw_p
   std::copy(buf.data(), buf.data() + n, out);
 }
 
+// Medians of per-call times (seconds) of each of `timed`, called in turn (A, B, A, B, ...)
+// for >= `budget` seconds in all and >= 9 rounds, so a change of machine load during the run
+// reaches every column alike; `untimed[i]` runs before timed[i] outside the clock.
+std::vector<double> interleaved_medians(const std::vector<std::function<void()>>& timed,
+                                        const std::vector<std::function<void()>>& untimed, double budget) {
+  std::vector<std::vector<double>> t(timed.size());
+  double total = 0.0;
+  while (total < budget || t[0].size() < 9) {  // 2^22: ~0.3 s a round
+    for (std::size_t i = 0; i < timed.size(); ++i) {
+      untimed[i]();
+      const auto t0 = Clock::now();
+      timed[i]();
+      t[i].push_back(seconds_since(t0));
+      total += t[i].back();
+    }
+  }
+  std::vector<double> medians;
+  for (auto& v : t) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    medians.push_back(v[v.size() / 2]);
+  }
+  return medians;
+}
+
 // Goal 5 table: per size, c2r floor, synthesis, ratio, the previous synthesis, and the Philox draws.
 void synthesis_against_floor(double budget) {
   using namespace rollspec;
@@ -112,9 +138,6 @@ void synthesis_against_floor(double budget) {
     for (std::size_t j = 0; j < nh; ++j) saved[j][0] = z(mt), saved[j][1] = z(mt);
     const spectral::FftwPlan plan(
         [&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n), spec.data(), real.data(), FFTW_ESTIMATE); }, "bench c2r");
-    const double c2r = median_call([&] { fftw_execute_dft_c2r(plan.get(), spec.data(), real.data()); },
-                                   [&] { std::memcpy(spec.data(), saved.data(), nh * sizeof(spectral::FftwComplex)); },
-                                   budget / 2);
     // Synthesis: one realisation into an aligned output, scratch reused (as the engine does).
     const LineTextureGenerator gen(line.to_psd(), LineTextureSpec{n, dx, 0, Amplitudes::rayleigh, false});
     std::vector<double> up(gen.harmonics()), ua(gen.harmonics());
@@ -122,8 +145,13 @@ void synthesis_against_floor(double budget) {
     rng::PhiloxStream(1, 0, rng::Stream::roughness_amplitude).uniform_open(ua.data(), ua.size());
     SynthesisScratch scratch = gen.make_scratch();
     spectral::RealBuffer out(n);
-    const double synth = median_call([&] { gen.generate(up.data(), ua.data(), out.data(), scratch); }, [] {}, budget / 2);
     const spectral::HarmonicSynthesiser old(n);
+    // c2r and synthesis in turn, call by call (medians of each); the slow previous path after.
+    const std::vector<double> m = interleaved_medians(
+        {[&] { fftw_execute_dft_c2r(plan.get(), spec.data(), real.data()); },
+         [&] { gen.generate(up.data(), ua.data(), out.data(), scratch); }},
+        {[&] { std::memcpy(spec.data(), saved.data(), nh * sizeof(spectral::FftwComplex)); }, [] {}}, budget);
+    const double c2r = m[0], synth = m[1];
     const double previous = median_call(
         [&] { previous_synthesis(old, plan.get(), gen.target_psd(), gen.fundamental(), up.data(), ua.data(), out.data()); },
         [] {}, budget / 2);

@@ -4,8 +4,8 @@
 // 2^-8 (log) or 2^-10 (phase) steps, computed once, and a short polynomial for the remainder
 // (kernels/spectral/README.md D-24, D-25). Plain +, -, *, / and one table load each: no branch, no
 // fused multiply-add (the build targets baseline x86-64, and the AVX2 forms do not enable FMA), so
-// the scalar, SSE2 and AVX2 forms, and the AVX-512F ones (tabulated_math_avx512.hpp), give the same
-// bits on every machine. Accuracy, checked against
+// the scalar, SSE2 and AVX2 forms, and the AVX-512F ones (tabulated_math_avx512.hpp; fused only
+// where a product is exact, which rounds the same), give the same bits on every machine. Accuracy, checked against
 // long-double libm in the tests: -ln u within 2 ulp of the value, cos and sin within 1 ulp of 1.
 #include <cstddef>
 #include <cstdint>

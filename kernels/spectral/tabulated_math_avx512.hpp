@@ -3,7 +3,9 @@
 // that report AVX-512F at run time (the build targets baseline x86-64). Each lane performs the
 // scalar form's IEEE operations in the scalar form's order (tabulated_math.hpp), so the bits are
 // the same on every machine; only the table look-ups and lane shuffles differ. The source file is
-// compiled with -ffp-contract=off: AVX-512F has fused multiply-add, which would change the bits.
+// compiled with -ffp-contract=off: AVX-512F has fused multiply-add, which would change the bits
+// where the compiler chose it. It is written out only where the product is exact (e + 1 times
+// ln2_hi, 1024 v), so that it rounds once, as the scalar form's product-then-sum does.
 #include <cstddef>
 
 #include "kernels/spectral/fftw_handles.hpp"

@@ -1,7 +1,9 @@
 // Spectral-representation synthesis (D-3): FFT path against the direct cosine sum, exact power.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -111,5 +113,58 @@ TEST_CASE("the eight-lane (AVX-512F) spectrum fill gives the scalar form's bits"
     }
     CHECK(mismatches == 0);
     CHECK(spec[done][0] == -1.0);  // nothing written past the last full step
+  }
+}
+
+TEST_CASE("the eight-lane fill gives the scalar form's bits at phase ties, log-bin edges and u -> 1") {
+  // The fill takes 16 harmonics a step (two interleaved groups), then eight; k = trunc(1024 v + 1/2)
+  // comes from a fused multiply-add and a round-down add, e + 1 ln2_hi + ln(c/2) from a fused
+  // multiply-add: exact steps, so every bit (signs of zero included) must equal the scalar form's.
+  using namespace rollspec::spectral;
+  if (!cpu_has_avx512f()) {
+    MESSAGE("no AVX-512F on this CPU: eight-lane fill not checked");
+    return;
+  }
+  const TabulatedMath& t = tabulated_math();
+  std::vector<double> up, ua;
+  for (int k = 0; k <= 1024; ++k) {
+    const double tie = (k + 0.5) / 1024.0, step = k / 1024.0;  // 1024 v + 1/2 an integer; a table point
+    for (double v : {tie, std::nextafter(tie, 0.0), std::nextafter(tie, 2.0), step, std::nextafter(step, 2.0)})
+      if (v <= 1.0) up.push_back(v);
+  }
+  up.push_back(0.0);
+  up.push_back(5e-324);
+  for (int i = 0; i < 256; ++i)
+    for (int e : {-1, -2, -40, -1000}) {
+      const double edge = std::ldexp(1.0 + i / 256.0, e);
+      for (double u : {edge, std::nextafter(edge, 0.0), std::nextafter(edge, 1.0)})
+        if (u < 1.0) ua.push_back(u);
+    }
+  for (int i = 1; i < 64; ++i) ua.push_back(1.0 - i * 0x1p-53);
+  const std::size_t nh = std::max(up.size(), ua.size()) + 2;
+  std::vector<double> h(nh);
+  std::mt19937_64 gen(19);
+  std::uniform_real_distribution<double> unit(1e-300, 1.0);
+  for (std::size_t j = 0; j < nh; ++j) h[j] = unit(gen);
+  up.resize(nh, 0.25);
+  ua.resize(nh, 0.5);
+  std::shuffle(ua.begin(), ua.end(), gen);  // every phase meets many amplitudes
+  for (bool rayleigh : {true, false}) {
+    ComplexBuffer spec(nh);
+    const std::size_t done = fill_spectrum_avx512(1, nh - 1, h.data(), rayleigh, up.data(), ua.data(), t, spec.data());
+    CHECK(done == 1 + (nh - 2) / 8 * 8);
+    std::size_t mismatches = 0;
+    for (std::size_t j = 1; j < done; ++j) {
+      double a = h[j];
+      if (rayleigh) {
+        const double l = neg_log_open(ua[j], t);
+        a *= std::sqrt(l > 0.0 ? l : 0.0);
+      }
+      double c, s;
+      sincos_two_pi(up[j], t, c, s);
+      const double want[2] = {a * c, a * s};
+      mismatches += std::memcmp(spec[j], want, sizeof want) != 0;
+    }
+    CHECK(mismatches == 0);
   }
 }
