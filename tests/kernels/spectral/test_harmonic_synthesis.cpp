@@ -1,6 +1,8 @@
 // Spectral-representation synthesis (D-3): FFT path against the direct cosine sum, exact power.
 #include <doctest/doctest.h>
 
+#include <array>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -83,6 +85,22 @@ TEST_CASE("tabulated path: one scratch for many realisations; aligned and unalig
   CHECK_THROWS_AS(s.synthesise(h.data(), Amplitudes::rayleigh, up.data(), ua.data(), x.data(), wrong), std::invalid_argument);
 }
 
+namespace {
+// One harmonic as the scalar fill writes it (kernels/spectral harmonic_synthesis.cpp): the form the
+// vector fills must match bit for bit.
+std::array<double, 2> scalar_harmonic(double h, bool rayleigh, double up, double ua,
+                                      const rollspec::spectral::TabulatedMath& t) {
+  double a = h;
+  if (rayleigh) {
+    const double l = rollspec::spectral::neg_log_open(ua, t);
+    a *= std::sqrt(l > 0.0 ? l : 0.0);
+  }
+  double c, s;
+  rollspec::spectral::sincos_two_pi(up, t, c, s);
+  return {a * c, a * s};
+}
+}  // namespace
+
 TEST_CASE("the eight-lane (AVX-512F) spectrum fill gives the scalar form's bits") {
   using namespace rollspec::spectral;
   if (!cpu_has_avx512f()) {
@@ -102,14 +120,8 @@ TEST_CASE("the eight-lane (AVX-512F) spectrum fill gives the scalar form's bits"
     CHECK(done == 3 + (nh - 1 - 3) / 8 * 8);
     std::size_t mismatches = 0;
     for (std::size_t j = 3; j < done; ++j) {
-      double a = h[j];
-      if (rayleigh) {
-        const double l = neg_log_open(ua[j], t);
-        a *= std::sqrt(l > 0.0 ? l : 0.0);
-      }
-      double c, s;
-      sincos_two_pi(up[j], t, c, s);
-      mismatches += (spec[j][0] != a * c) + (spec[j][1] != a * s);
+      const auto want = scalar_harmonic(h[j], rayleigh, up[j], ua[j], t);
+      mismatches += (spec[j][0] != want[0]) + (spec[j][1] != want[1]);
     }
     CHECK(mismatches == 0);
     CHECK(spec[done][0] == -1.0);  // nothing written past the last full step
@@ -155,15 +167,8 @@ TEST_CASE("the eight-lane fill gives the scalar form's bits at phase ties, log-b
     CHECK(done == 1 + (nh - 2) / 8 * 8);
     std::size_t mismatches = 0;
     for (std::size_t j = 1; j < done; ++j) {
-      double a = h[j];
-      if (rayleigh) {
-        const double l = neg_log_open(ua[j], t);
-        a *= std::sqrt(l > 0.0 ? l : 0.0);
-      }
-      double c, s;
-      sincos_two_pi(up[j], t, c, s);
-      const double want[2] = {a * c, a * s};
-      mismatches += std::memcmp(spec[j], want, sizeof want) != 0;
+      const auto want = scalar_harmonic(h[j], rayleigh, up[j], ua[j], t);
+      mismatches += std::memcmp(spec[j], want.data(), sizeof(double) * 2) != 0;
     }
     CHECK(mismatches == 0);
   }
