@@ -1,9 +1,8 @@
 // Spectral-representation synthesis (D-3): FFT path against the direct cosine sum, exact power.
 #include <doctest/doctest.h>
 
-#include <array>
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
