@@ -74,6 +74,16 @@ void BandSink::add_dense(const int* dofs, int m, const double* K) {
       hi = std::max(hi, e[i]);
     }
   }
+  bool run = true;  // free equations e[0], e[0] + 1, ...: whole columns of the block at once
+  for (int i = 0; i < m; ++i) run = run && e[i] == e[0] + i;
+  if (run && lu->in_band(lo, hi) && lu->in_band(hi, lo)) {
+    for (int j = 0; j < m; ++j) {
+      double* col = lu->column(e[j]) + e[0];
+      const double* k = K + m * j;
+      for (int i = 0; i < m; ++i) col[i] += k[i];
+    }
+    return;
+  }
   for (int j = 0; j < m; ++j) {
     const int c = e[j];
     if (c < 0) continue;
@@ -177,10 +187,10 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
       for (int i = 0; i < 6; ++i) dofs[6 * k + i] = 6 * nd + i;
     }
     // stiffness (reduced 2-point Gauss)
-    const BeamElementEval ev = beam_element_internal(sec, s.points.stiffness[e], x, a, K && !mass_matrix);
+    BeamElementEval ev = beam_element_internal(sec, s.points.stiffness[e], x, a, K && !mass_matrix);
     for (int k = 0; k < 18; ++k) R(dofs[k]) += ev.force(k);
-    Eigen::Matrix<double, 18, 18> Ke = Eigen::Matrix<double, 18, 18>::Zero();
-    if (!mass_matrix) Ke = ev.tangent;
+    // the element's tangent block (zero for the mass matrix); untouched without K
+    Eigen::Matrix<double, 18, 18>& Ke = ev.tangent;
     // mass, rotary inertia and gravity (3-point Gauss, exact for the consistent mass)
     const Matrix3d Js = section_inertia(sec);
     for (const MassPoint& p : s.points.mass[e]) {
@@ -198,7 +208,8 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
         for (int k = 0; k < 3; ++k) {
           R.segment<3>(dofs[6 * k]) += N[k] * w * sec.rhoA * ag;
           R.segment<3>(dofs[6 * k + 3]) += N[k] * w * ri.residual;
-          for (int l = 0; l < 3; ++l) {
+          if (K)
+            for (int l = 0; l < 3; ++l) {
             Ke.block<3, 3>(6 * k, 6 * l).diagonal().array() += N[k] * N[l] * w * sec.rhoA * c2;
             Ke.block<3, 3>(6 * k + 3, 6 * l + 3) += N[k] * N[l] * w * ri.tangent;
           }

@@ -38,6 +38,9 @@ class ContactSet::Pair {
   virtual void assemble(const NodeState& n, const Vector3d& du, const Vector3d& alpha, double dt, const TimeRule& rule,
                         bool mass_matrix, VectorXd& R, Sink* K) = 0;
   virtual bool found() const { return true; }
+  // Back to the state before the last assemble, so that assembling the same iterate again gives
+  // the same bits (the closest-point search of a surface pair starts from its last point).
+  virtual void rewind() {}
   // Everything of the commit but active, g_n and penalty, which the set writes for both kinds.
   virtual void commit(const Vector3d& du, const Vector3d& alpha, const TimeRule& rule, Totals& totals) = 0;
 
@@ -136,9 +139,14 @@ class SurfacePair final : public ContactSet::Pair {
 
   void assemble(const NodeState& n, const Vector3d& du, const Vector3d& alpha, double dt, const TimeRule& rule,
                 bool mass_matrix, VectorXd& R, Sink* K) override {
-    ev_ = evaluate_surface_contact(field_, law_, n.x + du, has_start_ ? &start_ : nullptr);
+    had_start_ = has_start_;
+    start_before_ = start_;
+    start_sample_before_ = start_sample_;
+    ev_ = evaluate_surface_contact(field_, law_, n.x + du, has_start_ ? &start_ : nullptr,
+                                   has_start_ ? &start_sample_ : nullptr);
     has_start_ = ev_.converged;  // the next evaluation starts from this closest point
     start_ = ev_.s;
+    start_sample_ = ev_.sample;  // ... and its height sample
     active = ev_.active;
     g_n = ev_.g_n;
     if (law_.damping > 0.0 && !mass_matrix && rule.contact_dampers()) {
@@ -170,6 +178,12 @@ class SurfacePair final : public ContactSet::Pair {
 
   bool found() const override { return ev_.converged; }
 
+  void rewind() override {
+    has_start_ = had_start_;
+    start_ = start_before_;
+    start_sample_ = start_sample_before_;
+  }
+
   void commit(const Vector3d& du, const Vector3d& alpha, const TimeRule&, Totals& t) override {
     if (law_.mu > 0.0) {  // friction: works and history as the plane pairs, trapezoidal
       t.acc.friction_dissipation += fe_.dissipation;
@@ -198,6 +212,9 @@ class SurfacePair final : public ContactSet::Pair {
   ContactEval fe_;  // friction part (mu > 0)
   bool has_start_ = false;
   Eigen::Vector2d start_ = Eigen::Vector2d::Zero();  // last closest point found
+  bool had_start_ = false;                                  // has_start_ and start_ before the last assemble
+  Eigen::Vector2d start_before_ = Eigen::Vector2d::Zero();
+  HeightSample start_sample_, start_sample_before_;  // the field at start_ (and before the last assemble)
 };
 
 }  // namespace
@@ -230,6 +247,10 @@ void ContactSet::assemble(const std::vector<NodeState>& nodes, const VectorXd& q
   for (const auto& p : pairs_)
     p->assemble(nodes[static_cast<std::size_t>(p->node)], q.segment<3>(6 * p->node), q.segment<3>(6 * p->node + 3), dt,
                 rule, mass_matrix, R, K);
+}
+
+void ContactSet::rewind() {
+  for (const auto& p : pairs_) p->rewind();
 }
 
 bool ContactSet::closest_points_found() const {

@@ -143,7 +143,8 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
     return I.contacts.closest_points_found();  // otherwise cut the step
   };
   VectorXd R;
-  if (!I.newton.solve(opt_, assemble_at, q, R, rep)) return false;
+  const NewtonDriver::Rewind rewind = [&]() { I.contacts.rewind(); };
+  if (!I.newton.solve(opt_, assemble_at, q, R, rep, opt_.residual_only_checks ? rewind : nullptr)) return false;
   // impact control: reject a step that closes a contact too deep
   if (allow_penetration_cut && opt_.max_new_penetration > 0.0 && I.contacts.closes_deeper_than(opt_.max_new_penetration)) {
     rep.penetration_cuts = 1;

@@ -50,6 +50,10 @@ struct SolverOptions {
   // this is rejected and halved (counts as a cut; accepted once max_cuts is reached).
   double max_new_penetration = 0.0;
   LinearSolver linear_solver = LinearSolver::Automatic;
+  // R-44a: iterates expected to end the Newton iteration are assembled without the tangent first
+  // (again with it only when another direction is needed): the same iterates and bits, fewer
+  // tangents. false: the tangent at every iterate (the plain reference).
+  bool residual_only_checks = true;
 };
 
 struct NodeState {

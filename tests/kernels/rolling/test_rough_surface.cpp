@@ -97,6 +97,28 @@ TEST_CASE("rough-surface contact: force = -eps_n g grad g, tangent vs central di
   }
 }
 
+TEST_CASE("rough-surface contact: a search started with the sample at its start = sampling there again, bit for bit") {
+  for (int kind = 0; kind < 2; ++kind) {
+    const HeightField f = kind == 0 ? wavy_grid() : bump_line(0.01, 0.2, 0.01);
+    const SurfaceContactLaw law{0.05, 1e6};
+    Vector3d x = f.base.point + 0.05 * f.base.t1 + 0.02 * f.base.t2 + 0.045 * f.base.normal;
+    SurfaceContactEval last = evaluate_surface_contact(f, law, x);
+    REQUIRE(last.converged);
+    CHECK(last.sample.h == sample_height(f, last.s).h);
+    for (int k = 0; k < 20; ++k) {  // a node moving on, each search from the last closest point
+      x += Vector3d(1e-4, -3e-5, 2e-5 * std::sin(k));
+      const SurfaceContactEval cached = evaluate_surface_contact(f, law, x, &last.s, &last.sample);
+      const SurfaceContactEval plain = evaluate_surface_contact(f, law, x, &last.s);
+      CHECK(cached.s == plain.s);
+      CHECK(cached.g_n == plain.g_n);
+      CHECK(cached.force == plain.force);
+      CHECK(cached.tangent == plain.tangent);
+      CHECK(cached.sample.grad == plain.sample.grad);
+      last = cached;
+    }
+  }
+}
+
 TEST_CASE("single-point contact validity: r kappa_max < 1") {
   // smooth sinusoid h = H/2 cos(2 pi s/lambda): valley curvature H/2 (2 pi/lambda)^2 = 4.935
   const double H = 0.01, lambda = 0.2;
