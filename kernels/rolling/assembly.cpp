@@ -61,6 +61,18 @@ void SparseSink::finish() {
   new_pattern = true;
 }
 
+namespace {
+// K (M x M, column-major) added onto the band's rows and columns e0 ... e0 + M - 1.
+template <int M>
+void add_columns(BandLU& lu, int e0, const double* K) {
+  for (int j = 0; j < M; ++j) {
+    double* col = lu.column(e0 + j) + e0;
+    const double* k = K + M * j;
+    for (int i = 0; i < M; ++i) col[i] += k[i];
+  }
+}
+}  // namespace
+
 void BandSink::add_dense(const int* dofs, int m, const double* K) {
   if (m > 18) {
     Sink::add_dense(dofs, m, K);
@@ -77,12 +89,18 @@ void BandSink::add_dense(const int* dofs, int m, const double* K) {
   bool run = true;  // free equations e[0], e[0] + 1, ...: whole columns of the block at once
   for (int i = 0; i < m; ++i) run = run && e[i] == e[0] + i;
   if (run && lu->in_band(lo, hi) && lu->in_band(hi, lo)) {
-    for (int j = 0; j < m; ++j) {
-      double* col = lu->column(e[j]) + e[0];
-      const double* k = K + m * j;
-      for (int i = 0; i < m; ++i) col[i] += k[i];
+    switch (m) {  // the usual sizes with fixed loop lengths
+      case 18: add_columns<18>(*lu, e[0], K); return;
+      case 6: add_columns<6>(*lu, e[0], K); return;
+      case 3: add_columns<3>(*lu, e[0], K); return;
+      default:
+        for (int j = 0; j < m; ++j) {
+          double* col = lu->column(e[j]) + e[0];
+          const double* k = K + m * j;
+          for (int i = 0; i < m; ++i) col[i] += k[i];
+        }
+        return;
     }
-    return;
   }
   for (int j = 0; j < m; ++j) {
     const int c = e[j];
@@ -170,7 +188,7 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
   auto al = [&](int a) { return Vector3d(q.segment<3>(6 * a + 3)); };
   auto acc = [&](int a) { return rule.acceleration(c2, du(a), dt, nodes[a].v, nodes[a].a); };
 
-  if (K) {  // every node's diagonal block is part of the pattern
+  if (K && K->wants_pattern_blocks()) {  // every node's diagonal block is part of the pattern
     const Eigen::Matrix<double, 6, 6> Z = Eigen::Matrix<double, 6, 6>::Zero();
     for (int a = 0; a < nn; ++a) add_block<6>(K, dofs6(a), Z);
   }

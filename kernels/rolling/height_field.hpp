@@ -28,6 +28,8 @@ struct HeightSample {
 
 // Interpolated height and derivatives at tangent coordinates s.
 HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s);
+// The plain loop over the taps, one sum after another; sample_height gives the same bits (tests).
+HeightSample sample_height_reference(const HeightField& f, const Eigen::Vector2d& s);
 
 // Line profile h(s1) sampled from a function on [s_begin, s_end] with n samples.
 template <class F>

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "kernels/rolling/examples.hpp"
@@ -61,6 +62,32 @@ TEST_CASE("height field: gradient and Hessian consistent with the interpolated h
   CHECK(eh < 1e-6);
   // interpolating: the samples are reproduced
   CHECK(std::abs(sample_height(f, Vector2d(f.s1_0 + 7 * f.ds1, f.s2_0 + 11 * f.ds2)).h - f.h[11 * 40 + 7]) < 1e-15);
+}
+
+TEST_CASE("height field: the paired tap sums = the plain tap loop, bit for bit (grid and line, edges, outside)") {
+  const HeightField fields[2] = {wavy_grid(), bump_line(0.01, 0.2, 0.01)};
+  std::uint64_t x = 12345;
+  auto uni = [&]() {  // splitmix64, portable
+    x += 0x9E3779B97F4A7C15ull;
+    std::uint64_t z = x;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+  };
+  int differ = 0, n = 0;
+  for (const HeightField& f : fields) {
+    const double lo1 = f.s1_0 - 2.5 * f.ds1, hi1 = f.s1_0 + (f.n1 + 1.5) * f.ds1;
+    const double lo2 = f.n2 > 1 ? f.s2_0 - 2.5 * f.ds2 : -1.0, hi2 = f.n2 > 1 ? f.s2_0 + (f.n2 + 1.5) * f.ds2 : 1.0;
+    for (int k = 0; k < 4000; ++k) {
+      Vector2d s(lo1 + (hi1 - lo1) * uni(), lo2 + (hi2 - lo2) * uni());
+      if (k % 10 == 0) s(0) = f.s1_0 + std::floor((hi1 - lo1) / f.ds1 * uni() - 2.0) * f.ds1;  // on a sample line
+      const HeightSample a = sample_height(f, s), b = sample_height_reference(f, s);
+      differ += a.h != b.h || a.grad != b.grad || a.hess != b.hess;
+      ++n;
+    }
+  }
+  CHECK(n == 8000);
+  CHECK(differ == 0);
 }
 
 TEST_CASE("rough-surface contact: force = -eps_n g grad g, tangent vs central differences") {
