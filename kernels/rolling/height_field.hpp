@@ -56,5 +56,8 @@ struct ContactValidity {
   Eigen::Vector2d where = Eigen::Vector2d::Zero();  // tangent coordinates of kappa_max
 };
 ContactValidity check_single_point_contact(const HeightField& f, double radius);
+// The same with the eigenvalues of every grid point; check_single_point_contact passes over the
+// points whose Gershgorin bound cannot beat the largest curvature so far (the same result, tests).
+ContactValidity check_single_point_contact_reference(const HeightField& f, double radius);
 
 }  // namespace rollspec::rolling
