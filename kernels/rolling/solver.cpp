@@ -281,6 +281,7 @@ Energies Solver::energies() const {
 }
 
 int Solver::pattern_analyses() const { return impl_->newton.pattern_analyses(); }
+long Solver::residual_only_repeats() const { return impl_->newton.lazy_misses(); }
 
 std::vector<BeamResultant> Solver::beam_resultants() const {
   std::vector<BeamResultant> out;

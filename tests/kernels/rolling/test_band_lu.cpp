@@ -254,4 +254,28 @@ TEST_CASE("Newton with residual-only checks (R-44a): the rolling tube run equals
   }
   MESSAGE("residual-only checks over " << hp.steps << " steps, " << hp.newton_iterations << " Newton iterations");
   CHECK(differ == 0);
+  // steps that need more directions than the one before: the residual-only pass is repeated with
+  // the tangent (pairs rewound); a tight tolerance and growing steps make the counts vary
+  SolverOptions tight_lazy = lazy, tight_plain = plain;
+  tight_lazy.force_tol = tight_plain.force_tol = 1e-9;
+  Solver sl(rolling_tube(), tight_lazy), sp(rolling_tube(), tight_plain);
+  int its_l = 0, its_p = 0, differ_states = 0;
+  double t = 0.0;
+  for (int k = 0; k < 300; ++k) {
+    t += 2.5e-5 * (k % 5 == 0 ? 8.0 : 0.5);
+    const StepReport rl = sl.advance(t), rp = sp.advance(t);
+    REQUIRE(rl.converged);
+    REQUIRE(rp.converged);
+    its_l += rl.iterations;
+    its_p += rp.iterations;
+    for (std::size_t a = 0; a < sl.nodes().size(); ++a)
+      differ_states += sl.nodes()[a].x != sp.nodes()[a].x || sl.nodes()[a].R != sp.nodes()[a].R ||
+                       sl.nodes()[a].a != sp.nodes()[a].a || sl.nodes()[a].W != sp.nodes()[a].W;
+  }
+  MESSAGE("varying steps: " << its_p << " Newton iterations, " << sl.residual_only_repeats()
+                            << " residual-only passes repeated with the tangent");
+  CHECK(its_l == its_p);
+  CHECK(differ_states == 0);
+  CHECK(sl.residual_only_repeats() > 0);
+  CHECK(sp.residual_only_repeats() == 0);
 }
