@@ -60,12 +60,14 @@ bool BandLU::factorize() {
     int kr = km;
     while (kr > 0 && lj[kr - 1] == 0.0) --kr;
     lrows_[static_cast<std::size_t>(j)] = kr;
-    for (int c = j + 1; c <= ju; ++c) {  // rank-1 update of the band to the right
-      const double u = f(j, c);
-      if (u == 0.0) continue;
+    // rank-1 update of the band to the right, up to the last nonzero of U's row j (zeros inside
+    // the row are updated too: subtracting zero products changes no entry)
+    int ce = ju;
+    while (ce > j && f(j, ce) == 0.0) --ce;
+    for (int c = j + 1; c <= ce; ++c) {
       int& top = utop_[static_cast<std::size_t>(c)];
-      if (top > j) top = j;  // first nonzero of U's column c
-      axpy_minus(&f(j + 1, c), lj, u, kr);
+      if (top > j) top = j;  // first (possibly) nonzero of U's column c
+      axpy_minus(&f(j + 1, c), lj, f(j, c), kr);
     }
   }
   return true;
