@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "kernels/rolling/assembly.hpp"
 #include "kernels/rolling/contact_set.hpp"
@@ -321,6 +322,8 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
     h.time.push_back(S.time());
     std::vector<Vector3d> p, v, w, acc, wd;
     std::vector<Matrix3d> R;
+    for (auto* x : {&p, &v, &w, &acc, &wd}) x->reserve(rec.size());  // one allocation each
+    R.reserve(rec.size());
     for (int a : rec) {
       const NodeState& n = S.nodes()[static_cast<std::size_t>(a)];
       p.push_back(n.x);
@@ -330,12 +333,12 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
       wd.push_back(n.R * n.A);
       R.push_back(n.R);
     }
-    h.acceleration.push_back(acc);
-    h.angular_acceleration.push_back(wd);
-    h.position.push_back(p);
-    h.velocity.push_back(v);
-    h.angular_velocity.push_back(w);
-    h.rotation.push_back(R);
+    h.acceleration.push_back(std::move(acc));
+    h.angular_acceleration.push_back(std::move(wd));
+    h.position.push_back(std::move(p));
+    h.velocity.push_back(std::move(v));
+    h.angular_velocity.push_back(std::move(w));
+    h.rotation.push_back(std::move(R));
     h.contact.push_back(S.contacts());
     h.surface_contact.push_back(S.surface_contacts());
     if (ro.record_energies) h.energy.push_back(S.energies());
