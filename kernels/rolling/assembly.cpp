@@ -222,7 +222,7 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
           ag += N[k] * acc(be.nodes[k]);
           ag_a += N[k] * a[k];
         }
-        const RotaryInertiaEval ri = rule.rotary(Js, p.R, p.W, p.A, dt, ag_a);
+        const RotaryInertiaEval ri = rule.rotary(Js, p.R, p.W, p.A, dt, ag_a, K != nullptr);
         for (int k = 0; k < 3; ++k) {
           R.segment<3>(dofs[6 * k]) += N[k] * w * sec.rhoA * ag;
           R.segment<3>(dofs[6 * k + 3]) += N[k] * w * ri.residual;
@@ -252,7 +252,7 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
     R.segment<3>(6 * nd) -= b.mass * grav;
     Eigen::Matrix<double, 6, 6> Kb = Eigen::Matrix<double, 6, 6>::Zero();
     if (inertia) {
-      const RotaryInertiaEval ri = rule.rotary(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd));
+      const RotaryInertiaEval ri = rule.rotary(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd), K != nullptr);
       R.segment<3>(6 * nd) += b.mass * acc(nd);
       R.segment<3>(6 * nd + 3) += ri.residual;
       Kb.block<3, 3>(0, 0).diagonal().array() += b.mass * c2;

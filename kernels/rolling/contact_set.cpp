@@ -111,7 +111,7 @@ class PlanePair final : public ContactSet::Pair {
 // The normal block of the tangent takes the exact curvature term of R-61; the friction blocks
 // neglect the turning of the plane with x, which costs Newton iterations, not accuracy.
 ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceContactEval& sv, const ContactState& state,
-                                   const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha) {
+                                   const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha, bool want_tangent) {
   const Plane tangent_plane = make_plane(sv.point, sv.normal);
   const ContactLaw cl{law.radius, law.mu, law.eps_n, law.eps_t, law.rolling};
   ContactState carried = state;
@@ -119,9 +119,9 @@ ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceCo
     carried.x_f += law.radius * (state.normal - sv.normal);
     carried.g_st -= carried.g_st.dot(sv.normal) * sv.normal;
   }
-  ContactEval fe = evaluate_contact(tangent_plane, cl, carried, x_start, x, alpha, NormalForce::EndPoint);
+  ContactEval fe = evaluate_contact(tangent_plane, cl, carried, x_start, x, alpha, NormalForce::EndPoint, want_tangent);
   fe.next.normal = sv.normal;
-  if (fe.active) fe.tangent.block<3, 3>(0, 0) += sv.tangent - law.eps_n * sv.normal * sv.normal.transpose();
+  if (fe.active && want_tangent) fe.tangent.block<3, 3>(0, 0) += sv.tangent - law.eps_n * sv.normal * sv.normal.transpose();
   return fe;
 }
 
@@ -142,8 +142,10 @@ class SurfacePair final : public ContactSet::Pair {
     had_start_ = has_start_;
     start_before_ = start_;
     start_sample_before_ = start_sample_;
+    // K == nullptr: a residual-only pass (R-44a) needs no tangents
+    const bool want_tangent = K != nullptr && !mass_matrix;
     ev_ = evaluate_surface_contact(field_, law_, n.x + du, has_start_ ? &start_ : nullptr,
-                                   has_start_ ? &start_sample_ : nullptr);
+                                   has_start_ ? &start_sample_ : nullptr, want_tangent);
     has_start_ = ev_.converged;  // the next evaluation starts from this closest point
     start_ = ev_.s;
     start_sample_ = ev_.sample;  // ... and its height sample
@@ -171,7 +173,7 @@ class SurfacePair final : public ContactSet::Pair {
       add_block<3>(K, dofs3(6 * node), mass_matrix ? Matrix3d::Zero() : ev_.tangent);
       return;
     }
-    fe_ = rough_friction_contact(law_, ev_, state_, n.x, n.x + du, alpha);
+    fe_ = rough_friction_contact(law_, ev_, state_, n.x, n.x + du, alpha, want_tangent);
     R.segment<6>(6 * node) += fe_.residual;
     add_block<6>(K, dofs6(node), mass_matrix ? Matrix6d::Zero() : fe_.tangent);
   }

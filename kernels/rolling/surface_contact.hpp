@@ -44,8 +44,9 @@ struct SurfaceContactEval {
 // one or two iterations instead of three or four; the same point to the Newton tolerance).
 // at_start: the height field's sample at *start when the caller has it (the last evaluation's
 // `sample`), used when the search does start at *start: the same bits without sampling again.
+// want_tangent = false: the tangent is left zero (residual-only assembly, R-44a).
 SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law,
                                             const Eigen::Vector3d& x, const Eigen::Vector2d* start = nullptr,
-                                            const HeightSample* at_start = nullptr);
+                                            const HeightSample* at_start = nullptr, bool want_tangent = true);
 
 }  // namespace rollspec::rolling

@@ -282,6 +282,15 @@ TEST_CASE("rotary inertia: analytic tangent (R-33a) = the Jet2<3> reference, New
     CHECK(rel_diff(a.W, r.W) < 1e-14);
     CHECK(rel_diff(a.A, r.A) < 1e-14);
     CHECK(rel_diff(am.A, rm.A) < 1e-14);
+    // without the tangent (residual-only assembly, R-44a): the same residual and rates, bit for bit
+    const RotaryInertiaEval a0 = rotary_inertia(J, Rn, Wn, An, dt, alpha, false),
+                            am0 = rotary_inertia_midpoint(J, Rn, Wn, dt, alpha, false);
+    CHECK(a0.residual == a.residual);
+    CHECK(a0.W == a.W);
+    CHECK(a0.A == a.A);
+    CHECK(am0.residual == am.residual);
+    CHECK(am0.A == am.A);
+    CHECK(a0.tangent.isZero(0.0));
   }
   MESSAGE("rotary inertia analytic vs Jet2<3>: " << worst);
   CHECK(worst < 1e-10);

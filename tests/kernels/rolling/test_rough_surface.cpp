@@ -141,6 +141,13 @@ TEST_CASE("rough-surface contact: a search started with the sample at its start 
       CHECK(cached.force == plain.force);
       CHECK(cached.tangent == plain.tangent);
       CHECK(cached.sample.grad == plain.sample.grad);
+      // without the tangent (residual-only assembly, R-44a): the same point, gap and force
+      const SurfaceContactEval bare = evaluate_surface_contact(f, law, x, &last.s, &last.sample, false);
+      CHECK(bare.s == plain.s);
+      CHECK(bare.g_n == plain.g_n);
+      CHECK(bare.normal == plain.normal);
+      CHECK(bare.force == plain.force);
+      CHECK(bare.tangent.isZero(0.0));
       last = cached;
     }
   }
