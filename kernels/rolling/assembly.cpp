@@ -61,6 +61,18 @@ void SparseSink::finish() {
   new_pattern = true;
 }
 
+namespace {
+// K (M x M, column-major) added onto the band's rows and columns e0 ... e0 + M - 1.
+template <int M>
+void add_columns(BandLU& lu, int e0, const double* K) {
+  for (int j = 0; j < M; ++j) {
+    double* col = lu.column(e0 + j) + e0;
+    const double* k = K + M * j;
+    for (int i = 0; i < M; ++i) col[i] += k[i];
+  }
+}
+}  // namespace
+
 void BandSink::add_dense(const int* dofs, int m, const double* K) {
   if (m > 18) {
     Sink::add_dense(dofs, m, K);
@@ -72,6 +84,22 @@ void BandSink::add_dense(const int* dofs, int m, const double* K) {
     if (e[i] >= 0) {
       lo = std::min(lo, e[i]);
       hi = std::max(hi, e[i]);
+    }
+  }
+  bool run = true;  // free equations e[0], e[0] + 1, ...: whole columns of the block at once
+  for (int i = 0; i < m; ++i) run = run && e[i] == e[0] + i;
+  if (run && lu->in_band(lo, hi) && lu->in_band(hi, lo)) {
+    switch (m) {  // the usual sizes with fixed loop lengths
+      case 18: add_columns<18>(*lu, e[0], K); return;
+      case 6: add_columns<6>(*lu, e[0], K); return;
+      case 3: add_columns<3>(*lu, e[0], K); return;
+      default:
+        for (int j = 0; j < m; ++j) {
+          double* col = lu->column(e[j]) + e[0];
+          const double* k = K + m * j;
+          for (int i = 0; i < m; ++i) col[i] += k[i];
+        }
+        return;
     }
   }
   for (int j = 0; j < m; ++j) {
@@ -160,7 +188,7 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
   auto al = [&](int a) { return Vector3d(q.segment<3>(6 * a + 3)); };
   auto acc = [&](int a) { return rule.acceleration(c2, du(a), dt, nodes[a].v, nodes[a].a); };
 
-  if (K) {  // every node's diagonal block is part of the pattern
+  if (K && K->wants_pattern_blocks()) {  // every node's diagonal block is part of the pattern
     const Eigen::Matrix<double, 6, 6> Z = Eigen::Matrix<double, 6, 6>::Zero();
     for (int a = 0; a < nn; ++a) add_block<6>(K, dofs6(a), Z);
   }
@@ -177,10 +205,10 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
       for (int i = 0; i < 6; ++i) dofs[6 * k + i] = 6 * nd + i;
     }
     // stiffness (reduced 2-point Gauss)
-    const BeamElementEval ev = beam_element_internal(sec, s.points.stiffness[e], x, a, K && !mass_matrix);
+    BeamElementEval ev = beam_element_internal(sec, s.points.stiffness[e], x, a, K && !mass_matrix);
     for (int k = 0; k < 18; ++k) R(dofs[k]) += ev.force(k);
-    Eigen::Matrix<double, 18, 18> Ke = Eigen::Matrix<double, 18, 18>::Zero();
-    if (!mass_matrix) Ke = ev.tangent;
+    // the element's tangent block (zero for the mass matrix); untouched without K
+    Eigen::Matrix<double, 18, 18>& Ke = ev.tangent;
     // mass, rotary inertia and gravity (3-point Gauss, exact for the consistent mass)
     const Matrix3d Js = section_inertia(sec);
     for (const MassPoint& p : s.points.mass[e]) {
@@ -194,11 +222,12 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
           ag += N[k] * acc(be.nodes[k]);
           ag_a += N[k] * a[k];
         }
-        const RotaryInertiaEval ri = rule.rotary(Js, p.R, p.W, p.A, dt, ag_a);
+        const RotaryInertiaEval ri = rule.rotary(Js, p.R, p.W, p.A, dt, ag_a, K != nullptr);
         for (int k = 0; k < 3; ++k) {
           R.segment<3>(dofs[6 * k]) += N[k] * w * sec.rhoA * ag;
           R.segment<3>(dofs[6 * k + 3]) += N[k] * w * ri.residual;
-          for (int l = 0; l < 3; ++l) {
+          if (K)
+            for (int l = 0; l < 3; ++l) {
             Ke.block<3, 3>(6 * k, 6 * l).diagonal().array() += N[k] * N[l] * w * sec.rhoA * c2;
             Ke.block<3, 3>(6 * k + 3, 6 * l + 3) += N[k] * N[l] * w * ri.tangent;
           }
@@ -223,7 +252,7 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
     R.segment<3>(6 * nd) -= b.mass * grav;
     Eigen::Matrix<double, 6, 6> Kb = Eigen::Matrix<double, 6, 6>::Zero();
     if (inertia) {
-      const RotaryInertiaEval ri = rule.rotary(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd));
+      const RotaryInertiaEval ri = rule.rotary(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd), K != nullptr);
       R.segment<3>(6 * nd) += b.mass * acc(nd);
       R.segment<3>(6 * nd + 3) += ri.residual;
       Kb.block<3, 3>(0, 0).diagonal().array() += b.mass * c2;

@@ -29,6 +29,9 @@ struct Sink {
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i) add(dofs[i], dofs[j], K[i + m * j]);
   }
+  // Whether the assembly's all-zero pattern blocks (every node's diagonal block) are to be added;
+  // a sink over storage that holds every entry anyway skips them (adding zeros changes no bit).
+  virtual bool wants_pattern_blocks() const { return true; }
 };
 
 template <int M>
@@ -89,6 +92,7 @@ struct BandSink : Sink {
     lu->at(r, c) += v;
   }
   void add_dense(const int* dofs, int m, const double* K) override;
+  bool wants_pattern_blocks() const override { return false; }
 };
 
 // Beam mass point (3-point Gauss): committed rotation and body-frame rates.

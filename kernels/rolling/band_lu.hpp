@@ -38,14 +38,21 @@ class BandLU {
   bool factorize();
   // b <- A^-1 b with the factors.
   void solve(double* b) const;
+  // Plain dgbtf2/dgbtrs-style loops over the whole band (no profile skipping), the reference the
+  // two above are tested against (the same factors and solutions, bit for bit).
+  bool factorize_reference();
+  void solve_reference(double* b) const;
 
  private:
   double& f(int i, int j) { return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
   double f(int i, int j) const { return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
+  const double* fp(int i, int j) const { return &ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
   int n_ = 0, kl_ = 0, ku_ = 0;
   std::size_t ld_ = 1;  // 2 kl + ku + 1
   std::vector<double> ab_;
   std::vector<int> piv_;
+  std::vector<int> lrows_;  // rows below the diagonal up to the last nonzero of L's column j
+  std::vector<int> utop_;   // first row of a nonzero in U's column j
 };
 
 }  // namespace rollspec::rolling

@@ -135,7 +135,7 @@ PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p,
 //   f1 = x'.n + g h,  h = p.a + a^T S a / 2,  p = n x x',  S = (x' n^T + n x'^T)/2 - (x'.n) I
 //   f2 = g (a'.m + q.a),  q = (m x a')/2.
 PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
-                              const Eigen::Matrix<double, 9, 1>& z) {
+                              const Eigen::Matrix<double, 9, 1>& z, bool want_hess) {
   const Vector3d xp = z.segment<3>(0), a = z.segment<3>(3), ap = z.segment<3>(6);
   const double g = rodrigues_g(a);
   const Matrix3d Xi = rodrigues_xi(a);
@@ -154,6 +154,7 @@ PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
   out.grad.segment<3>(0) = R * N;
   out.grad.segment<3>(3) = GG.transpose() * N + GK.transpose() * M;
   out.grad.segment<3>(6) = Xi * m;
+  if (!want_hess) return out;  // hess stays zero; value and gradient as with it
   // second derivatives of g
   const Vector3d dg = -0.5 * g * g * a;
   const Matrix3d ddg = -0.5 * g * g * Matrix3d::Identity() + 0.5 * g * g * g * a * a.transpose();
@@ -199,7 +200,7 @@ BeamElementEval beam_element_internal(const BeamSection& s, const std::array<Bea
     }
     Eigen::Matrix<double, 9, 1> z;
     z << xp, a, ap;
-    const PointEnergy e = beam_point_energy(s, p, z);
+    const PointEnergy e = beam_point_energy(s, p, z, want_tangent);
     const double w = p.weight * p.jac;
     out.energy += w * e.value;
     for (int k = 0; k < 3; ++k) {

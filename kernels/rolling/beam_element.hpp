@@ -37,14 +37,15 @@ BeamStrain beam_point_strain(const BeamStiffPoint& p, const std::array<Eigen::Ve
                              const std::array<Eigen::Vector3d, 3>& alpha);
 
 // Strain energy per unit length at a stiffness point as a function of the point variables
-// z = (x', a, a'), with gradient and Hessian.
+// z = (x', a, a'), with gradient and Hessian (want_hess = false: the Hessian is left zero, the
+// value and gradient are the same bits).
 struct PointEnergy {
   double value = 0.0;
   Eigen::Matrix<double, 9, 1> grad = Eigen::Matrix<double, 9, 1>::Zero();
   Eigen::Matrix<double, 9, 9> hess = Eigen::Matrix<double, 9, 9>::Zero();
 };
 PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
-                              const Eigen::Matrix<double, 9, 1>& z);
+                              const Eigen::Matrix<double, 9, 1>& z, bool want_hess = true);
 // The same with second-order jets Jet2<3> of the six strain directions (README R-14), the
 // reference the analytic path (R-14a) is tested against.
 PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p,

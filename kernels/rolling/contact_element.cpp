@@ -41,7 +41,7 @@ PenaltyGradient penalty_discrete_gradient(double eps_n, double g0, double g1) {
 
 ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const ContactState& state,
                              const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha,
-                             NormalForce normal_force) {
+                             NormalForce normal_force, bool want_tangent) {
   ContactEval e;
   const Vector3d& n = plane.normal;
   const Matrix3d P = Matrix3d::Identity() - n * n.transpose();  // t1 t1^T + t2 t2^T
@@ -85,10 +85,10 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
 
   const Matrix3d Xi = rodrigues_xi(alpha);
   // d g_t / d a = r P skew(Q n) Xi  (README Eq. R-21; d(Qn) = -skew(Qn) Xi da)
-  const Matrix3d dgt_da = rr * P * skew(Qn) * Xi;
+  const Matrix3d dgt_da = want_tangent ? Matrix3d(rr * P * skew(Qn) * Xi) : Matrix3d::Zero();
 
   Vector3d f;
-  Matrix3d df_dx, df_da;
+  Matrix3d df_dx = Matrix3d::Zero(), df_da = Matrix3d::Zero();
   const double ntry = ftry.norm();
   if (!(fmax > 0.0)) {  // frictionless (mu = 0): free tangential motion
     f.setZero();
@@ -98,8 +98,10 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
     e.next.g_st = gst0 + gt;  // all tangential motion is slip, elastic gap stays zero
   } else if (ntry <= fmax) {  // stick
     f = ftry;
-    df_dx = -law.eps_t * P;
-    df_da = -law.eps_t * dgt_da;
+    if (want_tangent) {
+      df_dx = -law.eps_t * P;
+      df_da = -law.eps_t * dgt_da;
+    }
     e.next.g_st = gst0;
     e.tangential_energy = 0.5 * ntry * ntry / law.eps_t;
   } else {  // slip: return mapping, seed 000 Eq. 13-16 and 32
@@ -107,9 +109,11 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
     const double ngt = gt.norm();
     const Vector3d tau = gt / ngt;  // n_T, Eq. 15
     f = -fmax * tau;
-    const Matrix3d Pt = (Matrix3d::Identity() - tau * tau.transpose()) / ngt;  // Eq. 38
-    df_dx = law.mu * law.eps_n * tau * n.transpose() - fmax * Pt * P;
-    df_da = -fmax * Pt * dgt_da;
+    if (want_tangent) {
+      const Matrix3d Pt = (Matrix3d::Identity() - tau * tau.transpose()) / ngt;  // Eq. 38
+      df_dx = law.mu * law.eps_n * tau * n.transpose() - fmax * Pt * P;
+      df_da = -fmax * Pt * dgt_da;
+    }
     const double dslip = (ntry - fmax) / law.eps_t;  // Eq. 14
     e.next.g_st = gst0 + dslip * tau;                // Eq. 13
     e.dissipation = fmax * dslip;
@@ -122,14 +126,15 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
   e.next.active = true;
   e.next.x_f = x_f;
 
+  const Vector3d m = Xi.transpose() * e.moment;  // pseudo-moment, seed 000 Eq. 6
+  e.residual.head<3>() = -e.force;
+  e.residual.tail<3>() = -m;
+  if (!want_tangent) return e;  // residual-only assembly (R-44a): the tangent stays zero
+
   const Matrix3d dF_dx = -dfn * n * n.transpose() + df_dx;
   const Matrix3d& dF_da = df_da;
   const Matrix3d dM_dx = -rr * skew(n) * df_dx;
   const Matrix3d dM_da = -rr * skew(n) * df_da;
-  const Vector3d m = Xi.transpose() * e.moment;  // pseudo-moment, seed 000 Eq. 6
-
-  e.residual.head<3>() = -e.force;
-  e.residual.tail<3>() = -m;
   e.tangent.block<3, 3>(0, 0) = -dF_dx;
   e.tangent.block<3, 3>(0, 3) = -dF_da;
   e.tangent.block<3, 3>(3, 0) = -Xi.transpose() * dM_dx;

@@ -59,11 +59,12 @@ struct ContactEval {
 enum class NormalForce { EndPoint, DiscreteGradient };
 
 // x_start: node position at the start of the step; x: current iterate; alpha: incremental
-// Rodrigues parameters of the node in this step.
+// Rodrigues parameters of the node in this step. want_tangent = false: the tangent is left zero
+// (residual-only assembly, R-44a), everything else the same bits.
 ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const ContactState& state,
                              const Eigen::Vector3d& x_start, const Eigen::Vector3d& x,
                              const Eigen::Vector3d& alpha,
-                             NormalForce normal_force = NormalForce::EndPoint);
+                             NormalForce normal_force = NormalForce::EndPoint, bool want_tangent = true);
 
 // Discrete gradient of V(g) = eps_n <-g>^2 / 2 (README R-50): value D = (V(g1) - V(g0))/(g1 - g0)
 // (V'(g_mid) when g1 = g0) and its derivative dD/dg1.

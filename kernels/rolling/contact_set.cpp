@@ -38,6 +38,9 @@ class ContactSet::Pair {
   virtual void assemble(const NodeState& n, const Vector3d& du, const Vector3d& alpha, double dt, const TimeRule& rule,
                         bool mass_matrix, VectorXd& R, Sink* K) = 0;
   virtual bool found() const { return true; }
+  // Back to the state before the last assemble, so that assembling the same iterate again gives
+  // the same bits (the closest-point search of a surface pair starts from its last point).
+  virtual void rewind() {}
   // Everything of the commit but active, g_n and penalty, which the set writes for both kinds.
   virtual void commit(const Vector3d& du, const Vector3d& alpha, const TimeRule& rule, Totals& totals) = 0;
 
@@ -108,7 +111,7 @@ class PlanePair final : public ContactSet::Pair {
 // The normal block of the tangent takes the exact curvature term of R-61; the friction blocks
 // neglect the turning of the plane with x, which costs Newton iterations, not accuracy.
 ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceContactEval& sv, const ContactState& state,
-                                   const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha) {
+                                   const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha, bool want_tangent) {
   const Plane tangent_plane = make_plane(sv.point, sv.normal);
   const ContactLaw cl{law.radius, law.mu, law.eps_n, law.eps_t, law.rolling};
   ContactState carried = state;
@@ -116,9 +119,9 @@ ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceCo
     carried.x_f += law.radius * (state.normal - sv.normal);
     carried.g_st -= carried.g_st.dot(sv.normal) * sv.normal;
   }
-  ContactEval fe = evaluate_contact(tangent_plane, cl, carried, x_start, x, alpha, NormalForce::EndPoint);
+  ContactEval fe = evaluate_contact(tangent_plane, cl, carried, x_start, x, alpha, NormalForce::EndPoint, want_tangent);
   fe.next.normal = sv.normal;
-  if (fe.active) fe.tangent.block<3, 3>(0, 0) += sv.tangent - law.eps_n * sv.normal * sv.normal.transpose();
+  if (fe.active && want_tangent) fe.tangent.block<3, 3>(0, 0) += sv.tangent - law.eps_n * sv.normal * sv.normal.transpose();
   return fe;
 }
 
@@ -136,9 +139,16 @@ class SurfacePair final : public ContactSet::Pair {
 
   void assemble(const NodeState& n, const Vector3d& du, const Vector3d& alpha, double dt, const TimeRule& rule,
                 bool mass_matrix, VectorXd& R, Sink* K) override {
-    ev_ = evaluate_surface_contact(field_, law_, n.x + du, has_start_ ? &start_ : nullptr);
+    had_start_ = has_start_;
+    start_before_ = start_;
+    start_sample_before_ = start_sample_;
+    // K == nullptr: a residual-only pass (R-44a) needs no tangents
+    const bool want_tangent = K != nullptr && !mass_matrix;
+    ev_ = evaluate_surface_contact(field_, law_, n.x + du, has_start_ ? &start_ : nullptr,
+                                   has_start_ ? &start_sample_ : nullptr, want_tangent);
     has_start_ = ev_.converged;  // the next evaluation starts from this closest point
     start_ = ev_.s;
+    start_sample_ = ev_.sample;  // ... and its height sample
     active = ev_.active;
     g_n = ev_.g_n;
     if (law_.damping > 0.0 && !mass_matrix && rule.contact_dampers()) {
@@ -163,12 +173,18 @@ class SurfacePair final : public ContactSet::Pair {
       add_block<3>(K, dofs3(6 * node), mass_matrix ? Matrix3d::Zero() : ev_.tangent);
       return;
     }
-    fe_ = rough_friction_contact(law_, ev_, state_, n.x, n.x + du, alpha);
+    fe_ = rough_friction_contact(law_, ev_, state_, n.x, n.x + du, alpha, want_tangent);
     R.segment<6>(6 * node) += fe_.residual;
     add_block<6>(K, dofs6(node), mass_matrix ? Matrix6d::Zero() : fe_.tangent);
   }
 
   bool found() const override { return ev_.converged; }
+
+  void rewind() override {
+    has_start_ = had_start_;
+    start_ = start_before_;
+    start_sample_ = start_sample_before_;
+  }
 
   void commit(const Vector3d& du, const Vector3d& alpha, const TimeRule&, Totals& t) override {
     if (law_.mu > 0.0) {  // friction: works and history as the plane pairs, trapezoidal
@@ -198,6 +214,9 @@ class SurfacePair final : public ContactSet::Pair {
   ContactEval fe_;  // friction part (mu > 0)
   bool has_start_ = false;
   Eigen::Vector2d start_ = Eigen::Vector2d::Zero();  // last closest point found
+  bool had_start_ = false;                                  // has_start_ and start_ before the last assemble
+  Eigen::Vector2d start_before_ = Eigen::Vector2d::Zero();
+  HeightSample start_sample_, start_sample_before_;  // the field at start_ (and before the last assemble)
 };
 
 }  // namespace
@@ -230,6 +249,10 @@ void ContactSet::assemble(const std::vector<NodeState>& nodes, const VectorXd& q
   for (const auto& p : pairs_)
     p->assemble(nodes[static_cast<std::size_t>(p->node)], q.segment<3>(6 * p->node), q.segment<3>(6 * p->node + 3), dt,
                 rule, mass_matrix, R, K);
+}
+
+void ContactSet::rewind() {
+  for (const auto& p : pairs_) p->rewind();
 }
 
 bool ContactSet::closest_points_found() const {

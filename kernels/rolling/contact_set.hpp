@@ -32,6 +32,9 @@ class ContactSet {
   // residual only, zero tangent blocks (the pattern stays the same).
   void assemble(const std::vector<NodeState>& nodes, const Eigen::VectorXd& q, double dt, const TimeRule& rule,
                 bool mass_matrix, Eigen::VectorXd& R, Sink* K);
+  // Undoes what the last assemble changed in the pairs (the closest-point starts), so that
+  // assembling the same q again, e.g. with the tangent after a residual-only pass, gives the same bits.
+  void rewind();
   // Every rough-surface closest point was found; otherwise the step is cut.
   bool closest_points_found() const;
   // A pair open at the step start closes with -g_n > depth.

@@ -28,6 +28,8 @@ struct HeightSample {
 
 // Interpolated height and derivatives at tangent coordinates s.
 HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s);
+// The plain loop over the taps, one sum after another; sample_height gives the same bits (tests).
+HeightSample sample_height_reference(const HeightField& f, const Eigen::Vector2d& s);
 
 // Line profile h(s1) sampled from a function on [s_begin, s_end] with n samples.
 template <class F>
@@ -54,5 +56,8 @@ struct ContactValidity {
   Eigen::Vector2d where = Eigen::Vector2d::Zero();  // tangent coordinates of kappa_max
 };
 ContactValidity check_single_point_contact(const HeightField& f, double radius);
+// The same with the eigenvalues of every grid point; check_single_point_contact passes over the
+// points whose Gershgorin bound cannot beat the largest curvature so far (the same result, tests).
+ContactValidity check_single_point_contact_reference(const HeightField& f, double radius);
 
 }  // namespace rollspec::rolling

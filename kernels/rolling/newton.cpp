@@ -39,7 +39,7 @@ void NewtonDriver::choose_solver(LinearSolver wanted) {
 }
 
 bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, VectorXd& q, VectorXd& R,
-                         StepReport& rep) {
+                         StepReport& rep, const Rewind& rewind) {
   VectorXd& rf = rf_;
   VectorXd& dq = dq_;
   VectorXd& q_acc = q_acc_;
@@ -49,7 +49,8 @@ bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, Vec
   double G0 = 0.0, step = 1.0, best_rn = std::numeric_limits<double>::infinity(), best_step = 1.0;
   int nback = 0, newton = 0;  // newton: Newton directions (line-search trials not counted)
   bool forced = false;
-  for (int it = 0;; ++it) {
+  // Residual and tangent at q into R and the band or the sparse pattern; false: not usable.
+  auto assemble_with_tangent = [&]() {
     bool usable = false, mismatch = false, recorded = false;
     if (banded_) {
       band_sink_.begin();
@@ -71,6 +72,14 @@ bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, Vec
       recorded = true;
     }
     if (recorded) choose_solver(opt.linear_solver);
+    return usable;
+  };
+  for (int it = 0;; ++it) {
+    // Residual only where the iterate is expected to end the iteration (R-44a): from the Newton
+    // direction at which the last solve converged on, the tangent is assembled only when the
+    // residual asks for another direction (the pairs rewound, the same residual again).
+    const bool lazy = rewind && newton > 0 && newton >= expect_;
+    const bool usable = lazy ? assemble(q, R, nullptr) : assemble_with_tangent();
     if (!usable) return false;
     for (std::size_t i = 0; i < eq_.size(); ++i)
       if (eq_[i] >= 0) rf(eq_[i]) = R(static_cast<Eigen::Index>(i));
@@ -104,8 +113,16 @@ bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, Vec
     }
     forced = false;
     if (!std::isfinite(rn)) return false;
-    if (rn <= opt.force_tol || (newton > 0 && last <= opt.disp_tol)) break;
+    if (rn <= opt.force_tol || (newton > 0 && last <= opt.disp_tol)) {
+      expect_ = newton;
+      break;
+    }
     if (newton >= opt.max_iterations) return false;
+    if (lazy) {  // another direction after all: the tangent at this iterate
+      ++lazy_misses_;
+      rewind();
+      if (!assemble_with_tangent()) return false;
+    }
     ++newton;
     if (sink_.new_pattern) {  // once (again only if the pattern ever changes)
       if (!banded_) lu_.analyzePattern(sink_.A);

@@ -25,17 +25,25 @@ class NewtonDriver {
   // Assembles the residual (all DOFs) at q and the tangent into K; false: the iterate cannot be
   // used (a closest point not found), the step is to be cut.
   using Assemble = std::function<bool(const Eigen::VectorXd& q, Eigen::VectorXd& R, Sink* K)>;
+  // Undoes the side effects of the last assemble (contact search starts), so that assembling the
+  // same q again gives the same bits.
+  using Rewind = std::function<void()>;
 
   // Iterates the free entries of q (imposed entries as given) until ||R_free||_2 <= force_tol or
   // the last correction ||dq||_inf <= disp_tol. Returns false when it does not converge within
   // max_iterations Newton directions, meets a non-finite value or a failed factorisation. R holds
   // the residual at the returned q (imposed entries: the reactions); rep gets the iteration count
-  // and the residual norms.
+  // and the residual norms. With rewind (R-44a), iterates from the Newton direction at which the
+  // last solve converged on are assembled without the tangent first (K = nullptr), and again with
+  // it (after rewind) only when the residual asks for another direction: the same iterates, bits
+  // and counts as assembling the tangent every time, one tangent fewer per converged step.
   bool solve(const SolverOptions& options, const Assemble& assemble, Eigen::VectorXd& q, Eigen::VectorXd& R,
-             StepReport& rep);
+             StepReport& rep, const Rewind& rewind = nullptr);
 
   // Analyses of a new pattern before a factorisation (SparseLU::analyzePattern, or the band set up).
   int pattern_analyses() const { return analyses_; }
+  // Residual-only passes that had to be repeated with the tangent (R-44a).
+  long lazy_misses() const { return lazy_misses_; }
   // The linear solver in use after the first iteration (Band or Sparse).
   LinearSolver linear_solver() const { return banded_ ? LinearSolver::Band : LinearSolver::Sparse; }
 
@@ -48,6 +56,8 @@ class NewtonDriver {
   BandLU band_;
   BandSink band_sink_;
   bool banded_ = false;
+  int expect_ = 1 << 30;   // Newton directions the last converged solve took (none yet: never lazy)
+  long lazy_misses_ = 0;
   Eigen::VectorXd rf_, dq_, q_acc_;  // sized once, reused by every step
 
   // After a recording pass: band or sparse for the new pattern.

@@ -14,39 +14,40 @@ namespace {
 //   dr/da = -(g/2)((Xi w) a^T + skew(w)) + Xi R_n (dh/db) R_n^T,  w = R_n h    (R-33a)
 // with dh/db = cA J + cW (skew(W) J - skew(J W)) for h = J A + W x J W, dA/db = cA, dW/db = cW.
 RotaryInertiaEval rotary_analytic(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& alpha, const Vector3d& W,
-                                  const Vector3d& A, const Vector3d& Wg, double cA, double cW) {
+                                  const Vector3d& A, const Vector3d& Wg, double cA, double cW, bool want_tangent) {
   const Vector3d JWg = J * Wg;
   const Vector3d h = J * A + Wg.cross(JWg);
   const Vector3d w = Rn * h;
-  const double g = rodrigues_g(alpha);
   const Matrix3d Xi = rodrigues_xi(alpha);
-  const Matrix3d XR = Xi * Rn;
-  const Matrix3d dh = cA * J + cW * (skew(Wg) * J - skew(JWg));
   RotaryInertiaEval out;
   out.residual = Xi * w;
-  out.tangent = XR * dh * Rn.transpose() - (0.5 * g) * (out.residual * alpha.transpose() + skew(w));
   out.W = W;
   out.A = A;
+  if (!want_tangent) return out;  // residual-only assembly (R-44a): the tangent stays zero
+  const double g = rodrigues_g(alpha);
+  const Matrix3d XR = Xi * Rn;
+  const Matrix3d dh = cA * J + cW * (skew(Wg) * J - skew(JWg));
+  out.tangent = XR * dh * Rn.transpose() - (0.5 * g) * (out.residual * alpha.transpose() + skew(w));
   return out;
 }
 
 }  // namespace
 
 RotaryInertiaEval rotary_inertia(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn, const Vector3d& An, double dt,
-                                 const Vector3d& alpha) {
+                                 const Vector3d& alpha, bool want_tangent) {
   const Vector3d b = Rn.transpose() * alpha;
   const Vector3d W = (2.0 / dt) * b - Wn;
   const Vector3d A = (4.0 / (dt * dt)) * (b - dt * Wn) - An;
-  return rotary_analytic(J, Rn, alpha, W, A, W, 4.0 / (dt * dt), 2.0 / dt);
+  return rotary_analytic(J, Rn, alpha, W, A, W, 4.0 / (dt * dt), 2.0 / dt, want_tangent);
 }
 
 RotaryInertiaEval rotary_inertia_midpoint(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn, double dt,
-                                          const Vector3d& alpha) {
+                                          const Vector3d& alpha, bool want_tangent) {
   const Vector3d b = Rn.transpose() * alpha;
   const Vector3d W = (2.0 / dt) * b - Wn;
   const Vector3d Wm = (1.0 / dt) * b;
   const Vector3d D = (2.0 / (dt * dt)) * (b - dt * Wn);  // (W_{n+1} - W_n)/dt, R-51
-  return rotary_analytic(J, Rn, alpha, W, D, Wm, 2.0 / (dt * dt), 1.0 / dt);
+  return rotary_analytic(J, Rn, alpha, W, D, Wm, 2.0 / (dt * dt), 1.0 / dt, want_tangent);
 }
 
 RotaryInertiaEval rotary_inertia_reference(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn,

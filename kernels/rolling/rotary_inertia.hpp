@@ -20,9 +20,10 @@ struct RotaryInertiaEval {
   Eigen::Vector3d A = Eigen::Vector3d::Zero();         // body angular acceleration at t_{n+1}
 };
 
+// want_tangent = false: the tangent is left zero (residual-only assembly, R-44a), the rest the same bits.
 RotaryInertiaEval rotary_inertia(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
                                  const Eigen::Vector3d& Wn, const Eigen::Vector3d& An, double dt,
-                                 const Eigen::Vector3d& alpha);
+                                 const Eigen::Vector3d& alpha, bool want_tangent = true);
 
 // Newmark update of the body angular velocity/acceleration for a converged increment a.
 void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
@@ -35,7 +36,7 @@ void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Ve
 // the work a . m of the applied spatial moment m. A is set to (W_{n+1} - W_n)/dt.
 RotaryInertiaEval rotary_inertia_midpoint(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
                                           const Eigen::Vector3d& Wn, double dt,
-                                          const Eigen::Vector3d& alpha);
+                                          const Eigen::Vector3d& alpha, bool want_tangent = true);
 // The same with Jet2<3> (R-33): the plain references of the analytic tangents above (R-33a).
 RotaryInertiaEval rotary_inertia_reference(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn, const Eigen::Vector3d& Wn,
                                            const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha);

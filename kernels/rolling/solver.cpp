@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "kernels/rolling/assembly.hpp"
 #include "kernels/rolling/contact_set.hpp"
@@ -143,7 +144,8 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
     return I.contacts.closest_points_found();  // otherwise cut the step
   };
   VectorXd R;
-  if (!I.newton.solve(opt_, assemble_at, q, R, rep)) return false;
+  const NewtonDriver::Rewind rewind = [&]() { I.contacts.rewind(); };
+  if (!I.newton.solve(opt_, assemble_at, q, R, rep, opt_.residual_only_checks ? rewind : nullptr)) return false;
   // impact control: reject a step that closes a contact too deep
   if (allow_penetration_cut && opt_.max_new_penetration > 0.0 && I.contacts.closes_deeper_than(opt_.max_new_penetration)) {
     rep.penetration_cuts = 1;
@@ -280,6 +282,7 @@ Energies Solver::energies() const {
 }
 
 int Solver::pattern_analyses() const { return impl_->newton.pattern_analyses(); }
+long Solver::residual_only_repeats() const { return impl_->newton.lazy_misses(); }
 
 std::vector<BeamResultant> Solver::beam_resultants() const {
   std::vector<BeamResultant> out;
@@ -319,6 +322,8 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
     h.time.push_back(S.time());
     std::vector<Vector3d> p, v, w, acc, wd;
     std::vector<Matrix3d> R;
+    for (auto* x : {&p, &v, &w, &acc, &wd}) x->reserve(rec.size());  // one allocation each
+    R.reserve(rec.size());
     for (int a : rec) {
       const NodeState& n = S.nodes()[static_cast<std::size_t>(a)];
       p.push_back(n.x);
@@ -328,12 +333,12 @@ History run(const Model& model, const SolverOptions& options, const RunOptions& 
       wd.push_back(n.R * n.A);
       R.push_back(n.R);
     }
-    h.acceleration.push_back(acc);
-    h.angular_acceleration.push_back(wd);
-    h.position.push_back(p);
-    h.velocity.push_back(v);
-    h.angular_velocity.push_back(w);
-    h.rotation.push_back(R);
+    h.acceleration.push_back(std::move(acc));
+    h.angular_acceleration.push_back(std::move(wd));
+    h.position.push_back(std::move(p));
+    h.velocity.push_back(std::move(v));
+    h.angular_velocity.push_back(std::move(w));
+    h.rotation.push_back(std::move(R));
     h.contact.push_back(S.contacts());
     h.surface_contact.push_back(S.surface_contacts());
     if (ro.record_energies) h.energy.push_back(S.energies());

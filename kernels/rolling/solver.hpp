@@ -50,6 +50,10 @@ struct SolverOptions {
   // this is rejected and halved (counts as a cut; accepted once max_cuts is reached).
   double max_new_penetration = 0.0;
   LinearSolver linear_solver = LinearSolver::Automatic;
+  // R-44a: iterates expected to end the Newton iteration are assembled without the tangent first
+  // (again with it only when another direction is needed): the same iterates and bits, fewer
+  // tangents. false: the tangent at every iterate (the plain reference).
+  bool residual_only_checks = true;
 };
 
 struct NodeState {
@@ -140,6 +144,8 @@ class Solver {
   // Analyses of the tangent's pattern so far (SparseLU::analyzePattern or the band LU set up; 1
   // after the first iteration).
   int pattern_analyses() const;
+  // Residual-only passes that had to be assembled again with the tangent (R-44a).
+  long residual_only_repeats() const;
   // Lumped node masses (rigid-body mass + row sums of the consistent beam mass), R-54.
   const std::vector<double>& node_masses() const { return node_mass_; }
   // Largest step allowed by impact_step_fraction for a step of length dt from the current

@@ -10,7 +10,7 @@ using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law, const Vector3d& x,
-                                            const Vector2d* start) {
+                                            const Vector2d* start, const HeightSample* at_start, bool want_tangent) {
   SurfaceContactEval e;
   const Plane& b = f.base;
   const Vector3d y0 = x - b.point;
@@ -25,7 +25,7 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
     s = *start;
     if (!grid) s(1) = xi(1);  // a line profile: s2 follows the centre exactly
   }
-  HeightSample hs = sample_height(f, s);
+  HeightSample hs = at_start && start && s == *start ? *at_start : sample_height(f, s);
   e.converged = false;
   for (int it = 0; it < 60; ++it) {
     Vector2d G = (s - xi) - (zeta - hs.h) * hs.grad;
@@ -53,6 +53,7 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
     }
   }
   e.s = s;
+  e.sample = hs;
   e.point = b.point + s(0) * b.t1 + s(1) * b.t2 + hs.h * b.normal;
   const Vector3d y = x - e.point;
   const double dist = y.norm();
@@ -64,6 +65,7 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
   if (!(e.g_n <= 0.0)) return e;
   e.active = true;
   e.force = law.eps_n * (-e.g_n) * e.normal;
+  if (!want_tangent) return e;  // residual-only assembly (R-44a): the tangent stays zero
   // d2g/dx2 = (I - S_s H^-1 S_s^T)/d with S_s = [t1 + h_1 n, t2 + h_2 n]
   Eigen::Matrix<double, 3, 2> Ss;
   Ss.col(0) = b.t1 + hs.grad(0) * b.normal;

@@ -35,13 +35,18 @@ struct SurfaceContactEval {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the node
   Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero(); // d(-force)/dx
   double damping_force = 0.0;  // c_n damper along nu (set by the solver, R-64)
+  HeightSample sample;         // the height field at s (for the next search from s)
 };
 
 // Closest point and gap for the centre x (Newton from the projection of x on the base plane, or
 // from `start`, the last closest point of the same node, when it lies within 4 cells of it: the
 // node moves far less than a cell between Newton iterates and steps, so the search converges in
 // one or two iterations instead of three or four; the same point to the Newton tolerance).
+// at_start: the height field's sample at *start when the caller has it (the last evaluation's
+// `sample`), used when the search does start at *start: the same bits without sampling again.
+// want_tangent = false: the tangent is left zero (residual-only assembly, R-44a).
 SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceContactLaw& law,
-                                            const Eigen::Vector3d& x, const Eigen::Vector2d* start = nullptr);
+                                            const Eigen::Vector3d& x, const Eigen::Vector2d* start = nullptr,
+                                            const HeightSample* at_start = nullptr, bool want_tangent = true);
 
 }  // namespace rollspec::rolling

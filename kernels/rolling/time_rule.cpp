@@ -8,8 +8,10 @@ TimeRule TimeRule::from(const SolverOptions& options) {
 }
 
 RotaryInertiaEval TimeRule::rotary(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn, const Eigen::Vector3d& Wn,
-                                   const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha) const {
-  return kind_ == Kind::Midpoint ? rotary_inertia_midpoint(J, Rn, Wn, dt, alpha) : rotary_inertia(J, Rn, Wn, An, dt, alpha);
+                                   const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha,
+                                   bool want_tangent) const {
+  return kind_ == Kind::Midpoint ? rotary_inertia_midpoint(J, Rn, Wn, dt, alpha, want_tangent)
+                                 : rotary_inertia(J, Rn, Wn, An, dt, alpha, want_tangent);
 }
 
 void TimeRule::update_rates(NodeState& n, const Eigen::Vector3d& du, const Eigen::Vector3d& alpha, double dt) const {

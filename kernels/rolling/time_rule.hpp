@@ -44,7 +44,8 @@ class TimeRule {
 
   // Inertia pseudo-moment of a rotating point and its tangent: R-32 (Newmark) or R-51 (midpoint).
   RotaryInertiaEval rotary(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn, const Eigen::Vector3d& Wn,
-                           const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha) const;
+                           const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha,
+                           bool want_tangent = true) const;
 
   // Normal penalty force of plane pairs: end point or discrete gradient.
   NormalForce normal_force() const {

@@ -66,6 +66,50 @@ TEST_CASE("band LU: solves random band matrices as dense partial-pivoting LU doe
   CHECK_FALSE(singular.factorize());
 }
 
+TEST_CASE("band LU: the profile-skipping factorisation and solve = the plain band loops, bit for bit") {
+  // beam-like block profile (18 x 18 element blocks overlapping by 6, R-44) and full random bands,
+  // diagonals strong and weak (weak: row interchanges, fill above ku)
+  std::mt19937_64 rng(45);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int pivoted = 0;
+  for (const int n : {18, 54, 102}) {
+    for (const bool profile : {true, false}) {
+      for (const bool weak_diagonal : {false, true}) {
+        const int kl = 17, ku = 17;
+        BandLU fast(n, kl, ku), plain(n, kl, ku);
+        for (int j = 0; j < n; ++j)
+          for (int i = std::max(0, j - ku); i <= std::min(n - 1, j + kl); ++i) {
+            // element e couples equations 12 e .. 12 e + 17
+            if (profile && std::max(i, j) > 12 * (std::min(i, j) / 12) + 17) continue;
+            double v = u(rng);
+            if (i == j) v = weak_diagonal ? 1e-3 * v : v + (v < 0 ? -(kl + ku + 1.0) : kl + ku + 1.0);
+            fast.at(i, j) = v;
+            plain.at(i, j) = v;
+          }
+        REQUIRE(fast.factorize());
+        REQUIRE(plain.factorize_reference());
+        int differ = 0;
+        for (int j = 0; j < n; ++j)
+          for (int i = std::max(0, j - kl - ku); i <= std::min(n - 1, j + kl); ++i) differ += fast.at(i, j) != plain.at(i, j);
+        CAPTURE(n);
+        CAPTURE(profile);
+        CAPTURE(weak_diagonal);
+        CHECK(differ == 0);
+        VectorXd b(n);
+        for (int i = 0; i < n; ++i) b(i) = u(rng);
+        VectorXd xf = b, xp = b, xr = b;
+        fast.solve(xf.data());
+        plain.solve_reference(xp.data());
+        plain.solve(xr.data());  // after the reference factorisation solve runs over the whole band
+        CHECK(xf == xp);
+        CHECK(xr == xp);
+        if (weak_diagonal) ++pivoted;
+      }
+    }
+  }
+  CHECK(pivoted == 6);
+}
+
 namespace {
 
 // A tube of four quadratic elements on a wavy grid with rolling friction and dampers at every node
@@ -182,4 +226,56 @@ TEST_CASE("band LU: a rolling tube run with the band solver follows the SparseLU
   Solver s(rolling_tube(), SolverOptions{});
   REQUIRE(s.advance(2.5e-5).converged);
   CHECK(s.pattern_analyses() == 1);
+}
+
+TEST_CASE("Newton with residual-only checks (R-44a): the rolling tube run equals the plain one bit for bit") {
+  RunOptions ro;
+  ro.dt = 2.5e-5;
+  ro.t_end = 0.01;
+  ro.record_every = 1;
+  ro.record_energies = true;
+  SolverOptions lazy, plain;
+  lazy.max_line_search = plain.max_line_search = 8;  // as the rolling-pipe scene
+  plain.residual_only_checks = false;
+  const History hl = run(rolling_tube(), lazy, ro), hp = run(rolling_tube(), plain, ro);
+  REQUIRE(hl.completed);
+  REQUIRE(hp.completed);
+  CHECK(hl.newton_iterations == hp.newton_iterations);
+  CHECK(hl.cuts == hp.cuts);
+  int differ = 0;
+  for (std::size_t k = 0; k < hp.time.size(); ++k) {
+    for (std::size_t j = 0; j < hp.position[k].size(); ++j)
+      differ += hl.position[k][j] != hp.position[k][j] || hl.acceleration[k][j] != hp.acceleration[k][j] ||
+                hl.rotation[k][j] != hp.rotation[k][j] || hl.angular_velocity[k][j] != hp.angular_velocity[k][j];
+    for (std::size_t c = 0; c < hp.surface_contact[k].size(); ++c)
+      differ += hl.surface_contact[k][c].force != hp.surface_contact[k][c].force ||
+                hl.surface_contact[k][c].g_n != hp.surface_contact[k][c].g_n;
+    differ += hl.energy[k].balance() != hp.energy[k].balance();
+  }
+  MESSAGE("residual-only checks over " << hp.steps << " steps, " << hp.newton_iterations << " Newton iterations");
+  CHECK(differ == 0);
+  // steps that need more directions than the one before: the residual-only pass is repeated with
+  // the tangent (pairs rewound); a tight tolerance and growing steps make the counts vary
+  SolverOptions tight_lazy = lazy, tight_plain = plain;
+  tight_lazy.force_tol = tight_plain.force_tol = 1e-9;
+  Solver sl(rolling_tube(), tight_lazy), sp(rolling_tube(), tight_plain);
+  int its_l = 0, its_p = 0, differ_states = 0;
+  double t = 0.0;
+  for (int k = 0; k < 300; ++k) {
+    t += 2.5e-5 * (k % 5 == 0 ? 8.0 : 0.5);
+    const StepReport rl = sl.advance(t), rp = sp.advance(t);
+    REQUIRE(rl.converged);
+    REQUIRE(rp.converged);
+    its_l += rl.iterations;
+    its_p += rp.iterations;
+    for (std::size_t a = 0; a < sl.nodes().size(); ++a)
+      differ_states += sl.nodes()[a].x != sp.nodes()[a].x || sl.nodes()[a].R != sp.nodes()[a].R ||
+                       sl.nodes()[a].a != sp.nodes()[a].a || sl.nodes()[a].W != sp.nodes()[a].W;
+  }
+  MESSAGE("varying steps: " << its_p << " Newton iterations, " << sl.residual_only_repeats()
+                            << " residual-only passes repeated with the tangent");
+  CHECK(its_l == its_p);
+  CHECK(differ_states == 0);
+  CHECK(sl.residual_only_repeats() > 0);
+  CHECK(sp.residual_only_repeats() == 0);
 }

@@ -249,6 +249,14 @@ TEST_CASE("beam element: analytic force and tangent (R-14a) = the Jet2<3> refere
     z << vec(1.0), a[0], vec(big);
     const PointEnergy pa = beam_point_energy(s, gp[0], z), pj = beam_point_energy_jet(s, gp[0], z);
     worst_p = std::max({worst_p, rel_diff(pa.grad, pj.grad), rel_diff(pa.hess, pj.hess)});
+    // without the Hessian (residual-only assembly, R-44a): the same value and gradient bits
+    const PointEnergy pg = beam_point_energy(s, gp[0], z, false);
+    CHECK(pg.value == pa.value);
+    CHECK(pg.grad == pa.grad);
+    CHECK(pg.hess.isZero(0.0));
+    const BeamElementEval fg = beam_element_internal(s, gp, x, a, false);
+    CHECK(fg.force == f.force);
+    CHECK(fg.energy == f.energy);
   }
   MESSAGE("analytic vs Jet2<3>: force " << worst_f << ", tangent " << worst_k << ", point grad/hess " << worst_p);
   CHECK(worst_f < 1e-10);
@@ -274,6 +282,15 @@ TEST_CASE("rotary inertia: analytic tangent (R-33a) = the Jet2<3> reference, New
     CHECK(rel_diff(a.W, r.W) < 1e-14);
     CHECK(rel_diff(a.A, r.A) < 1e-14);
     CHECK(rel_diff(am.A, rm.A) < 1e-14);
+    // without the tangent (residual-only assembly, R-44a): the same residual and rates, bit for bit
+    const RotaryInertiaEval a0 = rotary_inertia(J, Rn, Wn, An, dt, alpha, false),
+                            am0 = rotary_inertia_midpoint(J, Rn, Wn, dt, alpha, false);
+    CHECK(a0.residual == a.residual);
+    CHECK(a0.W == a.W);
+    CHECK(a0.A == a.A);
+    CHECK(am0.residual == am.residual);
+    CHECK(am0.A == am.A);
+    CHECK(a0.tangent.isZero(0.0));
   }
   MESSAGE("rotary inertia analytic vs Jet2<3>: " << worst);
   CHECK(worst < 1e-10);

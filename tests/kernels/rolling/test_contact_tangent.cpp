@@ -106,6 +106,17 @@ TEST_CASE("contact tangent = central differences of the residual (stick, slip, r
       q.head<3>() = st.x_f + st.g_st + roll + dtan * (pl.t1 + 0.4 * pl.t2) + (0.2 - 1.2e-4) * pl.normal;
       const ContactEval e = evaluate_contact(pl, law, st, xs, q.head<3>(), q.tail<3>());
       REQUIRE(e.active);
+      // without the tangent (residual-only assembly, R-44a): everything else the same bits
+      const ContactEval e0 = evaluate_contact(pl, law, st, xs, q.head<3>(), q.tail<3>(), NormalForce::EndPoint, false);
+      CHECK(e0.residual == e.residual);
+      CHECK(e0.force == e.force);
+      CHECK(e0.moment == e.moment);
+      CHECK(e0.next.x_f == e.next.x_f);
+      CHECK(e0.next.g_st == e.next.g_st);
+      CHECK(e0.slip == e.slip);
+      CHECK(e0.dissipation == e.dissipation);
+      CHECK(e0.tangential_energy == e.tangential_energy);
+      CHECK(e0.tangent.isZero(0.0));
       const bool expect_slip = dtan > 1e-3;
       CHECK(e.slip == expect_slip);
       const Mat6 Kfd = fd_tangent(pl, law, st, xs, q, 1e-7);

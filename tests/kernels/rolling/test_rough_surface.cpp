@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "kernels/rolling/examples.hpp"
@@ -63,6 +64,32 @@ TEST_CASE("height field: gradient and Hessian consistent with the interpolated h
   CHECK(std::abs(sample_height(f, Vector2d(f.s1_0 + 7 * f.ds1, f.s2_0 + 11 * f.ds2)).h - f.h[11 * 40 + 7]) < 1e-15);
 }
 
+TEST_CASE("height field: the paired tap sums = the plain tap loop, bit for bit (grid and line, edges, outside)") {
+  const HeightField fields[2] = {wavy_grid(), bump_line(0.01, 0.2, 0.01)};
+  std::uint64_t x = 12345;
+  auto uni = [&]() {  // splitmix64, portable
+    x += 0x9E3779B97F4A7C15ull;
+    std::uint64_t z = x;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+  };
+  int differ = 0, n = 0;
+  for (const HeightField& f : fields) {
+    const double lo1 = f.s1_0 - 2.5 * f.ds1, hi1 = f.s1_0 + (f.n1 + 1.5) * f.ds1;
+    const double lo2 = f.n2 > 1 ? f.s2_0 - 2.5 * f.ds2 : -1.0, hi2 = f.n2 > 1 ? f.s2_0 + (f.n2 + 1.5) * f.ds2 : 1.0;
+    for (int k = 0; k < 4000; ++k) {
+      Vector2d s(lo1 + (hi1 - lo1) * uni(), lo2 + (hi2 - lo2) * uni());
+      if (k % 10 == 0) s(0) = f.s1_0 + std::floor((hi1 - lo1) / f.ds1 * uni() - 2.0) * f.ds1;  // on a sample line
+      const HeightSample a = sample_height(f, s), b = sample_height_reference(f, s);
+      differ += a.h != b.h || a.grad != b.grad || a.hess != b.hess;
+      ++n;
+    }
+  }
+  CHECK(n == 8000);
+  CHECK(differ == 0);
+}
+
 TEST_CASE("rough-surface contact: force = -eps_n g grad g, tangent vs central differences") {
   for (int kind = 0; kind < 2; ++kind) {
     const HeightField f = kind == 0 ? wavy_grid() : bump_line(0.01, 0.2, 0.01);
@@ -97,6 +124,35 @@ TEST_CASE("rough-surface contact: force = -eps_n g grad g, tangent vs central di
   }
 }
 
+TEST_CASE("rough-surface contact: a search started with the sample at its start = sampling there again, bit for bit") {
+  for (int kind = 0; kind < 2; ++kind) {
+    const HeightField f = kind == 0 ? wavy_grid() : bump_line(0.01, 0.2, 0.01);
+    const SurfaceContactLaw law{0.05, 1e6};
+    Vector3d x = f.base.point + 0.05 * f.base.t1 + 0.02 * f.base.t2 + 0.045 * f.base.normal;
+    SurfaceContactEval last = evaluate_surface_contact(f, law, x);
+    REQUIRE(last.converged);
+    CHECK(last.sample.h == sample_height(f, last.s).h);
+    for (int k = 0; k < 20; ++k) {  // a node moving on, each search from the last closest point
+      x += Vector3d(1e-4, -3e-5, 2e-5 * std::sin(k));
+      const SurfaceContactEval cached = evaluate_surface_contact(f, law, x, &last.s, &last.sample);
+      const SurfaceContactEval plain = evaluate_surface_contact(f, law, x, &last.s);
+      CHECK(cached.s == plain.s);
+      CHECK(cached.g_n == plain.g_n);
+      CHECK(cached.force == plain.force);
+      CHECK(cached.tangent == plain.tangent);
+      CHECK(cached.sample.grad == plain.sample.grad);
+      // without the tangent (residual-only assembly, R-44a): the same point, gap and force
+      const SurfaceContactEval bare = evaluate_surface_contact(f, law, x, &last.s, &last.sample, false);
+      CHECK(bare.s == plain.s);
+      CHECK(bare.g_n == plain.g_n);
+      CHECK(bare.normal == plain.normal);
+      CHECK(bare.force == plain.force);
+      CHECK(bare.tangent.isZero(0.0));
+      last = cached;
+    }
+  }
+}
+
 TEST_CASE("single-point contact validity: r kappa_max < 1") {
   // smooth sinusoid h = H/2 cos(2 pi s/lambda): valley curvature H/2 (2 pi/lambda)^2 = 4.935
   const double H = 0.01, lambda = 0.2;
@@ -114,6 +170,26 @@ TEST_CASE("single-point contact validity: r kappa_max < 1") {
   CHECK_FALSE(bad.valid);
   CHECK(kink.valid);
   CHECK(std::abs(ok.max_concave_curvature / kappa - 1.0) < 0.01);
+}
+
+TEST_CASE("single-point contact validity: screened grid points = every point's eigenvalues, bit for bit") {
+  HeightField rough = wavy_grid();
+  std::uint64_t x = 777;
+  for (double& h : rough.h) {  // add white noise: many valleys, the maximum far from the first point
+    x = x * 6364136223846793005ull + 1442695040888963407ull;
+    h += 2e-4 * (static_cast<double>(x >> 11) * 0x1.0p-53 - 0.5);
+  }
+  const HeightField smooth = wavy_grid();
+  const HeightField* fields[2] = {&rough, &smooth};
+  for (const HeightField* g : fields) {
+    for (const double r : {0.001, 0.05}) {
+      const ContactValidity a = check_single_point_contact(*g, r), b = check_single_point_contact_reference(*g, r);
+      CHECK(a.max_concave_curvature == b.max_concave_curvature);
+      CHECK(a.where == b.where);
+      CHECK(a.valid == b.valid);
+      CHECK(a.radius_limit == b.radius_limit);
+    }
+  }
 }
 
 TEST_CASE("sphere node moved over a sinusoidal bump follows the offset curve") {
