@@ -53,6 +53,29 @@ inline __attribute__((always_inline)) Axis locate(double s, double s0, double ds
 // Two-lane vectors (GCC/Clang vector extension; SSE2 on x86-64, plain code elsewhere).
 typedef double Lanes2 __attribute__((vector_size(16)));
 
+namespace {
+// The s2 scaling, the symmetric Hessian and the flat continuation where s is clamped: the same for
+// the fast and the plain tap sums.
+void finish_sample(HeightSample& out, const HeightField& f, bool grid, const Axis& a1, const Axis& a2) {
+  if (grid) {
+    out.grad(1) /= f.ds2;
+    out.hess(0, 1) /= f.ds1 * f.ds2;
+    out.hess(1, 1) /= f.ds2 * f.ds2;
+  }
+  out.hess(1, 0) = out.hess(0, 1);
+  if (!a1.inside) {  // clamped: flat continuation along s1
+    out.grad(0) = 0.0;
+    out.hess.row(0).setZero();
+    out.hess.col(0).setZero();
+  }
+  if (grid && !a2.inside) {
+    out.grad(1) = 0.0;
+    out.hess.row(1).setZero();
+    out.hess.col(1).setZero();
+  }
+}
+}  // namespace
+
 // The six tap sums in three pairs (h, h_1), (h_2, h_11), (h_12, h_22): per sum the same products
 // (a_i b_j) v in the same order as the plain loop of sample_height_reference, so the same bits.
 HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
@@ -98,22 +121,7 @@ HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
   out.hess(0, 0) = acc[1][1] / (f.ds1 * f.ds1);
   out.hess(0, 1) = acc[2][0];
   out.hess(1, 1) = acc[2][1];
-  if (grid) {
-    out.grad(1) /= f.ds2;
-    out.hess(0, 1) /= f.ds1 * f.ds2;
-    out.hess(1, 1) /= f.ds2 * f.ds2;
-  }
-  out.hess(1, 0) = out.hess(0, 1);
-  if (!a1.inside) {  // clamped: flat continuation along s1
-    out.grad(0) = 0.0;
-    out.hess.row(0).setZero();
-    out.hess.col(0).setZero();
-  }
-  if (grid && !a2.inside) {
-    out.grad(1) = 0.0;
-    out.hess.row(1).setZero();
-    out.hess.col(1).setZero();
-  }
+  finish_sample(out, f, grid, a1, a2);
   return out;
 }
 
@@ -151,22 +159,7 @@ HeightSample sample_height_reference(const HeightField& f, const Eigen::Vector2d
   }
   out.grad(0) /= f.ds1;
   out.hess(0, 0) /= f.ds1 * f.ds1;
-  if (grid) {
-    out.grad(1) /= f.ds2;
-    out.hess(0, 1) /= f.ds1 * f.ds2;
-    out.hess(1, 1) /= f.ds2 * f.ds2;
-  }
-  out.hess(1, 0) = out.hess(0, 1);
-  if (!a1.inside) {  // clamped: flat continuation along s1
-    out.grad(0) = 0.0;
-    out.hess.row(0).setZero();
-    out.hess.col(0).setZero();
-  }
-  if (grid && !a2.inside) {
-    out.grad(1) = 0.0;
-    out.hess.row(1).setZero();
-    out.hess.col(1).setZero();
-  }
+  finish_sample(out, f, grid, a1, a2);
   return out;
 }
 
