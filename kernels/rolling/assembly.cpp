@@ -86,7 +86,9 @@ void BandSink::add_dense(const int* dofs, int m, const double* K) {
       hi = std::max(hi, e[i]);
     }
   }
-  bool run = true;  // free equations e[0], e[0] + 1, ...: whole columns of the block at once
+  // free equations e[0], e[0] + 1, ...: whole columns of the block at once (a fixed first dof, e = -1,
+  // followed by equations 0, 1, ... is not such a run)
+  bool run = m > 0 && e[0] >= 0;
   for (int i = 0; i < m; ++i) run = run && e[i] == e[0] + i;
   if (run && lu->in_band(lo, hi) && lu->in_band(hi, lo)) {
     switch (m) {  // the usual sizes with fixed loop lengths
