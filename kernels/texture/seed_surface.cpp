@@ -152,6 +152,12 @@ SeedSurfaceGenerator::SeedSurfaceGenerator(const Psd& psd, const SeedSurfaceRequ
   sx.period = fast_even_length(2 * sx.samples);
   sy.period = fast_even_length(2 * sy.samples);
   const LineTextureGenerator probe_x(psd, sx), probe_y(psd, sy);
+  // Eq. 30 scales the surface to sigma: a PSD with no power on the grid's harmonics has nothing to scale.
+  if (!(probe_x.target_variance() > 0.0) || !(probe_y.target_variance() > 0.0))
+    throw std::invalid_argument("seed surface: the PSD is zero at every wavenumber the grid holds (" +
+                                std::to_string(probe_x.fundamental()) + " to " +
+                                std::to_string(probe_x.fundamental() * static_cast<double>(probe_x.harmonics() - 1)) +
+                                " rad/m); allowed: a grid spacing and size that reach the PSD's band");
   const std::vector<double> rx = line_autocovariance(probe_x, 2 * max_box + rq.nx);
   const std::vector<double> ry = line_autocovariance(probe_y, 2 * max_box + rq.ny);
   box_ = seed_box_lengths(rx, ry, rq.dx, rq.dy, rq.correlation_x, rq.correlation_y);

@@ -11,10 +11,12 @@
 //   rollspec version (or rollspec --version, rollspec -V)
 //
 // Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
-// output, 78 bad configuration, 130 interrupted.
+// output, 74 cannot write standard output, 78 bad configuration, 130 interrupted.
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <string>
@@ -51,6 +53,21 @@ const char* kUsage =
 }  // namespace
 
 namespace {
+// Everything a command printed reaches its destination, or the command fails: a full disk or
+// /dev/full behind standard output is exit 74, not a cut file and exit 0.
+void check_standard_output() {
+  std::cout.flush();
+  errno = 0;
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  if (failed) {
+    const int err = errno;
+    std::clearerr(stdout);
+    const std::string why = err ? std::strerror(err) : "the device or file refused the data (a full disk?)";
+    throw rollspec::UserError(EX_IOERR, "cannot write standard output: " + why +
+                                            "; the printed output is incomplete (redirect it to a disk with space)");
+  }
+}
+
 // After a failed HDF5 write (a full disk) the library still holds the file whose close failed, and
 // its exit-time cleanup can crash on it: report, flush, and leave without running it.
 int finish(int code) {
@@ -92,9 +109,12 @@ int main(int argc, char** argv) {
   const ensemble::MpiSession mpi(&argc, &argv);
   io::record_command_line(argc, argv);
   try {
-    return it->second(cli::Args(argv + 2, argv + argc));
+    const int code = it->second(cli::Args(argv + 2, argv + argc));
+    check_standard_output();
+    return code;
   } catch (const UserError& e) {
     std::cerr << ensemble::rank_prefix() << "rollspec " << command << ": error: " << e.what() << "\n";
+    std::cout.clear();  // what failed is reported; whatever was printed is not the error
     return finish(e.exit_code());
   } catch (const std::bad_alloc&) {
     std::cerr << ensemble::rank_prefix() << "rollspec " << command

@@ -27,14 +27,16 @@ int psd_command(const Args& args) {
       "                    [--overlap F] [--window hann|rect] [--out FILE.csv]\n"
       "\n"
       "One-sided Welch PSD of each channel of a measured signal, in (m/s^2)^2/Hz: segments mean-detrended and\n"
-      "windowed, density scaling. Output CSV: frequency_hz,<channel>,... (to stdout without --out; a ',', ';',\n"
-      "tab or '\"' in a channel name is written as '_').\n"
+      "windowed, density scaling. Output CSV: the line '# rollspec-psd-csv: ...' (the PSD unit; rollspec\n"
+      "replaces an existing --out only if it starts so), then frequency_hz,<channel>,... (to stdout without\n"
+      "--out; a ',', ';', tab or '\"' in a channel name is written as '_').\n"
       "\n"
       "SIGNAL is read by its content, else by its extension:\n"
       "  CSV/text  a header line naming the columns, then one sample per row. Delimiter ',', ';' or tab, from\n"
       "            the header line (tab, else ';', else ','); with ';' a decimal comma is accepted (0,125;1,5),\n"
       "            one decimal mark per file. A column named t or time, alone or with the unit s or ms written\n"
-      "            _s, [s], (s) or /s (time_s, Time (s), t [ms]; case and spaces ignored) is the time column:\n"
+      "            _s, [s], (s) or /s (time_s, Time (s), t [ms]; case and spaces ignored; a bare capital T is\n"
+      "            not: a temperature or tension) is the time column:\n"
       "            never a channel, it gives the sample rate. Its stamps must increase, each within 0.1 sample\n"
       "            interval of the uniform grid through the first and last stamps.\n"
       "  WAV, FLAC, AIFF, AU, CAF, Ogg (libsndfile)  rate from the header, channels channel_1..channel_N.\n"
@@ -105,6 +107,9 @@ int psd_command(const Args& args) {
   }
 
   std::ostringstream s;
+  // The marker line tells rollspec's own PSD files from a measurement in the same columns (an
+  // existing --out is replaced only if it starts with it); readers skip '#' lines.
+  s << io::kPsdCsvMarker << ": one-sided PSD in (m/s^2)^2/Hz, Welch\n";
   s << "frequency_hz";
   for (std::string c : t.channels) {
     // The output is comma-delimited and read back by the same reader: no delimiter inside a name.

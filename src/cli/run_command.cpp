@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
@@ -24,6 +25,21 @@
 namespace rollspec::cli {
 
 namespace fs = std::filesystem;
+
+namespace {
+// --only writes one realisation: it replaces an earlier --only result, never a finished ensemble.
+void refuse_replacing_an_ensemble(const std::string& write_path, const std::string& out) {
+  if (!fs::exists(write_path)) return;
+  const io::Hdf5Reader r(write_path);
+  if (r.has_attribute("/run", "only_realisation")) return;
+  const std::string n = r.has_attribute("/run", "realisations_computed")
+                            ? std::to_string(static_cast<long long>(r.double_attribute("/run", "realisations_computed"))) + " "
+                            : std::string();
+  throw cannot_create("output file '" + out + "' (--out) holds a finished ensemble result (" + n +
+                      "realisations computed); --only would replace it with one realisation; choose another --out (the "
+                      "default is STUDY-only-ID.h5), or add --force to replace it");
+}
+}  // namespace
 
 int run_command(const Args& args) {
   const std::string usage =
@@ -80,6 +96,7 @@ int run_command(const Args& args) {
   target.inputs = s.input_files();
   for (const auto& p : texture_io::profile_files(s)) target.inputs.push_back(p);
   const std::string write_path = io::check_output_target(target);
+  if (only >= 0 && !target.force) refuse_replacing_an_ensemble(write_path, out);
 
   if (scene->single_run()) {
     scene->prepare(quiet, vm.count("rebuild") > 0);
@@ -95,10 +112,14 @@ int run_command(const Args& args) {
 
   ensemble::EnsembleConfig cfg;
   CheckpointSession checkpoint;
+  // The checkpoint (and its lock) belongs to the file written, not to the name given: two runs
+  // on one result through two names (a symbolic link) are refused like two runs on one name.
+  const std::string checkpoint_dir = write_path + ".checkpoint";
+  if (only >= 0 && ensemble::mpi_rank() == 0) checkpoint.lock = std::make_unique<ensemble::CheckpointLock>(checkpoint_dir);
   if (only < 0) {
     // Resolves the study a --resume runs (the checkpoint's), so the scene is made after this.
     const std::string asked = s.canonical_text();
-    checkpoint = open_checkpoint(out + ".checkpoint", s, study.sets, resume, restart, quiet);
+    checkpoint = open_checkpoint(checkpoint_dir, s, study.sets, resume, restart, quiet);
     cfg.checkpoint_dir = checkpoint.directory;
     if (s.canonical_text() != asked) scene = scenes::find_scene(s.scene()).make(s);
   }
@@ -129,10 +150,9 @@ int run_command(const Args& args) {
     if (cfg.only >= 0) w.attribute("/run", "only_realisation", static_cast<std::int64_t>(cfg.only));
     const ensemble::CriticalSection finishing;  // an interrupt waits until the bookkeeping is done
     w.commit();
-    if (!cfg.checkpoint_dir.empty()) {
+    if (!cfg.checkpoint_dir.empty())
       ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear(/*keep_lock=*/true);
-      checkpoint.lock->remove();
-    }
+    if (checkpoint.lock) checkpoint.lock->remove();
   }
   if (!quiet)
     std::cout << "wrote " << out << " (" << io::counted(sums.count, "realisation") << ", " << sums.computed << " computed in "

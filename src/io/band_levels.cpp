@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
@@ -32,6 +33,24 @@ std::size_t pick_row(const Hdf5Reader& r, const std::vector<std::string>& names,
                     "; allowed: a name or an index");
 }
 
+// Well-formed UTF-8 without control characters: a name that is printed and written into JSON.
+bool printable_utf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7f) return false;
+    const int n = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xe ? 2 : (c >> 3) == 0x1e ? 3 : -1;
+    if (n < 0 || i + static_cast<std::size_t>(n) >= s.size() + static_cast<std::size_t>(n == 0)) return false;  // cut sequence
+    for (int k = 1; k <= n; ++k)
+      if ((static_cast<unsigned char>(s[i + static_cast<std::size_t>(k)]) >> 6) != 0x2) return false;
+    i += static_cast<std::size_t>(n) + 1;
+  }
+  return true;
+}
+
+// A double's decibels lie within +-3083 dB (10 log10 of the largest and smallest doubles): beyond
+// that a level is not a level of any PSD a double holds.
+constexpr double kLargestLevelDb = 3100.0;
+
 }  // namespace
 
 BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
@@ -46,12 +65,23 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
   if (names.size() != ns)
     throw data_error(file + ": /bands/sensor has " + std::to_string(names.size()) + " names; expected " + std::to_string(ns) +
                      " (one per row of /bands/level_db)");
+  for (std::size_t i = 0; i < ns; ++i)
+    if (!printable_utf8(names[i]))
+      throw data_error(file + ": /bands/sensor[" + std::to_string(i) + "] is not printable UTF-8 text; allowed: sensor names "
+                       "as rollspec writes them (the file was altered or damaged)");
   const std::size_t row = pick_row(r, names, sensor);
 
   BandLevels b;
   b.sensor = names[row];
-  b.realisations = static_cast<std::uint64_t>(r.double_attribute("/psd", "realisations"));
+  const double realisations = r.double_attribute("/psd", "realisations");
+  if (!(realisations >= 1.0 && realisations <= 9.0e15 && realisations == std::floor(realisations)))
+    throw data_error(file + ": /psd@realisations = " + number_text(realisations) +
+                     "; allowed: a whole number >= 1 (the file was altered or damaged)");
+  b.realisations = static_cast<std::uint64_t>(realisations);
   b.confidence = r.double_attribute("/psd", "confidence_level");
+  if (!(b.confidence > 0.0 && b.confidence < 1.0))
+    throw data_error(file + ": /psd@confidence_level = " + number_text(b.confidence) +
+                     "; allowed: 0 < level < 1 (the file was altered or damaged)");
   b.interval_method = r.string_attribute("/psd", "interval_method");
   // Every band dataset must match /bands/level_db, or the rows below would read past their end.
   const std::string shape = std::to_string(ns) + " x " + std::to_string(nb);
@@ -70,6 +100,23 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
   row_of("/bands/ci_upper_db", b.ci_upper_db);
   row_of("/bands/std", b.std_dev);
   row_of("/bands/log_std", b.log_std);
+  for (std::size_t k = 0; k < nb; ++k) {
+    const auto where = [&](const char* name) { return file + ": " + name + "[" + std::to_string(row) + ", " + std::to_string(k) + "] = "; };
+    for (const auto& [name, v] : {std::pair<const char*, double>{"/bands/std", b.std_dev[k]}, {"/bands/log_std", b.log_std[k]}})
+      if (!(v >= 0.0 && std::isfinite(v)))
+        throw data_error(where(name) + number_text(v) + "; allowed: a finite spread >= 0 (the file was altered or damaged)");
+    // Levels: -inf for a band without power; interval bounds: +-inf where the interval is unbounded.
+    for (const auto& [name, v, bounds] : {std::tuple<const char*, double, bool>{"/bands/level_db", b.level_db[k], false},
+                                          {"/bands/ci_lower_db", b.ci_lower_db[k], true},
+                                          {"/bands/ci_upper_db", b.ci_upper_db[k], true}})
+      if (std::isfinite(v) ? std::fabs(v) > kLargestLevelDb : !bounds && v > 0.0)
+        throw data_error(where(name) + number_text(v) + " dB; allowed: " + (bounds ? "+-inf (unbounded)" : "-inf (no power)") +
+                         " or a level within +-" + number_text(kLargestLevelDb) + " dB (the file was altered or damaged)");
+    if (b.ci_lower_db[k] > b.ci_upper_db[k])
+      throw data_error(file + ": band " + std::to_string(k) + " of sensor " + names[row] + " has ci_lower_db " +
+                       number_text(b.ci_lower_db[k]) + " > ci_upper_db " + number_text(b.ci_upper_db[k]) +
+                       "; allowed: lower <= upper (the file was altered or damaged)");
+  }
   for (const auto& [name, v] : {std::pair<const char*, std::vector<double>*>{"/bands/lower_frequency", &b.lower},
                                 {"/bands/upper_frequency", &b.upper},
                                 {"/bands/nominal_frequency", &b.nominal}}) {

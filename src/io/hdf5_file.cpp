@@ -154,7 +154,21 @@ void Hdf5Writer::attach_scale(const std::string& dataset, const std::string& sca
 }
 
 void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
-  if (H5LTset_attribute_string(file_.get(), object.c_str(), name.c_str(), value.c_str()) < 0)
+  // A fixed-length string attribute lives in the object header, which holds at most 64 KiB; a long
+  // text (a command line of many --set, a large study) is a variable-length string in the heap.
+  constexpr std::size_t kLongText = 32768;
+  if (value.size() < kLongText) {
+    if (H5LTset_attribute_string(file_.get(), object.c_str(), name.c_str(), value.c_str()) < 0)
+      throw cannot_create(failure_reason("cannot write attribute " + object + "@" + name + " to " + temp_path_));
+    return;
+  }
+  Hdf5Handle type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  Hdf5Handle space(H5Screate(H5S_SCALAR));
+  Hdf5Handle attr(H5Acreate_by_name(file_.get(), object.c_str(), name.c_str(), type.get(), space.get(), H5P_DEFAULT,
+                                    H5P_DEFAULT, H5P_DEFAULT));
+  const char* p = value.c_str();
+  if (!attr.valid() || H5Awrite(attr.get(), type.get(), &p) < 0)
     throw cannot_create(failure_reason("cannot write attribute " + object + "@" + name + " to " + temp_path_));
 }
 

@@ -18,13 +18,28 @@ namespace {
 
 bool is_psd_csv(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  char head[13] = {};
-  in.read(head, 12);
-  return in.gcount() == 12 && std::string(head, 12) == "frequency_hz";
+  const std::string marker = kPsdCsvMarker;
+  std::string head(marker.size(), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  return in.gcount() == static_cast<std::streamsize>(head.size()) && head == marker;
+}
+
+// HDF5's format signature at offset 0, and HDF5 itself cannot open the file.
+bool is_damaged_hdf5(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[8] = {};
+  in.read(head, 8);
+  if (in.gcount() != 8 || std::string(head, 8) != std::string("\x89HDF\r\n\x1a\n", 8)) return false;
+  try {
+    const Hdf5Reader r(path);
+    return false;
+  } catch (const UserError&) {
+    return true;
+  }
 }
 
 std::string kind_description(const std::string& kind) {
-  if (kind == kPsdCsvKind) return "a PSD written by rollspec psd (header frequency_hz,...)";
+  if (kind == kPsdCsvKind) return std::string("a PSD written by rollspec psd (first line '") + kPsdCsvMarker + "...')";
   return "a rollspec file of filetype '" + kind + "'";
 }
 }  // namespace
@@ -64,7 +79,7 @@ std::string check_output_target(const OutputTarget& t) {
                         "'); refusing to overwrite an input; choose another " + t.option);
   }
   const bool same_kind = !t.check_kind || t.kind == kPsdCsvKind ? is_psd_csv(out) : is_rollspec_hdf5(out, t.kind);
-  if (t.check_kind && !same_kind && !t.force)
+  if (t.check_kind && !same_kind && !t.force && !(t.replace_damaged_hdf5 && is_damaged_hdf5(out)))
     throw cannot_create("output file '" + out + "' (" + t.option + ") exists and is not " + kind_description(t.kind) +
                         "; refusing to replace it; choose another " + t.option + (t.option.rfind("--", 0) == 0 ? ", or add --force to replace it" : ""));
   const std::string target = link ? fs::canonical(out, ec).string() : out;

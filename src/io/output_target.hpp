@@ -13,8 +13,10 @@
 
 namespace rollspec::io {
 
-// The CSV written by `rollspec psd` (no HDF5 filetype attribute): recognised by its header.
+// The CSV written by `rollspec psd` (no HDF5 filetype attribute): recognised by its first line,
+// which starts with kPsdCsvMarker ("frequency_hz,..." alone is the measurement format compare reads).
 constexpr const char* kPsdCsvKind = "rollspec-psd-csv";
+constexpr const char* kPsdCsvMarker = "# rollspec-psd-csv";
 
 struct OutputTarget {
   OutputTarget(std::string p, std::string k) : path(std::move(p)), kind(std::move(k)) {}
@@ -25,6 +27,9 @@ struct OutputTarget {
   std::vector<std::string> inputs;  // files the run reads
   bool check_kind = true;    // false: only the checks that never depend on the file's contents
   bool clean_stale = true;   // remove stale temporaries (one process only, e.g. MPI rank 0)
+  // An HDF5 file that HDF5 cannot open (a damaged rollspec table at its automatic name) may be
+  // replaced; anything else of another kind still needs force.
+  bool replace_damaged_hdf5 = false;
 };
 
 // Refuses (exit 73, or 64 for an output equal to an input) with a message naming the path, what it

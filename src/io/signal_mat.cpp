@@ -15,6 +15,7 @@
 
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/mat_v5_layout.hpp"
 #include "src/io/signal_file.hpp"
 #include "src/io/time_column.hpp"
 
@@ -143,6 +144,8 @@ SignalTable read_mat_signal(const std::string& path) {
   if (!m)
     throw data_error(path + ": cannot read it as a MATLAB .mat file" + matio_says() +
                      "; allowed: MAT v4, v5 (scipy.io.savemat, MATLAB -v7) or v7.3 (MATLAB -v7.3)");
+  // matio trusts a variable's dimensions over its stored data (uninitialised or cut samples).
+  if (Mat_GetVersion(m.get()) == MAT_FT_MAT5) check_mat_v5_layout(path);
   SignalTable s;
   s.file = path;
   s.format = version_name(Mat_GetVersion(m.get()));

@@ -30,6 +30,27 @@ bool is_float(int format) {
   return sub == SF_FORMAT_FLOAT || sub == SF_FORMAT_DOUBLE;
 }
 
+// libsndfile shortens a WAV or AIFF whose data chunk claims more bytes than the file holds to what is
+// there, and says so only in its log ("data : 8192 (should be 3000)"): a file cut short is refused.
+std::string data_chunk_cut_short(SNDFILE* f) {
+  std::string log(1 << 14, '\0');
+  sf_command(f, SFC_GET_LOG_INFO, log.data(), static_cast<int>(log.size()));
+  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+  std::size_t start = 0;
+  while (start < log.size()) {
+    std::size_t end = log.find('\n', start);
+    if (end == std::string::npos) end = log.size();
+    std::string line = log.substr(start, end - start);
+    start = end + 1;
+    const auto first = line.find_first_not_of(' ');
+    if (first == std::string::npos) continue;
+    line = line.substr(first);
+    const bool data_chunk = line.rfind("data ", 0) == 0 || line.rfind("SSND ", 0) == 0;
+    if (data_chunk && line.find("(should be") != std::string::npos) return line;
+  }
+  return {};
+}
+
 std::string format_name(int format) {
   SF_FORMAT_INFO major{}, sub{};
   major.format = format & SF_FORMAT_TYPEMASK;
@@ -82,6 +103,15 @@ SignalTable read_sound_signal(const std::string& path) {
     throw data_error(path + ": cannot read the samples after frame " + std::to_string(frame) + ": " + sndfile_says(f.get()) +
                      "; allowed: an undamaged sound file");
   if (frame == 0) throw data_error(path + ": no samples (" + s.format + "); allowed: a sound file with at least one frame");
+  // A damaged or cut file must not become a shorter signal in silence: every frame the header
+  // declares is read, or the file is refused.
+  if (info.frames > 0 && info.frames != SF_COUNT_MAX && static_cast<sf_count_t>(frame) != info.frames)
+    throw data_error(path + ": the header declares " + std::to_string(info.frames) + " frames but only " + std::to_string(frame) +
+                     " could be read (" + s.format + "): the file is cut short or damaged; allowed: an undamaged sound file");
+  const std::string cut = data_chunk_cut_short(f.get());
+  if (!cut.empty())
+    throw data_error(path + ": the sample data is shorter than the header declares (libsndfile: '" + cut + "' bytes): the file is cut "
+                     "short or damaged (a recorder stopped while writing?); allowed: an undamaged sound file");
   return s;
 }
 

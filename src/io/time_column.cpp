@@ -28,7 +28,9 @@ double time_column_unit(const std::string& name) {
     const std::string b = base;
     if (n.compare(0, b.size(), b) != 0) continue;
     const std::string unit = n.substr(b.size());
-    if (unit.empty()) return 1.0;
+    // A bare capital T is a temperature or a tension as often as a time: only "t", "time" or a
+    // name with a time unit ("T (s)") is taken for the time column.
+    if (unit.empty()) return n == "t" && name.find('T') != std::string::npos ? 0.0 : 1.0;
     for (const auto& [u, seconds] : {std::pair<const char*, double>{"s", 1.0}, {"ms", 1e-3}})
       for (const auto& [open, close] : {std::pair<const char*, const char*>{"_", ""}, {"[", "]"}, {"(", ")"}, {"/", ""}})
         if (unit == std::string(open) + u + close) return seconds;

@@ -425,7 +425,9 @@ class BallOnBeam final : public Scene {
     w.attribute("/contact", "law", b_.law_name);
     w.attribute("/contact", "static_compression", b_.static_compression);
     w.attribute("/contact", "patch_half_width", b_.patch_half_width);
-    w.attribute("/contact", "filter", b_.filter_name);
+    w.attribute("/contact", "filter", b_.filter_applied);
+    if (b_.filter_applied != b_.filter_name)
+      w.attribute("/contact", "filter_requested", b_.filter_name + " (not applied: the contact is solved on the strip)");
     w.attribute("/contact", "contact_half_width", b_.contact_half_width);
     w.attribute("/contact", "effective_modulus", b_.model.contact.effective_modulus);
     if (linearised()) w.attribute("/contact", "k0", b_.model.contact.k0);
@@ -533,7 +535,7 @@ class BallOnBeam final : public Scene {
               "G_eq: path PSD of the isotropic surface under a Hertz disc of radius a (kernels/texture Eq. 38)");
     for (const char* d : {"/roughness/psd_raw", "/roughness/psd_patch", "/roughness/psd_iso2d"})
       if (have_iso || std::string(d) != "/roughness/psd_iso2d") w.attach_scale(d, "/roughness/wavenumber", 0);
-    w.attribute("/roughness", "filter", b_.filter_name);
+    w.attribute("/roughness", "filter", b_.filter_applied);
     w.attribute("/roughness", "contact_half_width", a);
     w.attribute("/roughness", "spacing", b_.spacing);
     w.attribute("/roughness", "band_limit_wavenumber", b_.band_limit_wavenumber);

@@ -87,6 +87,9 @@ void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
                                         : ContactFilter::solver;
   b.contact_half_width = a;
   b.patch_half_width = b.filter == ContactFilter::patch ? a : 0.0;
+  // law = path and blocked_force = solver resolve the contact on a strip themselves: a patch filter
+  // is accepted there but not applied, and the result says so (/contact@filter is what was applied).
+  b.filter_applied = b.filter == ContactFilter::patch && (b.path_law() || b.blocked_solver()) ? "none" : b.filter_name;
   if (b.filter == ContactFilter::iso2d && b.blocked_solver())
     s.refuse("contact.filter", "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
                                "resolves the contact itself); allowed with solver: none or patch (both ignored)");

@@ -47,6 +47,7 @@ struct BallOnBeamSettings {
   texture::Psd line_psd;
   ContactFilter filter = ContactFilter::patch;
   std::string filter_name;         // [contact] filter as written
+  std::string filter_applied;      // the filter the roughness actually passes through
   // filter = solver with [equivalent_roughness] line = strip: the line is h_eq of strip 0 along the path
   // (the path table's strip and grid), the same for every realisation, not synthesised.
   bool strip_line = false;

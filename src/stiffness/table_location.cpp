@@ -21,14 +21,30 @@ bool climbs(const fs::path& p) {
 }
 }  // namespace
 
+// True if `inner` (resolved, symbolic links followed as far as the path exists) lies in `outer`.
+bool lies_within(const fs::path& inner, const fs::path& outer) {
+  std::error_code ec;
+  const fs::path a = fs::weakly_canonical(fs::absolute(inner), ec), b = fs::weakly_canonical(fs::absolute(outer), ec);
+  const auto rel = a.lexically_relative(b);
+  return !rel.empty() && !climbs(rel);
+}
+
 std::string prepare_table_path(const study::Study& s, const std::string& path, const std::string& filetype,
                                bool automatic) {
   const std::string key = automatic ? "stiffness.table_dir" : "stiffness.table";
   const fs::path dir = fs::path(path).parent_path();
+  const fs::path table_dir(s.text("stiffness.table_dir"));
+  const fs::path study_dir = fs::absolute(s.file()).parent_path();
+  // A relative table_dir is confined to the study's directory after symbolic links are resolved:
+  // neither '..' nor a link out of it writes tables elsewhere. An absolute one names a shared cache
+  // the user chose, and must exist.
+  if (automatic && !table_dir.is_absolute() && !lies_within(dir, study_dir))
+    s.refuse(key, "resolves to " + fs::weakly_canonical(fs::absolute(dir)).string() + ", outside the study's directory " +
+                      study_dir.string() + " ('..' or a symbolic link), and rollspec writes tables only below the study's directory; allowed: such a "
+                      "directory, or an absolute path of an existing directory");
   std::error_code ec;
   if (!dir.empty() && !fs::is_directory(dir, ec)) {
     if (fs::exists(dir, ec)) s.refuse(key, "the table directory " + dir.string() + " is not a directory");
-    const fs::path table_dir(s.text("stiffness.table_dir"));
     if (!automatic)
       s.refuse(key, "the table's directory " + dir.string() + " does not exist; allowed: a path in an existing directory");
     if (table_dir.is_absolute() || climbs(table_dir))
@@ -39,9 +55,11 @@ std::string prepare_table_path(const study::Study& s, const std::string& path, c
   }
   io::OutputTarget target{path, filetype};
   target.option = s.where(key);
-  // An automatic name (<table_dir>/stiffness-<input hash>.h5) is rollspec's own: a damaged table
-  // there may be rebuilt. An explicit path is replaced only if it holds a rollspec table.
-  target.force = automatic;
+  // An automatic name (<table_dir>/stiffness-<input hash>.h5) is rollspec's: a table of the same
+  // kind, or a damaged HDF5 file, there may be rebuilt; a file of any other kind (or a symbolic link
+  // to one) is the user's and is never replaced. An explicit path is replaced only if it holds a
+  // rollspec table of the same kind.
+  target.replace_damaged_hdf5 = automatic;
   target.inputs = s.input_files();
   for (const auto& p : texture_io::profile_files(s)) target.inputs.push_back(p);
   try {

@@ -198,6 +198,13 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
   if (fs::is_directory(path, dir_ec))
     throw missing_input("cannot read study file '" + path + "': it is a directory; expected an INI file");
   io::require_regular_input(path, "study file");
+  // A study is a few kilobytes of keys: a huge file is a wrong argument, refused before it is read.
+  constexpr std::uintmax_t kLargestStudy = 4u << 20;
+  std::error_code size_ec;
+  const std::uintmax_t bytes = fs::file_size(path, size_ec);
+  if (!size_ec && bytes > kLargestStudy)
+    throw config_error("study file '" + path + "' is " + std::to_string(bytes) + " bytes; allowed: at most " +
+                       std::to_string(kLargestStudy) + " bytes (a study is an INI file of keys; is this the right file?)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open study file '" + path + "'");
   std::ostringstream buf;

@@ -18,8 +18,9 @@ def psd(args, tmp_path, name="psd.csv"):
     r = run(["psd", *args, "--out", out])
     assert r.returncode == 0, r.stderr
     with open(out) as f:
+        assert f.readline().startswith("# rollspec-psd-csv: one-sided PSD in (m/s^2)^2/Hz")
         header = f.readline().strip().split(",")
-    return header, np.loadtxt(out, delimiter=",", skiprows=1, ndmin=2), out.read_bytes()
+    return header, np.loadtxt(out, delimiter=",", skiprows=2, ndmin=2), out.read_bytes()
 
 
 def sine_plus_noise(n, fs, f0, amplitude, sigma, seed, channels=1):
@@ -97,7 +98,7 @@ def test_semicolon_decimal_comma_and_tab_give_the_same_bits_as_plain_csv(tmp_pat
     ms.write_text('"t [ms]";"left";"right"\n' + "".join(
         f"{1000 * ti:.17g};{a:.17g};{b:.17g}\n".replace(".", ",") for ti, (a, b) in zip(t, x)))
     _, data, _ = psd([ms, "--segment", 1024], tmp_path, "ms-psd.csv")
-    np.testing.assert_allclose(data, np.loadtxt(tmp_path / "plain-psd.csv", delimiter=",", skiprows=1), rtol=1e-12, atol=0)
+    np.testing.assert_allclose(data, np.loadtxt(tmp_path / "plain-psd.csv", delimiter=",", skiprows=2), rtol=1e-12, atol=0)
 
 
 def test_column_picks_channels_in_the_order_asked(tmp_path):

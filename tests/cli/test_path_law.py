@@ -38,6 +38,9 @@ def test_smooth_strip_reproduces_hertz_and_the_table_is_cached(tmp_path):
         e_star = 1.0 / (2 * (1 - 0.3**2) / 210e9)
         hertz = 4 / 3 * e_star * np.sqrt(0.02) * approach**1.5
         assert np.max(np.abs(force / hertz[:, None] - 1)) < 5e-3
+    with h5py.File(out) as f:  # the study's filter = patch is not applied on the strip, and the result says so
+        assert f["/contact"].attrs["filter"] == b"none"
+        assert f["/contact"].attrs["filter_requested"].startswith(b"patch (not applied")
     r2, hz = rig(tmp_path, "contact.law=hertz", "contact.filter=none", *SMOOTH, name="hertz.h5")
     assert r2.returncode == 0, r2.stderr
     lp, loss_p = band_levels(out)

@@ -11,8 +11,9 @@ def write_signal(path, x):
 
 def read_psd(path):
     with open(path) as f:
+        assert f.readline().startswith("# rollspec-psd-csv: one-sided PSD in (m/s^2)^2/Hz")
         header = f.readline().strip().split(",")
-    return header, np.loadtxt(path, delimiter=",", skiprows=1)
+    return header, np.loadtxt(path, delimiter=",", skiprows=2)
 
 
 def test_matches_scipy_welch_hann_and_rect(tmp_path):

@@ -94,12 +94,15 @@ def test_damaged_tables_are_refused(tmp_path):
     table.write_bytes(good[: len(good) // 2])
     r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4"])
     assert r.returncode == EX_DATAERR and table.name in r.stderr
-    # Not a table at all.
+    # A truncated table is rollspec's own, damaged: --rebuild replaces it.
+    r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4", "--rebuild"])
+    assert r.returncode == 0, r.stderr
+    # Not a table at all: the user's file, even at the automatic name; --rebuild keeps it.
     table.write_bytes(b"\x00garbage" * 100)
     r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4"])
     assert r.returncode == EX_DATAERR
     r = run(["stiffness", study, "--quiet", "--set", "stiffness.steps=4", "--rebuild"])
-    assert r.returncode == 0
+    assert r.returncode == 73 and table.read_bytes() == b"\x00garbage" * 100
 
 
 SMALL_ROUGH = ["--quiet", "--set", "surface.nx=64", "--set", "surface.ny=64", "--set", "surface.spacing=2e-6",
