@@ -6,28 +6,17 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels/texture/gauss_panel.hpp"
 #include "kernels/texture/tabulated_psd.hpp"
 
 namespace rollspec::texture {
 
 namespace {
 
-// 8-point Gauss-Legendre on [-1, 1].
-constexpr double kX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-constexpr double kW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-
 // W(s) = (sin s / s)^2, the power transfer of Eq. 37.
 double power_weight(double s) {
   const double t = flat_punch_transfer(s);
   return t * t;
-}
-
-template <class F>
-double gauss_panel(double lo, double hi, F f) {
-  const double h = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
-  double acc = 0.0;
-  for (int i = 0; i < 4; ++i) acc += kW[i] * (f(mid - h * kX[i]) + f(mid + h * kX[i]));
-  return acc * h;
 }
 
 // Panel ends in y for the smooth part of Eq. 39.

@@ -1,16 +1,42 @@
 #include "kernels/texture/psd.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "kernels/texture/gauss_panel.hpp"
+
 namespace rollspec::texture {
+
+namespace {
+// Eq. 14b: (1/dk) times the integral of G over [lo, hi], in panels between the breakpoints (sorted).
+double cell_mean(const Psd& psd, const std::vector<double>& breaks, double lo, double hi) {
+  double acc = 0.0, a = lo;
+  auto it = std::upper_bound(breaks.begin(), breaks.end(), lo);
+  while (a < hi) {
+    double b = hi;
+    if (it != breaks.end() && *it < hi) b = *it++;
+    if (b > a) acc += gauss_panel(a, b, [&](double k) { return psd(k); });
+    a = b;
+  }
+  return acc / (hi - lo);
+}
+}  // namespace
 
 std::vector<double> psd_at_harmonics(const Psd& psd, double dk, std::size_t count) {
   if (!(dk > 0.0) || !std::isfinite(dk)) throw std::invalid_argument("harmonic spacing dk must be positive and finite");
   std::vector<double> g(count, 0.0);
+  std::vector<double> breaks;
+  if (psd.cell_average) {
+    breaks = psd.breakpoints;
+    for (double b : {psd.support_min, psd.support_max})
+      if (b > 0.0 && std::isfinite(b)) breaks.push_back(b);
+    std::sort(breaks.begin(), breaks.end());
+  }
   for (std::size_t j = 1; j < count; ++j) {
     const double k = dk * static_cast<double>(j);
-    const double v = psd(k);
+    // The cell's lower half below the table's first node reads the extension (zero: no power).
+    const double v = psd.cell_average ? cell_mean(psd, breaks, k - 0.5 * dk, k + 0.5 * dk) : psd(k);
     if (!(v >= 0.0) || !std::isfinite(v))
       throw std::domain_error("PSD value at k = " + std::to_string(k) + " rad/m is " + std::to_string(v) +
                               " (must be finite and >= 0)");

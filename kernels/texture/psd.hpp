@@ -22,6 +22,11 @@ struct Psd {
   double support_max = std::numeric_limits<double>::infinity();  // G = 0 for k > support_max
   std::string description;                                       // for logs and provenance
   std::vector<double> breakpoints;  // k where G or G' jumps (cut-offs, roll-off, table nodes): exact quadrature nodes
+  // true: a harmonic j dk carries the PSD's power in its cell, (1/dk) int_{(j-1/2)dk}^{(j+1/2)dk} G dk
+  // (Eq. 14b), instead of G(j dk). For tables estimated from profiles, whose power sits in a few
+  // steep low bins: the synthesis then keeps the table's variance on any grid (kernels/texture
+  // README §5a). Wrappers (band limit, interpolation compensation) keep the flag.
+  bool cell_average = false;
 
   double operator()(double k) const { return density(k); }
 };
@@ -36,8 +41,9 @@ Psd band_limited(Psd psd, double k_max);
 // (the gain at k dx = pi would be 6.1); throws otherwise.
 Psd interpolation_compensated(Psd psd, double dx);
 
-// G at the harmonics j dk, j = 0..count-1 (entry 0 is the DC term and set to 0). Evaluates the
-// density at every harmonic, so a table without extension throws for a harmonic it does not cover.
+// G at the harmonics j dk, j = 0..count-1 (entry 0 is the DC term and set to 0): the density at j dk,
+// or with psd.cell_average the cell mean of Eq. 14b (8-point Gauss-Legendre panels split at the
+// breakpoints inside the cell). A table without extension throws for a harmonic it does not cover.
 std::vector<double> psd_at_harmonics(const Psd& psd, double dk, std::size_t count);
 
 // Trapezoidal integral of k^p G(k) over [k0, k1] on a log-spaced grid with `points` nodes

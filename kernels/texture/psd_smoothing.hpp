@@ -33,9 +33,11 @@ struct BandAveragedPsd {
 // 2 bands fit.
 BandAveragedPsd band_averaged_psd(const EstimatedPsd& estimate, const PsdBands& bands = {});
 
-// The band averages as a log-log table (Eq. 35): nodes at the band centres, plus the first bin's
-// and the Nyquist wavenumber carrying the end bands' values, so the table spans the same range
-// as estimated_psd_table().
+// The band averages as a log-log table (Eq. 35): nodes at the band centres, plus the first band's
+// lower edge (f_0 - 1/2) dk and the Nyquist wavenumber carrying the end bands' values; the nodes are
+// scaled (Eq. 41) until the table's integral over every band is that band's power, so the table
+// holds the estimate's variance exactly however steep the spectrum. Use its to_psd() with
+// cell_average (Eq. 14b) so that a synthesis grid keeps it too.
 TabulatedPsd smoothed_psd_table(const EstimatedPsd& estimate, Extension extension, const PsdBands& bands = {});
 
 }  // namespace rollspec::texture

@@ -33,6 +33,9 @@ class TabulatedPsd {
   const std::vector<double>& values() const { return g_; }
 
   Psd to_psd() const;  // a copy of this table inside a Psd
+  // The integral of Eq. 5 over [a, b] clipped to [k_min, k_max] (exact: a power law per segment,
+  // linear where an end value is zero); the extensions are not integrated.
+  double integral(double a, double b) const;
 
  private:
   std::vector<double> k_, g_;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "kernels/texture/iso3095_rail_psd.hpp"
 #include "kernels/texture/iso8608_psd.hpp"
@@ -118,7 +119,9 @@ texture::EstimatedPsd profile_estimate(const Study& s) {
 texture::Psd profile_psd(const Study& s) {
   const texture::EstimatedPsd est = profile_estimate(s);
   try {
-    return texture::smoothed_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
+    texture::Psd psd = texture::smoothed_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
+    psd.cell_average = true;  // Eq. 14b: every synthesis grid keeps the table's variance
+    return psd;
   } catch (const std::invalid_argument& e) {
     throw data_error(s.where("texture.profiles") + ": " + e.what());
   }
@@ -197,6 +200,17 @@ spectral::Amplitudes study_amplitudes(const Study& s) {
   return s.text("texture.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
 }
 
+namespace {
+// A table PSD asked for a wavenumber outside its range: name the key that allows it.
+std::string grid_message(const Study& s, const std::string& key, const std::exception& e) {
+  std::string m = s.where(key) + ": " + e.what();
+  if (dynamic_cast<const std::domain_error*>(&e))
+    m += "; allowed: a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
+         "a coarser spacing), or " + s.where("texture.table_extension") + " set to zero, constant or power_law";
+  return m;
+}
+}  // namespace
+
 std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study& s, const texture::Psd& psd, double spacing,
                                                                     std::size_t samples, const std::string& key,
                                                                     bool truncate) {
@@ -208,7 +222,7 @@ std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study&
   try {
     return std::make_unique<texture::LineTextureGenerator>(psd, ls);
   } catch (const std::exception& e) {
-    throw config_error(s.where(key) + ": " + e.what());
+    throw config_error(grid_message(s, key, e));
   }
 }
 
@@ -297,7 +311,7 @@ SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }
   } catch (const std::exception& e) {  // invalid_argument from the spec, domain_error from a table PSD
-    throw config_error(s.where("surface.spacing") + ": " + e.what());
+    throw config_error(grid_message(s, "surface.spacing", e));
   }
   return g;
 }
