@@ -164,3 +164,23 @@ def hertz_radius(radius=0.02, density=7850.0, e=210e9, nu=0.3, g=9.81):
     e_star = 1 / (2 * (1 - nu ** 2) / e)
     delta = (3 * weight / (4 * e_star * np.sqrt(radius))) ** (2 / 3)
     return np.sqrt(radius * delta)
+
+
+@pytest.fixture
+def tmpfs_disk(tmp_path):
+    """mount(size) -> tmp_path/disk, a tmpfs of that size (e.g. "1m"), unmounted after the test;
+    skips where mounting is not allowed (needs root with mount permission)."""
+    mounted = []
+
+    def mount(size):
+        d = tmp_path / "disk"
+        d.mkdir()
+        r = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(d)], capture_output=True, text=True)
+        if r.returncode != 0:
+            pytest.skip(f"cannot mount a {size} tmpfs here (needs root with mount permission): {r.stderr.strip()}")
+        mounted.append(d)
+        return d
+
+    yield mount
+    for d in mounted:
+        subprocess.run(["umount", "-l", str(d)], capture_output=True)

@@ -157,14 +157,8 @@ def test_kill_during_the_final_write_leaves_a_temp_the_next_run_removes(tmp_path
 # --- a full disk ------------------------------------------------------------------------------------------
 
 @pytest.fixture
-def small_disk(tmp_path):
-    d = tmp_path / "disk"
-    d.mkdir()
-    r = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(d)], capture_output=True, text=True)
-    if r.returncode != 0:
-        pytest.skip(f"cannot mount a 1 MiB tmpfs here (needs root with mount permission): {r.stderr.strip()}")
-    yield d
-    subprocess.run(["umount", str(d)], check=False)
+def small_disk(tmpfs_disk):
+    return tmpfs_disk("1m")
 
 
 def fill(d, leave_pages):

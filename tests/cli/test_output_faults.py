@@ -252,14 +252,8 @@ def test_hostile_checkpoint(tmp_path, target):
 
 
 @pytest.fixture
-def small_disk(tmp_path):
-    d = tmp_path / "disk"
-    d.mkdir()
-    r = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=8m", "tmpfs", str(d)], capture_output=True, text=True)
-    if r.returncode != 0:
-        pytest.skip(f"cannot mount a 1 MiB tmpfs here: {r.stderr.strip()}")
-    yield d
-    subprocess.run(["umount", "-l", str(d)], capture_output=True)
+def small_disk(tmpfs_disk):
+    return tmpfs_disk("8m")
 
 
 @pytest.mark.parametrize("command", sorted(RECIPES))
