@@ -86,6 +86,9 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   // after Eq. 15 (and the median filter).
   double held = 0.0;
   for (std::size_t j = 1; j < out.psd.size(); ++j) held += out.psd[j] * out.dk;
+  if (!std::isfinite(held) || !std::isfinite(variance))
+    throw std::invalid_argument("the profiles' variance overflows a double (" + std::to_string(variance) +
+                                " m^2, periodogram sum " + std::to_string(held) + " m^2); heights must be far below 1e150 m");
   if (held > 0.0) {
     out.psd[0] = 0.0;
     for (double& g : out.psd) g *= variance / static_cast<double>(rows.size()) / held;
