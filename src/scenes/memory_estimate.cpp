@@ -19,7 +19,9 @@ namespace rollspec::scenes {
 
 namespace {
 
-constexpr double kBaseline = 64.0 * 1024 * 1024;  // the process itself: libraries, HDF5, FFTW wisdom
+// The process itself: libraries, HDF5, FFTW wisdom (measured: 25-27 MiB peak for small studies,
+// bench/engine/bench_memory_estimate.py).
+constexpr double kBaseline = 28.0 * 1024 * 1024;
 
 struct Item {
   double bytes;
@@ -73,14 +75,15 @@ Item surfaces(const study::Study& s, double count) {
   return {8.0 * nx * ny * (count + 6.0), where(s, {"surface.nx", "surface.ny", "surface.count"}), "isotropic surfaces"};
 }
 
-// The ensemble's own storage: one chunk's rows (chunk_size x values), the few partial sums the
-// pairwise tree keeps (about 2 log2 of the chunk count, each [sum, sum of squares]) and the copies
-// of the final reduction. Values per realisation: PSD and band rows of each output row.
+// The ensemble's own storage: one chunk's rows (chunk_size x values), the partial sums the pairwise
+// tree keeps (at most log2 of the chunk count, and log2 of the chunk size while a chunk is added,
+// each [sum, sum of squares]) and the copies of the final reduction. It no longer grows with the
+// number of chunks (TreeAccumulator). Values per realisation: PSD and band rows of each output row.
 Item chunk_sums(const study::Study& s, double rows) {
   const double nf = key_real(s, "spectrum.segment") / 2.0 + 1.0;
   const double values = 2.0 * rows * (nf + 40.0) + 8.0;
   const double K = std::max(key_real(s, "study.realisations"), 1.0), C = std::max(key_real(s, "ensemble.chunk_size"), 1.0);
-  const double kept = 2.0 * std::log2(std::max(K / C, 1.0)) + 2.0 * std::log2(C) + 8.0;
+  const double kept = std::log2(std::max(K / C, 1.0)) + std::log2(C) + 6.0;
   return {8.0 * values * (C + 2.0 * kept), where(s, {"ensemble.chunk_size", "spectrum.segment", "sensors.positions"}),
           "one chunk of realisations and the partial sums of the ensemble"};
 }
