@@ -135,7 +135,7 @@ std::vector<Item> rolling_beam(const study::Study& s) {
                             nc * static_cast<double>(sizeof(rolling::ContactOutput)) + static_cast<double>(sizeof(rolling::Energies)) +
                             8.0 + 200.0;
   const double write_copy = records * (nn * 72.0 + nc * 9.0 * 8.0);
-  return {{records * per_record + write_copy, where(s, {"analysis.dt", "analysis.t_end", "analysis.record_every", "output.nodes"}),
+  return {{records * per_record + write_copy, where(s, {"analysis.dt", "analysis.t_end", "analysis.record_every", "output.nodes", "beam.elements"}),
            "time history, " + std::to_string(static_cast<long long>(records)) + " recorded states of " +
                std::to_string(static_cast<long long>(nn)) + " nodes"},
           {nodes * 6.0 * 8.0 * 400.0, where(s, {"beam.elements"}),
