@@ -131,9 +131,9 @@ std::vector<Item> rolling_beam(const study::Study& s) {
   const double nodes = static_cast<double>(r.model.X.size()), nn = static_cast<double>(r.record.size());
   const double nc = static_cast<double>(r.model.contacts.size());
   const double records = std::floor(r.run.t_end / r.run.dt / std::max(r.run.record_every, 1)) + 2.0;
-  const double per_record = nn * (5.0 * 24.0 + 72.0 + 6.0 * 16.0 / std::max(nn, 1.0)) +
-                            nc * static_cast<double>(sizeof(rolling::ContactOutput)) + static_cast<double>(sizeof(rolling::Energies)) +
-                            8.0 + 200.0;
+  // Nine per-record vectors, each a 24-byte header and a heap block (about 24 bytes of overhead).
+  const double per_record = nn * (5.0 * 24.0 + 72.0) + 9.0 * 48.0 + nc * static_cast<double>(sizeof(rolling::ContactOutput)) +
+                            static_cast<double>(sizeof(rolling::Energies)) + 8.0;
   const double write_copy = records * (nn * 72.0 + nc * 9.0 * 8.0);
   return {{records * per_record + write_copy, where(s, {"analysis.dt", "analysis.t_end", "analysis.record_every", "output.nodes", "beam.elements"}),
            "time history, " + std::to_string(static_cast<long long>(records)) + " recorded states of " +
@@ -196,6 +196,7 @@ MemoryEstimate estimate_memory(const study::Study& s, int threads) {
   double largest = -1.0;
   for (const auto& it : items(s, threads)) {
     e.bytes += it.bytes;
+    e.terms.emplace_back(it.what, it.bytes);
     if (it.bytes > largest) {
       largest = it.bytes;
       e.keys = it.keys;
