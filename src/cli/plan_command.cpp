@@ -43,6 +43,7 @@ int plan_command(const Args& args) {
   std::cout << "memory: estimated peak " << scenes::format_bytes(memory.bytes) << " on " << threads << " thread" << (threads == 1 ? "" : "s")
             << (memory.what.empty() ? std::string() : " (largest: " + memory.what + ", from " + keys + ")") << "; available "
             << scenes::format_bytes(available) << "\n";
+  for (const auto& [what, bytes] : memory.terms) std::cout << "  " << scenes::format_bytes(bytes) << ": " << what << "\n";
   if (memory.bytes > available) {
     std::cout << "the study needs more memory than is available: rollspec run refuses it (unless --force); stages not shown\n";
     return 0;

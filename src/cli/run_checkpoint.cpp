@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <map>
@@ -30,7 +31,19 @@ std::string show_key(const std::string& full) {
   return "[" + full.substr(0, dot) + "] " + full.substr(dot + 1);
 }
 
-// The study a --resume runs: the checkpoint's. Refuses other --set values and a changed study file.
+bool finishing(const std::string& key) {
+  const auto& keys = scenes::finishing_keys();
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+std::string finishing_list() {
+  std::string out;
+  for (const auto& k : scenes::finishing_keys()) out += (out.empty() ? "" : ", ") + show_key(k);
+  return out;
+}
+
+// The study a --resume runs: the checkpoint's. Refuses other --set values and a changed study file,
+// except for the finishing keys (scene.hpp): the chunks do not depend on them.
 study::Study resume_study(const study::Study& asked, const std::vector<std::string>& sets,
                           const ensemble::CheckpointManifest& m, const std::string& dir) {
   std::map<std::string, std::string> stored;
@@ -40,30 +53,33 @@ study::Study resume_study(const study::Study& asked, const std::vector<std::stri
     const auto eq = o.find('=');
     const std::string key = o.substr(0, eq), value = o.substr(eq + 1);
     const auto it = stored.find(key);
+    if (it != stored.end() && finishing(key)) continue;
     if (it == stored.end() || it->second != value)
       differ += "\n  " + show_key(key) + ": --set " + clip(value, 80) + ", the checkpoint has " +
                 (it == stored.end() ? std::string("no such key") : clip(it->second, 80));
   }
   if (!differ.empty())
     throw data_error(dir + ": the checkpoint belongs to a different study, written with other settings:" + differ +
-                     "\nresume without these --set (the checkpoint's settings are reused), or start over with --restart");
+                     "\nthe checkpointed chunks were computed with these values; only " + finishing_list() +
+                     " may change on --resume (they are computed after the ensemble); resume without these --set "
+                     "(the checkpoint's settings are reused), or start over with --restart");
   std::vector<std::string> all = m.sets;
   all.insert(all.end(), sets.begin(), sets.end());
   study::Study s = study::Study::load(asked.file(), all, scenes::schema_for);
-  const std::string now = s.canonical_text();
-  if (now != m.study_text) {
-    std::map<std::string, std::string> current;
-    for (const auto& [k, v] : ensemble::canonical_entries(now)) current[k] = v;
-    std::string keys;
-    for (const auto& [k, v] : current) {
-      const auto it = stored.find(k);
-      if (it == stored.end() || it->second != v)
-        keys += "\n  " + show_key(k) + " = " + clip(v, 80) + " (checkpoint: " +
-                (it == stored.end() ? std::string("absent") : clip(it->second, 80)) + ")";
-    }
+  std::map<std::string, std::string> current;
+  for (const auto& [k, v] : ensemble::canonical_entries(s.canonical_text())) current[k] = v;
+  std::string keys;
+  for (const auto& [k, v] : current) {
+    const auto it = stored.find(k);
+    if (it == stored.end() || (it->second != v && !finishing(k)))
+      keys += "\n  " + show_key(k) + " = " + clip(v, 80) + " (checkpoint: " +
+              (it == stored.end() ? std::string("absent") : clip(it->second, 80)) + ")";
+  }
+  for (const auto& [k, v] : stored)
+    if (!current.count(k)) keys += "\n  " + show_key(k) + " absent (checkpoint: " + clip(v, 80) + ")";
+  if (!keys.empty())
     throw data_error(dir + ": the checkpoint belongs to a different study (the study file changed):" + keys +
                      "\nresume with the study it was written for, or start over with --restart");
-  }
   return s;
 }
 

@@ -121,7 +121,10 @@ int run_command(const Args& args) {
     const std::string asked = s.canonical_text();
     checkpoint = open_checkpoint(checkpoint_dir, s, study.sets, resume, restart, quiet);
     cfg.checkpoint_dir = checkpoint.directory;
-    if (s.canonical_text() != asked) scene = scenes::find_scene(s.scene()).make(s);
+    if (s.canonical_text() != asked) {
+      scenes::check_memory(s, ensemble::ensemble_threads(), vm.count("force") > 0);  // the checkpoint's study
+      scene = scenes::find_scene(s.scene()).make(s);
+    }
   }
   scene->prepare(quiet, vm.count("rebuild") > 0);
   cfg.realisations = static_cast<std::uint64_t>(s.integer("study.realisations"));

@@ -76,43 +76,64 @@ void CheckpointStore::write(const ChunkSums& c) const {
   io::unregister_temp(tmp);
 }
 
-std::map<std::uint64_t, ChunkSums> CheckpointStore::load(std::size_t n_values) const {
-  std::map<std::uint64_t, ChunkSums> out;
+namespace {
+// Reads and checks one chunk file: kind, size, magic, checksum, study hash.
+ChunkSums read_chunk_file(const std::string& where, std::size_t n_values, std::uint64_t hash) {
+  const std::size_t expect = sizeof kMagic + 4 * sizeof(std::uint64_t) + n_values * sizeof(double) + sizeof(std::uint64_t);
+  // Size and kind first: a FIFO would block the read, a huge file would be read whole.
+  struct stat st {};
+  if (::lstat(where.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+    throw data_error(where + ": not a regular file; a checkpoint chunk is a file rollspec wrote");
+  if (static_cast<std::size_t>(st.st_size) != expect)
+    throw data_error(where + ": damaged checkpoint (size " + std::to_string(st.st_size) + " bytes, expected " +
+                     std::to_string(expect) + "); start over with --restart");
+  std::ifstream in(where, std::ios::binary);
+  std::vector<char> buf(expect);
+  in.read(buf.data(), static_cast<std::streamsize>(expect));
+  if (static_cast<std::size_t>(in.gcount()) != expect || std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0)
+    throw data_error(where + ": damaged checkpoint (size or magic); start over with --restart");
+  std::uint64_t stored = 0;
+  std::memcpy(&stored, buf.data() + buf.size() - sizeof stored, sizeof stored);
+  if (stored != fnv1a64(buf.data(), buf.size() - sizeof stored))
+    throw data_error(where + ": damaged checkpoint (checksum); start over with --restart");
+  std::uint64_t h[4];
+  std::memcpy(h, buf.data() + sizeof kMagic, sizeof h);
+  if (h[0] != hash)
+    throw data_error(where + ": checkpoint belongs to a different study (input hash differs); start over with --restart");
+  ChunkSums c;
+  c.lo = h[1];
+  c.hi = h[2];
+  c.values.resize(n_values);
+  std::memcpy(c.values.data(), buf.data() + sizeof kMagic + sizeof h, n_values * sizeof(double));
+  return c;
+}
+}  // namespace
+
+void CheckpointStore::scan(std::size_t n_values, const std::function<void(std::uint64_t, std::uint64_t)>& each) const {
   std::error_code ec;
-  if (!fs::is_directory(directory_, ec)) return out;
+  if (!fs::is_directory(directory_, ec)) return;
   for (const auto& entry : fs::directory_iterator(directory_)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("chunk_", 0) != 0 || entry.path().extension() != ".bin") continue;  // skips *.tmp leftovers
-    const std::size_t expect = sizeof kMagic + 4 * sizeof(std::uint64_t) + n_values * sizeof(double) + sizeof(std::uint64_t);
-    const std::string where = entry.path().string();
-    // Size and kind first: a FIFO would block the read, a huge file would be read whole.
-    struct stat st {};
-    if (::lstat(where.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-      throw data_error(where + ": not a regular file; a checkpoint chunk is a file rollspec wrote");
-    if (static_cast<std::size_t>(st.st_size) != expect)
-      throw data_error(where + ": damaged checkpoint (size " + std::to_string(st.st_size) + " bytes, expected " +
-                       std::to_string(expect) + "); start over with --restart");
-    std::ifstream in(entry.path(), std::ios::binary);
-    std::vector<char> buf(expect);
-    in.read(buf.data(), static_cast<std::streamsize>(expect));
-    if (static_cast<std::size_t>(in.gcount()) != expect || std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0)
-      throw data_error(where + ": damaged checkpoint (size or magic); start over with --restart");
-    std::uint64_t stored = 0;
-    std::memcpy(&stored, buf.data() + buf.size() - sizeof stored, sizeof stored);
-    if (stored != fnv1a64(buf.data(), buf.size() - sizeof stored))
-      throw data_error(where + ": damaged checkpoint (checksum); start over with --restart");
-    std::uint64_t h[4];
-    std::memcpy(h, buf.data() + sizeof kMagic, sizeof h);
-    if (h[0] != hash_)
-      throw data_error(where + ": checkpoint belongs to a different study (input hash differs); start over with --restart");
-    ChunkSums c;
-    c.lo = h[1];
-    c.hi = h[2];
-    c.values.resize(n_values);
-    std::memcpy(c.values.data(), buf.data() + sizeof kMagic + sizeof h, n_values * sizeof(double));
-    out[c.lo] = std::move(c);
+    const ChunkSums c = read_chunk_file(entry.path().string(), n_values, hash_);
+    // The name is what read() opens: a file renamed by hand is damaged, not another chunk.
+    if (name != chunk_name(c.lo, c.hi))
+      throw data_error(entry.path().string() + ": damaged checkpoint (its name does not match the chunk it holds, " +
+                       chunk_name(c.lo, c.hi) + "); start over with --restart");
+    each(c.lo, c.hi);
   }
-  return out;
+}
+
+bool CheckpointStore::has(std::uint64_t lo, std::uint64_t hi) const {
+  struct stat st {};
+  return ::lstat((fs::path(directory_) / chunk_name(lo, hi)).c_str(), &st) == 0;
+}
+
+ChunkSums CheckpointStore::read(std::uint64_t lo, std::uint64_t hi, std::size_t n_values) const {
+  const std::string where = (fs::path(directory_) / chunk_name(lo, hi)).string();
+  ChunkSums c = read_chunk_file(where, n_values, hash_);
+  if (c.lo != lo || c.hi != hi) throw data_error(where + ": damaged checkpoint (chunk bounds); start over with --restart");
+  return c;
 }
 
 bool is_checkpoint_file_name(const std::string& name) {

@@ -5,6 +5,7 @@
 // checksum make a stale or damaged chunk detectable; a SIGKILLed run loses only the chunks in
 // flight.
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,9 +32,13 @@ class CheckpointStore {
   CheckpointStore(std::string directory, std::uint64_t study_hash);
   const std::string& directory() const { return directory_; }
   void write(const ChunkSums& chunk) const;
-  // Completed chunks on disk, keyed by lo. A chunk from another study (hash) or a damaged file is
-  // refused with exit 65 naming the file: resuming must never mix studies.
-  std::map<std::uint64_t, ChunkSums> load(std::size_t n_values) const;
+  // Checks every completed chunk on disk and calls each(lo, hi) for it, keeping none in memory (a
+  // run of 10^6 chunks resumes in constant memory). A chunk from another study (hash) or a damaged
+  // file is refused with exit 65 naming the file: resuming must never mix studies.
+  void scan(std::size_t n_values, const std::function<void(std::uint64_t lo, std::uint64_t hi)>& each) const;
+  bool has(std::uint64_t lo, std::uint64_t hi) const;
+  // One chunk, read (and checked again) when the reduction reaches it.
+  ChunkSums read(std::uint64_t lo, std::uint64_t hi, std::size_t n_values) const;
   // Removes the files rollspec wrote (known names; chunks recognised by their magic), then the
   // directory if it is empty. The user's own files stay. keep_lock keeps the lock file (and so the
   // directory) for a run that goes on.

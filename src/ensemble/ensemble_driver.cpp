@@ -95,35 +95,41 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
     return out;
   }
 
-  // This rank's chunks: [lo, lo + C) for lo / C = rank (mod ranks).
+  // This rank's chunks: a contiguous range [first, last) of chunk indices, so that its sums reduce
+  // as they complete (TreeAccumulator) and memory does not grow with the number of chunks.
+  const std::uint64_t n_chunks = (K + C - 1) / C;
+  const auto chunk_start = [&](std::uint64_t r) { return n_chunks / ranks * r + std::min(r, n_chunks % ranks); };
+  const std::uint64_t first = chunk_start(rank), last = chunk_start(rank + 1);
+  const auto chunk_hi = [&](std::uint64_t lo) { return std::min(lo + C, K); };
   CheckpointStore store(cfg.checkpoint_dir, cfg.study_hash);
-  std::map<std::uint64_t, ChunkSums> chunks;
+  std::uint64_t mine = 0, reused = 0;
+  for (std::uint64_t i = first; i < last; ++i) mine += chunk_hi(i * C) - i * C;
   if (!cfg.checkpoint_dir.empty()) {
-    if (cfg.resume) {
-      for (auto& [lo, c] : store.load(2 * n_values)) {
-        const std::uint64_t hi = std::min(lo + C, K);
-        // Chunks of another size or count are recomputed; those of other ranks are theirs to add.
-        if (lo % C == 0 && c.hi == hi && (lo / C) % ranks == rank) chunks[lo] = std::move(c);
-      }
-    }
+    // Every chunk file is checked now (a damaged one is refused before any work) but read only
+    // when the reduction reaches it. Chunks of another size or count are recomputed.
+    if (cfg.resume)
+      store.scan(2 * n_values, [&](std::uint64_t lo, std::uint64_t hi) {
+        if (lo % C == 0 && hi == chunk_hi(lo) && lo / C >= first && lo / C < last) reused += hi - lo;
+      });
     mpi_barrier();
   }
-  std::uint64_t mine = 0, reused = 0;
-  for (std::uint64_t lo = rank * C; lo < K; lo += C * ranks) mine += std::min(lo + C, K) - lo;
-  for (const auto& kv : chunks) reused += kv.second.hi - kv.second.lo;
 
   Progress progress("realisations", mine - reused, cfg.quiet, cfg.log_prefix);
   EnsembleSums out;
+  TreeAccumulator acc;
   std::exception_ptr failure;
   try {
-    for (std::uint64_t lo = rank * C; lo < K; lo += C * ranks) {
-      if (chunks.count(lo)) continue;
-      const std::uint64_t hi = std::min(lo + C, K);
+    for (std::uint64_t i = first; i < last; ++i) {
+      const std::uint64_t lo = i * C, hi = chunk_hi(lo);
+      if (cfg.resume && !cfg.checkpoint_dir.empty() && store.has(lo, hi)) {
+        acc.push(lo, hi, store.read(lo, hi, 2 * n_values).values);
+        continue;
+      }
       ChunkSums c = run_chunk(lo, hi, n_values, realisation, cfg.seed, progress);
       if (c.values.empty()) break;  // stopped
       if (!cfg.checkpoint_dir.empty()) store.write(c);
       out.computed += hi - lo;
-      chunks[lo] = std::move(c);
+      acc.push(lo, hi, std::move(c.values));
     }
   } catch (...) {
     failure = std::current_exception();
@@ -144,7 +150,9 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
   progress.finish();
 
   const auto reduce_start = std::chrono::steady_clock::now();
-  const std::map<std::uint64_t, ChunkSums> all = gather_chunks(chunks, 2 * n_values);
+  std::map<std::uint64_t, ChunkSums> nodes;
+  for (const auto& n : acc.nodes()) nodes[n.lo] = ChunkSums{n.lo, n.hi, n.values};
+  const std::map<std::uint64_t, ChunkSums> all = gather_chunks(nodes, 2 * n_values);
   out.count = K;
   if (rank == 0) {
     const std::vector<double> total = tree_sum(0, K, [&](std::uint64_t a, std::uint64_t b) {

@@ -3,8 +3,9 @@
 // and sums their per-realisation values (and squares) along the fixed pairwise tree of
 // pairwise_tree.hpp. Each realisation draws only from Philox streams keyed by (seed, id), so
 // the sums are bitwise identical for any thread count, schedule, chunk placement or restart.
-// Completed chunks are checkpointed; SIGINT/SIGTERM stop cleanly with exit 130 and --resume
-// recomputes only missing chunks. A realisation that produces NaN/Inf stops the run, naming its
+// Chunk sums are added as chunks complete (TreeAccumulator: at most about 2 log2(chunks) partial
+// sums are kept, on a run and on --resume alike). Completed chunks are checkpointed;
+// SIGINT/SIGTERM stop cleanly with exit 130 and --resume recomputes only missing chunks. A realisation that produces NaN/Inf stops the run, naming its
 // id and the seed.
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
-// MPI for ensembles (optional build, -DROLLSPEC_MPI=ON). Chunks of realisations go round-robin to
-// ranks; each rank sends its chunk sums to rank 0, which adds them along the same pairwise tree as
+// MPI for ensembles (optional build, -DROLLSPEC_MPI=ON). Each rank runs a contiguous range of
+// chunks and reduces it as chunks complete (TreeAccumulator); each rank sends those few sums to rank 0, which adds them along the same pairwise tree as
 // a single process (pairwise_tree.hpp), so the result data are bitwise identical for any rank
 // count. Without MPI every function here is the one-process identity.
 #include <cstdint>

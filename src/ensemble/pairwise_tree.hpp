@@ -7,6 +7,7 @@
 // error O(log K) instead of O(K).
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <vector>
 
 namespace rollspec::ensemble {
@@ -21,5 +22,25 @@ inline std::uint64_t tree_split(std::uint64_t lo, std::uint64_t hi) {
 // realisation), or an empty vector to ask for a split.
 std::vector<double> tree_sum(std::uint64_t lo, std::uint64_t hi,
                              const std::function<std::vector<double>(std::uint64_t, std::uint64_t)>& leaf);
+
+// Adds chunk sums as they complete, in increasing lo, without keeping them all: a node merges
+// with its left sibling (same size, the pair aligned to twice it) as soon as both exist, which is
+// the addition tree_sum makes for their parent, so the bits are those of tree_sum over the stored
+// nodes. Chunks [lo, lo + C) pushed in order of a contiguous range leave at most about
+// 2 log2(range / C) nodes (the aligned blocks that tile the range), whatever the chunk count.
+class TreeAccumulator {
+ public:
+  struct Node {
+    std::uint64_t lo = 0, hi = 0;
+    std::vector<double> values;
+  };
+  // Chunks must come in increasing lo, each starting where the previous one ended.
+  void push(std::uint64_t lo, std::uint64_t hi, std::vector<double> values);
+  const std::vector<Node>& nodes() const { return nodes_; }
+  std::size_t size() const { return nodes_.size(); }
+
+ private:
+  std::vector<Node> nodes_;
+};
 
 }  // namespace rollspec::ensemble

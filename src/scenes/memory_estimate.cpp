@@ -8,7 +8,10 @@
 
 #include "src/error.hpp"
 #include "kernels/contact/geometry.hpp"
+#include "kernels/rolling/solver.hpp"
 #include "src/io/available_memory.hpp"
+#include "src/scenes/rolling_beam_settings.hpp"
+#include "src/stiffness/path_table.hpp"
 #include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/study/study.hpp"
 
@@ -16,7 +19,9 @@ namespace rollspec::scenes {
 
 namespace {
 
-constexpr double kBaseline = 64.0 * 1024 * 1024;  // the process itself: libraries, HDF5, FFTW wisdom
+// The process itself: libraries, HDF5, FFTW wisdom (measured: 25-27 MiB peak for small studies,
+// bench/engine/bench_memory_estimate.py).
+constexpr double kBaseline = 28.0 * 1024 * 1024;
 
 struct Item {
   double bytes;
@@ -29,10 +34,21 @@ double key_real(const study::Study& s, const std::string& k) { return s.has(k) ?
 std::vector<std::string> where(const study::Study& s, const std::vector<std::string>& keys) {
   std::vector<std::string> out;
   for (const auto& k : keys) {
+    if (!s.has(k)) continue;  // a term shared by scenes names only the keys this one has
     const auto dot = k.find('.');
     out.push_back("[" + k.substr(0, dot) + "] " + k.substr(dot + 1) + " = " + s.text(k));
   }
   return out;
+}
+
+double ball_weight(const study::Study& s) {
+  const double radius = s.real("ball.radius");
+  return 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density") * s.real("ball.gravity");
+}
+
+double ball_e_star(const study::Study& s) {
+  return contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"), s.real("beam.youngs_modulus"),
+                                    s.real("beam.poisson"));
 }
 
 // Contact solves on an nx x ny grid: the padded (2nx x 2ny) half-space operator and its FFT
@@ -45,10 +61,7 @@ Item contact_grid(const study::Study& s) {
 // The solver's square window and the rough strip it slides along, on the grid the stage uses
 // (derived from the contact radius where the study leaves it open).
 Item blocked_force_window(const study::Study& s) {
-  const double radius = s.real("ball.radius");
-  const double weight = 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density") * s.real("ball.gravity");
-  const double e_star = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
-                                                   s.real("beam.youngs_modulus"), s.real("beam.poisson"));
+  const double radius = s.real("ball.radius"), weight = ball_weight(s), e_star = ball_e_star(s);
   const auto g = stiffness::blocked_force_geometry(s, radius, e_star, weight, s.real("ball.speed") / s.real("signal.sample_rate"));
   const double w = static_cast<double>(g.window), strip = static_cast<double>(g.nx) * static_cast<double>(g.ny);
   return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0, where(s, {"blocked_force.window", "surface.ny", "surface.spacing"}),
@@ -62,6 +75,73 @@ Item surfaces(const study::Study& s, double count) {
   return {8.0 * nx * ny * (count + 6.0), where(s, {"surface.nx", "surface.ny", "surface.count"}), "isotropic surfaces"};
 }
 
+// The ensemble's own storage: one chunk's rows (chunk_size x values), the partial sums the pairwise
+// tree keeps (at most log2 of the chunk count, and log2 of the chunk size while a chunk is added,
+// each [sum, sum of squares]) and the copies of the final reduction. It no longer grows with the
+// number of chunks (TreeAccumulator). Values per realisation: PSD and band rows of each output row.
+Item chunk_sums(const study::Study& s, double rows) {
+  const double nf = key_real(s, "spectrum.segment") / 2.0 + 1.0;
+  const double values = 2.0 * rows * (nf + 40.0) + 8.0;
+  const double K = std::max(key_real(s, "study.realisations"), 1.0), C = std::max(key_real(s, "ensemble.chunk_size"), 1.0);
+  const double kept = std::log2(std::max(K / C, 1.0)) + std::log2(C) + 6.0;
+  return {8.0 * values * (C + 2.0 * kept), where(s, {"ensemble.chunk_size", "spectrum.segment", "sensors.positions"}),
+          "one chunk of realisations and the partial sums of the ensemble"};
+}
+
+// Welch record length after skip_start, and its segments (as spectral::WelchPlan counts them).
+struct WelchShape {
+  double nf = 0.0, segments = 0.0, lags = 0.0;
+};
+WelchShape welch_shape(const study::Study& s, double samples) {
+  const double L = key_real(s, "spectrum.segment");
+  const double hop = std::max(1.0, L - std::floor(key_real(s, "spectrum.overlap") * L));
+  const double n = samples - std::ceil(key_real(s, "spectrum.skip_start") * key_real(s, "signal.sample_rate"));
+  return {L / 2.0 + 1.0, std::max(1.0, std::floor((n - L) / hop) + 1.0), std::ceil(L / hop)};
+}
+
+// The linearised reference (kernels/beam/linear_reference.cpp): the sensors' cross-spectra, one per
+// sensor pair, summed per Welch segment group on the fine grid (refine 8) and smoothed per bin:
+// (16 x 8 + 16) bytes per pair, group and bin, plus the dof of the mean over all pairs.
+Item linear_reference(const study::Study& s, double sensors, double samples) {
+  const WelchShape w = welch_shape(s, samples);
+  const double pairs = sensors * (sensors + 1.0) / 2.0, groups = w.segments * w.lags;
+  return {pairs * groups * w.nf * (16.0 * 8.0 + 16.0 * 2.0), where(s, {"sensors.positions", "output.reference"}),
+          "linearised reference, one cross-spectrum per sensor pair (" + std::to_string(static_cast<long long>(pairs)) +
+              " pairs; [output] reference = false skips it)"};
+}
+
+// law = path: P(delta_j, xi_k) rows of every approach (position, force, stiffness per row, the
+// table and its interpolation copy), the strip, and one contact solver window per thread.
+Item path_table(const study::Study& s, double threads) {
+  const double weight = ball_weight(s);
+  const auto g = stiffness::path_table_geometry(s, s.real("ball.radius"), ball_e_star(s), weight,
+                                                key_real(s, "ball.end") - key_real(s, "ball.start"));
+  const double cells = static_cast<double>(g.approaches) * static_cast<double>(g.positions);
+  const double w = static_cast<double>(g.window);
+  return {8.0 * cells * 6.0 + 8.0 * static_cast<double>(g.nx) * static_cast<double>(g.ny) * 4.0 + threads * 16.0 * 4.0 * w * w * 5.0,
+          where(s, {"path_table.approaches", "path_table.step", "surface.ny"}),
+          "path table, " + std::to_string(g.approaches) + " approaches x " + std::to_string(g.positions) + " positions"};
+}
+
+// rolling-beam keeps every recorded state (positions, velocities, accelerations, angular
+// velocities and accelerations, rotations; contacts; energies) and copies one field at the write;
+// the Newton system is a band matrix of 6 dofs per node.
+std::vector<Item> rolling_beam(const study::Study& s) {
+  const RollingBeamSettings r = read_rolling_beam_settings(s);
+  const double nodes = static_cast<double>(r.model.X.size()), nn = static_cast<double>(r.record.size());
+  const double nc = static_cast<double>(r.model.contacts.size());
+  const double records = std::floor(r.run.t_end / r.run.dt / std::max(r.run.record_every, 1)) + 2.0;
+  // Nine per-record vectors, each a 24-byte header and a heap block (about 24 bytes of overhead).
+  const double per_record = nn * (5.0 * 24.0 + 72.0) + 9.0 * 48.0 + nc * static_cast<double>(sizeof(rolling::ContactOutput)) +
+                            static_cast<double>(sizeof(rolling::Energies)) + 8.0;
+  const double write_copy = records * (nn * 72.0 + nc * 9.0 * 8.0);
+  return {{records * per_record + write_copy, where(s, {"analysis.dt", "analysis.t_end", "analysis.record_every", "output.nodes", "beam.elements"}),
+           "time history, " + std::to_string(static_cast<long long>(records)) + " recorded states of " +
+               std::to_string(static_cast<long long>(nn)) + " nodes"},
+          {nodes * 6.0 * 8.0 * 400.0, where(s, {"beam.elements"}),
+           "beam model and its band Newton system, " + std::to_string(static_cast<long long>(nodes)) + " nodes"}};
+}
+
 std::vector<Item> items(const study::Study& s, int threads) {
   const std::string scene = s.scene();
   const double t = threads;
@@ -72,6 +152,7 @@ std::vector<Item> items(const study::Study& s, int threads) {
     const double n = key_real(s, "signal.sample_rate") * key_real(s, "signal.duration");
     out.push_back({8.0 * n * (3.0 * t + 5.0), where(s, {"signal.sample_rate", "signal.duration"}),
                    "one realisation's record per thread"});
+    out.push_back(chunk_sums(s, 1.0));
   } else if (scene == "texture") {
     const double samples = key_real(s, "lines.length") / std::max(key_real(s, "lines.spacing"), 1e-300);
     out.push_back({8.0 * samples * (2.0 * key_real(s, "lines.count") + 6.0),
@@ -85,13 +166,24 @@ std::vector<Item> items(const study::Study& s, int threads) {
     const double sensors = static_cast<double>(s.list("sensors.positions").size());
     out.push_back({8.0 * record * (sensors + 6.0) * (t + 1.0),
                    where(s, {"ball.start", "ball.end", "ball.speed", "signal.sample_rate"}), "time records per thread"});
+    out.push_back(chunk_sums(s, sensors + 4.0));
+    const double histories = key_real(s, "output.time_histories");
+    if (histories > 0)
+      out.push_back({8.0 * record * (sensors + 4.0) * histories, where(s, {"output.time_histories"}), "stored time histories"});
     const std::string law = s.text("contact.law");
     if ((law == "table" || law == "literal") && s.text("stiffness.surface") == "rough") out.push_back(contact_grid(s));
     if (law == "linearised" && s.text("contact.blocked_force") == "solver") out.push_back(blocked_force_window(s));
-  } else if (scene == "rolling-pipe" && s.text("roughness.kind") != "line") {
-    // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
-    const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
-    out.push_back({8.0 * nx * ny * (t + 10.0), where(s, {"surface.nx", "surface.ny"}), "rough floor per thread"});
+    if (law == "linearised" && s.boolean("output.reference")) out.push_back(linear_reference(s, sensors, record));
+    if (law == "path") out.push_back(path_table(s, t));
+  } else if (scene == "rolling-pipe") {
+    if (s.text("roughness.kind") != "line") {
+      // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
+      const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
+      out.push_back({8.0 * nx * ny * (t + 10.0), where(s, {"surface.nx", "surface.ny"}), "rough floor per thread"});
+    }
+    out.push_back(chunk_sums(s, static_cast<double>(s.list("sensors.positions").size()) + 2.0));
+  } else if (scene == "rolling-beam") {
+    for (auto& it : rolling_beam(s)) out.push_back(std::move(it));
   }
   return out;
 }
@@ -104,6 +196,7 @@ MemoryEstimate estimate_memory(const study::Study& s, int threads) {
   double largest = -1.0;
   for (const auto& it : items(s, threads)) {
     e.bytes += it.bytes;
+    e.terms.emplace_back(it.what, it.bytes);
     if (it.bytes > largest) {
       largest = it.bytes;
       e.keys = it.keys;

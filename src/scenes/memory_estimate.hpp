@@ -6,6 +6,7 @@
 // that drive it. The figures are calibrated against measured peaks (ru_maxrss) and err high.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rollspec::study {
@@ -18,6 +19,8 @@ struct MemoryEstimate {
   double bytes = 0.0;             // estimated peak resident memory
   std::vector<std::string> keys;  // the keys that drive it, as "[section] key = value"
   std::string what;               // the largest item, in words
+  // Every term that grows with the keys, in words, and its bytes (the process baseline aside).
+  std::vector<std::pair<std::string, double>> terms;
 };
 
 // `threads`: OpenMP threads that each hold a workspace.

@@ -84,8 +84,13 @@ const SceneInfo& find_scene(const std::string& name);  // throws config_error na
 std::vector<study::KeySpec> common_keys();
 std::vector<study::KeySpec> schema_for(const std::string& scene);  // common + scene keys
 
-// The study hash that result data depend on (everything but the realisation count and the
-// ensemble layout), used for checkpoints.
+// Keys that only the final write reads (outputs computed after the ensemble, from its sums or by
+// rerunning realisations): checkpointed chunk sums do not depend on them, so --resume may change
+// them, e.g. drop [output] reference when it does not fit in memory.
+const std::vector<std::string>& finishing_keys();
+
+// The study hash that chunk sums depend on (everything but the realisation count, the ensemble
+// layout and the finishing keys), used for checkpoints.
 std::uint64_t study_result_hash(const study::Study& s);
 
 }  // namespace rollspec::scenes

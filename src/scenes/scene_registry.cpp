@@ -80,9 +80,16 @@ std::vector<KeySpec> schema_for(const std::string& scene) {
   return keys;
 }
 
+const std::vector<std::string>& finishing_keys() {
+  // reference: computed from the sums' count; time_histories: realisations 0..n-1 rerun at the write.
+  static const std::vector<std::string> keys = {"output.reference", "output.time_histories"};
+  return keys;
+}
+
 std::uint64_t study_result_hash(const Study& s) {
-  return ensemble::fnv1a64(std::string(kVersion) + "\n" +
-                           s.canonical_text_without({"study.realisations", "study.description", "ensemble.chunk_size"}));
+  std::vector<std::string> excluded = {"study.realisations", "study.description", "ensemble.chunk_size"};
+  excluded.insert(excluded.end(), finishing_keys().begin(), finishing_keys().end());
+  return ensemble::fnv1a64(std::string(kVersion) + "\n" + s.canonical_text_without(excluded));
 }
 
 }  // namespace rollspec::scenes

@@ -1,8 +1,10 @@
 // The ensemble driver: the pairwise tree, chunk-size invariance, NaN detection, --only.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -78,4 +80,36 @@ TEST_CASE("a realisation producing NaN stops the run naming its id and the seed"
   CHECK(s.sum[0] == 1.0);
   cfg.only = 20;
   CHECK_THROWS_AS(run_ensemble(cfg, 1, bad), UserError);
+}
+
+TEST_CASE("chunk sums reduced as they complete keep few nodes and the tree's bits, for any contiguous range") {
+  const auto leaves = [](std::uint64_t a, std::uint64_t b) {
+    std::vector<double> v;
+    if (b - a == 1) v.resize(2), values_of(a, 0, v.data());
+    return v;
+  };
+  for (std::uint64_t K : {1u, 13u, 100u, 1000u, 4097u})
+    for (std::uint64_t C : {1u, 4u, 64u})
+      for (std::uint64_t ranks : {1u, 3u}) {
+        // Ranges as ranks get them: [first, last) of chunk indices, aligned to nothing.
+        const std::uint64_t chunks = (K + C - 1) / C;
+        std::map<std::uint64_t, TreeAccumulator::Node> nodes;
+        std::size_t most = 0;
+        for (std::uint64_t r = 0; r < ranks; ++r) {
+          TreeAccumulator acc;
+          for (std::uint64_t i = chunks * r / ranks; i < chunks * (r + 1) / ranks; ++i) {
+            const std::uint64_t lo = i * C, hi = std::min(lo + C, K);
+            acc.push(lo, hi, tree_sum(lo, hi, leaves));
+            most = std::max(most, acc.size());
+          }
+          for (const auto& n : acc.nodes()) nodes[n.lo] = n;
+        }
+        CHECK(static_cast<double>(most) <= 2.0 * std::log2(static_cast<double>(chunks) + 1.0) + 1.0);
+        const auto reduced = tree_sum(0, K, [&](std::uint64_t a, std::uint64_t b) {
+          const auto it = nodes.find(a);
+          return it != nodes.end() && it->second.hi == b ? it->second.values : std::vector<double>();
+        });
+        const auto direct = tree_sum(0, K, leaves);
+        CHECK(std::memcmp(reduced.data(), direct.data(), direct.size() * sizeof(double)) == 0);
+      }
 }
