@@ -23,8 +23,10 @@ bool parse_options(const std::vector<std::string>& args, const std::string& usag
 }
 
 void add_study_options(po::options_description& options, po::positional_options_description& positional,
-                       StudyArgs& study) {
-  options.add_options()("study", po::value(&study.file)->required(), "study file (INI)")(
+                       StudyArgs& study, bool required) {
+  auto* file = po::value(&study.file);
+  if (required) file->required();
+  options.add_options()("study", file, "study file (INI)")(
       "set", po::value(&study.sets)->composing(), "override a study key: --set section.key=value (repeatable)");
   positional.add("study", 1);
 }

@@ -19,7 +19,8 @@ struct StudyArgs {
   std::string file;
   std::vector<std::string> sets;
 };
+// required = false: the command checks for a missing study itself (run --resume reads the checkpoint's).
 void add_study_options(po::options_description& options, po::positional_options_description& positional,
-                       StudyArgs& study);
+                       StudyArgs& study, bool required = true);
 
 }  // namespace rollspec::cli

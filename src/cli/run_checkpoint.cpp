@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -45,7 +46,7 @@ std::string finishing_list() {
 // The study a --resume runs: the checkpoint's. Refuses other --set values and a changed study file,
 // except for the finishing keys (scene.hpp): the chunks do not depend on them.
 study::Study resume_study(const study::Study& asked, const std::vector<std::string>& sets,
-                          const ensemble::CheckpointManifest& m, const std::string& dir) {
+                          const ensemble::CheckpointManifest& m, const std::string& dir, bool from_checkpoint) {
   std::map<std::string, std::string> stored;
   for (const auto& [k, v] : ensemble::canonical_entries(m.study_text)) stored[k] = v;
   std::string differ;
@@ -63,6 +64,7 @@ study::Study resume_study(const study::Study& asked, const std::vector<std::stri
                      "\nthe checkpointed chunks were computed with these values; only " + finishing_list() +
                      " may change on --resume (they are computed after the ensemble); resume without these --set "
                      "(the checkpoint's settings are reused), or start over with --restart");
+  if (from_checkpoint) return asked;  // parsed from this manifest: nothing on disk to compare with
   std::vector<std::string> all = m.sets;
   all.insert(all.end(), sets.begin(), sets.end());
   study::Study s = study::Study::load(asked.file(), all, scenes::schema_for);
@@ -98,8 +100,19 @@ void check_directory(const std::string& dir) {
 
 }  // namespace
 
+study::Study checkpoint_study(const std::string& dir, const std::vector<std::string>& sets) {
+  const auto m = ensemble::read_manifest(dir);
+  if (!m)
+    throw missing_input("no study file given, and " + dir + " holds no checkpoint to resume; allowed: rollspec run STUDY.ini "
+                        "[--out FILE.h5], or rollspec run --resume --out FILE.h5 where FILE.h5.checkpoint exists");
+  if (m->study_file.empty())
+    throw data_error(dir + ": this checkpoint does not record its study file (written by an older rollspec); resume with "
+                     "the study file: rollspec run STUDY.ini --out ... --resume");
+  return study::Study::parse(m->study_file, m->study_text, sets, scenes::schema_for);
+}
+
 CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const std::vector<std::string>& sets,
-                                  bool resume, bool restart, bool quiet) {
+                                  bool resume, bool restart, bool quiet, bool study_from_checkpoint) {
   CheckpointSession session;
   session.directory = dir;
   std::exception_ptr failure;
@@ -116,7 +129,7 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
         throw data_error(dir + ": the checkpoint was written by another build (" + manifest->identity +
                          "); this is " + io::code_identity() +
                          "; results of two code versions are never mixed: start over with --restart");
-      s = resume_study(s, sets, *manifest, dir);
+      s = resume_study(s, sets, *manifest, dir, study_from_checkpoint);
       if (!quiet && root && !manifest->sets.empty()) {
         std::string list;
         for (const auto& o : manifest->sets) list += " --set " + o;
@@ -131,7 +144,8 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
     }
     if (root && !(resume && manifest)) {
       store.clear(/*keep_lock=*/true);  // stale chunks (--restart), temporaries, an old manifest
-      ensemble::write_manifest(dir, {io::code_identity(), s.overrides(), s.canonical_text()});
+      ensemble::write_manifest(dir, {io::code_identity(), s.overrides(), s.canonical_text(),
+                                     std::filesystem::absolute(s.file()).string()});
     }
   } catch (...) {
     failure = std::current_exception();

@@ -39,11 +39,19 @@ void refuse_replacing_an_ensemble(const std::string& write_path, const std::stri
                       "realisations computed); --only would replace it with one realisation; choose another --out (the "
                       "default is STUDY-only-ID.h5), or add --force to replace it");
 }
+
+// <out>.checkpoint of the file `out` names (a symbolic link followed), before the output is checked.
+std::string resolved_checkpoint(const std::string& out) {
+  std::error_code ec;
+  const fs::path target = fs::is_symlink(out, ec) ? fs::canonical(out, ec) : fs::path(out);
+  return (ec ? fs::path(out) : target).string() + ".checkpoint";
+}
 }  // namespace
 
 int run_command(const Args& args) {
   const std::string usage =
       "usage: rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume | --restart] [--force] [--quiet]\n"
+      "       rollspec run --resume --out FILE.h5 [--quiet]   (the checkpoint's own study; no study file needed)\n"
       "\n"
       "Runs the study's Monte-Carlo ensemble and writes the result file (HDF5, schema 1: /psd, /bands,\n"
       "provenance). The study is validated completely before any work starts. Completed chunks of\n"
@@ -64,7 +72,7 @@ int run_command(const Args& args) {
       "only", po::value<long long>(), "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
       "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q", "no progress output");
   po::positional_options_description pos;
-  add_study_options(opts, pos, study);
+  add_study_options(opts, pos, study, /*required=*/false);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   const bool resume = vm.count("resume") > 0, restart = vm.count("restart") > 0;
@@ -76,7 +84,13 @@ int run_command(const Args& args) {
     if (resume || restart) throw usage_error("--only runs one realisation without checkpoints; it takes no --resume or --restart");
   }
 
-  study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
+  // `run --resume --out FILE` needs no study file: the checkpoint holds the resolved study.
+  const bool study_from_checkpoint = study.file.empty();
+  if (study_from_checkpoint && !(resume && !out.empty()))
+    throw usage_error("the study file is missing; allowed: rollspec run STUDY.ini [--out FILE.h5] ..., or rollspec run "
+                      "--resume --out FILE.h5 to finish that file's checkpoint without its study file");
+  study::Study s = study_from_checkpoint ? checkpoint_study(resolved_checkpoint(out), study.sets)
+                                         : study::Study::load(study.file, study.sets, scenes::schema_for);
   // Before any workspace, FFT plan or table is allocated (an allocation failure inside FFTW aborts).
   scenes::check_memory(s, ensemble::ensemble_threads(), vm.count("force") > 0);
   if (out.empty())
@@ -87,9 +101,9 @@ int run_command(const Args& args) {
 
   auto scene = scenes::find_scene(s.scene()).make(s);
   if (!scene->runs_ensemble() && !scene->single_run())
-    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + study.file);
+    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + s.file());
   if (scene->single_run() && (resume || restart))
-    throw usage_error("study " + study.file + " (scene " + s.scene() + ") is one deterministic run with no checkpoint; drop --resume/--restart");
+    throw usage_error("study " + s.file() + " (scene " + s.scene() + ") is one deterministic run with no checkpoint; drop --resume/--restart");
   io::OutputTarget target{out, io::kResultFileType};
   target.force = vm.count("force") > 0;
   target.clean_stale = ensemble::mpi_rank() == 0;
@@ -119,7 +133,7 @@ int run_command(const Args& args) {
   if (only < 0) {
     // Resolves the study a --resume runs (the checkpoint's), so the scene is made after this.
     const std::string asked = s.canonical_text();
-    checkpoint = open_checkpoint(checkpoint_dir, s, study.sets, resume, restart, quiet);
+    checkpoint = open_checkpoint(checkpoint_dir, s, study.sets, resume, restart, quiet, study_from_checkpoint);
     cfg.checkpoint_dir = checkpoint.directory;
     if (s.canonical_text() != asked) {
       scenes::check_memory(s, ensemble::ensemble_threads(), vm.count("force") > 0);  // the checkpoint's study

@@ -33,6 +33,7 @@ std::string hex16(std::uint64_t v) {
 std::string body_of(const CheckpointManifest& m) {
   std::ostringstream s;
   s << kHeader << "identity = " << m.identity << "\n";
+  if (!m.study_file.empty()) s << "study_file = " << m.study_file << "\n";
   for (const auto& set : m.sets) s << "set = " << set << "\n";
   s << "study:\n" << m.study_text << "end of study\n";
   return s.str();
@@ -77,6 +78,7 @@ std::optional<CheckpointManifest> read_manifest(const std::string& directory) {
   std::string line;
   while (std::getline(lines, line) && line != "study:") {
     if (line.rfind("identity = ", 0) == 0) m.identity = line.substr(11);
+    else if (line.rfind("study_file = ", 0) == 0) m.study_file = line.substr(13);
     else if (line.rfind("set = ", 0) == 0) m.sets.push_back(line.substr(6));
   }
   std::string study;

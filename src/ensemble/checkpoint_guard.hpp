@@ -15,6 +15,7 @@ struct CheckpointManifest {
   std::string identity;           // io::code_identity() of the build that wrote the chunks
   std::vector<std::string> sets;  // "section.key=value" overrides of the run (canonical values)
   std::string study_text;         // resolved study (Study::canonical_text)
+  std::string study_file;         // absolute path of the study file (its directory resolves relative paths)
 };
 
 // nullopt if there is no manifest; refuses (exit 65) a damaged one, naming the file.

@@ -209,7 +209,11 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
   if (!in) throw missing_input("cannot open study file '" + path + "'");
   std::ostringstream buf;
   buf << in.rdbuf();
-  std::string text = buf.str();
+  return parse(path, buf.str(), overrides, schema);
+}
+
+Study Study::parse(const std::string& path, std::string text, const std::vector<std::string>& overrides,
+                   const SchemaLookup& schema) {
   // A UTF-8 byte-order mark (editors on Windows) is not part of the first section header.
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   if (text.empty()) throw config_error(path + ": the study file is empty; it needs at least [study] scene, realisations and seed");

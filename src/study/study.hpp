@@ -34,6 +34,10 @@ using SchemaLookup = std::function<std::vector<KeySpec>(const std::string& scene
 class Study {
  public:
   static Study load(const std::string& path, const std::vector<std::string>& overrides, const SchemaLookup& schema);
+  // The same from study text already read (a checkpoint's resolved study): `path` names it in
+  // messages and its directory resolves relative paths, as if the text were that file.
+  static Study parse(const std::string& path, std::string text, const std::vector<std::string>& overrides,
+                     const SchemaLookup& schema);
 
   const std::string& file() const { return file_; }
   const std::string& scene() const { return scene_; }

@@ -15,7 +15,8 @@ import numpy as np
 import pytest
 import scipy.io
 
-from conftest import (BIN, EX_CANTCREAT, EX_DATAERR, SMALL_OSCILLATOR, SOURCE, assert_refused, run)
+from conftest import (BIN, EX_CANTCREAT, EX_DATAERR, EX_USAGE, SMALL_OSCILLATOR, SOURCE, assert_bitwise_equal,
+                      assert_refused, run)
 
 EX_IOERR = 74
 SENTINEL = b"precious user data\n"
@@ -328,3 +329,28 @@ def test_a_column_named_T_is_not_a_time_column(tmp_path):
     r = run(["psd", csv, "--fs", str(fs), "--column", "acc", "--segment", "1024"])
     assert r.returncode == 0, r.stderr
     assert "time column" not in r.stderr
+
+
+def test_resume_needs_no_study_file(tmp_path):
+    """The checkpoint holds the resolved study: a moved or deleted study file does not strand the run."""
+    d = tmp_path / "work"
+    d.mkdir()
+    study = oscillator(d, realisations=8)
+    out = tmp_path / "r.h5"
+    p = subprocess.Popen([BIN, "run", study, "--out", out, "--quiet", "--set", "study.realisations=4000"],
+                         stderr=subprocess.PIPE, text=True, env={**os.environ, "OMP_NUM_THREADS": "1"})
+    deadline = time.time() + 30
+    while time.time() < deadline and not list((tmp_path / "r.h5.checkpoint").glob("chunk_*.bin")):
+        time.sleep(0.005)
+    p.send_signal(2)
+    assert p.communicate(timeout=30)[1] is not None and p.returncode == 130
+    reference = tmp_path / "ref.h5"
+    assert run(["run", study, "--out", reference, "--quiet", "--set", "study.realisations=4000"]).returncode == 0
+    study.unlink()
+    r = run(["run", "--out", out, "--quiet"])
+    assert_refused(r, EX_USAGE, ["study file is missing", "--resume --out"])
+    r = run(["run", "--resume", "--out", out, "--quiet"])
+    assert r.returncode == 0, r.stderr
+    assert_bitwise_equal(out, reference)
+    r = run(["run", "--resume", "--out", tmp_path / "none.h5", "--quiet"])
+    assert_refused(r, 66, ["holds no checkpoint to resume", "allowed"])
