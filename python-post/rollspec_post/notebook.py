@@ -7,9 +7,9 @@ import subprocess
 
 import h5py
 
-from .result_file import EX_NOINPUT, EX_USAGE, PostError, open_rollspec
+from .result_file import EX_NOINPUT, EX_USAGE, KNOWN_SCHEMA_MAJOR, PostError, open_rollspec
 
-FILETYPES = ("rollspec-result", "rollspec-texture", "rollspec-stiffness-table", "rollspec-blocked-force")
+FILETYPES = tuple(KNOWN_SCHEMA_MAJOR)  # every file kind the engine writes
 
 
 def open_result(path):
