@@ -119,13 +119,12 @@ def build_parser():
     return parser
 
 
-def missing_module():
-    """One line naming the first module this package needs that the running Python lacks, else None."""
-    import importlib
+def missing_module(name=None):
+    """One line naming the first module this package needs that the running Python lacks, else None
+    (found, not imported: a refusal must not wait for matplotlib). `name`: one known to be missing."""
+    import importlib.util
     for module, package in REQUIRED:
-        try:
-            importlib.import_module(module)
-        except ImportError:
+        if module == name or (name is None and importlib.util.find_spec(module) is None):
             return (f"{program_name()}: error: the Python module {module} is missing from {sys.executable}; "
                     f"install it (Debian: apt-get install {package}) or run with /usr/bin/python3")
     return None
@@ -133,7 +132,6 @@ def missing_module():
 
 def inputs(args):
     """(path, what, size limit) of every file the command reads."""
-    from .panels_plot import parse_panel
     files = [(getattr(args, n), "a rollspec HDF5 file", None) for n in ("result", "texture_file", "table")
              if getattr(args, n, None)]
     if getattr(args, "csv", None):
@@ -141,6 +139,7 @@ def inputs(args):
     if getattr(args, "measurement", None):
         files.append((args.measurement, "a measurement CSV", MAX_CSV_BYTES))
     if args.command == "panels":
+        from .panels_plot import parse_panel
         args.panels = [parse_panel(words) for words in args.panel]
         files += [(path, "a rollspec HDF5 file", None) for _, curves in args.panels for path, _ in curves]
     return files
@@ -215,14 +214,8 @@ def one_line(text):
     return " ".join(str(text).split())
 
 
-def main(argv=None):
-    args = build_parser().parse_args(argv)
-    prefix = f"{program_name().replace('python3 -m ', '')} {args.command}: error:"
-    missing = missing_module()
-    if missing:
-        print(missing, file=sys.stderr)
-        return EX_UNAVAILABLE
-    quiet()
+def checked_run(args, prefix):
+    """run() with every failure as one line and an exit code."""
     from .result_file import PostError
     try:
         run(args)
@@ -235,12 +228,29 @@ def main(argv=None):
     except MemoryError:
         print(f"{prefix} out of memory; {args.out} not written", file=sys.stderr)
         return EX_SOFTWARE
+    except ImportError:
+        raise
     except Exception as e:  # last resort: a bug, but still one line and no partial output
         print(f"{prefix} internal error ({type(e).__name__}: {one_line(e)}); {args.out} not written; "
               "please report this", file=sys.stderr)
         return EX_SOFTWARE
     print(f"wrote {args.out}")
     return 0
+
+
+def main(argv=None):
+    args = build_parser().parse_args(argv)
+    prefix = f"{program_name().replace('python3 -m ', '')} {args.command}: error:"
+    missing = missing_module()
+    if missing:
+        print(missing, file=sys.stderr)
+        return EX_UNAVAILABLE
+    quiet()
+    try:
+        return checked_run(args, prefix)
+    except ImportError as e:  # found but broken, or one of their own dependencies
+        print(missing_module((e.name or "").split(".")[0]) or f"{prefix} {one_line(e)}", file=sys.stderr)
+        return EX_UNAVAILABLE
 
 
 if __name__ == "__main__":

@@ -21,7 +21,8 @@ def open_result(path):
         f.visititems(lambda name, obj: groups.append("/" + name) if isinstance(obj, h5py.Group) else None)
     out = {}
     for g in groups:
-        with xr.open_dataset(path, engine="h5netcdf", group=g) as ds:
+        # phony_dims: tables without dimension scales (the cached tables) open too
+        with xr.open_dataset(path, engine="h5netcdf", group=g, phony_dims="sort") as ds:
             out[g.strip("/") or "/"] = ds.load()
     return out
 
