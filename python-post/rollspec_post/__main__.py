@@ -28,7 +28,7 @@ class Parser(argparse.ArgumentParser):
     """argparse with one line and exit 64 for a usage error (its default is the usage text and exit 2)."""
 
     def error(self, message):
-        self.exit(EX_USAGE, f"{self.prog}: error: {message}\n")
+        self.exit(EX_USAGE, f"{self.prog.replace('python3 -m ', '')}: error: {' '.join(message.split())}\n")
 
 
 def finite(text):
@@ -191,9 +191,10 @@ def render(args, kind):
 
 def run(args):
     """Checks every input and the output before reading any data, renders, then writes atomically."""
-    from .safe_output import check_input, check_output, picture_kind, write_atomic
+    from .safe_output import check_input, check_output, picture_kind, refuse_inputs, write_atomic
     files = inputs(args)
     check_ranges(args)
+    refuse_inputs(args.out, [path for path, _, _ in files])  # first: the most important answer
     for path, what, limit in files:
         check_input(path, what, limit)
     kind = picture_kind(args.out, args.out_types) if args.out_types else "html"

@@ -85,14 +85,20 @@ def _same_file(a, b):
         return os.path.realpath(a) == os.path.realpath(b)
 
 
-def check_output(out, kind, inputs=(), force=False, option="--out"):
-    """The path to write (symlinks resolved) after the checks above; PostError otherwise."""
+def refuse_inputs(out, inputs, option="--out"):
+    """The resolved output path, unless it is one of the command's inputs (links followed)."""
     if not out:
         raise PostError(f"{option}: empty path; allowed: a file name", EX_USAGE)
     target = os.path.realpath(out)
     for i in inputs:
         if i and _same_file(target, i):
             raise PostError(f"{option} {out}: is the input {i} of this command; allowed: another file name", EX_USAGE)
+    return target
+
+
+def check_output(out, kind, inputs=(), force=False, option="--out"):
+    """The path to write (symlinks resolved) after the checks above; PostError otherwise."""
+    target = refuse_inputs(out, inputs, option)
     try:
         st = os.stat(target)
     except FileNotFoundError:

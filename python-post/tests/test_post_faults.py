@@ -76,6 +76,7 @@ def record(r, allowed, before, after, leftovers):
     destroyed = before != after
     lines = r.stderr.strip().splitlines()
     TOTALS["tracebacks"] += traceback
+    TOTALS["last-resort messages"] += "internal error" in r.stderr
     TOTALS["destroyed"] += destroyed
     if r.returncode == 0:
         TOTALS["accepted"] += 1
@@ -84,6 +85,7 @@ def record(r, allowed, before, after, leftovers):
     else:
         TOTALS["refused, not cleanly"] += 1
     assert not traceback, r.stderr
+    assert "internal error" not in r.stderr, r.stderr  # a hostile case deserves its own message
     assert not destroyed, f"changed: {[p for p in before if before[p] != after.get(p)]}"
     assert not leftovers, leftovers
     assert r.returncode in allowed, (r.returncode, r.stderr)
@@ -342,5 +344,6 @@ def test_totals():
     t = TOTALS
     print(f"\nrollspec-post fault suite: tried {t['tried']}, refused cleanly {t['refused cleanly']}, accepted "
           f"{t['accepted']}, refused not cleanly {t['refused, not cleanly']}, destroyed {t['destroyed']}, "
-          f"tracebacks {t['tracebacks']}, hangs {t['hangs']}")
+          f"tracebacks {t['tracebacks']}, hangs {t['hangs']}, last-resort messages {t['last-resort messages']}")
     assert t["destroyed"] == t["tracebacks"] == t["hangs"] == t["refused, not cleanly"] == 0
+    assert t["last-resort messages"] == 0
