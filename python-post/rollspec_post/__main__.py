@@ -203,6 +203,16 @@ def run(args):
     write_atomic(target, lambda fh: fh.write(data))
 
 
+def interrupt_on_termination():
+    """SIGTERM and SIGHUP end the run like Ctrl-C: the temporary is removed, the old output stays."""
+    import signal
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        signal.signal(sig, interrupt)
+
+
 def quiet():
     """Library warnings (numpy's divide by zero, matplotlib's font notes) would add lines to stderr."""
     import logging
@@ -247,6 +257,7 @@ def main(argv=None):
         print(missing, file=sys.stderr)
         return EX_UNAVAILABLE
     quiet()
+    interrupt_on_termination()
     try:
         return checked_run(args, prefix)
     except ImportError as e:  # found but broken, or one of their own dependencies

@@ -31,7 +31,11 @@ def _read_table(path):
     check_input(path, "a measurement CSV", MAX_CSV_BYTES)  # never /dev/zero, a FIFO or a 5 GB file
     try:
         with open(path, encoding="utf-8-sig") as fh:
-            lines = fh.read().split("\n")
+            text = fh.read(MAX_CSV_BYTES + 1)  # a file that grows, or a /proc file that claims 0 bytes
+        if len(text) > MAX_CSV_BYTES:
+            raise PostError(f"{path}: more than {MAX_CSV_BYTES // 2**20} MiB; allowed: a measurement CSV up to that",
+                            EX_DATAERR)
+        lines = text.split("\n")
     except FileNotFoundError:
         raise PostError(f"{path}: no such file", EX_NOINPUT) from None
     except (UnicodeDecodeError, IsADirectoryError) as e:

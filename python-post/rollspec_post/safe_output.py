@@ -141,8 +141,32 @@ def _new_file_mode(target):
         return 0o666 & ~mask
 
 
+def _alive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # EPERM: alive, someone else's
+        pass
+    return True
+
+
+def remove_stale_temporaries(target):
+    """Temporaries of `target` left by killed runs (`.NAME.tmp-PID-XXXX` of a dead PID)."""
+    import glob
+    directory, name = os.path.split(target)
+    for path in glob.glob(os.path.join(glob.escape(directory), glob.escape(f".{name}.tmp-") + "*-*")):
+        pid = os.path.basename(path)[len(name) + 6:].split("-")[0]
+        if pid.isdigit() and not _alive(int(pid)) and os.path.isfile(path) and not os.path.islink(path):
+            try:
+                os.unlink(path)
+            except OSError:
+                pass
+
+
 def _create_temporary(target):
     import tempfile
+    remove_stale_temporaries(target)
     directory, name = os.path.split(target)
     try:
         return tempfile.mkstemp(prefix=f".{name}.tmp-{os.getpid()}-", dir=directory)

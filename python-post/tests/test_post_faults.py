@@ -44,7 +44,8 @@ def reads_measurement(command):
 TARGETS = {
     "user_data": {73}, "user_data_force": {0}, "rollspec_result_file": {73}, "post_output_other_kind": {73},
     "symlink_to_user_data": {73}, "same_kind": {0}, "symlink_to_same_kind": {0}, "own_input": {64},
-    "symlink_to_own_input": {64}, "own_input_force": {64},
+    "symlink_to_own_input": {64}, "hardlink_to_own_input": {64}, "own_input_force": {64},
+    "symlink_loop": {73}, "dangling_symlink": {0},  # a link to a file still to be made: made, the link kept
     "measurement_file": lambda c: {64} if reads_measurement(c) else {73},
     "fifo": {73}, "symlink_to_dev_null": {73}, "dev_null": {64, 73},  # /dev/null has no picture extension: 64
     "directory": {73}, "no_such_directory": {73}, "read_only_directory": {0} if ROOT else {73},
@@ -135,6 +136,15 @@ def make_target(name, d, kind, inputs, samples):
     elif name == "symlink_to_own_input":
         out.symlink_to(inputs[0])
         keep.append(out)
+    elif name == "hardlink_to_own_input":
+        os.link(inputs[0], out)
+        keep.append(out)
+    elif name == "symlink_loop":
+        out.symlink_to(out)
+        keep.append(out)
+    elif name == "dangling_symlink":
+        out.symlink_to(d / "user" / f"new.{kind}")
+        keep.append(out)
     elif name == "measurement_file":
         out = copy(samples["measurement"], d / f"measurement.{kind}") if len(inputs) < 2 else inputs[1]
         keep.append(out)
@@ -186,6 +196,16 @@ def test_hostile_output(command, kind, target, samples, tmp_path):
     finally:
         if target == "read_only_directory":
             os.chmod(tmp_path / "ro", 0o755)
+
+
+def test_stale_temporary_of_a_killed_run_is_removed(samples, tmp_path):
+    dead = subprocess.Popen(["true"])  # its PID is free once it is reaped
+    dead.wait()
+    stale = tmp_path / f".out.png.tmp-{dead.pid}-abcd1234"
+    stale.write_bytes(b"half a picture")
+    r = run_post(["psd", samples["psd"], "--out", tmp_path / "out.png"])
+    record(r, {0}, {}, {}, [])
+    assert not stale.exists() and has_marker(tmp_path / "out.png", "png")
 
 
 def test_every_writer_has_samples_and_kinds():
