@@ -233,9 +233,6 @@ def checked_run(args, prefix):
     except PostError as e:
         print(f"{prefix} {one_line(e)}", file=sys.stderr)
         return e.exit_code
-    except KeyboardInterrupt:
-        print(f"{prefix} interrupted; {args.out} not written", file=sys.stderr)
-        return 130
     except MemoryError:
         print(f"{prefix} out of memory; {args.out} not written", file=sys.stderr)
         return EX_SOFTWARE
@@ -245,11 +242,35 @@ def checked_run(args, prefix):
         print(f"{prefix} internal error ({type(e).__name__}: {one_line(e)}); {args.out} not written; "
               "please report this", file=sys.stderr)
         return EX_SOFTWARE
-    print(f"wrote {args.out}")
+    say(f"wrote {args.out}")
     return 0
 
 
+def say(text):
+    """The success line; a closed pipe (`| head -0`) or an undecodable file name is no failure: the file is written."""
+    if sys.stdout is None:
+        return
+    try:
+        sys.stdout.reconfigure(errors="backslashreplace")
+        print(text, flush=True)
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
+    except (OSError, ValueError, AttributeError):
+        pass
+
+
 def main(argv=None):
+    interrupt_on_termination()
+    try:
+        return main_checked(argv)
+    except KeyboardInterrupt:  # Ctrl-C, SIGTERM, SIGHUP: the temporary is gone, the old output untouched
+        print(f"{program_name().replace('python3 -m ', '')}: error: interrupted; nothing written", file=sys.stderr)
+        sys.stderr.flush()
+        # os._exit: CPython exits by SIGINT (-2) when an interrupt passed through an import, even if caught
+        os._exit(130)
+
+
+def main_checked(argv):
     args = build_parser().parse_args(argv)
     prefix = f"{program_name().replace('python3 -m ', '')} {args.command}: error:"
     missing = missing_module()
@@ -257,7 +278,6 @@ def main(argv=None):
         print(missing, file=sys.stderr)
         return EX_UNAVAILABLE
     quiet()
-    interrupt_on_termination()
     try:
         return checked_run(args, prefix)
     except ImportError as e:  # found but broken, or one of their own dependencies

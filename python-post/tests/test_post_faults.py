@@ -208,6 +208,33 @@ def test_stale_temporary_of_a_killed_run_is_removed(samples, tmp_path):
     assert not stale.exists() and has_marker(tmp_path / "out.png", "png")
 
 
+def test_terminated_run_leaves_the_old_output(samples, tmp_path):
+    """SIGTERM while drawing: exit 130 with one line (or 0 if it was done), old output or new, no temporary."""
+    import signal
+    import time
+    out = tmp_path / "out.png"
+    out.write_bytes(samples["marked"]["png"])
+    env = dict(os.environ, PYTHONPATH=str(SOURCE / "python-post"))
+    p = subprocess.Popen([sys.executable, "-m", "rollspec_post", "psd", str(samples["psd"]), "--bands", "--out", str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    time.sleep(1.0)
+    p.send_signal(signal.SIGTERM)
+    stdout, stderr = p.communicate(timeout=TIMEOUT)
+    assert has_marker(out, "png") and not temporaries(tmp_path)
+    if p.returncode == -signal.SIGTERM:  # a loaded machine: still starting Python, before main(); nothing written
+        return
+    record(subprocess.CompletedProcess(p.args, p.returncode, stdout, stderr), {0, 130}, {}, {}, temporaries(tmp_path))
+
+
+def test_closed_stdout_is_no_failure(samples, tmp_path):
+    """`rollspec-post ... | head -0`: the file is written, exit 0, no BrokenPipeError."""
+    env = dict(os.environ, PYTHONPATH=str(SOURCE / "python-post"))
+    cmd = f"{sys.executable} -m rollspec_post psd {samples['psd']} --out {tmp_path / 'out.png'} | true; exit ${{PIPESTATUS[0]}}"
+    r = subprocess.run(["bash", "-c", cmd], capture_output=True, text=True, env=env, timeout=TIMEOUT)
+    record(r, {0}, {}, {}, temporaries(tmp_path))
+    assert has_marker(tmp_path / "out.png", "png")
+
+
 def test_every_writer_has_samples_and_kinds():
     """A new subcommand with --out must say what it writes and have a sample input here."""
     assert WRITERS and all(kinds for _, kinds in WRITERS)
