@@ -101,6 +101,8 @@ def read_measurement(path, column=None):
 
 def sensor_row(names, sensor=None):
     """The row `rollspec compare` uses: a name or an index; by default sensor_mean if present, else 0."""
+    if not names:
+        raise PostError("the result names no sensors (/psd/sensor is empty); nothing to draw or compare", EX_DATAERR)
     if sensor is None:
         return names.index("sensor_mean") if "sensor_mean" in names else 0
     if str(sensor) in names:

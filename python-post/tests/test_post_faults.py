@@ -10,6 +10,7 @@ import os
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from conftest import SOURCE
@@ -272,6 +273,37 @@ def test_hostile_input(command, variant, samples, tmp_path):
     csv = PRIMARY[command] == "bench"
     allowed = {0, 65} if variant == "all_zero" else {0, 65, 66} if (variant == "truncated" and csv) else {65, 66}
     record(r, allowed, before, snapshot(keep), temporaries(tmp_path))
+    assert os.path.exists(out) == (r.returncode == 0)
+
+
+def _replace(name, value):
+    def edit(f):
+        del f[name]
+        f[name] = value(f) if callable(value) else value
+    return edit
+
+
+DEGENERATE = {  # edits of a valid result: each must give a clear error or a valid picture
+    "nan_psd": _replace("/psd/mean", lambda f: np.full((2, 501), np.nan)),
+    "negative_psd": _replace("/psd/mean", lambda f: -np.ones((2, 501))),
+    "one_dimensional_psd": _replace("/psd/mean", lambda f: np.ones(501)),
+    "no_sensors": _replace("/psd/sensor", lambda f: np.array([], dtype="S")),
+    "empty_bands": _replace("/bands/nominal_frequency", lambda f: np.zeros(0)),
+    "text_realisations": lambda f: f["/psd"].attrs.__setitem__("realisations", "many"),
+    "group_for_a_dataset": lambda f: (f.__delitem__("/psd/mean"), f.create_group("/psd/mean")),
+}
+
+
+@pytest.mark.parametrize("command", ["psd", "report", "panels"])
+@pytest.mark.parametrize("variant", sorted(DEGENERATE))
+def test_degenerate_result(command, variant, samples, tmp_path):
+    import h5py
+    bad = copy(samples[command], tmp_path / "bad.h5")
+    with h5py.File(bad, "a") as f:
+        DEGENERATE[variant](f)
+    out = tmp_path / ("out.html" if command == "report" else "out.png")
+    r = run_post([command, *command_args(command, bad, samples["measurement"]), "--out", out])
+    record(r, {0, 65}, {}, {}, temporaries(tmp_path))
     assert os.path.exists(out) == (r.returncode == 0)
 
 
