@@ -12,7 +12,7 @@ import numpy as np
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .psd_plot import plot_psd
 from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read, scalar, strings, text_attr
-from .safe_output import HTML_MARKER
+from .safe_output import HTML_MARKER, write_atomic
 from . import __version__
 
 PROVENANCE = ("filetype", "schema_version", "rollspec_version", "git_sha", "seed", "rng", "library_versions", "scene",
@@ -142,9 +142,8 @@ def description(study):
 
 
 def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None):
-    page = report_html(result, measurement, sensor, fmin, fmax, column, measured_averages)
-    with open(out, "w", encoding="utf-8") as fh:
-        fh.write(page)
+    page = report_html(result, measurement, sensor, fmin, fmax, column, measured_averages).encode("utf-8")
+    write_atomic(os.path.realpath(out), lambda fh: fh.write(page))  # a failed write leaves the old file
     return out
 
 

@@ -227,7 +227,11 @@ def save_figure(fig, fh, kind, dpi=150):
 
 def emit_figure(fig, out, kind=None, dpi=150):
     """A figure to a path or an open binary file, with the marker of `kind` (default: from the name)."""
-    if kind is None:
-        kind = picture_kind(out) if isinstance(out, (str, os.PathLike)) else "png"
-    save_figure(fig, out, kind, dpi)
+    if not isinstance(out, (str, os.PathLike)):
+        save_figure(fig, out, kind or "png", dpi)
+        return out
+    import io
+    kind, buf = kind or picture_kind(out), io.BytesIO()
+    save_figure(fig, buf, kind, dpi)  # library callers too: a failed write leaves the old file
+    write_atomic(os.path.realpath(out), lambda fh: fh.write(buf.getvalue()))
     return out

@@ -3,7 +3,7 @@ angular speeds, and the energies over time with the balance error on its own sca
 import numpy as np
 from matplotlib.figure import Figure
 
-from .result_file import EX_DATAERR, PostError, open_rollspec, read, read_rows
+from .result_file import EX_DATAERR, PostError, open_rollspec, read_rows
 from .safe_output import emit_figure
 
 AXIS_NAMES = "xyz"
