@@ -1,9 +1,21 @@
-"""python3 -m rollspec_post COMMAND ... (installed: rollspec-post COMMAND ...): plots and reports from rollspec result files."""
+"""python3 -m rollspec_post COMMAND ... (installed: rollspec-post COMMAND ...): plots and reports from rollspec result files.
+
+Every failure is one line on stderr and a sysexits code (64 usage, 65 bad data, 66 missing input, 69 a
+Python module missing, 73 cannot create the output, 74 I/O error, 70 a bug). Only the standard library
+is imported at the top, so a Python without numpy, h5py or matplotlib is told so in one line."""
 import argparse
+import io
+import math
 import os
 import sys
 
-from .result_file import EX_CANTCREAT, PostError
+EX_USAGE, EX_UNAVAILABLE, EX_SOFTWARE = 64, 69, 70
+# module, the Debian package that provides it
+REQUIRED = (("numpy", "python3-numpy"), ("scipy", "python3-scipy"), ("h5py", "python3-h5py"),
+            ("matplotlib", "python3-matplotlib"))
+PICTURES = (".png", ".pdf", ".svg")
+MAX_DPI = 1200  # a 7.5-inch figure at 1200 dpi is 9000 pixels wide; more only exhausts memory
+MAX_CSV_BYTES = 64 * 2**20  # a measured PSD of a million lines is ~40 MB
 
 
 def program_name():
@@ -12,98 +24,265 @@ def program_name():
     return name if name == "rollspec-post" else "python3 -m rollspec_post"
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse with one line and exit 64 for a usage error (its default is the usage text and exit 2)."""
+
+    def error(self, message):
+        self.exit(EX_USAGE, f"{self.prog.replace('python3 -m ', '')}: error: {' '.join(message.split())}\n")
+
+
+def finite(text):
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not math.isfinite(v):
+        raise argparse.ArgumentTypeError(f"{text!r}: allowed: a finite number")
+    return v
+
+
+def frequency(text):
+    """A frequency in Hz: finite and >= 0."""
+    v = finite(text)
+    if v < 0:
+        raise argparse.ArgumentTypeError(f"{text!r}: allowed: a frequency >= 0 Hz")
+    return v
+
+
+def upper_frequency(text):
+    """--fmax of report: >= 0 Hz, or inf (its default: no upper limit)."""
+    if text.strip().lower() in ("inf", "+inf", "infinity"):
+        return math.inf
+    return frequency(text)
+
+
+def dpi(text):
+    v = finite(text)
+    if not 0 < v <= MAX_DPI:
+        raise argparse.ArgumentTypeError(f"{text!r}: allowed: 0 < dpi <= {MAX_DPI}")
+    return v
+
+
+def writer(sub, name, help_text, out_types, out_help):
+    """A subcommand that writes --out: `out_types` are the allowed extensions (None: any name, HTML)."""
+    p = sub.add_parser(name, help=help_text)
+    p.add_argument("--out", "-o", required=True, help=out_help)
+    p.add_argument("--force", action="store_true",
+                   help="replace an existing --out that rollspec-post did not write (never an input)")
+    p.set_defaults(out_types=out_types)
+    return p
+
+
 def build_parser():
-    parser = argparse.ArgumentParser(prog=program_name(),
-                                     description="Plots and reports from rollspec result files.")
+    parser = Parser(prog=program_name(), description="Plots and reports from rollspec result files.")
     sub = parser.add_subparsers(dest="command", required=True)
-    p = sub.add_parser("psd", help="acceleration PSD with confidence band, measurement and band levels")
+    p = writer(sub, "psd", "acceleration PSD with confidence band, measurement and band levels", PICTURES,
+               "output picture: .png, .pdf or .svg")
     p.add_argument("result", help="rollspec result file (HDF5)")
     p.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column")
     p.add_argument("--bands", action="store_true", help="draw third-octave band levels (and ΔL with a measurement)")
     p.add_argument("--sensor", help="the row drawn and compared: name or index (default: sensor_mean if present, else 0)")
     p.add_argument("--sensors", choices=("one", "all"), default="one", help="all: every sensor as thin grey lines too")
     p.add_argument("--xscale", choices=("linear", "log"), default="linear", help="frequency axis (default linear)")
-    p.add_argument("--dpi", type=float, default=150, help="resolution of a PNG (default 150)")
-    p.add_argument("--out", "-o", required=True, help="output picture: .png, .pdf or .svg")
-    t = sub.add_parser("texture", help="line texture, surface image, target vs realised PSD")
+    p.add_argument("--dpi", type=dpi, default=150, help=f"resolution of a PNG (default 150, at most {MAX_DPI})")
+    t = writer(sub, "texture", "line texture, surface image, target vs realised PSD", (".png",), "output PNG")
     t.add_argument("texture_file", help="file written by rollspec texture")
-    t.add_argument("--out", "-o", required=True, help="output PNG")
-    s = sub.add_parser("stiffness", help="P(δ) and k(δ) with their spread over realisations, and Hertz")
+    s = writer(sub, "stiffness", "P(δ) and k(δ) with their spread over realisations, and Hertz", (".png",), "output PNG")
     s.add_argument("table", help="stiffness table (HDF5, filetype rollspec-stiffness-table)")
-    s.add_argument("--out", "-o", required=True, help="output PNG")
-    j = sub.add_parser("trajectory", help="rolling-beam node paths, speeds and energies over time")
+    j = writer(sub, "trajectory", "rolling-beam node paths, speeds and energies over time", (".png",), "output PNG")
     j.add_argument("result", help="rollspec result file with /time_history/position")
-    j.add_argument("--out", "-o", required=True, help="output PNG")
-    g = sub.add_parser("roughness", help="roughness PSD along the path: raw and with each contact filter (ball-on-beam)")
+    g = writer(sub, "roughness", "roughness PSD along the path: raw and with each contact filter (ball-on-beam)",
+               PICTURES, "output picture: .png, .pdf or .svg")
     g.add_argument("result", help="rollspec result file with /roughness")
-    g.add_argument("--out", "-o", required=True, help="output picture: .png, .pdf or .svg")
-    b = sub.add_parser("bench", help="work-precision plot: error against run time, log-log, one line per method")
+    b = writer(sub, "bench", "work-precision plot: error against run time, log-log, one line per method", (".png",),
+               "output PNG")
     b.add_argument("csv", help="CSV with columns method (or integrator), seconds (or time_s), error_db (or error)")
-    b.add_argument("--out", "-o", required=True, help="output PNG")
-    n = sub.add_parser("panels", help="results side by side in the seeds' style: PSD level in dB, linear 0-5 kHz")
+    n = writer(sub, "panels", "results side by side in the seeds' style: PSD level in dB, linear 0-5 kHz", PICTURES,
+               "output picture: .png, .pdf or .svg")
     n.add_argument("--panel", nargs="+", action="append", required=True, metavar="WORD",
                    help="TITLE FILE=LABEL [FILE=LABEL ...]: one panel; the first curve solid black, the others dotted/dashed")
     n.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
-    n.add_argument("--fmax", type=float, default=5000.0, help="highest frequency drawn (Hz; default 5000)")
-    n.add_argument("--out", "-o", required=True, help="output picture: .png, .pdf or .svg")
-    r = sub.add_parser("report", help="one self-contained HTML page: key figures, PSD, provenance, study")
+    n.add_argument("--fmax", type=frequency, default=5000.0, help="highest frequency drawn (Hz; default 5000)")
+    r = writer(sub, "report", "one self-contained HTML page: key figures, PSD, provenance, study", None, "output HTML")
     r.add_argument("result", help="rollspec result file (HDF5)")
     r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
     r.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
-    r.add_argument("--fmin", type=float, default=0.0, help="lowest band edge compared (Hz)")
-    r.add_argument("--fmax", type=float, default=float("inf"), help="highest band edge compared (Hz)")
-    r.add_argument("--out", "-o", required=True, help="output HTML")
-    p.add_argument("--fmin", type=float, help="lowest frequency drawn and compared (Hz; default: the study's band range, "
-                   "from 0 on a linear axis)")
-    p.add_argument("--fmax", type=float, help="highest frequency drawn and compared (Hz; default: the study's band range)")
+    r.add_argument("--fmin", type=frequency, default=0.0, help="lowest band edge compared (Hz)")
+    r.add_argument("--fmax", type=upper_frequency, default=math.inf, help="highest band edge compared (Hz)")
+    p.add_argument("--fmin", type=frequency, help="lowest frequency drawn and compared (Hz; default: the study's band "
+                   "range, from 0 on a linear axis)")
+    p.add_argument("--fmax", type=frequency, help="highest frequency drawn and compared (Hz; default: the study's band range)")
     for q in (p, r):
         q.add_argument("--column", help="PSD column of the measurement CSV (default: psd)")
-        q.add_argument("--measured-averages", type=float, metavar="M",
+        q.add_argument("--measured-averages", type=finite, metavar="M",
                        help="independent records averaged into the measurement: judge it by its prediction interval")
     return parser
 
 
-def run(args):
-    out_dir = os.path.dirname(os.path.abspath(args.out))
-    if not os.path.isdir(out_dir):
-        raise PostError(f"{args.out}: cannot create (no directory {out_dir})", EX_CANTCREAT)
+def missing_module(name=None):
+    """One line naming the first module this package needs that the running Python lacks, else None
+    (found, not imported: a refusal must not wait for matplotlib). `name`: one known to be missing."""
+    import importlib.util
+    for module, package in REQUIRED:
+        if module == name or (name is None and importlib.util.find_spec(module) is None):
+            return (f"{program_name()}: error: the Python module {module} is missing from {sys.executable}; "
+                    f"install it (Debian: apt-get install {package}) or run with /usr/bin/python3")
+    return None
+
+
+def inputs(args):
+    """(path, what, size limit) of every file the command reads."""
+    files = [(getattr(args, n), "a rollspec HDF5 file", None) for n in ("result", "texture_file", "table")
+             if getattr(args, n, None)]
+    if getattr(args, "csv", None):
+        files.append((args.csv, "a benchmark CSV", MAX_CSV_BYTES))
+    if getattr(args, "measurement", None):
+        files.append((args.measurement, "a measurement CSV", MAX_CSV_BYTES))
+    if args.command == "panels":
+        from .panels_plot import parse_panel
+        args.panels = [parse_panel(words) for words in args.panel]
+        files += [(path, "a rollspec HDF5 file", None) for _, curves in args.panels for path, _ in curves]
+    return files
+
+
+def check_ranges(args):
+    from .result_file import EX_USAGE as usage, PostError
+    fmin, fmax = getattr(args, "fmin", None), getattr(args, "fmax", None)
+    if fmin is not None and fmax is not None and not fmin < fmax:
+        raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: fmin < fmax", usage)
+    if args.command == "panels" and not fmax > 0:
+        raise PostError(f"--fmax {fmax:g}: allowed: a frequency > 0 Hz", usage)
+    m = getattr(args, "measured_averages", None)
+    if m is not None and not m >= 1:
+        raise PostError(f"--measured-averages {m:g}: allowed: a finite count >= 1 of independent records", usage)
+
+
+def render(args, kind):
+    """The bytes of the output file."""
+    buf = io.BytesIO()
     if args.command == "psd":
         from .psd_plot import plot_psd
-        plot_psd(args.result, args.out, args.measurement, args.bands, args.sensor, args.column, args.measured_averages,
-                 args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi)
+        plot_psd(args.result, buf, args.measurement, args.bands, args.sensor, args.column, args.measured_averages,
+                 args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi, kind=kind)
     elif args.command == "texture":
         from .texture_plot import plot_texture
-        plot_texture(args.texture_file, args.out)
+        plot_texture(args.texture_file, buf, kind)
     elif args.command == "stiffness":
         from .stiffness_plot import plot_stiffness
-        plot_stiffness(args.table, args.out)
+        plot_stiffness(args.table, buf, kind)
     elif args.command == "trajectory":
         from .trajectory_plot import plot_trajectory
-        plot_trajectory(args.result, args.out)
+        plot_trajectory(args.result, buf, kind)
     elif args.command == "roughness":
         from .roughness_filter_plot import plot_roughness_filters
-        plot_roughness_filters(args.result, args.out)
+        plot_roughness_filters(args.result, buf, kind=kind)
     elif args.command == "bench":
         from .bench_plot import plot_bench
-        plot_bench(args.csv, args.out)
+        plot_bench(args.csv, buf, kind)
     elif args.command == "panels":
-        from .panels_plot import parse_panel, plot_panels
-        plot_panels([parse_panel(words) for words in args.panel], args.out, args.fmax, args.sensor)
+        from .panels_plot import plot_panels
+        plot_panels(args.panels, buf, args.fmax, args.sensor, kind=kind)
     elif args.command == "report":
-        from .report_page import build_report
-        build_report(args.result, args.out, args.measurement, args.sensor, args.fmin, args.fmax, args.column,
-                     args.measured_averages)
+        from .report_page import report_html
+        return report_html(args.result, args.measurement, args.sensor, args.fmin, args.fmax, args.column,
+                           args.measured_averages).encode("utf-8")
+    return buf.getvalue()
 
 
-def main(argv=None):
-    args = build_parser().parse_args(argv)
+def run(args):
+    """Checks every input and the output before reading any data, renders, then writes atomically."""
+    from .safe_output import check_input, check_output, picture_kind, refuse_inputs, write_atomic
+    files = inputs(args)
+    check_ranges(args)
+    refuse_inputs(args.out, [path for path, _, _ in files])  # first: the most important answer
+    for path, what, limit in files:
+        check_input(path, what, limit)
+    kind = picture_kind(args.out, args.out_types) if args.out_types else "html"
+    target = check_output(args.out, kind, [path for path, _, _ in files], args.force)
+    data = render(args, kind)
+    write_atomic(target, lambda fh: fh.write(data))
+
+
+def interrupt_on_termination():
+    """SIGTERM and SIGHUP end the run like Ctrl-C: the temporary is removed, the old output stays."""
+    import signal
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        signal.signal(sig, interrupt)
+
+
+def quiet():
+    """Library warnings (numpy's divide by zero, matplotlib's font notes) would add lines to stderr."""
+    import logging
+    import warnings
+    warnings.simplefilter("ignore")
+    logging.getLogger("matplotlib").setLevel(logging.ERROR)
+
+
+def one_line(text):
+    return " ".join(str(text).split())
+
+
+def checked_run(args, prefix):
+    """run() with every failure as one line and an exit code."""
+    from .result_file import PostError
     try:
         run(args)
     except PostError as e:
-        print(f"rollspec_post {args.command}: error: {e}", file=sys.stderr)
+        print(f"{prefix} {one_line(e)}", file=sys.stderr)
         return e.exit_code
-    print(f"wrote {args.out}")
+    except MemoryError:
+        print(f"{prefix} out of memory; {args.out} not written", file=sys.stderr)
+        return EX_SOFTWARE
+    except ImportError:
+        raise
+    except Exception as e:  # last resort: a bug, but still one line and no partial output
+        print(f"{prefix} internal error ({type(e).__name__}: {one_line(e)}); {args.out} not written; "
+              "please report this", file=sys.stderr)
+        return EX_SOFTWARE
+    say(f"wrote {args.out}")
     return 0
+
+
+def say(text):
+    """The success line; a closed pipe (`| head -0`) or an undecodable file name is no failure: the file is written."""
+    if sys.stdout is None:
+        return
+    try:
+        sys.stdout.reconfigure(errors="backslashreplace")
+        print(text, flush=True)
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
+    except (OSError, ValueError, AttributeError):
+        pass
+
+
+def main(argv=None):
+    interrupt_on_termination()
+    try:
+        return main_checked(argv)
+    except KeyboardInterrupt:  # Ctrl-C, SIGTERM, SIGHUP: the temporary is gone, the old output untouched
+        print(f"{program_name().replace('python3 -m ', '')}: error: interrupted; nothing written", file=sys.stderr)
+        sys.stderr.flush()
+        # os._exit: CPython exits by SIGINT (-2) when an interrupt passed through an import, even if caught
+        os._exit(130)
+
+
+def main_checked(argv):
+    args = build_parser().parse_args(argv)
+    prefix = f"{program_name().replace('python3 -m ', '')} {args.command}: error:"
+    missing = missing_module()
+    if missing:
+        print(missing, file=sys.stderr)
+        return EX_UNAVAILABLE
+    quiet()
+    try:
+        return checked_run(args, prefix)
+    except ImportError as e:  # found but broken, or one of their own dependencies
+        print(missing_module((e.name or "").split(".")[0]) or f"{prefix} {one_line(e)}", file=sys.stderr)
+        return EX_UNAVAILABLE
 
 
 if __name__ == "__main__":

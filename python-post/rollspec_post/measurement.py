@@ -4,8 +4,9 @@ the same sensor by default, the same intervals and the same question."""
 import numpy as np
 from scipy import stats
 
-from .result_file import EX_DATAERR, EX_NOINPUT, EX_USAGE, PostError, read, text_attr
+from .result_file import EX_DATAERR, EX_NOINPUT, EX_USAGE, PostError, attr, read, strings, text_attr
 
+MAX_CSV_BYTES = 64 * 2**20  # a measured PSD of a million lines is ~40 MB
 MIN_REALISATIONS = 5  # kernels/spectral kMinRealisationsForInterval
 BANDS = ("nominal_frequency", "lower_frequency", "upper_frequency", "level_db", "ci_lower_db", "ci_upper_db", "std",
          "log_std")
@@ -26,13 +27,21 @@ def _read_table(path):
     """(header, values[row, column], file line of each row) by the rule of rollspec's CSV reader (src/io/csv_table.hpp): the
     delimiter from the header line (tab, else ';', else ','); with ';' a decimal comma, one decimal mark
     per file; blank lines and '#' lines skipped."""
+    from .safe_output import check_input
+    check_input(path, "a measurement CSV", MAX_CSV_BYTES)  # never /dev/zero, a FIFO or a 5 GB file
     try:
         with open(path, encoding="utf-8-sig") as fh:
-            lines = fh.read().split("\n")
+            text = fh.read(MAX_CSV_BYTES + 1)  # a file that grows, or a /proc file that claims 0 bytes
+        if len(text) > MAX_CSV_BYTES:
+            raise PostError(f"{path}: more than {MAX_CSV_BYTES // 2**20} MiB; allowed: a measurement CSV up to that",
+                            EX_DATAERR)
+        lines = text.split("\n")
     except FileNotFoundError:
         raise PostError(f"{path}: no such file", EX_NOINPUT) from None
     except (UnicodeDecodeError, IsADirectoryError) as e:
         raise PostError(f"{path}: not a CSV text file ({e})", EX_DATAERR) from None
+    except OSError as e:
+        raise PostError(f"{path}: cannot be read ({e.strerror})", EX_NOINPUT) from None
     header, delimiter, mark, rows, numbers = None, ",", None, [], []
     for n, line in enumerate(lines, 1):
         s = line.strip(" \r")
@@ -92,6 +101,8 @@ def read_measurement(path, column=None):
 
 def sensor_row(names, sensor=None):
     """The row `rollspec compare` uses: a name or an index; by default sensor_mean if present, else 0."""
+    if not names:
+        raise PostError("the result names no sensors (/psd/sensor is empty); nothing to draw or compare", EX_DATAERR)
     if sensor is None:
         return names.index("sensor_mean") if "sensor_mean" in names else 0
     if str(sensor) in names:
@@ -104,12 +115,25 @@ def sensor_row(names, sensor=None):
 
 def read_bands(f):
     """The /bands datasets `compare_bands` needs, the sensor names and the interval settings."""
-    bands = {n: np.asarray(read(f, "/bands/" + n), float) for n in BANDS}
-    bands["sensor"] = [s.decode() if isinstance(s, bytes) else str(s) for s in read(f, "/bands/sensor")]
-    bands["realisations"] = int(np.reshape(f["/psd"].attrs["realisations"], -1)[0])
-    bands["confidence"] = float(np.reshape(f["/psd"].attrs.get("confidence_level", 0.95), -1)[0])
+    bands = {n: _floats(f, "/bands/" + n) for n in BANDS}
+    bands["sensor"] = strings(f, "/bands/sensor")
+    bands["realisations"] = attr(f, "/psd", "realisations", int)
+    bands["confidence"] = attr(f, "/psd", "confidence_level") if "confidence_level" in f["/psd"].attrs else 0.95
     bands["interval_method"] = str(text_attr(f["/psd"], "interval_method", ""))
+    n, rows = bands["lower_frequency"].shape, (len(bands["sensor"]),) + bands["lower_frequency"].shape
+    wrong = [b for b in BANDS[:3] if bands[b].shape != n or bands[b].ndim != 1] + \
+            [b for b in BANDS[3:] if bands[b].shape != rows]
+    if wrong:
+        raise PostError(f"{f.filename}: /bands/{wrong[0]} has shape {bands[wrong[0]].shape}; expected "
+                        f"{n if wrong[0] in BANDS[:3] else rows} (sensors x bands)", EX_DATAERR)
     return bands
+
+
+def _floats(f, name):
+    try:
+        return np.asarray(read(f, name), float)
+    except (TypeError, ValueError):
+        raise PostError(f"{f.filename}: {name} is not numeric", EX_DATAERR) from None
 
 
 def band_average(f, p, lower, upper):

@@ -7,9 +7,9 @@ import subprocess
 
 import h5py
 
-from .result_file import EX_NOINPUT, EX_USAGE, PostError, open_rollspec
+from .result_file import EX_NOINPUT, EX_USAGE, KNOWN_SCHEMA_MAJOR, PostError, open_rollspec
 
-FILETYPES = ("rollspec-result", "rollspec-texture", "rollspec-stiffness-table", "rollspec-blocked-force")
+FILETYPES = tuple(KNOWN_SCHEMA_MAJOR)  # every file kind the engine writes
 
 
 def open_result(path):
@@ -21,7 +21,8 @@ def open_result(path):
         f.visititems(lambda name, obj: groups.append("/" + name) if isinstance(obj, h5py.Group) else None)
     out = {}
     for g in groups:
-        with xr.open_dataset(path, engine="h5netcdf", group=g) as ds:
+        # phony_dims: tables without dimension scales (the cached tables) open too
+        with xr.open_dataset(path, engine="h5netcdf", group=g, phony_dims="sort") as ds:
             out[g.strip("/") or "/"] = ds.load()
     return out
 

@@ -7,7 +7,8 @@ from matplotlib.figure import Figure
 
 from .measurement import sensor_row
 from .psd_plot import db, output_format
-from .result_file import EX_DATAERR, EX_USAGE, PostError, open_rollspec, text_attr
+from .result_file import EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, strings, text_attr
+from .safe_output import emit_figure
 
 STYLES = ({"color": "black", "ls": "-", "lw": 0.9}, {"color": "C3", "ls": ":", "lw": 1.3},
           {"color": "C0", "ls": "--", "lw": 1.0}, {"color": "C2", "ls": "-.", "lw": 1.0})
@@ -33,19 +34,22 @@ def read_level(path, sensor=None):
     with open_rollspec(path) as f:
         if "/psd/mean" not in f:
             raise PostError(f"{path}: holds no /psd (a time-history result?); panels draws acceleration PSDs", EX_DATAERR)
-        names = [n.decode() if isinstance(n, bytes) else n for n in f["/psd/sensor"][:]]
+        names = strings(f, "/psd/sensor")
         row = sensor_row(names, sensor)
-        return (f["/psd/frequency"][:], db(f["/psd/mean"][row]), text_attr(f["/psd/mean"], "units"),
-                int(f["/psd"].attrs["realisations"]))
+        freq, mean = read_rows(f, "/psd/frequency", 1), read_rows(f, "/psd/mean", 2)
+        if mean.shape != (len(names), freq.size):
+            raise PostError(f"{path}: /psd/mean is {mean.shape}; expected sensors x frequencies = "
+                            f"{len(names)} x {freq.size}", EX_DATAERR)
+        return freq, db(mean[row]), text_attr(f["/psd/mean"], "units"), attr(f, "/psd", "realisations", int)
 
 
-def plot_panels(panels, out, fmax=5000.0, sensor=None, dpi=150):
+def plot_panels(panels, out, fmax=5000.0, sensor=None, dpi=150, kind=None):
     """panels: [(title, [(file, label), ...]), ...]. Returns {title: {label: (frequency, level_db)}} as drawn."""
     if not panels:
         raise PostError("panels: give at least one --panel", EX_USAGE)
-    if not fmax > 0:
-        raise PostError(f"--fmax {fmax}: allowed: a frequency > 0 Hz", EX_USAGE)
-    fmt = output_format(out)
+    if not (fmax > 0 and np.isfinite(fmax)):
+        raise PostError(f"--fmax {fmax}: allowed: a finite frequency > 0 Hz", EX_USAGE)
+    fmt = kind or output_format(out)
     drawn, units = {}, None
     for title, curves in panels:
         drawn[title] = {}
@@ -54,6 +58,10 @@ def plot_panels(panels, out, fmax=5000.0, sensor=None, dpi=150):
             keep = (freq > 0) & (freq <= fmax)
             drawn[title][f"{label} (K = {k})"] = (freq[keep], level[keep])
     finite = np.concatenate([lv[np.isfinite(lv)] for p in drawn.values() for _, lv in p.values()])
+    if not finite.size:  # an all-zero PSD has no level in dB
+        files = ", ".join(path for _, curves in panels for path, _ in curves)
+        raise PostError(f"{files}: no positive PSD value up to {fmax:g} Hz (all zero?); nothing to draw in dB",
+                        EX_DATAERR)
     top = 10 * np.ceil(finite.max() / 10 + 0.05)
     bottom = max(10 * np.floor(np.percentile(finite, 0.5) / 10), top - 100)  # the seeds show ~80-100 dB
     fig = Figure(figsize=(4.2 * len(panels), 3.6), layout="constrained")
@@ -68,5 +76,5 @@ def plot_panels(panels, out, fmax=5000.0, sensor=None, dpi=150):
         ax.grid(True, lw=0.3, alpha=0.5)
         ax.legend(loc="lower right", fontsize=7, frameon=False)
     axes[0].set_ylabel(f"acceleration PSD (dB re 1 {str(units).replace('^2', '²')})")
-    fig.savefig(out, format=fmt, dpi=dpi, metadata=None if fmt == "png" else {"Creator": "rollspec_post"})
+    emit_figure(fig, out, fmt, dpi)
     return drawn

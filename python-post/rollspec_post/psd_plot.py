@@ -9,9 +9,8 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
-from .result_file import EX_USAGE, PostError, open_rollspec, text_attr
-
-FORMATS = {".png": "png", ".pdf": "pdf", ".svg": "svg"}
+from .result_file import EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, strings, text_attr
+from .safe_output import emit_figure, picture_kind
 
 
 def db(x):
@@ -21,12 +20,7 @@ def db(x):
 
 def output_format(out):
     """png, pdf or svg from the file name; PNG for a buffer (the report embeds one)."""
-    if not isinstance(out, (str, os.PathLike)):
-        return "png"
-    ext = os.path.splitext(os.fspath(out))[1].lower()
-    if ext not in FORMATS:
-        raise PostError(f"{out}: unknown picture type {ext or '(none)'!r}; allowed: .png, .pdf, .svg", EX_USAGE)
-    return FORMATS[ext]
+    return picture_kind(out) if isinstance(out, (str, os.PathLike)) else "png"
 
 
 def short(label):
@@ -34,25 +28,38 @@ def short(label):
     return label.split(" (")[0]
 
 
+def read_psd(result):
+    """The /psd rows with their interval, the reference, the bands; checked for shape and for data."""
+    with open_rollspec(result) as f:
+        freq = read_rows(f, "/psd/frequency", 1)
+        mean, lo, hi = (read_rows(f, "/psd/" + n, 2) for n in ("mean", "ci_lower", "ci_upper"))
+        names = strings(f, "/psd/sensor")
+        ref = read_rows(f, "/reference/psd", 2) if "/reference/psd" in f else None
+        ref_label = text_attr(f["/reference/psd"], "label", "reference") if ref is not None else None
+        units = text_attr(f["/psd/mean"], "units")
+        k = attr(f, "/psd", "realisations", int)
+        level = attr(f, "/psd", "confidence_level")
+        band_data = read_bands(f)
+    shape = (len(names), freq.size)
+    if freq.size < 2 or any(v.shape != shape for v in (mean, lo, hi) + ((ref,) if ref is not None else ())):
+        raise PostError(f"{result}: /psd/mean, ci_lower, ci_upper (and /reference/psd) must be sensors x "
+                        f"frequencies = {shape[0]} x {shape[1]}, with at least 2 frequencies", EX_DATAERR)
+    if not np.any(np.isfinite(mean) & (mean > 0)):
+        raise PostError(f"{result}: /psd/mean holds no positive finite value (all zero or NaN); "
+                        "nothing to draw on a dB scale", EX_DATAERR)
+    return freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data
+
+
 def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None,
-             fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150):
+             fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150, kind=None):
     """`sensor` (name or index) picks the row drawn and compared (default: the row `rollspec compare`
     uses, sensor_mean when present). `sensors_all` adds every sensor as a thin grey line. fmin/fmax
     bound the axis and the compared bands (default: the study's band range, from 0 Hz on a linear
     axis). Returns {"legend": labels, "comparison": compare_bands(...) or None}."""
     if xscale not in ("linear", "log"):
         raise PostError(f"--xscale {xscale}: allowed: linear or log", EX_USAGE)
-    fmt = output_format(out)
-    with open_rollspec(result) as f:
-        freq = f["/psd/frequency"][:]
-        mean, lo, hi = f["/psd/mean"][:], f["/psd/ci_lower"][:], f["/psd/ci_upper"][:]
-        names = [n.decode() if isinstance(n, bytes) else n for n in f["/psd/sensor"][:]]
-        ref = f["/reference/psd"][:] if "/reference/psd" in f else None
-        ref_label = text_attr(f["/reference/psd"], "label", "reference") if ref is not None else None
-        units = text_attr(f["/psd/mean"], "units")
-        k = int(f["/psd"].attrs["realisations"])
-        level = float(f["/psd"].attrs["confidence_level"])
-        band_data = read_bands(f)
+    fmt = kind or output_format(out)
+    freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data = read_psd(result)
     row = sensor_row(names, sensor)
     have_bands = band_data["lower_frequency"].size > 0
     if fmin is None:
@@ -123,5 +130,5 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
                       if cmp["count"] else "the measurement covers none of the bands", fontsize=8)
         ax2.set_xlabel("third-octave band (Hz)")
         ax2.grid(True, axis="y", alpha=0.3)
-    fig.savefig(out, format=fmt, dpi=dpi, metadata=None if fmt == "png" else {"Creator": "rollspec_post"})
+    emit_figure(fig, out, fmt, dpi)
     return {"legend": labels, "comparison": cmp}

@@ -11,7 +11,8 @@ import numpy as np
 
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .psd_plot import plot_psd
-from .result_file import EX_DATAERR, PostError, open_rollspec, read, scalar, text_attr
+from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read, scalar, strings, text_attr
+from .safe_output import HTML_MARKER, write_atomic
 from . import __version__
 
 PROVENANCE = ("filetype", "schema_version", "rollspec_version", "git_sha", "seed", "rng", "library_versions", "scene",
@@ -56,23 +57,30 @@ def read_result(path, sensor):
         r = {"provenance": {k: plain(text_attr(f, k, "—")) for k in PROVENANCE},
              "study": plain(text_attr(f, "study", "")),
              "bands": read_bands(f),
-             "sensors": [plain(s) for s in read(f, "/psd/sensor")],
-             "realisations": int(np.reshape(f["/psd"].attrs["realisations"], -1)[0]),
-             "confidence": float(np.reshape(f["/psd"].attrs.get("confidence_level", 0.95), -1)[0]),
+             "sensors": strings(f, "/psd/sensor"),
+             "realisations": attr(f, "/psd", "realisations", int),
              "wall_seconds": scalar(f, "/run/wall_seconds"),
              "threads": plain(f["/run"].attrs.get("threads")) if "/run" in f else None,
              "loss": scalar(f, "/contact/loss_of_contact_share"),
              "loss_std": scalar(f, "/contact/loss_of_contact_share_std")}
+        r["confidence"] = r["bands"]["confidence"]
         r["sensor"] = sensor = sensor_row(r["sensors"], sensor)
         r["sensor_name"] = r["sensors"][sensor]
         if "/reference/psd" in f:
             # share of PSD bins over the band range whose interval holds the reference, named by what it is
             r["reference_label"] = str(text_attr(f["/reference/psd"], "label", "reference"))
             freq = read(f, "/psd/frequency")
-            lo, hi, ref = (read(f, n)[sensor] for n in ("/psd/ci_lower", "/psd/ci_upper", "/reference/psd"))
-            sel = (freq >= r["bands"]["lower_frequency"][0]) & (freq <= r["bands"]["upper_frequency"][-1])
-            r["reference"] = (int(((ref >= lo) & (ref <= hi))[sel].sum()), int(sel.sum()),
-                              freq[sel][0], freq[sel][-1])
+            lo, hi, ref = (read(f, n) for n in ("/psd/ci_lower", "/psd/ci_upper", "/reference/psd"))
+            if not freq.size or any(np.shape(v) != (len(r["sensors"]), freq.size) for v in (lo, hi, ref)):
+                raise PostError(f"{path}: /psd/ci_lower, ci_upper and /reference/psd must be sensors x frequencies",
+                                EX_DATAERR)
+            lo, hi, ref = lo[sensor], hi[sensor], ref[sensor]
+            b = r["bands"]
+            sel = (freq >= b["lower_frequency"][0]) & (freq <= b["upper_frequency"][-1]) if b["lower_frequency"].size \
+                else np.zeros(freq.shape, bool)
+            if sel.any():
+                r["reference"] = (int(((ref >= lo) & (ref <= hi))[sel].sum()), int(sel.sum()),
+                                  freq[sel][0], freq[sel][-1])
     return r
 
 
@@ -134,6 +142,13 @@ def description(study):
 
 
 def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None):
+    page = report_html(result, measurement, sensor, fmin, fmax, column, measured_averages).encode("utf-8")
+    write_atomic(os.path.realpath(out), lambda fh: fh.write(page))  # a failed write leaves the old file
+    return out
+
+
+def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None):
+    """The page as text; `HTML_MARKER` in its head lets a later run replace it without --force."""
     r = read_result(result, sensor)
     sensor = r["sensor"]
     meas = read_measurement(measurement, column) if measurement else None
@@ -160,9 +175,6 @@ def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.i
               + "</table>",
               "<h2>Study (resolved, defaults included)</h2>", f"<pre>{esc(r['study'])}</pre>",
               f"<footer>made by rollspec_post {esc(__version__)} from {esc(os.path.basename(result))}</footer>"]
-    page = (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+    return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">{HTML_MARKER}'
             f"<title>{esc('rollspec report: ' + str(scene))}</title><style>{STYLE}</style></head>\n"
             f"<body><main>\n" + "\n".join(parts) + "\n</main></body></html>\n")
-    with open(out, "w", encoding="utf-8") as fh:
-        fh.write(page)
-    return out

@@ -1,12 +1,14 @@
 """Opening rollspec HDF5 files with the checks every reader makes: the file exists, is HDF5, carries
-the expected filetype and a schema major version this package reads (OpenMC state_point habit)."""
-import os
+the expected filetype and a schema major version this package reads (OpenMC state_point habit).
+h5py is imported on first use, so a Python without it gets one line from __main__, not a traceback."""
+import numpy as np
 
-import h5py
-
-EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_CANTCREAT = 64, 65, 66, 73
+# sysexits.h
+EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_UNAVAILABLE, EX_SOFTWARE, EX_CANTCREAT, EX_IOERR = 64, 65, 66, 69, 70, 73, 74
+# Every filetype the engine writes (grep '"rollspec-' src): the result (io/provenance.hpp), the texture
+# (cli/texture_command.cpp) and the cached tables (stiffness/cached_table.cpp, schema "1.0").
 KNOWN_SCHEMA_MAJOR = {"rollspec-result": 2, "rollspec-texture": 1, "rollspec-stiffness-table": 1,
-                      "rollspec-blocked-force": 1}
+                      "rollspec-blocked-force": 1, "rollspec-path-table": 1, "rollspec-equivalent-roughness": 1}
 
 
 class PostError(Exception):
@@ -29,8 +31,9 @@ def text_attr(obj, name, default=None):
 
 
 def open_rollspec(path, filetypes=("rollspec-result",)):
-    if not os.path.exists(path):
-        raise PostError(f"{path}: no such file", EX_NOINPUT)
+    import h5py
+    from .safe_output import check_input
+    check_input(path, "a rollspec HDF5 file")  # a FIFO or device would block or never end
     try:
         f = h5py.File(path, "r")
     except OSError as e:
@@ -53,11 +56,48 @@ def read(f, name):
     """Dataset `name` as an array; a clear error (not a KeyError) when the file lacks it."""
     if name not in f:
         raise PostError(f"{f.filename}: has no {name}", EX_DATAERR)
-    return f[name][()]
+    try:
+        return f[name][()]
+    except (OSError, KeyError, TypeError, AttributeError) as e:  # a group, or a damaged dataset
+        raise PostError(f"{f.filename}: {name} cannot be read as a dataset ({e})", EX_DATAERR) from None
+
+
+def read_rows(f, name, ndim):
+    """A dataset of `ndim` dimensions as floats (a row per sensor for the PSDs)."""
+    v = read(f, name)
+    try:
+        v = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise PostError(f"{f.filename}: {name} is not numeric", EX_DATAERR) from None
+    if v.ndim != ndim:
+        raise PostError(f"{f.filename}: {name} has shape {v.shape}; expected {ndim} dimension(s)", EX_DATAERR)
+    return v
+
+
+def attr(f, obj, name, kind=float):
+    """Attribute `name` of the group or dataset `obj` as one number; a clear error when it is missing."""
+    if obj not in f:
+        raise PostError(f"{f.filename}: has no {obj} (needed for its attribute {name})", EX_DATAERR)
+    attrs = f[obj].attrs
+    if name not in attrs:
+        raise PostError(f"{f.filename}: {obj} lacks the attribute {name}", EX_DATAERR)
+    try:
+        return kind(np.reshape(attrs[name], -1)[0])
+    except (TypeError, ValueError, IndexError, OSError):
+        raise PostError(f"{f.filename}: attribute {obj}@{name} is not a number", EX_DATAERR) from None
+
+
+def strings(f, name):
+    """A dataset of names (sensors) as str."""
+    return [v.decode(errors="replace") if isinstance(v, bytes) else str(v) for v in np.reshape(read(f, name), -1)]
 
 
 def scalar(f, name, default=None):
     """A one-element dataset as a float, or `default` when absent (optional key figures)."""
     if name not in f:
         return default
-    return float(f[name][()].reshape(-1)[0])
+    v = np.reshape(read(f, name), -1)
+    try:
+        return float(v[0])
+    except (IndexError, TypeError, ValueError):
+        raise PostError(f"{f.filename}: {name} is not one number", EX_DATAERR) from None

@@ -2,10 +2,10 @@
 realisations (and the real contact area when tabled), against the smooth Hertz ball of the same
 radius and modulus."""
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .result_file import EX_DATAERR, PostError, open_rollspec, read
+from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read
+from .safe_output import emit_figure
 
 TABLE_FILETYPE = "rollspec-stiffness-table"
 COLUMNS = ("approach", "force_mean", "force_std", "stiffness_mean", "stiffness_std")
@@ -17,17 +17,24 @@ def hertz(approach, radius, modulus):
     return 4.0 / 3.0 * modulus * np.sqrt(radius) * d ** 1.5, 2.0 * modulus * np.sqrt(radius * d)
 
 
+def floats(f, name):
+    try:
+        return np.asarray(read(f, name), dtype=float)
+    except (TypeError, ValueError):
+        raise PostError(f"{f.filename}: {name} is not numeric", EX_DATAERR) from None
+
+
 def read_table(path):
     with open_rollspec(path, (TABLE_FILETYPE,)) as f:
-        cols = {c: np.asarray(read(f, "/stiffness/" + c), dtype=float) for c in COLUMNS}
-        area = np.asarray(f["/stiffness/contact_area_mean"][()], float) if "/stiffness/contact_area_mean" in f else None
+        cols = {c: floats(f, "/stiffness/" + c) for c in COLUMNS}
+        area = floats(f, "/stiffness/contact_area_mean") if "/stiffness/contact_area_mean" in f else None
         attrs = f["/stiffness"].attrs
         missing = [a for a in ("ball_radius", "effective_modulus") if a not in attrs]
         if missing:
             raise PostError(f"{path}: /stiffness lacks the attribute(s) {', '.join(missing)}", EX_DATAERR)
-        meta = {a: float(np.reshape(attrs[a], -1)[0]) for a in ("ball_radius", "effective_modulus")}
-        meta["hardness"] = float(np.reshape(attrs["hardness"], -1)[0]) if "hardness" in attrs else np.inf
-        meta["realisations"] = int(np.reshape(attrs["realisations"], -1)[0]) if "realisations" in attrs else None
+        meta = {a: attr(f, "/stiffness", a) for a in ("ball_radius", "effective_modulus")}
+        meta["hardness"] = attr(f, "/stiffness", "hardness") if "hardness" in attrs else np.inf
+        meta["realisations"] = attr(f, "/stiffness", "realisations", int) if "realisations" in attrs else None
     if area is not None:
         cols["contact_area_mean"] = area
     n = cols["approach"].size
@@ -38,7 +45,7 @@ def read_table(path):
     return cols, meta
 
 
-def plot_stiffness(path, out):
+def plot_stiffness(path, out, kind=None):
     cols, meta = read_table(path)
     d = cols["approach"]
     p_h, k_h = hertz(d, meta["ball_radius"], meta["effective_modulus"])
@@ -76,5 +83,4 @@ def plot_stiffness(path, out):
     hard = "elastic" if not np.isfinite(meta["hardness"]) else f"H = {meta['hardness'] / 1e9:.3g} GPa"
     fig.suptitle(f"R = {meta['ball_radius'] * 1e3:.4g} mm, E* = {meta['effective_modulus'] / 1e9:.4g} GPa, {hard}",
                  fontsize=10)
-    FigureCanvasAgg(fig).print_png(out)
-    return out
+    return emit_figure(fig, out, kind)

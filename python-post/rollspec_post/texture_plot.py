@@ -1,24 +1,52 @@
 """`texture`: a line texture, a surface image, and the target PSD against the realised one."""
-from matplotlib.backends.backend_agg import FigureCanvasAgg
+import numpy as np
 from matplotlib.figure import Figure
 
-from .result_file import PostError, EX_DATAERR, open_rollspec
+from .result_file import PostError, EX_DATAERR, open_rollspec, read_rows
+from .safe_output import emit_figure
 
 
-def plot_texture(path, out):
+def read_texture(path):
+    """Lines (the first two), x, target and realised PSD, and the first surface, checked for shape."""
     with open_rollspec(path, ("rollspec-texture",)) as f:
         has_lines = "/texture/lines" in f
         has_surface = "/surface/heights" in f
         if not (has_lines or has_surface):
             raise PostError(f"{path}: holds neither /texture/lines nor /surface/heights", EX_DATAERR)
-        lines = f["/texture/lines"][:2] if has_lines else None
-        x = f["/texture/x"][:] if has_lines else None
-        k, target = (f["/texture/psd_wavenumber"][:], f["/texture/psd_target"][:]) if has_lines else (None, None)
-        realised = ((f["/texture/psd_realised_wavenumber"][:], f["/texture/psd_realised"][:])
-                    if "/texture/psd_realised" in f else None)
-        count = f["/texture/lines"].shape[0] if has_lines else 0
-        surface = f["/surface/heights"][0] if has_surface else None
-        sx, sy = (f["/surface/x"][:], f["/surface/y"][:]) if has_surface else (None, None)
+        d = {}
+        if has_lines:
+            all_lines = read_rows(f, "/texture/lines", 2)
+            d.update(lines=all_lines[:2], count=all_lines.shape[0], x=read_rows(f, "/texture/x", 1),
+                     k=read_rows(f, "/texture/psd_wavenumber", 1), target=read_rows(f, "/texture/psd_target", 1))
+            if "/texture/psd_realised" in f:
+                d["realised"] = (read_rows(f, "/texture/psd_realised_wavenumber", 1),
+                                 read_rows(f, "/texture/psd_realised", 1))
+        if has_surface:
+            d.update(surface=read_rows(f, "/surface/heights", 3)[0] if f["/surface/heights"].shape[0] else None,
+                     sx=read_rows(f, "/surface/x", 1), sy=read_rows(f, "/surface/y", 1))
+    check_texture(path, d)
+    return has_lines, has_surface, d
+
+
+def check_texture(path, d):
+    """Shapes that fit together and a target PSD with something to draw on a log axis."""
+    bad = None
+    if "lines" in d and (d["lines"].shape[1:] != d["x"].shape or d["k"].shape != d["target"].shape
+                         or not np.any(d["target"] > 0) or d["x"].size < 2):
+        bad = "/texture/lines, x, psd_wavenumber and psd_target do not fit together (or the target PSD is all zero)"
+    if "realised" in d and d["realised"][0].shape != d["realised"][1].shape:
+        bad = "/texture/psd_realised and psd_realised_wavenumber differ in length"
+    if "sx" in d and (d["surface"] is None or d["surface"].shape != (d["sy"].size, d["sx"].size) or d["sx"].size < 2
+                      or d["sy"].size < 2):
+        bad = "/surface/heights is not realisation x y x x over /surface/y and /surface/x"
+    if bad:
+        raise PostError(f"{path}: {bad}", EX_DATAERR)
+
+
+def plot_texture(path, out, kind=None):
+    has_lines, has_surface, d = read_texture(path)
+    lines, x, k, target, count = (d.get(n) for n in ("lines", "x", "k", "target", "count"))
+    realised, surface, sx, sy = (d.get(n) for n in ("realised", "surface", "sx", "sy"))
     fig = Figure(figsize=(12, 4), constrained_layout=True)
     axes = fig.subplots(1, 3)
     if has_lines:
@@ -47,5 +75,4 @@ def plot_texture(path, out):
         axes[1].set_xlabel("x (µm)")
         axes[1].set_ylabel("y (µm)")
         axes[1].set_title("isotropic surface")
-    FigureCanvasAgg(fig).print_png(out)
-    return out
+    return emit_figure(fig, out, kind)

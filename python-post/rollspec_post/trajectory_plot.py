@@ -1,10 +1,10 @@
 """`trajectory`: node paths of a rolling beam in the plane where they move most, their speeds and
 angular speeds, and the energies over time with the balance error on its own scale."""
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .result_file import EX_DATAERR, PostError, open_rollspec, read
+from .result_file import EX_DATAERR, PostError, open_rollspec, read_rows
+from .safe_output import emit_figure
 
 AXIS_NAMES = "xyz"
 
@@ -19,12 +19,13 @@ def read_history(path):
     with open_rollspec(path) as f:
         if "/time_history/position" not in f:
             raise PostError(f"{path}: has no /time_history/position (not a rolling-beam result)", EX_DATAERR)
-        t = np.asarray(read(f, "/time_history/time"), float)
-        pos = np.asarray(read(f, "/time_history/position"), float)
-        omega = np.asarray(f["/time_history/angular_velocity"][()], float) \
-            if "/time_history/angular_velocity" in f else None
-        energy = {n: np.asarray(d[()], float) for n, d in f["/time_history/energy"].items()} \
-            if "/time_history/energy" in f else {}
+        t = read_rows(f, "/time_history/time", 1)
+        pos = read_rows(f, "/time_history/position", 3)
+        omega = read_rows(f, "/time_history/angular_velocity", 3) if "/time_history/angular_velocity" in f else None
+        group = f["/time_history/energy"] if "/time_history/energy" in f else {}
+        if not hasattr(group, "keys"):
+            raise PostError(f"{path}: /time_history/energy is not a group of energies", EX_DATAERR)
+        energy = {n: read_rows(f, f"/time_history/energy/{n}", 1) for n in group.keys()}
     if pos.ndim != 3 or pos.shape[0] != t.size or pos.shape[2] != 3 or t.size < 2:
         raise PostError(f"{path}: /time_history/position is {pos.shape}, expected time ({t.size}) x node x 3",
                         EX_DATAERR)
@@ -36,7 +37,7 @@ def read_history(path):
     return t, pos, omega, energy
 
 
-def plot_trajectory(path, out):
+def plot_trajectory(path, out, kind=None):
     t, pos, omega, energy = read_history(path)
     balance = energy.pop("balance_error", None)
     a, b = plane_axes(pos)
@@ -90,5 +91,4 @@ def plot_trajectory(path, out):
                     transform=ax_bal.transAxes)
     ax_bal.set_xlabel("time (s)")
     ax_bal.grid(True, alpha=0.3)
-    FigureCanvasAgg(fig).print_png(out)
-    return out
+    return emit_figure(fig, out, kind)
