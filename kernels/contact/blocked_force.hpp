@@ -54,8 +54,8 @@
 // d > d_max(k) is refused with std::invalid_argument naming the position k; the load search keeps
 // d ≤ min_k d_max(k) and is refused, naming the limiting position, if W needs more.
 // A solver grid equal to the strip grid is the special case j_k = 0 (the ball moves in the grid).
-// Cost: the half-space product runs on 2nx_w × 2ny_w; pick nx_w, ny_w without large prime factors
-// (measured: a 101² window costs 6× a 100² one).
+// Cost: the half-space product runs on the smallest 2^a 3^b 5^c 7^d ≥ 2n − 1 points per axis
+// (README Eq. 3; before kernel version 4, 2n: a 101² window cost 6× a 100² one).
 //
 // Warm start. The ball moves by σ_k = m_k − (j_k − j_{k−1}) cells relative to the window; the
 // start of solve k is the previous field shifted with the ball (cells shifted in are 0),
