@@ -315,8 +315,17 @@ bool ContactSolver::apply_on(const double* v, const std::vector<std::uint32_t>& 
     sources_.clear();
     for (std::uint32_t i : cells)
       if (v[i] != 0.0) sources_.push_back(i);
-    if (static_cast<double>(sources_.size()) * static_cast<double>(cells.size()) < op_.fft_cost()) {
+    // Eq. 3c: v is zero off `cells` and u is wanted on `cells` only: the product on the box that
+    // holds them (the whole grid when no smaller box of the ladder does).
+    if (!cell_box_) cell_box_ = std::make_unique<BoxProduct>(op_);
+    cell_box_->set_cells(cells);
+    const bool whole = cell_box_->box_nx() == op_.grid().nx && cell_box_->box_ny() == op_.grid().ny;
+    if (static_cast<double>(sources_.size()) * static_cast<double>(cells.size()) < cell_box_->fft_cost()) {
       op_.apply_direct(v, sources_, cells, out);
+      return false;
+    }
+    if (!whole) {
+      cell_box_->apply(v, out);
       return false;
     }
   }

@@ -135,6 +135,7 @@ class ContactSolver {
   // Load control (solve_at_force): products on the box of the listed cells; the listed cells L; a
   // step's departures from −τ t (clipped, released, rescaled cells) and where they are.
   std::unique_ptr<BoxProduct> box_;
+  std::unique_ptr<BoxProduct> cell_box_;  // displacement control: products on the box of A or E (Eq. 3c)
   std::vector<std::uint32_t> listed_, free_, touched_;
   std::vector<double> delta_;
 };
