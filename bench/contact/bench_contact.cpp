@@ -18,13 +18,14 @@
 //   blocked_force_load   the same path at the approach whose mean force is 2.58 N (BF-3, BF-4');
 //                  ratio = seconds per contact solve
 //
+//   side_iteration  CG iteration at grid sides 510, 511, 512 (padding README Eq. 3); ratio = vs 512
 //   hertz_iterations  cold Hertz solves at 256², 512², 1024²: line-search start vs coarse start
 //                  (README Eq. 16), plain vs preconditioned CG (Eq. 7b), fine and coarse-grid iterations
 //
 // Times: cg_iteration and convolution are thread CPU seconds on one thread (min of 5 interleaved
 // trials for the ratio), *_wall the same on all threads; hertz_*, seed_table are wall seconds on
 // OMP_NUM_THREADS threads.
-// Usage: bench_contact [--quick | --hertz | --path]   (--quick: 256² and 512² only, 3 realisations;
+// Usage: bench_contact [--quick | --hertz | --path | --sides]   (--quick: 256² and 512² only, 3 realisations;
 //                                             --hertz: hertz_solve and hertz_stiffness only;
 //                                             --path: path_table_build (wall on all threads) and
 //                                             path_table_interpolation (vs direct solves) only)
@@ -37,6 +38,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -138,7 +140,7 @@ void bench_iteration(std::size_t n) {
     r = solver.solve(gap, w, pc, opt);
     t_iter = std::min(t_iter, (thread_cpu_seconds() - t0) / r.iterations);
   }
-  std::printf("convolution,%zu,%.6e,,,padded %zux%zu r2c/c2r\n", n, t_conv, 2 * n, 2 * n);
+  std::printf("convolution,%zu,%.6e,,,padded %zux%zu r2c/c2r\n", n, t_conv, op.fft_nx(), op.fft_ny());
   std::printf("cg_iteration,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions) on 1 thread\n", n, t_iter, t_iter / (2 * t_conv),
               r.iterations);
   // The same on all threads, wall time.
@@ -156,6 +158,44 @@ void bench_iteration(std::size_t n) {
   std::printf("convolution_wall,%zu,%.6e,%.3f,,wall seconds on %d threads (ratio = vs 1 thread CPU)\n", n, w_conv, w_conv / t_conv, threads);
   std::printf("cg_iteration_wall,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions), wall on %d threads\n", n, w_iter,
               w_iter / (2 * w_conv), r.iterations, threads);
+  std::fflush(stdout);
+}
+
+// Per-iteration cost of the grid sides 510, 511, 512 (README Eq. 3: each axis padded to
+// fast_fft_length(2n − 1)): thread CPU seconds per CG iteration on one thread, FFTW_ESTIMATE plans
+// as the tables use them, minimum of 5 interleaved trials; ratio = against side 512.
+void bench_sides() {
+  const double e_star = 115.4e9, radius = 0.02, a = 69e-6;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const std::size_t sides[] = {510, 511, 512};
+  std::vector<std::unique_ptr<ContactSolver>> solvers;
+  std::vector<std::vector<double>> gaps;
+  for (std::size_t n : sides) {
+    const double dx = a / (0.3 * 512.0 / 2);
+    solvers.push_back(std::make_unique<ContactSolver>(Grid{n, n, dx, dx}, e_star));
+    gaps.push_back(ball_gap(Grid{n, n, dx, dx}, radius, {}));
+  }
+  SolverOptions opt;
+  opt.tolerance = 0.0;
+  opt.max_iterations = 30;
+  opt.compute_stiffness = false;
+  opt.coarse_start = false;
+  double best[3] = {1e300, 1e300, 1e300};
+  int iterations[3] = {0, 0, 0};
+  for (int trial = 0; trial < 5; ++trial)
+    for (std::size_t s = 0; s < 3; ++s) {
+      std::vector<double> p;
+      const double t0 = thread_cpu_seconds();
+      const ContactResult r = solvers[s]->solve(gaps[s], a * a / radius, p, opt);
+      best[s] = std::min(best[s], (thread_cpu_seconds() - t0) / r.iterations);
+      iterations[s] = r.iterations;
+    }
+  for (std::size_t s = 0; s < 3; ++s)
+    std::printf("side_iteration,%zu,%.6e,%.3f,%d,padded %zux%zu; ratio = vs side 512 (1 thread CPU per CG iteration)\n",
+                sides[s], best[s], best[s] / best[2], iterations[s], solvers[s]->half_space().fft_nx(),
+                solvers[s]->half_space().fft_ny());
+  omp_set_num_threads(threads);
   std::fflush(stdout);
 }
 
@@ -368,6 +408,10 @@ int main(int argc, char** argv) {
   std::printf("case,n,seconds,ratio,iterations,note\n");
   if (hertz_only) {
     bench_hertz_solve();
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "--sides") == 0) {
+    bench_sides();
     return 0;
   }
   if (argc > 1 && std::strcmp(argv[1], "--path") == 0) {

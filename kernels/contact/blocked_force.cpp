@@ -2,10 +2,14 @@
 
 #include "kernels/contact/path_window.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <exception>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -57,32 +61,70 @@ class PathRunner {
       store->pressure.resize(store_count);
       store->rate.resize(store_count);
     }
-    std::vector<double> p;
+    // Fixed chunks of positions (BF-6c): each chunk starts cold (or from `previous`) and warm-starts
+    // along itself; the chunks run in parallel, one solver per thread. The cut depends on
+    // chunk_positions alone and every position's result on its chunk alone: the same bits for any
+    // thread count. The sums below run in position order after the loop.
+    std::vector<ContactResult> results(count);
+    const auto run_chunk = [&](ContactSolver& s, std::size_t k0, std::size_t k1) {
+      std::vector<double> p;
+      for (std::size_t k = k0; k < k1; ++k) {
+        const std::vector<double> gap = window_.gap(k);
+        if (previous != nullptr && k < previous->pressure.size()) {
+          // BF-6': p_start = p(x_k; d_prev) + (d − d_prev) dp/dd (the solver clips to [0, H]).
+          const std::vector<double>& pk = previous->pressure[k];
+          const std::vector<double>& rk = previous->rate[k];
+          const double dd = d - previous->approach;
+          p = pk;
+          if (rk.size() == n)
+            for (std::size_t i = 0; i < n; ++i) p[i] += dd * rk[i];
+        } else if (k == k0 || popt_.warm_start == PathWarmStart::Cold) {
+          p.assign(n, 0.0);
+        } else {
+          // BF-6: the previous field shifted with the ball (or kept on the strip).
+          window_.shift_field(p, popt_.warm_start == PathWarmStart::Ball ? window_.ball_shift(k) : window_.strip_shift(k));
+        }
+        // Eq. 11a: the frozen-set CG starts from the same position's rate on the previous path.
+        const bool rate_start = previous != nullptr && k < previous->rate.size() && previous->rate[k].size() == n;
+        s.set_rate_start(rate_start ? &previous->rate[k] : nullptr);
+        results[k] = s.solve(gap, d, p, opt);
+        s.set_rate_start(nullptr);
+        if (store != nullptr && k < store_count) {
+          store->pressure[k] = p;
+          if (results[k].converged && opt.compute_stiffness) store->rate[k] = s.pressure_rate();
+          else store->rate[k].clear();
+        }
+      }
+    };
+    const std::size_t chunk = popt_.chunk_positions == 0 ? count : std::min(count, popt_.chunk_positions);
+    const std::size_t chunks = (count + chunk - 1) / chunk;
+    const int threads = chunks > 1 ? std::min<int>(omp_get_max_threads(), static_cast<int>(chunks)) : 1;
+    if (threads <= 1) {
+      for (std::size_t c = 0; c < chunks; ++c) run_chunk(solver_, c * chunk, std::min(count, (c + 1) * chunk));
+    } else {
+      // One solver per thread, made here (FFTW plans outside the parallel region; the planner is
+      // serialised anyway, kernels/spectral/fftw_handles.hpp). A solve depends on its inputs only,
+      // not on what the solver ran before. Exceptions are carried out of the region.
+      while (static_cast<int>(extra_.size()) < threads - 1)
+        extra_.push_back(std::make_unique<ContactSolver>(solver_.grid(), solver_.half_space().e_star()));
+      std::exception_ptr error;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+      for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t>(chunks); ++c) {
+        try {
+          const int t = omp_get_thread_num();
+          ContactSolver& s = t == 0 ? solver_ : *extra_[static_cast<std::size_t>(t - 1)];
+          const std::size_t k0 = static_cast<std::size_t>(c) * chunk;
+          run_chunk(s, k0, std::min(count, k0 + chunk));
+        } catch (...) {
+#pragma omp critical(blocked_force_error)
+          if (!error) error = std::current_exception();
+        }
+      }
+      if (error) std::rethrow_exception(error);
+    }
     double force_sum = 0.0, stiffness_sum = 0.0, frozen_sum = 0.0;
     for (std::size_t k = 0; k < count; ++k) {
-      const std::vector<double> gap = window_.gap(k);
-      if (previous != nullptr && k < previous->pressure.size()) {
-        // BF-6': p_start = p(x_k; d_prev) + (d − d_prev) dp/dd (the solver clips to [0, H]).
-        const std::vector<double>& pk = previous->pressure[k];
-        const std::vector<double>& rk = previous->rate[k];
-        const double dd = d - previous->approach;
-        p = pk;
-        if (rk.size() == n)
-          for (std::size_t i = 0; i < n; ++i) p[i] += dd * rk[i];
-      } else if (k == 0) {
-        p.assign(n, 0.0);
-      } else if (popt_.warm_start == PathWarmStart::Cold) {
-        p.assign(n, 0.0);
-      } else {
-        // BF-6: the previous field shifted with the ball (or kept on the strip).
-        window_.shift_field(p, popt_.warm_start == PathWarmStart::Ball ? window_.ball_shift(k) : window_.strip_shift(k));
-      }
-      const ContactResult r = solver_.solve(gap, d, p, opt);
-      if (store != nullptr && k < store_count) {
-        store->pressure[k] = p;
-        if (r.converged && opt.compute_stiffness) store->rate[k] = solver_.pressure_rate();
-        else store->rate[k].clear();
-      }
+      const ContactResult& r = results[k];
       ++out.solves;
       out.iterations += r.iterations;
       out.stiffness_iterations += r.stiffness_iterations;
@@ -113,6 +155,7 @@ class PathRunner {
   }
 
   ContactSolver& solver_;
+  std::vector<std::unique_ptr<ContactSolver>> extra_;  // the other threads' solvers (chunks)
   PathWindow window_;
   std::vector<double> positions_;
   BlockedForceOptions popt_;
@@ -143,7 +186,7 @@ namespace {
 // only if |F̄ − W| ≤ tolerance · W.
 BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double load, double tolerance, int max_paths,
                         bool warm, std::size_t store_count, double d_start, double step, BlockedForcePath& total,
-                        const std::function<void(std::size_t, double)>& on_path) {
+                        const std::function<void(const BlockedForcePath&, double)>& on_path) {
   // BF-5 caps the approach: the search stays at or below d_cap.
   std::size_t limiting = 0;
   const double d_cap = runner.max_approach(&limiting);
@@ -157,7 +200,7 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
     std::swap(previous, current);
     accumulate(total, path);
     const bool on_load = std::fabs(path.mean_force - load) <= tolerance * load;
-    if (on_path) on_path(path.position.size(), std::fabs(path.mean_force - load) / load);
+    if (on_path) on_path(path, std::fabs(path.mean_force - load) / load);
     if (path.mean_force < load) lo = d;
     else hi = d;
     const bool exhausted = std::isfinite(lo) && std::isfinite(hi) &&

@@ -54,8 +54,8 @@
 // d > d_max(k) is refused with std::invalid_argument naming the position k; the load search keeps
 // d ≤ min_k d_max(k) and is refused, naming the limiting position, if W needs more.
 // A solver grid equal to the strip grid is the special case j_k = 0 (the ball moves in the grid).
-// Cost: the half-space product runs on 2nx_w × 2ny_w; pick nx_w, ny_w without large prime factors
-// (measured: a 101² window costs 6× a 100² one).
+// Cost: the half-space product runs on the smallest 2^a 3^b 5^c 7^d ≥ 2n − 1 points per axis
+// (README Eq. 3; before kernel version 4, 2n: a 101² window cost 6× a 100² one).
 //
 // Warm start. The ball moves by σ_k = m_k − (j_k − j_{k−1}) cells relative to the window; the
 // start of solve k is the previous field shifted with the ball (cells shifted in are 0),
@@ -77,6 +77,11 @@
 // the shifted start saves little; BF-6' brings the load search to 9.2 per solve, and the
 // frozen-set stiffness (cold-started inside ContactSolver) adds 21.3 per solve.
 //
+// Chunks. With chunk_positions = m > 0 the path is cut into fixed chunks of m positions; each chunk
+// starts cold (or from BF-6') and warm-starts along itself by BF-6, the chunks run in parallel, one
+// solver per thread; the frozen-set CG starts from the previous path's rate (README Eq. 11a). The cut
+// depends on m alone, so the path has the same bits for any thread count.               (BF-6c)
+//
 // Use in the dynamics (D-11): F_c = F0(t) + k0 (w1(ξ) − w2 + d0) + c0 (ẇ1 − ẇ2) with
 // F0(t) = F0(x = v t); the PSD of F0 along the path in cycles/m (sample rate 1/Δx) is mapped to
 // time by D-2.                                                                              (BF-7)
@@ -95,20 +100,28 @@ enum class PathWarmStart {
   Cold,   // every position from a cold start (reference)
 };
 
+struct BlockedForcePath;
+
 struct BlockedForceOptions {
   double centre_y = 0.0;  // lateral coordinate y_c of the path in the strip grid (m)
   PathWarmStart warm_start = PathWarmStart::Ball;
   double load_tolerance = 1e-10;  // blocked_force_at_load: stop when |F̄ − W| ≤ load_tolerance · W
   int max_paths = 60;             // blocked_force_at_load: path evaluations allowed (BF-3), per search
   std::size_t presearch_positions = 32;  // BF-4': M positions of the pre-search (0: none)
+  // BF-6c: fixed chunks of this many positions (0: one chunk, the whole path in order). Each chunk
+  // starts cold (or from the previous path's fields, BF-6') and warm-starts along itself (BF-6);
+  // the chunks run in parallel (OpenMP, one solver per thread). The cut depends on this number
+  // alone: the same bits for any thread count.
+  std::size_t chunk_positions = 0;
   // blocked_force_at_load keeps each position's field and rate dp/dd (16 bytes per window cell and
   // position) to start the next path from (BF-6') while they fit in this many bytes;
   // beyond it only the first position's.
   std::size_t max_stored_bytes = std::size_t{256} << 20;
   // blocked_force_at_load calls this after every path it evaluates (pre-search paths on the subset
-  // too), with the positions of that path and its relative load error |F̄ − W| / W: a search can
-  // take many seconds, and its caller shows progress. No effect on the result.
-  std::function<void(std::size_t positions, double load_error)> on_path;
+  // too), with that path (positions, its solves' CG and stiffness iterations) and its relative load
+  // error |F̄ − W| / W: a search can take many seconds, and its caller shows progress. No effect
+  // on the result.
+  std::function<void(const BlockedForcePath& path, double load_error)> on_path;
 };
 
 struct BlockedForcePath {

@@ -315,8 +315,17 @@ bool ContactSolver::apply_on(const double* v, const std::vector<std::uint32_t>& 
     sources_.clear();
     for (std::uint32_t i : cells)
       if (v[i] != 0.0) sources_.push_back(i);
-    if (static_cast<double>(sources_.size()) * static_cast<double>(cells.size()) < op_.fft_cost()) {
+    // Eq. 3c: v is zero off `cells` and u is wanted on `cells` only: the product on the box that
+    // holds them (the whole grid when no smaller box of the ladder does).
+    if (!cell_box_) cell_box_ = std::make_unique<BoxProduct>(op_);
+    cell_box_->set_cells(cells);
+    const bool whole = cell_box_->box_nx() == op_.grid().nx && cell_box_->box_ny() == op_.grid().ny;
+    if (static_cast<double>(sources_.size()) * static_cast<double>(cells.size()) < cell_box_->fft_cost()) {
       op_.apply_direct(v, sources_, cells, out);
+      return false;
+    }
+    if (!whole) {
+      cell_box_->apply(v, out);
       return false;
     }
   }
@@ -378,26 +387,31 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
     return;
   }
   gap_ = g_;  // the converged gap (g_ is the CG residual below)
-  // x = Δp, g_ = residual, t_ = direction, r_ = C t.
+  // x = Δp, g_ = residual, t_ = direction, r_ = C t. Start (Eq. 11a): the given rate on E, else 0.
   std::fill(x_.begin(), x_.end(), 0.0);
+  const bool warm = rate_start_ != nullptr && rate_start_->size() == n;
+  if (warm)
+    for (const std::uint32_t i : elastic_) x_[i] = (*rate_start_)[i];
   // Preconditioned CG (README Eq. 7b on E; γ for the disc E itself, i.e. for |A| = 2|E|) with the
   // plain residual's stopping rule. g_ = residual, u_ = preconditioned residual, t_ = direction.
   const bool precondition = opt.precondition;
   const double gamma = precondition_gamma(2 * m);
   const std::size_t nx = op_.grid().nx;
   double rr = 0.0;
+  if (warm) apply_on(x_.data(), elastic_, r_.data());  // C_EE x: only E is read
   for (std::size_t i = 0; i < n; ++i) {
-    g_[i] = set_[i] == kFree ? 1.0 : 0.0;
-    rr += g_[i];
+    g_[i] = set_[i] == kFree ? 1.0 - (warm ? r_[i] : 0.0) : 0.0;
+    rr += g_[i] * g_[i];
   }
   double rz = rr;
+  const double rr0 = static_cast<double>(m);  // ‖1‖² on E: the stopping rule's reference
   if (precondition) {
     std::fill(u_.begin(), u_.end(), 0.0);
     rz = apply_preconditioner(elastic_, set_, g_, u_, gamma, nx, part_);
   }
   const std::vector<double>& z = precondition ? u_ : g_;
   t_ = z;
-  const double stop = opt.stiffness_tolerance * opt.stiffness_tolerance * static_cast<double>(m);
+  const double stop = opt.stiffness_tolerance * opt.stiffness_tolerance * rr0;
   int it = 0;
   bool ok = rr <= stop;
   while (!ok && it < opt.stiffness_max_iterations) {

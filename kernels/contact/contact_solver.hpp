@@ -106,6 +106,10 @@ class ContactSolver {
   // dp/dw on the frozen contact set from the last solve with stiffness (empty if none): the sweep
   // uses it to extrapolate the warm start to the next approach.
   const std::vector<double>& pressure_rate() const { return dp_; }
+  // Start of the next frozen-set stiffness CG (README Eq. 11a): an estimate of dp/dw (e.g. the same
+  // position's rate at a nearby approach, blocked_force BF-6'), used on the elastic set of that
+  // solve only; null or a wrong size: the cold start Δp = 0. Kept by pointer until changed.
+  void set_rate_start(const std::vector<double>* rate) { rate_start_ = rate; }
 
   HalfSpaceOperator& half_space() { return op_; }
   const Grid& grid() const { return op_.grid(); }
@@ -119,6 +123,7 @@ class ContactSolver {
   std::vector<double> u_, g_, t_, r_, x_, gap_;  // work arrays, one set per solver (thread-private use)
   std::vector<unsigned char> set_;
   std::vector<double> dp_;
+  const std::vector<double>* rate_start_ = nullptr;
   std::vector<double> part_;  // per-block partial sums of the cell loops
   bool apply_on(const double* v, const std::vector<std::uint32_t>& cells, double* out);
   std::vector<std::uint32_t> active_, elastic_, sources_, all_;  // A (Eq. 6a), E, v ≠ 0, every cell
@@ -130,6 +135,7 @@ class ContactSolver {
   // Load control (solve_at_force): products on the box of the listed cells; the listed cells L; a
   // step's departures from −τ t (clipped, released, rescaled cells) and where they are.
   std::unique_ptr<BoxProduct> box_;
+  std::unique_ptr<BoxProduct> cell_box_;  // displacement control: products on the box of A or E (Eq. 3c)
   std::vector<std::uint32_t> listed_, free_, touched_;
   std::vector<double> delta_;
 };

@@ -22,13 +22,25 @@ std::size_t round_up(std::size_t n, std::size_t m) { return (n + m - 1) / m * m;
 std::size_t blocks(std::size_t count, std::size_t rest) { return count + (rest > 0 ? 1 : 0); }
 }  // namespace
 
+std::size_t fast_fft_length(std::size_t n) {
+  if (n <= 1) return 1;
+  for (std::size_t m = n;; ++m) {  // README Eq. 3: the smallest 2^a 3^b 5^c 7^d >= n
+    std::size_t r = m;
+    for (std::size_t f : {std::size_t(2), std::size_t(3), std::size_t(5), std::size_t(7)})
+      while (r % f == 0) r /= f;
+    if (r == 1) return m;
+  }
+}
+
 HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary boundary, PlannerEffort effort)
     : grid_(grid), e_star_(e_star), boundary_(boundary) {
   check_grid(grid);
   if (!(e_star > 0.0) || !std::isfinite(e_star)) throw std::invalid_argument("HalfSpaceOperator: E* must be > 0");
   const bool open = boundary == Boundary::Open;
-  fnx_ = open ? 2 * grid.nx : grid.nx;
-  fny_ = open ? 2 * grid.ny : grid.ny;
+  // README Eq. 3: the cyclic convolution on L ≥ 2n − 1 points is the aperiodic one exactly; L is
+  // the smallest FFT-friendly length (2n itself may hold a large prime: 2·511 = 2·7·73).
+  fnx_ = open ? fast_fft_length(2 * grid.nx - 1) : grid.nx;
+  fny_ = open ? fast_fft_length(2 * grid.ny - 1) : grid.ny;
   ncx_ = fnx_ / 2 + 1;
   real_stride_ = round_up(fnx_, 8);
   cplx_stride_ = round_up(ncx_, 4);
@@ -76,14 +88,15 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary b
 
   const double scale = 1.0 / static_cast<double>(fnx_ * fny_);  // FFTW transforms are unnormalised
   if (open) {
-    // Wrap-around coefficients (README Eq. 3): offsets 0..n−1 then −(n−1)..−1; the middle
-    // row/column (offset ±n) never multiplies a real cell and is set to zero.
+    // Wrap-around coefficients (README Eq. 3): offsets 0..n−1 at the start, −(n−1)..−1 at the end of
+    // each padded axis; the points between (offsets ±n … , never met by a pair of real cells) are zero.
     const long nx = static_cast<long>(grid.nx), nyl = static_cast<long>(ny);
-    for (long r = 0; r < 2 * nyl; ++r) {
-      const long oy = r < nyl ? r : r - 2 * nyl;
-      for (long c = 0; c < 2 * nx; ++c) {
-        const long ox = c < nx ? c : c - 2 * nx;
-        const bool middle = (c == nx) || (r == nyl);
+    const long fnx = static_cast<long>(fnx_), fny = static_cast<long>(fny_);
+    for (long r = 0; r < fny; ++r) {
+      const long oy = r < nyl ? r : r - fny;
+      for (long c = 0; c < fnx; ++c) {
+        const long ox = c < nx ? c : c - fnx;
+        const bool middle = (c >= nx && c <= fnx - nx) || (r >= nyl && r <= fny - nyl);
         in_[static_cast<std::size_t>(r) * real_stride_ + static_cast<std::size_t>(c)] =
             middle ? 0.0 : love_coefficient(ox, oy, grid.dx, grid.dy, e_star);
       }
@@ -119,16 +132,23 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary b
 }
 
 // Forward transform of all fny rows of in_ (the coefficients), rows then columns, into spectrum_.
+// The row plans cover ny rows; the fny rows are run as whole blocks of kRowBlock rows, the last block
+// overlapping the one before it if fny is not a multiple (out of place: re-transforming a row is harmless).
 void HalfSpaceOperator::transform_kernel() {
-  const std::size_t ny = grid_.ny;
-  for (std::size_t half = 0; half < fny_ / ny; ++half) {
-    // The row plans cover ny rows: run them on each half of the fny = 2ny rows in turn.
-    double* rin = in_.data() + half * ny * real_stride_;
-    fftw_complex* rout = spectrum_.data() + half * ny * cplx_stride_;
-    for (std::size_t k = 0; k < blocks(row_r2c_.count, row_r2c_.rest); ++k) {
-      const std::size_t r0 = k * kRowBlock;
-      fftw_execute_dft_r2c(k < row_r2c_.count ? row_r2c_.full.get() : row_r2c_.tail.get(), rin + r0 * real_stride_,
-                           rout + r0 * cplx_stride_);
+  if (row_r2c_.count == 0) {  // fewer than kRowBlock rows: one plan for all fny rows, made here once
+    const int n_row = static_cast<int>(fnx_);
+    spectral::FftwPlan all(
+        [&] {
+          return fftw_plan_many_dft_r2c(1, &n_row, static_cast<int>(fny_), in_.data(), nullptr, 1,
+                                        static_cast<int>(real_stride_), spectrum_.data(), nullptr, 1,
+                                        static_cast<int>(cplx_stride_), FFTW_ESTIMATE);
+        },
+        "HalfSpaceOperator kernel rows");
+    fftw_execute_dft_r2c(all.get(), in_.data(), spectrum_.data());
+  } else {
+    for (std::size_t r = 0; r < fny_; r += kRowBlock) {
+      const std::size_t r0 = std::min(r, fny_ - kRowBlock);
+      fftw_execute_dft_r2c(row_r2c_.full.get(), in_.data() + r0 * real_stride_, spectrum_.data() + r0 * cplx_stride_);
     }
   }
   for (std::size_t k = 0; k < blocks(col_forward_.count, col_forward_.rest); ++k) {
@@ -140,9 +160,13 @@ void HalfSpaceOperator::transform_kernel() {
 void HalfSpaceOperator::forward_rows(std::size_t r0, std::size_t lines) {
   fftw_execute_dft_r2c(lines == kRowBlock ? row_r2c_.full.get() : row_r2c_.tail.get(), in_.data() + r0 * real_stride_,
                        spectrum_.data() + r0 * cplx_stride_);
-  if (fny_ > grid_.ny)  // rows of the zero padding: their transform is zero (the column pass reads them)
-    std::memset(static_cast<void*>(spectrum_.data() + (grid_.ny + r0) * cplx_stride_), 0,
-                sizeof(spectral::FftwComplex) * lines * cplx_stride_);
+  // Rows of the zero padding: their transform is zero (the column pass reads and overwrites them).
+  // Block [r0, r0 + lines) of the ny rows clears its share of the fny − ny padding rows.
+  const std::size_t ny = grid_.ny, pad = fny_ - ny;
+  const std::size_t p0 = ny + r0 * pad / ny, p1 = ny + (r0 + lines) * pad / ny;
+  if (p1 > p0)
+    std::memset(static_cast<void*>(spectrum_.data() + p0 * cplx_stride_), 0,
+                sizeof(spectral::FftwComplex) * (p1 - p0) * cplx_stride_);
 }
 
 void HalfSpaceOperator::columns(std::size_t c0, std::size_t lines, bool multiply) {

@@ -10,8 +10,8 @@
 namespace rollspec::contact {
 
 enum class Boundary {
-  // Isolated patch on an infinite half-space: Love coefficients, DC-FFT on a 2nx × 2ny
-  // wrap-around grid with zero-padded pressure (Liu, Wang & Liu 2000), README Eq. (3).
+  // Isolated patch on an infinite half-space: Love coefficients, DC-FFT on a wrap-around grid of
+  // at least (2nx − 1) × (2ny − 1) points with zero-padded pressure (Liu, Wang & Liu 2000), README Eq. (3).
   Open,
   // Periodic nx × ny cell (Stanley & Kato 1997): symbol û(q) = 2 p̂(q)/(E*|q|), û(0) = 0,
   // README Eq. (4). The mean displacement of a periodic half-space is undefined, so periodic
@@ -20,6 +20,10 @@ enum class Boundary {
 };
 
 enum class PlannerEffort { Estimate, Measure };
+
+// The smallest 2^a 3^b 5^c 7^d ≥ n (n ≥ 1): the padded length of an open-boundary axis is
+// fast_fft_length(2n − 1) (README Eq. 3).
+std::size_t fast_fft_length(std::size_t n);
 
 // Owns its FFTW plans and aligned buffers: plans are made once (under the one planner lock of
 // kernels/spectral/fftw_handles.hpp) and re-executed with the new-array interface on the object's
@@ -56,7 +60,7 @@ class HalfSpaceOperator {
   Boundary boundary() const { return boundary_; }
   // Diagonal C_ii (displacement of a cell under its own unit pressure).
   double self_coefficient() const { return self_; }
-  // Size of the FFT grid (2nx × 2ny for Open, nx × ny for Periodic).
+  // Size of the FFT grid (Open: fast_fft_length(2nx − 1) × fast_fft_length(2ny − 1); Periodic: nx × ny).
   std::size_t fft_nx() const { return fnx_; }
   std::size_t fft_ny() const { return fny_; }
 

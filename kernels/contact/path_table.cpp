@@ -90,6 +90,10 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
       try {
         ContactSolver solver(window, e_star);
         rows[u] = blocked_force_path(solver, strip, heights, radius, shape, positions, d[u], opt, bo);
+        if (path_options.on_row) {
+#pragma omp critical(path_table_progress)
+          path_options.on_row(d[u], rows[u].solves, rows[u].iterations);
+        }
       } catch (const std::invalid_argument&) {
         if (strict) {
 #pragma omp critical(path_table_error)

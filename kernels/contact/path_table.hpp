@@ -7,6 +7,7 @@
 // one per OpenMP thread, each on its own solver, so the table has the same bits for any thread count.
 // The interpolation (B44–B45) lives in kernels/beam/path_contact_table.hpp.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"
@@ -24,6 +25,10 @@ struct PathTableOptions {
   // solver window cannot hold (BF-5) ends the extension.
   double top_force = 5.0;
   std::size_t max_approaches = 24;
+  // Called after each row (one approach over every position) is done, from the thread that ran it,
+  // one call at a time: the approach, that row's solves and CG iterations. Progress only: no effect
+  // on the table.
+  std::function<void(double approach, int solves, int iterations)> on_row;
 };
 
 struct PathTable {

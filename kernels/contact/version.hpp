@@ -6,7 +6,9 @@ namespace rollspec::contact {
 
 // 2: sub-cell contact edge in the stiffness (README Eq. 13–15). 3: blocked half-space product and
 // cell sums, carried displacement, coarse start (README Eq. 3a, 7a, 16): the same solutions to the
-// stopping rule, other last bits.
-inline constexpr int kernel_version = 3;
+// stopping rule, other last bits. 4: open padding to the smallest 2^a 3^b 5^c 7^d >= 2n - 1 (README
+// Eq. 3) instead of 2n: the same sums, other last bits. 5: displacement control's products on A and
+// E on the box that holds them (Eq. 3c), the frozen-set CG from a given rate (Eq. 11a), chunked paths.
+inline constexpr int kernel_version = 5;
 
 }  // namespace rollspec::contact

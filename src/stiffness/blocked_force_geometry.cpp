@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include <omp.h>
+
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/psd.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -102,27 +104,32 @@ BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius
     s.refuse("blocked_force.strip_length", "leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
-  // Cost: about 3 paths of the load search over every position plus a pre-search on 32 of them,
-  // each solve ~30 CG iterations of a (2 window)^2 FFT product; 21 ms per solve measured at 128.
+  // Cost (CPU seconds), measured on studies/seed002-rig-1ms.ini (window 128, 1024 positions, kernel
+  // version 5): the load search's first full path 19 ms per position (31 CG + 24.5 stiffness
+  // iterations, products on the box of the contact cells, contact README Eq. 3c), the second 9 ms,
+  // the last two 3 ms each (started from the previous path's fields and rates, BF-6', Eq. 11a), the
+  // pre-search 1.4 s: 36 s in all, i.e. about 1.6 first-path positions plus 70, at 21 ms each
+  // (scaled with the window's (2 window)^2 product). The chunks of 64 positions (BF-6c) share the threads.
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
   const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
-  const double solves = g.positions >= 128 ? 3.0 * static_cast<double>(g.positions) + 200.0
-                                           : 6.0 * static_cast<double>(g.positions);
-  g.estimated_seconds = solves * per_solve;
+  g.estimated_seconds = per_solve * (1.6 * static_cast<double>(g.positions) + 70.0);
+  g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
 }
 
 std::string BlockedForceGeometry::describe() const {
-  char buf[512];
+  char buf[768];
   const double dx = cell;
   std::snprintf(buf, sizeof buf,
                 "cell %s (a/%.3g)%s, window %zu cells (%s), strip %zu x %zu cells (%s wide, %s long), step %zu cells "
-                "(%s), %zu positions, Welch segment %zu; contact radius a = %s, texture rms %s; build about %.2g s",
+                "(%s), %zu positions, Welch segment %zu; contact radius a = %s, texture rms %s; build about %.2g s CPU, "
+                "%.2g s wall on %d thread%s",
                 um(dx).c_str(), contact_radius / dx,
                 truncated_wavelength > 0.0 ? (", texture below " + um(truncated_wavelength) + " dropped").c_str() : "",
                 window, um(static_cast<double>(window) * dx).c_str(), ny, nx, um(static_cast<double>(ny) * dx).c_str(),
                 um(static_cast<double>(nx) * dx).c_str(), step, um(static_cast<double>(step) * dx).c_str(), positions,
-                segment, um(contact_radius).c_str(), um(rms).c_str(), estimated_seconds);
+                segment, um(contact_radius).c_str(), um(rms).c_str(), estimated_seconds, estimated_seconds / threads,
+                threads, threads == 1 ? "" : "s");
   return buf;
 }
 

@@ -38,7 +38,8 @@ struct BlockedForceGeometry {
   std::size_t positions = 0;    // ball positions along the path
   bool derived_cell = false;    // [surface] spacing not set: roughness beyond the grid may be truncated
   double truncated_wavelength = 0.0;  // > 0: texture wavelengths below it are dropped (m)
-  double estimated_seconds = 0.0;     // one core, this engine's solver speed (rough)
+  double estimated_seconds = 0.0;     // CPU seconds of the table build, this engine's solver speed (rough)
+  int threads = 1;                    // threads the build uses (OMP_NUM_THREADS, at most one per chunk)
 
   // "cell 4.6 um (a/15), window 128 cells (589 um), ..." for the plan and the run's log.
   std::string describe() const;

@@ -1,8 +1,10 @@
 #include "src/stiffness/blocked_force_table.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -29,6 +31,10 @@ namespace rollspec::stiffness {
 using namespace study;
 
 namespace {
+// Positions per chunk of a path (contact BF-6c): fixed, so the table has the same bits for any
+// thread count; 1024 positions make 16 chunks, each starting cold.
+constexpr std::size_t kChunkPositions = 64;
+
 const char* kColumns[] = {"position", "force", "stiffness", "psd_wavenumber", "psd"};
 
 std::vector<const std::vector<double>*> columns(const BlockedForceTable& t) {
@@ -72,7 +78,7 @@ namespace {
 std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
-     << "\nsegment = " << g.segment << "\n";
+     << "\nsegment = " << g.segment << "\nchunk_positions = " << kChunkPositions << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -107,14 +113,36 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
     // The search evaluates whole paths until the mean force meets the load: one line per path
     // (each a solve at every position, seconds on a large strip) says it is alive and converging.
     contact::BlockedForceOptions path_opts;
+    path_opts.chunk_positions = kChunkPositions;
     int evaluated = 0;
+    auto last = std::chrono::steady_clock::now();
+    const auto start = last;
+    std::clock_t last_cpu = std::clock();
+    const std::clock_t start_cpu = last_cpu;
     if (!quiet)
-      path_opts.on_path = [&](std::size_t count, double error) {
-        std::fprintf(stderr, "%sblocked force: path %d on %zu positions, mean force off the load by %.2e\n",
-                     ensemble::rank_prefix().c_str(), ++evaluated, count, error);
+      path_opts.on_path = [&](const contact::BlockedForcePath& p, double error) {
+        const auto now = std::chrono::steady_clock::now();
+        const double per = 1.0 / static_cast<double>(std::max(1, p.solves));
+        std::fprintf(stderr,
+                     "%sblocked force: path %d on %zu positions (%.1f + %.1f CG + stiffness iterations per position, "
+                     "%.3g s wall, %.3g s CPU), mean force off the load by %.2e\n",
+                     ensemble::rank_prefix().c_str(), ++evaluated, p.position.size(), p.iterations * per,
+                     p.stiffness_iterations * per, std::chrono::duration<double>(now - last).count(),
+                     static_cast<double>(std::clock() - last_cpu) / CLOCKS_PER_SEC, error);
+        last = now;
+        last_cpu = std::clock();
       };
     path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts,
                                           path_opts);
+    if (!quiet)
+      std::fprintf(stderr,
+                   "%sblocked force: %d paths (%d on the pre-search subset), %d solves, %.1f + %.1f CG + stiffness "
+                   "iterations per solve, %.3g s wall, %.3g s CPU\n",
+                   ensemble::rank_prefix().c_str(), path.paths + path.presearch_paths, path.presearch_paths, path.solves,
+                   static_cast<double>(path.iterations) / std::max(1, path.solves),
+                   static_cast<double>(path.stiffness_iterations) / std::max(1, path.solves),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                   static_cast<double>(std::clock() - start_cpu) / CLOCKS_PER_SEC);
   } catch (const std::invalid_argument& e) {
     throw config_error(s.where("blocked_force.window") + ": " + e.what() + "; widen the window or the strip ([surface] ny)");
   }

@@ -1,5 +1,7 @@
 #include "src/stiffness/equivalent_roughness_table.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,11 +30,12 @@ namespace {
 // Positions per warm-started chunk: fixed, so the table has the same bits for any thread count
 // (EquivalentRoughnessOptions::chunk_positions).
 constexpr std::size_t kChunkPositions = 64;
-// CPU seconds per position: one load-controlled solve (contact README Eq. 17), measured on the
-// seed-002-like strip (bench_equivalent_roughness seed002, 144^2 window, 2 threads: 27 ms of CPU per
-// position, 33 CG iterations, products on a 128^2 box); scaled to other windows as the padded FFT
-// product, N log2 N with N = 4 window^2.
-constexpr double kSecondsPerPosition144 = 27e-3;
+// CPU seconds per position: one load-controlled solve (contact README Eq. 17), measured on
+// studies/seed002-rig-1ms.ini with contact.filter = solver (bench/contact/bench_tables.py: 2 strips of
+// 1024 positions, 128^2 window, 23.7 CG iterations per position, 24.1 s CPU, i.e. 11.8 ms per
+// position, 15 ms at 144^2); scaled to other windows as the padded FFT product, N log2 N with
+// N = 4 window^2. (Earlier: 27 ms at 144^2 from bench_equivalent_roughness seed002, 33 iterations.)
+constexpr double kSecondsPerPosition144 = 15e-3;
 
 std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& t) {
   return {&t.position, &t.height, &t.psd_wavenumber, &t.psd, &t.stiffness};
@@ -100,18 +103,22 @@ double equivalent_roughness_seconds(const Study& s, const BlockedForceGeometry& 
 }
 
 std::string equivalent_roughness_describe(const Study& s, const BlockedForceGeometry& g) {
-  char buf[512];
+  // The chunks of kChunkPositions positions share the threads.
+  const int chunks = static_cast<int>((g.positions + kChunkPositions - 1) / kChunkPositions);
+  const int threads = std::max(1, std::min(omp_get_max_threads(), chunks));
+  char buf[768];
   std::snprintf(buf, sizeof buf,
                 "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
                 "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
-                "a = %s; build about %.2g s on one core",
+                "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
                 static_cast<long long>(s.integer("equivalent_roughness.strips")),
                 static_cast<long long>(s.integer("equivalent_roughness.strips") - 1), g.nx, g.ny,
                 um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),
                 um(g.cell).c_str(), g.contact_radius / g.cell,
                 g.truncated_wavelength > 0.0 ? (", texture below " + um(g.truncated_wavelength) + " dropped").c_str() : "",
                 g.window, g.positions, g.step, um(static_cast<double>(g.step) * g.cell).c_str(), g.segment,
-                um(g.contact_radius).c_str(), equivalent_roughness_seconds(s, g));
+                um(g.contact_radius).c_str(), equivalent_roughness_seconds(s, g),
+                equivalent_roughness_seconds(s, g) / threads, threads, threads == 1 ? "" : "s");
   return buf;
 }
 

@@ -1,5 +1,7 @@
 #include "src/stiffness/path_table.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -76,27 +78,31 @@ PathTableGeometry path_table_geometry(const Study& s, double radius, double e_st
     g.nx = need;
   }
   g.nx += g.nx % 2;
-  // Cost: J paths over every position, ~25 CG iterations of a (2 window)^2 product per solve
-  // (21 ms per solve measured at a 128 window, as blocked_force_geometry), run J paths at a time
-  // over the threads.
+  // Cost (CPU seconds): J paths and the two rows B43a usually adds, over every position, 21 ms per
+  // solve at a 128 window scaled with the (2 window)^2 product (measured, kernel version 5, by
+  // bench/contact/bench_tables.py on studies/seed002-rig-1ms.ini, 20 -> 20.5 mm: window 200, 37
+  // positions x 10 rows, 38.5 CG iterations per solve, products on the box of the contact cells:
+  // 17.4 s CPU, 47 ms per solve; this model 20 s). The rows share the threads.
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
   const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
-  g.estimated_seconds = per_solve * static_cast<double>(g.positions * g.approaches);
+  g.estimated_seconds = per_solve * static_cast<double>(g.positions * (g.approaches + 2));
+  g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>(g.approaches)));
   return g;
 }
 
 std::string PathTableGeometry::describe() const {
-  char buf[512];
+  char buf[1024];
   const double dx = base.cell;
   std::snprintf(buf, sizeof buf,
                 "strip 0 of the surface, cell %s (a/%.3g)%s, strip %zu x %zu cells (%s long, %s wide), window %zu cells, "
                 "%zu approaches (more until P >= 5 W at every position, B43a) x %zu positions (step %zu cells = %s) over the ball's path of %s; contact radius a = %s, "
-                "texture rms %s; build about %.2g s on one core",
+                "texture rms %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
                 um(dx).c_str(), base.contact_radius / dx,
                 base.truncated_wavelength > 0.0 ? (", texture below " + um(base.truncated_wavelength) + " dropped").c_str() : "",
                 nx, ny, um(static_cast<double>(nx) * dx).c_str(), um(static_cast<double>(ny) * dx).c_str(), window,
                 approaches, positions, step, um(static_cast<double>(step) * dx).c_str(), um(path_length).c_str(),
-                um(base.contact_radius).c_str(), um(base.rms).c_str(), estimated_seconds);
+                um(base.contact_radius).c_str(), um(base.rms).c_str(), estimated_seconds, estimated_seconds / threads,
+                threads, threads == 1 ? "" : "s");
   return buf;
 }
 
@@ -159,6 +165,14 @@ PathTableData build_path_table(const Study& s, const PathTableGeometry& g, doubl
   po.reach = kReach;
   if (!quiet) std::fprintf(stderr, "%spath table: %s\n", ensemble::rank_prefix().c_str(), g.describe().c_str());
   const auto start = std::chrono::steady_clock::now();
+  int rows_done = 0;
+  if (!quiet)
+    po.on_row = [&](double approach, int solves, int iterations) {
+      std::fprintf(stderr, "%spath table: row %d of %zu or more (approach %.4g um) done, %.1f CG iterations per position, %.3g s\n",
+                   ensemble::rank_prefix().c_str(), ++rows_done, g.approaches, approach * 1e6,
+                   static_cast<double>(iterations) / std::max(1, solves),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    };
   contact::PathTable t;
   try {
     t = contact::build_path_table(window_grid, e_star, strip_grid, strip.heights, radius, shape, positions, load, opts, po);

@@ -40,7 +40,8 @@ struct PathTableGeometry {
   std::size_t positions = 0;   // path positions
   std::size_t approaches = 0;  // J
   double path_length = 0.0;    // the ball's path in the run (m)
-  double estimated_seconds = 0.0;
+  double estimated_seconds = 0.0;  // CPU seconds of the build (rough)
+  int threads = 1;                 // threads the build uses (rows in parallel)
   std::string describe() const;
 };
 

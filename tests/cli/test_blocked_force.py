@@ -91,3 +91,28 @@ def test_a_key_the_study_sets_is_honoured_over_the_derived_value(tmp_path):
     assert len(hashes) == 3  # the derived grid is part of the table's inputs
     keys = run(["keys", "ball-on-beam"]).stdout
     assert "0: derived" in keys
+
+
+def test_table_has_the_same_bits_on_one_and_two_threads(tmp_path):
+    # Fixed chunks of positions (contact BF-6c), each on its own thread's solver: the thread count
+    # does not enter the table. 12 um cells, a 48-cell window, 3 mm strip: 6 chunks of 64 positions.
+    common = ["surface.spacing=12e-6", "texture.short_wavelength=24e-6", "surface.ny=48", "blocked_force.window=48",
+              "blocked_force.strip_length=5e-3", "blocked_force.step=1", "stiffness.hardness=6e9",
+              "blocked_force.segment=64", "study.realisations=1"]
+    tables = {}
+    for threads in (1, 2):
+        d = tmp_path / f"t{threads}"
+        d.mkdir()
+        study = d / "rig.ini"
+        shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
+        args = [a for kv in ["contact.blocked_force=solver", "ball.end=0.12", *common] for a in ("--set", kv)]
+        r = run(["run", study, "--out", d / "r.h5", *args], env={"OMP_NUM_THREADS": str(threads)})
+        assert r.returncode == 0, r.stderr
+        assert re.search(r"blocked force: path 1 on \d+ positions \([\d.]+ \+ [\d.]+ CG \+ stiffness iterations", r.stderr), r.stderr
+        (path,) = glob.glob(str(d / "tables" / "blocked-force-*.h5"))
+        with h5py.File(path) as t:
+            tables[threads] = {k: t[f"/blocked_force/{k}"][:] for k in ("position", "force", "stiffness", "psd")}
+            tables[threads]["attrs"] = np.array([t["/blocked_force"].attrs[a] for a in ("approach", "k0", "mean_force")])
+    assert len(tables[1]["position"]) > 256  # more than four chunks
+    for k, v in tables[1].items():
+        assert v.tobytes() == tables[2][k].tobytes(), k

@@ -3,9 +3,12 @@
 // warm start vs cold solves vs the whole strip, PSD peak, and the confinement check (BF-5).
 #include <doctest/doctest.h>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -382,4 +385,39 @@ TEST_CASE("confinement (BF-5) and bad input are refused with the position named"
   CHECK(none.converged);
   CHECK(none.mean_force == 0.0);
   CHECK(none.k0 == 0.0);
+}
+
+TEST_CASE("chunked path (BF-6c): the same bits on 1 and 2 threads, equal to the unchunked path") {
+  const Hertz h;
+  const StripCase c = strip_case(h, 12.0, 1.9, 36, 10);
+  const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
+  const auto x = cell_positions(c.strip, -15, 2, 16);
+  SolverOptions opt;
+  opt.hardness = 0.5 * h.p0();
+  BlockedForceOptions whole, chunked;
+  chunked.chunk_positions = 5;  // chunks 5, 5, 5, 1: one shorter than the rest
+  const double load = 1.1 * 3.0;  // N, about the mean force of this path at the Hertz approach
+  const auto at_load = [&](int threads, const BlockedForceOptions& o) {
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    ContactSolver solver(c.window, h.e_star);
+    BlockedForcePath r = blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, load, opt, o);
+    omp_set_num_threads(before);
+    return r;
+  };
+  const BlockedForcePath one = at_load(1, chunked), two = at_load(2, chunked), ref = at_load(2, whole);
+  REQUIRE(one.converged);
+  REQUIRE(two.converged);
+  REQUIRE(ref.converged);
+  CHECK(std::memcmp(one.force.data(), two.force.data(), sizeof(double) * one.force.size()) == 0);
+  CHECK(std::memcmp(one.stiffness.data(), two.stiffness.data(), sizeof(double) * one.stiffness.size()) == 0);
+  CHECK(std::memcmp(&one.approach, &two.approach, sizeof(double)) == 0);
+  CHECK(one.iterations == two.iterations);
+  CHECK(one.paths == two.paths);
+  CHECK(max_relative_difference(one.force, ref.force) < 1e-8);
+  CHECK(max_relative_difference(one.stiffness, ref.stiffness) < 1e-8);
+  CHECK(one.approach == doctest::Approx(ref.approach).epsilon(1e-8));
+  MESSAGE("chunks of 5: CG iterations " << one.iterations << " (unchunked " << ref.iterations << "), max relative "
+                                          "force difference to the unchunked path "
+                                       << max_relative_difference(one.force, ref.force));
 }
