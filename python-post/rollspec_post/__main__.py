@@ -120,14 +120,18 @@ def build_parser():
 
 
 def missing_module(name=None):
-    """One line naming the first module this package needs that the running Python lacks, else None
-    (found, not imported: a refusal must not wait for matplotlib). `name`: one known to be missing."""
+    """One line naming every module this package needs that the running Python lacks and the command
+    that installs them, else None (found, not imported: a refusal must not wait for matplotlib).
+    `name`: one known to be missing (found but failing to import)."""
     import importlib.util
-    for module, package in REQUIRED:
-        if module == name or (name is None and importlib.util.find_spec(module) is None):
-            return (f"{program_name()}: error: the Python module {module} is missing from {sys.executable}; "
-                    f"install it (Debian: apt-get install {package}) or run with /usr/bin/python3")
-    return None
+    missing = [m for m, _ in REQUIRED if m == name or importlib.util.find_spec(m) is None]
+    if not missing:
+        return None
+    needed = ", ".join(m for m, _ in REQUIRED)
+    packages = " ".join(p for m, p in REQUIRED if m in missing)
+    return (f"{program_name().replace('python3 -m rollspec_post', 'rollspec-post')} needs {needed} "
+            f"(missing from {sys.executable}: {', '.join(missing)}): on Debian, apt-get install {packages}, "
+            "or run it with /usr/bin/python3")
 
 
 def inputs(args):
