@@ -47,7 +47,9 @@ def plot_texture(path, out, kind=None):
     has_lines, has_surface, d = read_texture(path)
     lines, x, k, target, count = (d.get(n) for n in ("lines", "x", "k", "target", "count"))
     realised, surface, sx, sy = (d.get(n) for n in ("realised", "surface", "sx", "sy"))
-    fig = Figure(figsize=(12, 4), constrained_layout=True)
+    fig = Figure(figsize=(12, 4), layout="constrained")
+    # room between panels: the colour bar's label sits right beside the next panel's y label otherwise
+    fig.get_layout_engine().set(wspace=0.08)
     axes = fig.subplots(1, 3)
     if has_lines:
         for i, h in enumerate(lines):
