@@ -85,6 +85,12 @@ def build_parser():
     p.add_argument("--sensors", choices=("one", "all"), default="one", help="all: every sensor as thin grey lines too")
     p.add_argument("--xscale", choices=("linear", "log"), default="linear", help="frequency axis (default linear)")
     p.add_argument("--dpi", type=dpi, default=150, help=f"resolution of a PNG (default 150, at most {MAX_DPI})")
+    p.add_argument("--title", help="figure title (default: none)")
+    p.add_argument("--label", help="legend name of the simulated mean (default: SENSOR, mean of K)")
+    p.add_argument("--measurement-label", help="legend name of the measurement (default: measurement)")
+    p.add_argument("--ylim", nargs=2, type=finite, metavar=("LOW", "HIGH"), help="level axis range in dB")
+    p.add_argument("--style", choices=("default", "seed"), default="default",
+                   help="seed: the seeds' figures, computed dotted, measured solid black, both in the legend")
     t = writer(sub, "texture", "line texture, surface image, target vs realised PSD", (".png",), "output PNG")
     t.add_argument("texture_file", help="file written by rollspec texture")
     s = writer(sub, "stiffness", "P(δ) and k(δ) with their spread over realisations, and Hertz", (".png",), "output PNG")
@@ -156,6 +162,9 @@ def check_ranges(args):
         raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: fmin < fmax", usage)
     if args.command == "panels" and not fmax > 0:
         raise PostError(f"--fmax {fmax:g}: allowed: a frequency > 0 Hz", usage)
+    ylim = getattr(args, "ylim", None)
+    if ylim is not None and not ylim[0] < ylim[1]:
+        raise PostError(f"--ylim {ylim[0]:g} {ylim[1]:g}: allowed: LOW < HIGH", usage)
     m = getattr(args, "measured_averages", None)
     if m is not None and not m >= 1:
         raise PostError(f"--measured-averages {m:g}: allowed: a finite count >= 1 of independent records", usage)
@@ -167,7 +176,8 @@ def render(args, kind):
     if args.command == "psd":
         from .psd_plot import plot_psd
         plot_psd(args.result, buf, args.measurement, args.bands, args.sensor, args.column, args.measured_averages,
-                 args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi, kind=kind)
+                 args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi, kind=kind, title=args.title,
+                 label=args.label, ylim=args.ylim, style=args.style, measurement_label=args.measurement_label)
     elif args.command == "texture":
         from .texture_plot import plot_texture
         plot_texture(args.texture_file, buf, kind)
