@@ -106,15 +106,19 @@ def build_parser():
     n = writer(sub, "panels", "results side by side in the seeds' style: PSD level in dB, linear 0-5 kHz", PICTURES,
                "output picture: .png, .pdf or .svg")
     n.add_argument("--panel", nargs="+", action="append", required=True, metavar="WORD",
-                   help="TITLE FILE=LABEL [FILE=LABEL ...]: one panel; the first curve solid black, the others dotted/dashed")
+                   help="TITLE FILE=LABEL [FILE=LABEL ...]: one panel; FILE a result or a measured PSD CSV (rollspec psd's, "
+                        "or frequency and PSD columns); the first curve solid black, the others dotted/dashed")
     n.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
     n.add_argument("--fmax", type=frequency, default=5000.0, help="highest frequency drawn (Hz; default 5000)")
+    n.add_argument("--column", help="PSD column of a measured CSV that has several (default: psd, or its only one)")
     r = writer(sub, "report", "one self-contained HTML page: key figures, PSD, provenance, study", None, "output HTML")
     r.add_argument("result", help="rollspec result file (HDF5)")
     r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
     r.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
     r.add_argument("--fmin", type=frequency, default=0.0, help="lowest band edge compared (Hz)")
     r.add_argument("--fmax", type=upper_frequency, default=math.inf, help="highest band edge compared (Hz)")
+    r.add_argument("--loss-threshold", type=finite, default=0.05, metavar="SHARE",
+                   help="loss-of-contact share (0-1) above which the page opens with a warning (default 0.05)")
     p.add_argument("--fmin", type=frequency, help="lowest frequency drawn and compared (Hz; default: the study's band "
                    "range, from 0 on a linear axis)")
     p.add_argument("--fmax", type=frequency, help="highest frequency drawn and compared (Hz; default: the study's band range)")
@@ -151,7 +155,8 @@ def inputs(args):
     if args.command == "panels":
         from .panels_plot import parse_panel
         args.panels = [parse_panel(words) for words in args.panel]
-        files += [(path, "a rollspec HDF5 file", None) for _, curves in args.panels for path, _ in curves]
+        files += [(path, "a rollspec HDF5 file or a PSD CSV", None) for _, curves in args.panels
+                  for path, _ in curves]
     return files
 
 
@@ -162,6 +167,9 @@ def check_ranges(args):
         raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: fmin < fmax", usage)
     if args.command == "panels" and not fmax > 0:
         raise PostError(f"--fmax {fmax:g}: allowed: a frequency > 0 Hz", usage)
+    share = getattr(args, "loss_threshold", None)
+    if share is not None and not 0 <= share <= 1:
+        raise PostError(f"--loss-threshold {share:g}: allowed: a share from 0 to 1", usage)
     ylim = getattr(args, "ylim", None)
     if ylim is not None and not ylim[0] < ylim[1]:
         raise PostError(f"--ylim {ylim[0]:g} {ylim[1]:g}: allowed: LOW < HIGH", usage)
@@ -195,11 +203,11 @@ def render(args, kind):
         plot_bench(args.csv, buf, kind)
     elif args.command == "panels":
         from .panels_plot import plot_panels
-        plot_panels(args.panels, buf, args.fmax, args.sensor, kind=kind)
+        plot_panels(args.panels, buf, args.fmax, args.sensor, kind=kind, column=args.column)
     elif args.command == "report":
         from .report_page import report_html
         return report_html(args.result, args.measurement, args.sensor, args.fmin, args.fmax, args.column,
-                           args.measured_averages).encode("utf-8")
+                           args.measured_averages, args.loss_threshold).encode("utf-8")
     return buf.getvalue()
 
 

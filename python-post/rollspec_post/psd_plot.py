@@ -166,7 +166,7 @@ def delta_axes(ax2, cmp, band_data, row, meas_label):
     ax2.axhline(0, color="k", lw=0.8)
     ax2.set_ylabel(f"ΔL simulated − {meas_label} (dB)", fontsize=9)
     kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the mean"
-    ax2.set_title(f"rms {cmp['rms_db_error']:.2f} dB; inside the {kind} (grey) in {cmp['inside_count']}/"
+    ax2.set_title(f"mean ΔL {cmp['bias_db']:+.2f} dB, rms about it {cmp['spread_db']:.2f} dB; inside the {kind} (grey) in {cmp['inside_count']}/"
                   f"{cmp['judged']} bands (blue: inside, red: outside)"
                   if cmp["count"] else f"the {meas_label} covers none of the bands", fontsize=8)
     ax2.set_xlabel("third-octave band (Hz)")
