@@ -7,6 +7,7 @@
 #     rollspecFFTW3.cmake: find_package(rollspec) -> rollspec::kernels          here
 #   P/share/man/man1/rollspec.1                     here, help2man on the built binary
 #   P/share/bash-completion/completions/rollspec    here, from the built binary's help texts
+#   P/bin/rollspec-post, P/share/rollspec/python/rollspec_post  here (python-post, see the end)
 # Nothing here needs the tests or the benchmarks.
 include(CMakePackageConfigHelpers)
 
@@ -51,3 +52,19 @@ install(FILES ${ROLLSPEC_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-c
 if(ROLLSPEC_MAN_PAGE_BUILT)
   install(FILES ${ROLLSPEC_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 endif()
+
+# --- python-post: the package and the rollspec-post command ----------------------------------------
+#   P/share/rollspec/python/rollspec_post/*.py   the package (no pip, no venv)
+#   P/bin/rollspec-post                          launcher: ROLLSPEC_POST_PYTHON (Debian's /usr/bin/python3,
+#                                                which has numpy, scipy, h5py, matplotlib) on the package
+# Component python_post: `cmake --install BUILD --component python_post` installs only these.
+set(ROLLSPEC_POST_PYTHON /usr/bin/python3 CACHE FILEPATH "Python that runs the installed rollspec-post")
+set(ROLLSPEC_POST_DIR ${CMAKE_INSTALL_DATADIR}/rollspec/python)
+# Relative, so the launcher finds the package under whatever --prefix the install is given.
+file(RELATIVE_PATH ROLLSPEC_POST_RELATIVE /root/${CMAKE_INSTALL_BINDIR} /root/${ROLLSPEC_POST_DIR})
+configure_file(${CMAKE_SOURCE_DIR}/python-post/launcher/rollspec-post.in ${CMAKE_BINARY_DIR}/python-post/rollspec-post
+  @ONLY)
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/python-post/rollspec_post DESTINATION ${ROLLSPEC_POST_DIR}
+  COMPONENT python_post FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
+install(PROGRAMS ${CMAKE_BINARY_DIR}/python-post/rollspec-post DESTINATION ${CMAKE_INSTALL_BINDIR}
+  COMPONENT python_post)

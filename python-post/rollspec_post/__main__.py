@@ -85,6 +85,12 @@ def build_parser():
     p.add_argument("--sensors", choices=("one", "all"), default="one", help="all: every sensor as thin grey lines too")
     p.add_argument("--xscale", choices=("linear", "log"), default="linear", help="frequency axis (default linear)")
     p.add_argument("--dpi", type=dpi, default=150, help=f"resolution of a PNG (default 150, at most {MAX_DPI})")
+    p.add_argument("--title", help="figure title (default: none)")
+    p.add_argument("--label", help="legend name of the simulated mean (default: SENSOR, mean of K)")
+    p.add_argument("--measurement-label", help="legend name of the measurement (default: measurement)")
+    p.add_argument("--ylim", nargs=2, type=finite, metavar=("LOW", "HIGH"), help="level axis range in dB")
+    p.add_argument("--style", choices=("default", "seed"), default="default",
+                   help="seed: the seeds' figures, computed dotted, measured solid black, both in the legend")
     t = writer(sub, "texture", "line texture, surface image, target vs realised PSD", (".png",), "output PNG")
     t.add_argument("texture_file", help="file written by rollspec texture")
     s = writer(sub, "stiffness", "P(δ) and k(δ) with their spread over realisations, and Hertz", (".png",), "output PNG")
@@ -100,15 +106,19 @@ def build_parser():
     n = writer(sub, "panels", "results side by side in the seeds' style: PSD level in dB, linear 0-5 kHz", PICTURES,
                "output picture: .png, .pdf or .svg")
     n.add_argument("--panel", nargs="+", action="append", required=True, metavar="WORD",
-                   help="TITLE FILE=LABEL [FILE=LABEL ...]: one panel; the first curve solid black, the others dotted/dashed")
+                   help="TITLE FILE=LABEL [FILE=LABEL ...]: one panel; FILE a result or a measured PSD CSV (rollspec psd's, "
+                        "or frequency and PSD columns); the first curve solid black, the others dotted/dashed")
     n.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
     n.add_argument("--fmax", type=frequency, default=5000.0, help="highest frequency drawn (Hz; default 5000)")
+    n.add_argument("--column", help="PSD column of a measured CSV that has several (default: psd, or its only one)")
     r = writer(sub, "report", "one self-contained HTML page: key figures, PSD, provenance, study", None, "output HTML")
     r.add_argument("result", help="rollspec result file (HDF5)")
     r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
     r.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
     r.add_argument("--fmin", type=frequency, default=0.0, help="lowest band edge compared (Hz)")
     r.add_argument("--fmax", type=upper_frequency, default=math.inf, help="highest band edge compared (Hz)")
+    r.add_argument("--loss-threshold", type=finite, default=0.05, metavar="SHARE",
+                   help="loss-of-contact share (0-1) above which the page opens with a warning (default 0.05)")
     p.add_argument("--fmin", type=frequency, help="lowest frequency drawn and compared (Hz; default: the study's band "
                    "range, from 0 on a linear axis)")
     p.add_argument("--fmax", type=frequency, help="highest frequency drawn and compared (Hz; default: the study's band range)")
@@ -120,14 +130,18 @@ def build_parser():
 
 
 def missing_module(name=None):
-    """One line naming the first module this package needs that the running Python lacks, else None
-    (found, not imported: a refusal must not wait for matplotlib). `name`: one known to be missing."""
+    """One line naming every module this package needs that the running Python lacks and the command
+    that installs them, else None (found, not imported: a refusal must not wait for matplotlib).
+    `name`: one known to be missing (found but failing to import)."""
     import importlib.util
-    for module, package in REQUIRED:
-        if module == name or (name is None and importlib.util.find_spec(module) is None):
-            return (f"{program_name()}: error: the Python module {module} is missing from {sys.executable}; "
-                    f"install it (Debian: apt-get install {package}) or run with /usr/bin/python3")
-    return None
+    missing = [m for m, _ in REQUIRED if m == name or importlib.util.find_spec(m) is None]
+    if not missing:
+        return None
+    needed = ", ".join(m for m, _ in REQUIRED)
+    packages = " ".join(p for m, p in REQUIRED if m in missing)
+    return (f"{program_name().replace('python3 -m rollspec_post', 'rollspec-post')} needs {needed} "
+            f"(missing from {sys.executable}: {', '.join(missing)}): on Debian, apt-get install {packages}, "
+            "or run it with /usr/bin/python3")
 
 
 def inputs(args):
@@ -141,7 +155,8 @@ def inputs(args):
     if args.command == "panels":
         from .panels_plot import parse_panel
         args.panels = [parse_panel(words) for words in args.panel]
-        files += [(path, "a rollspec HDF5 file", None) for _, curves in args.panels for path, _ in curves]
+        files += [(path, "a rollspec HDF5 file or a PSD CSV", None) for _, curves in args.panels
+                  for path, _ in curves]
     return files
 
 
@@ -152,6 +167,12 @@ def check_ranges(args):
         raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: fmin < fmax", usage)
     if args.command == "panels" and not fmax > 0:
         raise PostError(f"--fmax {fmax:g}: allowed: a frequency > 0 Hz", usage)
+    share = getattr(args, "loss_threshold", None)
+    if share is not None and not 0 <= share <= 1:
+        raise PostError(f"--loss-threshold {share:g}: allowed: a share from 0 to 1", usage)
+    ylim = getattr(args, "ylim", None)
+    if ylim is not None and not ylim[0] < ylim[1]:
+        raise PostError(f"--ylim {ylim[0]:g} {ylim[1]:g}: allowed: LOW < HIGH", usage)
     m = getattr(args, "measured_averages", None)
     if m is not None and not m >= 1:
         raise PostError(f"--measured-averages {m:g}: allowed: a finite count >= 1 of independent records", usage)
@@ -163,7 +184,8 @@ def render(args, kind):
     if args.command == "psd":
         from .psd_plot import plot_psd
         plot_psd(args.result, buf, args.measurement, args.bands, args.sensor, args.column, args.measured_averages,
-                 args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi, kind=kind)
+                 args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi, kind=kind, title=args.title,
+                 label=args.label, ylim=args.ylim, style=args.style, measurement_label=args.measurement_label)
     elif args.command == "texture":
         from .texture_plot import plot_texture
         plot_texture(args.texture_file, buf, kind)
@@ -181,11 +203,11 @@ def render(args, kind):
         plot_bench(args.csv, buf, kind)
     elif args.command == "panels":
         from .panels_plot import plot_panels
-        plot_panels(args.panels, buf, args.fmax, args.sensor, kind=kind)
+        plot_panels(args.panels, buf, args.fmax, args.sensor, kind=kind, column=args.column)
     elif args.command == "report":
         from .report_page import report_html
         return report_html(args.result, args.measurement, args.sensor, args.fmin, args.fmax, args.column,
-                           args.measured_averages).encode("utf-8")
+                           args.measured_averages, args.loss_threshold).encode("utf-8")
     return buf.getvalue()
 
 

@@ -5,6 +5,7 @@ import math
 
 from matplotlib.figure import Figure
 
+from .log_ticks import label_log_axes
 from .result_file import EX_DATAERR, EX_NOINPUT, PostError
 from .safe_output import check_input, emit_figure
 
@@ -83,4 +84,5 @@ def plot_bench(path, out, kind=None):
     ax.set_title("work–precision" + (f" ({dropped} zero-error runs not shown)" if dropped else ""))
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
+    label_log_axes(ax)
     return emit_figure(fig, out, kind)

@@ -202,7 +202,11 @@ def compare_bands(meas, bands, sensor=None, fmin=0.0, fmax=np.inf, measured_aver
     inside = used & judged & (measured_db >= lo_db) & (measured_db <= hi_db)
     count = int(used.sum())
     rms = float(np.sqrt(np.mean(delta[used] ** 2))) if count else np.nan
+    # rms² = bias² + spread²: a constant offset (a gain, a mass) and a shape error are told apart
+    bias = float(np.mean(delta[used])) if count else np.nan
+    spread = float(np.sqrt(np.mean((delta[used] - bias) ** 2))) if count else np.nan
     return {"row": s, "sensor": bands["sensor"][s], "used": used, "measured_db": measured_db, "delta_db": delta,
             "lower_db": lo_db, "upper_db": hi_db, "inside": inside, "count": count,
             "judged": count if judged else 0, "inside_count": int(inside.sum()), "rms_db_error": rms,
+            "bias_db": bias, "spread_db": spread,
             "question": question(bands, measured_averages)}

@@ -1,11 +1,13 @@
 """`panels`: results side by side in the seeds' own figure style (seed 001 Fig. 8, seed 002 Figs. 10-11):
 one panel per case, narrow-band acceleration PSD level in dB re 1 (m/s²)²/Hz (the seeds' "dB re 1 m/s²")
 on a linear 0-5 kHz axis, the first curve of a panel solid black (the seeds' measured line), the
-others dotted or dashed in colour (their simulated lines), one level range shared by all panels."""
+others dotted or dashed in colour (their simulated lines), one level range shared by all panels.
+A curve is a result file or a measured PSD CSV (panel_csv.py), told apart by content."""
 import numpy as np
 from matplotlib.figure import Figure
 
 from .measurement import sensor_row
+from .panel_csv import UNITS, is_hdf5, read_panel_csv
 from .psd_plot import db, output_format
 from .result_file import EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, strings, text_attr
 from .safe_output import emit_figure
@@ -29,8 +31,12 @@ def parse_panel(words):
     return words[0], curves
 
 
-def read_level(path, sensor=None):
-    """Frequency, the level in dB of one row (sensor_mean by default), its units and realisation count."""
+def read_level(path, sensor=None, column=None):
+    """Frequency, the level in dB of one row (sensor_mean by default), its units and realisation count
+    (None for a measured CSV)."""
+    if not is_hdf5(path):
+        freq, psd, _ = read_panel_csv(path, column)
+        return freq, db(psd), UNITS, None
     with open_rollspec(path) as f:
         if "/psd/mean" not in f:
             raise PostError(f"{path}: holds no /psd (a time-history result?); panels draws acceleration PSDs", EX_DATAERR)
@@ -43,8 +49,9 @@ def read_level(path, sensor=None):
         return freq, db(mean[row]), text_attr(f["/psd/mean"], "units"), attr(f, "/psd", "realisations", int)
 
 
-def plot_panels(panels, out, fmax=5000.0, sensor=None, dpi=150, kind=None):
-    """panels: [(title, [(file, label), ...]), ...]. Returns {title: {label: (frequency, level_db)}} as drawn."""
+def plot_panels(panels, out, fmax=5000.0, sensor=None, dpi=150, kind=None, column=None):
+    """panels: [(title, [(file, label), ...]), ...]; `column`: the PSD column of a CSV with several.
+    Returns {title: {label: (frequency, level_db)}} as drawn (a result's label gets its K)."""
     if not panels:
         raise PostError("panels: give at least one --panel", EX_USAGE)
     if not (fmax > 0 and np.isfinite(fmax)):
@@ -54,9 +61,10 @@ def plot_panels(panels, out, fmax=5000.0, sensor=None, dpi=150, kind=None):
     for title, curves in panels:
         drawn[title] = {}
         for path, label in curves:
-            freq, level, units, k = read_level(path, sensor)
+            freq, level, curve_units, k = read_level(path, sensor, column)
+            units = curve_units if units is None or k is not None else units  # a result's units first
             keep = (freq > 0) & (freq <= fmax)
-            drawn[title][f"{label} (K = {k})"] = (freq[keep], level[keep])
+            drawn[title][label if k is None else f"{label} (K = {k})"] = (freq[keep], level[keep])
     finite = np.concatenate([lv[np.isfinite(lv)] for p in drawn.values() for _, lv in p.values()])
     if not finite.size:  # an all-zero PSD has no level in dB
         files = ", ".join(path for _, curves in panels for path, _ in curves)

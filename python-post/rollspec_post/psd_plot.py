@@ -7,7 +7,9 @@ import os
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerTuple
 
+from .log_ticks import label_log_axes
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .result_file import EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, strings, text_attr
 from .safe_output import emit_figure, picture_kind
@@ -50,14 +52,32 @@ def read_psd(result):
     return freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data
 
 
+STYLES = ("default", "seed")
+
+
+def curve_styles(style):
+    """Line styles of the simulated mean and the measurement. `seed`: the seeds' figures (seed 001
+    Fig. 8, seed 002 Figs. 10-11): computed dotted in colour, measured solid black."""
+    if style == "seed":
+        return {"color": "C3", "ls": ":", "lw": 1.4}, {"color": "k", "ls": "-", "lw": 1.0}
+    return {"color": "C0", "ls": "-", "lw": 1.0}, {"color": "k", "ls": "-", "lw": 1.0}
+
+
 def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None,
-             fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150, kind=None):
+             fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150, kind=None, title=None, label=None,
+             ylim=None, style="default", measurement_label=None):
     """`sensor` (name or index) picks the row drawn and compared (default: the row `rollspec compare`
     uses, sensor_mean when present). `sensors_all` adds every sensor as a thin grey line. fmin/fmax
     bound the axis and the compared bands (default: the study's band range, from 0 Hz on a linear
-    axis). Returns {"legend": labels, "comparison": compare_bands(...) or None}."""
+    axis). `label`, `measurement_label`: legend names of the simulated mean and the measurement;
+    `ylim` (low, high) in dB; `style` default or seed. Returns {"legend": labels, "comparison":
+    compare_bands(...) or None}."""
     if xscale not in ("linear", "log"):
         raise PostError(f"--xscale {xscale}: allowed: linear or log", EX_USAGE)
+    if style not in STYLES:
+        raise PostError(f"--style {style}: allowed: {' or '.join(STYLES)}", EX_USAGE)
+    if ylim is not None and not (len(ylim) == 2 and np.all(np.isfinite(ylim)) and ylim[0] < ylim[1]):
+        raise PostError(f"--ylim {' '.join(map(str, ylim))}: allowed: two finite levels LOW < HIGH (dB)", EX_USAGE)
     fmt = kind or output_format(out)
     freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data = read_psd(result)
     row = sensor_row(names, sensor)
@@ -70,7 +90,13 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
         raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: 0 <= fmin < fmax, both finite", EX_USAGE)
     meas = read_measurement(measurement, column) if measurement else None
     delta_panel = bands and meas is not None
+    cmp = compare_bands(meas, band_data, row, fmin, fmax, measured_averages) if delta_panel else None
+    sim_style, meas_style = curve_styles(style)
+    sim_label = label or (f"computed, mean of {k}" if style == "seed" else f"{names[row]}, mean of {k}")
+    meas_label = measurement_label or ("measured" if style == "seed" else "measurement")
     fig = Figure(figsize=(7.5, 6.6 if delta_panel else 4.6), layout="constrained")
+    if title:
+        fig.suptitle(title)
     ax = fig.add_subplot(2, 1, 1) if delta_panel else fig.add_subplot(1, 1, 1)
     sel = (freq > 0) & (freq >= fmin) & (freq <= fmax)
     if sensors_all:
@@ -79,23 +105,30 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
                 ax.plot(freq[sel], db(mean[s, sel]), color="0.6", lw=0.5,
                         label="individual sensors" if s == (1 if row == 0 else 0) else None)
     if np.isfinite(hi[row, sel]).any():  # fewer than 5 realisations give no interval
-        ax.fill_between(freq[sel], db(lo[row, sel]), db(hi[row, sel]), color="C0", alpha=0.25, lw=0,
+        ax.fill_between(freq[sel], db(lo[row, sel]), db(hi[row, sel]), color=sim_style["color"], alpha=0.2, lw=0,
                         label=f"{100 * level:.0f} % interval of the mean")
-    ax.plot(freq[sel], db(mean[row, sel]), color="C0", lw=1.0, label=f"{names[row]}, mean of {k}")
+    ax.plot(freq[sel], db(mean[row, sel]), label=sim_label, **sim_style)
     if ref is not None:
         ax.plot(freq[sel], db(ref[row, sel]), "--", color="0.25", lw=0.8, label=short(ref_label))
     if meas is not None:
         m = (meas[0] > 0) & (meas[0] >= fmin) & (meas[0] <= fmax)
-        ax.plot(meas[0][m], db(meas[1][m]), color="k", lw=1.0, label="measurement")
+        ax.plot(meas[0][m], db(meas[1][m]), label=meas_label, **meas_style)
+    band_handles = []
     if bands and have_bands:
         inb = (band_data["lower_frequency"] >= fmin) & (band_data["upper_frequency"] <= fmax)
-        ax.hlines(band_data["level_db"][row][inb], band_data["lower_frequency"][inb], band_data["upper_frequency"][inb],
-                  color="C1", lw=2.0, label="third-octave bands")
+        band_handles.append(ax.hlines(band_data["level_db"][row][inb], band_data["lower_frequency"][inb],
+                                      band_data["upper_frequency"][inb], color="C1", lw=2.0))
+    if cmp is not None and cmp["count"]:  # the measured band levels the ΔL panel subtracts
+        ok = cmp["used"]
+        band_handles.append(ax.hlines(cmp["measured_db"][ok], band_data["lower_frequency"][ok],
+                                      band_data["upper_frequency"][ok], color="k", lw=2.0))
     # y from the data inside the band range: the bins next to 0 Hz on a linear axis carry no power
     # worth the scale.
     lowest = max(fmin, band_data["lower_frequency"][0]) if have_bands else fmin
     inside = sel & (freq >= lowest)
-    if inside.any():
+    if ylim is not None:
+        ax.set_ylim(*ylim)
+    elif inside.any():
         shown = [db(lo[row, inside]), db(hi[row, inside])] + ([db(ref[row, inside])] if ref is not None else [])
         finite = np.concatenate([v[np.isfinite(v)] for v in shown])
         if finite.size:
@@ -105,30 +138,36 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     ax.set_xlabel("frequency (Hz)")
     ax.set_ylabel(f"PSD level (dB re 1 {str(units).replace('^2', '²')})")
     ax.grid(True, which="both", alpha=0.3)
+    label_log_axes(ax, plain="x")
+    handles, labels = ax.get_legend_handles_labels()
+    if band_handles:  # one entry for both band sets: the legend stays at six entries at most
+        handles.append(tuple(band_handles))
+        labels.append("third-octave bands" + (f": simulated, {meas_label}" if len(band_handles) > 1 else ""))
     # Above the axes, so it never covers data.
-    labels = ax.get_legend_handles_labels()[1]
-    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.01, 1.0, 0.1), mode="expand", ncol=3, fontsize=8,
-              frameon=False, borderaxespad=0.0)
-    cmp = None
+    ax.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.0, 1.01, 1.0, 0.1), mode="expand", ncol=2,
+              fontsize=8, frameon=False, borderaxespad=0.0, handler_map={tuple: HandlerTuple(ndivide=None)})
     if delta_panel:
-        cmp = compare_bands(meas, band_data, row, fmin, fmax, measured_averages)
-        ok = cmp["used"]
-        ax2 = fig.add_subplot(2, 1, 2)
-        x = np.arange(ok.sum())
-        lvl = band_data["level_db"][row][ok]
-        if cmp["judged"]:  # grey: the ΔL the interval allows; bars coloured by compare's answer
-            ax2.bar(x, cmp["upper_db"][ok] - cmp["lower_db"][ok], bottom=lvl - cmp["upper_db"][ok], width=0.8,
-                    color="0.85")
-        ax2.bar(x, cmp["delta_db"][ok], width=0.4, color=np.where(cmp["inside"][ok], "C0", "C3"))
-        ax2.set_xticks(x)
-        ax2.set_xticklabels([f"{v:g}" for v in band_data["nominal_frequency"][ok]], rotation=90, fontsize=7)
-        ax2.axhline(0, color="k", lw=0.8)
-        ax2.set_ylabel("ΔL sim − meas (dB)")
-        kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the mean"
-        ax2.set_title(f"rms {cmp['rms_db_error']:.2f} dB; inside the {kind} (grey) in {cmp['inside_count']}/"
-                      f"{cmp['judged']} bands (blue: inside, red: outside)"
-                      if cmp["count"] else "the measurement covers none of the bands", fontsize=8)
-        ax2.set_xlabel("third-octave band (Hz)")
-        ax2.grid(True, axis="y", alpha=0.3)
+        delta_axes(fig.add_subplot(2, 1, 2), cmp, band_data, row, meas_label)
     emit_figure(fig, out, fmt, dpi)
-    return {"legend": labels, "comparison": cmp}
+    return {"legend": labels, "comparison": cmp, "figure": fig}
+
+
+def delta_axes(ax2, cmp, band_data, row, meas_label):
+    """ΔL per band, coloured by the answer of `rollspec compare`, over the interval it allows (grey)."""
+    ok = cmp["used"]
+    x = np.arange(ok.sum())
+    lvl = band_data["level_db"][row][ok]
+    if cmp["judged"]:
+        ax2.bar(x, cmp["upper_db"][ok] - cmp["lower_db"][ok], bottom=lvl - cmp["upper_db"][ok], width=0.8,
+                color="0.85")
+    ax2.bar(x, cmp["delta_db"][ok], width=0.4, color=np.where(cmp["inside"][ok], "C0", "C3"))
+    ax2.set_xticks(x)
+    ax2.set_xticklabels([f"{v:g}" for v in band_data["nominal_frequency"][ok]], rotation=90, fontsize=7)
+    ax2.axhline(0, color="k", lw=0.8)
+    ax2.set_ylabel(f"ΔL simulated − {meas_label} (dB)", fontsize=9)
+    kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the mean"
+    ax2.set_title(f"mean ΔL {cmp['bias_db']:+.2f} dB, rms about it {cmp['spread_db']:.2f} dB; inside the {kind} (grey) in {cmp['inside_count']}/"
+                  f"{cmp['judged']} bands (blue: inside, red: outside)"
+                  if cmp["count"] else f"the {meas_label} covers none of the bands", fontsize=8)
+    ax2.set_xlabel("third-octave band (Hz)")
+    ax2.grid(True, axis="y", alpha=0.3)

@@ -11,10 +11,12 @@ import numpy as np
 
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .psd_plot import plot_psd
+from .rig_summary import rig_parameters
 from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read, scalar, strings, text_attr
 from .safe_output import HTML_MARKER, write_atomic
 from . import __version__
 
+LOSS_WARNING_SHARE = 0.05  # above it the ball flies part of the time: the linear reading of the PSD fails
 PROVENANCE = ("filetype", "schema_version", "rollspec_version", "git_sha", "seed", "rng", "library_versions", "scene",
               "created", "host", "command_line")
 
@@ -29,6 +31,9 @@ h1 { font-size: 1.6em; margin: 0 0 4px; } h2 { font-size: 1.15em; margin: 28px 0
 table { border-collapse: collapse; font-size: .9em; } td, th { border: 1px solid #d6dae3; padding: 3px 8px; text-align: left; }
 th { background: #eef0f5; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 tr.out td { background: #fdecec; }
+.warning { border: 2px solid #c0392b; background: #fdecea; color: #7b1d12; border-radius: 6px; padding: 10px 14px;
+  margin: 0 0 18px; font-size: 1.05em; } .warning strong { font-size: 1.1em; }
+.card.alert { border-color: #c0392b; background: #fdecea; }
 img { width: 100%; border: 1px solid #e3e6ed; }
 pre { background: #f6f7f9; border: 1px solid #e3e6ed; padding: 10px; font-size: .85em; white-space: pre-wrap; }
 footer { color: #778; font-size: .8em; margin-top: 28px; }
@@ -84,27 +89,46 @@ def read_result(path, sensor):
     return r
 
 
-def card(key, value, note=""):
-    return f'<div class="card"><div class="k">{esc(key)}</div><div class="v">{esc(value)}</div>' \
+def card(key, value, note="", alert=False):
+    return f'<div class="card{" alert" if alert else ""}"><div class="k">{esc(key)}</div><div class="v">{esc(value)}</div>' \
            f'<div class="n">{esc(note)}</div></div>'
 
 
-def key_figures(r, cmp):
+def loss_too_high(r, threshold):
+    return r["loss"] is not None and np.isfinite(r["loss"]) and r["loss"] > threshold
+
+
+def loss_warning(r, threshold):
+    """The banner at the top of the page when the ball leaves the beam more than `threshold` of the time."""
+    if not loss_too_high(r, threshold):
+        return ""
+    spread = f" (± {100 * r['loss_std']:.2g} % over realisations)" if r["loss_std"] is not None else ""
+    return (f'<div class="warning" role="alert"><strong>Loss of contact: {100 * r["loss"]:.3g} % of the time'
+            f"{esc(spread)}</strong>, above the {100 * threshold:.3g} % this report flags. The ball leaves the "
+            "surface: the contact force is not the linear response to the roughness, and levels and ΔL "
+            "should be read with that in mind.</div>")
+
+
+def key_figures(r, cmp, threshold=LOSS_WARNING_SHARE):
     level = f"{100 * r['confidence']:.0f} %"
     cards = [card("realisations", r["realisations"], f"sensor {r['sensor_name']}")]
     if cmp is not None:
-        cards.append(card("rms dB error vs measurement", f"{cmp['rms_db_error']:.2f} dB",
-                          f"over {cmp['count']} third-octave bands"))
+        over = f"over {cmp['count']} third-octave bands"
+        cards.append(card("mean ΔL (bias), simulated − measured", f"{cmp['bias_db']:+.2f} dB", over))
+        cards.append(card("rms of ΔL about the bias", f"{cmp['spread_db']:.2f} dB",
+                          f"rms dB error including the bias: {cmp['rms_db_error']:.2f} dB"))
         kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the simulated mean"
         cards.append(card(f"bands with the measurement inside the {level} {kind}",
                           f"{100 * cmp['inside_count'] / cmp['judged']:.0f} %" if cmp["judged"] else "—",
                           f"{cmp['inside_count']} of {cmp['judged']} bands" if cmp["judged"] else cmp["question"]))
     else:
-        cards.append(card("rms dB error vs measurement", "—", "no measurement given (--measurement CSV)"))
+        cards.append(card("mean ΔL (bias) and rms about it", "—", "no measurement given (--measurement CSV)"))
         cards.append(card(f"bands with the measurement inside the {level} interval", "—", "no measurement given"))
     if r["loss"] is not None:
         note = f"± {100 * r['loss_std']:.2g} % over realisations" if r["loss_std"] is not None else ""
-        cards.append(card("loss-of-contact share", f"{100 * r['loss']:.3g} %", note))
+        alert = loss_too_high(r, threshold)
+        cards.append(card("loss-of-contact share", f"{100 * r['loss']:.3g} %",
+                          (note + "; " if note else "") + f"above {100 * threshold:.3g} %" if alert else note, alert))
     else:
         cards.append(card("loss-of-contact share", "—", "no contact in this scene"))
     if r["wall_seconds"] is not None:
@@ -117,6 +141,17 @@ def key_figures(r, cmp):
         cards.append(card(f"bins holding the reference PSD ({r['reference_label']}) in their {level} interval",
                           f"{100 * n_in / n:.1f} %", f"{n_in} of {n} bins, {f0:g}–{f1:g} Hz"))
     return '<div class="cards">' + "".join(cards) + "</div>"
+
+
+def rig_table(study):
+    """The rig's main parameters, one row per key, grouped by study section; '' for a scene without them."""
+    sections = rig_parameters(study)
+    if not sections:
+        return ""
+    rows = "".join((f'<tr><th rowspan="{len(keys)}">{esc(section)}</th>' if i == 0 else "<tr>")
+                   + f"<td>{esc(key)}</td><td>{esc(value)}</td></tr>"
+                   for section, keys in sections for i, (key, value) in enumerate(keys))
+    return f'<h2>Rig</h2><table class="rig">{rows}</table>'
 
 
 def band_table(r, cmp):
@@ -141,14 +176,18 @@ def description(study):
     return m.group(1).strip() if m else ""
 
 
-def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None):
-    page = report_html(result, measurement, sensor, fmin, fmax, column, measured_averages).encode("utf-8")
+def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None,
+                 loss_threshold=LOSS_WARNING_SHARE):
+    page = report_html(result, measurement, sensor, fmin, fmax, column, measured_averages,
+                       loss_threshold).encode("utf-8")
     write_atomic(os.path.realpath(out), lambda fh: fh.write(page))  # a failed write leaves the old file
     return out
 
 
-def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None):
-    """The page as text; `HTML_MARKER` in its head lets a later run replace it without --force."""
+def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None,
+                loss_threshold=LOSS_WARNING_SHARE):
+    """The page as text; `HTML_MARKER` in its head lets a later run replace it without --force.
+    `loss_threshold`: the loss-of-contact share above which the page opens with a warning."""
     r = read_result(result, sensor)
     sensor = r["sensor"]
     meas = read_measurement(measurement, column) if measurement else None
@@ -165,7 +204,8 @@ def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, co
     scene = prov["scene"]
     parts = [f"<h1>rollspec report: {esc(scene)}</h1>",
              f'<p class="sub">{esc(description(r["study"]) or os.path.basename(result))}</p>',
-             "<h2>Key figures</h2>", key_figures(r, cmp),
+             loss_warning(r, loss_threshold),
+             "<h2>Key figures</h2>", key_figures(r, cmp, loss_threshold), rig_table(r["study"]),
              "<h2>Acceleration PSD</h2>",
              f'<img alt="acceleration PSD of sensor {esc(r["sensor_name"])}" src="{psd_uri}">']
     if cmp is not None:

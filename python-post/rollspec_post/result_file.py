@@ -101,3 +101,11 @@ def scalar(f, name, default=None):
         return float(v[0])
     except (IndexError, TypeError, ValueError):
         raise PostError(f"{f.filename}: {name} is not one number", EX_DATAERR) from None
+
+
+def is_dimension_scale(obj):
+    """An HDF5 dimension scale (CLASS = DIMENSION_SCALE, e.g. the engine's `kinetic_index`): it labels
+    another dataset's axis and is no data series. Debian 12's h5py has no Dataset.is_scale."""
+    v = obj.attrs.get("CLASS") if hasattr(obj, "attrs") else None
+    v = v.decode(errors="replace") if isinstance(v, bytes) else str(v)
+    return v == "DIMENSION_SCALE"

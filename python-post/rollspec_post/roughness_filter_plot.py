@@ -11,6 +11,7 @@ synthesised from. The filter the study used is drawn thick.
 import numpy as np
 from matplotlib.figure import Figure
 
+from .log_ticks import label_log_axes
 from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read_rows, text_attr
 from .safe_output import emit_figure
 
@@ -75,4 +76,5 @@ def plot_roughness_filters(path, out, dpi=150, kind=None):
         sec.set_xlabel(f"frequency at v = {speed:g} m/s (Hz)")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8, loc="lower left")
+    label_log_axes(ax)
     return emit_figure(fig, out, kind, dpi)

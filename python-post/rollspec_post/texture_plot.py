@@ -2,6 +2,7 @@
 import numpy as np
 from matplotlib.figure import Figure
 
+from .log_ticks import label_log_axes
 from .result_file import PostError, EX_DATAERR, open_rollspec, read_rows
 from .safe_output import emit_figure
 
@@ -47,7 +48,9 @@ def plot_texture(path, out, kind=None):
     has_lines, has_surface, d = read_texture(path)
     lines, x, k, target, count = (d.get(n) for n in ("lines", "x", "k", "target", "count"))
     realised, surface, sx, sy = (d.get(n) for n in ("realised", "surface", "sx", "sy"))
-    fig = Figure(figsize=(12, 4), constrained_layout=True)
+    fig = Figure(figsize=(12, 4), layout="constrained")
+    # room between panels: the colour bar's label sits right beside the next panel's y label otherwise
+    fig.get_layout_engine().set(wspace=0.08)
     axes = fig.subplots(1, 3)
     if has_lines:
         for i, h in enumerate(lines):
@@ -68,6 +71,7 @@ def plot_texture(path, out, kind=None):
         axes[2].set_title("PSD: target vs realised")
         axes[2].grid(True, which="both", alpha=0.3)
         axes[2].legend(fontsize=8)
+        label_log_axes(axes[2])
     if has_surface:
         im = axes[1].imshow(surface * 1e6, origin="lower", cmap="viridis",
                             extent=[sx[0] * 1e6, sx[-1] * 1e6, sy[0] * 1e6, sy[-1] * 1e6])

@@ -3,7 +3,7 @@ angular speeds, and the energies over time with the balance error on its own sca
 import numpy as np
 from matplotlib.figure import Figure
 
-from .result_file import EX_DATAERR, PostError, open_rollspec, read_rows
+from .result_file import EX_DATAERR, PostError, is_dimension_scale, open_rollspec, read_rows
 from .safe_output import emit_figure
 
 AXIS_NAMES = "xyz"
@@ -25,7 +25,9 @@ def read_history(path):
         group = f["/time_history/energy"] if "/time_history/energy" in f else {}
         if not hasattr(group, "keys"):
             raise PostError(f"{path}: /time_history/energy is not a group of energies", EX_DATAERR)
-        energy = {n: read_rows(f, f"/time_history/energy/{n}", 1) for n in group.keys()}
+        # only the series: the engine labels each with a dimension scale `<name>_index` in the same group
+        energy = {n: read_rows(f, f"/time_history/energy/{n}", 1) for n in group.keys()
+                  if not is_dimension_scale(group[n])}
     if pos.ndim != 3 or pos.shape[0] != t.size or pos.shape[2] != 3 or t.size < 2:
         raise PostError(f"{path}: /time_history/position is {pos.shape}, expected time ({t.size}) x node x 3",
                         EX_DATAERR)
@@ -77,8 +79,9 @@ def plot_trajectory(path, out, kind=None):
     ax_e.set_ylabel("energy (J)")
     ax_e.set_title("energies")
     ax_e.grid(True, alpha=0.3)
-    if energy:
-        ax_e.legend(fontsize=8)
+    if energy:  # below the axes: eight energies over the curves would hide them
+        ax_e.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=min(4, len(energy)),
+                    frameon=False)
 
     if balance is not None:
         ax_bal.plot(t, balance, "C3", lw=1.0)

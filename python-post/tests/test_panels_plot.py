@@ -53,3 +53,39 @@ def test_panels_command_and_its_errors(tmp_path):
     assert r.returncode == 65 and "holds no /psd" in r.stderr, r.stderr
     assert "Traceback" not in r.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+def test_panels_draw_measured_csvs_beside_results(tmp_path):
+    """The CSV `rollspec psd` writes (marker line, frequency_hz, one column per channel) and a plain
+    measurement CSV (frequency column, PSD column) are curves too, drawn as they are, labelled as given."""
+    from rollspec_post.panels_plot import STYLES, plot_panels
+    a = rig(tmp_path, "a")
+    t = np.arange(0, 2, 1 / 8192)
+    rng = np.random.default_rng(3)
+    signal = tmp_path / "signal.csv"
+    np.savetxt(signal, np.c_[t, rng.normal(size=t.size), 3 * rng.normal(size=t.size)], delimiter=",",
+               header="time_s,acc_a,acc_b", comments="")
+    both = tmp_path / "both.csv"
+    r = subprocess.run([BIN, "psd", signal, "--out", both], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert both.read_text().startswith("# rollspec-psd-csv:")
+    one = tmp_path / "one.csv"
+    r = subprocess.run([BIN, "psd", signal, "--column", "acc_b", "--out", one], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    table = np.loadtxt(one, delimiter=",", skiprows=2)
+    plain = tmp_path / "plain.csv"
+    plain.write_text("f;G\n" + "".join(f"{f:.17g};{g:.17g}\n".replace(".", ",") for f, g in table[1:]))
+    drawn = plot_panels([("rig", [(one, "measured"), (a, "model")]), ("plain", [(plain, "export")])],
+                        tmp_path / "p.png")
+    keep = (table[:, 0] > 0) & (table[:, 0] <= 5000)
+    for title, label in (("rig", "measured"), ("plain", "export")):
+        freq, level = drawn[title][label]
+        np.testing.assert_allclose(freq, table[keep, 0])
+        np.testing.assert_allclose(10 ** (level / 10), table[keep, 1], rtol=1e-12)
+    assert list(drawn["rig"]) == ["measured", "model (K = 4)"] and STYLES[0]["ls"] == "-"
+    # a CSV of two channels: --column picks one, without it the error names them
+    r = post("panels", "--panel", "rig", f"{both}=b", f"{a}=model", "--column", "acc_b", "--out", tmp_path / "c.png")
+    assert r.returncode == 0, r.stderr
+    r = post("panels", "--panel", "rig", f"{both}=b", "--out", tmp_path / "x.png")
+    assert r.returncode == 65 and "acc_a, acc_b" in r.stderr and "--column" in r.stderr, r.stderr
+    assert "Traceback" not in r.stderr and not (tmp_path / "x.png").exists()

@@ -37,3 +37,36 @@ def test_trajectory_of_an_engine_result(tmp_path):
     r = post("trajectory", res, "--out", out)
     assert r.returncode == 0, r.stderr
     assert is_png_with_content(out)
+
+
+def test_flying_beam_legend_holds_only_energies_below_the_axes(tmp_path, monkeypatch):
+    """studies/seed000-flying-beam.ini: each energy has a dimension scale `<name>_index` beside it; those
+    are no energies, and the legend of the real ones sits below the axes, over no data."""
+    import shutil
+    import subprocess
+    from conftest import BIN, SOURCE
+    from figure_capture import capture_figures, overlap, renderer_of
+    from rollspec_post import trajectory_plot
+    studies = tmp_path / "studies"
+    shutil.copytree(SOURCE / "studies", studies)
+    res = tmp_path / "fb.h5"
+    r = subprocess.run([BIN, "run", "studies/seed000-flying-beam.ini", "--out", res, "-q"], capture_output=True,
+                       text=True, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    with h5py.File(res) as f:
+        group = f["/time_history/energy"]
+        real = sorted(n.replace("_", " ") for n in group if n != "balance_error" and "CLASS" not in group[n].attrs)
+        assert any("CLASS" in group[n].attrs for n in group), "the engine no longer writes dimension scales"
+    figures = capture_figures(monkeypatch, trajectory_plot)
+    trajectory_plot.plot_trajectory(res, tmp_path / "fb.png")
+    fig = figures[0]
+    ax_e = next(ax for ax in fig.axes if ax.get_title() == "energies")
+    legend = ax_e.get_legend()
+    assert sorted(t.get_text() for t in legend.get_texts()) == real
+    assert not any("index" in line.get_label() for line in ax_e.get_lines())
+    renderer = renderer_of(fig)
+    box = legend.get_window_extent(renderer)
+    for ax in fig.axes:  # over no axes, and not over the energies' time label
+        assert overlap(box, ax.get_window_extent(renderer)) == 0, ax.get_title()
+    assert overlap(box, ax_e.xaxis.label.get_window_extent(renderer)) == 0
+    assert box.y1 < ax_e.get_window_extent(renderer).y0

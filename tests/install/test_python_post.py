@@ -1,4 +1,10 @@
-"""python-post installed with pip the documented way (README "Install"), in a temporary directory:
+"""python-post installed two ways, each into a temporary directory.
+
+1. `cmake --install BUILD --component python_post --prefix P` (cmake/install.cmake): the package under
+P/share/rollspec/python and the launcher P/bin/rollspec-post, which runs /usr/bin/python3 on it; with
+P/bin on PATH, `rollspec-post` works from anywhere with no PYTHONPATH.
+
+2. pip, the documented way (README "Install"):
 
     /usr/bin/python3 -m venv --system-site-packages .venv
     .venv/bin/pip install --no-build-isolation --no-index --no-deps ./python-post
@@ -18,6 +24,8 @@ import pytest
 
 SOURCE = pathlib.Path(os.environ["ROLLSPEC_SOURCE"])
 POST = SOURCE / "python-post"
+BUILD = os.environ.get("ROLLSPEC_BUILD")
+CMAKE = os.environ.get("CMAKE_COMMAND", "cmake")
 
 
 def run(*args, **kw):
@@ -78,3 +86,57 @@ def test_declared_dependencies_come_from_debian(venv):
     check = subprocess.run([str(venv / "bin" / "pip"), "check"], capture_output=True, text=True)
     ours = [line for line in check.stdout.splitlines() if line.startswith("rollspec-post")]
     assert all(re.fullmatch(r"rollspec-post \S+ requires h5py, which is not installed\.", line) for line in ours), check.stdout
+
+
+@pytest.fixture(scope="module")
+def prefix(tmp_path_factory):
+    if not BUILD:
+        pytest.skip("ROLLSPEC_BUILD not set (run through CTest)")
+    p = tmp_path_factory.mktemp("prefix")
+    run(CMAKE, "--install", BUILD, "--component", "python_post", "--prefix", p)
+    return p
+
+
+def user_env(prefix):
+    """A user's shell: P/bin first on PATH, no PYTHONPATH pointing at the sources."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env["PATH"] = f"{prefix / 'bin'}{os.pathsep}{env.get('PATH', '')}"
+    return env
+
+
+def test_cmake_install_puts_the_package_and_the_command(prefix):
+    package = prefix / "share" / "rollspec" / "python" / "rollspec_post"
+    sources = sorted(p.name for p in (POST / "rollspec_post").glob("*.py"))
+    assert sorted(p.name for p in package.glob("*.py")) == sources
+    for name in sources:
+        assert (package / name).read_bytes() == (POST / "rollspec_post" / name).read_bytes(), name
+    launcher = prefix / "bin" / "rollspec-post"
+    assert os.access(launcher, os.X_OK)
+    assert launcher.read_text().startswith("#!/usr/bin/python3\n")
+
+
+def test_installed_command_on_path(prefix, tmp_path):
+    env = user_env(prefix)
+    assert shutil.which("rollspec-post", path=env["PATH"]) == str(prefix / "bin" / "rollspec-post")
+    r = run("rollspec-post", "--help", cwd=tmp_path, env=env)
+    assert r.stdout.startswith("usage: rollspec-post ")
+    for command in ("psd", "texture", "trajectory", "panels", "report"):
+        assert command in r.stdout
+    bad = subprocess.run(["rollspec-post", "psd"], capture_output=True, text=True, cwd=tmp_path, env=env)
+    assert bad.returncode == 64 and bad.stderr.startswith("rollspec-post psd: error:"), bad.stderr
+
+
+def test_installed_command_draws_a_plot(prefix, tmp_path):
+    """An engine result drawn by the installed copy (not the sources: they are off sys.path)."""
+    result = tmp_path / "ro.h5"
+    run(os.environ["ROLLSPEC_BIN"], "run", SOURCE / "studies" / "random-oscillator.ini", "--out", result, "--quiet",
+        "--set", "study.realisations=6")
+    env = user_env(prefix)
+    r = run("rollspec-post", "psd", result, "--bands", "--out", tmp_path / "psd.png", cwd=tmp_path, env=env)
+    assert r.stdout.strip() == f"wrote {tmp_path / 'psd.png'}"
+    assert (tmp_path / "psd.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # through a symbolic link in another directory (~/bin/rollspec-post -> P/bin/rollspec-post)
+    link = tmp_path / "home-bin" / "rollspec-post"
+    link.parent.mkdir()
+    link.symlink_to(prefix / "bin" / "rollspec-post")
+    run(link, "--help", cwd=tmp_path, env=env)

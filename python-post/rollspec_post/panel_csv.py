@@ -1,0 +1,51 @@
+"""Measured PSDs drawn by `panels` beside results: the CSV `rollspec psd` writes (a first line
+`# rollspec-psd-csv: ...`, then `frequency_hz,<channel>,...`) or a plain measurement CSV (a frequency
+column, then PSD columns), read by the rule of rollspec's CSV reader (measurement._read_table)."""
+import numpy as np
+
+from .measurement import _read_table
+from .result_file import EX_DATAERR, PostError
+
+HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
+UNITS = "(m/s^2)^2/Hz"  # rollspec psd's unit, and the one `rollspec compare` expects of a measurement
+
+
+def is_hdf5(path):
+    """By content, not by name: a result renamed .csv is still a result."""
+    try:
+        with open(path, "rb") as fh:
+            return fh.read(8) == HDF5_SIGNATURE
+    except OSError:
+        return False  # the reader that follows names the problem
+
+
+def pick_column(path, header, column):
+    """The PSD column: `column`, else `psd`, else the only one beside the frequency."""
+    others = header[1:] if "frequency_hz" not in header else [h for h in header if h != "frequency_hz"]
+    if column is not None:
+        if column not in others:
+            raise PostError(f"{path}: no PSD column {column!r}; columns: {', '.join(others)}", EX_DATAERR)
+        return column
+    if "psd" in others:
+        return "psd"
+    if len(others) == 1:
+        return others[0]
+    raise PostError(f"{path}: {len(others)} PSD columns ({', '.join(others)}); name one with --column", EX_DATAERR)
+
+
+def read_panel_csv(path, column=None):
+    """(frequency, psd, column name): frequency from `frequency_hz`, else from the first column."""
+    header, data, numbers = _read_table(path)
+    if len(header) < 2:
+        raise PostError(f"{path}: needs a frequency column and a PSD column; found {', '.join(header)}", EX_DATAERR)
+    name = pick_column(path, header, column)
+    f = data[:, header.index("frequency_hz") if "frequency_hz" in header else 0]
+    p = data[:, header.index(name)]
+    if not (np.all(np.isfinite(f)) and np.all(np.isfinite(p))):
+        raise PostError(f"{path}: values must be finite numbers", EX_DATAERR)
+    if np.any(np.diff(f) <= 0):
+        raise PostError(f"{path}: the frequency column must increase strictly", EX_DATAERR)
+    if np.any(p < 0):
+        raise PostError(f"{path}:{numbers[np.argmax(p < 0)]}: {name} value {p[p < 0][0]:g} is negative; allowed: >= 0",
+                        EX_DATAERR)
+    return f, p, name
