@@ -37,7 +37,7 @@ Family by_extension(const std::string& path) {
 }
 }  // namespace
 
-SignalTable read_signal(const std::string& path) {
+SignalTable read_signal(const std::string& path, const SignalRequest& request) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw missing_input("cannot read '" + path + "': it is a directory; expected a signal file (CSV/text, WAV/FLAC, .mat)");
@@ -51,12 +51,17 @@ SignalTable read_signal(const std::string& path) {
   in.read(head, sizeof head);
   Family family = by_content(std::string(head, static_cast<std::size_t>(in.gcount())));
   if (family == Family::text) family = by_extension(path);
+  const bool csv_only = request.skip_rows >= 0 || (!request.time_column.empty() && request.time_column != "none");
+  if (family != Family::text && csv_only)
+    throw usage_error(std::string(request.skip_rows >= 0 ? "--skip-rows" : "--time-column " + clip(request.time_column)) +
+                      ": '" + path + "' is a " + (family == Family::sound ? "sound" : "MATLAB .mat") +
+                      " file, not CSV text; allowed: --skip-rows and --time-column NAME with CSV/text files only");
   switch (family) {
     case Family::sound: return read_sound_signal(path);
     case Family::mat: return read_mat_signal(path);
     case Family::text: break;
   }
-  return read_csv_signal(path);
+  return read_csv_signal(path, request);
 }
 
 }  // namespace rollspec::io
