@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <sstream>
+#include <unordered_set>
 
 namespace rollspec::io {
 
@@ -35,8 +36,13 @@ CsvLayout best_header(const std::vector<std::string>& lines, char delimiter, boo
     same[i] = shapes[i].numeric ? 1 + (i + 1 < n && shapes[i + 1].numeric && shapes[i + 1].cells == shapes[i].cells ? same[i + 1] : 0) : 0;
   CsvLayout best;
   best.delimiter = delimiter;
+  // A line after rows of numbers of its own width is a bad data row, not a header: its error is
+  // reported at its line, not hidden as a preamble.
+  std::unordered_set<std::size_t> numbers_before;  // widths of the numeric rows seen so far
   for (std::size_t i = 0; i + 1 < n && (!first_only || i == 0); ++i) {
-    if (shapes[i].numeric || !shapes[i + 1].numeric || shapes[i + 1].cells != shapes[i].cells) continue;
+    const bool after_rows = numbers_before.count(shapes[i].cells) > 0;
+    if (shapes[i].numeric) numbers_before.insert(shapes[i].cells);
+    if (after_rows || shapes[i].numeric || !shapes[i + 1].numeric || shapes[i + 1].cells != shapes[i].cells) continue;
     if (!best.found || same[i + 1] > best.rows) {
       best.found = true;
       best.header = i;

@@ -75,7 +75,7 @@ double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_un
     const double allowed = std::max(kTimeGridTolerance * dt, rounding(i) + ends);
     if (std::fabs(off) > allowed)
       throw data_error(where(i) + ": " + col + " value " + stamp_text(t[i]) + " is " + number_text(off / dt) +
-                       " sample intervals (" + stamp_text(off) + ") off the uniform grid t_0 + i*dt (dt = " + stamp_text(dt) +
+                       " sample intervals off the uniform grid t_0 + i*dt (by " + stamp_text(off) + "; dt = " + stamp_text(dt) +
                        " from the first and last stamps), more than the " + number_text(allowed / dt) +
                        " allowed here: the sample rate is not constant; allowed: " + kAllowed + rounding_note);
   }
