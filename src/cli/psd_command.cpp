@@ -21,8 +21,8 @@
 
 namespace rollspec::cli {
 
-int psd_command(const Args& args) {
-  const std::string usage =
+namespace {
+const char* const kPsdUsage =
       "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit m/s2|g] [--scale X] [--segment N]\n"
       "                    [--overlap F] [--window hann|rect] [--time-column NAME] [--skip-rows N] [--out FILE.csv]\n"
       "                    [--quiet]\n"
@@ -61,6 +61,10 @@ int psd_command(const Args& args) {
       "of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).\n"
       "Each choice made from the file (delimiter, decimal comma, header line, time column, sample rate) is\n"
       "said in one line on stderr (not with --quiet).";
+}  // namespace
+
+int psd_command(const Args& args) {
+  const std::string usage = kPsdUsage;
   po::options_description opts("options");
   std::string input, out, window = "hann";
   double overlap = 0.5;
