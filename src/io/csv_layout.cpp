@@ -86,7 +86,8 @@ CsvLayout find_csv_layout(const std::vector<std::string>& lines, bool first_only
   CsvLayout best = best_header(lines, delimiter, first_only);
   if (delimiter == ',') {
     const CsvLayout one = best_header(lines, 0, first_only);
-    if (one.found && one.rows > best.rows) best = one;
+    // a header with a comma says the commas delimit
+    if (one.found && one.rows > best.rows && lines[one.header].find(',') == std::string::npos) best = one;
   }
   return best;
 }
