@@ -73,7 +73,14 @@ void rate_from_column(SignalTable& s, const CsvTable& t, std::size_t time, const
     s.notes.push_back(f + "--fs " + rate_text(r.fs) + " Hz overrides the time column '" + s.time_column + "' (" + clip(stamps, 300) + ")");
     return;  // sample_rate 0: prepare_signal takes --fs
   }
-  s.sample_rate = rate_from_time_stamps(t.values[time], seconds, s.time_column, where, digits);
+  try {
+    s.sample_rate = rate_from_time_stamps(t.values[time], seconds, s.time_column, where, digits);
+  } catch (const UserError& e) {
+    if (!r.time_column.empty()) throw;
+    // taken by its name: it may be no time at all (a counter named t)
+    throw UserError(e.exit_code(), std::string(e.what()) + "; or, if '" + clip(s.time_column) +
+                                       "' holds no time stamps: --time-column none (with --fs), or --time-column NAME");
+  }
   s.rate_source = "time column '" + s.time_column + "'";
   s.notes.push_back(f + "sample rate " + rate_text(s.sample_rate) + " Hz from the time column '" + s.time_column + "'" +
                     (unit == 0.0 ? " (--time-column; its name gives no unit: seconds)" : unit == 1.0 ? " (seconds)" : " (milliseconds)") +
