@@ -99,7 +99,7 @@ std::size_t CsvTable::column_index(const std::string& name) const {
     if (columns[i] == name) return i;
   std::string found;
   for (const auto& c : columns) found += (found.empty() ? "" : ", ") + c;
-  throw data_error(file + ":1: no column '" + clip(name) + "' in the header; columns found: " + clip(found));
+  throw data_error(file + ":" + std::to_string(header_line) + ": no column '" + clip(name) + "' in the header; columns found: " + clip(found));
 }
 
 namespace {
