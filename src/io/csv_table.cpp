@@ -43,7 +43,9 @@ Printed printed(const std::string& text) {
   Printed p;
   const auto e = text.find_first_of("eE");
   const std::string mantissa = text.substr(0, e);
-  const int exponent = e == std::string::npos ? 0 : std::atoi(text.c_str() + e + 1);
+  // clamped: an exponent of a billion digits must not overflow (the value is refused or 0 anyway)
+  const long exp_read = e == std::string::npos ? 0 : std::strtol(text.c_str() + e + 1, nullptr, 10);
+  const int exponent = static_cast<int>(std::max(-100000L, std::min(100000L, exp_read)));
   const auto point = mantissa.find('.');
   bool leading = true;
   for (std::size_t i = 0; i < mantissa.size(); ++i) {
