@@ -162,3 +162,10 @@ def test_set_completes_every_key_of_rollspec_keys():
         assert complete("rollspec", command, "--set", "") == keys
     assert complete("rollspec", "run", "--set", "study.se") == ["study.seed="]
     assert complete("rollspec", "plan", "s.ini", "--set", "spectrum.") == [k for k in keys if k.startswith("spectrum.")]
+
+
+def test_set_completes_the_values_of_a_choice_key():
+    # bash splits `--set spectrum.window=re` at '=': words --set, spectrum.window, =, re
+    assert complete("rollspec", "run", "--set", "spectrum.window", "=", "") == ["hann", "rectangular"]
+    assert complete("rollspec", "plan", "--set", "study.scene", "=", "rolling-") == ["rolling-beam", "rolling-pipe"]
+    assert complete("rollspec", "run", "--set", "study.seed", "=", "") == []  # a number: nothing offered
