@@ -29,7 +29,8 @@ double time_column_unit(const std::string& name);
 struct StampDigits {
   int decimals = 1000;
   int significant = 1000;
-  double half_unit(double t) const;  // the rounding bound of stamp t, in its own unit
+  double half_unit(double t) const;          // the rounding bound of stamp t, in its own unit
+  double printed_half_unit(double t) const;  // the same without the binary representation's few ulps
 };
 
 // The sample rate (Hz) the stamps imply. `where(i)` names stamp i in messages ("file.csv:12",

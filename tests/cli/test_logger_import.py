@@ -59,12 +59,16 @@ def test_rounded_stamps_are_accepted_and_fs_overrides_them(tmp_path):
     assert_psd(data, f, p)
     assert "--fs 25600 Hz overrides the time column 'Time (s)' (its stamps imply 25600" in err
     assert "semicolon-delimited (from the data rows), decimal comma" in err
-    # without --fs the rate comes from the rounded stamps: within rounding / duration of 25600 Hz
+    # without --fs the rate comes from the rounded stamps, a least-squares line through them all: the
+    # end points alone would carry their rounding (up to 2 ppm here) into the rate
     data, err = psd([sig, "--unit", "g", "--segment", 4096], tmp_path, "own.csv")
     assert "Hz from the time column 'Time (s)' (seconds)" in err
-    rate = ref["Time (s)"].size / (ref["Time (s)"].iloc[-1] - ref["Time (s)"].iloc[0]) * (1 - 1 / ref["Time (s)"].size)
+    stamps = ref["Time (s)"].to_numpy()
+    rate = 1 / np.polyfit(np.arange(stamps.size), stamps, 1)[0]
+    assert rate == pytest.approx(FS, rel=1e-7)
+    assert data[1, 0] == pytest.approx(FS / 4096, rel=1e-7)
     f, p = welch(ref["Acc (g)"].to_numpy() * G, rate, 4096)
-    assert_psd(data, f, p, rtol=1e-6)
+    assert_psd(data, f, p, rtol=1e-9)
 
 
 def test_real_gaps_and_jitter_in_rounded_stamps_are_refused(tmp_path):
