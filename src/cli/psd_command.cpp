@@ -24,7 +24,7 @@ namespace rollspec::cli {
 namespace {
 const char* const kPsdUsage =
       "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit m/s2|g] [--scale X] [--segment N]\n"
-      "                    [--overlap F] [--window hann|rect] [--time-column NAME] [--skip-rows N] [--out FILE.csv]\n"
+      "                    [--overlap F] [--window hann|rect] [--time-column NAME|none] [--skip-rows N] [--out FILE.csv]\n"
       "                    [--quiet]\n"
       "\n"
       "One-sided Welch PSD of each channel of a measured signal, in (m/s^2)^2/Hz: segments mean-detrended and\n"
@@ -73,7 +73,7 @@ int psd_command(const Args& args) {
   opts.add_options()("signal", po::value(&input)->required(), "input signal (CSV/text, WAV/FLAC/..., .mat)")(
       "fs", po::value(&request.fs), "sample rate (Hz); default: from the file")(
       "column", po::value(&request.columns)->composing(), "channel(s) to analyse, repeatable or comma-separated (default: all)")(
-      "unit", po::value(&request.unit)->default_value("m/s2"), "unit of the values: m/s2 or g")(
+      "unit", po::value(&request.unit)->default_value("m/s2"), "unit of the values: m/s2 or g, or one per channel (g,m/s2)")(
       "scale", po::value(&request.scale), "physical units per file unit, or per full scale (integer PCM; needed there); default 1")(
       "time-column", po::value(&request.time_column), "CSV column of time stamps, or none (default: the column named like a time)")(
       "skip-rows", po::value(&request.skip_rows), "CSV lines before the header (default: found from the data)")(
