@@ -51,14 +51,16 @@ SignalTable read_signal(const std::string& path, const SignalRequest& request) {
   in.read(head, sizeof head);
   Family family = by_content(std::string(head, static_cast<std::size_t>(in.gcount())));
   if (family == Family::text) family = by_extension(path);
-  const bool csv_only = request.skip_rows >= 0 || (!request.time_column.empty() && request.time_column != "none");
-  if (family != Family::text && csv_only)
-    throw usage_error(std::string(request.skip_rows >= 0 ? "--skip-rows" : "--time-column " + clip(request.time_column)) +
-                      ": '" + path + "' is a " + (family == Family::sound ? "sound" : "MATLAB .mat") +
-                      " file, not CSV text; allowed: --skip-rows and --time-column NAME with CSV/text files only");
+  if (family != Family::text && request.skip_rows >= 0)
+    throw usage_error("--skip-rows: '" + path + "' is a " + (family == Family::sound ? "sound" : "MATLAB .mat") +
+                      " file, not CSV text; allowed: --skip-rows with CSV/text files only");
+  if (family == Family::sound && !request.time_column.empty() && request.time_column != "none")
+    throw usage_error("--time-column " + clip(request.time_column) + ": '" + path +
+                      "' is a sound file (its rate is in the header, it has no time column); allowed: --time-column with "
+                      "CSV/text and .mat files");
   switch (family) {
     case Family::sound: return read_sound_signal(path);
-    case Family::mat: return read_mat_signal(path);
+    case Family::mat: return read_mat_signal(path, request);
     case Family::text: break;
   }
   return read_csv_signal(path, request);

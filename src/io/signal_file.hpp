@@ -42,11 +42,12 @@ struct SignalRequest {
 // regular file.
 SignalTable read_csv_signal(const std::string& path, const SignalRequest& request = {});
 SignalTable read_sound_signal(const std::string& path);
-SignalTable read_mat_signal(const std::string& path);
+SignalTable read_mat_signal(const std::string& path, const SignalRequest& request = {});
 
 // Any of the above, by content (RIFF/FORM/fLaC/OggS/.snd magic, "MATLAB" header), else by extension
 // (.wav .flac .aif(f) .au .ogg .caf .w64 .rf64: sound; .mat: MATLAB), else text.
-// CSV-only options (--time-column NAME, --skip-rows) on another kind of file are refused.
+// Options a file kind has no use for are refused: --skip-rows except for CSV, --time-column NAME for
+// sound files.
 SignalTable read_signal(const std::string& path, const SignalRequest& request = {});
 
 constexpr double kStandardGravity = 9.80665;  // m/s² per g, exact (CGPM 1901)

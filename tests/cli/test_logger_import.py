@@ -207,3 +207,23 @@ def test_compare_skips_the_preamble_of_a_measured_psd(tmp_path):
     assert got.stdout == want.stdout.replace("m.csv", "m-export.csv")
     same = run(["compare", res, export, "--format", "csv", "--skip-rows", 2])
     assert same.returncode == 0 and same.stdout == got.stdout and "preamble lines" not in same.stderr
+
+
+def test_time_column_option_with_mat_and_sound_files(tmp_path):
+    fs = 4096.0
+    _, x = signal(n=8192)
+    mat = tmp_path / "rec.mat"
+    scipy.io.savemat(mat, {"stamps": np.arange(x.size) / fs, "acc": x, "t": np.arange(x.size) % 7})
+    # 't' (a counter) is taken by its name and refused; --time-column picks the stamps, 't' is a channel
+    assert_refused(run(["psd", mat, "--segment", 1024]), EX_DATAERR, ["variable 't'", "does not increase"])
+    data, err = psd([mat, "--time-column", "stamps", "--column", "acc", "--segment", 1024], tmp_path)
+    assert "sample rate 4096 Hz from time variable 'stamps'" in err
+    f, p = welch(x, fs, 1024)
+    assert_psd(data, f, p)
+    data, _ = psd([mat, "--time-column", "none", "--fs", fs, "--column", "t,acc", "--segment", 1024], tmp_path, "none.csv")
+    assert data.shape[1] == 3
+    assert_refused(run(["psd", mat, "--time-column", "clock"]), EX_USAGE,
+                   ["--time-column clock: no such vector variable in", "variables: stamps, acc, t"])
+    wav = tmp_path / "rec.wav"
+    scipy.io.wavfile.write(wav, int(fs), x.astype(np.float32))
+    assert_refused(run(["psd", wav, "--time-column", "stamps"]), EX_USAGE, ["--time-column stamps", "is a sound file"])
