@@ -134,10 +134,13 @@ def write_exit_codes(out):
              "and the `<sysexits.h>` names the sources (`src/`) exit with. Every error message names the file, "
              "line, key and value at fault and what is allowed.", "",
              "| code | meaning |", "|---|---|"]
-    lines += [f"| {c} | {cell(text)} |" for c, text in documented]
+    codes_documented = {c for c, _ in documented}
+    missing = sorted((table[n][0], table[n][1]) for n in used if n in table and table[n][0] not in codes_documented)
+    rows = sorted(documented + [(c, f"{text} (`<sysexits.h>`; used by the sources, not in the man page)")
+                                for c, text in missing])
+    lines += [f"| {c} | {cell(text)} |" for c, text in rows]
     lines += ["", "The `<sysexits.h>` names in the sources:", "", "| name | code | `<sysexits.h>` says | in the man page |",
               "|---|---|---|---|"]
-    codes_documented = {c for c, _ in documented}
     for name in sorted(used, key=lambda n: table.get(n, (999,))[0]):
         number, text = table.get(name, (None, ""))
         lines.append(f"| `{name}` | {number} | {cell(text)} | {'yes' if number in codes_documented else 'no'} |")
@@ -168,7 +171,7 @@ def write_schema(binary, out):
         with h5py.File(result, "r") as f:
             lines += ["## Root attributes", "", "| attribute | value in this run |", "|---|---|"]
             for k, v in f.attrs.items():
-                value = "(the resolved study, INI)" if k == "study" else ("(this machine)" if k in ("host", "created", "command_line") else text(v))
+                value = "(the resolved study, INI)" if k == "study" else ("(this machine)" if k in ("host", "created", "command_line", "git_sha") else text(v))
                 lines.append(f"| `{k}` | {cell(value)} |")
             lines += ["", "## Datasets", "", "| dataset | shape | type | units | description |", "|---|---|---|---|---|"]
             rows = []
