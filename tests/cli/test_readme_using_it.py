@@ -1,6 +1,6 @@
 """The commands a user reads run as written, in order, from a copy of the repository root: the
 "## Using it" block of the documentation's tour (docs/tutorials/tour.md) and the README's
-"## Quick start" block. `rollspec ...` runs with the built binary, `python3 -m rollspec_post ...` with
+"## Quick start" block, and the first block of the documentation pages in TUTORIAL_BLOCKS. `rollspec ...` runs with the built binary, `python3 -m rollspec_post ...` with
 Debian's /usr/bin/python3. `mpirun` lines need the MPI build and are left to tests/mpi.
 
 The temporary root holds `studies/` as a directory of symlinks to the source tree's study files and
@@ -12,6 +12,8 @@ import shlex
 import subprocess
 import sys
 import time
+
+import pytest
 
 from conftest import BIN, SOURCE
 
@@ -81,3 +83,20 @@ def test_readme_quick_start_runs_as_written(tmp_path):
     run_as_written(commands, tmp_path)
     for out in ("r.h5", "r-psd.png", "psd.csv", "report.html"):
         assert (tmp_path / out).stat().st_size > 0, out
+
+
+TUTORIAL_BLOCKS = {  # pages whose first ```sh block stands alone: (page, a file it writes)
+    "measurements": ("docs/tutorials/measurements.md", "psd-wav.csv"),
+    "speed": ("docs/tutorials/speed.md", "speeds.png"),
+    "roughness": ("docs/howto/roughness.md", "texture.png"),
+}
+
+
+@pytest.mark.parametrize("page", sorted(TUTORIAL_BLOCKS))
+def test_documentation_page_commands_run_as_written(tmp_path, page):
+    path, written = TUTORIAL_BLOCKS[page]
+    title = (SOURCE / path).read_text().splitlines()[0]
+    commands = sh_block(SOURCE / path, title)
+    assert commands
+    run_as_written(commands, tmp_path)
+    assert (tmp_path / written).stat().st_size > 0, written
