@@ -1,7 +1,8 @@
 """The commands a user reads run as written, in order, from a copy of the repository root: the
 "## Using it" block of the documentation's tour (docs/tutorials/tour.md) and the README's
-"## Quick start" block, and the first block of the documentation pages in TUTORIAL_BLOCKS. `rollspec ...` runs with the built binary, `python3 -m rollspec_post ...` with
-Debian's /usr/bin/python3. `mpirun` lines need the MPI build and are left to tests/mpi.
+"## Quick start" block, and the first block of the documentation pages in TUTORIAL_BLOCKS.
+`rollspec ...` runs with the built binary, `python3 -m rollspec_post ...` with Debian's /usr/bin/python3.
+`mpirun` lines need the MPI build and are left to tests/mpi.
 
 The temporary root holds `studies/` as a directory of symlinks to the source tree's study files and
 `studies/data`, not as one symlink to the folder: `rollspec stiffness` caches its table in
