@@ -171,7 +171,7 @@ def write_schema(binary, out):
         with h5py.File(result, "r") as f:
             lines += ["## Root attributes", "", "| attribute | value in this run |", "|---|---|"]
             for k, v in f.attrs.items():
-                value = "(the resolved study, INI)" if k == "study" else ("(this machine)" if k in ("host", "created", "command_line", "git_sha") else text(v))
+                value = "(the resolved study, INI)" if k == "study" else ("(differs per run)" if k in ("host", "created", "command_line", "git_sha") else text(v))
                 lines.append(f"| `{k}` | {cell(value)} |")
             lines += ["", "## Datasets", "", "| dataset | shape | type | units | description |", "|---|---|---|---|---|"]
             rows = []
