@@ -8,7 +8,8 @@ reference cannot drift from the program:
                                      <sysexits.h> codes the sources use (src/)
   reference/generated/schema.md      the HDF5 result schema, walked with h5py from a file written now
                                      (random-oscillator study, 5 realisations, in a temporary directory)
-  validation/generated/goals.md      the benchmark goals table and figure from bench/goals.json
+  validation/generated/goals-table.md, goals.png   the benchmark goals table and figure from bench/goals.json
+  validation/generated/work-precision.png  from python-post/docs/work-precision.csv
 
   /usr/bin/python3 docs/generate_reference.py --bin build/werror/rollspec --out DOCS_SOURCE_DIR
 """
@@ -220,6 +221,13 @@ def write_goals(out):
     plt.close(fig)
 
 
+def write_work_precision(out):
+    """The work-precision figure, drawn now from the CSV bench/beam/bench_beam's runs left."""
+    run(["/usr/bin/python3", "-m", "rollspec_post", "bench", str(REPO / "python-post" / "docs" / "work-precision.csv"),
+         "--out", str(out / "work-precision.png"), "--force"],
+        env=dict(os.environ, PYTHONPATH=str(REPO / "python-post"), MPLBACKEND="Agg"))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", default=os.environ.get("ROLLSPEC_BIN", str(REPO / "build" / "werror" / "rollspec")))
@@ -235,6 +243,7 @@ def main():
     write_exit_codes(ref)
     write_schema(binary, ref)
     write_goals(val)
+    write_work_precision(val)
 
 
 if __name__ == "__main__":
