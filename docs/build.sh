@@ -9,6 +9,7 @@ out="$(realpath -m "${1:-$repo/build/docs}")"
 bin="$(realpath -m "${ROLLSPEC_BIN:-$repo/build/werror/rollspec}")"
 [ -x "$bin" ] || { echo "docs/build.sh: no rollspec binary at $bin (build it, or set ROLLSPEC_BIN)" >&2; exit 66; }
 python=/usr/bin/python3
+export PYTHONDONTWRITEBYTECODE=1   # nothing written into the sources (docs/, bench/)
 rm -rf "$out/src"
 mkdir -p "$out"
 cp -r "$repo/docs" "$out/src"

@@ -13,6 +13,7 @@ import pytest
 
 SOURCE = Path(os.environ.get("ROLLSPEC_SOURCE", Path(__file__).resolve().parents[2]))
 BIN = os.environ.get("ROLLSPEC_BIN", str(SOURCE / "build" / "werror" / "rollspec"))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, str(SOURCE / "docs"))
 import generate_reference as gen  # noqa: E402  (the same parsers the site is generated with)
 
