@@ -1,14 +1,14 @@
 #!/usr/bin/python3
 """Issue 18's five speed goals, each measured as whole commands in one run (rollspec against its goal,
-the floor it is compared with, or the previous build), kept in bench/goals.json and written into the
-README's goals table, so no figure there is typed by hand.
+the floor it is compared with, or the previous build), kept in bench/goals.json; the documentation's
+benchmarks page is generated from it (docs/generate_reference.py), so no figure there is typed by hand.
 
   /usr/bin/python3 bench/bench_goals.py measure [--goals 1,2,3,4,5] [--bin build/release]
       [--base PREVIOUS_BUILD_DIR] [--repeats 3]
-  /usr/bin/python3 bench/bench_goals.py table        # only rewrite the README table from goals.json
+  /usr/bin/python3 bench/bench_goals.py table        # print the goals table from goals.json
 
 `measure` runs the chosen goals, replaces their entries in goals.json (each with the date, the commit,
-whether the tree had changes, and the load average before and after), then rewrites the table.
+whether the tree had changes, and the load average before and after), then prints the table.
 Goals needing the previous build (1's reference ratio, 3's and 4's ratios) skip those ratios without --base.
 
   1  seed 002 rig, 1000 realisations, whole `rollspec run`: <= 2.0 s on 2 cores, efficiency >= 0.9
@@ -32,8 +32,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 RESULTS = ROOT / "bench" / "goals.json"
-README = ROOT / "README.md"
-BEGIN, END = "<!-- bench/bench_goals.py table: begin -->", "<!-- bench/bench_goals.py table: end -->"
+
 for sub in ("engine", "contact", "rolling"):
     sys.path.insert(0, str(ROOT / "bench" / sub))
 
@@ -122,7 +121,7 @@ def mark(ok):
 
 
 def rows(results):
-    """README rows: goal, measured, met or missed, when / commit / load."""
+    """Table rows: goal, measured, met or missed, when / commit / load."""
     out = []
 
     def when(r):
@@ -180,19 +179,10 @@ def rows(results):
 
 
 def write_table(results):
-    lines = [BEGIN,
-             "| goal (issue 18) | measured (whole commands, one run) | | when, commit, load average |",
-             "|---|---|---|---|"]
-    lines += [f"| {g} | {m} | {ok} | {w} |" for g, m, ok, w in rows(results)]
-    lines.append(END)
-    text = README.read_text()
-    if BEGIN not in text or END not in text:
-        sys.exit(f"{README}: the markers {BEGIN} … {END} are missing; not written")
-    head, rest = text.split(BEGIN, 1)
-    tail = rest.split(END, 1)[1]
-    tmp = README.with_name(README.name + ".tmp")
-    tmp.write_text(head + "\n".join(lines) + tail)
-    os.replace(tmp, README)
+    print("| goal | measured (whole commands, one run) | | when, commit, load average |")
+    print("|---|---|---|---|")
+    for g, m, ok, w in rows(results):
+        print(f"| {g} | {m} | {ok} | {w} |")
 
 
 def main():

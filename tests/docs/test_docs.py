@@ -1,0 +1,83 @@
+"""The documentation site builds with warnings as errors (`bash docs/build.sh`) against the build tree's
+rollspec, its generated reference holds every command of `rollspec --help` (with that command's
+options) and every key of every scene of `rollspec keys`, and the README stays short and free of
+lab-notebook material (commit hashes, issue numbers, load averages)."""
+import html
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+SOURCE = Path(os.environ.get("ROLLSPEC_SOURCE", Path(__file__).resolve().parents[2]))
+BIN = os.environ.get("ROLLSPEC_BIN", str(SOURCE / "build" / "werror" / "rollspec"))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, str(SOURCE / "docs"))
+import generate_reference as gen  # noqa: E402  (the same parsers the site is generated with)
+
+
+def text_of(page):
+    """An HTML page's text, tags dropped and entities decoded, whitespace collapsed."""
+    raw = re.sub(r"<[^>]+>", " ", page.read_text())
+    return re.sub(r"\s+", " ", html.unescape(raw))
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory):
+    out = tmp_path_factory.mktemp("docs")
+    r = subprocess.run(["bash", str(SOURCE / "docs" / "build.sh"), str(out)], env=dict(os.environ, ROLLSPEC_BIN=BIN),
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, f"docs/build.sh failed (exit {r.returncode}):\n{r.stdout[-3000:]}\n{r.stderr[-6000:]}"
+    return out / "html"
+
+
+def test_every_command_and_option_is_in_the_reference(site):
+    page = text_of(site / "reference" / "generated" / "commands.html")
+    commands = gen.commands(BIN)
+    assert len(commands) >= 5
+    for name, _ in commands:
+        assert f"rollspec {name}" in page, name
+        options = re.findall(r"(?<![\w-])(--[a-z][a-z-]*)", gen.run([BIN, name, "--help"]))
+        missing = sorted({o for o in options if o not in page})
+        assert not missing, f"rollspec {name}: options missing from the reference: {missing}"
+
+
+def test_every_key_of_every_scene_is_in_the_reference(site):
+    page = text_of(site / "reference" / "generated" / "keys.html")
+    scenes = gen.scenes(BIN)
+    assert len(scenes) >= 5
+    for scene, _ in scenes:
+        sections = gen.parse_keys(gen.run([BIN, "keys", scene]))
+        assert sections, scene
+        for section, keys in sections:
+            heading = f"{scene} [{section}]"
+            assert heading in page, heading
+            body = page.split(heading, 1)[1]
+            for key, default, *_ in keys:
+                assert re.search(rf"\b{re.escape(key)} {re.escape(default)}" if default else rf"\b{re.escape(key)}\b",
+                                 body), f"{scene} [{section}] {key} = {default}"
+
+
+def test_schema_exit_codes_and_api_are_generated(site):
+    schema = text_of(site / "reference" / "generated" / "schema.html")
+    for name in ("/psd/frequency", "/psd/mean", "/psd/ci_lower", "/bands/level_db", "filetype", "(m/s^2)^2/Hz"):
+        assert name in schema, name
+    codes = text_of(site / "reference" / "generated" / "exit-codes.html")
+    for code in ("64", "65", "66", "73", "78", "130"):
+        assert f" {code} " in codes, code
+    api = text_of(site / "reference" / "python.html")
+    assert "open_result" in api and "run(" in api.replace("run (", "run(")
+    assert (site / "validation" / "benchmarks.html").exists()
+    assert list((site / "_images").glob("goals*.png")), "the benchmark figure from bench/goals.json"
+
+
+def test_readme_is_short_and_has_no_lab_notebook():
+    text = (SOURCE / "README.md").read_text()
+    assert len(text.splitlines()) <= 170
+    hashes = [w for w in re.findall(r"\b[0-9a-f]{7,40}\b", text)
+              if re.search(r"[a-f]", w) and re.search(r"\d", w) and not re.fullmatch(r"\d+e\d+", w)]
+    assert not hashes, f"commit hashes in the README: {hashes}"
+    assert not re.search(r"\bissues? #?\d+", text, re.I), "an issue number in the README"
+    assert not re.search(r"load average", text, re.I), "a load average in the README"
