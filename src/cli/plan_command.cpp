@@ -7,6 +7,7 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/cli/run_phases.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/available_memory.hpp"
 #include "src/scenes/memory_estimate.hpp"
@@ -48,10 +49,11 @@ int plan_command(const Args& args) {
     std::cout << "the study needs more memory than is available: rollspec run refuses it (unless --force); stages not shown\n";
     return 0;
   }
-  const auto scene = scenes::find_scene(s.scene()).make(s);
-  if (scene->runs_ensemble() && !scene->single_run()) {
+  const auto scene = make_scene<scenes::Scene>(s);
+  auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(scene.get());
+  if (ensemble_scene) {
     const double K = static_cast<double>(s.integer("study.realisations")), C = static_cast<double>(s.integer("ensemble.chunk_size"));
-    const double chunk_bytes = 48.0 + 16.0 * static_cast<double>(scene->values_per_realisation());
+    const double chunk_bytes = 48.0 + 16.0 * static_cast<double>(ensemble_scene->values_per_realisation());
     std::cout << "checkpoint disk: " << io::counted(static_cast<unsigned long long>(std::ceil(K / C)), "chunk") << " of " << scenes::format_bytes(chunk_bytes) << " = "
               << scenes::format_bytes(std::ceil(K / C) * chunk_bytes) << " beside the result while the run lasts\n";
   }
@@ -64,7 +66,7 @@ int plan_command(const Args& args) {
     if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
   }
   if (!vm.count("probe")) return 0;
-  if (!scene->runs_ensemble() || scene->single_run()) {
+  if (!ensemble_scene) {
     std::cout << "run time: not probed (no ensemble: the run is one deterministic computation)\n";
     return 0;
   }
@@ -72,11 +74,10 @@ int plan_command(const Args& args) {
     std::cout << "run time: not probed (the stage tables are not built yet; rollspec stiffness builds them)\n";
     return 0;
   }
-  auto probe = scenes::find_scene(s.scene()).make(s);
-  probe->prepare(true, false);
-  std::vector<double> values(probe->values_per_realisation());
+  ensemble_scene->prepare(true, false);  // the tables are cached: this loads them
+  std::vector<double> values(ensemble_scene->values_per_realisation());
   const auto start = std::chrono::steady_clock::now();
-  probe->run_realisation(0, 0, values.data());
+  ensemble_scene->run_realisation(0, 0, values.data());
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double K = static_cast<double>(s.integer("study.realisations"));
   std::printf("run time: %.3g s per realisation (probe of realisation 0); the ensemble of %.0f on %d thread(s): about %.3g s "

@@ -52,7 +52,7 @@ struct Workspace {
       : texture(n_texture), u_phase(harmonics), u_amp(harmonics), welch(segment) {}
 };
 
-class BallOnBeam final : public Scene {
+class BallOnBeam final : public EnsembleScene {
  public:
   explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
     if (b_.blocked_solver() || b_.uses_table() || b_.path_law() || solver_filter()) study_ = &s;

@@ -29,7 +29,7 @@ struct Workspace {
   spectral::WelchWorkspace welch;
 };
 
-class RandomOscillator final : public Scene {
+class RandomOscillator final : public EnsembleScene {
  public:
   explicit RandomOscillator(const Study& s) : o_(read_random_oscillator_settings(s)) {
     welch_ = std::make_unique<spectral::WelchPlan>(o_.welch);

@@ -21,7 +21,7 @@ using Eigen::Vector3d;
 
 namespace {
 
-class RollingBeam final : public Scene {
+class RollingBeam final : public SingleRunScene {
  public:
   explicit RollingBeam(const Study& s) : r_(read_rolling_beam_settings(s)) {
     add_stages(fixed_stages());  // after the members the descriptions name
@@ -39,12 +39,7 @@ class RollingBeam final : public Scene {
     };
   }
 
-  bool runs_ensemble() const override { return false; }
-  bool single_run() const override { return true; }
-  std::size_t values_per_realisation() const override { return 0; }
-  void run_realisation(std::uint64_t, int, double*) const override {}
-
-  void prepare(bool quiet, bool) override {
+  void run(bool quiet) override {
     history_ = rolling::run(r_.model, r_.solver, r_.run);
     if (!history_.completed)
       throw data_error(r_.step_where + ": Newton did not converge at t = " + std::to_string(history_.failed_at) +
@@ -55,7 +50,7 @@ class RollingBeam final : public Scene {
                    history_.newton_iterations, history_.cuts);
   }
 
-  void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums&) const override {
+  void write_results(io::Hdf5Writer& w) const override {
     const auto& h = history_;
     const std::size_t nt = h.time.size(), nn = r_.record.size(), nc = r_.model.contacts.size();
     auto block = [&](const std::vector<std::vector<Vector3d>>& v) {

@@ -43,7 +43,7 @@ enum Extra : std::size_t { curvature_ratio, invalid_contact, open_share, newton_
 
 namespace {
 
-class RollingPipe final : public Scene {
+class RollingPipe final : public EnsembleScene {
  public:
   explicit RollingPipe(const Study& s) : p_(read_rolling_pipe_settings(s)) {
     if (p_.line) {

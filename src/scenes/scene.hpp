@@ -3,6 +3,7 @@
 // (stage.hpp): `rollspec plan` prints their inspect(), prepare() resolves them, and a stage a scene
 // does not need is never computed. To add a scene: a SceneInfo in scene_registry.cpp; to add a
 // stage: a Stage object added in the scene's constructor.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -22,28 +23,25 @@ class Study;
 
 namespace rollspec::scenes {
 
+// What every scene has: its stages. Scenes of the three kinds below add what their command runs.
 class Scene {
  public:
+  Scene() { made_.fetch_add(1, std::memory_order_relaxed); }
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
   virtual ~Scene() = default;
+  // Scenes made in this process: a command makes one (tests hold it to that).
+  static long made() { return made_.load(std::memory_order_relaxed); }
   // inspect() of every stage, in pipeline order.
   std::vector<StagePlan> plan() const {
     std::vector<StagePlan> out;
     for (const auto& s : stages_) out.push_back(s->inspect());
     return out;
   }
-  // Builds or loads what the realisations share (tables, plans); runs once before the ensemble.
+  // Builds or loads what the run shares (tables, plans); runs once before the ensemble or the run.
   // `rebuild` replaces cached tables whose inputs no longer match instead of refusing them.
   // By default resolve() of every stage; scenes that finish their set-up afterwards call it first.
   virtual void prepare(bool quiet, bool rebuild) { resolve_stages(quiet, rebuild); }
-  virtual std::size_t values_per_realisation() const = 0;
-  // Thread-safe for distinct `thread` indices in [0, ensemble_threads()).
-  virtual void run_realisation(std::uint64_t id, int thread, double* values) const = 0;
-  virtual void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const = 0;
-  // False for scenes with no ensemble (e.g. `texture`, written by `rollspec texture`).
-  virtual bool runs_ensemble() const { return true; }
-  // True for scenes whose result is one deterministic run, done in prepare() and written by
-  // write_results() (e.g. `rolling-beam`).
-  virtual bool single_run() const { return false; }
 
  protected:
   template <class S>
@@ -60,21 +58,34 @@ class Scene {
   }
 
  private:
+  inline static std::atomic<long> made_{0};
   std::vector<std::unique_ptr<Stage>> stages_;
 };
 
-// A scene with stages but no ensemble (`texture`, `stiffness`): its work is done by its own command.
-class StageOnlyScene : public Scene {
+// A Monte-Carlo scene: independent realisations, summed by the ensemble driver, written from the sums.
+class EnsembleScene : public Scene {
  public:
-  std::size_t values_per_realisation() const override { return 0; }
-  void run_realisation(std::uint64_t, int, double*) const override {}
-  void write_results(io::Hdf5Writer&, const ensemble::EnsembleSums&) const override {}
-  bool runs_ensemble() const override { return false; }
+  virtual std::size_t values_per_realisation() const = 0;
+  // Thread-safe for distinct `thread` indices in [0, ensemble_threads()).
+  virtual void run_realisation(std::uint64_t id, int thread, double* values) const = 0;
+  virtual void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const = 0;
 };
+
+// One deterministic computation (e.g. `rolling-beam`): run() once after prepare(), then written.
+class SingleRunScene : public Scene {
+ public:
+  virtual void run(bool quiet) = 0;
+  virtual void write_results(io::Hdf5Writer& w) const = 0;
+};
+
+// Scenes whose work is done by their own command from the stages (`texture`, `stiffness`) are
+// plain Scenes: `rollspec run` refuses them.
+enum class SceneKind { ensemble, single_run, stages_only };
 
 struct SceneInfo {
   std::string name;
   std::string description;
+  SceneKind kind;  // which of the scene types make() returns (make_scene checks it)
   std::function<std::vector<study::KeySpec>()> keys;  // scene-specific keys (common keys are added)
   std::function<std::unique_ptr<Scene>(const study::Study&)> make;
 };

@@ -42,7 +42,7 @@ ContactPair study_contact_pair(const Study& s) {
 }
 
 namespace {
-class StiffnessScene final : public StageOnlyScene {
+class StiffnessScene final : public Scene {
  public:
   explicit StiffnessScene(const Study& s) : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
     if (rough_) texture_io::study_psd(s);  // validates the PSD source now

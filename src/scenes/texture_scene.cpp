@@ -23,7 +23,7 @@ std::vector<KeySpec> texture_scene_keys() {
 }
 
 namespace {
-class TextureScene final : public StageOnlyScene {
+class TextureScene final : public Scene {
  public:
   explicit TextureScene(const Study& s) : lines_(s.integer("lines.count")), surfaces_(s.integer("surface.count")) {
     texture_io::study_psd(s);  // validates the PSD source (files, ranges) now

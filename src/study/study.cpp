@@ -3,7 +3,6 @@
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <boost/program_options.hpp>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -15,7 +14,6 @@
 #include "src/error.hpp"
 #include "src/io/input_file.hpp"
 
-namespace po = boost::program_options;
 namespace fs = std::filesystem;
 
 namespace rollspec::study {
@@ -35,8 +33,8 @@ struct RawEntry {
   int line;
 };
 
-// Where each "section.key" sits in the file, in file order, with the syntax checked line by line
-// so a malformed line is reported with its number (Boost.Program_options would only quote it).
+// The study's one INI parser: each "section.key = value" in file order with its line, the syntax
+// checked line by line so a malformed line is reported with its number.
 std::vector<RawEntry> scan_lines(const std::string& file, const std::string& text) {
   std::vector<RawEntry> out;
   std::istringstream in(text);
@@ -218,25 +216,7 @@ Study Study::parse(const std::string& path, std::string text, const std::vector<
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   if (text.empty()) throw config_error(path + ": the study file is empty; it needs at least [study] scene, realisations and seed");
 
-  std::vector<RawEntry> lines = scan_lines(path, text);
-  // Boost.Program_options reads the same text; its order matches the line scan entry by entry.
-  std::istringstream po_in(text);
-  po::parsed_options parsed(nullptr);
-  try {
-    parsed = po::parse_config_file(po_in, po::options_description(), true);
-  } catch (const po::error& e) {
-    throw config_error(path + ": " + e.what());
-  }
-  if (parsed.options.size() != lines.size())
-    throw config_error(path + ": could not match the file's entries to its lines (" +
-                       std::to_string(parsed.options.size()) + " vs " + std::to_string(lines.size()) + ")");
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const auto& opt = parsed.options[i];
-    if (opt.string_key != lines[i].full_key)
-      throw config_error(path + ":" + std::to_string(lines[i].line) + ": could not read key '" + clip(lines[i].full_key) + "'");
-    lines[i].value = opt.value.empty() ? std::string() : trim(opt.value.front());
-  }
-
+  const std::vector<RawEntry> lines = scan_lines(path, text);
   Study s;
   s.file_ = path;
   s.directory_ = fs::path(path).parent_path().string();

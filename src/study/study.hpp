@@ -2,7 +2,7 @@
 // A study: the resolved, validated contents of a study file (INI: [section] + key = value) plus
 // command-line overrides (--set section.key=value) plus documented defaults.
 //
-// Loading reads the file with Boost.Program_options, then checks every entry against the
+// Loading reads the file with one INI parser (file order, line numbers), then checks every entry against the
 // scene's key table (key_spec.hpp) before any work starts: unknown sections and keys,
 // duplicated keys, empty values, NaN/Inf, numbers that are not numbers, out-of-range values,
 // unknown choices and missing files are refused with a UserError that names the file, line,

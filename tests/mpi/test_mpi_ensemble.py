@@ -88,3 +88,17 @@ def test_stiffness_table_realisations_over_two_ranks_are_bitwise_equal(tmp_path)
     with h5py.File(one) as a, h5py.File(two) as b:
         for name in ("force_mean", "force_std", "stiffness_mean", "stiffness_std", "contact_area_mean"):
             assert a["/stiffness/" + name][:].tobytes() == b["/stiffness/" + name][:].tobytes()
+
+
+def test_single_run_is_computed_and_written_once(tmp_path):
+    """A deterministic single run (scene rolling-beam) has no ensemble to share: rank 0 alone
+    computes and writes it; the other ranks validate the study and stop."""
+    study = pathlib.Path(os.environ.get("ROLLSPEC_SOURCE", ".")) / "studies" / "seed000-disc.ini"
+    one, two = tmp_path / "one.h5", tmp_path / "two.h5"
+    r = run([BIN, "run", study, "--out", one])
+    assert r.returncode == 0, r.stderr
+    r = mpi(2, "run", study, "--out", two, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stderr.count("rolling-beam:") == 1, f"computed on more than one rank:\n{r.stderr}"
+    assert r.stdout.count("wrote ") == 1, f"written by more than one rank:\n{r.stdout}"
+    assert_bitwise_equal(one, two)
