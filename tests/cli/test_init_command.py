@@ -24,7 +24,7 @@ def keys_table(scene):
         elif m := re.match(r"^  (\w+) = (.*)$", line):
             key = f"{section}.{m.group(1)}"
             table[key] = [None if m.group(2) == "(required)" else m.group(2), None]
-        elif m := re.match(r"^      allowed: a (?:finite|whole) number(?: in [[(][^])]*[])]| [<>]=? \S+)?"
+        elif m := re.match(r"^      allowed: a (?:finite|whole) number(?: in [\[(][^\])]*[\])]| [<>]=? \S+)?"
                            r"(?:, a power of two)? \((.+)\)$", line):
             table[key][1] = m.group(1)
     return {k: tuple(v) for k, v in table.items()}
