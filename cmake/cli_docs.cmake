@@ -1,6 +1,6 @@
 # Generates the bash completion and the man page of rollspec from the built binary's own help, so
 # neither can go stale: run at build time by cmake/install.cmake as
-#   cmake -DROLLSPEC=<binary> -DCOMPLETION=<out> -DCOMPLETION_TEMPLATE=<.bash.in>
+#   cmake -DROLLSPEC=<binary> -DCOMPLETION=<out> -DCOMPLETION_TEMPLATE=<.bash.in> [-DTEMPLATES=<dir>]
 #         [-DHELP2MAN=<help2man> -DMAN=<out.1> -DMAN_INCLUDE=<static .h2m>] -P cli_docs.cmake
 #
 # It reads `rollspec --help` (the commands: block and options: block), `rollspec COMMAND --help`
@@ -120,6 +120,14 @@ string(REGEX MATCHALL "(^|\n)[a-z][a-z0-9-]*:" scenes "${keys_text}")
 string(REGEX REPLACE "(\n|:)" "" scenes "${scenes}")
 if(NOT scenes)
   message(FATAL_ERROR "no scenes in `${ROLLSPEC} keys`")
+endif()
+
+# --- rollspec init SCENE: the study templates ------------------------------------------------------
+if(TEMPLATES)
+  file(MAKE_DIRECTORY ${TEMPLATES})
+  foreach(scene IN LISTS scenes)
+    rollspec_output(ignored init ${scene} --out ${TEMPLATES}/${scene}.ini --force)
+  endforeach()
 endif()
 
 # --- rollspec COMMAND --help, for each command ----------------------------------------------------
