@@ -46,9 +46,12 @@ std::string describe(const KeySpec& k, const std::string& lead) {
   std::string text = k.doc;
   if (k.unit != "-") text += " [unit: " + k.unit + "]";
   text += ". Allowed: " + allowed_without_unit(k);
-  text += k.default_value ? "; default: " + (k.default_value->empty() ? std::string("empty") : *k.default_value)
+  // "default: X" stays on one line ('\x01' is a space the folding does not break at).
+  text += k.default_value ? "; default:\x01" + (k.default_value->empty() ? std::string("empty") : *k.default_value)
                           : std::string("; required");
-  return comment(text + ".", lead);
+  std::string out = comment(text + ".", lead);
+  std::replace(out.begin(), out.end(), '\x01', ' ');
+  return out;
 }
 
 const KeySpec& spec_of(const std::vector<KeySpec>& keys, const std::string& full_name, const std::string& scene) {
