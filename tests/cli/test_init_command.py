@@ -1,11 +1,12 @@
 """rollspec init SCENE: a commented study template that loads, plans and runs as it stands, whose first keys
 carry their unit and meaning from the key table, and which never replaces a file it did not write."""
 import re
+import subprocess
 
 import h5py
 import pytest
 
-from conftest import EX_CANTCREAT, EX_USAGE, assert_refused, run
+from conftest import BIN, EX_CANTCREAT, EX_USAGE, assert_refused, run
 
 SCENES = ["random-oscillator", "ball-on-beam", "rolling-beam", "rolling-pipe", "stiffness", "texture"]
 OWN_COMMAND = {"stiffness": "stiffness", "texture": "texture"}  # scenes without an ensemble
@@ -152,3 +153,14 @@ def test_unknown_scene_names_the_scenes(scene, tmp_path):
     r = run(["init", scene, "--out", tmp_path / "s.ini"]) if scene else run(["init", "--scene", "nope"])
     assert_refused(r, EX_USAGE, ["unknown scene", *SCENES])
     assert not (tmp_path / "s.ini").exists()
+
+
+def test_usage_and_output_errors(tmp_path):
+    r = run(["init", "--help"])
+    assert r.returncode == 0 and r.stdout.startswith("usage: rollspec init")
+    assert_refused(run(["init", "ball-on-beam", "--frobnicate"]), EX_USAGE, ["frobnicate", "usage: rollspec init"])
+    assert_refused(run(["init", "ball-on-beam", "--out", tmp_path / "missing" / "s.ini"]), EX_CANTCREAT,
+                   ["cannot create output file", "missing/s.ini"])
+    with open("/dev/full", "w") as full:
+        r = subprocess.run([BIN, "init", "ball-on-beam"], stdout=full, stderr=subprocess.PIPE, text=True)
+    assert r.returncode == 74 and "cannot write standard output" in r.stderr, r.stderr
