@@ -68,6 +68,7 @@ install(FILES ${ROLLSPEC_STUDIES} DESTINATION ${ROLLSPEC_STUDIES_DIR})
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/studies/data DESTINATION ${ROLLSPEC_STUDIES_DIR}
   PATTERN "__pycache__" EXCLUDE PATTERN "*.pyc" EXCLUDE)
 install(DIRECTORY ${ROLLSPEC_TEMPLATES} DESTINATION ${ROLLSPEC_STUDIES_DIR} FILES_MATCHING PATTERN "*.ini")
+install(FILES ${CMAKE_SOURCE_DIR}/studies/templates/README.md DESTINATION ${ROLLSPEC_STUDIES_DIR}/templates)
 
 # --- python-post: the package and the rollspec-post command ----------------------------------------
 #   P/share/rollspec/python/rollspec_post/*.py   the package (no pip, no venv)

@@ -39,6 +39,7 @@ def test_studies_and_their_data_installed(prefix):
     assert tree(studies / "data") == tree(source / "data")
     scenes = [line.split(":")[0] for line in run(prefix / "bin" / "rollspec", "keys").stdout.splitlines()]
     assert sorted(p.stem for p in (studies / "templates").glob("*.ini")) == sorted(scenes)
+    assert "rollspec init" in (studies / "templates" / "README.md").read_text()
 
 
 def test_installed_study_plans_and_runs_from_elsewhere(prefix, tmp_path):
