@@ -54,8 +54,16 @@ struct Measurement {
   std::vector<double> frequency, psd;
 };
 
-Measurement read_measurement(const std::string& path, const std::string& column) {
-  const io::CsvTable m = io::read_csv(path);
+// A spreadsheet export of a measured PSD: preamble lines before the header skipped (and said), or
+// --skip-rows; delimiter and decimal comma as `rollspec psd` reads a signal.
+Measurement read_measurement(const std::string& path, const std::string& column, long long skip_rows) {
+  io::CsvReadOptions options;
+  options.find_header = true;
+  options.skip_rows = skip_rows;
+  const io::CsvTable m = io::read_csv(path, options);
+  if (m.preamble_lines > 0)
+    std::cerr << "rollspec compare: " << path << ": skipped " << io::counted(static_cast<unsigned long long>(m.preamble_lines), "preamble line")
+              << " before the header '" << clip(m.header_text) << "' (line " << m.header_line << "; --skip-rows N says where it is)\n";
   const std::size_t fc = m.column_index("frequency_hz");
   io::require_increasing(m, fc);
   Measurement out{m.values[fc], m.values[m.column_index(column.empty() ? "psd" : column)]};
@@ -70,10 +78,9 @@ Measurement read_measurement(const std::string& path, const std::string& column)
 
 }  // namespace
 
-int compare_command(const Args& args) {
-  const std::string usage =
+const char* const kCompareUsage =
       "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M]\n"
-      "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json]\n"
+      "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json] [--skip-rows N]\n"
       "\n"
       "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: `psd`, or the one\n"
       "--column names (so the output of `rollspec psd` is read directly). For every third-octave band of the\n"
@@ -83,10 +90,16 @@ int compare_command(const Args& args) {
       "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
       "answers the question the output states. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
       "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
-      "--format json writes everything.";
+      "--format json writes everything.\n"
+      "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
+      "--skip-rows N: the header follows the first N lines.";
+
+int compare_command(const Args& args) {
+  const std::string usage = kCompareUsage;
   po::options_description opts("options");
   std::string result, measurement, format = "table", sensor, column;
   double fmin = 0.0, fmax = INFINITY, records = 0.0;
+  long long skip_rows = -1;
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
       "sensor", po::value(&sensor), "sensor name or index in the result (default: sensor_mean if present, else 0)")(
@@ -94,7 +107,8 @@ int compare_command(const Args& args) {
       "measured-averages", po::value(&records), "independent records averaged into the measurement (>= 1)")(
       "fmin", po::value(&fmin)->default_value(0.0), "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
-      "format", po::value(&format)->default_value("table"), "table, csv or json");
+      "format", po::value(&format)->default_value("table"), "table, csv or json")(
+      "skip-rows", po::value(&skip_rows), "measurement CSV lines before its header (default: found from the data)");
   po::positional_options_description pos;
   pos.add("result", 1).add("measurement", 1);
   po::variables_map vm;
@@ -110,7 +124,9 @@ int compare_command(const Args& args) {
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
   const io::BandLevels b = io::read_band_levels(r, sensor);
-  const Measurement m = read_measurement(measurement, column);
+  if (vm.count("skip-rows") && skip_rows < 0)
+    throw usage_error("--skip-rows " + std::to_string(skip_rows) + ": allowed: a whole number >= 0 (lines before the header)");
+  const Measurement m = read_measurement(measurement, column, skip_rows);
   const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
   const int pct = static_cast<int>(std::lround(100.0 * b.confidence));
   const std::string question =

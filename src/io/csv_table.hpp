@@ -1,8 +1,10 @@
 #pragma once
 // Numeric CSV/text files with one header line: measured signals, PSD tables, measurements.
 // The delimiter is taken from the header line: tab if it holds one, else ';' if it holds one, else ','.
-// With ';' a decimal comma is accepted (European loggers write `0,125;1,5`), but one file uses one
-// decimal mark: a value with the other mark, or with both, is refused. Names and values may be
+// With ';' or tab a decimal comma is accepted (European loggers write `0,125;1,5`), but one file uses
+// one decimal mark: a value with the other mark, or with both, is refused. CsvReadOptions::find_header
+// (measured signals) also skips preamble lines before the header and reads a one-column file with a
+// decimal comma (csv_layout.hpp). Names and values may be
 // enclosed in double quotes (spreadsheet exports). Errors name the file, line, column and value
 // (exit 65), or the missing file (exit 66).
 #include <string>
@@ -15,8 +17,15 @@ struct CsvTable {
   std::vector<std::string> columns;          // header names, trimmed
   std::vector<std::vector<double>> values;   // values[column][row]
   std::vector<int> lines;                    // file line of each row
-  char delimiter = ',';                      // ',', ';' or '\t'
+  char delimiter = ',';                      // ',', ';', '\t', or 0: one column
   bool decimal_comma = false;                // true if the numbers were written with a decimal comma
+  int header_line = 0;                       // file line of the header
+  std::string header_text;                   // the header line as written
+  int preamble_lines = 0;                    // lines skipped (found, not --skip-rows) before the header
+  bool layout_found = false;                 // find_header: the header and delimiter came from the data rows
+  // Printed precision of each column: most decimal places (fixed notation) and most significant digits
+  // of any value; rounded time stamps are judged by them (time_column.hpp).
+  std::vector<int> decimals, significant;
 
   std::size_t rows() const { return lines.size(); }
   std::size_t column_index(const std::string& name) const;  // throws data_error naming the columns found
@@ -24,12 +33,17 @@ struct CsvTable {
   std::string where(std::size_t row) const { return file + ":" + std::to_string(lines[row]); }
 };
 
-CsvTable read_csv(const std::string& path);
+struct CsvReadOptions {
+  bool find_header = false;  // preamble lines, delimiter from the data rows, one-column decimal comma
+  long long skip_rows = -1;  // >= 0: skip this many lines of the file, the next is the header
+};
+
+CsvTable read_csv(const std::string& path, const CsvReadOptions& options = {});
 
 // The delimiter of a header line: '\t' if it holds a tab, else ';' if it holds one, else ','.
 char detect_delimiter(const std::string& header);
 
-// "comma", "semicolon", "tab": for messages.
+// "comma", "semicolon", "tab", "none" (one column): for messages.
 const char* delimiter_name(char delimiter);
 
 // Checks that a column strictly increases (a frequency axis); throws data_error naming the row.

@@ -37,7 +37,7 @@ Family by_extension(const std::string& path) {
 }
 }  // namespace
 
-SignalTable read_signal(const std::string& path) {
+SignalTable read_signal(const std::string& path, const SignalRequest& request) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw missing_input("cannot read '" + path + "': it is a directory; expected a signal file (CSV/text, WAV/FLAC, .mat)");
@@ -51,12 +51,19 @@ SignalTable read_signal(const std::string& path) {
   in.read(head, sizeof head);
   Family family = by_content(std::string(head, static_cast<std::size_t>(in.gcount())));
   if (family == Family::text) family = by_extension(path);
+  if (family != Family::text && request.skip_rows >= 0)
+    throw usage_error("--skip-rows: '" + path + "' is a " + (family == Family::sound ? "sound" : "MATLAB .mat") +
+                      " file, not CSV text; allowed: --skip-rows with CSV/text files only");
+  if (family == Family::sound && !request.time_column.empty() && request.time_column != "none")
+    throw usage_error("--time-column " + clip(request.time_column) + ": '" + path +
+                      "' is a sound file (its rate is in the header, it has no time column); allowed: --time-column with "
+                      "CSV/text and .mat files");
   switch (family) {
     case Family::sound: return read_sound_signal(path);
-    case Family::mat: return read_mat_signal(path);
+    case Family::mat: return read_mat_signal(path, request);
     case Family::text: break;
   }
-  return read_csv_signal(path);
+  return read_csv_signal(path, request);
 }
 
 }  // namespace rollspec::io

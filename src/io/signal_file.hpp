@@ -23,31 +23,37 @@ struct SignalTable {
   std::size_t time_samples = 0;              // its length (a .mat time vector must match the channels)
   std::string unit;                          // unit of values: "as stored", "full scale" (integer PCM), then "m/s^2"
   std::vector<std::pair<std::string, std::string>> skipped;  // .mat variables that are not channels, and why
+  std::vector<std::string> notes;            // choices made without being asked (delimiter, header, rate), one line each
 
   std::size_t samples() const { return values.empty() ? 0 : values.front().size(); }
 };
 
+struct SignalRequest {
+  std::vector<std::string> columns;  // --column values (each a name, or comma-separated names); empty: all channels
+  double fs = 0.0;                   // --fs; 0: from the file. Overrides a CSV time column (with a note).
+  std::string unit = "m/s2";         // --unit: m/s2 or g, or one per picked channel, comma-separated
+  double scale = 1.0;                // --scale: physical units (of --unit) per file unit / per full scale
+  bool scale_given = false;          // integer PCM needs it: full scale is no physical unit
+  std::string time_column;           // --time-column: "" (by name), "none", or the column to use
+  long long skip_rows = -1;          // --skip-rows: lines before a CSV header; -1: found from the data
+};
+
 // Readers, one per family (signal_csv.cpp, signal_sound.cpp, signal_mat.cpp). The path exists and is a
 // regular file.
-SignalTable read_csv_signal(const std::string& path);
+SignalTable read_csv_signal(const std::string& path, const SignalRequest& request = {});
 SignalTable read_sound_signal(const std::string& path);
-SignalTable read_mat_signal(const std::string& path);
+SignalTable read_mat_signal(const std::string& path, const SignalRequest& request = {});
 
 // Any of the above, by content (RIFF/FORM/fLaC/OggS/.snd magic, "MATLAB" header), else by extension
 // (.wav .flac .aif(f) .au .ogg .caf .w64 .rf64: sound; .mat: MATLAB), else text.
-SignalTable read_signal(const std::string& path);
-
-struct SignalRequest {
-  std::vector<std::string> columns;  // --column values (each a name, or comma-separated names); empty: all channels
-  double fs = 0.0;                   // --fs; 0: from the file
-  std::string unit = "m/s2";         // --unit: m/s2 or g
-  double scale = 1.0;                // --scale: physical units (of --unit) per file unit / per full scale
-};
+// Options a file kind has no use for are refused: --skip-rows except for CSV, --time-column NAME for
+// sound files.
+SignalTable read_signal(const std::string& path, const SignalRequest& request = {});
 
 constexpr double kStandardGravity = 9.80665;  // m/s² per g, exact (CGPM 1901)
 
 // Accepted --unit values, for messages.
-constexpr const char* kSignalUnits = "m/s2 (also m/s^2) or g";
+constexpr const char* kSignalUnits = "m/s2 (also m/s^2) or g, one for all channels or one per channel (g,m/s2)";
 
 // Reads `path` and returns the picked channels, all of one length, in m/s², with sample_rate set (the
 // file's, or --fs where they agree within kRateTolerance, or --fs alone).

@@ -136,7 +136,12 @@ std::string version_name(mat_ft v) {
 }
 }  // namespace
 
-SignalTable read_mat_signal(const std::string& path) {
+SignalTable read_mat_signal(const std::string& path, const SignalRequest& request) {
+  // --time-column: the time vector by name, none, or (default) the variable named like a time
+  const auto is_time = [&](const std::string& name) {
+    if (request.time_column == "none") return false;
+    return request.time_column.empty() ? time_column_unit(name) != 0.0 : name == request.time_column;
+  };
   static const bool logging = (Mat_LogInitFunc("rollspec", matio_log), true);
   (void)logging;
   matio_messages.clear();
@@ -168,7 +173,7 @@ SignalTable read_mat_signal(const std::string& path) {
     // still be read with --fs, and matio cannot rename variables.
     if (is_rate_name(v.name) && !scalar) {
       s.skipped.emplace_back(v.name, "named like a sample rate, but " + (why.empty() ? v.shape() : why) + ", not a scalar");
-    } else if (time_column_unit(v.name) != 0.0 && !vector) {
+    } else if (is_time(v.name) && !vector) {
       s.skipped.emplace_back(v.name, "named like a time vector, but " + (why.empty() ? v.shape() : why) + ", not a vector");
     } else if (is_rate_name(v.name)) {
       const double fs = read_values(m.get(), s, v).front();
@@ -182,7 +187,7 @@ SignalTable read_mat_signal(const std::string& path) {
       s.sample_rate = fs;
       rate_var = v.name;
       s.rate_source = "variable '" + v.name + "'";
-    } else if (time_column_unit(v.name) != 0.0) {
+    } else if (is_time(v.name)) {
       if (!s.time_column.empty())
         throw data_error(path + ": two time variables, '" + s.time_column + "' and '" + v.name + "'; allowed: at most one");
       s.time_column = v.name;
@@ -207,11 +212,18 @@ SignalTable read_mat_signal(const std::string& path) {
       }
     }
   }
+  if (s.time_column.empty() && !request.time_column.empty() && request.time_column != "none") {
+    std::string names;
+    for (const auto& v : vars) names += (names.empty() ? "" : ", ") + v.name;
+    throw usage_error("--time-column " + clip(request.time_column) + ": no such vector variable in " + path + "; variables: " +
+                      clip(names, 400) + "; allowed: a real numeric vector of time stamps, or none");
+  }
   if (!s.time_column.empty()) {
     const auto& tv = *std::find_if(vars.begin(), vars.end(), [&](const VarInfo& v) { return v.name == s.time_column; });
     const auto t = read_values(m.get(), s, tv);
     s.time_samples = t.size();
-    const double fs = rate_from_time_stamps(t, time_column_unit(tv.name), tv.name, [&](std::size_t i) {
+    const double unit = time_column_unit(tv.name);  // a vector picked by --time-column with no unit in its name: seconds
+    const double fs = rate_from_time_stamps(t, unit == 0.0 ? 1.0 : unit, tv.name, [&](std::size_t i) {
       return path + ": variable '" + tv.name + "' element " + std::to_string(i + 1);
     });
     if (s.sample_rate > 0.0 && std::fabs(fs - s.sample_rate) > kRateTolerance * s.sample_rate)

@@ -11,10 +11,26 @@
 namespace rollspec::io {
 
 namespace {
-double unit_factor(const std::string& unit) {
+double unit_factor(const std::string& unit, const std::string& whole) {
   if (unit == "m/s2" || unit == "m/s^2") return 1.0;
   if (unit == "g") return kStandardGravity;
-  throw usage_error("--unit " + clip(unit) + ": allowed: " + kSignalUnits);
+  throw usage_error("--unit " + clip(whole) + (unit == whole ? "" : ": '" + clip(unit) + "'") + ": allowed: " + kSignalUnits);
+}
+
+// --unit: one unit for every channel, or one per picked channel in their order ("g,m/s^2").
+std::vector<double> unit_factors(const std::string& units) {
+  std::vector<double> out;
+  std::size_t from = 0;
+  for (;;) {
+    const auto comma = units.find(',', from);
+    const auto end = comma == std::string::npos ? units.size() : comma;
+    const auto b = units.find_first_not_of(" \t", from);
+    const auto e = units.find_last_not_of(" \t", end == 0 ? 0 : end - 1);
+    const std::string one = b == std::string::npos || b >= end ? "" : units.substr(b, e - b + 1);
+    out.push_back(unit_factor(one, units));
+    if (comma == std::string::npos) return out;
+    from = comma + 1;
+  }
 }
 
 std::string list(const std::vector<std::string>& names) {
@@ -100,10 +116,16 @@ std::vector<std::size_t> pick(const SignalTable& s, const std::vector<std::strin
 }  // namespace
 
 SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
-  const double unit = unit_factor(r.unit);
+  const std::vector<double> units = unit_factors(r.unit);
   if (!(r.scale > 0.0) || !std::isfinite(r.scale))
     throw usage_error("--scale " + number_text(r.scale) + ": allowed: a finite number > 0 (physical units per file unit or per full scale)");
-  SignalTable s = read_signal(path);
+  SignalTable s = read_signal(path, r);
+  // Integer PCM holds fractions of full scale, which is no physical unit: read as 1 g, a 50 g
+  // recorder's data would come out 34 dB low without a word.
+  if (s.unit == "full scale" && !r.scale_given)
+    throw usage_error(path + ": integer PCM (" + s.format + ") holds fractions of the recorder's full scale, not accelerations; " +
+                      "give --scale X, the value of full scale in --unit (a recorder whose full scale is 50 g: --scale 50 --unit g); " +
+                      "float sound files are read as stored and need no --scale");
   if (s.channels.empty())
     throw data_error(path + ": no channels in this " + s.format +
                      (s.time_column.empty() ? "" : "; '" + s.time_column + "' is its time column") +
@@ -114,6 +136,7 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
   SignalTable out;
   out.file = s.file;
   out.format = s.format;
+  out.notes = s.notes;
   out.time_column = s.time_column;
   out.time_samples = s.time_samples;
   for (const auto i : picked) {
@@ -141,6 +164,8 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
   } else if (s.sample_rate > 0.0) {
     out.sample_rate = s.sample_rate;
     out.rate_source = s.rate_source;
+    if (s.time_column.empty() || s.rate_source.rfind("time column", 0) != 0)
+      out.notes.push_back(path + ": sample rate " + rate_text(s.sample_rate) + " Hz from " + s.rate_source + "; --fs must agree with it");
   } else {
     throw usage_error(path + ": no sample rate in this " + s.format +
                       "; give --fs HZ, or a time column (t, time, time_s, Time (s), t [ms], ...)" +
@@ -148,11 +173,16 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
                       (s.skipped.empty() ? "" : "; not used: " + skipped_list(s)));
   }
 
+  if (units.size() != 1 && units.size() != out.channels.size())
+    throw usage_error("--unit " + clip(r.unit) + ": " + counted(units.size(), "unit") + " for " +
+                      counted(out.channels.size(), "channel") + " (" + list(out.channels) +
+                      "); allowed: one unit for all channels, or one per channel in that order");
   // Samples are scaled, not the PSD: the table then holds what it says, m/s².
-  const double factor = r.scale * unit;
-  if (factor != 1.0)
-    for (auto& v : out.values)
-      for (double& x : v) x *= factor;
+  for (std::size_t c = 0; c < out.values.size(); ++c) {
+    const double factor = r.scale * units[units.size() == 1 ? 0 : c];
+    if (factor != 1.0)
+      for (double& x : out.values[c]) x *= factor;
+  }
   out.unit = "m/s^2";
   return out;
 }

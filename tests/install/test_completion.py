@@ -40,6 +40,17 @@ def long_options(command):
     return sorted(re.search(r"--[a-z][a-z0-9-]*", line).group(0) for line in entries)
 
 
+def positional_options(command):
+    """Options that only name a positional argument of the first usage line (STUDY.ini: --study,
+    SIGNAL: --signal, [SCENE]: --scene): completed after they are typed, never offered."""
+    text = help_text(command)
+    if not text.startswith("usage:"):
+        return set()
+    first = text.split("\n\n")[0].split("\n       rollspec ")[0]
+    return {"--" + m.lower() for m in re.findall(r"(?<![-\w])\[?([A-Z][A-Z_]+)(?:\.[a-z0-9]+)?\]?(?=[\s\]]|$)", first.split(command, 1)[1])
+            if not re.search(r"--[a-z-]+ \[?" + m, first)}
+
+
 def complete(*words, cwd=None):
     """COMPREPLY for the command line `words` with the cursor at the end of the last word."""
     script = (f"source {BASH_COMPLETION}\nsource {shlex.quote(str(COMPLETION))}\n"
@@ -73,7 +84,7 @@ def test_every_command_is_offered():
 @pytest.mark.parametrize("command", commands())
 def test_every_long_option_is_offered(command):
     offered = complete("rollspec", command, "--")
-    assert offered == long_options(command)
+    assert offered == sorted(set(long_options(command)) - positional_options(command))
     if offered:
         assert complete("rollspec", command, "--he") == ["--help"]
 
@@ -112,3 +123,49 @@ def test_scene_names_after_keys():
     assert complete("rollspec", "keys", "") == scenes
     assert complete("rollspec", "keys", "rolling-") == ["rolling-beam", "rolling-pipe"]
     assert complete("rollspec", "keys", "ball-on-beam", "") == []
+
+
+def test_positional_options_are_hidden():
+    assert positional_options("run") == {"--study"}
+    assert positional_options("psd") == {"--signal"}
+    assert positional_options("compare") == {"--result", "--measurement"}
+    assert complete("rollspec", "run", "--st") == []
+    assert complete("rollspec", "plan", "--s") == ["--set"]
+
+
+def test_psd_completes_its_signal_and_options(files):
+    assert complete("rollspec", "psd", "", cwd=files) == ["folder", "measured.csv", "notes.txt", "result.h5", "study.ini"]
+    assert complete("rollspec", "psd", "--ti") == ["--time-column"]
+    assert complete("rollspec", "psd", "--skip-rows", "3", "", cwd=files) == ["folder", "measured.csv", "notes.txt", "result.h5", "study.ini"]
+    assert complete("rollspec", "psd", "--unit", "") == ["g", "m/s2"]
+
+
+def scene_keys():
+    keys = set()
+    scenes = re.findall(r"^([a-z][a-z0-9-]*):", subprocess.run([BIN, "keys"], capture_output=True, text=True).stdout, re.M)
+    for scene in scenes:
+        section = None
+        for line in subprocess.run([BIN, "keys", scene], capture_output=True, text=True).stdout.splitlines():
+            m = re.match(r"^\[(\w+)\]$", line)
+            if m:
+                section = m.group(1)
+            m = re.match(r"^  (\w+) = ", line)
+            if m and section:
+                keys.add(f"{section}.{m.group(1)}=")
+    return sorted(keys)
+
+
+def test_set_completes_every_key_of_rollspec_keys():
+    keys = scene_keys()
+    assert "study.seed=" in keys and len(keys) > 30
+    for command in ("run", "plan", "texture", "stiffness", "modes"):
+        assert complete("rollspec", command, "--set", "") == keys
+    assert complete("rollspec", "run", "--set", "study.se") == ["study.seed="]
+    assert complete("rollspec", "plan", "s.ini", "--set", "spectrum.") == [k for k in keys if k.startswith("spectrum.")]
+
+
+def test_set_completes_the_values_of_a_choice_key():
+    # bash splits `--set spectrum.window=re` at '=': words --set, spectrum.window, =, re
+    assert complete("rollspec", "run", "--set", "spectrum.window", "=", "") == ["hann", "rectangular"]
+    assert complete("rollspec", "plan", "--set", "study.scene", "=", "rolling-") == ["rolling-beam", "rolling-pipe"]
+    assert complete("rollspec", "run", "--set", "study.seed", "=", "") == []  # a number: nothing offered
