@@ -1,6 +1,6 @@
 # Generates the bash completion and the man page of rollspec from the built binary's own help, so
 # neither can go stale: run at build time by cmake/install.cmake as
-#   cmake -DROLLSPEC=<binary> -DCOMPLETION=<out> -DCOMPLETION_TEMPLATE=<.bash.in>
+#   cmake -DROLLSPEC=<binary> -DCOMPLETION=<out> -DCOMPLETION_TEMPLATE=<.bash.in> [-DTEMPLATES=<dir>]
 #         [-DHELP2MAN=<help2man> -DMAN=<out.1> -DMAN_INCLUDE=<static .h2m>] -P cli_docs.cmake
 #
 # It reads `rollspec --help` (the commands: block and options: block), `rollspec COMMAND --help`
@@ -151,6 +151,14 @@ list(REMOVE_DUPLICATES set_keys)
 list(SORT set_keys)
 if(NOT set_keys)
   message(FATAL_ERROR "no section.key in `${ROLLSPEC} keys SCENE`")
+endif()
+
+# --- rollspec init SCENE: the study templates ------------------------------------------------------
+if(TEMPLATES)
+  file(MAKE_DIRECTORY ${TEMPLATES})
+  foreach(scene IN LISTS scenes)
+    rollspec_output(ignored init ${scene} --out ${TEMPLATES}/${scene}.ini --force)
+  endforeach()
 endif()
 
 # --- rollspec COMMAND --help, for each command ----------------------------------------------------

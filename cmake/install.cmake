@@ -7,6 +7,8 @@
 #     rollspecFFTW3.cmake: find_package(rollspec) -> rollspec::kernels          here
 #   P/share/man/man1/rollspec.1                     here, help2man on the built binary
 #   P/share/bash-completion/completions/rollspec    here, from the built binary's help texts
+#   P/share/rollspec/studies/*.ini, data/**         here: the example studies and the files they read
+#   P/share/rollspec/studies/templates/SCENE.ini    here, `rollspec init SCENE` of the built binary
 #   P/bin/rollspec-post, P/share/rollspec/python/rollspec_post  here (python-post, see the end)
 # Nothing here needs the tests or the benchmarks.
 include(CMakePackageConfigHelpers)
@@ -26,13 +28,16 @@ install(FILES ${CMAKE_BINARY_DIR}/package/rollspecConfig.cmake ${CMAKE_BINARY_DI
 # cmake/cli_docs.cmake runs `rollspec --help`, `rollspec COMMAND --help` for every command it lists,
 # `rollspec keys` and `rollspec --version`, and writes the completion (template
 # cmake/rollspec-completion.bash.in) and, with help2man, the man page (cmake/rollspec.h2m plus
-# every command's help as the COMMANDS section). Both are rebuilt whenever rollspec is.
+# every command's help as the COMMANDS section), and `rollspec init SCENE` for every scene as the
+# study templates. All are rebuilt whenever rollspec is.
 find_program(HELP2MAN_EXECUTABLE help2man)
 set(ROLLSPEC_COMPLETION ${CMAKE_BINARY_DIR}/share/bash-completion/completions/rollspec)
 set(ROLLSPEC_MAN_PAGE ${CMAKE_BINARY_DIR}/share/man/man1/rollspec.1)
-set(cli_docs_outputs ${ROLLSPEC_COMPLETION})
+set(ROLLSPEC_TEMPLATES ${CMAKE_BINARY_DIR}/share/rollspec/studies/templates)
+# One template stands for all: cli_docs.cmake writes one per scene into the directory.
+set(cli_docs_outputs ${ROLLSPEC_COMPLETION} ${ROLLSPEC_TEMPLATES}/ball-on-beam.ini)
 set(cli_docs_args -DROLLSPEC=$<TARGET_FILE:rollspec> -DCOMPLETION=${ROLLSPEC_COMPLETION}
-  -DCOMPLETION_TEMPLATE=${CMAKE_CURRENT_LIST_DIR}/rollspec-completion.bash.in)
+  -DCOMPLETION_TEMPLATE=${CMAKE_CURRENT_LIST_DIR}/rollspec-completion.bash.in -DTEMPLATES=${ROLLSPEC_TEMPLATES})
 if(HELP2MAN_EXECUTABLE)
   set(ROLLSPEC_MAN_PAGE_BUILT ON)
   list(APPEND cli_docs_outputs ${ROLLSPEC_MAN_PAGE})
@@ -52,6 +57,18 @@ install(FILES ${ROLLSPEC_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-c
 if(ROLLSPEC_MAN_PAGE_BUILT)
   install(FILES ${ROLLSPEC_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 endif()
+
+# --- Example studies ---------------------------------------------------------------------------------
+# Installed as in the sources: a study's relative paths (data/..., its tables/ cache) resolve against
+# the study file's directory, so `rollspec run P/share/rollspec/studies/X.ini` works from anywhere
+# (tables are written beside it: copy the study to a writable directory when P is read-only).
+set(ROLLSPEC_STUDIES_DIR ${CMAKE_INSTALL_DATADIR}/rollspec/studies)
+file(GLOB ROLLSPEC_STUDIES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/studies/*.ini)
+install(FILES ${ROLLSPEC_STUDIES} DESTINATION ${ROLLSPEC_STUDIES_DIR})
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/studies/data DESTINATION ${ROLLSPEC_STUDIES_DIR}
+  PATTERN "__pycache__" EXCLUDE PATTERN "*.pyc" EXCLUDE)
+install(DIRECTORY ${ROLLSPEC_TEMPLATES} DESTINATION ${ROLLSPEC_STUDIES_DIR} FILES_MATCHING PATTERN "*.ini")
+install(FILES ${CMAKE_SOURCE_DIR}/studies/templates/README.md DESTINATION ${ROLLSPEC_STUDIES_DIR}/templates)
 
 # --- python-post: the package and the rollspec-post command ----------------------------------------
 #   P/share/rollspec/python/rollspec_post/*.py   the package (no pip, no venv)

@@ -13,6 +13,7 @@ int plan_command(const Args& args);
 int psd_command(const Args& args);
 int compare_command(const Args& args);
 int keys_command(const Args& args);
+int init_command(const Args& args);
 int texture_command(const Args& args);
 int modes_command(const Args& args);
 int stiffness_command(const Args& args);

@@ -3,6 +3,7 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/cli/section_order.hpp"
 #include "src/scenes/scene.hpp"
 
 namespace rollspec::cli {
@@ -20,12 +21,14 @@ int keys_command(const Args& args) {
     for (const auto& s : scenes::scene_registry()) std::cout << s.name << ": " << s.description << "\n";
     return 0;
   }
-  std::string section;
-  for (const auto& k : scenes::schema_for(scene)) {
-    if (k.section != section) std::cout << (section.empty() ? "" : "\n") << "[" << k.section << "]\n";
-    section = k.section;
-    std::cout << "  " << k.key << " = " << (k.default_value ? *k.default_value : "(required)") << "\n      " << k.doc
-              << "\n      allowed: " << k.allowed() << "\n";
+  // A scene adds keys to common sections ([spectrum]): each section is printed once, with all of them.
+  bool first = true;
+  for (const auto& group : group_by_section(scenes::schema_for(scene))) {
+    std::cout << (first ? "" : "\n") << "[" << group.section << "]\n";
+    first = false;
+    for (const auto& k : group.keys)
+      std::cout << "  " << k.key << " = " << (k.default_value ? *k.default_value : "(required)") << "\n      " << k.doc
+                << "\n      allowed: " << k.allowed() << "\n";
   }
   return 0;
 }

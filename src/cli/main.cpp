@@ -8,6 +8,7 @@
 //   rollspec modes STUDY.ini
 //   rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild]
 //   rollspec keys [SCENE]
+//   rollspec init [SCENE] [--out FILE.ini] [--force]
 //   rollspec version (or rollspec --version, rollspec -V)
 //
 // Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
@@ -44,6 +45,7 @@ const char* kUsage =
     "  stiffness  build or reuse a contact stiffness table (elastic-plastic rough contact)\n"
     "  modes      modal frequencies of a ball-on-beam study's beam\n"
     "  keys       list the study keys of a scene with units, ranges and defaults\n"
+    "  init       write a commented study of a scene to start from\n"
     "  version    print the version, git sha and library versions\n"
     "\n"
     "options:\n"
@@ -99,7 +101,7 @@ int main(int argc, char** argv) {
       {"run", cli::run_command},         {"plan", cli::plan_command}, {"psd", cli::psd_command},
       {"compare", cli::compare_command}, {"keys", cli::keys_command}, {"version", cli::version_command},
       {"texture", cli::texture_command}, {"modes", cli::modes_command},
-      {"stiffness", cli::stiffness_command},
+      {"stiffness", cli::stiffness_command}, {"init", cli::init_command},
   };
   const auto it = commands.find(command);
   if (it == commands.end()) {
