@@ -164,6 +164,10 @@ TEST_CASE("PK core, imposed total load (solve_at_force): bit for bit the referen
         const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid) : smooth_gap(h, grid);
         SolverOptions opt;
         opt.precondition = precondition;
+        // A few of these solves (the plastic Hertz ball without the preconditioner, the hint far too
+        // low) stall for both loops alike: cap them so the test stays short; the capped exits are
+        // compared bit for bit as well.
+        opt.max_iterations = 300;
         if (plastic) opt.hardness = 0.5 * h.p0();
         ContactSolver fast(grid, h.e_star), ref(grid, h.e_star);
         // Cold without a hint (uniform start, every cell listed).
