@@ -1,5 +1,6 @@
 #include "kernels/contact/blocked_force.hpp"
 
+#include "kernels/contact/chunk_loop.hpp"
 #include "kernels/contact/path_window.hpp"
 
 #include <omp.h>
@@ -7,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <exception>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -107,20 +107,11 @@ class PathRunner {
       // not on what the solver ran before. Exceptions are carried out of the region.
       while (static_cast<int>(extra_.size()) < threads - 1)
         extra_.push_back(std::make_unique<ContactSolver>(solver_.grid(), solver_.half_space().e_star()));
-      std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-      for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t>(chunks); ++c) {
-        try {
-          const int t = omp_get_thread_num();
-          ContactSolver& s = t == 0 ? solver_ : *extra_[static_cast<std::size_t>(t - 1)];
-          const std::size_t k0 = static_cast<std::size_t>(c) * chunk;
-          run_chunk(s, k0, std::min(count, k0 + chunk));
-        } catch (...) {
-#pragma omp critical(blocked_force_error)
-          if (!error) error = std::current_exception();
-        }
-      }
-      if (error) std::rethrow_exception(error);
+      detail::for_each_chunk(chunks, threads, [&](std::size_t c, int t) {
+        ContactSolver& s = t == 0 ? solver_ : *extra_[static_cast<std::size_t>(t - 1)];
+        const std::size_t k0 = c * chunk;
+        run_chunk(s, k0, std::min(count, k0 + chunk));
+      });
     }
     double force_sum = 0.0, stiffness_sum = 0.0, frozen_sum = 0.0;
     for (std::size_t k = 0; k < count; ++k) {

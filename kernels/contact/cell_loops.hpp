@@ -1,7 +1,8 @@
 #pragma once
-// Cell loops shared by the contact solver's displacement- and load-controlled iterations
-// (contact_solver.cpp, load_control.cpp; README Eq. 7, 7b): fixed-block reductions with the same bits
-// for any thread count, the CG set marks and the preconditioner I + γ L_S. Internal to the kernel.
+// Cell loops shared by the contact solver's displacement- and load-controlled iterations (the
+// policies of the Polonsky–Keer core, pk_approach.cpp and pk_force.cpp, and the two references;
+// README Eq. 7, 7b): fixed-block reductions with the same bits for any thread count, the CG set
+// marks and the preconditioner I + γ L_S. Internal to the kernel.
 #include <algorithm>
 #include <array>
 #include <cmath>

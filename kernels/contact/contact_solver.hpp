@@ -103,6 +103,18 @@ class ContactSolver {
                                const SolverOptions& options = {},
                                double approach_hint = std::numeric_limits<double>::quiet_NaN());
 
+  // Plain references (contact_solver_reference.cpp, load_control_reference.cpp): the two
+  // Polonsky–Keer loops as first written, kept beside the shared core (polonsky_keer.hpp) so the
+  // doctests can check that the core gives the same bits. Same contracts as solve, solve_load and
+  // solve_at_force.
+  ContactResult solve_reference(const std::vector<double>& gap, double approach, std::vector<double>& pressure,
+                                const SolverOptions& options = {});
+  ContactResult solve_load_reference(const std::vector<double>& gap, double mean_pressure,
+                                     std::vector<double>& pressure, const SolverOptions& options = {});
+  ContactResult solve_at_force_reference(const std::vector<double>& gap, double force, std::vector<double>& pressure,
+                                         const SolverOptions& options = {},
+                                         double approach_hint = std::numeric_limits<double>::quiet_NaN());
+
   // dp/dw on the frozen contact set from the last solve with stiffness (empty if none): the sweep
   // uses it to extrapolate the warm start to the next approach.
   const std::vector<double>& pressure_rate() const { return dp_; }
@@ -117,6 +129,8 @@ class ContactSolver {
  private:
   ContactResult run(const std::vector<double>& gap, double target, bool load, std::vector<double>& pressure,
                     const SolverOptions& options);
+  ContactResult run_reference(const std::vector<double>& gap, double target, bool load, std::vector<double>& pressure,
+                              const SolverOptions& options);
   void frozen_stiffness(const std::vector<double>& pressure, const SolverOptions& options, ContactResult& result);
 
   HalfSpaceOperator op_;
@@ -129,7 +143,7 @@ class ContactSolver {
   std::vector<std::uint32_t> active_, elastic_, sources_, all_;  // A (Eq. 6a), E, v ≠ 0, every cell
   // Coarse start (Eq. 16): the solver on the grid of twice the cell size, made when first needed.
   bool coarse_start(const std::vector<double>& gap, double approach, std::vector<double>& pressure,
-                    const SolverOptions& options, ContactResult& result);
+                    const SolverOptions& options, ContactResult& result, bool reference = false);
   std::unique_ptr<ContactSolver> coarse_;
   std::vector<double> coarse_gap_, coarse_pressure_;
   // Load control (solve_at_force): products on the box of the listed cells; the listed cells L; a

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <stdexcept>
 
+#include "kernels/contact/chunk_loop.hpp"
 #include "kernels/contact/force_control.hpp"
 #include "kernels/contact/path_window.hpp"
 
@@ -127,20 +127,12 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   } else {
     // Chunks in parallel, a fresh solver per chunk (no state carried from whichever chunk a thread
     // ran before; the solver's own loops run on that thread: same bits, README test_threads).
-    // Exceptions are carried out of the parallel region.
-    std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t>(chunks); ++c) {
-      try {
-        ContactSolver own(solver.grid(), solver.half_space().e_star());
-        const std::size_t k0 = static_cast<std::size_t>(c) * chunk;
-        run_chunk(own, k0, std::min(n, k0 + chunk));
-      } catch (...) {
-#pragma omp critical(equivalent_roughness_error)
-        if (!error) error = std::current_exception();
-      }
-    }
-    if (error) std::rethrow_exception(error);
+    // Exceptions are carried out of the parallel region (chunk_loop.hpp).
+    detail::for_each_chunk(chunks, 0, [&](std::size_t c, int) {
+      ContactSolver own(solver.grid(), solver.half_space().e_star());
+      const std::size_t k0 = c * chunk;
+      run_chunk(own, k0, std::min(n, k0 + chunk));
+    });
   }
   for (std::size_t k = 0; k < n; ++k) {
     if (results[k].approach > window.limit(k)) window.reject(k, results[k].approach);  // BF-5 at δ_eq
