@@ -94,6 +94,82 @@ const char* const kCompareUsage =
       "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
       "--skip-rows N: the header follows the first N lines.";
 
+// The bands inside [fmin, fmax] that the measurement covers, with the simulated mean's interval
+// and, for records > 0 (a measurement averaged over that many records), the prediction interval.
+std::vector<BandRow> band_rows(const io::BandLevels& b, const Measurement& m, const std::string& measurement,
+                               double fmin, double fmax, double records) {
+  const bool predict = records > 0.0;
+  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
+  std::vector<BandRow> rows;
+  for (std::size_t k = 0; k < b.level_db.size(); ++k) {
+    if (b.lower[k] < fmin || b.upper[k] > fmax) continue;
+    if (m.frequency.size() < 2 || m.frequency.front() > b.lower[k] || m.frequency.back() < b.upper[k]) continue;
+    const double meas = spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
+    if (!std::isfinite(meas))
+      throw data_error(measurement + ": the measured PSD averaged over the band " + number_text(b.lower[k]) + " .. " +
+                       number_text(b.upper[k]) + " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
+    if (meas <= 0.0) continue;
+    BandRow row{};
+    row.centre = b.nominal[k];
+    row.simulated = b.level_db[k];
+    row.measured = 10.0 * std::log10(meas);
+    row.delta = row.simulated - row.measured;
+    row.ci_lower = b.ci_lower_db[k];
+    row.ci_upper = b.ci_upper_db[k];
+    row.inside_ci = has_interval && row.measured >= row.ci_lower && row.measured <= row.ci_upper;
+    row.pred_lower = row.pred_upper = NAN;
+    if (predict && has_interval) {
+      const double level = std::pow(10.0, row.simulated / 10.0);
+      // The realisations' band averages: mean, spread, and the spread of their log (the level stands in
+      // for the mean of the logs' law, which only needs the spread).
+      const spectral::Scatter sc{level, b.std_dev[k], std::log(level), b.log_std[k]};
+      const auto p = spectral::prediction_interval(sc, b.realisations, records, b.confidence);
+      row.pred_lower = row.simulated + 10.0 * std::log10(p.lower);
+      row.pred_upper = row.simulated + 10.0 * std::log10(p.upper);
+      row.inside_prediction = row.measured >= row.pred_lower && row.measured <= row.pred_upper;
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// What the printed forms of a comparison share.
+struct Comparison {
+  const std::string &result, &measurement, &column;
+  const io::BandLevels& b;
+  const std::vector<BandRow>& rows;
+  bool predict;
+  double records;
+  bool has_interval;
+  const std::string& question;
+  double rms;
+  int inside, judged;
+};
+
+// `--format json`: one object with the inputs, the question, every band and the summary.
+std::string json_text(const Comparison& c) {
+  const auto& [result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged] = c;
+  std::string text;
+  text += "{\n  \"result\": " + json_string(result) + ",\n  \"sensor\": " + json_string(b.sensor) +
+          ",\n  \"measurement\": " + json_string(measurement) + ",\n  \"column\": " + json_string(column.empty() ? "psd" : column) +
+          ",\n  \"realisations\": " + std::to_string(b.realisations) + ",\n  \"confidence_level\": " + json_number(b.confidence) +
+          ",\n  \"interval_method\": " + json_string(b.interval_method) +
+          ",\n  \"measured_averages\": " + (predict ? json_number(records) : "null") + ",\n  \"question\": " + json_string(question) +
+          ",\n  \"bands\": [\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& x = rows[i];
+    text += "    {\"centre_hz\": " + json_number(x.centre) + ", \"simulated_db\": " + json_number(x.simulated) +
+            ", \"measured_db\": " + json_number(x.measured) + ", \"delta_db\": " + json_number(x.delta) +
+            ", \"ci_lower_db\": " + json_number(x.ci_lower) + ", \"ci_upper_db\": " + json_number(x.ci_upper) +
+            ", \"prediction_lower_db\": " + json_number(x.pred_lower) + ", \"prediction_upper_db\": " + json_number(x.pred_upper) +
+            ", \"inside\": " + (!has_interval ? "null" : (predict ? x.inside_prediction : x.inside_ci) ? "true" : "false") + "}" +
+            (i + 1 < rows.size() ? ",\n" : "\n");
+  }
+  text += "  ],\n  \"rms_db_error\": " + json_number(rms) + ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
+          ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) + "\n}\n";
+  return text;
+}
+
 int compare_command(const Args& args) {
   const std::string usage = kCompareUsage;
   po::options_description opts("options");
@@ -137,36 +213,7 @@ int compare_command(const Args& args) {
                       " % interval of the simulated mean? (it ignores the measurement's own scatter; give "
                       "--measured-averages M to ask whether a measurement of M records agrees with the model)";
 
-  std::vector<BandRow> rows;
-  for (std::size_t k = 0; k < b.level_db.size(); ++k) {
-    if (b.lower[k] < fmin || b.upper[k] > fmax) continue;
-    if (m.frequency.size() < 2 || m.frequency.front() > b.lower[k] || m.frequency.back() < b.upper[k]) continue;
-    const double meas = spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
-    if (!std::isfinite(meas))
-      throw data_error(measurement + ": the measured PSD averaged over the band " + number_text(b.lower[k]) + " .. " +
-                       number_text(b.upper[k]) + " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
-    if (meas <= 0.0) continue;
-    BandRow row{};
-    row.centre = b.nominal[k];
-    row.simulated = b.level_db[k];
-    row.measured = 10.0 * std::log10(meas);
-    row.delta = row.simulated - row.measured;
-    row.ci_lower = b.ci_lower_db[k];
-    row.ci_upper = b.ci_upper_db[k];
-    row.inside_ci = has_interval && row.measured >= row.ci_lower && row.measured <= row.ci_upper;
-    row.pred_lower = row.pred_upper = NAN;
-    if (predict && has_interval) {
-      const double level = std::pow(10.0, row.simulated / 10.0);
-      // The realisations' band averages: mean, spread, and the spread of their log (the level stands in
-      // for the mean of the logs' law, which only needs the spread).
-      const spectral::Scatter sc{level, b.std_dev[k], std::log(level), b.log_std[k]};
-      const auto p = spectral::prediction_interval(sc, b.realisations, records, b.confidence);
-      row.pred_lower = row.simulated + 10.0 * std::log10(p.lower);
-      row.pred_upper = row.simulated + 10.0 * std::log10(p.upper);
-      row.inside_prediction = row.measured >= row.pred_lower && row.measured <= row.pred_upper;
-    }
-    rows.push_back(row);
-  }
+  const std::vector<BandRow> rows = band_rows(b, m, measurement, fmin, fmax, predict ? records : 0.0);
   if (rows.empty()) throw data_error(measurement + ": covers none of the result's bands inside [fmin, fmax]");
   double sq = 0.0;
   int inside = 0;
@@ -180,27 +227,11 @@ int compare_command(const Args& args) {
                              b.sensor + "; measurement " + measurement + ", column " + (column.empty() ? "psd" : column);
 
   // Printed only once every band is computed: a refused input leaves no partial output.
+  const Comparison c{result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged};
   std::string text;
   char buf[320];
   if (format == "json") {
-    text += "{\n  \"result\": " + json_string(result) + ",\n  \"sensor\": " + json_string(b.sensor) +
-            ",\n  \"measurement\": " + json_string(measurement) + ",\n  \"column\": " + json_string(column.empty() ? "psd" : column) +
-            ",\n  \"realisations\": " + std::to_string(b.realisations) + ",\n  \"confidence_level\": " + json_number(b.confidence) +
-            ",\n  \"interval_method\": " + json_string(b.interval_method) +
-            ",\n  \"measured_averages\": " + (predict ? json_number(records) : "null") + ",\n  \"question\": " + json_string(question) +
-            ",\n  \"bands\": [\n";
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const auto& x = rows[i];
-      text += "    {\"centre_hz\": " + json_number(x.centre) + ", \"simulated_db\": " + json_number(x.simulated) +
-              ", \"measured_db\": " + json_number(x.measured) + ", \"delta_db\": " + json_number(x.delta) +
-              ", \"ci_lower_db\": " + json_number(x.ci_lower) + ", \"ci_upper_db\": " + json_number(x.ci_upper) +
-              ", \"prediction_lower_db\": " + json_number(x.pred_lower) + ", \"prediction_upper_db\": " + json_number(x.pred_upper) +
-              ", \"inside\": " + (!has_interval ? "null" : (predict ? x.inside_prediction : x.inside_ci) ? "true" : "false") + "}" +
-              (i + 1 < rows.size() ? ",\n" : "\n");
-    }
-    text += "  ],\n  \"rms_db_error\": " + json_number(rms) + ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
-            ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) + "\n}\n";
-    std::fputs(text.c_str(), stdout);
+    std::fputs(json_text(c).c_str(), stdout);
     return 0;
   }
   if (format == "csv")
