@@ -193,7 +193,7 @@ class BallOnBeam final : public Scene {
     if (!(b_.static_compression > 0.0))
       study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
                                                    " N does not reach the ball's weight; raise approach_max");
-    check_contact_resolution(*study_, b_, t.stiffness_at(b_.weight()));
+    check_contact_resolution(b_, t.stiffness_at(b_.weight()));
   }
 
   // law = path (B46): the table is the law; the line roughness is not used (the strip is the roughness).
@@ -299,7 +299,7 @@ class BallOnBeam final : public Scene {
     const double weight = b_.weight();
     b_.model.contact.k0 = blocked_.k0;
     b_.static_compression = weight / blocked_.k0;
-    check_contact_resolution(*study_, b_, blocked_.k0);
+    check_contact_resolution(b_, blocked_.k0);
     f0_step_ = b_.integration_step();
     auto n = static_cast<std::size_t>(std::ceil(beam::traverse_duration(b_.model.traverse) / f0_step_)) + 4;
     n = texture::fast_even_length(n);

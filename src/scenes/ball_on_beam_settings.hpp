@@ -14,6 +14,9 @@
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "kernels/texture/psd.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
 
 namespace rollspec::study {
 class Study;
@@ -33,6 +36,9 @@ enum class ContactFilter { none, patch, iso2d, solver };
 struct BallOnBeamSettings {
   explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}
   std::uint64_t seed = 0;
+  study::ModalBeamSection beam;  // [beam] as read
+  study::BallSection ball;       // [ball] as read
+  study::KeyOrigin substeps_origin;  // [signal] substeps, for the step checks of the table stages
   // Beam, ball, traverse, sensors, output rate and the contact law as far as the keys fix it;
   // the table stages complete the law (compression table, or k0 of the blocked force).
   beam::BallOnBeamModel model;
@@ -87,6 +93,6 @@ std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::ve
 
 // Refuses (at [signal] substeps) a step that does not resolve the ball's bounce on a contact
 // stiffness k_contact at the weight; the table laws call it again once their stiffness is known.
-void check_contact_resolution(const study::Study& s, const BallOnBeamSettings& b, double k_contact);
+void check_contact_resolution(const BallOnBeamSettings& b, double k_contact);
 
 }  // namespace rollspec::scenes

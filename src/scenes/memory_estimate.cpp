@@ -7,12 +7,13 @@
 #include <sstream>
 
 #include "src/error.hpp"
-#include "kernels/contact/geometry.hpp"
 #include "kernels/rolling/solver.hpp"
 #include "src/io/available_memory.hpp"
 #include "src/scenes/rolling_beam_settings.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/blocked_force_geometry.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/study.hpp"
 
 namespace rollspec::scenes {
@@ -41,14 +42,12 @@ std::vector<std::string> where(const study::Study& s, const std::vector<std::str
   return out;
 }
 
-double ball_weight(const study::Study& s) {
-  const double radius = s.real("ball.radius");
-  return 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density") * s.real("ball.gravity");
-}
+// The ball's weight and E* as the scene derives them (ball_section), not a second formula.
+double ball_weight(const study::Study& s) { return study::BallSection::parse(s).weight(); }
 
 double ball_e_star(const study::Study& s) {
-  return contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"), s.real("beam.youngs_modulus"),
-                                    s.real("beam.poisson"));
+  const study::ModalBeamSection beam = study::ModalBeamSection::parse(s);
+  return study::BallSection::parse(s).effective_modulus(beam.properties.youngs_modulus, beam.poisson);
 }
 
 // Contact solves on an nx x ny grid: the padded (2nx x 2ny) half-space operator and its FFT
