@@ -33,7 +33,6 @@
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/strip_equivalent_roughness.hpp"
-#include "src/stiffness/stiffness_keys.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/texture/texture_keys.hpp"
 

@@ -7,7 +7,7 @@
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
-#include "src/stiffness/stiffness_keys.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/ball_section.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/study.hpp"
@@ -86,7 +86,7 @@ std::vector<KeySpec> ball_on_beam_keys() {
     if (t.key == "spacing") t.doc += "; blocked_force = solver: derived from the contact radius and the texture unless set";
     k.push_back(t);
   }
-  for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
+  for (auto& t : study::StiffnessSection::keys()) k.push_back(t);
   for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
   for (auto& t : stiffness::path_table_keys()) k.push_back(t);
   for (auto& t : stiffness::equivalent_roughness_keys()) k.push_back(t);

@@ -2,7 +2,7 @@
 // Scene `ball-on-beam`'s study keys read once, into one value, with the checks that span several
 // keys (the record against the span, the step against the contact's bounce and the modes, the
 // Welch segment against the record). The scene (ball_on_beam.cpp) builds from this value only;
-// the texture, surface and table stages read their own sections (texture_keys, stiffness_keys).
+// the texture, surface and table stages read their own sections (texture_keys, src/study/sections).
 #include <cstddef>
 #include <cstdint>
 #include <limits>

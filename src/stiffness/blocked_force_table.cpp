@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 
 #include <algorithm>
@@ -103,8 +104,8 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
   contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts = strip_solver_options(s);
-  const contact::BallShape shape = strip_ball_shape(s);
+  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
+  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
   if (!quiet) std::fprintf(stderr, "%sblocked force grid: %s\n", ensemble::rank_prefix().c_str(), geo.describe().c_str());
   if (!quiet) std::fprintf(stderr, "%sblocked force: %zu positions on a %zu x %zu strip\n", ensemble::rank_prefix().c_str(), positions.size(), nx, ny);
   contact::ContactSolver solver(window_grid, e_star);

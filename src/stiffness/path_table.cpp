@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/path_table.hpp"
 
 #include <omp.h>
@@ -158,8 +159,8 @@ PathTableData build_path_table(const Study& s, const PathTableGeometry& g, doubl
   const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
   std::vector<double> positions;
   for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
-  contact::SolverOptions opts = strip_solver_options(s);
-  const contact::BallShape shape = strip_ball_shape(s);
+  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
+  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
   contact::PathTableOptions po;
   po.approaches = g.approaches;
   po.reach = kReach;
