@@ -107,8 +107,7 @@ class BallOnBeam final : public Scene {
     if (blocked_solver()) {
       // The strip's grid: the study's keys where set, else derived from the contact radius and the
       // texture; the path step at most v / f_s so F0 reaches the output's Nyquist frequency.
-      const stiffness::BlockedForceGeometry grid = stiffness::blocked_force_geometry(
-          s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(), b_.model.traverse.speed / b_.model.sample_rate);
+      const stiffness::BlockedForceGeometry grid = blocked_force_grid();
       add_contact_table_stage("blocked_force", s, grid, &stiffness::blocked_force_cached_table, &stiffness::build_blocked_force,
                               &BallOnBeam::use_blocked_force, grid.describe());
     } else {
@@ -118,22 +117,21 @@ class BallOnBeam final : public Scene {
     }
     if (solver_filter() && b_.strip_line) {
       // line = strip: h_eq of strip 0 on the path table's grid and positions (the strip law = path uses).
-      const stiffness::PathTableGeometry grid = path_grid(s);
+      const stiffness::PathTableGeometry grid = path_grid();
       add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::strip_equivalent_roughness_cached_table,
                               &stiffness::build_strip_equivalent_roughness, &BallOnBeam::use_strip_equivalent_roughness,
                               stiffness::strip_equivalent_roughness_describe(grid));
     } else if (solver_filter()) {
       // filter = solver (kernels/contact ER-1..ER-6): h_eq on the blocked-force grid, the path step
       // at most v / f_s so the h_eq PSD reaches the band limit (B40).
-      const stiffness::BlockedForceGeometry grid = stiffness::blocked_force_geometry(
-          s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(), b_.model.traverse.speed / b_.model.sample_rate);
+      const stiffness::BlockedForceGeometry grid = blocked_force_grid();
       add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::equivalent_roughness_cached_table,
                               &stiffness::build_equivalent_roughness, &BallOnBeam::use_equivalent_roughness,
                               stiffness::equivalent_roughness_describe(s, grid));
     }
     if (b_.path_law()) {
       // law = path (kernels/beam B41-B46): P(delta, xi) of strip 0 along the ball's whole path.
-      const stiffness::PathTableGeometry grid = path_grid(s);
+      const stiffness::PathTableGeometry grid = path_grid();
       add_contact_table_stage("path_table", s, grid, &stiffness::path_cached_table, &stiffness::build_path_table,
                               &BallOnBeam::use_path_table,
                               grid.describe() + "; every realisation rolls over this one strip (nothing else is random: K > 1 "
@@ -149,9 +147,18 @@ class BallOnBeam final : public Scene {
   }
 
   // The path table's grid along the ball's whole path (law = path, and line = strip on its grid).
-  stiffness::PathTableGeometry path_grid(const Study& s) const {
-    return stiffness::path_table_geometry(s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(),
+  stiffness::PathTableGeometry path_grid() const {
+    return stiffness::path_table_geometry(b_.path_table, b_.blocked_force, b_.strip_surface, b_.texture_psd,
+                                          b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(),
                                           b_.model.traverse.x_end - b_.model.traverse.x_start);
+  }
+
+  // The strip's grid: the study's keys where set, else derived from the contact radius and the
+  // texture; the path step at most v / f_s so F0 (and h_eq) reach the output's Nyquist frequency.
+  stiffness::BlockedForceGeometry blocked_force_grid() const {
+    return stiffness::blocked_force_geometry(b_.blocked_force, b_.strip_surface, b_.texture_psd, b_.model.contact.radius,
+                                             b_.model.contact.effective_modulus, b_.weight(),
+                                             b_.model.traverse.speed / b_.model.sample_rate);
   }
 
   // A cached table of strip 0 that the contact law takes: its file and hash from (study, grid, R, E*,

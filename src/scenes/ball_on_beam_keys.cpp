@@ -9,6 +9,8 @@
 #include "src/stiffness/path_table.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/blocked_force_section.hpp"
+#include "src/study/sections/path_table_section.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -87,8 +89,8 @@ std::vector<KeySpec> ball_on_beam_keys() {
     k.push_back(t);
   }
   for (auto& t : study::StiffnessSection::keys()) k.push_back(t);
-  for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
-  for (auto& t : stiffness::path_table_keys()) k.push_back(t);
+  for (auto& t : BlockedForceSection::keys()) k.push_back(t);
+  for (auto& t : PathTableSection::keys()) k.push_back(t);
   for (auto& t : stiffness::equivalent_roughness_keys()) k.push_back(t);
   return k;
 }

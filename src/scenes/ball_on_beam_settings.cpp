@@ -173,6 +173,9 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.beam = beam_section;
   b.ball = study::BallSection::parse(s);
   b.substeps_origin = {s.where("signal.substeps")};
+  b.blocked_force = study::BlockedForceSection::parse(s);
+  b.path_table = study::PathTableSection::parse(s);
+  b.strip_surface = study::StripSurfaceSection::parse(s);
   b.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   beam::BallOnBeamModel& m = b.model;
   const double length = b.beam.properties.length;

@@ -15,8 +15,11 @@
 #include "kernels/spectral/welch.hpp"
 #include "kernels/texture/psd.hpp"
 #include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/blocked_force_section.hpp"
 #include "src/study/sections/key_origin.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
+#include "src/study/sections/path_table_section.hpp"
+#include "src/study/sections/strip_surface_section.hpp"
 
 namespace rollspec::study {
 class Study;
@@ -38,7 +41,11 @@ struct BallOnBeamSettings {
   std::uint64_t seed = 0;
   study::ModalBeamSection beam;  // [beam] as read
   study::BallSection ball;       // [ball] as read
-  study::KeyOrigin substeps_origin;  // [signal] substeps, for the step checks of the table stages
+  study::KeyOrigin substeps_origin;
+  // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
+  study::BlockedForceSection blocked_force;
+  study::PathTableSection path_table;
+  study::StripSurfaceSection strip_surface;  // [signal] substeps, for the step checks of the table stages
   // Beam, ball, traverse, sensors, output rate and the contact law as far as the keys fix it;
   // the table stages complete the law (compression table, or k0 of the blocked force).
   beam::BallOnBeamModel model;
