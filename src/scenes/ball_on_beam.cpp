@@ -54,8 +54,7 @@ struct Workspace {
 class BallOnBeam final : public Scene {
  public:
   explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
-    if (b_.blocked_solver() || b_.uses_table() || b_.path_law() || solver_filter()) study_ = &s;
-    lines_ = texture_io::study_line_generator(s, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
+    lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
     for (std::size_t k = 0; k < b_.model.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
@@ -197,7 +196,7 @@ class BallOnBeam final : public Scene {
     }
     b_.static_compression = t.approach_at(b_.weight());
     if (!(b_.static_compression > 0.0))
-      study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
+      b_.stiffness.approach_max_origin.refuse("the table's largest force " + std::to_string(t.force_mean.back()) +
                                                    " N does not reach the ball's weight; raise approach_max");
     check_contact_resolution(b_, t.stiffness_at(b_.weight()));
   }
@@ -288,7 +287,7 @@ class BallOnBeam final : public Scene {
     b_.line_psd = std::isfinite(b_.band_limit_wavenumber) ? texture::band_limited(std::move(p), b_.band_limit_wavenumber)
                                                           : std::move(p);
     apply_equivalent_stiffness(t, quiet);
-    lines_ = texture_io::study_line_generator(*study_, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
+    lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     for (auto& ws : workspaces_) {
       ws->u_phase.resize(lines_->harmonics());
       ws->u_amp.resize(lines_->harmonics());
@@ -476,7 +475,7 @@ class BallOnBeam final : public Scene {
         return std::string("contact filter: solver, line PSD of the equivalent roughness h_eq of half-space solves at "
                            "the weight (kernels/contact ER-1..ER-7), Hertz a = ") + a + " um" +
                (b_.equivalent_stiffness ? "; the point law carries the weight with the strips' mean contact stiffness (ER-7)"
-                : uses_table() && study_->text("stiffness.surface") == "rough"
+                : uses_table() && b_.stiffness.rough
                     ? "; the table law's own stiffness (its rough surfaces carry the rough contact's compliance: no ER-7)"
                     : "; the point law's own stiffness ([equivalent_roughness] stiffness = law)");
     }
@@ -642,7 +641,6 @@ class BallOnBeam final : public Scene {
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
   std::vector<double> f0_psd_, f0_half_amplitudes_;
   double f0_step_ = 0.0, f0_df_ = 0.0;
-  const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene
   std::unique_ptr<texture::LineTextureGenerator> lines_;
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;
   beam::UniformSamples strip_line_;  // [equivalent_roughness] line = strip: h_eq of strip 0 along the path

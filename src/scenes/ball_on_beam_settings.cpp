@@ -176,6 +176,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.blocked_force = study::BlockedForceSection::parse(s);
   b.path_table = study::PathTableSection::parse(s);
   b.strip_surface = study::StripSurfaceSection::parse(s);
+  b.stiffness = study::StiffnessSection::parse(s);
+  b.line_keys = texture_io::LineGeneratorKeys::parse(s, "roughness.spacing");
   b.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   beam::BallOnBeamModel& m = b.model;
   const double length = b.beam.properties.length;

@@ -19,7 +19,9 @@
 #include "src/study/sections/key_origin.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/path_table_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/strip_surface_section.hpp"
+#include "src/texture/texture_keys.hpp"
 
 namespace rollspec::study {
 class Study;
@@ -45,7 +47,9 @@ struct BallOnBeamSettings {
   // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
   study::BlockedForceSection blocked_force;
   study::PathTableSection path_table;
-  study::StripSurfaceSection strip_surface;  // [signal] substeps, for the step checks of the table stages
+  study::StripSurfaceSection strip_surface;
+  study::StiffnessSection stiffness;         // [stiffness]: the table law's surface and approach range
+  texture_io::LineGeneratorKeys line_keys;   // the line texture's amplitudes; errors at [roughness] spacing  // [signal] substeps, for the step checks of the table stages
   // Beam, ball, traverse, sensors, output rate and the contact law as far as the keys fix it;
   // the table stages complete the law (compression table, or k0 of the blocked force).
   beam::BallOnBeamModel model;

@@ -43,6 +43,7 @@ StiffnessSection StiffnessSection::parse(const Study& s) {
   t.solver.tolerance = s.real("stiffness.tolerance");
   t.solver.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
   t.ball_rms_origin = {s.where("stiffness.ball_rms")};
+  t.approach_max_origin = {s.where("stiffness.approach_max")};
   for (const auto& k : keys()) t.texts_[k.key] = s.text(k.full_name());
   return t;
 }

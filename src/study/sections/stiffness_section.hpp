@@ -22,7 +22,7 @@ struct StiffnessSection {
   double ball_rms = 0.0, approach_max = 0.0;
   long long steps = 0, realisations = 0;
   contact::SolverOptions solver;  // hardness (0: none, so infinite), tolerance, max_iterations
-  KeyOrigin ball_rms_origin;
+  KeyOrigin ball_rms_origin, approach_max_origin;
 
   static std::vector<KeySpec> keys();
   static StiffnessSection parse(const Study& s);
