@@ -27,13 +27,13 @@
 #include "src/rng/philox_stream.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
+#include "src/scenes/ball_on_beam_writer.hpp"
 #include "src/scenes/psd_rows.hpp"
 #include "src/study/study.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/strip_equivalent_roughness.hpp"
-#include "src/stiffness/stiffness_keys.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -55,8 +55,7 @@ struct Workspace {
 class BallOnBeam final : public EnsembleScene {
  public:
   explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
-    if (b_.blocked_solver() || b_.uses_table() || b_.path_law() || solver_filter()) study_ = &s;
-    lines_ = texture_io::study_line_generator(s, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
+    lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
     for (std::size_t k = 0; k < b_.model.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
@@ -108,8 +107,7 @@ class BallOnBeam final : public EnsembleScene {
     if (blocked_solver()) {
       // The strip's grid: the study's keys where set, else derived from the contact radius and the
       // texture; the path step at most v / f_s so F0 reaches the output's Nyquist frequency.
-      const stiffness::BlockedForceGeometry grid = stiffness::blocked_force_geometry(
-          s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(), b_.model.traverse.speed / b_.model.sample_rate);
+      const stiffness::BlockedForceGeometry grid = blocked_force_grid();
       add_contact_table_stage("blocked_force", s, grid, &stiffness::blocked_force_cached_table, &stiffness::build_blocked_force,
                               &BallOnBeam::use_blocked_force, grid.describe());
     } else {
@@ -119,22 +117,21 @@ class BallOnBeam final : public EnsembleScene {
     }
     if (solver_filter() && b_.strip_line) {
       // line = strip: h_eq of strip 0 on the path table's grid and positions (the strip law = path uses).
-      const stiffness::PathTableGeometry grid = path_grid(s);
+      const stiffness::PathTableGeometry grid = path_grid();
       add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::strip_equivalent_roughness_cached_table,
                               &stiffness::build_strip_equivalent_roughness, &BallOnBeam::use_strip_equivalent_roughness,
                               stiffness::strip_equivalent_roughness_describe(grid));
     } else if (solver_filter()) {
       // filter = solver (kernels/contact ER-1..ER-6): h_eq on the blocked-force grid, the path step
       // at most v / f_s so the h_eq PSD reaches the band limit (B40).
-      const stiffness::BlockedForceGeometry grid = stiffness::blocked_force_geometry(
-          s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(), b_.model.traverse.speed / b_.model.sample_rate);
+      const stiffness::BlockedForceGeometry grid = blocked_force_grid();
       add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::equivalent_roughness_cached_table,
                               &stiffness::build_equivalent_roughness, &BallOnBeam::use_equivalent_roughness,
                               stiffness::equivalent_roughness_describe(s, grid));
     }
     if (b_.path_law()) {
       // law = path (kernels/beam B41-B46): P(delta, xi) of strip 0 along the ball's whole path.
-      const stiffness::PathTableGeometry grid = path_grid(s);
+      const stiffness::PathTableGeometry grid = path_grid();
       add_contact_table_stage("path_table", s, grid, &stiffness::path_cached_table, &stiffness::build_path_table,
                               &BallOnBeam::use_path_table,
                               grid.describe() + "; every realisation rolls over this one strip (nothing else is random: K > 1 "
@@ -150,9 +147,18 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   // The path table's grid along the ball's whole path (law = path, and line = strip on its grid).
-  stiffness::PathTableGeometry path_grid(const Study& s) const {
-    return stiffness::path_table_geometry(s, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(),
+  stiffness::PathTableGeometry path_grid() const {
+    return stiffness::path_table_geometry(b_.path_table, b_.blocked_force, b_.strip_surface, b_.texture_psd,
+                                          b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(),
                                           b_.model.traverse.x_end - b_.model.traverse.x_start);
+  }
+
+  // The strip's grid: the study's keys where set, else derived from the contact radius and the
+  // texture; the path step at most v / f_s so F0 (and h_eq) reach the output's Nyquist frequency.
+  stiffness::BlockedForceGeometry blocked_force_grid() const {
+    return stiffness::blocked_force_geometry(b_.blocked_force, b_.strip_surface, b_.texture_psd, b_.model.contact.radius,
+                                             b_.model.contact.effective_modulus, b_.weight(),
+                                             b_.model.traverse.speed / b_.model.sample_rate);
   }
 
   // A cached table of strip 0 that the contact law takes: its file and hash from (study, grid, R, E*,
@@ -191,9 +197,9 @@ class BallOnBeam final : public EnsembleScene {
     }
     b_.static_compression = t.approach_at(b_.weight());
     if (!(b_.static_compression > 0.0))
-      study_->refuse("stiffness.approach_max", "the table's largest force " + std::to_string(t.force_mean.back()) +
+      b_.stiffness.approach_max_origin.refuse("the table's largest force " + std::to_string(t.force_mean.back()) +
                                                    " N does not reach the ball's weight; raise approach_max");
-    check_contact_resolution(*study_, b_, t.stiffness_at(b_.weight()));
+    check_contact_resolution(b_, t.stiffness_at(b_.weight()));
   }
 
   // law = path (B46): the table is the law; the line roughness is not used (the strip is the roughness).
@@ -282,7 +288,7 @@ class BallOnBeam final : public EnsembleScene {
     b_.line_psd = std::isfinite(b_.band_limit_wavenumber) ? texture::band_limited(std::move(p), b_.band_limit_wavenumber)
                                                           : std::move(p);
     apply_equivalent_stiffness(t, quiet);
-    lines_ = texture_io::study_line_generator(*study_, b_.line_psd, b_.spacing, b_.line_samples, "roughness.spacing");
+    lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     for (auto& ws : workspaces_) {
       ws->u_phase.resize(lines_->harmonics());
       ws->u_amp.resize(lines_->harmonics());
@@ -299,7 +305,7 @@ class BallOnBeam final : public EnsembleScene {
     const double weight = b_.weight();
     b_.model.contact.k0 = blocked_.k0;
     b_.static_compression = weight / blocked_.k0;
-    check_contact_resolution(*study_, b_, blocked_.k0);
+    check_contact_resolution(b_, blocked_.k0);
     f0_step_ = b_.integration_step();
     auto n = static_cast<std::size_t>(std::ceil(beam::traverse_duration(b_.model.traverse) / f0_step_)) + 4;
     n = texture::fast_even_length(n);
@@ -398,62 +404,9 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    const std::size_t nf = welch_->n_freq();
-    const double K = static_cast<double>(sums.count);
-    auto mean_of = [&](std::size_t i) { return sums.mean(i); };
-    auto std_of = [&](std::size_t i) { return sums.std_dev(i); };
-    io::PsdEnsemble e = rows_->ensemble(sums);
-    e.welch_dof = K * welch_->equivalent_dof(b_.samples - b_.skip);  // stationary D-16 value, for information
-    e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
-    e.confidence = b_.confidence;
-    io::write_psd_result(w, e);
-
-    std::vector<double> force(nf), ball(nf);
-    for (std::size_t k = 0; k < nf; ++k) {
-      force[k] = mean_of(rows_->extra_index(k));
-      ball[k] = mean_of(rows_->extra_index(nf + k));
-    }
-    w.write("/contact/force_psd", {nf}, force.data(), "N^2/Hz", "ensemble mean PSD of the contact force");
-    w.write("/ball/acceleration_psd", {nf}, ball.data(), "(m/s^2)^2/Hz", "ensemble mean PSD of the ball acceleration");
-    io::write_frequency_scale(w, "/contact", e.frequency);
-    io::write_frequency_scale(w, "/ball", e.frequency);
-    w.attach_scale("/contact/force_psd", "/contact/frequency", 0);
-    w.attach_scale("/ball/acceleration_psd", "/ball/frequency", 0);
-    const double share = mean_of(rows_->extra_index(2 * nf)), share_std = std_of(rows_->extra_index(2 * nf));
-    w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
-    w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
-    w.attribute("/contact", "law", b_.law_name);
-    w.attribute("/contact", "static_compression", b_.static_compression);
-    w.attribute("/contact", "patch_half_width", b_.patch_half_width);
-    w.attribute("/contact", "filter", b_.filter_applied);
-    if (b_.filter_applied != b_.filter_name)
-      w.attribute("/contact", "filter_requested", b_.filter_name + " (not applied: the contact is solved on the strip)");
-    w.attribute("/contact", "contact_half_width", b_.contact_half_width);
-    w.attribute("/contact", "effective_modulus", b_.model.contact.effective_modulus);
-    if (linearised()) w.attribute("/contact", "k0", b_.model.contact.k0);
-    if (blocked_solver()) {
-      w.attribute("/contact", "blocked_force_approach", blocked_.approach);
-      w.attribute("/contact", "blocked_force_input_hash", blocked_.input_hash);
-    }
-
-    const auto& b = b_.model.beam;
-    std::vector<double> fm(static_cast<std::size_t>(b.modes()));
-    for (int i = 0; i < b.modes(); ++i) fm[static_cast<std::size_t>(i)] = b.frequency(i);
-    w.write("/beam/modal_frequency", {fm.size()}, fm.data(), "Hz", "undamped modal frequencies");
-    const auto& p = b.properties();
-    w.attribute("/beam", "length", p.length);
-    w.attribute("/beam", "effective_length", b.effective_length());
-    w.attribute("/beam", "width", p.width);
-    w.attribute("/beam", "thickness", p.thickness);
-    w.attribute("/beam", "youngs_modulus", p.youngs_modulus);
-    w.attribute("/beam", "density", p.density);
-    w.attribute("/beam", "static_correction", static_cast<std::int64_t>(b.static_correction()));
-    w.write("/sensors/position", {b_.model.sensors.size()}, b_.model.sensors.data(), "m", "sensor positions along the span");
-    w.attribute("/ball", "mass", b_.model.ball.mass);
-    w.attribute("/ball", "speed", b_.model.traverse.speed);
-
-    write_roughness(w);
-    if (writes_reference()) write_linear_reference(w, e.frequency, e.sensors, K);
+    BallOnBeamWriter(b_, *welch_, *rows_, lines_->fundamental(), blocked_,
+                     [this](double f) { return blocked_force_time_psd(f); }, quiet_)
+        .write(w, sums);
     if (b_.time_histories) write_time_histories(w, sums.only);
   }
 
@@ -470,131 +423,12 @@ class BallOnBeam final : public EnsembleScene {
         return std::string("contact filter: solver, line PSD of the equivalent roughness h_eq of half-space solves at "
                            "the weight (kernels/contact ER-1..ER-7), Hertz a = ") + a + " um" +
                (b_.equivalent_stiffness ? "; the point law carries the weight with the strips' mean contact stiffness (ER-7)"
-                : uses_table() && study_->text("stiffness.surface") == "rough"
+                : uses_table() && b_.stiffness.rough
                     ? "; the table law's own stiffness (its rough surfaces carry the rough contact's compliance: no ER-7)"
                     : "; the point law's own stiffness ([equivalent_roughness] stiffness = law)");
     }
     return std::string("contact filter: iso2d, line PSD G_eq of a Hertz disc of radius a = ") + a +
            " um on the isotropic surface (kernels/texture Eq. 38)";
-  }
-
-  // /roughness: the path PSD raw (the study's [texture], no band limit) and what the contact sees
-  // under each filter, band limit (B40) included, on a log grid from the line's fundamental to its
-  // Nyquist wavenumber (python-post roughness_filter_plot). psd_patch: the patch line (B40a-compensated
-  // where it applies) through B35a on the samples; psd_iso2d: Eq. 38 (absent where the PSD has no
-  // isotropic form and the study does not ask for iso2d).
-  void write_roughness(io::Hdf5Writer& w) const {
-    if (blocked_solver() || b_.path_law() || b_.strip_line) return;
-    const double k0 = lines_->fundamental(), k1 = M_PI / b_.spacing;
-    std::vector<double> k;
-    for (std::size_t i = 0;; ++i) {
-      const double v = k0 * std::pow(10.0, static_cast<double>(i) / 100.0);
-      if (v > k1) break;
-      k.push_back(v);
-    }
-    const double a = b_.contact_half_width;
-    std::vector<double> raw(k.size()), patch(k.size()), iso(k.size()), solver(k.size());
-    bool have_iso = true;
-    if (b_.filter == ContactFilter::iso2d) {
-      for (std::size_t i = 0; i < k.size(); ++i) iso[i] = b_.line_psd(k[i]);  // what the line was synthesised from
-    } else {
-      try {  // Eq. 38 at these k only: cheaper than the synthesis table
-        iso = iso2d_line_psd_at(b_, k);
-      } catch (const std::exception&) {
-        have_iso = false;
-      }
-    }
-    // The patch line is drawn compensated for the linear interpolant (B40a) when band-limited below pi/dx.
-    const texture::Psd patch_line = b_.band_limit_wavenumber * b_.spacing < M_PI
-                                        ? texture::interpolation_compensated(b_.psd, b_.spacing)
-                                        : b_.psd;
-    for (std::size_t i = 0; i < k.size(); ++i) {
-      try {
-        raw[i] = b_.texture_psd(k[i]);
-      } catch (const std::domain_error&) {  // a table without extension, beyond the band limit: no power known
-        raw[i] = 0.0;
-      }
-      const double t = beam::contact_patch_transfer(k[i], a, b_.spacing);
-      patch[i] = patch_line(k[i]) * t * t;  // (B35a, B40a)
-    }
-    w.write("/roughness/wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the rolling path (log grid)");
-    w.make_scale("/roughness/wavenumber", "wavenumber");
-    if (solver_filter()) {
-      for (std::size_t i = 0; i < k.size(); ++i) solver[i] = b_.line_psd(k[i]);  // what the line was synthesised from
-      w.write("/roughness/psd_solver", {k.size()}, solver.data(), "m^3",
-              "band-limited strip-mean PSD of the equivalent roughness h_eq (kernels/contact ER-2) the line was "
-              "synthesised from");
-      w.attach_scale("/roughness/psd_solver", "/roughness/wavenumber", 0);
-    }
-    w.write("/roughness/psd_raw", {k.size()}, raw.data(), "m^3", "one-sided line PSD of [texture] along the path");
-    w.write("/roughness/psd_patch", {k.size()}, patch.data(), "m^3",
-            "band-limited psd_raw x T(k)^2 / sinc^4(k dx/2) (B40a, where compensated), T the 1D patch average over 2a "
-            "on the line's samples (kernels/beam B35a)");
-    if (have_iso)
-      w.write("/roughness/psd_iso2d", {k.size()}, iso.data(), "m^3",
-              "G_eq: path PSD of the isotropic surface under a Hertz disc of radius a (kernels/texture Eq. 38)");
-    for (const char* d : {"/roughness/psd_raw", "/roughness/psd_patch", "/roughness/psd_iso2d"})
-      if (have_iso || std::string(d) != "/roughness/psd_iso2d") w.attach_scale(d, "/roughness/wavenumber", 0);
-    w.attribute("/roughness", "filter", b_.filter_applied);
-    w.attribute("/roughness", "contact_half_width", a);
-    w.attribute("/roughness", "spacing", b_.spacing);
-    w.attribute("/roughness", "band_limit_wavenumber", b_.band_limit_wavenumber);
-  }
-
-  // Frequency-domain solution of the linearised model made exact for what the Monte-Carlo
-  // simulates (kernels/beam/linear_reference.hpp; README B34, B34a-c, B35a; D-20).
-  void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,
-                              double realisations) const {
-    beam::LinearReferenceInput in;
-    in.beam = &b_.model.beam;
-    in.ball_mass = b_.model.ball.mass;
-    in.damping = b_.model.contact.damping;
-    in.sensors = b_.model.sensors;
-    in.sensor_mean = rows() > b_.model.sensors.size();
-    in.welch = welch_.get();
-    in.sample_rate = b_.model.sample_rate;
-    beam::ReferenceExcitation& ex = in.excitation;
-    if (blocked_solver()) {
-      ex.time_psd = [this](double fi) { return blocked_force_time_psd(fi); };
-    } else {
-      ex.time_psd = texture::time_psd(b_.line_psd, b_.model.traverse.speed);
-    }
-    ex.blocked_force = blocked_solver();
-    ex.k0 = b_.model.contact.k0;
-    ex.speed = b_.model.traverse.speed;
-    ex.spacing = b_.spacing;
-    ex.patch_half_width = b_.patch_half_width;
-    ex.x_start = b_.model.traverse.x_start;
-    ex.step = b_.integration_step();
-    in.positions = beam::welch_position_blocks(*welch_, b_.samples - b_.skip, b_.skip, b_.model.traverse.x_start,
-                                               b_.model.traverse.speed, b_.model.sample_rate);
-    in.realisations = realisations;
-    in.confidence = b_.confidence;
-    // The reference runs after the ensemble and can take longer than it: shown when over a second.
-    ensemble::Progress progress("linearised reference", beam::linear_reference_steps(in), quiet_);
-    progress.show_after(1.0);
-    const beam::LinearReference ref = beam::linear_reference(in, [&progress] { progress.advance(); });
-    progress.finish();
-    w.write("/reference/psd", {rows(), f.size()}, ref.psd.data(), "(m/s^2)^2/Hz",
-            "expected Welch estimate of the linearised model's frequency-domain PSD, averaged over ball positions");
-    w.write("/reference/psd_raw", {rows(), f.size()}, ref.raw.data(), "(m/s^2)^2/Hz",
-            "the frequency-domain PSD itself at the bin frequencies (not window-smoothed)");
-    w.write("/reference/degrees_of_freedom", {rows(), f.size()}, ref.dof.data(), "1",
-            "chi-square dof of the ensemble mean per bin for the non-stationary record, from the Welch window "
-            "and the ball's positions (/psd/degrees_of_freedom comes from the realisations' scatter)");
-    w.write("/reference/mean_lower", {rows(), f.size()}, ref.mean_lower.data(), "(m/s^2)^2/Hz",
-            "lower end of the range that holds the ensemble mean with the study's confidence if /reference/psd is right");
-    w.write("/reference/mean_upper", {rows(), f.size()}, ref.mean_upper.data(), "(m/s^2)^2/Hz",
-            "upper end of that range");
-    w.attribute("/reference/psd", "label",
-                std::string("linear, quasi-stationary (no moving-weight response, no loss of contact)"));
-    io::write_frequency_scale(w, "/reference", f);
-    io::write_sensor_scale(w, "/reference", sensors);
-    for (const char* d : {"/reference/psd", "/reference/psd_raw", "/reference/degrees_of_freedom", "/reference/mean_lower",
-                          "/reference/mean_upper"}) {
-      w.attach_scale(d, "/reference/sensor", 0);
-      w.attach_scale(d, "/reference/frequency", 1);
-    }
   }
 
   // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume;
@@ -636,7 +470,6 @@ class BallOnBeam final : public EnsembleScene {
   std::unique_ptr<spectral::HarmonicSynthesiser> f0_synth_;
   std::vector<double> f0_psd_, f0_half_amplitudes_;
   double f0_step_ = 0.0, f0_df_ = 0.0;
-  const Study* study_ = nullptr;  // for the table stage in prepare(); the study outlives the scene
   std::unique_ptr<texture::LineTextureGenerator> lines_;
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;
   beam::UniformSamples strip_line_;  // [equivalent_roughness] line = strip: h_eq of strip 0 along the path

@@ -1,15 +1,17 @@
 // Study keys of scene `ball-on-beam` and the modal beam they describe (ball_on_beam.hpp).
-#include <exception>
 #include <limits>
 #include <string>
 
 #include "kernels/beam/modal_beam.hpp"
-#include "src/error.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
-#include "src/stiffness/stiffness_keys.hpp"
+#include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/blocked_force_section.hpp"
+#include "src/study/sections/path_table_section.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -22,29 +24,10 @@ const double inf = std::numeric_limits<double>::infinity();
 }  // namespace
 
 std::vector<KeySpec> ball_on_beam_keys() {
-  std::vector<KeySpec> k = {
-      choice_key("beam", "support", "boundary conditions", std::string("clamped-clamped"),
-                 {"clamped-clamped", "simply-supported"}),
-      real_key("beam", "length", "m", "physical span l between the supports", std::string("0.4"), 0.0, inf, false),
-      real_key("beam", "effective_length", "m", "modal length l_eff >= l (clamp rotation, seed 002: l + 30 mm); 0: l",
-               std::string("0"), 0.0, inf),
-      real_key("beam", "width", "m", "section width", std::string("0.05"), 0.0, inf, false),
-      real_key("beam", "thickness", "m", "section thickness (bending direction)", std::string("0.0068"), 0.0, inf, false),
-      real_key("beam", "youngs_modulus", "Pa", "Young's modulus E", std::string("210e9"), 0.0, inf, false),
-      real_key("beam", "poisson", "-", "Poisson's ratio (contact modulus)", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("beam", "density", "kg/m^3", "density rho", std::string("7850"), 0.0, inf, false),
-      integer_key("beam", "modes", "number of modes (0: all up to max_frequency)", std::string("0"), 0, 5000),
-      real_key("beam", "max_frequency", "Hz", "highest modal frequency kept when modes = 0", std::string("20000"), 0.0, inf),
-      real_key("beam", "loss_factor", "-", "modal loss factor eta (zeta = eta/2)", std::string("0.01"), 0.0, 2.0),
-      bool_key("beam", "static_correction", "residual flexibility of the truncated modes", std::string("true")),
-      real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
-      real_key("ball", "density", "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", std::string("7850"), 0.0, inf, false),
-      real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
-      real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("ball", "speed", "m/s", "rolling speed v", std::string("1"), 0.0, inf, false),
-      real_key("ball", "start", "m", "ball position where the record starts", std::string("0.05"), 0.0, inf),
-      real_key("ball", "end", "m", "ball position where the record ends", std::string("0.35"), 0.0, inf),
-      real_key("ball", "gravity", "m/s^2", "gravitational acceleration", std::string("9.81"), 0.0, inf),
+  // [beam] and [ball] first, then the scene's other keys, in the order `rollspec keys` lists them.
+  std::vector<KeySpec> k = ModalBeamSection::keys();
+  for (auto& t : BallSection::keys()) k.push_back(t);
+  const std::vector<KeySpec> rest = {
       choice_key("contact", "law",
                  "contact law: hertz (smooth Hertz P(delta)), table (rough-surface P(delta) from the stiffness stage), "
                  "literal (seed 001 Eq. 7: k_c(delta) delta from the same table), linearised (seed 002: blocked "
@@ -97,6 +80,7 @@ std::vector<KeySpec> ball_on_beam_keys() {
                "range that holds the ensemble mean), computed once after the ensemble",
                std::string("true")),
   };
+  for (auto& t : rest) k.push_back(t);
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
   for (auto& t : texture_io::surface_keys()) {
     // The solver's blocked force derives its strip from the contact radius unless the study sets these.
@@ -104,35 +88,13 @@ std::vector<KeySpec> ball_on_beam_keys() {
     if (t.key == "spacing") t.doc += "; blocked_force = solver: derived from the contact radius and the texture unless set";
     k.push_back(t);
   }
-  for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
-  for (auto& t : stiffness::blocked_force_keys()) k.push_back(t);
-  for (auto& t : stiffness::path_table_keys()) k.push_back(t);
+  for (auto& t : study::StiffnessSection::keys()) k.push_back(t);
+  for (auto& t : BlockedForceSection::keys()) k.push_back(t);
+  for (auto& t : PathTableSection::keys()) k.push_back(t);
   for (auto& t : stiffness::equivalent_roughness_keys()) k.push_back(t);
   return k;
 }
 
-beam::ModalBeam study_modal_beam(const Study& s) {
-  beam::BeamProperties p;
-  p.support = s.text("beam.support") == "clamped-clamped" ? beam::Support::clamped_clamped : beam::Support::simply_supported;
-  p.youngs_modulus = s.real("beam.youngs_modulus");
-  p.density = s.real("beam.density");
-  p.width = s.real("beam.width");
-  p.thickness = s.real("beam.thickness");
-  p.length = s.real("beam.length");
-  p.effective_length = s.real("beam.effective_length");
-  if (p.effective_length > 0.0 && p.effective_length < p.length)
-    s.refuse("beam.effective_length", "is shorter than [beam] length; allowed: 0 or >= length");
-  beam::ModeSelection sel;
-  sel.count = static_cast<int>(s.integer("beam.modes"));
-  sel.max_frequency = s.real("beam.max_frequency");
-  if (sel.count == 0 && sel.max_frequency <= 0.0) s.refuse("beam.max_frequency", "must be > 0 when [beam] modes = 0");
-  beam::ModalDamping d;
-  d.loss_factor = s.real("beam.loss_factor");
-  try {
-    return beam::ModalBeam(p, sel, d, s.boolean("beam.static_correction"));
-  } catch (const std::exception& e) {
-    throw config_error(s.where("beam.modes") + ": " + e.what());
-  }
-}
+beam::ModalBeam study_modal_beam(const Study& s) { return ModalBeamSection::parse(s).modal_beam(); }
 
 }  // namespace rollspec::scenes

@@ -9,7 +9,6 @@
 #include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/modal_beam.hpp"
 #include "kernels/beam/quadratic_hold_step.hpp"
-#include "kernels/contact/geometry.hpp"
 #include "kernels/integrators/exact_oscillator_step.hpp"
 #include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/scenes/ball_on_beam.hpp"
@@ -57,7 +56,7 @@ beam::ContactLawKind law_kind(const BallOnBeamSettings& b) {
 // The exact modal step of very high modes (omega h in the thousands) overflows double precision:
 // every realisation would be non-finite. Refused before any work, with the largest mode count
 // whose step is finite.
-void check_step_coefficients(const Study& s, const BallOnBeamSettings& b) {
+void check_step_coefficients(const BallOnBeamSettings& b) {
   if (b.dopri) return;
   const double h = b.integration_step();
   const beam::ModalBeam& m = b.model.beam;
@@ -73,8 +72,8 @@ void check_step_coefficients(const Study& s, const BallOnBeamSettings& b) {
     char buf[200];
     std::snprintf(buf, sizeof buf, "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
                   m.modes(), i + 1, m.frequency(i), m.omega(i) * h);
-    s.refuse(s.integer("beam.modes") > 0 ? "beam.modes" : "beam.max_frequency",
-             std::string(buf) + "; allowed: at most " + std::to_string(i) + " modes at this step (or signal.integrator = dopri5)");
+    (b.beam.selection.count > 0 ? b.beam.modes_origin : b.beam.max_frequency_origin)
+        .refuse(std::string(buf) + "; allowed: at most " + std::to_string(i) + " modes at this step (or signal.integrator = dopri5)");
   }
 }
 
@@ -130,12 +129,12 @@ texture::Psd iso2d_study_psd(const Study& s, const BallOnBeamSettings& b) {
 // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
 // T_c = 2 pi sqrt(m_ball / k_contact) at the static load (kernels/README.md D-23). Coarser steps stay
 // finite but misstate loss of contact and the high-frequency levels, so they are refused.
-void check_contact_resolution(const Study& s, const BallOnBeamSettings& b, double k_contact) {
+void check_contact_resolution(const BallOnBeamSettings& b, double k_contact) {
   const double tc = 2.0 * M_PI * std::sqrt(b.model.ball.mass / k_contact);
   const double h = b.integration_step();
   if (h > tc / 20.0) {
     const auto need = static_cast<long long>(std::ceil(20.0 / (tc * b.model.sample_rate)));
-    s.refuse("signal.substeps", "the integration step 1 / (sample_rate x substeps) = " + g4(h) +
+    b.substeps_origin.refuse("the integration step 1 / (sample_rate x substeps) = " + g4(h) +
                                     " s exceeds the contact resolution limit dt <= T_c / 20 = " + g4(tc / 20.0) +
                                     " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + g4(k_contact) +
                                     " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
@@ -168,10 +167,20 @@ texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
 }
 
 BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
-  BallOnBeamSettings b({study_modal_beam(s), {}, {}, {}, s.real("signal.sample_rate"), sensor_positions(s, s.real("beam.length"))});
+  const study::ModalBeamSection beam_section = study::ModalBeamSection::parse(s);
+  BallOnBeamSettings b({beam_section.modal_beam(), {}, {}, {}, s.real("signal.sample_rate"),
+                        sensor_positions(s, beam_section.properties.length)});
+  b.beam = beam_section;
+  b.ball = study::BallSection::parse(s);
+  b.substeps_origin = {s.where("signal.substeps")};
+  b.blocked_force = study::BlockedForceSection::parse(s);
+  b.path_table = study::PathTableSection::parse(s);
+  b.strip_surface = study::StripSurfaceSection::parse(s);
+  b.stiffness = study::StiffnessSection::parse(s);
+  b.line_keys = texture_io::LineGeneratorKeys::parse(s, "roughness.spacing");
   b.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   beam::BallOnBeamModel& m = b.model;
-  const double length = s.real("beam.length");
+  const double length = b.beam.properties.length;
   b.texture_psd = texture_io::study_psd(s);
   b.psd = b.texture_psd;
   b.sensor_mean = s.boolean("sensors.average");
@@ -183,14 +192,14 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.time_histories = static_cast<std::size_t>(s.integer("output.time_histories"));
   b.reference = s.boolean("output.reference");
   // Ball and its traverse.
-  const double radius = s.real("ball.radius");
-  m.ball.mass = 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density");
-  m.ball.gravity = s.real("ball.gravity");
-  m.traverse.x_start = s.real("ball.start");
-  m.traverse.x_end = s.real("ball.end");
-  m.traverse.speed = s.real("ball.speed");
-  if (!(m.traverse.x_end > m.traverse.x_start)) s.refuse("ball.end", "must exceed [ball] start");
-  if (m.traverse.x_end > length) s.refuse("ball.end", "lies beyond the span [0, length]");
+  const double radius = b.ball.radius;
+  m.ball.mass = b.ball.mass();
+  m.ball.gravity = b.ball.gravity;
+  m.traverse.x_start = b.ball.start;
+  m.traverse.x_end = b.ball.end;
+  m.traverse.speed = b.ball.speed;
+  if (!(m.traverse.x_end > m.traverse.x_start)) b.ball.end_origin.refuse("must exceed [ball] start");
+  if (m.traverse.x_end > length) b.ball.end_origin.refuse("lies beyond the span [0, length]");
   // Anti-alias band limit (kernels/beam B40): the output holds f <= f_s / 2, that is k <= pi f_s / v;
   // roughness beyond it would drive the linear response above f_s / 2, which the sampling aliases in.
   if (s.text("roughness.band_limit") == "output") {
@@ -202,8 +211,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.contact = contact_model(s);
   beam::ContactLaw& law = m.contact;
   law.kind = law_kind(b);
-  law.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
-                                                     s.real("beam.youngs_modulus"), s.real("beam.poisson"));
+  law.effective_modulus = b.ball.effective_modulus(b.beam.properties.youngs_modulus, b.beam.poisson);
   law.radius = radius;
   law.k0 = s.real("contact.k0");
   law.damping = s.real("contact.damping");
@@ -237,8 +245,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
                      ? texture::interpolation_compensated(b.psd, b.spacing)
                      : b.psd;
   if (!b.uses_table() && !b.blocked_solver())
-    check_contact_resolution(s, b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
-  check_step_coefficients(s, b);
+    check_contact_resolution(b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
+  check_step_coefficients(b);
   // Record and spectra.
   b.samples = beam::output_samples(m);
   b.skip = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * m.sample_rate));

@@ -2,7 +2,7 @@
 // Scene `ball-on-beam`'s study keys read once, into one value, with the checks that span several
 // keys (the record against the span, the step against the contact's bounce and the modes, the
 // Welch segment against the record). The scene (ball_on_beam.cpp) builds from this value only;
-// the texture, surface and table stages read their own sections (texture_keys, stiffness_keys).
+// the texture, surface and table stages read their own sections (texture_keys, src/study/sections).
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -14,6 +14,14 @@
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "kernels/texture/psd.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/blocked_force_section.hpp"
+#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
+#include "src/study/sections/path_table_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/strip_surface_section.hpp"
+#include "src/texture/texture_keys.hpp"
 
 namespace rollspec::study {
 class Study;
@@ -33,6 +41,15 @@ enum class ContactFilter { none, patch, iso2d, solver };
 struct BallOnBeamSettings {
   explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}
   std::uint64_t seed = 0;
+  study::ModalBeamSection beam;  // [beam] as read
+  study::BallSection ball;       // [ball] as read
+  study::KeyOrigin substeps_origin;
+  // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
+  study::BlockedForceSection blocked_force;
+  study::PathTableSection path_table;
+  study::StripSurfaceSection strip_surface;
+  study::StiffnessSection stiffness;         // [stiffness]: the table law's surface and approach range
+  texture_io::LineGeneratorKeys line_keys;   // the line texture's amplitudes; errors at [roughness] spacing  // [signal] substeps, for the step checks of the table stages
   // Beam, ball, traverse, sensors, output rate and the contact law as far as the keys fix it;
   // the table stages complete the law (compression table, or k0 of the blocked force).
   beam::BallOnBeamModel model;
@@ -87,6 +104,6 @@ std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::ve
 
 // Refuses (at [signal] substeps) a step that does not resolve the ball's bounce on a contact
 // stiffness k_contact at the weight; the table laws call it again once their stiffness is known.
-void check_contact_resolution(const study::Study& s, const BallOnBeamSettings& b, double k_contact);
+void check_contact_resolution(const BallOnBeamSettings& b, double k_contact);
 
 }  // namespace rollspec::scenes

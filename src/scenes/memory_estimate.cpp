@@ -7,13 +7,15 @@
 #include <sstream>
 
 #include "src/error.hpp"
-#include "kernels/contact/geometry.hpp"
 #include "kernels/rolling/solver.hpp"
 #include "src/io/available_memory.hpp"
 #include "src/scenes/rolling_beam_settings.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/blocked_force_geometry.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/study.hpp"
+#include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
 
@@ -41,14 +43,12 @@ std::vector<std::string> where(const study::Study& s, const std::vector<std::str
   return out;
 }
 
-double ball_weight(const study::Study& s) {
-  const double radius = s.real("ball.radius");
-  return 4.0 / 3.0 * M_PI * radius * radius * radius * s.real("ball.density") * s.real("ball.gravity");
-}
+// The ball's weight and E* as the scene derives them (ball_section), not a second formula.
+double ball_weight(const study::Study& s) { return study::BallSection::parse(s).weight(); }
 
 double ball_e_star(const study::Study& s) {
-  return contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"), s.real("beam.youngs_modulus"),
-                                    s.real("beam.poisson"));
+  const study::ModalBeamSection beam = study::ModalBeamSection::parse(s);
+  return study::BallSection::parse(s).effective_modulus(beam.properties.youngs_modulus, beam.poisson);
 }
 
 // Contact solves on an nx x ny grid: the padded (2nx x 2ny) half-space operator and its FFT
@@ -62,7 +62,9 @@ Item contact_grid(const study::Study& s) {
 // (derived from the contact radius where the study leaves it open).
 Item blocked_force_window(const study::Study& s) {
   const double radius = s.real("ball.radius"), weight = ball_weight(s), e_star = ball_e_star(s);
-  const auto g = stiffness::blocked_force_geometry(s, radius, e_star, weight, s.real("ball.speed") / s.real("signal.sample_rate"));
+  const auto g = stiffness::blocked_force_geometry(study::BlockedForceSection::parse(s), study::StripSurfaceSection::parse(s),
+                                                   texture_io::study_psd(s), radius, e_star, weight,
+                                                   s.real("ball.speed") / s.real("signal.sample_rate"));
   const double w = static_cast<double>(g.window), strip = static_cast<double>(g.nx) * static_cast<double>(g.ny);
   return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0, where(s, {"blocked_force.window", "surface.ny", "surface.spacing"}),
           "blocked-force contact window (" + std::to_string(g.window) + " cells) and strip (" + std::to_string(g.ny) +
@@ -114,7 +116,9 @@ Item linear_reference(const study::Study& s, double sensors, double samples) {
 // table and its interpolation copy), the strip, and one contact solver window per thread.
 Item path_table(const study::Study& s, double threads) {
   const double weight = ball_weight(s);
-  const auto g = stiffness::path_table_geometry(s, s.real("ball.radius"), ball_e_star(s), weight,
+  const auto g = stiffness::path_table_geometry(study::PathTableSection::parse(s), study::BlockedForceSection::parse(s),
+                                                study::StripSurfaceSection::parse(s), texture_io::study_psd(s),
+                                                s.real("ball.radius"), ball_e_star(s), weight,
                                                 key_real(s, "ball.end") - key_real(s, "ball.start"));
   const double cells = static_cast<double>(g.approaches) * static_cast<double>(g.positions);
   const double w = static_cast<double>(g.window);

@@ -5,7 +5,7 @@
 
 #include "kernels/contact/geometry.hpp"
 #include "src/error.hpp"
-#include "src/stiffness/stiffness_keys.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -25,7 +25,7 @@ std::vector<KeySpec> stiffness_scene_keys() {
       real_key("flat", "youngs_modulus", "Pa", "flat's Young's modulus", std::string("210e9"), 0.0, inf, false),
       real_key("flat", "poisson", "-", "flat's Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
   };
-  for (auto& t : stiffness::stiffness_keys()) k.push_back(t);
+  for (auto& t : study::StiffnessSection::keys()) k.push_back(t);
   for (auto& t : texture_io::surface_keys()) k.push_back(t);
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
   return k;

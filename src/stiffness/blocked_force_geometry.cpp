@@ -10,7 +10,6 @@
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/psd.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::stiffness {
@@ -44,52 +43,52 @@ double strip_rms(const texture::Psd& psd, double a) {
 
 }  // namespace
 
-BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius, double e_star, double load,
+BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf, const study::StripSurfaceSection& surface,
+                                            const texture::Psd& psd, double radius, double e_star, double load,
                                             double max_step_length) {
   BlockedForceGeometry g;
   const double a = std::cbrt(3.0 * load * radius / (4.0 * e_star));
   g.contact_radius = a;
-  const texture::Psd psd = texture_io::study_psd(s);
   g.rms = strip_rms(psd, a);
   const double reach = std::max(1.5 * a, std::sqrt(2.0 * radius * (a * a / radius + kPeakSigmas * g.rms)));
   // Shortest texture wavelength along either axis after the anisotropy stretch.
-  const double stretch = std::sqrt(s.real("surface.anisotropy"));
+  const double stretch = std::sqrt(surface.anisotropy);
   const double shortest = std::isfinite(psd.support_max) && psd.support_max > 0.0
                               ? 2.0 * M_PI / (psd.support_max * std::max(stretch, 1.0 / stretch))
                               : 0.0;
   const double want = shortest > 0.0 ? std::min(a / 8.0, shortest / 2.0) : a / 8.0;
 
-  const bool window_set = s.integer("blocked_force.window") > 0;
-  g.derived_cell = !s.is_set("surface.spacing");
+  const bool window_set = bf.window > 0;
+  g.derived_cell = !surface.spacing_set;
   if (!g.derived_cell) {
-    g.cell = s.real("surface.spacing");
+    g.cell = surface.spacing;
   } else {
-    const double fit = 2.0 * reach / static_cast<double>(window_set ? s.integer("blocked_force.window") : kMaxWindow);
+    const double fit = 2.0 * reach / static_cast<double>(window_set ? bf.window : kMaxWindow);
     g.cell = want >= fit ? round3(want, false) : (window_set ? round3(fit, true) : std::min(round3(fit, true), round3(a / 8.0, false)));
     if (shortest > 0.0 && 2.0 * g.cell > shortest * (1.0 + 1e-12)) g.truncated_wavelength = 2.0 * g.cell;
     if (shortest == 0.0) g.truncated_wavelength = 2.0 * g.cell;
   }
   const double dx = g.cell;
-  g.window = window_set ? static_cast<std::size_t>(s.integer("blocked_force.window"))
+  g.window = window_set ? static_cast<std::size_t>(bf.window)
                         : texture::fast_even_length(static_cast<std::size_t>(std::ceil(2.0 * reach / dx - 1e-9)));
-  g.ny = s.is_set("surface.ny") ? static_cast<std::size_t>(s.integer("surface.ny")) : std::max<std::size_t>(g.window, 4);
+  g.ny = surface.ny_set ? static_cast<std::size_t>(surface.ny) : std::max<std::size_t>(g.window, 4);
   g.window = std::min(g.window, g.ny);
 
   double step_length = a / 3.0;
   if (max_step_length > 0.0) step_length = std::min(step_length, max_step_length);
-  g.step = s.integer("blocked_force.step") > 0 ? static_cast<std::size_t>(s.integer("blocked_force.step"))
+  g.step = bf.step > 0 ? static_cast<std::size_t>(bf.step)
                                                 : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(step_length / dx + 1e-9)));
   const double path_step = static_cast<double>(g.step) * dx;
   // At least four segments along the path: a roll-off longer than a quarter of the longest strip
   // leaves the lowest wavenumbers to the first bin (the F0 table holds it flat below).
   double correlation = 2.0 * M_PI * a;
-  if (s.text("texture.source") == "self-affine") correlation = std::max(correlation, s.real("texture.rolloff_wavelength"));
-  g.segment = s.integer("blocked_force.segment") > 0
-                  ? static_cast<std::size_t>(s.integer("blocked_force.segment"))
+  if (surface.self_affine) correlation = std::max(correlation, surface.rolloff_wavelength);
+  g.segment = bf.segment > 0
+                  ? static_cast<std::size_t>(bf.segment)
                   : texture::fast_even_length(std::min<std::size_t>(
                         kMaxPositions / 4, std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(4.0 * correlation / path_step)))));
-  if (s.real("blocked_force.strip_length") > 0.0) {
-    g.nx = static_cast<std::size_t>(std::round(s.real("blocked_force.strip_length") / dx));
+  if (bf.strip_length > 0.0) {
+    g.nx = static_cast<std::size_t>(std::round(bf.strip_length / dx));
   } else {
     const std::size_t wanted = std::min(4 * g.segment, kMaxPositions);
     g.nx = g.window + wanted * g.step;
@@ -97,11 +96,11 @@ BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius
   g.nx += g.nx % 2;
   // Refused here, so that `plan` refuses what `run` would.
   if (g.window < 8)
-    s.refuse(window_set ? "blocked_force.window" : "surface.ny",
-             "leaves a solver window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
-  if (g.segment < 16) s.refuse("blocked_force.segment", "is shorter than 16 positions; allowed: 0 (derived) or 16 or more");
+    (window_set ? bf.window_origin : surface.ny_origin)
+        .refuse("leaves a solver window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
+  if (g.segment < 16) bf.segment_origin.refuse("is shorter than 16 positions; allowed: 0 (derived) or 16 or more");
   if (g.nx < g.window + 16 * g.step)
-    s.refuse("blocked_force.strip_length", "leaves fewer than 16 path positions outside the window");
+    bf.strip_length_origin.refuse("leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
   // Cost (CPU seconds), measured on studies/seed002-rig-1ms.ini (window 128, 1024 positions, kernel

@@ -20,9 +20,9 @@
 #include <cstddef>
 #include <string>
 
-namespace rollspec::study {
-class Study;
-}
+#include "kernels/texture/psd.hpp"
+#include "src/study/sections/blocked_force_section.hpp"
+#include "src/study/sections/strip_surface_section.hpp"
 
 namespace rollspec::stiffness {
 
@@ -45,8 +45,10 @@ struct BlockedForceGeometry {
   std::string describe() const;
 };
 
-// `max_step_length`: the longest path step the dynamics can use (v / f_s), 0 for no limit.
-BlockedForceGeometry blocked_force_geometry(const study::Study& s, double radius, double effective_modulus, double load,
-                                            double max_step_length);
+// `psd`: the study's [texture] PSD; `max_step_length`: the longest path step the dynamics can use
+// (v / f_s), 0 for no limit.
+BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& blocked_force,
+                                            const study::StripSurfaceSection& surface, const texture::Psd& psd,
+                                            double radius, double effective_modulus, double load, double max_step_length);
 
 }  // namespace rollspec::stiffness

@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 
 #include <algorithm>
@@ -54,24 +55,6 @@ double BlockedForceTable::psd_at(double k) const {
   return path_psd_at(psd_wavenumber, psd, k);
 }
 
-std::vector<KeySpec> blocked_force_keys() {
-  return {
-      real_key("blocked_force", "strip_length", "m",
-               "length of the rough strip the ball slides along; 0: four Welch segments of positions plus the window",
-               std::string("0"), 0.0, std::numeric_limits<double>::infinity()),
-      integer_key("blocked_force", "window",
-                  "cells of the contact solver's square window (8 or more); 0: derived so that the window holds every "
-                  "cell the ball can touch, from the contact radius and the texture rms",
-                  std::string("0"), 0, 4096),
-      integer_key("blocked_force", "step", "path step in cells; 0: a third of the contact radius (at most speed / sample_rate)",
-                  std::string("0"), 0, 1000),
-      integer_key("blocked_force", "segment",
-                  "Welch segment (positions, 16 or more) of the F0 PSD along the path; 0: four times the F0 correlation "
-                  "length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
-                  std::string("0"), 0, 1 << 20),
-  };
-}
-
 namespace {
 
 // The grid enters as resolved (derived or set), so the input hash names what was computed.
@@ -103,8 +86,8 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
   contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts = strip_solver_options(s);
-  const contact::BallShape shape = strip_ball_shape(s);
+  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
+  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
   if (!quiet) std::fprintf(stderr, "%sblocked force grid: %s\n", ensemble::rank_prefix().c_str(), geo.describe().c_str());
   if (!quiet) std::fprintf(stderr, "%sblocked force: %zu positions on a %zu x %zu strip\n", ensemble::rank_prefix().c_str(), positions.size(), nx, ny);
   contact::ContactSolver solver(window_grid, e_star);

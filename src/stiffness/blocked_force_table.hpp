@@ -36,7 +36,6 @@ struct BlockedForceTable : TableData {
   std::string checksum() const override;
 };
 
-std::vector<study::KeySpec> blocked_force_keys();
 
 // What a study asks for (no computation): canonical inputs, the grid `g` included, and
 // <table_dir>/blocked-force-<hash>.h5.

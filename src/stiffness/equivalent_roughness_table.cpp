@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 
 #include <omp.h>
@@ -46,7 +47,7 @@ std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double ra
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
      << "\nchunk_positions = " << kChunkPositions << "\nsolve = load control\noutputs = h_eq, k_eq\nload_tolerance = "
-     << num(strip_load_tolerance(strip_solver_options(s))) << "\n";
+     << num(strip_load_tolerance(study::StiffnessSection::parse(s).solver)) << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -163,8 +164,8 @@ EquivalentRoughnessTable build_equivalent_roughness(const Study& s, const Blocke
   const contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts = strip_solver_options(s);
-  const contact::BallShape shape = strip_ball_shape(s);
+  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
+  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
   contact::EquivalentRoughnessOptions po;
   po.chunk_positions = kChunkPositions;
   // ER-1 to the solves' own accuracy (strip_load_tolerance).

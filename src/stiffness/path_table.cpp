@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/path_table.hpp"
 
 #include <omp.h>
@@ -35,42 +36,30 @@ constexpr double kReach = 3.0;       // δ_hi = max δ_c + 3 δ_H (B43)
 
 }  // namespace
 
-std::vector<KeySpec> path_table_keys() {
-  return {
-      integer_key("path_table", "approaches", "law = path: approaches J of the table P(delta, xi) (kernels/beam B43), 2 or more",
-                  std::string("8"), 2, 64),
-      integer_key("path_table", "step",
-                  "law = path: path step in cells between tabulated positions; 0: at most a quarter of the contact radius",
-                  std::string("0"), 0, 1000),
-      real_key("path_table", "strip_length", "m",
-               "law = path: length of the rough strip; 0: the ball's path in the run ((end - start) + one step) plus "
-               "the solver window",
-               std::string("0"), 0.0, std::numeric_limits<double>::infinity()),
-  };
-}
-
-PathTableGeometry path_table_geometry(const Study& s, double radius, double e_star, double load, double path_length) {
+PathTableGeometry path_table_geometry(const study::PathTableSection& p, const study::BlockedForceSection& bf,
+                                      const study::StripSurfaceSection& surface, const texture::Psd& psd, double radius,
+                                      double e_star, double load, double path_length) {
   PathTableGeometry g;
-  g.base = blocked_force_geometry(s, radius, e_star, load, 0.0);
+  g.base = blocked_force_geometry(bf, surface, psd, radius, e_star, load, 0.0);
   const double a = g.base.contact_radius, dx = g.base.cell, dh = a * a / radius;
   g.path_length = path_length;
-  g.approaches = static_cast<std::size_t>(s.integer("path_table.approaches"));
-  g.step = s.integer("path_table.step") > 0 ? static_cast<std::size_t>(s.integer("path_table.step"))
+  g.approaches = static_cast<std::size_t>(p.approaches);
+  g.step = p.step > 0 ? static_cast<std::size_t>(p.step)
                                              : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(a / 4.0 / dx + 1e-9)));
   // Window: every cell with rigid interference at δ_hi (BF-5; the build refuses otherwise).
   const double reach = std::max(2.6 * a, std::sqrt(2.0 * radius * ((kReach + 0.3) * dh + 2.0 * kPeakSigmas * g.base.rms)));
   g.window = texture::fast_even_length(static_cast<std::size_t>(std::ceil(2.0 * reach / dx - 1e-9)) + 2);
-  g.ny = s.is_set("surface.ny") ? static_cast<std::size_t>(s.integer("surface.ny")) : g.window;
+  g.ny = surface.ny_set ? static_cast<std::size_t>(surface.ny) : g.window;
   g.window = std::min(g.window, g.ny);
-  if (g.window < 8) s.refuse("surface.ny", "leaves a path-table window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
+  if (g.window < 8) surface.ny_origin.refuse("leaves a path-table window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
   const double step_length = static_cast<double>(g.step) * dx;
   g.positions = static_cast<std::size_t>(std::ceil(path_length / step_length - 1e-9)) + 2;  // one step beyond the end
   const std::size_t need = g.window + (g.positions - 1) * g.step + 1;
-  if (s.real("path_table.strip_length") > 0.0) {
-    g.nx = static_cast<std::size_t>(std::round(s.real("path_table.strip_length") / dx));
+  if (p.strip_length > 0.0) {
+    g.nx = static_cast<std::size_t>(std::round(p.strip_length / dx));
     if (g.nx < need)
-      s.refuse("path_table.strip_length",
-               "= " + num(s.real("path_table.strip_length")) + " m is shorter than the ball's path in the run (" +
+      p.strip_length_origin.refuse(
+               "= " + num(p.strip_length) + " m is shorter than the ball's path in the run (" +
                    um(path_length) + " plus one step of " + um(step_length) + ") plus the solver window (" +
                    std::to_string(g.window) + " cells of " + um(dx) + "); allowed: 0 (derived) or at least " +
                    num(static_cast<double>(need) * dx) + " m");
@@ -158,8 +147,8 @@ PathTableData build_path_table(const Study& s, const PathTableGeometry& g, doubl
   const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
   std::vector<double> positions;
   for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
-  contact::SolverOptions opts = strip_solver_options(s);
-  const contact::BallShape shape = strip_ball_shape(s);
+  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
+  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
   contact::PathTableOptions po;
   po.approaches = g.approaches;
   po.reach = kReach;

@@ -21,6 +21,7 @@
 #include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/stiffness/cached_table.hpp"
 #include "src/study/key_spec.hpp"
+#include "src/study/sections/path_table_section.hpp"
 
 namespace rollspec::study {
 class Study;
@@ -56,10 +57,10 @@ struct PathTableData : TableData {
   std::string checksum() const override;
 };
 
-std::vector<study::KeySpec> path_table_keys();
-
-PathTableGeometry path_table_geometry(const study::Study& s, double radius, double effective_modulus, double load,
-                                      double path_length);
+PathTableGeometry path_table_geometry(const study::PathTableSection& path_table,
+                                      const study::BlockedForceSection& blocked_force,
+                                      const study::StripSurfaceSection& surface, const texture::Psd& psd, double radius,
+                                      double effective_modulus, double load, double path_length);
 
 CachedTable path_cached_table(const study::Study& s, const PathTableGeometry& g, double radius, double effective_modulus,
                               double load);

@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -35,12 +36,6 @@ constexpr std::uint64_t kBallRealisations = 1u << 30;
 
 
 
-double hardness_of(const study::Study& s) {
-  const double h = s.real("stiffness.hardness");
-  return h > 0.0 ? h : std::numeric_limits<double>::infinity();
-}
-
-bool rough(const study::Study& s) { return s.text("stiffness.surface") == "rough"; }
 
 // Datasets in checksum order.
 const char* kDatasets[] = {"approach", "force_mean", "force_std", "stiffness_mean", "stiffness_std", "contact_area_mean",
@@ -77,19 +72,20 @@ const TableKind kStiffnessTableKind = {kTableFileType, "/stiffness", "stiffness-
 std::string StiffnessTable::checksum() const { return hex16(column_hash(columns(*this))); }
 
 CachedTable stiffness_cached_table(const study::Study& s, double ball_radius, double effective_modulus) {
+  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
-     << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << s.text("stiffness.shape") << "\n\n[stiffness]\n";
+     << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << stiffness.text("shape") << "\n\n[stiffness]\n";
   for (const char* k : {"surface", "ball_rms", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
-    in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
-  in << "realisations = " << (rough(s) ? s.text("stiffness.realisations") : "1") << "\nseed = " << s.text("study.seed") << "\n";
+    in << k << " = " << stiffness.text(k) << "\n";
+  in << "realisations = " << (stiffness.rough ? stiffness.text("realisations") : "1") << "\nseed = " << s.text("study.seed") << "\n";
   in << "\n[surface]\n";
   for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
     in << k << " = " << s.text(std::string("surface.") + k) << "\n";
   // Eq. 26a changed the spectral surfaces of non-square grids only (square: the same bits), so only
   // their tables take a new hash.
   if (s.integer("surface.nx") != s.integer("surface.ny")) in << "mode power = rectangular cell mean (kernels/texture Eq. 26a)\n";
-  if (rough(s)) {
+  if (stiffness.rough) {
     in << "\n[texture]\n";
     for (const auto& k : texture_io::psd_keys())
       if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
@@ -126,18 +122,16 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
   grid.nx = static_cast<std::size_t>(s.integer("surface.nx"));
   grid.ny = static_cast<std::size_t>(s.integer("surface.ny"));
   grid.dx = grid.dy = s.real("surface.spacing");
-  const bool is_rough = rough(s);
-  const int R = is_rough ? static_cast<int>(s.integer("stiffness.realisations")) : 1;
-  const auto steps = static_cast<std::size_t>(s.integer("stiffness.steps"));
-  const double dmax = s.real("stiffness.approach_max");
+  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
+  const bool is_rough = stiffness.rough;
+  const int R = is_rough ? static_cast<int>(stiffness.realisations) : 1;
+  const auto steps = static_cast<std::size_t>(stiffness.steps);
+  const double dmax = stiffness.approach_max;
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
-  const auto shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
-  const double ball_rms = s.real("stiffness.ball_rms");
-  if (ball_rms > 0.0 && !is_rough) s.refuse("stiffness.ball_rms", "needs [stiffness] surface = rough (the flat's realisations)");
-  contact::SolverOptions opts;
-  opts.hardness = hardness_of(s);
-  opts.tolerance = s.real("stiffness.tolerance");
-  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  const auto shape = stiffness.shape;
+  const double ball_rms = stiffness.ball_rms;
+  if (ball_rms > 0.0 && !is_rough) stiffness.ball_rms_origin.refuse("needs [stiffness] surface = rough (the flat's realisations)");
+  contact::SolverOptions opts = stiffness.solver;
   std::vector<double> deltas(steps);
   for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);
   texture_io::SurfaceGenerator surfaces;

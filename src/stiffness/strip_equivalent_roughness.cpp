@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/strip_equivalent_roughness.hpp"
 
 #include <algorithm>
@@ -32,7 +33,7 @@ std::string inputs_text(const Study& s, const PathTableGeometry& g, double radiu
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
-     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(strip_solver_options(s))) << "\n";
+     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(study::StiffnessSection::parse(s).solver)) << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
@@ -69,7 +70,8 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const Study& s, const 
   const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
   std::vector<double> positions;
   for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
-  const contact::SolverOptions opts = strip_solver_options(s);
+  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
+  const contact::SolverOptions opts = stiffness.solver;
   contact::EquivalentRoughnessOptions po;
   po.chunk_positions = kChunkPositions;
   po.load_tolerance = strip_load_tolerance(opts);
@@ -80,7 +82,7 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const Study& s, const 
   contact::ContactSolver solver(window_grid, e_star);
   contact::EquivalentRoughness r;
   try {
-    r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, strip_ball_shape(s), positions, load,
+    r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, stiffness.shape, positions, load,
                                       opts, po);
   } catch (const std::invalid_argument& e) {
     throw config_error(s.where("surface.ny") + ": " + e.what() + "; widen the strip ([surface] ny)");

@@ -1,3 +1,4 @@
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/study_strip.hpp"
 
 #include <algorithm>
@@ -39,7 +40,8 @@ texture::Surface study_strip(const study::Study& s, const StripGrid& grid, std::
 
 std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
   std::ostringstream in;
-  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << s.text(std::string("stiffness.") + k) << "\n";
+  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
+  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << stiffness.text(k) << "\n";
   in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
      << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
      << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
@@ -53,7 +55,7 @@ std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
 std::string ball_inputs_text(const study::Study& s, double radius, double e_star, double load) {
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
-     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << s.text("stiffness.shape");
+     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << study::StiffnessSection::parse(s).text("shape");
   return in.str();
 }
 
@@ -68,21 +70,8 @@ double path_psd_at(const std::vector<double>& psd_wavenumber, const std::vector<
   return ga * std::pow(k / ka, std::log(gb / ga) / std::log(kb / ka));
 }
 
-contact::SolverOptions strip_solver_options(const study::Study& s) {
-  contact::SolverOptions opts;
-  const double h = s.real("stiffness.hardness");
-  opts.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
-  opts.tolerance = s.real("stiffness.tolerance");
-  opts.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
-  return opts;
-}
-
 double strip_load_tolerance(const contact::SolverOptions& options) {
   return std::max(1e-10, 100.0 * options.tolerance);
-}
-
-contact::BallShape strip_ball_shape(const study::Study& s) {
-  return s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
 }
 
 }  // namespace rollspec::stiffness

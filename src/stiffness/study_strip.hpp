@@ -40,15 +40,10 @@ std::string ball_inputs_text(const study::Study& s, double radius, double effect
 // log-log between bins (linear where a bin is 0), the first bin's level below it, 0 above the last.
 double path_psd_at(const std::vector<double>& wavenumbers, const std::vector<double>& psd, double k);
 
-// The contact solver's settings for a strip stage, from [stiffness]: hardness (0: elastic), tolerance,
-// max_iterations; and the ball's shape.
-contact::SolverOptions strip_solver_options(const study::Study& s);
-
 // |P - W| <= tolerance * W of the equivalent-roughness solves (ER-1) for solves stopped at the
 // study's complementarity error eps (README Eq. 9): the force of such a solve is known to about
 // k eps g_ref ~ 1.5 eps (g_ref / delta) W, several eps on a rough strip (g_ref, the largest
 // interference, exceeds delta by the peaks), so 100 eps (h_eq to ~1e-6 delta_H), never below 1e-10.
 double strip_load_tolerance(const contact::SolverOptions& options);
-contact::BallShape strip_ball_shape(const study::Study& s);
 
 }  // namespace rollspec::stiffness

@@ -202,28 +202,37 @@ spectral::Amplitudes study_amplitudes(const Study& s) {
 
 namespace {
 // A table PSD asked for a wavenumber outside its range: name the key that allows it.
-std::string grid_message(const Study& s, const std::string& key, const std::exception& e) {
-  std::string m = s.where(key) + ": " + e.what();
+std::string grid_message(const LineGeneratorKeys& k, const std::exception& e) {
+  std::string m = k.spacing_where + ": " + e.what();
   if (dynamic_cast<const std::domain_error*>(&e))
     m += "; allowed: a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
-         "a coarser spacing), or " + s.where("texture.table_extension") + " set to zero, constant or power_law";
+         "a coarser spacing), or " + k.extension_where + " set to zero, constant or power_law";
   return m;
 }
 }  // namespace
 
-std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study& s, const texture::Psd& psd, double spacing,
-                                                                    std::size_t samples, const std::string& key,
-                                                                    bool truncate) {
+LineGeneratorKeys LineGeneratorKeys::parse(const Study& s, const std::string& key) {
+  return {study_amplitudes(s), s.where(key), s.where("texture.table_extension")};
+}
+
+std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& k, const texture::Psd& psd,
+                                                              double spacing, std::size_t samples, bool truncate) {
   texture::LineTextureSpec ls;
   ls.spacing = spacing;
   ls.samples = samples;
-  ls.amplitudes = study_amplitudes(s);
+  ls.amplitudes = k.amplitudes;
   ls.allow_truncation = truncate;
   try {
     return std::make_unique<texture::LineTextureGenerator>(psd, ls);
   } catch (const std::exception& e) {
-    throw config_error(grid_message(s, key, e));
+    throw config_error(grid_message(k, e));
   }
+}
+
+std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study& s, const texture::Psd& psd, double spacing,
+                                                                    std::size_t samples, const std::string& key,
+                                                                    bool truncate) {
+  return line_generator(LineGeneratorKeys::parse(s, key), psd, spacing, samples, truncate);
 }
 
 std::vector<std::string> profile_files(const Study& s) {
@@ -311,7 +320,7 @@ SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }
   } catch (const std::exception& e) {  // invalid_argument from the spec, domain_error from a table PSD
-    throw config_error(grid_message(s, "surface.spacing", e));
+    throw config_error(grid_message(LineGeneratorKeys{{}, s.where("surface.spacing"), s.where("texture.table_extension")}, e));
   }
   return g;
 }

@@ -35,6 +35,17 @@ std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study:
                                                                     double spacing, std::size_t samples,
                                                                     const std::string& key, bool truncate = true);
 
+// What a line-texture generator takes from the study: the [texture] amplitudes, and where the
+// spacing key and [texture] table_extension were set (for the generator's errors).
+struct LineGeneratorKeys {
+  spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
+  std::string spacing_where, extension_where;
+  static LineGeneratorKeys parse(const study::Study& s, const std::string& key);
+};
+// study_line_generator from those (for a scene that builds its line after the study is gone).
+std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& keys, const texture::Psd& psd,
+                                                              double spacing, std::size_t samples, bool truncate = true);
+
 // The measured profile files of [texture] profiles (empty for other sources or scenes without [texture]).
 std::vector<std::string> profile_files(const study::Study& s);
 

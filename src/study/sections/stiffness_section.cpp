@@ -1,12 +1,13 @@
-#include "src/stiffness/stiffness_keys.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 
 #include <limits>
+#include <stdexcept>
 
-namespace rollspec::stiffness {
+#include "src/study/study.hpp"
 
-using namespace study;
+namespace rollspec::study {
 
-std::vector<KeySpec> stiffness_keys() {
+std::vector<KeySpec> StiffnessSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
       text_key("stiffness", "table", "table file: auto (<table_dir>/stiffness-<input hash>.h5) or a path", std::string("auto")),
@@ -29,4 +30,28 @@ std::vector<KeySpec> stiffness_keys() {
   };
 }
 
-}  // namespace rollspec::stiffness
+StiffnessSection StiffnessSection::parse(const Study& s) {
+  StiffnessSection t;
+  t.rough = s.text("stiffness.surface") == "rough";
+  t.shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  t.ball_rms = s.real("stiffness.ball_rms");
+  t.approach_max = s.real("stiffness.approach_max");
+  t.steps = s.integer("stiffness.steps");
+  t.realisations = s.integer("stiffness.realisations");
+  const double h = s.real("stiffness.hardness");
+  t.solver.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
+  t.solver.tolerance = s.real("stiffness.tolerance");
+  t.solver.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  t.ball_rms_origin = {s.where("stiffness.ball_rms")};
+  t.approach_max_origin = {s.where("stiffness.approach_max")};
+  for (const auto& k : keys()) t.texts_[k.key] = s.text(k.full_name());
+  return t;
+}
+
+const std::string& StiffnessSection::text(const std::string& key) const {
+  const auto it = texts_.find(key);
+  if (it == texts_.end()) throw std::logic_error("not a [stiffness] key: " + key);
+  return it->second;
+}
+
+}  // namespace rollspec::study

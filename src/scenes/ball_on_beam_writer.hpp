@@ -1,0 +1,55 @@
+#pragma once
+// Scene ball-on-beam's result file (besides the time histories, which replay realisations): the
+// ensemble's PSDs, the contact and ball PSDs, the contact law as resolved, the beam, /roughness
+// (the path PSD under each contact filter) and the linearised law's frequency-domain /reference.
+#include <functional>
+#include <utility>
+#include <string>
+#include <vector>
+
+#include "kernels/spectral/welch.hpp"
+#include "src/scenes/ball_on_beam_settings.hpp"
+#include "src/scenes/psd_rows.hpp"
+#include "src/stiffness/blocked_force_table.hpp"
+
+namespace rollspec::io {
+class Hdf5Writer;
+}
+namespace rollspec::ensemble {
+struct EnsembleSums;
+}
+
+namespace rollspec::scenes {
+
+class BallOnBeamWriter {
+ public:
+  // `blocked_force_time_psd`: the F0 PSD in time (blocked_force = solver), for the reference.
+  BallOnBeamWriter(const BallOnBeamSettings& b, const spectral::WelchPlan& welch, const PsdRows& rows,
+                   double line_fundamental, const stiffness::BlockedForceTable& blocked,
+                   std::function<double(double)> blocked_force_time_psd, bool quiet)
+      : b_(b), welch_(&welch), rows_(&rows), line_fundamental_(line_fundamental), blocked_(blocked),
+        blocked_force_time_psd_(std::move(blocked_force_time_psd)), quiet_(quiet) {}
+
+  void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const;
+
+ private:
+  void write_roughness(io::Hdf5Writer& w) const;
+  void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,
+                              double realisations) const;
+  std::size_t rows() const { return rows_->rows(); }
+  bool linearised() const { return b_.linearised(); }
+  bool blocked_solver() const { return b_.blocked_solver(); }
+  bool solver_filter() const { return b_.filter == ContactFilter::solver; }
+  bool writes_reference() const { return b_.linearised() && b_.reference; }
+  double blocked_force_time_psd(double f) const { return blocked_force_time_psd_(f); }
+
+  const BallOnBeamSettings& b_;
+  const spectral::WelchPlan* welch_;
+  const PsdRows* rows_;
+  double line_fundamental_;
+  const stiffness::BlockedForceTable& blocked_;
+  std::function<double(double)> blocked_force_time_psd_;
+  bool quiet_;
+};
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,40 @@
+#include "src/study/sections/blocked_force_section.hpp"
+
+#include <limits>
+#include <string>
+
+#include "src/study/study.hpp"
+
+namespace rollspec::study {
+
+std::vector<KeySpec> BlockedForceSection::keys() {
+  return {
+      real_key("blocked_force", "strip_length", "m",
+               "length of the rough strip the ball slides along; 0: four Welch segments of positions plus the window",
+               std::string("0"), 0.0, std::numeric_limits<double>::infinity()),
+      integer_key("blocked_force", "window",
+                  "cells of the contact solver's square window (8 or more); 0: derived so that the window holds every "
+                  "cell the ball can touch, from the contact radius and the texture rms",
+                  std::string("0"), 0, 4096),
+      integer_key("blocked_force", "step", "path step in cells; 0: a third of the contact radius (at most speed / sample_rate)",
+                  std::string("0"), 0, 1000),
+      integer_key("blocked_force", "segment",
+                  "Welch segment (positions, 16 or more) of the F0 PSD along the path; 0: four times the F0 correlation "
+                  "length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
+                  std::string("0"), 0, 1 << 20),
+  };
+}
+
+BlockedForceSection BlockedForceSection::parse(const Study& s) {
+  BlockedForceSection b;
+  b.strip_length = s.real("blocked_force.strip_length");
+  b.window = s.integer("blocked_force.window");
+  b.step = s.integer("blocked_force.step");
+  b.segment = s.integer("blocked_force.segment");
+  b.strip_length_origin = {s.where("blocked_force.strip_length")};
+  b.window_origin = {s.where("blocked_force.window")};
+  b.segment_origin = {s.where("blocked_force.segment")};
+  return b;
+}
+
+}  // namespace rollspec::study

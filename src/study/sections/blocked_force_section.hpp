@@ -1,0 +1,23 @@
+#pragma once
+// [blocked_force] (scene ball-on-beam): the blocked-force strip's grid where the study sets it
+// (0: derived, stiffness/blocked_force_geometry), read once. The equivalent-roughness stage uses
+// the same grid.
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct BlockedForceSection {
+  double strip_length = 0.0;  // m; 0: derived
+  long long window = 0, step = 0, segment = 0;  // 0: derived
+  KeyOrigin strip_length_origin, window_origin, segment_origin;
+
+  static std::vector<KeySpec> keys();
+  static BlockedForceSection parse(const Study& s);
+};
+
+}  // namespace rollspec::study

@@ -1,0 +1,28 @@
+#pragma once
+// [beam] of scene ball-on-beam: the modal Euler-Bernoulli beam (kernels/beam modal_beam), read once.
+#include <vector>
+
+#include "kernels/beam/modal_beam.hpp"
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct ModalBeamSection {
+  beam::BeamProperties properties;
+  beam::ModeSelection selection;
+  beam::ModalDamping damping;
+  bool static_correction = true;
+  double poisson = 0.0;           // the contact modulus's, not the modal beam's
+  KeyOrigin effective_length_origin, modes_origin, max_frequency_origin;
+
+  static std::vector<KeySpec> keys();
+  static ModalBeamSection parse(const Study& s);
+  // The modes. Refuses an effective length shorter than the span, modes = 0 without max_frequency,
+  // and (at [beam] modes) a beam the kernel refuses.
+  beam::ModalBeam modal_beam() const;
+};
+
+}  // namespace rollspec::study

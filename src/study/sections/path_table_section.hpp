@@ -1,0 +1,22 @@
+#pragma once
+// [path_table] (scene ball-on-beam, law = path): the table P(delta, xi) of strip 0 along the ball's
+// path (kernels/beam B41-B46), read once.
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct PathTableSection {
+  long long approaches = 0, step = 0;  // step 0: derived
+  double strip_length = 0.0;           // m; 0: derived
+  KeyOrigin strip_length_origin;
+
+  static std::vector<KeySpec> keys();
+  static PathTableSection parse(const Study& s);
+};
+
+}  // namespace rollspec::study

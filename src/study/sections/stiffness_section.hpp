@@ -1,0 +1,36 @@
+#pragma once
+// [stiffness]: the contact solver's settings and the stiffness-table stage (scenes stiffness and
+// ball-on-beam), read once. The strip stages (blocked force, equivalent roughness, path table) and
+// the stiffness table take their solver options from here, one parse of hardness, tolerance and
+// max_iterations. The keys' canonical texts are kept for the cached tables' input texts (their hashes).
+#include <map>
+#include <string>
+#include <vector>
+
+#include "kernels/contact/contact_solver.hpp"
+#include "kernels/contact/geometry.hpp"
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct StiffnessSection {
+  bool rough = true;  // surface = rough (else a smooth flat)
+  contact::BallShape shape = contact::BallShape::Sphere;
+  double ball_rms = 0.0, approach_max = 0.0;
+  long long steps = 0, realisations = 0;
+  contact::SolverOptions solver;  // hardness (0: none, so infinite), tolerance, max_iterations
+  KeyOrigin ball_rms_origin, approach_max_origin;
+
+  static std::vector<KeySpec> keys();
+  static StiffnessSection parse(const Study& s);
+  // The canonical value text of [stiffness] `key` (as the resolved study writes it).
+  const std::string& text(const std::string& key) const;
+
+ private:
+  std::map<std::string, std::string> texts_;
+};
+
+}  // namespace rollspec::study
