@@ -186,9 +186,10 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   b.sensor_mean = s.boolean("sensors.average");
   b.dopri = s.text("signal.integrator") == "dopri5";
   b.rtol = s.real("signal.rtol");
-  b.confidence = s.real("spectrum.confidence");
-  b.band_min = s.real("spectrum.band_min");
-  b.band_max = s.real("spectrum.band_max");
+  const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
+  b.confidence = spectrum.confidence;
+  b.band_min = spectrum.band_min;
+  b.band_max = spectrum.band_max;
   b.time_histories = static_cast<std::size_t>(s.integer("output.time_histories"));
   b.reference = s.boolean("output.reference");
   // Ball and its traverse.
@@ -249,13 +250,13 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   check_step_coefficients(b);
   // Record and spectra.
   b.samples = beam::output_samples(m);
-  b.skip = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * m.sample_rate));
-  if (b.skip >= b.samples) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
-  const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
+  b.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start * m.sample_rate));
+  if (b.skip >= b.samples) spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
+  const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > b.samples - b.skip)
-    s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
+    spectrum.segment_origin.refuse("is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
                                      " samples = ((end - start) / speed - skip_start) x sample_rate)");
-  b.welch = study_welch_config(s, m.sample_rate);
+  b.welch = study_welch_config(spectrum, m.sample_rate);
   return b;
 }
 
