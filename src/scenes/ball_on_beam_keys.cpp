@@ -18,7 +18,6 @@
 #include "src/study/sections/blocked_force_section.hpp"
 #include "src/study/sections/path_table_section.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
-#include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
