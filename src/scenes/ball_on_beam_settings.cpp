@@ -13,6 +13,12 @@
 #include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/study_welch.hpp"
+#include "src/study/sections/contact_section.hpp"
+#include "src/study/sections/equivalent_roughness_section.hpp"
+#include "src/study/sections/output_section.hpp"
+#include "src/study/sections/roughness_section.hpp"
+#include "src/study/sections/sensors_section.hpp"
+#include "src/study/sections/signal_section.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -28,21 +34,21 @@ std::string g4(double v) {
   return buf;
 }
 
-std::vector<double> sensor_positions(const Study& s, double length) {
-  auto v = s.numbers("sensors.positions");
-  if (v.empty()) s.refuse("sensors.positions", "lists no position; allowed: comma-separated positions in m");
+std::vector<double> sensor_positions(const study::SensorsSection& sensors, double length) {
+  const std::vector<double>& v = sensors.positions;
+  if (v.empty()) sensors.positions_origin.refuse("lists no position; allowed: comma-separated positions in m");
   for (double x : v)
-    if (x < 0.0 || x > length) s.refuse("sensors.positions", "position " + std::to_string(x) + " m lies outside the span [0, length]");
+    if (x < 0.0 || x > length) sensors.positions_origin.refuse("position " + std::to_string(x) + " m lies outside the span [0, length]");
   return v;
 }
 
-ContactModel contact_model(const Study& s) {
-  const std::string law = s.text("contact.law");
+ContactModel contact_model(const study::ContactSection& c) {
+  const std::string& law = c.law;
   if (law == "table") return ContactModel::table;
   if (law == "literal") return ContactModel::literal;
   if (law == "hertz") return ContactModel::hertz;
   if (law == "path") return ContactModel::path;
-  return s.text("contact.blocked_force") == "solver" ? ContactModel::linearised_solver : ContactModel::linearised_spring;
+  return c.blocked_force == "solver" ? ContactModel::linearised_solver : ContactModel::linearised_spring;
 }
 
 beam::ContactLawKind law_kind(const BallOnBeamSettings& b) {
@@ -78,8 +84,9 @@ void check_step_coefficients(const BallOnBeamSettings& b) {
 }
 
 // [contact] filter and the contact radius a it uses: Hertz under the weight (kernels/beam B35).
-void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
-  b.filter_name = s.text("contact.filter");
+void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeamSettings& b, double a) {
+  const study::KeyOrigin& filter_origin = b.contact_section.filter_origin;
+  b.filter_name = b.contact_section.filter;
   b.filter = b.filter_name == "none"    ? ContactFilter::none
              : b.filter_name == "patch" ? ContactFilter::patch
              : b.filter_name == "iso2d" ? ContactFilter::iso2d
@@ -90,37 +97,37 @@ void read_contact_filter(const Study& s, BallOnBeamSettings& b, double a) {
   // is accepted there but not applied, and the result says so (/contact@filter is what was applied).
   b.filter_applied = b.filter == ContactFilter::patch && (b.path_law() || b.blocked_solver()) ? "none" : b.filter_name;
   if (b.filter == ContactFilter::iso2d && b.blocked_solver())
-    s.refuse("contact.filter", "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
+    filter_origin.refuse("iso2d filters the line texture, which blocked_force = solver does not use (its strip "
                                "resolves the contact itself); allowed with solver: none or patch (both ignored)");
   if (b.filter == ContactFilter::iso2d && b.path_law())
-    s.refuse("contact.filter", "iso2d filters the line texture, which law = path does not use (its strip is the "
+    filter_origin.refuse("iso2d filters the line texture, which law = path does not use (its strip is the "
                                "roughness); allowed with path: none or patch (both ignored)");
   // solver: h_eq enters the point law as the line does (ER-2); the linearised law and the path law
   // have their own treatment of the rough contact.
   if (b.filter == ContactFilter::solver && b.blocked_solver())
-    s.refuse("contact.filter", "solver filters the line texture, which blocked_force = solver does not use (its strip "
+    filter_origin.refuse("solver filters the line texture, which blocked_force = solver does not use (its strip "
                                "resolves the contact itself); allowed with blocked_force = solver: none or patch (both ignored)");
   if (b.filter == ContactFilter::solver && b.path_law())
-    s.refuse("contact.filter", "solver filters the line texture, which law = path does not use (its strip is the "
+    filter_origin.refuse("solver filters the line texture, which law = path does not use (its strip is the "
                                "roughness); allowed with path: none or patch (both ignored)");
-  b.strip_line = s.text("equivalent_roughness.line") == "strip";
+  b.strip_line = er.line == "strip";
   // ER-7 corrects a smooth contact's stiffness; a table law from rough surfaces ([stiffness] surface =
   // rough, seed 001's chain) carries the rough contact's compliance already.
-  b.equivalent_stiffness = b.filter == ContactFilter::solver && s.text("equivalent_roughness.stiffness") == "strip" &&
-                           !(b.uses_table() && s.text("stiffness.surface") == "rough");
+  b.equivalent_stiffness = b.filter == ContactFilter::solver && er.stiffness == "strip" &&
+                           !(b.uses_table() && b.stiffness.rough);
   if (b.strip_line && b.filter != ContactFilter::solver)
-    s.refuse("equivalent_roughness.line", "= strip is the line of [contact] filter = solver; allowed with filter = " +
+    er.line_origin.refuse("= strip is the line of [contact] filter = solver; allowed with filter = " +
                                               b.filter_name + ": synthesised");
   if (b.filter == ContactFilter::solver && b.linearised())
-    s.refuse("contact.filter", "solver gives the equivalent roughness of the nonlinear point laws; allowed with law = "
+    filter_origin.refuse("solver gives the equivalent roughness of the nonlinear point laws; allowed with law = "
                                "linearised: none, patch or iso2d (or law = hertz, table or literal with solver)");
 }
 
-texture::Psd iso2d_study_psd(const Study& s, const BallOnBeamSettings& b) {
+texture::Psd iso2d_study_psd(const BallOnBeamSettings& b) {
   try {
     return iso2d_line_psd(b);
   } catch (const std::exception& e) {
-    s.refuse("contact.filter", std::string("cannot filter the [texture] PSD: ") + e.what());
+    b.contact_section.filter_origin.refuse(std::string("cannot filter the [texture] PSD: ") + e.what());
   }
 }
 
@@ -168,11 +175,13 @@ texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
 
 BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   const study::ModalBeamSection beam_section = study::ModalBeamSection::parse(s);
-  BallOnBeamSettings b({beam_section.modal_beam(), {}, {}, {}, s.real("signal.sample_rate"),
-                        sensor_positions(s, beam_section.properties.length)});
+  const study::SignalSection signal = study::SignalSection::parse(s);
+  const study::SensorsSection sensors = study::SensorsSection::parse(s);
+  BallOnBeamSettings b({beam_section.modal_beam(), {}, {}, {}, signal.sample_rate,
+                        sensor_positions(sensors, beam_section.properties.length)});
   b.beam = beam_section;
   b.ball = study::BallSection::parse(s);
-  b.substeps_origin = {s.where("signal.substeps")};
+  b.substeps_origin = signal.substeps_origin;
   b.blocked_force = study::BlockedForceSection::parse(s);
   b.path_table = study::PathTableSection::parse(s);
   b.strip_surface = study::StripSurfaceSection::parse(s);
@@ -183,14 +192,18 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   const double length = b.beam.properties.length;
   b.texture_psd = texture_io::study_psd(s);
   b.psd = b.texture_psd;
-  b.sensor_mean = s.boolean("sensors.average");
-  b.dopri = s.text("signal.integrator") == "dopri5";
-  b.rtol = s.real("signal.rtol");
-  b.confidence = s.real("spectrum.confidence");
-  b.band_min = s.real("spectrum.band_min");
-  b.band_max = s.real("spectrum.band_max");
-  b.time_histories = static_cast<std::size_t>(s.integer("output.time_histories"));
-  b.reference = s.boolean("output.reference");
+  b.contact_section = study::ContactSection::parse(s);
+  const study::RoughnessSection roughness = study::RoughnessSection::parse(s);
+  const study::OutputSection output = study::OutputSection::parse(s);
+  b.sensor_mean = sensors.average;
+  b.dopri = signal.integrator == "dopri5";
+  b.rtol = signal.rtol;
+  const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
+  b.confidence = spectrum.confidence;
+  b.band_min = spectrum.band_min;
+  b.band_max = spectrum.band_max;
+  b.time_histories = static_cast<std::size_t>(output.time_histories);
+  b.reference = output.reference;
   // Ball and its traverse.
   const double radius = b.ball.radius;
   m.ball.mass = b.ball.mass();
@@ -202,30 +215,30 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   if (m.traverse.x_end > length) b.ball.end_origin.refuse("lies beyond the span [0, length]");
   // Anti-alias band limit (kernels/beam B40): the output holds f <= f_s / 2, that is k <= pi f_s / v;
   // roughness beyond it would drive the linear response above f_s / 2, which the sampling aliases in.
-  if (s.text("roughness.band_limit") == "output") {
+  if (roughness.band_limit == "output") {
     b.band_limit_wavenumber = M_PI * m.sample_rate / m.traverse.speed;
     b.psd = texture::band_limited(std::move(b.psd), b.band_limit_wavenumber);
   }
   // Contact.
-  b.law_name = s.text("contact.law");
-  b.contact = contact_model(s);
+  b.law_name = b.contact_section.law;
+  b.contact = contact_model(b.contact_section);
   beam::ContactLaw& law = m.contact;
   law.kind = law_kind(b);
   law.effective_modulus = b.ball.effective_modulus(b.beam.properties.youngs_modulus, b.beam.poisson);
   law.radius = radius;
-  law.k0 = s.real("contact.k0");
-  law.damping = s.real("contact.damping");
-  law.loss = s.text("contact.loss") == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
+  law.k0 = b.contact_section.k0;
+  law.damping = b.contact_section.damping;
+  law.loss = b.contact_section.loss == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
   const double hertz_compression = std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
-  read_contact_filter(s, b, beam::hertz_half_width(radius, hertz_compression));
+  read_contact_filter(study::EquivalentRoughnessSection::parse(s), b, beam::hertz_half_width(radius, hertz_compression));
   // Integration step.
-  b.step.substeps = static_cast<int>(s.integer("signal.substeps"));
-  b.step.hold = s.text("signal.hold") == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
+  b.step.substeps = static_cast<int>(signal.substeps);
+  b.step.hold = signal.hold == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
   // Roughness line over the whole span, so the patch filter and the traverse never run off it.
   // One roughness sample per integration step by default: the interpolation between samples then
   // low-passes the excitation only near the step's own Nyquist frequency.
-  b.spacing = s.real("roughness.spacing") > 0.0 ? s.real("roughness.spacing")
+  b.spacing = roughness.spacing > 0.0 ? roughness.spacing
                                                 : m.traverse.speed / (m.sample_rate * static_cast<double>(b.step.substeps));
   b.line_samples = static_cast<std::size_t>(std::floor(length / b.spacing)) + 1;
   // A spacing that does not divide the span leaves the last sample short of it: the line must still
@@ -233,11 +246,11 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   const double reach = m.traverse.x_end + b.patch_half_width;
   if (static_cast<double>(b.line_samples - 1) * b.spacing < reach)
     b.line_samples = static_cast<std::size_t>(std::ceil(reach / b.spacing)) + 1;
-  if (b.line_samples > (1u << 26)) s.refuse("roughness.spacing", "gives more than 2^26 samples over the span");
+  if (b.line_samples > (1u << 26)) roughness.spacing_origin.refuse("gives more than 2^26 samples over the span");
   // The patch average runs on the samples' linear interpolant (B35a: an extra sinc^2(k dx/2));
   // a band-limited line is drawn with that loss undone (B40a), so it sees the continuous texture.
   if (b.filter == ContactFilter::iso2d)
-    b.line_psd = iso2d_study_psd(s, b);  // no patch average on the samples: nothing to compensate (B40a)
+    b.line_psd = iso2d_study_psd(b);  // no patch average on the samples: nothing to compensate (B40a)
   else if (b.filter == ContactFilter::solver)
     b.line_psd = b.psd;  // until the equivalent-roughness stage (no patch average: nothing to compensate, B40a)
   else
@@ -249,13 +262,13 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   check_step_coefficients(b);
   // Record and spectra.
   b.samples = beam::output_samples(m);
-  b.skip = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") * m.sample_rate));
-  if (b.skip >= b.samples) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
-  const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
+  b.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start * m.sample_rate));
+  if (b.skip >= b.samples) spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
+  const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > b.samples - b.skip)
-    s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
+    spectrum.segment_origin.refuse("is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
                                      " samples = ((end - start) / speed - skip_start) x sample_rate)");
-  b.welch = study_welch_config(s, m.sample_rate);
+  b.welch = study_welch_config(spectrum, m.sample_rate);
   return b;
 }
 

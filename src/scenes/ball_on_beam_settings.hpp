@@ -16,6 +16,7 @@
 #include "kernels/texture/psd.hpp"
 #include "src/study/sections/ball_section.hpp"
 #include "src/study/sections/blocked_force_section.hpp"
+#include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/key_origin.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/path_table_section.hpp"
@@ -43,6 +44,7 @@ struct BallOnBeamSettings {
   std::uint64_t seed = 0;
   study::ModalBeamSection beam;  // [beam] as read
   study::BallSection ball;       // [ball] as read
+  study::ContactSection contact_section;  // [contact] as read
   study::KeyOrigin substeps_origin;
   // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
   study::BlockedForceSection blocked_force;

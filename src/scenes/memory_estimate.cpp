@@ -13,7 +13,11 @@
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
+#include "src/study/sections/output_section.hpp"
+#include "src/study/sections/signal_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -61,10 +65,11 @@ Item contact_grid(const study::Study& s) {
 // The solver's square window and the rough strip it slides along, on the grid the stage uses
 // (derived from the contact radius where the study leaves it open).
 Item blocked_force_window(const study::Study& s) {
-  const double radius = s.real("ball.radius"), weight = ball_weight(s), e_star = ball_e_star(s);
+  const double radius = study::BallSection::parse(s).radius, weight = ball_weight(s), e_star = ball_e_star(s);
   const auto g = stiffness::blocked_force_geometry(study::BlockedForceSection::parse(s), study::StripSurfaceSection::parse(s),
                                                    texture_io::study_psd(s), radius, e_star, weight,
-                                                   s.real("ball.speed") / s.real("signal.sample_rate"));
+                                                   study::BallSection::parse(s).speed /
+                                                       study::SignalSection::parse(s).sample_rate);
   const double w = static_cast<double>(g.window), strip = static_cast<double>(g.nx) * static_cast<double>(g.ny);
   return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0, where(s, {"blocked_force.window", "surface.ny", "surface.spacing"}),
           "blocked-force contact window (" + std::to_string(g.window) + " cells) and strip (" + std::to_string(g.ny) +
@@ -174,10 +179,11 @@ std::vector<Item> items(const study::Study& s, int threads) {
     const double histories = key_real(s, "output.time_histories");
     if (histories > 0)
       out.push_back({8.0 * record * (sensors + 4.0) * histories, where(s, {"output.time_histories"}), "stored time histories"});
-    const std::string law = s.text("contact.law");
-    if ((law == "table" || law == "literal") && s.text("stiffness.surface") == "rough") out.push_back(contact_grid(s));
-    if (law == "linearised" && s.text("contact.blocked_force") == "solver") out.push_back(blocked_force_window(s));
-    if (law == "linearised" && s.boolean("output.reference")) out.push_back(linear_reference(s, sensors, record));
+    const study::ContactSection contact = study::ContactSection::parse(s);
+    const std::string& law = contact.law;
+    if ((law == "table" || law == "literal") && study::StiffnessSection::parse(s).rough) out.push_back(contact_grid(s));
+    if (law == "linearised" && contact.blocked_force == "solver") out.push_back(blocked_force_window(s));
+    if (law == "linearised" && study::OutputSection::parse(s).reference) out.push_back(linear_reference(s, sensors, record));
     if (law == "path") out.push_back(path_table(s, t));
   } else if (scene == "rolling-pipe") {
     if (s.text("roughness.kind") != "line") {

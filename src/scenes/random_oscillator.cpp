@@ -13,7 +13,6 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/rng/philox_stream.hpp"
-#include "src/study/study.hpp"
 
 namespace rollspec::scenes {
 

@@ -40,9 +40,10 @@ RandomOscillatorSettings read_random_oscillator_settings(const Study& s) {
   o.sample_rate = s.real("signal.sample_rate");
   o.amplitudes = s.text("force.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
   o.level = s.real("force.level");
-  o.confidence = s.real("spectrum.confidence");
-  o.band_min = s.real("spectrum.band_min");
-  o.band_max = s.real("spectrum.band_max");
+  const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
+  o.confidence = spectrum.confidence;
+  o.band_min = spectrum.band_min;
+  o.band_max = spectrum.band_max;
   // Cross-key checks, each naming the key that must change.
   const double fs = o.sample_rate;
   const double samples = std::round(s.real("signal.duration") * fs / 2.0) * 2.0;
@@ -53,11 +54,11 @@ RandomOscillatorSettings read_random_oscillator_settings(const Study& s) {
     s.refuse("oscillator.natural_frequency", "must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
   o.f_max = s.real("force.f_max") == 0.0 ? fs / 2 : s.real("force.f_max");
   if (o.f_max > fs / 2) s.refuse("force.f_max", "exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
-  const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
+  const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > o.samples)
-    s.refuse("spectrum.segment",
+    spectrum.segment_origin.refuse(
              "is longer than one realisation's record (" + std::to_string(o.samples) + " samples = duration x sample_rate)");
-  o.welch = study_welch_config(s, fs);
+  o.welch = study_welch_config(spectrum, fs);
   return o;
 }
 

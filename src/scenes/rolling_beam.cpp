@@ -11,7 +11,6 @@
 #include "kernels/rolling/solver.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
-#include "src/study/study.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::scenes {

@@ -65,9 +65,10 @@ RollingPipeSettings read_rolling_pipe_settings(const Study& s) {
   p.psd = texture_io::study_psd(s);
   p.line = s.text("roughness.kind") == "line";
   p.sensor_mean = s.boolean("sensors.average");
-  p.confidence = s.real("spectrum.confidence");
-  p.band_min = s.real("spectrum.band_min");
-  p.band_max = s.real("spectrum.band_max");
+  const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
+  p.confidence = spectrum.confidence;
+  p.band_min = spectrum.band_min;
+  p.band_max = spectrum.band_max;
   const double d = s.real("pipe.diameter"), di = s.real("pipe.inner_diameter");
   if (di >= d) s.refuse("pipe.inner_diameter", "must be smaller than [pipe] diameter");
   p.radius = 0.5 * d;
@@ -145,13 +146,13 @@ RollingPipeSettings read_rolling_pipe_settings(const Study& s) {
     s.refuse(p.line ? "roughness.spacing" : "surface.spacing", m.str());
   }
   p.samples = p.steps + 1;
-  p.skip = static_cast<std::size_t>(std::ceil(s.real("spectrum.skip_start") / p.dt));
-  if (p.skip >= p.samples) s.refuse("spectrum.skip_start", "leaves nothing of the record (" + std::to_string(p.samples) + " samples)");
-  const auto segment = static_cast<std::size_t>(s.integer("spectrum.segment"));
+  p.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start / p.dt));
+  if (p.skip >= p.samples) spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(p.samples) + " samples)");
+  const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > p.samples - p.skip)
-    s.refuse("spectrum.segment", "is longer than the analysed record (" + std::to_string(p.samples - p.skip) +
+    spectrum.segment_origin.refuse("is longer than the analysed record (" + std::to_string(p.samples - p.skip) +
                                      " samples = (distance / speed - skip_start) / dt)");
-  p.welch = study_welch_config(s, 1.0 / p.dt);
+  p.welch = study_welch_config(spectrum, 1.0 / p.dt);
   p.solver.analysis = Analysis::Dynamic;
   p.solver.max_iterations = 30;
   p.solver.max_cuts = 12;

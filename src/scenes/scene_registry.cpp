@@ -9,6 +9,7 @@
 #include "src/scenes/rolling_pipe.hpp"
 #include "src/scenes/stiffness_scene.hpp"
 #include "src/scenes/texture_scene.hpp"
+#include "src/study/sections/spectrum_section.hpp"
 #include "src/study/study.hpp"
 #include "src/version.hpp"
 
@@ -48,7 +49,7 @@ const SceneInfo& find_scene(const std::string& name) {
 std::vector<KeySpec> common_keys() {
   std::vector<std::string> names;
   for (const auto& s : scene_registry()) names.push_back(s.name);
-  return {
+  std::vector<KeySpec> keys = {
       choice_key("study", "scene", "the scene every realisation runs", std::nullopt, names),
       integer_key("study", "realisations", "number of Monte-Carlo realisations K", std::nullopt, 1, 1e9),
       integer_key("study", "seed", "study seed; realisation i draws from Philox keyed by (seed, i)", std::nullopt, 0,
@@ -61,16 +62,9 @@ std::vector<KeySpec> common_keys() {
         k.power_of_two = true;
         return k;
       }(),
-      integer_key("spectrum", "segment", "Welch segment length in samples", std::string("4096"), 16, 1 << 24),
-      real_key("spectrum", "overlap", "-", "Welch segment overlap as a fraction of the segment", std::string("0.5"), 0.0,
-               0.95),
-      choice_key("spectrum", "window", "Welch data window", std::string("hann"), {"hann", "rectangular"}),
-      real_key("spectrum", "band_min", "Hz", "lowest third-octave band edge reported", std::string("10"), 0.0, 1e9, false),
-      real_key("spectrum", "band_max", "Hz", "highest third-octave band edge reported (capped at Nyquist)",
-               std::string("1e9"), 0.0, 1e9, false),
-      real_key("spectrum", "confidence", "-", "confidence level of the chi-square interval", std::string("0.95"), 0.5,
-               0.999),
   };
+  for (auto& t : SpectrumSection::keys()) keys.push_back(t);
+  return keys;
 }
 
 std::vector<KeySpec> schema_for(const std::string& scene) {

@@ -57,25 +57,6 @@ std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double ra
 const TableKind kEquivalentRoughnessTableKind = {kEquivalentRoughnessFileType, "/equivalent_roughness",
                                                  "equivalent-roughness-", "equivalent-roughness table"};
 
-std::vector<KeySpec> equivalent_roughness_keys() {
-  return {
-      integer_key("equivalent_roughness", "strips",
-                  "filter = solver: rough strips (surface realisations 0..strips-1) whose h_eq PSD is averaged; the "
-                  "strip grid is the blocked force's ([blocked_force] strip_length, window, step, segment)",
-                  std::string("2"), 1, 1024),
-      choice_key("equivalent_roughness", "line",
-                 "filter = solver: synthesised (a Philox line texture per realisation from the strip-mean h_eq PSD) "
-                 "or strip (h_eq of strip 0 itself along the ball's path, on the grid law = path uses: the point law "
-                 "on h_eq against law = path on the same strip; every realisation rolls over this one strip)",
-                 std::string("synthesised"), {"synthesised", "strip"}),
-      choice_key("equivalent_roughness", "stiffness",
-                 "filter = solver: strip (the point law stretched along the approach so that it carries the weight "
-                 "with the strips' mean contact stiffness dP/d delta at delta_eq, kernels/contact ER-7) or law (the "
-                 "law's own stiffness; h_eq alone)",
-                 std::string("strip"), {"strip", "law"}),
-  };
-}
-
 std::string EquivalentRoughnessTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
   for (double v : {smooth_approach, smooth_stiffness, load, strips}) h = ensemble::fnv1a64(&v, sizeof v, h);

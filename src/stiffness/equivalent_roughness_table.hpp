@@ -40,8 +40,6 @@ struct EquivalentRoughnessTable : TableData {
   std::string checksum() const override;
 };
 
-std::vector<study::KeySpec> equivalent_roughness_keys();
-
 // Estimated build time on one core (s), for the plan: strips x positions force-controlled solves.
 double equivalent_roughness_seconds(const study::Study& s, const BlockedForceGeometry& g);
 

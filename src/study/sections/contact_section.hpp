@@ -1,0 +1,24 @@
+#pragma once
+// [contact] (scene ball-on-beam): the contact law, its damping and loss of contact, the linearised
+// law's blocked force and the filter on the roughness, read once; the checks across sections stay
+// with the scene's settings (ball_on_beam_settings), named by the origins kept here.
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct ContactSection {
+  std::string law, loss, blocked_force, filter;  // as written
+  double damping = 0.0, k0 = 0.0;
+  KeyOrigin filter_origin;
+
+  static std::vector<KeySpec> keys();
+  static ContactSection parse(const Study& s);
+};
+
+}  // namespace rollspec::study

@@ -1,0 +1,37 @@
+#include "src/study/sections/equivalent_roughness_section.hpp"
+
+#include <string>
+
+#include "src/study/study.hpp"
+
+namespace rollspec::study {
+
+std::vector<KeySpec> EquivalentRoughnessSection::keys() {
+  return {
+      integer_key("equivalent_roughness", "strips",
+                  "filter = solver: rough strips (surface realisations 0..strips-1) whose h_eq PSD is averaged; the "
+                  "strip grid is the blocked force's ([blocked_force] strip_length, window, step, segment)",
+                  std::string("2"), 1, 1024),
+      choice_key("equivalent_roughness", "line",
+                 "filter = solver: synthesised (a Philox line texture per realisation from the strip-mean h_eq PSD) "
+                 "or strip (h_eq of strip 0 itself along the ball's path, on the grid law = path uses: the point law "
+                 "on h_eq against law = path on the same strip; every realisation rolls over this one strip)",
+                 std::string("synthesised"), {"synthesised", "strip"}),
+      choice_key("equivalent_roughness", "stiffness",
+                 "filter = solver: strip (the point law stretched along the approach so that it carries the weight "
+                 "with the strips' mean contact stiffness dP/d delta at delta_eq, kernels/contact ER-7) or law (the "
+                 "law's own stiffness; h_eq alone)",
+                 std::string("strip"), {"strip", "law"}),
+  };
+}
+
+EquivalentRoughnessSection EquivalentRoughnessSection::parse(const Study& s) {
+  EquivalentRoughnessSection p;
+  p.strips = s.integer("equivalent_roughness.strips");
+  p.line = s.text("equivalent_roughness.line");
+  p.stiffness = s.text("equivalent_roughness.stiffness");
+  p.line_origin = {s.where("equivalent_roughness.line")};
+  return p;
+}
+
+}  // namespace rollspec::study

@@ -1,0 +1,23 @@
+#pragma once
+// [equivalent_roughness] (scene ball-on-beam, filter = solver): the strips whose h_eq PSD is
+// averaged, the line drawn from it and the stiffness correction, read once.
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct EquivalentRoughnessSection {
+  long long strips = 0;
+  std::string line, stiffness;  // as written
+  KeyOrigin line_origin;
+
+  static std::vector<KeySpec> keys();
+  static EquivalentRoughnessSection parse(const Study& s);
+};
+
+}  // namespace rollspec::study

@@ -1,0 +1,21 @@
+#pragma once
+// [output] (scene ball-on-beam): stored time histories and the linearised law's reference, read once.
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct OutputSection {
+  long long time_histories = 0;
+  bool reference = true;
+
+  static std::vector<KeySpec> keys();
+  static OutputSection parse(const Study& s);
+};
+
+}  // namespace rollspec::study

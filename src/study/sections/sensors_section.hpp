@@ -1,0 +1,23 @@
+#pragma once
+// [sensors] (scene ball-on-beam): accelerometer positions along the beam and the mean over them,
+// read once; positions against the span are checked by the scene, at positions_origin.
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct SensorsSection {
+  std::vector<double> positions;  // m, as listed
+  bool average = true;
+  KeyOrigin positions_origin;
+
+  static std::vector<KeySpec> keys();
+  static SensorsSection parse(const Study& s);
+};
+
+}  // namespace rollspec::study

@@ -1,0 +1,37 @@
+#include "src/study/sections/signal_section.hpp"
+
+#include <limits>
+#include <string>
+
+#include "src/study/study.hpp"
+
+namespace rollspec::study {
+
+std::vector<KeySpec> SignalSection::keys() {
+  const double inf = std::numeric_limits<double>::infinity();
+  return {
+      real_key("signal", "sample_rate", "Hz", "output sample rate of accelerations and forces", std::string("25600"), 0.0,
+               inf, false),
+      integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"), 1,
+                  1000),
+      choice_key("signal", "hold",
+                 "modal force over a step: quadratic (order 3, default) or linear (order 2)",
+                 std::string("quadratic"), {"quadratic", "linear"}),
+      choice_key("signal", "integrator", "exact (exact modal step, implicit contact) or dopri5 (reference)",
+                 std::string("exact"), {"exact", "dopri5"}),
+      real_key("signal", "rtol", "-", "relative tolerance of the dopri5 reference", std::string("1e-8"), 1e-14, 1e-2),
+  };
+}
+
+SignalSection SignalSection::parse(const Study& s) {
+  SignalSection p;
+  p.sample_rate = s.real("signal.sample_rate");
+  p.substeps = s.integer("signal.substeps");
+  p.hold = s.text("signal.hold");
+  p.integrator = s.text("signal.integrator");
+  p.rtol = s.real("signal.rtol");
+  p.substeps_origin = {s.where("signal.substeps")};
+  return p;
+}
+
+}  // namespace rollspec::study

@@ -1,0 +1,33 @@
+#pragma once
+// [spectrum], shared by the ensemble scenes: the Welch estimator (segment, overlap, window), the
+// reported band range and the confidence level, read once. skip_start is a key of the scenes that
+// have it (0 where the scene has none). The sample rate comes from the scene.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "kernels/spectral/welch.hpp"
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class Study;
+
+struct SpectrumSection {
+  long long segment = 0;
+  double overlap = 0.0, band_min = 0.0, band_max = 0.0, confidence = 0.0, skip_start = 0.0;
+  std::string window, band_min_text;  // band_min as written, for the band-range message
+  KeyOrigin segment_origin, band_min_origin, band_max_origin, skip_start_origin;
+
+  static std::vector<KeySpec> keys();  // the shared keys (not skip_start: its doc is the scene's)
+  static SpectrumSection parse(const Study& s);
+
+  // Refuses, before any work, a band_min / band_max range that holds no whole third-octave band
+  // between the frequency step and the Nyquist frequency of the scene's sample rate.
+  void check_band_range(double sample_rate, std::size_t segment_samples) const;
+  // The Welch estimator at the scene's sample rate, the band range checked.
+  spectral::WelchConfig welch_config(double sample_rate) const;
+};
+
+}  // namespace rollspec::study
