@@ -67,12 +67,15 @@ RECIPES = {
     # stiffness reads an existing --out as its cached table first; --rebuild goes on to write it.
     "stiffness --rebuild": ("stiffness table", ["stiffness", "hertz.ini", "--out", "OUT", "--quiet", "--rebuild"],
                             "hertz.ini"),
+    # init reads no input: a study of the user's (osc.ini) stands for the file it must not replace.
+    "init": ("study template", ["init", "random-oscillator", "--out", "OUT"], "osc.ini"),
 }
 # Besides 73 (cannot create) and 64 (an input as output): stiffness refuses an --out that is not a
 # table it can reuse as bad data (65), and a table path in a missing directory as a bad key (78).
 EXTRA_CODES = {"stiffness": {65, 78}, "stiffness --rebuild": {78}}
 # What each output kind is not: a rollspec file of another kind made by another recipe.
-OTHER_KIND = {"run": "texture", "psd": "run", "texture": "run", "stiffness": "run", "stiffness --rebuild": "run"}
+OTHER_KIND = {"run": "texture", "psd": "run", "texture": "run", "stiffness": "run", "stiffness --rebuild": "run",
+              "init": "run"}
 
 
 def writing_commands():
