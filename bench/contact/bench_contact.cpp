@@ -81,9 +81,11 @@ std::vector<double> rough_surface(std::size_t n, double dx, double sigma, double
     if (i + 1 < n * n) real[i + 1] = r * std::sin(2 * kPi * u2);
   }
   const rollspec::spectral::FftwPlan fwd(
-      [&] { return fftw_plan_dft_r2c_2d(int(n), int(n), real.data(), spec.data(), FFTW_ESTIMATE); }, "bench surface r2c");
+      [&] { return fftw_plan_dft_r2c_2d(int(n), int(n), real.data(), spec.data(), FFTW_ESTIMATE); },
+      "bench surface r2c");
   const rollspec::spectral::FftwPlan bwd(
-      [&] { return fftw_plan_dft_c2r_2d(int(n), int(n), spec.data(), real.data(), FFTW_ESTIMATE); }, "bench surface c2r");
+      [&] { return fftw_plan_dft_c2r_2d(int(n), int(n), spec.data(), real.data(), FFTW_ESTIMATE); },
+      "bench surface c2r");
   fftw_execute(fwd.get());
   const double len = double(n) * dx;
   for (std::size_t r = 0; r < n; ++r) {
@@ -141,8 +143,8 @@ void bench_iteration(std::size_t n) {
     t_iter = std::min(t_iter, (thread_cpu_seconds() - t0) / r.iterations);
   }
   std::printf("convolution,%zu,%.6e,,,padded %zux%zu r2c/c2r\n", n, t_conv, op.fft_nx(), op.fft_ny());
-  std::printf("cg_iteration,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions) on 1 thread\n", n, t_iter, t_iter / (2 * t_conv),
-              r.iterations);
+  std::printf("cg_iteration,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions) on 1 thread\n", n, t_iter,
+              t_iter / (2 * t_conv), r.iterations);
   // The same on all threads, wall time.
   omp_set_num_threads(threads);
   double w_conv = 1e300, w_iter = 1e300;
@@ -155,9 +157,10 @@ void bench_iteration(std::size_t n) {
     r = solver.solve(gap, w, pc, opt);
     w_iter = std::min(w_iter, seconds_since(t0) / r.iterations);
   }
-  std::printf("convolution_wall,%zu,%.6e,%.3f,,wall seconds on %d threads (ratio = vs 1 thread CPU)\n", n, w_conv, w_conv / t_conv, threads);
-  std::printf("cg_iteration_wall,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions), wall on %d threads\n", n, w_iter,
-              w_iter / (2 * w_conv), r.iterations, threads);
+  std::printf("convolution_wall,%zu,%.6e,%.3f,,wall seconds on %d threads (ratio = vs 1 thread CPU)\n", n, w_conv,
+              w_conv / t_conv, threads);
+  std::printf("cg_iteration_wall,%zu,%.6e,%.3f,%d,ratio = iteration / (2 convolutions), wall on %d threads\n", n,
+              w_iter, w_iter / (2 * w_conv), r.iterations, threads);
   std::fflush(stdout);
 }
 
@@ -201,7 +204,8 @@ void bench_sides() {
 
 // Cold Hertz solve at n² (ball centre on a cell corner, 0.3 n/2 cells per contact radius), with the
 // coarse start of README Eq. 16 or the line-search start: wall and CPU seconds, iterations.
-ContactResult hertz_cold(std::size_t n, bool coarse, double& wall, double& cpu, double& t_plan, bool precondition = true) {
+ContactResult hertz_cold(std::size_t n, bool coarse, double& wall, double& cpu, double& t_plan,
+                         bool precondition = true) {
   const double e_star = 115.4e9, radius = 0.02, w = 0.241e-6;
   const double a = std::sqrt(radius * w), dx = a / (0.3 * double(n) / 2);
   const Grid grid{n, n, dx, dx};
@@ -238,9 +242,11 @@ void bench_hertz_iterations(bool quick) {
       for (bool coarse : {false, true}) {
         double wall = 0, cpu = 0, plan = 0;
         const ContactResult r = hertz_cold(n, coarse, wall, cpu, plan, precondition);
-        std::printf("hertz_iterations,%zu,%.4f,%.3f,%d,%s start %s CG: %d fine + %d coarse-grid iterations (ratio = CPU s; wall in seconds; threads=%d)\n",
-                    n, wall, cpu, r.iterations, coarse ? "coarse" : "line-search", precondition ? "preconditioned" : "plain",
-                    r.iterations, r.coarse_iterations, omp_get_max_threads());
+        std::printf(
+            "hertz_iterations,%zu,%.4f,%.3f,%d,%s start %s CG: %d fine + %d coarse-grid iterations (ratio = CPU s; "
+            "wall in seconds; threads=%d)\n",
+            n, wall, cpu, r.iterations, coarse ? "coarse" : "line-search", precondition ? "preconditioned" : "plain",
+            r.iterations, r.coarse_iterations, omp_get_max_threads());
         std::fflush(stdout);
       }
   }
@@ -254,9 +260,11 @@ void bench_hertz_solve() {
   hertz_cold(n, true, wall, cpu, t_plan);  // warm-up: FFTW wisdom, page faults
   const ContactResult r = hertz_cold(n, true, wall, cpu, t_plan);
   const double force = 4.0 / 3.0 * e_star * std::sqrt(radius) * std::pow(w, 1.5);
-  std::printf("hertz_solve,%zu,%.4f,%.3e,%d,wall seconds on %d threads; cold (coarse) start to 1e-10 converged=%d +%d coarse-grid iterations; %.2f s CPU (+%.2f s FFTW_MEASURE planning; %.1f cells/a)\n",
-              n, wall, r.force / force - 1.0, r.iterations, omp_get_max_threads(), int(r.converged), r.coarse_iterations,
-              cpu, t_plan, 0.3 * double(n) / 2);
+  std::printf(
+      "hertz_solve,%zu,%.4f,%.3e,%d,wall seconds on %d threads; cold (coarse) start to 1e-10 converged=%d +%d "
+      "coarse-grid iterations; %.2f s CPU (+%.2f s FFTW_MEASURE planning; %.1f cells/a)\n",
+      n, wall, r.force / force - 1.0, r.iterations, omp_get_max_threads(), int(r.converged), r.coarse_iterations, cpu,
+      t_plan, 0.3 * double(n) / 2);
   // Frozen-set stiffness on the converged field (warm start: 0 contact iterations).
   const Grid grid{n, n, a / (0.3 * double(n) / 2), a / (0.3 * double(n) / 2)};
   ContactSolver solver(grid, e_star, Boundary::Open, PlannerEffort::Measure);
@@ -270,9 +278,11 @@ void bench_hertz_solve() {
   const auto t0 = Clock::now();
   const ContactResult rk = solver.solve(gap, w, p, opt);
   const double tk = seconds_since(t0);
-  std::printf("hertz_stiffness,%zu,%.4f,%.3e,%d,wall seconds; frozen-set CG to 1e-12 + sub-cell edge (ratio = k / 2E*a - 1; frozen set alone %.3e)\n",
-              n, tk, rk.stiffness / (2 * e_star * a) - 1.0, rk.stiffness_iterations,
-              rk.frozen_stiffness / (2 * e_star * a) - 1.0);
+  std::printf(
+      "hertz_stiffness,%zu,%.4f,%.3e,%d,wall seconds; frozen-set CG to 1e-12 + sub-cell edge (ratio = k / 2E*a - 1; "
+      "frozen set alone %.3e)\n",
+      n, tk, rk.stiffness / (2 * e_star * a) - 1.0, rk.stiffness_iterations,
+      rk.frozen_stiffness / (2 * e_star * a) - 1.0);
   std::fflush(stdout);
 }
 
@@ -324,8 +334,10 @@ void bench_seed_table(int realisations) {
       f_at = f;
     }
   }
-  std::printf("seed_table,%zu,%.3f,%.3f,%ld,%d realisations x %zu steps threads=%d (wall time; %.1f s CPU) unconverged=%d mean force at that step %.3g N\n",
-              n, t, k_ratio, iterations, realisations, steps, omp_get_max_threads(), cpu, failures, f_at);
+  std::printf(
+      "seed_table,%zu,%.3f,%.3f,%ld,%d realisations x %zu steps threads=%d (wall time; %.1f s CPU) unconverged=%d mean "
+      "force at that step %.3g N\n",
+      n, t, k_ratio, iterations, realisations, steps, omp_get_max_threads(), cpu, failures, f_at);
   std::fflush(stdout);
 }
 void bench_blocked_force() {
@@ -344,16 +356,20 @@ void bench_blocked_force() {
   double t0 = thread_cpu_seconds();
   const BlockedForcePath path = blocked_force_path(solver, strip, heights, radius, BallShape::Sphere, x, d, opt);
   const double t = thread_cpu_seconds() - t0;
-  std::printf("blocked_force_path,%zu,%.4f,%.4e,%d,%zu positions at d = %.4g um window %zux%zu (ratio = s per position; +%d stiffness iterations) converged=%d mean F0 %.4g N k0 %.4g N/m (frozen set %.4g)\n",
-              n_window, t, t / double(count), path.iterations, count, d * 1e6, n_window, n_window,
-              path.stiffness_iterations, int(path.converged), path.mean_force, path.k0, path.k0_frozen);
+  std::printf(
+      "blocked_force_path,%zu,%.4f,%.4e,%d,%zu positions at d = %.4g um window %zux%zu (ratio = s per position; +%d "
+      "stiffness iterations) converged=%d mean F0 %.4g N k0 %.4g N/m (frozen set %.4g)\n",
+      n_window, t, t / double(count), path.iterations, count, d * 1e6, n_window, n_window, path.stiffness_iterations,
+      int(path.converged), path.mean_force, path.k0, path.k0_frozen);
   std::fflush(stdout);
   t0 = thread_cpu_seconds();
   const BlockedForcePath at = blocked_force_at_load(solver, strip, heights, radius, BallShape::Sphere, x, load, opt);
   const double tl = thread_cpu_seconds() - t0;
-  std::printf("blocked_force_load,%zu,%.4f,%.4e,%d,W = %.3g N: %d paths + %d pre-search paths %d solves (ratio = s per solve; +%d stiffness iterations) converged=%d d0 = %.4g um k0 %.4g N/m\n",
-              n_window, tl, tl / double(at.solves), at.iterations, load, at.paths, at.presearch_paths, at.solves,
-              at.stiffness_iterations, int(at.converged), at.approach * 1e6, at.k0);
+  std::printf(
+      "blocked_force_load,%zu,%.4f,%.4e,%d,W = %.3g N: %d paths + %d pre-search paths %d solves (ratio = s per solve; "
+      "+%d stiffness iterations) converged=%d d0 = %.4g um k0 %.4g N/m\n",
+      n_window, tl, tl / double(at.solves), at.iterations, load, at.paths, at.presearch_paths, at.solves,
+      at.stiffness_iterations, int(at.converged), at.approach * 1e6, at.k0);
   std::fflush(stdout);
 }
 // Path table (kernels/beam README B41-B45) on the seed-like strip of bench_blocked_force: build wall
@@ -365,17 +381,18 @@ void bench_path_table() {
   const Grid strip{n_strip, n_strip, dx, dx}, window{n_window, n_window, dx, dx};
   const auto heights = rough_surface(n_strip, dx, sigma, corr, 2002u);
   std::vector<double> x(count);
-  for (std::size_t k = 0; k < count; ++k)
-    x[k] = strip.x(n_strip / 2 - count * step / 2 + k * step);
+  for (std::size_t k = 0; k < count; ++k) x[k] = strip.x(n_strip / 2 - count * step / 2 + k * step);
   SolverOptions opt;
   opt.hardness = hardness;
   opt.tolerance = 1e-10;
   const auto t0 = Clock::now();
   const PathTable t = build_path_table(window, e_star, strip, heights, radius, BallShape::Sphere, x, load, opt);
   const double wall = seconds_since(t0);
-  std::printf("path_table_build,%zu,%.4f,%.4e,%d,%zu approaches x %zu positions window %zu (ratio = wall s per solve) converged=%d delta %.4g..%.4g um\n",
-              n_window, wall, wall / double(t.solves), t.iterations, t.approach.size(), count, n_window, int(t.converged),
-              t.approach.front() * 1e6, t.approach.back() * 1e6);
+  std::printf(
+      "path_table_build,%zu,%.4f,%.4e,%d,%zu approaches x %zu positions window %zu (ratio = wall s per solve) "
+      "converged=%d delta %.4g..%.4g um\n",
+      n_window, wall, wall / double(t.solves), t.iterations, t.approach.size(), count, n_window, int(t.converged),
+      t.approach.front() * 1e6, t.approach.back() * 1e6);
   std::fflush(stdout);
   const rollspec::beam::PathContactTable table({t.position, t.approach, t.first_contact, t.force});
   double worst_d = 0.0, worst_x = 0.0, sum_d = 0.0, sum_x = 0.0;
@@ -385,19 +402,24 @@ void bench_path_table() {
       const double d = 0.5 * (t.approach[j] + t.approach[j + 1]);
       double p, s;
       table.evaluate(d, x[k], p, s);
-      const double e = std::fabs(p - path_force_direct(strip, heights, e_star, radius, BallShape::Sphere, x[k], 0.0, d, opt)) / load;
+      const double e =
+          std::fabs(p - path_force_direct(strip, heights, e_star, radius, BallShape::Sphere, x[k], 0.0, d, opt)) / load;
       worst_d = std::max(worst_d, e);
       sum_d += e;
       ++n_d;
       const double xm = 0.5 * (x[k] + x[k + 1]);
       table.evaluate(t.approach[j], xm, p, s);
-      const double ex = std::fabs(p - path_force_direct(strip, heights, e_star, radius, BallShape::Sphere, xm, 0.0, t.approach[j], opt)) / load;
+      const double ex = std::fabs(p - path_force_direct(strip, heights, e_star, radius, BallShape::Sphere, xm, 0.0,
+                                                        t.approach[j], opt)) /
+                        load;
       worst_x = std::max(worst_x, ex);
       sum_x += ex;
       ++n_x;
     }
-  std::printf("path_table_interpolation,%zu,%.4f,%.4e,0,|P_interp - P_direct| / W mid-way in delta: worst %.3g mean %.3g; mid-way in xi (a/17): worst %.3g mean %.3g\n",
-              n_strip, seconds_since(t0) - wall, worst_d, worst_d, sum_d / n_d, worst_x, sum_x / n_x);
+  std::printf(
+      "path_table_interpolation,%zu,%.4f,%.4e,0,|P_interp - P_direct| / W mid-way in delta: worst %.3g mean %.3g; "
+      "mid-way in xi (a/17): worst %.3g mean %.3g\n",
+      n_strip, seconds_since(t0) - wall, worst_d, worst_d, sum_d / n_d, worst_x, sum_x / n_x);
   std::fflush(stdout);
 }
 }  // namespace

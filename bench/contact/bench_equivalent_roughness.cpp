@@ -14,12 +14,14 @@
 //              the amplitude A/δ_H (partial contact from A ≈ δ_H/… on) and the hardness H/p0
 //              (22 cells per Hertz radius, ball on a cell centre; the 1e-3 row is the discretisation)
 //   isotropic  the doctest's isotropic surface (8 cells per a, steps a/4, 2 surfaces, path y_c = 0) at
-//              rms/δ_H = 1e-3 (linear) … 0.3 and H = p0, 0.5 p0 (at 0.6 δ_H crests beyond 2.5 a touch, BF-5): per third-octave band, the PSD of h_eq over the
-//              PSD of the 1e-3 run on the same surfaces (dB, amplitude-normalised: the departure from the
-//              linear limit free of sampling scatter), the 1e-3 run against G_eq, and the mean contact
-//              area over the flat one
+//              rms/δ_H = 1e-3 (linear) … 0.3 and H = p0, 0.5 p0 (at 0.6 δ_H crests beyond 2.5 a touch, BF-5): per
+//              third-octave band, the PSD of h_eq over the PSD of the 1e-3 run on the same surfaces (dB,
+//              amplitude-normalised: the departure from the linear limit free of sampling scatter), the 1e-3 run
+//              against G_eq, and the mean contact area over the flat one
 //
-// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] [ER_CELL=2e-6 (seed002 cell, m)] [ER_CHUNK=0 (positions per parallel chunk)] [ER_DUMP=file (position,approach,h_eq per line)] bench_equivalent_roughness [small | departure | isotropic | seed002 [length_m] [window_half_width_in_a]]
+// Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] [ER_CELL=2e-6 (seed002 cell, m)] [ER_CHUNK=0 (positions per
+// parallel chunk)] [ER_DUMP=file (position,approach,h_eq per line)] bench_equivalent_roughness [small | departure |
+// isotropic | seed002 [length_m] [window_half_width_in_a]]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -69,8 +71,8 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
   contact::EquivalentRoughnessOptions path;
   path.load_tolerance = load_tolerance;
   path.chunk_positions = std::getenv("ER_CHUNK") ? static_cast<std::size_t>(std::atol(std::getenv("ER_CHUNK"))) : 0;
-  const auto r = contact::equivalent_roughness(solver, strip, heights, b.radius, contact::BallShape::Sphere, x,
-                                               b.load, opt, path);
+  const auto r =
+      contact::equivalent_roughness(solver, strip, heights, b.radius, contact::BallShape::Sphere, x, b.load, opt, path);
   const double s = seconds_since(t0);
   double rms = 0.0, area = 0.0, plastic = 0.0;
   for (std::size_t k = 0; k < x.size(); ++k) {
@@ -82,14 +84,17 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
   if (const char* dump = std::getenv("ER_DUMP")) {  // position, δ_eq, h_eq per line (%.17g: old/new paths compared)
     if (FILE* f = std::fopen(dump, "w")) {
       std::fprintf(f, "# smooth_approach %.17g\n", r.smooth_approach);
-      for (std::size_t k = 0; k < x.size(); ++k) std::fprintf(f, "%.17g,%.17g,%.17g\n", x[k], r.approach[k], r.height[k]);
+      for (std::size_t k = 0; k < x.size(); ++k)
+        std::fprintf(f, "%.17g,%.17g,%.17g\n", x[k], r.approach[k], r.height[k]);
       std::fclose(f);
     }
   }
-  std::printf("%s,%zu,%.3f,%.5f,%.1f,%s; chunks of %zu positions; converged %d; rms h_eq %.4g m; mean contact area / flat %.3f; "
-              "plastic cells per position %.1f\n",
-              name, x.size(), s, s / n, r.iterations / n, note, path.chunk_positions, r.converged ? 1 : 0, std::sqrt(rms / n),
-              area / n / r.smooth_contact_area, plastic / n);
+  std::printf(
+      "%s,%zu,%.3f,%.5f,%.1f,%s; chunks of %zu positions; converged %d; rms h_eq %.4g m; mean contact area / flat "
+      "%.3f; "
+      "plastic cells per position %.1f\n",
+      name, x.size(), s, s / n, r.iterations / n, note, path.chunk_positions, r.converged ? 1 : 0, std::sqrt(rms / n),
+      area / n / r.smooth_contact_area, plastic / n);
 }
 
 // Least-squares h ≈ c0 + c cos(kx) + s sin(kx): returns {c0, sqrt(c² + s²)} (3 × 3 normal equations, Cramer).
@@ -124,7 +129,8 @@ int main(int argc, char** argv) {
   std::printf("case,positions,seconds,seconds_per_position,iterations_per_position,note\n");
   std::mt19937_64 rng(2002);
   // Options: the frozen-set stiffness CG tolerance (Newton's slope) and the load tolerance |P − W|/W.
-  const double stiffness_tolerance = std::getenv("ER_STIFFNESS_TOL") ? std::atof(std::getenv("ER_STIFFNESS_TOL")) : 1e-12;
+  const double stiffness_tolerance =
+      std::getenv("ER_STIFFNESS_TOL") ? std::atof(std::getenv("ER_STIFFNESS_TOL")) : 1e-12;
   const double load_tolerance = std::getenv("ER_LOAD_TOL") ? std::atof(std::getenv("ER_LOAD_TOL")) : 1e-10;
   if (which == "small") {
     Ball b;
@@ -149,8 +155,8 @@ int main(int argc, char** argv) {
     char note[120];
     std::snprintf(note, sizeof note, "elastic; stiffness tolerance %.0e; load tolerance %.0e", stiffness_tolerance,
                   load_tolerance);
-    run("small", contact::Grid{sspec.nx, sspec.ny, dx, dx}, s.heights, contact::Grid{2 * half, 2 * half, dx, dx},
-        b, 3, opt, load_tolerance, note);
+    run("small", contact::Grid{sspec.nx, sspec.ny, dx, dx}, s.heights, contact::Grid{2 * half, 2 * half, dx, dx}, b, 3,
+        opt, load_tolerance, note);
     return 0;
   }
   if (which == "isotropic") {
@@ -191,7 +197,8 @@ int main(int argc, char** argv) {
     const std::vector<Run> runs = {{1e-3, 0.0}, {0.1, 0.0}, {0.3, 0.0}, {1e-3, 1.0}, {0.3, 1.0}, {1e-3, 0.5}};
     const auto bands = spectral::third_octave_bands(0.5 / (2.0 * kPi * a), 3.4 / (2.0 * kPi * a));
     std::vector<double> base;
-    std::printf("rms_over_delta_H,hardness_over_p0,mean_area_over_flat,min_area_over_flat,plastic_cells,band_ka:dB...\n");
+    std::printf(
+        "rms_over_delta_H,hardness_over_p0,mean_area_over_flat,min_area_over_flat,plastic_cells,band_ka:dB...\n");
     for (const Run& run : runs) {
       std::vector<double> mean(plan.n_freq(), 0.0), one(plan.n_freq());
       double area = 0.0, amin = 1e300, plastic = 0.0;
@@ -228,7 +235,8 @@ int main(int argc, char** argv) {
       }
       if (&run == &runs.front()) {  // the linear run against G_eq (unit rms)
         std::vector<double> k(mean.size());
-        for (std::size_t j = 0; j < k.size(); ++j) k[j] = 2.0 * kPi * dn * static_cast<double>(std::max<std::size_t>(j, 1));
+        for (std::size_t j = 0; j < k.size(); ++j)
+          k[j] = 2.0 * kPi * dn * static_cast<double>(std::max<std::size_t>(j, 1));
         std::vector<double> t = texture::contact_filtered_psd_at(g1, a, k, spec.k_short);
         t[0] = 0.0;
         std::printf("  [vs G_eq:");
@@ -244,8 +252,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (which == "departure") {
-    std::printf("ka,amplitude_over_delta_H,hardness_over_p0,fundamental_over_linear,mean_over_amplitude,"
-                "min_contact_area_over_flat,plastic_cells_per_position\n");
+    std::printf(
+        "ka,amplitude_over_delta_H,hardness_over_p0,fundamental_over_linear,mean_over_amplitude,"
+        "min_contact_area_over_flat,plastic_cells_per_position\n");
     Ball b;
     const double d_h = b.hertz_approach(), a = b.hertz_radius(), dx = a / 22.0;
     const double p0 = 2.0 * b.e_star * a / (kPi * b.radius);
@@ -262,8 +271,7 @@ int main(int argc, char** argv) {
           for (std::size_t iy = 0; iy < strip.ny; ++iy)
             for (std::size_t ix = 0; ix < strip.nx; ++ix) h[iy * strip.nx + ix] = amp * d_h * std::cos(k * strip.x(ix));
           std::vector<double> x(count);
-          for (std::size_t i = 0; i < count; ++i)
-            x[i] = strip.x(window.nx + i * step);
+          for (std::size_t i = 0; i < count; ++i) x[i] = strip.x(window.nx + i * step);
           contact::SolverOptions opt;
           if (hard > 0.0) opt.hardness = hard * p0;
           contact::ContactSolver solver(window, b.e_star);
@@ -276,9 +284,10 @@ int main(int argc, char** argv) {
             amin = std::min(amin, r.contact_area[i] / r.smooth_contact_area);
             plastic += r.plastic_cells[i];
           }
-          std::printf("%.1f,%.3g,%s,%.4f,%.4f,%.3f,%.1f%s\n", ka, amp, hard > 0.0 ? std::to_string(hard).c_str() : "inf",
-                      fundamental / (amp * d_h * std::sin(ka) / ka), mean_fit / (amp * d_h), amin,
-                      plastic / static_cast<double>(count), r.converged ? "" : " (not converged)");
+          std::printf("%.1f,%.3g,%s,%.4f,%.4f,%.3f,%.1f%s\n", ka, amp,
+                      hard > 0.0 ? std::to_string(hard).c_str() : "inf", fundamental / (amp * d_h * std::sin(ka) / ka),
+                      mean_fit / (amp * d_h), amin, plastic / static_cast<double>(count),
+                      r.converged ? "" : " (not converged)");
           std::fflush(stdout);
         }
     return 0;
@@ -313,7 +322,8 @@ int main(int argc, char** argv) {
   opt.stiffness_tolerance = stiffness_tolerance;
   const std::size_t step = static_cast<std::size_t>(std::floor(0.25 * a / dx));
   char note[200];
-  std::snprintf(note, sizeof note, "%zu x %zu strip, %zu^2 window, step %zu cells, a = %.1f um, stiffness tol %.0e, load tol %.0e",
+  std::snprintf(note, sizeof note,
+                "%zu x %zu strip, %zu^2 window, step %zu cells, a = %.1f um, stiffness tol %.0e, load tol %.0e",
                 sspec.nx, sspec.ny, w, step, a * 1e6, stiffness_tolerance, load_tolerance);
   run("seed002", contact::Grid{sspec.nx, sspec.ny, dx, dx}, s.heights, contact::Grid{w, w, dx, dx}, b, step, opt,
       load_tolerance, note);

@@ -22,9 +22,12 @@ int main(int argc, char** argv) {
   int repeat = 3;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--set" && i + 1 < argc) sets.emplace_back(argv[++i]);
-    else if (a == "--repeat" && i + 1 < argc) repeat = std::stoi(argv[++i]);
-    else study_file = a;
+    if (a == "--set" && i + 1 < argc)
+      sets.emplace_back(argv[++i]);
+    else if (a == "--repeat" && i + 1 < argc)
+      repeat = std::stoi(argv[++i]);
+    else
+      study_file = a;
   }
   const study::Study s = study::Study::load(study_file, sets, scenes::schema_for);
   std::printf("study,scene,threads,realisations,best_seconds,realisations_per_second,parallel_efficiency\n");
@@ -40,8 +43,9 @@ int main(int argc, char** argv) {
     cfg.quiet = true;
     double best = 1e300;
     for (int r = 0; r < repeat; ++r) {
-      const auto sums = ensemble::run_ensemble(cfg, scene->values_per_realisation(),
-                                               [&](std::uint64_t id, int t, double* v) { scene->run_realisation(id, t, v); });
+      const auto sums =
+          ensemble::run_ensemble(cfg, scene->values_per_realisation(),
+                                 [&](std::uint64_t id, int t, double* v) { scene->run_realisation(id, t, v); });
       best = std::min(best, sums.seconds);
     }
     const double rate = static_cast<double>(cfg.realisations) / best;

@@ -29,8 +29,8 @@ Model tube(int elements) {
   Model m;
   m.sections.push_back(circular_section(2.1e11, 0.3, 7850, 0.06, 0.052));
   const double r = 0.03;
-  const std::vector<int> ids = add_straight_beam(m, Vector3d(0.0, -0.5, r - 2e-5), Vector3d(0.0, 0.5, r - 2e-5), elements, 0,
-                                                 Vector3d::UnitX());
+  const std::vector<int> ids =
+      add_straight_beam(m, Vector3d(0.0, -0.5, r - 2e-5), Vector3d(0.0, 0.5, r - 2e-5), elements, 0, Vector3d::UnitX());
   HeightField f;
   f.base = make_plane(Vector3d::Zero(), Vector3d::UnitZ());
   f.n1 = 60;
@@ -41,7 +41,8 @@ Model tube(int elements) {
   for (int j = 0; j < f.n2; ++j)
     for (int i = 0; i < f.n1; ++i) f.h.push_back(2e-5 * std::sin(40.0 * (f.s1_0 + i * f.ds1) + 0.3 * j));
   m.surfaces.push_back(f);
-  for (int id : ids) m.surface_contacts.push_back(SurfaceContactPair{id, 0, SurfaceContactLaw{r, 5e6, 0.3, 1e6, true, 60.0}});
+  for (int id : ids)
+    m.surface_contacts.push_back(SurfaceContactPair{id, 0, SurfaceContactLaw{r, 5e6, 0.3, 1e6, true, 60.0}});
   m.v0.assign(m.X.size(), Vector3d(0.5, 0.0, 0.0));
   m.w0.assign(m.X.size(), Vector3d(0.0, 0.5 / r, 0.0));
   m.gravity = Vector3d(0, 0, -9.81);
@@ -77,7 +78,8 @@ int main(int argc, char** argv) {
   ss.eq = &eq;
   ss.neq = n;
   ss.begin();
-  assemble(AssemblyState{m, nodes, points, 0.0}, TimeRule(TimeRule::Kind::Newmark), contacts, q, 2.5e-5, 2.5e-5, false, R, &ss);
+  assemble(AssemblyState{m, nodes, points, 0.0}, TimeRule(TimeRule::Kind::Newmark), contacts, q, 2.5e-5, 2.5e-5, false,
+           R, &ss);
   ss.finish();
   int kl = 0, ku = 0;
   for (int c = 0; c < n; ++c)
@@ -119,11 +121,14 @@ int main(int argc, char** argv) {
     sparse.factorize(ss.A);
     xs = sparse.solve(-R);
   });
-  std::fprintf(stderr, "residuals: band %.2e dense %.2e sparse %.2e; |x| %.2e %.2e %.2e\n", (D * x + R).norm() / R.norm(),
-               (D * xd + R).norm() / R.norm(), (D * xs + R).norm() / R.norm(), x.norm(), xd.norm(), xs.norm());
-  std::printf("n,kl,ku,nonzeros,band_us,band_plain_us,dense_us,sparse_us,band_over_dense,band_over_sparse,band_vs_dense_rel,"
-              "band_vs_plain_identical\n");
-  std::printf("%d,%d,%d,%ld,%.2f,%.2f,%.2f,%.2f,%.3f,%.3f,%.2e,%d\n", n, kl, ku, static_cast<long>(ss.A.nonZeros()), t_band,
-              t_plain, t_dense, t_sparse, t_band / t_dense, t_band / t_sparse, (x - xd).norm() / xd.norm(), x == xp ? 1 : 0);
+  std::fprintf(stderr, "residuals: band %.2e dense %.2e sparse %.2e; |x| %.2e %.2e %.2e\n",
+               (D * x + R).norm() / R.norm(), (D * xd + R).norm() / R.norm(), (D * xs + R).norm() / R.norm(), x.norm(),
+               xd.norm(), xs.norm());
+  std::printf(
+      "n,kl,ku,nonzeros,band_us,band_plain_us,dense_us,sparse_us,band_over_dense,band_over_sparse,band_vs_dense_rel,"
+      "band_vs_plain_identical\n");
+  std::printf("%d,%d,%d,%ld,%.2f,%.2f,%.2f,%.2f,%.3f,%.3f,%.2e,%d\n", n, kl, ku, static_cast<long>(ss.A.nonZeros()),
+              t_band, t_plain, t_dense, t_sparse, t_band / t_dense, t_band / t_sparse, (x - xd).norm() / xd.norm(),
+              x == xp ? 1 : 0);
   return 0;
 }

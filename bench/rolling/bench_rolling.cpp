@@ -12,9 +12,7 @@
 using namespace rollspec::rolling;
 
 namespace {
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -40,10 +38,14 @@ int main(int argc, char** argv) {
   }
   const DiscSummary s = summarize_disc(p, h);
   const char* head = "4.1-disc,rolling,1,0.001,6";
-  std::printf("%s,%d,%d,%d,%.4f,t_roll,%.5f,%.5f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.t_roll, s.t_roll_exact);
-  std::printf("%s,%d,%d,%d,%.4f,final_speed,%.5f,%.5f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.final_speed, s.final_speed_exact);
-  std::printf("%s,%d,%d,%d,%.4f,energy_loss,%.2f,%.2f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.energy_loss, s.energy_loss_exact);
-  std::printf("%s,%d,%d,%d,%.4f,friction_work,%.2f,%.2f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.friction_work, s.energy_loss_exact);
+  std::printf("%s,%d,%d,%d,%.4f,t_roll,%.5f,%.5f\n", head, h.steps, h.newton_iterations, h.cuts, best, s.t_roll,
+              s.t_roll_exact);
+  std::printf("%s,%d,%d,%d,%.4f,final_speed,%.5f,%.5f\n", head, h.steps, h.newton_iterations, h.cuts, best,
+              s.final_speed, s.final_speed_exact);
+  std::printf("%s,%d,%d,%d,%.4f,energy_loss,%.2f,%.2f\n", head, h.steps, h.newton_iterations, h.cuts, best,
+              s.energy_loss, s.energy_loss_exact);
+  std::printf("%s,%d,%d,%d,%.4f,friction_work,%.2f,%.2f\n", head, h.steps, h.newton_iterations, h.cuts, best,
+              s.friction_work, s.energy_loss_exact);
 
   // ---- example 4.2 ----
   for (const bool rolling : {true, false}) {
@@ -55,14 +57,20 @@ int main(int argc, char** argv) {
     const double wall = now() - t0;
     const std::string hd = std::string("4.2-cantilever,") + (rolling ? "rolling" : "no-rolling") + "," +
                            std::to_string(n_el) + "," + std::to_string(dt42) + ",4";
-    std::printf("%s,%d,%d,%d,%.3f,completed,%d,1\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, r.completed ? 1 : 0);
+    std::printf("%s,%d,%d,%d,%.3f,completed,%d,1\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall,
+                r.completed ? 1 : 0);
     for (const CantileverSnapshot& sn : r.snapshots) {
-      std::printf("%s,%d,%d,%d,%.3f,reaction_y_t%.0f,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, sn.time, sn.reaction_y);
-      std::printf("%s,%d,%d,%d,%.3f,max_torsion_t%.0f,%.2f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, sn.time, sn.max_abs_torsion);
-      std::printf("%s,%d,%d,%d,%.3f,tip_x_t%.0f,%.5f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, sn.time, sn.tip.x());
+      std::printf("%s,%d,%d,%d,%.3f,reaction_y_t%.0f,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall,
+                  sn.time, sn.reaction_y);
+      std::printf("%s,%d,%d,%d,%.3f,max_torsion_t%.0f,%.2f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall,
+                  sn.time, sn.max_abs_torsion);
+      std::printf("%s,%d,%d,%d,%.3f,tip_x_t%.0f,%.5f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall,
+                  sn.time, sn.tip.x());
     }
-    std::printf("%s,%d,%d,%d,%.3f,friction_dissipation,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, r.friction_dissipation);
-    std::printf("%s,%d,%d,%d,%.3f,friction_work,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall, r.friction_work);
+    std::printf("%s,%d,%d,%d,%.3f,friction_dissipation,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall,
+                r.friction_dissipation);
+    std::printf("%s,%d,%d,%d,%.3f,friction_work,%.1f,\n", hd.c_str(), r.steps, r.newton_iterations, r.cuts, wall,
+                r.friction_work);
   }
   return 0;
 }

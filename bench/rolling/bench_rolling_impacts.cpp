@@ -14,9 +14,7 @@
 using namespace rollspec::rolling;
 
 namespace {
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,8 +80,8 @@ int main(int argc, char** argv) {
       bal = std::max(bal, std::abs(e.balance_error()));
     }
     char hd[160];
-    std::snprintf(hd, sizeof hd, "4.4-flying-beam,mu=%.1f,%zu,1e-3,%g,%d,%d,%d,%d,%.3f", mu, 6 * m.X.size(), t44, h.steps,
-                  h.substeps, h.newton_iterations, h.cuts, wall);
+    std::snprintf(hd, sizeof hd, "4.4-flying-beam,mu=%.1f,%zu,1e-3,%g,%d,%d,%d,%d,%.3f", mu, 6 * m.X.size(), t44,
+                  h.steps, h.substeps, h.newton_iterations, h.cuts, wall);
     std::printf("%s,completed,%d\n", hd, h.completed ? 1 : 0);
     std::printf("%s,max_kinetic,%.2f\n", hd, kmax);
     std::printf("%s,max_abs_balance_error,%.3e\n", hd, bal);

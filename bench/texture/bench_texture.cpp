@@ -79,8 +79,8 @@ double median_call(F&& f, G&& untimed, double budget) {
 
 // The synthesis as it was before issue 18 (libm log, cos, sin per harmonic; amplitudes from the
 // PSD and FFTW buffers per call; output copied), kept here to time against the tabulated path.
-void previous_synthesis(const rollspec::spectral::HarmonicSynthesiser& s, fftw_plan_s* plan, const std::vector<double>& psd, double dk,
-                        const double* up, const double* ua, double* out) {
+void previous_synthesis(const rollspec::spectral::HarmonicSynthesiser& s, fftw_plan_s* plan,
+                        const std::vector<double>& psd, double dk, const double* up, const double* ua, double* out) {
   const std::size_t n = s.samples(), nh = s.harmonics();
   const rollspec::spectral::ComplexBuffer spec(nh);
   const rollspec::spectral::RealBuffer buf(n);
@@ -137,7 +137,8 @@ void synthesis_against_floor(double budget) {
     std::normal_distribution<double> z;
     for (std::size_t j = 0; j < nh; ++j) saved[j][0] = z(mt), saved[j][1] = z(mt);
     const spectral::FftwPlan plan(
-        [&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n), spec.data(), real.data(), FFTW_ESTIMATE); }, "bench c2r");
+        [&] { return fftw_plan_dft_c2r_1d(static_cast<int>(n), spec.data(), real.data(), FFTW_ESTIMATE); },
+        "bench c2r");
     // Synthesis: one realisation into an aligned output, scratch reused (as the engine does).
     const LineTextureGenerator gen(line.to_psd(), LineTextureSpec{n, dx, 0, Amplitudes::rayleigh, false});
     std::vector<double> up(gen.harmonics()), ua(gen.harmonics());
@@ -153,7 +154,9 @@ void synthesis_against_floor(double budget) {
         {[&] { std::memcpy(spec.data(), saved.data(), nh * sizeof(spectral::FftwComplex)); }, [] {}}, budget);
     const double c2r = m[0], synth = m[1];
     const double previous = median_call(
-        [&] { previous_synthesis(old, plan.get(), gen.target_psd(), gen.fundamental(), up.data(), ua.data(), out.data()); },
+        [&] {
+          previous_synthesis(old, plan.get(), gen.target_psd(), gen.fundamental(), up.data(), ua.data(), out.data());
+        },
         [] {}, budget / 2);
     std::uint64_t id = 0;
     const double draws = median_call(
@@ -204,7 +207,8 @@ int main(int argc, char** argv) {
   const SelfAffinePsd surf(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (32.0 * d), M_PI / d, RmsTarget::height, 0.2e-6});
   {
     auto t0 = Clock::now();
-    const SpectralSurfaceGenerator gen(surf.to_psd(), SpectralSurfaceSpec{512, 512, d, d, Amplitudes::rayleigh, 1.0, false, 100});
+    const SpectralSurfaceGenerator gen(surf.to_psd(),
+                                       SpectralSurfaceSpec{512, 512, d, d, Amplitudes::rayleigh, 1.0, false, 100});
     const double setup = seconds_since(t0);
     const auto up = uniforms(rng, gen.modes()), ua = uniforms(rng, gen.modes());
     Surface s;

@@ -88,8 +88,10 @@ void resize_result(const BallOnBeamModel& m, std::size_t ns, BallOnBeamResult& o
   out.sample_rate = m.sample_rate;
   out.sensor_acceleration.resize(m.sensors.size());
   auto size = [&](auto& v) {
-    if (clear) v.assign(ns, 0);
-    else v.resize(ns);
+    if (clear)
+      v.assign(ns, 0);
+    else
+      v.resize(ns);
   };
   for (auto& a : out.sensor_acceleration) size(a);
   size(out.contact_force);

@@ -30,8 +30,8 @@ struct Ball {
 struct Traverse {
   double x_start = 0.0;
   double x_end = 0.0;
-  double speed = 1.0;      // m/s
-  double duration = 0.0;   // s, only used when speed == 0
+  double speed = 1.0;     // m/s
+  double duration = 0.0;  // s, only used when speed == 0
 };
 
 struct BallOnBeamModel {
@@ -39,19 +39,19 @@ struct BallOnBeamModel {
   Ball ball;
   ContactLaw contact;
   Traverse traverse;
-  double sample_rate = 25600.0;    // output rate, Hz
-  std::vector<double> sensors;     // physical sensor positions, m
+  double sample_rate = 25600.0;  // output rate, Hz
+  std::vector<double> sensors;   // physical sensor positions, m
   // Contact-patch filter (README B38, exact-step integrator only): > 0 averages the roughness
   // over the instantaneous Hertz contact length 2a, a = sqrt(patch_radius * delta), with delta
   // from the start of each step (one step lag); 0 = point contact (seed 001 Eq. 7).
-  double patch_radius = 0.0;       // m
+  double patch_radius = 0.0;  // m
 };
 
 // One realisation's sampled random inputs. An empty roughness means a smooth beam (h = 0); an
 // empty blocked force means F0 = m2 g (linearised law only).
 struct Realisation {
-  UniformSamples roughness;       // h(x), m, over physical x
-  UniformSamples blocked_force;   // F0(t), N
+  UniformSamples roughness;      // h(x), m, over physical x
+  UniformSamples blocked_force;  // F0(t), N
 };
 
 // Time histories at the output rate, sample j at t = j / sample_rate, j = 0..samples-1.

@@ -25,9 +25,12 @@ double clamped_clamped_root(int n) {
     for (int k = 0; k < 8; ++k) {
       const double up = std::nextafter(r, hi + 1.0), dn = std::nextafter(r, lo - 1.0);
       const double fr = std::abs(f(r));
-      if (std::abs(f(up)) < fr) r = up;
-      else if (std::abs(f(dn)) < fr) r = dn;
-      else break;
+      if (std::abs(f(up)) < fr)
+        r = up;
+      else if (std::abs(f(dn)) < fr)
+        r = dn;
+      else
+        break;
     }
     return r;
   };
@@ -35,7 +38,10 @@ double clamped_clamped_root(int n) {
     const double fx = f(x);
     if (fx == 0.0) return x;
     // Keep the bracket: the sign of f at lo is known.
-    if ((fx > 0.0) == (flo > 0.0)) lo = x; else hi = x;
+    if ((fx > 0.0) == (flo > 0.0))
+      lo = x;
+    else
+      hi = x;
     double xn = x - fx / df(x);
     if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);  // Newton left the bracket: bisect
     if (std::abs(xn - x) <= 2.0 * std::numeric_limits<double>::epsilon() * x) return polish(xn);
@@ -79,7 +85,7 @@ ShapeValues ModeShape::evaluate(double x) const {
     ms = -mirror_;
   }
   const double ky = k_ * y;
-  const double ep = a_ * std::exp(k_ * (y - l_));         // (1/2)(1-sigma) e^{ky}
+  const double ep = a_ * std::exp(k_ * (y - l_));          // (1/2)(1-sigma) e^{ky}
   const double em = 0.5 * (1.0 + sigma_) * std::exp(-ky);  // (1/2)(1+sigma) e^{-ky}
   const double c = std::cos(ky), s = std::sin(ky);
   const double v = ep + em - c + sigma_ * s;

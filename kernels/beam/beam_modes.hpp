@@ -38,16 +38,16 @@ class ModeShape {
   double kappa() const { return k_; }  // 1/m
   double length() const { return l_; }
 
-  double value(double x) const;         // x in [0, l]
+  double value(double x) const;          // x in [0, l]
   ShapeValues evaluate(double x) const;  // phi, phi', phi''
 
  private:
   Support support_ = Support::clamped_clamped;
   int n_ = 0;
   double l_ = 0.0, k_ = 0.0;
-  double a_ = 0.0;      // (1/2)(1 - sigma) e^{kl}, (B3)
-  double sigma_ = 0.0;  // sigma_n
-  double mirror_ = 1.0; // (-1)^{n+1}
+  double a_ = 0.0;       // (1/2)(1 - sigma) e^{kl}, (B3)
+  double sigma_ = 0.0;   // sigma_n
+  double mirror_ = 1.0;  // (-1)^{n+1}
 };
 
 }  // namespace rollspec::beam

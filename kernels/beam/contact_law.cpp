@@ -16,7 +16,8 @@ ContactModel::ContactModel(const ContactLaw& law) : law_(law) {
           throw std::invalid_argument("ContactLaw: force table must be nondecreasing");
       break;
     case ContactLawKind::hertz:
-      if (!(law.effective_modulus > 0.0 && law.radius > 0.0)) throw std::invalid_argument("ContactLaw: Hertz needs E* > 0, R > 0");
+      if (!(law.effective_modulus > 0.0 && law.radius > 0.0))
+        throw std::invalid_argument("ContactLaw: Hertz needs E* > 0, R > 0");
       hertz_k_ = 4.0 / 3.0 * law.effective_modulus * std::sqrt(law.radius);  // (B17)
       break;
     case ContactLawKind::linearised:
@@ -78,8 +79,10 @@ ContactForce ContactModel::evaluate(double delta, double rate, double f0) const 
     return f > 0.0 ? ContactForce{f, 0.0, c, false} : ContactForce{0.0, 0.0, 0.0, false};
   }
   double p, k;
-  if (path()) law_.path->evaluate(delta, f0 - law_.path_origin, p, k);  // (B46)
-  else elastic(delta, p, k);
+  if (path())
+    law_.path->evaluate(delta, f0 - law_.path_origin, p, k);  // (B46)
+  else
+    elastic(delta, p, k);
   const double f = p + c * rate;
   if (f <= 0.0) return {0.0, 0.0, 0.0, true};  // (B19)
   return {f, k, c, true};
@@ -104,7 +107,10 @@ double ContactModel::static_compression(double load, double f0) const {
   for (int it = 0; it < 200; ++it) {
     elastic(x, p, k);
     const double r = p - load;
-    if (r > 0.0) hi = x; else lo = x;
+    if (r > 0.0)
+      hi = x;
+    else
+      lo = x;
     double xn = k > 0.0 ? x - r / k : 0.5 * (lo + hi);
     if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
     if (std::abs(xn - x) <= 1e-15 * x || hi - lo <= 1e-15 * hi) return xn;

@@ -13,8 +13,8 @@
 // the blocked force F0(t) for the linearised law, the contact position xi (m, physical) for the
 // path law, unused otherwise (detail::law_argument in ball_on_beam.hpp supplies it).
 //
-// Loss of contact (delta <= 0; path: delta <= delta_c(xi) (B45); for the linearised law, F0 + k0 (delta + d0) <= 0): the damping
-// term alone (seed 001 Eq. 8) or zero force. The force never pulls: F = max(F, 0) (B19), unless
+// Loss of contact (delta <= 0; path: delta <= delta_c(xi) (B45); for the linearised law, F0 + k0 (delta + d0) <= 0):
+// the damping term alone (seed 001 Eq. 8) or zero force. The force never pulls: F = max(F, 0) (B19), unless
 // `allow_tension` is set for the linearised law (the frequency-domain check needs a linear model).
 #include <memory>
 #include <vector>
@@ -42,9 +42,9 @@ struct ContactLaw {
   double damping = 100.0;              // c_c or c0, N s/m
   LossOfContact loss = LossOfContact::damping_only;
   DampingRate rate = DampingRate::relative_velocity;
-  bool allow_tension = false;          // linearised only
+  bool allow_tension = false;                    // linearised only
   std::shared_ptr<const PathContactTable> path;  // path: P(delta, xi) of the strip (B41-B45), shared
-  double path_origin = 0.0;            // path: physical xi_0 of the table's position 0 (m)
+  double path_origin = 0.0;                      // path: physical xi_0 of the table's position 0 (m)
 };
 
 struct ContactForce {

@@ -21,13 +21,19 @@ ContactSolution solve_contact_force_iterative(const ContactModel& model, double 
     const ContactForce c = at(f);
     const double r = f - c.force;
     if (r == 0.0) return {f, delta_free - compliance * f, rate_free - rate_compliance * f, c.contact, it};
-    if (r < 0.0) lo = f; else hi = f;
+    if (r < 0.0)
+      lo = f;
+    else
+      hi = f;
     const double dr = 1.0 + compliance * c.d_delta + rate_compliance * c.d_rate;
     double fn = f - r / dr;
     if (!(fn > lo && fn < hi)) {
-      if (std::isfinite(lo) && std::isfinite(hi)) fn = 0.5 * (lo + hi);
-      else if (std::isfinite(lo)) fn = 2.0 * std::max(lo, scale);   // expand upward
-      else fn = hi - 2.0 * std::max(std::abs(hi), scale);           // expand downward (tension only)
+      if (std::isfinite(lo) && std::isfinite(hi))
+        fn = 0.5 * (lo + hi);
+      else if (std::isfinite(lo))
+        fn = 2.0 * std::max(lo, scale);  // expand upward
+      else
+        fn = hi - 2.0 * std::max(std::abs(hi), scale);  // expand downward (tension only)
     }
     // Newton converges quadratically on each smooth branch: once a step is below sqrt(tol), the
     // next one would be below tol, so fn is accepted without another evaluation.

@@ -39,8 +39,8 @@ inline ContactSolution solve_contact_force(const ContactModel& model, double del
     if (l.allow_tension || (fl > 0.0 && model.in_contact(d, f0)))
       return {fl, d, rate_free - rate_compliance * fl, model.in_contact(d, f0), 0};
   }
-  return solve_contact_force_iterative(model, delta_free, rate_free, compliance, rate_compliance, f0, guess, force_scale,
-                                       tolerance);
+  return solve_contact_force_iterative(model, delta_free, rate_free, compliance, rate_compliance, f0, guess,
+                                       force_scale, tolerance);
 }
 
 }  // namespace rollspec::beam

@@ -20,8 +20,8 @@ Dopri5Stats dopri5(const OdeRhs& f, std::vector<double> y, double t0, const std:
   constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
                    a65 = -5103.0 / 18656;
   constexpr double a71 = 35.0 / 384, a73 = 500.0 / 1113, a74 = 125.0 / 192, a75 = -2187.0 / 6784, a76 = 11.0 / 84;
-  constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
-                   e6 = 22.0 / 525, e7 = -1.0 / 40;
+  constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525,
+                   e7 = -1.0 / 40;
   // Dense output (Hairer's contd5).
   constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
                    d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
@@ -36,7 +36,9 @@ Dopri5Stats dopri5(const OdeRhs& f, std::vector<double> y, double t0, const std:
   while (j < outputs.size() && outputs[j] <= t0) observe(j, outputs[j], y.data()), ++j;
   f(t, y.data(), k1.data());
   ++st.evaluations;
-  auto sc = [&](std::size_t i, double a, double b) { return opt.atol[i] + opt.rtol * std::max(std::abs(a), std::abs(b)); };
+  auto sc = [&](std::size_t i, double a, double b) {
+    return opt.atol[i] + opt.rtol * std::max(std::abs(a), std::abs(b));
+  };
   double h = opt.initial_step;
   if (!(h > 0.0)) {  // Hairer's starting step rule (II.4)
     double d0 = 0, dd1 = 0;

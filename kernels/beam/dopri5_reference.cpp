@@ -9,7 +9,8 @@
 namespace rollspec::beam {
 
 BallOnBeamResult simulate_dopri5(const BallOnBeamModel& model, const Realisation& r, const ReferenceTolerances& tol) {
-  if (model.patch_radius > 0.0) throw std::invalid_argument("simulate_dopri5: the contact-patch filter is exact-step only");
+  if (model.patch_radius > 0.0)
+    throw std::invalid_argument("simulate_dopri5: the contact-patch filter is exact-step only");
   const ModalBeam& b = model.beam;
   const int n = b.modes();
   const ContactModel contact(model.contact);
@@ -42,8 +43,8 @@ BallOnBeamResult simulate_dopri5(const BallOnBeamModel& model, const Realisation
     double rate = wd - y[2 * n + 1];
     if (total) rate += v * (ws + dhx);
     const double f0 = detail::law_argument(model, contact, r, t, xi);
-    const ContactSolution cs = solve_contact_force(contact, w + hx - y[2 * n], rate, b.residual_flexibility(xi), 0.0, f0,
-                                                   last_force, weight);
+    const ContactSolution cs =
+        solve_contact_force(contact, w + hx - y[2 * n], rate, b.residual_flexibility(xi), 0.0, f0, last_force, weight);
     last_force = cs.force;
     return Contact{cs.force, cs.delta, hx, cs.contact};
   };

@@ -15,7 +15,11 @@ namespace rollspec::beam {
 using detail::lane_dot3;
 
 ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepOptions& o)
-    : model_(std::move(model)), contact_(model_.contact), substeps_(o.substeps), hold_(o.hold), tol_(o.solver_tolerance) {
+    : model_(std::move(model)),
+      contact_(model_.contact),
+      substeps_(o.substeps),
+      hold_(o.hold),
+      tol_(o.solver_tolerance) {
   if (o.substeps < 1) throw std::invalid_argument("ExactStepIntegrator: substeps must be >= 1");
   samples_ = output_samples(model_);
   steps_ = static_cast<long>(samples_ - 1) * substeps_;
@@ -36,9 +40,9 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepO
   if (hold_ == ForceHold::linear) coef_ = first_;
   // (B24) linear force over the step; (B37) the parabola through F_m, F_0, F_1.
   ball_first_ = {0.0, h * h / 3.0, h * h / 6.0, 0.0, h / 2.0, h / 2.0};
-  ball_ = hold_ == ForceHold::linear ? ball_first_
-                                     : BallCoefficients{-h * h / 24.0, 5.0 * h * h / 12.0, h * h / 8.0, -h / 12.0,
-                                                        2.0 * h / 3.0, 5.0 * h / 12.0};
+  ball_ =
+      hold_ == ForceHold::linear ? ball_first_ : BallCoefficients{-h * h / 24.0, 5.0 * h * h / 12.0, h * h / 8.0,
+                                                                  -h / 12.0,     2.0 * h / 3.0,      5.0 * h / 12.0};
   padded_ = (n + 3) / 4 * 4;
   const int np = padded_;
   lanes_[0] = lanes(hold_ == ForceHold::quadratic ? first_ : coef_, nullptr, np);
@@ -62,21 +66,21 @@ ExactStepIntegrator::ExactStepIntegrator(BallOnBeamModel model, const ExactStepO
   // Positions are independent: the same bits on any thread count.
 #pragma omp parallel
   {
-  std::vector<double> phi(n), slope(n);
+    std::vector<double> phi(n), slope(n);
 #pragma omp for schedule(static)
-  for (long k = 0; k <= steps_; ++k) {
-    const double x = position(k);
-    b.shapes(x, phi.data(), slope.data());
-    if (table) {
-      std::copy(phi.begin(), phi.end(), phi_table_.begin() + k * np);
-      if (total_rate_) std::copy(slope.begin(), slope.end(), slope_table_.begin() + k * np);
+    for (long k = 0; k <= steps_; ++k) {
+      const double x = position(k);
+      b.shapes(x, phi.data(), slope.data());
+      if (table) {
+        std::copy(phi.begin(), phi.end(), phi_table_.begin() + k * np);
+        if (total_rate_) std::copy(slope.begin(), slope.end(), slope_table_.begin() + k * np);
+      }
+      // (B12) from the shapes already at hand
+      double modal = 0.0;
+      for (int i = 0; i < n; ++i) modal += phi[i] * phi[i] / (m * b.omega(i) * b.omega(i));
+      residual_[k] = b.static_correction() ? b.static_flexibility(x, x) - modal : 0.0;
+      compliance(phi.data(), slope.data(), residual_[k], coef_, ball_, comp_[k], rate_comp_[k], conv_comp_[k]);
     }
-    // (B12) from the shapes already at hand
-    double modal = 0.0;
-    for (int i = 0; i < n; ++i) modal += phi[i] * phi[i] / (m * b.omega(i) * b.omega(i));
-    residual_[k] = b.static_correction() ? b.static_flexibility(x, x) - modal : 0.0;
-    compliance(phi.data(), slope.data(), residual_[k], coef_, ball_, comp_[k], rate_comp_[k], conv_comp_[k]);
-  }
   }
   if (table) {
     fold_w_.resize(steps_);
@@ -200,12 +204,18 @@ void ExactStepIntegrator::run_reference(const Realisation& r, BallOnBeamResult& 
     double h0, dh0, w1 = -residual_[0] * f;
     detail::roughness_at(r, model_.traverse.x_start, h0, dh0);
     if (patch)  // as in the initial state: the width under the weight
-      averager->evaluate(model_.traverse.x_start,
-                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start)), 0.0)),
-                         h0, dh0);
+      averager->evaluate(
+          model_.traverse.x_start,
+          std::sqrt(model_.patch_radius *
+                    std::max(contact_.static_compression(
+                                 weight, detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start)),
+                             0.0)),
+          h0, dh0);
     for (int i = 0; i < n; ++i) w1 += phi[i] * q[i];
     const double delta = w1 + h0 - w2;
-    record(0, model_.traverse.x_start, delta, h0, contact_.evaluate(delta, 0.0, detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start)).contact);
+    record(
+        0, model_.traverse.x_start, delta, h0,
+        contact_.evaluate(delta, 0.0, detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start)).contact);
   }
 
   double delta_last = out.compression[0];
@@ -305,7 +315,8 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     const double f0 = detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start);
     if (patch)  // as in the initial state: the width under the weight
       averager->evaluate(model_.traverse.x_start,
-                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, f0), 0.0)), h0, dh0);
+                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, f0), 0.0)), h0,
+                         dh0);
     for (int i = 0; i < n; ++i) w1 += phi[i] * q0[i];
     const double delta = w1 + h0 - st.w2;
     for (std::size_t s = 0; s < model_.sensors.size(); ++s) {

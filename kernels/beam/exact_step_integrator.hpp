@@ -24,10 +24,10 @@ namespace rollspec::beam {
 enum class ForceHold { linear, quadratic };
 
 struct ExactStepOptions {
-  int substeps = 4;                     // integration steps per output sample
+  int substeps = 4;  // integration steps per output sample
   ForceHold hold = ForceHold::quadratic;
-  double solver_tolerance = 1e-13;      // relative, contact force (B21)
-  long max_table_entries = 8'000'000;   // tabulate shapes if steps * modes <= this
+  double solver_tolerance = 1e-13;     // relative, contact force (B21)
+  long max_table_entries = 8'000'000;  // tabulate shapes if steps * modes <= this
 };
 
 class ExactStepIntegrator {
@@ -39,8 +39,8 @@ class ExactStepIntegrator {
   // The linear hold (B23) at `substeps`: the second-order rule its own convergence tests measure.
   ExactStepIntegrator(BallOnBeamModel model, int substeps = 4, double solver_tolerance = 1e-13,
                       long max_table_entries = 8'000'000)
-      : ExactStepIntegrator(std::move(model), ExactStepOptions{substeps, ForceHold::linear, solver_tolerance,
-                                                               max_table_entries}) {}
+      : ExactStepIntegrator(std::move(model),
+                            ExactStepOptions{substeps, ForceHold::linear, solver_tolerance, max_table_entries}) {}
 
   const BallOnBeamModel& model() const { return model_; }
   double step() const { return h_; }
@@ -102,15 +102,15 @@ class ExactStepIntegrator {
   long steps_;
   std::size_t samples_;
   bool total_rate_;
-  std::vector<Coefficients> coef_, first_;      // hold of every step; linear hold of the first step
+  std::vector<Coefficients> coef_, first_;  // hold of every step; linear hold of the first step
   BallCoefficients ball_, ball_first_;
-  int padded_;                                   // modes rounded up to a multiple of 4
-  ModeLanes lanes_[3];                           // step 0, step 1, steps >= 2
-  std::vector<double> zeta_omega2_, omega2_;     // 2 zeta_n omega_n, omega_n^2, padded
-  std::vector<double> phi_table_, slope_table_;  // [k * padded + n], empty when evaluated on the fly
-  std::vector<double> fold_w_, fold_v_, fold_s_; // per step (B26a), empty when evaluated on the fly
+  int padded_;                                                   // modes rounded up to a multiple of 4
+  ModeLanes lanes_[3];                                           // step 0, step 1, steps >= 2
+  std::vector<double> zeta_omega2_, omega2_;                     // 2 zeta_n omega_n, omega_n^2, padded
+  std::vector<double> phi_table_, slope_table_;                  // [k * padded + n], empty when evaluated on the fly
+  std::vector<double> fold_w_, fold_v_, fold_s_;                 // per step (B26a), empty when evaluated on the fly
   std::vector<double> comp_, rate_comp_, conv_comp_, residual_;  // C, D parts per step position
-  std::vector<double> sensor_phi_;              // [s * padded + n]
+  std::vector<double> sensor_phi_;                               // [s * padded + n]
 };
 
 }  // namespace rollspec::beam

@@ -8,8 +8,8 @@
 
 namespace rollspec::beam {
 
-using detail::Lanes;
 using detail::lane_sum;
+using detail::Lanes;
 using detail::load;
 using detail::store;
 

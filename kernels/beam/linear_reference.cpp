@@ -54,7 +54,8 @@ FineGrid fine_grid(const LinearReferenceInput& in) {
   for (int i = 0; i < in.beam->modes(); ++i) {
     const double f = in.beam->frequency(i);
     if (f > 0.5 * in.sample_rate)
-      stride = std::min(stride, std::max<std::size_t>(1, static_cast<std::size_t>(2.0 * in.beam->zeta(i) * f / (4.0 * dfine))));
+      stride = std::min(stride,
+                        std::max<std::size_t>(1, static_cast<std::size_t>(2.0 * in.beam->zeta(i) * f / (4.0 * dfine))));
   }
   for (std::size_t j = 0; j <= g.half; ++j) g.at.push_back(j);
   for (std::size_t j = g.half + stride; j < g.nfine; j += stride) g.at.push_back(j);
@@ -144,7 +145,7 @@ std::vector<std::pair<std::size_t, std::size_t>> point_ranges(std::size_t nb, st
 // (re and im planes), and the terms of (B32) that do not depend on the position.
 struct PointTerms {
   std::size_t count = 0;
-  std::vector<double> r_re, r_im;         // [mode * count + j]
+  std::vector<double> r_re, r_im;  // [mode * count + j]
   std::vector<double> w2, ball, ikc_re, ikc_im, kc_im;
 };
 
@@ -184,16 +185,23 @@ PointTerms point_terms(const LinearReferenceInput& in, const std::vector<double>
 struct RangeScratch {
   std::vector<double> ab_re, ab_im, as_re, as_im, h_re, h_im, p_re, p_im;
   explicit RangeScratch(std::size_t ns)
-      : ab_re(chunk_points), ab_im(chunk_points), as_re(ns * chunk_points), as_im(ns * chunk_points),
-        h_re(ns * chunk_points), h_im(ns * chunk_points), p_re(chunk_points), p_im(chunk_points) {}
+      : ab_re(chunk_points),
+        ab_im(chunk_points),
+        as_re(ns * chunk_points),
+        as_im(ns * chunk_points),
+        h_re(ns * chunk_points),
+        h_im(ns * chunk_points),
+        p_re(chunk_points),
+        p_im(chunk_points) {}
 };
 
 // The sensors' transfers H_s (B32-B33) at one position over the points [lo, lo + m), in the
 // operations and order of linear_response_transfer (the same bits), laid out so that the compiler
 // vectorises over the points; an AVX2 clone runs where the CPU has it (no FMA: the same bits).
-__attribute__((target_clones("avx2", "default"))) void range_transfers(
-    const PointTerms& t, std::size_t lo, std::size_t m, std::size_t modes, std::size_t ns, const double* cb,
-    const double* cs, double rk, double k0, bool blocked, RangeScratch& w) {
+__attribute__((target_clones("avx2", "default"))) void range_transfers(const PointTerms& t, std::size_t lo,
+                                                                       std::size_t m, std::size_t modes, std::size_t ns,
+                                                                       const double* cb, const double* cs, double rk,
+                                                                       double k0, bool blocked, RangeScratch& w) {
   double* __restrict ab_re = w.ab_re.data();
   double* __restrict ab_im = w.ab_im.data();
   double* __restrict as_re = w.as_re.data();
@@ -255,8 +263,10 @@ __attribute__((target_clones("avx2", "default"))) void range_transfers(
 }
 
 // exc H_1 conj(H_2) over the range, as std::complex evaluates (exc H_1) conj(H_2).
-__attribute__((target_clones("avx2", "default"))) void range_product(const double* __restrict exc, const double* __restrict h1r,
-                                                                     const double* __restrict h1i, const double* __restrict h2r,
+__attribute__((target_clones("avx2", "default"))) void range_product(const double* __restrict exc,
+                                                                     const double* __restrict h1r,
+                                                                     const double* __restrict h1i,
+                                                                     const double* __restrict h2r,
                                                                      const double* __restrict h2i, std::size_t m,
                                                                      double* __restrict pr, double* __restrict pi) {
   for (std::size_t j = 0; j < m; ++j) {
@@ -320,33 +330,35 @@ LinearReference linear_reference(const LinearReferenceInput& in, const std::func
   // result on any number of threads.
 #pragma omp parallel
   {
-  RangeScratch w(ns);
+    RangeScratch w(ns);
 #pragma omp for schedule(static)
-  for (std::ptrdiff_t rr = 0; rr < nr; ++rr) {
-    const std::size_t lo = std::max<std::size_t>(ranges[static_cast<std::size_t>(rr)].first, 1);  // f = 0: no response
-    const std::size_t hi = ranges[static_cast<std::size_t>(rr)].second, m = hi - lo;
-    const bool band = hi <= nb;
-    for (std::size_t p = 0; p < blocks; ++p) {
-      if (!(pos.weight[p] > 0.0)) continue;  // a block no segment sees weighs nothing
-      const double wp = pos.weight[p] / weight_sum;
-      range_transfers(t, lo, m, modes, ns, cb.data() + p * modes, cs.data() + p * ns * modes, rk[p], ex.k0, blocked, w);
-      std::size_t q = 0;
-      for (std::size_t s1 = 0; s1 < ns; ++s1)
-        for (std::size_t s2 = s1; s2 < ns; ++s2, ++q) {
-          if (!band && s2 != s1) continue;
-          range_product(exc.data() + lo, w.h_re.data() + s1 * m, w.h_im.data() + s1 * m, w.h_re.data() + s2 * m,
-                        w.h_im.data() + s2 * m, m, w.p_re.data(), w.p_im.data());
-          if (s2 == s1) range_add(wp, w.p_re.data(), m, psd[s1].data() + lo);  // (B34), (B34a)
-          if (!band) continue;
-          for (const auto& [gi, u] : block_terms[p]) {
-            range_add(u, w.p_re.data(), m, g_re.data() + (gi * pairs + q) * nb + lo);
-            range_add(u, w.p_im.data(), m, g_im.data() + (gi * pairs + q) * nb + lo);
+    for (std::ptrdiff_t rr = 0; rr < nr; ++rr) {
+      const std::size_t lo =
+          std::max<std::size_t>(ranges[static_cast<std::size_t>(rr)].first, 1);  // f = 0: no response
+      const std::size_t hi = ranges[static_cast<std::size_t>(rr)].second, m = hi - lo;
+      const bool band = hi <= nb;
+      for (std::size_t p = 0; p < blocks; ++p) {
+        if (!(pos.weight[p] > 0.0)) continue;  // a block no segment sees weighs nothing
+        const double wp = pos.weight[p] / weight_sum;
+        range_transfers(t, lo, m, modes, ns, cb.data() + p * modes, cs.data() + p * ns * modes, rk[p], ex.k0, blocked,
+                        w);
+        std::size_t q = 0;
+        for (std::size_t s1 = 0; s1 < ns; ++s1)
+          for (std::size_t s2 = s1; s2 < ns; ++s2, ++q) {
+            if (!band && s2 != s1) continue;
+            range_product(exc.data() + lo, w.h_re.data() + s1 * m, w.h_im.data() + s1 * m, w.h_re.data() + s2 * m,
+                          w.h_im.data() + s2 * m, m, w.p_re.data(), w.p_im.data());
+            if (s2 == s1) range_add(wp, w.p_re.data(), m, psd[s1].data() + lo);  // (B34), (B34a)
+            if (!band) continue;
+            for (const auto& [gi, u] : block_terms[p]) {
+              range_add(u, w.p_re.data(), m, g_re.data() + (gi * pairs + q) * nb + lo);
+              range_add(u, w.p_im.data(), m, g_im.data() + (gi * pairs + q) * nb + lo);
+            }
           }
-        }
-    }
+      }
 #pragma omp critical(linear_reference_progress)
-    done();
-  }
+      done();
+    }
   }
   // Each sum smoothed by the truncated Welch kernel at the bins (B34b).
   const SmoothingKernel sk = smoothing_kernel(welch, in.refine, g.half);
@@ -395,8 +407,9 @@ LinearReference linear_reference_plain(const LinearReferenceInput& in) {
   const std::vector<double> exc_above(exc.begin() + static_cast<std::ptrdiff_t>(nb), exc.end());
   std::vector<std::vector<double>> psd_above(ns);
   if (!above.empty())
-    psd_above = linear_response_psd(*in.beam, in.ball_mass, ex.k0, in.damping, pos.position, in.sensors, above, exc_above,
-                                    Excitation::blocked_force, pos.weight).sensor_psd;
+    psd_above = linear_response_psd(*in.beam, in.ball_mass, ex.k0, in.damping, pos.position, in.sensors, above,
+                                    exc_above, Excitation::blocked_force, pos.weight)
+                    .sensor_psd;
   // In the band, per position block: the transfers H_s, their products exc H_1 conj(H_2) (the
   // pairs (s, s) give the PSD, position-weighted as linear_response_psd weighs them), and the
   // cross-spectra smoothed by the Welch kernel truncated at +-4 bins for the dof (B34b).
@@ -407,8 +420,8 @@ LinearReference linear_reference_plain(const LinearReferenceInput& in) {
   std::vector<std::complex<double>> cross((edges.size() - 1) * pairs * nf, 0.0);
   for (std::size_t p = 0; p + 1 < edges.size(); ++p) {
     if (!(pos.weight[p] > 0.0)) continue;  // a block no segment sees weighs nothing
-    const auto H = linear_response_transfer(*in.beam, in.ball_mass, ex.k0, in.damping, pos.position[p], in.sensors, band,
-                                            Excitation::blocked_force);
+    const auto H = linear_response_transfer(*in.beam, in.ball_mass, ex.k0, in.damping, pos.position[p], in.sensors,
+                                            band, Excitation::blocked_force);
     std::vector<std::vector<std::complex<double>>> product(pairs, std::vector<std::complex<double>>(nb));
     std::size_t q = 0;
     for (std::size_t s1 = 0; s1 < ns; ++s1)

@@ -64,12 +64,12 @@ struct LinearReferenceInput {
   std::vector<double> sensors;            // positions, m
   bool sensor_mean = false;               // add the mean over sensors as a last row
   const spectral::WelchPlan* welch = nullptr;
-  double sample_rate = 0.0;               // output sample rate (the Welch plan's), Hz
-  std::size_t refine = 8;                 // fine frequency grid per Welch bin (D-20)
+  double sample_rate = 0.0;  // output sample rate (the Welch plan's), Hz
+  std::size_t refine = 8;    // fine frequency grid per Welch bin (D-20)
   ReferenceExcitation excitation;
   PositionBlocks positions;
-  double realisations = 1.0;              // the ensemble mean's dof scale with it
-  double confidence = 0.95;               // of the range [mean_lower, mean_upper]
+  double realisations = 1.0;  // the ensemble mean's dof scale with it
+  double confidence = 0.95;   // of the range [mean_lower, mean_upper]
 };
 
 // rows = sensors (+ mean), bins = Welch bins; every field rows x bins, row-major.

@@ -32,15 +32,16 @@ std::vector<std::complex<double>> modal_receptances(const ModalBeam& b, const st
   return out;
 }
 
-LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, double c0,
-                                   const std::vector<double>& xi, const std::vector<double>& sensors,
-                                   const std::vector<double>& freq, const std::vector<double>& gx, Excitation kind,
-                                   const std::vector<double>& weights) {
-  if (freq.size() != gx.size()) throw std::invalid_argument("linear_response_psd: frequencies and PSD differ in length");
+LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, double c0, const std::vector<double>& xi,
+                                   const std::vector<double>& sensors, const std::vector<double>& freq,
+                                   const std::vector<double>& gx, Excitation kind, const std::vector<double>& weights) {
+  if (freq.size() != gx.size())
+    throw std::invalid_argument("linear_response_psd: frequencies and PSD differ in length");
   if (xi.empty()) throw std::invalid_argument("linear_response_psd: no contact positions");
   if (!weights.empty() && weights.size() != xi.size())
     throw std::invalid_argument("linear_response_psd: one weight per contact position");
-  if (!(m2 > 0.0 && k0 > 0.0 && c0 >= 0.0)) throw std::invalid_argument("linear_response_psd: need m2 > 0, k0 > 0, c0 >= 0");
+  if (!(m2 > 0.0 && k0 > 0.0 && c0 >= 0.0))
+    throw std::invalid_argument("linear_response_psd: need m2 > 0, k0 > 0, c0 >= 0");
   using cd = std::complex<double>;
   const int n = b.modes();
   const double m = b.modal_mass(), two_pi = 6.28318530717958647692;
@@ -68,45 +69,44 @@ LinearResponse linear_response_psd(const ModalBeam& b, double m2, double k0, dou
   const auto nfreq = static_cast<std::ptrdiff_t>(freq.size());
 #pragma omp parallel
   {
-  std::vector<cd> modal(n), alpha_s(sensors.size());
+    std::vector<cd> modal(n), alpha_s(sensors.size());
 #pragma omp for schedule(static)
-  for (std::ptrdiff_t kk = 0; kk < nfreq; ++kk) {
-    const auto k = static_cast<std::size_t>(kk);
-    const double w = two_pi * freq[k];
-    if (!(w > 0.0)) continue;
-    for (int i = 0; i < n; ++i) modal[i] = receptance(b, i, m, w);
-    const cd kc(k0, w * c0), inv_kc = reciprocal(kc);
-    const double alpha_ball = -1.0 / (m2 * w * w);
-    for (std::size_t p = 0; p < xi.size(); ++p) {
-      const double inv = wp[p];
-      if (inv == 0.0) continue;
-      const double* pc = phi_c.data() + p * n;
-      cd alpha_b = 0.0;
-      for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] = 0.0;
-      for (int i = 0; i < n; ++i) {
-        alpha_b += pc[i] * pc[i] * modal[i];
-        for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] += phi_s[s * n + i] * pc[i] * modal[i];
+    for (std::ptrdiff_t kk = 0; kk < nfreq; ++kk) {
+      const auto k = static_cast<std::size_t>(kk);
+      const double w = two_pi * freq[k];
+      if (!(w > 0.0)) continue;
+      for (int i = 0; i < n; ++i) modal[i] = receptance(b, i, m, w);
+      const cd kc(k0, w * c0), inv_kc = reciprocal(kc);
+      const double alpha_ball = -1.0 / (m2 * w * w);
+      for (std::size_t p = 0; p < xi.size(); ++p) {
+        const double inv = wp[p];
+        if (inv == 0.0) continue;
+        const double* pc = phi_c.data() + p * n;
+        cd alpha_b = 0.0;
+        for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] = 0.0;
+        for (int i = 0; i < n; ++i) {
+          alpha_b += pc[i] * pc[i] * modal[i];
+          for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] += phi_s[s * n + i] * pc[i] * modal[i];
+        }
+        // (B32); the residual compliance is quasi-static: the damper does not see its rate (B21),
+        // so it enters with the elastic share k0 / (k0 + i w c0), exactly as in the time domain.
+        cd total = inv_kc + alpha_b + alpha_ball + res[p] * k0 * inv_kc;
+        if (kind == Excitation::blocked_force) total *= kc;
+        const double f2 = 1.0 / std::norm(total);  // |F / excitation|^2
+        out.force_psd[k] += inv * f2 * gx[k];
+        for (std::size_t s = 0; s < sensors.size(); ++s)
+          out.sensor_psd[s][k] += inv * std::norm(w * w * alpha_s[s]) * f2 * gx[k];  // (B33), (B34)
       }
-      // (B32); the residual compliance is quasi-static: the damper does not see its rate (B21),
-      // so it enters with the elastic share k0 / (k0 + i w c0), exactly as in the time domain.
-      cd total = inv_kc + alpha_b + alpha_ball + res[p] * k0 * inv_kc;
-      if (kind == Excitation::blocked_force) total *= kc;
-      const double f2 = 1.0 / std::norm(total);  // |F / excitation|^2
-      out.force_psd[k] += inv * f2 * gx[k];
-      for (std::size_t s = 0; s < sensors.size(); ++s)
-        out.sensor_psd[s][k] += inv * std::norm(w * w * alpha_s[s]) * f2 * gx[k];  // (B33), (B34)
     }
-  }
   }
   return out;
 }
 
-std::vector<std::vector<std::complex<double>>> linear_response_transfer(const ModalBeam& b, double m2, double k0,
-                                                                        double c0, double xi,
-                                                                        const std::vector<double>& sensors,
-                                                                        const std::vector<double>& freq, Excitation kind,
-                                                                        const std::vector<std::complex<double>>* modal) {
-  if (!(m2 > 0.0 && k0 > 0.0 && c0 >= 0.0)) throw std::invalid_argument("linear_response_transfer: need m2 > 0, k0 > 0, c0 >= 0");
+std::vector<std::vector<std::complex<double>>> linear_response_transfer(
+    const ModalBeam& b, double m2, double k0, double c0, double xi, const std::vector<double>& sensors,
+    const std::vector<double>& freq, Excitation kind, const std::vector<std::complex<double>>* modal) {
+  if (!(m2 > 0.0 && k0 > 0.0 && c0 >= 0.0))
+    throw std::invalid_argument("linear_response_transfer: need m2 > 0, k0 > 0, c0 >= 0");
   using cd = std::complex<double>;
   const int n = b.modes();
   const double m = b.modal_mass(), two_pi = 6.28318530717958647692;
@@ -123,7 +123,8 @@ std::vector<std::vector<std::complex<double>>> linear_response_transfer(const Mo
     cd alpha_b = 0.0;
     std::fill(alpha_s.begin(), alpha_s.end(), cd(0.0));
     for (int i = 0; i < n; ++i) {
-      const cd r = modal ? (*modal)[k * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)] : receptance(b, i, m, w);
+      const cd r =
+          modal ? (*modal)[k * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)] : receptance(b, i, m, w);
       alpha_b += pc[i] * pc[i] * r;
       for (std::size_t s = 0; s < sensors.size(); ++s) alpha_s[s] += ps[s * n + i] * pc[i] * r;
     }

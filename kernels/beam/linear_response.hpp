@@ -43,12 +43,10 @@ LinearResponse linear_response_psd(const ModalBeam& beam, double ball_mass, doub
 // A_s / h or A_s / F0 (B32–B33), for cross-spectra between sensors: S_ss'(f) = H_s H_s'^* G(f).
 // `modal` (optional): modal_receptances(beam, frequencies), shared by many contact positions; the
 // result is the same to the last bit with or without it.
-std::vector<std::vector<std::complex<double>>> linear_response_transfer(const ModalBeam& beam, double ball_mass, double k0,
-                                                                        double c0, double contact_position,
-                                                                        const std::vector<double>& sensors,
-                                                                        const std::vector<double>& frequencies,
-                                                                        Excitation kind,
-                                                                        const std::vector<std::complex<double>>* modal = nullptr);
+std::vector<std::vector<std::complex<double>>> linear_response_transfer(
+    const ModalBeam& beam, double ball_mass, double k0, double c0, double contact_position,
+    const std::vector<double>& sensors, const std::vector<double>& frequencies, Excitation kind,
+    const std::vector<std::complex<double>>* modal = nullptr);
 
 // Modal receptances 1 / (m (w_n^2 - w^2 + 2 i zeta_n w_n w)), frequency-major: [k * modes + n].
 std::vector<std::complex<double>> modal_receptances(const ModalBeam& beam, const std::vector<double>& frequencies);

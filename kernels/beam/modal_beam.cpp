@@ -35,7 +35,8 @@ ModalBeam::ModalBeam(const BeamProperties& p, const ModeSelection& sel, const Mo
   }
   if (shape_.empty()) throw std::invalid_argument("ModalBeam: no mode below the maximum frequency");
   if (!damping.zeta.empty()) {
-    if (damping.zeta.size() < shape_.size()) throw std::invalid_argument("ModalBeam: damping table shorter than the mode count");
+    if (damping.zeta.size() < shape_.size())
+      throw std::invalid_argument("ModalBeam: damping table shorter than the mode count");
     zeta_.assign(damping.zeta.begin(), damping.zeta.begin() + static_cast<long>(shape_.size()));
   } else {
     zeta_.assign(shape_.size(), 0.5 * damping.loss_factor);  // (B11)
@@ -48,7 +49,8 @@ double ModalBeam::frequency(int i) const { return omega_[i] / two_pi; }
 
 double ModalBeam::modal_coordinate(double x) const {
   const double y = x + offset_;
-  if (!(y >= -1e-12 * l_eff_ && y <= l_eff_ * (1.0 + 1e-12))) throw std::out_of_range("ModalBeam: position outside the beam");
+  if (!(y >= -1e-12 * l_eff_ && y <= l_eff_ * (1.0 + 1e-12)))
+    throw std::out_of_range("ModalBeam: position outside the beam");
   return std::min(std::max(y, 0.0), l_eff_);
 }
 

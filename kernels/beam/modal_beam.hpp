@@ -49,13 +49,13 @@ class ModalBeam {
   const BeamProperties& properties() const { return p_; }
   int modes() const { return static_cast<int>(shape_.size()); }
   double effective_length() const { return l_eff_; }
-  double offset() const { return offset_; }                 // (l_eff - l) / 2
-  double bending_stiffness() const { return ei_; }          // EI, N m^2
-  double mass_per_length() const { return rho_a_; }         // rho A, kg/m
-  double modal_mass() const { return rho_a_ * l_eff_; }     // rho A l_eff, kg
-  double omega(int i) const { return omega_[i]; }           // rad/s, i = 0..modes-1
+  double offset() const { return offset_; }              // (l_eff - l) / 2
+  double bending_stiffness() const { return ei_; }       // EI, N m^2
+  double mass_per_length() const { return rho_a_; }      // rho A, kg/m
+  double modal_mass() const { return rho_a_ * l_eff_; }  // rho A l_eff, kg
+  double omega(int i) const { return omega_[i]; }        // rad/s, i = 0..modes-1
   double zeta(int i) const { return zeta_[i]; }
-  double frequency(int i) const;                            // Hz
+  double frequency(int i) const;  // Hz
   const ModeShape& shape(int i) const { return shape_[i]; }
   bool static_correction() const { return static_correction_; }
 

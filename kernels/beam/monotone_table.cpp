@@ -8,7 +8,7 @@ namespace rollspec::beam {
 
 namespace {
 double sign(double v) { return (v > 0.0) - (v < 0.0); }
-}
+}  // namespace
 
 MonotoneTable::MonotoneTable(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y)) {
   const std::size_t n = x_.size();
@@ -33,8 +33,10 @@ MonotoneTable::MonotoneTable(std::vector<double> x, std::vector<double> y) : x_(
   // Shape-preserving three-point end slopes.
   auto end_slope = [](double h0, double h1, double s0, double s1) {
     double d = ((2.0 * h0 + h1) * s0 - h0 * s1) / (h0 + h1);
-    if (sign(d) != sign(s0)) d = 0.0;
-    else if (sign(s0) != sign(s1) && std::abs(d) > 3.0 * std::abs(s0)) d = 3.0 * s0;
+    if (sign(d) != sign(s0))
+      d = 0.0;
+    else if (sign(s0) != sign(s1) && std::abs(d) > 3.0 * std::abs(s0))
+      d = 3.0 * s0;
     return d;
   };
   d_[0] = end_slope(h[0], h[1], s[0], s[1]);

@@ -42,7 +42,8 @@ double fryba_moving_force(double l, double ei, double mu, double p, double speed
   for (int j = 1; j <= terms; ++j) {
     const double jj = j * j;
     if (std::abs(jj - alpha * alpha) < 1e-12) throw std::invalid_argument("fryba_moving_force: resonant speed");
-    s += (std::sin(j * w * t) - alpha / j * std::sin(jj * w1 * t)) * std::sin(j * pi * x / l) / (jj * (jj - alpha * alpha));
+    s += (std::sin(j * w * t) - alpha / j * std::sin(jj * w1 * t)) * std::sin(j * pi * x / l) /
+         (jj * (jj - alpha * alpha));
   }
   return w0 * s;
 }

@@ -112,8 +112,10 @@ double PathContactTable::static_approach(double load, double xi) const {
   for (int it = 0; it < 200; ++it) {
     evaluate(x, xi, p, k);
     const double r = p - load;
-    if (r > 0.0) hi = x;
-    else lo = x;
+    if (r > 0.0)
+      hi = x;
+    else
+      lo = x;
     double xn = k > 0.0 ? x - r / k : 0.5 * (lo + hi);
     if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
     if (std::fabs(xn - x) <= 1e-15 * std::fabs(hi - first_contact(xi)) || hi - lo <= 1e-15 * std::fabs(hi)) return xn;

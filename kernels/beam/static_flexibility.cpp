@@ -7,7 +7,8 @@ namespace rollspec::beam {
 double static_flexibility(Support support, double length, double bending_stiffness, double x, double a) {
   const double l = length;
   if (!(l > 0.0) || !(bending_stiffness > 0.0)) throw std::invalid_argument("static_flexibility: L and EI must be > 0");
-  if (!(x >= 0.0 && x <= l && a >= 0.0 && a <= l)) throw std::invalid_argument("static_flexibility: x, a outside [0, L]");
+  if (!(x >= 0.0 && x <= l && a >= 0.0 && a <= l))
+    throw std::invalid_argument("static_flexibility: x, a outside [0, L]");
   if (x > a) {  // mirror (B7)
     x = l - x;
     a = l - a;

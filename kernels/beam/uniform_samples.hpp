@@ -11,9 +11,9 @@
 namespace rollspec::beam {
 
 struct UniformSamples {
-  double origin = 0.0;          // position (m) or time (s) of values[0]
-  double step = 1.0;            // sample spacing, > 0
-  std::vector<double> values;   // at origin + i * step
+  double origin = 0.0;         // position (m) or time (s) of values[0]
+  double step = 1.0;           // sample spacing, > 0
+  std::vector<double> values;  // at origin + i * step
 
   bool empty() const { return values.empty(); }
   double end() const { return origin + step * static_cast<double>(values.size() - 1); }
@@ -25,7 +25,8 @@ struct UniformSamples {
     const double t = c.t, t2 = t * t, t3 = t2 * t;
     value = (2 * t3 - 3 * t2 + 1) * c.y0 + (t3 - 2 * t2 + t) * c.m0 + (-2 * t3 + 3 * t2) * c.y1 + (t3 - t2) * c.m1;
     derivative =
-        ((6 * t2 - 6 * t) * c.y0 + (3 * t2 - 4 * t + 1) * c.m0 + (-6 * t2 + 6 * t) * c.y1 + (3 * t2 - 2 * t) * c.m1) / step;
+        ((6 * t2 - 6 * t) * c.y0 + (3 * t2 - 4 * t + 1) * c.m0 + (-6 * t2 + 6 * t) * c.y1 + (3 * t2 - 2 * t) * c.m1) /
+        step;
   }
   // The value alone: evaluate()'s operations without the derivative's.
   double value(double x) const {

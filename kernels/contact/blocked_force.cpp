@@ -32,9 +32,11 @@ class PathRunner {
  public:
   PathRunner(ContactSolver& solver, const Grid& strip, const std::vector<double>& heights, double radius,
              BallShape shape, const std::vector<double>& positions, const BlockedForceOptions& path_options)
-      : solver_(solver), window_(checked_window(solver), strip, heights, radius, shape, positions,
-                                 path_options.centre_y, "blocked_force"),
-        positions_(positions), popt_(path_options) {}
+      : solver_(solver),
+        window_(checked_window(solver), strip, heights, radius, shape, positions, path_options.centre_y,
+                "blocked_force"),
+        positions_(positions),
+        popt_(path_options) {}
 
   double max_approach(std::size_t* position) const { return window_.max_approach(position); }
   [[noreturn]] void reject(std::size_t k, double d, const char* prefix = "") const { window_.reject(k, d, prefix); }
@@ -82,7 +84,8 @@ class PathRunner {
           p.assign(n, 0.0);
         } else {
           // BF-6: the previous field shifted with the ball (or kept on the strip).
-          window_.shift_field(p, popt_.warm_start == PathWarmStart::Ball ? window_.ball_shift(k) : window_.strip_shift(k));
+          window_.shift_field(p,
+                              popt_.warm_start == PathWarmStart::Ball ? window_.ball_shift(k) : window_.strip_shift(k));
         }
         // Eq. 11a: the frozen-set CG starts from the same position's rate on the previous path.
         const bool rate_start = previous != nullptr && k < previous->rate.size() && previous->rate[k].size() == n;
@@ -91,8 +94,10 @@ class PathRunner {
         s.set_rate_start(nullptr);
         if (store != nullptr && k < store_count) {
           store->pressure[k] = p;
-          if (results[k].converged && opt.compute_stiffness) store->rate[k] = s.pressure_rate();
-          else store->rate[k].clear();
+          if (results[k].converged && opt.compute_stiffness)
+            store->rate[k] = s.pressure_rate();
+          else
+            store->rate[k].clear();
         }
       }
     };
@@ -130,13 +135,12 @@ class PathRunner {
       }
     }
     out.mean_force = force_sum / static_cast<double>(count);
-    out.k0 = opt.compute_stiffness ? stiffness_sum / static_cast<double>(count)
-                                   : std::numeric_limits<double>::quiet_NaN();
-    out.k0_frozen = opt.compute_stiffness ? frozen_sum / static_cast<double>(count)
-                                          : std::numeric_limits<double>::quiet_NaN();
+    out.k0 =
+        opt.compute_stiffness ? stiffness_sum / static_cast<double>(count) : std::numeric_limits<double>::quiet_NaN();
+    out.k0_frozen =
+        opt.compute_stiffness ? frozen_sum / static_cast<double>(count) : std::numeric_limits<double>::quiet_NaN();
     return out;
   }
-
 
  private:
   static const Grid& checked_window(ContactSolver& solver) {
@@ -192,17 +196,19 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
     accumulate(total, path);
     const bool on_load = std::fabs(path.mean_force - load) <= tolerance * load;
     if (on_path) on_path(path, std::fabs(path.mean_force - load) / load);
-    if (path.mean_force < load) lo = d;
-    else hi = d;
-    const bool exhausted = std::isfinite(lo) && std::isfinite(hi) &&
-                           hi - lo <= 1e-15 * std::max(std::fabs(hi), std::fabs(lo));
+    if (path.mean_force < load)
+      lo = d;
+    else
+      hi = d;
+    const bool exhausted =
+        std::isfinite(lo) && std::isfinite(hi) && hi - lo <= 1e-15 * std::max(std::fabs(hi), std::fabs(lo));
     if (!path.converged || on_load || paths >= max_paths || exhausted) {
       path.converged = path.converged && on_load;
       return path;
     }
     // Newton on F̄ with its exact slope K̄_f (BF-3).
-    double next = path.k0_frozen > 0.0 ? d + (load - path.mean_force) / path.k0_frozen
-                                       : std::numeric_limits<double>::quiet_NaN();
+    double next =
+        path.k0_frozen > 0.0 ? d + (load - path.mean_force) / path.k0_frozen : std::numeric_limits<double>::quiet_NaN();
     if (!(next > lo && next < hi)) {
       if (std::isfinite(lo) && std::isfinite(hi)) {
         next = 0.5 * (lo + hi);
@@ -253,9 +259,9 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     std::vector<double> subset;
     for (std::size_t k = 0; k < positions.size(); k += stride) subset.push_back(positions[k]);
     PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, path_options);
-    const BlockedForcePath sub = search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance),
-                                        path_options.max_paths, warm, store_count(subset.size()), d_hertz, d_hertz,
-                                        total, path_options.on_path);
+    const BlockedForcePath sub =
+        search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance), path_options.max_paths, warm,
+               store_count(subset.size()), d_hertz, d_hertz, total, path_options.on_path);
     total.presearch_paths = total.paths;
     total.paths = 0;
     if (sub.converged) d_start = sub.approach;

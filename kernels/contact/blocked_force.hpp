@@ -105,8 +105,8 @@ struct BlockedForcePath;
 struct BlockedForceOptions {
   double centre_y = 0.0;  // lateral coordinate y_c of the path in the strip grid (m)
   PathWarmStart warm_start = PathWarmStart::Ball;
-  double load_tolerance = 1e-10;  // blocked_force_at_load: stop when |F̄ − W| ≤ load_tolerance · W
-  int max_paths = 60;             // blocked_force_at_load: path evaluations allowed (BF-3), per search
+  double load_tolerance = 1e-10;         // blocked_force_at_load: stop when |F̄ − W| ≤ load_tolerance · W
+  int max_paths = 60;                    // blocked_force_at_load: path evaluations allowed (BF-3), per search
   std::size_t presearch_positions = 32;  // BF-4': M positions of the pre-search (0: none)
   // BF-6c: fixed chunks of this many positions (0: one chunk, the whole path in order). Each chunk
   // starts cold (or from the previous path's fields, BF-6') and warm-starts along itself (BF-6);
@@ -125,19 +125,20 @@ struct BlockedForceOptions {
 };
 
 struct BlockedForcePath {
-  std::vector<double> position;   // x_k (m, strip coordinates)
-  std::vector<double> force;      // F0(x_k; d0) (N), BF-2
-  std::vector<double> stiffness;  // k(x_k; d0) (N/m), frozen set + sub-cell edge (README Eq. 13–15); NaN if not computed
-  double approach = 0.0;          // d0 (m), from the plane h = 0 (BF-2)
-  double k0 = 0.0;                // K̄(d0) (N/m), BF-3, mean of `stiffness`; NaN if stiffness not computed
-  double k0_frozen = 0.0;         // the same mean of the frozen-set k (README Eq. 11): exact dF̄/dd
-  double mean_force = 0.0;        // F̄(d0) (N)
-  double max_error = 0.0;         // largest stopping-rule ε (README Eq. 9) of the returned path
-  int paths = 0;                  // full-path evaluations (1 for blocked_force_path)
-  int presearch_paths = 0;        // evaluations of the pre-search subset (BF-4')
-  int solves = 0;                 // contact solves over all paths (pre-search included)
-  int iterations = 0;             // CG iterations of those solves
-  int stiffness_iterations = 0;   // CG iterations of their frozen-set stiffness solves
+  std::vector<double> position;  // x_k (m, strip coordinates)
+  std::vector<double> force;     // F0(x_k; d0) (N), BF-2
+  std::vector<double>
+      stiffness;            // k(x_k; d0) (N/m), frozen set + sub-cell edge (README Eq. 13–15); NaN if not computed
+  double approach = 0.0;    // d0 (m), from the plane h = 0 (BF-2)
+  double k0 = 0.0;          // K̄(d0) (N/m), BF-3, mean of `stiffness`; NaN if stiffness not computed
+  double k0_frozen = 0.0;   // the same mean of the frozen-set k (README Eq. 11): exact dF̄/dd
+  double mean_force = 0.0;  // F̄(d0) (N)
+  double max_error = 0.0;   // largest stopping-rule ε (README Eq. 9) of the returned path
+  int paths = 0;            // full-path evaluations (1 for blocked_force_path)
+  int presearch_paths = 0;  // evaluations of the pre-search subset (BF-4')
+  int solves = 0;           // contact solves over all paths (pre-search included)
+  int iterations = 0;       // CG iterations of those solves
+  int stiffness_iterations = 0;  // CG iterations of their frozen-set stiffness solves
   // Every solve (and stiffness solve, if computed) of the returned path converged; for
   // blocked_force_at_load also |F̄ − W| ≤ load_tolerance · W. Never true for an unfinished result.
   bool converged = false;
@@ -162,7 +163,6 @@ BlockedForcePath blocked_force_path(ContactSolver& solver, const Grid& strip, co
 BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
                                        const std::vector<double>& strip_heights, double radius, BallShape shape,
                                        const std::vector<double>& positions, double load,
-                                       const SolverOptions& options = {},
-                                       const BlockedForceOptions& path_options = {});
+                                       const SolverOptions& options = {}, const BlockedForceOptions& path_options = {});
 
 }  // namespace rollspec::contact

@@ -35,7 +35,7 @@ class BoxProduct {
   std::size_t x0_ = 0, y0_ = 0;
   HalfSpaceOperator* op_ = nullptr;
   std::vector<std::unique_ptr<HalfSpaceOperator>> boxes_;  // made when first needed, kept
-  std::vector<std::uint32_t> at_;  // box index of each listed cell
+  std::vector<std::uint32_t> at_;                          // box index of each listed cell
   std::vector<double> in_, out_;
 };
 

@@ -100,8 +100,8 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   auto product = [this, load](const double* v, double* out) {
     return load ? (op_.apply(v, out), true) : apply_on(v, active_, out);
   };
-  ApproachPolicy policy(PkArrays{u_, g_, t_, r_, x_, part_, set_}, product, s, p, load ? all_ : active_, target,
-                        load, g_ref, op_.self_coefficient(), active_.size(), grid.nx, opt, res);
+  ApproachPolicy policy(PkArrays{u_, g_, t_, r_, x_, part_, set_}, product, s, p, load ? all_ : active_, target, load,
+                        g_ref, op_.self_coefficient(), active_.size(), grid.nx, opt, res);
   const bool u_valid = policy.start(all_zero);
   res.iterations = polonsky_keer(policy, u_valid, opt, res);
   res.approach = policy.approach();

@@ -46,17 +46,17 @@ struct SolverOptions {
 };
 
 struct ContactResult {
-  double approach = 0.0;        // rigid approach w (m): given, or found in load control
-  bool converged = false;       // stopping rule met (never true for an unfinished solve)
-  int iterations = 0;           // CG iterations (at most two half-space products each)
-  int coarse_iterations = 0;    // CG iterations of the coarse start on all coarser grids (Eq. 16)
-  double error = 0.0;           // ε of README Eq. 9 at the returned field
-  double force = 0.0;           // P = ΔA Σ p_i (N), seed 001 Eq. 12
-  double contact_area = 0.0;    // ΔA · #{p_i > 0} (m²)
+  double approach = 0.0;      // rigid approach w (m): given, or found in load control
+  bool converged = false;     // stopping rule met (never true for an unfinished solve)
+  int iterations = 0;         // CG iterations (at most two half-space products each)
+  int coarse_iterations = 0;  // CG iterations of the coarse start on all coarser grids (Eq. 16)
+  double error = 0.0;         // ε of README Eq. 9 at the returned field
+  double force = 0.0;         // P = ΔA Σ p_i (N), seed 001 Eq. 12
+  double contact_area = 0.0;  // ΔA · #{p_i > 0} (m²)
   std::size_t contact_cells = 0;
   std::size_t plastic_cells = 0;  // #{p_i = H}
-  double plastic_volume = 0.0;  // V_p = ΔA Σ_{p_i = H} max(0, −g_i) (m³), README Eq. 10
-  double max_pressure = 0.0;    // max_i p_i (Pa)
+  double plastic_volume = 0.0;    // V_p = ΔA Σ_{p_i = H} max(0, −g_i) (m³), README Eq. 10
+  double max_pressure = 0.0;      // max_i p_i (Pa)
   // k (N/m): the frozen-set stiffness with the sub-cell contact edge, k_frozen + δk (README
   // Eq. 11, 13–15): the continuum-consistent contact stiffness (tables, blocked force k0).
   double stiffness = std::numeric_limits<double>::quiet_NaN();

@@ -102,21 +102,24 @@ struct ApproachReference {
         }
       w = sum / static_cast<double>(cnt);
     }
-    const auto e = block_reduce<3>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
-      double emax = 0.0, sum = 0.0, count = 0.0;
-      for (const std::size_t i : Slice{cells.data(), lo, hi}) {
-        const double gi = s[i] - w + u_[i];
-        g_[i] = gi;
-        emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
-        const bool is_free = p[i] > 0.0 && p[i] < hardness;
-        set_[i] = is_free ? kFree : kOut;
-        if (is_free) {
-          sum += gi * gi;
-          count += 1.0;
-        }
-      }
-      acc[0] = emax, acc[1] = sum, acc[2] = count;
-    }, 1u);
+    const auto e = block_reduce<3>(
+        cells.size(), part_,
+        [&](std::size_t lo, std::size_t hi, double* acc) {
+          double emax = 0.0, sum = 0.0, count = 0.0;
+          for (const std::size_t i : Slice{cells.data(), lo, hi}) {
+            const double gi = s[i] - w + u_[i];
+            g_[i] = gi;
+            emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
+            const bool is_free = p[i] > 0.0 && p[i] < hardness;
+            set_[i] = is_free ? kFree : kOut;
+            if (is_free) {
+              sum += gi * gi;
+              count += 1.0;
+            }
+          }
+          acc[0] = emax, acc[1] = sum, acc[2] = count;
+        },
+        1u);
     res.error = c * e[0] / g_ref;
     gg = e[1];
     free_count = static_cast<std::size_t>(e[2]);
@@ -281,8 +284,8 @@ ContactResult ContactSolver::solve_load_reference(const std::vector<double>& gap
   return run_reference(gap, mean_pressure, true, pressure, options);
 }
 
-ContactResult ContactSolver::run_reference(const std::vector<double>& s, double target, bool load, std::vector<double>& p,
-                                           const SolverOptions& opt) {
+ContactResult ContactSolver::run_reference(const std::vector<double>& s, double target, bool load,
+                                           std::vector<double>& p, const SolverOptions& opt) {
   const Grid& grid = op_.grid();
   const std::size_t n = grid.size();
   const double area = grid.cell_area();
@@ -336,8 +339,27 @@ ContactResult ContactSolver::run_reference(const std::vector<double>& s, double 
   }
   // The iteration visits the cells of A only (all cells in load control): elsewhere p = 0, t = 0,
   // and g ≥ s − w > 0 needs no u (Eq. 6a); g is formed everywhere once converged.
-  ApproachReference ref{s, p, opt, res, w, target, g_ref, hardness, c, load, n, grid.nx, op_,
-                        u_, g_, t_, r_, x_, part_, set_, load ? all_ : active_,
+  ApproachReference ref{s,
+                        p,
+                        opt,
+                        res,
+                        w,
+                        target,
+                        g_ref,
+                        hardness,
+                        c,
+                        load,
+                        n,
+                        grid.nx,
+                        op_,
+                        u_,
+                        g_,
+                        t_,
+                        r_,
+                        x_,
+                        part_,
+                        set_,
+                        load ? all_ : active_,
                         [this, load](const double* v, double* out) {
                           return load ? (op_.apply(v, out), true) : apply_on(v, active_, out);
                         }};

@@ -19,9 +19,12 @@ double cell_fraction_inside(double t, double nx, double ny, double dx, double dy
   const double alpha = std::max(u, v), beta = std::min(u, v);
   const double h1 = 0.5 * (alpha + beta), h0 = 0.5 * (alpha - beta), s = std::fabs(t);
   double f;  // fraction on the side of the centre
-  if (s >= h1) f = 1.0;
-  else if (s > h0) f = 1.0 - (h1 - s) * (h1 - s) / (2.0 * alpha * beta);
-  else f = 0.5 + s / alpha;
+  if (s >= h1)
+    f = 1.0;
+  else if (s > h0)
+    f = 1.0 - (h1 - s) * (h1 - s) / (2.0 * alpha * beta);
+  else
+    f = 0.5 + s / alpha;
   return t >= 0.0 ? f : 1.0 - f;
 }
 

@@ -16,9 +16,9 @@
 namespace rollspec::contact {
 
 struct EdgeCorrection {
-  double delta_k = 0.0;           // δk (N/m), README Eq. 15
-  std::size_t band_cells = 0;     // boundary cells on the elastic/open edge
-  std::size_t used_cells = 0;     // of those, cells with a usable θ and m (the rest keep θ = χ)
+  double delta_k = 0.0;        // δk (N/m), README Eq. 15
+  std::size_t band_cells = 0;  // boundary cells on the elastic/open edge
+  std::size_t used_cells = 0;  // of those, cells with a usable θ and m (the rest keep θ = χ)
 };
 
 // p: contact pressure (Pa); dp: frozen-set rate dp/dw (README Eq. 11, Pa/m); gap: g = s − w + C p

@@ -14,7 +14,8 @@ namespace rollspec::contact {
 namespace {
 
 void check_load(double load) {
-  if (!(load > 0.0) || !std::isfinite(load)) throw std::invalid_argument("equivalent_roughness: load must be finite, > 0");
+  if (!(load > 0.0) || !std::isfinite(load))
+    throw std::invalid_argument("equivalent_roughness: load must be finite, > 0");
 }
 
 void record(EquivalentRoughness& out, std::size_t k, const ContactResult& r) {
@@ -48,8 +49,7 @@ void finish(EquivalentRoughness& out) {
 EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& strip,
                                          const std::vector<double>& strip_heights, double radius, BallShape shape,
                                          const std::vector<double>& positions, double load,
-                                         const SolverOptions& options,
-                                         const EquivalentRoughnessOptions& path_options) {
+                                         const SolverOptions& options, const EquivalentRoughnessOptions& path_options) {
   check_load(load);
   if (solver.half_space().boundary() != Boundary::Open)
     throw std::invalid_argument("equivalent_roughness: the solver must use the open boundary");
@@ -94,8 +94,8 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   const ContactResult smooth = solve(solver, flat.gap(0), p, std::numeric_limits<double>::quiet_NaN());
   out.smooth_approach = smooth.approach;
   out.smooth_contact_area = smooth.contact_area;
-  out.smooth_stiffness = every > 0 ? stiffness_at(solver, flat.gap(0), smooth.approach, p)
-                                   : std::numeric_limits<double>::quiet_NaN();
+  out.smooth_stiffness =
+      every > 0 ? stiffness_at(solver, flat.gap(0), smooth.approach, p) : std::numeric_limits<double>::quiet_NaN();
   out.iterations += smooth.iterations;
   out.converged = smooth.converged;
   if (smooth.approach > flat.limit(0)) flat.reject(0, smooth.approach, "flat strip: ");
@@ -143,9 +143,8 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
 }
 
 EquivalentRoughness equivalent_roughness_reference(const Grid& strip, const std::vector<double>& strip_heights,
-                                                   double radius, BallShape shape,
-                                                   const std::vector<double>& positions, double load, double e_star,
-                                                   const SolverOptions& options,
+                                                   double radius, BallShape shape, const std::vector<double>& positions,
+                                                   double load, double e_star, const SolverOptions& options,
                                                    const EquivalentRoughnessOptions& path_options) {
   check_load(load);
   check_grid(strip);
@@ -157,18 +156,17 @@ EquivalentRoughness equivalent_roughness_reference(const Grid& strip, const std:
   control.max_solves = path_options.max_solves;
   EquivalentRoughness out = empty_result(positions);
   std::vector<double> p;
-  const ContactResult smooth =
-      solve_force(solver, ball_gap(strip, radius, {}, shape, positions.at(0), path_options.centre_y), load, p,
-                  options, control);
+  const ContactResult smooth = solve_force(
+      solver, ball_gap(strip, radius, {}, shape, positions.at(0), path_options.centre_y), load, p, options, control);
   out.smooth_approach = smooth.approach;
   out.smooth_contact_area = smooth.contact_area;
   out.smooth_stiffness = smooth.stiffness;
   out.converged = smooth.converged;
   for (std::size_t k = 0; k < positions.size(); ++k) {
     p.clear();
-    const ContactResult r = solve_force(
-        solver, ball_gap(strip, radius, strip_heights, shape, positions[k], path_options.centre_y), load, p, options,
-        control);
+    const ContactResult r =
+        solve_force(solver, ball_gap(strip, radius, strip_heights, shape, positions[k], path_options.centre_y), load, p,
+                    options, control);
     record(out, k, r);
   }
   finish(out);

@@ -36,7 +36,7 @@ struct EquivalentRoughnessOptions {
   double centre_y = 0.0;          // y_c of the path in the strip grid (m)
   double load_tolerance = 1e-10;  // |P − W| ≤ load_tolerance · W at every position
   int max_solves = 100;           // Newton's contact solves per position (reference, fast path's fallback)
-  bool warm_start = true;         // BF-6 field + previous δ_eq; false: every position cold (from δ_smooth's interference)
+  bool warm_start = true;  // BF-6 field + previous δ_eq; false: every position cold (from δ_smooth's interference)
   // Chunks of this many positions (0: one chunk, the whole path in order). Each chunk starts from
   // the flat strip's field and δ_smooth, then warm-starts along itself; chunks run in parallel
   // (OpenMP, one solver per thread). The chunk boundaries are fixed by this number alone, so the
@@ -49,11 +49,11 @@ struct EquivalentRoughnessOptions {
 };
 
 struct EquivalentRoughness {
-  std::vector<double> position;      // ξ_k (m, strip coordinates)
-  std::vector<double> approach;      // δ_eq(ξ_k) (m), ER-1
-  std::vector<double> height;        // h_eq(ξ_k) (m), ER-2
-  std::vector<double> contact_area;  // real contact area at δ_eq (m²)
-  std::vector<double> plastic_cells; // cells at the pressure cap at δ_eq
+  std::vector<double> position;       // ξ_k (m, strip coordinates)
+  std::vector<double> approach;       // δ_eq(ξ_k) (m), ER-1
+  std::vector<double> height;         // h_eq(ξ_k) (m), ER-2
+  std::vector<double> contact_area;   // real contact area at δ_eq (m²)
+  std::vector<double> plastic_cells;  // cells at the pressure cap at δ_eq
   // k_eq(ξ_k) = dP/dδ at δ_eq (N/m): the continuum-consistent stiffness (contact_solver.hpp, README
   // Eq. 11, 13–15), ER-7; at the positions of `stiffness_every` (the reference: every position), NaN
   // elsewhere.
@@ -64,8 +64,8 @@ struct EquivalentRoughness {
   // CG iterations: fast path, of every solve (with the flat one); reference, of each position's last
   // Newton solve (solve_force returns the last solve); coarse starts excluded.
   int iterations = 0;
-  double max_error = 0.0;            // largest stopping-rule ε (README Eq. 9) of the returned solves
-  bool converged = false;            // every position met the stopping rule and the load tolerance
+  double max_error = 0.0;  // largest stopping-rule ε (README Eq. 9) of the returned solves
+  bool converged = false;  // every position met the stopping rule and the load tolerance
 };
 
 // ER-1, ER-2 on the moving window of `solver` (open boundary, same dx, dy as `strip`, not larger;
@@ -81,9 +81,8 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
 // Plain reference: every position (and δ_smooth) an independent cold solve_force on the whole strip
 // grid, the ball centred at (ξ_k, y_c). warm_start is ignored.
 EquivalentRoughness equivalent_roughness_reference(const Grid& strip, const std::vector<double>& strip_heights,
-                                                   double radius, BallShape shape,
-                                                   const std::vector<double>& positions, double load, double e_star,
-                                                   const SolverOptions& options = {},
+                                                   double radius, BallShape shape, const std::vector<double>& positions,
+                                                   double load, double e_star, const SolverOptions& options = {},
                                                    const EquivalentRoughnessOptions& path_options = {});
 
 }  // namespace rollspec::contact

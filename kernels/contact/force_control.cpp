@@ -27,7 +27,10 @@ ContactResult solve_force(ContactSolver& solver, const std::vector<double>& gap,
     double step = std::max(1e-3 * (*hi_it - *lo_it), 1e-12 * std::max(1.0, std::fabs(w_lo)));
     ContactResult r = solver.solve(gap, w, pressure, opt);
     for (int solves = 1; r.converged && !done(r) && solves < control.max_solves; ++solves) {
-      if (r.force >= force) w_hi = std::min(w_hi, w); else w_lo = std::max(w_lo, w);
+      if (r.force >= force)
+        w_hi = std::min(w_hi, w);
+      else
+        w_lo = std::max(w_lo, w);
       if (std::isfinite(w_hi) && w_hi - w_lo <= 1e-15 * std::max(std::fabs(w_hi), std::fabs(w_lo))) break;
       double w_next = r.frozen_stiffness > 0.0 ? w + (force - r.force) / r.frozen_stiffness
                                                : std::numeric_limits<double>::quiet_NaN();
@@ -71,7 +74,10 @@ ContactResult solve_force(ContactSolver& solver, const std::vector<double>& gap,
   // Safeguarded Newton inside [w_lo, w_hi]: the current iterate is w_hi with P ≥ F.
   double w = w_hi;
   while (solves < control.max_solves) {
-    if (r.force >= force) w_hi = w; else w_lo = w;
+    if (r.force >= force)
+      w_hi = w;
+    else
+      w_lo = w;
     // Newton on the discrete P(w): its exact slope is the frozen-set k (README Eq. 11).
     double w_next = r.frozen_stiffness > 0.0 ? w + (force - r.force) / r.frozen_stiffness : 0.5 * (w_lo + w_hi);
     if (!(w_next > w_lo && w_next < w_hi)) w_next = 0.5 * (w_lo + w_hi);

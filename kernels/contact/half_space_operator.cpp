@@ -70,13 +70,15 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary b
                                   spectrum_.data() + r0 * cplx_stride_, nullptr, 1, cs, flags);
   });
   for (int sign : {FFTW_FORWARD, FFTW_BACKWARD})
-    plan_pass(sign == FFTW_FORWARD ? col_forward_ : col_backward_, ncx_, kColumnBlock, [&](std::size_t c0, std::size_t lines) {
-      fftw_complex* d = spectrum_.data() + c0;
-      return fftw_plan_many_dft(1, &n_col, static_cast<int>(lines), d, nullptr, cs, 1, d, nullptr, cs, 1, sign, flags);
-    });
+    plan_pass(sign == FFTW_FORWARD ? col_forward_ : col_backward_, ncx_, kColumnBlock,
+              [&](std::size_t c0, std::size_t lines) {
+                fftw_complex* d = spectrum_.data() + c0;
+                return fftw_plan_many_dft(1, &n_col, static_cast<int>(lines), d, nullptr, cs, 1, d, nullptr, cs, 1,
+                                          sign, flags);
+              });
   plan_pass(row_c2r_, ny, kRowBlock, [&](std::size_t r0, std::size_t lines) {
-    return fftw_plan_many_dft_c2r(1, &n_row, static_cast<int>(lines), spectrum_.data() + r0 * cplx_stride_, nullptr, 1, cs,
-                                  out_.data() + r0 * real_stride_, nullptr, 1, rs, flags);
+    return fftw_plan_many_dft_c2r(1, &n_row, static_cast<int>(lines), spectrum_.data() + r0 * cplx_stride_, nullptr, 1,
+                                  cs, out_.data() + r0 * real_stride_, nullptr, 1, rs, flags);
   });
   // Every block re-runs its pass's plan: its arrays must have the plan's alignment. The strides
   // (64-byte rows, 128-byte column blocks) make it so; checked here, not assumed.
@@ -113,7 +115,8 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, double e_star, Boundary b
     double diag = 0.0;
     std::memset(static_cast<void*>(kernel_.data()), 0, sizeof(spectral::FftwComplex) * kernel_.size());
     for (std::size_t r = 0; r < fny_; ++r) {
-      const double my = static_cast<double>(r <= fny_ / 2 ? static_cast<long>(r) : static_cast<long>(r) - static_cast<long>(fny_));
+      const double my =
+          static_cast<double>(r <= fny_ / 2 ? static_cast<long>(r) : static_cast<long>(r) - static_cast<long>(fny_));
       const double qy = two_pi * my / (static_cast<double>(fny_) * grid.dy);
       for (std::size_t c = 0; c < ncx_; ++c) {
         const double qx = two_pi * static_cast<double>(c) / (static_cast<double>(fnx_) * grid.dx);
@@ -189,10 +192,11 @@ void HalfSpaceOperator::columns(std::size_t c0, std::size_t lines, bool multiply
 }
 
 void HalfSpaceOperator::backward_rows(std::size_t r0, std::size_t lines, double* u) {
-  fftw_execute_dft_c2r(lines == kRowBlock ? row_c2r_.full.get() : row_c2r_.tail.get(), spectrum_.data() + r0 * cplx_stride_,
-                       out_.data() + r0 * real_stride_);
+  fftw_execute_dft_c2r(lines == kRowBlock ? row_c2r_.full.get() : row_c2r_.tail.get(),
+                       spectrum_.data() + r0 * cplx_stride_, out_.data() + r0 * real_stride_);
   const std::size_t nx = grid_.nx;
-  for (std::size_t iy = r0; iy < r0 + lines; ++iy) std::memcpy(u + iy * nx, out_.data() + iy * real_stride_, sizeof(double) * nx);
+  for (std::size_t iy = r0; iy < r0 + lines; ++iy)
+    std::memcpy(u + iy * nx, out_.data() + iy * real_stride_, sizeof(double) * nx);
 }
 
 double HalfSpaceOperator::fft_cost() const {
@@ -211,8 +215,9 @@ void HalfSpaceOperator::apply_direct(const double* p, const std::vector<std::uin
     table_.resize(width * (2 * ny - 1));
     for (std::size_t r = 0; r < 2 * ny - 1; ++r)
       for (std::size_t c = 0; c < width; ++c)
-        table_[r * width + c] = love_coefficient(static_cast<long>(c) - static_cast<long>(nx - 1),
-                                                 static_cast<long>(r) - static_cast<long>(ny - 1), grid_.dx, grid_.dy, e_star_);
+        table_[r * width + c] =
+            love_coefficient(static_cast<long>(c) - static_cast<long>(nx - 1),
+                             static_cast<long>(r) - static_cast<long>(ny - 1), grid_.dx, grid_.dy, e_star_);
   }
   // README Eq. 3b: with key(i) = iy (2nx − 1) + ix and C even in both offsets,
   // C_ts = table[centre − key(t) + key(s)], centre = (ny − 1)(2nx − 1) + nx − 1. Sources that are
@@ -232,7 +237,8 @@ void HalfSpaceOperator::apply_direct(const double* p, const std::vector<std::uin
   const double* table = table_.data();
   const Run* runs = runs_.data();
   const std::size_t nruns = runs_.size();
-#pragma omp parallel for schedule(static) if (static_cast<double>(targets.size()) * static_cast<double>(sources.size()) > 2e6)
+#pragma omp parallel for schedule( \
+    static) if (static_cast <double>(targets.size()) * static_cast <double>(sources.size()) > 2e6)
   for (long k = 0; k < count; ++k) {
     const std::uint32_t t = targets[static_cast<std::size_t>(k)];
     const double* row = table + (centre - static_cast<std::int64_t>((t / nx) * width + t % nx));
@@ -267,7 +273,8 @@ void HalfSpaceOperator::apply(const double* p, double* u) {
     for (long k = 0; k < row_blocks; ++k) {
       const std::size_t r0 = static_cast<std::size_t>(k) * kRowBlock, lines = std::min(kRowBlock, ny - r0);
       // Only the nx columns of in_ are written: the padding beyond stays zero (r2c keeps its input).
-      for (std::size_t iy = r0; iy < r0 + lines; ++iy) std::memcpy(in_.data() + iy * real_stride_, p + iy * nx, sizeof(double) * nx);
+      for (std::size_t iy = r0; iy < r0 + lines; ++iy)
+        std::memcpy(in_.data() + iy * real_stride_, p + iy * nx, sizeof(double) * nx);
       forward_rows(r0, lines);
     }
 #pragma omp for schedule(static)

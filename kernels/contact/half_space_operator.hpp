@@ -50,8 +50,8 @@ class HalfSpaceOperator {
   // indices in increasing order. Open boundary only. Each u[t] is one sum in source order: the same
   // bits for any thread count. Worth it while |targets|·|sources| is small against
   // fft_cost() (tiny contact spots on a big grid); the first call tabulates C (4 nx ny doubles).
-  void apply_direct(const double* p, const std::vector<std::uint32_t>& sources, const std::vector<std::uint32_t>& targets,
-                    double* u);
+  void apply_direct(const double* p, const std::vector<std::uint32_t>& sources,
+                    const std::vector<std::uint32_t>& targets, double* u);
   // Source–target pairs of apply_direct that cost about one apply().
   double fft_cost() const;
 
@@ -71,7 +71,7 @@ class HalfSpaceOperator {
     spectral::FftwPlan full, tail;  // `count` whole blocks of `block` lines, then `rest` lines
     std::size_t block = 0, count = 0, rest = 0;
   };
-  void forward_rows(std::size_t r0, std::size_t lines);   // in_ rows → spectrum_ rows
+  void forward_rows(std::size_t r0, std::size_t lines);  // in_ rows → spectrum_ rows
   void columns(std::size_t c0, std::size_t lines, bool multiply);
   void backward_rows(std::size_t r0, std::size_t lines, double* u);
   void transform_kernel();
@@ -84,14 +84,14 @@ class HalfSpaceOperator {
   std::size_t real_stride_;  // doubles per row of in_/out_ (≥ fnx, a multiple of 8: 64-byte rows)
   std::size_t cplx_stride_;  // complex entries per row of spectrum_/kernel_ (≥ ncx, a multiple of 4)
   double self_ = 0.0;
-  spectral::RealBuffer in_;          // ny rows: pressure, zero beyond column nx (the padding stays zero)
-  spectral::RealBuffer out_;         // ny rows: displacement
-  spectral::ComplexBuffer spectrum_; // fny rows × cplx_stride
-  spectral::ComplexBuffer kernel_;   // transformed coefficients, scaled by 1/(fnx·fny), same layout
-  std::vector<double> table_;        // C at offset (ox, oy): index (oy + ny − 1)(2nx − 1) + ox + nx − 1 (apply_direct)
-  struct Run {                       // sources next to each other in a row (apply_direct)
-    std::int64_t key;                // key of the first: iy (2nx − 1) + ix
-    std::uint32_t first;             // its cell index
+  spectral::RealBuffer in_;           // ny rows: pressure, zero beyond column nx (the padding stays zero)
+  spectral::RealBuffer out_;          // ny rows: displacement
+  spectral::ComplexBuffer spectrum_;  // fny rows × cplx_stride
+  spectral::ComplexBuffer kernel_;    // transformed coefficients, scaled by 1/(fnx·fny), same layout
+  std::vector<double> table_;  // C at offset (ox, oy): index (oy + ny − 1)(2nx − 1) + ox + nx − 1 (apply_direct)
+  struct Run {                 // sources next to each other in a row (apply_direct)
+    std::int64_t key;          // key of the first: iy (2nx − 1) + ix
+    std::uint32_t first;       // its cell index
     std::uint32_t length;
   };
   std::vector<Run> runs_;

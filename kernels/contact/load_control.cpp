@@ -20,10 +20,12 @@ ContactResult ContactSolver::solve_at_force(const std::vector<double>& s, double
   const std::size_t n = grid.size();
   const double area = grid.cell_area();
   const double hardness = opt.hardness;
-  if (op_.boundary() != Boundary::Open) throw std::invalid_argument("solve_at_force: open boundary only (periodic: solve_load)");
+  if (op_.boundary() != Boundary::Open)
+    throw std::invalid_argument("solve_at_force: open boundary only (periodic: solve_load)");
   if (s.size() != n) throw std::invalid_argument("solve_at_force: gap size != grid size");
   if (!(hardness > 0.0)) throw std::invalid_argument("solve_at_force: hardness must be > 0 (may be +inf)");
-  if (!(force >= 0.0) || !std::isfinite(force)) throw std::invalid_argument("solve_at_force: force must be finite, >= 0");
+  if (!(force >= 0.0) || !std::isfinite(force))
+    throw std::invalid_argument("solve_at_force: force must be finite, >= 0");
   const double total = force / area;  // Σ p wanted
   if (std::isfinite(hardness) && !(total <= hardness * static_cast<double>(n)))
     throw std::invalid_argument("solve_at_force: force exceeds H times the grid area");

@@ -136,19 +136,22 @@ struct ForceReference {
     });
     w = m[1] > 0.0 ? m[0] / m[1] : (m[3] > 0.0 ? m[2] / m[3] : s_min);
     g_ref = std::max(w - s_min, 1e-300);
-    const auto e = block_reduce<3>(cells.size(), part_, [&](std::size_t lo, std::size_t hi, double* acc) {
-      double emax = 0.0, sq = 0.0, sg = 0.0;
-      for (const std::size_t i : Slice{cells.data(), lo, hi}) {
-        const double gi = s[i] - w + u_[i];
-        g_[i] = gi;
-        emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
-        if (p[i] > 0.0 && p[i] < hardness) {
-          sq += gi * gi;
-          sg += gi;
-        }
-      }
-      acc[0] = emax, acc[1] = sq, acc[2] = sg;
-    }, 1u);
+    const auto e = block_reduce<3>(
+        cells.size(), part_,
+        [&](std::size_t lo, std::size_t hi, double* acc) {
+          double emax = 0.0, sq = 0.0, sg = 0.0;
+          for (const std::size_t i : Slice{cells.data(), lo, hi}) {
+            const double gi = s[i] - w + u_[i];
+            g_[i] = gi;
+            emax = std::max(emax, std::fabs(p[i] - clip(p[i] - gi / c, hardness)));
+            if (p[i] > 0.0 && p[i] < hardness) {
+              sq += gi * gi;
+              sg += gi;
+            }
+          }
+          acc[0] = emax, acc[1] = sq, acc[2] = sg;
+        },
+        1u);
     res.error = c * e[0] / g_ref;
     gg = e[1];
     g_sum = e[2];
@@ -360,17 +363,19 @@ struct ForceReference {
 
 }  // namespace
 
-ContactResult ContactSolver::solve_at_force_reference(const std::vector<double>& s, double force, std::vector<double>& p,
-                                                      const SolverOptions& opt, double hint) {
+ContactResult ContactSolver::solve_at_force_reference(const std::vector<double>& s, double force,
+                                                      std::vector<double>& p, const SolverOptions& opt, double hint) {
   const Grid& grid = op_.grid();
   const std::size_t n = grid.size();
   const double area = grid.cell_area();
   const double hardness = opt.hardness;
   const double c = op_.self_coefficient();
-  if (op_.boundary() != Boundary::Open) throw std::invalid_argument("solve_at_force: open boundary only (periodic: solve_load)");
+  if (op_.boundary() != Boundary::Open)
+    throw std::invalid_argument("solve_at_force: open boundary only (periodic: solve_load)");
   if (s.size() != n) throw std::invalid_argument("solve_at_force: gap size != grid size");
   if (!(hardness > 0.0)) throw std::invalid_argument("solve_at_force: hardness must be > 0 (may be +inf)");
-  if (!(force >= 0.0) || !std::isfinite(force)) throw std::invalid_argument("solve_at_force: force must be finite, >= 0");
+  if (!(force >= 0.0) || !std::isfinite(force))
+    throw std::invalid_argument("solve_at_force: force must be finite, >= 0");
   const double total = force / area;  // Σ p wanted
   if (std::isfinite(hardness) && !(total <= hardness * static_cast<double>(n)))
     throw std::invalid_argument("solve_at_force: force exceeds H times the grid area");
@@ -387,7 +392,7 @@ ContactResult ContactSolver::solve_at_force_reference(const std::vector<double>&
   if (!box_) box_ = std::make_unique<BoxProduct>(op_);
   if (delta_.size() != n) delta_.assign(n, 0.0);
 
-  ForceReference ref{s,  p,  opt, res, hardness, c,      total,  s_min, n,       grid.nx,  op_,     box_,
+  ForceReference ref{s,  p,  opt, res, hardness, c,     total,  s_min, n,       grid.nx,  op_,     box_,
                      u_, g_, t_,  r_,  x_,       part_, delta_, set_,  listed_, touched_, listed_, free_};
   if (std::isfinite(hint) && hint > s_min) ref.w_list = ref.margin(hint);
   ref.start(hint);

@@ -32,7 +32,8 @@ std::vector<double> first_contact_approach(const Grid& strip, const std::vector<
     if (half_columns > 0) {
       const double col = positions[k] / strip.dx + 0.5 * static_cast<double>(strip.nx - 1);
       const double a = std::max(0.0, std::floor(col) - static_cast<double>(half_columns));
-      const double b = std::min(static_cast<double>(strip.nx), std::ceil(col) + static_cast<double>(half_columns) + 1.0);
+      const double b =
+          std::min(static_cast<double>(strip.nx), std::ceil(col) + static_cast<double>(half_columns) + 1.0);
       lo = static_cast<std::size_t>(a);
       hi = static_cast<std::size_t>(std::max(a, b));
     }
@@ -41,7 +42,8 @@ std::vector<double> first_contact_approach(const Grid& strip, const std::vector<
       const double ry = strip.y(iy) - centre_y;
       for (std::size_t ix = lo; ix < hi; ++ix) {
         const double rx = strip.x(ix) - positions[k];
-        const double s = ball_height(rx * rx + ry * ry, radius, shape) - (heights.empty() ? 0.0 : heights[iy * strip.nx + ix]);
+        const double s =
+            ball_height(rx * rx + ry * ry, radius, shape) - (heights.empty() ? 0.0 : heights[iy * strip.nx + ix]);
         m = std::min(m, s);
       }
     }
@@ -70,7 +72,8 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
                            const SolverOptions& options, const PathTableOptions& path_options) {
   PathTable t;
   t.position = positions;
-  t.first_contact = first_contact_approach(strip, heights, radius, shape, positions, path_options.centre_y, window.nx / 2 + 1);
+  t.first_contact =
+      first_contact_approach(strip, heights, radius, shape, positions, path_options.centre_y, window.nx / 2 + 1);
   t.approach = path_table_approaches(t.first_contact, load, e_star, radius, path_options);
   const std::size_t nk = positions.size();
   SolverOptions opt = options;

@@ -64,6 +64,7 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
 // Plain reference: P(δ, ξ) by one cold contact solve on the whole strip grid (no window, no warm
 // start), ball centred at (x, centre_y).
 double path_force_direct(const Grid& strip, const std::vector<double>& heights, double e_star, double radius,
-                         BallShape shape, double x, double centre_y, double approach, const SolverOptions& options = {});
+                         BallShape shape, double x, double centre_y, double approach,
+                         const SolverOptions& options = {});
 
 }  // namespace rollspec::contact

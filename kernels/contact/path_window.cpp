@@ -27,8 +27,14 @@ void PathWindow::fail(const std::string& what) const { throw std::invalid_argume
 
 PathWindow::PathWindow(const Grid& window, const Grid& strip, const std::vector<double>& heights, double radius,
                        BallShape shape, const std::vector<double>& positions, double centre_y, std::string caller)
-    : window_(window), strip_(strip), heights_(heights), radius_(radius), shape_(shape), positions_(positions),
-      centre_y_(centre_y), caller_(std::move(caller)) {
+    : window_(window),
+      strip_(strip),
+      heights_(heights),
+      radius_(radius),
+      shape_(shape),
+      positions_(positions),
+      centre_y_(centre_y),
+      caller_(std::move(caller)) {
   check_grid(strip);
   const Grid& win = window;
   if (!same(win.dx, strip.dx) || !same(win.dy, strip.dy)) fail("solver grid cells differ from the strip's");

@@ -17,8 +17,8 @@ class PathWindow {
   // `window`: the solver grid (same dx, dy as `strip`, not larger); `heights`: strip.size() values
   // or empty (smooth); positions strictly increasing by whole cells dx; `caller` prefixes every
   // message ("blocked_force", ...). Throws std::invalid_argument on any inconsistency.
-  PathWindow(const Grid& window, const Grid& strip, const std::vector<double>& heights, double radius,
-             BallShape shape, const std::vector<double>& positions, double centre_y, std::string caller);
+  PathWindow(const Grid& window, const Grid& strip, const std::vector<double>& heights, double radius, BallShape shape,
+             const std::vector<double>& positions, double centre_y, std::string caller);
 
   std::size_t size() const { return positions_.size(); }
   // BF-5: the largest approach allowed at position k, and over all positions (with where).

@@ -9,13 +9,26 @@
 
 namespace rollspec::contact::detail {
 
-ApproachPolicy::ApproachPolicy(const PkArrays& a, Product product, const std::vector<double>& s,
-                               std::vector<double>& p, const std::vector<std::uint32_t>& cells, double target,
-                               bool load, double g_ref, double c, std::size_t active, std::size_t nx,
-                               const SolverOptions& opt, ContactResult& res)
-    : a_(a), product_(std::move(product)), s_(s), p_(p), cells_(cells), target_(target), hardness_(opt.hardness),
-      c_(c), g_ref_(g_ref), gamma_(precondition_gamma(active)), load_(load), precondition_(!load && opt.precondition),
-      n_(s.size()), nx_(nx), res_(res), w_(target) {}
+ApproachPolicy::ApproachPolicy(const PkArrays& a, Product product, const std::vector<double>& s, std::vector<double>& p,
+                               const std::vector<std::uint32_t>& cells, double target, bool load, double g_ref,
+                               double c, std::size_t active, std::size_t nx, const SolverOptions& opt,
+                               ContactResult& res)
+    : a_(a),
+      product_(std::move(product)),
+      s_(s),
+      p_(p),
+      cells_(cells),
+      target_(target),
+      hardness_(opt.hardness),
+      c_(c),
+      g_ref_(g_ref),
+      gamma_(precondition_gamma(active)),
+      load_(load),
+      precondition_(!load && opt.precondition),
+      n_(s.size()),
+      nx_(nx),
+      res_(res),
+      w_(target) {}
 
 bool ApproachPolicy::start(bool all_zero) {
   bool u_valid = false;
@@ -78,21 +91,24 @@ void ApproachPolicy::evaluate() {
     w_ = sum / static_cast<double>(cnt);
   }
   const double w = w_;
-  const auto e = block_reduce<3>(cells_.size(), a_.part, [&](std::size_t lo, std::size_t hi, double* acc) {
-    double emax = 0.0, sum = 0.0, count = 0.0;
-    for (const std::size_t i : Slice{cells_.data(), lo, hi}) {
-      const double gi = s_[i] - w + u[i];
-      a_.g[i] = gi;
-      emax = std::max(emax, std::fabs(p_[i] - clip(p_[i] - gi / c_, hardness_)));
-      const bool is_free = p_[i] > 0.0 && p_[i] < hardness_;
-      a_.set[i] = is_free ? kFree : kOut;
-      if (is_free) {
-        sum += gi * gi;
-        count += 1.0;
-      }
-    }
-    acc[0] = emax, acc[1] = sum, acc[2] = count;
-  }, 1u);
+  const auto e = block_reduce<3>(
+      cells_.size(), a_.part,
+      [&](std::size_t lo, std::size_t hi, double* acc) {
+        double emax = 0.0, sum = 0.0, count = 0.0;
+        for (const std::size_t i : Slice{cells_.data(), lo, hi}) {
+          const double gi = s_[i] - w + u[i];
+          a_.g[i] = gi;
+          emax = std::max(emax, std::fabs(p_[i] - clip(p_[i] - gi / c_, hardness_)));
+          const bool is_free = p_[i] > 0.0 && p_[i] < hardness_;
+          a_.set[i] = is_free ? kFree : kOut;
+          if (is_free) {
+            sum += gi * gi;
+            count += 1.0;
+          }
+        }
+        acc[0] = emax, acc[1] = sum, acc[2] = count;
+      },
+      1u);
   res_.error = c_ * e[0] / g_ref_;
   gg_ = e[1];
   free_count_ = static_cast<std::size_t>(e[2]);

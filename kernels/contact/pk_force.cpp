@@ -20,9 +20,21 @@ constexpr double kListMargin = 0.2;
 ForcePolicy::ForcePolicy(const PkArrays& a, const Lists& lists, HalfSpaceOperator& op, BoxProduct& box,
                          const std::vector<double>& s, std::vector<double>& p, double total, double hint,
                          const SolverOptions& opt, ContactResult& res)
-    : a_(a), l_(lists), op_(op), box_(box), s_(s), p_(p), total_(total), hint_(hint), hardness_(opt.hardness),
-      c_(op.self_coefficient()), s_min_(*std::min_element(s.begin(), s.end())), precondition_(opt.precondition),
-      nx_(op.grid().nx), res_(res), w_list_(std::numeric_limits<double>::infinity()) {}
+    : a_(a),
+      l_(lists),
+      op_(op),
+      box_(box),
+      s_(s),
+      p_(p),
+      total_(total),
+      hint_(hint),
+      hardness_(opt.hardness),
+      c_(op.self_coefficient()),
+      s_min_(*std::min_element(s.begin(), s.end())),
+      precondition_(opt.precondition),
+      nx_(op.grid().nx),
+      res_(res),
+      w_list_(std::numeric_limits<double>::infinity()) {}
 
 double ForcePolicy::margin(double w) const { return w + kListMargin * std::max(w - s_min_, 0.0); }
 
@@ -109,19 +121,22 @@ void ForcePolicy::evaluate() {
   w_ = m[1] > 0.0 ? m[0] / m[1] : (m[3] > 0.0 ? m[2] / m[3] : s_min_);
   g_ref_ = std::max(w_ - s_min_, 1e-300);
   const double w = w_;
-  const auto e = block_reduce<3>(cells.size(), a_.part, [&](std::size_t lo, std::size_t hi, double* acc) {
-    double emax = 0.0, sq = 0.0, sg = 0.0;
-    for (const std::size_t i : Slice{cells.data(), lo, hi}) {
-      const double gi = s_[i] - w + u[i];
-      a_.g[i] = gi;
-      emax = std::max(emax, std::fabs(p_[i] - clip(p_[i] - gi / c_, hardness_)));
-      if (p_[i] > 0.0 && p_[i] < hardness_) {
-        sq += gi * gi;
-        sg += gi;
-      }
-    }
-    acc[0] = emax, acc[1] = sq, acc[2] = sg;
-  }, 1u);
+  const auto e = block_reduce<3>(
+      cells.size(), a_.part,
+      [&](std::size_t lo, std::size_t hi, double* acc) {
+        double emax = 0.0, sq = 0.0, sg = 0.0;
+        for (const std::size_t i : Slice{cells.data(), lo, hi}) {
+          const double gi = s_[i] - w + u[i];
+          a_.g[i] = gi;
+          emax = std::max(emax, std::fabs(p_[i] - clip(p_[i] - gi / c_, hardness_)));
+          if (p_[i] > 0.0 && p_[i] < hardness_) {
+            sq += gi * gi;
+            sg += gi;
+          }
+        }
+        acc[0] = emax, acc[1] = sq, acc[2] = sg;
+      },
+      1u);
   res_.error = c_ * e[0] / g_ref_;
   gg_ = e[1];
   g_sum_ = e[2];

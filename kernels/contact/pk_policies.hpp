@@ -80,8 +80,8 @@ class ForcePolicy final : public PkPolicy {
     std::vector<double>& delta;
   };
   ForcePolicy(const PkArrays& a, const Lists& lists, HalfSpaceOperator& op, BoxProduct& box,
-              const std::vector<double>& s, std::vector<double>& p, double total, double hint,
-              const SolverOptions& opt, ContactResult& res);
+              const std::vector<double>& s, std::vector<double>& p, double total, double hint, const SolverOptions& opt,
+              ContactResult& res);
   // The start: the warm start clipped into [0, H], cold from the interference at the hint (or
   // uniform), L listed, Σ p brought to the total (Eq. 17b).
   void start();

@@ -31,7 +31,8 @@ ExactOscillatorStep ExactOscillatorStep::make(double omega, double zeta, double 
 }
 
 ExactOscillatorStep exact_oscillator_step_closed_form(double omega, double zeta, double h) {
-  if (!(omega > 0.0) || !(zeta >= 0.0 && zeta < 1.0)) throw std::invalid_argument("closed form needs omega > 0, 0 <= zeta < 1");
+  if (!(omega > 0.0) || !(zeta >= 0.0 && zeta < 1.0))
+    throw std::invalid_argument("closed form needs omega > 0, 0 <= zeta < 1");
   const double wd = omega * std::sqrt(1.0 - zeta * zeta);
   const double decay = std::exp(-zeta * omega * h);
   const double cs = std::cos(wd * h), sn = std::sin(wd * h);

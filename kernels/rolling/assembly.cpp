@@ -92,9 +92,15 @@ void BandSink::add_dense(const int* dofs, int m, const double* K) {
   for (int i = 0; i < m; ++i) run = run && e[i] == e[0] + i;
   if (run && lu->in_band(lo, hi) && lu->in_band(hi, lo)) {
     switch (m) {  // the usual sizes with fixed loop lengths
-      case 18: add_columns<18>(*lu, e[0], K); return;
-      case 6: add_columns<6>(*lu, e[0], K); return;
-      case 3: add_columns<3>(*lu, e[0], K); return;
+      case 18:
+        add_columns<18>(*lu, e[0], K);
+        return;
+      case 6:
+        add_columns<6>(*lu, e[0], K);
+        return;
+      case 3:
+        add_columns<3>(*lu, e[0], K);
+        return;
       default:
         for (int j = 0; j < m; ++j) {
           double* col = lu->column(e[j]) + e[0];
@@ -176,8 +182,8 @@ BeamPoints make_beam_points(const Model& m) {
   return out;
 }
 
-void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts, const VectorXd& q, double t1, double dt,
-              bool mass_matrix, VectorXd& R, Sink* K) {
+void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts, const VectorXd& q, double t1,
+              double dt, bool mass_matrix, VectorXd& R, Sink* K) {
   const Model& m = s.model;
   const auto& nodes = s.nodes;
   const int nn = static_cast<int>(m.X.size());
@@ -230,9 +236,9 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
           R.segment<3>(dofs[6 * k + 3]) += N[k] * w * ri.residual;
           if (K)
             for (int l = 0; l < 3; ++l) {
-            Ke.block<3, 3>(6 * k, 6 * l).diagonal().array() += N[k] * N[l] * w * sec.rhoA * c2;
-            Ke.block<3, 3>(6 * k + 3, 6 * l + 3) += N[k] * N[l] * w * ri.tangent;
-          }
+              Ke.block<3, 3>(6 * k, 6 * l).diagonal().array() += N[k] * N[l] * w * sec.rhoA * c2;
+              Ke.block<3, 3>(6 * k + 3, 6 * l + 3) += N[k] * N[l] * w * ri.tangent;
+            }
         }
       } else if (mass_matrix) {
         const Vector3d gyro = p.R * p.W.cross(Js * p.W);
@@ -254,7 +260,8 @@ void assemble(const AssemblyState& s, const TimeRule& rule, ContactSet& contacts
     R.segment<3>(6 * nd) -= b.mass * grav;
     Eigen::Matrix<double, 6, 6> Kb = Eigen::Matrix<double, 6, 6>::Zero();
     if (inertia) {
-      const RotaryInertiaEval ri = rule.rotary(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd), K != nullptr);
+      const RotaryInertiaEval ri =
+          rule.rotary(b.inertia, nodes[nd].R, nodes[nd].W, nodes[nd].A, dt, al(nd), K != nullptr);
       R.segment<3>(6 * nd) += b.mass * acc(nd);
       R.segment<3>(6 * nd + 3) += ri.residual;
       Kb.block<3, 3>(0, 0).diagonal().array() += b.mass * c2;

@@ -21,13 +21,14 @@ void BandLU::set_zero() { std::fill(ab_.begin(), ab_.end(), 0.0); }
 
 namespace {
 // y[i] -= x[i] * a, i < n (distinct columns of the band: no overlap)
-inline __attribute__((always_inline)) void axpy_minus(double* __restrict y, const double* __restrict x, double a, int n) {
+inline __attribute__((always_inline)) void axpy_minus(double* __restrict y, const double* __restrict x, double a,
+                                                      int n) {
   for (int i = 0; i < n; ++i) y[i] -= x[i] * a;
 }
 }  // namespace
 
 bool BandLU::factorize() {
-  int ju = 0;                // last column touched by the interchanges so far
+  int ju = 0;  // last column touched by the interchanges so far
   for (int c = 0; c < n_; ++c) utop_[static_cast<std::size_t>(c)] = c;
   for (int j = 0; j < n_; ++j) {
     const int km = std::min(kl_, n_ - 1 - j);

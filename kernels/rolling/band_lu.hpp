@@ -29,10 +29,14 @@ class BandLU {
   bool in_band(int i, int j) const { return i - j <= kl_ && j - i <= ku_; }
 
   // Entry (i, j) of the matrix before factorize (inside the band only).
-  double& at(int i, int j) { return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
+  double& at(int i, int j) {
+    return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)];
+  }
   void set_zero();
   // Pointer p with p[i] = entry (i, j) for the rows i of column j inside the band.
-  double* column(int j) { return ab_.data() + (ld_ * static_cast<std::size_t>(j) + static_cast<std::size_t>(kl_ + ku_)) - j; }
+  double* column(int j) {
+    return ab_.data() + (ld_ * static_cast<std::size_t>(j) + static_cast<std::size_t>(kl_ + ku_)) - j;
+  }
 
   // In place; false if a pivot is exactly zero (singular) or not finite.
   bool factorize();
@@ -44,9 +48,15 @@ class BandLU {
   void solve_reference(double* b) const;
 
  private:
-  double& f(int i, int j) { return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
-  double f(int i, int j) const { return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
-  const double* fp(int i, int j) const { return &ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)]; }
+  double& f(int i, int j) {
+    return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)];
+  }
+  double f(int i, int j) const {
+    return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)];
+  }
+  const double* fp(int i, int j) const {
+    return &ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)];
+  }
   int n_ = 0, kl_ = 0, ku_ = 0;
   std::size_t ld_ = 1;  // 2 kl + ku + 1
   std::vector<double> ab_;

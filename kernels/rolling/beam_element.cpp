@@ -21,16 +21,15 @@ namespace {
 
 // Point energy per unit length as a function of z = (x', a, a'), README Eq. R-13.
 template <class T>
-T point_energy(const BeamSection& s, const BeamStiffPoint& p, const Vec3<T>& xp, const Vec3<T>& a,
-               const Vec3<T>& ap) {
+T point_energy(const BeamSection& s, const BeamStiffPoint& p, const Vec3<T>& xp, const Vec3<T>& a, const Vec3<T>& ap) {
   // Gamma = R_n^T Q^T x' - E1
   Vec3<T> G = mul_t(p.R, qt_apply(a, xp));
   G[0] = G[0] - 1.0;
   // K = K_n + R_n^T Q^T Xi a'
   Vec3<T> K = mul_t(p.R, qt_apply(a, xi_apply(a, ap)));
   for (int i = 0; i < 3; ++i) K[i] = K[i] + p.K(i);
-  return 0.5 * (s.EA * G[0] * G[0] + s.GA2 * G[1] * G[1] + s.GA3 * G[2] * G[2] +
-                s.GJ * K[0] * K[0] + s.EI2 * K[1] * K[1] + s.EI3 * K[2] * K[2]);
+  return 0.5 * (s.EA * G[0] * G[0] + s.GA2 * G[1] * G[1] + s.GA3 * G[2] * G[2] + s.GJ * K[0] * K[0] +
+                s.EI2 * K[1] * K[1] + s.EI3 * K[2] * K[2]);
 }
 
 }  // namespace
@@ -78,8 +77,7 @@ PointEnergy beam_point_energy_reference(const BeamSection& s, const BeamStiffPoi
 //   Gamma_i = (Q r_i) . x' - delta_i1,   K_i = K_n,i + (Xi^T Q r_i) . a',   r_i = R_n e_i,
 // so only the six 3-vectors phi_i(a) need first and second derivatives, with Jet2<3>. Kept as
 // the plain reference of the analytic path below.
-PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p,
-                                  const Eigen::Matrix<double, 9, 1>& z) {
+PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p, const Eigen::Matrix<double, 9, 1>& z) {
   using J3 = Jet2<3>;
   Vec3<J3> a;
   for (int i = 0; i < 3; ++i) a[i] = J3::variable(z(3 + i), i);
@@ -134,8 +132,8 @@ PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p,
 // g = 4/(4 + a.a), grad g = -(g^2/2) a, hess g = -(g^2/2) I + (g^3/2) a a^T:
 //   f1 = x'.n + g h,  h = p.a + a^T S a / 2,  p = n x x',  S = (x' n^T + n x'^T)/2 - (x'.n) I
 //   f2 = g (a'.m + q.a),  q = (m x a')/2.
-PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
-                              const Eigen::Matrix<double, 9, 1>& z, bool want_hess) {
+PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p, const Eigen::Matrix<double, 9, 1>& z,
+                              bool want_hess) {
   const Vector3d xp = z.segment<3>(0), a = z.segment<3>(3), ap = z.segment<3>(6);
   const double g = rodrigues_g(a);
   const Matrix3d Xi = rodrigues_xi(a);
@@ -166,9 +164,9 @@ PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
   // f2 = a'.Xi(a) m
   const Vector3d qv = 0.5 * m.cross(ap);
   const double l2 = ap.dot(m) + qv.dot(a);
-  const Matrix3d haa = GG.transpose() * CN.asDiagonal() * GG + GK.transpose() * CM.asDiagonal() * GK +
-                       h * ddg + dg * dh.transpose() + dh * dg.transpose() + g * S +
-                       l2 * ddg + dg * qv.transpose() + qv * dg.transpose();
+  const Matrix3d haa = GG.transpose() * CN.asDiagonal() * GG + GK.transpose() * CM.asDiagonal() * GK + h * ddg +
+                       dg * dh.transpose() + dh * dg.transpose() + g * S + l2 * ddg + dg * qv.transpose() +
+                       qv * dg.transpose();
   const Matrix3d hxa = R * CN.asDiagonal() * GG - skew(R * N) * Xi;
   const Matrix3d hpa = XR * CM.asDiagonal() * GK - (0.5 * g) * ((Xi * m) * a.transpose() + skew(m));
   out.hess.setZero();
@@ -185,8 +183,8 @@ PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
 // Element force and tangent with B applied by node (B maps node k's DOFs to z by the scalars
 // N_k and dN_k/ds on identity blocks): no 9 x 18 products.
 BeamElementEval beam_element_internal(const BeamSection& s, const std::array<BeamStiffPoint, 2>& gp,
-                                      const std::array<Vector3d, 3>& x,
-                                      const std::array<Vector3d, 3>& alpha, bool want_tangent) {
+                                      const std::array<Vector3d, 3>& x, const std::array<Vector3d, 3>& alpha,
+                                      bool want_tangent) {
   BeamElementEval out;
   for (const BeamStiffPoint& p : gp) {
     double N[3], dN[3], d[3];
@@ -226,8 +224,8 @@ BeamElementEval beam_element_internal(const BeamSection& s, const std::array<Bea
 
 // Reference of the element (B^T grad, B^T hess B with the Jet2<3> point path), for tests.
 BeamElementEval beam_element_internal_reference(const BeamSection& s, const std::array<BeamStiffPoint, 2>& gp,
-                                      const std::array<Vector3d, 3>& x,
-                                      const std::array<Vector3d, 3>& alpha, bool want_tangent) {
+                                                const std::array<Vector3d, 3>& x, const std::array<Vector3d, 3>& alpha,
+                                                bool want_tangent) {
   BeamElementEval out;
   for (const BeamStiffPoint& p : gp) {
     double N[3], dN[3];

@@ -21,7 +21,7 @@ namespace rollspec::rolling {
 void quadratic_shape(double xi, double N[3], double dN[3]);
 
 struct BeamStiffPoint {
-  double xi = 0.0, weight = 0.0, jac = 0.0;  // jac = ds/dxi of the reference line
+  double xi = 0.0, weight = 0.0, jac = 0.0;         // jac = ds/dxi of the reference line
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // committed rotation (step start)
   Eigen::Vector3d K = Eigen::Vector3d::Zero();      // committed material curvature
 };
@@ -44,18 +44,17 @@ struct PointEnergy {
   Eigen::Matrix<double, 9, 1> grad = Eigen::Matrix<double, 9, 1>::Zero();
   Eigen::Matrix<double, 9, 9> hess = Eigen::Matrix<double, 9, 9>::Zero();
 };
-PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p,
-                              const Eigen::Matrix<double, 9, 1>& z, bool want_hess = true);
+PointEnergy beam_point_energy(const BeamSection& s, const BeamStiffPoint& p, const Eigen::Matrix<double, 9, 1>& z,
+                              bool want_hess = true);
 // The same with second-order jets Jet2<3> of the six strain directions (README R-14), the
 // reference the analytic path (R-14a) is tested against.
-PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p,
-                                  const Eigen::Matrix<double, 9, 1>& z);
+PointEnergy beam_point_energy_jet(const BeamSection& s, const BeamStiffPoint& p, const Eigen::Matrix<double, 9, 1>& z);
 // Slow reference oracle of the same (one Jet2<9> evaluation), for tests.
 PointEnergy beam_point_energy_reference(const BeamSection& s, const BeamStiffPoint& p,
                                         const Eigen::Matrix<double, 9, 1>& z);
 
 struct BeamElementEval {
-  Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();   // internal force
+  Eigen::Matrix<double, 18, 1> force = Eigen::Matrix<double, 18, 1>::Zero();  // internal force
   Eigen::Matrix<double, 18, 18> tangent = Eigen::Matrix<double, 18, 18>::Zero();
   double energy = 0.0;
 };

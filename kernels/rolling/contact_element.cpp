@@ -55,7 +55,7 @@ ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const Co
 
   const Vector3d Qn = rodrigues_q(alpha) * n;
   const Vector3d x_f = xf0 + rr * P * (Qn - n);  // (D-13), seed 000 Eq. 7
-  e.g_n = (x - plane.point).dot(n) - r;           // (D-14), seed 000 Eq. 11 (x_f lies on the plane)
+  e.g_n = (x - plane.point).dot(n) - r;          // (D-14), seed 000 Eq. 11 (x_f lies on the plane)
   e.point = x - r * n;
   // touching (g_n = 0) counts as closed, so that a predictor from a touching state sees
   // the normal penalty stiffness

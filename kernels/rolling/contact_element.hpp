@@ -31,24 +31,24 @@ struct ContactLaw {
 // Committed (end of step) history of one contact.
 struct ContactState {
   bool active = false;
-  Eigen::Vector3d x_f = Eigen::Vector3d::Zero();   // fictitious initial contact point (D-13)
-  Eigen::Vector3d g_st = Eigen::Vector3d::Zero();  // accumulated slip (seed 000 Eq. 13)
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero(); // contact normal x_f refers to (rough surfaces, R-63)
+  Eigen::Vector3d x_f = Eigen::Vector3d::Zero();     // fictitious initial contact point (D-13)
+  Eigen::Vector3d g_st = Eigen::Vector3d::Zero();    // accumulated slip (seed 000 Eq. 13)
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // contact normal x_f refers to (rough surfaces, R-63)
 };
 
 struct ContactEval {
   bool active = false;
   bool slip = false;
-  double g_n = 0.0;                                      // normal gap (D-14), < 0 in contact
-  double normal_force = 0.0;                             // magnitude of the normal force along n
-  Eigen::Vector3d g_t = Eigen::Vector3d::Zero();         // elastic tangential gap (D-14)
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();       // total force on the node (normal + friction)
-  Eigen::Vector3d friction = Eigen::Vector3d::Zero();    // friction part f
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();      // (C - x_o) x f, spatial
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();       // C = x_o - r n
-  ContactState next;                                     // state to commit if this iterate converges
-  double dissipation = 0.0;                              // friction work of the step's slip increment
-  double tangential_energy = 0.0;                        // |f_t|^2 / (2 eps_t) stored in the stick spring
+  double g_n = 0.0;                                    // normal gap (D-14), < 0 in contact
+  double normal_force = 0.0;                           // magnitude of the normal force along n
+  Eigen::Vector3d g_t = Eigen::Vector3d::Zero();       // elastic tangential gap (D-14)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();     // total force on the node (normal + friction)
+  Eigen::Vector3d friction = Eigen::Vector3d::Zero();  // friction part f
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();    // (C - x_o) x f, spatial
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();     // C = x_o - r n
+  ContactState next;                                   // state to commit if this iterate converges
+  double dissipation = 0.0;                            // friction work of the step's slip increment
+  double tangential_energy = 0.0;                      // |f_t|^2 / (2 eps_t) stored in the stick spring
   Eigen::Matrix<double, 6, 1> residual = Eigen::Matrix<double, 6, 1>::Zero();  // -[F; Xi^T M]
   Eigen::Matrix<double, 6, 6> tangent = Eigen::Matrix<double, 6, 6>::Zero();   // d residual / d[du; a]
 };
@@ -62,8 +62,7 @@ enum class NormalForce { EndPoint, DiscreteGradient };
 // Rodrigues parameters of the node in this step. want_tangent = false: the tangent is left zero
 // (residual-only assembly, R-44a), everything else the same bits.
 ContactEval evaluate_contact(const Plane& plane, const ContactLaw& law, const ContactState& state,
-                             const Eigen::Vector3d& x_start, const Eigen::Vector3d& x,
-                             const Eigen::Vector3d& alpha,
+                             const Eigen::Vector3d& x_start, const Eigen::Vector3d& x, const Eigen::Vector3d& alpha,
                              NormalForce normal_force = NormalForce::EndPoint, bool want_tangent = true);
 
 // Discrete gradient of V(g) = eps_n <-g>^2 / 2 (README R-50): value D = (V(g1) - V(g0))/(g1 - g0)

@@ -110,8 +110,9 @@ class PlanePair final : public ContactSet::Pair {
 // a curved surface (centre step r alpha, contact point step r (alpha - dtheta)) leaves g_t = 0.
 // The normal block of the tangent takes the exact curvature term of R-61; the friction blocks
 // neglect the turning of the plane with x, which costs Newton iterations, not accuracy.
-ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceContactEval& sv, const ContactState& state,
-                                   const Vector3d& x_start, const Vector3d& x, const Vector3d& alpha, bool want_tangent) {
+ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceContactEval& sv,
+                                   const ContactState& state, const Vector3d& x_start, const Vector3d& x,
+                                   const Vector3d& alpha, bool want_tangent) {
   const Plane tangent_plane = make_plane(sv.point, sv.normal);
   const ContactLaw cl{law.radius, law.mu, law.eps_n, law.eps_t, law.rolling};
   ContactState carried = state;
@@ -121,7 +122,8 @@ ContactEval rough_friction_contact(const SurfaceContactLaw& law, const SurfaceCo
   }
   ContactEval fe = evaluate_contact(tangent_plane, cl, carried, x_start, x, alpha, NormalForce::EndPoint, want_tangent);
   fe.next.normal = sv.normal;
-  if (fe.active && want_tangent) fe.tangent.block<3, 3>(0, 0) += sv.tangent - law.eps_n * sv.normal * sv.normal.transpose();
+  if (fe.active && want_tangent)
+    fe.tangent.block<3, 3>(0, 0) += sv.tangent - law.eps_n * sv.normal * sv.normal.transpose();
   return fe;
 }
 
@@ -189,7 +191,8 @@ class SurfacePair final : public ContactSet::Pair {
   void commit(const Vector3d& du, const Vector3d& alpha, const TimeRule&, Totals& t) override {
     if (law_.mu > 0.0) {  // friction: works and history as the plane pairs, trapezoidal
       t.acc.friction_dissipation += fe_.dissipation;
-      t.acc.friction_work -= (0.5 * (out.friction + fe_.friction)).dot(du) + (0.5 * (out.moment + fe_.moment)).dot(alpha);
+      t.acc.friction_work -=
+          (0.5 * (out.friction + fe_.friction)).dot(du) + (0.5 * (out.moment + fe_.moment)).dot(alpha);
       state_ = fe_.active ? fe_.next : ContactState{};
       if (fe_.active) t.tangential += fe_.tangential_energy;
       out.slip = fe_.slip;
@@ -214,7 +217,7 @@ class SurfacePair final : public ContactSet::Pair {
   ContactEval fe_;  // friction part (mu > 0)
   bool has_start_ = false;
   Eigen::Vector2d start_ = Eigen::Vector2d::Zero();  // last closest point found
-  bool had_start_ = false;                                  // has_start_ and start_ before the last assemble
+  bool had_start_ = false;                           // has_start_ and start_ before the last assemble
   Eigen::Vector2d start_before_ = Eigen::Vector2d::Zero();
   HeightSample start_sample_, start_sample_before_;  // the field at start_ (and before the last assemble)
 };

@@ -31,8 +31,8 @@ Model disc_model(const DiscParams& p) {
 DiscSummary summarize_disc(const DiscParams& p, const History& h) {
   DiscSummary s;
   const double I = 0.5 * p.mass * p.radius * p.radius;
-  s.t_roll_exact = (p.radius * p.omega0 - p.V0) / (3.0 * p.mu * p.g);            // Eq. 50
-  s.final_speed_exact = (p.V0 + p.radius * p.omega0 / 2.0) / 1.5;               // momentum about C
+  s.t_roll_exact = (p.radius * p.omega0 - p.V0) / (3.0 * p.mu * p.g);  // Eq. 50
+  s.final_speed_exact = (p.V0 + p.radius * p.omega0 / 2.0) / 1.5;      // momentum about C
   s.energy_loss_exact = 0.5 * p.mass * p.V0 * p.V0 + 0.5 * I * p.omega0 * p.omega0 -
                         0.5 * (p.mass + I / (p.radius * p.radius)) * s.final_speed_exact * s.final_speed_exact;
   s.penetration_exact = p.mass * p.g / p.eps_n;
@@ -134,9 +134,12 @@ CantileverRun run_cantilever(const CantileverParams& p, double t_end, double dt,
       }
       for (const ContactOutput& c : S.contacts()) {
         s.contact_force_sum += c.force;
-        if (!c.active) ++s.n_open;
-        else if (c.slip) ++s.n_slip;
-        else ++s.n_stick;
+        if (!c.active)
+          ++s.n_open;
+        else if (c.slip)
+          ++s.n_slip;
+        else
+          ++s.n_stick;
       }
       out.snapshots.push_back(s);
       ++next;
@@ -160,7 +163,8 @@ Model puck_model(const PuckParams& p) {
   const double a = p.half_width;
   m.planes = {make_plane(Vector3d(a, 0, 0), -Vector3d::UnitX()), make_plane(Vector3d(-a, 0, 0), Vector3d::UnitX()),
               make_plane(Vector3d(0, 0, a), -Vector3d::UnitZ()), make_plane(Vector3d(0, 0, -a), Vector3d::UnitZ())};
-  for (int w = 0; w < 4; ++w) m.contacts.push_back(ContactPair{n, w, ContactLaw{p.radius, p.mu, p.eps_n, p.eps_t, true}});
+  for (int w = 0; w < 4; ++w)
+    m.contacts.push_back(ContactPair{n, w, ContactLaw{p.radius, p.mu, p.eps_n, p.eps_t, true}});
   if (p.force_peak != 0.0 || p.moment_peak != 0.0) {
     const TimeSeries pulse{{0.0, 0.5 * p.pulse, p.pulse}, {0.0, 1.0, 0.0}};
     m.loads.push_back(NodalLoad{n, Vector3d(0, 0, p.force_peak), Vector3d(0, p.moment_peak, 0), pulse});

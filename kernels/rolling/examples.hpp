@@ -60,11 +60,11 @@ Model cantilever_model(const CantileverParams& p);
 struct CantileverSnapshot {
   double time = 0.0;
   Eigen::Vector3d tip = Eigen::Vector3d::Zero();
-  double reaction_y = 0.0;          // reaction at B in y
+  double reaction_y = 0.0;                                      // reaction at B in y
   Eigen::Vector3d root_reaction = Eigen::Vector3d::Zero();      // reaction force at A
   Eigen::Vector3d contact_force_sum = Eigen::Vector3d::Zero();  // sum of contact forces on the beam
-  double max_abs_torsion = 0.0;     // max |M_1| over the Gauss points
-  std::vector<double> x_ref, torsion;  // torsion M_1 along the reference x coordinate
+  double max_abs_torsion = 0.0;                                 // max |M_1| over the Gauss points
+  std::vector<double> x_ref, torsion;                           // torsion M_1 along the reference x coordinate
   int n_slip = 0, n_stick = 0, n_open = 0;
 };
 struct CantileverRun {
@@ -100,7 +100,7 @@ double puck_axial_inertia(const PuckParams& p);  // m r^2 / 2
 // one active contact. Values just before the first and just after the last contact record.
 struct Impact {
   double t_start = 0.0, t_end = 0.0;
-  int pair = -1;  // contact pair of the first active record
+  int pair = -1;                                   // contact pair of the first active record
   double energy_before = 0.0, energy_after = 0.0;  // kinetic + penalty + tangential_elastic
   Eigen::Vector3d v_before = Eigen::Vector3d::Zero(), v_after = Eigen::Vector3d::Zero();
   Eigen::Vector3d w_before = Eigen::Vector3d::Zero(), w_after = Eigen::Vector3d::Zero();

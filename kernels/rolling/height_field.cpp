@@ -106,7 +106,8 @@ HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
     } else {
       const std::size_t i2 = static_cast<std::size_t>(std::clamp(a2.i + j, 0, f.n2 - 1));
       for (int i = 0; i < 4; ++i)
-        v[i] = f.h[i2 * static_cast<std::size_t>(f.n1) + static_cast<std::size_t>(std::clamp(a1.i + i - 1, 0, f.n1 - 1))];
+        v[i] =
+            f.h[i2 * static_cast<std::size_t>(f.n1) + static_cast<std::size_t>(std::clamp(a1.i + i - 1, 0, f.n1 - 1))];
     }
     const Lanes2* q = Q[j + 1];
     for (int i = 0; i < 4; ++i) {
@@ -192,7 +193,8 @@ ContactValidity single_point_contact(const HeightField& f, double radius, bool s
         v.where = s;
       }
     }
-  v.radius_limit = v.max_concave_curvature > 0.0 ? 1.0 / v.max_concave_curvature : std::numeric_limits<double>::infinity();
+  v.radius_limit =
+      v.max_concave_curvature > 0.0 ? 1.0 / v.max_concave_curvature : std::numeric_limits<double>::infinity();
   v.valid = radius * v.max_concave_curvature < 1.0;
   return v;
 }

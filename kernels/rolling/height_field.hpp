@@ -51,8 +51,8 @@ HeightField line_height_field(const Plane& base, double s_begin, double s_end, i
 // cell midpoint of the interpolant. Convex parts (peaks) never give two-point contact.
 struct ContactValidity {
   double max_concave_curvature = 0.0;
-  double radius_limit = 0.0;  // 1/kappa_max (infinity for a surface without valleys)
-  bool valid = true;          // radius * kappa_max < 1
+  double radius_limit = 0.0;                        // 1/kappa_max (infinity for a surface without valleys)
+  bool valid = true;                                // radius * kappa_max < 1
   Eigen::Vector2d where = Eigen::Vector2d::Zero();  // tangent coordinates of kappa_max
 };
 ContactValidity check_single_point_contact(const HeightField& f, double radius);

@@ -44,23 +44,49 @@ struct Jet2 {
 };
 
 template <int N>
-inline Jet2<N> operator+(Jet2<N> a, const Jet2<N>& b) { return a += b; }
+inline Jet2<N> operator+(Jet2<N> a, const Jet2<N>& b) {
+  return a += b;
+}
 template <int N>
-inline Jet2<N> operator-(Jet2<N> a, const Jet2<N>& b) { return a -= b; }
+inline Jet2<N> operator-(Jet2<N> a, const Jet2<N>& b) {
+  return a -= b;
+}
 template <int N>
-inline Jet2<N> operator-(Jet2<N> a) { a *= -1.0; return a; }
+inline Jet2<N> operator-(Jet2<N> a) {
+  a *= -1.0;
+  return a;
+}
 template <int N>
-inline Jet2<N> operator+(Jet2<N> a, double c) { a.v += c; return a; }
+inline Jet2<N> operator+(Jet2<N> a, double c) {
+  a.v += c;
+  return a;
+}
 template <int N>
-inline Jet2<N> operator+(double c, Jet2<N> a) { a.v += c; return a; }
+inline Jet2<N> operator+(double c, Jet2<N> a) {
+  a.v += c;
+  return a;
+}
 template <int N>
-inline Jet2<N> operator-(Jet2<N> a, double c) { a.v -= c; return a; }
+inline Jet2<N> operator-(Jet2<N> a, double c) {
+  a.v -= c;
+  return a;
+}
 template <int N>
-inline Jet2<N> operator-(double c, Jet2<N> a) { a *= -1.0; a.v += c; return a; }
+inline Jet2<N> operator-(double c, Jet2<N> a) {
+  a *= -1.0;
+  a.v += c;
+  return a;
+}
 template <int N>
-inline Jet2<N> operator*(Jet2<N> a, double c) { a *= c; return a; }
+inline Jet2<N> operator*(Jet2<N> a, double c) {
+  a *= c;
+  return a;
+}
 template <int N>
-inline Jet2<N> operator*(double c, Jet2<N> a) { a *= c; return a; }
+inline Jet2<N> operator*(double c, Jet2<N> a) {
+  a *= c;
+  return a;
+}
 
 template <int N>
 inline Jet2<N> operator*(const Jet2<N>& a, const Jet2<N>& b) {
@@ -69,8 +95,7 @@ inline Jet2<N> operator*(const Jet2<N>& a, const Jet2<N>& b) {
   for (int i = 0; i < N; ++i) r.g[i] = a.v * b.g[i] + b.v * a.g[i];
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j)
-      r.h[i * N + j] = a.v * b.h[i * N + j] + b.v * a.h[i * N + j] + a.g[i] * b.g[j] +
-                       b.g[i] * a.g[j];
+      r.h[i * N + j] = a.v * b.h[i * N + j] + b.v * a.h[i * N + j] + a.g[i] * b.g[j] + b.g[i] * a.g[j];
   return r;
 }
 
@@ -81,20 +106,28 @@ inline Jet2<N> reciprocal(const Jet2<N>& b) {
   r.v = iv;
   for (int i = 0; i < N; ++i) r.g[i] = -b.g[i] * iv * iv;
   for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j)
-      r.h[i * N + j] = -b.h[i * N + j] * iv * iv + 2.0 * b.g[i] * b.g[j] * iv * iv * iv;
+    for (int j = 0; j < N; ++j) r.h[i * N + j] = -b.h[i * N + j] * iv * iv + 2.0 * b.g[i] * b.g[j] * iv * iv * iv;
   return r;
 }
 
 template <int N>
-inline Jet2<N> operator/(const Jet2<N>& a, const Jet2<N>& b) { return a * reciprocal(b); }
+inline Jet2<N> operator/(const Jet2<N>& a, const Jet2<N>& b) {
+  return a * reciprocal(b);
+}
 template <int N>
-inline Jet2<N> operator/(double c, const Jet2<N>& b) { return c * reciprocal(b); }
+inline Jet2<N> operator/(double c, const Jet2<N>& b) {
+  return c * reciprocal(b);
+}
 template <int N>
-inline Jet2<N> operator/(Jet2<N> a, double c) { a *= 1.0 / c; return a; }
+inline Jet2<N> operator/(Jet2<N> a, double c) {
+  a *= 1.0 / c;
+  return a;
+}
 
 inline double value_of(double x) { return x; }
 template <int N>
-inline double value_of(const Jet2<N>& x) { return x.v; }
+inline double value_of(const Jet2<N>& x) {
+  return x.v;
+}
 
 }  // namespace rollspec::rolling

@@ -5,8 +5,7 @@
 
 namespace rollspec::rolling {
 
-BeamSection circular_section(double E, double nu, double rho, double outer_diameter,
-                             double inner_diameter) {
+BeamSection circular_section(double E, double nu, double rho, double outer_diameter, double inner_diameter) {
   if (!(outer_diameter > inner_diameter) || inner_diameter < 0.0)
     throw std::invalid_argument("circular_section: need outer_diameter > inner_diameter >= 0");
   const double pi = 3.14159265358979323846;
@@ -34,8 +33,8 @@ int Model::add_node(const Eigen::Vector3d& x, const Eigen::Matrix3d& frame) {
   return static_cast<int>(X.size()) - 1;
 }
 
-std::vector<int> add_straight_beam(Model& model, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                   int n_elements, int section, const Eigen::Vector3d& e2_hint) {
+std::vector<int> add_straight_beam(Model& model, const Eigen::Vector3d& a, const Eigen::Vector3d& b, int n_elements,
+                                   int section, const Eigen::Vector3d& e2_hint) {
   if (n_elements < 1) throw std::invalid_argument("add_straight_beam: n_elements < 1");
   const Eigen::Vector3d e1 = (b - a).normalized();
   Eigen::Vector3d e2 = e2_hint - e2_hint.dot(e1) * e1;

@@ -17,17 +17,16 @@ namespace rollspec::rolling {
 
 // Cross-section stiffness and inertia per unit length, in the section frame (e1 = axis).
 struct BeamSection {
-  double EA = 0.0, GA2 = 0.0, GA3 = 0.0;  // axial, shear (with shear coefficient)
-  double GJ = 0.0, EI2 = 0.0, EI3 = 0.0;  // torsion, bending
-  double rhoA = 0.0;                      // mass per length
+  double EA = 0.0, GA2 = 0.0, GA3 = 0.0;         // axial, shear (with shear coefficient)
+  double GJ = 0.0, EI2 = 0.0, EI3 = 0.0;         // torsion, bending
+  double rhoA = 0.0;                             // mass per length
   double rhoJ1 = 0.0, rhoI2 = 0.0, rhoI3 = 0.0;  // rotary inertia per length (polar, bending)
-  double outer_radius = 0.0;              // contact sphere radius of the section's nodes
+  double outer_radius = 0.0;                     // contact sphere radius of the section's nodes
 };
 
 // Solid (inner_diameter = 0) or tube circular section; Cowper's shear coefficient
 // k = 6(1+nu)(1+m^2)^2 / ((7+6nu)(1+m^2)^2 + (20+12nu) m^2), m = inner/outer (README R-11).
-BeamSection circular_section(double E, double nu, double rho, double outer_diameter,
-                             double inner_diameter = 0.0);
+BeamSection circular_section(double E, double nu, double rho, double outer_diameter, double inner_diameter = 0.0);
 
 struct BeamElement {
   std::array<int, 3> nodes{};  // end, middle, end (xi = -1, 0, +1)
@@ -70,16 +69,16 @@ struct ImposedDof {
 };
 
 struct Model {
-  std::vector<Eigen::Vector3d> X;        // initial node positions
-  std::vector<Eigen::Matrix3d> frames;   // initial node rotations (columns e1, e2, e3)
-  std::vector<Eigen::Vector3d> v0;       // initial velocities (empty: zero)
-  std::vector<Eigen::Vector3d> w0;       // initial spatial angular velocities (empty: zero)
+  std::vector<Eigen::Vector3d> X;       // initial node positions
+  std::vector<Eigen::Matrix3d> frames;  // initial node rotations (columns e1, e2, e3)
+  std::vector<Eigen::Vector3d> v0;      // initial velocities (empty: zero)
+  std::vector<Eigen::Vector3d> w0;      // initial spatial angular velocities (empty: zero)
   std::vector<BeamSection> sections;
   std::vector<BeamElement> beams;
   std::vector<RigidBody> bodies;
   std::vector<Plane> planes;
   std::vector<ContactPair> contacts;
-  std::vector<HeightField> surfaces;               // rough rigid surfaces (plane + height field)
+  std::vector<HeightField> surfaces;  // rough rigid surfaces (plane + height field)
   std::vector<SurfaceContactPair> surface_contacts;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   TimeSeries gravity_series;
@@ -91,8 +90,7 @@ struct Model {
 
 // Straight beam from a to b with n_elements quadratic elements (2 n + 1 equally spaced
 // nodes); e1 along the beam, e2 from e2_hint. Returns the node ids in order.
-std::vector<int> add_straight_beam(Model& model, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                   int n_elements, int section,
-                                   const Eigen::Vector3d& e2_hint = Eigen::Vector3d::UnitY());
+std::vector<int> add_straight_beam(Model& model, const Eigen::Vector3d& a, const Eigen::Vector3d& b, int n_elements,
+                                   int section, const Eigen::Vector3d& e2_hint = Eigen::Vector3d::UnitY());
 
 }  // namespace rollspec::rolling

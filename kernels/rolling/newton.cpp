@@ -29,17 +29,18 @@ void NewtonDriver::choose_solver(LinearSolver wanted) {
       kl = std::max(kl, static_cast<int>(it.row()) - c);
       ku = std::max(ku, c - static_cast<int>(it.row()));
     }
-  banded_ = wanted == LinearSolver::Band ||
-            (wanted == LinearSolver::Automatic && band_pays(neq_, kl, ku, A.nonZeros()));
+  banded_ =
+      wanted == LinearSolver::Band || (wanted == LinearSolver::Automatic && band_pays(neq_, kl, ku, A.nonZeros()));
   if (!banded_) return;
   // this pass assembled into the sparse matrix: its values (the same sums) seed the band
   band_.resize(neq_, kl, ku);
   for (int c = 0; c < A.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it) band_.at(static_cast<int>(it.row()), c) = it.value();
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it)
+      band_.at(static_cast<int>(it.row()), c) = it.value();
 }
 
-bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, VectorXd& q, VectorXd& R,
-                         StepReport& rep, const Rewind& rewind) {
+bool NewtonDriver::solve(const SolverOptions& opt, const Assemble& assemble, VectorXd& q, VectorXd& R, StepReport& rep,
+                         const Rewind& rewind) {
   VectorXd& rf = rf_;
   VectorXd& dq = dq_;
   VectorXd& q_acc = q_acc_;

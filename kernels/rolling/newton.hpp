@@ -56,7 +56,7 @@ class NewtonDriver {
   BandLU band_;
   BandSink band_sink_;
   bool banded_ = false;
-  int expect_ = 1 << 30;   // Newton directions the last converged solve took (none yet: never lazy)
+  int expect_ = 1 << 30;  // Newton directions the last converged solve took (none yet: never lazy)
   long lazy_misses_ = 0;
   Eigen::VectorXd rf_, dq_, q_acc_;  // sized once, reused by every step
 

@@ -33,8 +33,8 @@ RotaryInertiaEval rotary_analytic(const Matrix3d& J, const Matrix3d& Rn, const V
 
 }  // namespace
 
-RotaryInertiaEval rotary_inertia(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn, const Vector3d& An, double dt,
-                                 const Vector3d& alpha, bool want_tangent) {
+RotaryInertiaEval rotary_inertia(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn, const Vector3d& An,
+                                 double dt, const Vector3d& alpha, bool want_tangent) {
   const Vector3d b = Rn.transpose() * alpha;
   const Vector3d W = (2.0 / dt) * b - Wn;
   const Vector3d A = (4.0 / (dt * dt)) * (b - dt * Wn) - An;
@@ -51,7 +51,7 @@ RotaryInertiaEval rotary_inertia_midpoint(const Matrix3d& J, const Matrix3d& Rn,
 }
 
 RotaryInertiaEval rotary_inertia_reference(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn,
-                                 const Vector3d& An, double dt, const Vector3d& alpha) {
+                                           const Vector3d& An, double dt, const Vector3d& alpha) {
   using J3 = Jet2<3>;
   Vec3<J3> a;
   for (int i = 0; i < 3; ++i) a[i] = J3::variable(alpha(i), i);
@@ -73,8 +73,7 @@ RotaryInertiaEval rotary_inertia_reference(const Matrix3d& J, const Matrix3d& Rn
   return out;
 }
 
-void rotary_newmark_update(const Matrix3d& Rn, double dt, const Vector3d& alpha, Vector3d& W,
-                           Vector3d& A) {
+void rotary_newmark_update(const Matrix3d& Rn, double dt, const Vector3d& alpha, Vector3d& W, Vector3d& A) {
   const Vector3d b = Rn.transpose() * alpha;
   const Vector3d A1 = 4.0 / (dt * dt) * (b - dt * W) - A;
   W = 2.0 / dt * b - W;
@@ -82,7 +81,7 @@ void rotary_newmark_update(const Matrix3d& Rn, double dt, const Vector3d& alpha,
 }
 
 RotaryInertiaEval rotary_inertia_midpoint_reference(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn,
-                                          double dt, const Vector3d& alpha) {
+                                                    double dt, const Vector3d& alpha) {
   using J3 = Jet2<3>;
   Vec3<J3> a;
   for (int i = 0; i < 3; ++i) a[i] = J3::variable(alpha(i), i);

@@ -21,13 +21,13 @@ struct RotaryInertiaEval {
 };
 
 // want_tangent = false: the tangent is left zero (residual-only assembly, R-44a), the rest the same bits.
-RotaryInertiaEval rotary_inertia(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
-                                 const Eigen::Vector3d& Wn, const Eigen::Vector3d& An, double dt,
-                                 const Eigen::Vector3d& alpha, bool want_tangent = true);
+RotaryInertiaEval rotary_inertia(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn, const Eigen::Vector3d& Wn,
+                                 const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha,
+                                 bool want_tangent = true);
 
 // Newmark update of the body angular velocity/acceleration for a converged increment a.
-void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
-                           Eigen::Vector3d& W, Eigen::Vector3d& A);
+void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha, Eigen::Vector3d& W,
+                           Eigen::Vector3d& A);
 
 // Energy-consistent (implicit midpoint) variant, README R-51: with b = R_n^T a,
 //   W_{n+1} = 2 b/dt - W_n,  W_m = b/dt = (W_n + W_{n+1})/2,
@@ -35,15 +35,16 @@ void rotary_newmark_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Ve
 // so that T_{n+1} - T_n = b . h  (= a . m for r = Xi^T m): kinetic energy changes exactly by
 // the work a . m of the applied spatial moment m. A is set to (W_{n+1} - W_n)/dt.
 RotaryInertiaEval rotary_inertia_midpoint(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
-                                          const Eigen::Vector3d& Wn, double dt,
-                                          const Eigen::Vector3d& alpha, bool want_tangent = true);
+                                          const Eigen::Vector3d& Wn, double dt, const Eigen::Vector3d& alpha,
+                                          bool want_tangent = true);
 // The same with Jet2<3> (R-33): the plain references of the analytic tangents above (R-33a).
-RotaryInertiaEval rotary_inertia_reference(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn, const Eigen::Vector3d& Wn,
-                                           const Eigen::Vector3d& An, double dt, const Eigen::Vector3d& alpha);
+RotaryInertiaEval rotary_inertia_reference(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
+                                           const Eigen::Vector3d& Wn, const Eigen::Vector3d& An, double dt,
+                                           const Eigen::Vector3d& alpha);
 RotaryInertiaEval rotary_inertia_midpoint_reference(const Eigen::Matrix3d& J, const Eigen::Matrix3d& Rn,
                                                     const Eigen::Vector3d& Wn, double dt, const Eigen::Vector3d& alpha);
 
-void rotary_midpoint_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
-                            Eigen::Vector3d& W, Eigen::Vector3d& A);
+void rotary_midpoint_update(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha, Eigen::Vector3d& W,
+                            Eigen::Vector3d& A);
 
 }  // namespace rollspec::rolling

@@ -77,19 +77,19 @@ inline Vec3<T> scale(const S& c, const Vec3<T>& a) {
 // M v and M^T v with a double matrix.
 template <class T>
 inline Vec3<T> mul(const Eigen::Matrix3d& M, const Vec3<T>& v) {
-  return {M(0, 0) * v[0] + M(0, 1) * v[1] + M(0, 2) * v[2],
-          M(1, 0) * v[0] + M(1, 1) * v[1] + M(1, 2) * v[2],
+  return {M(0, 0) * v[0] + M(0, 1) * v[1] + M(0, 2) * v[2], M(1, 0) * v[0] + M(1, 1) * v[1] + M(1, 2) * v[2],
           M(2, 0) * v[0] + M(2, 1) * v[1] + M(2, 2) * v[2]};
 }
 template <class T>
 inline Vec3<T> mul_t(const Eigen::Matrix3d& M, const Vec3<T>& v) {
-  return {M(0, 0) * v[0] + M(1, 0) * v[1] + M(2, 0) * v[2],
-          M(0, 1) * v[0] + M(1, 1) * v[1] + M(2, 1) * v[2],
+  return {M(0, 0) * v[0] + M(1, 0) * v[1] + M(2, 0) * v[2], M(0, 1) * v[0] + M(1, 1) * v[1] + M(2, 1) * v[2],
           M(0, 2) * v[0] + M(1, 2) * v[1] + M(2, 2) * v[2]};
 }
 
 template <class T>
-inline T g_of(const Vec3<T>& a) { return 4.0 / (4.0 + dot(a, a)); }
+inline T g_of(const Vec3<T>& a) {
+  return 4.0 / (4.0 + dot(a, a));
+}
 
 // Q(a) v = v + g (a x v + a x (a x v)/2), D-12.
 template <class T>

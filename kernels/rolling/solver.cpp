@@ -37,7 +37,10 @@ std::vector<int> equation_numbers(const Model& m, int& neq) {
 
 struct Solver::Impl {
   Impl(const Model& m, const std::vector<NodeState>& nodes, const SolverOptions& o)
-      : eq(equation_numbers(m, neq)), points(make_beam_points(m)), contacts(m, nodes), rule(TimeRule::from(o)),
+      : eq(equation_numbers(m, neq)),
+        points(make_beam_points(m)),
+        contacts(m, nodes),
+        rule(TimeRule::from(o)),
         newton(eq, neq) {}
   int neq = 0;          // declared first: the initialiser of eq counts the free equations into it
   std::vector<int> eq;  // global DOF -> equation (-1: imposed)
@@ -47,8 +50,7 @@ struct Solver::Impl {
   NewtonDriver newton;
 };
 
-Solver::Solver(Model model, SolverOptions options, double t0)
-    : model_(std::move(model)), opt_(options), t_(t0) {
+Solver::Solver(Model model, SolverOptions options, double t0) : model_(std::move(model)), opt_(options), t_(t0) {
   const Model& m = model_;
   if (m.frames.size() != m.X.size()) throw std::invalid_argument("Solver: frames.size() != X.size()");
   nodes_ = initial_nodes(m);
@@ -64,7 +66,8 @@ Solver::Solver(Model model, SolverOptions options, double t0)
     for (const MassPoint& p : I.points.mass[e]) {
       double N[3], dN[3];
       quadratic_shape(p.xi, N, dN);
-      for (int k = 0; k < 3; ++k) node_mass_[static_cast<std::size_t>(m.beams[e].nodes[k])] += N[k] * p.weight * p.jac * sec.rhoA;
+      for (int k = 0; k < 3; ++k)
+        node_mass_[static_cast<std::size_t>(m.beams[e].nodes[k])] += N[k] * p.weight * p.jac * sec.rhoA;
     }
   }
   reactions_.assign(m.imposed.size(), 0.0);
@@ -147,7 +150,8 @@ bool Solver::try_step(double t1, double dt, StepReport& rep, bool allow_penetrat
   const NewtonDriver::Rewind rewind = [&]() { I.contacts.rewind(); };
   if (!I.newton.solve(opt_, assemble_at, q, R, rep, opt_.residual_only_checks ? rewind : nullptr)) return false;
   // impact control: reject a step that closes a contact too deep
-  if (allow_penetration_cut && opt_.max_new_penetration > 0.0 && I.contacts.closes_deeper_than(opt_.max_new_penetration)) {
+  if (allow_penetration_cut && opt_.max_new_penetration > 0.0 &&
+      I.contacts.closes_deeper_than(opt_.max_new_penetration)) {
     rep.penetration_cuts = 1;
     return false;
   }

@@ -35,10 +35,10 @@ enum class LinearSolver { Automatic, Band, Sparse };
 struct SolverOptions {
   Analysis analysis = Analysis::Dynamic;
   int max_iterations = 30;
-  double force_tol = 1e-6;   // converged when ||R_free||_2 <= force_tol (N, N m)
-  double disp_tol = 1e-12;   // ... or when the last Newton correction ||d||_inf <= disp_tol
-  int max_cuts = 10;         // step halvings allowed below the nominal step
-  int max_line_search = 0;   // backtracking halvings per Newton iteration (0: pure Newton)
+  double force_tol = 1e-6;                      // converged when ||R_free||_2 <= force_tol (N, N m)
+  double disp_tol = 1e-12;                      // ... or when the last Newton correction ||d||_inf <= disp_tol
+  int max_cuts = 10;                            // step halvings allowed below the nominal step
+  int max_line_search = 0;                      // backtracking halvings per Newton iteration (0: pure Newton)
   bool consistent_initial_acceleration = true;  // dynamic: solve M a0 = f(0) at t0
   Integrator integrator = Integrator::Newmark;
   // Impact step control (README R-54), both off when 0:
@@ -68,10 +68,10 @@ struct Energies {
   double kinetic_translation = 0.0;  // sum m v^2 / 2 (consistent beam mass, rigid bodies)
   double kinetic_rotation = 0.0;     // sum W . J W / 2 (beam mass points, rigid bodies)
   double strain = 0.0;
-  double penalty = 0.0;              // normal penalty energy eps_n g_n^2 / 2
-  double tangential_elastic = 0.0;   // energy in the stick springs |f_t|^2 / (2 eps_t)
-  double external_work = 0.0;        // gravity and nodal loads (trapezoidal, R-43)
-  double imposed_work = 0.0;         // work of the reactions at imposed DOFs
+  double penalty = 0.0;             // normal penalty energy eps_n g_n^2 / 2
+  double tangential_elastic = 0.0;  // energy in the stick springs |f_t|^2 / (2 eps_t)
+  double external_work = 0.0;       // gravity and nodal loads (trapezoidal, R-43)
+  double imposed_work = 0.0;        // work of the reactions at imposed DOFs
   // Mechanical energy removed by the friction forces and moments, trapezoidal in time
   // as the Newmark energy identity requires; includes what the stick springs store.
   double friction_work = 0.0;
@@ -92,23 +92,23 @@ struct Energies {
 struct ContactOutput {
   bool active = false, slip = false;
   double g_n = 0.0;
-  double penalty = 0.0;  // normal penalty energy eps_n <-g_n>^2 / 2 of this pair
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();     // on the node, normal + friction
+  double penalty = 0.0;                             // normal penalty energy eps_n <-g_n>^2 / 2 of this pair
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // on the node, normal + friction
   Eigen::Vector3d friction = Eigen::Vector3d::Zero();
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();    // (C - x_o) x f
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();     // C
-  Eigen::Vector3d damping = Eigen::Vector3d::Zero();   // normal damper force (rough surfaces, R-64)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();   // (C - x_o) x f
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // C
+  Eigen::Vector3d damping = Eigen::Vector3d::Zero();  // normal damper force (rough surfaces, R-64)
 };
 
 struct StepReport {
   bool converged = false;
-  int iterations = 0;                 // Newton iterations (line-search trials and failed attempts included)
-  int cuts = 0;                       // halvings used to reach the target time (penetration cuts included)
-  int steps = 0;                      // converged sub-steps taken to reach the target time
-  int limited_steps = 0;              // sub-steps shortened by impact_step_fraction
-  int penetration_cuts = 0;           // steps rejected for a new contact deeper than max_new_penetration
-  double new_penetration = 0.0;       // deepest -g_n of contacts that closed in the accepted sub-steps
-  std::vector<double> residual_norms; // Newton history of the last sub-step
+  int iterations = 0;                  // Newton iterations (line-search trials and failed attempts included)
+  int cuts = 0;                        // halvings used to reach the target time (penetration cuts included)
+  int steps = 0;                       // converged sub-steps taken to reach the target time
+  int limited_steps = 0;               // sub-steps shortened by impact_step_fraction
+  int penetration_cuts = 0;            // steps rejected for a new contact deeper than max_new_penetration
+  double new_penetration = 0.0;        // deepest -g_n of contacts that closed in the accepted sub-steps
+  std::vector<double> residual_norms;  // Newton history of the last sub-step
 };
 
 // Material stress resultants at a beam stiffness point (section frame, e1 = axis).
@@ -116,8 +116,8 @@ struct BeamResultant {
   int element = 0;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Vector3d reference_position = Eigen::Vector3d::Zero();  // X(xi) of the undeformed beam
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N = C_N Gamma
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // M = C_M K (moment(0) = torsion)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();               // N = C_N Gamma
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();              // M = C_M K (moment(0) = torsion)
 };
 
 class Solver {
@@ -154,8 +154,7 @@ class Solver {
 
   // Residual and tangent of the full model (6 DOFs per node, [du, a] per node) for the
   // given increments from the committed state; for tests (finite-difference checks).
-  void residual_and_tangent(const Eigen::VectorXd& q, double t_next, double dt, Eigen::VectorXd& r,
-                            Eigen::MatrixXd* K);
+  void residual_and_tangent(const Eigen::VectorXd& q, double t_next, double dt, Eigen::VectorXd& r, Eigen::MatrixXd* K);
 
  private:
   struct Impl;  // equations, beam Gauss points, contact set, time rule, Newton driver
@@ -187,13 +186,13 @@ struct History {
   std::vector<std::vector<Eigen::Vector3d>> position, velocity, angular_velocity;  // [record][node], spatial
   std::vector<std::vector<Eigen::Vector3d>> acceleration, angular_acceleration;    // spatial (R A for the latter)
   std::vector<std::vector<Eigen::Matrix3d>> rotation;
-  std::vector<std::vector<ContactOutput>> contact;  // [record][contact pair]
+  std::vector<std::vector<ContactOutput>> contact;          // [record][contact pair]
   std::vector<std::vector<ContactOutput>> surface_contact;  // [record][surface contact pair]
   std::vector<Energies> energy;
-  std::vector<std::vector<double>> reactions;       // [record][imposed dof]
+  std::vector<std::vector<double>> reactions;  // [record][imposed dof]
   int steps = 0, newton_iterations = 0, cuts = 0;
   int substeps = 0, limited_steps = 0, penetration_cuts = 0;  // sums of the StepReport fields
-  double new_penetration = 0.0;  // max of StepReport::new_penetration
+  double new_penetration = 0.0;                               // max of StepReport::new_penetration
   bool completed = true;
   double failed_at = 0.0;
 };

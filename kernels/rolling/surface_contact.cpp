@@ -40,8 +40,10 @@ SurfaceContactEval evaluate_surface_contact(const HeightField& f, const SurfaceC
     // smallest eigenvalue of the symmetric 2 x 2 H in closed form
     const double mean = 0.5 * (H(0, 0) + H(1, 1)), half = 0.5 * (H(0, 0) - H(1, 1));
     const double lambda_min = mean - std::sqrt(half * half + H(0, 1) * H(0, 1));
-    if (lambda_min > 1e-12) d = -H.ldlt().solve(G);
-    else d = -G;  // not a minimum yet: descend
+    if (lambda_min > 1e-12)
+      d = -H.ldlt().solve(G);
+    else
+      d = -G;  // not a minimum yet: descend
     const double dn = d.norm();
     if (dn > cell) d *= cell / dn;  // at most one cell per iteration
     s += d;

@@ -29,13 +29,13 @@ struct SurfaceContactEval {
   bool active = false;
   bool converged = true;  // closest-point Newton converged
   double g_n = 0.0;
-  Eigen::Vector2d s = Eigen::Vector2d::Zero();       // tangent coordinates of the contact point
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // nu, surface toward the centre
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();   // S(s*)
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on the node
-  Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero(); // d(-force)/dx
-  double damping_force = 0.0;  // c_n damper along nu (set by the solver, R-64)
-  HeightSample sample;         // the height field at s (for the next search from s)
+  Eigen::Vector2d s = Eigen::Vector2d::Zero();        // tangent coordinates of the contact point
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();   // nu, surface toward the centre
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // S(s*)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();    // on the node
+  Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero();  // d(-force)/dx
+  double damping_force = 0.0;                         // c_n damper along nu (set by the solver, R-64)
+  HeightSample sample;                                // the height field at s (for the next search from s)
 };
 
 // Closest point and gap for the centre x (Newton from the projection of x on the base plane, or

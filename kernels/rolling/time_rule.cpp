@@ -27,8 +27,8 @@ void TimeRule::update_rates(NodeState& n, const Eigen::Vector3d& du, const Eigen
   update_point_rates(n.R, dt, alpha, n.W, n.A);
 }
 
-void TimeRule::update_point_rates(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha, Eigen::Vector3d& W,
-                                  Eigen::Vector3d& A) const {
+void TimeRule::update_point_rates(const Eigen::Matrix3d& Rn, double dt, const Eigen::Vector3d& alpha,
+                                  Eigen::Vector3d& W, Eigen::Vector3d& A) const {
   if (kind_ == Kind::Midpoint) rotary_midpoint_update(Rn, dt, alpha, W, A);
   if (kind_ == Kind::Newmark) rotary_newmark_update(Rn, dt, alpha, W, A);
 }

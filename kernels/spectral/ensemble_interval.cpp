@@ -23,7 +23,8 @@ void check(std::uint64_t realisations, double level) {
 ScatterInterval none() { return {0.0, std::numeric_limits<double>::infinity(), 0.0}; }
 
 double t_quantile(std::uint64_t realisations, double level) {
-  return boost::math::quantile(boost::math::students_t(static_cast<double>(realisations - 1)), 1.0 - (1.0 - level) / 2.0);
+  return boost::math::quantile(boost::math::students_t(static_cast<double>(realisations - 1)),
+                               1.0 - (1.0 - level) / 2.0);
 }
 
 // w = t_{K-1} / z: the log-space widening of the gamma-law interval for an estimated spread (D-21a).

@@ -150,7 +150,8 @@ std::vector<double> synthesise_direct(const std::vector<double>& psd, double fun
     const double a = amplitude(psd[j], fundamental, mode, mode == Amplitudes::rayleigh ? u_amplitude[j] : 1.0);
     const double phi = 2.0 * M_PI * u_phase[j];
     for (std::size_t i = 0; i < n_samples; ++i)
-      out[i] += a * std::cos(2.0 * M_PI * static_cast<double>(j * i % n_samples) / static_cast<double>(n_samples) + phi);
+      out[i] +=
+          a * std::cos(2.0 * M_PI * static_cast<double>(j * i % n_samples) / static_cast<double>(n_samples) + phi);
   }
   return out;
 }

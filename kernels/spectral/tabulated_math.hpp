@@ -45,7 +45,9 @@ inline double log1p_series(double r) {
   return r * (1.0 - r * (0.5 - r * (1.0 / 3.0 - r * (0.25 - r * (0.2 - r * (1.0 / 6.0 - r * (1.0 / 7.0)))))));
 }
 inline double cos_series(double t2) { return 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0 - t2 * (1.0 / 720.0))); }
-inline double sin_series(double t, double t2) { return t - t * t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0 - t2 * (1.0 / 5040.0))); }
+inline double sin_series(double t, double t2) {
+  return t - t * t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0 - t2 * (1.0 / 5040.0)));
+}
 }  // namespace tabulated_detail
 
 // -ln u for u in (0, 1) (a positive normal double; D-24):
@@ -70,8 +72,8 @@ inline double neg_log_open(double u, const TabulatedMath& t) {
 //   v = k / 1024 + s / 1024, k = round(1024 v), |s| <= 1/2, t = 2 pi s / 1024 (|t| <= pi / 1024):
 //   cos = C_k cos t - S_k sin t, sin = S_k cos t + C_k sin t, cos t and sin t by Taylor to t^6 / t^7.
 inline void sincos_two_pi(double v, const TabulatedMath& tab, double& c, double& s) {
-  const double x = v * 1024.0;                                      // exact
-  const auto k = static_cast<std::int32_t>(x + 0.5);                // round half up, x >= 0
+  const double x = v * 1024.0;                                                   // exact
+  const auto k = static_cast<std::int32_t>(x + 0.5);                             // round half up, x >= 0
   const double t = (x - static_cast<double>(k)) * tabulated_detail::phase_step;  // x - k exact
   const double t2 = t * t;
   const double ct = tabulated_detail::cos_series(t2), st = tabulated_detail::sin_series(t, t2);
@@ -106,8 +108,8 @@ inline __m128d neg_log_open(__m128d u, const TabulatedMath& t) {
   const __m128i idx = _mm_and_si128(_mm_srli_epi64(bits, 44), _mm_set1_epi64x(255));
   const auto i0 = static_cast<std::size_t>(_mm_cvtsi128_si64(idx));
   const auto i1 = static_cast<std::size_t>(_mm_cvtsi128_si64(_mm_unpackhi_epi64(idx, idx)));
-  const __m128d m = _mm_castsi128_pd(_mm_or_si128(_mm_and_si128(bits, _mm_set1_epi64x(0x000fffffffffffffLL)),
-                                                  _mm_set1_epi64x(0x3ff0000000000000LL)));
+  const __m128d m = _mm_castsi128_pd(
+      _mm_or_si128(_mm_and_si128(bits, _mm_set1_epi64x(0x000fffffffffffffLL)), _mm_set1_epi64x(0x3ff0000000000000LL)));
   const __m128d b0 = _mm_load_pd(&t.log_bin[i0].centre), b1 = _mm_load_pd(&t.log_bin[i1].centre);
   const __m128d centre = _mm_unpacklo_pd(b0, b1), inverse = _mm_unpackhi_pd(b0, b1);
   const __m128d half_centre = _mm_loadh_pd(_mm_load_sd(&t.log_bin[i0].half_centre), &t.log_bin[i1].half_centre);
@@ -147,7 +149,8 @@ __attribute__((target("avx2"))) inline __m256d neg_log_open(__m256d u, const Tab
   using namespace tabulated_detail;
   const __m256i bits = _mm256_castpd_si256(u);
   const __m256i two52 = _mm256_set1_epi64x(0x4330000000000000LL);
-  const __m256d ex = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(_mm256_srli_epi64(bits, 52), two52)), _mm256_set1_pd(0x1p52));
+  const __m256d ex =
+      _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(_mm256_srli_epi64(bits, 52), two52)), _mm256_set1_pd(0x1p52));
   const __m256d e1 = _mm256_sub_pd(ex, _mm256_set1_pd(1022.0));
   // Each lane's bin (32 bytes: centre, inverse, half_centre, unused) by one load, then a 4 x 4
   // transpose (plain loads: gathers are slow on CPUs with the gather-data-sampling fix).
@@ -161,8 +164,8 @@ __attribute__((target("avx2"))) inline __m256d neg_log_open(__m256d u, const Tab
   const __m256d t2 = _mm256_unpacklo_pd(b2, b3), t3 = _mm256_unpackhi_pd(b2, b3);
   const __m256d centre = _mm256_permute2f128_pd(t0, t2, 0x20), half_centre = _mm256_permute2f128_pd(t0, t2, 0x31);
   const __m256d inverse = _mm256_permute2f128_pd(t1, t3, 0x20);
-  const __m256d m = _mm256_castsi256_pd(_mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi64x(0x000fffffffffffffLL)),
-                                                        _mm256_set1_epi64x(0x3ff0000000000000LL)));
+  const __m256d m = _mm256_castsi256_pd(_mm256_or_si256(
+      _mm256_and_si256(bits, _mm256_set1_epi64x(0x000fffffffffffffLL)), _mm256_set1_epi64x(0x3ff0000000000000LL)));
   const __m256d r = _mm256_mul_pd(_mm256_sub_pd(m, centre), inverse);
   __m256d p = _mm256_sub_pd(_mm256_set1_pd(1.0 / 6.0), _mm256_mul_pd(r, _mm256_set1_pd(1.0 / 7.0)));
   p = _mm256_sub_pd(_mm256_set1_pd(0.2), _mm256_mul_pd(r, p));
@@ -192,7 +195,8 @@ __attribute__((target("avx2"))) inline void sincos_two_pi(__m256d v, const Tabul
   const __m128i at = _mm_and_si128(k, _mm_set1_epi32(1023));
   const double* cs = tab.cos_sin;
   const __m128d p0 = _mm_load_pd(cs + 2 * _mm_cvtsi128_si32(at)), p1 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 1));
-  const __m128d p2 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 2)), p3 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 3));
+  const __m128d p2 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 2)),
+                p3 = _mm_load_pd(cs + 2 * _mm_extract_epi32(at, 3));
   const __m256d x02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p0), p2, 1);
   const __m256d x13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(p1), p3, 1);
   const __m256d cc = _mm256_unpacklo_pd(x02, x13), ss = _mm256_unpackhi_pd(x02, x13);

@@ -39,7 +39,7 @@ ROLLSPEC_AVX512 inline void gather_pairs(const char* base, const std::int64_t* o
 // rounds exactly as the scalar form's product-then-sum does.
 template <int N>
 ROLLSPEC_AVX512 __attribute__((always_inline)) inline void neg_log_open8(const double* u_mem, const TabulatedMath& t,
-                                                                        __m512d (&out)[N]) {
+                                                                         __m512d (&out)[N]) {
   using namespace tabulated_detail;
   __m512d u[N], e1[N], r[N], p[N], half_centre[N];
   for (int g = 0; g < N; ++g) u[g] = _mm512_loadu_pd(u_mem + 8 * g);
@@ -86,8 +86,8 @@ ROLLSPEC_AVX512 __attribute__((always_inline)) inline void neg_log_open8(const d
 // whose low mantissa bits are k; 1024 v - k again by a fused multiply-add (exact either way).
 template <int N>
 ROLLSPEC_AVX512 __attribute__((always_inline)) inline void sincos_two_pi8(const __m512d (&v)[N],
-                                                                         const TabulatedMath& tab, __m512d (&c)[N],
-                                                                         __m512d (&s)[N]) {
+                                                                          const TabulatedMath& tab, __m512d (&c)[N],
+                                                                          __m512d (&s)[N]) {
   using namespace tabulated_detail;
   __m512d t[N], t2[N], ct[N], st[N], cc[N], ss[N];
   for (int g = 0; g < N; ++g) {
@@ -116,16 +116,15 @@ ROLLSPEC_AVX512 __attribute__((always_inline)) inline void sincos_two_pi8(const 
 // Harmonics [j, j + 8N): spec = h sqrt(-ln u) (cos 2 pi v, sin 2 pi v).
 template <int N>
 ROLLSPEC_AVX512 __attribute__((always_inline)) inline void fill_groups(std::size_t j, const double* half_amplitudes,
-                                                                      bool rayleigh, const double* u_phase,
-                                                                      const double* u_amplitude, const TabulatedMath& t,
-                                                                      FftwComplex* spec) {
+                                                                       bool rayleigh, const double* u_phase,
+                                                                       const double* u_amplitude,
+                                                                       const TabulatedMath& t, FftwComplex* spec) {
   __m512d a[N], v[N], c[N], s[N];
   for (int g = 0; g < N; ++g) a[g] = _mm512_loadu_pd(half_amplitudes + j + 8 * g);
   if (rayleigh) {
     __m512d l[N];
     neg_log_open8<N>(u_amplitude + j, t, l);
-    for (int g = 0; g < N; ++g)
-      a[g] = _mm512_mul_pd(a[g], _mm512_sqrt_pd(_mm512_max_pd(l[g], _mm512_setzero_pd())));
+    for (int g = 0; g < N; ++g) a[g] = _mm512_mul_pd(a[g], _mm512_sqrt_pd(_mm512_max_pd(l[g], _mm512_setzero_pd())));
   }
   for (int g = 0; g < N; ++g) v[g] = _mm512_loadu_pd(u_phase + j + 8 * g);
   sincos_two_pi8<N>(v, t, c, s);

@@ -9,11 +9,11 @@
 namespace rollspec::spectral {
 
 struct Band {
-  int index;         // x in f_m = 1000 * 10^(x/10)
-  double centre;     // Hz, exact base-ten midband frequency
-  double lower;      // Hz
-  double upper;      // Hz
-  double nominal;    // Hz, the IEC nominal label (e.g. 1250 for x = 1)
+  int index;       // x in f_m = 1000 * 10^(x/10)
+  double centre;   // Hz, exact base-ten midband frequency
+  double lower;    // Hz
+  double upper;    // Hz
+  double nominal;  // Hz, the IEC nominal label (e.g. 1250 for x = 1)
 };
 
 Band third_octave_band(int index);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 
-
 namespace rollspec::spectral {
 
 WelchPlan::WelchPlan(const WelchConfig& config) : config_(config) {

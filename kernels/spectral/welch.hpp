@@ -19,9 +19,9 @@ namespace rollspec::spectral {
 enum class Detrend { none, constant };
 
 struct WelchConfig {
-  double sample_rate = 1.0;      // f_s, Hz
-  std::size_t segment = 256;     // L, samples
-  std::size_t overlap = 128;     // O < L, samples
+  double sample_rate = 1.0;   // f_s, Hz
+  std::size_t segment = 256;  // L, samples
+  std::size_t overlap = 128;  // O < L, samples
   Window window = Window::hann;
   Detrend detrend = Detrend::constant;
 };
@@ -68,7 +68,7 @@ class WelchPlan {
  private:
   WelchConfig config_;
   std::vector<double> window_;
-  double scale_;  // 1 / (f_s sum w^2)
+  double scale_;   // 1 / (f_s sum w^2)
   FftwPlan plan_;  // r2c, executed on a workspace's buffers
 };
 

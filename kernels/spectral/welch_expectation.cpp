@@ -56,9 +56,12 @@ std::vector<double> welch_expectation(const WelchPlan& plan, const std::vector<d
   const RealBuffer g(N), k(N);
   const ComplexBuffer G(nc), K(nc);
   const int n = static_cast<int>(N);
-  const FftwPlan forward_g([&] { return fftw_plan_dft_r2c_1d(n, g.data(), G.data(), FFTW_ESTIMATE); }, "Welch expectation (r2c)");
-  const FftwPlan forward_k([&] { return fftw_plan_dft_r2c_1d(n, k.data(), K.data(), FFTW_ESTIMATE); }, "Welch expectation (r2c)");
-  const FftwPlan backward([&] { return fftw_plan_dft_c2r_1d(n, G.data(), g.data(), FFTW_ESTIMATE); }, "Welch expectation (c2r)");
+  const FftwPlan forward_g([&] { return fftw_plan_dft_r2c_1d(n, g.data(), G.data(), FFTW_ESTIMATE); },
+                           "Welch expectation (r2c)");
+  const FftwPlan forward_k([&] { return fftw_plan_dft_r2c_1d(n, k.data(), K.data(), FFTW_ESTIMATE); },
+                           "Welch expectation (r2c)");
+  const FftwPlan backward([&] { return fftw_plan_dft_c2r_1d(n, G.data(), g.data(), FFTW_ESTIMATE); },
+                          "Welch expectation (c2r)");
   std::fill(g.data(), g.data() + N, 0.0);
   for (std::size_t j = 0; j < nfine; ++j) g[j % N] += trapezoid(j, nfine) * fine[j];
   std::copy(kernel.begin(), kernel.end(), k.data());

@@ -15,7 +15,10 @@ std::vector<double> make_window(Window kind, std::size_t n) {
 
 double equivalent_noise_bandwidth_bins(const std::vector<double>& w) {
   double s1 = 0.0, s2 = 0.0;
-  for (double v : w) { s1 += v; s2 += v * v; }
+  for (double v : w) {
+    s1 += v;
+    s2 += v * v;
+  }
   return static_cast<double>(w.size()) * s2 / (s1 * s1);
 }
 

@@ -55,8 +55,10 @@ std::vector<double> smooth_panels(const IsotropicSpectrum& c, double a, double k
 }
 
 void check(const IsotropicSpectrum& c, double a, double k) {
-  if (!(c.q_end > 0.0) || !std::isfinite(c.q_end)) throw std::invalid_argument("contact-filtered PSD: q_end must be finite and > 0");
-  if (!(a >= 0.0) || !std::isfinite(a)) throw std::invalid_argument("contact-filtered PSD: contact radius must be >= 0");
+  if (!(c.q_end > 0.0) || !std::isfinite(c.q_end))
+    throw std::invalid_argument("contact-filtered PSD: q_end must be finite and > 0");
+  if (!(a >= 0.0) || !std::isfinite(a))
+    throw std::invalid_argument("contact-filtered PSD: contact radius must be >= 0");
   if (!(k >= 0.0)) throw std::invalid_argument("contact-filtered PSD: wavenumber must be >= 0");
 }
 
@@ -100,7 +102,8 @@ double contact_filtered_line_psd(const IsotropicSpectrum& c, double a, double k)
       const double s = y_end * std::sin(th);
       return power_weight(a * std::sqrt(k * k + s * s));
     };
-    for (std::size_t i = 0; i < n; ++i) jump += gauss_panel(h * static_cast<double>(i), h * static_cast<double>(i + 1), f);
+    for (std::size_t i = 0; i < n; ++i)
+      jump += gauss_panel(h * static_cast<double>(i), h * static_cast<double>(i + 1), f);
     jump *= 2.0 * c.jump / M_PI;
   }
   return smooth / (M_PI * M_PI) + jump;
@@ -125,7 +128,8 @@ double contact_filtered_line_psd_reference(const IsotropicSpectrum& c, double a,
   return smooth * dy / (M_PI * M_PI) + 2.0 * c.jump / M_PI * jump * dth;
 }
 
-Psd contact_filtered_psd(const Psd& g, double a, double k_min, double q_cap, double k_max, std::size_t points_per_decade) {
+Psd contact_filtered_psd(const Psd& g, double a, double k_min, double q_cap, double k_max,
+                         std::size_t points_per_decade) {
   if (!(a > 0.0) || !std::isfinite(a)) throw std::invalid_argument("contact-filtered PSD: contact radius must be > 0");
   if (!(k_min > 0.0)) throw std::invalid_argument("contact-filtered PSD: k_min must be > 0");
   if (!(k_max > k_min)) throw std::invalid_argument("contact-filtered PSD: k_max must exceed k_min");
@@ -165,7 +169,8 @@ std::vector<double> contact_filtered_psd_at(const Psd& g, double a, const std::v
   std::vector<double> out(k.size());
   const auto nk = static_cast<std::ptrdiff_t>(k.size());
 #pragma omp parallel for schedule(dynamic, 4)  // independent wavenumbers: the same bits on any thread count
-  for (std::ptrdiff_t i = 0; i < nk; ++i) out[static_cast<std::size_t>(i)] = contact_filtered_line_psd(c, a, k[static_cast<std::size_t>(i)]);  // Eq. 38
+  for (std::ptrdiff_t i = 0; i < nk; ++i)
+    out[static_cast<std::size_t>(i)] = contact_filtered_line_psd(c, a, k[static_cast<std::size_t>(i)]);  // Eq. 38
   return out;
 }
 

@@ -4,8 +4,10 @@
 // (Eq. 14b).
 namespace rollspec::texture {
 
-inline constexpr double kGaussPanelX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-inline constexpr double kGaussPanelW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+inline constexpr double kGaussPanelX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                           0.9602898564975363};
+inline constexpr double kGaussPanelW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                           0.1012285362903763};
 
 template <class F>
 double gauss_panel(double lo, double hi, F f) {

@@ -12,10 +12,10 @@
 namespace rollspec::texture {
 
 struct Iso8608Spec {
-  char road_class = 'A';   // 'A'..'H'
-  double waviness = 2.0;   // w
-  double n_min = 0.011;    // cycles/m
-  double n_max = 2.83;     // cycles/m
+  char road_class = 'A';  // 'A'..'H'
+  double waviness = 2.0;  // w
+  double n_min = 0.011;   // cycles/m
+  double n_max = 2.83;    // cycles/m
 };
 
 double iso8608_reference_level(char road_class);  // G_d(n_0), m^3; throws for a class outside A..H

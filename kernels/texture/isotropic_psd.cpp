@@ -24,19 +24,22 @@ IsotropicPsd::IsotropicPsd(const Psd& g, double q_min, double q_cap, std::size_t
   if (!(q_min > 0.0) || !std::isfinite(q_min)) throw std::invalid_argument("isotropic PSD: q_min must be positive");
   const double q_e = std::isfinite(g.support_max) ? g.support_max : q_cap;
   if (!(q_e > q_min) || !std::isfinite(q_e))
-    throw std::invalid_argument("isotropic PSD: the PSD's upper end " + std::to_string(q_e) + " rad/m must exceed q_min = " +
-                                std::to_string(q_min) + " rad/m");
+    throw std::invalid_argument("isotropic PSD: the PSD's upper end " + std::to_string(q_e) +
+                                " rad/m must exceed q_min = " + std::to_string(q_min) + " rad/m");
   if (points_per_decade < 10) throw std::invalid_argument("isotropic PSD: at least 10 points per decade");
-  const auto m = static_cast<std::size_t>(std::ceil(std::log10(q_e / q_min) * static_cast<double>(points_per_decade))) + 1;
+  const auto m =
+      static_cast<std::size_t>(std::ceil(std::log10(q_e / q_min) * static_cast<double>(points_per_decade))) + 1;
   // Log grid ending at q_e, with the PSD's breakpoints as extra nodes so no cell straddles a kink
   // (the cell integrals of Eq. 19 are then of smooth integrands, and S's cusps sit on nodes).
   for (std::size_t i = 0; i <= m; ++i)
-    q_.push_back((i == m) ? q_e : q_e * std::pow(10.0, -static_cast<double>(m - i) / static_cast<double>(points_per_decade)));
+    q_.push_back((i == m) ? q_e
+                          : q_e * std::pow(10.0, -static_cast<double>(m - i) / static_cast<double>(points_per_decade)));
   const double min_gap = 1e-3 * std::log(10.0) / static_cast<double>(points_per_decade);
   for (double b : g.breakpoints) {
     if (!(b > q_.front()) || !(b < q_e)) continue;
     auto it = std::lower_bound(q_.begin(), q_.end(), b);
-    if (std::abs(std::log(*it / b)) < min_gap || std::abs(std::log(*(it - 1) / b)) < min_gap) continue;  // already a node
+    if (std::abs(std::log(*it / b)) < min_gap || std::abs(std::log(*(it - 1) / b)) < min_gap)
+      continue;  // already a node
     q_.insert(it, b);
   }
   // Cells ending at a breakpoint or at q_e: there S has a one-sided sqrt cusp (a jump of G'
@@ -45,7 +48,8 @@ IsotropicPsd::IsotropicPsd(const Psd& g, double q_min, double q_cap, std::size_t
   cusp_[q_.size() - 2] = true;
   for (double b : g.breakpoints) {
     const auto it = std::lower_bound(q_.begin(), q_.end(), b * (1.0 - 1e-12));
-    if (it != q_.end() && it != q_.begin() && std::abs(*it / b - 1.0) < 1e-6) cusp_[static_cast<std::size_t>(it - q_.begin()) - 1] = true;
+    if (it != q_.end() && it != q_.begin() && std::abs(*it / b - 1.0) < 1e-6)
+      cusp_[static_cast<std::size_t>(it - q_.begin()) - 1] = true;
   }
   g_.resize(q_.size());
   for (std::size_t i = 0; i < q_.size(); ++i) {
@@ -99,7 +103,8 @@ double IsotropicPsd::cell_average(double q, double width) const {
   const double qe = q_.back();
   const double a = std::max(0.0, q - 0.5 * width), b = q + 0.5 * width;
   if (a >= qe) return 0.0;
-  const double jump_part = 2.0 * M_PI * jump_ * (std::asin(std::min(b, qe) / qe) - std::asin(a / qe)) / (b - a);  // Eq. 21
+  const double jump_part =
+      2.0 * M_PI * jump_ * (std::asin(std::min(b, qe) / qe) - std::asin(a / qe)) / (b - a);  // Eq. 21
   return smooth(q) + jump_part;
 }
 

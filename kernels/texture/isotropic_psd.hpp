@@ -28,12 +28,12 @@ class IsotropicPsd {
   // q_min: smallest |q| asked for; q_cap: where an unbounded PSD is truncated.
   IsotropicPsd(const Psd& g, double q_min, double q_cap, std::size_t points_per_decade = 100);
 
-  double operator()(double q) const;                          // Eq. 20, point value (inf at q_e if J > 0)
-  double cell_average(double q, double width) const;         // Eq. 20 with the jump term of Eq. 21
-  double smooth(double q) const;                              // S(q), log-log between nodes; 0 for q >= q_e
+  double operator()(double q) const;                  // Eq. 20, point value (inf at q_e if J > 0)
+  double cell_average(double q, double width) const;  // Eq. 20 with the jump term of Eq. 21
+  double smooth(double q) const;                      // S(q), log-log between nodes; 0 for q >= q_e
   double q_end() const { return q_.back(); }
   double end_jump() const { return jump_; }
-  double clamped_fraction() const { return clamped_; }        // share of nodes where S < 0 was clamped
+  double clamped_fraction() const { return clamped_; }  // share of nodes where S < 0 was clamped
 
   // Eq. 18 by composite Simpson in t (q' = q cosh t) on `intervals` intervals, plus the jump's
   // exact share J: the line PSD G this C_iso projects to. The reference check of the Abel pair.

@@ -10,20 +10,21 @@ namespace rollspec::texture {
 namespace {
 std::size_t resolve_period(const LineTextureSpec& s) {
   if (s.samples < 2) throw std::invalid_argument("line texture needs at least 2 samples");
-  if (!(s.spacing > 0.0) || !std::isfinite(s.spacing)) throw std::invalid_argument("line texture spacing dx must be positive and finite");
+  if (!(s.spacing > 0.0) || !std::isfinite(s.spacing))
+    throw std::invalid_argument("line texture spacing dx must be positive and finite");
   if (s.period == 0) return fast_even_length(std::max<std::size_t>(s.samples, 4));
   if (s.period < s.samples || s.period % 2 != 0 || s.period < 4)
-    throw std::invalid_argument("line texture period " + std::to_string(s.period) + " must be even, >= 4 and >= samples (" +
-                                std::to_string(s.samples) + ")");
+    throw std::invalid_argument("line texture period " + std::to_string(s.period) +
+                                " must be even, >= 4 and >= samples (" + std::to_string(s.samples) + ")");
   return s.period;
 }
 
 void check_sampling(const Psd& psd, double dx, bool allow_truncation) {
   const double k_nyquist = M_PI / dx;
   if (psd.support_max > k_nyquist * (1.0 + 1e-12) && !allow_truncation)
-    throw std::invalid_argument("sampling dx = " + std::to_string(dx) + " m resolves k up to pi/dx = " + std::to_string(k_nyquist) +
-                                " rad/m, but the PSD (" + psd.description + ") carries power up to k_max = " +
-                                std::to_string(psd.support_max) +
+    throw std::invalid_argument("sampling dx = " + std::to_string(dx) +
+                                " m resolves k up to pi/dx = " + std::to_string(k_nyquist) + " rad/m, but the PSD (" +
+                                psd.description + ") carries power up to k_max = " + std::to_string(psd.support_max) +
                                 " rad/m; refine dx, give the PSD a short cut-off, or allow truncation");
 }
 }  // namespace

@@ -27,9 +27,9 @@ using spectral::Amplitudes;
 using spectral::SynthesisScratch;
 
 struct LineTextureSpec {
-  std::size_t samples = 0;   // output length n
-  double spacing = 0.0;      // dx, m
-  std::size_t period = 0;    // synthesis period P in samples; 0: smallest even 2^a 3^b 5^c 7^d >= samples
+  std::size_t samples = 0;  // output length n
+  double spacing = 0.0;     // dx, m
+  std::size_t period = 0;   // synthesis period P in samples; 0: smallest even 2^a 3^b 5^c 7^d >= samples
   Amplitudes amplitudes = Amplitudes::rayleigh;
   bool allow_truncation = false;  // accept k_max > pi / dx (the PSD above pi/dx is dropped)
 };
@@ -41,10 +41,10 @@ class LineTextureGenerator {
   const LineTextureSpec& spec() const { return spec_; }
   std::size_t period() const { return synth_.samples(); }
   std::size_t harmonics() const { return synth_.harmonics(); }  // length of each U(0,1) array (P/2 + 1)
-  double fundamental() const { return dk_; }                     // dk, rad/m
-  const std::vector<double>& target_psd() const { return g_; }   // G(j dk), j = 0..P/2 (0 and P/2 carry no power)
-  std::vector<double> wavenumbers() const;                       // j dk
-  double target_variance() const;                                // sum_j G_j dk over the synthesised harmonics
+  double fundamental() const { return dk_; }                    // dk, rad/m
+  const std::vector<double>& target_psd() const { return g_; }  // G(j dk), j = 0..P/2 (0 and P/2 carry no power)
+  std::vector<double> wavenumbers() const;                      // j dk
+  double target_variance() const;                               // sum_j G_j dk over the synthesised harmonics
 
   // out[0..samples): one realisation. u_amplitude is ignored for deterministic amplitudes.
   void generate(const double* u_phase, const double* u_amplitude, double* out) const;

@@ -19,7 +19,8 @@ constexpr double kSpacingTolerance = 1e-3;
 double checked_spacing(const Profile& p, std::size_t index) {
   const std::string who = "profile " + std::to_string(index);
   if (p.x.size() != p.z.size())
-    throw std::invalid_argument(who + ": " + std::to_string(p.x.size()) + " positions but " + std::to_string(p.z.size()) + " heights");
+    throw std::invalid_argument(who + ": " + std::to_string(p.x.size()) + " positions but " +
+                                std::to_string(p.z.size()) + " heights");
   if (p.z.size() < kMinSamples)
     throw std::invalid_argument(who + " has " + std::to_string(p.z.size()) + " samples; at least " +
                                 std::to_string(kMinSamples) + " are needed");
@@ -65,7 +66,7 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   const spectral::WelchPlan plan(periodogram_config(out.samples, dx));
   spectral::WelchWorkspace ws(out.samples);
   std::vector<HeightStatistics> lengths;  // seed 001 takes its correlation lengths from the profiles (§3.1)
-  double variance = 0.0;                   // sum of the profiles' variances (Eq. 17b)
+  double variance = 0.0;                  // sum of the profiles' variances (Eq. 17b)
   for (std::vector<double> z : rows) {
     if (options.median_filter) median_filter3(z);
     add_periodogram(plan, ws, z, out.psd);
@@ -79,7 +80,7 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   }
   out.sigma /= static_cast<double>(rows.size());
   out.correlation_length = mean_statistics(lengths).correlation_length_x;  // NaN only if no profile reaches 1/e
-  for (double& g : out.psd) g /= static_cast<double>(rows.size());  // Eq. 17
+  for (double& g : out.psd) g /= static_cast<double>(rows.size());         // Eq. 17
   // Eq. 17b: the Hann window weighs the middle of a profile and leaks the lowest bin's power into
   // DC, so sum_{j>=1} G_j dk is a weighted variance (0.84-2.1x the profiles' on real scans). The
   // estimate keeps its shape and takes its level from Parseval: the mean variance of the profiles
@@ -88,7 +89,8 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   for (std::size_t j = 1; j < out.psd.size(); ++j) held += out.psd[j] * out.dk;
   if (!std::isfinite(held) || !std::isfinite(variance))
     throw std::invalid_argument("the profiles' variance overflows a double (" + std::to_string(variance) +
-                                " m^2, periodogram sum " + std::to_string(held) + " m^2); heights must be far below 1e150 m");
+                                " m^2, periodogram sum " + std::to_string(held) +
+                                " m^2); heights must be far below 1e150 m");
   if (held > 0.0) {
     out.psd[0] = 0.0;
     for (double& g : out.psd) g *= variance / static_cast<double>(rows.size()) / held;
@@ -167,7 +169,8 @@ std::vector<double> hann_periodogram(const std::vector<double>& z, double dx) {
 
 EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdOptions& options) {
   if (profiles.size() < 2)
-    throw std::invalid_argument("a PSD from measured profiles needs at least 2 profiles, got " + std::to_string(profiles.size()));
+    throw std::invalid_argument("a PSD from measured profiles needs at least 2 profiles, got " +
+                                std::to_string(profiles.size()));
   const double dx = checked_spacing(profiles.front(), 0);
   std::vector<std::vector<double>> rows;
   rows.reserve(profiles.size());
@@ -187,19 +190,22 @@ EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdO
 }
 
 EstimatedPsd map_psd(const Surface& map, const ProfilePsdOptions& options) {
-  if (map.ny < 2) throw std::invalid_argument("a height map needs at least 2 rows (profiles), got " + std::to_string(map.ny));
+  if (map.ny < 2)
+    throw std::invalid_argument("a height map needs at least 2 rows (profiles), got " + std::to_string(map.ny));
   if (map.nx < kMinSamples)
     throw std::invalid_argument("height map rows have " + std::to_string(map.nx) + " samples; at least 8 are needed");
   if (!(map.dx > 0.0) || !(map.dy > 0.0)) throw std::invalid_argument("height map spacings must be positive");
   if (map.heights.size() != map.nx * map.ny) throw std::invalid_argument("height map size does not match nx * ny");
   for (std::size_t i = 0; i < map.heights.size(); ++i)
     if (!std::isfinite(map.heights[i]))
-      throw std::invalid_argument("height map sample " + std::to_string(i % map.nx) + ", row " + std::to_string(i / map.nx) + " is not finite");
+      throw std::invalid_argument("height map sample " + std::to_string(i % map.nx) + ", row " +
+                                  std::to_string(i / map.nx) + " is not finite");
   Surface m = map;
   remove_quadratic_surface(m);  // Eq. 15, 2D
   std::vector<std::vector<double>> rows(m.ny);
-  for (std::size_t iy = 0; iy < m.ny; ++iy) rows[iy].assign(m.heights.begin() + static_cast<std::ptrdiff_t>(iy * m.nx),
-                                                            m.heights.begin() + static_cast<std::ptrdiff_t>((iy + 1) * m.nx));
+  for (std::size_t iy = 0; iy < m.ny; ++iy)
+    rows[iy].assign(m.heights.begin() + static_cast<std::ptrdiff_t>(iy * m.nx),
+                    m.heights.begin() + static_cast<std::ptrdiff_t>((iy + 1) * m.nx));
   return average(rows, m.dx, options);
 }
 

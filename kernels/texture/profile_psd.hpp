@@ -34,8 +34,9 @@ struct EstimatedPsd {
   double spacing = 0.0;            // dx, m
   std::size_t samples = 0;         // N per profile
   std::size_t profiles = 0;        // P
-  double sigma = 0.0;              // mean standard deviation of the profiles after steps 1-2, m (seed 001's sigma_meas, Eq. 10)
-  double correlation_length = 0.0; // mean 1/e correlation length of those profiles (README Eq. 24), m; NaN if none reaches 1/e
+  double sigma = 0.0;  // mean standard deviation of the profiles after steps 1-2, m (seed 001's sigma_meas, Eq. 10)
+  double correlation_length =
+      0.0;  // mean 1/e correlation length of those profiles (README Eq. 24), m; NaN if none reaches 1/e
 };
 
 // 1D profiles (step 1 with a line). Throws std::invalid_argument naming the profile and sample.

@@ -68,7 +68,8 @@ Psd interpolation_compensated(Psd psd, double dx) {
 }
 
 double integrate_psd(const Psd& psd, double k0, double k1, double p, std::size_t points) {
-  if (!(k0 > 0.0) || !(k1 > k0) || points < 2) throw std::invalid_argument("integrate_psd needs 0 < k0 < k1, >= 2 points");
+  if (!(k0 > 0.0) || !(k1 > k0) || points < 2)
+    throw std::invalid_argument("integrate_psd needs 0 < k0 < k1, >= 2 points");
   const double r = std::log(k1 / k0) / static_cast<double>(points - 1);
   double acc = 0.0, prev_k = k0, prev_f = std::pow(k0, p) * psd(k0);
   for (std::size_t i = 1; i < points; ++i) {

@@ -24,14 +24,14 @@ BandAveragedPsd band_averaged_psd(const EstimatedPsd& e, const PsdBands& b) {
     for (std::size_t i = j; i <= l; ++i) sum += e.psd[i];
     out.first.push_back(j);
     out.last.push_back(l);
-    out.psd.push_back(sum / static_cast<double>(l - j + 1));  // Eq. 33
+    out.psd.push_back(sum / static_cast<double>(l - j + 1));                                                  // Eq. 33
     out.centre.push_back(e.dk * std::sqrt((static_cast<double>(j) - 0.5) * (static_cast<double>(l) + 0.5)));  // Eq. 34
     j = l + 1;
   }
   if (out.psd.size() < 2)
     throw std::invalid_argument("PSD bands: " + std::to_string(top + 1 - b.first_bin) + " bins above bin " +
-                                std::to_string(b.first_bin) + " make fewer than 2 bands of " + std::to_string(b.min_bins) +
-                                " bins");
+                                std::to_string(b.first_bin) + " make fewer than 2 bands of " +
+                                std::to_string(b.min_bins) + " bins");
   return out;
 }
 

@@ -11,11 +11,13 @@ namespace {
 void validate(const SeedSurfaceSpec& s, const std::vector<double>& d, const std::vector<double>& g) {
   if (s.nx < 2 || s.ny < 2 || s.box_x < 1 || s.box_y < 1)
     throw std::invalid_argument("seed surface: needs nx, ny >= 2 and box lengths n, m >= 1");
-  if (!(s.sigma > 0.0) || !std::isfinite(s.sigma)) throw std::invalid_argument("seed surface: sigma must be positive and finite");
+  if (!(s.sigma > 0.0) || !std::isfinite(s.sigma))
+    throw std::invalid_argument("seed surface: sigma must be positive and finite");
   const std::size_t lx = s.nx + s.box_x - 1, ly = s.ny + s.box_y - 1;
   if (d.size() != lx * ly || g.size() != lx * ly)
-    throw std::invalid_argument("seed surface: d and g must hold (nx + n - 1)(ny + m - 1) = " + std::to_string(lx * ly) +
-                                " samples (got " + std::to_string(d.size()) + ", " + std::to_string(g.size()) + ")");
+    throw std::invalid_argument(
+        "seed surface: d and g must hold (nx + n - 1)(ny + m - 1) = " + std::to_string(lx * ly) + " samples (got " +
+        std::to_string(d.size()) + ", " + std::to_string(g.size()) + ")");
 }
 
 void normalise(Surface& z, double sigma) {  // Eq. 30
@@ -54,7 +56,8 @@ Surface seed_surface(const SeedSurfaceSpec& s, const std::vector<double>& d, con
   for (std::size_t l = 0; l < ly; ++l)
     for (std::size_t k = 0; k < lx; ++k) {
       const double a = d[l * lx + k] + g[k * ly + l];
-      sat[(l + 1) * (lx + 1) + k + 1] = a + sat[l * (lx + 1) + k + 1] + sat[(l + 1) * (lx + 1) + k] - sat[l * (lx + 1) + k];
+      sat[(l + 1) * (lx + 1) + k + 1] =
+          a + sat[l * (lx + 1) + k + 1] + sat[(l + 1) * (lx + 1) + k] - sat[l * (lx + 1) + k];
     }
   Surface z(s.nx, s.ny, s.dx, s.dy);
   const std::size_t n = s.box_x, m = s.box_y, w = lx + 1;
@@ -117,25 +120,34 @@ SeedCorrelation seed_expected_correlation(const std::vector<double>& rx, const s
 
 SeedBoxLengths seed_box_lengths(const std::vector<double>& rx, const std::vector<double>& ry, double dx, double dy,
                                 double correlation_x, double correlation_y) {
-  if (!(correlation_x > 0.0) || !(correlation_y > 0.0)) throw std::invalid_argument("seed surface: correlation lengths must be positive");
+  if (!(correlation_x > 0.0) || !(correlation_y > 0.0))
+    throw std::invalid_argument("seed surface: correlation lengths must be positive");
   const std::size_t max_n = (rx.size() - 1) / 2, max_m = (ry.size() - 1) / 2;
   SeedBoxLengths b;
-  auto miss = [](double got, double want) { return std::isnan(got) ? std::numeric_limits<double>::infinity() : std::abs(got - want); };
+  auto miss = [](double got, double want) {
+    return std::isnan(got) ? std::numeric_limits<double>::infinity() : std::abs(got - want);
+  };
   for (int sweep = 0; sweep < 20; ++sweep) {  // coordinate descent: n and m interact only weakly
     const SeedBoxLengths before = b;
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t n = 1; n <= max_n; ++n) {  // the 1/e length grows with n: stop once past the target
       const double got = seed_expected_correlation(rx, ry, n, b.box_y, dx, dy).x;
       const double e = miss(got, correlation_x);
-      if (e < best) { best = e; b.box_x = n; }
-      else if (got > correlation_x) break;
+      if (e < best) {
+        best = e;
+        b.box_x = n;
+      } else if (got > correlation_x)
+        break;
     }
     best = std::numeric_limits<double>::infinity();
     for (std::size_t m = 1; m <= max_m; ++m) {
       const double got = seed_expected_correlation(rx, ry, b.box_x, m, dx, dy).y;
       const double e = miss(got, correlation_y);
-      if (e < best) { best = e; b.box_y = m; }
-      else if (got > correlation_y) break;
+      if (e < best) {
+        best = e;
+        b.box_y = m;
+      } else if (got > correlation_y)
+        break;
     }
     if (b.box_x == before.box_x && b.box_y == before.box_y) break;
   }

@@ -15,12 +15,12 @@ namespace rollspec::texture {
 enum class RmsTarget { height, slope };
 
 struct SelfAffineSpec {
-  double hurst = 0.8;         // H in (0, 1]
-  double k_long = 0.0;        // k_l, rad/m: long-wavelength cut-off (0: none below the plateau)
-  double k_rolloff = 0.0;     // k_r, rad/m: k_l <= k_r (k_r = k_l: no plateau); must be > 0
-  double k_short = 0.0;       // k_s, rad/m: short-wavelength cut-off, > k_r
+  double hurst = 0.8;      // H in (0, 1]
+  double k_long = 0.0;     // k_l, rad/m: long-wavelength cut-off (0: none below the plateau)
+  double k_rolloff = 0.0;  // k_r, rad/m: k_l <= k_r (k_r = k_l: no plateau); must be > 0
+  double k_short = 0.0;    // k_s, rad/m: short-wavelength cut-off, > k_r
   RmsTarget target = RmsTarget::height;
-  double rms = 0.0;           // m (height) or dimensionless (slope), > 0
+  double rms = 0.0;  // m (height) or dimensionless (slope), > 0
 };
 
 struct SelfAffinePsd {

@@ -13,18 +13,20 @@ namespace rollspec::texture {
 namespace {
 void validate(const Psd& psd, const SpectralSurfaceSpec& s) {
   if (s.nx < 4 || s.ny < 4 || s.nx % 2 || s.ny % 2)
-    throw std::invalid_argument("spectral surface: nx and ny must be even and >= 4 (got " + std::to_string(s.nx) + " x " +
-                                std::to_string(s.ny) + ")");
+    throw std::invalid_argument("spectral surface: nx and ny must be even and >= 4 (got " + std::to_string(s.nx) +
+                                " x " + std::to_string(s.ny) + ")");
   if (!(s.dx > 0.0) || !(s.dy > 0.0) || !std::isfinite(s.dx) || !std::isfinite(s.dy))
     throw std::invalid_argument("spectral surface: dx and dy must be positive and finite");
   if (!(s.anisotropy > 0.0) || !std::isfinite(s.anisotropy))
     throw std::invalid_argument("spectral surface: anisotropy ratio must be positive and finite");
   const double a = std::sqrt(s.anisotropy);
-  if (!s.allow_truncation && (psd.support_max / a > M_PI / s.dx * (1.0 + 1e-12) || psd.support_max * a > M_PI / s.dy * (1.0 + 1e-12)))
-    throw std::invalid_argument("spectral surface: the PSD (" + psd.description + ") carries power up to k_max = " +
-                                std::to_string(psd.support_max) + " rad/m, beyond the grid's pi/dx = " + std::to_string(M_PI / s.dx) +
-                                ", pi/dy = " + std::to_string(M_PI / s.dy) +
-                                " rad/m (with the anisotropy stretch); refine the grid, cut the PSD off, or allow truncation");
+  if (!s.allow_truncation &&
+      (psd.support_max / a > M_PI / s.dx * (1.0 + 1e-12) || psd.support_max * a > M_PI / s.dy * (1.0 + 1e-12)))
+    throw std::invalid_argument(
+        "spectral surface: the PSD (" + psd.description + ") carries power up to k_max = " +
+        std::to_string(psd.support_max) + " rad/m, beyond the grid's pi/dx = " + std::to_string(M_PI / s.dx) +
+        ", pi/dy = " + std::to_string(M_PI / s.dy) +
+        " rad/m (with the anisotropy stretch); refine the grid, cut the PSD off, or allow truncation");
 }
 }  // namespace
 
@@ -50,7 +52,8 @@ SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const Spectra
   c_.assign(modes(), 0.0);
   for (std::size_t iy = 0; iy < spec_.ny; ++iy) {
     if (iy == spec_.ny / 2) continue;  // Nyquist row
-    const double qy = dqy * (iy < spec_.ny / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(spec_.ny));
+    const double qy =
+        dqy * (iy < spec_.ny / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(spec_.ny));
     for (std::size_t ix = 0; ix + 1 < nh; ++ix) {  // ix = nx/2: Nyquist column
       if (ix == 0 && iy == 0) continue;            // DC
       const double px = a * dqx * static_cast<double>(ix), py = qy / a;
@@ -78,7 +81,10 @@ SpectralSurfaceGenerator::SpectralSurfaceGenerator(const Psd& psd, const Spectra
   const spectral::RealBuffer out(spec_.nx * spec_.ny);
   const spectral::ComplexBuffer in(modes());
   plan_ = spectral::FftwPlan(
-      [&] { return fftw_plan_dft_c2r_2d(static_cast<int>(spec_.ny), static_cast<int>(spec_.nx), in.data(), out.data(), FFTW_ESTIMATE); },
+      [&] {
+        return fftw_plan_dft_c2r_2d(static_cast<int>(spec_.ny), static_cast<int>(spec_.nx), in.data(), out.data(),
+                                    FFTW_ESTIMATE);
+      },
       "spectral surface (2D c2r)");
 }
 
@@ -92,7 +98,8 @@ double SpectralSurfaceGenerator::target_variance() const {
   return v * dqx * dqy / (4.0 * M_PI * M_PI);
 }
 
-std::vector<std::complex<double>> SpectralSurfaceGenerator::coefficients(const double* u_phase, const double* u_amplitude) const {
+std::vector<std::complex<double>> SpectralSurfaceGenerator::coefficients(const double* u_phase,
+                                                                         const double* u_amplitude) const {
   const std::size_t nh = spec_.nx / 2 + 1, ny = spec_.ny;
   const spectral::TabulatedMath& t = spectral::tabulated_math();
   const bool rayleigh = spec_.amplitudes == spectral::Amplitudes::rayleigh;
@@ -102,13 +109,14 @@ std::vector<std::complex<double>> SpectralSurfaceGenerator::coefficients(const d
       const std::size_t i = iy * nh + ix;
       if (c_[i] <= 0.0) continue;
       if (ix == 0 && iy > ny / 2) continue;  // conjugate of (0, ny - iy), set below
-      double amp = amp_[i];  // Eq. 26; -ln u, cos and sin of 2 pi v by spectral D-24, D-25
+      double amp = amp_[i];                  // Eq. 26; -ln u, cos and sin of 2 pi v by spectral D-24, D-25
       if (rayleigh) amp *= std::sqrt(spectral::neg_log_open(u_amplitude[i], t));
       double c, s;
       spectral::sincos_two_pi(u_phase[i], t, c, s);
       z[i] = {amp * c, amp * s};
     }
-  for (std::size_t iy = 1; iy < ny / 2; ++iy) z[(ny - iy) * nh] = std::conj(z[iy * nh]);  // Z_{-q} = conj(Z_q) on qx = 0
+  for (std::size_t iy = 1; iy < ny / 2; ++iy)
+    z[(ny - iy) * nh] = std::conj(z[iy * nh]);  // Z_{-q} = conj(Z_q) on qx = 0
   return z;
 }
 
@@ -138,8 +146,9 @@ Surface spectral_surface_direct(const SpectralSurfaceGenerator& gen, const doubl
         for (std::size_t ix = 0; ix < nh; ++ix) {
           const std::complex<double> c = z[iy * nh + ix];
           if (c == 0.0) continue;
-          const double arg = 2.0 * M_PI * (static_cast<double>(ix * x % s.nx) / static_cast<double>(s.nx) +
-                                           static_cast<double>(iy * y % s.ny) / static_cast<double>(s.ny));
+          const double arg = 2.0 * M_PI *
+                             (static_cast<double>(ix * x % s.nx) / static_cast<double>(s.nx) +
+                              static_cast<double>(iy * y % s.ny) / static_cast<double>(s.ny));
           const double re = c.real() * std::cos(arg) - c.imag() * std::sin(arg);
           acc += (ix == 0 ? 1.0 : 2.0) * re;  // + its conjugate at -q for ix > 0
         }

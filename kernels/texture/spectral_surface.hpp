@@ -36,7 +36,7 @@ struct SpectralSurfaceSpec {
   std::size_t nx = 0, ny = 0;  // even, >= 4
   double dx = 0.0, dy = 0.0;   // m
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
-  double anisotropy = 1.0;      // correlation length ratio x / y
+  double anisotropy = 1.0;  // correlation length ratio x / y
   bool allow_truncation = false;
   std::size_t points_per_decade = 100;  // log grid of the inverse Abel transform
 };
@@ -49,9 +49,9 @@ class SpectralSurfaceGenerator {
 
   const SpectralSurfaceSpec& spec() const { return spec_; }
   std::size_t modes() const { return spec_.ny * (spec_.nx / 2 + 1); }  // length of each U(0,1) array
-  const std::vector<double>& mode_psd() const { return c_; }          // target C per half-plane mode, m^4
+  const std::vector<double>& mode_psd() const { return c_; }           // target C per half-plane mode, m^4
   const IsotropicPsd& isotropic_psd() const { return *iso_; }
-  double target_variance() const;                                      // (2 pi)^-2 sum_q C dqx dqy over all modes
+  double target_variance() const;  // (2 pi)^-2 sum_q C dqx dqy over all modes
 
   // One realisation into out (resized). Thread-safe: buffers are per call.
   void generate(const double* u_phase, const double* u_amplitude, Surface& out) const;

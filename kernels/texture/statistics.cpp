@@ -131,7 +131,8 @@ HeightStatistics line_statistics(const double* h, std::size_t n, double dx) {
 }
 
 HeightStatistics surface_statistics(const Surface& s) {
-  if (s.heights.size() != s.nx * s.ny || s.nx < 2 || s.ny < 2) throw std::invalid_argument("surface statistics: bad surface size");
+  if (s.heights.size() != s.nx * s.ny || s.nx < 2 || s.ny < 2)
+    throw std::invalid_argument("surface statistics: bad surface size");
   const Moments mo = moments(s.heights.data(), s.heights.size());
   HeightStatistics st;
   st.mean = mo.mean;
@@ -152,8 +153,14 @@ HeightStatistics mean_statistics(const std::vector<HeightStatistics>& all) {
     m.rms += s.rms;
     m.skewness += s.skewness;
     m.kurtosis += s.kurtosis;
-    if (std::isfinite(s.correlation_length_x)) { m.correlation_length_x += s.correlation_length_x; nx += 1.0; }
-    if (std::isfinite(s.correlation_length_y)) { m.correlation_length_y += s.correlation_length_y; ny += 1.0; }
+    if (std::isfinite(s.correlation_length_x)) {
+      m.correlation_length_x += s.correlation_length_x;
+      nx += 1.0;
+    }
+    if (std::isfinite(s.correlation_length_y)) {
+      m.correlation_length_y += s.correlation_length_y;
+      ny += 1.0;
+    }
   }
   const double n = static_cast<double>(all.size());
   m.mean /= n;
@@ -187,12 +194,16 @@ HeightStatistics std_statistics(const std::vector<HeightStatistics>& all) {
 }
 
 std::vector<double> surface_periodogram(const Surface& s) {
-  if (s.heights.size() != s.nx * s.ny || s.nx < 2 || s.ny < 2) throw std::invalid_argument("surface periodogram: bad surface size");
+  if (s.heights.size() != s.nx * s.ny || s.nx < 2 || s.ny < 2)
+    throw std::invalid_argument("surface periodogram: bad surface size");
   const std::size_t nh = s.nx / 2 + 1;
   const spectral::RealBuffer in(s.nx * s.ny);
   const spectral::ComplexBuffer out(s.ny * nh);
   const spectral::FftwPlan plan(
-      [&] { return fftw_plan_dft_r2c_2d(static_cast<int>(s.ny), static_cast<int>(s.nx), in.data(), out.data(), FFTW_ESTIMATE); },
+      [&] {
+        return fftw_plan_dft_r2c_2d(static_cast<int>(s.ny), static_cast<int>(s.nx), in.data(), out.data(),
+                                    FFTW_ESTIMATE);
+      },
       "surface periodogram (2D r2c)");
   const Moments mo = moments(s.heights.data(), s.heights.size());
   for (std::size_t i = 0; i < s.heights.size(); ++i) in[i] = s.heights[i] - mo.mean;
@@ -206,14 +217,16 @@ std::vector<double> surface_periodogram(const Surface& s) {
 RadialPsd radially_averaged_psd(const Surface& s) {
   const std::vector<double> c = surface_periodogram(s);
   const std::size_t nh = s.nx / 2 + 1;
-  const double dqx = 2.0 * M_PI / (static_cast<double>(s.nx) * s.dx), dqy = 2.0 * M_PI / (static_cast<double>(s.ny) * s.dy);
+  const double dqx = 2.0 * M_PI / (static_cast<double>(s.nx) * s.dx),
+               dqy = 2.0 * M_PI / (static_cast<double>(s.ny) * s.dy);
   RadialPsd r;
   r.dq = std::max(dqx, dqy);
   const double qmax = std::sqrt(std::pow(M_PI / s.dx, 2) + std::pow(M_PI / s.dy, 2));
   const auto nb = static_cast<std::size_t>(qmax / r.dq) + 2;
   std::vector<double> sum_c(nb, 0.0), sum_q(nb, 0.0), w(nb, 0.0);
   for (std::size_t iy = 0; iy < s.ny; ++iy) {
-    const double qy = dqy * (iy <= s.ny / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(s.ny));
+    const double qy =
+        dqy * (iy <= s.ny / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(s.ny));
     for (std::size_t ix = 0; ix < nh; ++ix) {
       // Modes 0 < ix < nx/2 stand for +q and -q (Hermitian pair): weight 2.
       const double weight = (ix == 0 || (s.nx % 2 == 0 && ix == nh - 1)) ? 1.0 : 2.0;

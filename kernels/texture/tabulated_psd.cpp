@@ -28,12 +28,14 @@ TabulatedPsd::TabulatedPsd(std::vector<double> wavenumber, std::vector<double> p
                                   " (must be finite and > 0)");
     if (i > 0 && !(k_[i] > k_[i - 1]))
       throw std::invalid_argument("PSD table: abscissae must be strictly increasing, but index " + std::to_string(i) +
-                                  " (" + num(k_[i]) + ") <= index " + std::to_string(i - 1) + " (" + num(k_[i - 1]) + ")");
+                                  " (" + num(k_[i]) + ") <= index " + std::to_string(i - 1) + " (" + num(k_[i - 1]) +
+                                  ")");
     if (!std::isfinite(g_[i]) || g_[i] < 0.0)
       throw std::invalid_argument("PSD table: value at index " + std::to_string(i) + " is " + num(g_[i]) +
                                   " (must be finite and >= 0)");
   }
-  if (extension_ == Extension::power_law && (g_.front() <= 0.0 || g_[1] <= 0.0 || g_.back() <= 0.0 || g_[g_.size() - 2] <= 0.0))
+  if (extension_ == Extension::power_law &&
+      (g_.front() <= 0.0 || g_[1] <= 0.0 || g_.back() <= 0.0 || g_[g_.size() - 2] <= 0.0))
     throw std::invalid_argument("PSD table: power-law extension needs positive values in the first and last segments");
 }
 
@@ -53,10 +55,14 @@ double TabulatedPsd::operator()(double k) const {
   }
   const bool below = k < k_.front();
   switch (extension_) {
-    case Extension::constant: return below ? g_.front() : g_.back();
-    case Extension::zero: return 0.0;
-    case Extension::power_law: return below ? segment(0, k) : segment(n - 2, k);
-    case Extension::error: break;
+    case Extension::constant:
+      return below ? g_.front() : g_.back();
+    case Extension::zero:
+      return 0.0;
+    case Extension::power_law:
+      return below ? segment(0, k) : segment(n - 2, k);
+    case Extension::error:
+      break;
   }
   throw std::domain_error("PSD table covers k = " + num(k_.front()) + " .. " + num(k_.back()) +
                           " rad/m; asked for k = " + num(k) + " rad/m and no extension is set");

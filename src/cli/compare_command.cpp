@@ -28,12 +28,14 @@ using io::number_text;
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const unsigned char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += static_cast<char>(c);
+    if (c == '"' || c == '\\')
+      out += '\\', out += static_cast<char>(c);
     else if (c < 0x20) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\u%04x", c);
       out += buf;
-    } else out += static_cast<char>(c);
+    } else
+      out += static_cast<char>(c);
   }
   return out + "\"";
 }
@@ -62,37 +64,41 @@ Measurement read_measurement(const std::string& path, const std::string& column,
   options.skip_rows = skip_rows;
   const io::CsvTable m = io::read_csv(path, options);
   if (m.preamble_lines > 0)
-    std::cerr << "rollspec compare: " << path << ": skipped " << io::counted(static_cast<unsigned long long>(m.preamble_lines), "preamble line")
-              << " before the header '" << clip(m.header_text) << "' (line " << m.header_line << "; --skip-rows N says where it is)\n";
+    std::cerr << "rollspec compare: " << path << ": skipped "
+              << io::counted(static_cast<unsigned long long>(m.preamble_lines), "preamble line")
+              << " before the header '" << clip(m.header_text) << "' (line " << m.header_line
+              << "; --skip-rows N says where it is)\n";
   const std::size_t fc = m.column_index("frequency_hz");
   io::require_increasing(m, fc);
   Measurement out{m.values[fc], m.values[m.column_index(column.empty() ? "psd" : column)]};
   const std::string name = column.empty() ? "psd" : column;
   for (std::size_t i = 0; i < out.frequency.size(); ++i)
     if (out.frequency[i] < 0.0)
-      throw data_error(m.where(i) + ": frequency_hz value " + number_text(out.frequency[i]) + " is negative; allowed: >= 0 (one-sided PSD)");
+      throw data_error(m.where(i) + ": frequency_hz value " + number_text(out.frequency[i]) +
+                       " is negative; allowed: >= 0 (one-sided PSD)");
   for (std::size_t i = 0; i < out.psd.size(); ++i)
-    if (out.psd[i] < 0.0) throw data_error(m.where(i) + ": " + name + " value " + number_text(out.psd[i]) + " is negative; allowed: >= 0");
+    if (out.psd[i] < 0.0)
+      throw data_error(m.where(i) + ": " + name + " value " + number_text(out.psd[i]) + " is negative; allowed: >= 0");
   return out;
 }
 
 }  // namespace
 
 const char* const kCompareUsage =
-      "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M]\n"
-      "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json] [--skip-rows N]\n"
-      "\n"
-      "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: `psd`, or the one\n"
-      "--column names (so the output of `rollspec psd` is read directly). For every third-octave band of the\n"
-      "result inside [fmin, fmax] that the measurement covers, prints the simulated and measured band levels\n"
-      "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
-      "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
-      "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
-      "answers the question the output states. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
-      "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
-      "--format json writes everything.\n"
-      "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
-      "--skip-rows N: the header follows the first N lines.";
+    "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M]\n"
+    "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json] [--skip-rows N]\n"
+    "\n"
+    "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: `psd`, or the one\n"
+    "--column names (so the output of `rollspec psd` is read directly). For every third-octave band of the\n"
+    "result inside [fmin, fmax] that the measurement covers, prints the simulated and measured band levels\n"
+    "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
+    "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
+    "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
+    "answers the question the output states. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
+    "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
+    "--format json writes everything.\n"
+    "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
+    "--skip-rows N: the header follows the first N lines.";
 
 // The bands inside [fmin, fmax] that the measurement covers, with the simulated mean's interval
 // and, for records > 0 (a measurement averaged over that many records), the prediction interval.
@@ -104,10 +110,12 @@ std::vector<BandRow> band_rows(const io::BandLevels& b, const Measurement& m, co
   for (std::size_t k = 0; k < b.level_db.size(); ++k) {
     if (b.lower[k] < fmin || b.upper[k] > fmax) continue;
     if (m.frequency.size() < 2 || m.frequency.front() > b.lower[k] || m.frequency.back() < b.upper[k]) continue;
-    const double meas = spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
+    const double meas =
+        spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
     if (!std::isfinite(meas))
       throw data_error(measurement + ": the measured PSD averaged over the band " + number_text(b.lower[k]) + " .. " +
-                       number_text(b.upper[k]) + " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
+                       number_text(b.upper[k]) +
+                       " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
     if (meas <= 0.0) continue;
     BandRow row{};
     row.centre = b.nominal[k];
@@ -151,22 +159,29 @@ std::string json_text(const Comparison& c) {
   const auto& [result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged] = c;
   std::string text;
   text += "{\n  \"result\": " + json_string(result) + ",\n  \"sensor\": " + json_string(b.sensor) +
-          ",\n  \"measurement\": " + json_string(measurement) + ",\n  \"column\": " + json_string(column.empty() ? "psd" : column) +
-          ",\n  \"realisations\": " + std::to_string(b.realisations) + ",\n  \"confidence_level\": " + json_number(b.confidence) +
+          ",\n  \"measurement\": " + json_string(measurement) +
+          ",\n  \"column\": " + json_string(column.empty() ? "psd" : column) +
+          ",\n  \"realisations\": " + std::to_string(b.realisations) +
+          ",\n  \"confidence_level\": " + json_number(b.confidence) +
           ",\n  \"interval_method\": " + json_string(b.interval_method) +
-          ",\n  \"measured_averages\": " + (predict ? json_number(records) : "null") + ",\n  \"question\": " + json_string(question) +
-          ",\n  \"bands\": [\n";
+          ",\n  \"measured_averages\": " + (predict ? json_number(records) : "null") +
+          ",\n  \"question\": " + json_string(question) + ",\n  \"bands\": [\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& x = rows[i];
     text += "    {\"centre_hz\": " + json_number(x.centre) + ", \"simulated_db\": " + json_number(x.simulated) +
             ", \"measured_db\": " + json_number(x.measured) + ", \"delta_db\": " + json_number(x.delta) +
             ", \"ci_lower_db\": " + json_number(x.ci_lower) + ", \"ci_upper_db\": " + json_number(x.ci_upper) +
-            ", \"prediction_lower_db\": " + json_number(x.pred_lower) + ", \"prediction_upper_db\": " + json_number(x.pred_upper) +
-            ", \"inside\": " + (!has_interval ? "null" : (predict ? x.inside_prediction : x.inside_ci) ? "true" : "false") + "}" +
-            (i + 1 < rows.size() ? ",\n" : "\n");
+            ", \"prediction_lower_db\": " + json_number(x.pred_lower) +
+            ", \"prediction_upper_db\": " + json_number(x.pred_upper) + ", \"inside\": " +
+            (!has_interval                                   ? "null"
+             : (predict ? x.inside_prediction : x.inside_ci) ? "true"
+                                                             : "false") +
+            "}" + (i + 1 < rows.size() ? ",\n" : "\n");
   }
-  text += "  ],\n  \"rms_db_error\": " + json_number(rms) + ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
-          ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) + "\n}\n";
+  text += "  ],\n  \"rms_db_error\": " + json_number(rms) +
+          ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
+          ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) +
+          "\n}\n";
   return text;
 }
 
@@ -191,25 +206,31 @@ int compare_command(const Args& args) {
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   if (format != "table" && format != "csv" && format != "json")
     throw usage_error("--format " + format.substr(0, 200) + ": allowed: table, csv or json");
-  if (!(fmin >= 0.0) || std::isinf(fmin)) throw usage_error("--fmin " + number_text(fmin) + ": allowed: a finite frequency >= 0 Hz");
-  if (!(fmax > fmin)) throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) + " Hz)");
+  if (!(fmin >= 0.0) || std::isinf(fmin))
+    throw usage_error("--fmin " + number_text(fmin) + ": allowed: a finite frequency >= 0 Hz");
+  if (!(fmax > fmin))
+    throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) +
+                      " Hz)");
   const bool predict = vm.count("measured-averages") > 0;
   if (predict && !(records >= 1.0 && std::isfinite(records)))
-    throw usage_error("--measured-averages " + number_text(records) + ": allowed: a finite count >= 1 of independent records");
+    throw usage_error("--measured-averages " + number_text(records) +
+                      ": allowed: a finite count >= 1 of independent records");
 
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
   const io::BandLevels b = io::read_band_levels(r, sensor);
   if (vm.count("skip-rows") && skip_rows < 0)
-    throw usage_error("--skip-rows " + std::to_string(skip_rows) + ": allowed: a whole number >= 0 (lines before the header)");
+    throw usage_error("--skip-rows " + std::to_string(skip_rows) +
+                      ": allowed: a whole number >= 0 (lines before the header)");
   const Measurement m = read_measurement(measurement, column, skip_rows);
   const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
   const int pct = static_cast<int>(std::lround(100.0 * b.confidence));
   const std::string question =
       !has_interval ? "none: " + b.interval_method
       : predict     ? "is the measured level inside the " + std::to_string(pct) +
-                      " % prediction interval of a measurement averaged over M = " + number_text(records) + " independent records?"
-                    : "is the measured level inside the " + std::to_string(pct) +
+                      " % prediction interval of a measurement averaged over M = " + number_text(records) +
+                      " independent records?"
+                : "is the measured level inside the " + std::to_string(pct) +
                       " % interval of the simulated mean? (it ignores the measurement's own scatter; give "
                       "--measured-averages M to ask whether a measurement of M records agrees with the model)";
 
@@ -224,10 +245,12 @@ int compare_command(const Args& args) {
   const double rms = std::sqrt(sq / static_cast<double>(rows.size()));
   const int judged = has_interval ? static_cast<int>(rows.size()) : 0;
   const std::string source = "result " + result + " (" + std::to_string(b.realisations) + " realisations), sensor " +
-                             b.sensor + "; measurement " + measurement + ", column " + (column.empty() ? "psd" : column);
+                             b.sensor + "; measurement " + measurement + ", column " +
+                             (column.empty() ? "psd" : column);
 
   // Printed only once every band is computed: a refused input leaves no partial output.
-  const Comparison c{result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged};
+  const Comparison c{result,  measurement,  column,   b,   rows,   predict,
+                     records, has_interval, question, rms, inside, judged};
   std::string text;
   char buf[320];
   if (format == "json") {
@@ -235,7 +258,9 @@ int compare_command(const Args& args) {
     return 0;
   }
   if (format == "csv")
-    text += "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,prediction_upper_db,inside\n";
+    text +=
+        "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,prediction_upper_db,"
+        "inside\n";
   else {
     text += source + "\nquestion: " + question + "\n";
     std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
@@ -245,22 +270,26 @@ int compare_command(const Args& args) {
   for (const auto& x : rows) {
     const bool in = predict ? x.inside_prediction : x.inside_ci;
     if (format == "csv") {
-      auto cell = [](double v) { return std::isfinite(v) ? json_number(v) : std::isnan(v) ? std::string() : v > 0 ? "inf" : "-inf"; };
-      text += number_text(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," + cell(x.ci_lower) +
-              "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
+      auto cell = [](double v) {
+        return std::isfinite(v) ? json_number(v) : std::isnan(v) ? std::string() : v > 0 ? "inf" : "-inf";
+      };
+      text += number_text(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," +
+              cell(x.ci_lower) + "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
               (has_interval ? (in ? "1" : "0") : "") + "\n";
     } else {
       char ci[40] = "", pi[40] = "";
       std::snprintf(ci, sizeof ci, "%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
       if (predict && has_interval) std::snprintf(pi, sizeof pi, "%7.2f..%-7.2f", x.pred_lower, x.pred_upper);
-      std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured, x.delta, ci, pi,
-                    has_interval ? (in ? "yes" : "no") : "-");
+      std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured,
+                    x.delta, ci, pi, has_interval ? (in ? "yes" : "no") : "-");
       text += buf;
     }
   }
   std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", rms, has_interval ? inside : 0, judged);
-  if (format == "csv") text += "# " + source + "\n# question: " + question + "\n# " + buf;
-  else text += buf;
+  if (format == "csv")
+    text += "# " + source + "\n# question: " + question + "\n# " + buf;
+  else
+    text += buf;
   std::fputs(text.c_str(), stdout);
   return 0;
 }

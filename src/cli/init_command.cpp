@@ -54,7 +54,7 @@ int init_command(const Args& args) {
   po::options_description opts("options");
   std::string scene, out;
   opts.add_options()("scene", po::value(&scene), "scene name")("out,o", po::value(&out),
-                                                              "study file to write (default: standard output)")(
+                                                               "study file to write (default: standard output)")(
       "force", "replace an existing --out file (without it, a file that is not this very template is kept)");
   po::positional_options_description pos;
   pos.add("scene", 1);

@@ -9,7 +9,8 @@
 namespace rollspec::cli {
 
 int keys_command(const Args& args) {
-  const std::string usage = "usage: rollspec keys [SCENE]\n\nLists every study key of SCENE (or the scenes, without one).";
+  const std::string usage =
+      "usage: rollspec keys [SCENE]\n\nLists every study key of SCENE (or the scenes, without one).";
   po::options_description opts("options");
   std::string scene;
   opts.add_options()("scene", po::value(&scene), "scene name");

@@ -3,12 +3,9 @@
 //   rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume] [--quiet]
 //   rollspec plan STUDY.ini
 //   rollspec psd SIGNAL.csv --fs HZ [--segment N] [--overlap F] [--window hann|rect] [--out FILE.csv]
-//   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M] [--format table|csv|json]
-//   rollspec texture STUDY.ini [--out FILE.h5] [--count N]
-//   rollspec modes STUDY.ini
-//   rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild]
-//   rollspec keys [SCENE]
-//   rollspec init [SCENE] [--out FILE.ini] [--force]
+//   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M] [--format
+//   table|csv|json] rollspec texture STUDY.ini [--out FILE.h5] [--count N] rollspec modes STUDY.ini rollspec stiffness
+//   STUDY.ini [--out FILE.h5] [--rebuild] rollspec keys [SCENE] rollspec init [SCENE] [--out FILE.ini] [--force]
 //   rollspec version (or rollspec --version, rollspec -V)
 //
 // Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
@@ -98,10 +95,10 @@ int main(int argc, char** argv) {
   }
   if (command == "--version" || command == "-V") return cli::version_command({});
   const std::map<std::string, int (*)(const cli::Args&)> commands = {
-      {"run", cli::run_command},         {"plan", cli::plan_command}, {"psd", cli::psd_command},
-      {"compare", cli::compare_command}, {"keys", cli::keys_command}, {"version", cli::version_command},
-      {"texture", cli::texture_command}, {"modes", cli::modes_command},
-      {"stiffness", cli::stiffness_command}, {"init", cli::init_command},
+      {"run", cli::run_command},         {"plan", cli::plan_command},   {"psd", cli::psd_command},
+      {"compare", cli::compare_command}, {"keys", cli::keys_command},   {"version", cli::version_command},
+      {"texture", cli::texture_command}, {"modes", cli::modes_command}, {"stiffness", cli::stiffness_command},
+      {"init", cli::init_command},
   };
   const auto it = commands.find(command);
   if (it == commands.end()) {

@@ -35,34 +35,40 @@ int plan_command(const Args& args) {
 
   const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
   std::cout << "study " << study.file << ": scene " << s.scene() << ", "
-            << io::counted(static_cast<unsigned long long>(s.integer("study.realisations")), "realisation") << ", seed " << s.integer("study.seed") << "\n";
+            << io::counted(static_cast<unsigned long long>(s.integer("study.realisations")), "realisation") << ", seed "
+            << s.integer("study.seed") << "\n";
   const int threads = ensemble::ensemble_threads();
   const auto memory = scenes::estimate_memory(s, threads);
   const double available = io::available_memory();
   std::string keys;
   for (const auto& k : memory.keys) keys += (keys.empty() ? "" : ", ") + k;
-  std::cout << "memory: estimated peak " << scenes::format_bytes(memory.bytes) << " on " << threads << " thread" << (threads == 1 ? "" : "s")
-            << (memory.what.empty() ? std::string() : " (largest: " + memory.what + ", from " + keys + ")") << "; available "
-            << scenes::format_bytes(available) << "\n";
-  for (const auto& [what, bytes] : memory.terms) std::cout << "  " << scenes::format_bytes(bytes) << ": " << what << "\n";
+  std::cout << "memory: estimated peak " << scenes::format_bytes(memory.bytes) << " on " << threads << " thread"
+            << (threads == 1 ? "" : "s")
+            << (memory.what.empty() ? std::string() : " (largest: " + memory.what + ", from " + keys + ")")
+            << "; available " << scenes::format_bytes(available) << "\n";
+  for (const auto& [what, bytes] : memory.terms)
+    std::cout << "  " << scenes::format_bytes(bytes) << ": " << what << "\n";
   if (memory.bytes > available) {
-    std::cout << "the study needs more memory than is available: rollspec run refuses it (unless --force); stages not shown\n";
+    std::cout << "the study needs more memory than is available: rollspec run refuses it (unless --force); stages not "
+                 "shown\n";
     return 0;
   }
   const auto scene = make_scene<scenes::Scene>(s);
   auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(scene.get());
   if (ensemble_scene) {
-    const double K = static_cast<double>(s.integer("study.realisations")), C = static_cast<double>(s.integer("ensemble.chunk_size"));
+    const double K = static_cast<double>(s.integer("study.realisations")),
+                 C = static_cast<double>(s.integer("ensemble.chunk_size"));
     const double chunk_bytes = 48.0 + 16.0 * static_cast<double>(ensemble_scene->values_per_realisation());
-    std::cout << "checkpoint disk: " << io::counted(static_cast<unsigned long long>(std::ceil(K / C)), "chunk") << " of " << scenes::format_bytes(chunk_bytes) << " = "
+    std::cout << "checkpoint disk: " << io::counted(static_cast<unsigned long long>(std::ceil(K / C)), "chunk")
+              << " of " << scenes::format_bytes(chunk_bytes) << " = "
               << scenes::format_bytes(std::ceil(K / C) * chunk_bytes) << " beside the result while the run lasts\n";
   }
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");
   bool tables_missing = false;
   for (const auto& p : scene->plan()) {
     std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::to_string(p.status), p.reason.c_str());
-    const bool solver_table = p.stage == "blocked_force" && s.has("contact.blocked_force") &&
-                              s.text("contact.blocked_force") == "solver";
+    const bool solver_table =
+        p.stage == "blocked_force" && s.has("contact.blocked_force") && s.text("contact.blocked_force") == "solver";
     if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
   }
   if (!vm.count("probe")) return 0;
@@ -80,9 +86,10 @@ int plan_command(const Args& args) {
   ensemble_scene->run_realisation(0, 0, values.data());
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double K = static_cast<double>(s.integer("study.realisations"));
-  std::printf("run time: %.3g s per realisation (probe of realisation 0); the ensemble of %.0f on %d thread(s): about %.3g s "
-              "(plus stage tables and the final write)\n",
-              t, K, threads, t * K / threads);
+  std::printf(
+      "run time: %.3g s per realisation (probe of realisation 0); the ensemble of %.0f on %d thread(s): about %.3g s "
+      "(plus stage tables and the final write)\n",
+      t, K, threads, t * K / threads);
   return 0;
 }
 

@@ -1,4 +1,5 @@
-// rollspec psd: Welch PSD (D-15) of a measured time series (CSV/text, sound file or .mat; src/io/signal_file.hpp), CSV out.
+// rollspec psd: Welch PSD (D-15) of a measured time series (CSV/text, sound file or .mat; src/io/signal_file.hpp), CSV
+// out.
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,44 +24,45 @@ namespace rollspec::cli {
 
 namespace {
 const char* const kPsdUsage =
-      "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit m/s2|g] [--scale X] [--segment N]\n"
-      "                    [--overlap F] [--window hann|rect] [--time-column NAME|none] [--skip-rows N] [--out FILE.csv]\n"
-      "                    [--quiet]\n"
-      "\n"
-      "One-sided Welch PSD of each channel of a measured signal, in (m/s^2)^2/Hz: segments mean-detrended and\n"
-      "windowed, density scaling. Output CSV: the line '# rollspec-psd-csv: ...' (the PSD unit; rollspec\n"
-      "replaces an existing --out only if it starts so), then frequency_hz,<channel>,... (to stdout without\n"
-      "--out; a ',', ';', tab or '\"' in a channel name is written as '_').\n"
-      "\n"
-      "SIGNAL is read by its content, else by its extension:\n"
-      "  CSV/text  a header line naming the columns, then one sample per row. Delimiter ',', ';' or tab, from\n"
-      "            the data rows (tab, else ';', else ','); with ';' or tab a decimal comma is accepted (0,125;1,5),\n"
-      "            one decimal mark per file; one column with a decimal comma (0,0123 per row) is read as such.\n"
-      "            Preamble lines before the header (logger, date, units) are skipped: the header is the line\n"
-      "            followed by the most rows of numbers of its width (--skip-rows N: the header follows the\n"
-      "            first N lines). A column named t or time, alone or with the unit s or ms written\n"
-      "            _s, [s], (s) or /s (time_s, Time (s), t [ms]; case and spaces ignored; a bare capital T is\n"
-      "            not: a temperature or tension) is the time column:\n"
-      "            never a channel, it gives the sample rate (--time-column NAME picks another, in seconds unless\n"
-      "            its name says ms; --time-column none: no time column). Its stamps must increase, each within\n"
-      "            0.1 sample interval of the uniform grid through the first and last stamps, or within the\n"
-      "            rounding of its printed digits (half a unit of the last digit). --fs overrides it.\n"
-      "  WAV, FLAC, AIFF, AU, CAF, Ogg (libsndfile)  rate from the header, channels channel_1..channel_N.\n"
-      "            Integer PCM is a fraction of full scale (within +-1: a 16-bit sample / 32768) and needs\n"
-      "            --scale (the recorder's full scale in --unit); float data are read as stored.\n"
-      "  .mat      MATLAB v4, v5 (scipy.io.savemat) or v7.3: each real numeric vector is a channel named by\n"
-      "            its variable; an N x C matrix M holds channels M_1..M_C (one per column, a sample per row;\n"
-      "            --column M picks them all); a scalar fs (fs_hz, sample_rate, sampling_rate) or a time\n"
-      "            vector t, time, time_s, ... gives the rate. Complex, logical, char, struct and cell\n"
-      "            variables are not channels.\n"
-      "--fs is needed when the file gives no rate; it overrides a CSV time column; a sound file's or .mat\n"
-      "file's own rate it must match within 0.1 %.\n"
-      "--unit says what the values are in after --scale: m/s2 (default) or g (times 9.80665 m/s^2 per g); one\n"
-      "unit for all channels, or one per channel in output order (--unit g,m/s2).\n"
-      "--scale X multiplies every value: the physical value (in --unit) of one file unit, or for integer PCM\n"
-      "of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).\n"
-      "Each choice made from the file (delimiter, decimal comma, header line, time column, sample rate) is\n"
-      "said in one line on stderr (not with --quiet).";
+    "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit m/s2|g] [--scale X] [--segment N]\n"
+    "                    [--overlap F] [--window hann|rect] [--time-column NAME|none] [--skip-rows N] [--out "
+    "FILE.csv]\n"
+    "                    [--quiet]\n"
+    "\n"
+    "One-sided Welch PSD of each channel of a measured signal, in (m/s^2)^2/Hz: segments mean-detrended and\n"
+    "windowed, density scaling. Output CSV: the line '# rollspec-psd-csv: ...' (the PSD unit; rollspec\n"
+    "replaces an existing --out only if it starts so), then frequency_hz,<channel>,... (to stdout without\n"
+    "--out; a ',', ';', tab or '\"' in a channel name is written as '_').\n"
+    "\n"
+    "SIGNAL is read by its content, else by its extension:\n"
+    "  CSV/text  a header line naming the columns, then one sample per row. Delimiter ',', ';' or tab, from\n"
+    "            the data rows (tab, else ';', else ','); with ';' or tab a decimal comma is accepted (0,125;1,5),\n"
+    "            one decimal mark per file; one column with a decimal comma (0,0123 per row) is read as such.\n"
+    "            Preamble lines before the header (logger, date, units) are skipped: the header is the line\n"
+    "            followed by the most rows of numbers of its width (--skip-rows N: the header follows the\n"
+    "            first N lines). A column named t or time, alone or with the unit s or ms written\n"
+    "            _s, [s], (s) or /s (time_s, Time (s), t [ms]; case and spaces ignored; a bare capital T is\n"
+    "            not: a temperature or tension) is the time column:\n"
+    "            never a channel, it gives the sample rate (--time-column NAME picks another, in seconds unless\n"
+    "            its name says ms; --time-column none: no time column). Its stamps must increase, each within\n"
+    "            0.1 sample interval of the uniform grid through the first and last stamps, or within the\n"
+    "            rounding of its printed digits (half a unit of the last digit). --fs overrides it.\n"
+    "  WAV, FLAC, AIFF, AU, CAF, Ogg (libsndfile)  rate from the header, channels channel_1..channel_N.\n"
+    "            Integer PCM is a fraction of full scale (within +-1: a 16-bit sample / 32768) and needs\n"
+    "            --scale (the recorder's full scale in --unit); float data are read as stored.\n"
+    "  .mat      MATLAB v4, v5 (scipy.io.savemat) or v7.3: each real numeric vector is a channel named by\n"
+    "            its variable; an N x C matrix M holds channels M_1..M_C (one per column, a sample per row;\n"
+    "            --column M picks them all); a scalar fs (fs_hz, sample_rate, sampling_rate) or a time\n"
+    "            vector t, time, time_s, ... gives the rate. Complex, logical, char, struct and cell\n"
+    "            variables are not channels.\n"
+    "--fs is needed when the file gives no rate; it overrides a CSV time column; a sound file's or .mat\n"
+    "file's own rate it must match within 0.1 %.\n"
+    "--unit says what the values are in after --scale: m/s2 (default) or g (times 9.80665 m/s^2 per g); one\n"
+    "unit for all channels, or one per channel in output order (--unit g,m/s2).\n"
+    "--scale X multiplies every value: the physical value (in --unit) of one file unit, or for integer PCM\n"
+    "of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).\n"
+    "Each choice made from the file (delimiter, decimal comma, header line, time column, sample rate) is\n"
+    "said in one line on stderr (not with --quiet).";
 }  // namespace
 
 int psd_command(const Args& args) {
@@ -72,13 +74,17 @@ int psd_command(const Args& args) {
   long long segment = 1024;
   opts.add_options()("signal", po::value(&input)->required(), "input signal (CSV/text, WAV/FLAC/..., .mat)")(
       "fs", po::value(&request.fs), "sample rate (Hz); default: from the file")(
-      "column", po::value(&request.columns)->composing(), "channel(s) to analyse, repeatable or comma-separated (default: all)")(
-      "unit", po::value(&request.unit)->default_value("m/s2"), "unit of the values: m/s2 or g, or one per channel (g,m/s2)")(
-      "scale", po::value(&request.scale), "physical units per file unit, or per full scale (integer PCM; needed there); default 1")(
-      "time-column", po::value(&request.time_column), "CSV column of time stamps, or none (default: the column named like a time)")(
+      "column", po::value(&request.columns)->composing(),
+      "channel(s) to analyse, repeatable or comma-separated (default: all)")(
+      "unit", po::value(&request.unit)->default_value("m/s2"),
+      "unit of the values: m/s2 or g, or one per channel (g,m/s2)")(
+      "scale", po::value(&request.scale),
+      "physical units per file unit, or per full scale (integer PCM; needed there); default 1")(
+      "time-column", po::value(&request.time_column),
+      "CSV column of time stamps, or none (default: the column named like a time)")(
       "skip-rows", po::value(&request.skip_rows), "CSV lines before the header (default: found from the data)")(
-      "quiet,q", "do not say the choices made from the file")(
-      "segment", po::value(&segment)->default_value(1024), "segment length (samples)")(
+      "quiet,q", "do not say the choices made from the file")("segment", po::value(&segment)->default_value(1024),
+                                                              "segment length (samples)")(
       "overlap", po::value(&overlap)->default_value(0.5), "overlap as a fraction of the segment, in [0, 0.95]")(
       "window", po::value(&window)->default_value("hann"), "hann or rect")("out,o", po::value(&out), "output CSV")(
       "force", "replace an existing --out file even if it is not a PSD written by rollspec psd");
@@ -90,11 +96,13 @@ int psd_command(const Args& args) {
     throw usage_error("--fs " + std::to_string(request.fs) + ": allowed: a finite number > 0 (Hz)");
   request.scale_given = vm.count("scale") > 0;
   if (vm.count("skip-rows") && request.skip_rows < 0)
-    throw usage_error("--skip-rows " + std::to_string(request.skip_rows) + ": allowed: a whole number >= 0 (lines before the header)");
+    throw usage_error("--skip-rows " + std::to_string(request.skip_rows) +
+                      ": allowed: a whole number >= 0 (lines before the header)");
   if (vm.count("time-column") && request.time_column.empty())
     throw usage_error("--time-column '': allowed: a column name, or none");
   if (segment < 4) throw usage_error("--segment " + std::to_string(segment) + ": allowed: a whole number >= 4");
-  if (!(overlap >= 0.0 && overlap <= 0.95)) throw usage_error("--overlap " + std::to_string(overlap) + ": allowed: a fraction in [0, 0.95]");
+  if (!(overlap >= 0.0 && overlap <= 0.95))
+    throw usage_error("--overlap " + std::to_string(overlap) + ": allowed: a fraction in [0, 0.95]");
   if (window != "hann" && window != "rect") throw usage_error("--window " + window + ": allowed: hann or rect");
 
   if (!out.empty()) {  // an output that is the input is refused before the input is read
@@ -125,8 +133,9 @@ int psd_command(const Args& args) {
         for (double v : t.values[c]) peak = std::max(peak, std::fabs(v));
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.6g", peak);
-        throw data_error(input + ": column '" + t.channels[c] + "': the PSD overflows a double (largest |value| " + buf +
-                         " m/s^2); allowed: samples whose squares stay finite, e.g. |value| < 1e100 (rescale the unit)");
+        throw data_error(
+            input + ": column '" + t.channels[c] + "': the PSD overflows a double (largest |value| " + buf +
+            " m/s^2); allowed: samples whose squares stay finite, e.g. |value| < 1e100 (rescale the unit)");
       }
   }
 
@@ -169,7 +178,8 @@ int psd_command(const Args& args) {
     std::remove(tmp.c_str());
     io::unregister_temp(tmp);
     return cannot_create(what + " (writing " + tmp + ": " +
-                         (err == ENOSPC ? std::string("no space left on device") : std::string(std::strerror(err))) + ")");
+                         (err == ENOSPC ? std::string("no space left on device") : std::string(std::strerror(err))) +
+                         ")");
   };
   {
     errno = 0;

@@ -74,8 +74,8 @@ study::Study resume_study(const study::Study& asked, const std::vector<std::stri
   for (const auto& [k, v] : current) {
     const auto it = stored.find(k);
     if (it == stored.end() || (it->second != v && !finishing(k)))
-      keys += "\n  " + show_key(k) + " = " + clip(v, 80) + " (checkpoint: " +
-              (it == stored.end() ? std::string("absent") : clip(it->second, 80)) + ")";
+      keys += "\n  " + show_key(k) + " = " + clip(v, 80) +
+              " (checkpoint: " + (it == stored.end() ? std::string("absent") : clip(it->second, 80)) + ")";
   }
   for (const auto& [k, v] : stored)
     if (!current.count(k)) keys += "\n  " + show_key(k) + " absent (checkpoint: " + clip(v, 80) + ")";
@@ -89,9 +89,10 @@ void check_directory(const std::string& dir) {
   struct stat st {};
   if (::lstat(dir.c_str(), &st) != 0) return;
   if (!S_ISDIR(st.st_mode))
-    throw cannot_create("checkpoint " + dir + " exists and is " +
-                        (S_ISLNK(st.st_mode) ? std::string("a symbolic link") : std::string(io::file_kind(st.st_mode))) +
-                        ", not a checkpoint directory rollspec wrote; move it away or choose another --out");
+    throw cannot_create(
+        "checkpoint " + dir + " exists and is " +
+        (S_ISLNK(st.st_mode) ? std::string("a symbolic link") : std::string(io::file_kind(st.st_mode))) +
+        ", not a checkpoint directory rollspec wrote; move it away or choose another --out");
   const auto foreign = ensemble::CheckpointStore(dir, 0).foreign_entries();
   if (!foreign.empty())
     throw cannot_create("checkpoint directory " + dir + " holds files rollspec did not write (" + list_names(foreign) +
@@ -103,10 +104,12 @@ void check_directory(const std::string& dir) {
 study::Study checkpoint_study(const std::string& dir, const std::vector<std::string>& sets) {
   const auto m = ensemble::read_manifest(dir);
   if (!m)
-    throw missing_input("no study file given, and " + dir + " holds no checkpoint to resume; allowed: rollspec run STUDY.ini "
+    throw missing_input("no study file given, and " + dir +
+                        " holds no checkpoint to resume; allowed: rollspec run STUDY.ini "
                         "[--out FILE.h5], or rollspec run --resume --out FILE.h5 where FILE.h5.checkpoint exists");
   if (m->study_file.empty())
-    throw data_error(dir + ": this checkpoint does not record its study file (written by an older rollspec); resume with "
+    throw data_error(dir +
+                     ": this checkpoint does not record its study file (written by an older rollspec); resume with "
                      "the study file: rollspec run STUDY.ini --out ... --resume");
   return study::Study::parse(m->study_file, m->study_text, sets, scenes::schema_for);
 }
@@ -126,8 +129,8 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
     const std::size_t chunks = store.chunk_count();
     if (resume && manifest) {
       if (manifest->identity != io::code_identity())
-        throw data_error(dir + ": the checkpoint was written by another build (" + manifest->identity +
-                         "); this is " + io::code_identity() +
+        throw data_error(dir + ": the checkpoint was written by another build (" + manifest->identity + "); this is " +
+                         io::code_identity() +
                          "; results of two code versions are never mixed: start over with --restart");
       s = resume_study(s, sets, *manifest, dir, study_from_checkpoint);
       if (!quiet && root && !manifest->sets.empty()) {
@@ -136,7 +139,8 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
         std::cerr << "resuming with the checkpoint's settings:" << list << "\n";
       }
     } else if (resume && chunks) {
-      throw data_error(dir + ": the checkpoint has chunks but no manifest (written by an older rollspec, or "
+      throw data_error(dir +
+                       ": the checkpoint has chunks but no manifest (written by an older rollspec, or "
                        "damaged); start over with --restart");
     } else if (chunks && !restart) {
       throw cannot_create(dir + " holds an unfinished run (" + std::to_string(chunks) + " checkpointed chunk" +
@@ -144,8 +148,8 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
     }
     if (root && !(resume && manifest)) {
       store.clear(/*keep_lock=*/true);  // stale chunks (--restart), temporaries, an old manifest
-      ensemble::write_manifest(dir, {io::code_identity(), s.overrides(), s.canonical_text(),
-                                     std::filesystem::absolute(s.file()).string()});
+      ensemble::write_manifest(
+          dir, {io::code_identity(), s.overrides(), s.canonical_text(), std::filesystem::absolute(s.file()).string()});
     }
   } catch (...) {
     failure = std::current_exception();

@@ -9,7 +9,8 @@ namespace rollspec::cli {
 
 int run_command(const Args& args) {
   const std::string usage =
-      "usage: rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume | --restart] [--force] [--quiet]\n"
+      "usage: rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume | --restart] [--force] "
+      "[--quiet]\n"
       "       rollspec run --resume --out FILE.h5 [--quiet]   (the checkpoint's own study; no study file needed)\n"
       "\n"
       "Runs the study's Monte-Carlo ensemble and writes the result file (HDF5, schema 1: /psd, /bands,\n"
@@ -22,31 +23,39 @@ int run_command(const Args& args) {
   po::options_description opts("options");
   StudyArgs study;
   std::string out;
-  opts.add_options()("out,o", po::value(&out),
-                     "result file (default: the study's name with .h5, or -only-ID.h5 with --only, in the current directory)")(
+  opts.add_options()(
+      "out,o", po::value(&out),
+      "result file (default: the study's name with .h5, or -only-ID.h5 with --only, in the current directory)")(
       "resume", "finish an interrupted run from its checkpoint (with the checkpoint's settings)")(
       "restart", "discard the checkpoint of an unfinished run and start over")(
-      "force", "replace an existing --out file even if it is not a rollspec result, and run a study whose memory "
-               "estimate exceeds the available memory")(
-      "only", po::value<long long>(), "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
-      "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q", "no progress output");
+      "force",
+      "replace an existing --out file even if it is not a rollspec result, and run a study whose memory "
+      "estimate exceeds the available memory")(
+      "only", po::value<long long>(),
+      "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
+      "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q",
+                                                                                             "no progress output");
   po::positional_options_description pos;
   add_study_options(opts, pos, study, /*required=*/false);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   const bool resume = vm.count("resume") > 0, restart = vm.count("restart") > 0;
-  if (resume && restart) throw usage_error("--resume and --restart exclude each other: finish the checkpoint, or discard it");
+  if (resume && restart)
+    throw usage_error("--resume and --restart exclude each other: finish the checkpoint, or discard it");
   long long only = -1;
   if (vm.count("only")) {
     only = vm["only"].as<long long>();
     if (only < 0) throw usage_error("--only " + std::to_string(only) + ": allowed: a realisation id >= 0");
-    if (resume || restart) throw usage_error("--only runs one realisation without checkpoints; it takes no --resume or --restart");
+    if (resume || restart)
+      throw usage_error("--only runs one realisation without checkpoints; it takes no --resume or --restart");
   }
 
-  RunRequest request{study, out, resume, restart, vm.count("force") > 0, vm.count("rebuild") > 0, vm.count("quiet") > 0, only};
+  RunRequest request{study, out, resume, restart, vm.count("force") > 0, vm.count("rebuild") > 0, vm.count("quiet") > 0,
+                     only};
   ResolvedRun run = resolve_run(request);
   check_resources(run.study, request.force);
-  return run.scene->kind == scenes::SceneKind::single_run ? run_single_phase(run, request) : run_ensemble_phase(run, request);
+  return run.scene->kind == scenes::SceneKind::single_run ? run_single_phase(run, request)
+                                                          : run_ensemble_phase(run, request);
 }
 
 }  // namespace rollspec::cli

@@ -27,9 +27,10 @@ void refuse_replacing_an_ensemble(const std::string& write_path, const std::stri
   if (!fs::exists(write_path)) return;
   const io::Hdf5Reader r(write_path);
   if (r.has_attribute("/run", "only_realisation")) return;
-  const std::string n = r.has_attribute("/run", "realisations_computed")
-                            ? std::to_string(static_cast<long long>(r.double_attribute("/run", "realisations_computed"))) + " "
-                            : std::string();
+  const std::string n =
+      r.has_attribute("/run", "realisations_computed")
+          ? std::to_string(static_cast<long long>(r.double_attribute("/run", "realisations_computed"))) + " "
+          : std::string();
   throw cannot_create("output file '" + out + "' (--out) holds a finished ensemble result (" + n +
                       "realisations computed); --only would replace it with one realisation; choose another --out (the "
                       "default is STUDY-only-ID.h5), or add --force to replace it");
@@ -46,21 +47,24 @@ study::Study load_study(const RunRequest& q) {
   // `run --resume --out FILE` needs no study file: the checkpoint holds the resolved study.
   if (!q.study.file.empty()) return study::Study::load(q.study.file, q.study.sets, scenes::schema_for);
   if (!(q.resume && !q.out.empty()))
-    throw usage_error("the study file is missing; allowed: rollspec run STUDY.ini [--out FILE.h5] ..., or rollspec run "
-                      "--resume --out FILE.h5 to finish that file's checkpoint without its study file");
+    throw usage_error(
+        "the study file is missing; allowed: rollspec run STUDY.ini [--out FILE.h5] ..., or rollspec run "
+        "--resume --out FILE.h5 to finish that file's checkpoint without its study file");
   return checkpoint_study(resolved_checkpoint(q.out), q.study.sets);
 }
 
 // The checkpoint (and its lock) belongs to the file written, not to the name given: two runs on
 // one result through two names (a symbolic link) are refused like two runs on one name.
 void open_run_checkpoint(ResolvedRun& run, const RunRequest& q) {
-  run.checkpoint = open_checkpoint(run.write_path + ".checkpoint", run.study, q.study.sets, q.resume, q.restart, q.quiet,
-                                   q.study.file.empty());
+  run.checkpoint = open_checkpoint(run.write_path + ".checkpoint", run.study, q.study.sets, q.resume, q.restart,
+                                   q.quiet, q.study.file.empty());
 }
 
 void write_run_attributes(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, long long only) {
-  w.write("/run/wall_seconds", {1}, &sums.seconds, "s", "wall time of the ensemble (this run; not part of the result data)");
-  w.write("/run/reduce_seconds", {1}, &sums.reduce_seconds, "s", "gathering and adding chunk sums (part of wall_seconds)");
+  w.write("/run/wall_seconds", {1}, &sums.seconds, "s",
+          "wall time of the ensemble (this run; not part of the result data)");
+  w.write("/run/reduce_seconds", {1}, &sums.reduce_seconds, "s",
+          "gathering and adding chunk sums (part of wall_seconds)");
   w.attribute("/run", "threads", static_cast<std::int64_t>(omp_get_max_threads()));
   w.attribute("/run", "ranks", static_cast<std::int64_t>(ensemble::mpi_size()));
   w.attribute("/run", "realisations_computed", static_cast<std::int64_t>(sums.computed));
@@ -73,13 +77,17 @@ ResolvedRun resolve_run(const RunRequest& q) {
   const study::Study& s = run.study;
   run.scene = &scenes::find_scene(s.scene());
   if (run.scene->kind == scenes::SceneKind::stages_only)
-    s.refuse("study.scene", "has no ensemble to run; use rollspec " + std::string(s.scene() == "texture" ? "texture " : "stiffness ") + s.file());
+    s.refuse("study.scene", "has no ensemble to run; use rollspec " +
+                                std::string(s.scene() == "texture" ? "texture " : "stiffness ") + s.file());
   if (run.scene->kind == scenes::SceneKind::single_run && (q.resume || q.restart))
-    throw usage_error("study " + s.file() + " (scene " + s.scene() + ") is one deterministic run with no checkpoint; drop --resume/--restart");
+    throw usage_error("study " + s.file() + " (scene " + s.scene() +
+                      ") is one deterministic run with no checkpoint; drop --resume/--restart");
   if (run.out.empty())
-    run.out = fs::path(q.study.file).stem().string() + (q.only >= 0 ? "-only-" + std::to_string(q.only) : std::string()) + ".h5";
+    run.out = fs::path(q.study.file).stem().string() +
+              (q.only >= 0 ? "-only-" + std::to_string(q.only) : std::string()) + ".h5";
   const fs::path out_dir = fs::absolute(run.out).parent_path();
-  if (!fs::is_directory(out_dir)) throw cannot_create("output directory " + out_dir.string() + " does not exist (for --out " + run.out + ")");
+  if (!fs::is_directory(out_dir))
+    throw cannot_create("output directory " + out_dir.string() + " does not exist (for --out " + run.out + ")");
   io::OutputTarget target{run.out, io::kResultFileType};
   target.force = q.force;
   target.clean_stale = ensemble::mpi_rank() == 0;
@@ -145,12 +153,14 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
     write_run_attributes(w, sums, cfg.only);
     const ensemble::CriticalSection finishing;  // an interrupt waits until the bookkeeping is done
     w.commit();
-    if (!cfg.checkpoint_dir.empty()) ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear(/*keep_lock=*/true);
+    if (!cfg.checkpoint_dir.empty())
+      ensemble::CheckpointStore(cfg.checkpoint_dir, cfg.study_hash).clear(/*keep_lock=*/true);
     if (run.checkpoint.lock) run.checkpoint.lock->remove();
   }
   if (!q.quiet)
-    std::cout << "wrote " << run.out << " (" << io::counted(sums.count, "realisation") << ", " << sums.computed << " computed in "
-              << sums.seconds << " s, " << io::counted(static_cast<unsigned long long>(ensemble::mpi_size()), "rank") << " x "
+    std::cout << "wrote " << run.out << " (" << io::counted(sums.count, "realisation") << ", " << sums.computed
+              << " computed in " << sums.seconds << " s, "
+              << io::counted(static_cast<unsigned long long>(ensemble::mpi_size()), "rank") << " x "
               << io::counted(static_cast<unsigned long long>(omp_get_max_threads()), "thread") << ")\n";
   return 0;
 }

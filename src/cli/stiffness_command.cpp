@@ -30,7 +30,8 @@ int stiffness_command(const Args& args) {
   po::options_description opts("options");
   StudyArgs study;
   std::string out;
-  opts.add_options()("out,o", po::value(&out), "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
+  opts.add_options()("out,o", po::value(&out),
+                     "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
       "rebuild", "replace a table whose inputs differ or that is damaged")("quiet,q", "no progress output")(
       "force", "build a table whose memory estimate exceeds the available memory");
   po::positional_options_description pos;
@@ -47,10 +48,9 @@ int stiffness_command(const Args& args) {
   const auto t = stiffness::resolve_table(s, pair.radius, pair.effective_modulus, vm.count("rebuild") > 0,
                                           vm.count("quiet") > 0, status);
   if (ensemble::mpi_rank() != 0) return 0;  // every rank holds the table; rank 0 reports it
-  std::printf("# stiffness table: %s\n# input hash %s, %s, ball radius %g m, E* %.6g Pa, H %g Pa\n",
-              status.c_str(), t.input_hash.c_str(),
-              io::counted(static_cast<unsigned long long>(t.realisations), "realisation").c_str(), t.ball_radius,
-              t.effective_modulus, t.hardness);
+  std::printf("# stiffness table: %s\n# input hash %s, %s, ball radius %g m, E* %.6g Pa, H %g Pa\n", status.c_str(),
+              t.input_hash.c_str(), io::counted(static_cast<unsigned long long>(t.realisations), "realisation").c_str(),
+              t.ball_radius, t.effective_modulus, t.hardness);
   std::printf("%14s %14s %12s %14s %14s %12s %10s\n", "approach_m", "force_N", "force_std_N", "stiffness_N/m",
               "area_m2", "plastic", "iter");
   for (std::size_t j = 0; j < t.approach.size(); ++j)
@@ -58,22 +58,26 @@ int stiffness_command(const Args& args) {
                 t.stiffness_mean[j], t.contact_area_mean[j], t.plastic_cells_mean[j], t.iterations_mean[j]);
   // The fit is a summary; one beyond its tolerance says so on the same line (the dynamics use the table).
   if (t.fit_usable())
-    std::printf("fit: P = %.6g * delta^%.4f (max relative error %.3g, within the %.0f %% tolerance)\n", t.fit_coefficient,
-                t.fit_exponent, t.fit_max_relative_error, 100.0 * t.fit_tolerance);
+    std::printf("fit: P = %.6g * delta^%.4f (max relative error %.3g, within the %.0f %% tolerance)\n",
+                t.fit_coefficient, t.fit_exponent, t.fit_max_relative_error, 100.0 * t.fit_tolerance);
   else
-    std::printf("fit: NOT USABLE: P = %.6g * delta^%.4f misses the table by up to %.0f %% (tolerance %.0f %%); a power law "
-                "does not describe this table, use the table itself (the dynamics do)\n",
-                t.fit_coefficient, t.fit_exponent, 100.0 * t.fit_max_relative_error, 100.0 * t.fit_tolerance);
+    std::printf(
+        "fit: NOT USABLE: P = %.6g * delta^%.4f misses the table by up to %.0f %% (tolerance %.0f %%); a power law "
+        "does not describe this table, use the table itself (the dynamics do)\n",
+        t.fit_coefficient, t.fit_exponent, 100.0 * t.fit_max_relative_error, 100.0 * t.fit_tolerance);
   const double w = pair.weight;
   const double delta_h = std::pow(3.0 * w / (4.0 * t.effective_modulus * std::sqrt(t.ball_radius)), 2.0 / 3.0);
   const double k_h = 2.0 * t.effective_modulus * std::sqrt(t.ball_radius * delta_h);
   if (std::isnan(t.approach_at(w)))
-    std::printf("at the ball's weight W = %.6g N: beyond the table (largest force %.6g N at approach %.6g m); raise "
-                "[stiffness] approach_max (smooth Hertz: approach %.6g m, k = %.6g N/m)\n",
-                w, t.force_mean.back(), t.approach.back(), delta_h, k_h);
+    std::printf(
+        "at the ball's weight W = %.6g N: beyond the table (largest force %.6g N at approach %.6g m); raise "
+        "[stiffness] approach_max (smooth Hertz: approach %.6g m, k = %.6g N/m)\n",
+        w, t.force_mean.back(), t.approach.back(), delta_h, k_h);
   else
-    std::printf("at the ball's weight W = %.6g N: approach %.6g m, k = %.6g N/m (smooth Hertz: approach %.6g m, k = %.6g N/m)\n",
-                w, t.approach_at(w), t.stiffness_at(w), delta_h, k_h);
+    std::printf(
+        "at the ball's weight W = %.6g N: approach %.6g m, k = %.6g N/m (smooth Hertz: approach %.6g m, k = %.6g "
+        "N/m)\n",
+        w, t.approach_at(w), t.stiffness_at(w), delta_h, k_h);
   return 0;
 }
 

@@ -66,10 +66,11 @@ std::string header(const std::string& scene) {
   s << kStudyTemplateMarker << " (rollspec init " << scene << ", rollspec " << kVersion << ")\n";
   s << comment("A study of the " + scene + " scene: " + scenes::find_scene(scene).description + ".", "# ");
   s << "#\n"
-    << comment("The format: INI text, [section] headers and key = value lines; '#' starts a comment. Values are "
-               "in SI units, named beside each key. First come the keys to set for your own rig, then every "
-               "other key, commented out at its default: remove the leading '# ' to change one.",
-               "# ")
+    << comment(
+           "The format: INI text, [section] headers and key = value lines; '#' starts a comment. Values are "
+           "in SI units, named beside each key. First come the keys to set for your own rig, then every "
+           "other key, commented out at its default: remove the leading '# ' to change one.",
+           "# ")
     << "#\n";
   const std::string run = scene == "texture" || scene == "stiffness" ? scene : std::string("run");
   const std::vector<std::pair<std::string, std::string>> commands = {
@@ -97,9 +98,12 @@ std::string study_template(const std::string& scene) {
   // A required key the list leaves out still has to be set for the study to load.
   std::vector<KeySpec> rest;
   for (const auto& k : table) {
-    const bool listed = std::any_of(first.begin(), first.end(), [&](const KeySpec& f) { return f.full_name() == k.full_name(); });
+    const bool listed =
+        std::any_of(first.begin(), first.end(), [&](const KeySpec& f) { return f.full_name() == k.full_name(); });
     if (listed) continue;
-    if (!k.default_value) throw std::logic_error("rollspec init " + scene + ": required key " + k.full_name() + " is not among the first keys");
+    if (!k.default_value)
+      throw std::logic_error("rollspec init " + scene + ": required key " + k.full_name() +
+                             " is not among the first keys");
     rest.push_back(k);
   }
 

@@ -9,8 +9,8 @@
 namespace rollspec::cli {
 
 struct FirstKey {
-  std::string full_name;              // "section.key"
-  std::optional<std::string> value;   // nullopt: the table's default
+  std::string full_name;             // "section.key"
+  std::optional<std::string> value;  // nullopt: the table's default
 };
 
 // The first keys of `scene` in the order the template lists them ([study] keys first).

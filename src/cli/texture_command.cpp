@@ -42,8 +42,8 @@ void refuse_overflow(const study::Study& s, const char* what, std::size_t i, con
   if (source == "table") where = s.path("texture.table") + " (" + where + ")";
   if (source == "profiles") where = s.where("texture.profiles");
   char buf[160];
-  std::snprintf(buf, sizeof buf, ": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)", what,
-                i, st.rms, st.skewness, st.kurtosis);
+  std::snprintf(buf, sizeof buf, ": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)",
+                what, i, st.rms, st.skewness, st.kurtosis);
   const std::string m = where + buf +
                         ": the PSD's heights overflow double precision; allowed: a PSD whose heights and their fourth "
                         "powers stay finite (rms height well below 1e50 m)";
@@ -67,10 +67,12 @@ int texture_command(const Args& args) {
   std::string out;
   long long count = -1;
   opts.add_options()("list", "print the statistics of every realisation, not only their mean and spread")(
-      "quiet,q", "print nothing but errors")("out,o", po::value(&out), "texture file (default: the study's name with .h5)")(
+      "quiet,q", "print nothing but errors")("out,o", po::value(&out),
+                                             "texture file (default: the study's name with .h5)")(
       "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)")(
-      "force", "replace an existing --out file even if it is not a rollspec texture file, and run a study whose "
-               "memory estimate exceeds the available memory");
+      "force",
+      "replace an existing --out file even if it is not a rollspec texture file, and run a study whose "
+      "memory estimate exceeds the available memory");
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
   po::variables_map vm;
@@ -91,8 +93,10 @@ int texture_command(const Args& args) {
   scenes::check_memory(count >= 0 ? study::Study::load(study.file, study.sets, scenes::schema_for) : s, 1,
                        vm.count("force") > 0);
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
-  const std::size_t n_lines = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("lines.count"));
-  const std::size_t n_surf = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("surface.count"));
+  const std::size_t n_lines =
+      count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("lines.count"));
+  const std::size_t n_surf =
+      count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("surface.count"));
 
   const texture::Psd psd = texture_io::study_psd(s);
   const double spacing = s.real("lines.spacing");
@@ -102,7 +106,8 @@ int texture_command(const Args& args) {
   const auto lines =
       texture_io::study_line_generator(s, psd, spacing, static_cast<std::size_t>(samples), "lines.spacing", false);
   const texture::LineTextureSpec& ls = lines->spec();
-  const texture_io::SurfaceGenerator surfaces = n_surf ? texture_io::study_surface_generator(s, psd) : texture_io::SurfaceGenerator{};
+  const texture_io::SurfaceGenerator surfaces =
+      n_surf ? texture_io::study_surface_generator(s, psd) : texture_io::SurfaceGenerator{};
 
   io::OutputTarget target{out, "rollspec-texture"};
   target.force = vm.count("force") > 0;
@@ -114,8 +119,8 @@ int texture_command(const Args& args) {
   w.attribute("/", "psd", psd.description);
   // Per-realisation rows name their index; the summary rows, how many realisations they summarise.
   if (!quiet)
-    std::printf("%-9s %6s %12s %10s %10s %14s %14s\n", "kind", list ? "index" : "count", "rms_m", "skewness", "kurtosis",
-                "corr_len_x_m", "corr_len_y_m");
+    std::printf("%-9s %6s %12s %10s %10s %14s %14s\n", "kind", list ? "index" : "count", "rms_m", "skewness",
+                "kurtosis", "corr_len_x_m", "corr_len_y_m");
   if (n_lines) {
     const std::size_t n = ls.samples, nh = lines->harmonics();
     std::vector<double> x(n), all(n_lines * n), up(nh), ua(nh);
@@ -132,7 +137,8 @@ int texture_command(const Args& args) {
       print_statistics("line", r, st, false, !list);
       stats.push_back(st);
       profiles[r].x = x;
-      profiles[r].z.assign(all.begin() + static_cast<std::ptrdiff_t>(r * n), all.begin() + static_cast<std::ptrdiff_t>((r + 1) * n));
+      profiles[r].z.assign(all.begin() + static_cast<std::ptrdiff_t>(r * n),
+                           all.begin() + static_cast<std::ptrdiff_t>((r + 1) * n));
     }
     // Mean over realisations; a correlation length that never reaches 1/e (NaN) is left out.
     print_statistics("line_mean", n_lines, texture::mean_statistics(stats), false, quiet);
@@ -172,7 +178,8 @@ int texture_command(const Args& args) {
     for (std::size_t i = 0; i < surf.ny; ++i) ys[i] = surf.dy * static_cast<double>(i);
     w.write("/surface/x", {surf.nx}, xs.data(), "m", "grid x");
     w.write("/surface/y", {surf.ny}, ys.data(), "m", "grid y");
-    w.write("/surface/heights", {n_surf, surf.ny, surf.nx}, heights.data(), "m", "surface heights z(y, x) per realisation");
+    w.write("/surface/heights", {n_surf, surf.ny, surf.nx}, heights.data(), "m",
+            "surface heights z(y, x) per realisation");
     w.make_scale("/surface/x", "x");
     w.make_scale("/surface/y", "y");
     w.attach_scale("/surface/heights", "/surface/y", 1);
@@ -183,8 +190,8 @@ int texture_command(const Args& args) {
   io::check_output_target(target);
   w.commit();
   if (!quiet)
-    std::fprintf(stderr, "wrote %s (%zu line%s, %zu surface%s)\n", out.c_str(), n_lines, n_lines == 1 ? "" : "s", n_surf,
-                 n_surf == 1 ? "" : "s");
+    std::fprintf(stderr, "wrote %s (%zu line%s, %zu surface%s)\n", out.c_str(), n_lines, n_lines == 1 ? "" : "s",
+                 n_surf, n_surf == 1 ? "" : "s");
   return 0;
 }
 

@@ -79,7 +79,8 @@ void CheckpointStore::write(const ChunkSums& c) const {
 namespace {
 // Reads and checks one chunk file: kind, size, magic, checksum, study hash.
 ChunkSums read_chunk_file(const std::string& where, std::size_t n_values, std::uint64_t hash) {
-  const std::size_t expect = sizeof kMagic + 4 * sizeof(std::uint64_t) + n_values * sizeof(double) + sizeof(std::uint64_t);
+  const std::size_t expect =
+      sizeof kMagic + 4 * sizeof(std::uint64_t) + n_values * sizeof(double) + sizeof(std::uint64_t);
   // Size and kind first: a FIFO would block the read, a huge file would be read whole.
   struct stat st {};
   if (::lstat(where.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
@@ -99,7 +100,8 @@ ChunkSums read_chunk_file(const std::string& where, std::size_t n_values, std::u
   std::uint64_t h[4];
   std::memcpy(h, buf.data() + sizeof kMagic, sizeof h);
   if (h[0] != hash)
-    throw data_error(where + ": checkpoint belongs to a different study (input hash differs); start over with --restart");
+    throw data_error(where +
+                     ": checkpoint belongs to a different study (input hash differs); start over with --restart");
   ChunkSums c;
   c.lo = h[1];
   c.hi = h[2];
@@ -132,7 +134,8 @@ bool CheckpointStore::has(std::uint64_t lo, std::uint64_t hi) const {
 ChunkSums CheckpointStore::read(std::uint64_t lo, std::uint64_t hi, std::size_t n_values) const {
   const std::string where = (fs::path(directory_) / chunk_name(lo, hi)).string();
   ChunkSums c = read_chunk_file(where, n_values, hash_);
-  if (c.lo != lo || c.hi != hi) throw data_error(where + ": damaged checkpoint (chunk bounds); start over with --restart");
+  if (c.lo != lo || c.hi != hi)
+    throw data_error(where + ": damaged checkpoint (chunk bounds); start over with --restart");
   return c;
 }
 
@@ -164,8 +167,9 @@ std::vector<std::string> CheckpointStore::foreign_entries() const {
     struct stat st {};
     if (::lstat(entry.path().c_str(), &st) != 0 && errno == ENOENT) continue;  // renamed meanwhile by a running writer
     const bool regular = S_ISREG(st.st_mode);
-    const bool ours = regular && is_checkpoint_file_name(name) &&
-                      (name.size() < 4 || name.compare(name.size() - 4, 4, ".bin") != 0 || is_chunk_file(entry.path().string()));
+    const bool ours =
+        regular && is_checkpoint_file_name(name) &&
+        (name.size() < 4 || name.compare(name.size() - 4, 4, ".bin") != 0 || is_chunk_file(entry.path().string()));
     if (!ours) out.push_back(name);
   }
   return out;

@@ -13,8 +13,8 @@
 namespace rollspec::ensemble {
 
 struct ChunkSums {
-  std::uint64_t lo = 0, hi = 0;   // realisation ids [lo, hi)
-  std::vector<double> values;     // sums over the chunk: [sum..., sum of squares...]
+  std::uint64_t lo = 0, hi = 0;  // realisation ids [lo, hi)
+  std::vector<double> values;    // sums over the chunk: [sum..., sum of squares...]
 };
 
 std::uint64_t fnv1a64(const void* data, std::size_t n, std::uint64_t h = 14695981039346656037ull);

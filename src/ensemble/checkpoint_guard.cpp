@@ -77,9 +77,12 @@ std::optional<CheckpointManifest> read_manifest(const std::string& directory) {
   std::istringstream lines(body.substr(std::strlen(kHeader)));
   std::string line;
   while (std::getline(lines, line) && line != "study:") {
-    if (line.rfind("identity = ", 0) == 0) m.identity = line.substr(11);
-    else if (line.rfind("study_file = ", 0) == 0) m.study_file = line.substr(13);
-    else if (line.rfind("set = ", 0) == 0) m.sets.push_back(line.substr(6));
+    if (line.rfind("identity = ", 0) == 0)
+      m.identity = line.substr(11);
+    else if (line.rfind("study_file = ", 0) == 0)
+      m.study_file = line.substr(13);
+    else if (line.rfind("set = ", 0) == 0)
+      m.sets.push_back(line.substr(6));
   }
   std::string study;
   while (std::getline(lines, line) && line != "end of study") study += line + "\n";
@@ -137,7 +140,8 @@ CheckpointLock::CheckpointLock(const std::string& directory)
                           " is using the checkpoint " + directory_ +
                           " of the same --out; wait for it to finish, or choose another --out");
     }
-    struct stat a {}, b {};
+    struct stat a {
+    }, b{};
     if (::fstat(fd_, &a) == 0 && ::stat(path_.c_str(), &b) == 0 && a.st_ino == b.st_ino && a.st_dev == b.st_dev) {
       const std::string pid = std::to_string(::getpid()) + "\n";
       if (::ftruncate(fd_, 0) == 0) {

@@ -75,11 +75,13 @@ ChunkSums run_chunk(std::uint64_t lo, std::uint64_t hi, std::size_t n_values, co
 EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const RealisationFn& realisation) {
   const auto start = std::chrono::steady_clock::now();
   const std::uint64_t K = cfg.realisations, C = cfg.chunk_size;
-  if (K == 0 || C == 0 || (C & (C - 1)) != 0) throw std::invalid_argument("ensemble needs K > 0 and a power-of-two chunk size");
+  if (K == 0 || C == 0 || (C & (C - 1)) != 0)
+    throw std::invalid_argument("ensemble needs K > 0 and a power-of-two chunk size");
   const auto rank = static_cast<std::uint64_t>(mpi_rank()), ranks = static_cast<std::uint64_t>(mpi_size());
   if (cfg.only >= 0) {
     const auto id = static_cast<std::uint64_t>(cfg.only);
-    if (id >= K) throw usage_error("--only " + std::to_string(id) + ": the study has realisations 0.." + std::to_string(K - 1));
+    if (id >= K)
+      throw usage_error("--only " + std::to_string(id) + ": the study has realisations 0.." + std::to_string(K - 1));
     EnsembleSums out;
     std::vector<double> v(n_values);
     if (rank == 0) {
@@ -137,7 +139,8 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
   // Every rank takes part in the collective decisions, so one rank's failure never hangs the others.
   const bool failed_somewhere = any_rank(failure != nullptr);
   if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere) throw UserError(EX_SOFTWARE, cfg.log_prefix + "stopped because another rank failed (see its message)");
+  if (failed_somewhere)
+    throw UserError(EX_SOFTWARE, cfg.log_prefix + "stopped because another rank failed (see its message)");
   out.computed = sum_over_ranks(out.computed);
   if (any_rank(stop_requested())) {
     std::ostringstream s;

@@ -5,8 +5,8 @@
 // the sums are bitwise identical for any thread count, schedule, chunk placement or restart.
 // Chunk sums are added as chunks complete (TreeAccumulator: at most about 2 log2(chunks) partial
 // sums are kept, on a run and on --resume alike). Completed chunks are checkpointed;
-// SIGINT/SIGTERM stop cleanly with exit 130 and --resume recomputes only missing chunks. A realisation that produces NaN/Inf stops the run, naming its
-// id and the seed.
+// SIGINT/SIGTERM stop cleanly with exit 130 and --resume recomputes only missing chunks. A realisation that produces
+// NaN/Inf stops the run, naming its id and the seed.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -18,23 +18,23 @@ namespace rollspec::ensemble {
 
 struct EnsembleConfig {
   std::uint64_t realisations = 1;
-  std::uint64_t chunk_size = 16;   // a power of two
+  std::uint64_t chunk_size = 16;  // a power of two
   std::uint64_t seed = 0;
-  std::string checkpoint_dir;      // empty: no checkpoints
+  std::string checkpoint_dir;  // empty: no checkpoints
   std::uint64_t study_hash = 0;
   bool resume = false;
   bool quiet = false;
-  std::string log_prefix;          // e.g. "[rank 1] "
-  std::int64_t only = -1;          // >= 0: run just this realisation (no checkpoints), to investigate it
+  std::string log_prefix;  // e.g. "[rank 1] "
+  std::int64_t only = -1;  // >= 0: run just this realisation (no checkpoints), to investigate it
 };
 
 struct EnsembleSums {
   std::vector<double> sum, sum_sq;  // over realisations, per value (on rank 0 only under MPI)
   std::uint64_t count = 0;
-  std::uint64_t computed = 0;       // realisations computed in this run (the rest came from checkpoints)
+  std::uint64_t computed = 0;  // realisations computed in this run (the rest came from checkpoints)
   double seconds = 0.0;
-  double reduce_seconds = 0.0;      // gathering chunk sums to rank 0 and adding them (part of `seconds`)
-  std::int64_t only = -1;           // >= 0: the one realisation these sums hold (--only)
+  double reduce_seconds = 0.0;  // gathering chunk sums to rank 0 and adding them (part of `seconds`)
+  std::int64_t only = -1;       // >= 0: the one realisation these sums hold (--only)
 
   // Ensemble mean of value i, and the standard deviation of one realisation's value (K - 1).
   double mean(std::size_t i) const { return sum[i] / static_cast<double>(count); }

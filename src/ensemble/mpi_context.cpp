@@ -69,7 +69,8 @@ std::map<std::uint64_t, ChunkSums> gather_chunks(const std::map<std::uint64_t, C
   std::vector<double> recv;
   if (rank == 0) {
     int total = 0;
-    for (int r = 0; r < size; ++r) displs[static_cast<std::size_t>(r)] = total, total += counts[static_cast<std::size_t>(r)];
+    for (int r = 0; r < size; ++r)
+      displs[static_cast<std::size_t>(r)] = total, total += counts[static_cast<std::size_t>(r)];
     recv.resize(static_cast<std::size_t>(total));
   }
   MPI_Gatherv(send.data(), count, MPI_DOUBLE, recv.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
@@ -86,7 +87,7 @@ std::map<std::uint64_t, ChunkSums> gather_chunks(const std::map<std::uint64_t, C
 }
 
 std::map<std::uint64_t, std::vector<double>> allgather_rows(const std::map<std::uint64_t, std::vector<double>>& mine,
-                                                           std::size_t row_size) {
+                                                            std::size_t row_size) {
   if (mpi_size() == 1) return mine;
   std::vector<double> send;
   for (const auto& [id, row] : mine) {
@@ -98,20 +99,21 @@ std::map<std::uint64_t, std::vector<double>> allgather_rows(const std::map<std::
   std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size));
   MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
   int total = 0;
-  for (int r = 0; r < size; ++r) displs[static_cast<std::size_t>(r)] = total, total += counts[static_cast<std::size_t>(r)];
+  for (int r = 0; r < size; ++r)
+    displs[static_cast<std::size_t>(r)] = total, total += counts[static_cast<std::size_t>(r)];
   std::vector<double> recv(static_cast<std::size_t>(total));
   MPI_Allgatherv(send.data(), count, MPI_DOUBLE, recv.data(), counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
   std::map<std::uint64_t, std::vector<double>> all;
   for (std::size_t off = 0; off + row_size + 1 <= recv.size(); off += row_size + 1)
     all[static_cast<std::uint64_t>(recv[off])].assign(recv.begin() + static_cast<std::ptrdiff_t>(off + 1),
-                                                       recv.begin() + static_cast<std::ptrdiff_t>(off + 1 + row_size));
+                                                      recv.begin() + static_cast<std::ptrdiff_t>(off + 1 + row_size));
   return all;
 }
 
 #else
 
 std::map<std::uint64_t, std::vector<double>> allgather_rows(const std::map<std::uint64_t, std::vector<double>>& mine,
-                                                           std::size_t) {
+                                                            std::size_t) {
   return mine;
 }
 

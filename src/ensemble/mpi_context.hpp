@@ -1,8 +1,8 @@
 #pragma once
 // MPI for ensembles (optional build, -DROLLSPEC_MPI=ON). Each rank runs a contiguous range of
-// chunks and reduces it as chunks complete (TreeAccumulator); each rank sends those few sums to rank 0, which adds them along the same pairwise tree as
-// a single process (pairwise_tree.hpp), so the result data are bitwise identical for any rank
-// count. Without MPI every function here is the one-process identity.
+// chunks and reduces it as chunks complete (TreeAccumulator); each rank sends those few sums to rank 0, which adds them
+// along the same pairwise tree as a single process (pairwise_tree.hpp), so the result data are bitwise identical for
+// any rank count. Without MPI every function here is the one-process identity.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -30,7 +30,7 @@ std::uint64_t sum_over_ranks(std::uint64_t v);
 std::map<std::uint64_t, ChunkSums> gather_chunks(const std::map<std::uint64_t, ChunkSums>& mine, std::size_t n_values);
 // Every rank receives every rank's rows (keyed by id, all of length row_size).
 std::map<std::uint64_t, std::vector<double>> allgather_rows(const std::map<std::uint64_t, std::vector<double>>& mine,
-                                                           std::size_t row_size);
+                                                            std::size_t row_size);
 std::string rank_prefix();  // "[rank r/n] " under MPI with n > 1, else ""
 
 }  // namespace rollspec::ensemble

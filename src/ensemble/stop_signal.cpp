@@ -46,10 +46,12 @@ void watchdog() {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   io::remove_registered_temps();
   const int sig = g_signal;
-  write_stderr(sig == SIGHUP ? "rollspec: interrupted (SIGHUP)" : sig == SIGTERM ? "rollspec: interrupted (SIGTERM)"
-                                                                                  : "rollspec: interrupted (SIGINT)");
-  write_stderr(": stopped; completed stage tables and checkpointed chunks are kept, no partial file was "
-               "written; rerun the same command (run: add --resume) to continue\n");
+  write_stderr(sig == SIGHUP    ? "rollspec: interrupted (SIGHUP)"
+               : sig == SIGTERM ? "rollspec: interrupted (SIGTERM)"
+                                : "rollspec: interrupted (SIGINT)");
+  write_stderr(
+      ": stopped; completed stage tables and checkpointed chunks are kept, no partial file was "
+      "written; rerun the same command (run: add --resume) to continue\n");
   ::_exit(kExitInterrupted);
 }
 }  // namespace

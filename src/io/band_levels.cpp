@@ -39,7 +39,8 @@ bool printable_utf8(const std::string& s) {
     const auto c = static_cast<unsigned char>(s[i]);
     if (c < 0x20 || c == 0x7f) return false;
     const int n = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xe ? 2 : (c >> 3) == 0x1e ? 3 : -1;
-    if (n < 0 || i + static_cast<std::size_t>(n) >= s.size() + static_cast<std::size_t>(n == 0)) return false;  // cut sequence
+    if (n < 0 || i + static_cast<std::size_t>(n) >= s.size() + static_cast<std::size_t>(n == 0))
+      return false;  // cut sequence
     for (int k = 1; k <= n; ++k)
       if ((static_cast<unsigned char>(s[i + static_cast<std::size_t>(k)]) >> 6) != 0x2) return false;
     i += static_cast<std::size_t>(n) + 1;
@@ -60,14 +61,16 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
   if (dims.size() != 2) throw data_error(file + ": /bands/level_db is not sensor x band");
   const std::size_t ns = dims[0], nb = dims[1];
   if (ns == 0 || nb == 0)
-    throw data_error(file + ": /bands/level_db is empty (" + std::to_string(ns) + " sensors x " + std::to_string(nb) + " bands)");
+    throw data_error(file + ": /bands/level_db is empty (" + std::to_string(ns) + " sensors x " + std::to_string(nb) +
+                     " bands)");
   const auto names = r.read_strings("/bands/sensor");
   if (names.size() != ns)
-    throw data_error(file + ": /bands/sensor has " + std::to_string(names.size()) + " names; expected " + std::to_string(ns) +
-                     " (one per row of /bands/level_db)");
+    throw data_error(file + ": /bands/sensor has " + std::to_string(names.size()) + " names; expected " +
+                     std::to_string(ns) + " (one per row of /bands/level_db)");
   for (std::size_t i = 0; i < ns; ++i)
     if (!printable_utf8(names[i]))
-      throw data_error(file + ": /bands/sensor[" + std::to_string(i) + "] is not printable UTF-8 text; allowed: sensor names "
+      throw data_error(file + ": /bands/sensor[" + std::to_string(i) +
+                       "] is not printable UTF-8 text; allowed: sensor names "
                        "as rollspec writes them (the file was altered or damaged)");
   const std::size_t row = pick_row(r, names, sensor);
 
@@ -89,7 +92,8 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
     std::vector<std::size_t> d;
     const auto v = r.read(name, &d);
     if (d != dims) throw data_error(file + ": " + name + " does not have the shape of /bands/level_db (" + shape + ")");
-    out.assign(v.begin() + static_cast<std::ptrdiff_t>(row * nb), v.begin() + static_cast<std::ptrdiff_t>((row + 1) * nb));
+    out.assign(v.begin() + static_cast<std::ptrdiff_t>(row * nb),
+               v.begin() + static_cast<std::ptrdiff_t>((row + 1) * nb));
     for (std::size_t k = 0; k < nb; ++k)
       if (std::isnan(out[k]))
         throw data_error(file + ": " + name + "[" + std::to_string(row) + ", " + std::to_string(k) +
@@ -101,17 +105,23 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
   row_of("/bands/std", b.std_dev);
   row_of("/bands/log_std", b.log_std);
   for (std::size_t k = 0; k < nb; ++k) {
-    const auto where = [&](const char* name) { return file + ": " + name + "[" + std::to_string(row) + ", " + std::to_string(k) + "] = "; };
-    for (const auto& [name, v] : {std::pair<const char*, double>{"/bands/std", b.std_dev[k]}, {"/bands/log_std", b.log_std[k]}})
+    const auto where = [&](const char* name) {
+      return file + ": " + name + "[" + std::to_string(row) + ", " + std::to_string(k) + "] = ";
+    };
+    for (const auto& [name, v] :
+         {std::pair<const char*, double>{"/bands/std", b.std_dev[k]}, {"/bands/log_std", b.log_std[k]}})
       if (!(v >= 0.0 && std::isfinite(v)))
-        throw data_error(where(name) + number_text(v) + "; allowed: a finite spread >= 0 (the file was altered or damaged)");
+        throw data_error(where(name) + number_text(v) +
+                         "; allowed: a finite spread >= 0 (the file was altered or damaged)");
     // Levels: -inf for a band without power; interval bounds: +-inf where the interval is unbounded.
-    for (const auto& [name, v, bounds] : {std::tuple<const char*, double, bool>{"/bands/level_db", b.level_db[k], false},
-                                          {"/bands/ci_lower_db", b.ci_lower_db[k], true},
-                                          {"/bands/ci_upper_db", b.ci_upper_db[k], true}})
+    for (const auto& [name, v, bounds] :
+         {std::tuple<const char*, double, bool>{"/bands/level_db", b.level_db[k], false},
+          {"/bands/ci_lower_db", b.ci_lower_db[k], true},
+          {"/bands/ci_upper_db", b.ci_upper_db[k], true}})
       if (std::isfinite(v) ? std::fabs(v) > kLargestLevelDb : !bounds && v > 0.0)
-        throw data_error(where(name) + number_text(v) + " dB; allowed: " + (bounds ? "+-inf (unbounded)" : "-inf (no power)") +
-                         " or a level within +-" + number_text(kLargestLevelDb) + " dB (the file was altered or damaged)");
+        throw data_error(
+            where(name) + number_text(v) + " dB; allowed: " + (bounds ? "+-inf (unbounded)" : "-inf (no power)") +
+            " or a level within +-" + number_text(kLargestLevelDb) + " dB (the file was altered or damaged)");
     if (b.ci_lower_db[k] > b.ci_upper_db[k])
       throw data_error(file + ": band " + std::to_string(k) + " of sensor " + names[row] + " has ci_lower_db " +
                        number_text(b.ci_lower_db[k]) + " > ci_upper_db " + number_text(b.ci_upper_db[k]) +
@@ -122,15 +132,16 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
                                 {"/bands/nominal_frequency", &b.nominal}}) {
     *v = r.read(name);
     if (v->size() != nb)
-      throw data_error(file + ": " + name + " has " + std::to_string(v->size()) + " values; expected " + std::to_string(nb) +
-                       " (one per band of /bands/level_db)");
+      throw data_error(file + ": " + name + " has " + std::to_string(v->size()) + " values; expected " +
+                       std::to_string(nb) + " (one per band of /bands/level_db)");
   }
   for (std::size_t k = 0; k < nb; ++k)
     if (!(std::isfinite(b.lower[k]) && std::isfinite(b.upper[k]) && std::isfinite(b.nominal[k]) && b.lower[k] > 0.0 &&
           b.lower[k] < b.upper[k]))
-      throw data_error(file + ": band " + std::to_string(k) + " has edges " + number_text(b.lower[k]) + " .. " + number_text(b.upper[k]) +
-                       " Hz and nominal centre " + number_text(b.nominal[k]) +
-                       " Hz; allowed: finite, 0 < lower < upper (/bands/lower_frequency, upper_frequency, nominal_frequency)");
+      throw data_error(
+          file + ": band " + std::to_string(k) + " has edges " + number_text(b.lower[k]) + " .. " +
+          number_text(b.upper[k]) + " Hz and nominal centre " + number_text(b.nominal[k]) +
+          " Hz; allowed: finite, 0 < lower < upper (/bands/lower_frequency, upper_frequency, nominal_frequency)");
   return b;
 }
 

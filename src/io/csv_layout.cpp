@@ -33,7 +33,9 @@ CsvLayout best_header(const std::vector<std::string>& lines, char delimiter, boo
   std::vector<std::size_t> run(n + 1, 0);
   std::vector<std::size_t> same(n + 1, 0);  // same[i]: numeric rows from i on with the width of row i
   for (std::size_t i = n; i-- > 0;)
-    same[i] = shapes[i].numeric ? 1 + (i + 1 < n && shapes[i + 1].numeric && shapes[i + 1].cells == shapes[i].cells ? same[i + 1] : 0) : 0;
+    same[i] = shapes[i].numeric
+                  ? 1 + (i + 1 < n && shapes[i + 1].numeric && shapes[i + 1].cells == shapes[i].cells ? same[i + 1] : 0)
+                  : 0;
   CsvLayout best;
   best.delimiter = delimiter;
   // A line after rows of numbers of its own width is a bad data row, not a header: its error is

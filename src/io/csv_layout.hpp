@@ -10,10 +10,10 @@
 namespace rollspec::io {
 
 struct CsvLayout {
-  bool found = false;        // false: no line is followed by numeric rows of its own width
-  std::size_t header = 0;    // index of the header among the lines given
-  char delimiter = ',';      // ',', ';', '\t', or 0: one column, nothing to split
-  std::size_t rows = 0;      // numeric rows of the header's width that follow it (among the lines given)
+  bool found = false;      // false: no line is followed by numeric rows of its own width
+  std::size_t header = 0;  // index of the header among the lines given
+  char delimiter = ',';    // ',', ';', '\t', or 0: one column, nothing to split
+  std::size_t rows = 0;    // numeric rows of the header's width that follow it (among the lines given)
 };
 
 // The lines (non-blank, non-comment, in file order) from the start of the data or after --skip-rows.

@@ -61,17 +61,20 @@ Printed printed(const std::string& text) {
 double parse_number(const std::string& cell, char delimiter, DecimalMark& dm, const std::string& path, int line,
                     const std::string& column, Printed* digits) {
   const auto refuse = [&](const std::string& why) {
-    return data_error(path + ":" + std::to_string(line) + ": column '" + clip(column) + "' value '" + clip(cell) + "' " + why);
+    return data_error(path + ":" + std::to_string(line) + ": column '" + clip(column) + "' value '" + clip(cell) +
+                      "' " + why);
   };
   std::string text = cell;
   if (delimiter != ',') {
     const auto comma = cell.find(','), point = cell.find('.');
     if (comma != std::string::npos && point != std::string::npos)
-      throw refuse("holds both ',' and '.'; allowed: one decimal mark and no thousands separator, e.g. 1234,5 or 1234.5");
+      throw refuse(
+          "holds both ',' and '.'; allowed: one decimal mark and no thousands separator, e.g. 1234,5 or 1234.5");
     const char used = comma != std::string::npos ? ',' : point != std::string::npos ? '.' : 0;
     if (used != 0 && dm.mark != 0 && used != dm.mark)
-      throw refuse(std::string("has a decimal ") + mark_name(used) + ", but this file writes a decimal " + mark_name(dm.mark) +
-                   " (line " + std::to_string(dm.line) + ", column '" + clip(dm.column) + "'); allowed: one decimal mark in a file");
+      throw refuse(std::string("has a decimal ") + mark_name(used) + ", but this file writes a decimal " +
+                   mark_name(dm.mark) + " (line " + std::to_string(dm.line) + ", column '" + clip(dm.column) +
+                   "'); allowed: one decimal mark in a file");
     if (used != 0 && dm.mark == 0) dm = DecimalMark{used, line, column};
     if (used == ',') text[comma] = '.';
   }
@@ -101,7 +104,8 @@ std::size_t CsvTable::column_index(const std::string& name) const {
     if (columns[i] == name) return i;
   std::string found;
   for (const auto& c : columns) found += (found.empty() ? "" : ", ") + c;
-  throw data_error(file + ":" + std::to_string(header_line) + ": no column '" + clip(name) + "' in the header; columns found: " + clip(found));
+  throw data_error(file + ":" + std::to_string(header_line) + ": no column '" + clip(name) +
+                   "' in the header; columns found: " + clip(found));
 }
 
 namespace {
@@ -120,7 +124,8 @@ class LineReader {
       for (const char ch : line) {
         const auto u = static_cast<unsigned char>(ch);
         if ((u < 0x20 && ch != '\t' && ch != '\r') || u == 0x7f)
-          throw data_error(path_ + ":" + std::to_string(n_) + ": binary data (byte " + std::to_string(u) + "); expected CSV text");
+          throw data_error(path_ + ":" + std::to_string(n_) + ": binary data (byte " + std::to_string(u) +
+                           "); expected CSV text");
       }
       // Tabs may delimit cells, so only spaces and carriage returns are trimmed from the line itself.
       out = trim(line, " \r");
@@ -129,8 +134,9 @@ class LineReader {
     // getline stops on a read error, or a line it cannot hold in memory (bad_alloc is swallowed by the
     // stream), exactly as at the end of the file: only eof() tells them apart. Never drop the rest.
     if (!in_.eof() || in_.bad())
-      throw data_error(path_ + ":" + std::to_string(n_ + 1) + ": cannot read this line (a read error, or a line too long " +
-                       "to hold in memory); the data after it were not read; allowed: CSV text with lines of sensible length");
+      throw data_error(
+          path_ + ":" + std::to_string(n_ + 1) + ": cannot read this line (a read error, or a line too long " +
+          "to hold in memory); the data after it were not read; allowed: CSV text with lines of sensible length");
     return false;
   }
   int line() const { return n_; }
@@ -147,18 +153,20 @@ void read_header(CsvTable& t, const std::string& s, int n) {
   const auto cells = split_cells(s, t.delimiter);
   for (const auto& c : cells) {
     if (numeric_cell(c, t.delimiter != ','))  // a header of numbers is data without a header, decimal comma or not
-      throw data_error(path + ":" + std::to_string(n) + ": the first line must be a header naming the columns, found the number '" +
-                       clip(c) + "'");
+      throw data_error(path + ":" + std::to_string(n) +
+                       ": the first line must be a header naming the columns, found the number '" + clip(c) + "'");
     if (c.empty())
-      throw data_error(path + ":" + std::to_string(n) + ": empty column name in the header (" + delimiter_name(t.delimiter) +
+      throw data_error(path + ":" + std::to_string(n) + ": empty column name in the header (" +
+                       delimiter_name(t.delimiter) +
                        "-delimited); allowed: a name for every column, no trailing delimiter");
   }
   std::unordered_map<std::string, std::size_t> seen;  // linear: 300k columns must not take a minute
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const auto [it, fresh] = seen.emplace(cells[i], i);
     if (!fresh)
-      throw data_error(path + ":" + std::to_string(n) + ": column '" + clip(cells[i]) + "' appears twice in the header (columns " +
-                       std::to_string(it->second + 1) + " and " + std::to_string(i + 1) + "); each column name may appear once");
+      throw data_error(path + ":" + std::to_string(n) + ": column '" + clip(cells[i]) +
+                       "' appears twice in the header (columns " + std::to_string(it->second + 1) + " and " +
+                       std::to_string(i + 1) + "); each column name may appear once");
   }
   t.columns = cells;
   t.header_line = n;
@@ -171,9 +179,10 @@ void read_header(CsvTable& t, const std::string& s, int n) {
 void read_row(CsvTable& t, const std::string& s, int n, DecimalMark& mark) {
   const auto cells = split_cells(s, t.delimiter);
   if (cells.size() != t.columns.size())
-    throw data_error(t.file + ":" + std::to_string(n) + ": " + std::to_string(cells.size()) + " values, but the header names " +
-                     std::to_string(t.columns.size()) + " columns (" + delimiter_name(t.delimiter) +
-                     "-delimited, from the " + (t.layout_found ? "data rows" : "header") + "); allowed: one value per column");
+    throw data_error(t.file + ":" + std::to_string(n) + ": " + std::to_string(cells.size()) +
+                     " values, but the header names " + std::to_string(t.columns.size()) + " columns (" +
+                     delimiter_name(t.delimiter) + "-delimited, from the " + (t.layout_found ? "data rows" : "header") +
+                     "); allowed: one value per column");
   for (std::size_t c = 0; c < cells.size(); ++c) {
     Printed p;
     t.values[c].push_back(parse_number(cells[c], t.delimiter, mark, t.file, n, t.columns[c], &p));
@@ -202,7 +211,8 @@ CsvTable read_csv(const std::string& path, const CsvReadOptions& options) {
   for (long long k = 0; k < options.skip_rows; ++k)
     if (!reader.next(line, true))
       throw data_error(path + ": --skip-rows " + std::to_string(options.skip_rows) + " skips the whole file (" +
-                       std::to_string(reader.line()) + " lines); allowed: fewer lines than the file holds, then a header and data");
+                       std::to_string(reader.line()) +
+                       " lines); allowed: fewer lines than the file holds, then a header and data");
   std::vector<std::string> head;
   std::vector<int> head_lines;
   std::size_t bytes = 0;
@@ -228,7 +238,8 @@ CsvTable read_csv(const std::string& path, const CsvReadOptions& options) {
   for (std::size_t i = header + 1; i < head.size(); ++i) read_row(t, head[i], head_lines[i], mark);
   head.clear();
   while (reader.next(line)) read_row(t, line, reader.line(), mark);
-  if (t.lines.empty()) throw data_error(path + ": header but no data rows; expected at least one row of numbers after the header");
+  if (t.lines.empty())
+    throw data_error(path + ": header but no data rows; expected at least one row of numbers after the header");
   t.decimal_comma = mark.mark == ',';
   return t;
 }

@@ -14,15 +14,15 @@ namespace rollspec::io {
 
 struct CsvTable {
   std::string file;
-  std::vector<std::string> columns;          // header names, trimmed
-  std::vector<std::vector<double>> values;   // values[column][row]
-  std::vector<int> lines;                    // file line of each row
-  char delimiter = ',';                      // ',', ';', '\t', or 0: one column
-  bool decimal_comma = false;                // true if the numbers were written with a decimal comma
-  int header_line = 0;                       // file line of the header
-  std::string header_text;                   // the header line as written
-  int preamble_lines = 0;                    // lines skipped (found, not --skip-rows) before the header
-  bool layout_found = false;                 // find_header: the header and delimiter came from the data rows
+  std::vector<std::string> columns;         // header names, trimmed
+  std::vector<std::vector<double>> values;  // values[column][row]
+  std::vector<int> lines;                   // file line of each row
+  char delimiter = ',';                     // ',', ';', '\t', or 0: one column
+  bool decimal_comma = false;               // true if the numbers were written with a decimal comma
+  int header_line = 0;                      // file line of the header
+  std::string header_text;                  // the header line as written
+  int preamble_lines = 0;                   // lines skipped (found, not --skip-rows) before the header
+  bool layout_found = false;                // find_header: the header and delimiter came from the data rows
   // Printed precision of each column: most decimal places (fixed notation) and most significant digits
   // of any value; rounded time stamps are judged by them (time_column.hpp).
   std::vector<int> decimals, significant;

@@ -48,10 +48,12 @@ bool name_free_dimensions(hid_t file) {
       const hsize_t n = index.size();
       if (H5LTmake_dataset_double(file, scale.c_str(), 1, &n, index.data()) < 0 ||
           H5LTset_attribute_string(file, scale.c_str(), "units", "1") < 0 ||
-          H5LTset_attribute_string(file, scale.c_str(), "description", ("index along axis " + std::to_string(k) + " of " + base).c_str()) < 0)
+          H5LTset_attribute_string(file, scale.c_str(), "description",
+                                   ("index along axis " + std::to_string(k) + " of " + base).c_str()) < 0)
         return false;
       const Closer s{H5Dopen2(file, scale.c_str(), H5P_DEFAULT), H5Dclose};
-      if (s.id < 0 || H5DSset_scale(s.id, name.c_str()) < 0 || H5DSattach_scale(d.id, s.id, static_cast<unsigned>(k)) < 0)
+      if (s.id < 0 || H5DSset_scale(s.id, name.c_str()) < 0 ||
+          H5DSattach_scale(d.id, s.id, static_cast<unsigned>(k)) < 0)
         return false;
     }
   }

@@ -23,13 +23,26 @@ namespace {
 void close_id(hid_t id) {
   if (id < 0) return;
   switch (H5Iget_type(id)) {
-    case H5I_FILE: H5Fclose(id); break;
-    case H5I_GROUP: H5Gclose(id); break;
-    case H5I_DATASET: H5Dclose(id); break;
-    case H5I_DATASPACE: H5Sclose(id); break;
-    case H5I_DATATYPE: H5Tclose(id); break;
-    case H5I_ATTR: H5Aclose(id); break;
-    default: break;
+    case H5I_FILE:
+      H5Fclose(id);
+      break;
+    case H5I_GROUP:
+      H5Gclose(id);
+      break;
+    case H5I_DATASET:
+      H5Dclose(id);
+      break;
+    case H5I_DATASPACE:
+      H5Sclose(id);
+      break;
+    case H5I_DATATYPE:
+      H5Tclose(id);
+      break;
+    case H5I_ATTR:
+      H5Aclose(id);
+      break;
+    default:
+      break;
   }
 }
 
@@ -94,7 +107,9 @@ Hdf5Writer::Hdf5Writer(const std::string& final_path) : final_path_(final_path),
     std::remove(temp_path_.c_str());  // H5Fcreate may leave an empty file behind (a full disk)
     unregister_temp(temp_path_);
     throw cannot_create("cannot create output file '" + temp_path_ + "' (for " + final_path_ + ")" +
-                        (saved == ENOSPC ? ": no space left on device" : saved ? std::string(": ") + std::strerror(saved) : ""));
+                        (saved == ENOSPC ? ": no space left on device"
+                         : saved         ? std::string(": ") + std::strerror(saved)
+                                         : ""));
   }
 }
 
@@ -144,13 +159,15 @@ void Hdf5Writer::write_strings(const std::string& path, const std::vector<std::s
 
 void Hdf5Writer::make_scale(const std::string& scale, const std::string& name) {
   Hdf5Handle s = open_object(file_.get(), scale);
-  if (!s.valid() || H5DSset_scale(s.get(), name.c_str()) < 0) throw cannot_create(failure_reason("cannot make dimension scale " + scale + " in " + temp_path_));
+  if (!s.valid() || H5DSset_scale(s.get(), name.c_str()) < 0)
+    throw cannot_create(failure_reason("cannot make dimension scale " + scale + " in " + temp_path_));
 }
 
 void Hdf5Writer::attach_scale(const std::string& dataset, const std::string& scale, unsigned dim) {
   Hdf5Handle d = open_object(file_.get(), dataset), s = open_object(file_.get(), scale);
   if (!d.valid() || !s.valid() || H5DSattach_scale(d.get(), s.get(), dim) < 0)
-    throw cannot_create(failure_reason("cannot attach dimension scale " + scale + " to " + dataset + " in " + temp_path_));
+    throw cannot_create(
+        failure_reason("cannot attach dimension scale " + scale + " to " + dataset + " in " + temp_path_));
 }
 
 void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
@@ -185,27 +202,31 @@ void Hdf5Writer::attribute(const std::string& object, const std::string& name, s
 
 void Hdf5Writer::commit() {
   if (!name_free_dimensions(file_.get()))
-    throw cannot_create(failure_reason("cannot write " + final_path_ + " (naming the dimensions in " + temp_path_ + ")"));
+    throw cannot_create(
+        failure_reason("cannot write " + final_path_ + " (naming the dimensions in " + temp_path_ + ")"));
   errno = 0;
-  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) throw cannot_create(failure_reason("cannot write " + final_path_ + " (flushing " + temp_path_ + ")"));
+  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
+    throw cannot_create(failure_reason("cannot write " + final_path_ + " (flushing " + temp_path_ + ")"));
   const hid_t id = file_.get();
   file_.release();
-  if (H5Fclose(id) < 0) throw cannot_create(failure_reason("cannot write " + final_path_ + " (closing " + temp_path_ + ")"));
+  if (H5Fclose(id) < 0)
+    throw cannot_create(failure_reason("cannot write " + final_path_ + " (closing " + temp_path_ + ")"));
   // The data must be on disk before the rename makes them the result (a full disk or a crash
   // must not leave a complete-looking, empty file).
   const int fd = ::open(temp_path_.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0 || ::fsync(fd) != 0) {
     const int saved = errno;
     if (fd >= 0) ::close(fd);
-    throw cannot_create("cannot write " + final_path_ + " (syncing " + temp_path_ + "): " +
-                        (saved == ENOSPC ? "no space left on device" : std::strerror(saved)));
+    throw cannot_create("cannot write " + final_path_ + " (syncing " + temp_path_ +
+                        "): " + (saved == ENOSPC ? "no space left on device" : std::strerror(saved)));
   }
   ::close(fd);
   // Refuse to rename onto something that is no longer a regular file (it may have changed since
   // the output was checked).
   struct stat st {};
   if (::lstat(final_path_.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-    throw cannot_create("cannot create output file '" + final_path_ + "': it is no longer a regular file; nothing was replaced");
+    throw cannot_create("cannot create output file '" + final_path_ +
+                        "': it is no longer a regular file; nothing was replaced");
   std::error_code ec;
   std::filesystem::rename(temp_path_, final_path_, ec);
   if (ec) throw cannot_create("cannot rename " + temp_path_ + " to " + final_path_ + ": " + ec.message());
@@ -220,7 +241,8 @@ Hdf5Reader::Hdf5Reader(const std::string& path) : path_(path) {
     throw missing_input("cannot read '" + path + "': it is a directory; expected an HDF5 file");
   require_regular_input(path, "HDF5 file");
   if (!std::filesystem::is_regular_file(path, ec)) throw missing_input("cannot open '" + path + "': no such file");
-  if (H5Fis_hdf5(path.c_str()) <= 0) throw data_error(path + ": not an HDF5 file (or truncated); expected an HDF5 file written by rollspec");
+  if (H5Fis_hdf5(path.c_str()) <= 0)
+    throw data_error(path + ": not an HDF5 file (or truncated); expected an HDF5 file written by rollspec");
   file_ = Hdf5Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (!file_.valid()) throw data_error(path + ": cannot open as HDF5 (truncated or damaged)");
 }
@@ -235,9 +257,11 @@ bool Hdf5Reader::exists(const std::string& object) const {
 }
 
 std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std::size_t>* dims) const {
-  if (!exists(dataset)) throw data_error(path_ + ": no dataset " + dataset + "; expected it in a complete rollspec file");
+  if (!exists(dataset))
+    throw data_error(path_ + ": no dataset " + dataset + "; expected it in a complete rollspec file");
   int rank = 0;
-  if (H5LTget_dataset_ndims(file_.get(), dataset.c_str(), &rank) < 0) throw data_error(path_ + ": cannot read " + dataset);
+  if (H5LTget_dataset_ndims(file_.get(), dataset.c_str(), &rank) < 0)
+    throw data_error(path_ + ": cannot read " + dataset);
   std::vector<hsize_t> d(static_cast<std::size_t>(rank));
   H5T_class_t cls;
   std::size_t size = 0;
@@ -246,11 +270,11 @@ std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std
   // The size first: a 1e6 x 1e6 dataset must be refused, not attempted.
   double n_values = 1.0;
   for (auto v : d) n_values *= static_cast<double>(v);
-  if (n_values * sizeof(double) > available_memory())
-  {
+  if (n_values * sizeof(double) > available_memory()) {
     char buf[96];
     std::snprintf(buf, sizeof buf, " holds %.0f values (%.3g GiB)", n_values, n_values * 8.0 / 1073741824.0);
-    throw data_error(path_ + ": dataset " + dataset + buf + ", more than the memory available; allowed: a dataset that fits in memory");
+    throw data_error(path_ + ": dataset " + dataset + buf +
+                     ", more than the memory available; allowed: a dataset that fits in memory");
   }
   std::size_t n = 1;
   for (auto v : d) n *= v;
@@ -262,12 +286,13 @@ std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std
 }
 
 std::vector<std::string> Hdf5Reader::read_strings(const std::string& dataset) const {
-  if (!exists(dataset)) throw data_error(path_ + ": no dataset " + dataset + "; expected it in a complete rollspec file");
+  if (!exists(dataset))
+    throw data_error(path_ + ": no dataset " + dataset + "; expected it in a complete rollspec file");
   const Hdf5Handle set(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
   const Hdf5Handle ftype(set.valid() ? H5Dget_type(set.get()) : -1);
   const Hdf5Handle space(set.valid() ? H5Dget_space(set.get()) : -1);
-  if (!ftype.valid() || !space.valid() || H5Tget_class(ftype.get()) != H5T_STRING || H5Tis_variable_str(ftype.get()) <= 0 ||
-      H5Sget_simple_extent_ndims(space.get()) != 1)
+  if (!ftype.valid() || !space.valid() || H5Tget_class(ftype.get()) != H5T_STRING ||
+      H5Tis_variable_str(ftype.get()) <= 0 || H5Sget_simple_extent_ndims(space.get()) != 1)
     throw data_error(path_ + ": dataset " + dataset + " is not a list of variable-length strings");
   hsize_t n = 0;
   H5Sget_simple_extent_dims(space.get(), &n, nullptr);
@@ -331,7 +356,8 @@ double Hdf5Reader::double_attribute(const std::string& object, const std::string
   if (n != 1 || !ftype.valid() || (H5Tget_class(ftype.get()) != H5T_FLOAT && H5Tget_class(ftype.get()) != H5T_INTEGER))
     throw data_error(path_ + ": attribute " + object + "@" + name + " is not one number");
   double v = 0.0;
-  if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0) throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
+  if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0)
+    throw data_error(path_ + ": cannot read attribute " + object + "@" + name);
   return v;
 }
 

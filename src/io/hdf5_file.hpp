@@ -50,9 +50,10 @@ class Hdf5Writer {
   Hdf5Writer(const Hdf5Writer&) = delete;
   Hdf5Writer& operator=(const Hdf5Writer&) = delete;
 
-  void write(const std::string& path, const std::vector<std::size_t>& dims, const double* data, const std::string& units,
-             const std::string& description = "");
-  void write_strings(const std::string& path, const std::vector<std::string>& values, const std::string& description = "");
+  void write(const std::string& path, const std::vector<std::size_t>& dims, const double* data,
+             const std::string& units, const std::string& description = "");
+  void write_strings(const std::string& path, const std::vector<std::string>& values,
+                     const std::string& description = "");
   // Makes dataset `scale` a dimension scale named `name` and attaches it to dimension `dim` of `dataset`.
   void make_scale(const std::string& scale, const std::string& name);
   void attach_scale(const std::string& dataset, const std::string& scale, unsigned dim);

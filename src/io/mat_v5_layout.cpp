@@ -20,11 +20,25 @@ using Bytes = std::vector<unsigned char>;
 constexpr std::uint32_t kMiMatrix = 14, kMiCompressed = 15;
 std::size_t type_size(std::uint32_t type) {
   switch (type) {
-    case 1: case 2: case 16: return 1;             // miINT8, miUINT8, miUTF8
-    case 3: case 4: case 17: return 2;             // miINT16, miUINT16, miUTF16
-    case 5: case 6: case 7: case 18: return 4;     // miINT32, miUINT32, miSINGLE, miUTF32
-    case 9: case 12: case 13: return 8;            // miDOUBLE, miINT64, miUINT64
-    default: return 0;
+    case 1:
+    case 2:
+    case 16:
+      return 1;  // miINT8, miUINT8, miUTF8
+    case 3:
+    case 4:
+    case 17:
+      return 2;  // miINT16, miUINT16, miUTF16
+    case 5:
+    case 6:
+    case 7:
+    case 18:
+      return 4;  // miINT32, miUINT32, miSINGLE, miUTF32
+    case 9:
+    case 12:
+    case 13:
+      return 8;  // miDOUBLE, miINT64, miUINT64
+    default:
+      return 0;
   }
 }
 
@@ -44,13 +58,14 @@ struct Reader {
 
 struct Element {
   std::uint32_t type = 0;
-  std::size_t size = 0;   // bytes of data
-  std::size_t data = 0;   // offset of the data
-  std::size_t next = 0;   // offset of the next element (8-byte aligned, or packed for small elements)
+  std::size_t size = 0;  // bytes of data
+  std::size_t data = 0;  // offset of the data
+  std::size_t next = 0;  // offset of the next element (8-byte aligned, or packed for small elements)
 };
 
 Element element_at(const Reader& r, std::size_t at, std::size_t end) {
-  if (at + 8 > end) r.damaged("a data element's tag at byte " + std::to_string(at) + " runs past the end of its container");
+  if (at + 8 > end)
+    r.damaged("a data element's tag at byte " + std::to_string(at) + " runs past the end of its container");
   Element e;
   const std::uint32_t first = r.u32(at);
   if (first >> 16) {  // small data element: size in the upper half, data in the tag's second word
@@ -58,7 +73,8 @@ Element element_at(const Reader& r, std::size_t at, std::size_t end) {
     e.size = first >> 16;
     e.data = at + 4;
     e.next = at + 8;
-    if (e.size > 4) r.damaged("a small data element at byte " + std::to_string(at) + " claims " + std::to_string(e.size) + " bytes");
+    if (e.size > 4)
+      r.damaged("a small data element at byte " + std::to_string(at) + " claims " + std::to_string(e.size) + " bytes");
     return e;
   }
   e.type = first;
@@ -97,8 +113,9 @@ void check_matrix(const Reader& r, const Element& m) {
     const std::size_t size = type_size(d.type);
     if (size == 0) r.damaged("variable '" + var + "' stores data of unknown type " + std::to_string(d.type));
     if (d.size != numel * size)
-      throw data_error(r.path + ": variable '" + var + "' declares " + shape + " = " + std::to_string(numel) + " elements but stores " +
-                       std::to_string(d.size / size) + (d.size % size ? " and a fraction" : "") +
+      throw data_error(r.path + ": variable '" + var + "' declares " + shape + " = " + std::to_string(numel) +
+                       " elements but stores " + std::to_string(d.size / size) +
+                       (d.size % size ? " and a fraction" : "") +
                        "; the .mat file is damaged; allowed: dimensions that match the stored data");
     at = d.next;
   }
@@ -120,8 +137,9 @@ Bytes inflate_element(const Reader& r, const Element& e) {
     if (rc == Z_BUF_ERROR && z.avail_in == 0) break;  // input ends before the stream does
   }
   inflateEnd(&z);
-  if (rc != Z_STREAM_END) r.damaged("a compressed variable at byte " + std::to_string(e.data - 8) + " does not decompress (zlib " +
-                                    std::to_string(rc) + ")");
+  if (rc != Z_STREAM_END)
+    r.damaged("a compressed variable at byte " + std::to_string(e.data - 8) + " does not decompress (zlib " +
+              std::to_string(rc) + ")");
   return out;
 }
 

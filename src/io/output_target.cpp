@@ -57,7 +57,8 @@ bool is_rollspec_hdf5(const std::string& path, const std::string& filetype) {
 
 std::string check_output_target(const OutputTarget& t) {
   const std::string& out = t.path;
-  struct stat lst {}, st {};
+  struct stat lst {
+  }, st{};
   if (::lstat(out.c_str(), &lst) != 0) {
     if (t.clean_stale) remove_stale_temps(out);
     return out;  // nothing there: created fresh
@@ -70,7 +71,8 @@ std::string check_output_target(const OutputTarget& t) {
     throw cannot_create("cannot create output file '" + out + "' (" + t.option + "): it is " +
                         (link ? std::string("a symbolic link to ") : std::string()) + file_kind(st.st_mode) +
                         "; rollspec writes regular files only and never replaces a directory, device, FIFO or "
-                        "socket; choose another " + t.option);
+                        "socket; choose another " +
+                        t.option);
   std::error_code ec;
   for (const auto& in : t.inputs) {
     if (in.empty() || !fs::exists(in, ec)) continue;
@@ -81,7 +83,8 @@ std::string check_output_target(const OutputTarget& t) {
   const bool same_kind = !t.check_kind || t.kind == kPsdCsvKind ? is_psd_csv(out) : is_rollspec_hdf5(out, t.kind);
   if (t.check_kind && !same_kind && !t.force && !(t.replace_damaged_hdf5 && is_damaged_hdf5(out)))
     throw cannot_create("output file '" + out + "' (" + t.option + ") exists and is not " + kind_description(t.kind) +
-                        "; refusing to replace it; choose another " + t.option + (t.option.rfind("--", 0) == 0 ? ", or add --force to replace it" : ""));
+                        "; refusing to replace it; choose another " + t.option +
+                        (t.option.rfind("--", 0) == 0 ? ", or add --force to replace it" : ""));
   const std::string target = link ? fs::canonical(out, ec).string() : out;
   if (ec) throw cannot_create("cannot resolve the symbolic link '" + out + "': " + ec.message());
   if (t.clean_stale) remove_stale_temps(target);

@@ -20,13 +20,13 @@ constexpr const char* kPsdCsvMarker = "# rollspec-psd-csv";
 
 struct OutputTarget {
   OutputTarget(std::string p, std::string k) : path(std::move(p)), kind(std::move(k)) {}
-  std::string path;          // the path as the user gave it
-  std::string kind;          // HDF5 filetype (e.g. "rollspec-result") or kPsdCsvKind
+  std::string path;  // the path as the user gave it
+  std::string kind;  // HDF5 filetype (e.g. "rollspec-result") or kPsdCsvKind
   std::string option = "--out";
-  bool force = false;        // replace any existing regular file
+  bool force = false;               // replace any existing regular file
   std::vector<std::string> inputs;  // files the run reads
-  bool check_kind = true;    // false: only the checks that never depend on the file's contents
-  bool clean_stale = true;   // remove stale temporaries (one process only, e.g. MPI rank 0)
+  bool check_kind = true;           // false: only the checks that never depend on the file's contents
+  bool clean_stale = true;          // remove stale temporaries (one process only, e.g. MPI rank 0)
   // An HDF5 file that HDF5 cannot open (a damaged rollspec table at its automatic name) may be
   // replaced; anything else of another kind still needs force.
   bool replace_damaged_hdf5 = false;

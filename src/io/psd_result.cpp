@@ -46,9 +46,12 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   }
   write_frequency_scale(w, "/psd", e.frequency);
   write_sensor_scale(w, "/psd", e.sensors);
-  w.write("/psd/mean", {ns, nf}, e.mean.data(), e.units, "ensemble mean of the one-sided Welch PSD of the " + e.quantity);
-  w.write("/psd/ci_lower", {ns, nf}, lo.data(), e.units, "lower bound of the mean's confidence interval (from the realisations' scatter)");
-  w.write("/psd/ci_upper", {ns, nf}, hi.data(), e.units, "upper bound of the mean's confidence interval (from the realisations' scatter)");
+  w.write("/psd/mean", {ns, nf}, e.mean.data(), e.units,
+          "ensemble mean of the one-sided Welch PSD of the " + e.quantity);
+  w.write("/psd/ci_lower", {ns, nf}, lo.data(), e.units,
+          "lower bound of the mean's confidence interval (from the realisations' scatter)");
+  w.write("/psd/ci_upper", {ns, nf}, hi.data(), e.units,
+          "upper bound of the mean's confidence interval (from the realisations' scatter)");
   w.write("/psd/std", {ns, nf}, e.std_dev.data(), e.units, "ensemble standard deviation of one realisation's PSD");
   w.write("/psd/degrees_of_freedom", {ns, nf}, nu.data(), "1",
           "chi-square dof of each bin's mean from the realisations' scatter, 2 K mean^2 / std^2 (0: no interval)");
@@ -91,9 +94,12 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   w.write("/bands/upper_frequency", {nb}, upper.data(), "Hz", "upper band edge");
   const std::string db = "dB re 1 " + e.units;
   w.write("/bands/level_db", {ns, nb}, level.data(), db, "band-averaged PSD level");
-  w.write("/bands/ci_lower_db", {ns, nb}, cil.data(), db, "lower bound of the band level's confidence interval (from the realisations' scatter)");
-  w.write("/bands/ci_upper_db", {ns, nb}, ciu.data(), db, "upper bound of the band level's confidence interval (from the realisations' scatter)");
-  w.write("/bands/std", {ns, nb}, sd.data(), e.units, "ensemble standard deviation of one realisation's band-averaged PSD");
+  w.write("/bands/ci_lower_db", {ns, nb}, cil.data(), db,
+          "lower bound of the band level's confidence interval (from the realisations' scatter)");
+  w.write("/bands/ci_upper_db", {ns, nb}, ciu.data(), db,
+          "upper bound of the band level's confidence interval (from the realisations' scatter)");
+  w.write("/bands/std", {ns, nb}, sd.data(), e.units,
+          "ensemble standard deviation of one realisation's band-averaged PSD");
   w.write("/bands/log_std", {ns, nb}, log_sd.data(), "1",
           "ensemble standard deviation of the natural log of one realisation's band-averaged PSD");
   w.write("/bands/degrees_of_freedom", {ns, nb}, dof.data(), "1",

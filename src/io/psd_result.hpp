@@ -21,14 +21,14 @@ namespace rollspec::io {
 class Hdf5Writer;
 
 struct PsdEnsemble {
-  std::vector<double> frequency;       // Hz, uniform from 0
-  std::vector<std::string> sensors;    // rows
-  std::vector<double> mean;            // rows x frequency
-  std::vector<double> std_dev;         // ensemble standard deviation of one realisation's PSD
+  std::vector<double> frequency;                // Hz, uniform from 0
+  std::vector<std::string> sensors;             // rows
+  std::vector<double> mean;                     // rows x frequency
+  std::vector<double> std_dev;                  // ensemble standard deviation of one realisation's PSD
   std::vector<spectral::Scatter> scatter;       // rows x frequency: moments of x and ln x
   std::vector<spectral::Scatter> band_scatter;  // rows x bands: of the realisations' band averages
   std::uint64_t realisations = 0;
-  double welch_dof = 0.0;              // K x the Welch dof (D-16) of a stationary record: information only
+  double welch_dof = 0.0;  // K x the Welch dof (D-16) of a stationary record: information only
   double window_enbw_bins = 1.5;
   double confidence = 0.95;
   double band_min = 0.0, band_max = 0.0;  // Hz

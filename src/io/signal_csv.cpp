@@ -12,7 +12,8 @@ namespace rollspec::io {
 namespace {
 std::string format_of(const CsvTable& t) {
   if (t.delimiter == 0) return "CSV text (one column, decimal comma)";
-  return std::string("CSV text (") + delimiter_name(t.delimiter) + "-delimited" + (t.decimal_comma ? ", decimal comma)" : ")");
+  return std::string("CSV text (") + delimiter_name(t.delimiter) + "-delimited" +
+         (t.decimal_comma ? ", decimal comma)" : ")");
 }
 
 std::string column_list(const CsvTable& t) {
@@ -28,15 +29,16 @@ std::size_t find_time_column(const CsvTable& t, const std::string& path, const s
   if (!asked.empty()) {
     for (std::size_t c = 0; c < t.columns.size(); ++c)
       if (t.columns[c] == asked) return c;
-    throw usage_error("--time-column " + clip(asked) + ": no such column in " + path + "; columns found: " + column_list(t) +
-                      "; allowed: one of them, or none");
+    throw usage_error("--time-column " + clip(asked) + ": no such column in " + path +
+                      "; columns found: " + column_list(t) + "; allowed: one of them, or none");
   }
   std::size_t time = none;
   for (std::size_t c = 0; c < t.columns.size(); ++c) {
     if (time_column_unit(t.columns[c]) == 0.0) continue;
     if (time < none)
-      throw data_error(path + ":" + std::to_string(t.header_line) + ": two time columns, '" + clip(t.columns[time]) + "' and '" +
-                       clip(t.columns[c]) + "'; allowed: at most one column named like a time (t, time, time_s, Time (s), t [ms], ...), " +
+      throw data_error(path + ":" + std::to_string(t.header_line) + ": two time columns, '" + clip(t.columns[time]) +
+                       "' and '" + clip(t.columns[c]) +
+                       "'; allowed: at most one column named like a time (t, time, time_s, Time (s), t [ms], ...), " +
                        "or --time-column NAME to pick one (the other is then a channel)");
     time = c;
   }
@@ -46,9 +48,12 @@ std::size_t find_time_column(const CsvTable& t, const std::string& path, const s
 void layout_notes(SignalTable& s, const CsvTable& t) {
   const std::string f = s.file + ": ";
   if (t.delimiter == 0)
-    s.notes.push_back(f + "one column with a decimal comma (every row holds one ',' and the header none), not two comma-delimited columns");
+    s.notes.push_back(f +
+                      "one column with a decimal comma (every row holds one ',' and the header none), not two "
+                      "comma-delimited columns");
   else
-    s.notes.push_back(f + delimiter_name(t.delimiter) + "-delimited (from the " + (t.layout_found ? "data rows" : "header line") + ")" +
+    s.notes.push_back(f + delimiter_name(t.delimiter) + "-delimited (from the " +
+                      (t.layout_found ? "data rows" : "header line") + ")" +
                       (t.decimal_comma ? ", decimal comma" : ""));
   if (t.preamble_lines > 0)
     s.notes.push_back(f + "skipped " + counted(static_cast<unsigned long long>(t.preamble_lines), "preamble line") +
@@ -59,18 +64,21 @@ void layout_notes(SignalTable& s, const CsvTable& t) {
 // The rate from the time column, or --fs over it (said, with what the stamps say).
 void rate_from_column(SignalTable& s, const CsvTable& t, std::size_t time, const SignalRequest& r) {
   const double unit = time_column_unit(t.columns[time]);
-  const double seconds = unit == 0.0 ? 1.0 : unit;  // a column picked by --time-column with no unit in its name: seconds
+  const double seconds =
+      unit == 0.0 ? 1.0 : unit;  // a column picked by --time-column with no unit in its name: seconds
   const StampDigits digits{t.decimals[time], t.significant[time]};
   const auto where = [&](std::size_t row) { return t.where(row); };
   const std::string f = s.file + ": ";
   if (r.fs > 0.0) {
     std::string stamps;
     try {
-      stamps = "its stamps imply " + rate_text(rate_from_time_stamps(t.values[time], seconds, s.time_column, where, digits)) + " Hz";
+      stamps = "its stamps imply " +
+               rate_text(rate_from_time_stamps(t.values[time], seconds, s.time_column, where, digits)) + " Hz";
     } catch (const UserError& e) {
       stamps = "its stamps are refused: " + std::string(e.what());
     }
-    s.notes.push_back(f + "--fs " + rate_text(r.fs) + " Hz overrides the time column '" + s.time_column + "' (" + clip(stamps, 300) + ")");
+    s.notes.push_back(f + "--fs " + rate_text(r.fs) + " Hz overrides the time column '" + s.time_column + "' (" +
+                      clip(stamps, 300) + ")");
     return;  // sample_rate 0: prepare_signal takes --fs
   }
   try {
@@ -83,7 +91,9 @@ void rate_from_column(SignalTable& s, const CsvTable& t, std::size_t time, const
   }
   s.rate_source = "time column '" + s.time_column + "'";
   s.notes.push_back(f + "sample rate " + rate_text(s.sample_rate) + " Hz from the time column '" + s.time_column + "'" +
-                    (unit == 0.0 ? " (--time-column; its name gives no unit: seconds)" : unit == 1.0 ? " (seconds)" : " (milliseconds)") +
+                    (unit == 0.0   ? " (--time-column; its name gives no unit: seconds)"
+                     : unit == 1.0 ? " (seconds)"
+                                   : " (milliseconds)") +
                     "; --fs HZ overrides it");
 }
 }  // namespace

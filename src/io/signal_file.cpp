@@ -29,9 +29,11 @@ Family by_content(const std::string& head) {
 
 Family by_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".mat") return Family::mat;
-  for (const char* e : {".wav", ".wave", ".flac", ".aif", ".aiff", ".aifc", ".au", ".snd", ".ogg", ".oga", ".caf", ".w64", ".rf64"})
+  for (const char* e :
+       {".wav", ".wave", ".flac", ".aif", ".aiff", ".aifc", ".au", ".snd", ".ogg", ".oga", ".caf", ".w64", ".rf64"})
     if (ext == e) return Family::sound;
   return Family::text;
 }
@@ -40,7 +42,8 @@ Family by_extension(const std::string& path) {
 SignalTable read_signal(const std::string& path, const SignalRequest& request) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw missing_input("cannot read '" + path + "': it is a directory; expected a signal file (CSV/text, WAV/FLAC, .mat)");
+    throw missing_input("cannot read '" + path +
+                        "': it is a directory; expected a signal file (CSV/text, WAV/FLAC, .mat)");
   require_regular_input(path, "signal file (CSV file, sound file or .mat)");
   errno = 0;
   std::ifstream in(path, std::ios::binary);
@@ -55,13 +58,17 @@ SignalTable read_signal(const std::string& path, const SignalRequest& request) {
     throw usage_error("--skip-rows: '" + path + "' is a " + (family == Family::sound ? "sound" : "MATLAB .mat") +
                       " file, not CSV text; allowed: --skip-rows with CSV/text files only");
   if (family == Family::sound && !request.time_column.empty() && request.time_column != "none")
-    throw usage_error("--time-column " + clip(request.time_column) + ": '" + path +
-                      "' is a sound file (its rate is in the header, it has no time column); allowed: --time-column with "
-                      "CSV/text and .mat files");
+    throw usage_error(
+        "--time-column " + clip(request.time_column) + ": '" + path +
+        "' is a sound file (its rate is in the header, it has no time column); allowed: --time-column with "
+        "CSV/text and .mat files");
   switch (family) {
-    case Family::sound: return read_sound_signal(path);
-    case Family::mat: return read_mat_signal(path, request);
-    case Family::text: break;
+    case Family::sound:
+      return read_sound_signal(path);
+    case Family::mat:
+      return read_mat_signal(path, request);
+    case Family::text:
+      break;
   }
   return read_csv_signal(path, request);
 }

@@ -13,17 +13,17 @@ namespace rollspec::io {
 
 struct SignalTable {
   std::string file;
-  std::string format;                        // for messages: "CSV text (semicolon-delimited, decimal comma)"
-  std::vector<std::string> channels;         // names, file order
-  std::vector<std::string> groups;           // what each channel came from: the .mat variable of a matrix column, else its name
-  std::vector<std::vector<double>> values;   // values[channel][sample]; .mat channels may differ in length until picked
-  double sample_rate = 0.0;                  // Hz; 0 if the file does not say
-  std::string rate_source;                   // where sample_rate came from: "time column 'time_s'", "the file header"
-  std::string time_column;                   // the time column or variable, never a channel ("" if none)
-  std::size_t time_samples = 0;              // its length (a .mat time vector must match the channels)
-  std::string unit;                          // unit of values: "as stored", "full scale" (integer PCM), then "m/s^2"
+  std::string format;                 // for messages: "CSV text (semicolon-delimited, decimal comma)"
+  std::vector<std::string> channels;  // names, file order
+  std::vector<std::string> groups;  // what each channel came from: the .mat variable of a matrix column, else its name
+  std::vector<std::vector<double>> values;  // values[channel][sample]; .mat channels may differ in length until picked
+  double sample_rate = 0.0;                 // Hz; 0 if the file does not say
+  std::string rate_source;                  // where sample_rate came from: "time column 'time_s'", "the file header"
+  std::string time_column;                  // the time column or variable, never a channel ("" if none)
+  std::size_t time_samples = 0;             // its length (a .mat time vector must match the channels)
+  std::string unit;                         // unit of values: "as stored", "full scale" (integer PCM), then "m/s^2"
   std::vector<std::pair<std::string, std::string>> skipped;  // .mat variables that are not channels, and why
-  std::vector<std::string> notes;            // choices made without being asked (delimiter, header, rate), one line each
+  std::vector<std::string> notes;  // choices made without being asked (delimiter, header, rate), one line each
 
   std::size_t samples() const { return values.empty() ? 0 : values.front().size(); }
 };

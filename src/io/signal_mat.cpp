@@ -32,8 +32,10 @@ void matio_log(int level, char* message) {
   bool blank = false;
   for (const char* c = message; *c != '\0'; ++c) {
     const bool space = std::isspace(static_cast<unsigned char>(*c)) != 0;
-    if (!space) matio_messages += *c;
-    else if (!blank) matio_messages += ' ';
+    if (!space)
+      matio_messages += *c;
+    else if (!blank)
+      matio_messages += ' ';
     blank = space;
   }
 }
@@ -53,7 +55,8 @@ struct VarFree {
 
 bool is_rate_name(std::string n) {
   std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return n == "fs" || n == "fs_hz" || n == "sample_rate" || n == "sample_rate_hz" || n == "sampling_rate" || n == "samplerate";
+  return n == "fs" || n == "fs_hz" || n == "sample_rate" || n == "sample_rate_hz" || n == "sampling_rate" ||
+         n == "samplerate";
 }
 
 bool is_numeric(matio_classes c) { return c >= MAT_C_DOUBLE && c <= MAT_C_UINT64; }
@@ -75,13 +78,22 @@ struct VarInfo {
 // Why a variable is not numeric data at all ("" if it is a real numeric 2-D array with elements).
 std::string not_numeric(const VarInfo& v) {
   switch (v.cls) {
-    case MAT_C_CELL: return "a cell array";
-    case MAT_C_STRUCT: return "a struct";
-    case MAT_C_OBJECT: case MAT_C_OPAQUE: case MAT_C_FUNCTION: return "an object";
-    case MAT_C_CHAR: return "text (char)";
-    case MAT_C_SPARSE: return "sparse";
-    case MAT_C_EMPTY: return "empty";
-    default: break;
+    case MAT_C_CELL:
+      return "a cell array";
+    case MAT_C_STRUCT:
+      return "a struct";
+    case MAT_C_OBJECT:
+    case MAT_C_OPAQUE:
+    case MAT_C_FUNCTION:
+      return "an object";
+    case MAT_C_CHAR:
+      return "text (char)";
+    case MAT_C_SPARSE:
+      return "sparse";
+    case MAT_C_EMPTY:
+      return "empty";
+    default:
+      break;
   }
   if (!is_numeric(v.cls)) return "not numeric";
   if (v.complex) return "complex";
@@ -102,22 +114,43 @@ std::vector<double> read_values(mat_t* m, const SignalTable& s, const VarInfo& v
   const std::unique_ptr<matvar_t, VarFree> var(Mat_VarRead(m, v.name.c_str()));
   const std::size_t n = v.rows() * v.cols();
   if (!var || var->data == nullptr)
-    throw data_error(s.file + ": cannot read variable '" + v.name + "'" + matio_says() + "; allowed: an undamaged .mat file");
+    throw data_error(s.file + ": cannot read variable '" + v.name + "'" + matio_says() +
+                     "; allowed: an undamaged .mat file");
   std::vector<double> out;
   switch (var->data_type) {
-    case MAT_T_DOUBLE: copy_as_double<double>(var->data, n, out); break;
-    case MAT_T_SINGLE: copy_as_double<float>(var->data, n, out); break;
-    case MAT_T_INT8: copy_as_double<std::int8_t>(var->data, n, out); break;
-    case MAT_T_UINT8: copy_as_double<std::uint8_t>(var->data, n, out); break;
-    case MAT_T_INT16: copy_as_double<std::int16_t>(var->data, n, out); break;
-    case MAT_T_UINT16: copy_as_double<std::uint16_t>(var->data, n, out); break;
-    case MAT_T_INT32: copy_as_double<std::int32_t>(var->data, n, out); break;
-    case MAT_T_UINT32: copy_as_double<std::uint32_t>(var->data, n, out); break;
-    case MAT_T_INT64: copy_as_double<std::int64_t>(var->data, n, out); break;
-    case MAT_T_UINT64: copy_as_double<std::uint64_t>(var->data, n, out); break;
+    case MAT_T_DOUBLE:
+      copy_as_double<double>(var->data, n, out);
+      break;
+    case MAT_T_SINGLE:
+      copy_as_double<float>(var->data, n, out);
+      break;
+    case MAT_T_INT8:
+      copy_as_double<std::int8_t>(var->data, n, out);
+      break;
+    case MAT_T_UINT8:
+      copy_as_double<std::uint8_t>(var->data, n, out);
+      break;
+    case MAT_T_INT16:
+      copy_as_double<std::int16_t>(var->data, n, out);
+      break;
+    case MAT_T_UINT16:
+      copy_as_double<std::uint16_t>(var->data, n, out);
+      break;
+    case MAT_T_INT32:
+      copy_as_double<std::int32_t>(var->data, n, out);
+      break;
+    case MAT_T_UINT32:
+      copy_as_double<std::uint32_t>(var->data, n, out);
+      break;
+    case MAT_T_INT64:
+      copy_as_double<std::int64_t>(var->data, n, out);
+      break;
+    case MAT_T_UINT64:
+      copy_as_double<std::uint64_t>(var->data, n, out);
+      break;
     default:
-      throw data_error(s.file + ": variable '" + v.name + "' holds data of matio type " + std::to_string(var->data_type) +
-                       "; allowed: double, single or integer data");
+      throw data_error(s.file + ": variable '" + v.name + "' holds data of matio type " +
+                       std::to_string(var->data_type) + "; allowed: double, single or integer data");
   }
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(out[i]))
@@ -128,10 +161,14 @@ std::vector<double> read_values(mat_t* m, const SignalTable& s, const VarInfo& v
 
 std::string version_name(mat_ft v) {
   switch (v) {
-    case MAT_FT_MAT73: return "MATLAB v7.3 .mat (HDF5)";
-    case MAT_FT_MAT5: return "MATLAB v5 .mat";
-    case MAT_FT_MAT4: return "MATLAB v4 .mat";
-    default: return "MATLAB .mat";
+    case MAT_FT_MAT73:
+      return "MATLAB v7.3 .mat (HDF5)";
+    case MAT_FT_MAT5:
+      return "MATLAB v5 .mat";
+    case MAT_FT_MAT4:
+      return "MATLAB v4 .mat";
+    default:
+      return "MATLAB .mat";
   }
 }
 }  // namespace
@@ -162,7 +199,8 @@ SignalTable read_mat_signal(const std::string& path, const SignalRequest& reques
     for (int d = 0; d < v->rank; ++d) info.dims.push_back(v->dims[d]);
     vars.push_back(std::move(info));
   }
-  if (!matio_messages.empty()) throw data_error(path + ": cannot read the variables of this " + s.format + matio_says());
+  if (!matio_messages.empty())
+    throw data_error(path + ": cannot read the variables of this " + s.format + matio_says());
 
   std::string rate_var;
   for (const auto& v : vars) {
@@ -172,9 +210,11 @@ SignalTable read_mat_signal(const std::string& path, const SignalRequest& reques
     // A variable named like a rate or a time that cannot be one is listed, not fatal: the file may
     // still be read with --fs, and matio cannot rename variables.
     if (is_rate_name(v.name) && !scalar) {
-      s.skipped.emplace_back(v.name, "named like a sample rate, but " + (why.empty() ? v.shape() : why) + ", not a scalar");
+      s.skipped.emplace_back(v.name,
+                             "named like a sample rate, but " + (why.empty() ? v.shape() : why) + ", not a scalar");
     } else if (is_time(v.name) && !vector) {
-      s.skipped.emplace_back(v.name, "named like a time vector, but " + (why.empty() ? v.shape() : why) + ", not a vector");
+      s.skipped.emplace_back(v.name,
+                             "named like a time vector, but " + (why.empty() ? v.shape() : why) + ", not a vector");
     } else if (is_rate_name(v.name)) {
       const double fs = read_values(m.get(), s, v).front();
       if (!(fs > 0.0)) {
@@ -182,14 +222,15 @@ SignalTable read_mat_signal(const std::string& path, const SignalRequest& reques
         continue;
       }
       if (s.sample_rate > 0.0 && std::fabs(fs - s.sample_rate) > kRateTolerance * s.sample_rate)
-        throw data_error(path + ": variable '" + v.name + "' = " + rate_text(fs) + " Hz but variable '" + rate_var + "' = " +
-                         rate_text(s.sample_rate) + " Hz; allowed: one sample rate");
+        throw data_error(path + ": variable '" + v.name + "' = " + rate_text(fs) + " Hz but variable '" + rate_var +
+                         "' = " + rate_text(s.sample_rate) + " Hz; allowed: one sample rate");
       s.sample_rate = fs;
       rate_var = v.name;
       s.rate_source = "variable '" + v.name + "'";
     } else if (is_time(v.name)) {
       if (!s.time_column.empty())
-        throw data_error(path + ": two time variables, '" + s.time_column + "' and '" + v.name + "'; allowed: at most one");
+        throw data_error(path + ": two time variables, '" + s.time_column + "' and '" + v.name +
+                         "'; allowed: at most one");
       s.time_column = v.name;
     } else if (!why.empty()) {
       s.skipped.emplace_back(v.name, why);
@@ -200,8 +241,9 @@ SignalTable read_mat_signal(const std::string& path, const SignalRequest& reques
       s.groups.push_back(v.name);
       s.values.push_back(read_values(m.get(), s, v));
     } else if (v.cols() > v.rows()) {
-      s.skipped.emplace_back(v.name, "a " + v.shape() + " matrix, wider than tall: columns are channels and rows samples, "
-                                     "so it is probably transposed (store x.' in MATLAB, x.T in numpy)");
+      s.skipped.emplace_back(v.name, "a " + v.shape() +
+                                         " matrix, wider than tall: columns are channels and rows samples, "
+                                         "so it is probably transposed (store x.' in MATLAB, x.T in numpy)");
     } else {
       const auto all = read_values(m.get(), s, v);
       for (std::size_t c = 0; c < v.cols(); ++c) {
@@ -215,20 +257,22 @@ SignalTable read_mat_signal(const std::string& path, const SignalRequest& reques
   if (s.time_column.empty() && !request.time_column.empty() && request.time_column != "none") {
     std::string names;
     for (const auto& v : vars) names += (names.empty() ? "" : ", ") + v.name;
-    throw usage_error("--time-column " + clip(request.time_column) + ": no such vector variable in " + path + "; variables: " +
-                      clip(names, 400) + "; allowed: a real numeric vector of time stamps, or none");
+    throw usage_error("--time-column " + clip(request.time_column) + ": no such vector variable in " + path +
+                      "; variables: " + clip(names, 400) + "; allowed: a real numeric vector of time stamps, or none");
   }
   if (!s.time_column.empty()) {
     const auto& tv = *std::find_if(vars.begin(), vars.end(), [&](const VarInfo& v) { return v.name == s.time_column; });
     const auto t = read_values(m.get(), s, tv);
     s.time_samples = t.size();
-    const double unit = time_column_unit(tv.name);  // a vector picked by --time-column with no unit in its name: seconds
+    const double unit =
+        time_column_unit(tv.name);  // a vector picked by --time-column with no unit in its name: seconds
     const double fs = rate_from_time_stamps(t, unit == 0.0 ? 1.0 : unit, tv.name, [&](std::size_t i) {
       return path + ": variable '" + tv.name + "' element " + std::to_string(i + 1);
     });
     if (s.sample_rate > 0.0 && std::fabs(fs - s.sample_rate) > kRateTolerance * s.sample_rate)
-      throw data_error(path + ": time variable '" + tv.name + "' gives " + rate_text(fs) + " Hz but variable '" + rate_var + "' = " +
-                       rate_text(s.sample_rate) + " Hz; allowed: one sample rate (within " + number_text(100 * kRateTolerance) + " %)");
+      throw data_error(path + ": time variable '" + tv.name + "' gives " + rate_text(fs) + " Hz but variable '" +
+                       rate_var + "' = " + rate_text(s.sample_rate) + " Hz; allowed: one sample rate (within " +
+                       number_text(100 * kRateTolerance) + " %)");
     if (s.sample_rate == 0.0) {
       s.sample_rate = fs;
       s.rate_source = "time variable '" + tv.name + "'";
@@ -238,8 +282,8 @@ SignalTable read_mat_signal(const std::string& path, const SignalRequest& reques
   for (std::size_t i = 0; i < s.channels.size(); ++i) {
     const auto [it, fresh] = seen.emplace(s.channels[i], i);
     if (!fresh)
-      throw data_error(path + ": channel name '" + s.channels[i] + "' comes from variables '" + s.groups[it->second] + "' and '" +
-                       s.groups[i] + "'; allowed: distinct names (a matrix x gives x_1, x_2, ...)");
+      throw data_error(path + ": channel name '" + s.channels[i] + "' comes from variables '" + s.groups[it->second] +
+                       "' and '" + s.groups[i] + "'; allowed: distinct names (a matrix x gives x_1, x_2, ...)");
   }
   return s;
 }

@@ -14,7 +14,8 @@ namespace {
 double unit_factor(const std::string& unit, const std::string& whole) {
   if (unit == "m/s2" || unit == "m/s^2") return 1.0;
   if (unit == "g") return kStandardGravity;
-  throw usage_error("--unit " + clip(whole) + (unit == whole ? "" : ": '" + clip(unit) + "'") + ": allowed: " + kSignalUnits);
+  throw usage_error("--unit " + clip(whole) + (unit == whole ? "" : ": '" + clip(unit) + "'") +
+                    ": allowed: " + kSignalUnits);
 }
 
 // --unit: one unit for every channel, or one per picked channel in their order ("g,m/s^2").
@@ -70,7 +71,8 @@ std::vector<std::string> requested_names(const SignalTable& s, const std::vector
     for (;;) {
       const auto comma = c.find(',', from);
       const std::string name = trim(c.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
-      if (name.empty()) throw usage_error("--column '" + clip(c) + "': an empty name; allowed: channel names, comma-separated");
+      if (name.empty())
+        throw usage_error("--column '" + clip(c) + "': an empty name; allowed: channel names, comma-separated");
       out.push_back(name);
       if (comma == std::string::npos) break;
       from = comma + 1;
@@ -102,12 +104,13 @@ std::vector<std::size_t> pick(const SignalTable& s, const std::vector<std::strin
         if (skip == name)
           throw data_error(s.file + ": --column " + clip(name) + ": variable '" + skip + "' is " + why +
                            "; allowed: a real numeric vector, or a matrix with one channel per column");
-      throw usage_error("--column " + clip(name) + ": no such channel in " + s.file + "; channels found: " + list(s.channels) +
-                        (s.skipped.empty() ? "" : "; not channels: " + skipped_list(s)));
+      throw usage_error("--column " + clip(name) + ": no such channel in " + s.file + "; channels found: " +
+                        list(s.channels) + (s.skipped.empty() ? "" : "; not channels: " + skipped_list(s)));
     }
     for (const auto i : match) {
       if (!taken.insert(i).second)
-        throw usage_error("--column " + clip(name) + ": channel '" + s.channels[i] + "' is picked twice; allowed: each channel once");
+        throw usage_error("--column " + clip(name) + ": channel '" + s.channels[i] +
+                          "' is picked twice; allowed: each channel once");
       picked.push_back(i);
     }
   }
@@ -118,19 +121,23 @@ std::vector<std::size_t> pick(const SignalTable& s, const std::vector<std::strin
 SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
   const std::vector<double> units = unit_factors(r.unit);
   if (!(r.scale > 0.0) || !std::isfinite(r.scale))
-    throw usage_error("--scale " + number_text(r.scale) + ": allowed: a finite number > 0 (physical units per file unit or per full scale)");
+    throw usage_error("--scale " + number_text(r.scale) +
+                      ": allowed: a finite number > 0 (physical units per file unit or per full scale)");
   SignalTable s = read_signal(path, r);
   // Integer PCM holds fractions of full scale, which is no physical unit: read as 1 g, a 50 g
   // recorder's data would come out 34 dB low without a word.
   if (s.unit == "full scale" && !r.scale_given)
-    throw usage_error(path + ": integer PCM (" + s.format + ") holds fractions of the recorder's full scale, not accelerations; " +
-                      "give --scale X, the value of full scale in --unit (a recorder whose full scale is 50 g: --scale 50 --unit g); " +
+    throw usage_error(path + ": integer PCM (" + s.format +
+                      ") holds fractions of the recorder's full scale, not accelerations; " +
+                      "give --scale X, the value of full scale in --unit (a recorder whose full scale is 50 g: --scale "
+                      "50 --unit g); " +
                       "float sound files are read as stored and need no --scale");
   if (s.channels.empty())
-    throw data_error(path + ": no channels in this " + s.format +
-                     (s.time_column.empty() ? "" : "; '" + s.time_column + "' is its time column") +
-                     (s.skipped.empty() ? "" : "; not channels: " + skipped_list(s)) +
-                     "; allowed: at least one numeric column (CSV), channel (sound file) or real numeric vector/matrix (.mat)");
+    throw data_error(
+        path + ": no channels in this " + s.format +
+        (s.time_column.empty() ? "" : "; '" + s.time_column + "' is its time column") +
+        (s.skipped.empty() ? "" : "; not channels: " + skipped_list(s)) +
+        "; allowed: at least one numeric column (CSV), channel (sound file) or real numeric vector/matrix (.mat)");
   const auto picked = pick(s, r.columns);
 
   SignalTable out;
@@ -146,8 +153,8 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
   }
   for (std::size_t c = 1; c < out.channels.size(); ++c)
     if (out.values[c].size() != out.values[0].size())
-      throw data_error(path + ": channel '" + out.channels[0] + "' has " + std::to_string(out.values[0].size()) + " samples but '" +
-                       out.channels[c] + "' " + std::to_string(out.values[c].size()) +
+      throw data_error(path + ": channel '" + out.channels[0] + "' has " + std::to_string(out.values[0].size()) +
+                       " samples but '" + out.channels[c] + "' " + std::to_string(out.values[c].size()) +
                        "; allowed: channels of one length (pick them with --column)");
   if (out.time_samples != 0 && out.time_samples != out.samples())
     throw data_error(path + ": time variable '" + out.time_column + "' has " + std::to_string(out.time_samples) +
@@ -156,8 +163,8 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
 
   if (r.fs > 0.0) {
     if (s.sample_rate > 0.0 && std::fabs(r.fs - s.sample_rate) > kRateTolerance * s.sample_rate)
-      throw usage_error("--fs " + rate_text(r.fs) + " Hz disagrees with " + path + ": " + rate_text(s.sample_rate) + " Hz from " +
-                        s.rate_source + "; allowed: an --fs within " + number_text(100 * kRateTolerance) +
+      throw usage_error("--fs " + rate_text(r.fs) + " Hz disagrees with " + path + ": " + rate_text(s.sample_rate) +
+                        " Hz from " + s.rate_source + "; allowed: an --fs within " + number_text(100 * kRateTolerance) +
                         " % of it, or no --fs (the file's rate is used)");
     out.sample_rate = r.fs;
     out.rate_source = "--fs";
@@ -165,7 +172,8 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
     out.sample_rate = s.sample_rate;
     out.rate_source = s.rate_source;
     if (s.time_column.empty() || s.rate_source.rfind("time column", 0) != 0)
-      out.notes.push_back(path + ": sample rate " + rate_text(s.sample_rate) + " Hz from " + s.rate_source + "; --fs must agree with it");
+      out.notes.push_back(path + ": sample rate " + rate_text(s.sample_rate) + " Hz from " + s.rate_source +
+                          "; --fs must agree with it");
   } else {
     throw usage_error(path + ": no sample rate in this " + s.format +
                       "; give --fs HZ, or a time column (t, time, time_s, Time (s), t [ms], ...)" +

@@ -55,7 +55,8 @@ std::string format_name(int format) {
   SF_FORMAT_INFO major{}, sub{};
   major.format = format & SF_FORMAT_TYPEMASK;
   sub.format = format & SF_FORMAT_SUBMASK;
-  std::string s = sf_command(nullptr, SFC_GET_FORMAT_INFO, &major, sizeof major) == 0 && major.name ? major.name : "sound file";
+  std::string s =
+      sf_command(nullptr, SFC_GET_FORMAT_INFO, &major, sizeof major) == 0 && major.name ? major.name : "sound file";
   if (sf_command(nullptr, SFC_GET_FORMAT_INFO, &sub, sizeof sub) == 0 && sub.name) s += std::string(", ") + sub.name;
   return s;
 }
@@ -65,11 +66,12 @@ SignalTable read_sound_signal(const std::string& path) {
   SF_INFO info{};
   const std::unique_ptr<SNDFILE, SndfileCloser> f(sf_open(path.c_str(), SFM_READ, &info));
   if (!f)
-    throw data_error(path + ": cannot read it as a sound file: " + sndfile_says(nullptr) +
-                     "; allowed: a file libsndfile reads (WAV, FLAC, AIFF, AU, CAF, W64, Ogg, ...), or CSV text or a .mat file");
+    throw data_error(
+        path + ": cannot read it as a sound file: " + sndfile_says(nullptr) +
+        "; allowed: a file libsndfile reads (WAV, FLAC, AIFF, AU, CAF, W64, Ogg, ...), or CSV text or a .mat file");
   if (info.channels < 1 || info.samplerate < 1)
-    throw data_error(path + ": the header gives " + std::to_string(info.channels) + " channels at " + std::to_string(info.samplerate) +
-                     " Hz; allowed: at least one channel and a sample rate >= 1 Hz");
+    throw data_error(path + ": the header gives " + std::to_string(info.channels) + " channels at " +
+                     std::to_string(info.samplerate) + " Hz; allowed: at least one channel and a sample rate >= 1 Hz");
   sf_command(f.get(), SFC_SET_NORM_DOUBLE, nullptr, SF_TRUE);  // the default; said here because --help relies on it
   SignalTable s;
   s.file = path;
@@ -100,17 +102,20 @@ SignalTable read_sound_signal(const std::string& path) {
       }
   }
   if (sf_error(f.get()) != SF_ERR_NO_ERROR)
-    throw data_error(path + ": cannot read the samples after frame " + std::to_string(frame) + ": " + sndfile_says(f.get()) +
-                     "; allowed: an undamaged sound file");
-  if (frame == 0) throw data_error(path + ": no samples (" + s.format + "); allowed: a sound file with at least one frame");
+    throw data_error(path + ": cannot read the samples after frame " + std::to_string(frame) + ": " +
+                     sndfile_says(f.get()) + "; allowed: an undamaged sound file");
+  if (frame == 0)
+    throw data_error(path + ": no samples (" + s.format + "); allowed: a sound file with at least one frame");
   // A damaged or cut file must not become a shorter signal in silence: every frame the header
   // declares is read, or the file is refused.
   if (info.frames > 0 && info.frames != SF_COUNT_MAX && static_cast<sf_count_t>(frame) != info.frames)
-    throw data_error(path + ": the header declares " + std::to_string(info.frames) + " frames but only " + std::to_string(frame) +
-                     " could be read (" + s.format + "): the file is cut short or damaged; allowed: an undamaged sound file");
+    throw data_error(path + ": the header declares " + std::to_string(info.frames) + " frames but only " +
+                     std::to_string(frame) + " could be read (" + s.format +
+                     "): the file is cut short or damaged; allowed: an undamaged sound file");
   const std::string cut = data_chunk_cut_short(f.get());
   if (!cut.empty())
-    throw data_error(path + ": the sample data is shorter than the header declares (libsndfile: '" + cut + "' bytes): the file is cut "
+    throw data_error(path + ": the sample data is shorter than the header declares (libsndfile: '" + cut +
+                     "' bytes): the file is cut "
                      "short or damaged (a recorder stopped while writing?); allowed: an undamaged sound file");
   return s;
 }

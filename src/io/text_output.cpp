@@ -18,7 +18,8 @@ void write_text_file(const std::string& write_path, const std::string& shown, co
     std::remove(tmp.c_str());
     unregister_temp(tmp);
     return cannot_create(what + " (writing " + tmp + ": " +
-                         (err == ENOSPC ? std::string("no space left on device") : std::string(std::strerror(err))) + ")");
+                         (err == ENOSPC ? std::string("no space left on device") : std::string(std::strerror(err))) +
+                         ")");
   };
   {
     errno = 0;

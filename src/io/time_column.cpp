@@ -18,13 +18,15 @@ std::string stamp_text(double v) {
   return buf;
 }
 
-const char* const kAllowed = "strictly increasing, uniformly spaced stamps (each within 0.1 sample interval of t_0 + i*dt)";
+const char* const kAllowed =
+    "strictly increasing, uniformly spaced stamps (each within 0.1 sample interval of t_0 + i*dt)";
 }  // namespace
 
 double time_column_unit(const std::string& name) {
   std::string n;
   for (const char c : name)
-    if (!std::isspace(static_cast<unsigned char>(c))) n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!std::isspace(static_cast<unsigned char>(c)))
+      n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const char* base : {"time", "t"}) {
     const std::string b = base;
     if (n.compare(0, b.size(), b) != 0) continue;
@@ -33,7 +35,8 @@ double time_column_unit(const std::string& name) {
     // name with a time unit ("T (s)") is taken for the time column.
     if (unit.empty()) return n == "t" && name.find('T') != std::string::npos ? 0.0 : 1.0;
     for (const auto& [u, seconds] : {std::pair<const char*, double>{"s", 1.0}, {"ms", 1e-3}})
-      for (const auto& [open, close] : {std::pair<const char*, const char*>{"_", ""}, {"[", "]"}, {"(", ")"}, {"/", ""}})
+      for (const auto& [open, close] :
+           {std::pair<const char*, const char*>{"_", ""}, {"[", "]"}, {"(", ")"}, {"/", ""}})
         if (unit == std::string(open) + u + close) return seconds;
   }
   return 0.0;
@@ -41,7 +44,8 @@ double time_column_unit(const std::string& name) {
 
 double StampDigits::printed_half_unit(double t) const {
   const double fixed = decimals >= 400 ? 0.0 : std::pow(10.0, -decimals);
-  const double sig = t == 0.0 || significant >= 400 ? 0.0 : std::pow(10.0, std::floor(std::log10(std::fabs(t))) - significant + 1);
+  const double sig =
+      t == 0.0 || significant >= 400 ? 0.0 : std::pow(10.0, std::floor(std::log10(std::fabs(t))) - significant + 1);
   return 0.5 * std::max(fixed, sig);
 }
 
@@ -68,10 +72,11 @@ double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_un
   for (std::size_t i = 1; i < n; ++i) {
     const double step = t[i] - t[i - 1];
     if (std::fabs(step - dt) > std::max(0.5 * dt, rounding(i) + rounding(i - 1)))
-      throw data_error(where(i) + ": " + col + " steps by " + stamp_text(step) + " (from " + stamp_text(t[i - 1]) + " to " +
-                       stamp_text(t[i]) + "), " + number_text(step / dt) + " sample intervals of the record (dt = " +
-                       stamp_text(dt) + " from the first and last stamps): a missing, repeated or shifted sample; allowed: " +
-                       kAllowed + rounding_note);
+      throw data_error(where(i) + ": " + col + " steps by " + stamp_text(step) + " (from " + stamp_text(t[i - 1]) +
+                       " to " + stamp_text(t[i]) + "), " + number_text(step / dt) +
+                       " sample intervals of the record (dt = " + stamp_text(dt) +
+                       " from the first and last stamps): a missing, repeated or shifted sample; allowed: " + kAllowed +
+                       rounding_note);
   }
   const double ends = std::max(rounding(0), rounding(n - 1));
   for (std::size_t i = 1; i < n; ++i) {
@@ -79,8 +84,8 @@ double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_un
     const double allowed = std::max(kTimeGridTolerance * dt, rounding(i) + ends);
     if (std::fabs(off) > allowed)
       throw data_error(where(i) + ": " + col + " value " + stamp_text(t[i]) + " is " + number_text(off / dt) +
-                       " sample intervals off the uniform grid t_0 + i*dt (by " + stamp_text(off) + "; dt = " + stamp_text(dt) +
-                       " from the first and last stamps), more than the " + number_text(allowed / dt) +
+                       " sample intervals off the uniform grid t_0 + i*dt (by " + stamp_text(off) + "; dt = " +
+                       stamp_text(dt) + " from the first and last stamps), more than the " + number_text(allowed / dt) +
                        " allowed here: the sample rate is not constant; allowed: " + kAllowed + rounding_note);
   }
   // Stamps rounded to a few digits: the first and last carry that rounding into dt whole (2 ppm at six

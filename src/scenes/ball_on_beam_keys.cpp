@@ -36,16 +36,16 @@ std::vector<KeySpec> ball_on_beam_keys() {
   for (auto& t : RoughnessSection::keys()) k.push_back(t);
   for (auto& t : SignalSection::keys()) k.push_back(t);
   for (auto& t : SensorsSection::keys()) k.push_back(t);
-  k.push_back(
-      real_key("spectrum", "skip_start", "s",
-               "time at the start of each record left out of the PSDs (start-up of the random response)", std::string("0"),
-               0.0, inf));
+  k.push_back(real_key("spectrum", "skip_start", "s",
+                       "time at the start of each record left out of the PSDs (start-up of the random response)",
+                       std::string("0"), 0.0, inf));
   for (auto& t : OutputSection::keys()) k.push_back(t);
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
   for (auto& t : texture_io::surface_keys()) {
     // The solver's blocked force derives its strip from the contact radius unless the study sets these.
     if (t.key == "ny") t.doc += "; blocked_force = solver: strip width, the window's by default";
-    if (t.key == "spacing") t.doc += "; blocked_force = solver: derived from the contact radius and the texture unless set";
+    if (t.key == "spacing")
+      t.doc += "; blocked_force = solver: derived from the contact radius and the texture unless set";
     k.push_back(t);
   }
   for (auto& t : study::StiffnessSection::keys()) k.push_back(t);

@@ -68,7 +68,8 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.attribute("/beam", "youngs_modulus", p.youngs_modulus);
   w.attribute("/beam", "density", p.density);
   w.attribute("/beam", "static_correction", static_cast<std::int64_t>(b.static_correction()));
-  w.write("/sensors/position", {b_.model.sensors.size()}, b_.model.sensors.data(), "m", "sensor positions along the span");
+  w.write("/sensors/position", {b_.model.sensors.size()}, b_.model.sensors.data(), "m",
+          "sensor positions along the span");
   w.attribute("/ball", "mass", b_.model.ball.mass);
   w.attribute("/ball", "speed", b_.model.traverse.speed);
 
@@ -103,9 +104,8 @@ void BallOnBeamWriter::write_roughness(io::Hdf5Writer& w) const {
     }
   }
   // The patch line is drawn compensated for the linear interpolant (B40a) when band-limited below pi/dx.
-  const texture::Psd patch_line = b_.band_limit_wavenumber * b_.spacing < M_PI
-                                      ? texture::interpolation_compensated(b_.psd, b_.spacing)
-                                      : b_.psd;
+  const texture::Psd patch_line =
+      b_.band_limit_wavenumber * b_.spacing < M_PI ? texture::interpolation_compensated(b_.psd, b_.spacing) : b_.psd;
   for (std::size_t i = 0; i < k.size(); ++i) {
     try {
       raw[i] = b_.texture_psd(k[i]);
@@ -141,8 +141,8 @@ void BallOnBeamWriter::write_roughness(io::Hdf5Writer& w) const {
 
 // Frequency-domain solution of the linearised model made exact for what the Monte-Carlo
 // simulates (kernels/beam/linear_reference.hpp; README B34, B34a-c, B35a; D-20).
-void BallOnBeamWriter::write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,
-                            double realisations) const {
+void BallOnBeamWriter::write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f,
+                                              const std::vector<std::string>& sensors, double realisations) const {
   beam::LinearReferenceInput in;
   in.beam = &b_.model.beam;
   in.ball_mass = b_.model.ball.mass;
@@ -188,8 +188,8 @@ void BallOnBeamWriter::write_linear_reference(io::Hdf5Writer& w, const std::vect
               std::string("linear, quasi-stationary (no moving-weight response, no loss of contact)"));
   io::write_frequency_scale(w, "/reference", f);
   io::write_sensor_scale(w, "/reference", sensors);
-  for (const char* d : {"/reference/psd", "/reference/psd_raw", "/reference/degrees_of_freedom", "/reference/mean_lower",
-                        "/reference/mean_upper"}) {
+  for (const char* d : {"/reference/psd", "/reference/psd_raw", "/reference/degrees_of_freedom",
+                        "/reference/mean_lower", "/reference/mean_upper"}) {
     w.attach_scale(d, "/reference/sensor", 0);
     w.attach_scale(d, "/reference/frequency", 1);
   }

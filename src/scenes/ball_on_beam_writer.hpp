@@ -27,8 +27,13 @@ class BallOnBeamWriter {
   BallOnBeamWriter(const BallOnBeamSettings& b, const spectral::WelchPlan& welch, const PsdRows& rows,
                    double line_fundamental, const stiffness::BlockedForceTable& blocked,
                    std::function<double(double)> blocked_force_time_psd, bool quiet)
-      : b_(b), welch_(&welch), rows_(&rows), line_fundamental_(line_fundamental), blocked_(blocked),
-        blocked_force_time_psd_(std::move(blocked_force_time_psd)), quiet_(quiet) {}
+      : b_(b),
+        welch_(&welch),
+        rows_(&rows),
+        line_fundamental_(line_fundamental),
+        blocked_(blocked),
+        blocked_force_time_psd_(std::move(blocked_force_time_psd)),
+        quiet_(quiet) {}
 
   void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const;
 

@@ -66,12 +66,12 @@ Item contact_grid(const study::Study& s) {
 // (derived from the contact radius where the study leaves it open).
 Item blocked_force_window(const study::Study& s) {
   const double radius = study::BallSection::parse(s).radius, weight = ball_weight(s), e_star = ball_e_star(s);
-  const auto g = stiffness::blocked_force_geometry(study::BlockedForceSection::parse(s), study::StripSurfaceSection::parse(s),
-                                                   texture_io::study_psd(s), radius, e_star, weight,
-                                                   study::BallSection::parse(s).speed /
-                                                       study::SignalSection::parse(s).sample_rate);
+  const auto g = stiffness::blocked_force_geometry(
+      study::BlockedForceSection::parse(s), study::StripSurfaceSection::parse(s), texture_io::study_psd(s), radius,
+      e_star, weight, study::BallSection::parse(s).speed / study::SignalSection::parse(s).sample_rate);
   const double w = static_cast<double>(g.window), strip = static_cast<double>(g.nx) * static_cast<double>(g.ny);
-  return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0, where(s, {"blocked_force.window", "surface.ny", "surface.spacing"}),
+  return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0,
+          where(s, {"blocked_force.window", "surface.ny", "surface.spacing"}),
           "blocked-force contact window (" + std::to_string(g.window) + " cells) and strip (" + std::to_string(g.ny) +
               " x " + std::to_string(g.nx) + " cells)"};
 }
@@ -89,7 +89,8 @@ Item surfaces(const study::Study& s, double count) {
 Item chunk_sums(const study::Study& s, double rows) {
   const double nf = key_real(s, "spectrum.segment") / 2.0 + 1.0;
   const double values = 2.0 * rows * (nf + 40.0) + 8.0;
-  const double K = std::max(key_real(s, "study.realisations"), 1.0), C = std::max(key_real(s, "ensemble.chunk_size"), 1.0);
+  const double K = std::max(key_real(s, "study.realisations"), 1.0),
+               C = std::max(key_real(s, "ensemble.chunk_size"), 1.0);
   const double kept = std::log2(std::max(K / C, 1.0)) + std::log2(C) + 6.0;
   return {8.0 * values * (C + 2.0 * kept), where(s, {"ensemble.chunk_size", "spectrum.segment", "sensors.positions"}),
           "one chunk of realisations and the partial sums of the ensemble"};
@@ -127,9 +128,11 @@ Item path_table(const study::Study& s, double threads) {
                                                 key_real(s, "ball.end") - key_real(s, "ball.start"));
   const double cells = static_cast<double>(g.approaches) * static_cast<double>(g.positions);
   const double w = static_cast<double>(g.window);
-  return {8.0 * cells * 6.0 + 8.0 * static_cast<double>(g.nx) * static_cast<double>(g.ny) * 4.0 + threads * 16.0 * 4.0 * w * w * 5.0,
-          where(s, {"path_table.approaches", "path_table.step", "surface.ny"}),
-          "path table, " + std::to_string(g.approaches) + " approaches x " + std::to_string(g.positions) + " positions"};
+  return {
+      8.0 * cells * 6.0 + 8.0 * static_cast<double>(g.nx) * static_cast<double>(g.ny) * 4.0 +
+          threads * 16.0 * 4.0 * w * w * 5.0,
+      where(s, {"path_table.approaches", "path_table.step", "surface.ny"}),
+      "path table, " + std::to_string(g.approaches) + " approaches x " + std::to_string(g.positions) + " positions"};
 }
 
 // rolling-beam keeps every recorded state (positions, velocities, accelerations, angular
@@ -141,10 +144,12 @@ std::vector<Item> rolling_beam(const study::Study& s) {
   const double nc = static_cast<double>(r.model.contacts.size());
   const double records = std::floor(r.run.t_end / r.run.dt / std::max(r.run.record_every, 1)) + 2.0;
   // Nine per-record vectors, each a 24-byte header and a heap block (about 24 bytes of overhead).
-  const double per_record = nn * (5.0 * 24.0 + 72.0) + 9.0 * 48.0 + nc * static_cast<double>(sizeof(rolling::ContactOutput)) +
+  const double per_record = nn * (5.0 * 24.0 + 72.0) + 9.0 * 48.0 +
+                            nc * static_cast<double>(sizeof(rolling::ContactOutput)) +
                             static_cast<double>(sizeof(rolling::Energies)) + 8.0;
   const double write_copy = records * (nn * 72.0 + nc * 9.0 * 8.0);
-  return {{records * per_record + write_copy, where(s, {"analysis.dt", "analysis.t_end", "analysis.record_every", "output.nodes", "beam.elements"}),
+  return {{records * per_record + write_copy,
+           where(s, {"analysis.dt", "analysis.t_end", "analysis.record_every", "output.nodes", "beam.elements"}),
            "time history, " + std::to_string(static_cast<long long>(records)) + " recorded states of " +
                std::to_string(static_cast<long long>(nn)) + " nodes"},
           {nodes * 6.0 * 8.0 * 400.0, where(s, {"beam.elements"}),
@@ -170,20 +175,23 @@ std::vector<Item> items(const study::Study& s, int threads) {
   } else if (scene == "stiffness") {
     out.push_back(contact_grid(s));
   } else if (scene == "ball-on-beam") {
-    const double record = (key_real(s, "ball.end") - key_real(s, "ball.start")) / std::max(key_real(s, "ball.speed"), 1e-300) *
-                          key_real(s, "signal.sample_rate");
+    const double record = (key_real(s, "ball.end") - key_real(s, "ball.start")) /
+                          std::max(key_real(s, "ball.speed"), 1e-300) * key_real(s, "signal.sample_rate");
     const double sensors = static_cast<double>(s.list("sensors.positions").size());
     out.push_back({8.0 * record * (sensors + 6.0) * (t + 1.0),
-                   where(s, {"ball.start", "ball.end", "ball.speed", "signal.sample_rate"}), "time records per thread"});
+                   where(s, {"ball.start", "ball.end", "ball.speed", "signal.sample_rate"}),
+                   "time records per thread"});
     out.push_back(chunk_sums(s, sensors + 4.0));
     const double histories = key_real(s, "output.time_histories");
     if (histories > 0)
-      out.push_back({8.0 * record * (sensors + 4.0) * histories, where(s, {"output.time_histories"}), "stored time histories"});
+      out.push_back(
+          {8.0 * record * (sensors + 4.0) * histories, where(s, {"output.time_histories"}), "stored time histories"});
     const study::ContactSection contact = study::ContactSection::parse(s);
     const std::string& law = contact.law;
     if ((law == "table" || law == "literal") && study::StiffnessSection::parse(s).rough) out.push_back(contact_grid(s));
     if (law == "linearised" && contact.blocked_force == "solver") out.push_back(blocked_force_window(s));
-    if (law == "linearised" && study::OutputSection::parse(s).reference) out.push_back(linear_reference(s, sensors, record));
+    if (law == "linearised" && study::OutputSection::parse(s).reference)
+      out.push_back(linear_reference(s, sensors, record));
     if (law == "path") out.push_back(path_table(s, t));
   } else if (scene == "rolling-pipe") {
     if (s.text("roughness.kind") != "line") {
@@ -231,10 +239,11 @@ void check_memory(const study::Study& s, int threads, bool force) {
   if (force || !(e.bytes > available)) return;
   std::string keys;
   for (const auto& k : e.keys) keys += (keys.empty() ? "" : ", ") + k;
-  throw config_error(s.file() + ": the study needs an estimated " + format_bytes(e.bytes) + " of memory (largest: " + e.what +
-                     ", from " + keys + ", " + std::to_string(threads) + " thread(s)), but only " + format_bytes(available) +
-                     " is available; allowed: a smaller value of these keys, fewer threads (OMP_NUM_THREADS), or --force "
-                     "to try anyway");
+  throw config_error(
+      s.file() + ": the study needs an estimated " + format_bytes(e.bytes) + " of memory (largest: " + e.what +
+      ", from " + keys + ", " + std::to_string(threads) + " thread(s)), but only " + format_bytes(available) +
+      " is available; allowed: a smaller value of these keys, fewer threads (OMP_NUM_THREADS), or --force "
+      "to try anyway");
 }
 
 }  // namespace rollspec::scenes

@@ -32,7 +32,8 @@ class RandomOscillator final : public EnsembleScene {
  public:
   explicit RandomOscillator(const Study& s) : o_(read_random_oscillator_settings(s)) {
     welch_ = std::make_unique<spectral::WelchPlan>(o_.welch);
-    rows_ = std::make_unique<PsdRows>(std::vector<std::string>{"mass"}, false, welch_->frequencies(), o_.band_min, o_.band_max, 0);
+    rows_ = std::make_unique<PsdRows>(std::vector<std::string>{"mass"}, false, welch_->frequencies(), o_.band_min,
+                                      o_.band_max, 0);
     synth_ = std::make_unique<spectral::HarmonicSynthesiser>(o_.samples);
     df_ = o_.sample_rate / static_cast<double>(o_.samples);
     psd_at_harmonics_.resize(synth_->harmonics());
@@ -48,7 +49,8 @@ class RandomOscillator final : public EnsembleScene {
     for (std::size_t e = o_.samples; e; e >>= 1, b = b * b)
       if (e & 1) p = p * b;
     periodic_inverse_ = (Eigen::Matrix2d::Identity() - p).inverse();
-    for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(o_.samples, o_.welch.segment));
+    for (int t = 0; t < ensemble::ensemble_threads(); ++t)
+      workspaces_.push_back(std::make_unique<Workspace>(o_.samples, o_.welch.segment));
     add_stages(fixed_stages());  // after the members the descriptions name
   }
 
@@ -58,7 +60,8 @@ class RandomOscillator final : public EnsembleScene {
         {"surface", StageStatus::skipped, "the scene has no contact"},
         {"stiffness_table", StageStatus::skipped, "the scene has no contact"},
         {"blocked_force", StageStatus::skipped, "the scene has no contact"},
-        {"force", StageStatus::run, "synthesised per realisation from [force] (Philox streams force_phase, force_amplitude)"},
+        {"force", StageStatus::run,
+         "synthesised per realisation from [force] (Philox streams force_phase, force_amplitude)"},
         {"dynamics", StageStatus::run, "exact first-order-hold oscillator step from the periodic steady state"},
         {"spectra", StageStatus::run, "Welch PSD of the acceleration, averaged over realisations"},
     };
@@ -98,7 +101,8 @@ class RandomOscillator final : public EnsembleScene {
 
     std::vector<double> exact(e.frequency.size());
     for (std::size_t i = 0; i < exact.size(); ++i)
-      exact[i] = random_oscillator_exact_psd(e.frequency[i], o_.force_psd(e.frequency[i]), o_.mass, o_.natural_frequency, o_.damping_ratio, o_.sample_rate);
+      exact[i] = random_oscillator_exact_psd(e.frequency[i], o_.force_psd(e.frequency[i]), o_.mass,
+                                             o_.natural_frequency, o_.damping_ratio, o_.sample_rate);
     w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units,
             "exact acceleration PSD |H_a|^2 S_F of the sampled, first-order-hold driven oscillator");
     w.attribute("/reference/psd", "label", std::string("exact"));
@@ -114,7 +118,6 @@ class RandomOscillator final : public EnsembleScene {
   }
 
  private:
-
   RandomOscillatorSettings o_;
   double df_ = 0.0, omega_ = 0.0;
   std::unique_ptr<spectral::WelchPlan> welch_;

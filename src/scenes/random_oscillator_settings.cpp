@@ -15,14 +15,16 @@ std::vector<KeySpec> random_oscillator_keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
       real_key("oscillator", "mass", "kg", "oscillator mass m", std::string("1"), 0.0, inf, false),
-      real_key("oscillator", "natural_frequency", "Hz", "undamped natural frequency f_n", std::nullopt, 0.0, inf, false),
+      real_key("oscillator", "natural_frequency", "Hz", "undamped natural frequency f_n", std::nullopt, 0.0, inf,
+               false),
       real_key("oscillator", "damping_ratio", "-", "viscous damping ratio zeta", std::string("0.02"), 0.0, 10.0, false),
       choice_key("force", "spectrum", "force PSD shape: flat up to f_max", std::string("flat"), {"flat"}),
       real_key("force", "level", "N^2/Hz", "one-sided force PSD S_F of the flat spectrum", std::string("1"), 0.0, inf,
                false),
       real_key("force", "f_max", "Hz", "highest force frequency; 0 means the Nyquist frequency", std::string("0"), 0.0,
                inf),
-      choice_key("force", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian force) or deterministic (the target PSD exactly)",
+      choice_key("force", "amplitudes",
+                 "harmonic amplitudes: rayleigh (Gaussian force) or deterministic (the target PSD exactly)",
                  std::string("rayleigh"), {"rayleigh", "deterministic"}),
       real_key("signal", "sample_rate", "Hz", "sample rate f_s of force and response", std::string("2048"), 0.0, inf,
                false),
@@ -38,7 +40,8 @@ RandomOscillatorSettings read_random_oscillator_settings(const Study& s) {
   o.natural_frequency = s.real("oscillator.natural_frequency");
   o.damping_ratio = s.real("oscillator.damping_ratio");
   o.sample_rate = s.real("signal.sample_rate");
-  o.amplitudes = s.text("force.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
+  o.amplitudes =
+      s.text("force.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
   o.level = s.real("force.level");
   const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
   o.confidence = spectrum.confidence;
@@ -48,16 +51,19 @@ RandomOscillatorSettings read_random_oscillator_settings(const Study& s) {
   const double fs = o.sample_rate;
   const double samples = std::round(s.real("signal.duration") * fs / 2.0) * 2.0;
   if (samples < 4 || samples > 1e9)
-    s.refuse("signal.duration", "gives " + std::to_string(samples) + " samples at the sample rate; allowed: 4 to 1e9 samples");
+    s.refuse("signal.duration",
+             "gives " + std::to_string(samples) + " samples at the sample rate; allowed: 4 to 1e9 samples");
   o.samples = static_cast<std::size_t>(samples);
   if (o.natural_frequency >= fs / 2)
-    s.refuse("oscillator.natural_frequency", "must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
+    s.refuse("oscillator.natural_frequency",
+             "must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
   o.f_max = s.real("force.f_max") == 0.0 ? fs / 2 : s.real("force.f_max");
-  if (o.f_max > fs / 2) s.refuse("force.f_max", "exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
+  if (o.f_max > fs / 2)
+    s.refuse("force.f_max", "exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
   const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > o.samples)
-    spectrum.segment_origin.refuse(
-             "is longer than one realisation's record (" + std::to_string(o.samples) + " samples = duration x sample_rate)");
+    spectrum.segment_origin.refuse("is longer than one realisation's record (" + std::to_string(o.samples) +
+                                   " samples = duration x sample_rate)");
   o.welch = study_welch_config(spectrum, fs);
   return o;
 }

@@ -31,7 +31,8 @@ class RollingBeam final : public SingleRunScene {
         {"texture", StageStatus::skipped, "flat rigid plane"},
         {"stiffness_table", StageStatus::skipped, "penalty contact"},
         {"dynamics", StageStatus::run,
-         std::string(r_.solver.analysis == rolling::Analysis::Dynamic ? "Newmark dynamics" : "quasi-static load steps") +
+         std::string(r_.solver.analysis == rolling::Analysis::Dynamic ? "Newmark dynamics"
+                                                                      : "quasi-static load steps") +
              ", " + std::to_string(static_cast<long long>(std::llround(r_.run.t_end / r_.run.dt))) + " steps, " +
              io::counted(r_.model.contacts.size(), "rolling contact node")},
         {"spectra", StageStatus::skipped, "a single deterministic run has no ensemble spectra"},
@@ -41,9 +42,10 @@ class RollingBeam final : public SingleRunScene {
   void run(bool quiet) override {
     history_ = rolling::run(r_.model, r_.solver, r_.run);
     if (!history_.completed)
-      throw data_error(r_.step_where + ": Newton did not converge at t = " + std::to_string(history_.failed_at) +
-                       " s even after " + std::to_string(r_.solver.max_cuts) +
-                       " step halvings; reduce the step, raise [analysis] max_iterations or max_cuts, or soften the penalties");
+      throw data_error(
+          r_.step_where + ": Newton did not converge at t = " + std::to_string(history_.failed_at) + " s even after " +
+          std::to_string(r_.solver.max_cuts) +
+          " step halvings; reduce the step, raise [analysis] max_iterations or max_cuts, or soften the penalties");
     if (!quiet)
       std::fprintf(stderr, "rolling-beam: %d steps, %d Newton iterations, %d step cuts\n", history_.steps,
                    history_.newton_iterations, history_.cuts);
@@ -79,7 +81,9 @@ class RollingBeam final : public SingleRunScene {
     for (std::size_t t = 0; t < nt; ++t)
       for (std::size_t n = 0; n < nn; ++n)
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) rot[((t * nn + n) * 3 + static_cast<std::size_t>(i)) * 3 + static_cast<std::size_t>(j)] = h.rotation[t][n](i, j);
+          for (int j = 0; j < 3; ++j)
+            rot[((t * nn + n) * 3 + static_cast<std::size_t>(i)) * 3 + static_cast<std::size_t>(j)] =
+                h.rotation[t][n](i, j);
     w.write("/time_history/rotation", {nt, nn, 3, 3}, rot.data(), "1",
             "node rotation matrices Q (columns: the node's frame vectors e1, e2, e3 in space)");
     w.attach_scale("/time_history/rotation", "/time_history/time", 0);
@@ -121,15 +125,18 @@ class RollingBeam final : public SingleRunScene {
         active[t * nc + c] = o.active ? 1.0 : 0.0;
         gap[t * nc + c] = o.g_n;
       }
-    w.write("/time_history/contact/force", {nt, nc, 3}, force.data(), "N", "contact force on the node (normal + friction)");
-    w.write("/time_history/contact/moment", {nt, nc, 3}, moment.data(), "N m", "friction moment (C - x_o) x f on the node");
+    w.write("/time_history/contact/force", {nt, nc, 3}, force.data(), "N",
+            "contact force on the node (normal + friction)");
+    w.write("/time_history/contact/moment", {nt, nc, 3}, moment.data(), "N m",
+            "friction moment (C - x_o) x f on the node");
     w.write("/time_history/contact/slip", {nt, nc}, slip.data(), "1", "1 while the contact slips, 0 while it sticks");
     w.write("/time_history/contact/active", {nt, nc}, active.data(), "1", "1 while in contact");
     w.write("/time_history/contact/normal_gap", {nt, nc}, gap.data(), "m", "normal gap g_n (negative: penetration)");
     std::vector<double> cnode, cplane;
     for (const auto& c : r_.model.contacts) cnode.push_back(c.node), cplane.push_back(c.plane);
     w.write("/time_history/contact/node", {nc}, cnode.data(), "1", "model node index of each contact");
-    w.write("/time_history/contact/plane", {nc}, cplane.data(), "1", "plane index of each contact (order of [plane] point)");
+    w.write("/time_history/contact/plane", {nc}, cplane.data(), "1",
+            "plane index of each contact (order of [plane] point)");
     if (!r_.model.imposed.empty()) {
       const std::size_t ni = r_.model.imposed.size();
       std::vector<double> r(nt * ni);

@@ -23,9 +23,9 @@ struct RollingBeamSettings {
   rolling::Model model;
   rolling::SolverOptions solver;
   rolling::RunOptions run;
-  std::vector<int> record;          // recorded nodes
-  rolling::FlyingBeamParams flying; // kind = flying-beam
-  std::string step_where;           // "file:line: [analysis] dt = ..." for a run that fails
+  std::vector<int> record;           // recorded nodes
+  rolling::FlyingBeamParams flying;  // kind = flying-beam
+  std::string step_where;            // "file:line: [analysis] dt = ..." for a run that fails
 };
 
 RollingBeamSettings read_rolling_beam_settings(const study::Study& s);

@@ -55,16 +55,19 @@ class RollingPipe final : public EnsembleScene {
     std::vector<std::string> names;
     for (std::size_t j = 0; j < p_.sensor_nodes.size(); ++j) names.push_back("sensor_" + std::to_string(j + 1));
     rows_ = std::make_unique<PsdRows>(names, p_.sensor_mean, welch_->frequencies(), p_.band_min, p_.band_max, extras);
-    for (int t = 0; t < ensemble::ensemble_threads(); ++t) workspaces_.push_back(std::make_unique<Workspace>(p_.welch.segment));
+    for (int t = 0; t < ensemble::ensemble_threads(); ++t)
+      workspaces_.push_back(std::make_unique<Workspace>(p_.welch.segment));
     add_stages(fixed_stages());  // after the members the descriptions name
   }
 
   std::vector<StagePlan> fixed_stages() const {
     return {
         {"texture", p_.line ? StageStatus::run : StageStatus::skipped,
-         p_.line ? "line texture along the rolling direction per realisation (" + p_.psd.description + ")" : "isotropic surface instead"},
+         p_.line ? "line texture along the rolling direction per realisation (" + p_.psd.description + ")"
+                 : "isotropic surface instead"},
         {"surface", p_.line ? StageStatus::skipped : StageStatus::run,
-         p_.line ? "a line texture is used" : "isotropic surface per realisation from [surface] (" + p_.psd.description + ")"},
+         p_.line ? "a line texture is used"
+                 : "isotropic surface per realisation from [surface] (" + p_.psd.description + ")"},
         {"stiffness_table", StageStatus::skipped, "penalty node-sphere contact"},
         {"dynamics", StageStatus::run,
          "Newmark, " + std::to_string(p_.steps) + " steps, " + std::to_string(2 * p_.elements + 1) +
@@ -92,8 +95,8 @@ class RollingPipe final : public EnsembleScene {
       top = std::max(top, sample_height(field, Vector2d(0.0, y)).h);
     }
     const double z0 = top + p_.radius - p_.section.rhoA * p_.length * p_.gravity / (nn * p_.law.eps_n);
-    const auto ids = add_straight_beam(m, Vector3d(0.0, -0.5 * p_.length, z0), Vector3d(0.0, 0.5 * p_.length, z0), p_.elements, 0,
-                                       Vector3d::UnitX());
+    const auto ids = add_straight_beam(m, Vector3d(0.0, -0.5 * p_.length, z0), Vector3d(0.0, 0.5 * p_.length, z0),
+                                       p_.elements, 0, Vector3d::UnitX());
     for (std::size_t i = 0; i < ids.size(); ++i) {
       SurfaceContactLaw law = p_.law;
       law.damping = p_.node_damping[i];
@@ -112,7 +115,9 @@ class RollingPipe final : public EnsembleScene {
       std::ostringstream e;
       e << "realisation " << id << " (seed " << p_.seed << "): Newton did not converge at t = " << h.failed_at
         << " s even after " << p_.solver.max_cuts
-        << " step halvings; reduce [analysis] dt, soften the penalties or smooth the roughness; rerun it alone with --only " << id;
+        << " step halvings; reduce [analysis] dt, soften the penalties or smooth the roughness; rerun it alone with "
+           "--only "
+        << id;
       throw data_error(e.str());
     }
     const std::size_t ns = p_.sensor_nodes.size(), n = h.time.size() - p_.skip;
@@ -158,7 +163,8 @@ class RollingPipe final : public EnsembleScene {
       const char* units;
       const char* what;
     } extras_out[] = {
-        {"/contact/curvature_ratio", curvature_ratio, "1", "r kappa_max of the realisation's surface (< 1: single-point contact)"},
+        {"/contact/curvature_ratio", curvature_ratio, "1",
+         "r kappa_max of the realisation's surface (< 1: single-point contact)"},
         {"/contact/open_share", open_share, "1", "share of node-time in loss of contact over the analysed record"},
         {"/contact/newton_per_step", newton_per_step, "1", "Newton iterations per time step"},
         {"/roll/speed_ratio", speed_ratio, "1", "rolling speed at the end of the record over the initial speed"},
@@ -170,10 +176,11 @@ class RollingPipe final : public EnsembleScene {
     w.write("/contact/two_point_realisations", {1}, &invalid, "1",
             "realisations whose surface has valleys sharper than the node sphere somewhere (r kappa_max >= 1)");
     if (invalid > 0.0)
-      std::fprintf(stderr,
-                   "rolling-pipe: warning: %.0f of %llu realisations have valleys sharper than the node spheres somewhere "
-                   "(r kappa_max >= 1): contact there is a closest-point approximation\n",
-                   invalid, static_cast<unsigned long long>(sums.count));
+      std::fprintf(
+          stderr,
+          "rolling-pipe: warning: %.0f of %llu realisations have valleys sharper than the node spheres somewhere "
+          "(r kappa_max >= 1): contact there is a closest-point approximation\n",
+          invalid, static_cast<unsigned long long>(sums.count));
     w.attribute("/contact", "friction", p_.law.mu);
     w.attribute("/contact", "penalty_normal", p_.law.eps_n);
     w.attribute("/contact", "penalty_tangential", p_.law.eps_t);
@@ -181,8 +188,10 @@ class RollingPipe final : public EnsembleScene {
     w.attribute("/contact", "radius", p_.radius);
     w.attribute("/contact", "rms_curvature_ratio", p_.radius * p_.rms_curvature);
     std::vector<double> sensor_nodes(p_.sensor_nodes.begin(), p_.sensor_nodes.end());
-    w.write("/sensors/node", {sensor_nodes.size()}, sensor_nodes.data(), "1", "beam node of each sensor (0 at y = -length/2)");
-    w.write("/sensors/position", {p_.sensor_fractions.size()}, p_.sensor_fractions.data(), "1", "sensor position as a fraction of the length");
+    w.write("/sensors/node", {sensor_nodes.size()}, sensor_nodes.data(), "1",
+            "beam node of each sensor (0 at y = -length/2)");
+    w.write("/sensors/position", {p_.sensor_fractions.size()}, p_.sensor_fractions.data(), "1",
+            "sensor position as a fraction of the length");
     std::vector<double> ff;
     const double ei = p_.section.EI2;
     for (int i = 0; i < 6; ++i) ff.push_back(free_free_frequency(i, p_.length, ei, p_.section.rhoA));
@@ -219,7 +228,8 @@ class RollingPipe final : public EnsembleScene {
       rolling::HeightField strip = f;
       strip.n2 = j1 - j0 + 1;
       strip.s2_0 = f.s2_0 + j0 * f.ds2;
-      strip.h.assign(f.h.begin() + static_cast<std::ptrdiff_t>(j0) * f.n1, f.h.begin() + static_cast<std::ptrdiff_t>(j1 + 1) * f.n1);
+      strip.h.assign(f.h.begin() + static_cast<std::ptrdiff_t>(j0) * f.n1,
+                     f.h.begin() + static_cast<std::ptrdiff_t>(j1 + 1) * f.n1);
       const auto v = rolling::check_single_point_contact(strip, p_.radius);
       if (v.max_concave_curvature > worst.max_concave_curvature) worst = v;
     }

@@ -22,32 +22,45 @@ const double kPi = 3.141592653589793;
 
 std::vector<KeySpec> rolling_pipe_keys() {
   std::vector<KeySpec> k = {
-      real_key("pipe", "length", "m", "tube length (its axis lies across the rolling direction)", std::string("1"), 0.0, inf, false),
-      real_key("pipe", "diameter", "m", "outer diameter (the contact spheres' diameter)", std::string("0.06"), 0.0, inf, false),
+      real_key("pipe", "length", "m", "tube length (its axis lies across the rolling direction)", std::string("1"), 0.0,
+               inf, false),
+      real_key("pipe", "diameter", "m", "outer diameter (the contact spheres' diameter)", std::string("0.06"), 0.0, inf,
+               false),
       real_key("pipe", "inner_diameter", "m", "inner diameter (0: solid bar)", std::string("0.052"), 0.0, inf),
       real_key("pipe", "youngs_modulus", "Pa", "Young's modulus", std::string("210e9"), 0.0, inf, false),
       real_key("pipe", "poisson", "-", "Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
       real_key("pipe", "density", "kg/m^3", "density", std::string("7850"), 0.0, inf, false),
-      integer_key("pipe", "elements", "quadratic 3-node beam elements along the tube (2n + 1 contact nodes)", std::string("4"), 1, 1000),
-      real_key("roll", "speed", "m/s", "initial rolling speed v (spin v/r: rolling without slip)", std::string("0.5"), 0.0, inf, false),
-      real_key("roll", "distance", "m", "distance rolled during the record (record length distance/speed)", std::string("0.3"), 0.0, inf, false),
+      integer_key("pipe", "elements", "quadratic 3-node beam elements along the tube (2n + 1 contact nodes)",
+                  std::string("4"), 1, 1000),
+      real_key("roll", "speed", "m/s", "initial rolling speed v (spin v/r: rolling without slip)", std::string("0.5"),
+               0.0, inf, false),
+      real_key("roll", "distance", "m", "distance rolled during the record (record length distance/speed)",
+               std::string("0.3"), 0.0, inf, false),
       choice_key("roughness", "kind",
                  "line: a line texture along the rolling direction, the same under every node; isotropic: an isotropic "
                  "surface realisation from [surface] (spectral or seed method), different under every node",
                  std::string("line"), {"line", "isotropic"}),
       real_key("roughness", "spacing", "m", "sample spacing of the line texture", std::string("1e-3"), 0.0, inf, false),
-      real_key("contact", "friction", "-", "Coulomb coefficient mu (0: frictionless, the tube slides)", std::string("0.3"), 0.0, inf),
-      real_key("contact", "penalty_normal", "N/m", "normal penalty eps_n per contact node", std::string("2e7"), 0.0, inf, false),
-      real_key("contact", "penalty_tangential", "N/m", "tangential penalty eps_t per contact node", std::string("2e6"), 0.0, inf, false),
+      real_key("contact", "friction", "-", "Coulomb coefficient mu (0: frictionless, the tube slides)",
+               std::string("0.3"), 0.0, inf),
+      real_key("contact", "penalty_normal", "N/m", "normal penalty eps_n per contact node", std::string("2e7"), 0.0,
+               inf, false),
+      real_key("contact", "penalty_tangential", "N/m", "tangential penalty eps_t per contact node", std::string("2e6"),
+               0.0, inf, false),
       real_key("contact", "damping_ratio", "-",
-               "normal contact damper per node as a ratio of critical on the node's lumped mass: c = 2 zeta sqrt(eps_n m_node)",
+               "normal contact damper per node as a ratio of critical on the node's lumped mass: c = 2 zeta sqrt(eps_n "
+               "m_node)",
                std::string("0.1"), 0.0, 10.0),
-      bool_key("contact", "rolling", "rolling correction of the tangential gap (false: seed 000's 'no rolling')", std::string("true")),
-      real_key("gravity", "acceleration", "m/s^2", "gravity, normal to the mean surface", std::string("9.81"), 0.0, inf, false),
-      real_key("analysis", "dt", "s", "time step (also the sampling interval of the spectra)", std::string("1e-4"), 0.0, inf, false),
+      bool_key("contact", "rolling", "rolling correction of the tangential gap (false: seed 000's 'no rolling')",
+               std::string("true")),
+      real_key("gravity", "acceleration", "m/s^2", "gravity, normal to the mean surface", std::string("9.81"), 0.0, inf,
+               false),
+      real_key("analysis", "dt", "s", "time step (also the sampling interval of the spectra)", std::string("1e-4"), 0.0,
+               inf, false),
       real_key("analysis", "tolerance", "-", "Newton convergence: residual 2-norm relative to the tube's weight",
                std::string("1e-8"), 0.0, 1.0, false),
-      text_key("sensors", "positions", "sensor positions along the tube as fractions of its length (nearest node), comma-separated",
+      text_key("sensors", "positions",
+               "sensor positions along the tube as fractions of its length (nearest node), comma-separated",
                std::string("0,0.5,1")),
       bool_key("sensors", "average", "add the mean PSD over sensors", std::string("true")),
       real_key("spectrum", "skip_start", "s", "start of the record left out of the spectra (settling on the surface)",
@@ -102,13 +115,15 @@ RollingPipeSettings read_rolling_pipe_settings(const Study& s) {
   const double tc = 2.0 * kPi * std::sqrt(m_light / p.law.eps_n);
   if (p.dt > tc / 20.0) {
     std::ostringstream m;
-    m << "= " << p.dt << " s does not resolve the contact oscillation of the lightest node (T_c = 2 pi sqrt(m/eps_n) = " << tc
+    m << "= " << p.dt
+      << " s does not resolve the contact oscillation of the lightest node (T_c = 2 pi sqrt(m/eps_n) = " << tc
       << " s); allowed: dt <= T_c/20 = " << tc / 20.0 << " s";
     s.refuse("analysis.dt", m.str());
   }
   // Sensors: nearest nodes.
   for (double f : s.numbers("sensors.positions")) {
-    if (!(f >= 0.0 && f <= 1.0)) s.refuse("sensors.positions", "fraction " + std::to_string(f) + " lies outside [0, 1]");
+    if (!(f >= 0.0 && f <= 1.0))
+      s.refuse("sensors.positions", "fraction " + std::to_string(f) + " lies outside [0, 1]");
     p.sensor_nodes.push_back(static_cast<int>(std::lround(f * (nodes - 1))));
     p.sensor_fractions.push_back(f);
   }
@@ -119,15 +134,17 @@ RollingPipeSettings read_rolling_pipe_settings(const Study& s) {
   if (p.line) {
     p.spacing = s.real("roughness.spacing");
     p.line_samples = static_cast<std::size_t>(std::ceil((p.x_hi - p.x_lo) / p.spacing)) + 1;
-    if (p.line_samples > (1u << 24)) s.refuse("roughness.spacing", "gives more than 2^24 samples over the rolled strip");
+    if (p.line_samples > (1u << 24))
+      s.refuse("roughness.spacing", "gives more than 2^24 samples over the rolled strip");
   } else {
     p.spacing = s.real("surface.spacing");
     const double nx = static_cast<double>(s.integer("surface.nx")), ny = static_cast<double>(s.integer("surface.ny"));
     const double need_x = p.x_hi - p.x_lo, need_y = p.length + 2.0 * p.radius + 2.0 * p.spacing;
     if ((nx - 1.0) * p.spacing < need_x || (ny - 1.0) * p.spacing < need_y) {
       std::ostringstream m;
-      m << "the surface grid covers " << (nx - 1.0) * p.spacing << " m x " << (ny - 1.0) * p.spacing << " m; allowed: at least "
-        << need_x << " m along the rolling direction (nx) and " << need_y << " m along the tube (ny)";
+      m << "the surface grid covers " << (nx - 1.0) * p.spacing << " m x " << (ny - 1.0) * p.spacing
+        << " m; allowed: at least " << need_x << " m along the rolling direction (nx) and " << need_y
+        << " m along the tube (ny)";
       s.refuse("surface.nx", m.str());
     }
   }
@@ -147,11 +164,12 @@ RollingPipeSettings read_rolling_pipe_settings(const Study& s) {
   }
   p.samples = p.steps + 1;
   p.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start / p.dt));
-  if (p.skip >= p.samples) spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(p.samples) + " samples)");
+  if (p.skip >= p.samples)
+    spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(p.samples) + " samples)");
   const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > p.samples - p.skip)
     spectrum.segment_origin.refuse("is longer than the analysed record (" + std::to_string(p.samples - p.skip) +
-                                     " samples = (distance / speed - skip_start) / dt)");
+                                   " samples = (distance / speed - skip_start) / dt)");
   p.welch = study_welch_config(spectrum, 1.0 / p.dt);
   p.solver.analysis = Analysis::Dynamic;
   p.solver.max_iterations = 30;

@@ -85,7 +85,7 @@ enum class SceneKind { ensemble, single_run, stages_only };
 struct SceneInfo {
   std::string name;
   std::string description;
-  SceneKind kind;  // which of the scene types make() returns (make_scene checks it)
+  SceneKind kind;                                     // which of the scene types make() returns (make_scene checks it)
   std::function<std::vector<study::KeySpec>()> keys;  // scene-specific keys (common keys are added)
   std::function<std::unique_ptr<Scene>(const study::Study&)> make;
 };

@@ -4,14 +4,18 @@ namespace rollspec::scenes {
 
 const char* to_string(StageStatus s) {
   switch (s) {
-    case StageStatus::run: return "run";
-    case StageStatus::cached: return "cached";
-    case StageStatus::skipped: return "skipped";
+    case StageStatus::run:
+      return "run";
+    case StageStatus::cached:
+      return "cached";
+    case StageStatus::skipped:
+      return "skipped";
   }
   return "?";
 }
 
-TableStage::TableStage(std::string name, stiffness::CachedTable table, Make make, Build build, Use use, std::string detail)
+TableStage::TableStage(std::string name, stiffness::CachedTable table, Make make, Build build, Use use,
+                       std::string detail)
     : name_(std::move(name)),
       table_(std::move(table)),
       make_(std::move(make)),
@@ -36,7 +40,8 @@ StagePlan TableStage::inspect() const {
 void TableStage::resolve(bool rebuild, bool quiet) {
   const auto data = make_();
   std::string status;
-  table_.resolve(*data, rebuild, [&](stiffness::TableData& t) { build_(t, quiet); }, status);
+  table_.resolve(
+      *data, rebuild, [&](stiffness::TableData& t) { build_(t, quiet); }, status);
   use_(*data, status, quiet);
 }
 

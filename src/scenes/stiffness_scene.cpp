@@ -18,10 +18,12 @@ std::vector<KeySpec> stiffness_scene_keys() {
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<KeySpec> k = {
       real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
-      real_key("ball", "density", "kg/m^3", "ball density (weight = 4/3 pi R^3 rho g)", std::string("7850"), 0.0, inf, false),
+      real_key("ball", "density", "kg/m^3", "ball density (weight = 4/3 pi R^3 rho g)", std::string("7850"), 0.0, inf,
+               false),
       real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
       real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("ball", "gravity", "m/s^2", "gravitational acceleration (for the ball's weight)", std::string("9.81"), 0.0, inf),
+      real_key("ball", "gravity", "m/s^2", "gravitational acceleration (for the ball's weight)", std::string("9.81"),
+               0.0, inf),
       real_key("flat", "youngs_modulus", "Pa", "flat's Young's modulus", std::string("210e9"), 0.0, inf, false),
       real_key("flat", "poisson", "-", "flat's Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
   };
@@ -44,7 +46,8 @@ ContactPair study_contact_pair(const Study& s) {
 namespace {
 class StiffnessScene final : public Scene {
  public:
-  explicit StiffnessScene(const Study& s) : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
+  explicit StiffnessScene(const Study& s)
+      : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
     if (rough_) texture_io::study_psd(s);  // validates the PSD source now
     // `rollspec stiffness` builds and prints the table through stiffness::resolve_table, the same
     // CachedTable, so this stage and that command agree.
@@ -53,7 +56,8 @@ class StiffnessScene final : public Scene {
         "stiffness_table", stiffness::stiffness_cached_table(s, pair.radius, pair.effective_modulus),
         [] { return std::make_unique<stiffness::StiffnessTable>(); },
         [&s, pair](stiffness::TableData& out, bool quiet) {
-          static_cast<stiffness::StiffnessTable&>(out) = stiffness::build_table(s, pair.radius, pair.effective_modulus, quiet);
+          static_cast<stiffness::StiffnessTable&>(out) =
+              stiffness::build_table(s, pair.radius, pair.effective_modulus, quiet);
         },
         [](const stiffness::TableData&, const std::string&, bool) {});
     const TableStage* t = table.get();

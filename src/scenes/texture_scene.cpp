@@ -15,8 +15,8 @@ std::vector<KeySpec> texture_scene_keys() {
   std::vector<KeySpec> keys = texture_io::psd_keys();
   keys.push_back(integer_key("lines", "count", "line textures to generate", std::string("10"), 0, 1e6));
   keys.push_back(real_key("lines", "length", "m", "length of each line texture", std::string("0.4"), 0.0, inf, false));
-  keys.push_back(real_key("lines", "spacing", "m", "sample spacing dx of the lines (dx <= pi / k_max)", std::string("1e-5"),
-                          0.0, inf, false));
+  keys.push_back(real_key("lines", "spacing", "m", "sample spacing dx of the lines (dx <= pi / k_max)",
+                          std::string("1e-5"), 0.0, inf, false));
   for (auto& k : texture_io::surface_keys()) keys.push_back(k);
   keys.push_back(integer_key("surface", "count", "isotropic surfaces to generate", std::string("0"), 0, 1e6));
   return keys;
@@ -26,7 +26,7 @@ namespace {
 class TextureScene final : public Scene {
  public:
   explicit TextureScene(const Study& s) : lines_(s.integer("lines.count")), surfaces_(s.integer("surface.count")) {
-    texture_io::study_psd(s);  // validates the PSD source (files, ranges) now
+    texture_io::study_psd(s);    // validates the PSD source (files, ranges) now
     add_stages(fixed_stages());  // after the members the descriptions name
   }
   std::vector<StagePlan> fixed_stages() const {

@@ -43,9 +43,9 @@ double strip_rms(const texture::Psd& psd, double a) {
 
 }  // namespace
 
-BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf, const study::StripSurfaceSection& surface,
-                                            const texture::Psd& psd, double radius, double e_star, double load,
-                                            double max_step_length) {
+BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf,
+                                            const study::StripSurfaceSection& surface, const texture::Psd& psd,
+                                            double radius, double e_star, double load, double max_step_length) {
   BlockedForceGeometry g;
   const double a = std::cbrt(3.0 * load * radius / (4.0 * e_star));
   g.contact_radius = a;
@@ -64,7 +64,8 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
     g.cell = surface.spacing;
   } else {
     const double fit = 2.0 * reach / static_cast<double>(window_set ? bf.window : kMaxWindow);
-    g.cell = want >= fit ? round3(want, false) : (window_set ? round3(fit, true) : std::min(round3(fit, true), round3(a / 8.0, false)));
+    g.cell = want >= fit ? round3(want, false)
+                         : (window_set ? round3(fit, true) : std::min(round3(fit, true), round3(a / 8.0, false)));
     if (shortest > 0.0 && 2.0 * g.cell > shortest * (1.0 + 1e-12)) g.truncated_wavelength = 2.0 * g.cell;
     if (shortest == 0.0) g.truncated_wavelength = 2.0 * g.cell;
   }
@@ -77,7 +78,7 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
   double step_length = a / 3.0;
   if (max_step_length > 0.0) step_length = std::min(step_length, max_step_length);
   g.step = bf.step > 0 ? static_cast<std::size_t>(bf.step)
-                                                : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(step_length / dx + 1e-9)));
+                       : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(step_length / dx + 1e-9)));
   const double path_step = static_cast<double>(g.step) * dx;
   // At least four segments along the path: a roll-off longer than a quarter of the longest strip
   // leaves the lowest wavenumbers to the first bin (the F0 table holds it flat below).
@@ -86,7 +87,8 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
   g.segment = bf.segment > 0
                   ? static_cast<std::size_t>(bf.segment)
                   : texture::fast_even_length(std::min<std::size_t>(
-                        kMaxPositions / 4, std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(4.0 * correlation / path_step)))));
+                        kMaxPositions / 4,
+                        std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(4.0 * correlation / path_step)))));
   if (bf.strip_length > 0.0) {
     g.nx = static_cast<std::size_t>(std::round(bf.strip_length / dx));
   } else {
@@ -119,16 +121,17 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
 std::string BlockedForceGeometry::describe() const {
   char buf[768];
   const double dx = cell;
-  std::snprintf(buf, sizeof buf,
-                "cell %s (a/%.3g)%s, window %zu cells (%s), strip %zu x %zu cells (%s wide, %s long), step %zu cells "
-                "(%s), %zu positions, Welch segment %zu; contact radius a = %s, texture rms %s; build about %.2g s CPU, "
-                "%.2g s wall on %d thread%s",
-                um(dx).c_str(), contact_radius / dx,
-                truncated_wavelength > 0.0 ? (", texture below " + um(truncated_wavelength) + " dropped").c_str() : "",
-                window, um(static_cast<double>(window) * dx).c_str(), ny, nx, um(static_cast<double>(ny) * dx).c_str(),
-                um(static_cast<double>(nx) * dx).c_str(), step, um(static_cast<double>(step) * dx).c_str(), positions,
-                segment, um(contact_radius).c_str(), um(rms).c_str(), estimated_seconds, estimated_seconds / threads,
-                threads, threads == 1 ? "" : "s");
+  std::snprintf(
+      buf, sizeof buf,
+      "cell %s (a/%.3g)%s, window %zu cells (%s), strip %zu x %zu cells (%s wide, %s long), step %zu cells "
+      "(%s), %zu positions, Welch segment %zu; contact radius a = %s, texture rms %s; build about %.2g s CPU, "
+      "%.2g s wall on %d thread%s",
+      um(dx).c_str(), contact_radius / dx,
+      truncated_wavelength > 0.0 ? (", texture below " + um(truncated_wavelength) + " dropped").c_str() : "", window,
+      um(static_cast<double>(window) * dx).c_str(), ny, nx, um(static_cast<double>(ny) * dx).c_str(),
+      um(static_cast<double>(nx) * dx).c_str(), step, um(static_cast<double>(step) * dx).c_str(), positions, segment,
+      um(contact_radius).c_str(), um(rms).c_str(), estimated_seconds, estimated_seconds / threads, threads,
+      threads == 1 ? "" : "s");
   return buf;
 }
 

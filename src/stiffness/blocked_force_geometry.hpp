@@ -27,16 +27,16 @@
 namespace rollspec::stiffness {
 
 struct BlockedForceGeometry {
-  double contact_radius = 0.0;  // Hertz a at the load (m)
-  double rms = 0.0;             // texture rms height used for the window (m)
-  double cell = 0.0;            // strip and window cell dx = dy (m)
-  std::size_t ny = 0;           // strip width (cells)
-  std::size_t nx = 0;           // strip length (cells, even)
-  std::size_t window = 0;       // solver window (cells, square, at most ny)
-  std::size_t step = 0;         // path step (cells)
-  std::size_t segment = 0;      // Welch segment of the F0 PSD (positions; the build clips it to the path)
-  std::size_t positions = 0;    // ball positions along the path
-  bool derived_cell = false;    // [surface] spacing not set: roughness beyond the grid may be truncated
+  double contact_radius = 0.0;        // Hertz a at the load (m)
+  double rms = 0.0;                   // texture rms height used for the window (m)
+  double cell = 0.0;                  // strip and window cell dx = dy (m)
+  std::size_t ny = 0;                 // strip width (cells)
+  std::size_t nx = 0;                 // strip length (cells, even)
+  std::size_t window = 0;             // solver window (cells, square, at most ny)
+  std::size_t step = 0;               // path step (cells)
+  std::size_t segment = 0;            // Welch segment of the F0 PSD (positions; the build clips it to the path)
+  std::size_t positions = 0;          // ball positions along the path
+  bool derived_cell = false;          // [surface] spacing not set: roughness beyond the grid may be truncated
   double truncated_wavelength = 0.0;  // > 0: texture wavelengths below it are dropped (m)
   double estimated_seconds = 0.0;     // CPU seconds of the table build, this engine's solver speed (rough)
   int threads = 1;                    // threads the build uses (OMP_NUM_THREADS, at most one per chunk)
@@ -49,6 +49,7 @@ struct BlockedForceGeometry {
 // (v / f_s), 0 for no limit.
 BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& blocked_force,
                                             const study::StripSurfaceSection& surface, const texture::Psd& psd,
-                                            double radius, double effective_modulus, double load, double max_step_length);
+                                            double radius, double effective_modulus, double load,
+                                            double max_step_length);
 
 }  // namespace rollspec::stiffness

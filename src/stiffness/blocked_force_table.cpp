@@ -43,7 +43,8 @@ std::vector<const std::vector<double>*> columns(const BlockedForceTable& t) {
 }
 }  // namespace
 
-const TableKind kBlockedForceTableKind = {kBlockedForceFileType, "/blocked_force", "blocked-force-", "blocked-force table"};
+const TableKind kBlockedForceTableKind = {kBlockedForceFileType, "/blocked_force", "blocked-force-",
+                                          "blocked-force table"};
 
 std::string BlockedForceTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
@@ -51,17 +52,16 @@ std::string BlockedForceTable::checksum() const {
   return hex16(h);
 }
 
-double BlockedForceTable::psd_at(double k) const {
-  return path_psd_at(psd_wavenumber, psd, k);
-}
+double BlockedForceTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }
 
 namespace {
 
 // The grid enters as resolved (derived or set), so the input hash names what was computed.
 std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
-     << "\nsegment = " << g.segment << "\nchunk_positions = " << kChunkPositions << "\n";
+  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx
+     << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
+     << "\nchunk_positions = " << kChunkPositions << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -88,8 +88,11 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
   contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
   const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
-  if (!quiet) std::fprintf(stderr, "%sblocked force grid: %s\n", ensemble::rank_prefix().c_str(), geo.describe().c_str());
-  if (!quiet) std::fprintf(stderr, "%sblocked force: %zu positions on a %zu x %zu strip\n", ensemble::rank_prefix().c_str(), positions.size(), nx, ny);
+  if (!quiet)
+    std::fprintf(stderr, "%sblocked force grid: %s\n", ensemble::rank_prefix().c_str(), geo.describe().c_str());
+  if (!quiet)
+    std::fprintf(stderr, "%sblocked force: %zu positions on a %zu x %zu strip\n", ensemble::rank_prefix().c_str(),
+                 positions.size(), nx, ny);
   contact::ContactSolver solver(window_grid, e_star);
   contact::BlockedForcePath path;
   try {
@@ -121,13 +124,14 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
       std::fprintf(stderr,
                    "%sblocked force: %d paths (%d on the pre-search subset), %d solves, %.1f + %.1f CG + stiffness "
                    "iterations per solve, %.3g s wall, %.3g s CPU\n",
-                   ensemble::rank_prefix().c_str(), path.paths + path.presearch_paths, path.presearch_paths, path.solves,
-                   static_cast<double>(path.iterations) / std::max(1, path.solves),
+                   ensemble::rank_prefix().c_str(), path.paths + path.presearch_paths, path.presearch_paths,
+                   path.solves, static_cast<double>(path.iterations) / std::max(1, path.solves),
                    static_cast<double>(path.stiffness_iterations) / std::max(1, path.solves),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    static_cast<double>(std::clock() - start_cpu) / CLOCKS_PER_SEC);
   } catch (const std::invalid_argument& e) {
-    throw config_error(s.where("blocked_force.window") + ": " + e.what() + "; widen the window or the strip ([surface] ny)");
+    throw config_error(s.where("blocked_force.window") + ": " + e.what() +
+                       "; widen the window or the strip ([surface] ny)");
   }
   if (!path.converged)
     throw data_error("blocked force: the path search did not converge (largest error " + num(path.max_error) +
@@ -159,7 +163,8 @@ BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry
 void BlockedForceTable::save_to(io::Hdf5Writer& w) const {
   w.write("/blocked_force/position", {position.size()}, position.data(), "m", "ball position along the strip");
   w.write("/blocked_force/force", {force.size()}, force.data(), "N", "blocked force F0 at the fixed approach d0");
-  w.write("/blocked_force/stiffness", {stiffness.size()}, stiffness.data(), "N/m", "frozen-set stiffness with the sub-cell contact edge along the path (contact README Eq. 11, 13-15)");
+  w.write("/blocked_force/stiffness", {stiffness.size()}, stiffness.data(), "N/m",
+          "frozen-set stiffness with the sub-cell contact edge along the path (contact README Eq. 11, 13-15)");
   w.write("/blocked_force/psd_wavenumber", {psd_wavenumber.size()}, psd_wavenumber.data(), "rad/m", "wavenumber");
   w.write("/blocked_force/psd", {psd.size()}, psd.data(), "N^2 m/rad", "one-sided PSD of F0 along the path (Welch)");
   w.attribute("/blocked_force", "approach", approach);

@@ -41,8 +41,10 @@ std::string differences(const std::string& stored, const std::string& wanted) {
   std::string out;
   for (const auto& [k, v] : b) {
     const auto it = a.find(k);
-    if (it == a.end()) out += "\n  " + k + ": not in the table, study has " + v;
-    else if (it->second != v) out += "\n  " + k + ": table has " + it->second + ", study has " + v;
+    if (it == a.end())
+      out += "\n  " + k + ": not in the table, study has " + v;
+    else if (it->second != v)
+      out += "\n  " + k + ": table has " + it->second + ", study has " + v;
   }
   for (const auto& [k, v] : a)
     if (!b.count(k)) out += "\n  " + k + ": table has " + v + ", the study does not";
@@ -71,12 +73,15 @@ StoredIdentity load_checked(const TableKind& kind, const std::string& path, Tabl
 
 }  // namespace
 
-CachedTable::CachedTable(const TableKind& kind, const study::Study& s, std::string inputs, const std::string& explicit_path)
+CachedTable::CachedTable(const TableKind& kind, const study::Study& s, std::string inputs,
+                         const std::string& explicit_path)
     : kind_(kind), study_(&s), inputs_(std::move(inputs)), hash_(hex16(ensemble::fnv1a64(inputs_))) {
   const fs::path dir = fs::path(s.file()).parent_path();
   automatic_ = explicit_path.empty();
-  if (!automatic_) path_ = (fs::path(explicit_path).is_absolute() ? fs::path(explicit_path) : dir / explicit_path).string();
-  else path_ = (dir / s.text("stiffness.table_dir") / (kind.file_prefix + hash_ + ".h5")).string();
+  if (!automatic_)
+    path_ = (fs::path(explicit_path).is_absolute() ? fs::path(explicit_path) : dir / explicit_path).string();
+  else
+    path_ = (dir / s.text("stiffness.table_dir") / (kind.file_prefix + hash_ + ".h5")).string();
 }
 
 TableState CachedTable::inspect(TableData& scratch, std::string& why) const {
@@ -84,8 +89,8 @@ TableState CachedTable::inspect(TableData& scratch, std::string& why) const {
   try {
     const StoredIdentity stored = load_checked(kind_, path_, scratch);
     if (stored.hash != hash_) {
-      why = path_ + ": table inputs differ from the study's (hash " + stored.hash + " vs " + hash_ + "):" +
-            differences(stored.inputs, inputs_);
+      why = path_ + ": table inputs differ from the study's (hash " + stored.hash + " vs " + hash_ +
+            "):" + differences(stored.inputs, inputs_);
       return TableState::mismatched;
     }
     if (stored.inputs != inputs_) {
@@ -131,9 +136,12 @@ void CachedTable::write(const std::string& write_path, const TableData& t) const
 
 std::string table_plan_reason(const CachedTable& t, TableState state, const std::string& why) {
   switch (state) {
-    case TableState::valid: return t.path() + " (input hash " + t.hash() + ")";
-    case TableState::missing: return "no " + std::string(t.kind().title) + " with input hash " + t.hash() + " at " + t.path();
-    case TableState::mismatched: break;
+    case TableState::valid:
+      return t.path() + " (input hash " + t.hash() + ")";
+    case TableState::missing:
+      return "no " + std::string(t.kind().title) + " with input hash " + t.hash() + " at " + t.path();
+    case TableState::mismatched:
+      break;
   }
   return "REFUSED unless --rebuild: " + why;
 }

@@ -44,8 +44,9 @@ std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& 
 
 std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips") << "\nstrip_cells = " << g.nx
-     << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
+  in << ball_inputs_text(s, radius, e_star, load)
+     << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips")
+     << "\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
      << "\nchunk_positions = " << kChunkPositions << "\nsolve = load control\noutputs = h_eq, k_eq\nload_tolerance = "
      << num(strip_load_tolerance(study::StiffnessSection::parse(s).solver)) << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
@@ -74,14 +75,13 @@ double EquivalentRoughnessTable::stiffness_ratio() const {
   return n == 0 || !(smooth_stiffness > 0.0) ? 1.0 : sum / static_cast<double>(n) / smooth_stiffness;
 }
 
-double EquivalentRoughnessTable::psd_at(double k) const {
-  return path_psd_at(psd_wavenumber, psd, k);
-}
+double EquivalentRoughnessTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }
 
 double equivalent_roughness_seconds(const Study& s, const BlockedForceGeometry& g) {
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window), n144 = 4.0 * 144.0 * 144.0;
   const double per_position = kSecondsPerPosition144 * n2 * std::log2(n2) / (n144 * std::log2(n144));
-  return static_cast<double>(s.integer("equivalent_roughness.strips")) * static_cast<double>(g.positions) * per_position;
+  return static_cast<double>(s.integer("equivalent_roughness.strips")) * static_cast<double>(g.positions) *
+         per_position;
 }
 
 std::string equivalent_roughness_describe(const Study& s, const BlockedForceGeometry& g) {
@@ -89,18 +89,19 @@ std::string equivalent_roughness_describe(const Study& s, const BlockedForceGeom
   const int chunks = static_cast<int>((g.positions + kChunkPositions - 1) / kChunkPositions);
   const int threads = std::max(1, std::min(omp_get_max_threads(), chunks));
   char buf[768];
-  std::snprintf(buf, sizeof buf,
-                "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
-                "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
-                "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
-                static_cast<long long>(s.integer("equivalent_roughness.strips")),
-                static_cast<long long>(s.integer("equivalent_roughness.strips") - 1), g.nx, g.ny,
-                um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),
-                um(g.cell).c_str(), g.contact_radius / g.cell,
-                g.truncated_wavelength > 0.0 ? (", texture below " + um(g.truncated_wavelength) + " dropped").c_str() : "",
-                g.window, g.positions, g.step, um(static_cast<double>(g.step) * g.cell).c_str(), g.segment,
-                um(g.contact_radius).c_str(), equivalent_roughness_seconds(s, g),
-                equivalent_roughness_seconds(s, g) / threads, threads, threads == 1 ? "" : "s");
+  std::snprintf(
+      buf, sizeof buf,
+      "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
+      "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
+      "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
+      static_cast<long long>(s.integer("equivalent_roughness.strips")),
+      static_cast<long long>(s.integer("equivalent_roughness.strips") - 1), g.nx, g.ny,
+      um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),
+      um(g.cell).c_str(), g.contact_radius / g.cell,
+      g.truncated_wavelength > 0.0 ? (", texture below " + um(g.truncated_wavelength) + " dropped").c_str() : "",
+      g.window, g.positions, g.step, um(static_cast<double>(g.step) * g.cell).c_str(), g.segment,
+      um(g.contact_radius).c_str(), equivalent_roughness_seconds(s, g), equivalent_roughness_seconds(s, g) / threads,
+      threads, threads == 1 ? "" : "s");
   return buf;
 }
 
@@ -120,20 +121,23 @@ void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
   const auto n_strips = static_cast<std::size_t>(strips);
   w.write("/equivalent_roughness/position", {position.size()}, position.data(), "m", "ball position along the strip");
   w.write("/equivalent_roughness/height", {n_strips, position.size()}, height.data(), "m",
-          "equivalent roughness h_eq = delta_smooth - delta_eq at the ball's weight (contact README ER-1, ER-2), strip x position");
-  w.write("/equivalent_roughness/psd_wavenumber", {psd_wavenumber.size()}, psd_wavenumber.data(), "rad/m", "wavenumber");
+          "equivalent roughness h_eq = delta_smooth - delta_eq at the ball's weight (contact README ER-1, ER-2), strip "
+          "x position");
+  w.write("/equivalent_roughness/psd_wavenumber", {psd_wavenumber.size()}, psd_wavenumber.data(), "rad/m",
+          "wavenumber");
   w.write("/equivalent_roughness/psd", {psd.size()}, psd.data(), "m^3",
           "one-sided PSD of h_eq along the path (Welch per strip, mean over strips)");
   w.write("/equivalent_roughness/stiffness", {n_strips, position.size()}, stiffness.data(), "N/m",
-          "contact stiffness k_eq = dP/d delta at delta_eq (contact README ER-7) at every 16th position (NaN between), strip x position");
+          "contact stiffness k_eq = dP/d delta at delta_eq (contact README ER-7) at every 16th position (NaN between), "
+          "strip x position");
   w.attribute("/equivalent_roughness", "smooth_approach", smooth_approach);
   w.attribute("/equivalent_roughness", "smooth_stiffness", smooth_stiffness);
   w.attribute("/equivalent_roughness", "load", load);
   w.attribute("/equivalent_roughness", "strips", strips);
 }
 
-CachedTable equivalent_roughness_cached_table(const Study& s, const BlockedForceGeometry& g, double radius, double e_star,
-                                              double load) {
+CachedTable equivalent_roughness_cached_table(const Study& s, const BlockedForceGeometry& g, double radius,
+                                              double e_star, double load) {
   return CachedTable(kEquivalentRoughnessTableKind, s, inputs_text(s, g, radius, e_star, load));
 }
 
@@ -175,7 +179,8 @@ EquivalentRoughnessTable build_equivalent_roughness(const Study& s, const Blocke
     try {
       r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, shape, positions, load, opts, po);
     } catch (const std::invalid_argument& e) {
-      throw config_error(s.where("blocked_force.window") + ": " + e.what() + "; widen the window or the strip ([surface] ny)");
+      throw config_error(s.where("blocked_force.window") + ": " + e.what() +
+                         "; widen the window or the strip ([surface] ny)");
     }
     if (!r.converged)
       throw data_error("equivalent roughness: strip " + std::to_string(si) + " did not converge (largest error " +

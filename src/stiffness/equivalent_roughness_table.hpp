@@ -24,10 +24,10 @@ constexpr const char* kEquivalentRoughnessFileType = "rollspec-equivalent-roughn
 extern const TableKind kEquivalentRoughnessTableKind;
 
 struct EquivalentRoughnessTable : TableData {
-  std::vector<double> position;                // m along the strip (the same for every strip)
-  std::vector<double> height;                  // h_eq (m), strips x positions (ER-2)
-  std::vector<double> psd_wavenumber, psd;     // rad/m, m^3 (one-sided PSD of h_eq - mean, strip mean)
-  std::vector<double> stiffness;               // k_eq (N/m) at delta_eq, strips x positions (ER-7)
+  std::vector<double> position;             // m along the strip (the same for every strip)
+  std::vector<double> height;               // h_eq (m), strips x positions (ER-2)
+  std::vector<double> psd_wavenumber, psd;  // rad/m, m^3 (one-sided PSD of h_eq - mean, strip mean)
+  std::vector<double> stiffness;            // k_eq (N/m) at delta_eq, strips x positions (ER-7)
   double smooth_approach = 0.0, smooth_stiffness = 0.0, load = 0.0, strips = 0.0;
   // rho of ER-7: the strips' mean k_eq over the flat strip's k at the weight (same discretisation).
   double stiffness_ratio() const;

@@ -45,24 +45,26 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
   g.path_length = path_length;
   g.approaches = static_cast<std::size_t>(p.approaches);
   g.step = p.step > 0 ? static_cast<std::size_t>(p.step)
-                                             : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(a / 4.0 / dx + 1e-9)));
+                      : std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(a / 4.0 / dx + 1e-9)));
   // Window: every cell with rigid interference at δ_hi (BF-5; the build refuses otherwise).
-  const double reach = std::max(2.6 * a, std::sqrt(2.0 * radius * ((kReach + 0.3) * dh + 2.0 * kPeakSigmas * g.base.rms)));
+  const double reach =
+      std::max(2.6 * a, std::sqrt(2.0 * radius * ((kReach + 0.3) * dh + 2.0 * kPeakSigmas * g.base.rms)));
   g.window = texture::fast_even_length(static_cast<std::size_t>(std::ceil(2.0 * reach / dx - 1e-9)) + 2);
   g.ny = surface.ny_set ? static_cast<std::size_t>(surface.ny) : g.window;
   g.window = std::min(g.window, g.ny);
-  if (g.window < 8) surface.ny_origin.refuse("leaves a path-table window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
+  if (g.window < 8)
+    surface.ny_origin.refuse("leaves a path-table window of " + std::to_string(g.window) +
+                             " cells; allowed: 8 or more");
   const double step_length = static_cast<double>(g.step) * dx;
   g.positions = static_cast<std::size_t>(std::ceil(path_length / step_length - 1e-9)) + 2;  // one step beyond the end
   const std::size_t need = g.window + (g.positions - 1) * g.step + 1;
   if (p.strip_length > 0.0) {
     g.nx = static_cast<std::size_t>(std::round(p.strip_length / dx));
     if (g.nx < need)
-      p.strip_length_origin.refuse(
-               "= " + num(p.strip_length) + " m is shorter than the ball's path in the run (" +
-                   um(path_length) + " plus one step of " + um(step_length) + ") plus the solver window (" +
-                   std::to_string(g.window) + " cells of " + um(dx) + "); allowed: 0 (derived) or at least " +
-                   num(static_cast<double>(need) * dx) + " m");
+      p.strip_length_origin.refuse("= " + num(p.strip_length) + " m is shorter than the ball's path in the run (" +
+                                   um(path_length) + " plus one step of " + um(step_length) +
+                                   ") plus the solver window (" + std::to_string(g.window) + " cells of " + um(dx) +
+                                   "); allowed: 0 (derived) or at least " + num(static_cast<double>(need) * dx) + " m");
   } else {
     g.nx = need;
   }
@@ -82,16 +84,18 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
 std::string PathTableGeometry::describe() const {
   char buf[1024];
   const double dx = base.cell;
-  std::snprintf(buf, sizeof buf,
-                "strip 0 of the surface, cell %s (a/%.3g)%s, strip %zu x %zu cells (%s long, %s wide), window %zu cells, "
-                "%zu approaches (more until P >= 5 W at every position, B43a) x %zu positions (step %zu cells = %s) over the ball's path of %s; contact radius a = %s, "
-                "texture rms %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
-                um(dx).c_str(), base.contact_radius / dx,
-                base.truncated_wavelength > 0.0 ? (", texture below " + um(base.truncated_wavelength) + " dropped").c_str() : "",
-                nx, ny, um(static_cast<double>(nx) * dx).c_str(), um(static_cast<double>(ny) * dx).c_str(), window,
-                approaches, positions, step, um(static_cast<double>(step) * dx).c_str(), um(path_length).c_str(),
-                um(base.contact_radius).c_str(), um(base.rms).c_str(), estimated_seconds, estimated_seconds / threads,
-                threads, threads == 1 ? "" : "s");
+  std::snprintf(
+      buf, sizeof buf,
+      "strip 0 of the surface, cell %s (a/%.3g)%s, strip %zu x %zu cells (%s long, %s wide), window %zu cells, "
+      "%zu approaches (more until P >= 5 W at every position, B43a) x %zu positions (step %zu cells = %s) over the "
+      "ball's path of %s; contact radius a = %s, "
+      "texture rms %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
+      um(dx).c_str(), base.contact_radius / dx,
+      base.truncated_wavelength > 0.0 ? (", texture below " + um(base.truncated_wavelength) + " dropped").c_str() : "",
+      nx, ny, um(static_cast<double>(nx) * dx).c_str(), um(static_cast<double>(ny) * dx).c_str(), window, approaches,
+      positions, step, um(static_cast<double>(step) * dx).c_str(), um(path_length).c_str(),
+      um(base.contact_radius).c_str(), um(base.rms).c_str(), estimated_seconds, estimated_seconds / threads, threads,
+      threads == 1 ? "" : "s");
   return buf;
 }
 
@@ -103,8 +107,9 @@ std::vector<const std::vector<double>*> columns(const PathTableData& t) {
 
 std::string inputs_text(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step
-     << "\npositions = " << g.positions << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
+  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
+     << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
+     << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
      << "\ntop_force = " << num(contact::PathTableOptions{}.top_force)
      << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
@@ -128,9 +133,12 @@ void PathTableData::load_from(const io::Hdf5Reader& r) {
 }
 
 void PathTableData::save_to(io::Hdf5Writer& w) const {
-  w.write("/path_table/position", {position.size()}, position.data(), "m", "ball position xi_k along the path, from the traverse's start");
-  w.write("/path_table/approach", {approach.size()}, approach.data(), "m", "rigid approach delta_j from the strip's mean plane (kernels/beam B43)");
-  w.write("/path_table/first_contact", {first_contact.size()}, first_contact.data(), "m", "first-contact approach delta_c(xi_k) (kernels/beam B42)");
+  w.write("/path_table/position", {position.size()}, position.data(), "m",
+          "ball position xi_k along the path, from the traverse's start");
+  w.write("/path_table/approach", {approach.size()}, approach.data(), "m",
+          "rigid approach delta_j from the strip's mean plane (kernels/beam B43)");
+  w.write("/path_table/first_contact", {first_contact.size()}, first_contact.data(), "m",
+          "first-contact approach delta_c(xi_k) (kernels/beam B42)");
   w.write("/path_table/force", {approach.size(), position.size()}, force.data(), "N",
           "P(delta_j, xi_k): force of the elastic-plastic half-space solve (kernels/beam B41), approach x position");
   w.attribute("/path_table", "load", load);
@@ -157,14 +165,17 @@ PathTableData build_path_table(const Study& s, const PathTableGeometry& g, doubl
   int rows_done = 0;
   if (!quiet)
     po.on_row = [&](double approach, int solves, int iterations) {
-      std::fprintf(stderr, "%spath table: row %d of %zu or more (approach %.4g um) done, %.1f CG iterations per position, %.3g s\n",
-                   ensemble::rank_prefix().c_str(), ++rows_done, g.approaches, approach * 1e6,
-                   static_cast<double>(iterations) / std::max(1, solves),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      std::fprintf(
+          stderr,
+          "%spath table: row %d of %zu or more (approach %.4g um) done, %.1f CG iterations per position, %.3g s\n",
+          ensemble::rank_prefix().c_str(), ++rows_done, g.approaches, approach * 1e6,
+          static_cast<double>(iterations) / std::max(1, solves),
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     };
   contact::PathTable t;
   try {
-    t = contact::build_path_table(window_grid, e_star, strip_grid, strip.heights, radius, shape, positions, load, opts, po);
+    t = contact::build_path_table(window_grid, e_star, strip_grid, strip.heights, radius, shape, positions, load, opts,
+                                  po);
   } catch (const std::invalid_argument& e) {
     throw config_error(s.where("surface.ny") + ": " + e.what() + "; widen the strip ([surface] ny)");
   }
@@ -172,9 +183,11 @@ PathTableData build_path_table(const Study& s, const PathTableGeometry& g, doubl
     throw data_error("path table: a contact solve did not converge (largest error " + num(t.max_error) +
                      "); raise [stiffness] max_iterations or tolerance");
   if (!quiet)
-    std::fprintf(stderr, "%spath table: %zu approaches (last carries >= %.3g W everywhere), %d solves, %d CG iterations, %.3g s wall\n",
-                 ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    std::fprintf(
+        stderr,
+        "%spath table: %zu approaches (last carries >= %.3g W everywhere), %d solves, %d CG iterations, %.3g s wall\n",
+        ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   PathTableData d;
   for (double x : t.position) d.position.push_back(x - t.position.front());
   d.approach = t.approach;

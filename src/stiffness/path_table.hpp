@@ -34,13 +34,13 @@ constexpr const char* kPathTableFileType = "rollspec-path-table";
 extern const TableKind kPathTableKind;
 
 struct PathTableGeometry {
-  BlockedForceGeometry base;   // cell, contact radius, rms (the blocked-force derivation)
-  std::size_t nx = 0, ny = 0;  // strip (cells)
-  std::size_t window = 0;      // solver window (cells, square)
-  std::size_t step = 0;        // path step (cells)
-  std::size_t positions = 0;   // path positions
-  std::size_t approaches = 0;  // J
-  double path_length = 0.0;    // the ball's path in the run (m)
+  BlockedForceGeometry base;       // cell, contact radius, rms (the blocked-force derivation)
+  std::size_t nx = 0, ny = 0;      // strip (cells)
+  std::size_t window = 0;          // solver window (cells, square)
+  std::size_t step = 0;            // path step (cells)
+  std::size_t positions = 0;       // path positions
+  std::size_t approaches = 0;      // J
+  double path_length = 0.0;        // the ball's path in the run (m)
   double estimated_seconds = 0.0;  // CPU seconds of the build (rough)
   int threads = 1;                 // threads the build uses (rows in parallel)
   std::string describe() const;
@@ -62,10 +62,10 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& path_table,
                                       const study::StripSurfaceSection& surface, const texture::Psd& psd, double radius,
                                       double effective_modulus, double load, double path_length);
 
-CachedTable path_cached_table(const study::Study& s, const PathTableGeometry& g, double radius, double effective_modulus,
-                              double load);
+CachedTable path_cached_table(const study::Study& s, const PathTableGeometry& g, double radius,
+                              double effective_modulus, double load);
 
-PathTableData build_path_table(const study::Study& s, const PathTableGeometry& g, double radius, double effective_modulus,
-                               double load, bool quiet);
+PathTableData build_path_table(const study::Study& s, const PathTableGeometry& g, double radius,
+                               double effective_modulus, double load, bool quiet);
 
 }  // namespace rollspec::stiffness

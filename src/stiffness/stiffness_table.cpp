@@ -34,16 +34,14 @@ namespace {
 // Realisation ids of the ball's own roughness start here, clear of the flat's 0..R-1.
 constexpr std::uint64_t kBallRealisations = 1u << 30;
 
-
-
-
 // Datasets in checksum order.
-const char* kDatasets[] = {"approach", "force_mean", "force_std", "stiffness_mean", "stiffness_std", "contact_area_mean",
+const char* kDatasets[] = {"approach",           "force_mean",        "force_std",
+                           "stiffness_mean",     "stiffness_std",     "contact_area_mean",
                            "plastic_cells_mean", "max_pressure_mean", "iterations_mean"};
 
 std::vector<const std::vector<double>*> columns(const StiffnessTable& t) {
-  return {&t.approach, &t.force_mean, &t.force_std, &t.stiffness_mean, &t.stiffness_std, &t.contact_area_mean,
-          &t.plastic_cells_mean, &t.max_pressure_mean, &t.iterations_mean};
+  return {&t.approach,          &t.force_mean,         &t.force_std,         &t.stiffness_mean, &t.stiffness_std,
+          &t.contact_area_mean, &t.plastic_cells_mean, &t.max_pressure_mean, &t.iterations_mean};
 }
 
 }  // namespace
@@ -75,16 +73,19 @@ CachedTable stiffness_cached_table(const study::Study& s, double ball_radius, do
   const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
-     << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << stiffness.text("shape") << "\n\n[stiffness]\n";
+     << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << stiffness.text("shape")
+     << "\n\n[stiffness]\n";
   for (const char* k : {"surface", "ball_rms", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
     in << k << " = " << stiffness.text(k) << "\n";
-  in << "realisations = " << (stiffness.rough ? stiffness.text("realisations") : "1") << "\nseed = " << s.text("study.seed") << "\n";
+  in << "realisations = " << (stiffness.rough ? stiffness.text("realisations") : "1")
+     << "\nseed = " << s.text("study.seed") << "\n";
   in << "\n[surface]\n";
   for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
     in << k << " = " << s.text(std::string("surface.") + k) << "\n";
   // Eq. 26a changed the spectral surfaces of non-square grids only (square: the same bits), so only
   // their tables take a new hash.
-  if (s.integer("surface.nx") != s.integer("surface.ny")) in << "mode power = rectangular cell mean (kernels/texture Eq. 26a)\n";
+  if (s.integer("surface.nx") != s.integer("surface.ny"))
+    in << "mode power = rectangular cell mean (kernels/texture Eq. 26a)\n";
   if (stiffness.rough) {
     in << "\n[texture]\n";
     for (const auto& k : texture_io::psd_keys())
@@ -102,11 +103,13 @@ CachedTable stiffness_cached_table(const study::Study& s, double ball_radius, do
 }
 
 void StiffnessTable::load_from(const io::Hdf5Reader& r) {
-  std::vector<std::vector<double>*> cols = {&approach, &force_mean, &force_std, &stiffness_mean, &stiffness_std,
-                                            &contact_area_mean, &plastic_cells_mean, &max_pressure_mean, &iterations_mean};
+  std::vector<std::vector<double>*> cols = {&approach,           &force_mean,        &force_std,
+                                            &stiffness_mean,     &stiffness_std,     &contact_area_mean,
+                                            &plastic_cells_mean, &max_pressure_mean, &iterations_mean};
   for (std::size_t i = 0; i < cols.size(); ++i) *cols[i] = r.read(std::string("/stiffness/") + kDatasets[i]);
   for (const auto* c : cols)
-    if (c->size() != approach.size() || c->size() < 2) throw data_error(r.path() + ": table columns have different lengths");
+    if (c->size() != approach.size() || c->size() < 2)
+      throw data_error(r.path() + ": table columns have different lengths");
   ball_radius = r.double_attribute("/stiffness", "ball_radius");
   effective_modulus = r.double_attribute("/stiffness", "effective_modulus");
   hardness = r.double_attribute("/stiffness", "hardness");
@@ -130,7 +133,8 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   const auto shape = stiffness.shape;
   const double ball_rms = stiffness.ball_rms;
-  if (ball_rms > 0.0 && !is_rough) stiffness.ball_rms_origin.refuse("needs [stiffness] surface = rough (the flat's realisations)");
+  if (ball_rms > 0.0 && !is_rough)
+    stiffness.ball_rms_origin.refuse("needs [stiffness] surface = rough (the flat's realisations)");
   contact::SolverOptions opts = stiffness.solver;
   std::vector<double> deltas(steps);
   for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);
@@ -145,7 +149,8 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
   std::exception_ptr failure;
   int mine = 0;
   for (int r = rank; r < R; r += ranks) ++mine;
-  ensemble::Progress progress("stiffness realisations", static_cast<std::uint64_t>(mine), quiet, ensemble::rank_prefix());
+  ensemble::Progress progress("stiffness realisations", static_cast<std::uint64_t>(mine), quiet,
+                              ensemble::rank_prefix());
 #pragma omp parallel
   {
     std::unique_ptr<contact::ContactSolver> solver;
@@ -180,7 +185,8 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
             throw data_error("stiffness table: the contact solve of realisation " + std::to_string(r) + ", step " +
                              std::to_string(j + 1) + " (approach " + num(deltas[j]) + " m) did not converge: error " +
                              num(c.error) + " > tolerance " + num(opts.tolerance) + " after " +
-                             std::to_string(c.iterations) + " iterations; raise [stiffness] max_iterations or tolerance");
+                             std::to_string(c.iterations) +
+                             " iterations; raise [stiffness] max_iterations or tolerance");
         }
         progress.advance();
       } catch (...) {
@@ -191,7 +197,8 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
   }
   const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
   if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere) throw UserError(EX_SOFTWARE, ensemble::rank_prefix() + "stiffness table: another rank failed (see its message)");
+  if (failed_somewhere)
+    throw UserError(EX_SOFTWARE, ensemble::rank_prefix() + "stiffness table: another rank failed (see its message)");
   progress.finish();
   {
     // Six numbers per step and realisation travel to every rank.
@@ -199,8 +206,8 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
     for (int r = rank; r < R; r += ranks) {
       auto& row = rows[static_cast<std::uint64_t>(r)];
       for (const auto& c : results[static_cast<std::size_t>(r)])
-        row.insert(row.end(), {c.force, c.stiffness, c.contact_area, static_cast<double>(c.plastic_cells), c.max_pressure,
-                               static_cast<double>(c.iterations)});
+        row.insert(row.end(), {c.force, c.stiffness, c.contact_area, static_cast<double>(c.plastic_cells),
+                               c.max_pressure, static_cast<double>(c.iterations)});
     }
     for (const auto& [r, row] : ensemble::allgather_rows(rows, 6 * steps)) {
       auto& res = results[static_cast<std::size_t>(r)];
@@ -227,7 +234,9 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
       a += c.contact_area, pc += static_cast<double>(c.plastic_cells), pm += c.max_pressure, it += c.iterations;
     }
     const double n = R;
-    auto sd = [n](double s1, double s2) { return n > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / n) / (n - 1))) : 0.0; };
+    auto sd = [n](double s1, double s2) {
+      return n > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / n) / (n - 1))) : 0.0;
+    };
     t.approach.push_back(deltas[j]);
     t.force_mean.push_back(f / n), t.force_std.push_back(sd(f, f2));
     t.stiffness_mean.push_back(k / n), t.stiffness_std.push_back(sd(k, k2));
@@ -247,8 +256,9 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
     t.fit_coefficient = std::exp((sy - t.fit_exponent * sx) / m);
     for (std::size_t j = 1; j < t.approach.size(); ++j)
       if (t.force_mean[j] > 0)
-        t.fit_max_relative_error = std::max(t.fit_max_relative_error,
-            std::abs(t.fit_coefficient * std::pow(t.approach[j], t.fit_exponent) / t.force_mean[j] - 1.0));
+        t.fit_max_relative_error =
+            std::max(t.fit_max_relative_error,
+                     std::abs(t.fit_coefficient * std::pow(t.approach[j], t.fit_exponent) / t.force_mean[j] - 1.0));
   }
   t.ball_radius = ball_radius;
   t.effective_modulus = effective_modulus;
@@ -261,15 +271,21 @@ StiffnessTable build_table(const study::Study& s, double ball_radius, double eff
 void StiffnessTable::save_to(io::Hdf5Writer& w) const {
   const std::size_t n = approach.size();
   const char* units[] = {"m", "N", "N", "N/m", "N/m", "m^2", "1", "Pa", "1"};
-  const char* what[] = {"approach from first contact", "mean force over realisations", "standard deviation of the force",
-                        "mean frozen-set stiffness dP/d delta", "standard deviation of the stiffness",
-                        "mean real contact area", "mean number of plastic cells (p = H)", "mean of the maximum pressure",
+  const char* what[] = {"approach from first contact",
+                        "mean force over realisations",
+                        "standard deviation of the force",
+                        "mean frozen-set stiffness dP/d delta",
+                        "standard deviation of the stiffness",
+                        "mean real contact area",
+                        "mean number of plastic cells (p = H)",
+                        "mean of the maximum pressure",
                         "mean CG iterations of the contact solve"};
   const auto cols = columns(*this);
   for (std::size_t i = 0; i < cols.size(); ++i)
     w.write(std::string("/stiffness/") + kDatasets[i], {n}, cols[i]->data(), units[i], what[i]);
   w.make_scale("/stiffness/approach", "approach");
-  for (std::size_t i = 1; i < cols.size(); ++i) w.attach_scale(std::string("/stiffness/") + kDatasets[i], "/stiffness/approach", 0);
+  for (std::size_t i = 1; i < cols.size(); ++i)
+    w.attach_scale(std::string("/stiffness/") + kDatasets[i], "/stiffness/approach", 0);
   w.attribute("/stiffness", "ball_radius", ball_radius);
   w.attribute("/stiffness", "effective_modulus", effective_modulus);
   w.attribute("/stiffness", "hardness", hardness);
@@ -278,7 +294,8 @@ void StiffnessTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/stiffness", "stopping_rule",
               std::string("max_i C_ii |p_i - clamp(p_i - g_i / C_ii, 0, H)| / max_i (w - s_i) < solver_tolerance"));
   const double fit[] = {fit_coefficient, fit_exponent, fit_max_relative_error};
-  w.write("/stiffness/fit/parameters", {3}, fit, "1", "P = coefficient * approach^exponent (SI), and its max relative error");
+  w.write("/stiffness/fit/parameters", {3}, fit, "1",
+          "P = coefficient * approach^exponent (SI), and its max relative error");
   w.attribute("/stiffness/fit", "form", std::string("P = coefficient * approach^exponent"));
   w.attribute("/stiffness/fit", "coefficient", fit_coefficient);
   w.attribute("/stiffness/fit", "exponent", fit_exponent);
@@ -289,13 +306,16 @@ void StiffnessTable::save_to(io::Hdf5Writer& w) const {
               std::string("a summary of the table; the dynamics interpolate the table itself, never this fit"));
 }
 
-StiffnessTable resolve_table(const study::Study& s, double ball_radius, double effective_modulus, bool rebuild, bool quiet,
-                             std::string& status) {
+StiffnessTable resolve_table(const study::Study& s, double ball_radius, double effective_modulus, bool rebuild,
+                             bool quiet, std::string& status) {
   const CachedTable cached = stiffness_cached_table(s, ball_radius, effective_modulus);
   StiffnessTable t;
-  cached.resolve(t, rebuild,
-                 [&](TableData& out) { static_cast<StiffnessTable&>(out) = build_table(s, ball_radius, effective_modulus, quiet); },
-                 status);
+  cached.resolve(
+      t, rebuild,
+      [&](TableData& out) {
+        static_cast<StiffnessTable&>(out) = build_table(s, ball_radius, effective_modulus, quiet);
+      },
+      status);
   t.input_hash = cached.hash();
   return t;
 }

@@ -24,19 +24,19 @@ constexpr const char* kTableFileType = "rollspec-stiffness-table";
 extern const TableKind kStiffnessTableKind;
 
 struct StiffnessTable : TableData {
-  std::vector<double> approach;          // delta_j, m (first entry 0)
+  std::vector<double> approach;  // delta_j, m (first entry 0)
   std::vector<double> force_mean, force_std;
   std::vector<double> stiffness_mean, stiffness_std;
   std::vector<double> contact_area_mean, plastic_cells_mean, max_pressure_mean, iterations_mean;
   double ball_radius = 0.0, effective_modulus = 0.0, hardness = 0.0;  // m, Pa, Pa (inf: elastic)
   std::int64_t realisations = 0;
-  double tolerance = 0.0;                // solver stopping rule (complementarity error)
+  double tolerance = 0.0;  // solver stopping rule (complementarity error)
   double fit_coefficient = 0.0, fit_exponent = 0.0, fit_max_relative_error = 0.0;  // P = c delta^n
   // A summary only: the dynamics interpolate the table itself. A fit whose largest relative error
   // over the table's nonzero forces exceeds this is flagged as not usable wherever it is shown.
   static constexpr double fit_tolerance = 0.05;
   bool fit_usable() const { return fit_max_relative_error <= fit_tolerance; }
-  std::string input_hash;                // of the CachedTable it came from
+  std::string input_hash;  // of the CachedTable it came from
   // Approach and stiffness where the mean force equals `load` (monotone interpolation of the table).
   double approach_at(double load) const;
   double stiffness_at(double load) const;

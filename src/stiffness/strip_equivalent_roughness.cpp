@@ -33,7 +33,9 @@ std::string inputs_text(const Study& s, const PathTableGeometry& g, double radiu
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
-     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(study::StiffnessSection::parse(s).solver)) << "\n";
+     << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment
+     << "\noutputs = h_eq, k_eq\nload_tolerance = "
+     << num(strip_load_tolerance(study::StiffnessSection::parse(s).solver)) << "\n";
   in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
@@ -48,12 +50,13 @@ double estimated_seconds(const PathTableGeometry& g) {
 std::string strip_equivalent_roughness_describe(const PathTableGeometry& g) {
   char buf[512];
   const double dx = g.base.cell;
-  std::snprintf(buf, sizeof buf,
-                "line = strip: h_eq of strip 0 of the surface along the ball's path of %s, the path table's grid: cell %s "
-                "(a/%.3g), strip %zu x %zu cells, window %zu cells, %zu positions (step %zu cells = %s); build about "
-                "%.2g s on one core; every realisation rolls over this one strip (K > 1 repeats the same run)",
-                um(g.path_length).c_str(), um(dx).c_str(), g.base.contact_radius / dx, g.nx, g.ny, g.window,
-                g.positions, g.step, um(static_cast<double>(g.step) * dx).c_str(), estimated_seconds(g));
+  std::snprintf(
+      buf, sizeof buf,
+      "line = strip: h_eq of strip 0 of the surface along the ball's path of %s, the path table's grid: cell %s "
+      "(a/%.3g), strip %zu x %zu cells, window %zu cells, %zu positions (step %zu cells = %s); build about "
+      "%.2g s on one core; every realisation rolls over this one strip (K > 1 repeats the same run)",
+      um(g.path_length).c_str(), um(dx).c_str(), g.base.contact_radius / dx, g.nx, g.ny, g.window, g.positions, g.step,
+      um(static_cast<double>(g.step) * dx).c_str(), estimated_seconds(g));
   return buf;
 }
 
@@ -82,8 +85,8 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const Study& s, const 
   contact::ContactSolver solver(window_grid, e_star);
   contact::EquivalentRoughness r;
   try {
-    r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, stiffness.shape, positions, load,
-                                      opts, po);
+    r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, stiffness.shape, positions, load, opts,
+                                      po);
   } catch (const std::invalid_argument& e) {
     throw config_error(s.where("surface.ny") + ": " + e.what() + "; widen the strip ([surface] ny)");
   }

@@ -43,7 +43,8 @@ std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
   const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
   for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << stiffness.text(k) << "\n";
   in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
-     << "\nanisotropy = " << s.text("surface.anisotropy") << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
+     << "\nanisotropy = " << s.text("surface.anisotropy")
+     << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
      << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
      << "\n\n[texture]\n";
   for (const auto& k : texture_io::psd_keys())
@@ -55,7 +56,8 @@ std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
 std::string ball_inputs_text(const study::Study& s, double radius, double e_star, double load) {
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
-     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load) << "\nshape = " << study::StiffnessSection::parse(s).text("shape");
+     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load)
+     << "\nshape = " << study::StiffnessSection::parse(s).text("shape");
   return in.str();
 }
 

@@ -19,8 +19,8 @@ class Study;
 namespace rollspec::stiffness {
 
 struct StripGrid {
-  std::size_t nx = 0, ny = 0;  // cells along and across the path
-  double cell = 0.0;           // dx = dy (m)
+  std::size_t nx = 0, ny = 0;     // cells along and across the path
+  double cell = 0.0;              // dx = dy (m)
   bool allow_truncation = false;  // a derived cell may drop roughness shorter than two cells
 };
 

@@ -39,19 +39,28 @@ std::string prepare_table_path(const study::Study& s, const std::string& path, c
   // neither '..' nor a link out of it writes tables elsewhere. An absolute one names a shared cache
   // the user chose, and must exist.
   if (automatic && !table_dir.is_absolute() && !lies_within(dir, study_dir))
-    s.refuse(key, "resolves to " + fs::weakly_canonical(fs::absolute(dir)).string() + ", outside the study's directory " +
-                      study_dir.string() + " ('..' or a symbolic link), and rollspec writes tables only below the study's directory; allowed: such a "
-                      "directory, or an absolute path of an existing directory");
+    s.refuse(
+        key,
+        "resolves to " + fs::weakly_canonical(fs::absolute(dir)).string() + ", outside the study's directory " +
+            study_dir.string() +
+            " ('..' or a symbolic link), and rollspec writes tables only below the study's directory; allowed: such a "
+            "directory, or an absolute path of an existing directory");
   std::error_code ec;
   if (!dir.empty() && !fs::is_directory(dir, ec)) {
     if (fs::exists(dir, ec)) s.refuse(key, "the table directory " + dir.string() + " is not a directory");
     if (!automatic)
-      s.refuse(key, "the table's directory " + dir.string() + " does not exist; allowed: a path in an existing directory");
+      s.refuse(key,
+               "the table's directory " + dir.string() + " does not exist; allowed: a path in an existing directory");
     if (table_dir.is_absolute() || climbs(table_dir))
-      s.refuse(key, "the directory " + dir.string() + " does not exist, and rollspec creates table directories only "
-                    "below the study's directory (no '..', not absolute); create it yourself, or choose such a directory");
+      s.refuse(
+          key,
+          "the directory " + dir.string() +
+              " does not exist, and rollspec creates table directories only "
+              "below the study's directory (no '..', not absolute); create it yourself, or choose such a directory");
     fs::create_directories(dir, ec);
-    if (ec) throw cannot_create("cannot create the table directory " + dir.string() + " (" + s.where(key) + "): " + ec.message());
+    if (ec)
+      throw cannot_create("cannot create the table directory " + dir.string() + " (" + s.where(key) +
+                          "): " + ec.message());
   }
   io::OutputTarget target{path, filetype};
   target.option = s.where(key);
@@ -82,8 +91,7 @@ std::string table_write_path(const study::Study& s, const std::string& path, con
   }
   const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
   if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere)
-    throw UserError(EX_SOFTWARE, "stopped because rank 0 refused the table path (see its message)");
+  if (failed_somewhere) throw UserError(EX_SOFTWARE, "stopped because rank 0 refused the table path (see its message)");
   return out;
 }
 

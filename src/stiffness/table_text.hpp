@@ -19,8 +19,10 @@ inline std::string hex16(std::uint64_t h) {
 // A length in mm (from 1 mm) or um, three digits: grid sizes in plans and messages.
 inline std::string um(double m) {
   char buf[32];
-  if (m >= 1e-3) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
+  if (m >= 1e-3)
+    std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
+  else
+    std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
   return buf;
 }
 

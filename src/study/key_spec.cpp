@@ -37,9 +37,15 @@ std::string KeySpec::allowed() const {
       for (std::size_t i = 0; i < choices.size(); ++i) s << (i ? ", " : "") << choices[i];
       break;
     }
-    case KeyType::text: s << "text"; break;
-    case KeyType::path: s << "the path of an existing file (relative to the study file), or none"; break;
-    case KeyType::boolean: s << "true or false"; break;
+    case KeyType::text:
+      s << "text";
+      break;
+    case KeyType::path:
+      s << "the path of an existing file (relative to the study file), or none";
+      break;
+    case KeyType::boolean:
+      s << "true or false";
+      break;
   }
   return s.str();
 }

@@ -21,11 +21,11 @@ struct KeySpec {
   double max = std::numeric_limits<double>::infinity();
   bool min_inclusive = true;
   bool max_inclusive = true;
-  std::vector<std::string> choices;          // for KeyType::choice
-  bool power_of_two = false;                 // for KeyType::integer
+  std::vector<std::string> choices;  // for KeyType::choice
+  bool power_of_two = false;         // for KeyType::integer
 
   std::string full_name() const { return section + "." + key; }
-  std::string allowed() const;               // human text: "a number > 0 (Hz)", "one of hann, rectangular", ...
+  std::string allowed() const;  // human text: "a number > 0 (Hz)", "one of hann, rectangular", ...
 };
 
 // Builders that keep scene schemas short and readable.

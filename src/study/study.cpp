@@ -84,7 +84,8 @@ std::string check_value(const KeySpec& spec, const std::string& value, const Ori
   const std::string head = origin.describe() + ": [" + spec.section + "] " + spec.key + " = " + clip(value) + ": ";
   const std::string allowed = "; allowed: " + spec.allowed();
   if (value.empty() && spec.type == KeyType::text) return value;
-  if (value.empty()) throw config_error(origin.describe() + ": [" + spec.section + "] " + spec.key + " has no value" + allowed);
+  if (value.empty())
+    throw config_error(origin.describe() + ": [" + spec.section + "] " + spec.key + " has no value" + allowed);
   switch (spec.type) {
     case KeyType::real: {
       char* end = nullptr;
@@ -127,13 +128,14 @@ std::string check_value(const KeySpec& spec, const std::string& value, const Ori
         throw missing_input(head + "is a directory, not a file (looked for " + p.string() + ")" + allowed);
       struct stat st {};
       if (::stat(p.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-        throw missing_input(head + "is " + io::file_kind(st.st_mode) + ", not a regular file (looked for " + p.string() +
-                            ")" + allowed);
+        throw missing_input(head + "is " + io::file_kind(st.st_mode) + ", not a regular file (looked for " +
+                            p.string() + ")" + allowed);
       if (!fs::is_regular_file(p, ec))
         throw missing_input(head + "no such file (looked for " + p.string() + ")" + allowed);
       return value;
     }
-    case KeyType::text: return value;
+    case KeyType::text:
+      return value;
   }
   return value;
 }
@@ -163,7 +165,8 @@ std::string known_sections(const std::vector<KeySpec>& keys) {
 // Keys that were renamed: the error names the new key instead of listing all keys.
 const char* retired_key_hint(const std::string& full) {
   if (full == "contact.patch_filter")
-    return "was replaced by [contact] filter = none | patch | iso2d | solver (patch_filter = true is filter = patch, false is "
+    return "was replaced by [contact] filter = none | patch | iso2d | solver (patch_filter = true is filter = patch, "
+           "false is "
            "filter = none)";
   return nullptr;
 }
@@ -202,7 +205,8 @@ Study Study::load(const std::string& path, const std::vector<std::string>& overr
   const std::uintmax_t bytes = fs::file_size(path, size_ec);
   if (!size_ec && bytes > kLargestStudy)
     throw config_error("study file '" + path + "' is " + std::to_string(bytes) + " bytes; allowed: at most " +
-                       std::to_string(kLargestStudy) + " bytes (a study is an INI file of keys; is this the right file?)");
+                       std::to_string(kLargestStudy) +
+                       " bytes (a study is an INI file of keys; is this the right file?)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open study file '" + path + "'");
   std::ostringstream buf;
@@ -214,7 +218,8 @@ Study Study::parse(const std::string& path, std::string text, const std::vector<
                    const SchemaLookup& schema) {
   // A UTF-8 byte-order mark (editors on Windows) is not part of the first section header.
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
-  if (text.empty()) throw config_error(path + ": the study file is empty; it needs at least [study] scene, realisations and seed");
+  if (text.empty())
+    throw config_error(path + ": the study file is empty; it needs at least [study] scene, realisations and seed");
 
   const std::vector<RawEntry> lines = scan_lines(path, text);
   Study s;
@@ -227,8 +232,8 @@ Study Study::parse(const std::string& path, std::string text, const std::vector<
     const auto it = first_line.find(e.full_key);
     if (it != first_line.end()) {
       const auto dot = e.full_key.find('.');
-      throw config_error(path + ":" + std::to_string(e.line) + ": duplicated key [" + clip(e.full_key.substr(0, dot)) + "] " +
-                         clip(e.full_key.substr(dot + 1)) + " = " + clip(e.value) + " (first set at line " +
+      throw config_error(path + ":" + std::to_string(e.line) + ": duplicated key [" + clip(e.full_key.substr(0, dot)) +
+                         "] " + clip(e.full_key.substr(dot + 1)) + " = " + clip(e.value) + " (first set at line " +
                          std::to_string(it->second) + "); each key may appear once");
     }
     first_line[e.full_key] = e.line;
@@ -296,9 +301,10 @@ Study Study::parse(const std::string& path, std::string text, const std::vector<
     std::string longest;
     for (const auto& [key, e] : s.entries_)
       if (longest.empty() || e.value.size() > s.entries_.at(longest).value.size()) longest = key;
-    s.refuse(longest, "makes the resolved study " + std::to_string(size) + " bytes long (this value: " +
-                          std::to_string(s.entries_.at(longest).value.size()) + " bytes); allowed: a study of at most " +
-                          std::to_string(kMaxStudyText) + " bytes, which every output file stores");
+    s.refuse(longest, "makes the resolved study " + std::to_string(size) +
+                          " bytes long (this value: " + std::to_string(s.entries_.at(longest).value.size()) +
+                          " bytes); allowed: a study of at most " + std::to_string(kMaxStudyText) +
+                          " bytes, which every output file stores");
   }
   return s;
 }
@@ -346,7 +352,8 @@ std::vector<double> Study::numbers(const std::string& k, std::size_t expected) c
     out.push_back(v);
   }
   if (expected && out.size() != expected)
-    refuse(k, "has " + std::to_string(out.size()) + " numbers; allowed: " + std::to_string(expected) + " comma-separated");
+    refuse(k,
+           "has " + std::to_string(out.size()) + " numbers; allowed: " + std::to_string(expected) + " comma-separated");
   return out;
 }
 
@@ -368,7 +375,8 @@ std::string Study::canonical_text_without(const std::vector<std::string>& exclud
   for (const auto& section : sections) {
     bool header = false;
     for (const auto& k : keys_) {
-      if (k.section != section || std::find(excluded.begin(), excluded.end(), k.full_name()) != excluded.end()) continue;
+      if (k.section != section || std::find(excluded.begin(), excluded.end(), k.full_name()) != excluded.end())
+        continue;
       if (!header) s << (s.tellp() > 0 ? "\n" : "") << "[" << section << "]\n";
       header = true;
       s << k.key << " = " << entry(k.full_name()).value << "\n";

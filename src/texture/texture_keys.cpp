@@ -36,7 +36,6 @@ texture::Extension extension_of(const std::string& s) {
   return texture::Extension::error;
 }
 
-
 std::string study_relative(const Study& s, const std::string& p) {
   if (fs::path(p).is_absolute()) return p;
   return (fs::path(s.file()).parent_path() / p).string();
@@ -52,19 +51,24 @@ texture::Psd read_psd_table(const Study& s) {
   const std::string& a = t.columns[0];
   const std::string& p = t.columns[1];
   bool cycles = false;
-  if (a == "spatial_frequency_cycles_per_m") cycles = true;
+  if (a == "spatial_frequency_cycles_per_m")
+    cycles = true;
   else if (a != "wavenumber_rad_per_m")
     throw data_error(path + ":1: first column '" + a +
                      "' does not state its unit; allowed: wavenumber_rad_per_m or spatial_frequency_cycles_per_m");
   double scale = 1.0;
-  if (p == "psd_um2_m") scale = 1e-12;
-  else if (p != "psd_m3") throw data_error(path + ":1: second column '" + p + "' does not state its unit; allowed: psd_m3 or psd_um2_m");
+  if (p == "psd_um2_m")
+    scale = 1e-12;
+  else if (p != "psd_m3")
+    throw data_error(path + ":1: second column '" + p + "' does not state its unit; allowed: psd_m3 or psd_um2_m");
   io::require_increasing(t, 0);
   std::vector<double> k(t.rows()), g(t.rows());
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const double x = t.values[0][r], v = t.values[1][r] * scale;
     if (!(x > 0.0)) throw data_error(t.where(r) + ": " + a + " value " + std::to_string(x) + " must be > 0");
-    if (v < 0.0) throw data_error(t.where(r) + ": " + p + " value " + std::to_string(t.values[1][r]) + " is negative; allowed: >= 0");
+    if (v < 0.0)
+      throw data_error(t.where(r) + ": " + p + " value " + std::to_string(t.values[1][r]) +
+                       " is negative; allowed: >= 0");
     k[r] = cycles ? texture::wavenumber_from_spatial_frequency(x) : x;
     g[r] = cycles ? texture::psd_k_from_psd_n(v) : v;
   }
@@ -137,32 +141,50 @@ std::vector<KeySpec> psd_keys() {
                std::string("none")),
       choice_key("texture", "table_extension", "PSD outside the table or measured band", std::string("error"),
                  {"error", "constant", "power_law", "zero"}),
-      text_key("texture", "profiles", "measured profiles: comma-separated CSV files (position_m,height_m)", std::string("")),
+      text_key("texture", "profiles", "measured profiles: comma-separated CSV files (position_m,height_m)",
+               std::string("")),
       bool_key("texture", "median_filter", "3-point median filter on measured profiles", std::string("false")),
-      real_key("texture", "hurst", "-", "Hurst exponent H of the self-affine PSD", std::string("0.8"), 0.0, 1.0, false, true),
+      real_key("texture", "hurst", "-", "Hurst exponent H of the self-affine PSD", std::string("0.8"), 0.0, 1.0, false,
+               true),
       real_key("texture", "long_wavelength", "m", "long-wavelength cut-off (0: none)", std::string("0"), 0.0, inf),
-      real_key("texture", "rolloff_wavelength", "m", "roll-off wavelength (plateau above it)", std::string("1e-3"), 0.0, inf, false),
+      real_key("texture", "rolloff_wavelength", "m", "roll-off wavelength (plateau above it)", std::string("1e-3"), 0.0,
+               inf, false),
       real_key("texture", "short_wavelength", "m", "short-wavelength cut-off", std::string("1e-5"), 0.0, inf, false),
-      choice_key("texture", "rms_kind", "what `rms` sets for the self-affine PSD", std::string("height"), {"height", "slope"}),
+      choice_key("texture", "rms_kind", "what `rms` sets for the self-affine PSD", std::string("height"),
+                 {"height", "slope"}),
       real_key("texture", "rms", "m (height) or - (slope)", "rms height or rms slope of the self-affine PSD",
                std::string("1e-6"), 0.0, inf, false),
-      choice_key("texture", "road_class", "ISO 8608 road class", std::string("A"), {"A", "B", "C", "D", "E", "F", "G", "H"}),
-      choice_key("texture", "amplitudes", "harmonic amplitudes: rayleigh (Gaussian) or deterministic (the target PSD exactly)",
+      choice_key("texture", "road_class", "ISO 8608 road class", std::string("A"),
+                 {"A", "B", "C", "D", "E", "F", "G", "H"}),
+      choice_key("texture", "amplitudes",
+                 "harmonic amplitudes: rayleigh (Gaussian) or deterministic (the target PSD exactly)",
                  std::string("rayleigh"), {"rayleigh", "deterministic"}),
   };
 }
 
 std::vector<KeySpec> surface_keys() {
   return {
-      choice_key("surface", "method", "isotropic surfaces: spectral (2D Fourier filter of the isotropic PSD) or seed (seed 001 Eq. 9-10: sums of line textures)",
+      choice_key("surface", "method",
+                 "isotropic surfaces: spectral (2D Fourier filter of the isotropic PSD) or seed (seed 001 Eq. 9-10: "
+                 "sums of line textures)",
                  std::string("spectral"), {"spectral", "seed"}),
       integer_key("surface", "nx", "grid points along x (even)", std::string("128"), 4, 1 << 14),
       integer_key("surface", "ny", "grid points along y (even)", std::string("128"), 4, 1 << 14),
       real_key("surface", "spacing", "m", "grid spacing dx = dy", std::string("1e-6"), 0.0, inf, false),
-      real_key("surface", "anisotropy", "-", "correlation length ratio x/y (spectral method)", std::string("1"), 0.0, inf, false),
-      real_key("surface", "correlation_x", "m", "correlation length along x (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)", std::string("1e-5"), 0.0, inf, false),
-      real_key("surface", "correlation_y", "m", "correlation length along y (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)", std::string("1e-5"), 0.0, inf, false),
-      real_key("surface", "sigma", "m", "rms height of seed-method surfaces (unset with [texture] source = profiles: the profiles' mean standard deviation)", std::string("3e-7"), 0.0, inf, false),
+      real_key("surface", "anisotropy", "-", "correlation length ratio x/y (spectral method)", std::string("1"), 0.0,
+               inf, false),
+      real_key(
+          "surface", "correlation_x", "m",
+          "correlation length along x (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)",
+          std::string("1e-5"), 0.0, inf, false),
+      real_key(
+          "surface", "correlation_y", "m",
+          "correlation length along y (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)",
+          std::string("1e-5"), 0.0, inf, false),
+      real_key("surface", "sigma", "m",
+               "rms height of seed-method surfaces (unset with [texture] source = profiles: the profiles' mean "
+               "standard deviation)",
+               std::string("3e-7"), 0.0, inf, false),
   };
 }
 
@@ -187,7 +209,8 @@ texture::Psd study_psd(const Study& s) {
     spec.k_long = lw > 0.0 ? 2.0 * M_PI / lw : 0.0;
     spec.k_short = 2.0 * M_PI / s.real("texture.short_wavelength");
     if (spec.k_long > spec.k_rolloff) s.refuse("texture.long_wavelength", "must be at least the roll-off wavelength");
-    if (spec.k_short <= spec.k_rolloff) s.refuse("texture.short_wavelength", "must be shorter than the roll-off wavelength");
+    if (spec.k_short <= spec.k_rolloff)
+      s.refuse("texture.short_wavelength", "must be shorter than the roll-off wavelength");
     spec.target = s.text("texture.rms_kind") == "slope" ? texture::RmsTarget::slope : texture::RmsTarget::height;
     spec.rms = s.real("texture.rms");
     return texture::SelfAffinePsd(spec).to_psd();
@@ -197,7 +220,8 @@ texture::Psd study_psd(const Study& s) {
 }
 
 spectral::Amplitudes study_amplitudes(const Study& s) {
-  return s.text("texture.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
+  return s.text("texture.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh
+                                                    : spectral::Amplitudes::deterministic;
 }
 
 namespace {
@@ -206,7 +230,8 @@ std::string grid_message(const LineGeneratorKeys& k, const std::exception& e) {
   std::string m = k.spacing_where + ": " + e.what();
   if (dynamic_cast<const std::domain_error*>(&e))
     m += "; allowed: a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
-         "a coarser spacing), or " + k.extension_where + " set to zero, constant or power_law";
+         "a coarser spacing), or " +
+         k.extension_where + " set to zero, constant or power_law";
   return m;
 }
 }  // namespace
@@ -229,9 +254,9 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
   }
 }
 
-std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study& s, const texture::Psd& psd, double spacing,
-                                                                    std::size_t samples, const std::string& key,
-                                                                    bool truncate) {
+std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study& s, const texture::Psd& psd,
+                                                                    double spacing, std::size_t samples,
+                                                                    const std::string& key, bool truncate) {
   return line_generator(LineGeneratorKeys::parse(s, key), psd, spacing, samples, truncate);
 }
 
@@ -257,15 +282,14 @@ std::string psd_input_fingerprint(const Study& s) {
 
 std::vector<std::string> profile_derived_surface_keys(const Study& s) {
   std::vector<std::string> out;
-  if (!s.has("texture.source") || s.text("texture.source") != "profiles" || s.text("surface.method") != "seed") return out;
+  if (!s.has("texture.source") || s.text("texture.source") != "profiles" || s.text("surface.method") != "seed")
+    return out;
   for (const char* k : {"sigma", "correlation_x", "correlation_y"})
     if (s.entry(std::string("surface.") + k).origin.line == 0) out.push_back(k);  // 0: the documented default, not set
   return out;
 }
 
-std::size_t SurfaceGenerator::random_count() const {
-  return spectral ? 2 * spectral->modes() : seed->random_count();
-}
+std::size_t SurfaceGenerator::random_count() const { return spectral ? 2 * spectral->modes() : seed->random_count(); }
 
 void SurfaceGenerator::generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out) const {
   if (spectral) {
@@ -282,7 +306,8 @@ void SurfaceGenerator::generate(std::uint64_t seed_value, std::uint64_t realisat
 
 SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd) {
   SurfaceGenerator g;
-  const auto nx = static_cast<std::size_t>(s.integer("surface.nx")), ny = static_cast<std::size_t>(s.integer("surface.ny"));
+  const auto nx = static_cast<std::size_t>(s.integer("surface.nx")),
+             ny = static_cast<std::size_t>(s.integer("surface.ny"));
   if (nx % 2) s.refuse("surface.nx", "must be even");
   if (ny % 2) s.refuse("surface.ny", "must be even");
   const double h = s.real("surface.spacing");
@@ -320,7 +345,8 @@ SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }
   } catch (const std::exception& e) {  // invalid_argument from the spec, domain_error from a table PSD
-    throw config_error(grid_message(LineGeneratorKeys{{}, s.where("surface.spacing"), s.where("texture.table_extension")}, e));
+    throw config_error(
+        grid_message(LineGeneratorKeys{{}, s.where("surface.spacing"), s.where("texture.table_extension")}, e));
   }
   return g;
 }

@@ -44,7 +44,8 @@ struct LineGeneratorKeys {
 };
 // study_line_generator from those (for a scene that builds its line after the study is gone).
 std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& keys, const texture::Psd& psd,
-                                                              double spacing, std::size_t samples, bool truncate = true);
+                                                              double spacing, std::size_t samples,
+                                                              bool truncate = true);
 
 // The measured profile files of [texture] profiles (empty for other sources or scenes without [texture]).
 std::vector<std::string> profile_files(const study::Study& s);

@@ -59,9 +59,7 @@ TEST_CASE("a realisation producing NaN stops the run naming its id and the seed"
   cfg.chunk_size = 4;
   cfg.seed = 77;
   cfg.quiet = true;
-  auto bad = [](std::uint64_t id, int, double* v) {
-    v[0] = id == 13 ? std::nan("") : 1.0;
-  };
+  auto bad = [](std::uint64_t id, int, double* v) { v[0] = id == 13 ? std::nan("") : 1.0; };
   try {
     run_ensemble(cfg, 1, bad);
     FAIL("no error");

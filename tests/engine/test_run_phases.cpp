@@ -31,7 +31,8 @@ fs::path interrupted_run_with_override() {
   std::ofstream(dir / "s.ini") << kStudy;
   const std::vector<std::string> sets = {"oscillator.mass=3"};
   study::Study s = study::Study::load((dir / "s.ini").string(), sets, scenes::schema_for);
-  const cli::CheckpointSession session = cli::open_checkpoint((dir / "r.h5.checkpoint").string(), s, sets, false, false, true);
+  const cli::CheckpointSession session =
+      cli::open_checkpoint((dir / "r.h5.checkpoint").string(), s, sets, false, false, true);
   // The first chunk of 4 of the 8 realisations, as the interrupted run left it.
   const auto scene = cli::make_scene<scenes::EnsembleScene>(s);
   scene->prepare(true, false);
@@ -56,7 +57,7 @@ TEST_CASE("run --resume: the checkpoint's study is resolved first and the scene 
   q.resume = q.quiet = true;
   const long before = scenes::Scene::made();
   cli::ResolvedRun run = cli::resolve_run(q);
-  CHECK(scenes::Scene::made() == before);  // resolving makes no scene
+  CHECK(scenes::Scene::made() == before);                                   // resolving makes no scene
   CHECK(run.study.canonical_text().find("mass = 3") != std::string::npos);  // the checkpoint's study
   run.checkpoint = {};  // release the lock: run_command takes it again
   const long start = scenes::Scene::made();

@@ -23,7 +23,8 @@ using namespace rollspec;
 
 namespace {
 study::Study ball_on_beam(const std::string& extra, const std::vector<std::string>& overrides = {}) {
-  return study::Study::parse("/tmp/rollspec_sections.ini", "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 1\n" + extra, overrides,
+  return study::Study::parse("/tmp/rollspec_sections.ini",
+                             "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 1\n" + extra, overrides,
                              scenes::schema_for);
 }
 
@@ -66,7 +67,8 @@ TEST_CASE("modal beam section: parse keeps the values, modal_beam() refuses as s
 }
 
 TEST_CASE("stiffness section: one parse of the solver options, canonical texts for table inputs") {
-  const auto s = ball_on_beam("[stiffness]\nhardness = 0\ntolerance = 1e-9\nmax_iterations = 500\nshape = paraboloid\n");
+  const auto s =
+      ball_on_beam("[stiffness]\nhardness = 0\ntolerance = 1e-9\nmax_iterations = 500\nshape = paraboloid\n");
   const auto t = study::StiffnessSection::parse(s);
   CHECK(t.solver.hardness == std::numeric_limits<double>::infinity());
   CHECK(t.solver.tolerance == 1e-9);
@@ -88,11 +90,13 @@ TEST_CASE("blocked-force grid from sections: a set window below 8 cells is refus
     (void)stiffness::blocked_force_geometry(study::BlockedForceSection::parse(s), study::StripSurfaceSection::parse(s),
                                             texture_io::study_psd(s), ball.radius, e_star, ball.weight(), 0.0);
   });
-  CHECK(m.find("[blocked_force] window = 6: leaves a solver window of 6 cells; allowed: 8 or more") != std::string::npos);
+  CHECK(m.find("[blocked_force] window = 6: leaves a solver window of 6 cells; allowed: 8 or more") !=
+        std::string::npos);
   // Derived where not set: the same grid the plan prints.
   const auto d = ball_on_beam("[contact]\nlaw = linearised\nblocked_force = solver\n");
-  const auto g = stiffness::blocked_force_geometry(study::BlockedForceSection::parse(d), study::StripSurfaceSection::parse(d),
-                                                   texture_io::study_psd(d), ball.radius, e_star, ball.weight(), 0.0);
+  const auto g =
+      stiffness::blocked_force_geometry(study::BlockedForceSection::parse(d), study::StripSurfaceSection::parse(d),
+                                        texture_io::study_psd(d), ball.radius, e_star, ball.weight(), 0.0);
   CHECK(g.window >= 8);
   CHECK(g.derived_cell);
   CHECK(study::PathTableSection::parse(d).approaches == 8);

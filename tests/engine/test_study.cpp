@@ -20,8 +20,11 @@ std::string write(const std::string& name, const std::string& text) {
 }  // namespace
 
 TEST_CASE("canonical text: defaults filled in, numbers normalised, formatting irrelevant") {
-  const auto a = write("a", "[study]\nscene = random-oscillator\nrealisations = 10\nseed = 1\n[oscillator]\nnatural_frequency = 50.0\n");
-  const auto b = write("b", "# comment\n[oscillator]\n  natural_frequency=5e1   # Hz\n[study]\nseed = 1\nrealisations = 10\nscene = random-oscillator\n");
+  const auto a = write(
+      "a", "[study]\nscene = random-oscillator\nrealisations = 10\nseed = 1\n[oscillator]\nnatural_frequency = 50.0\n");
+  const auto b = write("b",
+                       "# comment\n[oscillator]\n  natural_frequency=5e1   # Hz\n[study]\nseed = 1\nrealisations = "
+                       "10\nscene = random-oscillator\n");
   const auto sa = study::Study::load(a, {}, scenes::schema_for);
   const auto sb = study::Study::load(b, {}, scenes::schema_for);
   CHECK(sa.canonical_text() == sb.canonical_text());

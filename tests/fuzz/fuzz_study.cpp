@@ -37,12 +37,22 @@ void read_back(const rollspec::study::Study& s) {
   for (const auto& k : s.keys()) {
     const std::string name = k.full_name();
     switch (k.type) {
-      case KeyType::real: (void)s.real(name); break;
-      case KeyType::integer: (void)s.integer(name); break;
-      case KeyType::boolean: (void)s.boolean(name); break;
-      case KeyType::path: (void)s.path(name); break;
+      case KeyType::real:
+        (void)s.real(name);
+        break;
+      case KeyType::integer:
+        (void)s.integer(name);
+        break;
+      case KeyType::boolean:
+        (void)s.boolean(name);
+        break;
+      case KeyType::path:
+        (void)s.path(name);
+        break;
       case KeyType::choice:
-      case KeyType::text: (void)s.text(name); break;
+      case KeyType::text:
+        (void)s.text(name);
+        break;
     }
     (void)s.where(name);
   }

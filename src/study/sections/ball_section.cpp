@@ -13,7 +13,8 @@ std::vector<KeySpec> BallSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
       real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
-      real_key("ball", "density", "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", std::string("7850"), 0.0, inf, false),
+      real_key("ball", "density", "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", std::string("7850"), 0.0, inf,
+               false),
       real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
       real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
       real_key("ball", "speed", "m/s", "rolling speed v", std::string("1"), 0.0, inf, false),

@@ -16,12 +16,14 @@ std::vector<KeySpec> BlockedForceSection::keys() {
                   "cells of the contact solver's square window (8 or more); 0: derived so that the window holds every "
                   "cell the ball can touch, from the contact radius and the texture rms",
                   std::string("0"), 0, 4096),
-      integer_key("blocked_force", "step", "path step in cells; 0: a third of the contact radius (at most speed / sample_rate)",
+      integer_key("blocked_force", "step",
+                  "path step in cells; 0: a third of the contact radius (at most speed / sample_rate)",
                   std::string("0"), 0, 1000),
-      integer_key("blocked_force", "segment",
-                  "Welch segment (positions, 16 or more) of the F0 PSD along the path; 0: four times the F0 correlation "
-                  "length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
-                  std::string("0"), 0, 1 << 20),
+      integer_key(
+          "blocked_force", "segment",
+          "Welch segment (positions, 16 or more) of the F0 PSD along the path; 0: four times the F0 correlation "
+          "length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
+          std::string("0"), 0, 1 << 20),
   };
 }
 

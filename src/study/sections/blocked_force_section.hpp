@@ -12,7 +12,7 @@ namespace rollspec::study {
 class Study;
 
 struct BlockedForceSection {
-  double strip_length = 0.0;  // m; 0: derived
+  double strip_length = 0.0;                    // m; 0: derived
   long long window = 0, step = 0, segment = 0;  // 0: derived
   KeyOrigin strip_length_origin, window_origin, segment_origin;
 

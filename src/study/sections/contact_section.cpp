@@ -16,14 +16,16 @@ std::vector<KeySpec> ContactSection::keys() {
                  "force F0 and contact stiffness k0) or path (P(delta, xi) of one rough strip from a cached table of "
                  "contact solves along the ball's path, kernels/beam B41-B46; the strip is the roughness)",
                  std::string("hertz"), {"hertz", "table", "literal", "linearised", "path"}),
-      real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"), 0.0, inf),
+      real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"),
+               0.0, inf),
       choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
                  std::string("damping_only"), {"damping_only", "zero"}),
       real_key("contact", "k0", "N/m", "linearised contact stiffness k0", std::string("6.8e6"), 0.0, inf, false),
-      choice_key("contact", "blocked_force",
-                 "linearised law's F0(t): spring (W + k0 h_patch(v t), k0 from [contact]) or solver (the contact "
-                 "solver's blocked force along a rough strip, seed 002 §4.2: k0, d0 and the F0 PSD from a cached table)",
-                 std::string("spring"), {"spring", "solver"}),
+      choice_key(
+          "contact", "blocked_force",
+          "linearised law's F0(t): spring (W + k0 h_patch(v t), k0 from [contact]) or solver (the contact "
+          "solver's blocked force along a rough strip, seed 002 §4.2: k0, d0 and the F0 PSD from a cached table)",
+          std::string("spring"), {"spring", "solver"}),
       choice_key("contact", "filter",
                  "what the contact does to the roughness (Hertz radius a at the weight): none (point contact), patch "
                  "(1D average over 2a along the path, B35), iso2d (line synthesised from G_eq, the path PSD a Hertz "

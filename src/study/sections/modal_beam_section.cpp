@@ -17,12 +17,15 @@ std::vector<KeySpec> ModalBeamSection::keys() {
       real_key("beam", "effective_length", "m", "modal length l_eff >= l (clamp rotation, seed 002: l + 30 mm); 0: l",
                std::string("0"), 0.0, inf),
       real_key("beam", "width", "m", "section width", std::string("0.05"), 0.0, inf, false),
-      real_key("beam", "thickness", "m", "section thickness (bending direction)", std::string("0.0068"), 0.0, inf, false),
+      real_key("beam", "thickness", "m", "section thickness (bending direction)", std::string("0.0068"), 0.0, inf,
+               false),
       real_key("beam", "youngs_modulus", "Pa", "Young's modulus E", std::string("210e9"), 0.0, inf, false),
-      real_key("beam", "poisson", "-", "Poisson's ratio (contact modulus)", std::string("0.3"), -1.0, 0.5, false, false),
+      real_key("beam", "poisson", "-", "Poisson's ratio (contact modulus)", std::string("0.3"), -1.0, 0.5, false,
+               false),
       real_key("beam", "density", "kg/m^3", "density rho", std::string("7850"), 0.0, inf, false),
       integer_key("beam", "modes", "number of modes (0: all up to max_frequency)", std::string("0"), 0, 5000),
-      real_key("beam", "max_frequency", "Hz", "highest modal frequency kept when modes = 0", std::string("20000"), 0.0, inf),
+      real_key("beam", "max_frequency", "Hz", "highest modal frequency kept when modes = 0", std::string("20000"), 0.0,
+               inf),
       real_key("beam", "loss_factor", "-", "modal loss factor eta (zeta = eta/2)", std::string("0.01"), 0.0, 2.0),
       bool_key("beam", "static_correction", "residual flexibility of the truncated modes", std::string("true")),
   };
@@ -31,7 +34,8 @@ std::vector<KeySpec> ModalBeamSection::keys() {
 ModalBeamSection ModalBeamSection::parse(const Study& s) {
   ModalBeamSection b;
   beam::BeamProperties& p = b.properties;
-  p.support = s.text("beam.support") == "clamped-clamped" ? beam::Support::clamped_clamped : beam::Support::simply_supported;
+  p.support =
+      s.text("beam.support") == "clamped-clamped" ? beam::Support::clamped_clamped : beam::Support::simply_supported;
   p.youngs_modulus = s.real("beam.youngs_modulus");
   p.density = s.real("beam.density");
   p.width = s.real("beam.width");

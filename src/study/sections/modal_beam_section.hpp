@@ -15,7 +15,7 @@ struct ModalBeamSection {
   beam::ModeSelection selection;
   beam::ModalDamping damping;
   bool static_correction = true;
-  double poisson = 0.0;           // the contact modulus's, not the modal beam's
+  double poisson = 0.0;  // the contact modulus's, not the modal beam's
   KeyOrigin effective_length_origin, modes_origin, max_frequency_origin;
 
   static std::vector<KeySpec> keys();

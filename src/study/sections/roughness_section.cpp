@@ -10,10 +10,11 @@ namespace rollspec::study {
 std::vector<KeySpec> RoughnessSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
-      real_key("roughness", "spacing", "m",
-               "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
-               "step, v / (sample_rate x substeps)",
-               std::string("0"), 0.0, inf),
+      real_key(
+          "roughness", "spacing", "m",
+          "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
+          "step, v / (sample_rate x substeps)",
+          std::string("0"), 0.0, inf),
       choice_key("roughness", "band_limit",
                  "roughness the ball sees: output (wavelengths shorter than v / (sample_rate / 2) dropped, an ideal "
                  "anti-alias filter on the linear response; kernels/beam B40) or step (up to the sampling's pi/dx: the "

@@ -12,8 +12,8 @@ namespace rollspec::study {
 class Study;
 
 struct RoughnessSection {
-  double spacing = 0.0;       // m; 0: derived from the step
-  std::string band_limit;     // output or step
+  double spacing = 0.0;    // m; 0: derived from the step
+  std::string band_limit;  // output or step
   KeyOrigin spacing_origin;
 
   static std::vector<KeySpec> keys();

@@ -8,7 +8,8 @@ namespace rollspec::study {
 
 std::vector<KeySpec> SensorsSection::keys() {
   return {
-      text_key("sensors", "positions", "accelerometer positions along the beam, m, comma-separated", std::string("0.2")),
+      text_key("sensors", "positions", "accelerometer positions along the beam, m, comma-separated",
+               std::string("0.2")),
       bool_key("sensors", "average", "add the mean PSD over sensors (seed 002 averages 5 sensors x 25 rolls)",
                std::string("true")),
   };

@@ -10,12 +10,11 @@ namespace rollspec::study {
 std::vector<KeySpec> SignalSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
-      real_key("signal", "sample_rate", "Hz", "output sample rate of accelerations and forces", std::string("25600"), 0.0,
-               inf, false),
-      integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"), 1,
-                  1000),
-      choice_key("signal", "hold",
-                 "modal force over a step: quadratic (order 3, default) or linear (order 2)",
+      real_key("signal", "sample_rate", "Hz", "output sample rate of accelerations and forces", std::string("25600"),
+               0.0, inf, false),
+      integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"),
+                  1, 1000),
+      choice_key("signal", "hold", "modal force over a step: quadratic (order 3, default) or linear (order 2)",
                  std::string("quadratic"), {"quadratic", "linear"}),
       choice_key("signal", "integrator", "exact (exact modal step, implicit contact) or dopri5 (reference)",
                  std::string("exact"), {"exact", "dopri5"}),

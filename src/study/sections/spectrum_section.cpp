@@ -12,10 +12,11 @@ namespace rollspec::study {
 std::vector<KeySpec> SpectrumSection::keys() {
   return {
       integer_key("spectrum", "segment", "Welch segment length in samples", std::string("4096"), 16, 1 << 24),
-      real_key("spectrum", "overlap", "-", "Welch segment overlap as a fraction of the segment", std::string("0.5"), 0.0,
-               0.95),
+      real_key("spectrum", "overlap", "-", "Welch segment overlap as a fraction of the segment", std::string("0.5"),
+               0.0, 0.95),
       choice_key("spectrum", "window", "Welch data window", std::string("hann"), {"hann", "rectangular"}),
-      real_key("spectrum", "band_min", "Hz", "lowest third-octave band edge reported", std::string("10"), 0.0, 1e9, false),
+      real_key("spectrum", "band_min", "Hz", "lowest third-octave band edge reported", std::string("10"), 0.0, 1e9,
+               false),
       real_key("spectrum", "band_max", "Hz", "highest third-octave band edge reported (capped at Nyquist)",
                std::string("1e9"), 0.0, 1e9, false),
       real_key("spectrum", "confidence", "-", "confidence level of the chi-square interval", std::string("0.95"), 0.5,
@@ -46,8 +47,9 @@ void SpectrumSection::check_band_range(double sample_rate, std::size_t segment_s
   const double df = sample_rate / static_cast<double>(segment_samples), nyquist = sample_rate / 2.0;
   const double lo = std::max(band_min, df), hi = std::min(band_max, nyquist);
   char range[200];
-  std::snprintf(range, sizeof range, "frequency step %.6g Hz, Nyquist frequency %.6g Hz (sample rate %.6g Hz, segment %zu)",
-                df, nyquist, sample_rate, segment_samples);
+  std::snprintf(range, sizeof range,
+                "frequency step %.6g Hz, Nyquist frequency %.6g Hz (sample rate %.6g Hz, segment %zu)", df, nyquist,
+                sample_rate, segment_samples);
   if (band_max <= band_min)
     band_max_origin.refuse("not above [spectrum] band_min = " + band_min_text + "; allowed: band_min < band_max");
   if (!(hi > lo) || spectral::third_octave_bands(lo, hi).empty())

@@ -12,8 +12,8 @@ struct StripSurfaceSection {
   bool spacing_set = false, ny_set = false;  // false: derived from the contact radius
   double spacing = 0.0, anisotropy = 1.0;
   long long ny = 0;
-  bool self_affine = false;        // [texture] source = self-affine
-  double rolloff_wavelength = 0.0; // [texture] rolloff_wavelength
+  bool self_affine = false;         // [texture] source = self-affine
+  double rolloff_wavelength = 0.0;  // [texture] rolloff_wavelength
   KeyOrigin ny_origin, spacing_origin;
 
   static StripSurfaceSection parse(const Study& s);

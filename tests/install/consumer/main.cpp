@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
   const double amplitude = 2.0, f0 = 100.0;  // bin 25: 25 periods per segment
   const std::size_t n = 4096, k0 = 25;
   std::vector<double> x(n);
-  for (std::size_t i = 0; i < n; ++i) x[i] = amplitude * std::sin(2.0 * pi * f0 * static_cast<double>(i) / config.sample_rate);
+  for (std::size_t i = 0; i < n; ++i)
+    x[i] = amplitude * std::sin(2.0 * pi * f0 * static_cast<double>(i) / config.sample_rate);
   const sp::WelchPlan plan(config);
   sp::WelchWorkspace workspace(config.segment);
   std::vector<double> psd(plan.n_freq());
@@ -73,7 +74,7 @@ int main(int argc, char** argv) {
   law.effective_modulus = 115.4e9;  // Pa
   law.radius = 0.01;                // m
   const bm::ContactModel model(law);
-  const double load = 25.0;         // N
+  const double load = 25.0;  // N
   const double delta = model.static_compression(load, 0.0);
   double force = 0.0, stiffness = 0.0;
   model.elastic(delta, force, stiffness);

@@ -43,18 +43,21 @@ TEST_CASE("static deflection under the ball: 16 modes + static correction within
     BeamProperties p;
     p.length = 0.4;  // clamped–clamped, no effective-length extension: the closed form applies directly
     for (double a_over_l : {0.1, 0.3, 0.5}) {
-      BallOnBeamModel m{ModalBeam(p, {16, 0.0}, {0.02, {}}, correction), Ball{}, ContactLaw{}, Traverse{}, 20000.0, {0.2}};
+      BallOnBeamModel m{
+          ModalBeam(p, {16, 0.0}, {0.02, {}}, correction), Ball{}, ContactLaw{}, Traverse{}, 20000.0, {0.2}};
       m.traverse = {a_over_l * p.length, a_over_l * p.length, 0.0, 0.01};  // at rest for 10 ms
       const ExactStepIntegrator integ(m, 2);
       const BallOnBeamResult r = integ.run(Realisation{});
       const double a = a_over_l * p.length, b = p.length - a, load = m.ball.mass * m.ball.gravity;
-      const double exact = -load * a * a * a * b * b * b / (3.0 * m.beam.bending_stiffness() * p.length * p.length * p.length);
+      const double exact =
+          -load * a * a * a * b * b * b / (3.0 * m.beam.bending_stiffness() * p.length * p.length * p.length);
       double worst = 0.0;
       for (std::size_t j = 0; j < r.samples(); ++j) {
         worst = std::max(worst, std::abs(r.contact_deflection[j] / exact - 1.0));
         CHECK(r.contact_force[j] == doctest::Approx(load).epsilon(1e-9));
       }
-      MESSAGE(std::string(correction ? "with" : "without") << " correction, a = " << a_over_l << " l: max rel. error " << worst);
+      MESSAGE(std::string(correction ? "with" : "without")
+              << " correction, a = " << a_over_l << " l: max rel. error " << worst);
       if (correction) CHECK(worst <= 5e-4);
       if (!correction && a_over_l == 0.1) CHECK(worst > 5e-4);  // shown not met without the correction
     }
@@ -96,9 +99,10 @@ TEST_CASE("exact-step integrator agrees with Dormand–Prince 5(4) on a nonlinea
   double dmin = 1e9, dmax = -1e9;
   for (double d : ref.compression) dmin = std::min(dmin, d), dmax = std::max(dmax, d);
   const double ea = relative_error(fast, ref), ef = force_error(fast, ref);
-  MESSAGE("compression range " << dmin << " .. " << dmax << " m; DOPRI5 steps " << ref.steps << " (+" << ref.rejected_steps
-                               << " rejected), " << std::chrono::duration<double>(t1 - t0).count() << " s; exact-step "
-                               << fast.steps << " steps, " << std::chrono::duration<double>(t2 - t1).count() << " s");
+  MESSAGE("compression range " << dmin << " .. " << dmax << " m; DOPRI5 steps " << ref.steps << " (+"
+                               << ref.rejected_steps << " rejected), " << std::chrono::duration<double>(t1 - t0).count()
+                               << " s; exact-step " << fast.steps << " steps, "
+                               << std::chrono::duration<double>(t2 - t1).count() << " s");
   MESSAGE("max rel. acceleration error " << ea << ", max rel. force error " << ef);
   CHECK(dmax > 1.3 * dmin);
   CHECK(ea <= 1e-4);
@@ -132,7 +136,8 @@ TEST_CASE("exact-step agrees with DOPRI5 for every contact law, and through loss
   Realisation rl;
   rl.blocked_force.step = 1e-5;
   for (int i = 0; i <= 5000; ++i)
-    rl.blocked_force.values.push_back(2.58 + 0.3 * std::sin(6.283185307179586 * 1700.0 * 1e-5 * i) + 0.2 * std::sin(0.9 * i));
+    rl.blocked_force.values.push_back(2.58 + 0.3 * std::sin(6.283185307179586 * 1700.0 * 1e-5 * i) +
+                                      0.2 * std::sin(0.9 * i));
   const char* names[] = {"table", "literal", "linearised"};
   const ContactLaw* laws[] = {&table, &literal, &lin};
   for (int i = 0; i < 3; ++i) {
@@ -152,8 +157,8 @@ TEST_CASE("exact-step agrees with DOPRI5 for every contact law, and through loss
   const BallOnBeamResult ref = simulate_dopri5(m, rough, tol);
   const BallOnBeamResult fast = ExactStepIntegrator(m, 64).run(rough);
   const double e = relative_error(fast, ref);
-  MESSAGE("loss of contact: share " << fast.loss_of_contact_share << " (reference, by samples " << ref.loss_of_contact_share
-                                    << "), max rel. acceleration error " << e);
+  MESSAGE("loss of contact: share " << fast.loss_of_contact_share << " (reference, by samples "
+                                    << ref.loss_of_contact_share << "), max rel. acceleration error " << e);
   ExactStepOptions o;
   o.hold = ForceHold::quadratic;
   o.substeps = 64;
@@ -203,7 +208,8 @@ TEST_CASE("exact-step run() (reordered step, B26a) agrees with run_reference() t
   Realisation rl;  // linearised law: a blocked force instead of the roughness
   rl.blocked_force.step = 1e-5;
   for (int i = 0; i <= 5000; ++i)
-    rl.blocked_force.values.push_back(2.58 + 0.3 * std::sin(6.283185307179586 * 1700.0 * 1e-5 * i) + 0.2 * std::sin(0.9 * i));
+    rl.blocked_force.values.push_back(2.58 + 0.3 * std::sin(6.283185307179586 * 1700.0 * 1e-5 * i) +
+                                      0.2 * std::sin(0.9 * i));
   struct Case {
     const char* name;
     ForceHold hold;
@@ -236,7 +242,8 @@ TEST_CASE("exact-step run() (reordered step, B26a) agrees with run_reference() t
     integ.run_reference(rr, ref);
     integ.run(rr, fast);
     const double e = relative_error(fast, ref), ef = force_error(fast, ref);
-    MESSAGE(std::string(c.name) << ": max rel. difference run() vs run_reference(), acceleration " << e << ", force " << ef);
+    MESSAGE(std::string(c.name) << ": max rel. difference run() vs run_reference(), acceleration " << e << ", force "
+                                << ef);
     CHECK(e < 1e-10);
     CHECK(ef < 1e-12);
     CHECK(fast.loss_of_contact_share == ref.loss_of_contact_share);

@@ -71,14 +71,15 @@ TEST_CASE("clamped-clamped eigenvalues: known values, cos cosh = 1 residual, 400
     const Big xb = big_root(x);
     INFO("mode " << n);
     worst_big = std::max(worst_big, std::abs(x - static_cast<double>(xb)) / x);
-    CHECK(std::abs(x - static_cast<double>(xb)) <= 1e-12 * x);                     // against the exact root
+    CHECK(std::abs(x - static_cast<double>(xb)) <= 1e-12 * x);  // against the exact root
     // bounded residual (B1): no worse than one ulp of x times the slope |f'| ~ 1, plus rounding of f
     CHECK(std::abs(std::cos(x) - 1.0 / std::cosh(x)) <= (std::nextafter(x, 2.0 * x) - x) + 2.3e-16);
-    CHECK(std::abs(x - (n + 0.5) * pi) < 0.02);                                    // asymptote (B2)
+    CHECK(std::abs(x - (n + 0.5) * pi) < 0.02);  // asymptote (B2)
   }
   MESSAGE("modes 1-5: max rel. deviation from tabulated roots " << worst_known << ", max |cos x cosh x - 1| / cosh x "
-                                                               << worst_res << "; modes up to 200: max rel. deviation from "
-                                                               << "400-digit roots " << worst_big);
+                                                                << worst_res
+                                                                << "; modes up to 200: max rel. deviation from "
+                                                                << "400-digit roots " << worst_big);
   CHECK(wavenumber_length(Support::simply_supported, 3) == doctest::Approx(3.0 * pi).epsilon(1e-15));
 }
 
@@ -130,7 +131,8 @@ TEST_CASE("eigenfunctions of modes 1-200 are finite and orthogonal to 1e-8 (int 
         for (std::size_t j = 0; j < q.x.size(); ++j) s += q.w[j] * phi[a][j] * phi[b][j];
         worst = std::max(worst, std::abs(s / l - (a == b ? 1.0 : 0.0)));
       }
-    MESSAGE((sup == Support::clamped_clamped ? "CC" : "SS") << " max |int phi_m phi_n / l - delta_mn|, 200 modes: " << worst);
+    MESSAGE((sup == Support::clamped_clamped ? "CC" : "SS")
+            << " max |int phi_m phi_n / l - delta_mn|, 200 modes: " << worst);
     CHECK(worst <= 1e-8);
   }
 }
@@ -163,8 +165,8 @@ TEST_CASE("Green's function (B7-B8) equals the 1000-mode modal sum, and 16 modes
     // Near the support 16 modes alone are not enough for 0.05 %.
     const double a = (sup == Support::clamped_clamped ? 0.1 : 0.03) * p.length;
     const double err16 = small.modal_static_deflection(a, a, 1.0) / small.static_flexibility(a, a) - 1.0;
-    MESSAGE((sup == Support::clamped_clamped ? "CC" : "SS") << " 16 modes without correction at a/l = " << a / p.length
-                                                             << ": rel. error " << err16);
+    MESSAGE((sup == Support::clamped_clamped ? "CC" : "SS")
+            << " 16 modes without correction at a/l = " << a / p.length << ": rel. error " << err16);
     CHECK(std::abs(err16) > 5e-4);
   }
 }
@@ -198,7 +200,8 @@ TEST_CASE("seed 002 rig: modes near 504, 2419, 4465 Hz within 2 %") {
   p.length = 0.41;
   p.effective_length = 0.44;
   const ModalBeam upper(p, {8, 0.0}, {});
-  MESSAGE("l_eff = 0.440 m: f2 " << upper.frequency(1) << ", f5 " << upper.frequency(4) << ", f7 " << upper.frequency(6));
+  MESSAGE("l_eff = 0.440 m: f2 " << upper.frequency(1) << ", f5 " << upper.frequency(4) << ", f7 "
+                                 << upper.frequency(6));
   CHECK(upper.frequency(1) / 504.0 - 1.0 < -0.05);
   // A 390 mm span (410 mm less 2 x 10 mm of clamp, our assumption) + 30 mm = 420 mm puts modes 2, 5
   // and 7 within 2 % of the three measured resonances (modes 1, 3, 4, 6 are not among them).

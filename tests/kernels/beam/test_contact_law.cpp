@@ -77,10 +77,10 @@ TEST_CASE("contact force: never pulls, loss of contact with damping only or zero
   ContactLaw law;
   law.damping = 100.0;
   const ContactModel damping_only(law);
-  CHECK(damping_only.evaluate(-1e-7, 0.01, 0.0).force == doctest::Approx(1.0));   // approaching: c delta_dot
+  CHECK(damping_only.evaluate(-1e-7, 0.01, 0.0).force == doctest::Approx(1.0));  // approaching: c delta_dot
   CHECK(damping_only.evaluate(-1e-7, 0.01, 0.0).contact == false);
-  CHECK(damping_only.evaluate(-1e-7, -0.01, 0.0).force == 0.0);                   // separating: never pulls
-  CHECK(damping_only.evaluate(1e-8, -1.0, 0.0).force == 0.0);                     // damper would pull
+  CHECK(damping_only.evaluate(-1e-7, -0.01, 0.0).force == 0.0);  // separating: never pulls
+  CHECK(damping_only.evaluate(1e-8, -1.0, 0.0).force == 0.0);    // damper would pull
   law.loss = LossOfContact::zero_force;
   const ContactModel zero(law);
   CHECK(zero.evaluate(-1e-7, 0.01, 0.0).force == 0.0);
@@ -173,7 +173,8 @@ TEST_CASE("contact-patch filter: a sinusoid is scaled by sin(ka)/(ka)") {
 
 TEST_CASE("instantaneous contact-patch filter in the integrator") {
   BallOnBeamModel m = test::hertz_model(12, 0.05, 0.09, 20000.0);
-  const double a_w = hertz_half_width(m.contact.radius, ContactModel(m.contact).static_compression(m.ball.mass * m.ball.gravity, 0.0));
+  const double a_w =
+      hertz_half_width(m.contact.radius, ContactModel(m.contact).static_compression(m.ball.mass * m.ball.gravity, 0.0));
   // Small roughness: the compression stays near its static value, so the instantaneous width is
   // close to a_W and the result close to a point contact on the roughness pre-averaged over a_W.
   Realisation r;

@@ -142,48 +142,50 @@ TEST_CASE("linear reference: the mean of two sensors at one place is that sensor
   }
 }
 
-TEST_CASE("linear reference equals the plain path: the modal PSD on the whole fine grid, then the direct Welch integral") {
+TEST_CASE(
+    "linear reference equals the plain path: the modal PSD on the whole fine grid, then the direct Welch integral") {
   // Several weighted positions, modes above f_s/2 (the sparse grid there must follow them), a
   // blocked force that continues to the step's Nyquist frequency and aliases: the fast reference
   // against linear_response_psd + welch_expectation_direct on every fine frequency.
   for (int modes : {12, 3}) {  // modes above f_s/2 (every fine point computed there), none (sparse)
-  const ModalBeam beam(test::rig_beam(), {modes, 0.0}, {0.02, {}});
-  WelchConfig c = welch_config();
-  c.segment = 64;
-  c.overlap = 32;
-  const WelchPlan welch(c);
-  const std::size_t n = 1024;
-  LinearReferenceInput in = white_at_one_position(beam, welch, n, {0.065, 0.195, 0.26}, 1.0);
-  in.sensor_mean = true;
-  in.excitation.time_psd = [](double f) { return 1e-4 / (1.0 + std::pow(f / 700.0, 2)); };
-  in.positions.edges = {0, 300, 700, n};
-  in.positions.position = {0.11, 0.16, 0.23};
-  in.positions.weight = {1.0, 2.5, 0.7};
-  REQUIRE((beam.frequency(beam.modes() - 1) > 0.5 * c.sample_rate) == (modes == 12));
-  const LinearReference ref = linear_reference(in);
-  const std::size_t half = in.refine * (welch.n_freq() - 1), nfine = 4 * half + 1;
-  std::vector<double> fine(nfine);
-  for (std::size_t j = 0; j < nfine; ++j) fine[j] = welch.frequency_step() / static_cast<double>(in.refine) * static_cast<double>(j);
-  const auto exc = reference_excitation(in.excitation, fine);
-  const auto plain = linear_response_psd(beam, in.ball_mass, in.excitation.k0, in.damping, in.positions.position, in.sensors,
-                                         fine, exc, Excitation::blocked_force, in.positions.weight);
-  std::vector<std::vector<double>> rows = plain.sensor_psd;
-  std::vector<double> mean(nfine, 0.0);
-  for (const auto& r : rows)
-    for (std::size_t j = 0; j < nfine; ++j) mean[j] += r[j] / 3.0;
-  rows.push_back(mean);
-  REQUIRE(ref.rows == 4);
-  double worst = 0.0;
-  for (std::size_t r = 0; r < 4; ++r) {
-    const auto expect = rollspec::spectral::welch_expectation_direct(welch, rows[r], in.refine);
-    for (std::size_t k = 1; k < ref.bins; ++k) {
-      CHECK(std::abs(ref.raw[r * ref.bins + k] / rows[r][k * in.refine] - 1.0) < 1e-12);
-      worst = std::max(worst, std::abs(ref.psd[r * ref.bins + k] / expect[k] - 1.0));
+    const ModalBeam beam(test::rig_beam(), {modes, 0.0}, {0.02, {}});
+    WelchConfig c = welch_config();
+    c.segment = 64;
+    c.overlap = 32;
+    const WelchPlan welch(c);
+    const std::size_t n = 1024;
+    LinearReferenceInput in = white_at_one_position(beam, welch, n, {0.065, 0.195, 0.26}, 1.0);
+    in.sensor_mean = true;
+    in.excitation.time_psd = [](double f) { return 1e-4 / (1.0 + std::pow(f / 700.0, 2)); };
+    in.positions.edges = {0, 300, 700, n};
+    in.positions.position = {0.11, 0.16, 0.23};
+    in.positions.weight = {1.0, 2.5, 0.7};
+    REQUIRE((beam.frequency(beam.modes() - 1) > 0.5 * c.sample_rate) == (modes == 12));
+    const LinearReference ref = linear_reference(in);
+    const std::size_t half = in.refine * (welch.n_freq() - 1), nfine = 4 * half + 1;
+    std::vector<double> fine(nfine);
+    for (std::size_t j = 0; j < nfine; ++j)
+      fine[j] = welch.frequency_step() / static_cast<double>(in.refine) * static_cast<double>(j);
+    const auto exc = reference_excitation(in.excitation, fine);
+    const auto plain = linear_response_psd(beam, in.ball_mass, in.excitation.k0, in.damping, in.positions.position,
+                                           in.sensors, fine, exc, Excitation::blocked_force, in.positions.weight);
+    std::vector<std::vector<double>> rows = plain.sensor_psd;
+    std::vector<double> mean(nfine, 0.0);
+    for (const auto& r : rows)
+      for (std::size_t j = 0; j < nfine; ++j) mean[j] += r[j] / 3.0;
+    rows.push_back(mean);
+    REQUIRE(ref.rows == 4);
+    double worst = 0.0;
+    for (std::size_t r = 0; r < 4; ++r) {
+      const auto expect = rollspec::spectral::welch_expectation_direct(welch, rows[r], in.refine);
+      for (std::size_t k = 1; k < ref.bins; ++k) {
+        CHECK(std::abs(ref.raw[r * ref.bins + k] / rows[r][k * in.refine] - 1.0) < 1e-12);
+        worst = std::max(worst, std::abs(ref.psd[r * ref.bins + k] / expect[k] - 1.0));
+      }
     }
-  }
-  // Dense above f_s/2 where modes lie there: the plain sum to rounding; else interpolated between
-  // one point per Welch bin, which rounds off anti-resonances of the aliased part.
-  CHECK(worst < (modes == 12 ? 1e-12 : 1e-2));
+    // Dense above f_s/2 where modes lie there: the plain sum to rounding; else interpolated between
+    // one point per Welch bin, which rounds off anti-resonances of the aliased part.
+    CHECK(worst < (modes == 12 ? 1e-12 : 1e-2));
   }
 }
 
@@ -192,28 +194,28 @@ TEST_CASE("linear reference, fast path: the plain path's raw PSD to the bit, its
   // the fast path sums the products with the Welch weights before smoothing them (B34b) and runs the
   // modal sums over ranges of frequencies; the plain path smooths every block's products.
   for (int modes : {12, 4}) {
-  const ModalBeam beam(test::rig_beam(), {modes, 0.0}, {0.02, {}});
-  const WelchPlan welch(welch_config());
-  const std::size_t n = 1500;
-  LinearReferenceInput in = white_at_one_position(beam, welch, n, {0.065, 0.13, 0.195, 0.26, 0.325}, 1.0);
-  in.sensor_mean = true;
-  in.excitation.time_psd = [](double f) { return 1e-4 / (1.0 + std::pow(f / 500.0, 2)); };
-  in.positions = welch_position_blocks(welch, n, 50, 0.05, 0.2, welch.config().sample_rate, 37);
-  REQUIRE(in.positions.count() == 37);
-  REQUIRE(in.positions.weight.back() == 0.0);  // samples after the last segment weigh nothing
-  const LinearReference fast = linear_reference(in), plain = linear_reference_plain(in);
-  REQUIRE(fast.rows == 6);
-  REQUIRE(plain.rows == 6);
-  double worst_psd = 0.0, worst_dof = 0.0;
-  for (std::size_t i = 0; i < fast.psd.size(); ++i) {
-    CHECK(fast.raw[i] == plain.raw[i]);
-    if (i % fast.bins == 0) continue;
-    worst_psd = std::max(worst_psd, std::abs(fast.psd[i] / plain.psd[i] - 1.0));
-    worst_dof = std::max(worst_dof, std::abs(fast.dof[i] / plain.dof[i] - 1.0));
-  }
-  CHECK(worst_psd < 1e-12);
-  CHECK(worst_dof < 1e-10);
-  // the ball moves along a beam with nodes: the dof differ from bin to bin and stay below stationary
-  CHECK(*std::max_element(fast.dof.begin(), fast.dof.end()) <= in.realisations * 6 * welch.equivalent_dof(n));
+    const ModalBeam beam(test::rig_beam(), {modes, 0.0}, {0.02, {}});
+    const WelchPlan welch(welch_config());
+    const std::size_t n = 1500;
+    LinearReferenceInput in = white_at_one_position(beam, welch, n, {0.065, 0.13, 0.195, 0.26, 0.325}, 1.0);
+    in.sensor_mean = true;
+    in.excitation.time_psd = [](double f) { return 1e-4 / (1.0 + std::pow(f / 500.0, 2)); };
+    in.positions = welch_position_blocks(welch, n, 50, 0.05, 0.2, welch.config().sample_rate, 37);
+    REQUIRE(in.positions.count() == 37);
+    REQUIRE(in.positions.weight.back() == 0.0);  // samples after the last segment weigh nothing
+    const LinearReference fast = linear_reference(in), plain = linear_reference_plain(in);
+    REQUIRE(fast.rows == 6);
+    REQUIRE(plain.rows == 6);
+    double worst_psd = 0.0, worst_dof = 0.0;
+    for (std::size_t i = 0; i < fast.psd.size(); ++i) {
+      CHECK(fast.raw[i] == plain.raw[i]);
+      if (i % fast.bins == 0) continue;
+      worst_psd = std::max(worst_psd, std::abs(fast.psd[i] / plain.psd[i] - 1.0));
+      worst_dof = std::max(worst_dof, std::abs(fast.dof[i] / plain.dof[i] - 1.0));
+    }
+    CHECK(worst_psd < 1e-12);
+    CHECK(worst_dof < 1e-10);
+    // the ball moves along a beam with nodes: the dof differ from bin to bin and stay below stationary
+    CHECK(*std::max_element(fast.dof.begin(), fast.dof.end()) <= in.realisations * 6 * welch.equivalent_dof(n));
   }
 }

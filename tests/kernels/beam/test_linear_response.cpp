@@ -18,7 +18,8 @@ namespace {
 double amplitude(const std::vector<double>& y, double fs, double f, std::size_t j0) {
   double sc = 0, ss = 0, cc = 0, yc = 0, ys = 0, c1 = 0, s1 = 0, y1 = 0, n = 0;
   for (std::size_t j = j0; j < y.size(); ++j) {
-    const double t = static_cast<double>(j) / fs, c = std::cos(6.283185307179586 * f * t), s = std::sin(6.283185307179586 * f * t);
+    const double t = static_cast<double>(j) / fs, c = std::cos(6.283185307179586 * f * t),
+                 s = std::sin(6.283185307179586 * f * t);
     cc += c * c, ss += s * s, sc += s * c, yc += y[j] * c, ys += y[j] * s, c1 += c, s1 += s, y1 += y[j], n += 1;
   }
   // Solve [cc sc c1; sc ss s1; c1 s1 n] [a b d] = [yc ys y1] by Cramer's rule.
@@ -45,10 +46,11 @@ TEST_CASE("linear receptance model equals the steady state of the time integrato
   for (double f : {300.0, 1100.0, 2600.0}) {
     Realisation r;
     r.blocked_force.step = 1e-5;
-    for (int i = 0; i <= 25001; ++i) r.blocked_force.values.push_back(w + a0 * std::sin(6.283185307179586 * f * 1e-5 * i));
+    for (int i = 0; i <= 25001; ++i)
+      r.blocked_force.values.push_back(w + a0 * std::sin(6.283185307179586 * f * 1e-5 * i));
     const BallOnBeamResult res = integ.run(r);
-    const LinearResponse lr = linear_response_psd(m.beam, m.ball.mass, m.contact.k0, m.contact.damping, {0.13}, m.sensors,
-                                                  {f}, {1.0}, Excitation::blocked_force);
+    const LinearResponse lr = linear_response_psd(m.beam, m.ball.mass, m.contact.k0, m.contact.damping, {0.13},
+                                                  m.sensors, {f}, {1.0}, Excitation::blocked_force);
     const std::size_t j0 = res.samples() - 2000;  // last 50 ms
     const double fa = amplitude(res.contact_force, m.sample_rate, f, j0);
     MESSAGE(f << " Hz: force amplitude time " << fa << " vs frequency domain " << a0 * std::sqrt(lr.force_psd[0]));
@@ -113,7 +115,8 @@ TEST_CASE("contact_patch_transfer is what contact_patch_average does to a sample
     for (std::size_t i = 0; i < h.values.size(); ++i) h.values[i] = std::cos(k * dx * static_cast<double>(i) + 0.3);
     const UniformSamples out = contact_patch_average(h, a);
     const double t = contact_patch_transfer(k, a, dx);
-    for (std::size_t i = 1000; i < 3000; i += 37) CHECK(out.values[i] == doctest::Approx(t * h.values[i]).scale(1.0).epsilon(1e-12));
+    for (std::size_t i = 1000; i < 3000; i += 37)
+      CHECK(out.values[i] == doctest::Approx(t * h.values[i]).scale(1.0).epsilon(1e-12));
     // The continuous filter times the linear interpolant's low-pass, to the aliases' O(dx / a).
     const double sinc = std::sin(k * a) / (k * a), lin = std::pow(std::sin(k * dx / 2) / (k * dx / 2), 2);
     MESSAGE("k = " << k << ": T = " << t << ", sin(ka)/(ka) = " << sinc << ", times sinc^2(k dx/2) = " << sinc * lin);

@@ -37,5 +37,6 @@ TEST_CASE("moving constant force on a simply supported beam matches Frýba's clo
   }
   // A wrong modal mass or a wrong sign is caught: the dynamic peak differs from the static one.
   const double v = 0.5 * beam.omega(0) * l / pi;
-  CHECK(std::abs(fryba_moving_force(l, ei, mu, load, v, 0.5 * l, 0.5 * l / v, 60) / (load * l * l * l / (48.0 * ei)) - 1.0) > 0.05);
+  CHECK(std::abs(fryba_moving_force(l, ei, mu, load, v, 0.5 * l, 0.5 * l / v, 60) / (load * l * l * l / (48.0 * ei)) -
+                 1.0) > 0.05);
 }

@@ -47,7 +47,8 @@ std::vector<double> wavy(const contact::Grid& g, double amplitude, double wavele
   for (std::size_t iy = 0; iy < g.ny; ++iy)
     for (std::size_t ix = 0; ix < g.nx; ++ix) {
       const double x = g.x(ix), y = g.y(iy);
-      h[iy * g.nx + ix] = amplitude * (0.6 * std::cos(q * x + 0.3) * std::cos(1.3 * q * y) + 0.4 * std::sin(2.1 * q * (x + 0.5 * y) + 1.0));
+      h[iy * g.nx + ix] = amplitude * (0.6 * std::cos(q * x + 0.3) * std::cos(1.3 * q * y) +
+                                       0.4 * std::sin(2.1 * q * (x + 0.5 * y) + 1.0));
     }
   return h;
 }
@@ -73,7 +74,7 @@ TEST_CASE("path table on a smooth strip: P(delta_j, xi_k) and its interpolation 
   REQUIRE(t.converged);
   REQUIRE(t.approach.size() == 8);  // 3^{3/2} W > 5 W at delta_8: no row added (B43a)
   const double dh = hertz_approach(kW);
-  for (double dc : t.first_contact) CHECK(std::fabs(dc) < 1e-20);  // ball on cell centres: B42 = 0
+  for (double dc : t.first_contact) CHECK(std::fabs(dc) < 1e-20);        // ball on cell centres: B42 = 0
   CHECK(t.approach.back() == doctest::Approx(3.0 * dh).epsilon(1e-12));  // B43
   // Discretisation error of the solver at 3.75-17 cells per contact radius: below 1.5e-3 of the
   // Hertz force (contact README: 4.1e-4 at 8 cells/a; the smallest approach has 6 cells/a).
@@ -121,7 +122,8 @@ TEST_CASE("path table on a rough strip: nodes equal direct whole-strip solves, i
   const std::size_t nk = t.position.size();
   // B42 against a brute-force minimum of the gap over the whole strip.
   for (std::size_t k = 0; k < nk; ++k) {
-    const std::vector<double> gap = contact::ball_gap(c.strip, kR, h, contact::BallShape::Paraboloid, c.positions[k], 0.0);
+    const std::vector<double> gap =
+        contact::ball_gap(c.strip, kR, h, contact::BallShape::Paraboloid, c.positions[k], 0.0);
     CHECK(t.first_contact[k] == *std::min_element(gap.begin(), gap.end()));
   }
   // Nodes: the windowed, warm-started path equals a cold solve on the whole strip (BF-5 makes
@@ -141,11 +143,13 @@ TEST_CASE("path table on a rough strip: nodes equal direct whole-strip solves, i
     for (std::size_t k : {std::size_t{1}, std::size_t{4}}) {
       double p, s;
       table.evaluate(d, c.positions[k], p, s);
-      const double direct = contact::path_force_direct(c.strip, h, kE, kR, contact::BallShape::Paraboloid, c.positions[k], 0.0, d, opt);
+      const double direct =
+          contact::path_force_direct(c.strip, h, kE, kR, contact::BallShape::Paraboloid, c.positions[k], 0.0, d, opt);
       worst_delta = std::max(worst_delta, std::fabs(p - direct) / kW);
       const double x = 0.5 * (c.positions[k] + c.positions[k - 1]);
       table.evaluate(t.approach[j], x, p, s);
-      const double direct_x = contact::path_force_direct(c.strip, h, kE, kR, contact::BallShape::Paraboloid, x, 0.0, t.approach[j], opt);
+      const double direct_x =
+          contact::path_force_direct(c.strip, h, kE, kR, contact::BallShape::Paraboloid, x, 0.0, t.approach[j], opt);
       worst_xi = std::max(worst_xi, std::fabs(p - direct_x) / kW);
     }
   }
@@ -243,7 +247,8 @@ TEST_CASE("law = path on a Hertz table shifted by a wave starts like law = hertz
   const beam::BallOnBeamResult pt = beam::ExactStepIntegrator(m).run(beam::Realisation{});
   REQUIRE(pt.samples() == hz.samples());
   double worst = 0.0;
-  for (std::size_t j = 0; j < hz.samples(); ++j) worst = std::max(worst, std::fabs(pt.contact_force[j] - hz.contact_force[j]));
+  for (std::size_t j = 0; j < hz.samples(); ++j)
+    worst = std::max(worst, std::fabs(pt.contact_force[j] - hz.contact_force[j]));
   // Between positions P is linear in xi while Hertz(delta + h) is not: O((h' step)^2 / dh^2) W.
   MESSAGE("path vs hertz on the wave: force up to " << worst / weight << " W");
   CHECK(worst < 1e-3 * weight);
@@ -259,7 +264,8 @@ TEST_CASE("path table: the same bits on 1 and 2 threads, the extension rows (B43
   const int before = omp_get_max_threads();
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
-    t.push_back(contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid, c.positions, kW, opt));
+    t.push_back(
+        contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid, c.positions, kW, opt));
   }
   omp_set_num_threads(before);
   CHECK(t[0].approach.size() > 8);

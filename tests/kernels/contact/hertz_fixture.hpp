@@ -12,8 +12,8 @@ namespace rollspec::contact::test {
 constexpr double kPi = 3.14159265358979323846;
 
 struct Hertz {
-  double radius = 0.02;     // m (40 mm ball)
-  double e_star = 115.4e9;  // Pa
+  double radius = 0.02;        // m (40 mm ball)
+  double e_star = 115.4e9;     // Pa
   double approach = 0.241e-6;  // m (seed ball under its own weight)
   double a() const { return std::sqrt(radius * approach); }
   double force() const { return 4.0 / 3.0 * e_star * std::sqrt(radius) * std::pow(approach, 1.5); }

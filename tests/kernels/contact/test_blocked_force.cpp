@@ -87,11 +87,10 @@ TEST_CASE("smooth strip: F0 constant, equal to Hertz P(d0); k0 = 2E*a; load sear
   CHECK(path.approach == h.approach);
   CHECK(path.paths == 1);
   CHECK(path.solves == 12);
-  MESSAGE("smooth strip 32 cells/a: F0/P_Hertz - 1 = " << path.force[0] / p_hertz - 1.0 << ", spread " << spread
-                                                       << ", k0/(2E*a) - 1 = " << path.k0 / h.stiffness() - 1.0
-                                                       << " (frozen set alone " << path.k0_frozen / h.stiffness() - 1.0 << ")"
-                                                       << ", CG iterations " << path.iterations << " for "
-                                                       << path.solves << " solves (cold first)");
+  MESSAGE("smooth strip 32 cells/a: F0/P_Hertz - 1 = "
+          << path.force[0] / p_hertz - 1.0 << ", spread " << spread << ", k0/(2E*a) - 1 = "
+          << path.k0 / h.stiffness() - 1.0 << " (frozen set alone " << path.k0_frozen / h.stiffness() - 1.0 << ")"
+          << ", CG iterations " << path.iterations << " for " << path.solves << " solves (cold first)");
 
   // Load search (BF-3): W = P_Hertz(w0) must give d0 = w0 within the force error · 2/3.
   const BlockedForcePath at_load =
@@ -101,9 +100,9 @@ TEST_CASE("smooth strip: F0 constant, equal to Hertz P(d0); k0 = 2E*a; load sear
   CHECK(std::fabs(at_load.approach / h.approach - 1.0) < 1e-4);
   const double a0 = std::sqrt(h.radius * at_load.approach);
   CHECK(std::fabs(at_load.k0 / (2.0 * h.e_star * a0) - 1.0) < 1e-3);
-  MESSAGE("smooth load search: d0/w0 - 1 = " << at_load.approach / h.approach - 1.0 << ", mean F0/W - 1 = "
-                                             << at_load.mean_force / p_hertz - 1.0 << ", " << at_load.paths
-                                             << " paths, " << at_load.solves << " solves");
+  MESSAGE("smooth load search: d0/w0 - 1 = " << at_load.approach / h.approach - 1.0
+                                             << ", mean F0/W - 1 = " << at_load.mean_force / p_hertz - 1.0 << ", "
+                                             << at_load.paths << " paths, " << at_load.solves << " solves");
 }
 
 TEST_CASE("smooth strip, solver grid = strip grid: the pressure is shifted by the step (BF-6)") {
@@ -180,8 +179,8 @@ TEST_CASE("rough elastic-plastic strip: warm starts equal cold solves and whole-
   BlockedForceOptions off_centre;
   off_centre.centre_y = 3.4 * c.strip.dy;
   const std::vector<double> x6(x.begin(), x.begin() + 6);
-  const BlockedForcePath p_off = blocked_force_path(window_solver, c.strip, heights, h.radius, BallShape::Sphere, x6,
-                                                    h.approach, opt, off_centre);
+  const BlockedForcePath p_off =
+      blocked_force_path(window_solver, c.strip, heights, h.radius, BallShape::Sphere, x6, h.approach, opt, off_centre);
   REQUIRE(p_off.converged);
   std::vector<double> whole_off(x6.size());
   for (std::size_t k = 0; k < x6.size(); ++k) {
@@ -215,8 +214,8 @@ TEST_CASE("rough elastic-plastic strip: warm starts equal cold solves and whole-
   CHECK(*fmax / *fmin > 1.003);  // the force varies along this path (measured 0.49 %) far above 1e-8
   MESSAGE("rough path (16 positions, " << plastic << " plastic cells in all): CG iterations ball-frame "
                                        << p_ball.iterations << ", strip-frame " << p_strip.iterations << ", cold "
-                                       << p_cold.iterations << ", grid = strip " << p_grid.iterations
-                                       << "; F0 range " << *fmin << " .. " << *fmax << " N");
+                                       << p_cold.iterations << ", grid = strip " << p_grid.iterations << "; F0 range "
+                                       << *fmin << " .. " << *fmax << " N");
 }
 
 TEST_CASE("long wave: F0 follows quasi-static Hertz, mean F0 = W, k0 = dF/dd, PSD peak at 1/lambda") {
@@ -238,8 +237,7 @@ TEST_CASE("long wave: F0 follows quasi-static Hertz, mean F0 = W, k0 = dF/dd, PS
   const double load = h.force();
   ContactSolver solver(window, h.e_star);
   const auto t0 = std::chrono::steady_clock::now();
-  const BlockedForcePath path =
-      blocked_force_at_load(solver, strip, heights, h.radius, BallShape::Paraboloid, x, load);
+  const BlockedForcePath path = blocked_force_at_load(solver, strip, heights, h.radius, BallShape::Paraboloid, x, load);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   REQUIRE(path.converged);
   CHECK(std::fabs(path.mean_force / load - 1.0) < 1e-8);
@@ -308,12 +306,14 @@ TEST_CASE("long wave: F0 follows quasi-static Hertz, mean F0 = W, k0 = dF/dd, PS
   // (measured 4.2e-6, with the grid's ring effects).
   CHECK(psd[peak] > 1e5 * others);
   CHECK(psd[2 * peak] / psd[peak] < 1e-5);
-  MESSAGE("long wave: " << path.paths << " paths + " << path.presearch_paths << " pre-search paths (without: "
-                        << direct.paths << " paths, " << direct.solves << " solves), " << path.solves << " solves, " << path.iterations
-                        << " CG + " << path.stiffness_iterations << " stiffness iterations, " << seconds << " s ("
-                        << 1e3 * seconds / path.solves << " ms per solve); max |F0/P(d0+h) - 1| = " << worst
-                        << ", d0/d_ref - 1 = " << path.approach / d_ref - 1.0 << ", k0_frozen/k_fd - 1 = "
-                        << path.k0_frozen / k_fd - 1.0 << ", k0/k_fd - 1 = " << path.k0 / k_fd - 1.0 << ", PSD peak / next-but-one " << psd[peak] / others);
+  MESSAGE("long wave: " << path.paths << " paths + " << path.presearch_paths
+                        << " pre-search paths (without: " << direct.paths << " paths, " << direct.solves << " solves), "
+                        << path.solves << " solves, " << path.iterations << " CG + " << path.stiffness_iterations
+                        << " stiffness iterations, " << seconds << " s (" << 1e3 * seconds / path.solves
+                        << " ms per solve); max |F0/P(d0+h) - 1| = " << worst << ", d0/d_ref - 1 = "
+                        << path.approach / d_ref - 1.0 << ", k0_frozen/k_fd - 1 = " << path.k0_frozen / k_fd - 1.0
+                        << ", k0/k_fd - 1 = " << path.k0 / k_fd - 1.0 << ", PSD peak / next-but-one "
+                        << psd[peak] / others);
 }
 
 TEST_CASE("confinement (BF-5) and bad input are refused with the position named") {
@@ -369,9 +369,9 @@ TEST_CASE("confinement (BF-5) and bad input are refused with the position named"
   const Grid other{c.strip.nx, c.strip.ny, 1.01 * c.strip.dx, c.strip.dy};
   CHECK_THROWS_AS(blocked_force_path(solver, other, {}, h.radius, BallShape::Paraboloid, x, h.approach),
                   std::invalid_argument);
-  CHECK_THROWS_AS(blocked_force_path(solver, c.strip, std::vector<double>(7, 0.0), h.radius, BallShape::Paraboloid, x,
-                                     h.approach),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      blocked_force_path(solver, c.strip, std::vector<double>(7, 0.0), h.radius, BallShape::Paraboloid, x, h.approach),
+      std::invalid_argument);
   CHECK_THROWS_AS(blocked_force_path(solver, c.strip, {}, h.radius, BallShape::Paraboloid, {}, h.approach),
                   std::invalid_argument);
   CHECK_THROWS_AS(blocked_force_at_load(solver, c.strip, {}, h.radius, BallShape::Paraboloid, x, 0.0),
@@ -395,7 +395,7 @@ TEST_CASE("chunked path (BF-6c): the same bits on 1 and 2 threads, equal to the 
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();
   BlockedForceOptions whole, chunked;
-  chunked.chunk_positions = 5;  // chunks 5, 5, 5, 1: one shorter than the rest
+  chunked.chunk_positions = 5;    // chunks 5, 5, 5, 1: one shorter than the rest
   const double load = 1.1 * 3.0;  // N, about the mean force of this path at the Hertz approach
   const auto at_load = [&](int threads, const BlockedForceOptions& o) {
     const int before = omp_get_max_threads();
@@ -417,7 +417,8 @@ TEST_CASE("chunked path (BF-6c): the same bits on 1 and 2 threads, equal to the 
   CHECK(max_relative_difference(one.force, ref.force) < 1e-8);
   CHECK(max_relative_difference(one.stiffness, ref.stiffness) < 1e-8);
   CHECK(one.approach == doctest::Approx(ref.approach).epsilon(1e-8));
-  MESSAGE("chunks of 5: CG iterations " << one.iterations << " (unchunked " << ref.iterations << "), max relative "
-                                          "force difference to the unchunked path "
-                                       << max_relative_difference(one.force, ref.force));
+  MESSAGE("chunks of 5: CG iterations " << one.iterations << " (unchunked " << ref.iterations
+                                        << "), max relative "
+                                           "force difference to the unchunked path "
+                                        << max_relative_difference(one.force, ref.force));
 }

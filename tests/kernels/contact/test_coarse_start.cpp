@@ -29,8 +29,8 @@ TEST_CASE("coarse start: the same Hertz solution in fewer fine-grid iterations")
   REQUIRE(line.converged);
   REQUIRE(coarse.converged);
   MESSAGE("Hertz 128^2 cold solve: line-search start " << line.iterations << " iterations, coarse start "
-                                                        << coarse.iterations << " + " << coarse.coarse_iterations
-                                                        << " on the coarse grids");
+                                                       << coarse.iterations << " + " << coarse.coarse_iterations
+                                                       << " on the coarse grids");
   CHECK(line.coarse_iterations == 0);
   CHECK(coarse.coarse_iterations > 0);
   CHECK(coarse.iterations < line.iterations);

@@ -86,8 +86,10 @@ TEST_CASE("equivalent roughness: smooth strip gives h_eq = 0 and the Hertz appro
   MESSAGE("flat strip: k_s / (2 E* a) - 1 = " << r.smooth_stiffness / k_hertz - 1.0);
   CHECK(std::fabs(r.smooth_stiffness / k_hertz - 1.0) < 1e-2);
   for (std::size_t k = 0; k < r.stiffness.size(); ++k) {
-    if (k % EquivalentRoughnessOptions{}.stiffness_every == 0) CHECK(std::fabs(r.stiffness[k] / r.smooth_stiffness - 1.0) < 1e-6);
-    else CHECK(std::isnan(r.stiffness[k]));
+    if (k % EquivalentRoughnessOptions{}.stiffness_every == 0)
+      CHECK(std::fabs(r.stiffness[k] / r.smooth_stiffness - 1.0) < 1e-6);
+    else
+      CHECK(std::isnan(r.stiffness[k]));
   }
 }
 
@@ -113,7 +115,7 @@ TEST_CASE("equivalent roughness: moving window with warm starts equals the cold 
     worst = std::max(worst, std::fabs(fast.height[k] - ref.height[k]));
     spread = std::max(spread, std::fabs(fast.height[k]));
   }
-  CHECK(plastic > 0.0);                     // the case is elastic-plastic
+  CHECK(plastic > 0.0);  // the case is elastic-plastic
   MESSAGE("h_eq up to " << spread / h.approach << " δ_H, fast − reference up to " << worst / h.approach << " δ_H");
   CHECK(spread > 0.01 * h.approach);  // and rough: h_eq is not trivially 0
   // Same discrete problem, both solved to the stopping rule 1e-10 and |P − W| ≤ 1e-10 W: the

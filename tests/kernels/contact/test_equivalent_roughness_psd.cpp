@@ -40,13 +40,13 @@ TEST_CASE("equivalent roughness of an isotropic surface: PSD of h_eq within 1 dB
   const texture::SpectralSurfaceGenerator gen(g, sspec);
   const contact::Grid strip{sspec.nx, sspec.ny, dx, dx};
   const contact::Grid window{28, 28, dx, dx};  // half-width 1.75 a; 56² products (no large prime factor)
-  const std::size_t step = 2;                   // path step a/4
+  const std::size_t step = 2;                  // path step a/4
   std::vector<double> x;
   for (std::size_t ix = 16; ix + 16 < strip.nx; ix += step) x.push_back(strip.x(ix));
 
   spectral::WelchConfig cfg;
   cfg.sample_rate = 1.0 / (static_cast<double>(step) * dx);  // cycles/m
-  cfg.segment = 512;  // 128 a: 4.7 bins in the third-octave band at ka = 0.5
+  cfg.segment = 512;                                         // 128 a: 4.7 bins in the third-octave band at ka = 0.5
   cfg.overlap = 256;
   const spectral::WelchPlan plan(cfg);
   spectral::WelchWorkspace ws(cfg.segment);

@@ -70,8 +70,8 @@ TEST_CASE("solve_at_force: load control equals the Newton on the approach (Hertz
   opt.tolerance = 1e-10;
   for (const bool rough : {false, true}) {
     const Grid grid = h.grid(rough ? 10.0 : 16.0, 1.6);
-    const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid)
-                           : ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
+    const auto gap =
+        rough ? rollspec::contact::test::wavy_ball_gap(h, grid) : ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
     SolverOptions o = opt;
     if (rough) o.hardness = 0.5 * h.p0();
     ContactSolver solver(grid, h.e_star);

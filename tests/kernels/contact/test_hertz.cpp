@@ -54,7 +54,8 @@ TEST_CASE("Hertz sphere at 32 cells per contact radius") {
 }
 
 TEST_CASE("Hertz error falls as the grid refines (8, 16, 32, 64 cells per radius)") {
-  const HertzErrors e8 = hertz_errors(8.0), e16 = hertz_errors(16.0), e32 = hertz_errors(32.0), e64 = hertz_errors(64.0);
+  const HertzErrors e8 = hertz_errors(8.0), e16 = hertz_errors(16.0), e32 = hertz_errors(32.0),
+                    e64 = hertz_errors(64.0);
   CHECK(std::fabs(e16.force) < std::fabs(e8.force));
   CHECK(std::fabs(e32.force) < std::fabs(e16.force));
   CHECK(std::fabs(e64.force) < std::fabs(e32.force));
@@ -179,7 +180,7 @@ TEST_CASE("load control on the open half-space finds the Hertz approach") {
   const ContactResult r = solver.solve_load(gap, mean_pressure, p, opt);
   REQUIRE(r.converged);
   MESSAGE("load control, 16 cells/a: w / w_Hertz - 1 = " << r.approach / h.approach - 1.0 << ", iterations "
-                                                          << r.iterations);
+                                                         << r.iterations);
   CHECK(r.force == doctest::Approx(h.force()).epsilon(1e-12));
   // P ∝ w^{3/2}: the approach error is 2/3 of the force error at fixed approach (1.2e-4 here).
   CHECK(std::fabs(r.approach / h.approach - 1.0) < 1.5e-4);

@@ -24,7 +24,8 @@ double max_abs(const std::vector<double>& v) {
 }
 std::vector<double> test_pressure(std::size_t n) {
   std::vector<double> p(n);
-  for (std::size_t k = 0; k < n; ++k) p[k] = 1.0e6 * (1.3 + std::sin(1.7 * static_cast<double>(k)) + 0.4 * std::cos(0.31 * static_cast<double>(k * k)));
+  for (std::size_t k = 0; k < n; ++k)
+    p[k] = 1.0e6 * (1.3 + std::sin(1.7 * static_cast<double>(k)) + 0.4 * std::cos(0.31 * static_cast<double>(k * k)));
   return p;
 }
 }  // namespace
@@ -32,7 +33,8 @@ std::vector<double> test_pressure(std::size_t n) {
 TEST_CASE("Love coefficient: centre of a square and far field") {
   const double e_star = 115.4e9, dx = 2e-6;
   // Centre of a square of side c under unit pressure: u = 4 c asinh(1)/(π E*) (Johnson Eq. 3.96).
-  CHECK(love_coefficient(0, 0, dx, dx, e_star) == doctest::Approx(4.0 * dx * std::asinh(1.0) / (kPi * e_star)).epsilon(1e-15));
+  CHECK(love_coefficient(0, 0, dx, dx, e_star) ==
+        doctest::Approx(4.0 * dx * std::asinh(1.0) / (kPi * e_star)).epsilon(1e-15));
   // Far field: ΔA/(π E*) times the cell average of 1/r, 1/x + (2a² − b²)/(6x³) + O(h⁴/x⁵).
   const double dy = 1.5e-6, a = dx / 2, b = dy / 2;
   for (long ox : {50L, 200L}) {
@@ -114,7 +116,8 @@ TEST_CASE("direct sums over chosen cells (Eq. 3b) equal the direct O(N^2) sum to
     op.apply_direct(p.data(), sources, targets, u.data());
     double diff = 0.0;
     for (std::uint32_t t : targets) diff = std::max(diff, std::fabs(u[t] - ref[t]));
-    MESSAGE("direct sums on chosen cells vs direct, " << grid.nx << "x" << grid.ny << ": max rel diff " << diff / max_abs(ref));
+    MESSAGE("direct sums on chosen cells vs direct, " << grid.nx << "x" << grid.ny << ": max rel diff "
+                                                      << diff / max_abs(ref));
     CHECK(diff < 1e-13 * max_abs(ref));
     for (std::size_t i = 0; i < grid.size(); ++i)
       if (i % 3 == 1) CHECK(u[i] == -1.0);  // cells that are not targets are not written
@@ -131,7 +134,8 @@ TEST_CASE("periodic operator: Boussinesq symbol 2/(E* q) on a Fourier mode, zero
   const double lambda = 32e-6, q = 2 * kPi / lambda;
   std::vector<double> p(grid.size()), u(grid.size());
   for (std::size_t iy = 0; iy < grid.ny; ++iy)
-    for (std::size_t ix = 0; ix < grid.nx; ++ix) p[iy * grid.nx + ix] = 1e6 + 3e5 * std::cos(q * static_cast<double>(ix) * grid.dx);
+    for (std::size_t ix = 0; ix < grid.nx; ++ix)
+      p[iy * grid.nx + ix] = 1e6 + 3e5 * std::cos(q * static_cast<double>(ix) * grid.dx);
   op.apply(p.data(), u.data());
   double err = 0.0;
   for (std::size_t iy = 0; iy < grid.ny; ++iy)

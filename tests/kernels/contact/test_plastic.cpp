@@ -42,7 +42,8 @@ TEST_CASE("no cell above H; plastic cells and plastic volume reported") {
   CHECK(r.force < re.force);
   CHECK(r.contact_cells > re.contact_cells);
   MESSAGE("H = 0.6 p0: P/P_elastic = " << r.force / re.force << ", plastic cells " << r.plastic_cells
-                                       << ", plastic volume " << r.plastic_volume << " m^3, iterations " << r.iterations);
+                                       << ", plastic volume " << r.plastic_volume << " m^3, iterations "
+                                       << r.iterations);
 }
 
 TEST_CASE("H -> infinity reproduces the uncapped (Hertz) solve bitwise") {

@@ -93,7 +93,7 @@ TEST_CASE("sub-cell edge stiffness equals the slope of P(w) over one cell of edg
     worst_frozen = std::max(worst_frozen, std::fabs(r.frozen_stiffness / k_slope - 1.0));
   }
   MESSAGE("Hertz 32 cells/a: max |k / k_slope - 1| = " << worst_edge << " with the sub-cell edge, " << worst_frozen
-                                                      << " frozen set alone");
+                                                       << " frozen set alone");
   CHECK(worst_edge < 1e-3);
   CHECK(worst_edge < worst_frozen);
 }

@@ -62,7 +62,8 @@ TEST_CASE("contact solve and sweep: same bits on 1 and 2 threads (rough, elastic
   // cell loops (A > 16 384 cells) run on the threads; the coarse start (README Eq. 16) on 128², 64².
   const double dx = h.a() / 60.0;
   const Grid grid{256, 256, dx, dx};
-  const auto gap = ball_gap(grid, h.radius, rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a()));
+  const auto gap =
+      ball_gap(grid, h.radius, rollspec::contact::test::wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a()));
   SolverOptions opt;
   opt.hardness = 0.5 * h.p0();
   opt.tolerance = 1e-10;

@@ -46,7 +46,7 @@ TEST_CASE("Westergaard full contact: p = p_mean + (pi E* Delta / lambda) cos(2 p
   }
   const double peak_err = r.max_pressure / (p_mean + wave.p_star()) - 1.0;
   MESSAGE("Westergaard full contact: peak rel err " << peak_err << ", max |p - exact| / p* " << err / wave.p_star()
-                                                   << ", iterations " << r.iterations);
+                                                    << ", iterations " << r.iterations);
   CHECK(std::fabs(peak_err) < 3e-4);
   CHECK(err / wave.p_star() < 3e-4);
   CHECK(r.contact_cells == p.size());
@@ -70,8 +70,9 @@ double partial_contact_peak_error(std::size_t points_per_wavelength, double rati
     const double peak_err = r.max_pressure / peak - 1.0;
     const double half_width = wave.lambda / kPi * std::asin(std::sqrt(ratio));
     const double width_num = r.contact_area / (static_cast<double>(wave.ny) * wave.grid().dy);
-    MESSAGE("Westergaard " << points_per_wavelength << " points/wavelength, p_mean/p* = " << ratio << ": peak rel err " << peak_err << ", contact width "
-                                       << width_num / (2 * half_width) - 1.0 << " rel, iterations " << r.iterations);
+    MESSAGE("Westergaard " << points_per_wavelength << " points/wavelength, p_mean/p* = " << ratio << ": peak rel err "
+                           << peak_err << ", contact width " << width_num / (2 * half_width) - 1.0
+                           << " rel, iterations " << r.iterations);
     // The contact set is resolved to one point at each edge.
     CHECK(std::fabs(width_num - 2 * half_width) <= 2 * wave.grid().dx);
     return peak_err;

@@ -24,8 +24,8 @@ Model tube_on_grid() {
   Model m;
   m.sections.push_back(circular_section(2e9, 0.3, 7800, 0.06, 0.05));
   const double r = 0.03;
-  const std::vector<int> ids = add_straight_beam(m, Vector3d(0.0, -0.25, r - 1e-3), Vector3d(0.0, 0.25, r - 1e-3), 2, 0,
-                                                 Vector3d::UnitX());
+  const std::vector<int> ids =
+      add_straight_beam(m, Vector3d(0.0, -0.25, r - 1e-3), Vector3d(0.0, 0.25, r - 1e-3), 2, 0, Vector3d::UnitX());
   HeightField f;
   f.base = make_plane(Vector3d::Zero(), Vector3d(0.02, 0.01, 1.0));
   f.n1 = 40;
@@ -50,7 +50,8 @@ Model tube_on_grid() {
   m.planes.push_back(make_plane(Vector3d(0.0, -0.25 - r + 1e-3, 0.0), Vector3d::UnitY()));
   m.contacts.push_back(ContactPair{ids[0], 0, ContactLaw{r, 0.3, 5e5, 1e5, true}});
   m.bodies.push_back(RigidBody{ids[2], 0.5, Vector3d(1e-3, 2e-3, 1e-3).asDiagonal()});
-  m.loads.push_back(NodalLoad{ids[4], Vector3d(0.0, 0.0, -3.0), Vector3d(0.01, 0.0, 0.02), TimeSeries::ramp(0.0, 0.02)});
+  m.loads.push_back(
+      NodalLoad{ids[4], Vector3d(0.0, 0.0, -3.0), Vector3d(0.01, 0.0, 0.02), TimeSeries::ramp(0.0, 0.02)});
   m.imposed.push_back(ImposedDof{ids[0], 1, 1e-4, TimeSeries::ramp(0.0, 0.01)});
   m.v0.assign(m.X.size(), Vector3d(0.5, 0.0, -0.05));
   m.w0.assign(m.X.size(), Vector3d(0.0, 0.5 / r, 0.0));

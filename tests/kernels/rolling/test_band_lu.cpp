@@ -27,7 +27,7 @@ TEST_CASE("band LU: solves random band matrices as dense partial-pivoting LU doe
   const int shapes[][3] = {{1, 0, 0}, {5, 1, 1}, {12, 0, 3}, {20, 4, 0}, {54, 17, 17}, {60, 5, 11}, {200, 17, 17}};
   for (const auto& sh : shapes) {
     const int n = sh[0], kl = sh[1], ku = sh[2];
-    for (const bool weak_diagonal : {false, true}) {  // weak: the pivots come from below the diagonal
+    for (const bool weak_diagonal : {false, true}) {        // weak: the pivots come from below the diagonal
       if (weak_diagonal && (kl == 0 || ku == 0)) continue;  // a triangular band with a weak diagonal is singular
       MatrixXd A = MatrixXd::Zero(n, n);
       BandLU lu(n, kl, ku);
@@ -90,7 +90,8 @@ TEST_CASE("band LU: the profile-skipping factorisation and solve = the plain ban
         REQUIRE(plain.factorize_reference());
         int differ = 0;
         for (int j = 0; j < n; ++j)
-          for (int i = std::max(0, j - kl - ku); i <= std::min(n - 1, j + kl); ++i) differ += fast.at(i, j) != plain.at(i, j);
+          for (int i = std::max(0, j - kl - ku); i <= std::min(n - 1, j + kl); ++i)
+            differ += fast.at(i, j) != plain.at(i, j);
         CAPTURE(n);
         CAPTURE(profile);
         CAPTURE(weak_diagonal);
@@ -118,8 +119,8 @@ Model rolling_tube() {
   Model m;
   m.sections.push_back(circular_section(2.1e11, 0.3, 7850, 0.06, 0.052));
   const double r = 0.03;
-  const std::vector<int> ids = add_straight_beam(m, Vector3d(0.0, -0.5, r - 2e-5), Vector3d(0.0, 0.5, r - 2e-5), 4, 0,
-                                                 Vector3d::UnitX());
+  const std::vector<int> ids =
+      add_straight_beam(m, Vector3d(0.0, -0.5, r - 2e-5), Vector3d(0.0, 0.5, r - 2e-5), 4, 0, Vector3d::UnitX());
   HeightField f;
   f.base = make_plane(Vector3d::Zero(), Vector3d::UnitZ());
   f.n1 = 60;

@@ -42,13 +42,14 @@ TEST_CASE("beam + inertia + load + contact tangent = central differences of the 
     s.GA3 = 0.3 * s.EA;  // distinct constants so that every term shows
     s.EI3 = 70.0;
     m.sections.push_back(s);
-    const std::vector<int> ids = add_straight_beam(m, Vector3d::Zero(), Vector3d(2.0, 0.3, -0.1), 2, 0,
-                                                   Vector3d(0.1, 1.0, 0.2));
+    const std::vector<int> ids =
+        add_straight_beam(m, Vector3d::Zero(), Vector3d(2.0, 0.3, -0.1), 2, 0, Vector3d(0.1, 1.0, 0.2));
     m.sections[0].rhoA = 0.2;
     m.gravity = Vector3d(0.3, -0.2, -9.81);
     m.gravity_series = TimeSeries::ramp(0.0, 0.05);  // load steps, so quasi-static Newton converges
     for (int d = 0; d < 6; ++d) m.imposed.push_back(ImposedDof{ids[0], d, 0.0, TimeSeries::constant()});
-    m.loads.push_back(NodalLoad{ids[4], Vector3d(0.1, -0.2, 0.3), Vector3d(0.4, 0.5, -0.6), TimeSeries::ramp(0.0, 0.05)});
+    m.loads.push_back(
+        NodalLoad{ids[4], Vector3d(0.1, -0.2, 0.3), Vector3d(0.4, 0.5, -0.6), TimeSeries::ramp(0.0, 0.05)});
     m.bodies.push_back(RigidBody{ids[2], 0.3, Vector3d(0.2, 0.3, 0.4).asDiagonal()});
     m.planes.push_back(make_plane(Vector3d(0, 0, -0.06), Vector3d(0.05, 0.02, 1.0)));
     m.contacts.push_back(ContactPair{ids[3], 0, ContactLaw{0.05, 0.3, 1e5, 1e4, true}});
@@ -75,8 +76,8 @@ TEST_CASE("beam + inertia + load + contact tangent = central differences of the 
       Kfd.col(j) = (rp - rm) / (2 * h);
     }
     const double err = (K - Kfd).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff();
-    MESSAGE(std::string(dynamic ? "dynamic" : "quasi-static") << " tangent rel. error " << err << " (max |K| "
-                                                   << K.cwiseAbs().maxCoeff() << ")");
+    MESSAGE(std::string(dynamic ? "dynamic" : "quasi-static")
+            << " tangent rel. error " << err << " (max |K| " << K.cwiseAbs().maxCoeff() << ")");
     CHECK(err < 1e-6);
     // the same test restricted to the beam-only block of an interior node pair
     CHECK((K.block(6, 6, 12, 12) - Kfd.block(6, 6, 12, 12)).cwiseAbs().maxCoeff() <
@@ -173,8 +174,7 @@ TEST_CASE("frictionless cantilever pressed on a plane: tip force = 3 EI D / L^3 
   // the plane touches the tip sphere; the clamped root is lowered by D
   m.planes.push_back(make_plane(Vector3d(0, 0, -r), Vector3d::UnitZ()));
   m.contacts.push_back(ContactPair{ids.back(), 0, ContactLaw{r, 0.0, 1e7, 0.0, true}});
-  for (int d = 0; d < 6; ++d)
-    m.imposed.push_back(ImposedDof{ids[0], d, d == 2 ? -D : 0.0, TimeSeries::ramp(0, 1)});
+  for (int d = 0; d < 6; ++d) m.imposed.push_back(ImposedDof{ids[0], d, d == 2 ? -D : 0.0, TimeSeries::ramp(0, 1)});
   SolverOptions o;
   o.analysis = Analysis::QuasiStatic;
   o.force_tol = 1e-9;
@@ -274,7 +274,8 @@ TEST_CASE("rotary inertia: analytic tangent (R-33a) = the Jet2<3> reference, New
     const Matrix3d Rn = rodrigues_q(vec(3.0));
     const Vector3d Wn = vec(50.0), An = vec(1e3), alpha = vec(trial % 2 == 0 ? 1.5 : 1e-3);
     const double dt = trial % 2 == 0 ? 1e-2 : 2.5e-5;
-    const RotaryInertiaEval a = rotary_inertia(J, Rn, Wn, An, dt, alpha), r = rotary_inertia_reference(J, Rn, Wn, An, dt, alpha);
+    const RotaryInertiaEval a = rotary_inertia(J, Rn, Wn, An, dt, alpha),
+                            r = rotary_inertia_reference(J, Rn, Wn, An, dt, alpha);
     const RotaryInertiaEval am = rotary_inertia_midpoint(J, Rn, Wn, dt, alpha),
                             rm = rotary_inertia_midpoint_reference(J, Rn, Wn, dt, alpha);
     worst = std::max({worst, rel_diff(a.residual, r.residual), rel_diff(a.tangent, r.tangent),

@@ -44,9 +44,8 @@ TEST_CASE("flexible beam dropped on a plane with friction: contact, friction, en
   const Energies& Ee = h.energy.back();
   MESSAGE("max penetration " << -gmin << " m, contact records stick/slip " << n_stick << "/" << n_slip
                              << ", friction work " << Ee.friction_work << " J (return mapping "
-                             << Ee.friction_dissipation << " J), max |balance drift| "
-                             << drift << " J (max kinetic " << emax << " J), Newton its " << h.newton_iterations
-                             << ", cuts " << h.cuts);
+                             << Ee.friction_dissipation << " J), max |balance drift| " << drift << " J (max kinetic "
+                             << emax << " J), Newton its " << h.newton_iterations << ", cuts " << h.cuts);
   CHECK(n_stick > 0);
   CHECK(n_slip > 0);
   CHECK(Ee.friction_dissipation > 0.0);

@@ -66,7 +66,8 @@ TEST_CASE("cantilever free vibration: first frequency 1.8751^2 sqrt(EI/(rho A L^
   for (const Energies& E : h.energy) drift = std::max(drift, std::abs(E.balance()));
   const double Emax = F * 2e-3;  // work scale of the load
   MESSAGE("period " << T << " vs Euler-Bernoulli " << T1 << " (rel " << T / T1 - 1 << "), max |energy balance| "
-                    << drift << " J vs work scale " << Emax << ", Newton its " << h.newton_iterations << ", cuts " << h.cuts);
+                    << drift << " J vs work scale " << Emax << ", Newton its " << h.newton_iterations << ", cuts "
+                    << h.cuts);
   // Timoshenko + rotary inertia lengthen the period by O((r/L)^2), Newmark by O((w dt)^2)
   CHECK(std::abs(T / T1 - 1) < 0.002);
   CHECK(drift < 1e-3 * Emax);

@@ -18,8 +18,8 @@ namespace {
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
-Mat6 fd_tangent(const Plane& pl, const ContactLaw& law, const ContactState& st, const Vector3d& xs,
-                const Vec6& q, double h) {
+Mat6 fd_tangent(const Plane& pl, const ContactLaw& law, const ContactState& st, const Vector3d& xs, const Vec6& q,
+                double h) {
   Mat6 K;
   for (int j = 0; j < 6; ++j) {
     Vec6 qp = q, qm = q;

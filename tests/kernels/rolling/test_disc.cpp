@@ -50,7 +50,7 @@ TEST_CASE("seed 000 example 4.1: disc sliding then rolling (dt = 1e-3, t = 0..6 
   CHECK(rel(s.energy_loss, s.energy_loss_exact) < 0.005);
   CHECK(rel(s.dissipation, s.energy_loss_exact) < 0.005);
   MESSAGE("trapezoidal friction work (minus spring storage) " << s.friction_work << ", rel "
-                                                             << rel(s.friction_work, s.energy_loss_exact));
+                                                              << rel(s.friction_work, s.energy_loss_exact));
   CHECK(rel(s.friction_work, s.energy_loss_exact) < 0.005);
   CHECK(rel(s.penetration, s.penetration_exact) < 0.02);
   // sliding all the way to t_roll (no early sticking), rolling after it
@@ -72,7 +72,8 @@ TEST_CASE("seed 000 example 4.1, no-rolling variant: the disc never rolls") {
   // r = 0 in the gap and moment: the spin is not braked, the centre is decelerated by
   // kinetic friction against its own velocity: v = V0 - mu g t until it sticks (t = 0.96 s)
   const double v05 = h.velocity[500][0].x();
-  MESSAGE("no rolling: v(0.5) " << v05 << " vs " << p.V0 - p.mu * p.g * 0.5 << ", w(1) " << h.angular_velocity[1000][0].z());
+  MESSAGE("no rolling: v(0.5) " << v05 << " vs " << p.V0 - p.mu * p.g * 0.5 << ", w(1) "
+                                << h.angular_velocity[1000][0].z());
   CHECK(rel(v05, p.V0 - p.mu * p.g * 0.5) < 0.003);
   CHECK(rel(h.angular_velocity[1000][0].z(), -p.omega0) < 1e-9);
 }
@@ -95,7 +96,11 @@ TEST_CASE("cylinder on an incline: rolls for mu = 1.1 tan(theta)/3, slips for 0.
       if (h.time[k] > p.t_ramp && !c.slip) ++n_stick_after_ramp;
       if (h.time[k] < 0.7) continue;
       const double t = h.time[k], v = h.velocity[k][0].x();
-      st += t; sv += v; stt += t * t; stv += t * v; n += 1;
+      st += t;
+      sv += v;
+      stt += t * t;
+      stv += t * v;
+      n += 1;
     }
     const double acc = (n * stv - st * sv) / (n * stt - st * st);
     const double g = p.g, th = p.theta;

@@ -40,10 +40,11 @@ TEST_CASE("seed 000 example 4.4 without friction: beam hits the wall, energy bal
       }
   }
   const Energies& last = h.energy.back();
-  std::printf("flying beam mu = 0, dt = 1e-3, 2.5 s: wall hit at t = %.3f (max wall force %.1f N); max |balance error| "
-              "%.3e J of max kinetic %.4e J (%.2e); final T %.1f U %.1f, W_ext %.1f; max |z - r| %.3e; steps %d, its %d\n",
-              t_wall, fwall, err, kmax, err / kmax, last.kinetic, last.strain, last.external_work, zdev, h.steps,
-              h.newton_iterations);
+  std::printf(
+      "flying beam mu = 0, dt = 1e-3, 2.5 s: wall hit at t = %.3f (max wall force %.1f N); max |balance error| "
+      "%.3e J of max kinetic %.4e J (%.2e); final T %.1f U %.1f, W_ext %.1f; max |z - r| %.3e; steps %d, its %d\n",
+      t_wall, fwall, err, kmax, err / kmax, last.kinetic, last.strain, last.external_work, zdev, h.steps,
+      h.newton_iterations);
   CHECK(t_wall > 1.0);
   CHECK(fwall > 0.0);
   CHECK(err <= 1e-4 * kmax);

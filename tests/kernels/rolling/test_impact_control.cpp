@@ -44,9 +44,10 @@ TEST_CASE("puck on an oblique path hits all four walls; step limit and penetrati
   CHECK(i1.size() == i0.size());
   double worst1 = 0.0;
   for (const Impact& im : i1) worst1 = std::max(worst1, std::abs(im.energy_after / im.energy_before - 1.0));
-  std::printf("step limit T_c/200 = %.3e: substeps %d (output steps %d), limited %d; max |dE|/E per impact %.3e "
-              "(no limit: %.3e, %zu impacts)\n",
-              Tc / 200.0, h1.substeps, h1.steps, h1.limited_steps, worst1, worst0, i1.size());
+  std::printf(
+      "step limit T_c/200 = %.3e: substeps %d (output steps %d), limited %d; max |dE|/E per impact %.3e "
+      "(no limit: %.3e, %zu impacts)\n",
+      Tc / 200.0, h1.substeps, h1.steps, h1.limited_steps, worst1, worst0, i1.size());
   CHECK(h1.limited_steps > 0);
   CHECK(h1.substeps > h1.steps);
   CHECK(worst1 < 0.25 * worst0);
@@ -75,8 +76,8 @@ TEST_CASE("puck on an oblique path hits all four walls; step limit and penetrati
     CHECK(e.friction_work == 0.0);
     CHECK(e.external_work == 0.0);
   }
-  std::printf("penetration cut 2e-4: %d cuts, %d sub-steps, deepest new contact %.3e m (no control: %.3e)\n",
-              pen_cuts, substeps, worst_new, h0.new_penetration);
+  std::printf("penetration cut 2e-4: %d cuts, %d sub-steps, deepest new contact %.3e m (no control: %.3e)\n", pen_cuts,
+              substeps, worst_new, h0.new_penetration);
   CHECK(pen_cuts > 0);
   CHECK(worst_new <= 2e-4);
 }

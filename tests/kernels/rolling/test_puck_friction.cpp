@@ -56,11 +56,12 @@ TEST_CASE("puck with friction: energy never increases, impulse exchange of spin 
       const double vt = a.v_before.z(), w = a.w_before.y();
       const double v_stick = vt - (vt - r * w) / (1.0 + m * r * r / I);
       const double slip_after = a.v_after.z() - r * a.w_after.y();
-      std::printf("puck mu=0.4 %s dt=%g (%d sub-steps): max energy rise per step %.3e J (E0 %.1f J), lost %.3f J; dw/dv = %.9f "
-                  "(m r/I = %.9f, rel %.2e); v_t after %.5f vs stick %.5f (%.2f %%), contact-point speed after %.2e\n",
-                  integ == Integrator::Newmark ? "Newmark" : "energy-consistent", dt, h.substeps, rise, E0, a.energy_before - a.energy_after,
-                  ratio, ratio_exact, std::abs(ratio / ratio_exact - 1.0), a.v_after.z(), v_stick,
-                  100.0 * (a.v_after.z() / v_stick - 1.0), slip_after);
+      std::printf(
+          "puck mu=0.4 %s dt=%g (%d sub-steps): max energy rise per step %.3e J (E0 %.1f J), lost %.3f J; dw/dv = %.9f "
+          "(m r/I = %.9f, rel %.2e); v_t after %.5f vs stick %.5f (%.2f %%), contact-point speed after %.2e\n",
+          integ == Integrator::Newmark ? "Newmark" : "energy-consistent", dt, h.substeps, rise, E0,
+          a.energy_before - a.energy_after, ratio, ratio_exact, std::abs(ratio / ratio_exact - 1.0), a.v_after.z(),
+          v_stick, 100.0 * (a.v_after.z() / v_stick - 1.0), slip_after);
       // Newmark's trapezoidal penalty kink can add energy within an impact (measured and
       // printed); the per-step statement is asserted for the energy-consistent integrator,
       // the net loss over the impact for both
@@ -96,9 +97,10 @@ TEST_CASE("seed 000 example 4.3 loads: straight path without friction, spin trad
     const Vector3d vend = h.velocity.back()[0], wend = h.angular_velocity.back()[0];
     double xmax = 0.0;
     for (const auto& pos : h.position) xmax = std::max(xmax, std::abs(pos[0].x()));
-    std::printf("ex. 4.3 seed loads mu = %.1f: after the pulse v_z %.4f, w_y %.4f; at 1.5 s v = (%.4f, %.4f), w_y %.4f, "
-                "max |x| %.4f, T %.2f of %.2f J\n",
-                mu, v1.z(), w1.y(), vend.x(), vend.z(), wend.y(), xmax, h.energy.back().kinetic, h.energy[k01].kinetic);
+    std::printf(
+        "ex. 4.3 seed loads mu = %.1f: after the pulse v_z %.4f, w_y %.4f; at 1.5 s v = (%.4f, %.4f), w_y %.4f, "
+        "max |x| %.4f, T %.2f of %.2f J\n",
+        mu, v1.z(), w1.y(), vend.x(), vend.z(), wend.y(), xmax, h.energy.back().kinetic, h.energy[k01].kinetic);
     CHECK(std::abs(v1.z() - 1.5) < 1e-9);
     CHECK(std::abs(w1.y() - 24.0) < 1e-9);
     if (mu == 0.0) {  // seed Fig. 20a: straight line between two walls, spin untouched

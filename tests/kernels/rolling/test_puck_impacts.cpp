@@ -56,9 +56,10 @@ TEST_CASE("frictionless puck between walls: energy per impact, Newmark and energ
       bal = std::max(bal, std::abs(e.balance_error()) / E0);
     }
     const double after10 = std::abs(ie[9].energy_after / E0 - 1.0);
-    std::printf("puck mu=0 energy-consistent dt=%g: %zu impacts, |E_after10/E0 - 1| = %.3e, max step drift %.3e, "
-                "balance error %.3e\n",
-                dt, ie.size(), after10, drift, bal);
+    std::printf(
+        "puck mu=0 energy-consistent dt=%g: %zu impacts, |E_after10/E0 - 1| = %.3e, max step drift %.3e, "
+        "balance error %.3e\n",
+        dt, ie.size(), after10, drift, bal);
     CHECK(after10 <= 1e-8);
     CHECK(drift <= 1e-8);
     // spin untouched without friction

@@ -88,7 +88,8 @@ TEST_CASE("rolling pipe over a sinusoidal floor: steady acceleration = frequency
     const MatrixXd C = ((Ks[1] - Ks[0]) / (s[1] - s[0]) - 4.0 * M * (s[1] + s[0])) / 2.0;
     const MatrixXd K = Ks[0] - 2.0 * s[0] * C - 4.0 * s[0] * s[0] * M;
     const double w = 2.0 * kPi * f0;
-    Eigen::MatrixXcd D = K.cast<std::complex<double>>() + std::complex<double>(0.0, w) * C.cast<std::complex<double>>() -
+    Eigen::MatrixXcd D = K.cast<std::complex<double>>() +
+                         std::complex<double>(0.0, w) * C.cast<std::complex<double>>() -
                          w * w * M.cast<std::complex<double>>();
     Eigen::VectorXcd F = Eigen::VectorXcd::Zero(n);
     for (std::size_t i = 0; i < p.ids.size(); ++i)
@@ -99,7 +100,8 @@ TEST_CASE("rolling pipe over a sinusoidal floor: steady acceleration = frequency
     // the damper is the exact one (nu . v sees the slope at the node).
     const double dt = 2.5e-5;
     const std::complex<double> sd(0.0, 2.0 / dt * std::tan(0.5 * w * dt));
-    Eigen::MatrixXcd Dd = K.cast<std::complex<double>>() + sd * C.cast<std::complex<double>>() + sd * sd * M.cast<std::complex<double>>();
+    Eigen::MatrixXcd Dd =
+        K.cast<std::complex<double>>() + sd * C.cast<std::complex<double>>() + sd * sd * M.cast<std::complex<double>>();
     const Eigen::VectorXcd Ud = Dd.partialPivLu().solve(F);
     // time domain: 0.3 s at dt = 2.5e-5 (contact period of the lightest node 2.1e-3 s)
     RunOptions ro;
@@ -115,9 +117,10 @@ TEST_CASE("rolling pipe over a sinusoidal floor: steady acceleration = frequency
       const double td = harmonic_amplitude(h.time, az, f0, 0.15);
       const int dof = 6 * ro.record_nodes[static_cast<std::size_t>(j)] + 2;
       const double fd = w * w * std::abs(U(dof)), fdd = std::norm(sd) * std::abs(Ud(dof));
-      std::printf("rolling pipe on a sinusoid, f0 = %6.0f Hz, %s node: acceleration amplitude %.5e (time domain) vs %.5e "
-                  "(discrete frequency domain) %+.2e; continuous frequency domain %.5e (%+.2e)\n",
-                  f0, j == 0 ? "middle" : "end", td, fdd, td / fdd - 1.0, fd, td / fd - 1.0);
+      std::printf(
+          "rolling pipe on a sinusoid, f0 = %6.0f Hz, %s node: acceleration amplitude %.5e (time domain) vs %.5e "
+          "(discrete frequency domain) %+.2e; continuous frequency domain %.5e (%+.2e)\n",
+          f0, j == 0 ? "middle" : "end", td, fdd, td / fdd - 1.0, fd, td / fd - 1.0);
       CHECK(std::abs(td / fdd - 1.0) < 3e-3);
       if (f0 < 1000.0) CHECK(std::abs(td / fd - 1.0) < 3e-3);  // w dt < 0.1: the rule's warp is below 1e-3
     }

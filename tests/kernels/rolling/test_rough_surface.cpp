@@ -36,10 +36,9 @@ HeightField wavy_grid() {
 }
 
 HeightField bump_line(double H, double lambda, double ds) {
-  return line_height_field(make_plane(Vector3d::Zero(), Vector3d::UnitZ()), -0.3, 0.5,
-                           static_cast<int>(std::lround(0.8 / ds)) + 1, [&](double s) {
-                             return (s >= 0.0 && s <= lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * s / lambda)) : 0.0;
-                           });
+  return line_height_field(
+      make_plane(Vector3d::Zero(), Vector3d::UnitZ()), -0.3, 0.5, static_cast<int>(std::lround(0.8 / ds)) + 1,
+      [&](double s) { return (s >= 0.0 && s <= lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * s / lambda)) : 0.0; });
 }
 }  // namespace
 
@@ -107,7 +106,8 @@ TEST_CASE("rough-surface contact: force = -eps_n g grad g, tangent vs central di
       for (int k = 0; k < 3; ++k) {
         Vector3d d = Vector3d::Zero();
         d(k) = h;
-        const SurfaceContactEval p = evaluate_surface_contact(f, law, x + d), m = evaluate_surface_contact(f, law, x - d);
+        const SurfaceContactEval p = evaluate_surface_contact(f, law, x + d),
+                                 m = evaluate_surface_contact(f, law, x - d);
         Kfd.col(k) = -(p.force - m.force) / (2 * h);
         gfd(k) = (p.g_n - m.g_n) / (2 * h);
       }
@@ -163,9 +163,10 @@ TEST_CASE("single-point contact validity: r kappa_max < 1") {
   // the cosine bump of the path test joins the flat with a jump of h'' (0 -> kappa); the
   // Catmull-Rom interpolant overshoots there, and the check reports the interpolant's value
   const ContactValidity kink = check_single_point_contact(bump_line(H, lambda, 0.002), 0.05);
-  std::printf("sinusoid H = %.3f, lambda = %.2f: kappa_max %.4f (analytic %.4f), radius limit %.4f; "
-              "bump with curvature jump: kappa_max %.4f\n",
-              H, lambda, ok.max_concave_curvature, kappa, ok.radius_limit, kink.max_concave_curvature);
+  std::printf(
+      "sinusoid H = %.3f, lambda = %.2f: kappa_max %.4f (analytic %.4f), radius limit %.4f; "
+      "bump with curvature jump: kappa_max %.4f\n",
+      H, lambda, ok.max_concave_curvature, kappa, ok.radius_limit, kink.max_concave_curvature);
   CHECK(ok.valid);
   CHECK_FALSE(bad.valid);
   CHECK(kink.valid);
@@ -197,54 +198,57 @@ TEST_CASE("sphere node moved over a sinusoidal bump follows the offset curve") {
   // with output steps of 1e-3 and the impact step limit T_c/10 = 2e-5 s (R-54): unlimited, the
   // unresolved 2e-4 s penalty oscillation is pumped by the imposed motion and the ball jumps off
   for (int variant = 0; variant < 2; ++variant) {
-  // Rigid ball (m = 1 kg) pressed by F = 10 N, x imposed at 0.4 m/s (dynamic, dt = 1e-4, the
-  // contact period 2 pi sqrt(m/eps_n) = 2e-3 s resolved):
-  // frictionless, so it slides rather than rolls; the centre must follow the offset curve
-  // z(x) = max_s h(s) + sqrt(r^2 - (s - x)^2) of the analytic bump. The centripetal force
-  // m v^2 kappa_path <= 0.7 N < F keeps the contact closed; penetration F/eps_n = 1e-6 m.
-  const double H = 0.01, lambda = 0.2, r = 0.05, F = 10.0, v = 0.4;
-  const double eps_n = variant == 0 ? 1e7 : 1e9;
-  auto bump = [&](double s) { return (s >= 0.0 && s <= lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * s / lambda)) : 0.0; };
-  Model m;
-  const int n = m.add_node(Vector3d(-0.1, 0.0, r - F / eps_n));
-  m.bodies.push_back(RigidBody{n, 1.0, Matrix3d::Identity() * 1e-3});
-  m.v0 = {Vector3d(v, 0, 0)};
-  m.surfaces.push_back(bump_line(H, lambda, 0.002));
-  m.surface_contacts.push_back(SurfaceContactPair{n, 0, SurfaceContactLaw{r, eps_n}});
-  m.imposed.push_back(ImposedDof{n, 0, v, TimeSeries{{0.0, 1.0}, {0.0, 1.0}}});  // x: -0.1 -> 0.3
-  m.loads.push_back(NodalLoad{n, Vector3d(0, 0, -F), Vector3d::Zero(), TimeSeries::constant(1.0)});
-  SolverOptions o;
-  o.force_tol = variant == 0 ? 1e-8 : 1e-6;
-  if (variant == 1) o.impact_step_fraction = 0.1;
-  Solver S(m, o);
-  double worst = 0.0, zmax = 0.0;
-  const int steps = variant == 0 ? 10000 : 1000;
-  int limited = 0, substeps = 0;
-  for (int k = 1; k <= steps; ++k) {
-    const StepReport rep = S.advance(double(k) / steps);
-    REQUIRE(rep.converged);
-    limited += rep.limited_steps;
-    substeps += rep.steps;
-    const Vector3d x = S.nodes()[0].x;
-    double zc = 0.0;
-    for (int i = 0; i <= 2000; ++i) {
-      const double s = x.x() - r + 2.0 * r * i / 2000.0;
-      zc = std::max(zc, bump(s) + std::sqrt(std::max(0.0, r * r - (s - x.x()) * (s - x.x()))));
+    // Rigid ball (m = 1 kg) pressed by F = 10 N, x imposed at 0.4 m/s (dynamic, dt = 1e-4, the
+    // contact period 2 pi sqrt(m/eps_n) = 2e-3 s resolved):
+    // frictionless, so it slides rather than rolls; the centre must follow the offset curve
+    // z(x) = max_s h(s) + sqrt(r^2 - (s - x)^2) of the analytic bump. The centripetal force
+    // m v^2 kappa_path <= 0.7 N < F keeps the contact closed; penetration F/eps_n = 1e-6 m.
+    const double H = 0.01, lambda = 0.2, r = 0.05, F = 10.0, v = 0.4;
+    const double eps_n = variant == 0 ? 1e7 : 1e9;
+    auto bump = [&](double s) {
+      return (s >= 0.0 && s <= lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * s / lambda)) : 0.0;
+    };
+    Model m;
+    const int n = m.add_node(Vector3d(-0.1, 0.0, r - F / eps_n));
+    m.bodies.push_back(RigidBody{n, 1.0, Matrix3d::Identity() * 1e-3});
+    m.v0 = {Vector3d(v, 0, 0)};
+    m.surfaces.push_back(bump_line(H, lambda, 0.002));
+    m.surface_contacts.push_back(SurfaceContactPair{n, 0, SurfaceContactLaw{r, eps_n}});
+    m.imposed.push_back(ImposedDof{n, 0, v, TimeSeries{{0.0, 1.0}, {0.0, 1.0}}});  // x: -0.1 -> 0.3
+    m.loads.push_back(NodalLoad{n, Vector3d(0, 0, -F), Vector3d::Zero(), TimeSeries::constant(1.0)});
+    SolverOptions o;
+    o.force_tol = variant == 0 ? 1e-8 : 1e-6;
+    if (variant == 1) o.impact_step_fraction = 0.1;
+    Solver S(m, o);
+    double worst = 0.0, zmax = 0.0;
+    const int steps = variant == 0 ? 10000 : 1000;
+    int limited = 0, substeps = 0;
+    for (int k = 1; k <= steps; ++k) {
+      const StepReport rep = S.advance(double(k) / steps);
+      REQUIRE(rep.converged);
+      limited += rep.limited_steps;
+      substeps += rep.steps;
+      const Vector3d x = S.nodes()[0].x;
+      double zc = 0.0;
+      for (int i = 0; i <= 2000; ++i) {
+        const double s = x.x() - r + 2.0 * r * i / 2000.0;
+        zc = std::max(zc, bump(s) + std::sqrt(std::max(0.0, r * r - (s - x.x()) * (s - x.x()))));
+      }
+      worst = std::max(worst, std::abs(x.z() - zc));
+      zmax = std::max(zmax, x.z());
+      CHECK(S.surface_contacts()[0].active);
     }
-    worst = std::max(worst, std::abs(x.z() - zc));
-    zmax = std::max(zmax, x.z());
-    CHECK(S.surface_contacts()[0].active);
-  }
-  std::printf("bump path eps_n = %.0e, %d output steps, %d sub-steps: max |z - z_offset| = %.3e m (%.2e of H), "
-              "top of path %.6f (r + H = %.6f)\n",
-              eps_n, steps, substeps, worst, worst / H, zmax, r + H);
-  CHECK(worst <= 1e-3 * H);
-  CHECK(std::abs(zmax - (r + H)) <= 1e-3 * H);
-  if (variant == 1) {  // every output step split into ceil(1e-3 / (0.1 T_c)) = 51 equal sub-steps
-    const double Tc = 2.0 * kPi * std::sqrt(1.0 / eps_n);
-    CHECK(limited == substeps - steps);  // the last sub-step of each output step is not shortened
-    CHECK(substeps == steps * static_cast<int>(std::ceil(1e-3 / (0.1 * Tc))));
-  }
+    std::printf(
+        "bump path eps_n = %.0e, %d output steps, %d sub-steps: max |z - z_offset| = %.3e m (%.2e of H), "
+        "top of path %.6f (r + H = %.6f)\n",
+        eps_n, steps, substeps, worst, worst / H, zmax, r + H);
+    CHECK(worst <= 1e-3 * H);
+    CHECK(std::abs(zmax - (r + H)) <= 1e-3 * H);
+    if (variant == 1) {  // every output step split into ceil(1e-3 / (0.1 T_c)) = 51 equal sub-steps
+      const double Tc = 2.0 * kPi * std::sqrt(1.0 / eps_n);
+      CHECK(limited == substeps - steps);  // the last sub-step of each output step is not shortened
+      CHECK(substeps == steps * static_cast<int>(std::ceil(1e-3 / (0.1 * Tc))));
+    }
   }
 }
 
@@ -299,9 +303,10 @@ TEST_CASE("beam pressed on a rough grid surface: full-model tangent = central di
   // drag the pipe on to t = 0.3 s: Newton converges with the rough contacts, balance R-43 holds
   for (int k = 21; k <= 300; ++k) REQUIRE(S.advance(1e-3 * k).converged);
   const Energies e = S.energies();
-  std::printf("beam on rough grid: %d of 5 nodes in contact, tangent rel. error %.2e; after 0.3 s dragged: "
-              "balance error %.3e J (kinetic %.3f J, imposed work %.3f J)\n",
-              active, err, e.balance_error(), e.kinetic, e.imposed_work);
+  std::printf(
+      "beam on rough grid: %d of 5 nodes in contact, tangent rel. error %.2e; after 0.3 s dragged: "
+      "balance error %.3e J (kinetic %.3f J, imposed work %.3f J)\n",
+      active, err, e.balance_error(), e.kinetic, e.imposed_work);
   CHECK(err < 1e-6);
   CHECK(std::abs(e.balance_error()) < 1e-2 * (e.kinetic + std::abs(e.imposed_work) + std::abs(e.external_work)));
 }
@@ -316,7 +321,8 @@ Model disc_on_field(const DiscParams& p, double bump_height, double lambda) {
     return (s >= 1.0 && s <= 1.0 + lambda) ? 0.5 * bump_height * (1.0 - std::cos(2.0 * kPi * (s - 1.0) / lambda)) : 0.0;
   }));
   const ContactLaw& c = m.contacts[0].law;
-  m.surface_contacts.push_back(SurfaceContactPair{m.contacts[0].node, 0, SurfaceContactLaw{c.radius, c.eps_n, c.mu, c.eps_t, c.rolling}});
+  m.surface_contacts.push_back(
+      SurfaceContactPair{m.contacts[0].node, 0, SurfaceContactLaw{c.radius, c.eps_n, c.mu, c.eps_t, c.rolling}});
   m.contacts.clear();
   m.planes.clear();
   return m;
@@ -344,8 +350,9 @@ TEST_CASE("rolling friction on a height field (R-63): a flat field reproduces th
     dslip += hp.contact[k][0].slip != hs.surface_contact[k][0].slip;
   }
   const double ediff = std::abs(hp.energy.back().friction_dissipation - hs.energy.back().friction_dissipation);
-  std::printf("flat field vs plane, disc 2 s: max |dx| %.2e m, |dv| %.2e m/s, |dw| %.2e rad/s, dissipation %.3e vs %.3e J\n",
-              dx, dv, dw, hp.energy.back().friction_dissipation, hs.energy.back().friction_dissipation);
+  std::printf(
+      "flat field vs plane, disc 2 s: max |dx| %.2e m, |dv| %.2e m/s, |dw| %.2e rad/s, dissipation %.3e vs %.3e J\n",
+      dx, dv, dw, hp.energy.back().friction_dissipation, hs.energy.back().friction_dissipation);
   CHECK(dx < 1e-9);
   CHECK(dv < 1e-8);
   CHECK(dw < 1e-7);
@@ -374,7 +381,9 @@ TEST_CASE("rolling friction on a height field (R-63): a disc rolls over a bump w
   o.max_line_search = 8;
   const History h = run(m, o, ro);
   REQUIRE(h.completed);
-  auto bump = [&](double s) { return (s >= 1.0 && s <= 1.0 + lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * (s - 1.0) / lambda)) : 0.0; };
+  auto bump = [&](double s) {
+    return (s >= 1.0 && s <= 1.0 + lambda) ? 0.5 * H * (1.0 - std::cos(2.0 * kPi * (s - 1.0) / lambda)) : 0.0;
+  };
   double worst_path = 0.0, worst_roll = 0.0, top = 0.0;
   int slips = 0;
   for (std::size_t k = 1; k < h.time.size(); ++k) {
@@ -386,16 +395,18 @@ TEST_CASE("rolling friction on a height field (R-63): a disc rolls over a bump w
     }
     const double pen = -h.surface_contact[k][0].g_n;
     worst_path = std::max(worst_path, std::abs(x.y() - (zc - pen)));
-    worst_roll = std::max(worst_roll, std::abs(p.radius * h.angular_velocity[k][0].norm() / h.velocity[k][0].norm() - 1.0));
+    worst_roll =
+        std::max(worst_roll, std::abs(p.radius * h.angular_velocity[k][0].norm() / h.velocity[k][0].norm() - 1.0));
     top = std::max(top, x.y());
     slips += h.surface_contact[k][0].slip;
     CHECK(h.surface_contact[k][0].active);
   }
   const Energies& E = h.energy.back();
-  std::printf("disc over bump with friction: centre vs offset curve %.2e m (%.2e of H), max |r w/v - 1| %.2e, slip steps %d, "
-              "friction dissipation %.2e J of kinetic %.1f J, balance error %.2e J, top %.6f (r + H = %.6f)\n",
-              worst_path, worst_path / H, worst_roll, slips, E.friction_dissipation, E.kinetic, E.balance_error(), top,
-              p.radius + H);
+  std::printf(
+      "disc over bump with friction: centre vs offset curve %.2e m (%.2e of H), max |r w/v - 1| %.2e, slip steps %d, "
+      "friction dissipation %.2e J of kinetic %.1f J, balance error %.2e J, top %.6f (r + H = %.6f)\n",
+      worst_path, worst_path / H, worst_roll, slips, E.friction_dissipation, E.kinetic, E.balance_error(), top,
+      p.radius + H);
   CHECK(top > p.radius + 0.99 * H);  // the disc went over the bump
   CHECK(worst_path <= 1e-3 * H);
   CHECK(worst_roll < 2e-3);
@@ -430,16 +441,20 @@ TEST_CASE("normal contact damper on a rough surface (R-64): logarithmic decremen
   REQUIRE(h.completed);
   std::vector<double> peaks;  // minima of the gap (deepest penetration) per period
   for (std::size_t i = 1; i + 1 < h.time.size(); ++i) {
-    const double a = h.surface_contact[i - 1][0].g_n, b = h.surface_contact[i][0].g_n, d = h.surface_contact[i + 1][0].g_n;
+    const double a = h.surface_contact[i - 1][0].g_n, b = h.surface_contact[i][0].g_n,
+                 d = h.surface_contact[i + 1][0].g_n;
     if (b < a && b <= d) peaks.push_back(-(b + m * g / k));
   }
   REQUIRE(peaks.size() >= 4);
   const double expected = std::exp(-2.0 * kPi * zeta / std::sqrt(1.0 - zeta * zeta));
   double worst = 0.0;
-  for (std::size_t i = 1; i < peaks.size(); ++i) worst = std::max(worst, std::abs(peaks[i] / peaks[i - 1] / expected - 1.0));
+  for (std::size_t i = 1; i < peaks.size(); ++i)
+    worst = std::max(worst, std::abs(peaks[i] / peaks[i - 1] / expected - 1.0));
   const Energies& E = h.energy.back();
-  std::printf("contact damper zeta = %.2f: %zu peaks, worst peak ratio error %.2e (expected ratio %.4f); damper work %.3e J, "
-              "balance error %.2e J\n", zeta, peaks.size(), worst, expected, E.damping_work, E.balance_error());
+  std::printf(
+      "contact damper zeta = %.2f: %zu peaks, worst peak ratio error %.2e (expected ratio %.4f); damper work %.3e J, "
+      "balance error %.2e J\n",
+      zeta, peaks.size(), worst, expected, E.damping_work, E.balance_error());
   CHECK(worst < 5e-3);
   CHECK(E.damping_work > 0.9 * 0.5 * m * 1e-8);  // most of the kick's 5e-9 J is gone
   CHECK(std::abs(E.balance_error()) < 1e-3 * 0.5 * m * 1e-8);

@@ -81,7 +81,8 @@ TEST_CASE("tabulated path: one scratch for many realisations; aligned and unalig
   }
   SynthesisScratch wrong(n + 2);
   std::vector<double> up(s.harmonics(), 0.5), ua(s.harmonics(), 0.5), x(n);
-  CHECK_THROWS_AS(s.synthesise(h.data(), Amplitudes::rayleigh, up.data(), ua.data(), x.data(), wrong), std::invalid_argument);
+  CHECK_THROWS_AS(s.synthesise(h.data(), Amplitudes::rayleigh, up.data(), ua.data(), x.data(), wrong),
+                  std::invalid_argument);
 }
 
 namespace {

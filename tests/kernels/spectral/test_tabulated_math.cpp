@@ -68,7 +68,8 @@ TEST_CASE("D-24: -ln u from the table is within 2 ulp of long-double libm on (0,
   for (double u : arguments()) {
     const long double exact = -std::log(static_cast<long double>(u));
     const double got = neg_log_open(u, t);
-    worst = std::max(worst, static_cast<double>(std::fabs(static_cast<long double>(got) - exact)) / ulp_of(double(exact)));
+    worst =
+        std::max(worst, static_cast<double>(std::fabs(static_cast<long double>(got) - exact)) / ulp_of(double(exact)));
   }
   MESSAGE("worst -ln u error: " << worst << " ulp");
   CHECK(worst <= 2.0);

@@ -14,10 +14,13 @@ TEST_CASE("band centres and edges follow IEC 61260-1 base-ten (G = 10^(3/10))") 
   CHECK(b0.lower == doctest::Approx(1000.0 * std::pow(10.0, -0.05)).epsilon(1e-15));
   CHECK(b0.upper == doctest::Approx(1000.0 * std::pow(10.0, 0.05)).epsilon(1e-15));
   // Exact midband frequencies from IEC 61260-1 Table E.1 (base ten), to the digits it prints.
-  const struct { int x; double exact; double nominal; } table[] = {
-      {-20, 10.0, 10.0},       {-10, 100.0, 100.0},    {-9, 125.89, 125.0},  {-1, 794.33, 800.0},
-      {1, 1258.9, 1250.0},     {5, 3162.3, 3150.0},    {7, 5011.9, 5000.0},  {8, 6309.6, 6300.0},
-      {13, 19953.0, 20000.0},  {-17, 19.953, 20.0},
+  const struct {
+    int x;
+    double exact;
+    double nominal;
+  } table[] = {
+      {-20, 10.0, 10.0},   {-10, 100.0, 100.0}, {-9, 125.89, 125.0}, {-1, 794.33, 800.0},    {1, 1258.9, 1250.0},
+      {5, 3162.3, 3150.0}, {7, 5011.9, 5000.0}, {8, 6309.6, 6300.0}, {13, 19953.0, 20000.0}, {-17, 19.953, 20.0},
   };
   for (const auto& t : table) {
     const Band b = third_octave_band(t.x);
@@ -43,7 +46,8 @@ TEST_CASE("band averages of a flat PSD are the PSD, of a linear PSD the midpoint
   const Band b = third_octave_band(-10);  // 100 Hz
   CHECK(band_average(flat.data(), flat.size(), df, b.lower, b.upper) == doctest::Approx(3.0).epsilon(1e-14));
   // Bins are densities over [f_k - df/2, f_k + df/2]: with edges on bin boundaries the average is exact.
-  CHECK(band_average(linear.data(), linear.size(), df, 99.75, 120.25) == doctest::Approx(99.75 + 120.25).epsilon(1e-13));
+  CHECK(band_average(linear.data(), linear.size(), df, 99.75, 120.25) ==
+        doctest::Approx(99.75 + 120.25).epsilon(1e-13));
   std::vector<double> f(linear.size());
   for (std::size_t k = 0; k < f.size(); ++k) f[k] = df * static_cast<double>(k);
   CHECK(band_average_irregular(f.data(), linear.data(), f.size(), b.lower, b.upper) ==

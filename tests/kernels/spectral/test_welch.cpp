@@ -80,11 +80,13 @@ TEST_CASE("equivalent degrees of freedom: 2 per segment without overlap, Welch's
   CHECK(WelchPlan(cfg).equivalent_dof(256 * 10) == doctest::Approx(20.0));
   cfg.window = Window::hann;
   cfg.overlap = 128;
-  // Percival & Walden: Hann 50 % overlap has rho(1)^2 = 1/36 * ... ~0.0278; nu -> 2 N_B / (1 + 2 * 0.0278) for large N_B.
+  // Percival & Walden: Hann 50 % overlap has rho(1)^2 = 1/36 * ... ~0.0278; nu -> 2 N_B / (1 + 2 * 0.0278) for large
+  // N_B.
   const WelchPlan plan(cfg);
   const std::size_t nb = 1000;
   const double nu = plan.equivalent_dof(128 * (nb + 1));
-  CHECK(nu / (2.0 * static_cast<double>(nb)) == doctest::Approx(1.0 / (1.0 + 2.0 * (1.0 / 36.0) * (1.0 - 1.0 / 1000.0))).epsilon(1e-9));
+  CHECK(nu / (2.0 * static_cast<double>(nb)) ==
+        doctest::Approx(1.0 / (1.0 + 2.0 * (1.0 / 36.0) * (1.0 - 1.0 / 1000.0))).epsilon(1e-9));
 }
 
 TEST_CASE("Welch refuses a signal shorter than one segment and a bad configuration") {

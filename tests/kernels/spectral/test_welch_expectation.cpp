@@ -61,7 +61,7 @@ TEST_CASE("Welch estimates of a lightly damped oscillator converge to the expect
   for (std::size_t j = 0; j < nfine; ++j) {
     const double W = 2 * M_PI * (fs / 2.0) * static_cast<double>(j) / static_cast<double>(nfine - 1);
     const double w = 2 * M_PI * fn;
-    const double s = W / (fs / 2.0 * 2 * M_PI) * M_PI;  // pi f / fs
+    const double s = W / (fs / 2.0 * 2 * M_PI) * M_PI;                // pi f / fs
     const double hold = j == 0 ? 1.0 : std::pow(std::sin(s) / s, 2);  // first-order hold of the sampled force
     exact[j] = hold * sf / (std::pow(w * w - W * W, 2) + std::pow(2 * zeta * w * W, 2));
   }
@@ -135,7 +135,8 @@ TEST_CASE("Welch time weights sum to 1 and taper at the ends; block dof reduces 
   std::vector<std::complex<double>> wave(blocks * bins);
   for (std::size_t p = 0; p < blocks; ++p)
     for (std::size_t k = 0; k < bins; ++k)
-      wave[p * bins + k] = std::pow(std::sin(M_PI * 3.0 * static_cast<double>(edges[p] + edges[p + 1]) / 2.0 / static_cast<double>(n)), 2);
+      wave[p * bins + k] = std::pow(
+          std::sin(M_PI * 3.0 * static_cast<double>(edges[p] + edges[p + 1]) / 2.0 / static_cast<double>(n)), 2);
   const auto dw = welch_block_dof(plan, n, edges, 1, bins, wave);
   CHECK(dw[0] / plan.equivalent_dof(n) == doctest::Approx(2.0 / 3.0).epsilon(0.03));
 }

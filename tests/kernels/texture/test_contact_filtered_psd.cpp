@@ -69,7 +69,8 @@ TEST_CASE("uniform corrugation: the 2D weight at (k, 0) is the 1D patch filter B
   double worst = 0.0;
   for (double ka : {0.1, 0.5, 1.0, 2.0, M_PI, 5.0, 10.0, 20.0}) {
     const double k = ka / a, interp = std::pow(std::sin(0.5 * k * dx) / (0.5 * k * dx), 2);
-    worst = std::max(worst, std::abs(rollspec::beam::contact_patch_transfer(k, a, dx) / interp - flat_punch_transfer(ka)));
+    worst =
+        std::max(worst, std::abs(rollspec::beam::contact_patch_transfer(k, a, dx) / interp - flat_punch_transfer(ka)));
   }
   MESSAGE("B35a / sinc^2(k dx/2) vs sin(ka)/(ka) at dx = a/2000: max abs difference " << worst);
   CHECK(worst <= 1e-3);
@@ -90,7 +91,8 @@ TEST_CASE("a -> 0: Eq. 38 is the forward projection Eq. 18 and returns the line 
   CHECK(worst_forward <= 1e-4);
   CHECK(worst_line <= 1e-3);  // the Abel pair's own accuracy at 200 points per decade (test_isotropic_psd)
   // A contact much smaller than the shortest wavelength changes nothing either.
-  CHECK(contact_filtered_line_psd(c, 1e-9, 3e4) == doctest::Approx(contact_filtered_line_psd(c, 0.0, 3e4)).epsilon(1e-6));
+  CHECK(contact_filtered_line_psd(c, 1e-9, 3e4) ==
+        doctest::Approx(contact_filtered_line_psd(c, 0.0, 3e4)).epsilon(1e-6));
 }
 
 TEST_CASE("closed forms of Eq. 38 for a white isotropic spectrum") {
@@ -125,7 +127,8 @@ TEST_CASE("Eq. 39 (Gauss panels) against the plain trapezoid reference of Eq. 38
   double worst = 0.0;
   for (double a : {2e-5, 1e-4, 7e-4}) {
     for (double k : {50.0, 500.0, 2e3, 5e3, 2e4, 6e4, 9.9e4}) {
-      const double fast = contact_filtered_line_psd(c, a, k), ref = contact_filtered_line_psd_reference(c, a, k, 1000000);
+      const double fast = contact_filtered_line_psd(c, a, k),
+                   ref = contact_filtered_line_psd_reference(c, a, k, 1000000);
       worst = std::max(worst, std::abs(fast / ref - 1.0));
       CHECK(fast <= model(k) * (1.0 + 1e-3));  // W <= 1: the filter only removes power
     }
@@ -144,8 +147,10 @@ TEST_CASE("the tabulated G_eq the engine synthesises from") {
   const IsotropicPsd iso(g, 2.5, 1e9, 100);
   const IsotropicSpectrum c = isotropic_spectrum(iso, g.breakpoints);
   double worst = 0.0;
-  for (double k = 7.3; k < 3.2e5; k *= 1.0371) worst = std::max(worst, std::abs(geq(k) / contact_filtered_line_psd(c, a, k) - 1.0));
-  MESSAGE("log-log table of G_eq (200 per decade, steps <= pi/64a) vs Eq. 39 between nodes, k < 3.2e5 rad/m: " << worst);
+  for (double k = 7.3; k < 3.2e5; k *= 1.0371)
+    worst = std::max(worst, std::abs(geq(k) / contact_filtered_line_psd(c, a, k) - 1.0));
+  MESSAGE(
+      "log-log table of G_eq (200 per decade, steps <= pi/64a) vs Eq. 39 between nodes, k < 3.2e5 rad/m: " << worst);
   CHECK(worst <= 2e-3);
   // ka << 1: the contact sees the line PSD; ka >> 1: far less (2D averaging).
   CHECK(geq(100.0) == doctest::Approx(model(100.0)).epsilon(2e-3));

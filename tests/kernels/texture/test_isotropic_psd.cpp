@@ -18,8 +18,8 @@ TEST_CASE("inverse Abel of a pure power law matches the closed form") {
   const IsotropicPsd iso(g, 1.0, 1e7, 100);  // truncated at 1e7: (r / 1e7)^{a+1} is negligible below 1e4
   double worst = 0.0;
   for (double r : {2.0, 10.0, 55.0, 300.0, 1e3, 4e3}) {
-    const double exact = 2.0 * M_PI * a * A * std::pow(r, -a - 1.0) * 0.5 * std::sqrt(M_PI) * std::tgamma(0.5 * (a + 1.0)) /
-                         std::tgamma(0.5 * a + 1.0);
+    const double exact = 2.0 * M_PI * a * A * std::pow(r, -a - 1.0) * 0.5 * std::sqrt(M_PI) *
+                         std::tgamma(0.5 * (a + 1.0)) / std::tgamma(0.5 * a + 1.0);
     worst = std::max(worst, std::abs(iso(r) / exact - 1.0));
   }
   MESSAGE("power law: max relative error of Eq. 19 = " << worst);

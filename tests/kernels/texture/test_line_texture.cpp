@@ -53,7 +53,8 @@ TEST_CASE("the FFT line texture equals the plain cosine sum (reference oracle)")
   std::mt19937_64 rng(5);
   const auto up = uniforms(rng, gen.harmonics()), ua = uniforms(rng, gen.harmonics());
   const auto fast = gen.generate(up, ua);
-  const auto slow = rollspec::spectral::synthesise_direct(gen.target_psd(), gen.fundamental(), Amplitudes::rayleigh, up, ua, n);
+  const auto slow =
+      rollspec::spectral::synthesise_direct(gen.target_psd(), gen.fundamental(), Amplitudes::rayleigh, up, ua, n);
   double worst = 0.0, scale = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     worst = std::max(worst, std::abs(fast[i] - slow[i]));
@@ -74,7 +75,8 @@ TEST_CASE("deterministic amplitudes: rms height within 0.1 % of sqrt(integral of
   CHECK(std::abs(st.rms / target - 1.0) <= 1e-3);
 }
 
-TEST_CASE("Rayleigh amplitudes: the mean periodogram of 200 realisations is within 0.5 dB in every band of >= 10 harmonics") {
+TEST_CASE(
+    "Rayleigh amplitudes: the mean periodogram of 200 realisations is within 0.5 dB in every band of >= 10 harmonics") {
   const Psd psd = test_psd(kN).to_psd();
   const LineTextureGenerator gen(psd, LineTextureSpec{kN, kDx, 0, Amplitudes::rayleigh, false});
   std::mt19937_64 rng(2024);
@@ -111,14 +113,17 @@ TEST_CASE("any length: a texture shorter than its period is the period's first s
 
 TEST_CASE("sampling check: dx > pi / k_max is refused unless truncation is allowed") {
   const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 100.0, 1e5, RmsTarget::height, 1e-6});
-  CHECK_THROWS_WITH_AS(LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, false}),
-                       doctest::Contains("refine dx"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(
+      LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, false}),
+      doctest::Contains("refine dx"), std::invalid_argument);
   CHECK_NOTHROW(LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, true}));
-  CHECK_NOTHROW(LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, M_PI / 1e5, 0, Amplitudes::rayleigh, false}));
+  CHECK_NOTHROW(
+      LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, M_PI / 1e5, 0, Amplitudes::rayleigh, false}));
   // A table without extension that does not reach down to the fundamental is an error, named.
   const TabulatedPsd t({100.0, 1e4}, {1e-12, 1e-16});
-  CHECK_THROWS_WITH_AS(LineTextureGenerator(t.to_psd(), LineTextureSpec{1024, M_PI / 1e4, 0, Amplitudes::rayleigh, false}),
-                       doctest::Contains("no extension"), std::domain_error);
+  CHECK_THROWS_WITH_AS(
+      LineTextureGenerator(t.to_psd(), LineTextureSpec{1024, M_PI / 1e4, 0, Amplitudes::rayleigh, false}),
+      doctest::Contains("no extension"), std::domain_error);
 }
 
 TEST_CASE("time view at speed v (D-2): dt = dx / v and G_t(f) integrates to the same variance") {

@@ -39,8 +39,10 @@ TEST_CASE("profile PSD recovers the PSD the profiles were drawn from, within 1 d
   for (int line = 0; line < 3; ++line) {
     const auto h = gen.generate(uniforms(rng, gen.harmonics()), uniforms(rng, gen.harmonics()));
     for (std::size_t p = 0; p < per_line; ++p) {
-      std::vector<double> z(h.begin() + static_cast<std::ptrdiff_t>(p * n_prof), h.begin() + static_cast<std::ptrdiff_t>((p + 1) * n_prof));
-      for (std::size_t i = 0; i < z.size(); ++i) z[i] += 3e-6 + 1e-4 * static_cast<double>(i) * dx;  // offset + tilt, removed by Eq. 15
+      std::vector<double> z(h.begin() + static_cast<std::ptrdiff_t>(p * n_prof),
+                            h.begin() + static_cast<std::ptrdiff_t>((p + 1) * n_prof));
+      for (std::size_t i = 0; i < z.size(); ++i)
+        z[i] += 3e-6 + 1e-4 * static_cast<double>(i) * dx;  // offset + tilt, removed by Eq. 15
       profiles.push_back(make_profile(z, dx, 0.1 * static_cast<double>(p)));
     }
   }
@@ -114,12 +116,14 @@ TEST_CASE("map PSD: rows of a 2D map are the profiles after the quadratic fit") 
   Surface bowl(64, 16, dx, dx);
   for (std::size_t iy = 0; iy < bowl.ny; ++iy)
     for (std::size_t ix = 0; ix < bowl.nx; ++ix)
-      bowl.at(ix, iy) = 1e-6 * (1.0 + 0.3 * static_cast<double>(ix * ix) - 0.2 * static_cast<double>(ix * iy) + 0.1 * static_cast<double>(iy * iy));
+      bowl.at(ix, iy) = 1e-6 * (1.0 + 0.3 * static_cast<double>(ix * ix) - 0.2 * static_cast<double>(ix * iy) +
+                                0.1 * static_cast<double>(iy * iy));
   // Round-off only: the estimate's variance is far below the bowl's own (double precision, 1e-16
   // in height, is 1e-32 in variance).
   double bowl_mean = 0.0, bowl_variance = 0.0, leftover = 0.0;
   for (double h : bowl.heights) bowl_mean += h / static_cast<double>(bowl.heights.size());
-  for (double h : bowl.heights) bowl_variance += (h - bowl_mean) * (h - bowl_mean) / static_cast<double>(bowl.heights.size());
+  for (double h : bowl.heights)
+    bowl_variance += (h - bowl_mean) * (h - bowl_mean) / static_cast<double>(bowl.heights.size());
   const EstimatedPsd flat = map_psd(bowl);
   for (double g : flat.psd) leftover += g * flat.dk;
   MESSAGE("quadratic map: estimate variance / map variance = " << leftover / bowl_variance);
@@ -132,19 +136,20 @@ TEST_CASE("map PSD: rows of a 2D map are the profiles after the quadratic fit") 
 TEST_CASE("profile PSD refuses bad input with clear messages") {
   const double dx = 1e-5;
   const std::vector<double> z8(8, 0.0), z7(7, 0.0), z16(16, 0.0);
-  CHECK_THROWS_WITH_AS(profile_psd({make_profile(z16, dx)}), doctest::Contains("at least 2 profiles, got 1"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(profile_psd({make_profile(z16, dx)}), doctest::Contains("at least 2 profiles, got 1"),
+                       std::invalid_argument);
   CHECK_THROWS_WITH_AS(profile_psd({make_profile(z8, dx), make_profile(z7, dx)}),
                        doctest::Contains("profile 1 has 7 samples; at least 8"), std::invalid_argument);
   Profile bent = make_profile(z16, dx);
   bent.x[5] += 0.3 * dx;
-  CHECK_THROWS_WITH_AS(profile_psd({make_profile(z16, dx), bent}), doctest::Contains("profile 1: non-uniform spacing at sample 5"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(profile_psd({make_profile(z16, dx), bent}),
+                       doctest::Contains("profile 1: non-uniform spacing at sample 5"), std::invalid_argument);
   Profile bad = make_profile(z16, dx);
   bad.z[3] = std::numeric_limits<double>::quiet_NaN();
-  CHECK_THROWS_WITH_AS(profile_psd({bad, make_profile(z16, dx)}), doctest::Contains("profile 0: sample 3 is not finite"),
-                       std::invalid_argument);
-  CHECK_THROWS_WITH_AS(profile_psd({make_profile(z16, dx), make_profile(z8, dx)}), doctest::Contains("periodograms are averaged on one grid"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(profile_psd({bad, make_profile(z16, dx)}),
+                       doctest::Contains("profile 0: sample 3 is not finite"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(profile_psd({make_profile(z16, dx), make_profile(z8, dx)}),
+                       doctest::Contains("periodograms are averaged on one grid"), std::invalid_argument);
   Surface thin(16, 1, dx, dx);
   CHECK_THROWS_WITH_AS(map_psd(thin), doctest::Contains("at least 2 rows"), std::invalid_argument);
 }
@@ -184,7 +189,8 @@ TEST_CASE("map PSD of tilted, bowed spectral surfaces recovers the line PSD with
   // profiles along x. Resolved range as for 1D profiles: 8 row fundamentals up to 1/(2 dx).
   const double d = 1e-6;
   const SelfAffinePsd truth(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (40.0 * d), M_PI / d, RmsTarget::height, 0.2e-6});
-  const SpectralSurfaceGenerator gen(truth.to_psd(), SpectralSurfaceSpec{512, 64, d, d, Amplitudes::rayleigh, 1.0, false, 100});
+  const SpectralSurfaceGenerator gen(truth.to_psd(),
+                                     SpectralSurfaceSpec{512, 64, d, d, Amplitudes::rayleigh, 1.0, false, 100});
   std::mt19937_64 rng(10);
   std::vector<double> mean;
   EstimatedPsd est;
@@ -210,6 +216,6 @@ TEST_CASE("map PSD of tilted, bowed spectral surfaces recovers the line PSD with
     worst = std::max(worst, std::abs(b.delta_db));
     CHECK(std::abs(b.delta_db) <= 1.0);
   }
-  MESSAGE("map PSD: 640 rows; " << bands.size() << " bands " << bands.front().centre_n << " .. " << bands.back().centre_n
-                                << " cycles/m; worst |dL| = " << worst << " dB");
+  MESSAGE("map PSD: 640 rows; " << bands.size() << " bands " << bands.front().centre_n << " .. "
+                                << bands.back().centre_n << " cycles/m; worst |dL| = " << worst << " dB");
 }

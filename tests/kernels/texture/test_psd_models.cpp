@@ -29,7 +29,8 @@ std::string message_of(const std::function<void()>& f) {
 TEST_CASE("tabulated PSD interpolates log-log: a power law between nodes is reproduced exactly") {
   // G = 2e-9 k^-3 sampled at 3 nodes; in between, Eq. 5 must return the power law itself.
   const TabulatedPsd t({10.0, 100.0, 1000.0}, {2e-9 * 1e-3, 2e-9 * 1e-6, 2e-9 * 1e-9});
-  for (double k : {10.0, 17.0, 55.5, 100.0, 420.0, 999.0}) CHECK(t(k) == doctest::Approx(2e-9 * std::pow(k, -3.0)).epsilon(1e-12));
+  for (double k : {10.0, 17.0, 55.5, 100.0, 420.0, 999.0})
+    CHECK(t(k) == doctest::Approx(2e-9 * std::pow(k, -3.0)).epsilon(1e-12));
 }
 
 TEST_CASE("tabulated PSD outside the table: error unless an extension is given") {
@@ -48,12 +49,16 @@ TEST_CASE("tabulated PSD outside the table: error unless an extension is given")
 
 TEST_CASE("tabulated PSD refuses bad tables with messages that name index and value") {
   CHECK(message_of([] { TabulatedPsd({1.0, 2.0, 3.0}, {1.0, -2.0, 1.0}); }).find("index 1 is -2") != std::string::npos);
-  CHECK(message_of([] { TabulatedPsd({1.0, 3.0, 3.0}, {1.0, 1.0, 1.0}); }).find("strictly increasing, but index 2") != std::string::npos);
+  CHECK(message_of([] {
+          TabulatedPsd({1.0, 3.0, 3.0}, {1.0, 1.0, 1.0});
+        }).find("strictly increasing, but index 2") != std::string::npos);
   CHECK(message_of([] { TabulatedPsd({1.0, 3.0, 2.0}, {1.0, 1.0, 1.0}); }).find("index 2 (2)") != std::string::npos);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   CHECK(message_of([&] { TabulatedPsd({1.0, 2.0}, {nan, 1.0}); }).find("value at index 0 is nan") != std::string::npos);
   CHECK(message_of([&] { TabulatedPsd({1.0, nan}, {1.0, 1.0}); }).find("abscissa at index 1") != std::string::npos);
-  CHECK(message_of([] { TabulatedPsd({-1.0, 2.0}, {1.0, 1.0}); }).find("abscissa at index 0 is -1") != std::string::npos);
+  CHECK(message_of([] {
+          TabulatedPsd({-1.0, 2.0}, {1.0, 1.0});
+        }).find("abscissa at index 0 is -1") != std::string::npos);
   CHECK(message_of([] { TabulatedPsd({1.0}, {1.0}); }).find("at least 2 points") != std::string::npos);
   CHECK(message_of([] { TabulatedPsd({1.0, 2.0}, {1.0}); }).find("2 abscissae but 1 values") != std::string::npos);
   CHECK_THROWS_AS(TabulatedPsd({1.0, 2.0, 3.0}, {0.0, 1.0, 1.0}, Extension::power_law), std::invalid_argument);

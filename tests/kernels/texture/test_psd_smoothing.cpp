@@ -61,7 +61,7 @@ TEST_CASE("band averages keep the estimate's power and span its range") {
   for (std::size_t j = 1; j < e.psd.size(); ++j) raw += e.psd[j];
   for (std::size_t i = 0; i < b.psd.size(); ++i) {
     CHECK(b.last[i] - b.first[i] + 1 >= 4);
-    if (i) CHECK(b.first[i] == b.last[i - 1] + 1);  // contiguous, no bin twice
+    if (i) CHECK(b.first[i] == b.last[i - 1] + 1);                         // contiguous, no bin twice
     banded += b.psd[i] * static_cast<double>(b.last[i] - b.first[i] + 1);  // Eq. 33
   }
   CHECK(b.first.front() == 1);
@@ -80,7 +80,8 @@ TEST_CASE("surfaces from a PSD estimated from 5, 15 and 50 profiles keep the pro
   // 128 x 128 surfaces at 1 um (the whole band above 1/128 um^-1 in 2D).
   const double dx = 1e-6;
   const std::size_t n = 4096, side = 128;
-  const Psd truth = SelfAffinePsd(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / 20e-6, M_PI / dx, RmsTarget::height, 0.4e-6}).to_psd();
+  const Psd truth =
+      SelfAffinePsd(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / 20e-6, M_PI / dx, RmsTarget::height, 0.4e-6}).to_psd();
   std::mt19937_64 rng(15);
   const double exact = spectral_rms(truth, side, dx, rng) / 0.4e-6;
   MESSAGE("surface rms / 0.4 um from the exact PSD: " << exact);
@@ -88,7 +89,8 @@ TEST_CASE("surfaces from a PSD estimated from 5, 15 and 50 profiles keep the pro
     const auto profiles = noisy_profiles(truth, count, n, dx, 1000 + count);
     const EstimatedPsd est = profile_psd(profiles);
     double clamp_raw = 0.0, clamp_smooth = 0.0;
-    const double raw = spectral_rms(estimated_psd_table(est, Extension::zero).to_psd(), side, dx, rng, &clamp_raw) / est.sigma;
+    const double raw =
+        spectral_rms(estimated_psd_table(est, Extension::zero).to_psd(), side, dx, rng, &clamp_raw) / est.sigma;
     const double smooth =
         spectral_rms(smoothed_psd_table(est, Extension::zero).to_psd(), side, dx, rng, &clamp_smooth) / est.sigma;
     MESSAGE(count << " profiles (sigma " << est.sigma << " m): surface rms / profile rms " << raw << " raw ("

@@ -26,11 +26,13 @@ TEST_CASE("seed surface: summed-area path equals the quadruple sum of Eq. 9 (ora
   std::mt19937_64 rng(3);
   const auto d = uniforms(rng, (20 + 4) * (14 + 2)), g = uniforms(rng, (20 + 4) * (14 + 2));
   const Surface fast = seed_surface(spec, d, g), slow = seed_surface_direct(spec, d, g);
-  for (std::size_t i = 0; i < fast.heights.size(); ++i) CHECK(fast.heights[i] == doctest::Approx(slow.heights[i]).epsilon(1e-10));
+  for (std::size_t i = 0; i < fast.heights.size(); ++i)
+    CHECK(fast.heights[i] == doctest::Approx(slow.heights[i]).epsilon(1e-10));
   const HeightStatistics st = surface_statistics(fast);
   CHECK(std::abs(st.rms / 0.4e-6 - 1.0) <= 1e-12);
   CHECK(std::abs(st.mean) <= 1e-12 * 0.4e-6);
-  CHECK_THROWS_WITH_AS(seed_surface(spec, d, std::vector<double>(5)), doctest::Contains("must hold"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(seed_surface(spec, d, std::vector<double>(5)), doctest::Contains("must hold"),
+                       std::invalid_argument);
 }
 
 TEST_CASE("seed surfaces: requested sigma exactly and requested orthotropic correlation lengths within 10 %") {

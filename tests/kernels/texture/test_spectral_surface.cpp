@@ -24,7 +24,8 @@ SelfAffinePsd surface_psd() {
 }  // namespace
 
 TEST_CASE("spectral surface: FFT path equals the plain double sum (reference oracle)") {
-  const SpectralSurfaceGenerator gen(surface_psd().to_psd(), SpectralSurfaceSpec{16, 12, kD, kD, Amplitudes::rayleigh, 1.0, false, 100});
+  const SpectralSurfaceGenerator gen(surface_psd().to_psd(),
+                                     SpectralSurfaceSpec{16, 12, kD, kD, Amplitudes::rayleigh, 1.0, false, 100});
   std::mt19937_64 rng(1);
   const auto up = uniforms(rng, gen.modes()), ua = uniforms(rng, gen.modes());
   Surface fast;
@@ -39,7 +40,8 @@ TEST_CASE("spectral surface: FFT path equals the plain double sum (reference ora
 }
 
 TEST_CASE("spectral surface, deterministic amplitudes: periodogram = target C at every mode; variance = target") {
-  const SpectralSurfaceGenerator gen(surface_psd().to_psd(), SpectralSurfaceSpec{64, 48, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
+  const SpectralSurfaceGenerator gen(surface_psd().to_psd(),
+                                     SpectralSurfaceSpec{64, 48, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
   std::mt19937_64 rng(2);
   const auto up = uniforms(rng, gen.modes());
   Surface s;
@@ -59,16 +61,20 @@ TEST_CASE("a narrow strip holds the variance of a square surface (Eq. 26a)") {
   // Both sums (Eq. 28) approximate (2π)⁻² ∫ C d²q without the same DC cell; one radial mean per
   // mode (Eq. 21 alone) gave the strip 1.31x the variance.
   const Psd psd = surface_psd().to_psd();
-  const SpectralSurfaceGenerator square(psd, SpectralSurfaceSpec{1024, 1024, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
-  const SpectralSurfaceGenerator strip(psd, SpectralSurfaceSpec{1024, 8, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
+  const SpectralSurfaceGenerator square(
+      psd, SpectralSurfaceSpec{1024, 1024, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
+  const SpectralSurfaceGenerator strip(
+      psd, SpectralSurfaceSpec{1024, 8, kD, kD, Amplitudes::deterministic, 1.0, false, 100});
   MESSAGE("strip / square variance = " << strip.target_variance() / square.target_variance());
   CHECK(strip.target_variance() / square.target_variance() == doctest::Approx(1.0).epsilon(0.03));
 }
 
-TEST_CASE("spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per band; their rows match G within 1 dB") {
+TEST_CASE(
+    "spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per band; their rows match G within 1 dB") {
   const std::size_t n = 256;
   const SelfAffinePsd model = surface_psd();
-  const SpectralSurfaceGenerator gen(model.to_psd(), SpectralSurfaceSpec{n, n, kD, kD, Amplitudes::rayleigh, 1.0, false, 100});
+  const SpectralSurfaceGenerator gen(model.to_psd(),
+                                     SpectralSurfaceSpec{n, n, kD, kD, Amplitudes::rayleigh, 1.0, false, 100});
   const std::size_t nh = n / 2 + 1;
   const double dq = 2.0 * M_PI / (static_cast<double>(n) * kD);
   std::mt19937_64 rng(50);
@@ -81,7 +87,8 @@ TEST_CASE("spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per
     const auto c = surface_periodogram(s);
     for (std::size_t i = 0; i < c.size(); ++i) mean_c[i] += c[i] / count;
     for (std::size_t iy = 0; iy < n; ++iy) {
-      const std::vector<double> row(s.heights.begin() + static_cast<std::ptrdiff_t>(iy * n), s.heights.begin() + static_cast<std::ptrdiff_t>((iy + 1) * n));
+      const std::vector<double> row(s.heights.begin() + static_cast<std::ptrdiff_t>(iy * n),
+                                    s.heights.begin() + static_cast<std::ptrdiff_t>((iy + 1) * n));
       const auto p = texture_test::periodogram(row, kD);  // rows are periodic: no window needed
       for (std::size_t j = 0; j < nh; ++j) mean_row[j] += p[j] / (count * static_cast<double>(n));
     }
@@ -94,7 +101,8 @@ TEST_CASE("spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per
     double se = 0.0, st = 0.0, modes = 0.0;
     for (std::size_t iy = 0; iy < n; ++iy)
       for (std::size_t ix = 0; ix < nh; ++ix) {
-        const double qy = dq * (iy <= n / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(n));
+        const double qy =
+            dq * (iy <= n / 2 ? static_cast<double>(iy) : static_cast<double>(iy) - static_cast<double>(n));
         const double q = std::hypot(dq * static_cast<double>(ix), qy);
         if (q < lo || q >= hi || gen.mode_psd()[iy * nh + ix] <= 0.0) continue;
         const double w = (ix == 0) ? 1.0 : 2.0;
@@ -132,9 +140,12 @@ TEST_CASE("spectral surfaces: 50 Rayleigh surfaces match C_iso within 0.5 dB per
 }
 
 TEST_CASE("anisotropy ratio 4 stretches the correlation lengths 2x in x and 1/2 in y, rms kept") {
-  const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (16.0 * kD), M_PI / (4.0 * kD), RmsTarget::height, 0.2e-6});
-  const SpectralSurfaceGenerator iso(model.to_psd(), SpectralSurfaceSpec{256, 256, kD, kD, Amplitudes::rayleigh, 1.0, false, 100});
-  const SpectralSurfaceGenerator ani(model.to_psd(), SpectralSurfaceSpec{256, 256, kD, kD, Amplitudes::rayleigh, 4.0, false, 100});
+  const SelfAffinePsd model(
+      SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (16.0 * kD), M_PI / (4.0 * kD), RmsTarget::height, 0.2e-6});
+  const SpectralSurfaceGenerator iso(model.to_psd(),
+                                     SpectralSurfaceSpec{256, 256, kD, kD, Amplitudes::rayleigh, 1.0, false, 100});
+  const SpectralSurfaceGenerator ani(model.to_psd(),
+                                     SpectralSurfaceSpec{256, 256, kD, kD, Amplitudes::rayleigh, 4.0, false, 100});
   CHECK(ani.target_variance() == doctest::Approx(iso.target_variance()).epsilon(0.02));
   std::mt19937_64 rng(6);
   double lx_i = 0, ly_i = 0, lx_a = 0, ly_a = 0;
@@ -149,7 +160,8 @@ TEST_CASE("anisotropy ratio 4 stretches the correlation lengths 2x in x and 1/2 
     lx_a += sb.correlation_length_x;
     ly_a += sb.correlation_length_y;
   }
-  MESSAGE("isotropic l_x/l_y = " << lx_i / ly_i << "; anisotropic l_x / l_x,iso = " << lx_a / lx_i << ", l_y / l_y,iso = " << ly_a / ly_i);
+  MESSAGE("isotropic l_x/l_y = " << lx_i / ly_i << "; anisotropic l_x / l_x,iso = " << lx_a / lx_i
+                                 << ", l_y / l_y,iso = " << ly_a / ly_i);
   CHECK(lx_i / ly_i == doctest::Approx(1.0).epsilon(0.1));
   CHECK(lx_a / lx_i == doctest::Approx(2.0).epsilon(0.1));
   CHECK(ly_a / ly_i == doctest::Approx(0.5).epsilon(0.1));
@@ -157,8 +169,10 @@ TEST_CASE("anisotropy ratio 4 stretches the correlation lengths 2x in x and 1/2 
 
 TEST_CASE("spectral surface refuses a grid that cannot hold the PSD's k_max") {
   const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 1e5, 1e7, RmsTarget::height, 1e-6});
-  CHECK_THROWS_WITH_AS(SpectralSurfaceGenerator(model.to_psd(), SpectralSurfaceSpec{64, 64, kD, kD, Amplitudes::rayleigh, 1.0, false, 100}),
+  CHECK_THROWS_WITH_AS(SpectralSurfaceGenerator(
+                           model.to_psd(), SpectralSurfaceSpec{64, 64, kD, kD, Amplitudes::rayleigh, 1.0, false, 100}),
                        doctest::Contains("refine the grid"), std::invalid_argument);
-  CHECK_THROWS_AS(SpectralSurfaceGenerator(surface_psd().to_psd(), SpectralSurfaceSpec{63, 64, kD, kD, Amplitudes::rayleigh, 1.0, false, 100}),
+  CHECK_THROWS_AS(SpectralSurfaceGenerator(surface_psd().to_psd(),
+                                           SpectralSurfaceSpec{63, 64, kD, kD, Amplitudes::rayleigh, 1.0, false, 100}),
                   std::invalid_argument);
 }

@@ -24,7 +24,8 @@ TEST_CASE("autocorrelation: FFT path equals the direct sum (oracle)") {
 
 TEST_CASE("correlation length is the linear-interpolated 1/e crossing") {
   // rho = 1, 0.5, 0.25: 1/e = 0.3679 lies between lags 1 and 2 at 1 + (0.5 - 0.3679) / 0.25.
-  CHECK(correlation_length_from_acf({1.0, 0.5, 0.25}, 2.0) == doctest::Approx(2.0 * (1.0 + (0.5 - std::exp(-1.0)) / 0.25)));
+  CHECK(correlation_length_from_acf({1.0, 0.5, 0.25}, 2.0) ==
+        doctest::Approx(2.0 * (1.0 + (0.5 - std::exp(-1.0)) / 0.25)));
   CHECK(std::isnan(correlation_length_from_acf({1.0, 0.9, 0.8}, 1.0)));
 }
 
@@ -44,8 +45,9 @@ TEST_CASE("a long Rayleigh texture is Gaussian: skewness ~ 0, kurtosis ~ 3; its 
       rho[s] += g[j] * std::cos(gen.fundamental() * static_cast<double>(j) * dx * static_cast<double>(s));
   for (std::size_t s = rho.size(); s-- > 0;) rho[s] /= rho[0];
   const double expected = correlation_length_from_acf(rho, dx);
-  MESSAGE("rms " << st.rms << " (target " << model.rms_height() << "), skewness " << st.skewness << ", kurtosis " << st.kurtosis
-                 << ", correlation length " << st.correlation_length_x << " m (expected " << expected << " m)");
+  MESSAGE("rms " << st.rms << " (target " << model.rms_height() << "), skewness " << st.skewness << ", kurtosis "
+                 << st.kurtosis << ", correlation length " << st.correlation_length_x << " m (expected " << expected
+                 << " m)");
   CHECK(std::abs(st.skewness) < 0.05);
   CHECK(std::abs(st.kurtosis - 3.0) < 0.1);
   CHECK(st.correlation_length_x == doctest::Approx(expected).epsilon(0.05));
@@ -55,7 +57,8 @@ TEST_CASE("a long Rayleigh texture is Gaussian: skewness ~ 0, kurtosis ~ 3; its 
 TEST_CASE("radially averaged 2D PSD: the bins partition the modes, so (2 pi)^-2 sum_b C_b modes_b dqx dqy = variance") {
   const double d = 1e-6;
   const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 2.0 * M_PI / (16.0 * d), M_PI / d, RmsTarget::height, 0.2e-6});
-  const SpectralSurfaceGenerator gen(model.to_psd(), SpectralSurfaceSpec{64, 32, d, 2.0 * d, Amplitudes::rayleigh, 1.0, true, 100});
+  const SpectralSurfaceGenerator gen(model.to_psd(),
+                                     SpectralSurfaceSpec{64, 32, d, 2.0 * d, Amplitudes::rayleigh, 1.0, true, 100});
   std::mt19937_64 rng(4);
   const auto up = uniforms(rng, gen.modes()), ua = uniforms(rng, gen.modes());
   Surface s;

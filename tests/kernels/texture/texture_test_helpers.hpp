@@ -38,9 +38,9 @@ inline std::vector<double> periodogram(const std::vector<double>& h, double dx) 
 inline double db(double ratio) { return 10.0 * std::log10(ratio); }
 
 struct BandCompare {
-  double centre_n;   // cycles/m
-  double bins;       // harmonics in the band
-  double delta_db;   // 10 log10(estimate / target)
+  double centre_n;  // cycles/m
+  double bins;      // harmonics in the band
+  double delta_db;  // 10 log10(estimate / target)
 };
 
 // Third-octave bands of spatial frequency n = k / 2 pi over [n_lo, n_hi] holding >= min_bins
