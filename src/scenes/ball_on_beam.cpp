@@ -70,13 +70,15 @@ class BallOnBeam final : public EnsembleScene {
   // objects whose inspection `plan` prints and whose resolution prepare() runs.
   void add_pipeline_stages(const Study& s) {
     if (b_.path_law())
-      add_stages({{"texture", StageStatus::skipped, "law = path: the path table's strip is the roughness (no line texture)"}});
+      add_stages(
+          {{"texture", StageStatus::skipped, "law = path: the path table's strip is the roughness (no line texture)"}});
     else if (b_.strip_line)
       add_stages({{"texture", StageStatus::skipped,
                    "equivalent_roughness.line = strip: h_eq of strip 0 along the path is the line (no synthesis)"}});
     else
       add_stages({{"texture", StageStatus::run,
-                   "beam line texture per realisation from [texture] (" + b_.psd.description + "); " + filter_description()}});
+                   "beam line texture per realisation from [texture] (" + b_.psd.description + "); " +
+                       contact_filter_description(b_)}});
     std::unique_ptr<TableStage> table;
     if (uses_table()) {
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
@@ -98,7 +100,8 @@ class BallOnBeam final : public EnsembleScene {
                        : valid ? "inside the cached stiffness table"
                                : "isotropic surfaces for the stiffness table"};
     }));
-    if (table) add_stage(std::move(table));
+    if (table)
+      add_stage(std::move(table));
     else
       add_stages({{"stiffness_table", StageStatus::skipped,
                    linearised()    ? "linearised law: k0 from [contact]"
@@ -108,12 +111,12 @@ class BallOnBeam final : public EnsembleScene {
       // The strip's grid: the study's keys where set, else derived from the contact radius and the
       // texture; the path step at most v / f_s so F0 reaches the output's Nyquist frequency.
       const stiffness::BlockedForceGeometry grid = blocked_force_grid();
-      add_contact_table_stage("blocked_force", s, grid, &stiffness::blocked_force_cached_table, &stiffness::build_blocked_force,
-                              &BallOnBeam::use_blocked_force, grid.describe());
+      add_contact_table_stage("blocked_force", s, grid, &stiffness::blocked_force_cached_table,
+                              &stiffness::build_blocked_force, &BallOnBeam::use_blocked_force, grid.describe());
     } else {
       add_stages({{"blocked_force", linearised() ? StageStatus::run : StageStatus::skipped,
                    linearised() ? "F0(t) = W + k0 h_patch(v t) per realisation (linear contact spring)"
-                               : "only the linearised law uses F0"}});
+                                : "only the linearised law uses F0"}});
     }
     if (solver_filter() && b_.strip_line) {
       // line = strip: h_eq of strip 0 on the path table's grid and positions (the strip law = path uses).
@@ -134,10 +137,12 @@ class BallOnBeam final : public EnsembleScene {
       const stiffness::PathTableGeometry grid = path_grid();
       add_contact_table_stage("path_table", s, grid, &stiffness::path_cached_table, &stiffness::build_path_table,
                               &BallOnBeam::use_path_table,
-                              grid.describe() + "; every realisation rolls over this one strip (nothing else is random: K > 1 "
-                                                "repeats the same run)");
+                              grid.describe() +
+                                  "; every realisation rolls over this one strip (nothing else is random: K > 1 "
+                                  "repeats the same run)");
     }
-    add_stages({{"dynamics", StageStatus::run, b_.dopri ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
+    add_stages({{"dynamics", StageStatus::run,
+                 b_.dopri ? "Dormand-Prince 5(4) reference" : "exact modal step per mode, implicit contact force"},
                 {"spectra", StageStatus::run, "Welch PSDs of sensors, contact force and ball; ensemble mean"},
                 {"reference", writes_reference() ? StageStatus::run : StageStatus::skipped,
                  !linearised()  ? "only the linearised law has a frequency-domain reference"
@@ -156,8 +161,8 @@ class BallOnBeam final : public EnsembleScene {
   // The strip's grid: the study's keys where set, else derived from the contact radius and the
   // texture; the path step at most v / f_s so F0 (and h_eq) reach the output's Nyquist frequency.
   stiffness::BlockedForceGeometry blocked_force_grid() const {
-    return stiffness::blocked_force_geometry(b_.blocked_force, b_.strip_surface, b_.texture_psd, b_.model.contact.radius,
-                                             b_.model.contact.effective_modulus, b_.weight(),
+    return stiffness::blocked_force_geometry(b_.blocked_force, b_.strip_surface, b_.texture_psd,
+                                             b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(),
                                              b_.model.traverse.speed / b_.model.sample_rate);
   }
 
@@ -198,7 +203,7 @@ class BallOnBeam final : public EnsembleScene {
     b_.static_compression = t.approach_at(b_.weight());
     if (!(b_.static_compression > 0.0))
       b_.stiffness.approach_max_origin.refuse("the table's largest force " + std::to_string(t.force_mean.back()) +
-                                                   " N does not reach the ball's weight; raise approach_max");
+                                              " N does not reach the ball's weight; raise approach_max");
     check_contact_resolution(b_, t.stiffness_at(b_.weight()));
   }
 
@@ -209,7 +214,8 @@ class BallOnBeam final : public EnsembleScene {
     b_.model.contact.path_origin = b_.model.traverse.x_start;
     b_.static_compression = beam::path_table_static_approach(*b_.model.contact.path, b_.weight());
     if (!quiet)
-      std::fprintf(stderr, "path table: %s (%zu approaches x %zu positions; mean static approach %.4g m from the mean plane)\n",
+      std::fprintf(stderr,
+                   "path table: %s (%zu approaches x %zu positions; mean static approach %.4g m from the mean plane)\n",
                    status.c_str(), t.approach.size(), t.position.size(), b_.static_compression);
   }
 
@@ -247,8 +253,10 @@ class BallOnBeam final : public EnsembleScene {
     }
     b_.static_compression /= rho;
     if (!quiet)
-      std::fprintf(stderr, "equivalent stiffness: the strips' mean contact stiffness at the weight is %.4g of the smooth "
-                   "strip's; the point law is stretched along the approach by 1/%.4g (ER-7)\n", rho, rho);
+      std::fprintf(stderr,
+                   "equivalent stiffness: the strips' mean contact stiffness at the weight is %.4g of the smooth "
+                   "strip's; the point law is stretched along the approach by 1/%.4g (ER-7)\n",
+                   rho, rho);
   }
 
   // filter = solver: the line is synthesised from the strip-mean PSD of h_eq (ER-2), band-limited
@@ -285,8 +293,9 @@ class BallOnBeam final : public EnsembleScene {
     p.description = "PSD of the equivalent roughness h_eq on " + std::to_string(t.position.size()) + " positions x " +
                     std::to_string(static_cast<long long>(t.strips)) + " strips (kernels/contact ER-2)";
     for (std::size_t j = 1; j < t.psd_wavenumber.size(); ++j) p.breakpoints.push_back(t.psd_wavenumber[j]);
-    b_.line_psd = std::isfinite(b_.band_limit_wavenumber) ? texture::band_limited(std::move(p), b_.band_limit_wavenumber)
-                                                          : std::move(p);
+    b_.line_psd = std::isfinite(b_.band_limit_wavenumber)
+                      ? texture::band_limited(std::move(p), b_.band_limit_wavenumber)
+                      : std::move(p);
     apply_equivalent_stiffness(t, quiet);
     lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     for (auto& ws : workspaces_) {
@@ -300,8 +309,9 @@ class BallOnBeam final : public EnsembleScene {
   // sampled at the integration step.
   void use_blocked_force(const stiffness::BlockedForceTable& table, const std::string& status, bool quiet) {
     blocked_ = table;
-    if (!quiet) std::fprintf(stderr, "blocked force table: %s (k0 = %.4g N/m, d0 = %.4g m)\n", status.c_str(), blocked_.k0,
-                             blocked_.approach);
+    if (!quiet)
+      std::fprintf(stderr, "blocked force table: %s (k0 = %.4g N/m, d0 = %.4g m)\n", status.c_str(), blocked_.k0,
+                   blocked_.approach);
     const double weight = b_.weight();
     b_.model.contact.k0 = blocked_.k0;
     b_.static_compression = weight / blocked_.k0;
@@ -345,10 +355,10 @@ class BallOnBeam final : public EnsembleScene {
   void simulate(std::uint64_t id, Workspace& ws) const {
     const std::size_t nh = lines_->harmonics();
     if (!blocked_solver() && !b_.path_law() && !b_.strip_line) {
-    rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
-    rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
-    if (!ws.line_scratch) ws.line_scratch = std::make_unique<spectral::SynthesisScratch>(lines_->period());
-    lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data(), *ws.line_scratch);
+      rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_phase).uniform_open(ws.u_phase.data(), nh);
+      rng::PhiloxStream(b_.seed, id, rng::Stream::roughness_amplitude).uniform_open(ws.u_amp.data(), nh);
+      if (!ws.line_scratch) ws.line_scratch = std::make_unique<spectral::SynthesisScratch>(lines_->period());
+      lines_->generate(ws.u_phase.data(), ws.u_amp.data(), ws.texture.data(), *ws.line_scratch);
     }
     const bool no_line = blocked_solver() || b_.path_law();  // their strip resolves the roughness
     beam::UniformSamples h{0.0, b_.spacing, no_line ? std::vector<double>() : ws.texture};
@@ -375,7 +385,8 @@ class BallOnBeam final : public EnsembleScene {
       r.blocked_force.step = dt;
       const double weight = b_.weight();
       r.blocked_force.values.reserve(h.values.size() - std::min(first, h.values.size()));
-      for (std::size_t i = first; i < h.values.size(); ++i) r.blocked_force.values.push_back(weight + b_.model.contact.k0 * h.values[i]);
+      for (std::size_t i = first; i < h.values.size(); ++i)
+        r.blocked_force.values.push_back(weight + b_.model.contact.k0 * h.values[i]);
     } else if (b_.strip_line) {
       r.roughness = strip_line_;
     } else if (!b_.path_law()) {
@@ -404,33 +415,14 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    BallOnBeamWriter(b_, *welch_, *rows_, lines_->fundamental(), blocked_,
-                     [this](double f) { return blocked_force_time_psd(f); }, quiet_)
+    BallOnBeamWriter(
+        b_, *welch_, *rows_, lines_->fundamental(), blocked_, [this](double f) { return blocked_force_time_psd(f); },
+        quiet_)
         .write(w, sums);
     if (b_.time_histories) write_time_histories(w, sums.only);
   }
 
  private:
-  std::string filter_description() const {
-    if (blocked_solver()) return "contact filter: not used (blocked_force = solver)";
-    char a[32];
-    std::snprintf(a, sizeof a, "%.4g", b_.contact_half_width * 1e6);
-    switch (b_.filter) {
-      case ContactFilter::none: return "contact filter: none (point contact)";
-      case ContactFilter::patch: return std::string("contact filter: patch, 1D average over 2a, a = ") + a + " um (B35)";
-      case ContactFilter::iso2d: break;
-      case ContactFilter::solver:
-        return std::string("contact filter: solver, line PSD of the equivalent roughness h_eq of half-space solves at "
-                           "the weight (kernels/contact ER-1..ER-7), Hertz a = ") + a + " um" +
-               (b_.equivalent_stiffness ? "; the point law carries the weight with the strips' mean contact stiffness (ER-7)"
-                : uses_table() && b_.stiffness.rough
-                    ? "; the table law's own stiffness (its rough surfaces carry the rough contact's compliance: no ER-7)"
-                    : "; the point law's own stiffness ([equivalent_roughness] stiffness = law)");
-    }
-    return std::string("contact filter: iso2d, line PSD G_eq of a Hertz disc of radius a = ") + a +
-           " um on the isotropic surface (kernels/texture Eq. 38)";
-  }
-
   // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume;
   // with --only, the history of that one realisation.
   void write_time_histories(io::Hdf5Writer& w, std::int64_t only) const {
@@ -441,19 +433,25 @@ class BallOnBeam final : public EnsembleScene {
     for (std::size_t r = 0; r < nh; ++r) {
       simulate(only >= 0 ? static_cast<std::uint64_t>(only) : r, ws);
       for (std::size_t s = 0; s < ns; ++s)
-        std::copy(ws.result.sensor_acceleration[s].begin(), ws.result.sensor_acceleration[s].end(), acc.begin() + static_cast<std::ptrdiff_t>((r * ns + s) * n));
-      std::copy(ws.result.contact_force.begin(), ws.result.contact_force.end(), force.begin() + static_cast<std::ptrdiff_t>(r * n));
-      std::copy(ws.result.ball_acceleration.begin(), ws.result.ball_acceleration.end(), ball.begin() + static_cast<std::ptrdiff_t>(r * n));
-      std::copy(ws.result.compression.begin(), ws.result.compression.end(), delta.begin() + static_cast<std::ptrdiff_t>(r * n));
+        std::copy(ws.result.sensor_acceleration[s].begin(), ws.result.sensor_acceleration[s].end(),
+                  acc.begin() + static_cast<std::ptrdiff_t>((r * ns + s) * n));
+      std::copy(ws.result.contact_force.begin(), ws.result.contact_force.end(),
+                force.begin() + static_cast<std::ptrdiff_t>(r * n));
+      std::copy(ws.result.ball_acceleration.begin(), ws.result.ball_acceleration.end(),
+                ball.begin() + static_cast<std::ptrdiff_t>(r * n));
+      std::copy(ws.result.compression.begin(), ws.result.compression.end(),
+                delta.begin() + static_cast<std::ptrdiff_t>(r * n));
     }
     w.write("/time_history/time", {n}, t.data(), "s", "time from the start of the record");
     w.write("/time_history/sensor_acceleration", {nh, ns, n}, acc.data(), "m/s^2", "realisation x sensor x time");
     w.write("/time_history/contact_force", {nh, n}, force.data(), "N", "realisation x time");
     w.write("/time_history/ball_acceleration", {nh, n}, ball.data(), "m/s^2", "realisation x time");
-    w.write("/time_history/compression", {nh, n}, delta.data(), "m", "contact compression delta = w_beam + h - w_ball (> 0: contact)");
+    w.write("/time_history/compression", {nh, n}, delta.data(), "m",
+            "contact compression delta = w_beam + h - w_ball (> 0: contact)");
     w.make_scale("/time_history/time", "time");
     w.attach_scale("/time_history/sensor_acceleration", "/time_history/time", 2);
-    for (const char* d : {"/time_history/contact_force", "/time_history/ball_acceleration", "/time_history/compression"})
+    for (const char* d :
+         {"/time_history/contact_force", "/time_history/ball_acceleration", "/time_history/compression"})
       w.attach_scale(d, "/time_history/time", 1);
     w.attribute("/time_history", "realisations",
                 only >= 0 ? std::to_string(only) : "0.." + std::to_string(b_.time_histories - 1));

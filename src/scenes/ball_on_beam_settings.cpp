@@ -38,7 +38,8 @@ std::vector<double> sensor_positions(const study::SensorsSection& sensors, doubl
   const std::vector<double>& v = sensors.positions;
   if (v.empty()) sensors.positions_origin.refuse("lists no position; allowed: comma-separated positions in m");
   for (double x : v)
-    if (x < 0.0 || x > length) sensors.positions_origin.refuse("position " + std::to_string(x) + " m lies outside the span [0, length]");
+    if (x < 0.0 || x > length)
+      sensors.positions_origin.refuse("position " + std::to_string(x) + " m lies outside the span [0, length]");
   return v;
 }
 
@@ -76,10 +77,12 @@ void check_step_coefficients(const BallOnBeamSettings& b) {
     }
     if (ok) continue;
     char buf[200];
-    std::snprintf(buf, sizeof buf, "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
+    std::snprintf(buf, sizeof buf,
+                  "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
                   m.modes(), i + 1, m.frequency(i), m.omega(i) * h);
     (b.beam.selection.count > 0 ? b.beam.modes_origin : b.beam.max_frequency_origin)
-        .refuse(std::string(buf) + "; allowed: at most " + std::to_string(i) + " modes at this step (or signal.integrator = dopri5)");
+        .refuse(std::string(buf) + "; allowed: at most " + std::to_string(i) +
+                " modes at this step (or signal.integrator = dopri5)");
   }
 }
 
@@ -97,30 +100,35 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
   // is accepted there but not applied, and the result says so (/contact@filter is what was applied).
   b.filter_applied = b.filter == ContactFilter::patch && (b.path_law() || b.blocked_solver()) ? "none" : b.filter_name;
   if (b.filter == ContactFilter::iso2d && b.blocked_solver())
-    filter_origin.refuse("iso2d filters the line texture, which blocked_force = solver does not use (its strip "
-                               "resolves the contact itself); allowed with solver: none or patch (both ignored)");
+    filter_origin.refuse(
+        "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
+        "resolves the contact itself); allowed with solver: none or patch (both ignored)");
   if (b.filter == ContactFilter::iso2d && b.path_law())
-    filter_origin.refuse("iso2d filters the line texture, which law = path does not use (its strip is the "
-                               "roughness); allowed with path: none or patch (both ignored)");
+    filter_origin.refuse(
+        "iso2d filters the line texture, which law = path does not use (its strip is the "
+        "roughness); allowed with path: none or patch (both ignored)");
   // solver: h_eq enters the point law as the line does (ER-2); the linearised law and the path law
   // have their own treatment of the rough contact.
   if (b.filter == ContactFilter::solver && b.blocked_solver())
-    filter_origin.refuse("solver filters the line texture, which blocked_force = solver does not use (its strip "
-                               "resolves the contact itself); allowed with blocked_force = solver: none or patch (both ignored)");
+    filter_origin.refuse(
+        "solver filters the line texture, which blocked_force = solver does not use (its strip "
+        "resolves the contact itself); allowed with blocked_force = solver: none or patch (both ignored)");
   if (b.filter == ContactFilter::solver && b.path_law())
-    filter_origin.refuse("solver filters the line texture, which law = path does not use (its strip is the "
-                               "roughness); allowed with path: none or patch (both ignored)");
+    filter_origin.refuse(
+        "solver filters the line texture, which law = path does not use (its strip is the "
+        "roughness); allowed with path: none or patch (both ignored)");
   b.strip_line = er.line == "strip";
   // ER-7 corrects a smooth contact's stiffness; a table law from rough surfaces ([stiffness] surface =
   // rough, seed 001's chain) carries the rough contact's compliance already.
-  b.equivalent_stiffness = b.filter == ContactFilter::solver && er.stiffness == "strip" &&
-                           !(b.uses_table() && b.stiffness.rough);
+  b.equivalent_stiffness =
+      b.filter == ContactFilter::solver && er.stiffness == "strip" && !(b.uses_table() && b.stiffness.rough);
   if (b.strip_line && b.filter != ContactFilter::solver)
-    er.line_origin.refuse("= strip is the line of [contact] filter = solver; allowed with filter = " +
-                                              b.filter_name + ": synthesised");
+    er.line_origin.refuse("= strip is the line of [contact] filter = solver; allowed with filter = " + b.filter_name +
+                          ": synthesised");
   if (b.filter == ContactFilter::solver && b.linearised())
-    filter_origin.refuse("solver gives the equivalent roughness of the nonlinear point laws; allowed with law = "
-                               "linearised: none, patch or iso2d (or law = hertz, table or literal with solver)");
+    filter_origin.refuse(
+        "solver gives the equivalent roughness of the nonlinear point laws; allowed with law = "
+        "linearised: none, patch or iso2d (or law = hertz, table or literal with solver)");
 }
 
 texture::Psd iso2d_study_psd(const BallOnBeamSettings& b) {
@@ -142,17 +150,19 @@ void check_contact_resolution(const BallOnBeamSettings& b, double k_contact) {
   if (h > tc / 20.0) {
     const auto need = static_cast<long long>(std::ceil(20.0 / (tc * b.model.sample_rate)));
     b.substeps_origin.refuse("the integration step 1 / (sample_rate x substeps) = " + g4(h) +
-                                    " s exceeds the contact resolution limit dt <= T_c / 20 = " + g4(tc / 20.0) +
-                                    " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + g4(k_contact) +
-                                    " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
-                                    " at this sample rate");
+                             " s exceeds the contact resolution limit dt <= T_c / 20 = " + g4(tc / 20.0) +
+                             " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + g4(k_contact) +
+                             " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
+                             " at this sample rate");
   }
 }
 
 namespace {
 // A PSD without upper end is cut where the flat-punch weight (Eq. 37) has fallen below 1e-6 in
 // power, or at ten times the line's Nyquist wavenumber if that is further.
-double iso2d_q_cap(const BallOnBeamSettings& b) { return std::max(1e3 / b.contact_half_width, 10.0 * M_PI / b.spacing); }
+double iso2d_q_cap(const BallOnBeamSettings& b) {
+  return std::max(1e3 / b.contact_half_width, 10.0 * M_PI / b.spacing);
+}
 }  // namespace
 
 std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::vector<double>& k) {
@@ -177,7 +187,11 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   const study::ModalBeamSection beam_section = study::ModalBeamSection::parse(s);
   const study::SignalSection signal = study::SignalSection::parse(s);
   const study::SensorsSection sensors = study::SensorsSection::parse(s);
-  BallOnBeamSettings b({beam_section.modal_beam(), {}, {}, {}, signal.sample_rate,
+  BallOnBeamSettings b({beam_section.modal_beam(),
+                        {},
+                        {},
+                        {},
+                        signal.sample_rate,
                         sensor_positions(sensors, beam_section.properties.length)});
   b.beam = beam_section;
   b.ball = study::BallSection::parse(s);
@@ -229,9 +243,11 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   law.k0 = b.contact_section.k0;
   law.damping = b.contact_section.damping;
   law.loss = b.contact_section.loss == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
-  const double hertz_compression = std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
+  const double hertz_compression =
+      std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
-  read_contact_filter(study::EquivalentRoughnessSection::parse(s), b, beam::hertz_half_width(radius, hertz_compression));
+  read_contact_filter(study::EquivalentRoughnessSection::parse(s), b,
+                      beam::hertz_half_width(radius, hertz_compression));
   // Integration step.
   b.step.substeps = static_cast<int>(signal.substeps);
   b.step.hold = signal.hold == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
@@ -239,7 +255,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
   // One roughness sample per integration step by default: the interpolation between samples then
   // low-passes the excitation only near the step's own Nyquist frequency.
   b.spacing = roughness.spacing > 0.0 ? roughness.spacing
-                                                : m.traverse.speed / (m.sample_rate * static_cast<double>(b.step.substeps));
+                                      : m.traverse.speed / (m.sample_rate * static_cast<double>(b.step.substeps));
   b.line_samples = static_cast<std::size_t>(std::floor(length / b.spacing)) + 1;
   // A spacing that does not divide the span leaves the last sample short of it: the line must still
   // reach the traverse's end and the contact patch around it.
@@ -258,18 +274,48 @@ BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
                      ? texture::interpolation_compensated(b.psd, b.spacing)
                      : b.psd;
   if (!b.uses_table() && !b.blocked_solver())
-    check_contact_resolution(b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
+    check_contact_resolution(
+        b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
   check_step_coefficients(b);
   // Record and spectra.
   b.samples = beam::output_samples(m);
   b.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start * m.sample_rate));
-  if (b.skip >= b.samples) spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
+  if (b.skip >= b.samples)
+    spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
   const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > b.samples - b.skip)
     spectrum.segment_origin.refuse("is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
-                                     " samples = ((end - start) / speed - skip_start) x sample_rate)");
+                                   " samples = ((end - start) / speed - skip_start) x sample_rate)");
   b.welch = study_welch_config(spectrum, m.sample_rate);
   return b;
+}
+
+// The [contact] filter line of the plan text, with the half width it averages over.
+std::string contact_filter_description(const BallOnBeamSettings& b) {
+  if (b.blocked_solver()) return "contact filter: not used (blocked_force = solver)";
+  char a[32];
+  std::snprintf(a, sizeof a, "%.4g", b.contact_half_width * 1e6);
+  switch (b.filter) {
+    case ContactFilter::none:
+      return "contact filter: none (point contact)";
+    case ContactFilter::patch:
+      return std::string("contact filter: patch, 1D average over 2a, a = ") + a + " um (B35)";
+    case ContactFilter::iso2d:
+      break;
+    case ContactFilter::solver:
+      return std::string(
+                 "contact filter: solver, line PSD of the equivalent roughness h_eq of half-space solves at "
+                 "the weight (kernels/contact ER-1..ER-7), Hertz a = ") +
+             a + " um" +
+             (b.equivalent_stiffness
+                  ? "; the point law carries the weight with the strips' mean contact stiffness (ER-7)"
+              : b.uses_table() && b.stiffness.rough
+                  ? "; the table law's own stiffness (its rough surfaces carry the rough contact's compliance: no "
+                    "ER-7)"
+                  : "; the point law's own stiffness ([equivalent_roughness] stiffness = law)");
+  }
+  return std::string("contact filter: iso2d, line PSD G_eq of a Hertz disc of radius a = ") + a +
+         " um on the isotropic surface (kernels/texture Eq. 38)";
 }
 
 }  // namespace rollspec::scenes

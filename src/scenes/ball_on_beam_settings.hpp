@@ -42,53 +42,56 @@ enum class ContactFilter { none, patch, iso2d, solver };
 struct BallOnBeamSettings {
   explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}
   std::uint64_t seed = 0;
-  study::ModalBeamSection beam;  // [beam] as read
-  study::BallSection ball;       // [ball] as read
+  study::ModalBeamSection beam;           // [beam] as read
+  study::BallSection ball;                // [ball] as read
   study::ContactSection contact_section;  // [contact] as read
   study::KeyOrigin substeps_origin;
   // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
   study::BlockedForceSection blocked_force;
   study::PathTableSection path_table;
   study::StripSurfaceSection strip_surface;
-  study::StiffnessSection stiffness;         // [stiffness]: the table law's surface and approach range
-  texture_io::LineGeneratorKeys line_keys;   // the line texture's amplitudes; errors at [roughness] spacing  // [signal] substeps, for the step checks of the table stages
+  study::StiffnessSection stiffness;        // [stiffness]: the table law's surface and approach range
+  texture_io::LineGeneratorKeys line_keys;  // the line texture's amplitudes; errors at [roughness] spacing  // [signal]
+                                            // substeps, for the step checks of the table stages
   // Beam, ball, traverse, sensors, output rate and the contact law as far as the keys fix it;
   // the table stages complete the law (compression table, or k0 of the blocked force).
   beam::BallOnBeamModel model;
   ContactModel contact = ContactModel::hertz;
-  std::string law_name;            // [contact] law as written, for the result file
-  texture::Psd texture_psd;        // [texture] as given: the surface iso2d filters (no band limit across the path)
-  texture::Psd psd;                // [texture], band-limited by [roughness] band_limit
+  std::string law_name;      // [contact] law as written, for the result file
+  texture::Psd texture_psd;  // [texture] as given: the surface iso2d filters (no band limit across the path)
+  texture::Psd psd;          // [texture], band-limited by [roughness] band_limit
   double band_limit_wavenumber = std::numeric_limits<double>::infinity();  // rad/m; B40
   // What the line samples are drawn from: psd (none), psd B40a-compensated (patch on a band-limited
   // line), or G_eq of texture_psd, band-limited (iso2d); for solver, psd until the equivalent-roughness
   // table stage sets the PSD of h_eq, band-limited.
   texture::Psd line_psd;
   ContactFilter filter = ContactFilter::patch;
-  std::string filter_name;         // [contact] filter as written
-  std::string filter_applied;      // the filter the roughness actually passes through
+  std::string filter_name;     // [contact] filter as written
+  std::string filter_applied;  // the filter the roughness actually passes through
   // filter = solver with [equivalent_roughness] line = strip: the line is h_eq of strip 0 along the path
   // (the path table's strip and grid), the same for every realisation, not synthesised.
   bool strip_line = false;
   // filter = solver with [equivalent_roughness] stiffness = strip: the point law carries the weight with
   // the strips' mean contact stiffness (kernels/contact ER-7).
   bool equivalent_stiffness = false;
-  double contact_half_width = 0.0; // Hertz contact radius a at the weight (what the filters use)
-  double spacing = 0.0;            // line texture sample spacing, m
-  std::size_t line_samples = 0;    // over the whole span
-  double patch_half_width = 0.0;   // contact_half_width for filter = patch, else 0 (no patch average)
-  double static_compression = 0.0; // point laws: Hertz (or weight / k0) at the weight
+  double contact_half_width = 0.0;  // Hertz contact radius a at the weight (what the filters use)
+  double spacing = 0.0;             // line texture sample spacing, m
+  std::size_t line_samples = 0;     // over the whole span
+  double patch_half_width = 0.0;    // contact_half_width for filter = patch, else 0 (no patch average)
+  double static_compression = 0.0;  // point laws: Hertz (or weight / k0) at the weight
   beam::ExactStepOptions step;
-  bool dopri = false;              // Dormand-Prince reference instead of the exact step
+  bool dopri = false;  // Dormand-Prince reference instead of the exact step
   double rtol = 1e-8;
   std::size_t samples = 0, skip = 0;  // output samples per record, left out at its start
   spectral::WelchConfig welch;
   bool sensor_mean = true;
   double confidence = 0.95, band_min = 0.0, band_max = 0.0;
   std::size_t time_histories = 0;
-  bool reference = true;           // [output] reference (written for the linearised law only)
+  bool reference = true;  // [output] reference (written for the linearised law only)
 
-  bool linearised() const { return contact == ContactModel::linearised_spring || contact == ContactModel::linearised_solver; }
+  bool linearised() const {
+    return contact == ContactModel::linearised_spring || contact == ContactModel::linearised_solver;
+  }
   bool uses_table() const { return contact == ContactModel::table || contact == ContactModel::literal; }
   bool blocked_solver() const { return contact == ContactModel::linearised_solver; }
   bool path_law() const { return contact == ContactModel::path; }  // law = path: the strip is the roughness
@@ -97,6 +100,9 @@ struct BallOnBeamSettings {
 };
 
 BallOnBeamSettings read_ball_on_beam_settings(const study::Study& s);
+
+// The [contact] filter line of the plan text: which filter, over what half width.
+std::string contact_filter_description(const BallOnBeamSettings& b);
 
 // G_eq of b.psd for the Hertz radius b.contact_half_width (filter = iso2d), over the line's
 // wavenumbers; throws std::invalid_argument where the PSD has no isotropic form.
