@@ -74,7 +74,7 @@ void write_run_attributes(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums,
 
 ResolvedRun resolve_run(const RunRequest& q) {
   ResolvedRun run{load_study(q), nullptr, q.out, {}, {}};
-  const study::Study& s = run.study;
+  const study::KeyReader& s = run.study;
   run.scene = &scenes::find_scene(s.scene());
   if (run.scene->kind == scenes::SceneKind::stages_only)
     s.refuse("study.scene", "has no ensemble to run; use rollspec " +
@@ -101,7 +101,7 @@ ResolvedRun resolve_run(const RunRequest& q) {
   return run;
 }
 
-void check_resources(const study::Study& s, bool force) {
+void check_resources(const study::KeyReader& s, bool force) {
   // Before any workspace, FFT plan or table is allocated (an allocation failure inside FFTW aborts).
   scenes::check_memory(s, ensemble::ensemble_threads(), force);
 }
@@ -124,7 +124,7 @@ int run_single_phase(ResolvedRun& run, const RunRequest& q) {
 }
 
 int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
-  const study::Study& s = run.study;
+  const study::KeyReader& s = run.study;
   if (q.only >= 0 && ensemble::mpi_rank() == 0)
     run.checkpoint.lock = std::make_unique<ensemble::CheckpointLock>(run.write_path + ".checkpoint");
   if (q.only < 0 && !q.resume) open_run_checkpoint(run, q);

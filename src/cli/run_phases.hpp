@@ -38,12 +38,12 @@ struct ResolvedRun {
 ResolvedRun resolve_run(const RunRequest& request);
 
 // Phase 2: refuses a study whose memory estimate exceeds the available memory (unless forced).
-void check_resources(const study::Study& s, bool force);
+void check_resources(const study::KeyReader& s, bool force);
 
 // Phase 3: the scene of `s`, as the type T its registry entry promises (Scene, EnsembleScene or
 // SingleRunScene); an entry whose factory breaks that promise is an internal error.
 template <class T>
-std::unique_ptr<T> make_scene(const study::Study& s) {
+std::unique_ptr<T> make_scene(const study::KeyReader& s) {
   std::unique_ptr<scenes::Scene> scene = scenes::find_scene(s.scene()).make(s);
   if (!dynamic_cast<T*>(scene.get())) throw std::logic_error("scene " + s.scene() + ": not of its registered kind");
   return std::unique_ptr<T>(static_cast<T*>(scene.release()));

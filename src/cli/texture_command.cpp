@@ -32,7 +32,7 @@ void print_statistics(const char* what, std::size_t i, const texture::HeightStat
 }
 // Heights or statistics that overflowed: the PSD is too large for double precision. Refused,
 // naming where the PSD comes from, before anything is written.
-void refuse_overflow(const study::Study& s, const char* what, std::size_t i, const texture::HeightStatistics& st,
+void refuse_overflow(const study::KeyReader& s, const char* what, std::size_t i, const texture::HeightStatistics& st,
                      const double* z, std::size_t n) {
   bool finite = std::isfinite(st.rms) && (st.rms == 0.0 || (std::isfinite(st.skewness) && std::isfinite(st.kurtosis)));
   for (std::size_t k = 0; k < n && finite; ++k) finite = std::isfinite(z[k]);

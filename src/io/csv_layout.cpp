@@ -4,15 +4,11 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "src/text_trim.hpp"
+
 namespace rollspec::io {
 
 namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
 struct LineShape {
   std::size_t cells = 0;
   bool numeric = false;

@@ -13,16 +13,11 @@
 #include "src/error.hpp"
 #include "src/io/csv_layout.hpp"
 #include "src/io/input_file.hpp"
+#include "src/text_trim.hpp"
 
 namespace rollspec::io {
 
 namespace {
-std::string trim(const std::string& s, const char* blanks = " \t\r") {
-  const auto b = s.find_first_not_of(blanks);
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(blanks) - b + 1);
-}
-
 // With ';' both decimal marks occur in practice, and a file mixing them (or a value holding both: a
 // thousands separator) would be misread one way or the other, so the first value that shows a mark
 // fixes it for the file.

@@ -7,6 +7,7 @@
 #include "src/io/number_text.hpp"
 #include "src/io/signal_file.hpp"
 #include "src/io/time_column.hpp"
+#include "src/text_trim.hpp"
 
 namespace rollspec::io {
 
@@ -44,11 +45,6 @@ std::string skipped_list(const SignalTable& s) {
   std::string out;
   for (const auto& [name, why] : s.skipped) out += (out.empty() ? "" : ", ") + name + " (" + why + ")";
   return clip(out, 400);
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  return b == std::string::npos ? "" : s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
 bool known(const SignalTable& s, const std::string& name) {

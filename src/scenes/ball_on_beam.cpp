@@ -29,7 +29,7 @@
 #include "src/scenes/ball_on_beam_settings.hpp"
 #include "src/scenes/ball_on_beam_writer.hpp"
 #include "src/scenes/psd_rows.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
@@ -54,7 +54,7 @@ struct Workspace {
 
 class BallOnBeam final : public EnsembleScene {
  public:
-  explicit BallOnBeam(const Study& s) : b_(read_ball_on_beam_settings(s)) {
+  explicit BallOnBeam(const KeyReader& s) : b_(read_ball_on_beam_settings(s)) {
     lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
@@ -68,7 +68,7 @@ class BallOnBeam final : public EnsembleScene {
 
   // texture, surface, stiffness_table, blocked_force, dynamics, spectra: the tables are stage
   // objects whose inspection `plan` prints and whose resolution prepare() runs.
-  void add_pipeline_stages(const Study& s) {
+  void add_pipeline_stages(const KeyReader& s) {
     if (b_.path_law())
       add_stages(
           {{"texture", StageStatus::skipped, "law = path: the path table's strip is the roughness (no line texture)"}});
@@ -169,9 +169,9 @@ class BallOnBeam final : public EnsembleScene {
   // A cached table of strip 0 that the contact law takes: its file and hash from (study, grid, R, E*,
   // W), built from the same, completed by a use_* member.
   template <class Table, class Grid>
-  void add_contact_table_stage(const char* name, const Study& s, const Grid& grid,
-                               stiffness::CachedTable (*cached)(const Study&, const Grid&, double, double, double),
-                               Table (*build)(const Study&, const Grid&, double, double, double, bool),
+  void add_contact_table_stage(const char* name, const KeyReader& s, const Grid& grid,
+                               stiffness::CachedTable (*cached)(const KeyReader&, const Grid&, double, double, double),
+                               Table (*build)(const KeyReader&, const Grid&, double, double, double, bool),
                                void (BallOnBeam::*use)(const Table&, const std::string&, bool), std::string detail) {
     const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus, weight = b_.weight();
     add_stage(std::make_unique<TableStage>(
@@ -478,6 +478,6 @@ class BallOnBeam final : public EnsembleScene {
 
 }  // namespace
 
-std::unique_ptr<Scene> make_ball_on_beam(const Study& s) { return std::make_unique<BallOnBeam>(s); }
+std::unique_ptr<Scene> make_ball_on_beam(const KeyReader& s) { return std::make_unique<BallOnBeam>(s); }
 
 }  // namespace rollspec::scenes

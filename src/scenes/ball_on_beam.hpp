@@ -17,9 +17,9 @@ class ModalBeam;
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> ball_on_beam_keys();
-std::unique_ptr<Scene> make_ball_on_beam(const study::Study& s);
+std::unique_ptr<Scene> make_ball_on_beam(const study::KeyReader& s);
 
 // The modal beam a study describes (for `rollspec modes`).
-beam::ModalBeam study_modal_beam(const study::Study& s);
+beam::ModalBeam study_modal_beam(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -55,6 +55,6 @@ std::vector<KeySpec> ball_on_beam_keys() {
   return k;
 }
 
-beam::ModalBeam study_modal_beam(const Study& s) { return ModalBeamSection::parse(s).modal_beam(); }
+beam::ModalBeam study_modal_beam(const KeyReader& s) { return ModalBeamSection::parse(s).modal_beam(); }
 
 }  // namespace rollspec::scenes

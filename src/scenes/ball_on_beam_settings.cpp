@@ -19,12 +19,12 @@
 #include "src/study/sections/roughness_section.hpp"
 #include "src/study/sections/sensors_section.hpp"
 #include "src/study/sections/signal_section.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
 
-using study::Study;
+using study::KeyReader;
 
 namespace {
 
@@ -183,7 +183,7 @@ texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
                                        std::min(M_PI / b.spacing, b.band_limit_wavenumber));
 }
 
-BallOnBeamSettings read_ball_on_beam_settings(const Study& s) {
+BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
   const study::ModalBeamSection beam_section = study::ModalBeamSection::parse(s);
   const study::SignalSection signal = study::SignalSection::parse(s);
   const study::SensorsSection sensors = study::SensorsSection::parse(s);

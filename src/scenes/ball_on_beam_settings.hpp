@@ -25,7 +25,7 @@
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::scenes {
@@ -99,7 +99,7 @@ struct BallOnBeamSettings {
   double integration_step() const { return 1.0 / (model.sample_rate * static_cast<double>(step.substeps)); }
 };
 
-BallOnBeamSettings read_ball_on_beam_settings(const study::Study& s);
+BallOnBeamSettings read_ball_on_beam_settings(const study::KeyReader& s);
 
 // The [contact] filter line of the plan text: which filter, over what half width.
 std::string contact_filter_description(const BallOnBeamSettings& b);

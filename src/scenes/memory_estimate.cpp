@@ -18,7 +18,7 @@
 #include "src/study/sections/output_section.hpp"
 #include "src/study/sections/signal_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -35,9 +35,9 @@ struct Item {
   std::string what;
 };
 
-double key_real(const study::Study& s, const std::string& k) { return s.has(k) ? s.real(k) : 0.0; }
+double key_real(const study::KeyReader& s, const std::string& k) { return s.has(k) ? s.real(k) : 0.0; }
 
-std::vector<std::string> where(const study::Study& s, const std::vector<std::string>& keys) {
+std::vector<std::string> where(const study::KeyReader& s, const std::vector<std::string>& keys) {
   std::vector<std::string> out;
   for (const auto& k : keys) {
     if (!s.has(k)) continue;  // a term shared by scenes names only the keys this one has
@@ -48,23 +48,23 @@ std::vector<std::string> where(const study::Study& s, const std::vector<std::str
 }
 
 // The ball's weight and E* as the scene derives them (ball_section), not a second formula.
-double ball_weight(const study::Study& s) { return study::BallSection::parse(s).weight(); }
+double ball_weight(const study::KeyReader& s) { return study::BallSection::parse(s).weight(); }
 
-double ball_e_star(const study::Study& s) {
+double ball_e_star(const study::KeyReader& s) {
   const study::ModalBeamSection beam = study::ModalBeamSection::parse(s);
   return study::BallSection::parse(s).effective_modulus(beam.properties.youngs_modulus, beam.poisson);
 }
 
 // Contact solves on an nx x ny grid: the padded (2nx x 2ny) half-space operator and its FFT
 // buffers, about five complex arrays (measured: 77 MB peak at 512^2).
-Item contact_grid(const study::Study& s) {
+Item contact_grid(const study::KeyReader& s) {
   const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
   return {16.0 * 4.0 * nx * ny * 5.0, where(s, {"surface.nx", "surface.ny"}), "contact solver grid"};
 }
 
 // The solver's square window and the rough strip it slides along, on the grid the stage uses
 // (derived from the contact radius where the study leaves it open).
-Item blocked_force_window(const study::Study& s) {
+Item blocked_force_window(const study::KeyReader& s) {
   const double radius = study::BallSection::parse(s).radius, weight = ball_weight(s), e_star = ball_e_star(s);
   const auto g = stiffness::blocked_force_geometry(
       study::BlockedForceSection::parse(s), study::StripSurfaceSection::parse(s), texture_io::study_psd(s), radius,
@@ -77,7 +77,7 @@ Item blocked_force_window(const study::Study& s) {
 }
 
 // Isotropic surfaces kept for the output (count x ny x nx) plus the generator's complex FFT grid.
-Item surfaces(const study::Study& s, double count) {
+Item surfaces(const study::KeyReader& s, double count) {
   const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
   return {8.0 * nx * ny * (count + 6.0), where(s, {"surface.nx", "surface.ny", "surface.count"}), "isotropic surfaces"};
 }
@@ -86,7 +86,7 @@ Item surfaces(const study::Study& s, double count) {
 // tree keeps (at most log2 of the chunk count, and log2 of the chunk size while a chunk is added,
 // each [sum, sum of squares]) and the copies of the final reduction. It no longer grows with the
 // number of chunks (TreeAccumulator). Values per realisation: PSD and band rows of each output row.
-Item chunk_sums(const study::Study& s, double rows) {
+Item chunk_sums(const study::KeyReader& s, double rows) {
   const double nf = key_real(s, "spectrum.segment") / 2.0 + 1.0;
   const double values = 2.0 * rows * (nf + 40.0) + 8.0;
   const double K = std::max(key_real(s, "study.realisations"), 1.0),
@@ -100,7 +100,7 @@ Item chunk_sums(const study::Study& s, double rows) {
 struct WelchShape {
   double nf = 0.0, segments = 0.0, lags = 0.0;
 };
-WelchShape welch_shape(const study::Study& s, double samples) {
+WelchShape welch_shape(const study::KeyReader& s, double samples) {
   const double L = key_real(s, "spectrum.segment");
   const double hop = std::max(1.0, L - std::floor(key_real(s, "spectrum.overlap") * L));
   const double n = samples - std::ceil(key_real(s, "spectrum.skip_start") * key_real(s, "signal.sample_rate"));
@@ -110,7 +110,7 @@ WelchShape welch_shape(const study::Study& s, double samples) {
 // The linearised reference (kernels/beam/linear_reference.cpp): the sensors' cross-spectra, one per
 // sensor pair, summed per Welch segment group on the fine grid (refine 8) and smoothed per bin:
 // (16 x 8 + 16) bytes per pair, group and bin, plus the dof of the mean over all pairs.
-Item linear_reference(const study::Study& s, double sensors, double samples) {
+Item linear_reference(const study::KeyReader& s, double sensors, double samples) {
   const WelchShape w = welch_shape(s, samples);
   const double pairs = sensors * (sensors + 1.0) / 2.0, groups = w.segments * w.lags;
   return {pairs * groups * w.nf * (16.0 * 8.0 + 16.0 * 2.0), where(s, {"sensors.positions", "output.reference"}),
@@ -120,7 +120,7 @@ Item linear_reference(const study::Study& s, double sensors, double samples) {
 
 // law = path: P(delta_j, xi_k) rows of every approach (position, force, stiffness per row, the
 // table and its interpolation copy), the strip, and one contact solver window per thread.
-Item path_table(const study::Study& s, double threads) {
+Item path_table(const study::KeyReader& s, double threads) {
   const double weight = ball_weight(s);
   const auto g = stiffness::path_table_geometry(study::PathTableSection::parse(s), study::BlockedForceSection::parse(s),
                                                 study::StripSurfaceSection::parse(s), texture_io::study_psd(s),
@@ -138,7 +138,7 @@ Item path_table(const study::Study& s, double threads) {
 // rolling-beam keeps every recorded state (positions, velocities, accelerations, angular
 // velocities and accelerations, rotations; contacts; energies) and copies one field at the write;
 // the Newton system is a band matrix of 6 dofs per node.
-std::vector<Item> rolling_beam(const study::Study& s) {
+std::vector<Item> rolling_beam(const study::KeyReader& s) {
   const RollingBeamSettings r = read_rolling_beam_settings(s);
   const double nodes = static_cast<double>(r.model.X.size()), nn = static_cast<double>(r.record.size());
   const double nc = static_cast<double>(r.model.contacts.size());
@@ -156,7 +156,7 @@ std::vector<Item> rolling_beam(const study::Study& s) {
            "beam model and its band Newton system, " + std::to_string(static_cast<long long>(nodes)) + " nodes"}};
 }
 
-std::vector<Item> items(const study::Study& s, int threads) {
+std::vector<Item> items(const study::KeyReader& s, int threads) {
   const std::string scene = s.scene();
   const double t = threads;
   std::vector<Item> out;
@@ -208,7 +208,7 @@ std::vector<Item> items(const study::Study& s, int threads) {
 
 }  // namespace
 
-MemoryEstimate estimate_memory(const study::Study& s, int threads) {
+MemoryEstimate estimate_memory(const study::KeyReader& s, int threads) {
   MemoryEstimate e;
   e.bytes = kBaseline;
   double largest = -1.0;
@@ -233,7 +233,7 @@ std::string format_bytes(double b) {
   return buf;
 }
 
-void check_memory(const study::Study& s, int threads, bool force) {
+void check_memory(const study::KeyReader& s, int threads, bool force) {
   const MemoryEstimate e = estimate_memory(s, threads);
   const double available = io::available_memory();
   if (force || !(e.bytes > available)) return;

@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::scenes {
@@ -24,13 +24,13 @@ struct MemoryEstimate {
 };
 
 // `threads`: OpenMP threads that each hold a workspace.
-MemoryEstimate estimate_memory(const study::Study& s, int threads);
+MemoryEstimate estimate_memory(const study::KeyReader& s, int threads);
 
 // "1.5 GiB" etc.
 std::string format_bytes(double bytes);
 
 // Refuses (exit 78) a study whose estimate exceeds io::available_memory(), naming the keys, unless
 // `force`.
-void check_memory(const study::Study& s, int threads, bool force);
+void check_memory(const study::KeyReader& s, int threads, bool force);
 
 }  // namespace rollspec::scenes

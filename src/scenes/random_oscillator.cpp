@@ -30,7 +30,7 @@ struct Workspace {
 
 class RandomOscillator final : public EnsembleScene {
  public:
-  explicit RandomOscillator(const Study& s) : o_(read_random_oscillator_settings(s)) {
+  explicit RandomOscillator(const KeyReader& s) : o_(read_random_oscillator_settings(s)) {
     welch_ = std::make_unique<spectral::WelchPlan>(o_.welch);
     rows_ = std::make_unique<PsdRows>(std::vector<std::string>{"mass"}, false, welch_->frequencies(), o_.band_min,
                                       o_.band_max, 0);
@@ -131,7 +131,7 @@ class RandomOscillator final : public EnsembleScene {
 
 }  // namespace
 
-std::unique_ptr<Scene> make_random_oscillator(const Study& s) { return std::make_unique<RandomOscillator>(s); }
+std::unique_ptr<Scene> make_random_oscillator(const KeyReader& s) { return std::make_unique<RandomOscillator>(s); }
 
 double random_oscillator_exact_psd(double f, double s_f, double mass, double natural_frequency, double damping_ratio,
                                    double sample_rate) {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "src/scenes/study_welch.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::scenes {
 
@@ -33,7 +33,7 @@ std::vector<KeySpec> random_oscillator_keys() {
   };
 }
 
-RandomOscillatorSettings read_random_oscillator_settings(const Study& s) {
+RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {
   RandomOscillatorSettings o;
   o.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   o.mass = s.real("oscillator.mass");

@@ -11,7 +11,7 @@
 #include "src/study/key_spec.hpp"
 
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::scenes {
@@ -31,6 +31,6 @@ struct RandomOscillatorSettings {
   double force_psd(double f) const { return (f > 0.0 && f <= f_max) ? level : 0.0; }
 };
 
-RandomOscillatorSettings read_random_oscillator_settings(const study::Study& s);
+RandomOscillatorSettings read_random_oscillator_settings(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -22,7 +22,7 @@ namespace {
 
 class RollingBeam final : public SingleRunScene {
  public:
-  explicit RollingBeam(const Study& s) : r_(read_rolling_beam_settings(s)) {
+  explicit RollingBeam(const KeyReader& s) : r_(read_rolling_beam_settings(s)) {
     add_stages(fixed_stages());  // after the members the descriptions name
   }
 
@@ -159,6 +159,6 @@ class RollingBeam final : public SingleRunScene {
 
 }  // namespace
 
-std::unique_ptr<Scene> make_rolling_beam(const Study& s) { return std::make_unique<RollingBeam>(s); }
+std::unique_ptr<Scene> make_rolling_beam(const KeyReader& s) { return std::make_unique<RollingBeam>(s); }
 
 }  // namespace rollspec::scenes

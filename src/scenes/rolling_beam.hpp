@@ -12,6 +12,6 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> rolling_beam_keys();
-std::unique_ptr<Scene> make_rolling_beam(const study::Study& s);
+std::unique_ptr<Scene> make_rolling_beam(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

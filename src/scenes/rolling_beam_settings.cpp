@@ -4,7 +4,7 @@
 #include <limits>
 #include <sstream>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::scenes {
 
@@ -15,7 +15,7 @@ namespace {
 const double inf = std::numeric_limits<double>::infinity();
 
 // ';'-separated x,y,z triples.
-std::vector<Vector3d> triples(const Study& s, const std::string& key) {
+std::vector<Vector3d> triples(const KeyReader& s, const std::string& key) {
   std::vector<Vector3d> out;
   std::istringstream in(s.text(key));
   std::string item;
@@ -37,13 +37,13 @@ std::vector<Vector3d> triples(const Study& s, const std::string& key) {
   return out;
 }
 
-Vector3d vec(const Study& s, const std::string& key) {
+Vector3d vec(const KeyReader& s, const std::string& key) {
   const auto v = s.numbers(key, 3);
   return {v[0], v[1], v[2]};
 }
 
 // Seed 000 examples 4.3 and 4.4 from the kernel's builders, with the study's contact law.
-void build_example(const Study& s, const std::string& kind, const rolling::ContactLaw& law, RollingBeamSettings& r) {
+void build_example(const KeyReader& s, const std::string& kind, const rolling::ContactLaw& law, RollingBeamSettings& r) {
   if (kind == "puck") {
     rolling::PuckParams p;
     p.radius = s.real("disc.radius");
@@ -68,7 +68,7 @@ void build_example(const Study& s, const std::string& kind, const rolling::Conta
   }
 }
 
-int node_index(const Study& s, const std::string& key, double v, const std::vector<int>& ids) {
+int node_index(const KeyReader& s, const std::string& key, double v, const std::vector<int>& ids) {
   if (v < 0 || v != std::floor(v) || v >= static_cast<double>(ids.size()))
     s.refuse(key, "node " + std::to_string(v) + " does not exist; allowed: 0.." + std::to_string(ids.size() - 1));
   return ids[static_cast<std::size_t>(v)];
@@ -159,7 +159,7 @@ std::vector<KeySpec> rolling_beam_keys() {
   };
 }
 
-RollingBeamSettings read_rolling_beam_settings(const Study& s) {
+RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   RollingBeamSettings out;
   using namespace rolling;
   const bool disc = s.text("body.kind") == "disc";

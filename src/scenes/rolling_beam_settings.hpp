@@ -12,7 +12,7 @@
 #include "src/study/key_spec.hpp"
 
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::scenes {
@@ -28,6 +28,6 @@ struct RollingBeamSettings {
   std::string step_where;            // "file:line: [analysis] dt = ..." for a run that fails
 };
 
-RollingBeamSettings read_rolling_beam_settings(const study::Study& s);
+RollingBeamSettings read_rolling_beam_settings(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

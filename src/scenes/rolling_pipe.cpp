@@ -17,7 +17,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/rng/philox_stream.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -45,7 +45,7 @@ namespace {
 
 class RollingPipe final : public EnsembleScene {
  public:
-  explicit RollingPipe(const Study& s) : p_(read_rolling_pipe_settings(s)) {
+  explicit RollingPipe(const KeyReader& s) : p_(read_rolling_pipe_settings(s)) {
     if (p_.line) {
       lines_ = texture_io::study_line_generator(s, p_.psd, p_.spacing, p_.line_samples, "roughness.spacing");
     } else {
@@ -275,6 +275,6 @@ class RollingPipe final : public EnsembleScene {
 
 }  // namespace
 
-std::unique_ptr<Scene> make_rolling_pipe(const Study& s) { return std::make_unique<RollingPipe>(s); }
+std::unique_ptr<Scene> make_rolling_pipe(const KeyReader& s) { return std::make_unique<RollingPipe>(s); }
 
 }  // namespace rollspec::scenes

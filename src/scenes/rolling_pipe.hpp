@@ -14,6 +14,6 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> rolling_pipe_keys();
-std::unique_ptr<Scene> make_rolling_pipe(const study::Study& s);
+std::unique_ptr<Scene> make_rolling_pipe(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -8,7 +8,7 @@
 
 #include "kernels/texture/psd_units.hpp"
 #include "src/scenes/study_welch.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -71,7 +71,7 @@ std::vector<KeySpec> rolling_pipe_keys() {
   return k;
 }
 
-RollingPipeSettings read_rolling_pipe_settings(const Study& s) {
+RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   using namespace rolling;
   RollingPipeSettings p;
   p.seed = static_cast<std::uint64_t>(s.integer("study.seed"));

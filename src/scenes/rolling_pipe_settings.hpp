@@ -15,7 +15,7 @@
 #include "src/study/key_spec.hpp"
 
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::scenes {
@@ -52,6 +52,6 @@ struct RollingPipeSettings {
   int nodes() const { return 2 * elements + 1; }
 };
 
-RollingPipeSettings read_rolling_pipe_settings(const study::Study& s);
+RollingPipeSettings read_rolling_pipe_settings(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

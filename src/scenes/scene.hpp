@@ -18,7 +18,7 @@ namespace rollspec::io {
 class Hdf5Writer;
 }
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::scenes {
@@ -87,7 +87,7 @@ struct SceneInfo {
   std::string description;
   SceneKind kind;                                     // which of the scene types make() returns (make_scene checks it)
   std::function<std::vector<study::KeySpec>()> keys;  // scene-specific keys (common keys are added)
-  std::function<std::unique_ptr<Scene>(const study::Study&)> make;
+  std::function<std::unique_ptr<Scene>(const study::KeyReader&)> make;
 };
 
 const std::vector<SceneInfo>& scene_registry();
@@ -102,6 +102,6 @@ const std::vector<std::string>& finishing_keys();
 
 // The study hash that chunk sums depend on (everything but the realisation count, the ensemble
 // layout and the finishing keys), used for checkpoints.
-std::uint64_t study_result_hash(const study::Study& s);
+std::uint64_t study_result_hash(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

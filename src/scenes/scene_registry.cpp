@@ -10,7 +10,7 @@
 #include "src/scenes/stiffness_scene.hpp"
 #include "src/scenes/texture_scene.hpp"
 #include "src/study/sections/spectrum_section.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/version.hpp"
 
 namespace rollspec::scenes {
@@ -21,18 +21,18 @@ const std::vector<SceneInfo>& scene_registry() {
   static const std::vector<SceneInfo> scenes = {
       {"random-oscillator",
        "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
-       SceneKind::ensemble, random_oscillator_keys, [](const Study& s) { return make_random_oscillator(s); }},
+       SceneKind::ensemble, random_oscillator_keys, [](const KeyReader& s) { return make_random_oscillator(s); }},
       {"ball-on-beam", "smooth rigid ball rolling over a rough modal beam; sensor acceleration PSDs (seeds 001, 002)",
-       SceneKind::ensemble, ball_on_beam_keys, [](const Study& s) { return make_ball_on_beam(s); }},
+       SceneKind::ensemble, ball_on_beam_keys, [](const KeyReader& s) { return make_ball_on_beam(s); }},
       {"rolling-beam", "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
-       SceneKind::single_run, rolling_beam_keys, [](const Study& s) { return make_rolling_beam(s); }},
+       SceneKind::single_run, rolling_beam_keys, [](const KeyReader& s) { return make_rolling_beam(s); }},
       {"rolling-pipe",
        "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs",
-       SceneKind::ensemble, rolling_pipe_keys, [](const Study& s) { return make_rolling_pipe(s); }},
+       SceneKind::ensemble, rolling_pipe_keys, [](const KeyReader& s) { return make_rolling_pipe(s); }},
       {"stiffness", "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
-       SceneKind::stages_only, stiffness_scene_keys, [](const Study& s) { return make_stiffness_scene(s); }},
+       SceneKind::stages_only, stiffness_scene_keys, [](const KeyReader& s) { return make_stiffness_scene(s); }},
       {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
-       SceneKind::stages_only, texture_scene_keys, [](const Study& s) { return make_texture_scene(s); }},
+       SceneKind::stages_only, texture_scene_keys, [](const KeyReader& s) { return make_texture_scene(s); }},
   };
   return scenes;
 }
@@ -80,7 +80,7 @@ const std::vector<std::string>& finishing_keys() {
   return keys;
 }
 
-std::uint64_t study_result_hash(const Study& s) {
+std::uint64_t study_result_hash(const KeyReader& s) {
   std::vector<std::string> excluded = {"study.realisations", "study.description", "ensemble.chunk_size"};
   excluded.insert(excluded.end(), finishing_keys().begin(), finishing_keys().end());
   return ensemble::fnv1a64(std::string(kVersion) + "\n" + s.canonical_text_without(excluded));

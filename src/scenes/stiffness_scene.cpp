@@ -7,7 +7,7 @@
 #include "src/error.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/stiffness_table.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -33,7 +33,7 @@ std::vector<KeySpec> stiffness_scene_keys() {
   return k;
 }
 
-ContactPair study_contact_pair(const Study& s) {
+ContactPair study_contact_pair(const KeyReader& s) {
   const std::string other = s.scene() == "stiffness" ? "flat" : "beam";
   ContactPair p{};
   p.radius = s.real("ball.radius");
@@ -46,7 +46,7 @@ ContactPair study_contact_pair(const Study& s) {
 namespace {
 class StiffnessScene final : public Scene {
  public:
-  explicit StiffnessScene(const Study& s)
+  explicit StiffnessScene(const KeyReader& s)
       : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
     if (rough_) texture_io::study_psd(s);  // validates the PSD source now
     // `rollspec stiffness` builds and prints the table through stiffness::resolve_table, the same
@@ -80,6 +80,6 @@ class StiffnessScene final : public Scene {
 };
 }  // namespace
 
-std::unique_ptr<Scene> make_stiffness_scene(const Study& s) { return std::make_unique<StiffnessScene>(s); }
+std::unique_ptr<Scene> make_stiffness_scene(const KeyReader& s) { return std::make_unique<StiffnessScene>(s); }
 
 }  // namespace rollspec::scenes

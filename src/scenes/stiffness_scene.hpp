@@ -9,12 +9,12 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> stiffness_scene_keys();
-std::unique_ptr<Scene> make_stiffness_scene(const study::Study& s);
+std::unique_ptr<Scene> make_stiffness_scene(const study::KeyReader& s);
 
 // Ball radius, effective modulus and weight of a stiffness or ball-on-beam study.
 struct ContactPair {
   double radius, effective_modulus, weight;
 };
-ContactPair study_contact_pair(const study::Study& s);
+ContactPair study_contact_pair(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -3,7 +3,7 @@
 #include <limits>
 
 #include "src/error.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -25,7 +25,7 @@ std::vector<KeySpec> texture_scene_keys() {
 namespace {
 class TextureScene final : public Scene {
  public:
-  explicit TextureScene(const Study& s) : lines_(s.integer("lines.count")), surfaces_(s.integer("surface.count")) {
+  explicit TextureScene(const KeyReader& s) : lines_(s.integer("lines.count")), surfaces_(s.integer("surface.count")) {
     texture_io::study_psd(s);    // validates the PSD source (files, ranges) now
     add_stages(fixed_stages());  // after the members the descriptions name
   }
@@ -46,6 +46,6 @@ class TextureScene final : public Scene {
 };
 }  // namespace
 
-std::unique_ptr<Scene> make_texture_scene(const Study& s) { return std::make_unique<TextureScene>(s); }
+std::unique_ptr<Scene> make_texture_scene(const KeyReader& s) { return std::make_unique<TextureScene>(s); }
 
 }  // namespace rollspec::scenes

@@ -9,6 +9,6 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> texture_scene_keys();
-std::unique_ptr<Scene> make_texture_scene(const study::Study& s);
+std::unique_ptr<Scene> make_texture_scene(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -22,7 +22,7 @@
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace fs = std::filesystem;
@@ -57,7 +57,7 @@ double BlockedForceTable::psd_at(double k) const { return path_psd_at(psd_wavenu
 namespace {
 
 // The grid enters as resolved (derived or set), so the input hash names what was computed.
-std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const KeyReader& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
@@ -77,7 +77,7 @@ void BlockedForceTable::load_from(const io::Hdf5Reader& r) {
   load = r.double_attribute("/blocked_force", "load");
 }
 
-BlockedForceTable build_blocked_force(const Study& s, const BlockedForceGeometry& geo, double radius, double e_star,
+BlockedForceTable build_blocked_force(const KeyReader& s, const BlockedForceGeometry& geo, double radius, double e_star,
                                       double load, bool quiet) {
   const double dx = geo.cell;
   const std::size_t ny = geo.ny, nx = geo.nx, window = geo.window, step = geo.step;
@@ -173,7 +173,7 @@ void BlockedForceTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/blocked_force", "load", load);
 }
 
-CachedTable blocked_force_cached_table(const Study& s, const BlockedForceGeometry& g, double radius,
+CachedTable blocked_force_cached_table(const KeyReader& s, const BlockedForceGeometry& g, double radius,
                                        double effective_modulus, double load) {
   return CachedTable(kBlockedForceTableKind, s, inputs_text(s, g, radius, effective_modulus, load));
 }

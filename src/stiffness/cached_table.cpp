@@ -12,7 +12,7 @@
 #include "src/io/provenance.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -73,7 +73,7 @@ StoredIdentity load_checked(const TableKind& kind, const std::string& path, Tabl
 
 }  // namespace
 
-CachedTable::CachedTable(const TableKind& kind, const study::Study& s, std::string inputs,
+CachedTable::CachedTable(const TableKind& kind, const study::KeyReader& s, std::string inputs,
                          const std::string& explicit_path)
     : kind_(kind), study_(&s), inputs_(std::move(inputs)), hash_(hex16(ensemble::fnv1a64(inputs_))) {
   const fs::path dir = fs::path(s.file()).parent_path();

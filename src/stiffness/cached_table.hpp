@@ -12,7 +12,7 @@ class Hdf5Reader;
 class Hdf5Writer;
 }  // namespace rollspec::io
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::stiffness {
@@ -41,7 +41,8 @@ class CachedTable {
   CachedTable() = default;
   // `explicit_path` (relative to the study's directory) or "" for the automatic name in
   // [stiffness] table_dir.
-  CachedTable(const TableKind& kind, const study::Study& s, std::string inputs, const std::string& explicit_path = "");
+  CachedTable(const TableKind& kind, const study::KeyReader& s, std::string inputs,
+              const std::string& explicit_path = "");
 
   const std::string& inputs() const { return inputs_; }
   const std::string& hash() const { return hash_; }
@@ -59,7 +60,7 @@ class CachedTable {
  private:
   void write(const std::string& write_path, const TableData& t) const;
   TableKind kind_{};
-  const study::Study* study_ = nullptr;
+  const study::KeyReader* study_ = nullptr;
   std::string inputs_, hash_, path_;
   bool automatic_ = true;
 };

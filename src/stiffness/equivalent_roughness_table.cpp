@@ -20,7 +20,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::stiffness {
 
@@ -42,7 +42,7 @@ std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& 
   return {&t.position, &t.height, &t.psd_wavenumber, &t.psd, &t.stiffness};
 }
 
-std::string inputs_text(const Study& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const KeyReader& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load)
      << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips")
@@ -77,14 +77,14 @@ double EquivalentRoughnessTable::stiffness_ratio() const {
 
 double EquivalentRoughnessTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }
 
-double equivalent_roughness_seconds(const Study& s, const BlockedForceGeometry& g) {
+double equivalent_roughness_seconds(const KeyReader& s, const BlockedForceGeometry& g) {
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window), n144 = 4.0 * 144.0 * 144.0;
   const double per_position = kSecondsPerPosition144 * n2 * std::log2(n2) / (n144 * std::log2(n144));
   return static_cast<double>(s.integer("equivalent_roughness.strips")) * static_cast<double>(g.positions) *
          per_position;
 }
 
-std::string equivalent_roughness_describe(const Study& s, const BlockedForceGeometry& g) {
+std::string equivalent_roughness_describe(const KeyReader& s, const BlockedForceGeometry& g) {
   // The chunks of kChunkPositions positions share the threads.
   const int chunks = static_cast<int>((g.positions + kChunkPositions - 1) / kChunkPositions);
   const int threads = std::max(1, std::min(omp_get_max_threads(), chunks));
@@ -136,12 +136,12 @@ void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/equivalent_roughness", "strips", strips);
 }
 
-CachedTable equivalent_roughness_cached_table(const Study& s, const BlockedForceGeometry& g, double radius,
+CachedTable equivalent_roughness_cached_table(const KeyReader& s, const BlockedForceGeometry& g, double radius,
                                               double e_star, double load) {
   return CachedTable(kEquivalentRoughnessTableKind, s, inputs_text(s, g, radius, e_star, load));
 }
 
-EquivalentRoughnessTable build_equivalent_roughness(const Study& s, const BlockedForceGeometry& geo, double radius,
+EquivalentRoughnessTable build_equivalent_roughness(const KeyReader& s, const BlockedForceGeometry& geo, double radius,
                                                     double e_star, double load, bool quiet) {
   const double dx = geo.cell;
   const std::size_t nx = geo.nx, ny = geo.ny, window = geo.window, step = geo.step;

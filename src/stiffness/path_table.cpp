@@ -20,7 +20,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::stiffness {
@@ -105,7 +105,7 @@ std::vector<const std::vector<double>*> columns(const PathTableData& t) {
   return {&t.position, &t.approach, &t.first_contact, &t.force};
 }
 
-std::string inputs_text(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
@@ -144,11 +144,11 @@ void PathTableData::save_to(io::Hdf5Writer& w) const {
   w.attribute("/path_table", "load", load);
 }
 
-CachedTable path_cached_table(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load) {
+CachedTable path_cached_table(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load) {
   return CachedTable(kPathTableKind, s, inputs_text(s, g, radius, e_star, load));
 }
 
-PathTableData build_path_table(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load,
+PathTableData build_path_table(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load,
                                bool quiet) {
   const double dx = g.base.cell;
   const texture::Surface strip = study_strip(s, StripGrid{g.nx, g.ny, dx, g.base.derived_cell}, 0);

@@ -24,7 +24,7 @@
 #include "src/study/sections/path_table_section.hpp"
 
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::stiffness {
@@ -62,10 +62,10 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& path_table,
                                       const study::StripSurfaceSection& surface, const texture::Psd& psd, double radius,
                                       double effective_modulus, double load, double path_length);
 
-CachedTable path_cached_table(const study::Study& s, const PathTableGeometry& g, double radius,
+CachedTable path_cached_table(const study::KeyReader& s, const PathTableGeometry& g, double radius,
                               double effective_modulus, double load);
 
-PathTableData build_path_table(const study::Study& s, const PathTableGeometry& g, double radius,
+PathTableData build_path_table(const study::KeyReader& s, const PathTableGeometry& g, double radius,
                                double effective_modulus, double load, bool quiet);
 
 }  // namespace rollspec::stiffness

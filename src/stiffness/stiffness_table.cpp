@@ -22,7 +22,7 @@
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace fs = std::filesystem;
@@ -69,7 +69,7 @@ const TableKind kStiffnessTableKind = {kTableFileType, "/stiffness", "stiffness-
 
 std::string StiffnessTable::checksum() const { return hex16(column_hash(columns(*this))); }
 
-CachedTable stiffness_cached_table(const study::Study& s, double ball_radius, double effective_modulus) {
+CachedTable stiffness_cached_table(const study::KeyReader& s, double ball_radius, double effective_modulus) {
   const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
@@ -120,7 +120,7 @@ void StiffnessTable::load_from(const io::Hdf5Reader& r) {
   realisations = static_cast<std::int64_t>(r.double_attribute("/stiffness", "realisations"));
 }
 
-StiffnessTable build_table(const study::Study& s, double ball_radius, double effective_modulus, bool quiet) {
+StiffnessTable build_table(const study::KeyReader& s, double ball_radius, double effective_modulus, bool quiet) {
   contact::Grid grid;
   grid.nx = static_cast<std::size_t>(s.integer("surface.nx"));
   grid.ny = static_cast<std::size_t>(s.integer("surface.ny"));
@@ -306,7 +306,7 @@ void StiffnessTable::save_to(io::Hdf5Writer& w) const {
               std::string("a summary of the table; the dynamics interpolate the table itself, never this fit"));
 }
 
-StiffnessTable resolve_table(const study::Study& s, double ball_radius, double effective_modulus, bool rebuild,
+StiffnessTable resolve_table(const study::KeyReader& s, double ball_radius, double effective_modulus, bool rebuild,
                              bool quiet, std::string& status) {
   const CachedTable cached = stiffness_cached_table(s, ball_radius, effective_modulus);
   StiffnessTable t;

@@ -14,7 +14,7 @@
 #include "src/error.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::stiffness {
 
@@ -29,7 +29,7 @@ constexpr double kSolvesPerPosition = 4.0;
 // Welch segment of the strip's h_eq PSD (positions), at most.
 constexpr std::size_t kSegment = 256;
 
-std::string inputs_text(const Study& s, const PathTableGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
@@ -60,12 +60,12 @@ std::string strip_equivalent_roughness_describe(const PathTableGeometry& g) {
   return buf;
 }
 
-CachedTable strip_equivalent_roughness_cached_table(const Study& s, const PathTableGeometry& g, double radius,
+CachedTable strip_equivalent_roughness_cached_table(const KeyReader& s, const PathTableGeometry& g, double radius,
                                                     double e_star, double load) {
   return CachedTable(kEquivalentRoughnessTableKind, s, inputs_text(s, g, radius, e_star, load));
 }
 
-EquivalentRoughnessTable build_strip_equivalent_roughness(const Study& s, const PathTableGeometry& g, double radius,
+EquivalentRoughnessTable build_strip_equivalent_roughness(const KeyReader& s, const PathTableGeometry& g, double radius,
                                                           double e_star, double load, bool quiet) {
   const double dx = g.base.cell;
   // The strip and positions of build_path_table: the same heights under the same ball centres.

@@ -12,12 +12,12 @@
 #include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::stiffness {
 
-texture::Surface study_strip(const study::Study& s, const StripGrid& grid, std::uint64_t index) {
+texture::Surface study_strip(const study::KeyReader& s, const StripGrid& grid, std::uint64_t index) {
   texture::SpectralSurfaceSpec spec;
   spec.nx = grid.nx;
   spec.ny = grid.ny;
@@ -38,7 +38,7 @@ texture::Surface study_strip(const study::Study& s, const StripGrid& grid, std::
   return strip;
 }
 
-std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
+std::string strip_inputs_text(const study::KeyReader& s, const StripGrid& g) {
   std::ostringstream in;
   const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
   for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << stiffness.text(k) << "\n";
@@ -53,7 +53,7 @@ std::string strip_inputs_text(const study::Study& s, const StripGrid& g) {
   return in.str();
 }
 
-std::string ball_inputs_text(const study::Study& s, double radius, double e_star, double load) {
+std::string ball_inputs_text(const study::KeyReader& s, double radius, double e_star, double load) {
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
      << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load)

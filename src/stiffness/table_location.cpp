@@ -6,7 +6,7 @@
 #include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
 #include "src/io/output_target.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace fs = std::filesystem;
@@ -29,7 +29,7 @@ bool lies_within(const fs::path& inner, const fs::path& outer) {
   return !rel.empty() && !climbs(rel);
 }
 
-std::string prepare_table_path(const study::Study& s, const std::string& path, const std::string& filetype,
+std::string prepare_table_path(const study::KeyReader& s, const std::string& path, const std::string& filetype,
                                bool automatic) {
   const std::string key = automatic ? "stiffness.table_dir" : "stiffness.table";
   const fs::path dir = fs::path(path).parent_path();
@@ -78,7 +78,7 @@ std::string prepare_table_path(const study::Study& s, const std::string& path, c
   }
 }
 
-std::string table_write_path(const study::Study& s, const std::string& path, const std::string& filetype,
+std::string table_write_path(const study::KeyReader& s, const std::string& path, const std::string& filetype,
                              bool automatic) {
   std::string out = path;
   std::exception_ptr failure;

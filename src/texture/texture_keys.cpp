@@ -18,7 +18,7 @@
 #include "src/io/input_file.hpp"
 #include "src/io/csv_table.hpp"
 #include "src/rng/philox_stream.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -36,14 +36,14 @@ texture::Extension extension_of(const std::string& s) {
   return texture::Extension::error;
 }
 
-std::string study_relative(const Study& s, const std::string& p) {
+std::string study_relative(const KeyReader& s, const std::string& p) {
   if (fs::path(p).is_absolute()) return p;
   return (fs::path(s.file()).parent_path() / p).string();
 }
 
 // PSD table: first column wavenumber_rad_per_m or spatial_frequency_cycles_per_m, second column
 // psd_m3 or psd_um2_m (one-sided, per unit of the first column).
-texture::Psd read_psd_table(const Study& s) {
+texture::Psd read_psd_table(const KeyReader& s) {
   const std::string path = s.path("texture.table");
   const io::CsvTable t = io::read_csv(path);
   if (t.columns.size() != 2)
@@ -95,7 +95,7 @@ texture::Profile read_profile(const std::string& path) {
 }
 
 // Eq. 15-17 of the study's measured profiles.
-texture::EstimatedPsd profile_estimate(const Study& s) {
+texture::EstimatedPsd profile_estimate(const KeyReader& s) {
   const auto files = s.list("texture.profiles");
   if (files.size() < 2)
     s.refuse("texture.profiles", "names " + std::to_string(files.size()) +
@@ -120,7 +120,7 @@ texture::EstimatedPsd profile_estimate(const Study& s) {
 
 // The estimate band-averaged in log k (kernels/texture/README.md Eq. 33-35): the raw periodogram's
 // bin-to-bin scatter would make isotropic surfaces far too rough (inverse Abel transform, Eq. 19).
-texture::Psd profile_psd(const Study& s) {
+texture::Psd profile_psd(const KeyReader& s) {
   const texture::EstimatedPsd est = profile_estimate(s);
   try {
     texture::Psd psd = texture::smoothed_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
@@ -188,7 +188,7 @@ std::vector<KeySpec> surface_keys() {
   };
 }
 
-texture::Psd study_psd(const Study& s) {
+texture::Psd study_psd(const KeyReader& s) {
   const std::string source = s.text("texture.source");
   try {
     if (source == "table") {
@@ -219,7 +219,7 @@ texture::Psd study_psd(const Study& s) {
   }
 }
 
-spectral::Amplitudes study_amplitudes(const Study& s) {
+spectral::Amplitudes study_amplitudes(const KeyReader& s) {
   return s.text("texture.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh
                                                     : spectral::Amplitudes::deterministic;
 }
@@ -236,7 +236,7 @@ std::string grid_message(const LineGeneratorKeys& k, const std::exception& e) {
 }
 }  // namespace
 
-LineGeneratorKeys LineGeneratorKeys::parse(const Study& s, const std::string& key) {
+LineGeneratorKeys LineGeneratorKeys::parse(const KeyReader& s, const std::string& key) {
   return {study_amplitudes(s), s.where(key), s.where("texture.table_extension")};
 }
 
@@ -254,20 +254,20 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
   }
 }
 
-std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const Study& s, const texture::Psd& psd,
+std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const KeyReader& s, const texture::Psd& psd,
                                                                     double spacing, std::size_t samples,
                                                                     const std::string& key, bool truncate) {
   return line_generator(LineGeneratorKeys::parse(s, key), psd, spacing, samples, truncate);
 }
 
-std::vector<std::string> profile_files(const Study& s) {
+std::vector<std::string> profile_files(const KeyReader& s) {
   std::vector<std::string> out;
   if (!s.has("texture.source") || s.text("texture.source") != "profiles") return out;
   for (const auto& f : s.list("texture.profiles")) out.push_back(study_relative(s, f));
   return out;
 }
 
-std::string psd_input_fingerprint(const Study& s) {
+std::string psd_input_fingerprint(const KeyReader& s) {
   std::ostringstream out;
   auto add_file = [&](const std::string& p) {
     std::ifstream in(p, std::ios::binary);
@@ -280,7 +280,7 @@ std::string psd_input_fingerprint(const Study& s) {
   return out.str();
 }
 
-std::vector<std::string> profile_derived_surface_keys(const Study& s) {
+std::vector<std::string> profile_derived_surface_keys(const KeyReader& s) {
   std::vector<std::string> out;
   if (!s.has("texture.source") || s.text("texture.source") != "profiles" || s.text("surface.method") != "seed")
     return out;
@@ -304,7 +304,7 @@ void SurfaceGenerator::generate(std::uint64_t seed_value, std::uint64_t realisat
   }
 }
 
-SurfaceGenerator study_surface_generator(const Study& s, const texture::Psd& psd) {
+SurfaceGenerator study_surface_generator(const KeyReader& s, const texture::Psd& psd) {
   SurfaceGenerator g;
   const auto nx = static_cast<std::size_t>(s.integer("surface.nx")),
              ny = static_cast<std::size_t>(s.integer("surface.ny"));

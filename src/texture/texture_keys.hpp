@@ -14,7 +14,7 @@
 #include "src/study/key_spec.hpp"
 
 namespace rollspec::study {
-class Study;
+class KeyReader;
 }
 
 namespace rollspec::texture_io {
@@ -25,13 +25,13 @@ std::vector<study::KeySpec> psd_keys();
 std::vector<study::KeySpec> surface_keys();
 
 // The roughness PSD a study describes (table, measured profiles, self-affine, ISO 8608, ISO 3095).
-texture::Psd study_psd(const study::Study& s);
-spectral::Amplitudes study_amplitudes(const study::Study& s);
+texture::Psd study_psd(const study::KeyReader& s);
+spectral::Amplitudes study_amplitudes(const study::KeyReader& s);
 
 // Line-texture generator of `samples` samples at `spacing` from the PSD and the study's [texture]
 // amplitudes; truncate: harmonics above pi/spacing are dropped instead of refused. Errors of the
 // generator are reported at the study key `key` (the one that set the spacing).
-std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study::Study& s, const texture::Psd& psd,
+std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study::KeyReader& s, const texture::Psd& psd,
                                                                     double spacing, std::size_t samples,
                                                                     const std::string& key, bool truncate = true);
 
@@ -40,7 +40,7 @@ std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study:
 struct LineGeneratorKeys {
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
   std::string spacing_where, extension_where;
-  static LineGeneratorKeys parse(const study::Study& s, const std::string& key);
+  static LineGeneratorKeys parse(const study::KeyReader& s, const std::string& key);
 };
 // study_line_generator from those (for a scene that builds its line after the study is gone).
 std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& keys, const texture::Psd& psd,
@@ -48,15 +48,15 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
                                                               bool truncate = true);
 
 // The measured profile files of [texture] profiles (empty for other sources or scenes without [texture]).
-std::vector<std::string> profile_files(const study::Study& s);
+std::vector<std::string> profile_files(const study::KeyReader& s);
 
 // Seed-method [surface] keys (sigma, correlation_x, correlation_y) that are not set and so take the
 // measured profiles' values (seed 001 §3.1, Eq. 10); empty unless source = profiles and method = seed.
 // Cached tables hash this list: the canonical text shows such a key at its default.
-std::vector<std::string> profile_derived_surface_keys(const study::Study& s);
+std::vector<std::string> profile_derived_surface_keys(const study::KeyReader& s);
 
 // Contents of every input file the PSD depends on, for hashes of cached tables.
-std::string psd_input_fingerprint(const study::Study& s);
+std::string psd_input_fingerprint(const study::KeyReader& s);
 
 // Surface generator of a study's [surface] section: exactly one of the two is set.
 struct SurfaceGenerator {
@@ -66,6 +66,6 @@ struct SurfaceGenerator {
   // Draws from Philox (seed, realisation, surface streams) and fills out.
   void generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out) const;
 };
-SurfaceGenerator study_surface_generator(const study::Study& s, const texture::Psd& psd);
+SurfaceGenerator study_surface_generator(const study::KeyReader& s, const texture::Psd& psd);
 
 }  // namespace rollspec::texture_io

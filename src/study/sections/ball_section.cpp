@@ -5,7 +5,7 @@
 #include <string>
 
 #include "kernels/contact/geometry.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -24,7 +24,7 @@ std::vector<KeySpec> BallSection::keys() {
   };
 }
 
-BallSection BallSection::parse(const Study& s) {
+BallSection BallSection::parse(const KeyReader& s) {
   BallSection b;
   b.radius = s.real("ball.radius");
   b.density = s.real("ball.density");

@@ -9,7 +9,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct BallSection {
   double radius = 0.0, density = 0.0, youngs_modulus = 0.0, poisson = 0.0;
@@ -17,7 +17,7 @@ struct BallSection {
   KeyOrigin end_origin;
 
   static std::vector<KeySpec> keys();
-  static BallSection parse(const Study& s);
+  static BallSection parse(const KeyReader& s);
   double mass() const;    // 4/3 pi R^3 rho
   double weight() const;  // mass x gravity
   // E* of the ball on a body of modulus E and Poisson's ratio nu (kernels/contact geometry).

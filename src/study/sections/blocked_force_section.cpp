@@ -3,7 +3,7 @@
 #include <limits>
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -27,7 +27,7 @@ std::vector<KeySpec> BlockedForceSection::keys() {
   };
 }
 
-BlockedForceSection BlockedForceSection::parse(const Study& s) {
+BlockedForceSection BlockedForceSection::parse(const KeyReader& s) {
   BlockedForceSection b;
   b.strip_length = s.real("blocked_force.strip_length");
   b.window = s.integer("blocked_force.window");

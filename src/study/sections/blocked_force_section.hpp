@@ -9,7 +9,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct BlockedForceSection {
   double strip_length = 0.0;                    // m; 0: derived
@@ -17,7 +17,7 @@ struct BlockedForceSection {
   KeyOrigin strip_length_origin, window_origin, segment_origin;
 
   static std::vector<KeySpec> keys();
-  static BlockedForceSection parse(const Study& s);
+  static BlockedForceSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

@@ -3,7 +3,7 @@
 #include <limits>
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -36,7 +36,7 @@ std::vector<KeySpec> ContactSection::keys() {
   };
 }
 
-ContactSection ContactSection::parse(const Study& s) {
+ContactSection ContactSection::parse(const KeyReader& s) {
   ContactSection p;
   p.law = s.text("contact.law");
   p.damping = s.real("contact.damping");

@@ -10,7 +10,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct ContactSection {
   std::string law, loss, blocked_force, filter;  // as written
@@ -18,7 +18,7 @@ struct ContactSection {
   KeyOrigin filter_origin;
 
   static std::vector<KeySpec> keys();
-  static ContactSection parse(const Study& s);
+  static ContactSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

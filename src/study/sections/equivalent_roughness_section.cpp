@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -25,7 +25,7 @@ std::vector<KeySpec> EquivalentRoughnessSection::keys() {
   };
 }
 
-EquivalentRoughnessSection EquivalentRoughnessSection::parse(const Study& s) {
+EquivalentRoughnessSection EquivalentRoughnessSection::parse(const KeyReader& s) {
   EquivalentRoughnessSection p;
   p.strips = s.integer("equivalent_roughness.strips");
   p.line = s.text("equivalent_roughness.line");

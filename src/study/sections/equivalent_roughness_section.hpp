@@ -9,7 +9,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct EquivalentRoughnessSection {
   long long strips = 0;
@@ -17,7 +17,7 @@ struct EquivalentRoughnessSection {
   KeyOrigin line_origin;
 
   static std::vector<KeySpec> keys();
-  static EquivalentRoughnessSection parse(const Study& s);
+  static EquivalentRoughnessSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

@@ -4,7 +4,7 @@
 #include <limits>
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -31,7 +31,7 @@ std::vector<KeySpec> ModalBeamSection::keys() {
   };
 }
 
-ModalBeamSection ModalBeamSection::parse(const Study& s) {
+ModalBeamSection ModalBeamSection::parse(const KeyReader& s) {
   ModalBeamSection b;
   beam::BeamProperties& p = b.properties;
   p.support =

@@ -8,7 +8,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct ModalBeamSection {
   beam::BeamProperties properties;
@@ -19,7 +19,7 @@ struct ModalBeamSection {
   KeyOrigin effective_length_origin, modes_origin, max_frequency_origin;
 
   static std::vector<KeySpec> keys();
-  static ModalBeamSection parse(const Study& s);
+  static ModalBeamSection parse(const KeyReader& s);
   // The modes. Refuses an effective length shorter than the span, modes = 0 without max_frequency,
   // and (at [beam] modes) a beam the kernel refuses.
   beam::ModalBeam modal_beam() const;

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -16,7 +16,7 @@ std::vector<KeySpec> OutputSection::keys() {
   };
 }
 
-OutputSection OutputSection::parse(const Study& s) {
+OutputSection OutputSection::parse(const KeyReader& s) {
   OutputSection p;
   p.time_histories = s.integer("output.time_histories");
   p.reference = s.boolean("output.reference");

@@ -8,14 +8,14 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct OutputSection {
   long long time_histories = 0;
   bool reference = true;
 
   static std::vector<KeySpec> keys();
-  static OutputSection parse(const Study& s);
+  static OutputSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

@@ -3,7 +3,7 @@
 #include <limits>
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -23,7 +23,7 @@ std::vector<KeySpec> PathTableSection::keys() {
   };
 }
 
-PathTableSection PathTableSection::parse(const Study& s) {
+PathTableSection PathTableSection::parse(const KeyReader& s) {
   PathTableSection p;
   p.approaches = s.integer("path_table.approaches");
   p.step = s.integer("path_table.step");

@@ -8,7 +8,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct PathTableSection {
   long long approaches = 0, step = 0;  // step 0: derived
@@ -16,7 +16,7 @@ struct PathTableSection {
   KeyOrigin strip_length_origin;
 
   static std::vector<KeySpec> keys();
-  static PathTableSection parse(const Study& s);
+  static PathTableSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

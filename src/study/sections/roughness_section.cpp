@@ -3,7 +3,7 @@
 #include <limits>
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -23,7 +23,7 @@ std::vector<KeySpec> RoughnessSection::keys() {
   };
 }
 
-RoughnessSection RoughnessSection::parse(const Study& s) {
+RoughnessSection RoughnessSection::parse(const KeyReader& s) {
   RoughnessSection p;
   p.spacing = s.real("roughness.spacing");
   p.band_limit = s.text("roughness.band_limit");

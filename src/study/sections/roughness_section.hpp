@@ -9,7 +9,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct RoughnessSection {
   double spacing = 0.0;    // m; 0: derived from the step
@@ -17,7 +17,7 @@ struct RoughnessSection {
   KeyOrigin spacing_origin;
 
   static std::vector<KeySpec> keys();
-  static RoughnessSection parse(const Study& s);
+  static RoughnessSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -15,7 +15,7 @@ std::vector<KeySpec> SensorsSection::keys() {
   };
 }
 
-SensorsSection SensorsSection::parse(const Study& s) {
+SensorsSection SensorsSection::parse(const KeyReader& s) {
   SensorsSection p;
   p.positions = s.numbers("sensors.positions");
   p.average = s.boolean("sensors.average");

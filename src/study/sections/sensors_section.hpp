@@ -9,7 +9,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct SensorsSection {
   std::vector<double> positions;  // m, as listed
@@ -17,7 +17,7 @@ struct SensorsSection {
   KeyOrigin positions_origin;
 
   static std::vector<KeySpec> keys();
-  static SensorsSection parse(const Study& s);
+  static SensorsSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

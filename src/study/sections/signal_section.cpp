@@ -3,7 +3,7 @@
 #include <limits>
 #include <string>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -22,7 +22,7 @@ std::vector<KeySpec> SignalSection::keys() {
   };
 }
 
-SignalSection SignalSection::parse(const Study& s) {
+SignalSection SignalSection::parse(const KeyReader& s) {
   SignalSection p;
   p.sample_rate = s.real("signal.sample_rate");
   p.substeps = s.integer("signal.substeps");

@@ -9,7 +9,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct SignalSection {
   double sample_rate = 0.0, rtol = 0.0;
@@ -18,7 +18,7 @@ struct SignalSection {
   KeyOrigin substeps_origin;
 
   static std::vector<KeySpec> keys();
-  static SignalSection parse(const Study& s);
+  static SignalSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "kernels/spectral/third_octave_bands.hpp"
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -24,7 +24,7 @@ std::vector<KeySpec> SpectrumSection::keys() {
   };
 }
 
-SpectrumSection SpectrumSection::parse(const Study& s) {
+SpectrumSection SpectrumSection::parse(const KeyReader& s) {
   SpectrumSection p;
   p.segment = s.integer("spectrum.segment");
   p.overlap = s.real("spectrum.overlap");

@@ -12,7 +12,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct SpectrumSection {
   long long segment = 0;
@@ -21,7 +21,7 @@ struct SpectrumSection {
   KeyOrigin segment_origin, band_min_origin, band_max_origin, skip_start_origin;
 
   static std::vector<KeySpec> keys();  // the shared keys (not skip_start: its doc is the scene's)
-  static SpectrumSection parse(const Study& s);
+  static SpectrumSection parse(const KeyReader& s);
 
   // Refuses, before any work, a band_min / band_max range that holds no whole third-octave band
   // between the frequency step and the Nyquist frequency of the scene's sample rate.

@@ -3,7 +3,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
@@ -35,7 +35,7 @@ std::vector<KeySpec> StiffnessSection::keys() {
   };
 }
 
-StiffnessSection StiffnessSection::parse(const Study& s) {
+StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   StiffnessSection t;
   t.rough = s.text("stiffness.surface") == "rough";
   t.shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;

@@ -14,7 +14,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct StiffnessSection {
   bool rough = true;  // surface = rough (else a smooth flat)
@@ -25,7 +25,7 @@ struct StiffnessSection {
   KeyOrigin ball_rms_origin, approach_max_origin;
 
   static std::vector<KeySpec> keys();
-  static StiffnessSection parse(const Study& s);
+  static StiffnessSection parse(const KeyReader& s);
   // The canonical value text of [stiffness] `key` (as the resolved study writes it).
   const std::string& text(const std::string& key) const;
 

@@ -1,10 +1,10 @@
 #include "src/study/sections/strip_surface_section.hpp"
 
-#include "src/study/study.hpp"
+#include "src/study/key_reader.hpp"
 
 namespace rollspec::study {
 
-StripSurfaceSection StripSurfaceSection::parse(const Study& s) {
+StripSurfaceSection StripSurfaceSection::parse(const KeyReader& s) {
   StripSurfaceSection t;
   t.spacing_set = s.is_set("surface.spacing");
   t.ny_set = s.is_set("surface.ny");

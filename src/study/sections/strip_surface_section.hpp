@@ -6,7 +6,7 @@
 
 namespace rollspec::study {
 
-class Study;
+class KeyReader;
 
 struct StripSurfaceSection {
   bool spacing_set = false, ny_set = false;  // false: derived from the contact radius
@@ -16,7 +16,7 @@ struct StripSurfaceSection {
   double rolloff_wavelength = 0.0;  // [texture] rolloff_wavelength
   KeyOrigin ny_origin, spacing_origin;
 
-  static StripSurfaceSection parse(const Study& s);
+  static StripSurfaceSection parse(const KeyReader& s);
 };
 
 }  // namespace rollspec::study
