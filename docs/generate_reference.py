@@ -84,6 +84,11 @@ def code(s):
     return f"{tick}{s}{tick}"
 
 
+def without_build_id(text):
+    """`rollspec version` prints the commit it was built from; the page shows where it goes instead."""
+    return re.sub(r"\(git [0-9a-f]+(-dirty)?\)", "(git <commit of the build>)", text)
+
+
 def write_commands(binary, out):
     lines = ["# Commands and options", "",
              "Generated at build time from `rollspec --help` and `rollspec COMMAND --help` of the binary the "
@@ -91,7 +96,7 @@ def write_commands(binary, out):
              "```text", run([binary, "--help"]).rstrip(), "```", ""]
     for name, meaning in commands(binary):
         lines += [f"(command-{name})=", f"## `rollspec {name}`", "", meaning[:1].upper() + meaning[1:] + ".", "",
-                  "```text", run([binary, name, "--help"]).rstrip(), "```", ""]
+                  "```text", without_build_id(run([binary, name, "--help"])).rstrip(), "```", ""]
     (out / "commands.md").write_text("\n".join(lines))
 
 

@@ -73,11 +73,28 @@ def test_schema_exit_codes_and_api_are_generated(site):
     assert list((site / "_images").glob("goals*.png")), "the benchmark figure from bench/goals.json"
 
 
-def test_readme_is_short_and_has_no_lab_notebook():
-    text = (SOURCE / "README.md").read_text()
-    assert len(text.splitlines()) <= 170
+def lab_notebook_findings(text):
+    """Commit hashes, issue numbers and load averages in a user-facing text (empty: none)."""
     hashes = [w for w in re.findall(r"\b[0-9a-f]{7,40}\b", text)
               if re.search(r"[a-f]", w) and re.search(r"\d", w) and not re.fullmatch(r"\d+e\d+", w)]
-    assert not hashes, f"commit hashes in the README: {hashes}"
-    assert not re.search(r"\bissues? #?\d+", text, re.I), "an issue number in the README"
-    assert not re.search(r"load average", text, re.I), "a load average in the README"
+    found = [f"commit hash {h}" for h in hashes]
+    found += [f"issue number '{m}'" for m in re.findall(r"\bissues? #?\d+", text, re.I)]
+    found += ["load average" for _ in re.findall(r"load average", text, re.I)]
+    return found
+
+
+def test_readme_is_short_and_has_no_lab_notebook():
+    text = (SOURCE / "README.md").read_text()
+    assert len(text.splitlines()) <= 160
+    assert not lab_notebook_findings(text), lab_notebook_findings(text)
+
+
+def test_no_site_page_names_an_issue_a_commit_or_a_load_average(site):
+    found = {}
+    for page in sorted(site.rglob("*.html")):
+        if page.name in ("genindex.html", "search.html", "py-modindex.html") or "_modules" in page.parts:
+            continue
+        hits = lab_notebook_findings(text_of(page))
+        if hits:
+            found[str(page.relative_to(site))] = hits[:5]
+    assert not found, f"lab-notebook material on the site: {found}"
