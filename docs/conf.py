@@ -12,11 +12,22 @@ sys.path.insert(0, str(REPO / "python-post"))
 project = "rollspec"
 author = "the rollspec authors"
 copyright = "rollspec authors"
-extensions = ["myst_parser", "sphinx.ext.autodoc", "sphinx.ext.napoleon"]
-source_suffix = {".md": "markdown"}
+extensions = ["myst_parser", "sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx_gallery.gen_gallery"]
+# docs/examples/plot_*.py are run on every build (a failing example fails the build) and their
+# figures and printed lines shown in the gallery.
+sphinx_gallery_conf = {
+    "examples_dirs": "examples",
+    "gallery_dirs": "gallery",
+    "filename_pattern": "/plot_",
+    "abort_on_example_error": True,
+    "only_warn_on_example_error": False,
+    "download_all_examples": False,
+    "remove_config_comments": True,
+}
+source_suffix = {".md": "markdown", ".rst": "restructuredtext"}  # .rst: the gallery's generated pages
 myst_enable_extensions = ["colon_fence", "dollarmath"]
 myst_heading_anchors = 3
-exclude_patterns = ["_repo", "_repo/**", "build.sh", "**/README.md", "validation/generated/goals-table.md"]
+exclude_patterns = ["_repo", "_repo/**", "build.sh", "**/README.md", "examples/**", "validation/generated/goals-table.md"]
 html_theme = "furo"
 html_title = "rollspec"
 autodoc_member_order = "bysource"

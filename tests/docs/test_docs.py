@@ -98,3 +98,22 @@ def test_no_site_page_names_an_issue_a_commit_or_a_load_average(site):
         if hits:
             found[str(page.relative_to(site))] = hits[:5]
     assert not found, f"lab-notebook material on the site: {found}"
+
+
+def test_citation_and_changelog_are_readable():
+    import yaml
+    cff = yaml.safe_load((SOURCE / "CITATION.cff").read_text())
+    assert cff["cff-version"] == "1.2.0" and cff["title"] and cff["authors"]
+    version = subprocess.run([BIN, "version"], capture_output=True, text=True, check=True).stdout.split()[1]
+    assert cff["version"] == version, f"CITATION.cff says {cff['version']}, the binary {version}"
+    changelog = (SOURCE / "CHANGELOG.md").read_text()
+    assert "## [Unreleased]" in changelog and f"## [{version}]" in changelog
+
+
+def test_gallery_examples_ran(site):
+    examples = sorted((SOURCE / "docs" / "examples").glob("plot_*.py"))
+    assert examples
+    for example in examples:
+        page = site / "gallery" / (example.stem + ".html")
+        assert page.exists(), f"{example.name} has no gallery page"
+        assert f"sphx_glr_{example.stem}_001.png" in page.read_text(), f"{example.name} drew no figure"
