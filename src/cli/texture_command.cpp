@@ -112,8 +112,9 @@ int texture_command(const Args& args) {
   if (samples < 8 || samples > 1 << 26)
     line_keys.length_origin.refuse("gives " + std::to_string(samples) +
                                    " samples at [lines] spacing; allowed: 8 to 2^26");
-  const auto lines = texture_io::line_generator(texture_io::LineGeneratorKeys::of(tex, line_keys.spacing_origin), psd,
-                                                spacing, static_cast<std::size_t>(samples), false);
+  const auto lines =
+      texture_io::line_generator(texture_io::LineGeneratorKeys::of(tex, line_keys.spacing_origin, "[lines] spacing"),
+                                 psd, spacing, static_cast<std::size_t>(samples), false);
   const texture::LineTextureSpec& ls = lines->spec();
   const texture_io::SurfaceGenerator surfaces =
       n_surf ? texture_io::surface_generator(tex, surface_keys, psd) : texture_io::SurfaceGenerator{};

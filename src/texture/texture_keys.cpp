@@ -1,6 +1,8 @@
 #include "src/texture/texture_keys.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -19,6 +21,7 @@
 #include "src/io/csv_table.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/ball_section.hpp"
 #include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
 
@@ -170,23 +173,75 @@ spectral::Amplitudes study_amplitudes(const TextureSection& s) {
 }
 
 namespace {
-// A table PSD asked for a wavenumber outside its range: name the key that allows it.
-std::string grid_message(const LineGeneratorKeys& k, const std::exception& e) {
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+// ISO 3095 covers 400 mm down to 3.15 mm: say so, and the frequency of its shortest wavelength.
+std::string iso3095_note(const LineGeneratorKeys& k) {
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
+  for (const auto& b : texture::iso3095_rail_roughness_limit()) {
+    shortest = std::min(shortest, b.wavelength_nominal);
+    longest = std::max(longest, b.wavelength_nominal);
+  }
+  std::string m = "; the ISO 3095 spectrum stops at " + num(shortest * 1e3) + " mm wavelength (its longest is " +
+                  num(longest * 1e3) + " mm)";
+  if (k.speed > 0.0)
+    m += ": " + num(shortest * 1e3) + " mm is " + num(k.speed / shortest) + " Hz at " + k.speed_key + " = " +
+         num(k.speed) + " m/s";
+  return m;
+}
+
+// A grid error of the kernels in study keys: which key to change and to what. spacing: the grid's
+// dx; stretch: how much finer than pi/k_max the grid must be (the anisotropy of spectral surfaces).
+std::string grid_message(const LineGeneratorKeys& k, const std::exception& e, double spacing, double stretch) {
   std::string m = k.spacing_where + ": " + e.what();
-  if (dynamic_cast<const std::domain_error*>(&e))
-    m += "; allowed: a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
-         "a coarser spacing), or " +
-         k.extension_where + " set to zero, constant or power_law";
+  if (dynamic_cast<const std::domain_error*>(&e)) {  // a table PSD asked outside its range
+    m += "; allowed: [texture] table_extension set to zero, constant or power_law (now " + k.extension_where +
+         "), or a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
+         "a coarser spacing)";
+    if (k.source == "iso3095") m += iso3095_note(k);
+  }
+  if (const auto* u = dynamic_cast<const texture::UnresolvedPsd*>(&e)) {
+    if (!std::isfinite(u->k_max)) {  // a table extended beyond its last wavenumber
+      m += "; allowed: [texture] table_extension = zero or error (now " + k.extension + "), so that the PSD ends at " +
+           "the table's last wavenumber, with " + k.spacing_key + " at most pi over that wavenumber";
+    } else {
+      m += "; allowed: " + k.spacing_key + " at most " + num(M_PI / (u->k_max * stretch)) + " m";
+      if (k.source == "self-affine")
+        m += ", or [texture] short_wavelength at least " + num(2.0 * spacing * stretch) + " m";
+      if (k.source == "iso3095") m += iso3095_note(k);
+    }
+  }
   return m;
 }
 }  // namespace
 
-LineGeneratorKeys LineGeneratorKeys::of(const TextureSection& t, const KeyOrigin& spacing) {
-  return {study_amplitudes(t), spacing.where, t.table_extension_origin.where};
+LineGeneratorKeys LineGeneratorKeys::of(const TextureSection& t, const KeyOrigin& spacing,
+                                        const std::string& spacing_key) {
+  LineGeneratorKeys k;
+  k.amplitudes = study_amplitudes(t);
+  k.spacing_where = spacing.where;
+  k.extension_where = t.table_extension_origin.where;
+  k.spacing_key = spacing_key;
+  k.source = t.source;
+  k.extension = t.table_extension;
+  return k;
 }
 
 LineGeneratorKeys LineGeneratorKeys::parse(const KeyReader& s, const std::string& key) {
-  return of(TextureSection::parse(s), KeyOrigin{s.where(key)});
+  const auto dot = key.find('.');
+  LineGeneratorKeys k =
+      of(TextureSection::parse(s), KeyOrigin{s.where(key)}, "[" + key.substr(0, dot) + "] " + key.substr(dot + 1));
+  for (const auto& spec : s.keys())
+    if (spec.section == "ball") {  // a rolling ball: its speed turns wavelengths into frequencies
+      k.speed = BallSection::parse(s).speed;
+      k.speed_key = "[ball] speed";
+      break;
+    }
+  return k;
 }
 
 std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& k, const texture::Psd& psd,
@@ -199,7 +254,7 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
   try {
     return std::make_unique<texture::LineTextureGenerator>(psd, ls);
   } catch (const std::exception& e) {
-    throw config_error(grid_message(k, e));
+    throw config_error(grid_message(k, e, spacing, 1.0));
   }
 }
 
@@ -302,7 +357,10 @@ SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }
   } catch (const std::exception& e) {  // invalid_argument from the spec, domain_error from a table PSD
-    throw config_error(grid_message(LineGeneratorKeys{{}, s.spacing_origin.where, t.table_extension_origin.where}, e));
+    // The spectral grid must resolve k_max stretched by the anisotropy along x and y.
+    const double a = s.method == "spectral" ? std::sqrt(s.anisotropy) : 1.0;
+    throw config_error(
+        grid_message(LineGeneratorKeys::of(t, s.spacing_origin, "[surface] spacing"), e, h, std::max(a, 1.0 / a)));
   }
   return g;
 }

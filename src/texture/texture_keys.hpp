@@ -46,7 +46,13 @@ std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study:
 struct LineGeneratorKeys {
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
   std::string spacing_where, extension_where;
-  static LineGeneratorKeys of(const study::TextureSection& t, const study::KeyOrigin& spacing);
+  // For the advice of grid errors: the spacing key ("[lines] spacing"), the [texture] source and
+  // table_extension, and the rolling speed where the scene has one (0: none).
+  std::string spacing_key, source, extension;
+  double speed = 0.0;
+  std::string speed_key;
+  static LineGeneratorKeys of(const study::TextureSection& t, const study::KeyOrigin& spacing,
+                              const std::string& spacing_key);
   static LineGeneratorKeys parse(const study::KeyReader& s, const std::string& key);
 };
 // study_line_generator from those (for a scene that builds its line after the study is gone).
