@@ -1,0 +1,15 @@
+#include "src/study/sections/study_section.hpp"
+
+#include "src/study/key_reader.hpp"
+
+namespace rollspec::study {
+
+StudySection StudySection::parse(const KeyReader& s) {
+  StudySection t;
+  t.scene = s.scene();
+  t.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
+  t.scene_origin = {s.where("study.scene")};
+  return t;
+}
+
+}  // namespace rollspec::study
