@@ -5,7 +5,7 @@
 #include "src/scenes/study_welch.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/random_oscillator_sections.hpp"
-#include "src/study/sections/study_seed_section.hpp"
+#include "src/study/sections/study_section.hpp"
 
 namespace rollspec::scenes {
 
@@ -20,7 +20,7 @@ std::vector<KeySpec> random_oscillator_keys() {
 
 RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {
   RandomOscillatorSettings o;
-  o.seed = StudySeedSection::parse(s).seed;
+  o.seed = StudySection::parse(s).seed;
   const auto oscillator = OscillatorSection::parse(s);
   o.mass = oscillator.mass;
   o.natural_frequency = oscillator.natural_frequency;

@@ -10,7 +10,7 @@
 #include "src/scenes/study_welch.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/rolling_pipe_sections.hpp"
-#include "src/study/sections/study_seed_section.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/study/sections/surface_grid_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -43,7 +43,7 @@ std::vector<KeySpec> rolling_pipe_keys() {
 RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   using namespace rolling;
   RollingPipeSettings p;
-  p.seed = StudySeedSection::parse(s).seed;
+  p.seed = StudySection::parse(s).seed;
   p.psd = texture_io::study_psd(s);
   const auto roughness = PipeRoughnessSection::parse(s);
   p.line = roughness.line;

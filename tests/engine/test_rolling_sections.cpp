@@ -15,7 +15,7 @@
 #include "src/study/sections/rolling_body_sections.hpp"
 #include "src/study/sections/rolling_pipe_sections.hpp"
 #include "src/study/sections/rolling_world_sections.hpp"
-#include "src/study/sections/study_seed_section.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/study/study.hpp"
 
 using namespace rollspec;
@@ -103,7 +103,7 @@ TEST_CASE("rolling-pipe sections: values, defaults and refusals at file:line") {
   CHECK(study::PipeRoughnessSection::parse(s).line);
   CHECK(study::PipeContactSection::parse(s).damping_ratio == 0.1);
   CHECK(study::PipeAnalysisSection::parse(s).dt == 1e-4);
-  CHECK(study::StudySeedSection::parse(s).seed == 7);
+  CHECK(study::StudySection::parse(s).seed == 7);
   const auto bad = scene_study("rolling-pipe", "[pipe]\ndiameter = 0.05\ninner_diameter = 0.05\n");
   CHECK(message_of([&] { (void)study::PipeSection::parse(bad); }) ==
         std::string(kFile) + ":7: [pipe] inner_diameter = 0.05: must be smaller than [pipe] diameter");
