@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -102,6 +103,38 @@ void check_roughness(const BallOnBeamSettings& b, std::vector<std::string>& warn
                        g3(v * k_min / (2.0 * M_PI)) + " Hz and above, beyond the band's top " + g3(band) + " Hz");
 }
 
+// The line roughness's rms height up to the band limit (variance = int G dk, on a log grid).
+double line_rms(const BallOnBeamSettings& b) {
+  const double k0 = std::max(b.psd.support_min, 2.0 * M_PI / b.beam.properties.length);
+  const double k1 = std::min({b.psd.support_max, b.band_limit_wavenumber, M_PI / b.spacing});
+  if (!(k1 > k0)) return 0.0;
+  const int n = 400;
+  double variance = 0.0, previous = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const double k = k0 * std::pow(k1 / k0, i / static_cast<double>(n)), g = b.psd(k) * k;  // G dk = G k dln k
+    if (i > 0) variance += 0.5 * (g + previous) * std::log(k1 / k0) / n;
+    previous = g;
+  }
+  return std::sqrt(variance);
+}
+
+// Roughness as tall as the static compression under the ball's weight lifts the ball off: the
+// result then describes impacts, which a reviewer would ask about before anything else.
+void check_roughness_height(const BallOnBeamSettings& b, std::vector<std::string>& warnings) {
+  if (b.path_law() || b.blocked_solver() || !(b.static_compression > 0.0)) return;
+  double rms = 0.0;
+  try {
+    rms = line_rms(b);
+  } catch (const std::exception&) {  // a PSD table without extension: its range is checked elsewhere
+    return;
+  }
+  if (rms > 0.5 * b.static_compression)
+    warnings.push_back(b.ball.radius_origin.where + ": the roughness's rms height " + g3(rms) +
+                       " m (up to the band limit) is " + g3(rms / b.static_compression) +
+                       " of the static compression " + g3(b.static_compression) +
+                       " m under the ball's weight: expect loss of contact (the result says how often)");
+}
+
 }  // namespace
 
 std::vector<std::string> check_ball_on_beam_plausibility(const BallOnBeamSettings& b) {
@@ -110,6 +143,7 @@ std::vector<std::string> check_ball_on_beam_plausibility(const BallOnBeamSetting
   check_deflection(b, warnings);
   check_modes(b, warnings);
   check_roughness(b, warnings);
+  check_roughness_height(b, warnings);
   return warnings;
 }
 
