@@ -81,11 +81,13 @@ def _read_table(path):
 
 
 def read_measurement(path, column=None):
-    """(frequency, psd) from a CSV with a header; `column` names the PSD column (default `psd`, else the
-    only column besides frequency_hz), so the output of `rollspec psd` is read directly. Delimiters and
-    decimal commas as `rollspec compare`."""
+    """(frequency, psd) from a CSV with a header; `column` names the PSD column (default `psd`, else in the
+    output of `rollspec psd` of one channel, whose first line states the unit, the only column besides
+    frequency_hz), so that output is read directly. Delimiters and decimal commas as `rollspec compare`."""
     header, data, numbers = _read_table(path)
-    if column is None and "psd" not in header and len(header) == 2 and "frequency_hz" in header:
+    with open(path, encoding="utf-8", errors="replace") as f:
+        psd_output = f.readline().startswith("# rollspec-psd-csv")
+    if column is None and psd_output and "psd" not in header and len(header) == 2 and "frequency_hz" in header:
         column = [h for h in header if h != "frequency_hz"][0]
     column = column or "psd"
     for name in ("frequency_hz", column):

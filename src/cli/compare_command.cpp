@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -59,8 +60,8 @@ struct Measurement {
 
 // A spreadsheet export of a measured PSD: preamble lines before the header skipped (and said), or
 // --skip-rows; delimiter and decimal comma as `rollspec psd` reads a signal. Without --column the PSD
-// is `psd`, else the only column besides frequency_hz (a `rollspec psd` output of one channel, named
-// after it), said on stderr; `column` is set to the one read.
+// is `psd`, else, in a `rollspec psd` output (its first line states the PSD unit), the only column
+// besides frequency_hz (named after the channel), said on stderr; `column` is set to the one read.
 Measurement read_measurement(const std::string& path, std::string& column, long long skip_rows) {
   io::CsvReadOptions options;
   options.find_header = true;
@@ -76,7 +77,11 @@ Measurement read_measurement(const std::string& path, std::string& column, long 
   if (column.empty()) {
     const auto& cols = m.columns;
     const bool has_psd = std::find(cols.begin(), cols.end(), "psd") != cols.end();
-    column = has_psd || cols.size() != 2 ? "psd" : cols[fc == 0 ? 1 : 0];
+    std::ifstream in(path);
+    std::string first;
+    std::getline(in, first);
+    const bool psd_output = first.rfind("# rollspec-psd-csv", 0) == 0;
+    column = has_psd || cols.size() != 2 || !psd_output ? "psd" : cols[fc == 0 ? 1 : 0];
     if (column != "psd")
       std::cerr << "rollspec compare: " << path << ": the PSD is column '" << clip(column)
                 << "', the only one besides frequency_hz (--column NAME picks another)\n";
@@ -100,7 +105,7 @@ const char* const kCompareUsage =
     "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json] [--skip-rows N]\n"
     "\n"
     "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: the one --column names,\n"
-    "else `psd`, else the only other column (so the output of `rollspec psd` of one channel is read\n"
+    "else `psd`, else in the output of `rollspec psd` of one channel its only PSD column (so it is read\n"
     "directly). For every third-octave band of the result inside [fmin, fmax] that the measurement covers,\n"
     "prints the simulated and measured band levels\n"
     "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
