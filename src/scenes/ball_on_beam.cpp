@@ -42,6 +42,7 @@ struct Workspace {
 class BallOnBeam final : public EnsembleScene {
  public:
   explicit BallOnBeam(const KeyReader& s) : b_(read_ball_on_beam_settings(s)), contact_(contact_from_settings(b_)) {
+    for (const auto& w : b_.warnings) std::fprintf(stderr, "rollspec: warning: %s\n", w.c_str());
     lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     std::vector<std::string> names;
@@ -229,6 +230,7 @@ class BallOnBeam final : public EnsembleScene {
     take_blocked_force(b_, table, contact_);
   }
 
+  std::vector<std::string> warnings() const override { return b_.warnings; }
   std::size_t rows() const { return rows_->rows(); }
   // PsdRows layout, then the extras: contact-force PSD, ball-acceleration PSD, loss-of-contact share.
   std::size_t values_per_realisation() const override { return rows_->size(); }

@@ -45,7 +45,7 @@ struct BallOnBeamSettings {
   study::ModalBeamSection beam;           // [beam] as read
   study::BallSection ball;                // [ball] as read
   study::ContactSection contact_section;  // [contact] as read
-  study::KeyOrigin substeps_origin;
+  study::KeyOrigin substeps_origin, sample_rate_origin, band_max_origin;
   // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
   study::BlockedForceSection blocked_force;
   study::PathTableSection path_table;
@@ -88,7 +88,8 @@ struct BallOnBeamSettings {
   bool sensor_mean = true;
   double confidence = 0.95, band_min = 0.0, band_max = 0.0;
   std::size_t time_histories = 0;
-  bool reference = true;  // [output] reference (written for the linearised law only)
+  bool reference = true;              // [output] reference (written for the linearised law only)
+  std::vector<std::string> warnings;  // legal but suspect physics (ball_on_beam_plausibility)
 
   bool linearised() const {
     return contact == ContactModel::linearised_spring || contact == ContactModel::linearised_solver;

@@ -1,6 +1,7 @@
 #include "src/scenes/ball_on_beam_writer.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <exception>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "src/ensemble/progress.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/psd_result.hpp"
+#include "src/scenes/ball_on_beam_plausibility.hpp"
 
 namespace rollspec::scenes {
 
@@ -43,6 +45,11 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
   w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
   w.attribute("/contact", "law", b_.law_name);
+  const std::string loss = loss_of_contact_warning(share, linearised());
+  if (!loss.empty()) {  // printed even when quiet: the result's validity, not progress
+    std::fprintf(stderr, "rollspec: WARNING: %s\n", loss.c_str());
+    w.attribute("/contact", "loss_of_contact_warning", loss);
+  }
   w.attribute("/contact", "static_compression", c_.static_compression);
   w.attribute("/contact", "patch_half_width", b_.patch_half_width);
   w.attribute("/contact", "filter", b_.filter_applied);

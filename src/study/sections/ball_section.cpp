@@ -35,6 +35,8 @@ BallSection BallSection::parse(const KeyReader& s) {
   b.end = s.real("ball.end");
   b.gravity = s.real("ball.gravity");
   b.end_origin = {s.where("ball.end")};
+  b.radius_origin = {s.where("ball.radius")};
+  b.speed_origin = {s.where("ball.speed")};
   return b;
 }
 
