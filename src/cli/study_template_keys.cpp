@@ -7,7 +7,8 @@ namespace rollspec::cli {
 namespace {
 // Keys a rig is described by first. Starting values only where the default cannot run as it
 // stands (a required key, rolling-pipe's time step against its default contact penalty, texture's line
-// spacing against its default short cut-off).
+// spacing against its default short cut-off, ball-on-beam's roughness: the key's 1 um rms makes the template's
+// 20 mm ball lose contact 81 % of the time, 30 nm (a fine ground track) keeps it in contact).
 const std::map<std::string, std::vector<FirstKey>>& scene_first_keys() {
   static const std::map<std::string, std::vector<FirstKey>> table = {
       {"random-oscillator",
@@ -33,7 +34,7 @@ const std::map<std::string, std::vector<FirstKey>>& scene_first_keys() {
         {"ball.start", {}},
         {"ball.end", {}},
         {"texture.source", {}},
-        {"texture.rms", {}},
+        {"texture.rms", "3e-8"},
         {"sensors.positions", {}}}},
       {"rolling-beam",
        {{"body.kind", {}},

@@ -44,15 +44,15 @@ def logger_export(path, fs=25600.0, seconds=2.0, rms_g=0.05):
 def test_init_edit_plan_run_psd_compare_report(tmp_path):
     sh([BIN, "init", "ball-on-beam", "--out", "rig.ini"], tmp_path)
     rig = tmp_path / "rig.ini"
-    # A 1 m steel beam, a 30 mm ball at 2 m/s over most of the span, a ground surface of 10 nm rms (with
-    # the template's 1 um the ball would fly: plan warns and run flags it, test_plausibility.py), a few
-    # realisations to start with.
+    # A 1 m steel beam, a 30 mm ball at 2 m/s over most of the span, a ground surface of 10 nm rms (the
+    # template starts at 30 nm; at 1 um the ball would fly: plan warns and run flags it, test_plausibility.py),
+    # a few realisations to start with.
     sed(rig, "realisations", "100", "8")
     sed(rig, "length", "0.4", "1.0")
     sed(rig, "radius", "0.02", "0.015")
     sed(rig, "speed", "1", "2")
     sed(rig, "end", "0.35", "0.95")
-    sed(rig, "rms", "1e-6", "1e-8")
+    sed(rig, "rms", "3e-8", "1e-8")
     plan = sh([BIN, "plan", "rig.ini"], tmp_path)
     assert "dynamics" in plan.stdout and "warning" not in plan.stdout, plan.stdout
     run = sh([BIN, "run", "rig.ini", "--out", "r.h5"], tmp_path)

@@ -43,8 +43,8 @@ def test_suspect_values_are_warned_about_in_plan_and_on_stderr(tmp_path):
     study = rig(tmp_path)
     r = run(["plan", study, "--set", "texture.rms=1e-8"])
     assert r.returncode == 0 and "warning" not in r.stdout + r.stderr, r.stdout + r.stderr
-    # The template's 1 um rms against a static compression of 0.24 um: the ball will fly.
-    r = run(["plan", study])
+    # A 1 um rms (the key's default) against a static compression of 0.24 um: the ball will fly.
+    r = run(["plan", study, "--set", "texture.rms=1e-6"])
     assert r.returncode == 0, r.stderr
     warned = [ln for ln in r.stderr.splitlines() if ln.startswith("rollspec: warning: ")]
     listed = [ln for ln in r.stdout.splitlines() if ln.startswith("warning: ")]
@@ -59,7 +59,8 @@ def test_loss_of_contact_is_flagged_after_run(tmp_path):
     study = rig(tmp_path)
     for law, words in [("hertz", "(more than 5 %)"), ("linearised", "law = linearised assumes a closed contact")]:
         out = tmp_path / f"{law}.h5"
-        r = run(["run", study, "--set", "study.realisations=2", "--set", f"contact.law={law}", "--out", out, "--quiet"])
+        r = run(["run", study, "--set", "study.realisations=2", "--set", "texture.rms=1e-6", "--set", f"contact.law={law}",
+                 "--out", out, "--quiet"])
         assert r.returncode == 0, r.stderr
         lines = [ln for ln in r.stderr.splitlines() if ln.startswith("rollspec: WARNING: the ball lost contact")]
         assert len(lines) == 1 and words in lines[0], r.stderr
