@@ -5,6 +5,7 @@ with no --column, no --skip-rows, no --fs and no hand editing of any file."""
 
 import os
 import re
+import shlex
 import subprocess
 
 import h5py
@@ -76,3 +77,47 @@ def test_init_edit_plan_run_psd_compare_report(tmp_path):
        tmp_path)
     html = (tmp_path / "report.html").read_text()
     assert "measured.csv" in html and "data:image" in html
+
+
+def edits_of(comment):
+    """[(section, key, value)] of the README's '#   edit rig.ini: [beam] length = 1.0   speed = 2 ...' line."""
+    section, edits = None, []
+    for token in re.split(r"\s{3,}", comment.split(":", 1)[1].strip()):
+        m = re.fullmatch(r"(?:\[(\w+)\]\s*)?(\w+) = (\S+)", token)
+        assert m, f"cannot read the edit '{token}' of: {comment}"
+        section = m.group(1) or section
+        edits.append((section, m.group(2), m.group(3)))
+    return edits
+
+
+def edit_section_key(path, section, key, value):
+    """The one `key = ...` line under [section] of `path` gets `value` (what a person does in an editor)."""
+    lines, current, done = path.read_text().splitlines(), None, 0
+    for i, line in enumerate(lines):
+        if line.startswith("["):
+            current = line.strip()[1:-1]
+        elif current == section and re.match(rf"{key} = ", line):
+            lines[i], done = f"{key} = {value}", done + 1
+    assert done == 1, f"[{section}] {key} found {done} times in the template"
+    path.write_text("\n".join(lines) + "\n")
+
+
+def test_the_readme_your_rig_block_runs_as_written(tmp_path):
+    text = (SOURCE / "README.md").read_text().splitlines()
+    start = text.index("## Your rig in ten minutes")
+    fence = next(i for i in range(start, len(text)) if text[i].startswith("```sh"))
+    end = next(i for i in range(fence + 1, len(text)) if text[i].startswith("```"))
+    logger_export(tmp_path / "logger.csv")
+    ran = []
+    for line in (ln for ln in text[fence + 1:end] if ln.strip()):
+        if line.startswith("#"):
+            for section, key, value in edits_of(line):
+                edit_section_key(tmp_path / "rig.ini", section, key, value)
+            continue
+        words = shlex.split(line, comments=True)
+        argv = [BIN, *words[1:]] if words[0] == "rollspec" else [PYTHON, *words[1:]]
+        r = sh(argv, tmp_path)
+        assert "WARNING" not in r.stderr and "warning" not in r.stdout, f"{line}\n{r.stdout}{r.stderr}"
+        ran.append(words[1] if words[0] == "rollspec" else words[3])
+    assert ran == ["init", "plan", "run", "psd", "compare", "report"]
+    assert "data:image" in (tmp_path / "report.html").read_text()
