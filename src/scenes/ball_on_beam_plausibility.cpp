@@ -129,7 +129,7 @@ void check_roughness_height(const BallOnBeamSettings& b, std::vector<std::string
     return;
   }
   if (rms > 0.5 * b.static_compression)
-    warnings.push_back(b.ball.radius_origin.where + ": the roughness's rms height " + g3(rms) +
+    warnings.push_back(b.roughness_origin.where + ": the roughness's rms height " + g3(rms) +
                        " m (up to the band limit) is " + g3(rms / b.static_compression) +
                        " of the static compression " + g3(b.static_compression) +
                        " m under the ball's weight: expect loss of contact (the result says how often)");

@@ -13,6 +13,7 @@
 #include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/ball_on_beam_plausibility.hpp"
+#include "src/study/sections/texture_section.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/equivalent_roughness_section.hpp"
@@ -251,6 +252,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
   read_contact_filter(study::EquivalentRoughnessSection::parse(s), b,
                       beam::hertz_half_width(radius, hertz_compression));
+  const study::TextureSection texture = study::TextureSection::parse(s);
+  b.roughness_origin = texture.source == "self-affine" ? texture.rms_origin : texture.source_origin;
   b.warnings = check_ball_on_beam_plausibility(b);  // before any step or table check that the values could break
   // Integration step.
   b.step.substeps = static_cast<int>(signal.substeps);

@@ -46,6 +46,7 @@ struct BallOnBeamSettings {
   study::BallSection ball;                // [ball] as read
   study::ContactSection contact_section;  // [contact] as read
   study::KeyOrigin substeps_origin, sample_rate_origin, band_max_origin;
+  study::KeyOrigin roughness_origin;  // the key that sets the line's height: [texture] rms, else its source
   // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
   study::BlockedForceSection blocked_force;
   study::PathTableSection path_table;

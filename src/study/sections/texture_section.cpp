@@ -65,6 +65,7 @@ TextureSection TextureSection::parse(const KeyReader& s) {
   t.profiles_origin = {s.where("texture.profiles")};
   t.long_wavelength_origin = {s.where("texture.long_wavelength")};
   t.short_wavelength_origin = {s.where("texture.short_wavelength")};
+  t.rms_origin = {s.where("texture.rms")};
   return t;
 }
 

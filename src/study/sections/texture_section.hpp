@@ -22,7 +22,8 @@ struct TextureSection {
   bool median_filter = false;
   double hurst = 0.8, long_wavelength = 0.0, rolloff_wavelength = 1e-3, short_wavelength = 1e-5, rms = 1e-6;
   std::string rms_kind, road_class, amplitudes;
-  KeyOrigin source_origin, table_extension_origin, profiles_origin, long_wavelength_origin, short_wavelength_origin;
+  KeyOrigin source_origin, table_extension_origin, profiles_origin, long_wavelength_origin, short_wavelength_origin,
+      rms_origin;
 
   static std::vector<KeySpec> keys();
   static TextureSection parse(const KeyReader& s);
