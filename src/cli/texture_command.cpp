@@ -16,7 +16,7 @@
 #include "src/rng/philox_stream.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/study/study.hpp"
+#include "src/cli/run_phases.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
@@ -82,7 +82,7 @@ int texture_command(const Args& args) {
   if (vm.count("count") && (count < 0 || count > 1000000))
     throw usage_error("--count " + std::to_string(count) + ": allowed: a whole number in [0, 1000000]");
 
-  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
+  const study::Study s = resolve_study(study);
   if (s.scene() != "texture")
     s.refuse("study.scene", "rollspec texture needs a study of scene texture (this one is " + s.scene() + ")");
   if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
@@ -90,8 +90,7 @@ int texture_command(const Args& args) {
     study.sets.push_back("lines.count=" + std::to_string(count));
     study.sets.push_back("surface.count=" + std::to_string(count));
   }
-  scenes::check_memory(count >= 0 ? study::Study::load(study.file, study.sets, scenes::schema_for) : s, 1,
-                       vm.count("force") > 0);
+  scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1, vm.count("force") > 0);
   const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
   const std::size_t n_lines =
       count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("lines.count"));
