@@ -166,38 +166,43 @@ void bench_iteration(std::size_t n) {
 
 // Per-iteration cost of the grid sides 510, 511, 512 (README Eq. 3: each axis padded to
 // fast_fft_length(2n − 1)): thread CPU seconds per CG iteration on one thread, FFTW_ESTIMATE plans
-// as the tables use them, minimum of 5 interleaved trials; ratio = against side 512.
+// as the tables use them, minimum of 5 interleaved trials; ratio = against side 512. Two contacts:
+// `side_iteration`, 77 cells per contact radius (the products run on the box of README Eq. 3c, a
+// padded 512²), and `side_iteration_full`, 0.42 n cells per radius (the box is the whole grid: every
+// product on the padded grid, 1024² for all three sides; 2n padding would be 1020² and 1022²).
 void bench_sides() {
   const double e_star = 115.4e9, radius = 0.02, a = 69e-6;
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   const std::size_t sides[] = {510, 511, 512};
-  std::vector<std::unique_ptr<ContactSolver>> solvers;
-  std::vector<std::vector<double>> gaps;
-  for (std::size_t n : sides) {
-    const double dx = a / (0.3 * 512.0 / 2);
-    solvers.push_back(std::make_unique<ContactSolver>(Grid{n, n, dx, dx}, e_star));
-    gaps.push_back(ball_gap(Grid{n, n, dx, dx}, radius, {}));
-  }
-  SolverOptions opt;
-  opt.tolerance = 0.0;
-  opt.max_iterations = 30;
-  opt.compute_stiffness = false;
-  opt.coarse_start = false;
-  double best[3] = {1e300, 1e300, 1e300};
-  int iterations[3] = {0, 0, 0};
-  for (int trial = 0; trial < 5; ++trial)
-    for (std::size_t s = 0; s < 3; ++s) {
-      std::vector<double> p;
-      const double t0 = thread_cpu_seconds();
-      const ContactResult r = solvers[s]->solve(gaps[s], a * a / radius, p, opt);
-      best[s] = std::min(best[s], (thread_cpu_seconds() - t0) / r.iterations);
-      iterations[s] = r.iterations;
+  for (const bool full : {false, true}) {
+    std::vector<std::unique_ptr<ContactSolver>> solvers;
+    std::vector<std::vector<double>> gaps;
+    for (std::size_t n : sides) {
+      const double dx = full ? a / (0.42 * static_cast<double>(n)) : a / (0.3 * 512.0 / 2);
+      solvers.push_back(std::make_unique<ContactSolver>(Grid{n, n, dx, dx}, e_star));
+      gaps.push_back(ball_gap(Grid{n, n, dx, dx}, radius, {}));
     }
-  for (std::size_t s = 0; s < 3; ++s)
-    std::printf("side_iteration,%zu,%.6e,%.3f,%d,padded %zux%zu; ratio = vs side 512 (1 thread CPU per CG iteration)\n",
-                sides[s], best[s], best[s] / best[2], iterations[s], solvers[s]->half_space().fft_nx(),
-                solvers[s]->half_space().fft_ny());
+    SolverOptions opt;
+    opt.tolerance = 0.0;
+    opt.max_iterations = 30;
+    opt.compute_stiffness = false;
+    opt.coarse_start = false;
+    double best[3] = {1e300, 1e300, 1e300};
+    int iterations[3] = {0, 0, 0};
+    for (int trial = 0; trial < 5; ++trial)
+      for (std::size_t s = 0; s < 3; ++s) {
+        std::vector<double> p;
+        const double t0 = thread_cpu_seconds();
+        const ContactResult r = solvers[s]->solve(gaps[s], a * a / radius, p, opt);
+        best[s] = std::min(best[s], (thread_cpu_seconds() - t0) / r.iterations);
+        iterations[s] = r.iterations;
+      }
+    for (std::size_t s = 0; s < 3; ++s)
+      std::printf("%s,%zu,%.6e,%.3f,%d,padded %zux%zu; ratio = vs side 512 (1 thread CPU per CG iteration)\n",
+                  full ? "side_iteration_full" : "side_iteration", sides[s], best[s], best[s] / best[2], iterations[s],
+                  solvers[s]->half_space().fft_nx(), solvers[s]->half_space().fft_ny());
+  }
   omp_set_num_threads(threads);
   std::fflush(stdout);
 }

@@ -22,10 +22,11 @@ std::size_t resolve_period(const LineTextureSpec& s) {
 void check_sampling(const Psd& psd, double dx, bool allow_truncation) {
   const double k_nyquist = M_PI / dx;
   if (psd.support_max > k_nyquist * (1.0 + 1e-12) && !allow_truncation)
-    throw std::invalid_argument("sampling dx = " + std::to_string(dx) +
-                                " m resolves k up to pi/dx = " + std::to_string(k_nyquist) + " rad/m, but the PSD (" +
-                                psd.description + ") carries power up to k_max = " + std::to_string(psd.support_max) +
-                                " rad/m; refine dx, give the PSD a short cut-off, or allow truncation");
+    throw UnresolvedPsd("sampling dx = " + std::to_string(dx) +
+                            " m resolves k up to pi/dx = " + std::to_string(k_nyquist) + " rad/m, but the PSD (" +
+                            psd.description + ") carries power up to k_max = " + std::to_string(psd.support_max) +
+                            " rad/m; refine dx or give the PSD a short cut-off",
+                        psd.support_max);
 }
 }  // namespace
 

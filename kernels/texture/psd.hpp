@@ -11,6 +11,7 @@
 // model has no power, the support fields are information, not a mask.
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,13 @@ struct Psd {
   bool cell_average = false;
 
   double operator()(double k) const { return density(k); }
+};
+
+// A PSD carrying power above what a grid resolves (k_max > pi/dx); k_max lets the caller say how
+// fine the grid must be.
+struct UnresolvedPsd : std::invalid_argument {
+  UnresolvedPsd(const std::string& what, double k) : std::invalid_argument(what), k_max(k) {}
+  double k_max;  // rad/m
 };
 
 // G with every wavenumber above k_max removed: G(k) = 0 for k > k_max (support_max and a breakpoint

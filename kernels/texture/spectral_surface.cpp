@@ -22,11 +22,12 @@ void validate(const Psd& psd, const SpectralSurfaceSpec& s) {
   const double a = std::sqrt(s.anisotropy);
   if (!s.allow_truncation &&
       (psd.support_max / a > M_PI / s.dx * (1.0 + 1e-12) || psd.support_max * a > M_PI / s.dy * (1.0 + 1e-12)))
-    throw std::invalid_argument(
-        "spectral surface: the PSD (" + psd.description + ") carries power up to k_max = " +
-        std::to_string(psd.support_max) + " rad/m, beyond the grid's pi/dx = " + std::to_string(M_PI / s.dx) +
-        ", pi/dy = " + std::to_string(M_PI / s.dy) +
-        " rad/m (with the anisotropy stretch); refine the grid, cut the PSD off, or allow truncation");
+    throw UnresolvedPsd("spectral surface: the PSD (" + psd.description +
+                            ") carries power up to k_max = " + std::to_string(psd.support_max) +
+                            " rad/m, beyond the grid's pi/dx = " + std::to_string(M_PI / s.dx) +
+                            ", pi/dy = " + std::to_string(M_PI / s.dy) +
+                            " rad/m (with the anisotropy stretch); refine the grid or cut the PSD off",
+                        psd.support_max);
 }
 }  // namespace
 

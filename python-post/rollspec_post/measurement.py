@@ -81,10 +81,15 @@ def _read_table(path):
 
 
 def read_measurement(path, column=None):
-    """(frequency, psd) from a CSV with a header; `column` names the PSD column (default `psd`), so
-    the output of `rollspec psd` is read directly. Delimiters and decimal commas as `rollspec compare`."""
-    column = column or "psd"
+    """(frequency, psd) from a CSV with a header; `column` names the PSD column (default `psd`, else in the
+    output of `rollspec psd` of one channel, whose first line states the unit, the only column besides
+    frequency_hz), so that output is read directly. Delimiters and decimal commas as `rollspec compare`."""
     header, data, numbers = _read_table(path)
+    with open(path, encoding="utf-8", errors="replace") as f:
+        psd_output = f.readline().startswith("# rollspec-psd-csv")
+    if column is None and psd_output and "psd" not in header and len(header) == 2 and "frequency_hz" in header:
+        column = [h for h in header if h != "frequency_hz"][0]
+    column = column or "psd"
     for name in ("frequency_hz", column):
         if name not in header:
             raise PostError(f"{path}:1: no column {name!r}; columns found: {', '.join(header)}", EX_DATAERR)

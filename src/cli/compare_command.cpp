@@ -2,8 +2,10 @@
 // Two questions, said in the output: is the measured level inside the interval of the simulated
 // *mean* (the default), or, given --measured-averages M, inside the prediction interval of a
 // measurement that averages M independent records (kernels/spectral D-22)?
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -57,8 +59,10 @@ struct Measurement {
 };
 
 // A spreadsheet export of a measured PSD: preamble lines before the header skipped (and said), or
-// --skip-rows; delimiter and decimal comma as `rollspec psd` reads a signal.
-Measurement read_measurement(const std::string& path, const std::string& column, long long skip_rows) {
+// --skip-rows; delimiter and decimal comma as `rollspec psd` reads a signal. Without --column the PSD
+// is `psd`, else, in a `rollspec psd` output (its first line states the PSD unit), the only column
+// besides frequency_hz (named after the channel), said on stderr; `column` is set to the one read.
+Measurement read_measurement(const std::string& path, std::string& column, long long skip_rows) {
   io::CsvReadOptions options;
   options.find_header = true;
   options.skip_rows = skip_rows;
@@ -70,8 +74,20 @@ Measurement read_measurement(const std::string& path, const std::string& column,
               << "; --skip-rows N says where it is)\n";
   const std::size_t fc = m.column_index("frequency_hz");
   io::require_increasing(m, fc);
-  Measurement out{m.values[fc], m.values[m.column_index(column.empty() ? "psd" : column)]};
-  const std::string name = column.empty() ? "psd" : column;
+  if (column.empty()) {
+    const auto& cols = m.columns;
+    const bool has_psd = std::find(cols.begin(), cols.end(), "psd") != cols.end();
+    std::ifstream in(path);
+    std::string first;
+    std::getline(in, first);
+    const bool psd_output = first.rfind("# rollspec-psd-csv", 0) == 0;
+    column = has_psd || cols.size() != 2 || !psd_output ? "psd" : cols[fc == 0 ? 1 : 0];
+    if (column != "psd")
+      std::cerr << "rollspec compare: " << path << ": the PSD is column '" << clip(column)
+                << "', the only one besides frequency_hz (--column NAME picks another)\n";
+  }
+  Measurement out{m.values[fc], m.values[m.column_index(column)]};
+  const std::string name = column;
   for (std::size_t i = 0; i < out.frequency.size(); ++i)
     if (out.frequency[i] < 0.0)
       throw data_error(m.where(i) + ": frequency_hz value " + number_text(out.frequency[i]) +
@@ -88,9 +104,10 @@ const char* const kCompareUsage =
     "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M]\n"
     "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json] [--skip-rows N]\n"
     "\n"
-    "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: `psd`, or the one\n"
-    "--column names (so the output of `rollspec psd` is read directly). For every third-octave band of the\n"
-    "result inside [fmin, fmax] that the measurement covers, prints the simulated and measured band levels\n"
+    "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: the one --column names,\n"
+    "else `psd`, else in the output of `rollspec psd` of one channel its only PSD column (so it is read\n"
+    "directly). For every third-octave band of the result inside [fmin, fmax] that the measurement covers,\n"
+    "prints the simulated and measured band levels\n"
     "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
     "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
     "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
@@ -194,7 +211,8 @@ int compare_command(const Args& args) {
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
       "sensor", po::value(&sensor), "sensor name or index in the result (default: sensor_mean if present, else 0)")(
-      "column", po::value(&column), "PSD column of the measurement CSV (default: psd)")(
+      "column", po::value(&column),
+      "PSD column of the measurement CSV (default: psd, else the only column besides frequency_hz)")(
       "measured-averages", po::value(&records), "independent records averaged into the measurement (>= 1)")(
       "fmin", po::value(&fmin)->default_value(0.0), "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(

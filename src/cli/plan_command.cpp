@@ -66,6 +66,7 @@ int plan_command(const Args& args) {
               << " of " << scenes::format_bytes(chunk_bytes) << " = "
               << scenes::format_bytes(std::ceil(K / C) * chunk_bytes) << " beside the result while the run lasts\n";
   }
+  for (const auto& w : scene->warnings()) std::cout << "warning: " << w << "\n";
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");
   bool tables_missing = false;
   // Only ball-on-beam has a blocked-force stage; its table exists with [contact] blocked_force = solver.

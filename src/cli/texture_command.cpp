@@ -15,8 +15,12 @@
 #include "src/io/provenance.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/scenes/memory_estimate.hpp"
-#include "src/scenes/scene.hpp"
 #include "src/cli/run_phases.hpp"
+#include "src/scenes/scene.hpp"
+#include "src/study/sections/lines_section.hpp"
+#include "src/study/sections/study_section.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
@@ -32,15 +36,15 @@ void print_statistics(const char* what, std::size_t i, const texture::HeightStat
 }
 // Heights or statistics that overflowed: the PSD is too large for double precision. Refused,
 // naming where the PSD comes from, before anything is written.
-void refuse_overflow(const study::KeyReader& s, const char* what, std::size_t i, const texture::HeightStatistics& st,
-                     const double* z, std::size_t n) {
+void refuse_overflow(const study::TextureSection& s, const char* what, std::size_t i,
+                     const texture::HeightStatistics& st, const double* z, std::size_t n) {
   bool finite = std::isfinite(st.rms) && (st.rms == 0.0 || (std::isfinite(st.skewness) && std::isfinite(st.kurtosis)));
   for (std::size_t k = 0; k < n && finite; ++k) finite = std::isfinite(z[k]);
   if (finite) return;
-  const std::string source = s.text("texture.source");
-  std::string where = s.where("texture.source");
-  if (source == "table") where = s.path("texture.table") + " (" + where + ")";
-  if (source == "profiles") where = s.where("texture.profiles");
+  const std::string& source = s.source;
+  std::string where = s.source_origin.where;
+  if (source == "table") where = s.table_path + " (" + where + ")";
+  if (source == "profiles") where = s.profiles_origin.where;
   char buf[160];
   std::snprintf(buf, sizeof buf, ": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)",
                 what, i, st.rms, st.skewness, st.kurtosis);
@@ -83,35 +87,42 @@ int texture_command(const Args& args) {
     throw usage_error("--count " + std::to_string(count) + ": allowed: a whole number in [0, 1000000]");
 
   const study::Study s = resolve_study(study);
-  if (s.scene() != "texture")
-    s.refuse("study.scene", "rollspec texture needs a study of scene texture (this one is " + s.scene() + ")");
+  const auto study_keys = study::StudySection::parse(s);
+  if (study_keys.scene != "texture")
+    study_keys.scene_origin.refuse("rollspec texture needs a study of scene texture (this one is " + study_keys.scene +
+                                   ")");
   if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
   if (count >= 0) {  // --count overrides both counts: estimate with it
     study.sets.push_back("lines.count=" + std::to_string(count));
     study.sets.push_back("surface.count=" + std::to_string(count));
   }
-  scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1, vm.count("force") > 0);
-  const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
-  const std::size_t n_lines =
-      count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("lines.count"));
+  scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1,
+                       vm.count("force") > 0);
+  const auto seed = study_keys.seed;
+  const auto tex = study::TextureSection::parse(s);
+  const auto line_keys = study::LinesSection::parse(s);
+  const auto surface_keys = study::SurfaceSection::parse(s);
+  const std::size_t n_lines = count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(line_keys.count);
   const std::size_t n_surf =
-      count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(s.integer("surface.count"));
+      count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(surface_keys.count);
 
-  const texture::Psd psd = texture_io::study_psd(s);
-  const double spacing = s.real("lines.spacing");
-  const double samples = std::floor(s.real("lines.length") / spacing);
+  const texture::Psd psd = texture_io::study_psd(tex);
+  const double spacing = line_keys.spacing;
+  const double samples = std::floor(line_keys.length / spacing);
   if (samples < 8 || samples > 1 << 26)
-    s.refuse("lines.length", "gives " + std::to_string(samples) + " samples at [lines] spacing; allowed: 8 to 2^26");
+    line_keys.length_origin.refuse("gives " + std::to_string(samples) +
+                                   " samples at [lines] spacing; allowed: 8 to 2^26");
   const auto lines =
-      texture_io::study_line_generator(s, psd, spacing, static_cast<std::size_t>(samples), "lines.spacing", false);
+      texture_io::line_generator(texture_io::LineGeneratorKeys::of(tex, line_keys.spacing_origin, "[lines] spacing"),
+                                 psd, spacing, static_cast<std::size_t>(samples), false);
   const texture::LineTextureSpec& ls = lines->spec();
   const texture_io::SurfaceGenerator surfaces =
-      n_surf ? texture_io::study_surface_generator(s, psd) : texture_io::SurfaceGenerator{};
+      n_surf ? texture_io::surface_generator(tex, surface_keys, psd) : texture_io::SurfaceGenerator{};
 
   io::OutputTarget target{out, "rollspec-texture"};
   target.force = vm.count("force") > 0;
   target.inputs = s.input_files();
-  for (const auto& p : texture_io::profile_files(s)) target.inputs.push_back(p);
+  for (const auto& p : texture_io::profile_files(tex)) target.inputs.push_back(p);
   target.check_kind = false;  // the file's kind is checked before the commit, after the data are known good
   io::Hdf5Writer w(io::check_output_target(target));
   io::write_provenance(w, "rollspec-texture", "1.0", s.canonical_text(), seed);
@@ -132,7 +143,7 @@ int texture_command(const Args& args) {
       rng::PhiloxStream(seed, r, rng::Stream::roughness_amplitude).uniform_open(ua.data(), nh);
       lines->generate(up.data(), ua.data(), all.data() + r * n, scratch);
       const auto st = texture::line_statistics(all.data() + r * n, n, ls.spacing);
-      refuse_overflow(s, "line", r, st, all.data() + r * n, n);
+      refuse_overflow(tex, "line", r, st, all.data() + r * n, n);
       print_statistics("line", r, st, false, !list);
       stats.push_back(st);
       profiles[r].x = x;
@@ -166,7 +177,7 @@ int texture_command(const Args& args) {
       surfaces.generate(seed, r, surf);
       heights.insert(heights.end(), surf.heights.begin(), surf.heights.end());
       const auto st = texture::surface_statistics(surf);
-      refuse_overflow(s, "surface", r, st, surf.heights.data(), surf.heights.size());
+      refuse_overflow(tex, "surface", r, st, surf.heights.data(), surf.heights.size());
       print_statistics("surface", r, st, true, !list);
       stats.push_back(st);
     }
@@ -183,7 +194,7 @@ int texture_command(const Args& args) {
     w.make_scale("/surface/y", "y");
     w.attach_scale("/surface/heights", "/surface/y", 1);
     w.attach_scale("/surface/heights", "/surface/x", 2);
-    w.attribute("/surface", "method", s.text("surface.method"));
+    w.attribute("/surface", "method", surface_keys.method);
   }
   target.check_kind = true;
   io::check_output_target(target);

@@ -12,6 +12,7 @@
 #include "kernels/integrators/exact_oscillator_step.hpp"
 #include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/scenes/ball_on_beam.hpp"
+#include "src/scenes/ball_on_beam_plausibility.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/equivalent_roughness_section.hpp"
@@ -196,6 +197,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
   b.beam = beam_section;
   b.ball = study::BallSection::parse(s);
   b.substeps_origin = signal.substeps_origin;
+  b.sample_rate_origin = signal.sample_rate_origin;
   b.blocked_force = study::BlockedForceSection::parse(s);
   b.path_table = study::PathTableSection::parse(s);
   b.strip_surface = study::StripSurfaceSection::parse(s);
@@ -216,6 +218,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
   b.confidence = spectrum.confidence;
   b.band_min = spectrum.band_min;
   b.band_max = spectrum.band_max;
+  b.band_max_origin = spectrum.band_max_origin;
   b.time_histories = static_cast<std::size_t>(output.time_histories);
   b.reference = output.reference;
   // Ball and its traverse.
@@ -248,6 +251,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
   read_contact_filter(study::EquivalentRoughnessSection::parse(s), b,
                       beam::hertz_half_width(radius, hertz_compression));
+  b.warnings = check_ball_on_beam_plausibility(b);  // before any step or table check that the values could break
   // Integration step.
   b.step.substeps = static_cast<int>(signal.substeps);
   b.step.hold = signal.hold == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;

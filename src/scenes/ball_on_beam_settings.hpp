@@ -45,7 +45,7 @@ struct BallOnBeamSettings {
   study::ModalBeamSection beam;           // [beam] as read
   study::BallSection ball;                // [ball] as read
   study::ContactSection contact_section;  // [contact] as read
-  study::KeyOrigin substeps_origin;
+  study::KeyOrigin substeps_origin, sample_rate_origin, band_max_origin;
   // The strip stages' grids where the study sets them (blocked force, equivalent roughness, path table).
   study::BlockedForceSection blocked_force;
   study::PathTableSection path_table;
@@ -54,7 +54,8 @@ struct BallOnBeamSettings {
   texture_io::LineGeneratorKeys line_keys;  // the line texture's amplitudes; errors at [roughness] spacing  // [signal]
                                             // substeps, for the step checks of the table stages
   // Beam, ball, traverse, sensors, output rate and the contact law as far as the keys fix it;
-  // the table stages complete the law (compression table, or k0 of the blocked force).
+  // the table stages complete the law (compression table, or k0 of the blocked force) in the scene's
+  // ResolvedContact (ball_on_beam_contact.hpp): the settings stay as read.
   beam::BallOnBeamModel model;
   ContactModel contact = ContactModel::hertz;
   std::string law_name;      // [contact] law as written, for the result file
@@ -63,7 +64,7 @@ struct BallOnBeamSettings {
   double band_limit_wavenumber = std::numeric_limits<double>::infinity();  // rad/m; B40
   // What the line samples are drawn from: psd (none), psd B40a-compensated (patch on a band-limited
   // line), or G_eq of texture_psd, band-limited (iso2d); for solver, psd until the equivalent-roughness
-  // table stage sets the PSD of h_eq, band-limited.
+  // table stage gives the PSD of h_eq, band-limited (in ResolvedContact).
   texture::Psd line_psd;
   ContactFilter filter = ContactFilter::patch;
   std::string filter_name;     // [contact] filter as written
@@ -78,7 +79,7 @@ struct BallOnBeamSettings {
   double spacing = 0.0;             // line texture sample spacing, m
   std::size_t line_samples = 0;     // over the whole span
   double patch_half_width = 0.0;    // contact_half_width for filter = patch, else 0 (no patch average)
-  double static_compression = 0.0;  // point laws: Hertz (or weight / k0) at the weight
+  double static_compression = 0.0;  // the keys' law at the weight: Hertz (or weight / k0); tables resolve theirs
   beam::ExactStepOptions step;
   bool dopri = false;  // Dormand-Prince reference instead of the exact step
   double rtol = 1e-8;
@@ -87,7 +88,8 @@ struct BallOnBeamSettings {
   bool sensor_mean = true;
   double confidence = 0.95, band_min = 0.0, band_max = 0.0;
   std::size_t time_histories = 0;
-  bool reference = true;  // [output] reference (written for the linearised law only)
+  bool reference = true;              // [output] reference (written for the linearised law only)
+  std::vector<std::string> warnings;  // legal but suspect physics (ball_on_beam_plausibility)
 
   bool linearised() const {
     return contact == ContactModel::linearised_spring || contact == ContactModel::linearised_solver;

@@ -1,6 +1,7 @@
 #include "src/scenes/ball_on_beam_writer.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <exception>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "src/ensemble/progress.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/psd_result.hpp"
+#include "src/scenes/ball_on_beam_plausibility.hpp"
 
 namespace rollspec::scenes {
 
@@ -43,17 +45,22 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
   w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
   w.attribute("/contact", "law", b_.law_name);
-  w.attribute("/contact", "static_compression", b_.static_compression);
+  const std::string loss = loss_of_contact_warning(share, linearised());
+  if (!loss.empty()) {  // printed even when quiet: the result's validity, not progress
+    std::fprintf(stderr, "rollspec: WARNING: %s\n", loss.c_str());
+    w.attribute("/contact", "loss_of_contact_warning", loss);
+  }
+  w.attribute("/contact", "static_compression", c_.static_compression);
   w.attribute("/contact", "patch_half_width", b_.patch_half_width);
   w.attribute("/contact", "filter", b_.filter_applied);
   if (b_.filter_applied != b_.filter_name)
     w.attribute("/contact", "filter_requested", b_.filter_name + " (not applied: the contact is solved on the strip)");
   w.attribute("/contact", "contact_half_width", b_.contact_half_width);
-  w.attribute("/contact", "effective_modulus", b_.model.contact.effective_modulus);
-  if (linearised()) w.attribute("/contact", "k0", b_.model.contact.k0);
+  w.attribute("/contact", "effective_modulus", c_.law.effective_modulus);
+  if (linearised()) w.attribute("/contact", "k0", c_.law.k0);
   if (blocked_solver()) {
-    w.attribute("/contact", "blocked_force_approach", blocked_.approach);
-    w.attribute("/contact", "blocked_force_input_hash", blocked_.input_hash);
+    w.attribute("/contact", "blocked_force_approach", c_.blocked.approach);
+    w.attribute("/contact", "blocked_force_input_hash", c_.blocked.input_hash);
   }
 
   const auto& b = b_.model.beam;
@@ -95,7 +102,7 @@ void BallOnBeamWriter::write_roughness(io::Hdf5Writer& w) const {
   std::vector<double> raw(k.size()), patch(k.size()), iso(k.size()), solver(k.size());
   bool have_iso = true;
   if (b_.filter == ContactFilter::iso2d) {
-    for (std::size_t i = 0; i < k.size(); ++i) iso[i] = b_.line_psd(k[i]);  // what the line was synthesised from
+    for (std::size_t i = 0; i < k.size(); ++i) iso[i] = c_.line_psd(k[i]);  // what the line was synthesised from
   } else {
     try {  // Eq. 38 at these k only: cheaper than the synthesis table
       iso = iso2d_line_psd_at(b_, k);
@@ -118,7 +125,7 @@ void BallOnBeamWriter::write_roughness(io::Hdf5Writer& w) const {
   w.write("/roughness/wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the rolling path (log grid)");
   w.make_scale("/roughness/wavenumber", "wavenumber");
   if (solver_filter()) {
-    for (std::size_t i = 0; i < k.size(); ++i) solver[i] = b_.line_psd(k[i]);  // what the line was synthesised from
+    for (std::size_t i = 0; i < k.size(); ++i) solver[i] = c_.line_psd(k[i]);  // what the line was synthesised from
     w.write("/roughness/psd_solver", {k.size()}, solver.data(), "m^3",
             "band-limited strip-mean PSD of the equivalent roughness h_eq (kernels/contact ER-2) the line was "
             "synthesised from");
@@ -146,7 +153,7 @@ void BallOnBeamWriter::write_linear_reference(io::Hdf5Writer& w, const std::vect
   beam::LinearReferenceInput in;
   in.beam = &b_.model.beam;
   in.ball_mass = b_.model.ball.mass;
-  in.damping = b_.model.contact.damping;
+  in.damping = c_.law.damping;
   in.sensors = b_.model.sensors;
   in.sensor_mean = rows() > b_.model.sensors.size();
   in.welch = welch_;
@@ -155,10 +162,10 @@ void BallOnBeamWriter::write_linear_reference(io::Hdf5Writer& w, const std::vect
   if (blocked_solver()) {
     ex.time_psd = [this](double fi) { return blocked_force_time_psd(fi); };
   } else {
-    ex.time_psd = texture::time_psd(b_.line_psd, b_.model.traverse.speed);
+    ex.time_psd = texture::time_psd(c_.line_psd, b_.model.traverse.speed);
   }
   ex.blocked_force = blocked_solver();
-  ex.k0 = b_.model.contact.k0;
+  ex.k0 = c_.law.k0;
   ex.speed = b_.model.traverse.speed;
   ex.spacing = b_.spacing;
   ex.patch_half_width = b_.patch_half_width;

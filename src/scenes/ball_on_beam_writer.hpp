@@ -2,15 +2,13 @@
 // Scene ball-on-beam's result file (besides the time histories, which replay realisations): the
 // ensemble's PSDs, the contact and ball PSDs, the contact law as resolved, the beam, /roughness
 // (the path PSD under each contact filter) and the linearised law's frequency-domain /reference.
-#include <functional>
-#include <utility>
 #include <string>
 #include <vector>
 
 #include "kernels/spectral/welch.hpp"
+#include "src/scenes/ball_on_beam_contact.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
 #include "src/scenes/psd_rows.hpp"
-#include "src/stiffness/blocked_force_table.hpp"
 
 namespace rollspec::io {
 class Hdf5Writer;
@@ -23,17 +21,10 @@ namespace rollspec::scenes {
 
 class BallOnBeamWriter {
  public:
-  // `blocked_force_time_psd`: the F0 PSD in time (blocked_force = solver), for the reference.
-  BallOnBeamWriter(const BallOnBeamSettings& b, const spectral::WelchPlan& welch, const PsdRows& rows,
-                   double line_fundamental, const stiffness::BlockedForceTable& blocked,
-                   std::function<double(double)> blocked_force_time_psd, bool quiet)
-      : b_(b),
-        welch_(&welch),
-        rows_(&rows),
-        line_fundamental_(line_fundamental),
-        blocked_(blocked),
-        blocked_force_time_psd_(std::move(blocked_force_time_psd)),
-        quiet_(quiet) {}
+  // `c`: the contact as the table stages resolved it (law, static compression, line PSD, blocked force).
+  BallOnBeamWriter(const BallOnBeamSettings& b, const ResolvedContact& c, const spectral::WelchPlan& welch,
+                   const PsdRows& rows, double line_fundamental, bool quiet)
+      : b_(b), c_(c), welch_(&welch), rows_(&rows), line_fundamental_(line_fundamental), quiet_(quiet) {}
 
   void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const;
 
@@ -46,14 +37,13 @@ class BallOnBeamWriter {
   bool blocked_solver() const { return b_.blocked_solver(); }
   bool solver_filter() const { return b_.filter == ContactFilter::solver; }
   bool writes_reference() const { return b_.linearised() && b_.reference; }
-  double blocked_force_time_psd(double f) const { return blocked_force_time_psd_(f); }
+  double blocked_force_time_psd(double f) const { return scenes::blocked_force_time_psd(b_, c_.blocked, f); }
 
   const BallOnBeamSettings& b_;
+  const ResolvedContact& c_;
   const spectral::WelchPlan* welch_;
   const PsdRows* rows_;
   double line_fundamental_;
-  const stiffness::BlockedForceTable& blocked_;
-  std::function<double(double)> blocked_force_time_psd_;
   bool quiet_;
 };
 

@@ -9,6 +9,9 @@
 #include "kernels/texture/psd_units.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/rolling_pipe_sections.hpp"
+#include "src/study/sections/study_section.hpp"
+#include "src/study/sections/surface_grid_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -21,51 +24,17 @@ const double kPi = 3.141592653589793;
 }  // namespace
 
 std::vector<KeySpec> rolling_pipe_keys() {
-  std::vector<KeySpec> k = {
-      real_key("pipe", "length", "m", "tube length (its axis lies across the rolling direction)", std::string("1"), 0.0,
-               inf, false),
-      real_key("pipe", "diameter", "m", "outer diameter (the contact spheres' diameter)", std::string("0.06"), 0.0, inf,
-               false),
-      real_key("pipe", "inner_diameter", "m", "inner diameter (0: solid bar)", std::string("0.052"), 0.0, inf),
-      real_key("pipe", "youngs_modulus", "Pa", "Young's modulus", std::string("210e9"), 0.0, inf, false),
-      real_key("pipe", "poisson", "-", "Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("pipe", "density", "kg/m^3", "density", std::string("7850"), 0.0, inf, false),
-      integer_key("pipe", "elements", "quadratic 3-node beam elements along the tube (2n + 1 contact nodes)",
-                  std::string("4"), 1, 1000),
-      real_key("roll", "speed", "m/s", "initial rolling speed v (spin v/r: rolling without slip)", std::string("0.5"),
-               0.0, inf, false),
-      real_key("roll", "distance", "m", "distance rolled during the record (record length distance/speed)",
-               std::string("0.3"), 0.0, inf, false),
-      choice_key("roughness", "kind",
-                 "line: a line texture along the rolling direction, the same under every node; isotropic: an isotropic "
-                 "surface realisation from [surface] (spectral or seed method), different under every node",
-                 std::string("line"), {"line", "isotropic"}),
-      real_key("roughness", "spacing", "m", "sample spacing of the line texture", std::string("1e-3"), 0.0, inf, false),
-      real_key("contact", "friction", "-", "Coulomb coefficient mu (0: frictionless, the tube slides)",
-               std::string("0.3"), 0.0, inf),
-      real_key("contact", "penalty_normal", "N/m", "normal penalty eps_n per contact node", std::string("2e7"), 0.0,
-               inf, false),
-      real_key("contact", "penalty_tangential", "N/m", "tangential penalty eps_t per contact node", std::string("2e6"),
-               0.0, inf, false),
-      real_key("contact", "damping_ratio", "-",
-               "normal contact damper per node as a ratio of critical on the node's lumped mass: c = 2 zeta sqrt(eps_n "
-               "m_node)",
-               std::string("0.1"), 0.0, 10.0),
-      bool_key("contact", "rolling", "rolling correction of the tangential gap (false: seed 000's 'no rolling')",
-               std::string("true")),
-      real_key("gravity", "acceleration", "m/s^2", "gravity, normal to the mean surface", std::string("9.81"), 0.0, inf,
-               false),
-      real_key("analysis", "dt", "s", "time step (also the sampling interval of the spectra)", std::string("1e-4"), 0.0,
-               inf, false),
-      real_key("analysis", "tolerance", "-", "Newton convergence: residual 2-norm relative to the tube's weight",
-               std::string("1e-8"), 0.0, 1.0, false),
-      text_key("sensors", "positions",
-               "sensor positions along the tube as fractions of its length (nearest node), comma-separated",
-               std::string("0,0.5,1")),
-      bool_key("sensors", "average", "add the mean PSD over sensors", std::string("true")),
-      real_key("spectrum", "skip_start", "s", "start of the record left out of the spectra (settling on the surface)",
-               std::string("0.02"), 0.0, inf),
-  };
+  std::vector<KeySpec> k = PipeSection::keys();
+  for (auto& key : RollSection::keys()) k.push_back(key);
+  for (auto& key : PipeRoughnessSection::keys()) k.push_back(key);
+  for (auto& key : PipeContactSection::keys()) k.push_back(key);
+  for (auto& key : PipeGravitySection::keys()) k.push_back(key);
+  for (auto& key : PipeAnalysisSection::keys()) k.push_back(key);
+  for (auto& key : PipeSensorsSection::keys()) k.push_back(key);
+  // skip_start is read by SpectrumSection; its doc is this scene's.
+  k.push_back(real_key("spectrum", "skip_start", "s",
+                       "start of the record left out of the spectra (settling on the surface)", std::string("0.02"),
+                       0.0, inf));
   for (auto& key : texture_io::psd_keys()) k.push_back(key);
   for (auto& key : texture_io::surface_keys()) k.push_back(key);
   return k;
@@ -74,38 +43,42 @@ std::vector<KeySpec> rolling_pipe_keys() {
 RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   using namespace rolling;
   RollingPipeSettings p;
-  p.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
+  p.seed = StudySection::parse(s).seed;
   p.psd = texture_io::study_psd(s);
-  p.line = s.text("roughness.kind") == "line";
-  p.sensor_mean = s.boolean("sensors.average");
+  const auto roughness = PipeRoughnessSection::parse(s);
+  p.line = roughness.line;
+  const auto sensors = PipeSensorsSection::parse(s);
+  p.sensor_mean = sensors.average;
   const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
   p.confidence = spectrum.confidence;
   p.band_min = spectrum.band_min;
   p.band_max = spectrum.band_max;
-  const double d = s.real("pipe.diameter"), di = s.real("pipe.inner_diameter");
-  if (di >= d) s.refuse("pipe.inner_diameter", "must be smaller than [pipe] diameter");
-  p.radius = 0.5 * d;
-  p.length = s.real("pipe.length");
-  p.section = circular_section(s.real("pipe.youngs_modulus"), s.real("pipe.poisson"), s.real("pipe.density"), d, di);
-  p.elements = static_cast<int>(s.integer("pipe.elements"));
-  p.speed = s.real("roll.speed");
-  p.distance = s.real("roll.distance");
-  p.dt = s.real("analysis.dt");
-  p.gravity = s.real("gravity.acceleration");
+  const auto pipe = PipeSection::parse(s);
+  p.radius = 0.5 * pipe.diameter;
+  p.length = pipe.length;
+  p.section = circular_section(pipe.youngs_modulus, pipe.poisson, pipe.density, pipe.diameter, pipe.inner_diameter);
+  p.elements = static_cast<int>(pipe.elements);
+  const auto roll = RollSection::parse(s);
+  p.speed = roll.speed;
+  p.distance = roll.distance;
+  const auto analysis = PipeAnalysisSection::parse(s);
+  p.dt = analysis.dt;
+  p.gravity = PipeGravitySection::parse(s).acceleration;
   p.steps = static_cast<std::size_t>(std::llround(p.distance / p.speed / p.dt));
-  if (p.steps < 16) s.refuse("roll.distance", "gives fewer than 16 time steps at [analysis] dt");
-  if (p.steps > 50'000'000) s.refuse("analysis.dt", "gives more than 5e7 steps per realisation");
+  if (p.steps < 16) roll.distance_origin.refuse("gives fewer than 16 time steps at [analysis] dt");
+  if (p.steps > 50'000'000) analysis.dt_origin.refuse("gives more than 5e7 steps per realisation");
   const int nodes = p.nodes();
   // Lumped node mass of the quadratic elements: m_e (1/6, 2/3, 1/6), so an interior end node
   // carries m_e/3 and a mid node 2 m_e/3; the stiffest contact oscillation is at the lightest.
   const double m_e = p.section.rhoA * p.length / p.elements;
   const double m_light = m_e / 6.0, m_mid = 2.0 * m_e / 3.0;
   p.law.radius = p.radius;
-  p.law.eps_n = s.real("contact.penalty_normal");
-  p.law.eps_t = s.real("contact.penalty_tangential");
-  p.law.mu = s.real("contact.friction");
-  p.law.rolling = s.boolean("contact.rolling");
-  p.damping_ratio = s.real("contact.damping_ratio");
+  const auto contact = PipeContactSection::parse(s);
+  p.law.eps_n = contact.penalty_normal;
+  p.law.eps_t = contact.penalty_tangential;
+  p.law.mu = contact.friction;
+  p.law.rolling = contact.rolling;
+  p.damping_ratio = contact.damping_ratio;
   // The damper of each node follows its lumped mass: c = 2 zeta sqrt(eps_n m_node).
   for (int i = 0; i < nodes; ++i) {
     const double mn = i % 2 == 1 ? m_mid : (i == 0 || i == nodes - 1 ? m_light : 2.0 * m_light);
@@ -118,34 +91,37 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
     m << "= " << p.dt
       << " s does not resolve the contact oscillation of the lightest node (T_c = 2 pi sqrt(m/eps_n) = " << tc
       << " s); allowed: dt <= T_c/20 = " << tc / 20.0 << " s";
-    s.refuse("analysis.dt", m.str());
+    analysis.dt_origin.refuse(m.str());
   }
   // Sensors: nearest nodes.
-  for (double f : s.numbers("sensors.positions")) {
+  for (double f : sensors.positions) {
     if (!(f >= 0.0 && f <= 1.0))
-      s.refuse("sensors.positions", "fraction " + std::to_string(f) + " lies outside [0, 1]");
+      sensors.positions_origin.refuse("fraction " + std::to_string(f) + " lies outside [0, 1]");
     p.sensor_nodes.push_back(static_cast<int>(std::lround(f * (nodes - 1))));
     p.sensor_fractions.push_back(f);
   }
-  if (p.sensor_nodes.empty()) s.refuse("sensors.positions", "lists no sensor; allowed: fractions in [0, 1]");
+  if (p.sensor_nodes.empty()) sensors.positions_origin.refuse("lists no sensor; allowed: fractions in [0, 1]");
   // The rolled strip: x from -margin to distance + margin (the spheres' footprint and a cell).
   p.x_lo = -(p.radius + 0.02 * p.distance + 0.01);
   p.x_hi = p.distance + p.radius + 0.02 * p.distance + 0.01;
+  KeyOrigin spacing_origin = roughness.spacing_origin;  // the key that set the spacing
   if (p.line) {
-    p.spacing = s.real("roughness.spacing");
+    p.spacing = roughness.spacing;
     p.line_samples = static_cast<std::size_t>(std::ceil((p.x_hi - p.x_lo) / p.spacing)) + 1;
     if (p.line_samples > (1u << 24))
-      s.refuse("roughness.spacing", "gives more than 2^24 samples over the rolled strip");
+      roughness.spacing_origin.refuse("gives more than 2^24 samples over the rolled strip");
   } else {
-    p.spacing = s.real("surface.spacing");
-    const double nx = static_cast<double>(s.integer("surface.nx")), ny = static_cast<double>(s.integer("surface.ny"));
+    const auto grid = SurfaceGridSection::parse(s);
+    spacing_origin = grid.spacing_origin;
+    p.spacing = grid.spacing;
+    const double nx = static_cast<double>(grid.nx), ny = static_cast<double>(grid.ny);
     const double need_x = p.x_hi - p.x_lo, need_y = p.length + 2.0 * p.radius + 2.0 * p.spacing;
     if ((nx - 1.0) * p.spacing < need_x || (ny - 1.0) * p.spacing < need_y) {
       std::ostringstream m;
       m << "the surface grid covers " << (nx - 1.0) * p.spacing << " m x " << (ny - 1.0) * p.spacing
         << " m; allowed: at least " << need_x << " m along the rolling direction (nx) and " << need_y
         << " m along the tube (ny)";
-      s.refuse("surface.nx", m.str());
+      grid.nx_origin.refuse(m.str());
     }
   }
   // A priori single-point check with the PSD's rms curvature sqrt(m4) over the sampled
@@ -160,7 +136,7 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
       << " m is " << p.radius * p.rms_curvature
       << ": the node spheres would touch at two points in most valleys; allowed: r sqrt(m4) <= 0.5 (raise the "
          "short wavelength cut-off or the roughness spacing)";
-    s.refuse(p.line ? "roughness.spacing" : "surface.spacing", m.str());
+    spacing_origin.refuse(m.str());
   }
   p.samples = p.steps + 1;
   p.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start / p.dt));
@@ -176,7 +152,7 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   p.solver.max_cuts = 12;
   p.solver.max_line_search = 8;
   p.solver.disp_tol = 1e-14;
-  p.solver.force_tol = s.real("analysis.tolerance") * p.section.rhoA * p.length * p.gravity;
+  p.solver.force_tol = analysis.tolerance * p.section.rhoA * p.length * p.gravity;
   return p;
 }
 

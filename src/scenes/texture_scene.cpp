@@ -1,9 +1,10 @@
 #include "src/scenes/texture_scene.hpp"
 
-#include <limits>
-
 #include "src/error.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/lines_section.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -11,23 +12,20 @@ namespace rollspec::scenes {
 using namespace study;
 
 std::vector<KeySpec> texture_scene_keys() {
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<KeySpec> keys = texture_io::psd_keys();
-  keys.push_back(integer_key("lines", "count", "line textures to generate", std::string("10"), 0, 1e6));
-  keys.push_back(real_key("lines", "length", "m", "length of each line texture", std::string("0.4"), 0.0, inf, false));
-  keys.push_back(real_key("lines", "spacing", "m", "sample spacing dx of the lines (dx <= pi / k_max)",
-                          std::string("1e-5"), 0.0, inf, false));
-  for (auto& k : texture_io::surface_keys()) keys.push_back(k);
-  keys.push_back(integer_key("surface", "count", "isotropic surfaces to generate", std::string("0"), 0, 1e6));
+  std::vector<KeySpec> keys = TextureSection::keys();
+  for (auto& k : LinesSection::keys()) keys.push_back(k);
+  for (auto& k : SurfaceSection::keys()) keys.push_back(k);
+  for (auto& k : SurfaceSection::count_keys()) keys.push_back(k);
   return keys;
 }
 
 namespace {
 class TextureScene final : public Scene {
  public:
-  explicit TextureScene(const KeyReader& s) : lines_(s.integer("lines.count")), surfaces_(s.integer("surface.count")) {
-    texture_io::study_psd(s);    // validates the PSD source (files, ranges) now
-    add_stages(fixed_stages());  // after the members the descriptions name
+  explicit TextureScene(const KeyReader& s)
+      : lines_(LinesSection::parse(s).count), surfaces_(SurfaceSection::parse(s).count) {
+    texture_io::study_psd(TextureSection::parse(s));  // validates the PSD source (files, ranges) now
+    add_stages(fixed_stages());                       // after the members the descriptions name
   }
   std::vector<StagePlan> fixed_stages() const {
     return {

@@ -15,6 +15,7 @@
 #include "kernels/spectral/welch.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
@@ -171,6 +172,8 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
   t.strips = static_cast<double>(n_strips);
   contact::ContactSolver solver(window_grid, e_star);
   const auto start = std::chrono::steady_clock::now();
+  ensemble::Progress progress("equivalent roughness strips", n_strips, quiet);  // bar and ETA
+  progress.show_after(2.0);
   for (std::size_t si = 0; si < n_strips; ++si) {
     const texture::Surface strip = study_strip(ts, StripGrid{nx, ny, dx, geo.derived_cell}, si);
     contact::EquivalentRoughness r;
@@ -192,6 +195,7 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
       std::fprintf(stderr, "%sequivalent roughness: strip %zu of %zu, %d CG iterations, %.3g s wall\n",
                    ensemble::rank_prefix().c_str(), si + 1, n_strips, r.iterations,
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    progress.advance();
   }
   for (std::size_t k = 0; k < mean.size(); ++k) {
     t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));

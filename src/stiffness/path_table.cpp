@@ -15,6 +15,7 @@
 #include "kernels/texture/line_texture.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
@@ -162,8 +163,11 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
   if (!quiet) std::fprintf(stderr, "%spath table: %s\n", ensemble::rank_prefix().c_str(), g.describe().c_str());
   const auto start = std::chrono::steady_clock::now();
   int rows_done = 0;
+  ensemble::Progress progress("path table rows", g.approaches, quiet);  // bar and ETA (rows may exceed it)
+  progress.show_after(2.0);
   if (!quiet)
     po.on_row = [&](double approach, int solves, int iterations) {
+      if (static_cast<std::size_t>(rows_done) < g.approaches) progress.advance();  // not past its total
       std::fprintf(
           stderr,
           "%spath table: row %d of %zu or more (approach %.4g um) done, %.1f CG iterations per position, %.3g s\n",

@@ -1,6 +1,8 @@
 #include "src/texture/texture_keys.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -19,6 +21,9 @@
 #include "src/io/csv_table.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 
 namespace fs = std::filesystem;
 
@@ -27,8 +32,6 @@ namespace rollspec::texture_io {
 using namespace study;
 
 namespace {
-const double inf = std::numeric_limits<double>::infinity();
-
 texture::Extension extension_of(const std::string& s) {
   if (s == "constant") return texture::Extension::constant;
   if (s == "power_law") return texture::Extension::power_law;
@@ -36,15 +39,10 @@ texture::Extension extension_of(const std::string& s) {
   return texture::Extension::error;
 }
 
-std::string study_relative(const KeyReader& s, const std::string& p) {
-  if (fs::path(p).is_absolute()) return p;
-  return (fs::path(s.file()).parent_path() / p).string();
-}
-
 // PSD table: first column wavenumber_rad_per_m or spatial_frequency_cycles_per_m, second column
 // psd_m3 or psd_um2_m (one-sided, per unit of the first column).
-texture::Psd read_psd_table(const KeyReader& s) {
-  const std::string path = s.path("texture.table");
+texture::Psd read_psd_table(const TextureSection& s) {
+  const std::string& path = s.table_path;
   const io::CsvTable t = io::read_csv(path);
   if (t.columns.size() != 2)
     throw data_error(path + ":1: a PSD table has 2 columns (abscissa, psd), found " + std::to_string(t.columns.size()));
@@ -74,7 +72,7 @@ texture::Psd read_psd_table(const KeyReader& s) {
   }
   if (t.rows() < 2) throw data_error(path + ": a PSD table needs at least 2 rows");
   try {
-    return texture::TabulatedPsd(k, g, extension_of(s.text("texture.table_extension"))).to_psd();
+    return texture::TabulatedPsd(k, g, extension_of(s.table_extension)).to_psd();
   } catch (const std::invalid_argument& e) {
     throw data_error(path + ": " + e.what());
   }
@@ -95,149 +93,155 @@ texture::Profile read_profile(const std::string& path) {
 }
 
 // Eq. 15-17 of the study's measured profiles.
-texture::EstimatedPsd profile_estimate(const KeyReader& s) {
-  const auto files = s.list("texture.profiles");
+texture::EstimatedPsd profile_estimate(const TextureSection& s) {
+  const auto& files = s.profile_paths;
   if (files.size() < 2)
-    s.refuse("texture.profiles", "names " + std::to_string(files.size()) +
-                                     " profile file(s); allowed: at least 2 comma-separated CSV files");
+    s.profiles_origin.refuse("names " + std::to_string(files.size()) +
+                             " profile file(s); allowed: at least 2 comma-separated CSV files");
   std::vector<texture::Profile> profiles;
-  for (const auto& f : files) {
-    const std::string p = study_relative(s, f);
-    io::require_regular_input(p, "profile file (" + s.where("texture.profiles") + ")");
-    if (!fs::is_regular_file(p)) throw missing_input(s.where("texture.profiles") + ": no such profile file " + p);
+  for (const auto& p : files) {
+    io::require_regular_input(p, "profile file (" + s.profiles_origin.where + ")");
+    if (!fs::is_regular_file(p)) throw missing_input(s.profiles_origin.where + ": no such profile file " + p);
     profiles.push_back(read_profile(p));
     if (profiles.back().z.size() < 8)
       throw data_error(p + ": " + std::to_string(profiles.back().z.size()) + " samples; a profile needs at least 8");
   }
   try {
     texture::ProfilePsdOptions opt;
-    opt.median_filter = s.boolean("texture.median_filter");
+    opt.median_filter = s.median_filter;
     return texture::profile_psd(profiles, opt);
   } catch (const std::invalid_argument& e) {
-    throw data_error(s.where("texture.profiles") + ": " + e.what());
+    throw data_error(s.profiles_origin.where + ": " + e.what());
   }
 }
 
 // The estimate band-averaged in log k (kernels/texture/README.md Eq. 33-35): the raw periodogram's
 // bin-to-bin scatter would make isotropic surfaces far too rough (inverse Abel transform, Eq. 19).
-texture::Psd profile_psd(const KeyReader& s) {
+texture::Psd profile_psd(const TextureSection& s) {
   const texture::EstimatedPsd est = profile_estimate(s);
   try {
-    texture::Psd psd = texture::smoothed_psd_table(est, extension_of(s.text("texture.table_extension"))).to_psd();
+    texture::Psd psd = texture::smoothed_psd_table(est, extension_of(s.table_extension)).to_psd();
     psd.cell_average = true;  // Eq. 14b: every synthesis grid keeps the table's variance
     return psd;
   } catch (const std::invalid_argument& e) {
-    throw data_error(s.where("texture.profiles") + ": " + e.what());
+    throw data_error(s.profiles_origin.where + ": " + e.what());
   }
 }
 }  // namespace
 
-std::vector<KeySpec> psd_keys() {
-  return {
-      choice_key("texture", "source", "where the roughness PSD comes from", std::string("self-affine"),
-                 {"self-affine", "table", "profiles", "iso8608", "iso3095"}),
-      path_key("texture", "table",
-               "PSD table CSV: header wavenumber_rad_per_m or spatial_frequency_cycles_per_m, then psd_m3 or psd_um2_m",
-               std::string("none")),
-      choice_key("texture", "table_extension", "PSD outside the table or measured band", std::string("error"),
-                 {"error", "constant", "power_law", "zero"}),
-      text_key("texture", "profiles", "measured profiles: comma-separated CSV files (position_m,height_m)",
-               std::string("")),
-      bool_key("texture", "median_filter", "3-point median filter on measured profiles", std::string("false")),
-      real_key("texture", "hurst", "-", "Hurst exponent H of the self-affine PSD", std::string("0.8"), 0.0, 1.0, false,
-               true),
-      real_key("texture", "long_wavelength", "m", "long-wavelength cut-off (0: none)", std::string("0"), 0.0, inf),
-      real_key("texture", "rolloff_wavelength", "m", "roll-off wavelength (plateau above it)", std::string("1e-3"), 0.0,
-               inf, false),
-      real_key("texture", "short_wavelength", "m", "short-wavelength cut-off", std::string("1e-5"), 0.0, inf, false),
-      choice_key("texture", "rms_kind", "what `rms` sets for the self-affine PSD", std::string("height"),
-                 {"height", "slope"}),
-      real_key("texture", "rms", "m (height) or - (slope)", "rms height or rms slope of the self-affine PSD",
-               std::string("1e-6"), 0.0, inf, false),
-      choice_key("texture", "road_class", "ISO 8608 road class", std::string("A"),
-                 {"A", "B", "C", "D", "E", "F", "G", "H"}),
-      choice_key("texture", "amplitudes",
-                 "harmonic amplitudes: rayleigh (Gaussian) or deterministic (the target PSD exactly)",
-                 std::string("rayleigh"), {"rayleigh", "deterministic"}),
-  };
-}
+std::vector<KeySpec> psd_keys() { return TextureSection::keys(); }
 
-std::vector<KeySpec> surface_keys() {
-  return {
-      choice_key("surface", "method",
-                 "isotropic surfaces: spectral (2D Fourier filter of the isotropic PSD) or seed (seed 001 Eq. 9-10: "
-                 "sums of line textures)",
-                 std::string("spectral"), {"spectral", "seed"}),
-      integer_key("surface", "nx", "grid points along x (even)", std::string("128"), 4, 1 << 14),
-      integer_key("surface", "ny", "grid points along y (even)", std::string("128"), 4, 1 << 14),
-      real_key("surface", "spacing", "m", "grid spacing dx = dy", std::string("1e-6"), 0.0, inf, false),
-      real_key("surface", "anisotropy", "-", "correlation length ratio x/y (spectral method)", std::string("1"), 0.0,
-               inf, false),
-      real_key(
-          "surface", "correlation_x", "m",
-          "correlation length along x (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)",
-          std::string("1e-5"), 0.0, inf, false),
-      real_key(
-          "surface", "correlation_y", "m",
-          "correlation length along y (seed method, 1/e; unset with [texture] source = profiles: the profiles' mean)",
-          std::string("1e-5"), 0.0, inf, false),
-      real_key("surface", "sigma", "m",
-               "rms height of seed-method surfaces (unset with [texture] source = profiles: the profiles' mean "
-               "standard deviation)",
-               std::string("3e-7"), 0.0, inf, false),
-  };
-}
+std::vector<KeySpec> surface_keys() { return SurfaceSection::keys(); }
 
-texture::Psd study_psd(const KeyReader& s) {
-  const std::string source = s.text("texture.source");
+texture::Psd study_psd(const KeyReader& s) { return study_psd(TextureSection::parse(s)); }
+
+texture::Psd study_psd(const TextureSection& s) {
+  const std::string& source = s.source;
   try {
     if (source == "table") {
-      if (s.text("texture.table") == "none") s.refuse("texture.source", "needs [texture] table = a PSD table file");
+      if (s.table == "none") s.source_origin.refuse("needs [texture] table = a PSD table file");
       return read_psd_table(s);
     }
     if (source == "profiles") return profile_psd(s);
     if (source == "iso8608") {
       texture::Iso8608Spec spec;
-      spec.road_class = s.text("texture.road_class")[0];
+      spec.road_class = s.road_class[0];
       return texture::iso8608_psd(spec);
     }
-    if (source == "iso3095") return texture::iso3095_rail_psd(extension_of(s.text("texture.table_extension"))).to_psd();
+    if (source == "iso3095") return texture::iso3095_rail_psd(extension_of(s.table_extension)).to_psd();
     texture::SelfAffineSpec spec;
-    spec.hurst = s.real("texture.hurst");
-    const double lw = s.real("texture.long_wavelength");
-    spec.k_rolloff = 2.0 * M_PI / s.real("texture.rolloff_wavelength");
+    spec.hurst = s.hurst;
+    const double lw = s.long_wavelength;
+    spec.k_rolloff = 2.0 * M_PI / s.rolloff_wavelength;
     spec.k_long = lw > 0.0 ? 2.0 * M_PI / lw : 0.0;
-    spec.k_short = 2.0 * M_PI / s.real("texture.short_wavelength");
-    if (spec.k_long > spec.k_rolloff) s.refuse("texture.long_wavelength", "must be at least the roll-off wavelength");
+    spec.k_short = 2.0 * M_PI / s.short_wavelength;
+    if (spec.k_long > spec.k_rolloff) s.long_wavelength_origin.refuse("must be at least the roll-off wavelength");
     if (spec.k_short <= spec.k_rolloff)
-      s.refuse("texture.short_wavelength", "must be shorter than the roll-off wavelength");
-    spec.target = s.text("texture.rms_kind") == "slope" ? texture::RmsTarget::slope : texture::RmsTarget::height;
-    spec.rms = s.real("texture.rms");
+      s.short_wavelength_origin.refuse("must be shorter than the roll-off wavelength");
+    spec.target = s.rms_kind == "slope" ? texture::RmsTarget::slope : texture::RmsTarget::height;
+    spec.rms = s.rms;
     return texture::SelfAffinePsd(spec).to_psd();
   } catch (const std::invalid_argument& e) {
-    throw config_error(s.where("texture.source") + ": " + e.what());
+    throw config_error(s.source_origin.where + ": " + e.what());
   }
 }
 
-spectral::Amplitudes study_amplitudes(const KeyReader& s) {
-  return s.text("texture.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh
-                                                    : spectral::Amplitudes::deterministic;
+spectral::Amplitudes study_amplitudes(const KeyReader& s) { return study_amplitudes(TextureSection::parse(s)); }
+
+spectral::Amplitudes study_amplitudes(const TextureSection& s) {
+  return s.amplitudes == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
 }
 
 namespace {
-// A table PSD asked for a wavenumber outside its range: name the key that allows it.
-std::string grid_message(const LineGeneratorKeys& k, const std::exception& e) {
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+// ISO 3095 covers 400 mm down to 3.15 mm: say so, and the frequency of its shortest wavelength.
+std::string iso3095_note(const LineGeneratorKeys& k) {
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
+  for (const auto& b : texture::iso3095_rail_roughness_limit()) {
+    shortest = std::min(shortest, b.wavelength_nominal);
+    longest = std::max(longest, b.wavelength_nominal);
+  }
+  std::string m = "; the ISO 3095 spectrum stops at " + num(shortest * 1e3) + " mm wavelength (its longest is " +
+                  num(longest * 1e3) + " mm)";
+  if (k.speed > 0.0)
+    m += ": " + num(shortest * 1e3) + " mm is " + num(k.speed / shortest) + " Hz at " + k.speed_key + " = " +
+         num(k.speed) + " m/s";
+  return m;
+}
+
+// A grid error of the kernels in study keys: which key to change and to what. spacing: the grid's
+// dx; stretch: how much finer than pi/k_max the grid must be (the anisotropy of spectral surfaces).
+std::string grid_message(const LineGeneratorKeys& k, const std::exception& e, double spacing, double stretch) {
   std::string m = k.spacing_where + ": " + e.what();
-  if (dynamic_cast<const std::domain_error*>(&e))
-    m += "; allowed: a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
-         "a coarser spacing), or " +
-         k.extension_where + " set to zero, constant or power_law";
+  if (dynamic_cast<const std::domain_error*>(&e)) {  // a table PSD asked outside its range
+    m += "; allowed: [texture] table_extension set to zero, constant or power_law (now " + k.extension_where +
+         "), or a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
+         "a coarser spacing)";
+    if (k.source == "iso3095") m += iso3095_note(k);
+  }
+  if (const auto* u = dynamic_cast<const texture::UnresolvedPsd*>(&e)) {
+    if (!std::isfinite(u->k_max)) {  // a table extended beyond its last wavenumber
+      m += "; allowed: [texture] table_extension = zero or error (now " + k.extension + "), so that the PSD ends at " +
+           "the table's last wavenumber, with " + k.spacing_key + " at most pi over that wavenumber";
+    } else {
+      m += "; allowed: " + k.spacing_key + " at most " + num(M_PI / (u->k_max * stretch)) + " m";
+      if (k.source == "self-affine")
+        m += ", or [texture] short_wavelength at least " + num(2.0 * spacing * stretch) + " m";
+      if (k.source == "iso3095") m += iso3095_note(k);
+    }
+  }
   return m;
 }
 }  // namespace
 
+LineGeneratorKeys LineGeneratorKeys::of(const TextureSection& t, const KeyOrigin& spacing,
+                                        const std::string& spacing_key) {
+  LineGeneratorKeys k;
+  k.amplitudes = study_amplitudes(t);
+  k.spacing_where = spacing.where;
+  k.extension_where = t.table_extension_origin.where;
+  k.spacing_key = spacing_key;
+  k.source = t.source;
+  k.extension = t.table_extension;
+  return k;
+}
+
 LineGeneratorKeys LineGeneratorKeys::parse(const KeyReader& s, const std::string& key) {
-  return {study_amplitudes(s), s.where(key), s.where("texture.table_extension")};
+  const auto dot = key.find('.');
+  LineGeneratorKeys k =
+      of(TextureSection::parse(s), KeyOrigin{s.where(key)}, "[" + key.substr(0, dot) + "] " + key.substr(dot + 1));
+  for (const auto& spec : s.keys())
+    if (spec.section == "ball") {  // a rolling ball: its speed turns wavelengths into frequencies
+      k.speed = BallSection::parse(s).speed;
+      k.speed_key = "[ball] speed";
+      break;
+    }
+  return k;
 }
 
 std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& k, const texture::Psd& psd,
@@ -250,7 +254,7 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
   try {
     return std::make_unique<texture::LineTextureGenerator>(psd, ls);
   } catch (const std::exception& e) {
-    throw config_error(grid_message(k, e));
+    throw config_error(grid_message(k, e, spacing, 1.0));
   }
 }
 
@@ -260,32 +264,37 @@ std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const KeyRea
   return line_generator(LineGeneratorKeys::parse(s, key), psd, spacing, samples, truncate);
 }
 
-std::vector<std::string> profile_files(const KeyReader& s) {
-  std::vector<std::string> out;
-  if (!s.has("texture.source") || s.text("texture.source") != "profiles") return out;
-  for (const auto& f : s.list("texture.profiles")) out.push_back(study_relative(s, f));
-  return out;
+std::vector<std::string> profile_files(const KeyReader& s) { return profile_files(TextureSection::parse(s)); }
+
+std::vector<std::string> profile_files(const TextureSection& s) {
+  if (!s.present || s.source != "profiles") return {};
+  return s.profile_paths;
 }
 
-std::string psd_input_fingerprint(const KeyReader& s) {
+std::string psd_input_fingerprint(const KeyReader& s) { return psd_input_fingerprint(TextureSection::parse(s)); }
+
+std::string psd_input_fingerprint(const TextureSection& s) {
   std::ostringstream out;
   auto add_file = [&](const std::string& p) {
     std::ifstream in(p, std::ios::binary);
     out << "file " << fs::path(p).filename().string() << "\n" << in.rdbuf() << "\n";
   };
-  const std::string source = s.text("texture.source");
-  if (source == "table") add_file(s.path("texture.table"));
-  if (source == "profiles")
-    for (const auto& f : s.list("texture.profiles")) add_file(study_relative(s, f));
+  if (s.source == "table") add_file(s.table_path);
+  if (s.source == "profiles")
+    for (const auto& p : s.profile_paths) add_file(p);
   return out.str();
 }
 
 std::vector<std::string> profile_derived_surface_keys(const KeyReader& s) {
+  return profile_derived_surface_keys(TextureSection::parse(s), SurfaceSection::parse(s));
+}
+
+std::vector<std::string> profile_derived_surface_keys(const TextureSection& t, const SurfaceSection& f) {
   std::vector<std::string> out;
-  if (!s.has("texture.source") || s.text("texture.source") != "profiles" || s.text("surface.method") != "seed")
-    return out;
-  for (const char* k : {"sigma", "correlation_x", "correlation_y"})
-    if (s.entry(std::string("surface.") + k).origin.line == 0) out.push_back(k);  // 0: the documented default, not set
+  if (!t.present || t.source != "profiles" || f.method != "seed") return out;
+  if (f.sigma_default) out.push_back("sigma");
+  if (f.correlation_x_default) out.push_back("correlation_x");
+  if (f.correlation_y_default) out.push_back("correlation_y");
   return out;
 }
 
@@ -305,34 +314,37 @@ void SurfaceGenerator::generate(std::uint64_t seed_value, std::uint64_t realisat
 }
 
 SurfaceGenerator study_surface_generator(const KeyReader& s, const texture::Psd& psd) {
+  return surface_generator(TextureSection::parse(s), SurfaceSection::parse(s), psd);
+}
+
+SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection& s, const texture::Psd& psd) {
   SurfaceGenerator g;
-  const auto nx = static_cast<std::size_t>(s.integer("surface.nx")),
-             ny = static_cast<std::size_t>(s.integer("surface.ny"));
-  if (nx % 2) s.refuse("surface.nx", "must be even");
-  if (ny % 2) s.refuse("surface.ny", "must be even");
-  const double h = s.real("surface.spacing");
+  const auto nx = static_cast<std::size_t>(s.nx), ny = static_cast<std::size_t>(s.ny);
+  if (nx % 2) s.nx_origin.refuse("must be even");
+  if (ny % 2) s.ny_origin.refuse("must be even");
+  const double h = s.spacing;
   try {
-    if (s.text("surface.method") == "spectral") {
+    if (s.method == "spectral") {
       texture::SpectralSurfaceSpec spec;
       spec.nx = nx;
       spec.ny = ny;
       spec.dx = spec.dy = h;
-      spec.amplitudes = study_amplitudes(s);
-      spec.anisotropy = s.real("surface.anisotropy");
+      spec.amplitudes = study_amplitudes(t);
+      spec.anisotropy = s.anisotropy;
       g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(psd, spec);
     } else {
       texture::SeedSurfaceRequest r;
       r.nx = nx;
       r.ny = ny;
       r.dx = r.dy = h;
-      r.correlation_x = s.real("surface.correlation_x");
-      r.correlation_y = s.real("surface.correlation_y");
-      r.sigma = s.real("surface.sigma");
+      r.correlation_x = s.correlation_x;
+      r.correlation_y = s.correlation_y;
+      r.sigma = s.sigma;
       // Seed 001 §3.1 and Eq. 10: sigma and the correlation lengths (isotropic) are the measured
       // profiles' unless [surface] gives them.
-      const auto measured = profile_derived_surface_keys(s);
+      const auto measured = profile_derived_surface_keys(t, s);
       if (!measured.empty()) {
-        const texture::EstimatedPsd est = profile_estimate(s);
+        const texture::EstimatedPsd est = profile_estimate(t);
         for (const auto& k : measured) {
           if (k == "sigma") r.sigma = est.sigma;
           if (std::isfinite(est.correlation_length)) {
@@ -341,12 +353,14 @@ SurfaceGenerator study_surface_generator(const KeyReader& s, const texture::Psd&
           }
         }
       }
-      r.amplitudes = study_amplitudes(s);
+      r.amplitudes = study_amplitudes(t);
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }
   } catch (const std::exception& e) {  // invalid_argument from the spec, domain_error from a table PSD
+    // The spectral grid must resolve k_max stretched by the anisotropy along x and y.
+    const double a = s.method == "spectral" ? std::sqrt(s.anisotropy) : 1.0;
     throw config_error(
-        grid_message(LineGeneratorKeys{{}, s.where("surface.spacing"), s.where("texture.table_extension")}, e));
+        grid_message(LineGeneratorKeys::of(t, s.spacing_origin, "[surface] spacing"), e, h, std::max(a, 1.0 / a)));
   }
   return g;
 }

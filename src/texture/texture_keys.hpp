@@ -12,6 +12,8 @@
 #include "kernels/texture/seed_surface.hpp"
 #include "kernels/texture/spectral_surface.hpp"
 #include "src/study/key_spec.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 
 namespace rollspec::study {
 class KeyReader;
@@ -19,13 +21,17 @@ class KeyReader;
 
 namespace rollspec::texture_io {
 
-// [texture]: PSD source and amplitudes (the line geometry comes from the scene).
+// The functions taking a KeyReader parse the sections and forward to the section-taking ones.
+
+// [texture]: PSD source and amplitudes (the line geometry comes from the scene); TextureSection::keys().
 std::vector<study::KeySpec> psd_keys();
-// [surface]: grid and method of isotropic surfaces.
+// [surface]: grid and method of isotropic surfaces; SurfaceSection::keys().
 std::vector<study::KeySpec> surface_keys();
 
 // The roughness PSD a study describes (table, measured profiles, self-affine, ISO 8608, ISO 3095).
+texture::Psd study_psd(const study::TextureSection& s);
 texture::Psd study_psd(const study::KeyReader& s);
+spectral::Amplitudes study_amplitudes(const study::TextureSection& s);
 spectral::Amplitudes study_amplitudes(const study::KeyReader& s);
 
 // Line-texture generator of `samples` samples at `spacing` from the PSD and the study's [texture]
@@ -40,6 +46,13 @@ std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study:
 struct LineGeneratorKeys {
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
   std::string spacing_where, extension_where;
+  // For the advice of grid errors: the spacing key ("[lines] spacing"), the [texture] source and
+  // table_extension, and the rolling speed where the scene has one (0: none).
+  std::string spacing_key, source, extension;
+  double speed = 0.0;
+  std::string speed_key;
+  static LineGeneratorKeys of(const study::TextureSection& t, const study::KeyOrigin& spacing,
+                              const std::string& spacing_key);
   static LineGeneratorKeys parse(const study::KeyReader& s, const std::string& key);
 };
 // study_line_generator from those (for a scene that builds its line after the study is gone).
@@ -48,14 +61,17 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
                                                               bool truncate = true);
 
 // The measured profile files of [texture] profiles (empty for other sources or scenes without [texture]).
+std::vector<std::string> profile_files(const study::TextureSection& s);
 std::vector<std::string> profile_files(const study::KeyReader& s);
 
 // Seed-method [surface] keys (sigma, correlation_x, correlation_y) that are not set and so take the
 // measured profiles' values (seed 001 §3.1, Eq. 10); empty unless source = profiles and method = seed.
 // Cached tables hash this list: the canonical text shows such a key at its default.
+std::vector<std::string> profile_derived_surface_keys(const study::TextureSection& t, const study::SurfaceSection& f);
 std::vector<std::string> profile_derived_surface_keys(const study::KeyReader& s);
 
 // Contents of every input file the PSD depends on, for hashes of cached tables.
+std::string psd_input_fingerprint(const study::TextureSection& s);
 std::string psd_input_fingerprint(const study::KeyReader& s);
 
 // Surface generator of a study's [surface] section: exactly one of the two is set.
@@ -66,6 +82,8 @@ struct SurfaceGenerator {
   // Draws from Philox (seed, realisation, surface streams) and fills out.
   void generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out) const;
 };
+SurfaceGenerator surface_generator(const study::TextureSection& t, const study::SurfaceSection& s,
+                                   const texture::Psd& psd);
 SurfaceGenerator study_surface_generator(const study::KeyReader& s, const texture::Psd& psd);
 
 }  // namespace rollspec::texture_io

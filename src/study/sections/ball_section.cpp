@@ -40,6 +40,8 @@ BallSection BallSection::parse(const KeyReader& s) {
   b.start = s.real("ball.start");
   b.end = s.real("ball.end");
   b.end_origin = {s.where("ball.end")};
+  b.radius_origin = {s.where("ball.radius")};
+  b.speed_origin = {s.where("ball.speed")};
   return b;
 }
 

@@ -14,7 +14,7 @@ class KeyReader;
 struct BallSection {
   double radius = 0.0, density = 0.0, youngs_modulus = 0.0, poisson = 0.0;
   double speed = 0.0, start = 0.0, end = 0.0, gravity = 0.0;
-  KeyOrigin end_origin;
+  KeyOrigin end_origin, radius_origin, speed_origin;
 
   static std::vector<KeySpec> keys();
   static BallSection parse(const KeyReader& s);

@@ -49,6 +49,7 @@ ModalBeamSection ModalBeamSection::parse(const KeyReader& s) {
   b.poisson = s.real("beam.poisson");
   b.effective_length_origin = {s.where("beam.effective_length")};
   b.modes_origin = {s.where("beam.modes")};
+  b.thickness_origin = {s.where("beam.thickness")};
   b.max_frequency_origin = {s.where("beam.max_frequency")};
   return b;
 }

@@ -16,7 +16,7 @@ struct ModalBeamSection {
   beam::ModalDamping damping;
   bool static_correction = true;
   double poisson = 0.0;  // the contact modulus's, not the modal beam's
-  KeyOrigin effective_length_origin, modes_origin, max_frequency_origin;
+  KeyOrigin effective_length_origin, modes_origin, max_frequency_origin, thickness_origin;
 
   static std::vector<KeySpec> keys();
   static ModalBeamSection parse(const KeyReader& s);

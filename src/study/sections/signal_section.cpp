@@ -30,6 +30,7 @@ SignalSection SignalSection::parse(const KeyReader& s) {
   p.integrator = s.text("signal.integrator");
   p.rtol = s.real("signal.rtol");
   p.substeps_origin = {s.where("signal.substeps")};
+  p.sample_rate_origin = {s.where("signal.sample_rate")};
   return p;
 }
 

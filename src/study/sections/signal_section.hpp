@@ -15,7 +15,7 @@ struct SignalSection {
   double sample_rate = 0.0, rtol = 0.0;
   long long substeps = 0;
   std::string hold, integrator;  // as written
-  KeyOrigin substeps_origin;
+  KeyOrigin substeps_origin, sample_rate_origin;
 
   static std::vector<KeySpec> keys();
   static SignalSection parse(const KeyReader& s);

@@ -6,7 +6,7 @@ namespace rollspec::study {
 
 StudySection StudySection::parse(const KeyReader& s) {
   StudySection t;
-  t.scene = s.text("study.scene");
+  t.scene = s.scene();
   t.description = s.text("study.description");
   t.realisations = s.integer("study.realisations");
   t.seed = static_cast<std::uint64_t>(s.integer("study.seed"));

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <cstdio>
 #include <random>
+#include <string>
 
 #include "kernels/spectral/harmonic_synthesis.hpp"
 #include "kernels/texture/line_texture.hpp"
@@ -115,7 +116,13 @@ TEST_CASE("sampling check: dx > pi / k_max is refused unless truncation is allow
   const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 100.0, 1e5, RmsTarget::height, 1e-6});
   CHECK_THROWS_WITH_AS(
       LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, false}),
-      doctest::Contains("refine dx"), std::invalid_argument);
+      doctest::Contains("refine dx"), UnresolvedPsd);
+  try {  // k_max rides along, so a caller can say how fine the grid must be
+    LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, false});
+  } catch (const UnresolvedPsd& e) {
+    CHECK(e.k_max == 1e5);
+    CHECK(std::string(e.what()).find("truncation") == std::string::npos);
+  }
   CHECK_NOTHROW(LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, true}));
   CHECK_NOTHROW(
       LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, M_PI / 1e5, 0, Amplitudes::rayleigh, false}));

@@ -171,7 +171,7 @@ TEST_CASE("spectral surface refuses a grid that cannot hold the PSD's k_max") {
   const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 1e5, 1e7, RmsTarget::height, 1e-6});
   CHECK_THROWS_WITH_AS(SpectralSurfaceGenerator(
                            model.to_psd(), SpectralSurfaceSpec{64, 64, kD, kD, Amplitudes::rayleigh, 1.0, false, 100}),
-                       doctest::Contains("refine the grid"), std::invalid_argument);
+                       doctest::Contains("refine the grid"), UnresolvedPsd);
   CHECK_THROWS_AS(SpectralSurfaceGenerator(surface_psd().to_psd(),
                                            SpectralSurfaceSpec{63, 64, kD, kD, Amplitudes::rayleigh, 1.0, false, 100}),
                   std::invalid_argument);

@@ -1,0 +1,42 @@
+#pragma once
+// The sections of scene random-oscillator, read once: the [oscillator], the random [force] and the
+// record ([signal]: sample rate and duration). The record's length in samples is checked here; the
+// frequencies against Nyquist by the scene, at the kept origins.
+#include <cstddef>
+#include <vector>
+
+#include "kernels/spectral/harmonic_synthesis.hpp"
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class KeyReader;
+
+struct OscillatorSection {
+  double mass = 1.0, natural_frequency = 0.0, damping_ratio = 0.0;
+  KeyOrigin natural_frequency_origin;
+
+  static std::vector<KeySpec> keys();
+  static OscillatorSection parse(const KeyReader& s);
+};
+
+struct ForceSection {
+  double level = 0.0, f_max = 0.0;  // f_max 0: the Nyquist frequency
+  spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
+  KeyOrigin f_max_origin;
+
+  static std::vector<KeySpec> keys();
+  static ForceSection parse(const KeyReader& s);
+};
+
+// [signal] of random-oscillator (ball-on-beam's SignalSection has other keys).
+struct RecordSignalSection {
+  double sample_rate = 0.0, duration = 0.0;
+  std::size_t samples = 0;  // duration x sample_rate rounded to even, 4 to 1e9
+
+  static std::vector<KeySpec> keys();
+  static RecordSignalSection parse(const KeyReader& s);
+};
+
+}  // namespace rollspec::study

@@ -1,0 +1,35 @@
+#pragma once
+// [analysis] and [output] of scene rolling-beam, read once: the step, the run length, the solver's
+// limits and the recorded nodes. The step is checked against the run length here; the integrator
+// against the model's beam elements by the scene, at integrator_origin.
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/rolling_world_sections.hpp"
+
+namespace rollspec::study {
+
+class KeyReader;
+
+struct RollingAnalysisSection {
+  bool dynamic = true;             // else quasi-static load steps
+  bool energy_consistent = false;  // else Newmark
+  double dt = 0.0, t_end = 0.0, impact_step_fraction = 0.0, max_new_penetration = 0.0, tolerance = 0.0;
+  long long record_every = 1, max_iterations = 0, max_cuts = 0, line_search = 0;
+  KeyOrigin dt_origin, integrator_origin;
+
+  static std::vector<KeySpec> keys();
+  static RollingAnalysisSection parse(const KeyReader& s);
+};
+
+// [output] of rolling-beam: the recorded nodes.
+struct NodeOutputSection {
+  NodeList nodes;
+
+  static std::vector<KeySpec> keys();
+  static NodeOutputSection parse(const KeyReader& s);
+};
+
+}  // namespace rollspec::study

@@ -1,0 +1,58 @@
+#pragma once
+// The body sections of scene rolling-beam, read once: [body] kind, the seed 000 builders' [puck]
+// and [flying_beam], the straight [beam] and the rigid [disc]. The scene parses only the sections
+// its kind uses, so keys of another kind are never read.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class KeyReader;
+
+struct BodySection {
+  std::string kind;  // beam, disc, puck or flying-beam
+
+  static std::vector<KeySpec> keys();
+  static BodySection parse(const KeyReader& s);
+};
+
+struct PuckSection {
+  double half_width = 0.0, force_peak = 0.0, moment_peak = 0.0, pulse = 0.0;
+
+  static std::vector<KeySpec> keys();
+  static PuckSection parse(const KeyReader& s);
+};
+
+struct FlyingBeamSection {
+  double force_peak = 0.0, ramp = 0.0, wall_distance = 0.0;
+
+  static std::vector<KeySpec> keys();
+  static FlyingBeamSection parse(const KeyReader& s);
+};
+
+// [beam] of rolling-beam (not ball-on-beam's modal beam); inner_diameter < diameter and distinct
+// ends are checked here.
+struct StraightBeamSection {
+  Eigen::Vector3d start, end, up;
+  long long elements = 0;
+  double diameter = 0.0, inner_diameter = 0.0, youngs_modulus = 0.0, poisson = 0.0, density = 0.0;
+
+  static std::vector<KeySpec> keys();
+  static StraightBeamSection parse(const KeyReader& s);
+};
+
+struct DiscSection {
+  double radius = 0.0, length = 0.0, mass = 0.0;
+  bool at_rest = true;       // position = rest: on the first plane at its static penetration
+  Eigen::Vector3d position;  // when not at rest
+  Eigen::Vector3d velocity, angular_velocity;
+
+  static std::vector<KeySpec> keys();
+  static DiscSection parse(const KeyReader& s);
+};
+
+}  // namespace rollspec::study

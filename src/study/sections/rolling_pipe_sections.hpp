@@ -1,0 +1,76 @@
+#pragma once
+// The sections of scene rolling-pipe, read once: the tube ([pipe]), the roll ([roll]), the line or
+// isotropic [roughness], the node [contact] law, [gravity], the step ([analysis]) and the
+// [sensors] as fractions of the tube's length. Checks that span sections (the step against the
+// contact oscillation, the rolled strip) are the scene's, at the kept origins.
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class KeyReader;
+
+// inner_diameter < diameter is checked here.
+struct PipeSection {
+  double length = 0.0, diameter = 0.0, inner_diameter = 0.0, youngs_modulus = 0.0, poisson = 0.0, density = 0.0;
+  long long elements = 0;
+
+  static std::vector<KeySpec> keys();
+  static PipeSection parse(const KeyReader& s);
+};
+
+struct RollSection {
+  double speed = 0.0, distance = 0.0;
+  KeyOrigin distance_origin;
+
+  static std::vector<KeySpec> keys();
+  static RollSection parse(const KeyReader& s);
+};
+
+struct PipeRoughnessSection {
+  bool line = true;      // else an isotropic surface from [surface]
+  double spacing = 0.0;  // m, of the line texture
+  KeyOrigin spacing_origin;
+
+  static std::vector<KeySpec> keys();
+  static PipeRoughnessSection parse(const KeyReader& s);
+};
+
+struct PipeContactSection {
+  double friction = 0.0, penalty_normal = 0.0, penalty_tangential = 0.0, damping_ratio = 0.0;
+  bool rolling = true;
+
+  static std::vector<KeySpec> keys();
+  static PipeContactSection parse(const KeyReader& s);
+};
+
+struct PipeGravitySection {
+  double acceleration = 0.0;  // m/s^2, normal to the mean surface
+
+  static std::vector<KeySpec> keys();
+  static PipeGravitySection parse(const KeyReader& s);
+};
+
+struct PipeAnalysisSection {
+  double dt = 0.0, tolerance = 0.0;
+  KeyOrigin dt_origin;
+
+  static std::vector<KeySpec> keys();
+  static PipeAnalysisSection parse(const KeyReader& s);
+};
+
+// [sensors] of rolling-pipe: fractions of the tube's length (ball-on-beam's SensorsSection holds
+// positions in metres), checked against [0, 1] by the scene at positions_origin.
+struct PipeSensorsSection {
+  std::vector<double> positions;
+  bool average = true;
+  KeyOrigin positions_origin;
+
+  static std::vector<KeySpec> keys();
+  static PipeSensorsSection parse(const KeyReader& s);
+};
+
+}  // namespace rollspec::study

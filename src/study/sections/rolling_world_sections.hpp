@@ -1,0 +1,68 @@
+#pragma once
+// What surrounds the body of scene rolling-beam, read once: the rigid [plane]s, the [contact] law
+// and contact nodes, the [gravity] vector, the clamped ends ([support]) and an [imposed]
+// displacement series. Checks that need the model (node indices, a disc's ends) are the scene's,
+// at the kept origins.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class KeyReader;
+
+// One normal per point, none the zero vector.
+struct PlaneSection {
+  std::vector<Eigen::Vector3d> points, normals;
+
+  static std::vector<KeySpec> keys();
+  static PlaneSection parse(const KeyReader& s);
+};
+
+// A list of node indices or "all" (contact and output nodes), checked against the model later.
+struct NodeList {
+  bool all = true;
+  std::vector<double> indices;  // as written, when not all
+  KeyOrigin origin;
+};
+
+// [contact] of rolling-beam (not ball-on-beam's nor rolling-pipe's).
+struct RollingContactSection {
+  double friction = 0.0, penalty_normal = 0.0, penalty_tangential = 0.0;
+  bool rolling = true;
+  NodeList nodes;
+
+  static std::vector<KeySpec> keys();
+  static RollingContactSection parse(const KeyReader& s);
+};
+
+struct GravityVectorSection {
+  Eigen::Vector3d acceleration;
+  double ramp_time = 0.0;  // s; 0: constant
+
+  static std::vector<KeySpec> keys();
+  static GravityVectorSection parse(const KeyReader& s);
+};
+
+struct SupportSection {
+  std::string clamp;  // none, first, last or both
+  KeyOrigin clamp_origin;
+
+  static std::vector<KeySpec> keys();
+  static SupportSection parse(const KeyReader& s);
+};
+
+// times and values are read (and checked) only when a node is imposed.
+struct ImposedSection {
+  std::string node;  // none, first or last
+  int dof = 1;       // x, y, z as 0, 1, 2
+  std::vector<double> times, values;
+
+  static std::vector<KeySpec> keys();
+  static ImposedSection parse(const KeyReader& s);
+};
+
+}  // namespace rollspec::study

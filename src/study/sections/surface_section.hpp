@@ -1,0 +1,29 @@
+#pragma once
+// [surface]: grid and method of isotropic surfaces (spectral or seed), read once. Scenes without
+// [surface] parse to present = false; count exists in the texture scene only (0 elsewhere).
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+#include "src/study/sections/key_origin.hpp"
+
+namespace rollspec::study {
+
+class KeyReader;
+
+struct SurfaceSection {
+  bool present = false;  // the scene has [surface]
+  std::string method;    // spectral or seed
+  long long nx = 128, ny = 128, count = 0;
+  double spacing = 1e-6, anisotropy = 1.0, correlation_x = 1e-5, correlation_y = 1e-5, sigma = 3e-7;
+  // The seed-method keys at their documented default (not set by the study or --set), which take
+  // the measured profiles' values with [texture] source = profiles.
+  bool sigma_default = true, correlation_x_default = true, correlation_y_default = true;
+  KeyOrigin nx_origin, ny_origin, spacing_origin;
+
+  static std::vector<KeySpec> keys();
+  static std::vector<KeySpec> count_keys();  // [surface] count (texture scene)
+  static SurfaceSection parse(const KeyReader& s);
+};
+
+}  // namespace rollspec::study

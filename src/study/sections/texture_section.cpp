@@ -1,0 +1,71 @@
+#include "src/study/sections/texture_section.hpp"
+
+#include <filesystem>
+#include <limits>
+
+#include "src/study/key_reader.hpp"
+
+namespace rollspec::study {
+
+std::vector<KeySpec> TextureSection::keys() {
+  const double inf = std::numeric_limits<double>::infinity();
+  return {
+      choice_key("texture", "source", "where the roughness PSD comes from", std::string("self-affine"),
+                 {"self-affine", "table", "profiles", "iso8608", "iso3095"}),
+      path_key("texture", "table",
+               "PSD table CSV: header wavenumber_rad_per_m or spatial_frequency_cycles_per_m, then psd_m3 or psd_um2_m",
+               std::string("none")),
+      choice_key("texture", "table_extension", "PSD outside the table or measured band", std::string("error"),
+                 {"error", "constant", "power_law", "zero"}),
+      text_key("texture", "profiles", "measured profiles: comma-separated CSV files (position_m,height_m)",
+               std::string("")),
+      bool_key("texture", "median_filter", "3-point median filter on measured profiles", std::string("false")),
+      real_key("texture", "hurst", "-", "Hurst exponent H of the self-affine PSD", std::string("0.8"), 0.0, 1.0, false,
+               true),
+      real_key("texture", "long_wavelength", "m", "long-wavelength cut-off (0: none)", std::string("0"), 0.0, inf),
+      real_key("texture", "rolloff_wavelength", "m", "roll-off wavelength (plateau above it)", std::string("1e-3"), 0.0,
+               inf, false),
+      real_key("texture", "short_wavelength", "m", "short-wavelength cut-off", std::string("1e-5"), 0.0, inf, false),
+      choice_key("texture", "rms_kind", "what `rms` sets for the self-affine PSD", std::string("height"),
+                 {"height", "slope"}),
+      real_key("texture", "rms", "m (height) or - (slope)", "rms height or rms slope of the self-affine PSD",
+               std::string("1e-6"), 0.0, inf, false),
+      choice_key("texture", "road_class", "ISO 8608 road class", std::string("A"),
+                 {"A", "B", "C", "D", "E", "F", "G", "H"}),
+      choice_key("texture", "amplitudes",
+                 "harmonic amplitudes: rayleigh (Gaussian) or deterministic (the target PSD exactly)",
+                 std::string("rayleigh"), {"rayleigh", "deterministic"}),
+  };
+}
+
+TextureSection TextureSection::parse(const KeyReader& s) {
+  TextureSection t;
+  if (!s.has("texture.source")) return t;
+  t.present = true;
+  t.source = s.text("texture.source");
+  t.table = s.text("texture.table");
+  t.table_path = s.path("texture.table");
+  t.table_extension = s.text("texture.table_extension");
+  // Profiles are relative to the study file (not to a --set's directory).
+  for (const auto& f : s.list("texture.profiles")) {
+    namespace fs = std::filesystem;
+    t.profile_paths.push_back(fs::path(f).is_absolute() ? f : (fs::path(s.file()).parent_path() / f).string());
+  }
+  t.median_filter = s.boolean("texture.median_filter");
+  t.hurst = s.real("texture.hurst");
+  t.long_wavelength = s.real("texture.long_wavelength");
+  t.rolloff_wavelength = s.real("texture.rolloff_wavelength");
+  t.short_wavelength = s.real("texture.short_wavelength");
+  t.rms_kind = s.text("texture.rms_kind");
+  t.rms = s.real("texture.rms");
+  t.road_class = s.text("texture.road_class");
+  t.amplitudes = s.text("texture.amplitudes");
+  t.source_origin = {s.where("texture.source")};
+  t.table_extension_origin = {s.where("texture.table_extension")};
+  t.profiles_origin = {s.where("texture.profiles")};
+  t.long_wavelength_origin = {s.where("texture.long_wavelength")};
+  t.short_wavelength_origin = {s.where("texture.short_wavelength")};
+  return t;
+}
+
+}  // namespace rollspec::study

@@ -1,0 +1,75 @@
+// The path table P(δ_j, ξ_k) (path_table.hpp, README B42–B44): rows built in parallel, one approach
+// per thread, hold the same bits on 1 and 2 threads, and every entry is the cold whole-strip solve
+// at that approach and position (path_force_direct) to the solver's tolerance.
+#include <doctest/doctest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "hertz_fixture.hpp"
+#include "kernels/contact/path_table.hpp"
+#include "rough_fixture.hpp"
+
+using namespace rollspec::contact;
+using rollspec::contact::test::Hertz;
+
+namespace {
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("path table: the same bits on 1 and 2 threads, every entry the whole-strip solve") {
+  const Hertz h;
+  // 8 cells per Hertz radius, the window 3 radii each side: it holds the contact at the top rows
+  // (δ_c + 3 δ_H and the rows B43a adds); the strip is longer and wider than the window.
+  const Grid window = h.grid(8.0, 3.0);
+  const Grid strip{window.nx + 40, window.ny + 10, window.dx, window.dy};
+  const auto heights = rollspec::contact::test::wavy_heights(strip, 0.15 * h.approach, 0.4 * h.a());
+  std::vector<double> x;
+  for (long k = 0; k < 5; ++k) x.push_back(static_cast<double>(-12 + 6 * k) * strip.dx);
+  SolverOptions opt;
+  opt.hardness = 0.5 * h.p0();
+  PathTableOptions po;
+  po.approaches = 4;
+  po.max_approaches = 8;
+  std::vector<PathTable> t;
+  for (int threads : {1, 2}) {
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    t.push_back(build_path_table(window, h.e_star, strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, po));
+    omp_set_num_threads(before);
+  }
+  REQUIRE(t[0].converged);
+  CHECK(t[0].approach.size() >= po.approaches);
+  CHECK(same_bits(t[0].approach, t[1].approach));
+  CHECK(same_bits(t[0].first_contact, t[1].first_contact));
+  CHECK(same_bits(t[0].force, t[1].force));
+  CHECK(t[0].solves == t[1].solves);
+  CHECK(t[0].iterations == t[1].iterations);
+  // Entries against cold solves of the whole strip; B44's running maximum acts only at the
+  // solver's tolerance, and below first contact the entry is 0.
+  const std::size_t nk = x.size();
+  double worst = 0.0;
+  int compared = 0;
+  for (std::size_t j = 0; j < t[0].approach.size(); ++j)
+    for (std::size_t k = 0; k < nk; ++k) {
+      const double p = t[0].force[j * nk + k];
+      if (t[0].approach[j] <= t[0].first_contact[k]) {
+        CHECK(p == 0.0);
+        continue;
+      }
+      const double direct =
+          path_force_direct(strip, heights, h.e_star, h.radius, BallShape::Sphere, x[k], 0.0, t[0].approach[j], opt);
+      worst = std::max(worst, std::fabs(p / direct - 1.0));
+      ++compared;
+    }
+  MESSAGE(t[0].approach.size() << " approaches, " << compared << " entries against whole-strip solves: max rel diff "
+                               << worst);
+  CHECK(compared > 10);
+  CHECK(worst < 1e-8);
+}
