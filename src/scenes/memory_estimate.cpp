@@ -16,7 +16,7 @@
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/output_section.hpp"
-#include "src/study/sections/pipe_roughness_section.hpp"
+#include "src/study/sections/rolling_pipe_sections.hpp"
 #include "src/study/sections/sensors_section.hpp"
 #include "src/study/sections/signal_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
@@ -201,7 +201,7 @@ std::vector<Item> items(const study::KeyReader& s, int threads) {
       const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
       out.push_back({8.0 * nx * ny * (t + 10.0), where(s, {"surface.nx", "surface.ny"}), "rough floor per thread"});
     }
-    out.push_back(chunk_sums(s, static_cast<double>(study::SensorsSection::parse(s).positions.size()) + 2.0));
+    out.push_back(chunk_sums(s, static_cast<double>(study::PipeSensorsSection::parse(s).positions.size()) + 2.0));
   } else if (scene == "rolling-beam") {
     for (auto& it : rolling_beam(s)) out.push_back(std::move(it));
   }
