@@ -5,8 +5,10 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/scenes/ball_on_beam.hpp"
+#include "src/cli/run_phases.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/study/study.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
+#include "src/study/sections/study_section.hpp"
 
 namespace rollspec::cli {
 
@@ -22,12 +24,14 @@ int modes_command(const Args& args) {
   add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
-  if (s.scene() != "ball-on-beam") s.refuse("study.scene", "rollspec modes needs a ball-on-beam study");
+  const study::Study s = resolve_study(study);
+  if (s.scene() != "ball-on-beam")
+    study::StudySection::parse(s).scene_origin.refuse("rollspec modes needs a ball-on-beam study");
   const beam::ModalBeam b = scenes::study_modal_beam(s);
+  const bool clamped = study::ModalBeamSection::parse(s).properties.support == beam::Support::clamped_clamped;
   std::printf("# %s beam, span %.6g m, effective length %.6g m, EI %.6g N m^2, rho A %.6g kg/m\n",
-              s.text("beam.support").c_str(), b.properties().length, b.effective_length(), b.bending_stiffness(),
-              b.mass_per_length());
+              clamped ? "clamped-clamped" : "simply-supported", b.properties().length, b.effective_length(),
+              b.bending_stiffness(), b.mass_per_length());
   std::printf("%6s %16s %12s\n", "mode", "frequency_hz", "damping");
   for (int i = 0; i < b.modes(); ++i) std::printf("%6d %16.6f %12.6g\n", i + 1, b.frequency(i), b.zeta(i));
   return 0;

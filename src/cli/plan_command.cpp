@@ -12,7 +12,9 @@
 #include "src/io/available_memory.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/study/study.hpp"
+#include "src/study/sections/contact_section.hpp"
+#include "src/study/sections/ensemble_section.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
@@ -33,10 +35,11 @@ int plan_command(const Args& args) {
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
 
-  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
+  const study::Study s = resolve_study(study);
+  const study::StudySection study_keys = study::StudySection::parse(s);
   std::cout << "study " << study.file << ": scene " << s.scene() << ", "
-            << io::counted(static_cast<unsigned long long>(s.integer("study.realisations")), "realisation") << ", seed "
-            << s.integer("study.seed") << "\n";
+            << io::counted(static_cast<unsigned long long>(study_keys.realisations), "realisation") << ", seed "
+            << study_keys.seed << "\n";
   const int threads = ensemble::ensemble_threads();
   const auto memory = scenes::estimate_memory(s, threads);
   const double available = io::available_memory();
@@ -56,8 +59,8 @@ int plan_command(const Args& args) {
   const auto scene = make_scene<scenes::Scene>(s);
   auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(scene.get());
   if (ensemble_scene) {
-    const double K = static_cast<double>(s.integer("study.realisations")),
-                 C = static_cast<double>(s.integer("ensemble.chunk_size"));
+    const double K = static_cast<double>(study_keys.realisations),
+                 C = static_cast<double>(study::EnsembleSection::parse(s).chunk_size);
     const double chunk_bytes = 48.0 + 16.0 * static_cast<double>(ensemble_scene->values_per_realisation());
     std::cout << "checkpoint disk: " << io::counted(static_cast<unsigned long long>(std::ceil(K / C)), "chunk")
               << " of " << scenes::format_bytes(chunk_bytes) << " = "
@@ -66,10 +69,12 @@ int plan_command(const Args& args) {
   for (const auto& w : scene->warnings()) std::cout << "warning: " << w << "\n";
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");
   bool tables_missing = false;
+  // Only ball-on-beam has a blocked-force stage; its table exists with [contact] blocked_force = solver.
+  const bool blocked_force_solver =
+      s.scene() == "ball-on-beam" && study::ContactSection::parse(s).blocked_force == "solver";
   for (const auto& p : scene->plan()) {
     std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::to_string(p.status), p.reason.c_str());
-    const bool solver_table =
-        p.stage == "blocked_force" && s.has("contact.blocked_force") && s.text("contact.blocked_force") == "solver";
+    const bool solver_table = p.stage == "blocked_force" && blocked_force_solver;
     if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
   }
   if (!vm.count("probe")) return 0;
@@ -86,7 +91,7 @@ int plan_command(const Args& args) {
   const auto start = std::chrono::steady_clock::now();
   ensemble_scene->run_realisation(0, 0, values.data());
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double K = static_cast<double>(s.integer("study.realisations"));
+  const double K = static_cast<double>(study_keys.realisations);
   std::printf(
       "run time: %.3g s per realisation (probe of realisation 0); the ensemble of %.0f on %d thread(s): about %.3g s "
       "(plus stage tables and the final write)\n",

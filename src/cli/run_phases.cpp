@@ -15,6 +15,8 @@
 #include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
 #include "src/scenes/memory_estimate.hpp"
+#include "src/study/sections/ensemble_section.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
@@ -45,7 +47,7 @@ std::string resolved_checkpoint(const std::string& out) {
 
 study::Study load_study(const RunRequest& q) {
   // `run --resume --out FILE` needs no study file: the checkpoint holds the resolved study.
-  if (!q.study.file.empty()) return study::Study::load(q.study.file, q.study.sets, scenes::schema_for);
+  if (!q.study.file.empty()) return resolve_study(q.study);
   if (!(q.resume && !q.out.empty()))
     throw usage_error(
         "the study file is missing; allowed: rollspec run STUDY.ini [--out FILE.h5] ..., or rollspec run "
@@ -72,13 +74,18 @@ void write_run_attributes(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums,
 }
 }  // namespace
 
+study::Study resolve_study(const StudyArgs& args) {
+  return study::Study::load(args.file, args.sets, scenes::schema_for);
+}
+
 ResolvedRun resolve_run(const RunRequest& q) {
   ResolvedRun run{load_study(q), nullptr, q.out, {}, {}};
   const study::KeyReader& s = run.study;
   run.scene = &scenes::find_scene(s.scene());
   if (run.scene->kind == scenes::SceneKind::stages_only)
-    s.refuse("study.scene", "has no ensemble to run; use rollspec " +
-                                std::string(s.scene() == "texture" ? "texture " : "stiffness ") + s.file());
+    study::StudySection::parse(s).scene_origin.refuse("has no ensemble to run; use rollspec " +
+                                                      std::string(s.scene() == "texture" ? "texture " : "stiffness ") +
+                                                      s.file());
   if (run.scene->kind == scenes::SceneKind::single_run && (q.resume || q.restart))
     throw usage_error("study " + s.file() + " (scene " + s.scene() +
                       ") is one deterministic run with no checkpoint; drop --resume/--restart");
@@ -115,7 +122,7 @@ int run_single_phase(ResolvedRun& run, const RunRequest& q) {
   scene->run(q.quiet);
   io::Hdf5Writer w(run.write_path);
   io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, run.study.canonical_text(),
-                       static_cast<std::uint64_t>(run.study.integer("study.seed")));
+                       study::StudySection::parse(run.study).seed);
   w.attribute("/", "scene", run.study.scene());
   scene->write_results(w);
   w.commit();
@@ -132,9 +139,10 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
   scene->prepare(q.quiet, q.rebuild);
   ensemble::EnsembleConfig cfg;
   cfg.checkpoint_dir = run.checkpoint.directory;
-  cfg.realisations = static_cast<std::uint64_t>(s.integer("study.realisations"));
-  cfg.chunk_size = static_cast<std::uint64_t>(s.integer("ensemble.chunk_size"));
-  cfg.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
+  const study::StudySection study_keys = study::StudySection::parse(s);
+  cfg.realisations = static_cast<std::uint64_t>(study_keys.realisations);
+  cfg.chunk_size = static_cast<std::uint64_t>(study::EnsembleSection::parse(s).chunk_size);
+  cfg.seed = study_keys.seed;
   cfg.study_hash = scenes::study_result_hash(s);
   cfg.resume = q.resume;
   cfg.quiet = q.quiet;

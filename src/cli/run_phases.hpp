@@ -6,7 +6,8 @@
 //   3. make_scene       the scene, once, of the type its registry entry names;
 //   4. prepare          its stages (tables), in the scene;
 //   5. run_ensemble_phase / run_single_phase, each ending in a write on rank 0.
-// `plan`, `texture` and `stiffness` use phases 2 and 3 the same way.
+// `plan`, `modes`, `texture` and `stiffness` load their study through resolve_study and use
+// phases 2 and 3 the same way.
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct ResolvedRun {
   std::string write_path;  // the file written (a symbolic link resolved)
   CheckpointSession checkpoint;
 };
+
+// Phase 1 of the commands that write no ensemble result (plan, modes, stiffness, texture): the
+// study file with its --set overrides, validated.
+study::Study resolve_study(const StudyArgs& args);
 
 // Phase 1. Refuses what cannot run (a scene without an ensemble, --resume of a single run, an
 // output that must not be replaced) before any work.

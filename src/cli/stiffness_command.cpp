@@ -12,8 +12,9 @@
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/scenes/stiffness_scene.hpp"
+#include "src/cli/run_phases.hpp"
 #include "src/stiffness/stiffness_table.hpp"
-#include "src/study/study.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
@@ -39,14 +40,14 @@ int stiffness_command(const Args& args) {
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   if (!out.empty()) study.sets.push_back("stiffness.table=" + std::filesystem::absolute(out).string());
-  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
+  const study::Study s = resolve_study(study);
   if (s.scene() != "stiffness" && s.scene() != "ball-on-beam")
-    s.refuse("study.scene", "rollspec stiffness needs a stiffness or ball-on-beam study");
-  scenes::check_memory(s, ensemble::ensemble_threads(), vm.count("force") > 0);
+    study::StudySection::parse(s).scene_origin.refuse("rollspec stiffness needs a stiffness or ball-on-beam study");
+  check_resources(s, vm.count("force") > 0);
   const auto pair = scenes::study_contact_pair(s);
   std::string status;
-  const auto t = stiffness::resolve_table(s, pair.radius, pair.effective_modulus, vm.count("rebuild") > 0,
-                                          vm.count("quiet") > 0, status);
+  const auto t = stiffness::resolve_table(stiffness::TableStudy::parse(s), pair.radius, pair.effective_modulus,
+                                          vm.count("rebuild") > 0, vm.count("quiet") > 0, status);
   if (ensemble::mpi_rank() != 0) return 0;  // every rank holds the table; rank 0 reports it
   std::printf("# stiffness table: %s\n# input hash %s, %s, ball radius %g m, E* %.6g Pa, H %g Pa\n", status.c_str(),
               t.input_hash.c_str(), io::counted(static_cast<unsigned long long>(t.realisations), "realisation").c_str(),

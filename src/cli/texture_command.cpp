@@ -15,12 +15,12 @@
 #include "src/io/provenance.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/scenes/memory_estimate.hpp"
+#include "src/cli/run_phases.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/sections/lines_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
-#include "src/study/study.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
@@ -86,7 +86,7 @@ int texture_command(const Args& args) {
   if (vm.count("count") && (count < 0 || count > 1000000))
     throw usage_error("--count " + std::to_string(count) + ": allowed: a whole number in [0, 1000000]");
 
-  const study::Study s = study::Study::load(study.file, study.sets, scenes::schema_for);
+  const study::Study s = resolve_study(study);
   const auto study_keys = study::StudySection::parse(s);
   if (study_keys.scene != "texture")
     study_keys.scene_origin.refuse("rollspec texture needs a study of scene texture (this one is " + study_keys.scene +
@@ -96,7 +96,7 @@ int texture_command(const Args& args) {
     study.sets.push_back("lines.count=" + std::to_string(count));
     study.sets.push_back("surface.count=" + std::to_string(count));
   }
-  scenes::check_memory(count >= 0 ? study::Study::load(study.file, study.sets, scenes::schema_for) : s, 1,
+  scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1,
                        vm.count("force") > 0);
   const auto seed = study_keys.seed;
   const auto tex = study::TextureSection::parse(s);

@@ -67,14 +67,15 @@ class BallOnBeam final : public EnsembleScene {
       add_stages({{"texture", StageStatus::run,
                    "beam line texture per realisation from [texture] (" + b_.psd.description + "); " +
                        contact_filter_description(b_)}});
+    const stiffness::TableStudy tables = stiffness::TableStudy::parse(s);
     std::unique_ptr<TableStage> table;
     if (uses_table()) {
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
       table = std::make_unique<TableStage>(
-          "stiffness_table", stiffness::stiffness_cached_table(s, radius, e_star),
+          "stiffness_table", stiffness::stiffness_cached_table(tables, radius, e_star),
           [] { return std::make_unique<stiffness::StiffnessTable>(); },
-          [&s, radius, e_star](stiffness::TableData& out, bool quiet) {
-            static_cast<stiffness::StiffnessTable&>(out) = stiffness::build_table(s, radius, e_star, quiet);
+          [tables, radius, e_star](stiffness::TableData& out, bool quiet) {
+            static_cast<stiffness::StiffnessTable&>(out) = stiffness::build_table(tables, radius, e_star, quiet);
           },
           [this](const stiffness::TableData& t, const std::string& status, bool quiet) {
             use_stiffness_table(static_cast<const stiffness::StiffnessTable&>(t), status, quiet);
@@ -99,7 +100,7 @@ class BallOnBeam final : public EnsembleScene {
       // The strip's grid: the study's keys where set, else derived from the contact radius and the
       // texture; the path step at most v / f_s so F0 reaches the output's Nyquist frequency.
       const stiffness::BlockedForceGeometry grid = blocked_force_grid();
-      add_contact_table_stage("blocked_force", s, grid, &stiffness::blocked_force_cached_table,
+      add_contact_table_stage("blocked_force", tables, grid, &stiffness::blocked_force_cached_table,
                               &stiffness::build_blocked_force, &BallOnBeam::use_blocked_force, grid.describe());
     } else {
       add_stages({{"blocked_force", linearised() ? StageStatus::run : StageStatus::skipped,
@@ -109,21 +110,21 @@ class BallOnBeam final : public EnsembleScene {
     if (solver_filter() && b_.strip_line) {
       // line = strip: h_eq of strip 0 on the path table's grid and positions (the strip law = path uses).
       const stiffness::PathTableGeometry grid = path_grid();
-      add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::strip_equivalent_roughness_cached_table,
+      add_contact_table_stage("equivalent_roughness", tables, grid, &stiffness::strip_equivalent_roughness_cached_table,
                               &stiffness::build_strip_equivalent_roughness, &BallOnBeam::use_strip_equivalent_roughness,
                               stiffness::strip_equivalent_roughness_describe(grid));
     } else if (solver_filter()) {
       // filter = solver (kernels/contact ER-1..ER-6): h_eq on the blocked-force grid, the path step
       // at most v / f_s so the h_eq PSD reaches the band limit (B40).
       const stiffness::BlockedForceGeometry grid = blocked_force_grid();
-      add_contact_table_stage("equivalent_roughness", s, grid, &stiffness::equivalent_roughness_cached_table,
+      add_contact_table_stage("equivalent_roughness", tables, grid, &stiffness::equivalent_roughness_cached_table,
                               &stiffness::build_equivalent_roughness, &BallOnBeam::use_equivalent_roughness,
-                              stiffness::equivalent_roughness_describe(s, grid));
+                              stiffness::equivalent_roughness_describe(tables, grid));
     }
     if (b_.path_law()) {
       // law = path (kernels/beam B41-B46): P(delta, xi) of strip 0 along the ball's whole path.
       const stiffness::PathTableGeometry grid = path_grid();
-      add_contact_table_stage("path_table", s, grid, &stiffness::path_cached_table, &stiffness::build_path_table,
+      add_contact_table_stage("path_table", tables, grid, &stiffness::path_cached_table, &stiffness::build_path_table,
                               &BallOnBeam::use_path_table,
                               grid.describe() +
                                   "; every realisation rolls over this one strip (nothing else is random: K > 1 "
@@ -157,14 +158,15 @@ class BallOnBeam final : public EnsembleScene {
   // A cached table of strip 0 that the contact law takes: its file and hash from (study, grid, R, E*,
   // W), built from the same, completed by a use_* member.
   template <class Table, class Grid>
-  void add_contact_table_stage(const char* name, const KeyReader& s, const Grid& grid,
-                               stiffness::CachedTable (*cached)(const KeyReader&, const Grid&, double, double, double),
-                               Table (*build)(const KeyReader&, const Grid&, double, double, double, bool),
+  void add_contact_table_stage(const char* name, const stiffness::TableStudy& s, const Grid& grid,
+                               stiffness::CachedTable (*cached)(const stiffness::TableStudy&, const Grid&, double,
+                                                                double, double),
+                               Table (*build)(const stiffness::TableStudy&, const Grid&, double, double, double, bool),
                                void (BallOnBeam::*use)(const Table&, const std::string&, bool), std::string detail) {
     const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus, weight = b_.weight();
     add_stage(std::make_unique<TableStage>(
         name, cached(s, grid, radius, e_star, weight), [] { return std::make_unique<Table>(); },
-        [&s, grid, radius, e_star, weight, build](stiffness::TableData& out, bool quiet) {
+        [s, grid, radius, e_star, weight, build](stiffness::TableData& out, bool quiet) {
           static_cast<Table&>(out) = build(s, grid, radius, e_star, weight, quiet);
         },
         [this, use](const stiffness::TableData& t, const std::string& status, bool quiet) {

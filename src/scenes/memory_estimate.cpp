@@ -16,6 +16,8 @@
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/output_section.hpp"
+#include "src/study/sections/rolling_pipe_sections.hpp"
+#include "src/study/sections/sensors_section.hpp"
 #include "src/study/sections/signal_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/key_reader.hpp"
@@ -124,7 +126,7 @@ Item path_table(const study::KeyReader& s, double threads) {
   const double weight = ball_weight(s);
   const auto g = stiffness::path_table_geometry(study::PathTableSection::parse(s), study::BlockedForceSection::parse(s),
                                                 study::StripSurfaceSection::parse(s), texture_io::study_psd(s),
-                                                s.real("ball.radius"), ball_e_star(s), weight,
+                                                study::BallSection::parse(s).radius, ball_e_star(s), weight,
                                                 key_real(s, "ball.end") - key_real(s, "ball.start"));
   const double cells = static_cast<double>(g.approaches) * static_cast<double>(g.positions);
   const double w = static_cast<double>(g.window);
@@ -177,7 +179,7 @@ std::vector<Item> items(const study::KeyReader& s, int threads) {
   } else if (scene == "ball-on-beam") {
     const double record = (key_real(s, "ball.end") - key_real(s, "ball.start")) /
                           std::max(key_real(s, "ball.speed"), 1e-300) * key_real(s, "signal.sample_rate");
-    const double sensors = static_cast<double>(s.list("sensors.positions").size());
+    const double sensors = static_cast<double>(study::SensorsSection::parse(s).positions.size());
     out.push_back({8.0 * record * (sensors + 6.0) * (t + 1.0),
                    where(s, {"ball.start", "ball.end", "ball.speed", "signal.sample_rate"}),
                    "time records per thread"});
@@ -194,12 +196,12 @@ std::vector<Item> items(const study::KeyReader& s, int threads) {
       out.push_back(linear_reference(s, sensors, record));
     if (law == "path") out.push_back(path_table(s, t));
   } else if (scene == "rolling-pipe") {
-    if (s.text("roughness.kind") != "line") {
+    if (!study::PipeRoughnessSection::parse(s).line) {
       // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
       const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
       out.push_back({8.0 * nx * ny * (t + 10.0), where(s, {"surface.nx", "surface.ny"}), "rough floor per thread"});
     }
-    out.push_back(chunk_sums(s, static_cast<double>(s.list("sensors.positions").size()) + 2.0));
+    out.push_back(chunk_sums(s, static_cast<double>(study::PipeSensorsSection::parse(s).positions.size()) + 2.0));
   } else if (scene == "rolling-beam") {
     for (auto& it : rolling_beam(s)) out.push_back(std::move(it));
   }

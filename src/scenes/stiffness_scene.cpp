@@ -5,9 +5,12 @@
 
 #include "kernels/contact/geometry.hpp"
 #include "src/error.hpp"
-#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/flat_section.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
@@ -34,34 +37,40 @@ std::vector<KeySpec> stiffness_scene_keys() {
 }
 
 ContactPair study_contact_pair(const KeyReader& s) {
-  const std::string other = s.scene() == "stiffness" ? "flat" : "beam";
+  // The ball on the flat (scene stiffness) or on the beam (ball-on-beam).
+  const BallSection ball = BallSection::parse_solid(s);
+  double other_modulus = 0.0, other_poisson = 0.0;
+  if (s.scene() == "stiffness") {
+    const FlatSection flat = FlatSection::parse(s);
+    other_modulus = flat.youngs_modulus, other_poisson = flat.poisson;
+  } else {
+    const ModalBeamSection beam = ModalBeamSection::parse(s);
+    other_modulus = beam.properties.youngs_modulus, other_poisson = beam.poisson;
+  }
   ContactPair p{};
-  p.radius = s.real("ball.radius");
-  p.effective_modulus = contact::effective_modulus(s.real("ball.youngs_modulus"), s.real("ball.poisson"),
-                                                   s.real(other + ".youngs_modulus"), s.real(other + ".poisson"));
-  p.weight = 4.0 / 3.0 * M_PI * std::pow(p.radius, 3) * s.real("ball.density") * s.real("ball.gravity");
+  p.radius = ball.radius;
+  p.effective_modulus = ball.effective_modulus(other_modulus, other_poisson);
+  p.weight = 4.0 / 3.0 * M_PI * std::pow(p.radius, 3) * ball.density * ball.gravity;
   return p;
 }
 
 namespace {
 class StiffnessScene final : public Scene {
  public:
-  explicit StiffnessScene(const KeyReader& s)
-      : pair_(study_contact_pair(s)), rough_(s.text("stiffness.surface") == "rough") {
-    if (rough_) texture_io::study_psd(s);  // validates the PSD source now
+  explicit StiffnessScene(const KeyReader& s) : pair_(study_contact_pair(s)), tables_(stiffness::TableStudy::parse(s)) {
+    const bool rough = tables_.stiffness.rough;  // a rough flat's PSD source is validated by the parse
     // `rollspec stiffness` builds and prints the table through stiffness::resolve_table, the same
     // CachedTable, so this stage and that command agree.
     const ContactPair pair = pair_;
     auto table = std::make_unique<TableStage>(
-        "stiffness_table", stiffness::stiffness_cached_table(s, pair.radius, pair.effective_modulus),
+        "stiffness_table", stiffness::stiffness_cached_table(tables_, pair.radius, pair.effective_modulus),
         [] { return std::make_unique<stiffness::StiffnessTable>(); },
-        [&s, pair](stiffness::TableData& out, bool quiet) {
+        [this, pair](stiffness::TableData& out, bool quiet) {
           static_cast<stiffness::StiffnessTable&>(out) =
-              stiffness::build_table(s, pair.radius, pair.effective_modulus, quiet);
+              stiffness::build_table(tables_, pair.radius, pair.effective_modulus, quiet);
         },
         [](const stiffness::TableData&, const std::string&, bool) {});
     const TableStage* t = table.get();
-    const bool rough = rough_;
     add_stage(std::make_unique<DerivedStage>([t, rough] {
       const bool valid = t->state() == stiffness::TableState::valid;
       return StagePlan{"surface", valid || !rough ? StageStatus::skipped : StageStatus::run,
@@ -76,7 +85,7 @@ class StiffnessScene final : public Scene {
 
  private:
   ContactPair pair_;
-  bool rough_;
+  stiffness::TableStudy tables_;
 };
 }  // namespace
 

@@ -1,4 +1,3 @@
-#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 
 #include <algorithm>
@@ -22,7 +21,6 @@
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace fs = std::filesystem;
@@ -57,12 +55,13 @@ double BlockedForceTable::psd_at(double k) const { return path_psd_at(psd_wavenu
 namespace {
 
 // The grid enters as resolved (derived or set), so the input hash names what was computed.
-std::string inputs_text(const KeyReader& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, double radius, double e_star,
+                        double load) {
   std::ostringstream in;
-  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx
+  in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
      << "\nchunk_positions = " << kChunkPositions << "\n";
-  in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
+  in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
 
@@ -77,17 +76,17 @@ void BlockedForceTable::load_from(const io::Hdf5Reader& r) {
   load = r.double_attribute("/blocked_force", "load");
 }
 
-BlockedForceTable build_blocked_force(const KeyReader& s, const BlockedForceGeometry& geo, double radius, double e_star,
-                                      double load, bool quiet) {
+BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGeometry& geo, double radius,
+                                      double e_star, double load, bool quiet) {
   const double dx = geo.cell;
   const std::size_t ny = geo.ny, nx = geo.nx, window = geo.window, step = geo.step;
   // One strip realisation (Philox surface streams of realisation 0) from the study's PSD.
-  const texture::Surface strip = study_strip(s, StripGrid{nx, ny, dx, geo.derived_cell}, 0);
+  const texture::Surface strip = study_strip(ts, StripGrid{nx, ny, dx, geo.derived_cell}, 0);
   contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
-  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
+  contact::SolverOptions opts = ts.stiffness.solver;
+  const contact::BallShape shape = ts.stiffness.shape;
   if (!quiet)
     std::fprintf(stderr, "%sblocked force grid: %s\n", ensemble::rank_prefix().c_str(), geo.describe().c_str());
   if (!quiet)
@@ -130,8 +129,7 @@ BlockedForceTable build_blocked_force(const KeyReader& s, const BlockedForceGeom
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    static_cast<double>(std::clock() - start_cpu) / CLOCKS_PER_SEC);
   } catch (const std::invalid_argument& e) {
-    throw config_error(s.where("blocked_force.window") + ": " + e.what() +
-                       "; widen the window or the strip ([surface] ny)");
+    ts.blocked_force.window_origin.refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
   }
   if (!path.converged)
     throw data_error("blocked force: the path search did not converge (largest error " + num(path.max_error) +
@@ -173,9 +171,9 @@ void BlockedForceTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/blocked_force", "load", load);
 }
 
-CachedTable blocked_force_cached_table(const KeyReader& s, const BlockedForceGeometry& g, double radius,
+CachedTable blocked_force_cached_table(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                        double effective_modulus, double load) {
-  return CachedTable(kBlockedForceTableKind, s, inputs_text(s, g, radius, effective_modulus, load));
+  return CachedTable(kBlockedForceTableKind, ts.store, inputs_text(ts, g, radius, effective_modulus, load));
 }
 
 }  // namespace rollspec::stiffness

@@ -10,11 +10,8 @@
 
 #include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/stiffness/cached_table.hpp"
+#include "src/stiffness/table_study.hpp"
 #include "src/study/key_spec.hpp"
-
-namespace rollspec::study {
-class KeyReader;
-}
 
 namespace rollspec::stiffness {
 
@@ -38,11 +35,11 @@ struct BlockedForceTable : TableData {
 
 // What a study asks for (no computation): canonical inputs, the grid `g` included, and
 // <table_dir>/blocked-force-<hash>.h5.
-CachedTable blocked_force_cached_table(const study::KeyReader& s, const BlockedForceGeometry& g, double radius,
+CachedTable blocked_force_cached_table(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                        double effective_modulus, double load);
 
 // Builds the table on the grid `g`: one strip realisation, the load search along the path, the PSD of F0.
-BlockedForceTable build_blocked_force(const study::KeyReader& s, const BlockedForceGeometry& g, double radius,
+BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                       double effective_modulus, double load, bool quiet);
 
 }  // namespace rollspec::stiffness

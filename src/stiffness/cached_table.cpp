@@ -12,7 +12,6 @@
 #include "src/io/provenance.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/key_reader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -73,15 +72,15 @@ StoredIdentity load_checked(const TableKind& kind, const std::string& path, Tabl
 
 }  // namespace
 
-CachedTable::CachedTable(const TableKind& kind, const study::KeyReader& s, std::string inputs,
+CachedTable::CachedTable(const TableKind& kind, const TableStore& store, std::string inputs,
                          const std::string& explicit_path)
-    : kind_(kind), study_(&s), inputs_(std::move(inputs)), hash_(hex16(ensemble::fnv1a64(inputs_))) {
-  const fs::path dir = fs::path(s.file()).parent_path();
+    : kind_(kind), store_(store), inputs_(std::move(inputs)), hash_(hex16(ensemble::fnv1a64(inputs_))) {
+  const fs::path dir = fs::path(store_.study_file).parent_path();
   automatic_ = explicit_path.empty();
   if (!automatic_)
     path_ = (fs::path(explicit_path).is_absolute() ? fs::path(explicit_path) : dir / explicit_path).string();
   else
-    path_ = (dir / s.text("stiffness.table_dir") / (kind.file_prefix + hash_ + ".h5")).string();
+    path_ = (dir / store_.table_dir / (kind.file_prefix + hash_ + ".h5")).string();
 }
 
 TableState CachedTable::inspect(TableData& scratch, std::string& why) const {
@@ -114,7 +113,7 @@ void CachedTable::resolve(TableData& t, bool rebuild, const std::function<void(T
   }
   if (state == TableState::mismatched && !rebuild) throw data_error(why + "\nrun with --rebuild to replace it");
   // Before the build: never replace anything but a rollspec table.
-  const std::string write_path = table_write_path(*study_, path_, kind_.file_type, automatic_);
+  const std::string write_path = table_write_path(store_, path_, kind_.file_type, automatic_);
   build(t);
   if (ensemble::mpi_rank() == 0) write(write_path, t);
   ensemble::mpi_barrier();  // the table file exists for every rank from here on
@@ -123,8 +122,7 @@ void CachedTable::resolve(TableData& t, bool rebuild, const std::function<void(T
 
 void CachedTable::write(const std::string& write_path, const TableData& t) const {
   io::Hdf5Writer w(write_path);
-  io::write_provenance(w, kind_.file_type, kSchemaVersion, study_->canonical_text(),
-                       static_cast<std::uint64_t>(study_->integer("study.seed")));
+  io::write_provenance(w, kind_.file_type, kSchemaVersion, store_.study_text, store_.seed);
   t.save_to(w);
   w.attribute(kind_.group, "schema_version", std::string(kSchemaVersion));
   w.attribute(kind_.group, "kernel_version", static_cast<double>(contact::kernel_version));

@@ -4,16 +4,17 @@
 // (file type, schema, contact kernel version, inputs and data checksum all match), what differs
 // from the study when it may not, and how it is built, written (provenance, identity attributes,
 // temp file renamed) and read back. The table's own data come and go through TableData.
+#include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
+
+#include "src/study/sections/key_origin.hpp"
 
 namespace rollspec::io {
 class Hdf5Reader;
 class Hdf5Writer;
 }  // namespace rollspec::io
-namespace rollspec::study {
-class KeyReader;
-}
 
 namespace rollspec::stiffness {
 
@@ -36,12 +37,23 @@ struct TableKind {
 
 enum class TableState { missing, valid, mismatched };
 
+// Where a study's tables live and what their files record of it (table_location.hpp says what
+// may be written).
+struct TableStore {
+  std::string study_file;  // its directory resolves relative table paths
+  std::string table_dir;   // [stiffness] table_dir as written
+  study::KeyOrigin table_origin, table_dir_origin;
+  std::vector<std::string> inputs;  // files the study reads: a table never replaces one
+  std::string study_text;           // the study's canonical text, for the provenance
+  std::uint64_t seed = 0;
+};
+
 class CachedTable {
  public:
   CachedTable() = default;
   // `explicit_path` (relative to the study's directory) or "" for the automatic name in
   // [stiffness] table_dir.
-  CachedTable(const TableKind& kind, const study::KeyReader& s, std::string inputs,
+  CachedTable(const TableKind& kind, const TableStore& store, std::string inputs,
               const std::string& explicit_path = "");
 
   const std::string& inputs() const { return inputs_; }
@@ -60,7 +72,7 @@ class CachedTable {
  private:
   void write(const std::string& write_path, const TableData& t) const;
   TableKind kind_{};
-  const study::KeyReader* study_ = nullptr;
+  TableStore store_;
   std::string inputs_, hash_, path_;
   bool automatic_ = true;
 };

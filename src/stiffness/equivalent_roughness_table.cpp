@@ -1,4 +1,3 @@
-#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 
 #include <omp.h>
@@ -21,7 +20,6 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/key_reader.hpp"
 
 namespace rollspec::stiffness {
 
@@ -43,14 +41,15 @@ std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& 
   return {&t.position, &t.height, &t.psd_wavenumber, &t.psd, &t.stiffness};
 }
 
-std::string inputs_text(const KeyReader& s, const BlockedForceGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, double radius, double e_star,
+                        double load) {
   std::ostringstream in;
-  in << ball_inputs_text(s, radius, e_star, load)
-     << "\n\n[equivalent_roughness]\nstrips = " << s.integer("equivalent_roughness.strips")
-     << "\nstrip_cells = " << g.nx << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
+  in << ball_inputs_text(ts, radius, e_star, load)
+     << "\n\n[equivalent_roughness]\nstrips = " << ts.equivalent_roughness.strips << "\nstrip_cells = " << g.nx
+     << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
      << "\nchunk_positions = " << kChunkPositions << "\nsolve = load control\noutputs = h_eq, k_eq\nload_tolerance = "
-     << num(strip_load_tolerance(study::StiffnessSection::parse(s).solver)) << "\n";
-  in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
+     << num(strip_load_tolerance(ts.stiffness.solver)) << "\n";
+  in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
 
@@ -78,14 +77,13 @@ double EquivalentRoughnessTable::stiffness_ratio() const {
 
 double EquivalentRoughnessTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }
 
-double equivalent_roughness_seconds(const KeyReader& s, const BlockedForceGeometry& g) {
+double equivalent_roughness_seconds(const TableStudy& ts, const BlockedForceGeometry& g) {
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window), n144 = 4.0 * 144.0 * 144.0;
   const double per_position = kSecondsPerPosition144 * n2 * std::log2(n2) / (n144 * std::log2(n144));
-  return static_cast<double>(s.integer("equivalent_roughness.strips")) * static_cast<double>(g.positions) *
-         per_position;
+  return static_cast<double>(ts.equivalent_roughness.strips) * static_cast<double>(g.positions) * per_position;
 }
 
-std::string equivalent_roughness_describe(const KeyReader& s, const BlockedForceGeometry& g) {
+std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedForceGeometry& g) {
   // The chunks of kChunkPositions positions share the threads.
   const int chunks = static_cast<int>((g.positions + kChunkPositions - 1) / kChunkPositions);
   const int threads = std::max(1, std::min(omp_get_max_threads(), chunks));
@@ -95,13 +93,13 @@ std::string equivalent_roughness_describe(const KeyReader& s, const BlockedForce
       "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
       "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
       "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
-      static_cast<long long>(s.integer("equivalent_roughness.strips")),
-      static_cast<long long>(s.integer("equivalent_roughness.strips") - 1), g.nx, g.ny,
+      static_cast<long long>(ts.equivalent_roughness.strips),
+      static_cast<long long>(ts.equivalent_roughness.strips - 1), g.nx, g.ny,
       um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),
       um(g.cell).c_str(), g.contact_radius / g.cell,
       g.truncated_wavelength > 0.0 ? (", texture below " + um(g.truncated_wavelength) + " dropped").c_str() : "",
       g.window, g.positions, g.step, um(static_cast<double>(g.step) * g.cell).c_str(), g.segment,
-      um(g.contact_radius).c_str(), equivalent_roughness_seconds(s, g), equivalent_roughness_seconds(s, g) / threads,
+      um(g.contact_radius).c_str(), equivalent_roughness_seconds(ts, g), equivalent_roughness_seconds(ts, g) / threads,
       threads, threads == 1 ? "" : "s");
   return buf;
 }
@@ -137,28 +135,28 @@ void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/equivalent_roughness", "strips", strips);
 }
 
-CachedTable equivalent_roughness_cached_table(const KeyReader& s, const BlockedForceGeometry& g, double radius,
+CachedTable equivalent_roughness_cached_table(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                               double e_star, double load) {
-  return CachedTable(kEquivalentRoughnessTableKind, s, inputs_text(s, g, radius, e_star, load));
+  return CachedTable(kEquivalentRoughnessTableKind, ts.store, inputs_text(ts, g, radius, e_star, load));
 }
 
-EquivalentRoughnessTable build_equivalent_roughness(const KeyReader& s, const BlockedForceGeometry& geo, double radius,
-                                                    double e_star, double load, bool quiet) {
+EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& geo,
+                                                    double radius, double e_star, double load, bool quiet) {
   const double dx = geo.cell;
   const std::size_t nx = geo.nx, ny = geo.ny, window = geo.window, step = geo.step;
-  const auto n_strips = static_cast<std::size_t>(s.integer("equivalent_roughness.strips"));
+  const auto n_strips = static_cast<std::size_t>(ts.equivalent_roughness.strips);
   const contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
   std::vector<double> positions;
   for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
-  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
+  contact::SolverOptions opts = ts.stiffness.solver;
+  const contact::BallShape shape = ts.stiffness.shape;
   contact::EquivalentRoughnessOptions po;
   po.chunk_positions = kChunkPositions;
   // ER-1 to the solves' own accuracy (strip_load_tolerance).
   po.load_tolerance = strip_load_tolerance(opts);
   if (!quiet)
     std::fprintf(stderr, "%sequivalent roughness: %s\n", ensemble::rank_prefix().c_str(),
-                 equivalent_roughness_describe(s, geo).c_str());
+                 equivalent_roughness_describe(ts, geo).c_str());
   // PSD of h_eq along the path: Welch with f_s = 1 / (step dx) cycles/m per strip, the strips'
   // mean, then per rad/m (as the blocked-force F0 PSD; D-5).
   spectral::WelchConfig wc;
@@ -177,13 +175,12 @@ EquivalentRoughnessTable build_equivalent_roughness(const KeyReader& s, const Bl
   ensemble::Progress progress("equivalent roughness strips", n_strips, quiet);  // bar and ETA
   progress.show_after(2.0);
   for (std::size_t si = 0; si < n_strips; ++si) {
-    const texture::Surface strip = study_strip(s, StripGrid{nx, ny, dx, geo.derived_cell}, si);
+    const texture::Surface strip = study_strip(ts, StripGrid{nx, ny, dx, geo.derived_cell}, si);
     contact::EquivalentRoughness r;
     try {
       r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, shape, positions, load, opts, po);
     } catch (const std::invalid_argument& e) {
-      throw config_error(s.where("blocked_force.window") + ": " + e.what() +
-                         "; widen the window or the strip ([surface] ny)");
+      ts.blocked_force.window_origin.refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
     }
     if (!r.converged)
       throw data_error("equivalent roughness: strip " + std::to_string(si) + " did not converge (largest error " +

@@ -11,11 +11,8 @@
 
 #include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/stiffness/cached_table.hpp"
+#include "src/stiffness/table_study.hpp"
 #include "src/study/key_spec.hpp"
-
-namespace rollspec::study {
-class KeyReader;
-}
 
 namespace rollspec::stiffness {
 
@@ -41,15 +38,15 @@ struct EquivalentRoughnessTable : TableData {
 };
 
 // Estimated build time on one core (s), for the plan: strips x positions force-controlled solves.
-double equivalent_roughness_seconds(const study::KeyReader& s, const BlockedForceGeometry& g);
+double equivalent_roughness_seconds(const TableStudy& ts, const BlockedForceGeometry& g);
 
 // "2 strips of 400 x 64 cells, ... positions, ...; build about ... s" for the plan and the log.
-std::string equivalent_roughness_describe(const study::KeyReader& s, const BlockedForceGeometry& g);
+std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedForceGeometry& g);
 
-CachedTable equivalent_roughness_cached_table(const study::KeyReader& s, const BlockedForceGeometry& g, double radius,
+CachedTable equivalent_roughness_cached_table(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                               double effective_modulus, double load);
 
-EquivalentRoughnessTable build_equivalent_roughness(const study::KeyReader& s, const BlockedForceGeometry& g, double radius,
+EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                                     double effective_modulus, double load, bool quiet);
 
 }  // namespace rollspec::stiffness

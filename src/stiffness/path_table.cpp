@@ -1,4 +1,3 @@
-#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/path_table.hpp"
 
 #include <omp.h>
@@ -21,7 +20,6 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::stiffness {
@@ -106,14 +104,14 @@ std::vector<const std::vector<double>*> columns(const PathTableData& t) {
   return {&t.position, &t.approach, &t.first_contact, &t.force};
 }
 
-std::string inputs_text(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
+  in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
      << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
      << "\ntop_force = " << num(contact::PathTableOptions{}.top_force)
      << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
-  in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
+  in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
 
@@ -145,19 +143,20 @@ void PathTableData::save_to(io::Hdf5Writer& w) const {
   w.attribute("/path_table", "load", load);
 }
 
-CachedTable path_cached_table(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load) {
-  return CachedTable(kPathTableKind, s, inputs_text(s, g, radius, e_star, load));
+CachedTable path_cached_table(const TableStudy& ts, const PathTableGeometry& g, double radius, double e_star,
+                              double load) {
+  return CachedTable(kPathTableKind, ts.store, inputs_text(ts, g, radius, e_star, load));
 }
 
-PathTableData build_path_table(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load,
-                               bool quiet) {
+PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g, double radius, double e_star,
+                               double load, bool quiet) {
   const double dx = g.base.cell;
-  const texture::Surface strip = study_strip(s, StripGrid{g.nx, g.ny, dx, g.base.derived_cell}, 0);
+  const texture::Surface strip = study_strip(ts, StripGrid{g.nx, g.ny, dx, g.base.derived_cell}, 0);
   const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
   std::vector<double> positions;
   for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
-  contact::SolverOptions opts = study::StiffnessSection::parse(s).solver;
-  const contact::BallShape shape = study::StiffnessSection::parse(s).shape;
+  contact::SolverOptions opts = ts.stiffness.solver;
+  const contact::BallShape shape = ts.stiffness.shape;
   contact::PathTableOptions po;
   po.approaches = g.approaches;
   po.reach = kReach;
@@ -181,7 +180,7 @@ PathTableData build_path_table(const KeyReader& s, const PathTableGeometry& g, d
     t = contact::build_path_table(window_grid, e_star, strip_grid, strip.heights, radius, shape, positions, load, opts,
                                   po);
   } catch (const std::invalid_argument& e) {
-    throw config_error(s.where("surface.ny") + ": " + e.what() + "; widen the strip ([surface] ny)");
+    ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
   }
   if (!t.converged)
     throw data_error("path table: a contact solve did not converge (largest error " + num(t.max_error) +

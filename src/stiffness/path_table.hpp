@@ -20,12 +20,9 @@
 
 #include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/stiffness/cached_table.hpp"
+#include "src/stiffness/table_study.hpp"
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/path_table_section.hpp"
-
-namespace rollspec::study {
-class KeyReader;
-}
 
 namespace rollspec::stiffness {
 
@@ -62,10 +59,10 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& path_table,
                                       const study::StripSurfaceSection& surface, const texture::Psd& psd, double radius,
                                       double effective_modulus, double load, double path_length);
 
-CachedTable path_cached_table(const study::KeyReader& s, const PathTableGeometry& g, double radius,
-                              double effective_modulus, double load);
+CachedTable path_cached_table(const TableStudy& ts, const PathTableGeometry& g, double radius, double effective_modulus,
+                              double load);
 
-PathTableData build_path_table(const study::KeyReader& s, const PathTableGeometry& g, double radius,
+PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g, double radius,
                                double effective_modulus, double load, bool quiet);
 
 }  // namespace rollspec::stiffness

@@ -1,4 +1,3 @@
-#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -22,7 +21,6 @@
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
-#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace fs = std::filesystem;
@@ -69,8 +67,8 @@ const TableKind kStiffnessTableKind = {kTableFileType, "/stiffness", "stiffness-
 
 std::string StiffnessTable::checksum() const { return hex16(column_hash(columns(*this))); }
 
-CachedTable stiffness_cached_table(const study::KeyReader& s, double ball_radius, double effective_modulus) {
-  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
+CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, double effective_modulus) {
+  const study::StiffnessSection& stiffness = t.stiffness;
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
      << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << stiffness.text("shape")
@@ -78,28 +76,27 @@ CachedTable stiffness_cached_table(const study::KeyReader& s, double ball_radius
   for (const char* k : {"surface", "ball_rms", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
     in << k << " = " << stiffness.text(k) << "\n";
   in << "realisations = " << (stiffness.rough ? stiffness.text("realisations") : "1")
-     << "\nseed = " << s.text("study.seed") << "\n";
+     << "\nseed = " << t.study.seed_text << "\n";
   in << "\n[surface]\n";
   for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
-    in << k << " = " << s.text(std::string("surface.") + k) << "\n";
+    in << k << " = " << t.surface.text(k) << "\n";
   // Eq. 26a changed the spectral surfaces of non-square grids only (square: the same bits), so only
   // their tables take a new hash.
-  if (s.integer("surface.nx") != s.integer("surface.ny"))
-    in << "mode power = rectangular cell mean (kernels/texture Eq. 26a)\n";
+  if (t.surface.nx != t.surface.ny) in << "mode power = rectangular cell mean (kernels/texture Eq. 26a)\n";
   if (stiffness.rough) {
     in << "\n[texture]\n";
-    for (const auto& k : texture_io::psd_keys())
-      if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
-    in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
-    const auto measured = texture_io::profile_derived_surface_keys(s);
-    if (!measured.empty()) {  // their values come from the fingerprinted profiles, not from the text above
+    for (const auto& [key, value] : t.surface.texture_texts)
+      if (key != "table" && key != "profiles") in << key << " = " << value << "\n";
+    in << "input files fingerprint = " << t.psd_fingerprint << "\n";
+    if (!t.profile_derived_keys
+             .empty()) {  // their values come from the fingerprinted profiles, not from the text above
       in << "from the profiles =";
-      for (const auto& k : measured) in << " " << k;
+      for (const auto& k : t.profile_derived_keys) in << " " << k;
       in << "\n";
     }
   }
-  const std::string explicit_path = s.text("stiffness.table");
-  return CachedTable(kStiffnessTableKind, s, in.str(), explicit_path == "auto" ? "" : explicit_path);
+  const std::string& explicit_path = stiffness.text("table");
+  return CachedTable(kStiffnessTableKind, t.store, in.str(), explicit_path == "auto" ? "" : explicit_path);
 }
 
 void StiffnessTable::load_from(const io::Hdf5Reader& r) {
@@ -120,17 +117,17 @@ void StiffnessTable::load_from(const io::Hdf5Reader& r) {
   realisations = static_cast<std::int64_t>(r.double_attribute("/stiffness", "realisations"));
 }
 
-StiffnessTable build_table(const study::KeyReader& s, double ball_radius, double effective_modulus, bool quiet) {
+StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effective_modulus, bool quiet) {
   contact::Grid grid;
-  grid.nx = static_cast<std::size_t>(s.integer("surface.nx"));
-  grid.ny = static_cast<std::size_t>(s.integer("surface.ny"));
-  grid.dx = grid.dy = s.real("surface.spacing");
-  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
+  grid.nx = static_cast<std::size_t>(ts.surface.nx);
+  grid.ny = static_cast<std::size_t>(ts.surface.ny);
+  grid.dx = grid.dy = ts.surface.spacing;
+  const study::StiffnessSection& stiffness = ts.stiffness;
   const bool is_rough = stiffness.rough;
   const int R = is_rough ? static_cast<int>(stiffness.realisations) : 1;
   const auto steps = static_cast<std::size_t>(stiffness.steps);
   const double dmax = stiffness.approach_max;
-  const auto seed = static_cast<std::uint64_t>(s.integer("study.seed"));
+  const std::uint64_t seed = ts.study.seed;
   const auto shape = stiffness.shape;
   const double ball_rms = stiffness.ball_rms;
   if (ball_rms > 0.0 && !is_rough)
@@ -139,7 +136,7 @@ StiffnessTable build_table(const study::KeyReader& s, double ball_radius, double
   std::vector<double> deltas(steps);
   for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);
   texture_io::SurfaceGenerator surfaces;
-  if (is_rough) surfaces = texture_io::study_surface_generator(s, texture_io::study_psd(s));
+  if (is_rough) surfaces = ts.surfaces();
 
   // Realisation r runs on rank r mod ranks (OpenMP inside each rank); every rank then holds every
   // realisation's results and reduces them in realisation order, so the table has the same bits
@@ -306,14 +303,14 @@ void StiffnessTable::save_to(io::Hdf5Writer& w) const {
               std::string("a summary of the table; the dynamics interpolate the table itself, never this fit"));
 }
 
-StiffnessTable resolve_table(const study::KeyReader& s, double ball_radius, double effective_modulus, bool rebuild,
+StiffnessTable resolve_table(const TableStudy& ts, double ball_radius, double effective_modulus, bool rebuild,
                              bool quiet, std::string& status) {
-  const CachedTable cached = stiffness_cached_table(s, ball_radius, effective_modulus);
+  const CachedTable cached = stiffness_cached_table(ts, ball_radius, effective_modulus);
   StiffnessTable t;
   cached.resolve(
       t, rebuild,
       [&](TableData& out) {
-        static_cast<StiffnessTable&>(out) = build_table(s, ball_radius, effective_modulus, quiet);
+        static_cast<StiffnessTable&>(out) = build_table(ts, ball_radius, effective_modulus, quiet);
       },
       status);
   t.input_hash = cached.hash();

@@ -13,10 +13,7 @@
 #include <vector>
 
 #include "src/stiffness/cached_table.hpp"
-
-namespace rollspec::study {
-class KeyReader;
-}
+#include "src/stiffness/table_study.hpp"
 
 namespace rollspec::stiffness {
 
@@ -49,15 +46,15 @@ struct StiffnessTable : TableData {
 // What a study asks for (no computation): the canonical inputs ([stiffness] keys, surfaces, PSD,
 // contact pair, contact kernel version) and where the table lives ([stiffness] table, or
 // <table_dir>/stiffness-<hash>.h5).
-CachedTable stiffness_cached_table(const study::KeyReader& s, double ball_radius, double effective_modulus);
+CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, double effective_modulus);
 
 // Builds the table (OpenMP over surface realisations). Throws UserError (exit 65) naming the
 // realisation and step if a contact solve does not converge.
-StiffnessTable build_table(const study::KeyReader& s, double ball_radius, double effective_modulus, bool quiet);
+StiffnessTable build_table(const TableStudy& t, double ball_radius, double effective_modulus, bool quiet);
 
 // The stage as scenes use it: reuse a valid table, build a missing one, refuse a mismatched or
 // damaged one (exit 65, naming the differences) unless `rebuild`. `status` says which.
-StiffnessTable resolve_table(const study::KeyReader& s, double ball_radius, double effective_modulus, bool rebuild,
+StiffnessTable resolve_table(const TableStudy& t, double ball_radius, double effective_modulus, bool rebuild,
                              bool quiet, std::string& status);
 
 }  // namespace rollspec::stiffness

@@ -1,4 +1,3 @@
-#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/strip_equivalent_roughness.hpp"
 
 #include <algorithm>
@@ -14,7 +13,6 @@
 #include "src/error.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/key_reader.hpp"
 
 namespace rollspec::stiffness {
 
@@ -29,14 +27,13 @@ constexpr double kSolvesPerPosition = 4.0;
 // Welch segment of the strip's h_eq PSD (positions), at most.
 constexpr std::size_t kSegment = 256;
 
-std::string inputs_text(const KeyReader& s, const PathTableGeometry& g, double radius, double e_star, double load) {
+std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << ball_inputs_text(s, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
+  in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
      << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment
-     << "\noutputs = h_eq, k_eq\nload_tolerance = "
-     << num(strip_load_tolerance(study::StiffnessSection::parse(s).solver)) << "\n";
-  in << strip_inputs_text(s, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
+     << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(ts.stiffness.solver)) << "\n";
+  in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
 
@@ -60,21 +57,20 @@ std::string strip_equivalent_roughness_describe(const PathTableGeometry& g) {
   return buf;
 }
 
-CachedTable strip_equivalent_roughness_cached_table(const KeyReader& s, const PathTableGeometry& g, double radius,
+CachedTable strip_equivalent_roughness_cached_table(const TableStudy& ts, const PathTableGeometry& g, double radius,
                                                     double e_star, double load) {
-  return CachedTable(kEquivalentRoughnessTableKind, s, inputs_text(s, g, radius, e_star, load));
+  return CachedTable(kEquivalentRoughnessTableKind, ts.store, inputs_text(ts, g, radius, e_star, load));
 }
 
-EquivalentRoughnessTable build_strip_equivalent_roughness(const KeyReader& s, const PathTableGeometry& g, double radius,
-                                                          double e_star, double load, bool quiet) {
+EquivalentRoughnessTable build_strip_equivalent_roughness(const TableStudy& ts, const PathTableGeometry& g,
+                                                          double radius, double e_star, double load, bool quiet) {
   const double dx = g.base.cell;
   // The strip and positions of build_path_table: the same heights under the same ball centres.
-  const texture::Surface strip = study_strip(s, StripGrid{g.nx, g.ny, dx, g.base.derived_cell}, 0);
+  const texture::Surface strip = study_strip(ts, StripGrid{g.nx, g.ny, dx, g.base.derived_cell}, 0);
   const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
   std::vector<double> positions;
   for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
-  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
-  const contact::SolverOptions opts = stiffness.solver;
+  const contact::SolverOptions opts = ts.stiffness.solver;
   contact::EquivalentRoughnessOptions po;
   po.chunk_positions = kChunkPositions;
   po.load_tolerance = strip_load_tolerance(opts);
@@ -85,10 +81,10 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const KeyReader& s, co
   contact::ContactSolver solver(window_grid, e_star);
   contact::EquivalentRoughness r;
   try {
-    r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, stiffness.shape, positions, load, opts,
-                                      po);
+    r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, ts.stiffness.shape, positions, load,
+                                      opts, po);
   } catch (const std::invalid_argument& e) {
-    throw config_error(s.where("surface.ny") + ": " + e.what() + "; widen the strip ([surface] ny)");
+    ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
   }
   if (!r.converged)
     throw data_error("equivalent roughness: strip 0 did not converge (largest error " + num(r.max_error) +

@@ -17,11 +17,11 @@ namespace rollspec::stiffness {
 // The plan's row: strip, positions, window, estimate.
 std::string strip_equivalent_roughness_describe(const PathTableGeometry& g);
 
-CachedTable strip_equivalent_roughness_cached_table(const study::KeyReader& s, const PathTableGeometry& g, double radius,
+CachedTable strip_equivalent_roughness_cached_table(const TableStudy& ts, const PathTableGeometry& g, double radius,
                                                     double effective_modulus, double load);
 
 // position: xi_k - xi_0 (m, from the traverse's start, as PathTableData), height: h_eq(xi_k).
-EquivalentRoughnessTable build_strip_equivalent_roughness(const study::KeyReader& s, const PathTableGeometry& g,
+EquivalentRoughnessTable build_strip_equivalent_roughness(const TableStudy& ts, const PathTableGeometry& g,
                                                           double radius, double effective_modulus, double load,
                                                           bool quiet);
 

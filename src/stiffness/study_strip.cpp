@@ -1,4 +1,3 @@
-#include "src/study/sections/stiffness_section.hpp"
 #include "src/stiffness/study_strip.hpp"
 
 #include <algorithm>
@@ -12,52 +11,50 @@
 #include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
 #include "src/stiffness/table_text.hpp"
-#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::stiffness {
 
-texture::Surface study_strip(const study::KeyReader& s, const StripGrid& grid, std::uint64_t index) {
+texture::Surface study_strip(const TableStudy& ts, const StripGrid& grid, std::uint64_t index) {
   texture::SpectralSurfaceSpec spec;
   spec.nx = grid.nx;
   spec.ny = grid.ny;
   spec.dx = spec.dy = grid.cell;
-  spec.amplitudes = texture_io::study_amplitudes(s);
-  spec.anisotropy = s.real("surface.anisotropy");
+  spec.amplitudes = ts.amplitudes;
+  spec.anisotropy = ts.surface.anisotropy;
   // A derived cell may be coarser than half the texture's shortest wavelength: the finer roughness
   // is dropped (the plan says from which wavelength); a cell the study set must resolve it.
   spec.allow_truncation = grid.allow_truncation;
   texture::Surface strip;
   try {
     texture_io::SurfaceGenerator g;
-    g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(texture_io::study_psd(s), spec);
-    g.generate(static_cast<std::uint64_t>(s.integer("study.seed")), index, strip);
+    g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(ts.psd, spec);
+    g.generate(ts.study.seed, index, strip);
   } catch (const std::exception& e) {
-    throw config_error(s.where("surface.spacing") + ": " + e.what());
+    ts.surface.spacing_origin.refuse(e.what());
   }
   return strip;
 }
 
-std::string strip_inputs_text(const study::KeyReader& s, const StripGrid& g) {
+std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g) {
   std::ostringstream in;
-  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
-  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << stiffness.text(k) << "\n";
-  in << "seed = " << s.text("study.seed") << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
-     << "\nanisotropy = " << s.text("surface.anisotropy")
+  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << ts.stiffness.text(k) << "\n";
+  in << "seed = " << ts.study.seed_text << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
+     << "\nanisotropy = " << ts.surface.text("anisotropy")
      << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
      << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
      << "\n\n[texture]\n";
-  for (const auto& k : texture_io::psd_keys())
-    if (k.key != "table" && k.key != "profiles") in << k.key << " = " << s.text(k.full_name()) << "\n";
-  in << "input files fingerprint = " << hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s))) << "\n";
+  for (const auto& [key, value] : ts.surface.texture_texts)
+    if (key != "table" && key != "profiles") in << key << " = " << value << "\n";
+  in << "input files fingerprint = " << ts.psd_fingerprint << "\n";
   return in.str();
 }
 
-std::string ball_inputs_text(const study::KeyReader& s, double radius, double e_star, double load) {
+std::string ball_inputs_text(const TableStudy& ts, double radius, double e_star, double load) {
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
      << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load)
-     << "\nshape = " << study::StiffnessSection::parse(s).text("shape");
+     << "\nshape = " << ts.stiffness.text("shape");
   return in.str();
 }
 

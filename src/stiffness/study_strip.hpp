@@ -11,10 +11,7 @@
 #include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "kernels/texture/surface.hpp"
-
-namespace rollspec::study {
-class KeyReader;
-}
+#include "src/stiffness/table_study.hpp"
 
 namespace rollspec::stiffness {
 
@@ -26,15 +23,15 @@ struct StripGrid {
 
 // Heights of strip `index` (x fastest, centred as contact::Grid). Bad texture or grid: config_error
 // naming [surface] spacing.
-texture::Surface study_strip(const study::KeyReader& s, const StripGrid& g, std::uint64_t index);
+texture::Surface study_strip(const TableStudy& ts, const StripGrid& g, std::uint64_t index);
 
 // The part of a contact stage's input text (its cache hash) that fixes the strip's heights and the
 // solver settings: [stiffness] hardness, tolerance, max_iterations, the seed, the strip grid's width
 // and cell, the surface and texture keys and a fingerprint of the texture's input files.
-std::string strip_inputs_text(const study::KeyReader& s, const StripGrid& g);
+std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g);
 
 // The head of that input text: the contact kernel's version and the ball (radius, E*, load, shape).
-std::string ball_inputs_text(const study::KeyReader& s, double radius, double effective_modulus, double load);
+std::string ball_inputs_text(const TableStudy& ts, double radius, double effective_modulus, double load);
 
 // A one-sided path PSD tabulated at wavenumbers k_0 = 0 < k_1 < ... (a strip stage's Welch PSD) at k:
 // log-log between bins (linear where a bin is 0), the first bin's level below it, 0 above the last.

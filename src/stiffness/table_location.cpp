@@ -6,8 +6,6 @@
 #include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
 #include "src/io/output_target.hpp"
-#include "src/study/key_reader.hpp"
-#include "src/texture/texture_keys.hpp"
 
 namespace fs = std::filesystem;
 
@@ -29,48 +27,43 @@ bool lies_within(const fs::path& inner, const fs::path& outer) {
   return !rel.empty() && !climbs(rel);
 }
 
-std::string prepare_table_path(const study::KeyReader& s, const std::string& path, const std::string& filetype,
+std::string prepare_table_path(const TableStore& store, const std::string& path, const std::string& filetype,
                                bool automatic) {
-  const std::string key = automatic ? "stiffness.table_dir" : "stiffness.table";
+  const study::KeyOrigin& key = automatic ? store.table_dir_origin : store.table_origin;
   const fs::path dir = fs::path(path).parent_path();
-  const fs::path table_dir(s.text("stiffness.table_dir"));
-  const fs::path study_dir = fs::absolute(s.file()).parent_path();
+  const fs::path table_dir(store.table_dir);
+  const fs::path study_dir = fs::absolute(store.study_file).parent_path();
   // A relative table_dir is confined to the study's directory after symbolic links are resolved:
   // neither '..' nor a link out of it writes tables elsewhere. An absolute one names a shared cache
   // the user chose, and must exist.
   if (automatic && !table_dir.is_absolute() && !lies_within(dir, study_dir))
-    s.refuse(
-        key,
+    key.refuse(
         "resolves to " + fs::weakly_canonical(fs::absolute(dir)).string() + ", outside the study's directory " +
-            study_dir.string() +
-            " ('..' or a symbolic link), and rollspec writes tables only below the study's directory; allowed: such a "
-            "directory, or an absolute path of an existing directory");
+        study_dir.string() +
+        " ('..' or a symbolic link), and rollspec writes tables only below the study's directory; allowed: such a "
+        "directory, or an absolute path of an existing directory");
   std::error_code ec;
   if (!dir.empty() && !fs::is_directory(dir, ec)) {
-    if (fs::exists(dir, ec)) s.refuse(key, "the table directory " + dir.string() + " is not a directory");
+    if (fs::exists(dir, ec)) key.refuse("the table directory " + dir.string() + " is not a directory");
     if (!automatic)
-      s.refuse(key,
-               "the table's directory " + dir.string() + " does not exist; allowed: a path in an existing directory");
+      key.refuse("the table's directory " + dir.string() + " does not exist; allowed: a path in an existing directory");
     if (table_dir.is_absolute() || climbs(table_dir))
-      s.refuse(
-          key,
-          "the directory " + dir.string() +
-              " does not exist, and rollspec creates table directories only "
-              "below the study's directory (no '..', not absolute); create it yourself, or choose such a directory");
+      key.refuse("the directory " + dir.string() +
+                 " does not exist, and rollspec creates table directories only "
+                 "below the study's directory (no '..', not absolute); create it yourself, or choose such a directory");
     fs::create_directories(dir, ec);
     if (ec)
-      throw cannot_create("cannot create the table directory " + dir.string() + " (" + s.where(key) +
+      throw cannot_create("cannot create the table directory " + dir.string() + " (" + key.where +
                           "): " + ec.message());
   }
   io::OutputTarget target{path, filetype};
-  target.option = s.where(key);
+  target.option = key.where;
   // An automatic name (<table_dir>/stiffness-<input hash>.h5) is rollspec's: a table of the same
   // kind, or a damaged HDF5 file, there may be rebuilt; a file of any other kind (or a symbolic link
   // to one) is the user's and is never replaced. An explicit path is replaced only if it holds a
   // rollspec table of the same kind.
   target.replace_damaged_hdf5 = automatic;
-  target.inputs = s.input_files();
-  for (const auto& p : texture_io::profile_files(s)) target.inputs.push_back(p);
+  target.inputs = store.inputs;
   try {
     return io::check_output_target(target);
   } catch (const UserError& e) {
@@ -78,13 +71,13 @@ std::string prepare_table_path(const study::KeyReader& s, const std::string& pat
   }
 }
 
-std::string table_write_path(const study::KeyReader& s, const std::string& path, const std::string& filetype,
+std::string table_write_path(const TableStore& store, const std::string& path, const std::string& filetype,
                              bool automatic) {
   std::string out = path;
   std::exception_ptr failure;
   if (ensemble::mpi_rank() == 0) {
     try {
-      out = prepare_table_path(s, path, filetype, automatic);
+      out = prepare_table_path(store, path, filetype, automatic);
     } catch (...) {
       failure = std::current_exception();
     }

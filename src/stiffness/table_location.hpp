@@ -8,9 +8,7 @@
 //     absolute); an explicit [stiffness] table path must be in an existing directory.
 #include <string>
 
-namespace rollspec::study {
-class KeyReader;
-}
+#include "src/stiffness/cached_table.hpp"
 
 namespace rollspec::stiffness {
 
@@ -18,12 +16,12 @@ namespace rollspec::stiffness {
 // write (symbolic links to a table followed). Creates the table directory where allowed. Call on
 // rank 0 before building the table.
 // `automatic`: the path is rollspec's own name in [stiffness] table_dir (else an explicit path).
-std::string prepare_table_path(const study::KeyReader& s, const std::string& path, const std::string& filetype,
+std::string prepare_table_path(const TableStore& store, const std::string& path, const std::string& filetype,
                                bool automatic);
 
 // prepare_table_path on rank 0, with the decision shared by every rank (collective under MPI), so
 // a refused path stops all ranks before the build instead of leaving them at a barrier.
-std::string table_write_path(const study::KeyReader& s, const std::string& path, const std::string& filetype,
+std::string table_write_path(const TableStore& store, const std::string& path, const std::string& filetype,
                              bool automatic);
 
 }  // namespace rollspec::stiffness

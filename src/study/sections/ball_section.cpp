@@ -24,16 +24,21 @@ std::vector<KeySpec> BallSection::keys() {
   };
 }
 
-BallSection BallSection::parse(const KeyReader& s) {
+BallSection BallSection::parse_solid(const KeyReader& s) {
   BallSection b;
   b.radius = s.real("ball.radius");
   b.density = s.real("ball.density");
   b.youngs_modulus = s.real("ball.youngs_modulus");
   b.poisson = s.real("ball.poisson");
+  b.gravity = s.real("ball.gravity");
+  return b;
+}
+
+BallSection BallSection::parse(const KeyReader& s) {
+  BallSection b = parse_solid(s);
   b.speed = s.real("ball.speed");
   b.start = s.real("ball.start");
   b.end = s.real("ball.end");
-  b.gravity = s.real("ball.gravity");
   b.end_origin = {s.where("ball.end")};
   b.radius_origin = {s.where("ball.radius")};
   b.speed_origin = {s.where("ball.speed")};

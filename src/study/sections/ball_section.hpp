@@ -18,6 +18,9 @@ struct BallSection {
 
   static std::vector<KeySpec> keys();
   static BallSection parse(const KeyReader& s);
+  // The ball alone (radius, density, elastic constants, gravity): scene stiffness's [ball], which
+  // has no traverse.
+  static BallSection parse_solid(const KeyReader& s);
   double mass() const;    // 4/3 pi R^3 rho
   double weight() const;  // mass x gravity
   // E* of the ball on a body of modulus E and Poisson's ratio nu (kernels/contact geometry).

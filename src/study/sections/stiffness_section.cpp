@@ -49,6 +49,8 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   t.solver.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
   t.ball_rms_origin = {s.where("stiffness.ball_rms")};
   t.approach_max_origin = {s.where("stiffness.approach_max")};
+  t.table_origin = {s.where("stiffness.table")};
+  t.table_dir_origin = {s.where("stiffness.table_dir")};
   for (const auto& k : keys()) t.texts_[k.key] = s.text(k.full_name());
   return t;
 }

@@ -23,6 +23,7 @@ struct StiffnessSection {
   long long steps = 0, realisations = 0;
   contact::SolverOptions solver;  // hardness (0: none, so infinite), tolerance, max_iterations
   KeyOrigin ball_rms_origin, approach_max_origin;
+  KeyOrigin table_origin, table_dir_origin;  // where a table may not be written
 
   static std::vector<KeySpec> keys();
   static StiffnessSection parse(const KeyReader& s);

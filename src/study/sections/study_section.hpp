@@ -1,5 +1,6 @@
 #pragma once
-// [study]: the scene and the seed, read once (the keys themselves are every scene's common table).
+// [study] (every scene): the scene, the ensemble's size and seed, read once. The keys themselves are the common table
+// (scenes/scene_registry); the seed's canonical text is kept for the cached tables' input texts (their hashes).
 #include <cstdint>
 #include <string>
 
@@ -10,8 +11,10 @@ namespace rollspec::study {
 class KeyReader;
 
 struct StudySection {
-  std::string scene;
+  std::string scene, description;
+  long long realisations = 0;
   std::uint64_t seed = 0;
+  std::string seed_text;  // as the resolved study writes it
   KeyOrigin scene_origin;
 
   static StudySection parse(const KeyReader& s);
