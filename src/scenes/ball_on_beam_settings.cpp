@@ -13,6 +13,7 @@
 #include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/ball_on_beam_plausibility.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/study/sections/texture_section.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/sections/contact_section.hpp"
@@ -204,7 +205,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
   b.strip_surface = study::StripSurfaceSection::parse(s);
   b.stiffness = study::StiffnessSection::parse(s);
   b.line_keys = texture_io::LineGeneratorKeys::parse(s, "roughness.spacing");
-  b.seed = static_cast<std::uint64_t>(s.integer("study.seed"));
+  b.seed = study::StudySection::parse(s).seed;
   beam::BallOnBeamModel& m = b.model;
   const double length = b.beam.properties.length;
   b.texture_psd = texture_io::study_psd(s);

@@ -15,7 +15,7 @@
 #include "src/scenes/ball_on_beam_excitation.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/study/study.hpp"
+#include "tests/engine/study_from_text.hpp"
 #include "src/texture/texture_keys.hpp"
 
 using namespace rollspec;
@@ -26,10 +26,11 @@ namespace {
 
 // A short traverse on the default beam; `overrides` pick the contact model.
 BallOnBeamSettings settings(const std::vector<std::string>& overrides) {
-  const study::Study s = study::Study::parse("/tmp/rollspec_excitation.ini",
-                                             "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 7\n[ball]\nstart "
-                                             "= 0.1\nend = 0.11\n[spectrum]\nsegment = 128\n",
-                                             overrides, scenes::schema_for);
+  const study::Study s =
+      test::study_from_text("/tmp/rollspec_excitation.ini",
+                            "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 7\n[ball]\nstart "
+                            "= 0.1\nend = 0.11\n[spectrum]\nsegment = 128\n",
+                            overrides);
   return scenes::read_ball_on_beam_settings(s);
 }
 

@@ -16,7 +16,7 @@
 #include "src/study/sections/rolling_pipe_sections.hpp"
 #include "src/study/sections/rolling_world_sections.hpp"
 #include "src/study/sections/study_section.hpp"
-#include "src/study/study.hpp"
+#include "tests/engine/study_from_text.hpp"
 
 using namespace rollspec;
 
@@ -25,8 +25,7 @@ const char* kFile = "/tmp/rollspec_rolling_sections.ini";
 
 // Line 5 is the first line of `extra`.
 study::Study scene_study(const std::string& scene, const std::string& extra) {
-  return study::Study::parse(kFile, "[study]\nscene = " + scene + "\nrealisations = 2\nseed = 7\n" + extra, {},
-                             scenes::schema_for);
+  return test::study_from_text(kFile, "[study]\nscene = " + scene + "\nrealisations = 2\nseed = 7\n" + extra, {});
 }
 
 std::string message_of(const std::function<void()>& f) {

@@ -16,16 +16,15 @@
 #include "src/study/sections/path_table_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/strip_surface_section.hpp"
-#include "src/study/study.hpp"
+#include "tests/engine/study_from_text.hpp"
 #include "src/texture/texture_keys.hpp"
 
 using namespace rollspec;
 
 namespace {
 study::Study ball_on_beam(const std::string& extra, const std::vector<std::string>& overrides = {}) {
-  return study::Study::parse("/tmp/rollspec_sections.ini",
-                             "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 1\n" + extra, overrides,
-                             scenes::schema_for);
+  return test::study_from_text("/tmp/rollspec_sections.ini",
+                               "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 1\n" + extra, overrides);
 }
 
 std::string message_of(const std::function<void()>& f) {

@@ -11,16 +11,15 @@
 #include "src/study/sections/study_section.hpp"
 #include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
-#include "src/study/study.hpp"
+#include "tests/engine/study_from_text.hpp"
 #include "src/texture/texture_keys.hpp"
 
 using namespace rollspec;
 
 namespace {
 study::Study texture_study(const std::string& extra, const std::vector<std::string>& overrides = {}) {
-  return study::Study::parse("/tmp/rollspec_texture_sections/s.ini",
-                             "[study]\nscene = texture\nrealisations = 1\nseed = 7\n" + extra, overrides,
-                             scenes::schema_for);
+  return test::study_from_text("/tmp/rollspec_texture_sections/s.ini",
+                               "[study]\nscene = texture\nrealisations = 1\nseed = 7\n" + extra, overrides);
 }
 
 std::string message_of(const std::function<void()>& f) {
@@ -65,10 +64,10 @@ TEST_CASE("texture section: the PSD from the section is the PSD from the study")
 }
 
 TEST_CASE("texture section: a scene without [texture] parses to present = false") {
-  const auto s = study::Study::parse("/tmp/rollspec_texture_sections/o.ini",
-                                     "[study]\nscene = random-oscillator\nrealisations = 1\nseed = 1\n"
-                                     "[oscillator]\nmass = 2\nnatural_frequency = 50\ndamping_ratio = 0.05\n",
-                                     {}, scenes::schema_for);
+  const auto s = test::study_from_text("/tmp/rollspec_texture_sections/o.ini",
+                                       "[study]\nscene = random-oscillator\nrealisations = 1\nseed = 1\n"
+                                       "[oscillator]\nmass = 2\nnatural_frequency = 50\ndamping_ratio = 0.05\n",
+                                       {});
   const auto t = study::TextureSection::parse(s);
   CHECK_FALSE(t.present);
   CHECK(texture_io::profile_files(t).empty());
