@@ -19,6 +19,7 @@
 #include "tests/engine/study_from_text.hpp"
 
 using namespace rollspec;
+using test::message_of;
 
 namespace {
 const char* kFile = "/tmp/rollspec_rolling_sections.ini";
@@ -28,14 +29,6 @@ study::Study scene_study(const std::string& scene, const std::string& extra) {
   return test::study_from_text(kFile, "[study]\nscene = " + scene + "\nrealisations = 2\nseed = 7\n" + extra, {});
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST_CASE("rolling-beam sections: values from the study, defaults elsewhere") {

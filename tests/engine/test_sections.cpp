@@ -20,6 +20,7 @@
 #include "src/texture/texture_keys.hpp"
 
 using namespace rollspec;
+using test::message_of;
 
 namespace {
 study::Study ball_on_beam(const std::string& extra, const std::vector<std::string>& overrides = {}) {
@@ -27,14 +28,6 @@ study::Study ball_on_beam(const std::string& extra, const std::vector<std::strin
                                "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 1\n" + extra, overrides);
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST_CASE("ball section: weight and E* as the scene derives them") {

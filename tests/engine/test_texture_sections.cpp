@@ -15,6 +15,7 @@
 #include "src/texture/texture_keys.hpp"
 
 using namespace rollspec;
+using test::message_of;
 
 namespace {
 study::Study texture_study(const std::string& extra, const std::vector<std::string>& overrides = {}) {
@@ -22,14 +23,6 @@ study::Study texture_study(const std::string& extra, const std::vector<std::stri
                                "[study]\nscene = texture\nrealisations = 1\nseed = 7\n" + extra, overrides);
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST_CASE("texture section: values, profile paths beside the study file, origins") {
