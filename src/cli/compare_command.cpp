@@ -96,10 +96,10 @@ const char* const kCompareUsage =
     "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
     "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
     "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
-    "answers the question the output states. Then `rms_db_error: X  inside_ci: Y/Z`, and, with\n"
-    "--measured-averages M, `combined_test:` one test over all compared bands at once (kernels/spectral D-23:\n"
-    "Hotelling T2 with the realisations' between-band covariance, F law): its p-value and verdict at\n"
-    "--test-level A (default 0.05); a count of bands inside has no known law, this test has.\n"
+    "answers the question the output states. Then `combined_test:`, with --measured-averages M one test\n"
+    "over all compared bands at once (kernels/spectral D-23: Hotelling T2 with the realisations'\n"
+    "between-band covariance, F law): its p-value and verdict at --test-level A (default 0.05); a count of\n"
+    "bands inside has no known law, this test has. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
     "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
     "--format json writes everything (the test as p_value, combined_test).\n"
     "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
@@ -312,9 +312,9 @@ int compare_command(const Args& args) {
   std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", rms, has_interval ? inside : 0, judged);
   const std::string test_line = "combined_test: " + test.verdict + "\n";
   if (format == "csv")
-    text += "# " + source + "\n# question: " + question + "\n# " + buf + "# " + test_line;
+    text += "# " + source + "\n# question: " + question + "\n# " + test_line + "# " + buf;
   else
-    text += buf + test_line;
+    text += test_line + buf;
   std::fputs(text.c_str(), stdout);
   return 0;
 }
