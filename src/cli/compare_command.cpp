@@ -96,7 +96,7 @@ const char* const kCompareUsage =
     "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
     "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
     "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
-    "answers the question the output states. Then `combined_test:`, with --measured-averages M one test\n"
+    "answers the question the output states. With --measured-averages M, `combined_test:` gives one test\n"
     "over all compared bands at once (kernels/spectral D-23: Hotelling T2 with the realisations'\n"
     "between-band covariance, F law): its p-value and verdict at --test-level A (default 0.05); a count of\n"
     "bands inside has no known law, this test has. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
@@ -310,9 +310,10 @@ int compare_command(const Args& args) {
     }
   }
   std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", rms, has_interval ? inside : 0, judged);
-  const std::string test_line = "combined_test: " + test.verdict + "\n";
+  // Without M there is no test (it asks whether the measurement is a mean of M records): no line.
+  const std::string test_line = predict ? "combined_test: " + test.verdict + "\n" : std::string();
   if (format == "csv")
-    text += "# " + source + "\n# question: " + question + "\n# " + test_line + "# " + buf;
+    text += "# " + source + "\n# question: " + question + "\n" + (predict ? "# " + test_line : "") + "# " + buf;
   else
     text += test_line + buf;
   std::fputs(text.c_str(), stdout);
