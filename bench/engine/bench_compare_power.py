@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Size and power of `rollspec compare`'s combined test over bands (kernels/spectral D-23).
 
-usage: bench_compare_power.py [--binary B] [--study S] [--trials N] [--reference K] [--rolls M]
+usage: bench_compare_power.py [--binary B] [--study S] [--trials N] [--reference K] [--rolls M] [--cases I,J]
 
 A reference result (K realisations, the study's own seed) is the model. Each trial's "measurement"
 is the sensor-mean PSD averaged over M rolls of an independent run (its own study seed), of the
@@ -54,6 +54,8 @@ def main():
     ap.add_argument("--reference", type=int, default=200, help="realisations of the model's result")
     ap.add_argument("--rolls", type=int, default=25, help="rolls averaged into each measurement")
     ap.add_argument("--level", type=float, default=0.05)
+    ap.add_argument("--cases", default=",".join(str(i) for i in range(len(CASES))),
+                    help="indices of the cases to run: " + ", ".join(f"{i} {c[0]}" for i, c in enumerate(CASES)))
     a = ap.parse_args()
     with tempfile.TemporaryDirectory(prefix="rollspec-power-") as tmp:
         tmp = Path(tmp)
@@ -62,7 +64,8 @@ def main():
         print(f"study {Path(a.study).name}: reference K = {a.reference}, measurements of M = {a.rolls} rolls, "
               f"{a.trials} trials per case, level {a.level}")
         print(f"{'case':24s} {'rejected':>10s} {'bands inside (mean)':>20s}")
-        for c, (name, overrides) in enumerate(CASES):
+        for c in (int(i) for i in a.cases.split(",")):
+            name, overrides = CASES[c]
             rejected, inside = 0, []
             for t in range(a.trials):
                 out, csv = tmp / "m.h5", tmp / "m.csv"
