@@ -125,6 +125,9 @@ def read_bands(f):
     bands["realisations"] = attr(f, "/psd", "realisations", int)
     bands["confidence"] = attr(f, "/psd", "confidence_level") if "confidence_level" in f["/psd"].attrs else 0.95
     bands["interval_method"] = str(text_attr(f["/psd"], "interval_method", ""))
+    # D-23's between-band covariance of the band logs; results written before it lack it
+    cov = "/bands/log_level_covariance"
+    bands["log_level_covariance"] = _floats(f, cov) if cov in f else None
     n, rows = bands["lower_frequency"].shape, (len(bands["sensor"]),) + bands["lower_frequency"].shape
     wrong = [b for b in BANDS[:3] if bands[b].shape != n or bands[b].ndim != 1] + \
             [b for b in BANDS[3:] if bands[b].shape != rows]
@@ -172,6 +175,35 @@ def prediction_factors(mean, std, log_std, realisations, records, level):
     return lo, hi
 
 
+EXTRA_REALISATIONS = 4  # kernels/spectral kExtraRealisations: the test needs K >= bands + 4
+
+
+def combined_test(measured_db, level_db, cov, realisations, records, test_level=0.05):
+    """D-23, as `rollspec compare` prints it: Hotelling T^2 of the measured band logs against the model
+    with the covariance of an M-record mean plus the K-realisation mean's (Fenton-Wilkinson from the
+    realisations' between-band covariance of ln x), F(p, K - p). Returns a dict with p_value
+    (None when the test is not defined) and the verdict line."""
+    p, K, M = len(measured_db), realisations, records
+    out = {"p_value": None, "rejected": None, "level": test_level}
+    if cov is None:
+        out["verdict"] = "none (the result has no /bands/log_level_covariance: re-run it with this rollspec)"
+        return out
+    if K < p + EXTRA_REALISATIONS:
+        out["verdict"] = (f"none ({p} bands need K >= {p + EXTRA_REALISATIONS} realisations, the result has {K}; "
+                          "run more or choose fewer bands with --fmin/--fmax)")
+        return out
+    vm, vk = np.log1p(np.expm1(cov) / M), np.log1p(np.expm1(cov) / K)
+    d = measured_db * np.log(10) / 10 - (level_db * np.log(10) / 10 + (np.diag(vk) - np.diag(vm)) / 2)
+    t2 = float(d @ np.linalg.solve(vm + vk, d))
+    nu = K - 1
+    f = (nu - p + 1) / (nu * p) * t2
+    out.update(p_value=float(stats.f.sf(f, p, nu - p + 1)), t2=t2, f=f, dof=(p, nu - p + 1))
+    out["rejected"] = out["p_value"] < test_level
+    out["verdict"] = (f"{'REJECTED' if out['rejected'] else 'not rejected'} at level {test_level:g}: "
+                      f"p = {out['p_value']:.3g} (T2 = {t2:.4g}, F = {f:.4g} on {p}, {nu - p + 1} dof, {p} bands)")
+    return out
+
+
 def question(bands, measured_averages=None):
     pct = f"{100 * bands['confidence']:.0f} %"
     if bands["realisations"] < MIN_REALISATIONS:
@@ -210,8 +242,13 @@ def compare_bands(meas, bands, sensor=None, fmin=0.0, fmax=np.inf, measured_aver
     # rms² = bias² + spread²: a constant offset (a gain, a mass) and a shape error are told apart
     bias = float(np.mean(delta[used])) if count else np.nan
     spread = float(np.sqrt(np.mean((delta[used] - bias) ** 2))) if count else np.nan
+    test = None
+    if measured_averages and count:
+        cov = bands.get("log_level_covariance")
+        cov = cov[s][np.ix_(used, used)] if cov is not None else None
+        test = combined_test(measured_db[used], level[used], cov, bands["realisations"], float(measured_averages))
     return {"row": s, "sensor": bands["sensor"][s], "used": used, "measured_db": measured_db, "delta_db": delta,
             "lower_db": lo_db, "upper_db": hi_db, "inside": inside, "count": count,
             "judged": count if judged else 0, "inside_count": int(inside.sum()), "rms_db_error": rms,
-            "bias_db": bias, "spread_db": spread,
+            "bias_db": bias, "spread_db": spread, "combined_test": test,
             "question": question(bands, measured_averages)}

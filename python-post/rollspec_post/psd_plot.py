@@ -168,6 +168,7 @@ def delta_axes(ax2, cmp, band_data, row, meas_label):
     kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the mean"
     ax2.set_title(f"mean ΔL {cmp['bias_db']:+.2f} dB, rms about it {cmp['spread_db']:.2f} dB; inside the {kind} (grey) in {cmp['inside_count']}/"
                   f"{cmp['judged']} bands (blue: inside, red: outside)"
+                  + (f"\ncombined test: {cmp['combined_test']['verdict']}" if cmp.get("combined_test") else "")
                   if cmp["count"] else f"the {meas_label} covers none of the bands", fontsize=8)
     ax2.set_xlabel("third-octave band (Hz)")
     ax2.grid(True, axis="y", alpha=0.3)

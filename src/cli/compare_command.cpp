@@ -13,6 +13,7 @@
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/cli/commands.hpp"
+#include "src/cli/compare_band_test.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/band_levels.hpp"
@@ -52,6 +53,7 @@ std::string json_number(double v) {
 struct BandRow {
   double centre, simulated, measured, delta, ci_lower, ci_upper, pred_lower, pred_upper;
   bool inside_ci, inside_prediction;
+  std::size_t band;  // index in the result's bands
 };
 
 struct Measurement {
@@ -102,7 +104,7 @@ Measurement read_measurement(const std::string& path, std::string& column, long 
 
 const char* const kCompareUsage =
     "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M]\n"
-    "                        [--fmin HZ] [--fmax HZ] [--format table|csv|json] [--skip-rows N]\n"
+    "                        [--fmin HZ] [--fmax HZ] [--test-level A] [--format table|csv|json] [--skip-rows N]\n"
     "\n"
     "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: the one --column names,\n"
     "else `psd`, else in the output of `rollspec psd` of one channel its only PSD column (so it is read\n"
@@ -111,9 +113,12 @@ const char* const kCompareUsage =
     "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
     "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
     "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
-    "answers the question the output states. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
+    "answers the question the output states. With --measured-averages M, `combined_test:` gives one test\n"
+    "over all compared bands at once (kernels/spectral D-23: Hotelling T2 with the realisations'\n"
+    "between-band covariance, F law): its p-value and verdict at --test-level A (default 0.05); a count of\n"
+    "bands inside has no known law, this test has. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
     "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
-    "--format json writes everything.\n"
+    "--format json writes everything (the test as p_value, combined_test).\n"
     "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
     "--skip-rows N: the header follows the first N lines.";
 
@@ -135,6 +140,7 @@ std::vector<BandRow> band_rows(const io::BandLevels& b, const Measurement& m, co
                        " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
     if (meas <= 0.0) continue;
     BandRow row{};
+    row.band = k;
     row.centre = b.nominal[k];
     row.simulated = b.level_db[k];
     row.measured = 10.0 * std::log10(meas);
@@ -169,11 +175,13 @@ struct Comparison {
   const std::string& question;
   double rms;
   int inside, judged;
+  const CombinedTest& test;
 };
 
 // `--format json`: one object with the inputs, the question, every band and the summary.
 std::string json_text(const Comparison& c) {
-  const auto& [result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged] = c;
+  const auto& [result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged,
+               test] = c;
   std::string text;
   text += "{\n  \"result\": " + json_string(result) + ",\n  \"sensor\": " + json_string(b.sensor) +
           ",\n  \"measurement\": " + json_string(measurement) +
@@ -198,7 +206,15 @@ std::string json_text(const Comparison& c) {
   text += "  ],\n  \"rms_db_error\": " + json_number(rms) +
           ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
           ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) +
-          "\n}\n";
+          ",\n  \"p_value\": " + (test.result.defined ? json_number(test.result.p_value) : "null") +
+          ",\n  \"combined_test\": {\"method\": \"Hotelling T2, F law (kernels/spectral D-23)\", \"level\": " +
+          json_number(test.level) + ", \"defined\": " + (test.result.defined ? "true" : "false") +
+          ", \"rejected\": " + (test.result.defined ? (test.rejected ? "true" : "false") : "null") +
+          ", \"t2\": " + (test.result.defined ? json_number(test.result.t2) : "null") +
+          ", \"f\": " + (test.result.defined ? json_number(test.result.f) : "null") + ", \"dof\": " +
+          (test.result.defined ? "[" + json_number(test.result.dof1) + ", " + json_number(test.result.dof2) + "]"
+                               : "null") +
+          ", \"bands\": " + std::to_string(test.bands) + ", \"verdict\": " + json_string(test.verdict) + "}\n}\n";
   return text;
 }
 
@@ -206,7 +222,7 @@ int compare_command(const Args& args) {
   const std::string usage = kCompareUsage;
   po::options_description opts("options");
   std::string result, measurement, format = "table", sensor, column;
-  double fmin = 0.0, fmax = INFINITY, records = 0.0;
+  double fmin = 0.0, fmax = INFINITY, records = 0.0, test_level = 0.05;
   long long skip_rows = -1;
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
@@ -217,6 +233,7 @@ int compare_command(const Args& args) {
       "fmin", po::value(&fmin)->default_value(0.0), "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
       "format", po::value(&format)->default_value("table"), "table, csv or json")(
+      "test-level", po::value(&test_level)->default_value(0.05), "level of the combined test (0 < A < 1)")(
       "skip-rows", po::value(&skip_rows), "measurement CSV lines before its header (default: found from the data)");
   po::positional_options_description pos;
   pos.add("result", 1).add("measurement", 1);
@@ -229,6 +246,8 @@ int compare_command(const Args& args) {
   if (!(fmax > fmin))
     throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) +
                       " Hz)");
+  if (!(test_level > 0.0 && test_level < 1.0))
+    throw usage_error("--test-level " + number_text(test_level) + ": allowed: a level 0 < A < 1, e.g. 0.05");
   const bool predict = vm.count("measured-averages") > 0;
   if (predict && !(records >= 1.0 && std::isfinite(records)))
     throw usage_error("--measured-averages " + number_text(records) +
@@ -266,9 +285,14 @@ int compare_command(const Args& args) {
                              b.sensor + "; measurement " + measurement + ", column " +
                              (column.empty() ? "psd" : column);
 
+  std::vector<std::size_t> band_index;
+  std::vector<double> measured_db;
+  for (const auto& row : rows) band_index.push_back(row.band), measured_db.push_back(row.measured);
+  const CombinedTest test = combined_test(b, band_index, measured_db, predict ? records : 0.0, test_level);
+
   // Printed only once every band is computed: a refused input leaves no partial output.
-  const Comparison c{result,  measurement,  column,   b,   rows,   predict,
-                     records, has_interval, question, rms, inside, judged};
+  const Comparison c{result,       measurement, column, b,      rows,   predict, records,
+                     has_interval, question,    rms,    inside, judged, test};
   std::string text;
   char buf[320];
   if (format == "json") {
@@ -304,10 +328,12 @@ int compare_command(const Args& args) {
     }
   }
   std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", rms, has_interval ? inside : 0, judged);
+  // Without M there is no test (it asks whether the measurement is a mean of M records): no line.
+  const std::string test_line = predict ? "combined_test: " + test.verdict + "\n" : std::string();
   if (format == "csv")
-    text += "# " + source + "\n# question: " + question + "\n# " + buf;
+    text += "# " + source + "\n# question: " + question + "\n" + (predict ? "# " + test_line : "") + "# " + buf;
   else
-    text += buf;
+    text += test_line + buf;
   std::fputs(text.c_str(), stdout);
   return 0;
 }

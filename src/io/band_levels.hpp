@@ -14,8 +14,9 @@ struct BandLevels {
   std::string sensor;                         // the row's name in /bands/sensor
   std::vector<double> nominal, lower, upper;  // Hz
   std::vector<double> level_db, ci_lower_db, ci_upper_db;
-  std::vector<double> std_dev;  // of one realisation's band average, PSD unit
-  std::vector<double> log_std;  // of its natural log
+  std::vector<double> std_dev;         // of one realisation's band average, PSD unit
+  std::vector<double> log_std;         // of its natural log
+  std::vector<double> log_covariance;  // band x band, between-band covariance of the logs (empty: not in the file)
   std::uint64_t realisations = 0;
   double confidence = 0.95;
   std::string interval_method;

@@ -4,11 +4,13 @@
 //   /psd/mean, /psd/ci_lower, /psd/ci_upper, /psd/std, /psd/degrees_of_freedom (sensor x frequency)
 //   /bands/centre_frequency (Hz, scale "band"), /bands/nominal_frequency, /bands/lower_frequency,
 //   /bands/upper_frequency (band), /bands/level_db, /bands/ci_lower_db, /bands/ci_upper_db,
-//   /bands/std, /bands/log_std, /bands/degrees_of_freedom (sensor x band)
+//   /bands/std, /bands/log_std, /bands/degrees_of_freedom (sensor x band),
+//   /bands/log_level_covariance (sensor x band x band)
 // Every interval comes from the realisations' own scatter (kernels/spectral D-21): realisations
 // are independent, nothing inside one is (adjacent Welch bins, segments of a moving-load record).
 // The band interval uses the scatter of each realisation's band average, not a count of bins;
-// /bands/std and /bands/log_std let `rollspec compare` predict a measurement's scatter (D-22).
+// /bands/std and /bands/log_std let `rollspec compare` predict a measurement's scatter (D-22);
+// /bands/log_level_covariance gives its combined test over bands (D-23).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +29,7 @@ struct PsdEnsemble {
   std::vector<double> std_dev;                  // ensemble standard deviation of one realisation's PSD
   std::vector<spectral::Scatter> scatter;       // rows x frequency: moments of x and ln x
   std::vector<spectral::Scatter> band_scatter;  // rows x bands: of the realisations' band averages
+  std::vector<double> band_log_covariance;      // rows x bands x bands, of ln band average (empty: not kept)
   std::uint64_t realisations = 0;
   double welch_dof = 0.0;  // K x the Welch dof (D-16) of a stationary record: information only
   double window_enbw_bins = 1.5;

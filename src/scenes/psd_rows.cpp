@@ -37,6 +37,10 @@ void PsdRows::finish(double* values) const {
   // law there widens the interval rather than pretend to fit.
   const std::size_t n = spectra();
   for (std::size_t i = 0; i < n; ++i) values[n + i] = std::log(std::max(values[i], DBL_MIN));
+  double* product = values + 2 * n + extras_;
+  for (std::size_t r = 0; r < rows(); ++r)
+    for (std::size_t b = 0; b < nb; ++b)
+      for (std::size_t c = b; c < nb; ++c) *product++ = values[band_log_index(r, b)] * values[band_log_index(r, c)];
 }
 
 io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
@@ -56,6 +60,20 @@ io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
     e.scatter.push_back(moments(i));
   }
   for (std::size_t i = 0; i < nb; ++i) e.band_scatter.push_back(moments(n + i));
+  // Between-band covariance of the band logs (K - 1), from the sums of their products (D-23).
+  const std::size_t n_bands = bands_.size();
+  const double K = static_cast<double>(sums.count);
+  e.band_log_covariance.assign(rows() * n_bands * n_bands, sums.count > 1 ? 0.0 : NAN);
+  std::size_t p = 2 * logs + extras_;
+  for (std::size_t r = 0; r < rows(); ++r)
+    for (std::size_t b = 0; b < n_bands; ++b)
+      for (std::size_t c = b; c < n_bands; ++c, ++p) {
+        if (sums.count < 2) continue;
+        const double mb = sums.mean(band_log_index(r, b)), mc = sums.mean(band_log_index(r, c));
+        const double v = (sums.sum[p] - K * mb * mc) / (K - 1.0);
+        e.band_log_covariance[(r * n_bands + b) * n_bands + c] = v;
+        e.band_log_covariance[(r * n_bands + c) * n_bands + b] = v;
+      }
   return e;
 }
 

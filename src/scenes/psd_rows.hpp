@@ -1,10 +1,13 @@
 #pragma once
 // One realisation's result vector for a scene that writes /psd and /bands:
 //   [PSD rows: rows x nf][band values: rows x nb][ln of both: rows x (nf + nb)][the scene's extras]
+//   [products of a row's band logs: rows x nb (nb + 1) / 2, pairs b <= c]
 // Rows are the sensors, then their mean when the study asks for it. A row's band values are its
 // third-octave band averages (D-17); their scatter over realisations gives the band intervals
 // (D-21), which the band average of the mean PSD alone cannot. The logarithms give the moments of
-// ln x that the lognormal law of D-21b needs (the driver sums values and their squares).
+// ln x that the lognormal law of D-21b needs (the driver sums values and their squares). The
+// products give the between-band covariance of the band logs that compare's combined test needs
+// (D-23); they sit after the extras so that every earlier value keeps its place and its sums.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -24,7 +27,7 @@ class PsdRows {
   std::size_t rows() const { return names_.size(); }
   std::size_t sensors() const { return sensors_; }
   std::size_t n_freq() const { return frequency_.size(); }
-  std::size_t size() const { return 2 * spectra() + extras_; }
+  std::size_t size() const { return 2 * spectra() + extras_ + products(); }
 
   double* row(double* values, std::size_t r) const { return values + r * n_freq(); }
   std::size_t extra_index(std::size_t i) const { return 2 * spectra() + i; }
@@ -40,6 +43,10 @@ class PsdRows {
 
  private:
   std::size_t spectra() const { return rows() * (n_freq() + bands_.size()); }  // PSD and band values
+  std::size_t products() const { return rows() * bands_.size() * (bands_.size() + 1) / 2; }
+  std::size_t band_log_index(std::size_t r, std::size_t b) const {
+    return spectra() + rows() * n_freq() + r * bands_.size() + b;
+  }
 
   std::size_t sensors_;
   std::vector<std::string> names_;

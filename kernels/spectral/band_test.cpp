@@ -1,0 +1,96 @@
+#include "kernels/spectral/band_test.hpp"
+
+#include <boost/math/distributions/fisher_f.hpp>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace rollspec::spectral {
+
+namespace {
+
+// Fenton-Wilkinson: covariance of ln of an n-record mean, ln(1 + (e^{S_bc} - 1) / n) (D-23a).
+double log_mean_covariance(double s, double n) { return std::log1p(std::expm1(s) / n); }
+
+// d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = V_M + V_K (D-23a, b).
+void deviation_and_covariance(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
+                              std::vector<double>& d, std::vector<double>& v) {
+  if (!(M >= 1.0) || !(K >= 2.0)) throw std::invalid_argument("band test: needs records >= 1 and K >= 2");
+  d.assign(p, 0.0);
+  v.assign(p * p, 0.0);
+  for (std::size_t b = 0; b < p; ++b) {
+    if (!(mean[b] > 0.0) || !std::isfinite(y[b])) throw std::invalid_argument("band test: a band without power");
+    for (std::size_t c = 0; c < p; ++c)
+      v[b * p + c] = log_mean_covariance(cov[b * p + c], M) + log_mean_covariance(cov[b * p + c], K);
+    const double s = cov[b * p + b];
+    d[b] = y[b] - (std::log(mean[b]) + 0.5 * (log_mean_covariance(s, K) - log_mean_covariance(s, M)));
+  }
+}
+
+}  // namespace
+
+BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                         std::uint64_t realisations, double records) {
+  BandTestResult r;
+  r.needed = p + kExtraRealisations;
+  if (p == 0 || realisations < r.needed) return r;
+  std::vector<double> d, v;
+  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  // Cholesky V = L L^T in place (lower triangle), then T^2 = |L^{-1} d|^2.
+  for (std::size_t j = 0; j < p; ++j) {
+    for (std::size_t i = j; i < p; ++i) {
+      double s = v[i * p + j];
+      for (std::size_t k = 0; k < j; ++k) s -= v[i * p + k] * v[j * p + k];
+      if (i == j) {
+        if (!(s > 0.0)) throw std::invalid_argument("band test: the band covariance is not positive definite");
+        v[j * p + j] = std::sqrt(s);
+      } else
+        v[i * p + j] = s / v[j * p + j];
+    }
+  }
+  double t2 = 0.0;
+  for (std::size_t i = 0; i < p; ++i) {
+    double s = d[i];
+    for (std::size_t k = 0; k < i; ++k) s -= v[i * p + k] * d[k];
+    d[i] = s / v[i * p + i];
+    t2 += d[i] * d[i];
+  }
+  const double nu = static_cast<double>(realisations - 1), pp = static_cast<double>(p);
+  r.defined = true;
+  r.t2 = t2;
+  r.dof1 = pp;
+  r.dof2 = nu - pp + 1.0;
+  r.f = r.dof2 / (nu * pp) * t2;
+  r.p_value = boost::math::cdf(boost::math::complement(boost::math::fisher_f(r.dof1, r.dof2), r.f));
+  return r;
+}
+
+double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                              std::uint64_t realisations, double records) {
+  std::vector<double> d, v;
+  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  std::vector<double> inv(p * p, 0.0);
+  for (std::size_t i = 0; i < p; ++i) inv[i * p + i] = 1.0;
+  for (std::size_t c = 0; c < p; ++c) {  // Gauss-Jordan with partial pivoting
+    std::size_t piv = c;
+    for (std::size_t r = c + 1; r < p; ++r)
+      if (std::fabs(v[r * p + c]) > std::fabs(v[piv * p + c])) piv = r;
+    for (std::size_t k = 0; k < p; ++k) {
+      std::swap(v[c * p + k], v[piv * p + k]);
+      std::swap(inv[c * p + k], inv[piv * p + k]);
+    }
+    const double a = v[c * p + c];
+    for (std::size_t k = 0; k < p; ++k) v[c * p + k] /= a, inv[c * p + k] /= a;
+    for (std::size_t r = 0; r < p; ++r) {
+      if (r == c) continue;
+      const double f = v[r * p + c];
+      for (std::size_t k = 0; k < p; ++k) v[r * p + k] -= f * v[c * p + k], inv[r * p + k] -= f * inv[c * p + k];
+    }
+  }
+  double t2 = 0.0;
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t j = 0; j < p; ++j) t2 += d[i] * inv[i * p + j] * d[j];
+  return t2;
+}
+
+}  // namespace rollspec::spectral

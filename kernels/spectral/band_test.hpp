@@ -1,0 +1,34 @@
+#pragma once
+// Combined test of a measurement's band levels against an ensemble (theory D-23): a Hotelling-type
+// T^2 of the measured-minus-predicted band logs with the covariance of an M-record measurement plus
+// that of the K-realisation mean, both from the realisations' between-band covariance of ln x,
+// referred to F(p, K - p) (K - 1 dof of the covariance estimate).
+#include <cstddef>
+#include <cstdint>
+
+namespace rollspec::spectral {
+
+struct BandTestResult {
+  bool defined = false;           // false: too few realisations for p bands (needed says how many)
+  double t2 = 0.0;                // Hotelling T^2
+  double f = 0.0;                 // (nu - p + 1) / (nu p) T^2, nu = K - 1
+  double dof1 = 0.0, dof2 = 0.0;  // F(p, K - p)
+  double p_value = 1.0;           // P(F(p, K - p) >= f)
+  std::uint64_t needed = 0;       // realisations the test needs for p bands: p + kExtraRealisations
+};
+
+// Realisations beyond p that the test asks for (F denominator dof >= this + 1).
+constexpr std::uint64_t kExtraRealisations = 4;
+
+// measured_log[b]: ln of the measured band average; mean[b]: ensemble mean of the realisations'
+// band averages (not its log); covariance: p x p row-major, between-band covariance (K - 1) of the
+// realisations' ln band averages; records: M >= 1; realisations: K. Throws std::invalid_argument on
+// a covariance that is not positive definite or non-positive inputs.
+BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                         std::uint64_t realisations, double records);
+
+// The same T^2 by a plain Gauss-Jordan inverse, for tests.
+double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                              std::uint64_t realisations, double records);
+
+}  // namespace rollspec::spectral

@@ -1,0 +1,54 @@
+#include "src/cli/compare_band_test.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "kernels/spectral/ensemble_interval.hpp"
+#include "src/error.hpp"
+#include "src/io/number_text.hpp"
+
+namespace rollspec::cli {
+
+CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_t>& band,
+                           const std::vector<double>& measured_db, double records, double level) {
+  CombinedTest t;
+  t.bands = band.size();
+  t.level = level;
+  if (!(records > 0.0)) {
+    t.verdict = "none (give --measured-averages M: the test asks whether the measurement is a mean of M records)";
+    return t;
+  }
+  if (b.log_covariance.empty()) {
+    t.verdict = "none (the result has no /bands/log_level_covariance: re-run it with this rollspec)";
+    return t;
+  }
+  const std::size_t p = band.size(), nb = b.level_db.size();
+  std::vector<double> y(p), mean(p), cov(p * p);
+  for (std::size_t i = 0; i < p; ++i) {
+    y[i] = measured_db[i] * std::log(10.0) / 10.0;
+    mean[i] = std::pow(10.0, b.level_db[band[i]] / 10.0);
+    for (std::size_t j = 0; j < p; ++j) cov[i * p + j] = b.log_covariance[band[i] * nb + band[j]];
+  }
+  try {
+    t.result = spectral::band_test(y.data(), mean.data(), cov.data(), p, b.realisations, records);
+  } catch (const std::invalid_argument& e) {
+    t.verdict = std::string("none (") + e.what() + ")";
+    return t;
+  }
+  if (!t.result.defined) {
+    t.verdict = "none (" + std::to_string(p) + " bands need K >= " + std::to_string(t.result.needed) +
+                " realisations, the result has " + std::to_string(b.realisations) +
+                "; run more or choose fewer bands with --fmin/--fmax)";
+    return t;
+  }
+  t.rejected = t.result.p_value < level;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%s at level %g: p = %.3g (T2 = %.4g, F = %.4g on %g, %g dof, %zu bands)",
+                t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, t.result.f,
+                t.result.dof1, t.result.dof2, p);
+  t.verdict = buf;
+  return t;
+}
+
+}  // namespace rollspec::cli
