@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Size and power of `rollspec compare`'s combined test over bands (kernels/spectral D-23).
+"""Size and power of `rollspec compare`'s combined test over bands (kernels/spectral D-26).
 
 usage: bench_compare_power.py [--binary B] [--study S] [--trials N] [--reference K] [--rolls M] [--cases I,J]
 

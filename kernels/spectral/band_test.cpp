@@ -9,10 +9,10 @@ namespace rollspec::spectral {
 
 namespace {
 
-// Fenton-Wilkinson: covariance of ln of an n-record mean, ln(1 + (e^{S_bc} - 1) / n) (D-23a).
+// Fenton-Wilkinson: covariance of ln of an n-record mean, ln(1 + (e^{S_bc} - 1) / n) (D-26a).
 double log_mean_covariance(double s, double n) { return std::log1p(std::expm1(s) / n); }
 
-// d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = V_M + V_K (D-23a, b).
+// d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = V_M + V_K (D-26a, b).
 void deviation_and_covariance(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
                               std::vector<double>& d, std::vector<double>& v) {
   if (!(M >= 1.0) || !(K >= 2.0)) throw std::invalid_argument("band test: needs records >= 1 and K >= 2");

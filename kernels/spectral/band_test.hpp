@@ -1,5 +1,5 @@
 #pragma once
-// Combined test of a measurement's band levels against an ensemble (theory D-23): a Hotelling-type
+// Combined test of a measurement's band levels against an ensemble (theory D-26): a Hotelling-type
 // T^2 of the measured-minus-predicted band logs with the covariance of an M-record measurement plus
 // that of the K-realisation mean, both from the realisations' between-band covariance of ln x,
 // referred to F(p, K - p) (K - 1 dof of the covariance estimate).

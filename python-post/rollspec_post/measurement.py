@@ -125,7 +125,7 @@ def read_bands(f):
     bands["realisations"] = attr(f, "/psd", "realisations", int)
     bands["confidence"] = attr(f, "/psd", "confidence_level") if "confidence_level" in f["/psd"].attrs else 0.95
     bands["interval_method"] = str(text_attr(f["/psd"], "interval_method", ""))
-    # D-23's between-band covariance of the band logs; results written before it lack it
+    # D-26's between-band covariance of the band logs; results written before it lack it
     cov = "/bands/log_level_covariance"
     bands["log_level_covariance"] = _floats(f, cov) if cov in f else None
     n, rows = bands["lower_frequency"].shape, (len(bands["sensor"]),) + bands["lower_frequency"].shape
@@ -179,7 +179,7 @@ EXTRA_REALISATIONS = 4  # kernels/spectral kExtraRealisations: the test needs K 
 
 
 def combined_test(measured_db, level_db, cov, realisations, records, test_level=0.05):
-    """D-23, as `rollspec compare` prints it: Hotelling T^2 of the measured band logs against the model
+    """D-26, as `rollspec compare` prints it: Hotelling T^2 of the measured band logs against the model
     with the covariance of an M-record mean plus the K-realisation mean's (Fenton-Wilkinson from the
     realisations' between-band covariance of ln x), F(p, K - p). Returns a dict with p_value
     (None when the test is not defined) and the verdict line."""

@@ -121,9 +121,9 @@ def key_figures(r, cmp, threshold=LOSS_WARNING_SHARE):
         cards.append(card(f"bands with the measurement inside the {level} {kind}",
                           f"{100 * cmp['inside_count'] / cmp['judged']:.0f} %" if cmp["judged"] else "—",
                           f"{cmp['inside_count']} of {cmp['judged']} bands" if cmp["judged"] else cmp["question"]))
-        if cmp.get("combined_test"):  # D-23, the verdict `rollspec compare` prints
+        if cmp.get("combined_test"):  # D-26, the verdict `rollspec compare` prints
             t = cmp["combined_test"]
-            cards.append(card("combined test over the bands (D-23)",
+            cards.append(card("combined test over the bands (D-26)",
                               "—" if t["p_value"] is None else f"p = {t['p_value']:.3g}", t["verdict"],
                               bool(t["rejected"])))
     else:

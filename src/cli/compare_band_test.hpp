@@ -1,5 +1,5 @@
 #pragma once
-// compare's combined test over the compared bands (kernels/spectral D-23): one p-value for all
+// compare's combined test over the compared bands (kernels/spectral D-26): one p-value for all
 // bands at once, from the realisations' between-band covariance, and its verdict at a level.
 #include <cstddef>
 #include <string>

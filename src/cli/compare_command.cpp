@@ -114,7 +114,7 @@ const char* const kCompareUsage =
     "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
     "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
     "answers the question the output states. With --measured-averages M, `combined_test:` gives one test\n"
-    "over all compared bands at once (kernels/spectral D-23: Hotelling T2 with the realisations'\n"
+    "over all compared bands at once (kernels/spectral D-26: Hotelling T2 with the realisations'\n"
     "between-band covariance, F law): its p-value and verdict at --test-level A (default 0.05); a count of\n"
     "bands inside has no known law, this test has. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
     "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
@@ -207,7 +207,7 @@ std::string json_text(const Comparison& c) {
           ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
           ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) +
           ",\n  \"p_value\": " + (test.result.defined ? json_number(test.result.p_value) : "null") +
-          ",\n  \"combined_test\": {\"method\": \"Hotelling T2, F law (kernels/spectral D-23)\", \"level\": " +
+          ",\n  \"combined_test\": {\"method\": \"Hotelling T2, F law (kernels/spectral D-26)\", \"level\": " +
           json_number(test.level) + ", \"defined\": " + (test.result.defined ? "true" : "false") +
           ", \"rejected\": " + (test.result.defined ? (test.rejected ? "true" : "false") : "null") +
           ", \"t2\": " + (test.result.defined ? json_number(test.result.t2) : "null") +

@@ -142,7 +142,7 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
           file + ": band " + std::to_string(k) + " has edges " + number_text(b.lower[k]) + " .. " +
           number_text(b.upper[k]) + " Hz and nominal centre " + number_text(b.nominal[k]) +
           " Hz; allowed: finite, 0 < lower < upper (/bands/lower_frequency, upper_frequency, nominal_frequency)");
-  if (r.exists("/bands/log_level_covariance")) {  // D-23; results written before it lack it
+  if (r.exists("/bands/log_level_covariance")) {  // D-26; results written before it lack it
     std::vector<std::size_t> d;
     const auto v = r.read("/bands/log_level_covariance", &d);
     if (d != std::vector<std::size_t>{ns, nb, nb})

@@ -114,7 +114,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     w.attach_scale(d, "/bands/centre_frequency", 1);
     w.attribute(d, "coordinates", std::string("nominal_frequency"));  // CF: xarray shows the IEC label as a coordinate
   }
-  if (!e.band_log_covariance.empty()) {  // D-23: rows x bands x bands
+  if (!e.band_log_covariance.empty()) {  // D-26: rows x bands x bands
     w.write("/bands/log_level_covariance", {ns, nb, nb}, e.band_log_covariance.data(), "1",
             "between-band covariance (K - 1) of the natural log of one realisation's band-averaged PSD");
     w.attach_scale("/bands/log_level_covariance", "/bands/sensor", 0);

@@ -10,7 +10,7 @@
 // are independent, nothing inside one is (adjacent Welch bins, segments of a moving-load record).
 // The band interval uses the scatter of each realisation's band average, not a count of bins;
 // /bands/std and /bands/log_std let `rollspec compare` predict a measurement's scatter (D-22);
-// /bands/log_level_covariance gives its combined test over bands (D-23).
+// /bands/log_level_covariance gives its combined test over bands (D-26).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -60,7 +60,7 @@ io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
     e.scatter.push_back(moments(i));
   }
   for (std::size_t i = 0; i < nb; ++i) e.band_scatter.push_back(moments(n + i));
-  // Between-band covariance of the band logs (K - 1), from the sums of their products (D-23).
+  // Between-band covariance of the band logs (K - 1), from the sums of their products (D-26).
   const std::size_t n_bands = bands_.size();
   const double K = static_cast<double>(sums.count);
   e.band_log_covariance.assign(rows() * n_bands * n_bands, sums.count > 1 ? 0.0 : NAN);

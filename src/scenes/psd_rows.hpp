@@ -7,7 +7,7 @@
 // (D-21), which the band average of the mean PSD alone cannot. The logarithms give the moments of
 // ln x that the lognormal law of D-21b needs (the driver sums values and their squares). The
 // products give the between-band covariance of the band logs that compare's combined test needs
-// (D-23); they sit after the extras so that every earlier value keeps its place and its sums.
+// (D-26); they sit after the extras so that every earlier value keeps its place and its sums.
 #include <cstddef>
 #include <string>
 #include <vector>

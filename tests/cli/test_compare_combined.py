@@ -1,4 +1,4 @@
-"""`rollspec compare`'s combined test over bands (kernels/spectral D-23) on the seed 002 rig.
+"""`rollspec compare`'s combined test over bands (kernels/spectral D-26) on the seed 002 rig.
 
 A 25-roll "measurement" of the same model (another study seed) is not rejected; one with twice the
 beam's loss factor is, although most of its bands lie inside their prediction intervals. The result

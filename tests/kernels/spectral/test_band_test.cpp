@@ -1,4 +1,4 @@
-// Combined test over bands of a measurement against an ensemble (kernels/spectral D-23).
+// Combined test over bands of a measurement against an ensemble (kernels/spectral D-26).
 #include <doctest/doctest.h>
 
 #include <cmath>
