@@ -93,12 +93,12 @@ void check_roughness(const BallOnBeamSettings& b, std::vector<std::string>& warn
   const double k_max = b.texture_psd.support_max, k_min = b.texture_psd.support_min;
   const double band = std::min(b.band_max, b.model.sample_rate / 2.0);
   if (std::isfinite(k_max) && k_max > 0.0 && v * k_max / (2.0 * M_PI) < band)
-    warnings.push_back(b.ball.speed_origin.where + ": the [texture] spectrum stops at wavelength " +
+    warnings.push_back(b.ball.speed_origin.where + ": the roughness spectrum ([texture]) stops at wavelength " +
                        g3(2.0 * M_PI / k_max) + " m, which at " + g3(v) + " m/s excites up to " +
                        g3(v * k_max / (2.0 * M_PI)) + " Hz; the bands above it up to " + g3(band) +
                        " Hz get no excitation from the roughness");
   if (k_min > 0.0 && v * k_min / (2.0 * M_PI) > band)
-    warnings.push_back(b.ball.speed_origin.where + ": the [texture] spectrum starts at wavelength " +
+    warnings.push_back(b.ball.speed_origin.where + ": the roughness spectrum ([texture]) starts at wavelength " +
                        g3(2.0 * M_PI / k_min) + " m, which at " + g3(v) + " m/s excites " +
                        g3(v * k_min / (2.0 * M_PI)) + " Hz and above, beyond the band's top " + g3(band) + " Hz");
 }
