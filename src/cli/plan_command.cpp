@@ -73,7 +73,7 @@ int plan_command(const Args& args) {
   const bool blocked_force_solver =
       s.scene() == "ball-on-beam" && study::ContactSection::parse(s).blocked_force == "solver";
   for (const auto& p : scene->plan()) {
-    std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::to_string(p.status), p.reason.c_str());
+    std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::status_name(p.status), p.reason.c_str());
     const bool solver_table = p.stage == "blocked_force" && blocked_force_solver;
     if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
   }

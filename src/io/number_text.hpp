@@ -1,6 +1,7 @@
 #pragma once
 // Numbers as messages and tables print them.
-// number_text: six significant digits ("%.6g"), nan and inf spelled out.
+// number_text: six significant digits ("%.6g"), nan and inf spelled out; four_digits: "%.4g";
+// exact_text: "%.17g", every bit of a double (the input texts that cached tables hash).
 #include <cstdio>
 #include <string>
 
@@ -9,6 +10,18 @@ namespace rollspec::io {
 inline std::string number_text(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+inline std::string four_digits(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+inline std::string exact_text(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
 }
 

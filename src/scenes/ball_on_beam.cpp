@@ -16,6 +16,7 @@
 #include "src/ensemble/progress.hpp"
 #include "src/scenes/ball_on_beam_contact.hpp"
 #include "src/scenes/ball_on_beam_excitation.hpp"
+#include "src/scenes/ball_on_beam_sections.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
 #include "src/scenes/ball_on_beam_writer.hpp"
 #include "src/scenes/psd_rows.hpp"
@@ -41,7 +42,8 @@ struct Workspace {
 
 class BallOnBeam final : public EnsembleScene {
  public:
-  explicit BallOnBeam(const KeyReader& s) : b_(read_ball_on_beam_settings(s)), contact_(contact_from_settings(b_)) {
+  explicit BallOnBeam(const BallOnBeamSections& s)
+      : b_(read_ball_on_beam_settings(s)), contact_(contact_from_settings(b_)) {
     for (const auto& w : b_.warnings) std::fprintf(stderr, "rollspec: warning: %s\n", w.c_str());
     lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
@@ -51,12 +53,12 @@ class BallOnBeam final : public EnsembleScene {
                                       2 * welch_->n_freq() + 1);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(b_.welch.segment));
-    add_pipeline_stages(s);
+    add_pipeline_stages(s.tables);
   }
 
   // texture, surface, stiffness_table, blocked_force, dynamics, spectra: the tables are stage
   // objects whose inspection `plan` prints and whose resolution prepare() runs.
-  void add_pipeline_stages(const KeyReader& s) {
+  void add_pipeline_stages(const stiffness::TableStudy& tables) {
     if (b_.path_law())
       add_stages(
           {{"texture", StageStatus::skipped, "law = path: the path table's strip is the roughness (no line texture)"}});
@@ -67,7 +69,6 @@ class BallOnBeam final : public EnsembleScene {
       add_stages({{"texture", StageStatus::run,
                    "beam line texture per realisation from [texture] (" + b_.psd.description + "); " +
                        contact_filter_description(b_)}});
-    const stiffness::TableStudy tables = stiffness::TableStudy::parse(s);
     std::unique_ptr<TableStage> table;
     if (uses_table()) {
       const double radius = b_.model.contact.radius, e_star = b_.model.contact.effective_modulus;
@@ -322,6 +323,8 @@ class BallOnBeam final : public EnsembleScene {
 
 }  // namespace
 
-std::unique_ptr<Scene> make_ball_on_beam(const KeyReader& s) { return std::make_unique<BallOnBeam>(s); }
+std::unique_ptr<Scene> make_ball_on_beam(const KeyReader& s) {
+  return std::make_unique<BallOnBeam>(BallOnBeamSections::parse(s));
+}
 
 }  // namespace rollspec::scenes

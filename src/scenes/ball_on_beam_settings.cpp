@@ -11,31 +11,16 @@
 #include "kernels/beam/quadratic_hold_step.hpp"
 #include "kernels/integrators/exact_oscillator_step.hpp"
 #include "kernels/texture/contact_filtered_psd.hpp"
+#include "src/io/number_text.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/ball_on_beam_plausibility.hpp"
-#include "src/study/sections/study_section.hpp"
-#include "src/study/sections/texture_section.hpp"
+#include "src/scenes/ball_on_beam_sections.hpp"
 #include "src/scenes/study_welch.hpp"
-#include "src/study/sections/contact_section.hpp"
-#include "src/study/sections/equivalent_roughness_section.hpp"
-#include "src/study/sections/output_section.hpp"
-#include "src/study/sections/roughness_section.hpp"
-#include "src/study/sections/sensors_section.hpp"
-#include "src/study/sections/signal_section.hpp"
-#include "src/study/key_reader.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
 
-using study::KeyReader;
-
 namespace {
-
-std::string g4(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
 
 std::vector<double> sensor_positions(const study::SensorsSection& sensors, double length) {
   const std::vector<double>& v = sensors.positions;
@@ -152,9 +137,9 @@ void check_contact_resolution(const BallOnBeamSettings& b, double k_contact) {
   const double h = b.integration_step();
   if (h > tc / 20.0) {
     const auto need = static_cast<long long>(std::ceil(20.0 / (tc * b.model.sample_rate)));
-    b.substeps_origin.refuse("the integration step 1 / (sample_rate x substeps) = " + g4(h) +
-                             " s exceeds the contact resolution limit dt <= T_c / 20 = " + g4(tc / 20.0) +
-                             " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + g4(k_contact) +
+    b.substeps_origin.refuse("the integration step 1 / (sample_rate x substeps) = " + io::four_digits(h) +
+                             " s exceeds the contact resolution limit dt <= T_c / 20 = " + io::four_digits(tc / 20.0) +
+                             " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + io::four_digits(k_contact) +
                              " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
                              " at this sample rate");
   }
@@ -186,37 +171,34 @@ texture::Psd iso2d_line_psd(const BallOnBeamSettings& b) {
                                        std::min(M_PI / b.spacing, b.band_limit_wavenumber));
 }
 
-BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
-  const study::ModalBeamSection beam_section = study::ModalBeamSection::parse(s);
-  const study::SignalSection signal = study::SignalSection::parse(s);
-  const study::SensorsSection sensors = study::SensorsSection::parse(s);
-  BallOnBeamSettings b({beam_section.modal_beam(),
-                        {},
-                        {},
-                        {},
-                        signal.sample_rate,
-                        sensor_positions(sensors, beam_section.properties.length)});
-  b.beam = beam_section;
-  b.ball = study::BallSection::parse(s);
+BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
+  const study::SignalSection& signal = s.signal;
+  const study::SensorsSection& sensors = s.sensors;
+  BallOnBeamSettings b(
+      {s.modal_beam, {}, {}, {}, signal.sample_rate, sensor_positions(sensors, s.beam.properties.length)});
+  b.beam = s.beam;
+  b.ball = s.ball;
   b.substeps_origin = signal.substeps_origin;
   b.sample_rate_origin = signal.sample_rate_origin;
-  b.blocked_force = study::BlockedForceSection::parse(s);
-  b.path_table = study::PathTableSection::parse(s);
-  b.strip_surface = study::StripSurfaceSection::parse(s);
-  b.stiffness = study::StiffnessSection::parse(s);
-  b.line_keys = texture_io::LineGeneratorKeys::parse(s, "roughness.spacing");
-  b.seed = study::StudySection::parse(s).seed;
+  b.blocked_force = s.blocked_force;
+  b.path_table = s.path_table;
+  b.strip_surface = s.strip_surface;
+  b.stiffness = s.stiffness;
+  b.line_keys = texture_io::LineGeneratorKeys::of(s.texture, s.roughness.spacing_origin, "[roughness] spacing");
+  b.line_keys.speed = s.ball.speed;  // a rolling ball: its speed turns wavelengths into frequencies
+  b.line_keys.speed_key = "[ball] speed";
+  b.seed = s.study.seed;
   beam::BallOnBeamModel& m = b.model;
   const double length = b.beam.properties.length;
-  b.texture_psd = texture_io::study_psd(s);
+  b.texture_psd = s.texture_psd;
   b.psd = b.texture_psd;
-  b.contact_section = study::ContactSection::parse(s);
-  const study::RoughnessSection roughness = study::RoughnessSection::parse(s);
-  const study::OutputSection output = study::OutputSection::parse(s);
+  b.contact_section = s.contact;
+  const study::RoughnessSection& roughness = s.roughness;
+  const study::OutputSection& output = s.output;
   b.sensor_mean = sensors.average;
   b.dopri = signal.integrator == "dopri5";
   b.rtol = signal.rtol;
-  const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
+  const study::SpectrumSection& spectrum = s.spectrum;
   b.confidence = spectrum.confidence;
   b.band_min = spectrum.band_min;
   b.band_max = spectrum.band_max;
@@ -251,9 +233,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const KeyReader& s) {
   const double hertz_compression =
       std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
-  read_contact_filter(study::EquivalentRoughnessSection::parse(s), b,
-                      beam::hertz_half_width(radius, hertz_compression));
-  const study::TextureSection texture = study::TextureSection::parse(s);
+  read_contact_filter(s.equivalent_roughness, b, beam::hertz_half_width(radius, hertz_compression));
+  const study::TextureSection& texture = s.texture;
   b.roughness_origin = texture.source == "self-affine" ? texture.rms_origin : texture.source_origin;
   b.warnings = check_ball_on_beam_plausibility(b);  // before any step or table check that the values could break
   // Integration step.

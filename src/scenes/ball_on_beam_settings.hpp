@@ -1,8 +1,8 @@
 #pragma once
-// Scene `ball-on-beam`'s study keys read once, into one value, with the checks that span several
+// Scene `ball-on-beam`'s sections (ball_on_beam_sections.hpp) made into one value, with the checks that span several
 // keys (the record against the span, the step against the contact's bounce and the modes, the
-// Welch segment against the record). The scene (ball_on_beam.cpp) builds from this value only;
-// the texture, surface and table stages read their own sections (texture_keys, src/study/sections).
+// Welch segment against the record). The scene (ball_on_beam.cpp) builds from this value and the
+// sections' table input (stiffness::TableStudy) only.
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -24,11 +24,9 @@
 #include "src/study/sections/strip_surface_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
-namespace rollspec::study {
-class KeyReader;
-}
-
 namespace rollspec::scenes {
+
+struct BallOnBeamSections;
 
 // One value for the contact law and the blocked force's source ([contact] law, blocked_force).
 enum class ContactModel { hertz, table, literal, linearised_spring, linearised_solver, path };
@@ -102,7 +100,7 @@ struct BallOnBeamSettings {
   double integration_step() const { return 1.0 / (model.sample_rate * static_cast<double>(step.substeps)); }
 };
 
-BallOnBeamSettings read_ball_on_beam_settings(const study::KeyReader& s);
+BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s);
 
 // The [contact] filter line of the plan text: which filter, over what half width.
 std::string contact_filter_description(const BallOnBeamSettings& b);

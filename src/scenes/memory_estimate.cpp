@@ -12,16 +12,14 @@
 #include "src/scenes/rolling_beam_settings.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/blocked_force_geometry.hpp"
-#include "src/study/sections/ball_section.hpp"
-#include "src/study/sections/contact_section.hpp"
-#include "src/study/sections/modal_beam_section.hpp"
-#include "src/study/sections/output_section.hpp"
-#include "src/study/sections/rolling_pipe_sections.hpp"
-#include "src/study/sections/sensors_section.hpp"
-#include "src/study/sections/signal_section.hpp"
-#include "src/study/sections/stiffness_section.hpp"
+#include "src/io/number_text.hpp"
+#include "src/scenes/ball_on_beam_sections.hpp"
 #include "src/study/key_reader.hpp"
-#include "src/texture/texture_keys.hpp"
+#include "src/study/sections/lines_section.hpp"
+#include "src/study/sections/random_oscillator_sections.hpp"
+#include "src/study/sections/rolling_pipe_sections.hpp"
+#include "src/study/sections/surface_grid_section.hpp"
+#include "src/study/sections/surface_section.hpp"
 
 namespace rollspec::scenes {
 
@@ -37,111 +35,142 @@ struct Item {
   std::string what;
 };
 
-double key_real(const study::KeyReader& s, const std::string& k) { return s.has(k) ? s.real(k) : 0.0; }
-
-std::vector<std::string> where(const study::KeyReader& s, const std::vector<std::string>& keys) {
-  std::vector<std::string> out;
-  for (const auto& k : keys) {
-    if (!s.has(k)) continue;  // a term shared by scenes names only the keys this one has
-    const auto dot = k.find('.');
-    out.push_back("[" + k.substr(0, dot) + "] " + k.substr(dot + 1) + " = " + s.text(k));
-  }
-  return out;
+// "[section] key = value", the value as the typed section holds it.
+std::string key_text(const char* section, const char* key, double value) {
+  return std::string("[") + section + "] " + key + " = " + io::number_text(value);
 }
-
-// The ball's weight and E* as the scene derives them (ball_section), not a second formula.
-double ball_weight(const study::KeyReader& s) { return study::BallSection::parse(s).weight(); }
-
-double ball_e_star(const study::KeyReader& s) {
-  const study::ModalBeamSection beam = study::ModalBeamSection::parse(s);
-  return study::BallSection::parse(s).effective_modulus(beam.properties.youngs_modulus, beam.poisson);
+std::string key_text(const char* section, const char* key, const std::string& value) {
+  return std::string("[") + section + "] " + key + " = " + value;
+}
+std::string positions_text(const char* section, const std::vector<double>& positions) {
+  std::string v;
+  for (double x : positions) v += (v.empty() ? "" : ", ") + io::number_text(x);
+  return key_text(section, "positions", v);
 }
 
 // Contact solves on an nx x ny grid: the padded (2nx x 2ny) half-space operator and its FFT
 // buffers, about five complex arrays (measured: 77 MB peak at 512^2).
-Item contact_grid(const study::KeyReader& s) {
-  const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
-  return {16.0 * 4.0 * nx * ny * 5.0, where(s, {"surface.nx", "surface.ny"}), "contact solver grid"};
+Item contact_grid(double nx, double ny) {
+  return {16.0 * 4.0 * nx * ny * 5.0,
+          {key_text("surface", "nx", nx), key_text("surface", "ny", ny)},
+          "contact solver grid"};
+}
+
+// E* of the ball on the beam, as the scene derives it (ball_section), not a second formula.
+double ball_e_star(const BallOnBeamSections& b) {
+  return b.ball.effective_modulus(b.beam.properties.youngs_modulus, b.beam.poisson);
 }
 
 // The solver's square window and the rough strip it slides along, on the grid the stage uses
 // (derived from the contact radius where the study leaves it open).
-Item blocked_force_window(const study::KeyReader& s) {
-  const double radius = study::BallSection::parse(s).radius, weight = ball_weight(s), e_star = ball_e_star(s);
-  const auto g = stiffness::blocked_force_geometry(
-      study::BlockedForceSection::parse(s), study::StripSurfaceSection::parse(s), texture_io::study_psd(s), radius,
-      e_star, weight, study::BallSection::parse(s).speed / study::SignalSection::parse(s).sample_rate);
+Item blocked_force_window(const BallOnBeamSections& b) {
+  const auto g =
+      stiffness::blocked_force_geometry(b.blocked_force, b.strip_surface, b.texture_psd, b.ball.radius, ball_e_star(b),
+                                        b.ball.weight(), b.ball.speed / b.signal.sample_rate);
   const double w = static_cast<double>(g.window), strip = static_cast<double>(g.nx) * static_cast<double>(g.ny);
   return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0,
-          where(s, {"blocked_force.window", "surface.ny", "surface.spacing"}),
+          {key_text("blocked_force", "window", static_cast<double>(b.blocked_force.window)),
+           key_text("surface", "ny", static_cast<double>(b.strip_surface.ny)),
+           key_text("surface", "spacing", b.strip_surface.spacing)},
           "blocked-force contact window (" + std::to_string(g.window) + " cells) and strip (" + std::to_string(g.ny) +
               " x " + std::to_string(g.nx) + " cells)"};
 }
 
 // Isotropic surfaces kept for the output (count x ny x nx) plus the generator's complex FFT grid.
-Item surfaces(const study::KeyReader& s, double count) {
-  const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
-  return {8.0 * nx * ny * (count + 6.0), where(s, {"surface.nx", "surface.ny", "surface.count"}), "isotropic surfaces"};
+Item surfaces(const study::SurfaceSection& f) {
+  const double nx = static_cast<double>(f.nx), ny = static_cast<double>(f.ny), count = static_cast<double>(f.count);
+  return {8.0 * nx * ny * (count + 6.0),
+          {key_text("surface", "nx", nx), key_text("surface", "ny", ny), key_text("surface", "count", count)},
+          "isotropic surfaces"};
 }
 
 // The ensemble's own storage: one chunk's rows (chunk_size x values), the partial sums the pairwise
 // tree keeps (at most log2 of the chunk count, and log2 of the chunk size while a chunk is added,
 // each [sum, sum of squares]) and the copies of the final reduction. It no longer grows with the
 // number of chunks (TreeAccumulator). Values per realisation: PSD and band rows of each output row.
-Item chunk_sums(const study::KeyReader& s, double rows) {
-  const double nf = key_real(s, "spectrum.segment") / 2.0 + 1.0;
+// `sensors`: the scene's sensor key, if it has one.
+Item chunk_sums(const study::StudySection& st, const study::EnsembleSection& en, const study::SpectrumSection& sp,
+                double rows, std::vector<std::string> sensors) {
+  const double nf = static_cast<double>(sp.segment) / 2.0 + 1.0;
   const double values = 2.0 * rows * (nf + 40.0) + 8.0;
-  const double K = std::max(key_real(s, "study.realisations"), 1.0),
-               C = std::max(key_real(s, "ensemble.chunk_size"), 1.0);
+  const double K = std::max(static_cast<double>(st.realisations), 1.0),
+               C = std::max(static_cast<double>(en.chunk_size), 1.0);
   const double kept = std::log2(std::max(K / C, 1.0)) + std::log2(C) + 6.0;
-  return {8.0 * values * (C + 2.0 * kept), where(s, {"ensemble.chunk_size", "spectrum.segment", "sensors.positions"}),
-          "one chunk of realisations and the partial sums of the ensemble"};
+  std::vector<std::string> keys = {key_text("ensemble", "chunk_size", C),
+                                   key_text("spectrum", "segment", static_cast<double>(sp.segment))};
+  for (auto& k : sensors) keys.push_back(std::move(k));
+  return {8.0 * values * (C + 2.0 * kept), keys, "one chunk of realisations and the partial sums of the ensemble"};
 }
 
 // Welch record length after skip_start, and its segments (as spectral::WelchPlan counts them).
 struct WelchShape {
   double nf = 0.0, segments = 0.0, lags = 0.0;
 };
-WelchShape welch_shape(const study::KeyReader& s, double samples) {
-  const double L = key_real(s, "spectrum.segment");
-  const double hop = std::max(1.0, L - std::floor(key_real(s, "spectrum.overlap") * L));
-  const double n = samples - std::ceil(key_real(s, "spectrum.skip_start") * key_real(s, "signal.sample_rate"));
+WelchShape welch_shape(const study::SpectrumSection& sp, double sample_rate, double samples) {
+  const double L = static_cast<double>(sp.segment);
+  const double hop = std::max(1.0, L - std::floor(sp.overlap * L));
+  const double n = samples - std::ceil(sp.skip_start * sample_rate);
   return {L / 2.0 + 1.0, std::max(1.0, std::floor((n - L) / hop) + 1.0), std::ceil(L / hop)};
 }
 
 // The linearised reference (kernels/beam/linear_reference.cpp): the sensors' cross-spectra, one per
 // sensor pair, summed per Welch segment group on the fine grid (refine 8) and smoothed per bin:
 // (16 x 8 + 16) bytes per pair, group and bin, plus the dof of the mean over all pairs.
-Item linear_reference(const study::KeyReader& s, double sensors, double samples) {
-  const WelchShape w = welch_shape(s, samples);
+Item linear_reference(const BallOnBeamSections& b, double sensors, double samples) {
+  const WelchShape w = welch_shape(b.spectrum, b.signal.sample_rate, samples);
   const double pairs = sensors * (sensors + 1.0) / 2.0, groups = w.segments * w.lags;
-  return {pairs * groups * w.nf * (16.0 * 8.0 + 16.0 * 2.0), where(s, {"sensors.positions", "output.reference"}),
+  return {pairs * groups * w.nf * (16.0 * 8.0 + 16.0 * 2.0),
+          {positions_text("sensors", b.sensors.positions),
+           key_text("output", "reference", b.output.reference ? "true" : "false")},
           "linearised reference, one cross-spectrum per sensor pair (" + std::to_string(static_cast<long long>(pairs)) +
               " pairs; [output] reference = false skips it)"};
 }
 
 // law = path: P(delta_j, xi_k) rows of every approach (position, force, stiffness per row, the
 // table and its interpolation copy), the strip, and one contact solver window per thread.
-Item path_table(const study::KeyReader& s, double threads) {
-  const double weight = ball_weight(s);
-  const auto g = stiffness::path_table_geometry(study::PathTableSection::parse(s), study::BlockedForceSection::parse(s),
-                                                study::StripSurfaceSection::parse(s), texture_io::study_psd(s),
-                                                study::BallSection::parse(s).radius, ball_e_star(s), weight,
-                                                key_real(s, "ball.end") - key_real(s, "ball.start"));
+Item path_table(const BallOnBeamSections& b, double threads) {
+  const auto g =
+      stiffness::path_table_geometry(b.path_table, b.blocked_force, b.strip_surface, b.texture_psd, b.ball.radius,
+                                     ball_e_star(b), b.ball.weight(), b.ball.end - b.ball.start);
   const double cells = static_cast<double>(g.approaches) * static_cast<double>(g.positions);
   const double w = static_cast<double>(g.window);
   return {
       8.0 * cells * 6.0 + 8.0 * static_cast<double>(g.nx) * static_cast<double>(g.ny) * 4.0 +
           threads * 16.0 * 4.0 * w * w * 5.0,
-      where(s, {"path_table.approaches", "path_table.step", "surface.ny"}),
+      {key_text("path_table", "approaches", static_cast<double>(b.path_table.approaches)),
+       key_text("path_table", "step", static_cast<double>(b.path_table.step)),
+       key_text("surface", "ny", static_cast<double>(b.strip_surface.ny))},
       "path table, " + std::to_string(g.approaches) + " approaches x " + std::to_string(g.positions) + " positions"};
+}
+
+std::vector<Item> ball_on_beam(const BallOnBeamSections& b, double threads) {
+  std::vector<Item> out;
+  const double record = (b.ball.end - b.ball.start) / std::max(b.ball.speed, 1e-300) * b.signal.sample_rate;
+  const double sensors = static_cast<double>(b.sensors.positions.size());
+  out.push_back({8.0 * record * (sensors + 6.0) * (threads + 1.0),
+                 {key_text("ball", "start", b.ball.start), key_text("ball", "end", b.ball.end),
+                  key_text("ball", "speed", b.ball.speed), key_text("signal", "sample_rate", b.signal.sample_rate)},
+                 "time records per thread"});
+  out.push_back(
+      chunk_sums(b.study, b.ensemble, b.spectrum, sensors + 4.0, {positions_text("sensors", b.sensors.positions)}));
+  const double histories = static_cast<double>(b.output.time_histories);
+  if (histories > 0)
+    out.push_back({8.0 * record * (sensors + 4.0) * histories,
+                   {key_text("output", "time_histories", histories)},
+                   "stored time histories"});
+  const std::string& law = b.contact.law;
+  if ((law == "table" || law == "literal") && b.stiffness.rough)
+    out.push_back(contact_grid(static_cast<double>(b.strip_surface.nx), static_cast<double>(b.strip_surface.ny)));
+  if (law == "linearised" && b.contact.blocked_force == "solver") out.push_back(blocked_force_window(b));
+  if (law == "linearised" && b.output.reference) out.push_back(linear_reference(b, sensors, record));
+  if (law == "path") out.push_back(path_table(b, threads));
+  return out;
 }
 
 // rolling-beam keeps every recorded state (positions, velocities, accelerations, angular
 // velocities and accelerations, rotations; contacts; energies) and copies one field at the write;
 // the Newton system is a band matrix of 6 dofs per node.
-std::vector<Item> rolling_beam(const study::KeyReader& s) {
-  const RollingBeamSettings r = read_rolling_beam_settings(s);
+std::vector<Item> rolling_beam(const RollingBeamSettings& r) {
   const double nodes = static_cast<double>(r.model.X.size()), nn = static_cast<double>(r.record.size());
   const double nc = static_cast<double>(r.model.contacts.size());
   const double records = std::floor(r.run.t_end / r.run.dt / std::max(r.run.record_every, 1)) + 2.0;
@@ -150,11 +179,16 @@ std::vector<Item> rolling_beam(const study::KeyReader& s) {
                             nc * static_cast<double>(sizeof(rolling::ContactOutput)) +
                             static_cast<double>(sizeof(rolling::Energies)) + 8.0;
   const double write_copy = records * (nn * 72.0 + nc * 9.0 * 8.0);
-  return {{records * per_record + write_copy,
-           where(s, {"analysis.dt", "analysis.t_end", "analysis.record_every", "output.nodes", "beam.elements"}),
+  std::vector<std::string> elements;
+  if (r.elements > 0) elements.push_back(key_text("beam", "elements", static_cast<double>(r.elements)));
+  std::vector<std::string> history = {key_text("analysis", "dt", r.run.dt), key_text("analysis", "t_end", r.run.t_end),
+                                      key_text("analysis", "record_every", static_cast<double>(r.run.record_every)),
+                                      "[output] nodes (" + std::to_string(r.record.size()) + " recorded)"};
+  for (const auto& e : elements) history.push_back(e);
+  return {{records * per_record + write_copy, history,
            "time history, " + std::to_string(static_cast<long long>(records)) + " recorded states of " +
                std::to_string(static_cast<long long>(nn)) + " nodes"},
-          {nodes * 6.0 * 8.0 * 400.0, where(s, {"beam.elements"}),
+          {nodes * 6.0 * 8.0 * 400.0, elements,
            "beam model and its band Newton system, " + std::to_string(static_cast<long long>(nodes)) + " nodes"}};
 }
 
@@ -165,45 +199,42 @@ std::vector<Item> items(const study::KeyReader& s, int threads) {
   if (scene == "random-oscillator") {
     // Per thread: force, acceleration and the two uniform draws (3 n doubles); shared: the
     // synthesiser's FFT (measured: 0.91 GB peak at n = 1e7 on 2 threads).
-    const double n = key_real(s, "signal.sample_rate") * key_real(s, "signal.duration");
-    out.push_back({8.0 * n * (3.0 * t + 5.0), where(s, {"signal.sample_rate", "signal.duration"}),
-                   "one realisation's record per thread"});
-    out.push_back(chunk_sums(s, 1.0));
+    const auto signal = study::RecordSignalSection::parse(s);
+    const double n = signal.sample_rate * signal.duration;
+    out.push_back(
+        {8.0 * n * (3.0 * t + 5.0),
+         {key_text("signal", "sample_rate", signal.sample_rate), key_text("signal", "duration", signal.duration)},
+         "one realisation's record per thread"});
+    out.push_back(chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s),
+                             study::SpectrumSection::parse(s), 1.0, {}));
   } else if (scene == "texture") {
-    const double samples = key_real(s, "lines.length") / std::max(key_real(s, "lines.spacing"), 1e-300);
-    out.push_back({8.0 * samples * (2.0 * key_real(s, "lines.count") + 6.0),
-                   where(s, {"lines.count", "lines.length", "lines.spacing"}), "line textures"});
-    out.push_back(surfaces(s, key_real(s, "surface.count")));
+    const auto lines = study::LinesSection::parse(s);
+    const double samples = lines.length / std::max(lines.spacing, 1e-300), count = static_cast<double>(lines.count);
+    out.push_back({8.0 * samples * (2.0 * count + 6.0),
+                   {key_text("lines", "count", count), key_text("lines", "length", lines.length),
+                    key_text("lines", "spacing", lines.spacing)},
+                   "line textures"});
+    out.push_back(surfaces(study::SurfaceSection::parse(s)));
   } else if (scene == "stiffness") {
-    out.push_back(contact_grid(s));
+    const auto f = study::SurfaceSection::parse(s);
+    out.push_back(contact_grid(static_cast<double>(f.nx), static_cast<double>(f.ny)));
   } else if (scene == "ball-on-beam") {
-    const double record = (key_real(s, "ball.end") - key_real(s, "ball.start")) /
-                          std::max(key_real(s, "ball.speed"), 1e-300) * key_real(s, "signal.sample_rate");
-    const double sensors = static_cast<double>(study::SensorsSection::parse(s).positions.size());
-    out.push_back({8.0 * record * (sensors + 6.0) * (t + 1.0),
-                   where(s, {"ball.start", "ball.end", "ball.speed", "signal.sample_rate"}),
-                   "time records per thread"});
-    out.push_back(chunk_sums(s, sensors + 4.0));
-    const double histories = key_real(s, "output.time_histories");
-    if (histories > 0)
-      out.push_back(
-          {8.0 * record * (sensors + 4.0) * histories, where(s, {"output.time_histories"}), "stored time histories"});
-    const study::ContactSection contact = study::ContactSection::parse(s);
-    const std::string& law = contact.law;
-    if ((law == "table" || law == "literal") && study::StiffnessSection::parse(s).rough) out.push_back(contact_grid(s));
-    if (law == "linearised" && contact.blocked_force == "solver") out.push_back(blocked_force_window(s));
-    if (law == "linearised" && study::OutputSection::parse(s).reference)
-      out.push_back(linear_reference(s, sensors, record));
-    if (law == "path") out.push_back(path_table(s, t));
+    out = ball_on_beam(BallOnBeamSections::parse(s), t);
   } else if (scene == "rolling-pipe") {
     if (!study::PipeRoughnessSection::parse(s).line) {
       // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
-      const double nx = key_real(s, "surface.nx"), ny = key_real(s, "surface.ny");
-      out.push_back({8.0 * nx * ny * (t + 10.0), where(s, {"surface.nx", "surface.ny"}), "rough floor per thread"});
+      const auto f = study::SurfaceGridSection::parse(s);
+      const double nx = static_cast<double>(f.nx), ny = static_cast<double>(f.ny);
+      out.push_back({8.0 * nx * ny * (t + 10.0),
+                     {key_text("surface", "nx", nx), key_text("surface", "ny", ny)},
+                     "rough floor per thread"});
     }
-    out.push_back(chunk_sums(s, static_cast<double>(study::PipeSensorsSection::parse(s).positions.size()) + 2.0));
+    const auto sensors = study::PipeSensorsSection::parse(s);
+    out.push_back(chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s),
+                             study::SpectrumSection::parse(s), static_cast<double>(sensors.positions.size()) + 2.0,
+                             {positions_text("sensors", sensors.positions)}));
   } else if (scene == "rolling-beam") {
-    for (auto& it : rolling_beam(s)) out.push_back(std::move(it));
+    out = rolling_beam(read_rolling_beam_settings(s));
   }
   return out;
 }

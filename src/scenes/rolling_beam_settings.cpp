@@ -119,6 +119,7 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
     out.model.sections.push_back(
         circular_section(b.youngs_modulus, b.poisson, b.density, b.diameter, b.inner_diameter));
     ids = add_straight_beam(out.model, b.start, b.end, static_cast<int>(b.elements), 0, b.up);
+    out.elements = b.elements;
     law.radius = 0.5 * b.diameter;
     beam_length = (b.end - b.start).norm();
   }

@@ -26,6 +26,7 @@ struct RollingBeamSettings {
   std::vector<int> record;           // recorded nodes
   rolling::FlyingBeamParams flying;  // kind = flying-beam
   std::string step_where;            // "file:line: [analysis] dt = ..." for a run that fails
+  long long elements = 0;            // [beam] elements of a straight beam (0: the kind has none)
 };
 
 RollingBeamSettings read_rolling_beam_settings(const study::KeyReader& s);

@@ -47,9 +47,10 @@ class RollingPipe final : public EnsembleScene {
  public:
   explicit RollingPipe(const KeyReader& s) : p_(read_rolling_pipe_settings(s)) {
     if (p_.line) {
-      lines_ = texture_io::study_line_generator(s, p_.psd, p_.spacing, p_.line_samples, "roughness.spacing");
+      lines_ = texture_io::line_generator(p_.line_keys, p_.psd, p_.spacing, p_.line_samples);
     } else {
-      surfaces_ = std::make_unique<texture_io::SurfaceGenerator>(texture_io::study_surface_generator(s, p_.psd));
+      surfaces_ =
+          std::make_unique<texture_io::SurfaceGenerator>(texture_io::surface_generator(p_.texture, p_.surface, p_.psd));
     }
     welch_ = std::make_unique<spectral::WelchPlan>(p_.welch);
     std::vector<std::string> names;

@@ -44,8 +44,11 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   using namespace rolling;
   RollingPipeSettings p;
   p.seed = StudySection::parse(s).seed;
-  p.psd = texture_io::study_psd(s);
+  p.texture = study::TextureSection::parse(s);
+  p.psd = texture_io::study_psd(p.texture);
   const auto roughness = PipeRoughnessSection::parse(s);
+  p.line_keys = texture_io::LineGeneratorKeys::of(p.texture, roughness.spacing_origin, "[roughness] spacing");
+  if (!roughness.line) p.surface = study::SurfaceSection::parse(s);
   p.line = roughness.line;
   const auto sensors = PipeSensorsSection::parse(s);
   p.sensor_mean = sensors.average;

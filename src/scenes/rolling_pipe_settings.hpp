@@ -13,6 +13,9 @@
 #include "kernels/spectral/welch.hpp"
 #include "kernels/texture/psd.hpp"
 #include "src/study/key_spec.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
+#include "src/texture/texture_keys.hpp"
 
 namespace rollspec::study {
 class KeyReader;
@@ -25,11 +28,14 @@ std::vector<study::KeySpec> rolling_pipe_keys();
 struct RollingPipeSettings {
   std::uint64_t seed = 0;
   texture::Psd psd;
-  bool line = true;               // line texture (else an isotropic surface per realisation)
-  double spacing = 0.0;           // roughness (or surface) sample spacing, m
-  std::size_t line_samples = 0;   // line texture samples over the rolled strip (line only)
-  double x_lo = 0.0, x_hi = 0.0;  // the rolled strip along x, m
-  double rms_curvature = 0.0;     // sqrt(m4) of the PSD over the sampled band, 1/m
+  study::TextureSection texture;            // [texture]: the PSD's source and amplitudes
+  study::SurfaceSection surface;            // [surface]: the isotropic floor (line = false)
+  texture_io::LineGeneratorKeys line_keys;  // the line's amplitudes; errors at [roughness] spacing
+  bool line = true;                         // line texture (else an isotropic surface per realisation)
+  double spacing = 0.0;                     // roughness (or surface) sample spacing, m
+  std::size_t line_samples = 0;             // line texture samples over the rolled strip (line only)
+  double x_lo = 0.0, x_hi = 0.0;            // the rolled strip along x, m
+  double rms_curvature = 0.0;               // sqrt(m4) of the PSD over the sampled band, 1/m
   // Tube.
   double radius = 0.0, length = 0.0;
   int elements = 1;

@@ -2,7 +2,7 @@
 
 namespace rollspec::scenes {
 
-const char* to_string(StageStatus s) {
+const char* status_name(StageStatus s) {
   switch (s) {
     case StageStatus::run:
       return "run";

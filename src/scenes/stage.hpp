@@ -20,7 +20,7 @@ struct StagePlan {
   std::string reason;
 };
 
-const char* to_string(StageStatus s);
+const char* status_name(StageStatus s);
 
 class Stage {
  public:

@@ -132,8 +132,8 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
     ts.blocked_force.window_origin.refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
   }
   if (!path.converged)
-    throw data_error("blocked force: the path search did not converge (largest error " + num(path.max_error) +
-                     "); raise [stiffness] max_iterations or tolerance");
+    throw data_error("blocked force: the path search did not converge (largest error " +
+                     io::exact_text(path.max_error) + "); raise [stiffness] max_iterations or tolerance");
   BlockedForceTable t;
   t.position = path.position;
   t.force = path.force;

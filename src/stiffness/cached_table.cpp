@@ -61,7 +61,7 @@ StoredIdentity load_checked(const TableKind& kind, const std::string& path, Tabl
   io::check_filetype(r, kind.file_type, kSchemaMajor);
   const double kv = r.double_attribute(kind.group, "kernel_version");
   if (static_cast<int>(kv) != contact::kernel_version)
-    throw data_error(path + ": built by contact kernel version " + num(kv) + ", this rollspec has version " +
+    throw data_error(path + ": built by contact kernel version " + io::exact_text(kv) + ", this rollspec has version " +
                      std::to_string(contact::kernel_version) + "; rebuild with --rebuild");
   t.load_from(r);
   if (r.string_attribute(kind.group, "data_checksum") != t.checksum())

@@ -48,7 +48,7 @@ std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, dou
      << "\n\n[equivalent_roughness]\nstrips = " << ts.equivalent_roughness.strips << "\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
      << "\nchunk_positions = " << kChunkPositions << "\nsolve = load control\noutputs = h_eq, k_eq\nload_tolerance = "
-     << num(strip_load_tolerance(ts.stiffness.solver)) << "\n";
+     << io::exact_text(strip_load_tolerance(ts.stiffness.solver)) << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -184,7 +184,7 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
     }
     if (!r.converged)
       throw data_error("equivalent roughness: strip " + std::to_string(si) + " did not converge (largest error " +
-                       num(r.max_error) + "); raise [stiffness] max_iterations or tolerance");
+                       io::exact_text(r.max_error) + "); raise [stiffness] max_iterations or tolerance");
     t.smooth_approach = r.smooth_approach;
     t.smooth_stiffness = r.smooth_stiffness;
     t.height.insert(t.height.end(), r.height.begin(), r.height.end());

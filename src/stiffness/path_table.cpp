@@ -60,10 +60,11 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
   if (p.strip_length > 0.0) {
     g.nx = static_cast<std::size_t>(std::round(p.strip_length / dx));
     if (g.nx < need)
-      p.strip_length_origin.refuse("= " + num(p.strip_length) + " m is shorter than the ball's path in the run (" +
-                                   um(path_length) + " plus one step of " + um(step_length) +
-                                   ") plus the solver window (" + std::to_string(g.window) + " cells of " + um(dx) +
-                                   "); allowed: 0 (derived) or at least " + num(static_cast<double>(need) * dx) + " m");
+      p.strip_length_origin.refuse(
+          "= " + io::exact_text(p.strip_length) + " m is shorter than the ball's path in the run (" + um(path_length) +
+          " plus one step of " + um(step_length) + ") plus the solver window (" + std::to_string(g.window) +
+          " cells of " + um(dx) + "); allowed: 0 (derived) or at least " +
+          io::exact_text(static_cast<double>(need) * dx) + " m");
   } else {
     g.nx = need;
   }
@@ -108,8 +109,8 @@ std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double
   std::ostringstream in;
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
-     << "\napproaches = " << g.approaches << "\nreach = " << num(kReach)
-     << "\ntop_force = " << num(contact::PathTableOptions{}.top_force)
+     << "\napproaches = " << g.approaches << "\nreach = " << io::exact_text(kReach)
+     << "\ntop_force = " << io::exact_text(contact::PathTableOptions{}.top_force)
      << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
@@ -183,7 +184,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
     ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
   }
   if (!t.converged)
-    throw data_error("path table: a contact solve did not converge (largest error " + num(t.max_error) +
+    throw data_error("path table: a contact solve did not converge (largest error " + io::exact_text(t.max_error) +
                      "); raise [stiffness] max_iterations or tolerance");
   if (!quiet)
     std::fprintf(

@@ -70,8 +70,9 @@ std::string StiffnessTable::checksum() const { return hex16(column_hash(columns(
 CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, double effective_modulus) {
   const study::StiffnessSection& stiffness = t.stiffness;
   std::ostringstream in;
-  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(ball_radius)
-     << "\neffective_modulus = " << num(effective_modulus) << "\nshape = " << stiffness.text("shape")
+  in << "[contact kernel]\nversion = " << contact::kernel_version
+     << "\n\n[ball]\nradius = " << io::exact_text(ball_radius)
+     << "\neffective_modulus = " << io::exact_text(effective_modulus) << "\nshape = " << stiffness.text("shape")
      << "\n\n[stiffness]\n";
   for (const char* k : {"surface", "ball_rms", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
     in << k << " = " << stiffness.text(k) << "\n";
@@ -180,9 +181,9 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
           const auto& c = results[static_cast<std::size_t>(r)][j];
           if (!c.converged)
             throw data_error("stiffness table: the contact solve of realisation " + std::to_string(r) + ", step " +
-                             std::to_string(j + 1) + " (approach " + num(deltas[j]) + " m) did not converge: error " +
-                             num(c.error) + " > tolerance " + num(opts.tolerance) + " after " +
-                             std::to_string(c.iterations) +
+                             std::to_string(j + 1) + " (approach " + io::exact_text(deltas[j]) +
+                             " m) did not converge: error " + io::exact_text(c.error) + " > tolerance " +
+                             io::exact_text(opts.tolerance) + " after " + std::to_string(c.iterations) +
                              " iterations; raise [stiffness] max_iterations or tolerance");
         }
         progress.advance();

@@ -32,7 +32,8 @@ std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[equivalent_roughness]\nline = strip\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
      << "\nchunk_positions = " << kChunkPositions << "\nsegment = " << kSegment
-     << "\noutputs = h_eq, k_eq\nload_tolerance = " << num(strip_load_tolerance(ts.stiffness.solver)) << "\n";
+     << "\noutputs = h_eq, k_eq\nload_tolerance = " << io::exact_text(strip_load_tolerance(ts.stiffness.solver))
+     << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
@@ -87,7 +88,7 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const TableStudy& ts, 
     ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
   }
   if (!r.converged)
-    throw data_error("equivalent roughness: strip 0 did not converge (largest error " + num(r.max_error) +
+    throw data_error("equivalent roughness: strip 0 did not converge (largest error " + io::exact_text(r.max_error) +
                      "); raise [stiffness] max_iterations or tolerance");
   if (!quiet)
     std::fprintf(stderr, "%sequivalent roughness: strip 0, %d CG iterations, %.3g s wall\n",

@@ -39,7 +39,7 @@ texture::Surface study_strip(const TableStudy& ts, const StripGrid& grid, std::u
 std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g) {
   std::ostringstream in;
   for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << ts.stiffness.text(k) << "\n";
-  in << "seed = " << ts.study.seed_text << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << num(g.cell)
+  in << "seed = " << ts.study.seed_text << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << io::exact_text(g.cell)
      << "\nanisotropy = " << ts.surface.text("anisotropy")
      << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
      << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
@@ -52,8 +52,8 @@ std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g) {
 
 std::string ball_inputs_text(const TableStudy& ts, double radius, double e_star, double load) {
   std::ostringstream in;
-  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << num(radius)
-     << "\neffective_modulus = " << num(e_star) << "\nload = " << num(load)
+  in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << io::exact_text(radius)
+     << "\neffective_modulus = " << io::exact_text(e_star) << "\nload = " << io::exact_text(load)
      << "\nshape = " << ts.stiffness.text("shape");
   return in.str();
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "src/ensemble/checkpoint.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::stiffness {
 
@@ -23,12 +24,6 @@ inline std::string um(double m) {
     std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
   else
     std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
-  return buf;
-}
-
-inline std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
 }
 

@@ -18,6 +18,7 @@
 #include "kernels/texture/tabulated_psd.hpp"
 #include "src/error.hpp"
 #include "src/io/input_file.hpp"
+#include "src/io/number_text.hpp"
 #include "src/io/csv_table.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/key_reader.hpp"
@@ -173,12 +174,6 @@ spectral::Amplitudes study_amplitudes(const TextureSection& s) {
 }
 
 namespace {
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
-}
-
 // ISO 3095 covers 400 mm down to 3.15 mm: say so, and the frequency of its shortest wavelength.
 std::string iso3095_note(const LineGeneratorKeys& k) {
   double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
@@ -186,11 +181,11 @@ std::string iso3095_note(const LineGeneratorKeys& k) {
     shortest = std::min(shortest, b.wavelength_nominal);
     longest = std::max(longest, b.wavelength_nominal);
   }
-  std::string m = "; the ISO 3095 spectrum stops at " + num(shortest * 1e3) + " mm wavelength (its longest is " +
-                  num(longest * 1e3) + " mm)";
+  std::string m = "; the ISO 3095 spectrum stops at " + io::four_digits(shortest * 1e3) +
+                  " mm wavelength (its longest is " + io::four_digits(longest * 1e3) + " mm)";
   if (k.speed > 0.0)
-    m += ": " + num(shortest * 1e3) + " mm is " + num(k.speed / shortest) + " Hz at " + k.speed_key + " = " +
-         num(k.speed) + " m/s";
+    m += ": " + io::four_digits(shortest * 1e3) + " mm is " + io::four_digits(k.speed / shortest) + " Hz at " +
+         k.speed_key + " = " + io::four_digits(k.speed) + " m/s";
   return m;
 }
 
@@ -209,9 +204,9 @@ std::string grid_message(const LineGeneratorKeys& k, const std::exception& e, do
       m += "; allowed: [texture] table_extension = zero or error (now " + k.extension + "), so that the PSD ends at " +
            "the table's last wavenumber, with " + k.spacing_key + " at most pi over that wavenumber";
     } else {
-      m += "; allowed: " + k.spacing_key + " at most " + num(M_PI / (u->k_max * stretch)) + " m";
+      m += "; allowed: " + k.spacing_key + " at most " + io::four_digits(M_PI / (u->k_max * stretch)) + " m";
       if (k.source == "self-affine")
-        m += ", or [texture] short_wavelength at least " + num(2.0 * spacing * stretch) + " m";
+        m += ", or [texture] short_wavelength at least " + io::four_digits(2.0 * spacing * stretch) + " m";
       if (k.source == "iso3095") m += iso3095_note(k);
     }
   }
@@ -231,19 +226,6 @@ LineGeneratorKeys LineGeneratorKeys::of(const TextureSection& t, const KeyOrigin
   return k;
 }
 
-LineGeneratorKeys LineGeneratorKeys::parse(const KeyReader& s, const std::string& key) {
-  const auto dot = key.find('.');
-  LineGeneratorKeys k =
-      of(TextureSection::parse(s), KeyOrigin{s.where(key)}, "[" + key.substr(0, dot) + "] " + key.substr(dot + 1));
-  for (const auto& spec : s.keys())
-    if (spec.section == "ball") {  // a rolling ball: its speed turns wavelengths into frequencies
-      k.speed = BallSection::parse(s).speed;
-      k.speed_key = "[ball] speed";
-      break;
-    }
-  return k;
-}
-
 std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& k, const texture::Psd& psd,
                                                               double spacing, std::size_t samples, bool truncate) {
   texture::LineTextureSpec ls;
@@ -256,12 +238,6 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
   } catch (const std::exception& e) {
     throw config_error(grid_message(k, e, spacing, 1.0));
   }
-}
-
-std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const KeyReader& s, const texture::Psd& psd,
-                                                                    double spacing, std::size_t samples,
-                                                                    const std::string& key, bool truncate) {
-  return line_generator(LineGeneratorKeys::parse(s, key), psd, spacing, samples, truncate);
 }
 
 std::vector<std::string> profile_files(const KeyReader& s) { return profile_files(TextureSection::parse(s)); }

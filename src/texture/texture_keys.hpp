@@ -34,13 +34,6 @@ texture::Psd study_psd(const study::KeyReader& s);
 spectral::Amplitudes study_amplitudes(const study::TextureSection& s);
 spectral::Amplitudes study_amplitudes(const study::KeyReader& s);
 
-// Line-texture generator of `samples` samples at `spacing` from the PSD and the study's [texture]
-// amplitudes; truncate: harmonics above pi/spacing are dropped instead of refused. Errors of the
-// generator are reported at the study key `key` (the one that set the spacing).
-std::unique_ptr<texture::LineTextureGenerator> study_line_generator(const study::KeyReader& s, const texture::Psd& psd,
-                                                                    double spacing, std::size_t samples,
-                                                                    const std::string& key, bool truncate = true);
-
 // What a line-texture generator takes from the study: the [texture] amplitudes, and where the
 // spacing key and [texture] table_extension were set (for the generator's errors).
 struct LineGeneratorKeys {
@@ -53,9 +46,9 @@ struct LineGeneratorKeys {
   std::string speed_key;
   static LineGeneratorKeys of(const study::TextureSection& t, const study::KeyOrigin& spacing,
                               const std::string& spacing_key);
-  static LineGeneratorKeys parse(const study::KeyReader& s, const std::string& key);
 };
-// study_line_generator from those (for a scene that builds its line after the study is gone).
+// Line-texture generator of `samples` samples at `spacing` from the PSD and those keys; truncate:
+// harmonics above pi/spacing are dropped instead of refused. Errors name the spacing key.
 std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGeneratorKeys& keys, const texture::Psd& psd,
                                                               double spacing, std::size_t samples,
                                                               bool truncate = true);

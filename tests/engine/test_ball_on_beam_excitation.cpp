@@ -13,6 +13,7 @@
 #include "src/rng/philox_stream.hpp"
 #include "src/scenes/ball_on_beam_contact.hpp"
 #include "src/scenes/ball_on_beam_excitation.hpp"
+#include "src/scenes/ball_on_beam_sections.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
 #include "src/scenes/scene.hpp"
 #include "tests/engine/study_from_text.hpp"
@@ -31,7 +32,7 @@ BallOnBeamSettings settings(const std::vector<std::string>& overrides) {
                             "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 7\n[ball]\nstart "
                             "= 0.1\nend = 0.11\n[spectrum]\nsegment = 128\n",
                             overrides);
-  return scenes::read_ball_on_beam_settings(s);
+  return scenes::read_ball_on_beam_settings(scenes::BallOnBeamSections::parse(s));
 }
 
 std::shared_ptr<const texture::LineTextureGenerator> lines_of(const BallOnBeamSettings& b, const ResolvedContact& c) {

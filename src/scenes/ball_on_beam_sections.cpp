@@ -1,0 +1,30 @@
+#include "src/scenes/ball_on_beam_sections.hpp"
+
+#include "src/study/key_reader.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::scenes {
+
+BallOnBeamSections BallOnBeamSections::parse(const study::KeyReader& s) {
+  BallOnBeamSections b(study::ModalBeamSection::parse(s));
+  b.study = study::StudySection::parse(s);
+  b.ensemble = study::EnsembleSection::parse(s);
+  b.ball = study::BallSection::parse(s);
+  b.signal = study::SignalSection::parse(s);
+  b.sensors = study::SensorsSection::parse(s);
+  b.spectrum = study::SpectrumSection::parse(s);
+  b.output = study::OutputSection::parse(s);
+  b.contact = study::ContactSection::parse(s);
+  b.roughness = study::RoughnessSection::parse(s);
+  b.texture = study::TextureSection::parse(s);
+  b.equivalent_roughness = study::EquivalentRoughnessSection::parse(s);
+  b.stiffness = study::StiffnessSection::parse(s);
+  b.strip_surface = study::StripSurfaceSection::parse(s);
+  b.blocked_force = study::BlockedForceSection::parse(s);
+  b.path_table = study::PathTableSection::parse(s);
+  b.texture_psd = texture_io::study_psd(b.texture);
+  b.tables = stiffness::TableStudy::parse(s);
+  return b;
+}
+
+}  // namespace rollspec::scenes
