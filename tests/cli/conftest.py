@@ -114,6 +114,26 @@ def run(args, env=None, **kw):
     return subprocess.run([BIN, *map(str, args)], capture_output=True, text=True, env=full_env, **kw)
 
 
+def study_result(study, directory, name, *sets):
+    """`rollspec run STUDY --set SETS` into directory/NAME.h5 (asserted to succeed)."""
+    out = directory / f"{name}.h5"
+    args = ["run", study, "--out", out, "--quiet"]
+    for s in sets:
+        args += ["--set", s]
+    r = run(args)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+def measurement_from(path, csv, row=-1):
+    """The mean PSD of one row of a result (default: the last, the sensor mean), written as a measured
+    PSD (frequency_hz,psd)."""
+    with h5py.File(path) as f:
+        freq, psd = f["/psd/frequency"][1:], f["/psd/mean"][row, 1:]
+    np.savetxt(csv, np.c_[freq, psd], delimiter=",", header="frequency_hz,psd", comments="", fmt="%.17g")
+    return csv
+
+
 def run_copied_study(name, tmp_path, *sets, out="r.h5", command="run"):
     """studies/NAME copied to tmp_path (its tables are written beside it, not in the source tree) and
     run (returns (result, out path)) or planned (returns (result, None)) with --set SETS."""

@@ -11,27 +11,13 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import EX_USAGE, SOURCE, run
+from conftest import EX_USAGE, SOURCE, measurement_from, run, study_result
 
 STUDY = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
 
 
-def result(tmp_path, name, *sets):
-    out = tmp_path / f"{name}.h5"
-    args = ["run", STUDY, "--out", out, "--quiet"]
-    for s in sets:
-        args += ["--set", s]
-    r = run(args)
-    assert r.returncode == 0, r.stderr
-    return out
-
-
-def measurement_from(path, csv, row=-1):
-    """The mean PSD of one row of a result, written as a measured PSD (frequency_hz,psd)."""
-    with h5py.File(path) as f:
-        freq, psd = f["/psd/frequency"][1:], f["/psd/mean"][row, 1:]
-    np.savetxt(csv, np.c_[freq, psd], delimiter=",", header="frequency_hz,psd", comments="", fmt="%.17g")
-    return csv
+def result(directory, name, *sets):
+    return study_result(STUDY, directory, name, *sets)
 
 
 @pytest.fixture(scope="module")

@@ -10,27 +10,13 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import SOURCE, run
+from conftest import SOURCE, measurement_from, run, study_result
 
 STUDY = SOURCE / "studies" / "seed002-rig-1ms.ini"
 
 
-def result(d, name, *sets):
-    out = d / f"{name}.h5"
-    args = ["run", STUDY, "--out", out, "--quiet"]
-    for s in sets:
-        args += ["--set", s]
-    r = run(args)
-    assert r.returncode == 0, r.stderr
-    return out
-
-
-def measurement_from(path, csv):
-    """The sensor-mean PSD of a result (its last row), written as a measured PSD."""
-    with h5py.File(path) as f:
-        freq, psd = f["/psd/frequency"][1:], f["/psd/mean"][-1, 1:]
-    np.savetxt(csv, np.c_[freq, psd], delimiter=",", header="frequency_hz,psd", comments="", fmt="%.17g")
-    return csv
+def result(directory, name, *sets):
+    return study_result(STUDY, directory, name, *sets)
 
 
 @pytest.fixture(scope="module")
