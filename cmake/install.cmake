@@ -9,7 +9,8 @@
 #   P/share/bash-completion/completions/rollspec    here, from the built binary's help texts
 #   P/share/rollspec/studies/*.ini, data/**         here: the example studies and the files they read
 #   P/share/rollspec/studies/templates/SCENE.ini    here, `rollspec init SCENE` of the built binary
-#   P/bin/rollspec-post, P/share/rollspec/python/rollspec_post  here (python-post, see the end)
+#   P/bin/rollspec-post, P/share/rollspec/python/rollspec_post  here (python-post)
+#   P/share/doc/rollspec/html/               here, once the target rollspec_docs has built the site
 # Nothing here needs the tests or the benchmarks.
 include(CMakePackageConfigHelpers)
 
@@ -85,3 +86,14 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/python-post/rollspec_post DESTINATION ${RO
   COMPONENT python_post FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
 install(PROGRAMS ${CMAKE_BINARY_DIR}/python-post/rollspec-post DESTINATION ${CMAKE_INSTALL_BINDIR}
   COMPONENT python_post)
+
+# --- HTML documentation -----------------------------------------------------------------------------
+#   P/share/doc/rollspec/html/index.html   the documentation site (component docs)
+# `cmake --build BUILD --target rollspec_docs` runs docs/build.sh against this build's rollspec into
+# BUILD/docs (Sphinx from Debian: .ci/setup installs it); `cmake --install BUILD --component docs`
+# then installs the site. A plain `cmake --install` installs it too once it is built, and skips it if not.
+add_custom_target(rollspec_docs
+  COMMAND ${CMAKE_COMMAND} -E env ROLLSPEC_BIN=$<TARGET_FILE:rollspec> bash ${CMAKE_SOURCE_DIR}/docs/build.sh
+          ${CMAKE_BINARY_DIR}/docs
+  DEPENDS rollspec USES_TERMINAL COMMENT "documentation site (docs/build.sh)")
+install(DIRECTORY ${CMAKE_BINARY_DIR}/docs/html/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/html COMPONENT docs OPTIONAL)

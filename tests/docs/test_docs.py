@@ -117,3 +117,26 @@ def test_gallery_examples_ran(site):
         page = site / "gallery" / (example.stem + ".html")
         assert page.exists(), f"{example.name} has no gallery page"
         assert f"sphx_glr_{example.stem}_001.png" in page.read_text(), f"{example.name} drew no figure"
+
+
+def test_every_link_inside_the_site_resolves(site):
+    r = subprocess.run([sys.executable, str(SOURCE / "docs" / "check_links.py"), str(site)], capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert re.search(r"links: \d+ pages, 0 broken internal links", r.stdout), r.stdout
+
+
+def test_the_link_check_finds_a_missing_page_and_a_missing_anchor(tmp_path):
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "index.html").write_text(
+        '<html><body><h1 id="top">x</h1><a href="sub/page.html#here">ok</a><a href="#top">ok</a>'
+        '<a href="gone.html">missing</a><a href="sub/page.html#nowhere">bad anchor</a>'
+        '<a href="https://example.org/x">external</a></body></html>')
+    (tmp_path / "sub" / "page.html").write_text('<html><body><p id="here">y</p><a href="../index.html">up</a>'
+                                                '</body></html>')
+    r = subprocess.run([sys.executable, str(SOURCE / "docs" / "check_links.py"), str(tmp_path)], capture_output=True,
+                       text=True, timeout=60)
+    assert r.returncode == 1
+    assert "index.html: gone.html: no such file" in r.stderr
+    assert "index.html: sub/page.html#nowhere: no anchor #nowhere in page.html" in r.stderr
+    assert r.stderr.count("check_links:") == 2 and "1 external links" in r.stdout
