@@ -7,16 +7,9 @@ import subprocess
 
 import pytest
 
-SOURCE = pathlib.Path(os.environ["ROLLSPEC_SOURCE"])
-BUILD = pathlib.Path(os.environ["ROLLSPEC_BUILD"])
-CMAKE = os.environ.get("CMAKE_COMMAND", "cmake")
+from conftest import BUILD, CMAKE, SOURCE, run
+
 VERSION = os.environ["ROLLSPEC_VERSION"]
-
-
-def run(*args, **kw):
-    r = subprocess.run([str(a) for a in args], capture_output=True, text=True, **kw)
-    assert r.returncode == 0, f"{' '.join(map(str, args))}: exit {r.returncode}\n{r.stdout}\n{r.stderr}"
-    return r
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,6 @@ builds with Debian's setuptools and never touches the network. python-post is co
 setuptools writes build/ and *.egg-info beside pyproject.toml, which must not land in the sources.
 """
 import os
-import pathlib
 import re
 import shutil
 import subprocess
@@ -22,16 +21,10 @@ import tomllib
 
 import pytest
 
-SOURCE = pathlib.Path(os.environ["ROLLSPEC_SOURCE"])
+from conftest import CMAKE, SOURCE, run
+
 POST = SOURCE / "python-post"
 BUILD = os.environ.get("ROLLSPEC_BUILD")
-CMAKE = os.environ.get("CMAKE_COMMAND", "cmake")
-
-
-def run(*args, **kw):
-    r = subprocess.run([str(a) for a in args], capture_output=True, text=True, **kw)
-    assert r.returncode == 0, f"{' '.join(map(str, args))}: exit {r.returncode}\n{r.stdout}\n{r.stderr}"
-    return r
 
 
 def tree(path):

@@ -2,22 +2,12 @@
 share/rollspec/studies, and they plan (and run) from there, whatever the current directory; the man page
 has a STUDY FILE section."""
 import os
-import pathlib
 import re
 import shutil
-import subprocess
 
 import pytest
 
-SOURCE = pathlib.Path(os.environ["ROLLSPEC_SOURCE"])
-BUILD = pathlib.Path(os.environ["ROLLSPEC_BUILD"])
-CMAKE = os.environ.get("CMAKE_COMMAND", "cmake")
-
-
-def run(*args, **kw):
-    r = subprocess.run([str(a) for a in args], capture_output=True, text=True, **kw)
-    assert r.returncode == 0, f"{' '.join(map(str, args))}: exit {r.returncode}\n{r.stdout}\n{r.stderr}"
-    return r
+from conftest import BUILD, CMAKE, SOURCE, run
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,18 @@
+"""Shared by the installation tests: where the sources and the build tree are (from CTest's
+environment), and `run`, which asserts a command succeeds and shows its output when it does not."""
+import os
+import pathlib
+import subprocess
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+
+SOURCE = pathlib.Path(os.environ["ROLLSPEC_SOURCE"])
+BUILD = pathlib.Path(os.environ["ROLLSPEC_BUILD"])
+CMAKE = os.environ.get("CMAKE_COMMAND", "cmake")
+
+
+def run(*args, **kw):
+    r = subprocess.run([str(a) for a in args], capture_output=True, text=True, **kw)
+    assert r.returncode == 0, f"{' '.join(map(str, args))}: exit {r.returncode}\n{r.stdout[-4000:]}\n{r.stderr[-4000:]}"
+    return r
