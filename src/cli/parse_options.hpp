@@ -18,6 +18,7 @@ bool parse_options(const std::vector<std::string>& args, const std::string& usag
 struct StudyArgs {
   std::string file;
   std::vector<std::string> sets;
+  std::string text;  // non-empty: the study's text, read instead of the file (a sweep point: no [sweep])
 };
 // required = false: the command checks for a missing study itself (run --resume reads the checkpoint's).
 void add_study_options(po::options_description& options, po::positional_options_description& positional,

@@ -8,6 +8,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/cli/run_phases.hpp"
+#include "src/cli/sweep_run.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/available_memory.hpp"
 #include "src/scenes/memory_estimate.hpp"
@@ -21,7 +22,7 @@ namespace rollspec::cli {
 
 int plan_command(const Args& args) {
   const std::string usage =
-      "usage: rollspec plan STUDY.ini [--set section.key=value ...]\n"
+      "usage: rollspec plan STUDY.ini [--set section.key=value ...] [--sweep section.key=v1,v2,...]\n"
       "\n"
       "Validates the study and prints each stage of its scene as run / cached / skipped with the\n"
       "reason, and the estimated peak memory and checkpoint disk. Nothing is computed and no file is\n"
@@ -32,8 +33,11 @@ int plan_command(const Args& args) {
   StudyArgs study;
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
+  std::vector<std::string> sweeps;
+  add_sweep_option(opts, sweeps);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  if (const auto sweep = load_sweep(study, sweeps)) return plan_sweep(*sweep, vm.count("probe") > 0);
 
   const study::Study s = resolve_study(study);
   const study::StudySection study_keys = study::StudySection::parse(s);

@@ -3,14 +3,15 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/cli/run_phases.hpp"
+#include "src/cli/sweep_run.hpp"
 #include "src/error.hpp"
 
 namespace rollspec::cli {
 
 int run_command(const Args& args) {
   const std::string usage =
-      "usage: rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume | --restart] [--force] "
-      "[--quiet]\n"
+      "usage: rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--sweep section.key=v1,v2,...] "
+      "[--resume | --restart] [--force] [--quiet]\n"
       "       rollspec run --resume --out FILE.h5 [--quiet]   (the checkpoint's own study; no study file needed)\n"
       "\n"
       "Runs the study's Monte-Carlo ensemble and writes the result file (HDF5, schema 1: /psd, /bands,\n"
@@ -19,6 +20,8 @@ int run_command(const Args& args) {
       "--resume finishes the ensemble with the checkpoint's own settings and a result bitwise identical\n"
       "to an uninterrupted run; --restart discards the checkpoint and starts over. An existing FILE.h5\n"
       "is replaced only if it is a rollspec result (or with --force).\n"
+      "A study with a [sweep] section (or --sweep) runs once per point and writes one file whose datasets\n"
+      "gain a leading axis per swept key (see the Sweeps how-to).\n"
       "Threads: OMP_NUM_THREADS. The result data do not depend on the thread count.";
   po::options_description opts("options");
   StudyArgs study;
@@ -37,6 +40,8 @@ int run_command(const Args& args) {
                                                                                              "no progress output");
   po::positional_options_description pos;
   add_study_options(opts, pos, study, /*required=*/false);
+  std::vector<std::string> sweeps;
+  add_sweep_option(opts, sweeps);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   const bool resume = vm.count("resume") > 0, restart = vm.count("restart") > 0;
@@ -52,6 +57,7 @@ int run_command(const Args& args) {
 
   RunRequest request{study, out, resume, restart, vm.count("force") > 0, vm.count("rebuild") > 0, vm.count("quiet") > 0,
                      only};
+  if (const auto sweep = load_sweep(study, sweeps)) return run_sweep(*sweep, request);
   ResolvedRun run = resolve_run(request);
   check_resources(run.study, request.force);
   return run.scene->kind == scenes::SceneKind::single_run ? run_single_phase(run, request)

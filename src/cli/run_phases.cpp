@@ -75,6 +75,7 @@ void write_run_attributes(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums,
 }  // namespace
 
 study::Study resolve_study(const StudyArgs& args) {
+  if (!args.text.empty()) return study::Study::parse(args.file, args.text, args.sets, scenes::schema_for);
   return study::Study::load(args.file, args.sets, scenes::schema_for);
 }
 

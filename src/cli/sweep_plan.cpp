@@ -1,0 +1,74 @@
+// rollspec plan of a sweep: the points, each point's stages (a table every point needs appears
+// under the same name and status at each, and is built once: cached tables are keyed by their
+// inputs' hash), and with --probe the time of the whole sweep.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "src/cli/sweep_run.hpp"
+#include "src/ensemble/ensemble_driver.hpp"
+#include "src/study/sections/study_section.hpp"
+
+namespace rollspec::cli {
+
+namespace {
+
+// Seconds of one ensemble point from realisation 0; < 0 if it cannot be probed (tables not built, single run).
+double probe_point(const study::Study& s, scenes::Scene& scene, const std::vector<scenes::StagePlan>& stages) {
+  auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(&scene);
+  if (!ensemble_scene) return -1;
+  for (const auto& p : stages)
+    if (p.stage.find("table") != std::string::npos && p.status == scenes::StageStatus::run) return -1;
+  ensemble_scene->prepare(true, false);
+  std::vector<double> values(ensemble_scene->values_per_realisation());
+  const auto start = std::chrono::steady_clock::now();
+  ensemble_scene->run_realisation(0, 0, values.data());
+  const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t * static_cast<double>(study::StudySection::parse(s).realisations) / ensemble::ensemble_threads();
+}
+
+}  // namespace
+
+int plan_sweep(const SweepStudy& sweep, bool probe) {
+  const std::size_t n = sweep.points();
+  std::cout << "sweep of " << sweep.args.file << ": " << (sweep.sweep.zipped ? "zipped" : "crossed") << ", " << n
+            << " point" << (n == 1 ? "" : "s") << ", every point with the study's seed (common random numbers)\n";
+  for (std::size_t i = 0; i < n; ++i) std::cout << "  point " << i + 1 << ": " << sweep.label(i) << "\n";
+  std::vector<scenes::StagePlan> first;
+  double total = 0;
+  bool probed = probe;
+  for (std::size_t i = 0; i < n; ++i) {
+    const study::Study s = resolve_study(sweep.point(i));
+    check_resources(s, false);
+    const auto scene = make_scene<scenes::Scene>(s);
+    const auto stages = scene->plan();
+    std::cout << "point " << i + 1 << " (" << sweep.label(i) << "):";
+    bool same = i > 0 && stages.size() == first.size();
+    for (std::size_t k = 0; same && k < stages.size(); ++k)
+      same = stages[k].status == first[k].status && stages[k].reason == first[k].reason;
+    if (same) {
+      std::cout << " the same stages as point 1\n";
+    } else {
+      std::cout << "\n";
+      for (const auto& p : stages)
+        std::printf("  %-16s %-8s %s\n", p.stage.c_str(), scenes::status_name(p.status), p.reason.c_str());
+    }
+    if (i == 0) first = stages;
+    if (probe && probed) {
+      const double t = probe_point(s, *scene, stages);
+      probed = t >= 0;
+      total += t;
+    }
+  }
+  if (!probe) return 0;
+  if (!probed)
+    std::cout << "run time: not probed (a point is one deterministic run, or its stage tables are not built yet)\n";
+  else
+    std::printf(
+        "run time: about %.3g s for the %zu points on %d thread(s) (probe of realisation 0 of each point; "
+        "plus stage tables and the final writes)\n",
+        total, n, ensemble::ensemble_threads());
+  return 0;
+}
+
+}  // namespace rollspec::cli

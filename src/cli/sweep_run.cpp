@@ -1,0 +1,213 @@
+#include "src/cli/sweep_run.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/stop_signal.hpp"
+#include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
+#include "src/io/hdf5_stack.hpp"
+#include "src/io/input_file.hpp"
+#include "src/io/output_target.hpp"
+#include "src/io/provenance.hpp"
+
+namespace rollspec::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw missing_input("cannot read study file '" + path + "': it is a directory; expected an INI file");
+  io::require_regular_input(path, "study file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw missing_input("cannot open study file '" + path + "'");
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  return buf.str();
+}
+
+study::Study point_study(const StudyArgs& a) { return study::Study::parse(a.file, a.text, a.sets, scenes::schema_for); }
+
+// Every value of every swept key, loaded alone into the study: a bad value is refused before any work.
+void check_values(const SweepStudy& s) {
+  for (const auto& k : s.sweep.keys)
+    for (const auto& v : k.values) {
+      StudyArgs a = s.args;
+      a.sets.push_back(k.key + "=" + v);
+      try {
+        point_study(a);
+      } catch (const UserError& e) {
+        throw UserError(e.exit_code(), k.origin.where + ": the value " + clip(v) + " is refused: " + e.what());
+      }
+    }
+}
+
+std::string point_path(const std::string& dir, std::size_t i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "point_%04zu.h5", i);
+  return (fs::path(dir) / name).string();
+}
+
+// The sweep's work directory holds only point files and their checkpoints: anything else is not ours to remove.
+void remove_work_directory(const std::string& dir) {
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().rfind("point_", 0) != 0)
+      throw cannot_create("sweep work directory " + dir + " holds " + e.path().filename().string() +
+                          ", which rollspec did not write; move it away, or choose another --out");
+  fs::remove_all(dir);
+}
+
+io::StackAxis axis_of(const SweepStudy& s, const study::SweptKey& k) {
+  io::StackAxis a{k.dimension, k.unit == "-" ? "1" : k.unit, "swept study key " + k.key, {}, {}};
+  for (const auto& v : k.values) {
+    StudyArgs args = s.args;
+    args.sets.push_back(k.key + "=" + v);
+    a.texts.push_back(point_study(args).entry(k.key).value);
+  }
+  for (const auto& t : a.texts) {
+    char* end = nullptr;
+    const double x = std::strtod(t.c_str(), &end);
+    if (end == t.c_str() || *end) return a;
+    a.numbers.push_back(x);
+  }
+  a.texts.clear();
+  return a;
+}
+
+// A finished point file is kept on --resume only if it is the result of that point's study.
+bool finished_point(const std::string& path, const study::Study& s) {
+  if (!fs::exists(path) || fs::exists(path + ".checkpoint")) return false;
+  const io::Hdf5Reader r(path);
+  if (r.has_attribute("/", "study") && r.string_attribute("/", "study") == s.canonical_text()) return true;
+  throw data_error("sweep point file " + path + " holds the result of a different study (the study or its sweep " +
+                   "changed since it ran); rerun with --restart");
+}
+
+std::string changed_keys(const SweepStudy& s, std::size_t i) {
+  const auto a = s.sweep.point_sets(0), b = s.sweep.point_sets(i);
+  std::string out;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (a[k] != b[k]) out += (out.empty() ? "" : "; ") + s.sweep.keys[k].origin.where;
+  return out;
+}
+
+void run_point(const SweepStudy& s, const RunRequest& q, std::size_t i, const std::string& path) {
+  RunRequest pq = q;
+  pq.study = s.point(i);
+  pq.out = path;
+  pq.resume = q.resume && fs::exists(path + ".checkpoint");
+  pq.restart = false;
+  ResolvedRun run = resolve_run(pq);
+  check_resources(run.study, q.force);
+  if (run.scene->kind == scenes::SceneKind::single_run)
+    run_single_phase(run, pq);
+  else
+    run_ensemble_phase(run, pq);
+}
+
+}  // namespace
+
+StudyArgs SweepStudy::point(std::size_t i) const {
+  StudyArgs a = args;
+  for (const auto& set : sweep.point_sets(i)) a.sets.push_back(set);
+  return a;
+}
+
+std::string SweepStudy::label(std::size_t i) const {
+  std::string out;
+  for (const auto& set : sweep.point_sets(i)) out += (out.empty() ? "" : ", ") + set;
+  return out;
+}
+
+void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps) {
+  options.add_options()("sweep", po::value(&sweeps)->composing(),
+                        "sweep a study key: --sweep section.key=v1,v2,... (repeatable; added to the study's [sweep])");
+}
+
+std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps) {
+  if (args.file.empty()) {
+    if (!sweeps.empty()) throw usage_error("--sweep needs the study file");
+    return std::nullopt;
+  }
+  SweepStudy s{args, {}, {}};
+  s.args.text = read_text(args.file);
+  const std::vector<study::SweepLine> lines = study::split_sweep(s.args.text);
+  if (lines.empty() && sweeps.empty()) {
+    if (s.args.text.find("[sweep]") == std::string::npos) return std::nullopt;
+  }
+  const study::Study base = point_study(s.args);
+  s.sweep = study::SweepSection::parse(args.file, lines, sweeps, base);
+  if (s.sweep.empty())
+    throw config_error(args.file + ": [sweep] names no keys; allowed: section.key = v1, v2, ... (or remove [sweep])");
+  check_values(s);
+  s.study_text = base.canonical_text() + "\n[sweep]\nmode = " + (s.sweep.zipped ? "zipped" : "crossed") + "\n";
+  for (const auto& k : s.sweep.keys) {
+    std::string v;
+    for (const auto& x : k.values) v += (v.empty() ? "" : ", ") + x;
+    s.study_text += k.key + " = " + v + "\n";
+  }
+  return s;
+}
+
+int run_sweep(const SweepStudy& s, const RunRequest& q) {
+  if (q.only >= 0) throw usage_error("--only runs one realisation of one study; it takes no sweep");
+  const std::string out = q.out.empty() ? fs::path(s.args.file).stem().string() + ".h5" : q.out;
+  io::OutputTarget target{out, io::kResultFileType};
+  target.force = q.force;
+  target.clean_stale = ensemble::mpi_rank() == 0;
+  target.inputs = point_study(s.args).input_files();
+  const std::string write_path = io::check_output_target(target);
+  const std::string dir = write_path + ".sweep";
+  if (fs::exists(dir) && q.restart && ensemble::mpi_rank() == 0) remove_work_directory(dir);
+  if (fs::exists(dir) && !q.resume && !q.restart)
+    throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
+                        "; allowed: --resume to finish it, or --restart to discard it");
+  fs::create_directories(dir);
+  const std::size_t n = s.points();
+  std::vector<std::string> inputs;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string path = point_path(dir, i);
+    inputs.push_back(path);
+    if (!q.quiet) std::cout << "sweep point " << i + 1 << " of " << n << ": " << s.label(i) << "\n" << std::flush;
+    if (q.resume && finished_point(path, point_study(s.point(i)))) {
+      if (!q.quiet) std::cout << "  finished before: kept " << path << "\n";
+    } else {
+      run_point(s, q, i, path);
+    }
+    if (ensemble::stop_requested())
+      throw UserError(130, "interrupted after sweep point " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                               "; rollspec run --resume finishes the sweep");
+    // A key that changes a dataset's shape is refused at its first point that does, not after the last.
+    if (i > 0 && ensemble::mpi_rank() == 0) {
+      const std::string why = io::stack_difference(inputs[0], path);
+      if (!why.empty())
+        throw config_error(changed_keys(s, i) + ": " + why +
+                           "; allowed: sweeps of keys that keep every dataset's shape and coordinates");
+    }
+  }
+  if (ensemble::mpi_rank() != 0) return 0;
+  io::StackRequest r;
+  r.inputs = inputs;
+  r.mode = s.sweep.zipped ? "zipped" : "crossed";
+  r.study_text = s.study_text;
+  r.what = "the sweep of " + s.args.file;
+  for (std::size_t k = 0; k < s.sweep.keys.size(); ++k)
+    (s.sweep.zipped && k > 0 ? r.coordinates : r.axes).push_back(axis_of(s, s.sweep.keys[k]));
+  {
+    const ensemble::CriticalSection finishing;
+    io::stack_results(r, write_path);
+    remove_work_directory(dir);
+  }
+  if (!q.quiet) std::cout << "wrote " << out << " (sweep of " << n << " point" << (n == 1 ? "" : "s") << ")\n";
+  return 0;
+}
+
+}  // namespace rollspec::cli

@@ -1,0 +1,38 @@
+#pragma once
+// `rollspec run` and `rollspec plan` of a study with a [sweep] section (or --sweep): one run per
+// point, each the study with one --set per swept key, stacked into one result file.
+//   run:  each point runs with every thread and rank, in order, into OUT.sweep/point_NNNN.h5 (with
+//         its own checkpoint); the finished points are stacked onto OUT, and the directory removed.
+//         --resume keeps finished points (checked against their study) and resumes the interrupted one.
+//   plan: the points, each point's stages (tables shared between points show the same cache file),
+//         and with --probe the estimated total time.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/cli/run_phases.hpp"
+#include "src/study/sections/sweep_section.hpp"
+
+namespace rollspec::cli {
+
+struct SweepStudy {
+  StudyArgs args;  // the study file, its text without [sweep], and the --set overrides
+  study::SweepSection sweep;
+  std::string study_text;  // the resolved base study with its [sweep], for the result file
+
+  std::size_t points() const { return sweep.points(); }
+  StudyArgs point(std::size_t i) const;    // the study of point i (args with the point's --set)
+  std::string label(std::size_t i) const;  // "ball.speed=1, ball.radius=0.01"
+};
+
+// The repeatable --sweep section.key=v1,v2,... option of run and plan.
+void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps);
+
+// nullopt: the study has no [sweep] and no --sweep was given (an ordinary run). Every swept value
+// is checked now, before any work.
+std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps);
+
+int run_sweep(const SweepStudy& sweep, const RunRequest& request);
+int plan_sweep(const SweepStudy& sweep, bool probe);
+
+}  // namespace rollspec::cli
