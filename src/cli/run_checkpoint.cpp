@@ -8,6 +8,7 @@
 #include <iostream>
 #include <map>
 
+#include "src/cli/sweep_run.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
@@ -67,7 +68,7 @@ study::Study resume_study(const study::Study& asked, const std::vector<std::stri
   if (from_checkpoint) return asked;  // parsed from this manifest: nothing on disk to compare with
   std::vector<std::string> all = m.sets;
   all.insert(all.end(), sets.begin(), sets.end());
-  study::Study s = study::Study::load(asked.file(), all, scenes::schema_for);
+  study::Study s = load_study_without_sweep(asked.file(), all);
   std::map<std::string, std::string> current;
   for (const auto& [k, v] : ensemble::canonical_entries(s.canonical_text())) current[k] = v;
   std::string keys;

@@ -127,6 +127,12 @@ std::string SweepStudy::label(std::size_t i) const {
   return out;
 }
 
+study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets) {
+  StudyArgs a{file, sets, read_text(file)};
+  if (study::split_sweep(a.text).empty()) return study::Study::load(file, sets, scenes::schema_for);
+  return point_study(a);
+}
+
 void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps) {
   options.add_options()("sweep", po::value(&sweeps)->composing(),
                         "sweep a study key: --sweep section.key=v1,v2,... (repeatable; added to the study's [sweep])");

@@ -32,6 +32,10 @@ void add_sweep_option(po::options_description& options, std::vector<std::string>
 // is checked now, before any work.
 std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps);
 
+// The study file with `sets`, its [sweep] (if any) left out: a sweep point's checkpoint compares
+// the study on disk with its own on --resume.
+study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets);
+
 int run_sweep(const SweepStudy& sweep, const RunRequest& request);
 int plan_sweep(const SweepStudy& sweep, bool probe);
 
