@@ -70,7 +70,7 @@ io::StackAxis axis_of(const SweepStudy& s, const study::SweptKey& k) {
   for (const auto& v : k.values) {
     StudyArgs args = s.args;
     args.sets.push_back(k.key + "=" + v);
-    a.texts.push_back(point_study(args).entry(k.key).value);
+    a.texts.push_back(study::SweepSection::value_at(point_study(args), k.key));
   }
   for (const auto& t : a.texts) {
     char* end = nullptr;

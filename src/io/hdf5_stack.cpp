@@ -4,12 +4,14 @@
 
 #include <H5DSpublic.h>
 #include <H5LTpublic.h>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <set>
 
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/io/hdf5_group_copy.hpp"
 #include "src/io/temp_files.hpp"
 
 namespace rollspec::io {
@@ -83,14 +85,27 @@ Data read_data(hid_t file, const std::string& path) {
   return d;
 }
 
-std::string difference(hid_t a, hid_t b, const std::string& name_b) {
+std::string top_group(const std::string& path) { return path.substr(0, path.find('/', 1)); }
+
+// Why `b` cannot be stacked with `a` (naming the dataset), or "". A dataset whose shape, coordinate
+// or names change outside the groups that must stack puts its top-level group in `per_point`.
+std::string difference(hid_t a, hid_t b, const std::string& name_b, const std::vector<std::string>& must_stack,
+                       std::set<std::string>* per_point) {
   const auto sa = objects(a, collect_dataset), sb = objects(b, collect_dataset);
   if (sa != sb) return name_b + " holds other datasets than the first point";
   for (const auto& p : sa) {
     const Data x = read_data(a, p), y = read_data(b, p);
-    if (x.dims != y.dims) return "changes the shape of " + p + " (not one array over the points)";
-    if (x.scale && !x.same_values(y)) return "changes the coordinate " + p + " (its values differ between points)";
-    if (x.vlen && !x.same_values(y)) return "changes the names in " + p;
+    std::string why;
+    if (x.dims != y.dims) why = "changes the shape of " + p + " (not one array over the points)";
+    if (why.empty() && x.scale && !x.same_values(y))
+      why = "changes the coordinate " + p + " (its values differ between points)";
+    if (why.empty() && x.vlen && !x.same_values(y)) why = "changes the names in " + p;
+    if (why.empty()) continue;
+    const std::string g = top_group(p);
+    bool must = g == p;
+    for (const auto& m : must_stack) must = must || m == g;
+    if (must) return why;
+    if (per_point) per_point->insert(g);
   }
   return "";
 }
@@ -276,7 +291,9 @@ struct Stacker {
   }
 
   void sweep_group() {
-    Hdf5Handle g(H5Gcreate2(file, "/sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    Hdf5Handle g(H5Lexists(file, "/sweep", H5P_DEFAULT) > 0
+                     ? H5Gopen2(file, "/sweep", H5P_DEFAULT)
+                     : H5Gcreate2(file, "/sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
     check(g.valid(), "group /sweep");
     string_attribute(file, "/sweep", "mode", q.mode);
     std::string keys;
@@ -287,6 +304,12 @@ struct Stacker {
     for (const auto& c : q.coordinates) attach(values_in("/sweep", c, false), values_in("/sweep", q.axes[0], true), 0);
   }
 };
+
+std::string point_group(std::size_t i) {
+  char name[40];
+  std::snprintf(name, sizeof name, "/sweep/point_%04zu", i);
+  return name;
+}
 
 // Removes the temporary file unless the stacked file was renamed onto the output.
 struct TempFile {
@@ -302,17 +325,19 @@ struct TempFile {
 
 }  // namespace
 
-std::string stack_difference(const std::string& first, const std::string& point) {
+std::string stack_difference(const std::string& first, const std::string& point,
+                             const std::vector<std::string>& must_stack) {
   const Hdf5Handle a = open_file(first, H5F_ACC_RDONLY), b = open_file(point, H5F_ACC_RDONLY);
-  return difference(a.get(), b.get(), point);
+  return difference(a.get(), b.get(), point, must_stack, nullptr);
 }
 
 void stack_results(const StackRequest& q, const std::string& out) {
   quiet_hdf5_errors();
   std::vector<Hdf5Handle> inputs;
   for (const auto& p : q.inputs) inputs.push_back(open_file(p, H5F_ACC_RDONLY));
+  std::set<std::string> per_point;
   for (std::size_t i = 1; i < inputs.size(); ++i) {
-    const std::string why = difference(inputs[0].get(), inputs[i].get(), q.inputs[i]);
+    const std::string why = difference(inputs[0].get(), inputs[i].get(), q.inputs[i], q.must_stack, &per_point);
     if (!why.empty()) throw config_error(q.what + " " + why + "; allowed: keys that keep every dataset's shape");
   }
   TempFile temp(temp_name(out));
@@ -320,7 +345,12 @@ void stack_results(const StackRequest& q, const std::string& out) {
   {
     Hdf5Handle file = open_file(temp.path, H5F_ACC_RDWR);
     Stacker s{q, file.get(), {}};
+    for (const auto& g : per_point) {
+      check(H5Ldelete(file.get(), g.c_str(), H5P_DEFAULT) >= 0, "group " + g);
+      for (std::size_t i = 0; i < inputs.size(); ++i) copy_group(inputs[i].get(), g, file.get(), point_group(i) + g);
+    }
     for (const auto& path : objects(inputs[0].get(), collect_dataset)) {
+      if (per_point.count(top_group(path))) continue;
       std::vector<Data> points;
       for (const auto& in : inputs) points.push_back(read_data(in.get(), path));
       bool same = true;

@@ -121,6 +121,8 @@ SweepSection SweepSection::parse(const std::string& file, const std::vector<Swee
   return t;
 }
 
+std::string SweepSection::value_at(const KeyReader& point, const std::string& key) { return point.entry(key).value; }
+
 std::size_t SweepSection::points() const {
   if (keys.empty()) return 0;
   if (zipped) return keys.front().values.size();

@@ -42,6 +42,9 @@ struct SweepSection {
 
   // `lines` from split_sweep (file), `cli` from --sweep section.key=v1,v2 (command line); `base` is
   // the study without [sweep], whose key table the swept keys must belong to.
+  // The canonical text of swept key `key` in the study of a point (the value its axis shows).
+  static std::string value_at(const KeyReader& point, const std::string& key);
+
   static SweepSection parse(const std::string& file, const std::vector<SweepLine>& lines,
                             const std::vector<std::string>& cli, const KeyReader& base);
 };
