@@ -111,6 +111,12 @@ def build_parser():
     n.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
     n.add_argument("--fmax", type=frequency, default=5000.0, help="highest frequency drawn (Hz; default 5000)")
     n.add_argument("--column", help="PSD column of a measured CSV that has several (default: psd, or its only one)")
+    w = writer(sub, "sweep", "a sweep result: band levels against the swept value, and PSDs of points overlaid",
+               PICTURES, "output picture: .png, .pdf or .svg")
+    w.add_argument("result", help="rollspec result file of a sweep (HDF5 with /sweep)")
+    w.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
+    w.add_argument("--points", nargs="+", type=int, metavar="I",
+                   help="indices along the first swept key whose PSDs are overlaid (default: all)")
     r = writer(sub, "report", "one self-contained HTML page: key figures, PSD, provenance, study", None, "output HTML")
     r.add_argument("result", help="rollspec result file (HDF5)")
     r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
@@ -204,6 +210,9 @@ def render(args, kind):
     elif args.command == "panels":
         from .panels_plot import plot_panels
         plot_panels(args.panels, buf, args.fmax, args.sensor, kind=kind, column=args.column)
+    elif args.command == "sweep":
+        from .sweep_plot import plot_sweep
+        plot_sweep(args.result, buf, args.sensor, args.points, kind=kind)
     elif args.command == "report":
         from .report_page import report_html
         return report_html(args.result, args.measurement, args.sensor, args.fmin, args.fmax, args.column,

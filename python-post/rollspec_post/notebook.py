@@ -40,14 +40,21 @@ def engine_binary():
     raise PostError("no rollspec binary: set ROLLSPEC_BIN, put rollspec on PATH or build this checkout", EX_NOINPUT)
 
 
-def run(study, out, set=None, quiet=True):  # noqa: A002 (the engine's own word for it)
-    """Runs `rollspec run STUDY --out OUT --set k=v ...` and returns open_result(OUT). A refused or
-    failed run raises PostError with the engine's message and exit code."""
+def run(study, out, set=None, quiet=True, sweep=None):  # noqa: A002 (the engine's own word for it)
+    """Runs `rollspec run STUDY --out OUT --set k=v ... --sweep k=v1,v2 ...` and returns open_result(OUT).
+    `sweep`: {"ball.speed": [1, 2, 3]} runs one point per value (added to the study's [sweep]). A
+    refused or failed run raises PostError with the engine's message and exit code."""
     args = [engine_binary(), "run", str(study), "--out", str(out)]
     for key, value in (set or {}).items():
         if "=" in str(key) or "\n" in f"{key}{value}":
             raise PostError(f"set: key {key!r} = {value!r}: allowed: section.key and a one-line value", EX_USAGE)
         args += ["--set", f"{key}={value}"]
+    for key, values in (sweep or {}).items():
+        values = [values] if isinstance(values, (str, int, float)) else list(values)
+        text = ",".join(str(v) for v in values)
+        if "=" in str(key) or "\n" in f"{key}{text}" or not values:
+            raise PostError(f"sweep: key {key!r} = {values!r}: allowed: section.key and a list of values", EX_USAGE)
+        args += ["--sweep", f"{key}={text}"]
     if quiet:
         args.append("--quiet")
     r = subprocess.run(args, capture_output=True, text=True)
