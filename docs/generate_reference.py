@@ -114,6 +114,11 @@ def write_keys(binary, out):
             for key, default, meaning_, allowed, unit in keys:
                 lines.append(f"| `{key}` | {cell(code(default))} | {cell(unit)} | {cell(allowed)} | {cell(meaning_)} |")
             lines.append("")
+    lines += ["(sweep-section)=", "## `[sweep]` (every scene that runs)", "",
+              "Not a key table: its keys name other keys of the study. `mode = crossed | zipped` (default "
+              "crossed), and `section.key = v1, v2, ...` for each swept key (each must be a key of the scene "
+              "above; each value is checked as that key's value). `rollspec run` and `rollspec plan` take "
+              "`--sweep section.key=v1,v2,...` too. See the how-to *Sweeping a study key*.", ""]
     (out / "keys.md").write_text("\n".join(lines))
 
 
