@@ -182,3 +182,36 @@ def test_shape_changing_key_is_refused_naming_it(small_study, tmp_path):
     assert not out.exists()
     # refused at the second point, before the third ran
     assert not (tmp_path / "x.h5.sweep" / "point_0002.h5").exists()
+
+
+def test_speed_sweep_keeps_grids_that_follow_the_speed_per_point(tmp_path):
+    # The roughness diagnostics' wavenumber grid follows the record length, so the speed: that group is
+    # kept per point, while /psd and /bands stack; every point still equals its single run.
+    from conftest import SOURCE
+    study = SOURCE / "studies" / "seed002-rig-1ms.ini"
+    out = tmp_path / "speeds.h5"
+    base = ["--set", "study.realisations=3", "--set", "ensemble.chunk_size=4"]
+    r = run(["run", study, "--out", out, "--quiet", "--sweep", "ball.speed=1,3", *base])
+    assert r.returncode == 0, r.stderr
+    stacked = result_datasets(out)
+    for i, speed in enumerate(("1", "3")):
+        single_out = tmp_path / f"v{speed}.h5"
+        assert run(["run", study, "--out", single_out, "--quiet", "--set", f"ball.speed={speed}", *base]).returncode == 0
+        point = result_datasets(single_out)
+        for name, want in point.items():
+            if name.startswith("roughness/"):
+                assert_same(stacked[f"sweep/point_{i:04d}/{name}"], want, name)
+            else:
+                assert_point_equals({name: stacked[name]}, i, {name: want})
+    with h5py.File(out) as f:
+        assert "roughness" not in f
+        grids = [f[f"/sweep/point_{i:04d}/roughness/wavenumber"].shape for i in range(2)]
+        assert grids[0] != grids[1]
+        raw = f["/sweep/point_0001/roughness/psd_raw"]
+        assert list(raw.dims[0].keys()) == ["wavenumber"]
+        assert f["/bands/level_db"].shape[0] == 2
+    import xarray as xr
+    with xr.open_dataset(out, group="sweep/point_0001/roughness", engine="h5netcdf") as ds:
+        assert ds["psd_raw"].dims == ("wavenumber",)
+    with xr.open_dataset(out, group="bands", engine="h5netcdf") as ds:
+        assert list(ds["ball_speed"].values) == [1.0, 3.0] and ds["ball_speed"].attrs["units"] == "m/s"
