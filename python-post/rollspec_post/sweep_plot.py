@@ -27,9 +27,16 @@ def read_sweep(result, sensor=None):
         if mean is None:
             raise PostError(f"{result}: has no /bands/level_db", EX_DATAERR)
         axes = []
-        for dim in (mean.dims[i] for i in range(max(mean.ndim - 2, 0))):
-            scale = dim[0]
-            axes.append((scale.name.split("/")[-1], np.asarray(scale[()]), text_attr(scale, "units", "")))
+        for i in range(max(mean.ndim - 2, 0)):
+            if len(mean.dims[i]) == 0:
+                raise PostError(f"{result}: axis {i} of /bands/level_db has no dimension scale (a sweep axis names "
+                                "its key)", EX_DATAERR)
+            scale = mean.dims[i][0]
+            values = np.asarray(scale[()])
+            if values.shape != (mean.shape[i],):
+                raise PostError(f"{result}: the sweep axis {scale.name} has {values.size} values for "
+                                f"{mean.shape[i]} points", EX_DATAERR)
+            axes.append((scale.name.split("/")[-1], values, text_attr(scale, "units", "")))
         if not axes:
             raise PostError(f"{result}: /bands/level_db has no sweep axis (sensors x bands only)", EX_DATAERR)
         names = strings(f, "/bands/sensor")

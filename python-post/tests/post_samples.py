@@ -67,6 +67,25 @@ def write_result(path, scale=1.0):
     return path
 
 
+def write_sweep(path, scale=1.0):
+    """A sweep result (rollspec run with [sweep]): /psd and /bands with a leading ball_speed axis."""
+    speeds = np.array([1.0, 2.0, 3.0])
+    with _rollspec(path, "rollspec-result") as f:
+        _psd(f, scale)
+        for name in ("/psd/mean", "/bands/level_db"):
+            one = f[name][()]
+            del f[name]
+            f[name] = np.stack([one + (i if name.endswith("_db") else 0) for i in range(speeds.size)])
+        for group in ("/psd", "/bands"):
+            f[group + "/ball_speed"] = speeds
+            f[group + "/ball_speed"].attrs["units"] = "m/s"
+            f[group + "/ball_speed"].make_scale("ball_speed")
+        f["/psd/mean"].dims[0].attach_scale(f["/psd/ball_speed"])
+        f["/bands/level_db"].dims[0].attach_scale(f["/bands/ball_speed"])
+        f.create_group("/sweep").attrs["mode"] = "crossed"
+    return path
+
+
 def write_texture(path, scale=1.0):
     x = np.linspace(0.0, 0.01, 256)
     k = np.logspace(2, 5, 100)
@@ -100,15 +119,16 @@ def write_measurement(path):
     return path
 
 
-WRITERS = {"result": write_result, "texture": write_texture, "stiffness": write_stiffness, "bench": write_bench}
+WRITERS = {"result": write_result, "texture": write_texture, "stiffness": write_stiffness, "bench": write_bench,
+           "sweep": write_sweep}
 # the primary input of each subcommand (a new subcommand needs an entry here: the fault test says so)
 PRIMARY = {"psd": "result", "texture": "texture", "stiffness": "stiffness", "trajectory": "result",
-           "roughness": "result", "bench": "bench", "panels": "result", "report": "result"}
-SUFFIX = {"result": ".h5", "texture": ".h5", "stiffness": ".h5", "bench": ".csv"}
+           "roughness": "result", "bench": "bench", "panels": "result", "report": "result", "sweep": "sweep"}
+SUFFIX = {"result": ".h5", "texture": ".h5", "stiffness": ".h5", "bench": ".csv", "sweep": ".h5"}
 # what each subcommand's missing item is: (object, attribute or None for the whole dataset)
 MISSING = {"psd": ("/psd", "realisations"), "report": ("/psd", "realisations"), "panels": ("/psd", "realisations"),
            "roughness": ("/roughness", "contact_half_width"), "trajectory": ("/time_history/time", None),
-           "texture": ("/texture/x", None), "stiffness": ("/stiffness", "ball_radius")}
+           "texture": ("/texture/x", None), "stiffness": ("/stiffness", "ball_radius"), "sweep": ("/sweep", None)}
 
 
 def command_args(command, primary, measurement):
