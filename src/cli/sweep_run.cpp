@@ -129,7 +129,7 @@ std::string SweepStudy::label(std::size_t i) const {
 
 study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets) {
   StudyArgs a{file, sets, read_text(file)};
-  if (study::split_sweep(a.text).empty()) return study::Study::load(file, sets, scenes::schema_for);
+  if (study::split_sweep(file, a.text).empty()) return study::Study::load(file, sets, scenes::schema_for);
   return point_study(a);
 }
 
@@ -145,7 +145,7 @@ std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<st
   }
   SweepStudy s{args, {}, {}};
   s.args.text = read_text(args.file);
-  const std::vector<study::SweepLine> lines = study::split_sweep(s.args.text);
+  const std::vector<study::SweepLine> lines = study::split_sweep(args.file, s.args.text);
   if (lines.empty() && sweeps.empty()) {
     if (s.args.text.find("[sweep]") == std::string::npos) return std::nullopt;
   }

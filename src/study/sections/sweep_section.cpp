@@ -59,7 +59,7 @@ SweptKey swept_key(const std::string& file, const SweepLine& l, const KeyReader&
 
 }  // namespace
 
-std::vector<SweepLine> split_sweep(std::string& text) {
+std::vector<SweepLine> split_sweep(const std::string& file, std::string& text) {
   std::vector<SweepLine> out;
   std::istringstream in(text);
   std::string raw, kept, section;
@@ -77,7 +77,7 @@ std::vector<SweepLine> split_sweep(std::string& text) {
     const auto eq = s.find('=');
     if (s.empty() || s[0] == ';' || s[0] == '[' || eq == std::string::npos) {
       if (!s.empty() && s[0] != ';' && s[0] != '[')
-        throw config_error("line " + std::to_string(line) + ": cannot read '" + clip(s) +
+        throw config_error(file + ":" + std::to_string(line) + ": cannot read '" + clip(s) +
                            "' in [sweep]; expected section.key = v1, v2, ...");
       continue;
     }

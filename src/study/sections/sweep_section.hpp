@@ -51,6 +51,6 @@ struct SweepSection {
 
 // Takes the [sweep] section out of a study file's text: its lines become blank (so every other
 // line keeps its number) and are returned.
-std::vector<SweepLine> split_sweep(std::string& text);
+std::vector<SweepLine> split_sweep(const std::string& file, std::string& text);
 
 }  // namespace rollspec::study
