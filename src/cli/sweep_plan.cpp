@@ -1,6 +1,7 @@
 // rollspec plan of a sweep: the points, each point's stages (a table every point needs appears
 // under the same name and status at each, and is built once: cached tables are keyed by their
 // inputs' hash), and with --probe the time of the whole sweep.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -35,6 +36,7 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
             << " point" << (n == 1 ? "" : "s") << ", every point with the study's seed (common random numbers)\n";
   for (std::size_t i = 0; i < n; ++i) std::cout << "  point " << i + 1 << ": " << sweep.label(i) << "\n";
   std::vector<scenes::StagePlan> first;
+  std::vector<std::pair<std::string, std::string>> tables;  // (stage: reason, points) in first-seen order
   double total = 0;
   bool probed = probe;
   for (std::size_t i = 0; i < n; ++i) {
@@ -54,12 +56,22 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
         std::printf("  %-16s %-8s %s\n", p.stage.c_str(), scenes::status_name(p.status), p.reason.c_str());
     }
     if (i == 0) first = stages;
+    for (const auto& p : stages) {
+      if (p.stage.find("table") == std::string::npos || p.status == scenes::StageStatus::skipped) continue;
+      const std::string what = p.stage + ": " + p.reason;
+      auto it = std::find_if(tables.begin(), tables.end(), [&](const auto& t) { return t.first == what; });
+      if (it == tables.end()) it = tables.insert(tables.end(), {what, ""});
+      it->second += (it->second.empty() ? "" : ", ") + std::to_string(i + 1);
+    }
     if (probe && probed) {
       const double t = probe_point(s, *scene, stages);
       probed = t >= 0;
       total += t;
     }
   }
+  // Cached tables are named by the hash of their inputs: points that name the same table share one build.
+  if (!tables.empty()) std::cout << "tables (one build each, shared by the points listed):\n";
+  for (const auto& [what, points] : tables) std::cout << "  points " << points << ": " << what << "\n";
   if (!probe) return 0;
   if (!probed)
     std::cout << "run time: not probed (a point is one deterministic run, or its stage tables are not built yet)\n";

@@ -22,11 +22,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_text(const std::string& path) {
+// The study file's text, or nullopt for a file larger than any study: the loader refuses that one
+// with its own message, before reading it.
+std::optional<std::string> read_text(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw missing_input("cannot read study file '" + path + "': it is a directory; expected an INI file");
   io::require_regular_input(path, "study file");
+  constexpr std::uintmax_t kLargestStudy = 4u << 20;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (ec || bytes > kLargestStudy) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in) throw missing_input("cannot open study file '" + path + "'");
   std::ostringstream buf;
@@ -128,8 +133,9 @@ std::string SweepStudy::label(std::size_t i) const {
 }
 
 study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets) {
-  StudyArgs a{file, sets, read_text(file)};
-  if (study::split_sweep(file, a.text).empty()) return study::Study::load(file, sets, scenes::schema_for);
+  const auto text = read_text(file);
+  StudyArgs a{file, sets, text.value_or("")};
+  if (!text || study::split_sweep(file, a.text).empty()) return study::Study::load(file, sets, scenes::schema_for);
   return point_study(a);
 }
 
@@ -144,7 +150,9 @@ std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<st
     return std::nullopt;
   }
   SweepStudy s{args, {}, {}};
-  s.args.text = read_text(args.file);
+  const auto text = read_text(args.file);
+  if (!text) return std::nullopt;  // too large for a study: the ordinary loader refuses it
+  s.args.text = *text;
   const std::vector<study::SweepLine> lines = study::split_sweep(args.file, s.args.text);
   if (lines.empty() && sweeps.empty()) {
     if (s.args.text.find("[sweep]") == std::string::npos) return std::nullopt;
