@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 #include "src/error.hpp"
@@ -148,6 +149,34 @@ herr_t attribute_name(hid_t, const char* name, const H5A_info_t*, void* out) {
   return 0;
 }
 
+// One scalar attribute of one input: a number, a text, absent (NaN / ""), or something else.
+struct AttributeValue {
+  enum Kind { absent, is_number, is_text, other } kind = absent;
+  double number = std::numeric_limits<double>::quiet_NaN();
+  std::string text;
+};
+
+AttributeValue read_attribute(hid_t file, const std::string& object, const std::string& name) {
+  AttributeValue v;
+  if (H5Aexists_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return v;
+  Hdf5Handle a(H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+  Hdf5Handle type(H5Aget_type(a.get())), space(H5Aget_space(a.get()));
+  const H5T_class_t c = H5Tget_class(type.get());
+  v.kind = AttributeValue::other;
+  if (H5Sget_simple_extent_npoints(space.get()) != 1) return v;
+  if (c == H5T_FLOAT || c == H5T_INTEGER) {
+    if (H5Aread(a.get(), H5T_NATIVE_DOUBLE, &v.number) >= 0) v.kind = AttributeValue::is_number;
+  } else if (c == H5T_STRING && H5Tis_variable_str(type.get()) > 0) {
+    char* p = nullptr;
+    if (H5Aread(a.get(), type.get(), &p) >= 0) v.kind = AttributeValue::is_text, v.text = p ? p : "";
+    H5Dvlen_reclaim(type.get(), space.get(), H5P_DEFAULT, &p);
+  } else if (c == H5T_STRING) {
+    std::vector<char> buf(H5Tget_size(type.get()) + 1, '\0');
+    if (H5Aread(a.get(), type.get(), buf.data()) >= 0) v.kind = AttributeValue::is_text, v.text = buf.data();
+  }
+  return v;
+}
+
 herr_t first_scale(hid_t, unsigned, hid_t scale, void* out) {
   char name[1024] = {0};
   H5Iget_name(scale, name, sizeof name);
@@ -251,43 +280,53 @@ struct Stacker {
     }
   }
 
-  // Numeric group attributes that differ between points (a swept key echoed there) become one
-  // value per point, in point order.
+  // Group attributes that differ between points (a swept key echoed there, a warning of one point)
+  // become one value per point, in point order (a number missing at a point: NaN; a text: "").
+  // The root's texts (study, command line, creation time) are the sweep's own.
   void group_attributes(const std::vector<Hdf5Handle>& inputs) {
     auto groups = objects(file, collect_group);
     groups.insert(groups.begin(), "/");
     for (const auto& g : groups) {
+      std::set<std::string> names;
+      for (const auto& in : inputs) {
+        std::vector<std::string> here;
+        Hdf5Handle grp(H5Gopen2(in.get(), g.c_str(), H5P_DEFAULT));
+        if (grp.valid()) H5Aiterate2(grp.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, attribute_name, &here);
+        names.insert(here.begin(), here.end());
+      }
       Hdf5Handle grp(H5Gopen2(file, g.c_str(), H5P_DEFAULT));
-      std::vector<std::string> names;
-      if (!grp.valid() || H5Aiterate2(grp.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, attribute_name, &names) < 0)
-        continue;
+      if (!grp.valid()) continue;
       for (const auto& name : names) point_attribute(grp.get(), g, name, inputs);
     }
   }
 
   void point_attribute(hid_t grp, const std::string& g, const std::string& name,
                        const std::vector<Hdf5Handle>& inputs) {
-    {
-      Hdf5Handle a(H5Aopen(grp, name.c_str(), H5P_DEFAULT));
-      Hdf5Handle type(H5Aget_type(a.get())), space(H5Aget_space(a.get()));
-      const H5T_class_t c = H5Tget_class(type.get());
-      if (H5Sget_simple_extent_npoints(space.get()) != 1 || (c != H5T_FLOAT && c != H5T_INTEGER)) return;
-    }
-    std::vector<double> values;
+    std::vector<double> numbers;
+    std::vector<std::string> texts;
+    bool numeric = true, text = true;
     for (const auto& in : inputs) {
-      double v = 0;
-      Hdf5Handle b(H5Aopen_by_name(in.get(), g.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
-      if (b.valid()) H5Aread(b.get(), H5T_NATIVE_DOUBLE, &v);
-      values.push_back(v);
+      const AttributeValue v = read_attribute(in.get(), g, name);
+      numeric = numeric && v.kind != AttributeValue::is_text && v.kind != AttributeValue::other;
+      text = text && v.kind != AttributeValue::is_number && v.kind != AttributeValue::other;
+      numbers.push_back(v.number);
+      texts.push_back(v.text);
     }
     bool same = true;
-    for (const double v : values) same = same && std::memcmp(&v, values.data(), sizeof v) == 0;
-    if (same) return;
-    H5Adelete(grp, name.c_str());
-    const hsize_t n = values.size();
+    for (std::size_t i = 1; i < inputs.size(); ++i)
+      same = same && texts[i] == texts[0] && std::memcmp(&numbers[i], &numbers[0], sizeof(double)) == 0;
+    if (same || (!numeric && !text) || (text && g == "/")) return;
+    if (H5Aexists(grp, name.c_str()) > 0) H5Adelete(grp, name.c_str());
+    const hsize_t n = inputs.size();
     Hdf5Handle s(H5Screate_simple(1, &n, nullptr));
-    Hdf5Handle b(H5Acreate2(grp, name.c_str(), H5T_IEEE_F64LE, s.get(), H5P_DEFAULT, H5P_DEFAULT));
-    check(b.valid() && H5Awrite(b.get(), H5T_NATIVE_DOUBLE, values.data()) >= 0, g + "@" + name);
+    Hdf5Handle type(numeric ? H5Tcopy(H5T_IEEE_F64LE) : H5Tcopy(H5T_C_S1));
+    if (!numeric) H5Tset_size(type.get(), H5T_VARIABLE);
+    Hdf5Handle b(H5Acreate2(grp, name.c_str(), type.get(), s.get(), H5P_DEFAULT, H5P_DEFAULT));
+    std::vector<const char*> ptrs;
+    for (const auto& t : texts) ptrs.push_back(t.c_str());
+    const herr_t w =
+        numeric ? H5Awrite(b.get(), H5T_NATIVE_DOUBLE, numbers.data()) : H5Awrite(b.get(), type.get(), ptrs.data());
+    check(b.valid() && w >= 0, g + "@" + name);
   }
 
   void sweep_group() {
