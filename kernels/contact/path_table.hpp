@@ -13,12 +13,13 @@
 //
 // (the solver clips the start to [0, H]). The first position of a chunk starts its lowest approach
 // cold (coarse start, README Eq. 16). The cut depends on chunk_positions alone: the same bits for
-// any thread count. The start changes only the iteration count (every solve runs to the stopping
-// rule, README Eq. 9), and little: on the seed 002 rig (20 -> 20.5 mm, 370 solves) 33.2 CG
-// iterations per solve from PT-1, 35.6 from the approach below alone, 38.2 along the path (BF-6),
-// 33.1 cold (plus the coarse start's) — the same CPU time within the machine's noise. The contact
-// set of the next approach differs from the start's where the new ring of contact forms; an exact
-// start perturbed by 1e-6 still takes 4–7 iterations to 1e-8.
+// any thread count (the engine names the start and the cut among a cached table's inputs). The
+// start changes only the iteration count (every solve runs to the stopping rule, README Eq. 9), and
+// little: on the seed 002 rig (20 -> 20.5 mm, 370 solves) 33.2 CG iterations per solve from PT-1,
+// 35.6 from the approach below alone, 38.2 along the path (BF-6), 33.1 cold (plus the coarse
+// start's) — the same CPU time within the machine's noise. The contact set of the next approach
+// differs from the start's where the new ring of contact forms; an exact start perturbed by 1e-6
+// still takes 4–7 iterations to 1e-8.
 // The interpolation (B44–B45) lives in kernels/beam/path_contact_table.hpp.
 #include <cstddef>
 #include <functional>

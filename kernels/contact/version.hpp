@@ -9,8 +9,6 @@ namespace rollspec::contact {
 // stopping rule, other last bits. 4: open padding to the smallest 2^a 3^b 5^c 7^d >= 2n - 1 (README
 // Eq. 3) instead of 2n: the same sums, other last bits. 5: displacement control's products on A and
 // E on the box that holds them (Eq. 3c), the frozen-set CG from a given rate (Eq. 11a), chunked paths.
-// 6: the path table in chunks of positions, each position's approaches started from the ones below
-// (path_table.hpp PT-1): the same solutions to the stopping rule, other last bits.
-inline constexpr int kernel_version = 6;
+inline constexpr int kernel_version = 5;
 
 }  // namespace rollspec::contact

@@ -111,8 +111,11 @@ std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
      << "\napproaches = " << g.approaches << "\nreach = " << io::exact_text(kReach)
-     << "\ntop_force = " << io::exact_text(contact::PathTableOptions{}.top_force)
-     << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
+     << "\ntop_force = " << io::exact_text(contact::PathTableOptions{}.top_force) << "\nmax_approaches = "
+     << contact::PathTableOptions{}.max_approaches
+     // PT-1: the starts and the chunks of positions set the last bits of the table's values.
+     << "\nstart = approach below, extrapolated (PT-1)\nchunk_positions = "
+     << contact::PathTableOptions{}.chunk_positions << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }

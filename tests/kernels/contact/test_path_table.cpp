@@ -37,6 +37,7 @@ TEST_CASE("path table: the same bits on 1 and 2 threads, every entry the whole-s
   PathTableOptions po;
   po.approaches = 4;
   po.max_approaches = 8;
+  po.chunk_positions = 2;  // three chunks: the threads share them (PT-1)
   std::vector<PathTable> t;
   for (int threads : {1, 2}) {
     const int before = omp_get_max_threads();
