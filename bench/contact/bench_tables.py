@@ -15,7 +15,8 @@ every run):
 Wall seconds by the clock, CPU seconds from the children's rusage; ratio = reference / current
 (above 1: the current build is faster). "max rel diff" compares every float column of the two
 builds' tables (first run of each), relative to the column's largest magnitude; "repeat bits"
-says whether every run of a build wrote the same table bits.
+says whether every run of a build wrote the same table bits; "estimate / measured CPU" is the
+table's "build about X s CPU" (the same figure `rollspec plan` shows) over the whole command's CPU.
 """
 import argparse
 import glob
@@ -86,7 +87,10 @@ def run_once(binary, kind, threads):
             if a.dtype.kind == "f" and name not in ("kernel_version", "schema_version"):
                 columns["@" + name] = a.copy()
     shutil.rmtree(work)
-    return {"wall": wall, "cpu": cpu, "iterations": iterations_per_position(kind, r.stderr), "columns": columns}
+    est = re.search(r"build about ([\d.e+]+) s CPU, ([\d.e+]+) s wall", r.stderr)
+    return {"wall": wall, "cpu": cpu, "iterations": iterations_per_position(kind, r.stderr), "columns": columns,
+            "estimate_cpu": float(est.group(1)) if est else float("nan"),
+            "estimate_wall": float(est.group(2)) if est else float("nan")}
 
 
 def max_rel_diff(a, b):
@@ -132,10 +136,9 @@ def main():
     load = os.getloadavg()
     summary = {"reference": o.reference, "current": o.current, "threads": o.threads, "repeats": o.repeats,
                "load_average_at_end": load, "kinds": {}}
-    lines = [f"Seed 002 rig tables, OMP_NUM_THREADS={o.threads}, {o.repeats} interleaved runs per build, medians "
-             f"(load average at the end {load[0]:.1f} / {load[1]:.1f} / {load[2]:.1f})", "",
-             "| table | reference wall / CPU (s) | current wall / CPU (s) | ratio wall / CPU | iterations per position ref / cur | max rel diff | repeat bits ref / cur |",
-             "|---|---|---|---|---|---|---|"]
+    lines = [f"Seed 002 rig tables, OMP_NUM_THREADS={o.threads}, {o.repeats} interleaved runs per build, medians", "",
+             "| table | reference wall / CPU (s) | current wall / CPU (s) | ratio wall / CPU | iterations per position ref / cur | max rel diff | repeat bits ref / cur | estimate / measured CPU (current) |",
+             "|---|---|---|---|---|---|---|---|"]
     for k in kinds:
         med = {b: {q: statistics.median(r[q] for r in runs[k][b]) for q in ("wall", "cpu")} for b in builds}
         diff, column = max_rel_diff(runs[k]["current"][0]["columns"], runs[k]["reference"][0]["columns"])
@@ -144,12 +147,16 @@ def main():
                "iterations": {b: runs[k][b][0]["iterations"] for b in builds}, "max_rel_diff": diff,
                "max_rel_diff_column": column,
                "repeat_bits": {b: same_bits(runs[k][b]) for b in builds},
-               "runs": {b: [{q: r[q] for q in ("wall", "cpu", "iterations")} for r in runs[k][b]] for b in builds}}
+               "estimate_ratio_cpu": runs[k]["current"][0]["estimate_cpu"] / med["current"]["cpu"],
+               "runs": {b: [{q: r[q] for q in ("wall", "cpu", "iterations", "estimate_cpu", "estimate_wall")}
+                            for r in runs[k][b]] for b in builds}}
         summary["kinds"][k] = row
         lines.append(f"| {k} | {med['reference']['wall']:.1f} / {med['reference']['cpu']:.1f} | "
                      f"{med['current']['wall']:.1f} / {med['current']['cpu']:.1f} | {row['ratio_wall']:.2f} / "
                      f"{row['ratio_cpu']:.2f} | {row['iterations']['reference']} / {row['iterations']['current']} | "
-                     f"{diff:.2e} ({column}) | {row['repeat_bits']['reference']} / {row['repeat_bits']['current']} |")
+                     f"{diff:.2e} ({column}) | {row['repeat_bits']['reference']} / {row['repeat_bits']['current']} | "
+                     f"{runs[k]['current'][0]['estimate_cpu']:.3g} / {med['current']['cpu']:.3g} = "
+                     f"{row['estimate_ratio_cpu']:.2f} |")
     text = "\n".join(lines)
     print(text)
     if o.json:

@@ -100,6 +100,10 @@ class PathRunner {
             store->rate[k].clear();
         }
       }
+      if (popt_.on_chunk) {
+#pragma omp critical(blocked_force_progress)
+        popt_.on_chunk(k1 - k0, count);
+      }
     };
     const std::size_t chunk = popt_.chunk_positions == 0 ? count : std::min(count, popt_.chunk_positions);
     const std::size_t chunks = (count + chunk - 1) / chunk;

@@ -122,6 +122,10 @@ struct BlockedForceOptions {
   // error |F̄ − W| / W: a search can take many seconds, and its caller shows progress. No effect
   // on the result.
   std::function<void(const BlockedForcePath& path, double load_error)> on_path;
+  // Called after every chunk of positions of every path (BF-6c; the whole path when unchunked), one
+  // call at a time from the thread that ran it: that chunk's positions and the path's length.
+  // Progress only: no effect on the result.
+  std::function<void(std::size_t positions, std::size_t path_positions)> on_chunk;
 };
 
 struct BlockedForcePath {

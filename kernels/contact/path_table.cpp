@@ -6,7 +6,12 @@
 #include <limits>
 #include <stdexcept>
 
-#include "kernels/contact/blocked_force.hpp"
+#include "kernels/contact/chunk_loop.hpp"
+#include "kernels/contact/path_window.hpp"
+
+#include <omp.h>
+
+#include <memory>
 
 namespace rollspec::contact {
 
@@ -16,6 +21,76 @@ namespace {
 double ball_height(double r2, double radius, BallShape shape) {
   if (shape == BallShape::Paraboloid) return r2 / (2.0 * radius);
   return r2 < radius * radius ? r2 / (radius + std::sqrt(radius * radius - r2)) : radius;
+}
+
+// The rows `d` (increasing) of the table over every position (PT-1): force at [r · N + k].
+struct Rows {
+  std::vector<double> approach, force;
+  int solves = 0, iterations = 0;
+  double max_error = 0.0;
+  bool converged = true;
+};
+
+Rows path_rows(const PathWindow& win, const Grid& window, double e_star, const std::vector<double>& d,
+               const SolverOptions& opt, const PathTableOptions& po) {
+  const std::size_t nk = win.size(), nj = d.size(), n = window.size();
+  Rows out;
+  out.approach = d;
+  out.force.assign(nj * nk, 0.0);
+  if (nj == 0) return out;
+  std::vector<ContactResult> results(nj * nk);
+  const std::size_t chunk = po.chunk_positions == 0 ? nk : std::min(nk, po.chunk_positions);
+  const std::size_t chunks = (nk + chunk - 1) / chunk;
+  const int threads = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(chunks)));
+  // One solver per thread, made outside the parallel region; a solve depends on its inputs only.
+  std::vector<std::unique_ptr<ContactSolver>> solvers;
+  for (int i = 0; i < threads; ++i) solvers.push_back(std::make_unique<ContactSolver>(window, e_star));
+  std::size_t done = 0;
+  detail::for_each_chunk(chunks, threads, [&](std::size_t c, int thread) {
+    ContactSolver& s = *solvers[static_cast<std::size_t>(thread)];
+    const std::size_t k0 = c * chunk, k1 = std::min(nk, k0 + chunk);
+    std::vector<std::vector<double>> fields(nj);  // each row's last field in this chunk
+    std::vector<double> p;
+    int solves = 0, iterations = 0;
+    for (std::size_t k = k0; k < k1; ++k) {
+      const std::vector<double> gap = win.gap(k);
+      for (std::size_t j = 0; j < nj; ++j) {
+        if (po.start == PathTableStart::Cold || (k == k0 && (j == 0 || po.start == PathTableStart::Position))) {
+          p.assign(n, 0.0);
+        } else if (po.start == PathTableStart::Approach && j > 0) {
+          p = fields[j - 1];  // PT-1: the approach below, this position
+          if (j > 1) {        // PT-1: extrapolated along the two approaches below
+            const double f = (d[j] - d[j - 1]) / (d[j - 1] - d[j - 2]);
+            for (std::size_t i = 0; i < n; ++i) p[i] += f * (fields[j - 1][i] - fields[j - 2][i]);
+          }
+        } else {
+          p = fields[j];  // BF-6: this approach, the previous position, shifted with the ball
+          win.shift_field(p, win.ball_shift(k));
+        }
+        ContactResult& r = results[j * nk + k];
+        r = s.solve(gap, d[j], p, opt);
+        fields[j] = p;
+        ++solves;
+        iterations += r.iterations;
+      }
+    }
+    if (po.on_chunk) {
+#pragma omp critical(path_table_progress)
+      {
+        done += k1 - k0;
+        po.on_chunk(nj, done, solves, iterations);
+      }
+    }
+  });
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const ContactResult& r = results[i];
+    out.force[i] = r.force;
+    ++out.solves;
+    out.iterations += r.iterations;
+    out.max_error = std::max(out.max_error, r.error);
+    out.converged = out.converged && r.converged;
+  }
+  return out;
 }
 
 }  // namespace
@@ -78,53 +153,31 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
   const std::size_t nk = positions.size();
   SolverOptions opt = options;
   opt.compute_stiffness = false;
-  BlockedForceOptions bo;
-  bo.centre_y = path_options.centre_y;
-  // One approach per thread (each its own solver; the product inside runs on that thread alone).
-  // The rows' numbers do not depend on which thread ran them. `strict`: a refused row (BF-5) is an
-  // error; otherwise it and the rows above it are dropped (the extension of B43a stops there).
-  const auto run_rows = [&](const std::vector<double>& d, bool strict) {
-    std::vector<BlockedForcePath> rows(d.size());
-    std::vector<unsigned char> refused(d.size(), 0);
-    std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::ptrdiff_t j = static_cast<std::ptrdiff_t>(d.size()) - 1; j >= 0; --j) {
-      const auto u = static_cast<std::size_t>(j);
-      try {
-        ContactSolver solver(window, e_star);
-        rows[u] = blocked_force_path(solver, strip, heights, radius, shape, positions, d[u], opt, bo);
-        if (path_options.on_row) {
-#pragma omp critical(path_table_progress)
-          path_options.on_row(d[u], rows[u].solves, rows[u].iterations);
-        }
-      } catch (const std::invalid_argument&) {
-        if (strict) {
-#pragma omp critical(path_table_error)
-          if (!error) error = std::current_exception();
-        }
-        refused[u] = 1;
-      } catch (...) {
-#pragma omp critical(path_table_error)
-        if (!error) error = std::current_exception();
-      }
-    }
-    if (error) std::rethrow_exception(error);
-    const auto first_refused = static_cast<std::size_t>(std::find(refused.begin(), refused.end(), 1) - refused.begin());
-    rows.resize(first_refused);
-    return rows;
+  const PathWindow win(window, strip, heights, radius, shape, positions, path_options.centre_y, "blocked_force");
+  // `strict`: a row beyond the window's limit (BF-5) is an error; otherwise it and the rows above it
+  // are dropped (the extension of B43a stops there).
+  const auto run_rows = [&](std::vector<double> d, bool strict) {
+    std::size_t limiting = 0;
+    const double cap = win.max_approach(&limiting);
+    const auto first_refused =
+        static_cast<std::size_t>(std::find_if(d.begin(), d.end(), [&](double a) { return a > cap; }) - d.begin());
+    if (strict && first_refused < d.size()) win.reject(limiting, d[first_refused]);
+    d.resize(first_refused);
+    return path_rows(win, window, e_star, d, opt, path_options);
   };
   t.converged = true;
   // Appends rows (B44: P non-decreasing in δ by a running maximum that acts at the solver's
   // tolerance only; 0 at or below first contact) and sets top_force = min_k P(δ_last, ξ_k) / W.
-  const auto append = [&](const std::vector<BlockedForcePath>& rows) {
-    for (const BlockedForcePath& r : rows) {
+  const auto append = [&](const Rows& rows) {
+    t.solves += rows.solves;
+    t.iterations += rows.iterations;
+    t.max_error = std::max(t.max_error, rows.max_error);
+    t.converged = t.converged && rows.converged;
+    for (std::size_t r = 0; r < rows.approach.size(); ++r) {
       const std::size_t j = t.force.size() / nk;
-      t.solves += r.solves;
-      t.iterations += r.iterations;
-      t.max_error = std::max(t.max_error, r.max_error);
-      t.converged = t.converged && r.converged;
       for (std::size_t k = 0; k < nk; ++k) {
-        double p = r.approach > t.first_contact[k] ? std::max(r.force[k], 0.0) : 0.0;
+        const double f = rows.force[r * nk + k];
+        double p = rows.approach[r] > t.first_contact[k] ? std::max(f, 0.0) : 0.0;
         if (j > 0) p = std::max(p, t.force[(j - 1) * nk + k]);
         t.force.push_back(p);
       }
@@ -141,10 +194,10 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
     std::vector<double> more;
     for (std::size_t i = 0; i < batch && t.approach.size() + more.size() < path_options.max_approaches; ++i)
       more.push_back(t.approach.back() + spacing * static_cast<double>(i + 1));
-    const std::vector<BlockedForcePath> rows = run_rows(more, false);
-    for (const BlockedForcePath& r : rows) t.approach.push_back(r.approach);
+    const Rows rows = run_rows(more, false);
+    for (double a : rows.approach) t.approach.push_back(a);
     append(rows);
-    if (rows.size() < more.size()) break;  // the window holds no more (BF-5)
+    if (rows.approach.size() < more.size()) break;  // the window holds no more (BF-5)
   }
   return t;
 }

@@ -2,9 +2,24 @@
 // Path table P(δ, ξ) of one rough strip (kernels/beam README B41–B43, issue 19 item 2): the force
 // of the half-space contact solve at rigid approach δ (from the strip's mean plane, BF-1/BF-2) with
 // the ball centred at ξ on the strip, on a grid of J approaches × N positions, and the exact
-// first-contact approach δ_c(ξ_k) (B42). Each approach is one blocked-force path
-// (blocked_force.hpp: moving window BF-5, warm start BF-6); the approaches are independent and run
-// one per OpenMP thread, each on its own solver, so the table has the same bits for any thread count.
+// first-contact approach δ_c(ξ_k) (B42). The solves run on the blocked force's moving window
+// (blocked_force.hpp BF-5), position by position in fixed chunks of positions (one solver per OpenMP
+// thread); at each position the approaches in increasing order, each started from the ones below
+// it, extrapolated linearly (PT-1), the lowest from the previous position's lowest shifted with the
+// ball (BF-6):
+//
+//     p^(j, k, start) = p^(j−1, k) + (δ_j − δ_{j−1}) / (δ_{j−1} − δ_{j−2}) (p^(j−1, k) − p^(j−2, k)),
+//     p^(1, k, start) = p^(0, k),   p^(0, k, start) = p^(0, k−1)[ix − σ_k, iy]              (PT-1)
+//
+// (the solver clips the start to [0, H]). The first position of a chunk starts its lowest approach
+// cold (coarse start, README Eq. 16). The cut depends on chunk_positions alone: the same bits for
+// any thread count (the engine names the start and the cut among a cached table's inputs). The
+// start changes only the iteration count (every solve runs to the stopping rule, README Eq. 9), and
+// little: on the seed 002 rig (20 -> 20.5 mm, 370 solves) 33.2 CG iterations per solve from PT-1,
+// 35.6 from the approach below alone, 38.2 along the path (BF-6), 33.1 cold (plus the coarse
+// start's) — the same CPU time within the machine's noise. The contact set of the next approach
+// differs from the start's where the new ring of contact forms; an exact start perturbed by 1e-6
+// still takes 4–7 iterations to 1e-8.
 // The interpolation (B44–B45) lives in kernels/beam/path_contact_table.hpp.
 #include <cstddef>
 #include <functional>
@@ -16,6 +31,12 @@
 
 namespace rollspec::contact {
 
+enum class PathTableStart {
+  Approach,  // PT-1: from the approach below at the same position (the default)
+  Position,  // every approach along the path on its own: the previous position's field shifted (BF-6)
+  Cold,      // every solve cold (reference)
+};
+
 struct PathTableOptions {
   std::size_t approaches = 8;  // J (B43), 2 or more
   double reach = 3.0;          // δ_hi = max_k δ_c + reach · δ_H (B43)
@@ -25,10 +46,12 @@ struct PathTableOptions {
   // solver window cannot hold (BF-5) ends the extension.
   double top_force = 5.0;
   std::size_t max_approaches = 24;
-  // Called after each row (one approach over every position) is done, from the thread that ran it,
-  // one call at a time: the approach, that row's solves and CG iterations. Progress only: no effect
-  // on the table.
-  std::function<void(double approach, int solves, int iterations)> on_row;
+  PathTableStart start = PathTableStart::Approach;
+  std::size_t chunk_positions = 16;  // PT-1: fixed chunks of this many positions (0: one chunk)
+  // Called after each chunk of positions is done (for every row of that pass), from the thread that
+  // ran it, one call at a time: the rows of the pass, its positions done so far, and the chunk's
+  // solves and CG iterations. Progress only: no effect on the table.
+  std::function<void(std::size_t rows, std::size_t positions_done, int solves, int iterations)> on_chunk;
 };
 
 struct PathTable {

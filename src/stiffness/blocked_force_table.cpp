@@ -7,6 +7,7 @@
 #include <ctime>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 #include "kernels/contact/blocked_force.hpp"
@@ -14,6 +15,7 @@
 #include "kernels/spectral/welch.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
@@ -95,8 +97,9 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
   contact::ContactSolver solver(window_grid, e_star);
   contact::BlockedForcePath path;
   try {
-    // The search evaluates whole paths until the mean force meets the load: one line per path
-    // (each a solve at every position, seconds on a large strip) says it is alive and converging.
+    // The search evaluates whole paths until the mean force meets the load: a bar with ETA over each
+    // path's positions (each a solve, seconds to a minute on a large strip), then one line per path
+    // saying how far its mean force is off the load.
     contact::BlockedForceOptions path_opts;
     path_opts.chunk_positions = kChunkPositions;
     int evaluated = 0;
@@ -104,8 +107,20 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
     const auto start = last;
     std::clock_t last_cpu = std::clock();
     const std::clock_t start_cpu = last_cpu;
-    if (!quiet)
+    std::unique_ptr<ensemble::Progress> bar;
+    if (!quiet) {
+      path_opts.on_chunk = [&](std::size_t done, std::size_t total) {
+        if (!bar) {
+          bar = std::make_unique<ensemble::Progress>(
+              "blocked force path " + std::to_string(evaluated + 1) + " (" + std::to_string(total) + " positions)",
+              total, quiet);
+          bar->show_after(2.0);
+        }
+        bar->advance(done);
+      };
       path_opts.on_path = [&](const contact::BlockedForcePath& p, double error) {
+        if (bar) bar->finish();
+        bar.reset();
         const auto now = std::chrono::steady_clock::now();
         const double per = 1.0 / static_cast<double>(std::max(1, p.solves));
         std::fprintf(stderr,
@@ -117,6 +132,7 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
         last = now;
         last_cpu = std::clock();
       };
+    }
     path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts,
                                           path_opts);
     if (!quiet)

@@ -73,11 +73,12 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
   // solve at a 128 window scaled with the (2 window)^2 product (measured, kernel version 5, by
   // bench/contact/bench_tables.py on studies/seed002-rig-1ms.ini, 20 -> 20.5 mm: window 200, 37
   // positions x 10 rows, 38.5 CG iterations per solve, products on the box of the contact cells:
-  // 17.4 s CPU, 47 ms per solve; this model 20 s). The rows share the threads.
+  // 17.4 s CPU, 47 ms per solve; this model 20 s). Chunks of positions (PT-1) share the threads.
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
   const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
   g.estimated_seconds = per_solve * static_cast<double>(g.positions * (g.approaches + 2));
-  g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>(g.approaches)));
+  const std::size_t chunk = contact::PathTableOptions{}.chunk_positions;
+  g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + chunk - 1) / chunk)));
   return g;
 }
 
@@ -110,8 +111,11 @@ std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
      << "\napproaches = " << g.approaches << "\nreach = " << io::exact_text(kReach)
-     << "\ntop_force = " << io::exact_text(contact::PathTableOptions{}.top_force)
-     << "\nmax_approaches = " << contact::PathTableOptions{}.max_approaches << "\n";
+     << "\ntop_force = " << io::exact_text(contact::PathTableOptions{}.top_force) << "\nmax_approaches = "
+     << contact::PathTableOptions{}.max_approaches
+     // PT-1: the starts and the chunks of positions set the last bits of the table's values.
+     << "\nstart = approach below, extrapolated (PT-1)\nchunk_positions = "
+     << contact::PathTableOptions{}.chunk_positions << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
 }
@@ -163,18 +167,26 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
   po.reach = kReach;
   if (!quiet) std::fprintf(stderr, "%spath table: %s\n", ensemble::rank_prefix().c_str(), g.describe().c_str());
   const auto start = std::chrono::steady_clock::now();
-  int rows_done = 0;
-  ensemble::Progress progress("path table rows", g.approaches, quiet);  // bar and ETA (rows may exceed it)
+  // Bar over the solves of the J rows and the two B43a usually adds (not past its total); one line
+  // per pass of rows over the path.
+  const std::size_t expected = g.positions * (g.approaches + 2);
+  ensemble::Progress progress("path table solves", expected, quiet);
   progress.show_after(2.0);
+  std::size_t solves_done = 0;
+  long pass_solves = 0, pass_iterations = 0;
   if (!quiet)
-    po.on_row = [&](double approach, int solves, int iterations) {
-      if (static_cast<std::size_t>(rows_done) < g.approaches) progress.advance();  // not past its total
-      std::fprintf(
-          stderr,
-          "%spath table: row %d of %zu or more (approach %.4g um) done, %.1f CG iterations per position, %.3g s\n",
-          ensemble::rank_prefix().c_str(), ++rows_done, g.approaches, approach * 1e6,
-          static_cast<double>(iterations) / std::max(1, solves),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    po.on_chunk = [&](std::size_t rows, std::size_t positions_done, int solves, int iterations) {
+      const std::size_t n = std::min(static_cast<std::size_t>(solves), expected - std::min(expected, solves_done));
+      solves_done += static_cast<std::size_t>(solves);
+      if (n > 0) progress.advance(n);
+      pass_solves += solves;
+      pass_iterations += iterations;
+      if (positions_done < g.positions) return;
+      std::fprintf(stderr, "%spath table: %zu rows over %zu positions done, %.1f CG iterations per solve, %.3g s\n",
+                   ensemble::rank_prefix().c_str(), rows, positions_done,
+                   static_cast<double>(pass_iterations) / static_cast<double>(std::max(1L, pass_solves)),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      pass_solves = pass_iterations = 0;
     };
   contact::PathTable t;
   try {
