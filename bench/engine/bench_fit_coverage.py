@@ -25,7 +25,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 STUDY = ROOT / "studies" / "random-oscillator.ini"
 # A fast scene: 4 s records, the bands 20 .. 200 Hz around the 50 Hz resonance.
-FAST = ["signal.duration=4", "spectrum.band_min=20", "spectrum.band_max=200"]
+FAST = ["signal.duration=4", "signal.sample_rate=1024", "spectrum.segment=2048", "spectrum.band_min=20",
+        "spectrum.band_max=200"]
 TRUTH = {"force.level": 2.0, "oscillator.damping_ratio": 0.05}
 RANGES = {"force.level": "0.1:10:log", "oscillator.damping_ratio": "0.01:0.2:log"}
 
@@ -58,7 +59,7 @@ def main():
     ap.add_argument("--experiments", type=int, default=100)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--records", type=int, default=16, help="M: realisations averaged into a measurement")
-    ap.add_argument("--realisations", type=int, default=60, help="K: realisations per fit evaluation")
+    ap.add_argument("--realisations", type=int, default=40, help="K: realisations per fit evaluation")
     ap.add_argument("--two", action="store_true", help="also fit oscillator.damping_ratio")
     a = ap.parse_args()
     keys = ["force.level"] + (["oscillator.damping_ratio"] if a.two else [])

@@ -93,13 +93,30 @@ BoxMinimum box_minimum_grid_reference(const BoxObjective& f, std::size_t n, int 
 
 double profile_end(const std::function<double(double)>& profile, double t0, double f0, double end, double rise,
                    double tolerance, int* evaluations) {
-  ++*evaluations;
-  if (profile(end) - f0 <= rise) return end;
-  double inside = t0, outside = end;  // profile(inside) - f0 <= rise < profile(outside) - f0
-  while (std::fabs(outside - inside) > tolerance) {
-    const double mid = 0.5 * (inside + outside);
+  // h(t) = sqrt(profile - f0) - sqrt(rise) is linear in t for a Gaussian likelihood: regula falsi
+  // (Illinois) on it then lands in a step or two; the bracket [inside, outside] keeps it safe.
+  const double root = std::sqrt(rise);
+  const auto h = [&](double t) {
     ++*evaluations;
-    (profile(mid) - f0 <= rise ? inside : outside) = mid;
+    return std::sqrt(std::max(profile(t) - f0, 0.0)) - root;
+  };
+  double outside = end, h_out = h(end);
+  if (h_out <= 0.0) return end;
+  double inside = t0, h_in = -root;
+  int side = 0;
+  for (int i = 0; i < 100 && std::fabs(outside - inside) > tolerance; ++i) {
+    const double t = outside - h_out * (outside - inside) / (h_out - h_in);
+    const double ht = h(t);
+    if (std::fabs(ht) < 1e-3 * root) return t;
+    if (ht > 0.0) {
+      outside = t, h_out = ht;
+      if (side == 1) h_in *= 0.5;
+      side = 1;
+    } else {
+      inside = t, h_in = ht;
+      if (side == -1) h_out *= 0.5;
+      side = -1;
+    }
   }
   return 0.5 * (inside + outside);
 }

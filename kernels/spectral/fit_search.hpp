@@ -30,7 +30,8 @@ BoxMinimum box_minimum_grid_reference(const BoxObjective& f, std::size_t n, int 
 
 // One end of the profile interval of coordinate j: `profile(t)` is the objective minimised over the
 // other coordinates with coordinate j held at t. Starting from the minimum at x_j = t0 (value f0),
-// finds t between t0 and `end` (0 or 1) where profile(t) - f0 = rise, by bisection to `tolerance`;
+// finds t between t0 and `end` (0 or 1) where profile(t) - f0 = rise (regula falsi on the square root of
+// the rise, to `tolerance` in t or 1e-3 of sqrt(rise));
 // returns `end` when profile(end) - f0 <= rise (the interval reaches the end of the range).
 double profile_end(const std::function<double(double)>& profile, double t0, double f0, double end, double rise,
                    double tolerance, int* evaluations);

@@ -46,18 +46,17 @@ struct TempDir {
 };
 
 // -ln L minimised over the other coordinates with coordinate j held at t.
-double profile_value(FitModel& model, const std::vector<double>& best, std::size_t j, double t) {
-  const std::size_t n = best.size();
+// `others` starts the search (the previous profile point's optimum) and returns this one's.
+double profile_value(FitModel& model, std::size_t n, std::size_t j, double t, std::vector<double>& others) {
   if (n == 1) return model.negative_log_likelihood({t});
-  std::vector<double> others;
-  for (std::size_t i = 0; i < n; ++i)
-    if (i != j) others.push_back(best[i]);
   const spectral::BoxObjective f = [&](const std::vector<double>& o) {
     std::vector<double> u;
     for (std::size_t i = 0, k = 0; i < n; ++i) u.push_back(i == j ? t : o[k++]);
     return model.negative_log_likelihood(u);
   };
-  return spectral::box_minimum(f, others, 0.1, kUnitTolerance, 40 * static_cast<int>(n - 1)).value;
+  const spectral::BoxMinimum m = spectral::box_minimum(f, others, 0.05, kUnitTolerance, 40 * static_cast<int>(n - 1));
+  others = m.x;
+  return m.value;
 }
 
 }  // namespace
@@ -127,8 +126,13 @@ int fit_command(const Args& args) {
   FitReport report;
   int extra = 0;
   for (std::size_t j = 0; j < n; ++j) {
-    const auto profile = [&](double t) { return profile_value(model, best.x, j, t); };
+    std::vector<double> start;
+    for (std::size_t i = 0; i < n; ++i)
+      if (i != j) start.push_back(best.x[i]);
+    std::vector<double> others = start;
+    const auto profile = [&](double t) { return profile_value(model, n, j, t, others); };
     const double lo = spectral::profile_end(profile, best.x[j], best.value, 0.0, kProfileRise, kUnitTolerance, &extra);
+    others = start;
     const double hi = spectral::profile_end(profile, best.x[j], best.value, 1.0, kProfileRise, kUnitTolerance, &extra);
     const VaryRange& v = in.vary[j];
     if (lo == 0.0 && hi == 1.0)
