@@ -110,6 +110,10 @@ int fit_command(const Args& args) {
     for (std::size_t i = 0; i + 1 < in.vary.size(); ++i)
       if (in.vary[i].key == in.vary.back().key) throw usage_error("--vary " + in.vary.back().key + " given twice");
   }
+  for (const auto& s : sets)
+    for (const auto& v : in.vary)
+      if (s.rfind(v.key + "=", 0) == 0)
+        throw usage_error("--set " + clip(s) + ": " + v.key + " is varied by --vary; allowed: one of the two");
   if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
   in.study = study, in.measurement_path = measurement, in.sensor = sensor, in.sets = sets;
   in.records = records, in.fmin = fmin, in.fmax = fmax;

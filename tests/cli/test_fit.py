@@ -71,3 +71,5 @@ def test_missing_inputs_are_refused(tmp_path, measured):
     assert r.returncode == 64 and "measured-averages" in r.stderr
     r = run(["fit", STUDY, measured, "--measured-averages", 16])
     assert r.returncode == 64 and "vary" in r.stderr
+    r = run(["fit", STUDY, measured, "--vary", "force.level=1:2", "--set", "force.level=3", "--measured-averages", 16])
+    assert r.returncode == 64 and "force.level is varied by --vary" in r.stderr
