@@ -49,7 +49,9 @@ def experiment(binary, seed, keys, records, realisations, workdir):
     out = subprocess.run([binary, "fit", STUDY, d / "m.csv", "--measured-averages", str(records), "--format", "json",
                           *[a for k in keys for a in ("--vary", f"{k}={RANGES[k]}")],
                           *sets(FAST + [f"study.realisations={realisations}"])],
-                         check=True, capture_output=True, text=True)
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        raise RuntimeError(f"fit of seed {seed} failed ({out.returncode}): {out.stderr}")
     return json.loads(out.stdout), time.time() - start
 
 
