@@ -81,10 +81,11 @@ double band_log_likelihood(const double* measured_log, const double* mean, const
   const double t2 = whitened_square(d, v, p, &log_det);
   // The covariance is estimated from K realisations (n = K - 1 dof): its inverse overstates the
   // precision by n / (n - p - 1) and the weights' noise adds (n - 1) / (n - p) to the estimate's
-  // variance (D-27b); T^2 is scaled by the inverse of both, so the profile intervals keep their level.
+  // variance (D-27b). ln L is tempered by the inverse of both: the maximum stays the Gaussian one,
+  // the profile intervals widen to keep their level.
   const double n = static_cast<double>(realisations) - 1.0, pp = static_cast<double>(p);
   if (!(n - pp - 1.0 > 0.0)) throw std::invalid_argument("band likelihood: needs K > p + 2 realisations");
-  return -0.5 * ((n - pp) * (n - pp - 1.0) / (n * (n - 1.0)) * t2 + log_det);
+  return -0.5 * (n - pp) * (n - pp - 1.0) / (n * (n - 1.0)) * (t2 + log_det);
 }
 
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,

@@ -93,7 +93,7 @@ TEST_CASE("fit likelihood: ln L of uncorrelated bands is the sum of the bands' G
     const double s = cov[b * p + b], vm = std::log1p(std::expm1(s) / M), vk = std::log1p(std::expm1(s) / 30.0);
     y[b] = std::log(mean[b]) + 0.5 * (vk - vm) + r[b];
     const double c = 26.0 * 25.0 / (29.0 * 28.0);  // (n - p)(n - p - 1) / (n (n - 1)), n = K - 1 = 29, p = 3
-    expected += -0.5 * (c * r[b] * r[b] / (vm + vk) + std::log(vm + vk));
+    expected += -0.5 * c * (r[b] * r[b] / (vm + vk) + std::log(vm + vk));
   }
   CHECK(band_log_likelihood(y.data(), mean.data(), cov.data(), p, K, M) == doctest::Approx(expected).epsilon(1e-12));
 }
