@@ -27,16 +27,9 @@ void deviation_and_covariance(const double* y, const double* mean, const double*
   }
 }
 
-}  // namespace
-
-BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
-                         std::uint64_t realisations, double records) {
-  BandTestResult r;
-  r.needed = p + kExtraRealisations;
-  if (p == 0 || realisations < r.needed) return r;
-  std::vector<double> d, v;
-  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
-  // Cholesky V = L L^T in place (lower triangle), then T^2 = |L^{-1} d|^2.
+// Cholesky V = L L^T in place (lower triangle); returns |L^{-1} d|^2 (d is overwritten) and, when
+// log_det is given, ln det V.
+double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size_t p, double* log_det) {
   for (std::size_t j = 0; j < p; ++j) {
     for (std::size_t i = j; i < p; ++i) {
       double s = v[i * p + j];
@@ -48,13 +41,28 @@ BandTestResult band_test(const double* measured_log, const double* mean, const d
         v[i * p + j] = s / v[j * p + j];
     }
   }
-  double t2 = 0.0;
+  double t2 = 0.0, ld = 0.0;
   for (std::size_t i = 0; i < p; ++i) {
     double s = d[i];
     for (std::size_t k = 0; k < i; ++k) s -= v[i * p + k] * d[k];
     d[i] = s / v[i * p + i];
     t2 += d[i] * d[i];
+    ld += 2.0 * std::log(v[i * p + i]);
   }
+  if (log_det) *log_det = ld;
+  return t2;
+}
+
+}  // namespace
+
+BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                         std::uint64_t realisations, double records) {
+  BandTestResult r;
+  r.needed = p + kExtraRealisations;
+  if (p == 0 || realisations < r.needed) return r;
+  std::vector<double> d, v;
+  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  const double t2 = whitened_square(d, v, p, nullptr);
   const double nu = static_cast<double>(realisations - 1), pp = static_cast<double>(p);
   r.defined = true;
   r.t2 = t2;
@@ -63,6 +71,21 @@ BandTestResult band_test(const double* measured_log, const double* mean, const d
   r.f = r.dof2 / (nu * pp) * t2;
   r.p_value = boost::math::cdf(boost::math::complement(boost::math::fisher_f(r.dof1, r.dof2), r.f));
   return r;
+}
+
+double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                           std::uint64_t realisations, double records) {
+  std::vector<double> d, v;
+  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  double log_det = 0.0;
+  const double t2 = whitened_square(d, v, p, &log_det);
+  // The covariance is estimated from K realisations (n = K - 1 dof): its inverse overstates the
+  // precision by n / (n - p - 1) and the weights' noise adds (n - 1) / (n - p) to the estimate's
+  // variance (D-27b). ln L is tempered by the inverse of both: the maximum stays the Gaussian one,
+  // the profile intervals widen to keep their level.
+  const double n = static_cast<double>(realisations) - 1.0, pp = static_cast<double>(p);
+  if (!(n - pp - 1.0 > 0.0)) throw std::invalid_argument("band likelihood: needs K > p + 2 realisations");
+  return -0.5 * (n - pp) * (n - pp - 1.0) / (n * (n - 1.0)) * (t2 + log_det);
 }
 
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,

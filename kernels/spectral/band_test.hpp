@@ -27,6 +27,12 @@ constexpr std::uint64_t kExtraRealisations = 4;
 BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                          std::uint64_t realisations, double records);
 
+// ln L of the measured band logs under the same Gaussian law (theory D-27): -c (T^2 + ln det V) / 2,
+// without the constant -p ln(2 pi) / 2; c = (n - p)(n - p - 1) / (n (n - 1)), n = K - 1, corrects for
+// the covariance estimated from K realisations (D-27b). Throws as band_test does, and for K <= p + 2.
+double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                           std::uint64_t realisations, double records);
+
 // The same T^2 by a plain Gauss-Jordan inverse, for tests.
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                               std::uint64_t realisations, double records);

@@ -12,6 +12,7 @@ int run_command(const Args& args);
 int plan_command(const Args& args);
 int psd_command(const Args& args);
 int compare_command(const Args& args);
+int fit_command(const Args& args);
 int keys_command(const Args& args);
 int init_command(const Args& args);
 int texture_command(const Args& args);

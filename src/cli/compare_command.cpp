@@ -14,6 +14,7 @@
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/compare_band_test.hpp"
+#include "src/cli/measured_psd.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/band_levels.hpp"
@@ -55,50 +56,6 @@ struct BandRow {
   bool inside_ci, inside_prediction;
   std::size_t band;  // index in the result's bands
 };
-
-struct Measurement {
-  std::vector<double> frequency, psd;
-};
-
-// A spreadsheet export of a measured PSD: preamble lines before the header skipped (and said), or
-// --skip-rows; delimiter and decimal comma as `rollspec psd` reads a signal. Without --column the PSD
-// is `psd`, else, in a `rollspec psd` output (its first line states the PSD unit), the only column
-// besides frequency_hz (named after the channel), said on stderr; `column` is set to the one read.
-Measurement read_measurement(const std::string& path, std::string& column, long long skip_rows) {
-  io::CsvReadOptions options;
-  options.find_header = true;
-  options.skip_rows = skip_rows;
-  const io::CsvTable m = io::read_csv(path, options);
-  if (m.preamble_lines > 0)
-    std::cerr << "rollspec compare: " << path << ": skipped "
-              << io::counted(static_cast<unsigned long long>(m.preamble_lines), "preamble line")
-              << " before the header '" << clip(m.header_text) << "' (line " << m.header_line
-              << "; --skip-rows N says where it is)\n";
-  const std::size_t fc = m.column_index("frequency_hz");
-  io::require_increasing(m, fc);
-  if (column.empty()) {
-    const auto& cols = m.columns;
-    const bool has_psd = std::find(cols.begin(), cols.end(), "psd") != cols.end();
-    std::ifstream in(path);
-    std::string first;
-    std::getline(in, first);
-    const bool psd_output = first.rfind("# rollspec-psd-csv", 0) == 0;
-    column = has_psd || cols.size() != 2 || !psd_output ? "psd" : cols[fc == 0 ? 1 : 0];
-    if (column != "psd")
-      std::cerr << "rollspec compare: " << path << ": the PSD is column '" << clip(column)
-                << "', the only one besides frequency_hz (--column NAME picks another)\n";
-  }
-  Measurement out{m.values[fc], m.values[m.column_index(column)]};
-  const std::string name = column;
-  for (std::size_t i = 0; i < out.frequency.size(); ++i)
-    if (out.frequency[i] < 0.0)
-      throw data_error(m.where(i) + ": frequency_hz value " + number_text(out.frequency[i]) +
-                       " is negative; allowed: >= 0 (one-sided PSD)");
-  for (std::size_t i = 0; i < out.psd.size(); ++i)
-    if (out.psd[i] < 0.0)
-      throw data_error(m.where(i) + ": " + name + " value " + number_text(out.psd[i]) + " is negative; allowed: >= 0");
-  return out;
-}
 
 }  // namespace
 
@@ -259,7 +216,7 @@ int compare_command(const Args& args) {
   if (vm.count("skip-rows") && skip_rows < 0)
     throw usage_error("--skip-rows " + std::to_string(skip_rows) +
                       ": allowed: a whole number >= 0 (lines before the header)");
-  const Measurement m = read_measurement(measurement, column, skip_rows);
+  const Measurement m = read_measurement(measurement, column, skip_rows, "compare");
   const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
   const int pct = static_cast<int>(std::lround(100.0 * b.confidence));
   const std::string question =

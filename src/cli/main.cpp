@@ -6,6 +6,7 @@
 //   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M] [--format
 //   table|csv|json] rollspec texture STUDY.ini [--out FILE.h5] [--count N] rollspec modes STUDY.ini rollspec stiffness
 //   STUDY.ini [--out FILE.h5] [--rebuild] rollspec keys [SCENE] rollspec init [SCENE] [--out FILE.ini] [--force]
+//   rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] --measured-averages M
 //   rollspec version (or rollspec --version, rollspec -V)
 //
 // Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
@@ -38,6 +39,7 @@ const char* kUsage =
     "  plan       show which stages a study runs, reuses from cache, or skips, and why\n"
     "  psd        Welch PSD of a measured time series (CSV in, CSV out)\n"
     "  compare    compare a result's band levels with a measured PSD\n"
+    "  fit        estimate study keys from a measured PSD, with profile-likelihood intervals\n"
     "  texture    line textures and isotropic surfaces from a roughness PSD\n"
     "  stiffness  build or reuse a contact stiffness table (elastic-plastic rough contact)\n"
     "  modes      modal frequencies of a ball-on-beam study's beam\n"
@@ -98,7 +100,7 @@ int main(int argc, char** argv) {
       {"run", cli::run_command},         {"plan", cli::plan_command},   {"psd", cli::psd_command},
       {"compare", cli::compare_command}, {"keys", cli::keys_command},   {"version", cli::version_command},
       {"texture", cli::texture_command}, {"modes", cli::modes_command}, {"stiffness", cli::stiffness_command},
-      {"init", cli::init_command},
+      {"init", cli::init_command},       {"fit", cli::fit_command},
   };
   const auto it = commands.find(command);
   if (it == commands.end()) {

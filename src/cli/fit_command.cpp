@@ -1,0 +1,160 @@
+// rollspec fit: the study parameters named by --vary estimated from a measured PSD by maximum
+// likelihood of its band levels under compare's prediction-interval law (kernels/spectral D-27),
+// with profile-likelihood intervals, the parameters' correlation and the fit's combined test.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "kernels/spectral/fit_search.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/fit_model.hpp"
+#include "src/cli/fit_report.hpp"
+#include "src/cli/parse_options.hpp"
+#include "src/error.hpp"
+#include "src/io/number_text.hpp"
+
+namespace rollspec::cli {
+
+namespace {
+
+using io::number_text;
+
+// chi2_1(0.95) / 2: the rise of -ln L that bounds a 95 % profile-likelihood interval.
+constexpr double kProfileRise = 3.841458820694124 / 2.0;
+constexpr double kUnitTolerance = 1e-3;  // of the interval ends, in the unit box
+
+// A directory for the runs' result files, removed with everything in it when the fit ends.
+struct TempDir {
+  std::string path;
+  TempDir() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "rollspec-fit-XXXXXX").string();
+    if (!::mkdtemp(pattern.data()))
+      throw cannot_create("cannot create a temporary directory under " +
+                          std::filesystem::temp_directory_path().string() + " (set TMPDIR)");
+    path = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+};
+
+// -ln L minimised over the other coordinates with coordinate j held at t.
+// `others` starts the search (the previous profile point's optimum) and returns this one's.
+double profile_value(FitModel& model, std::size_t n, std::size_t j, double t, std::vector<double>& others) {
+  if (n == 1) return model.negative_log_likelihood({t});
+  const spectral::BoxObjective f = [&](const std::vector<double>& o) {
+    std::vector<double> u;
+    for (std::size_t i = 0, k = 0; i < n; ++i) u.push_back(i == j ? t : o[k++]);
+    return model.negative_log_likelihood(u);
+  };
+  const spectral::BoxMinimum m = spectral::box_minimum(f, others, 0.05, kUnitTolerance, 40 * static_cast<int>(n - 1));
+  others = m.x;
+  return m.value;
+}
+
+}  // namespace
+
+const char* const kFitUsage =
+    "usage: rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] [--vary ...] --measured-averages M\n"
+    "                    [--set section.key=value ...] [--sensor NAME|K] [--column NAME] [--fmin HZ] [--fmax HZ]\n"
+    "                    [--format text|json]\n"
+    "\n"
+    "Estimates the 1 to 3 study keys named by --vary (each searched in [lo, hi], `log`: on a log scale) from\n"
+    "a measured PSD (as `rollspec compare` reads it) that averages M independent records: the values that\n"
+    "maximise the likelihood of the measured third-octave band levels under compare's prediction law\n"
+    "(kernels/spectral D-27). Every evaluation runs the study with its own seed (common random numbers).\n"
+    "Prints each key's estimate and 95 % profile-likelihood interval, the keys' correlation (from the\n"
+    "Hessian of ln L), the combined test of the best fit (D-26) and the number of study runs. A key the\n"
+    "measurement cannot identify (its likelihood flat over its range) is refused, named.";
+
+int fit_command(const Args& args) {
+  po::options_description opts("options");
+  std::string study, measurement, format = "text", sensor, column;
+  std::vector<std::string> vary_specs, sets;
+  double fmin = 0.0, fmax = INFINITY, records = 0.0;
+  opts.add_options()("study", po::value(&study)->required(), "study (INI)")(
+      "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
+      "vary", po::value(&vary_specs)->required(), "section.key=lo:hi[:log], 1 to 3 times")(
+      "measured-averages", po::value(&records)->required(), "independent records averaged into the measurement")(
+      "set", po::value(&sets), "section.key=value for every run")(
+      "sensor", po::value(&sensor), "sensor name or index (default: sensor_mean if present, else 0)")(
+      "column", po::value(&column), "PSD column of the measurement CSV")("fmin", po::value(&fmin)->default_value(0.0),
+                                                                         "lowest band edge (Hz)")(
+      "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
+      "format", po::value(&format)->default_value("text"), "text or json");
+  po::positional_options_description pos;
+  pos.add("study", 1).add("measurement", 1);
+  po::variables_map vm;
+  if (!parse_options(args, kFitUsage, opts, pos, vm)) return 0;
+  if (format != "text" && format != "json") throw usage_error("--format " + clip(format) + ": allowed: text or json");
+  if (!(fmin >= 0.0) || std::isinf(fmin))
+    throw usage_error("--fmin " + number_text(fmin) + ": allowed: a finite frequency >= 0 Hz");
+  if (!(fmax > fmin))
+    throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) +
+                      " Hz)");
+  if (!(records >= 1.0 && std::isfinite(records)))
+    throw usage_error("--measured-averages " + number_text(records) +
+                      ": allowed: a finite count >= 1 of independent records");
+  FitInputs in;
+  if (vary_specs.size() > 3)
+    throw usage_error("--vary given " + std::to_string(vary_specs.size()) + " times; allowed: 1 to 3 keys");
+  for (const auto& s : vary_specs) {
+    in.vary.push_back(parse_vary(s));
+    for (std::size_t i = 0; i + 1 < in.vary.size(); ++i)
+      if (in.vary[i].key == in.vary.back().key) throw usage_error("--vary " + in.vary.back().key + " given twice");
+  }
+  for (const auto& s : sets)
+    for (const auto& v : in.vary)
+      if (s.rfind(v.key + "=", 0) == 0)
+        throw usage_error("--set " + clip(s) + ": " + v.key + " is varied by --vary; allowed: one of the two");
+  if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
+  in.study = study, in.measurement_path = measurement, in.sensor = sensor, in.sets = sets;
+  in.records = records, in.fmin = fmin, in.fmax = fmax;
+  in.measurement = read_measurement(measurement, column, -1, "fit");
+
+  const TempDir temp;
+  FitModel model(in, temp.path);
+  const std::size_t n = in.vary.size();
+  const spectral::BoxObjective f = [&](const std::vector<double>& u) { return model.negative_log_likelihood(u); };
+  const spectral::BoxMinimum best =
+      spectral::box_minimum(f, std::vector<double>(n, 0.5), 0.25, 1e-4, 150 * static_cast<int>(n));
+  if (!std::isfinite(best.value))
+    throw data_error(measurement + ": the study has no power in a compared band anywhere the search went");
+  FitReport report;
+  int extra = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<double> start;
+    for (std::size_t i = 0; i < n; ++i)
+      if (i != j) start.push_back(best.x[i]);
+    std::vector<double> others = start;
+    const auto profile = [&](double t) { return profile_value(model, n, j, t, others); };
+    const double lo = spectral::profile_end(profile, best.x[j], best.value, 0.0, kProfileRise, kUnitTolerance, &extra);
+    others = start;
+    const double hi = spectral::profile_end(profile, best.x[j], best.value, 1.0, kProfileRise, kUnitTolerance, &extra);
+    const VaryRange& v = in.vary[j];
+    if (lo == 0.0 && hi == 1.0)
+      throw data_error("--vary " + v.key + ": the measurement cannot identify " + v.key +
+                       ": its profile likelihood stays within " + number_text(kProfileRise) +
+                       " of the maximum over the whole range " + number_text(v.lo) + " .. " + number_text(v.hi) +
+                       " (a flat likelihood); fix it in the study, or fit it from bands where it matters");
+    report.parameters.push_back({v.key, v.value(best.x[j]), v.value(lo), v.value(hi), lo == 0.0, hi == 1.0});
+  }
+  report.correlation = spectral::inverse_correlation(spectral::box_hessian(f, best.x, 0.02, &extra), n);
+  report.test = model.test_at(best.x);
+  report.log_likelihood = -best.value;
+  report.evaluations = model.runs();
+  report.bands = model.bands();
+  report.realisations = model.realisations();
+  report.records = records;
+  std::fputs((format == "json" ? fit_json(report) : fit_text(report)).c_str(), stdout);
+  return 0;
+}
+
+}  // namespace rollspec::cli
