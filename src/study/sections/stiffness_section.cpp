@@ -32,6 +32,10 @@ std::vector<KeySpec> StiffnessSection::keys() {
                std::string("1e-8"), 1e-15, 1e-2),
       integer_key("stiffness", "max_iterations", "CG iterations allowed per contact solve", std::string("20000"), 10,
                   1e7),
+      integer_key("stiffness", "table_seed",
+                  "seed of every contact table's surfaces and strips (their own Philox streams, keyed by (table_seed, "
+                  "index)); independent of [study] seed, so another study seed reuses the tables",
+                  std::string("1"), 0, 9.0e18),
   };
 }
 
@@ -47,6 +51,7 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   t.solver.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
   t.solver.tolerance = s.real("stiffness.tolerance");
   t.solver.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  t.table_seed = static_cast<std::uint64_t>(s.integer("stiffness.table_seed"));
   t.ball_rms_origin = {s.where("stiffness.ball_rms")};
   t.approach_max_origin = {s.where("stiffness.approach_max")};
   t.table_origin = {s.where("stiffness.table")};
