@@ -1,5 +1,6 @@
 #pragma once
-// Counter-based random streams (Random123 Philox4x64-10), keyed by (study seed, realisation id).
+// Counter-based random streams (Random123 Philox4x64-10), keyed by (seed, index): a realisation's
+// streams by (study seed, realisation id), a contact table's by (table seed, surface or strip index).
 //
 // Every random draw of a realisation comes from its own key, so a realisation's numbers never
 // depend on thread count, rank count, scheduling or restarts. A realisation may open several
@@ -23,6 +24,10 @@ enum class Stream : std::uint64_t {
   surface_amplitude = 6,
   blocked_force_phase = 7,
   blocked_force_amplitude = 8,
+  // The contact tables' surfaces and strips ([stiffness] table_seed): their own family, so a table
+  // never shares numbers with the realisations it serves, whatever the two seeds.
+  table_surface_phase = 9,
+  table_surface_amplitude = 10,
 };
 
 class PhiloxStream {

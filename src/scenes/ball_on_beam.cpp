@@ -186,7 +186,14 @@ class BallOnBeam final : public EnsembleScene {
 
   // The tables' stages: each completes the resolved contact (ball_on_beam_contact.hpp) and says so.
   void use_stiffness_table(const stiffness::StiffnessTable& t, const std::string& status, bool quiet) {
-    if (!quiet) std::fprintf(stderr, "stiffness table: %s\n", status.c_str());
+    // What the band intervals include (kernels/spectral/README.md Eq. T-1 to T-4).
+    if (!quiet)
+      std::fprintf(stderr,
+                   "stiffness table: %s (%lld surfaces, [stiffness] table_seed = %s, table_shift = %g standard "
+                   "errors)\nintervals: the realisations' sampling error only, conditional on this table; its own "
+                   "sampling error is not included (kernels/spectral/README.md D-28)\n",
+                   status.c_str(), static_cast<long long>(t.realisations), b_.stiffness.text("table_seed").c_str(),
+                   b_.stiffness.table_shift);
     take_stiffness_table(b_, t, contact_);
   }
 

@@ -25,7 +25,27 @@ beam::BallOnBeamModel resolved_model(const BallOnBeamSettings& b, const Resolved
   return m;
 }
 
-void take_stiffness_table(const BallOnBeamSettings& b, const stiffness::StiffnessTable& t, ResolvedContact& c) {
+namespace {
+// [stiffness] table_shift: the mean curves moved by `shift` standard errors of the mean over the table's
+// N surfaces, sigma_j / sqrt(N) (kernels/spectral/README.md D-28, T-1); the same bits for shift 0.
+stiffness::StiffnessTable shifted_table(const stiffness::StiffnessTable& t, double shift) {
+  if (shift == 0.0) return t;
+  stiffness::StiffnessTable s = t;
+  const double per_std = shift / std::sqrt(static_cast<double>(std::max<std::int64_t>(t.realisations, 1)));
+  for (std::size_t j = 0; j < s.approach.size(); ++j) {
+    s.force_mean[j] += per_std * t.force_std[j];
+    s.stiffness_mean[j] += per_std * t.stiffness_std[j];
+  }
+  return s;
+}
+}  // namespace
+
+void take_stiffness_table(const BallOnBeamSettings& b, const stiffness::StiffnessTable& table, ResolvedContact& c) {
+  const stiffness::StiffnessTable t = shifted_table(table, b.stiffness.table_shift);
+  for (std::size_t j = 1; b.stiffness.table_shift != 0.0 && j < t.approach.size(); ++j)
+    if (!(t.force_mean[j] > t.force_mean[j - 1]))
+      b.stiffness.table_shift_origin.refuse("the shifted table's mean force does not rise with the approach at " +
+                                            std::to_string(t.approach[j]) + " m; shift it less");
   c.law.compression = t.approach;
   if (c.law.kind == beam::ContactLawKind::table) {
     c.law.values = t.force_mean;

@@ -77,7 +77,7 @@ CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, doub
   for (const char* k : {"surface", "ball_rms", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
     in << k << " = " << stiffness.text(k) << "\n";
   in << "realisations = " << (stiffness.rough ? stiffness.text("realisations") : "1")
-     << "\nseed = " << t.study.seed_text << "\n";
+     << "\nseed = " << stiffness.text("table_seed") << "\n";  // the table seed
   in << "\n[surface]\n";
   for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
     in << k << " = " << t.surface.text(k) << "\n";
@@ -128,7 +128,7 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
   const int R = is_rough ? static_cast<int>(stiffness.realisations) : 1;
   const auto steps = static_cast<std::size_t>(stiffness.steps);
   const double dmax = stiffness.approach_max;
-  const std::uint64_t seed = ts.study.seed;
+  const std::uint64_t seed = stiffness.table_seed;
   const auto shape = stiffness.shape;
   const double ball_rms = stiffness.ball_rms;
   if (ball_rms > 0.0 && !is_rough)
@@ -137,7 +137,7 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
   std::vector<double> deltas(steps);
   for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);
   texture_io::SurfaceGenerator surfaces;
-  if (is_rough) surfaces = ts.surfaces();
+  if (is_rough) surfaces = texture_io::surface_generator(ts.texture, ts.surface_generator, ts.psd);
 
   // Realisation r runs on rank r mod ranks (OpenMP inside each rank); every rank then holds every
   // realisation's results and reduces them in realisation order, so the table has the same bits
@@ -158,12 +158,12 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
       try {
         if (!solver) solver = std::make_unique<contact::ContactSolver>(grid, effective_modulus);
         texture::Surface surf;
-        if (is_rough) surfaces.generate(seed, static_cast<std::uint64_t>(r), surf);
+        if (is_rough) surfaces.generate(seed, static_cast<std::uint64_t>(r), surf, true);
         if (is_rough && ball_rms > 0.0) {
           // Rough on rough: the gap depends only on h_flat + h_ball (design §4); the ball's heights are
           // an independent realisation (ids offset by kBallRealisations) scaled to the ball's rms.
           texture::Surface ball;
-          surfaces.generate(seed, kBallRealisations + static_cast<std::uint64_t>(r), ball);
+          surfaces.generate(seed, kBallRealisations + static_cast<std::uint64_t>(r), ball, true);
           double sq = 0.0;
           for (double v : ball.heights) sq += v * v;
           const double scale = ball_rms / std::sqrt(sq / static_cast<double>(ball.heights.size()));

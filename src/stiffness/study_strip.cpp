@@ -29,7 +29,7 @@ texture::Surface study_strip(const TableStudy& ts, const StripGrid& grid, std::u
   try {
     texture_io::SurfaceGenerator g;
     g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(ts.psd, spec);
-    g.generate(ts.study.seed, index, strip);
+    g.generate(ts.stiffness.table_seed, index, strip, true);
   } catch (const std::exception& e) {
     ts.surface.spacing_origin.refuse(e.what());
   }
@@ -39,8 +39,8 @@ texture::Surface study_strip(const TableStudy& ts, const StripGrid& grid, std::u
 std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g) {
   std::ostringstream in;
   for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << ts.stiffness.text(k) << "\n";
-  in << "seed = " << ts.study.seed_text << "\n\n[surface]\nny = " << g.ny << "\nspacing = " << io::exact_text(g.cell)
-     << "\nanisotropy = " << ts.surface.text("anisotropy")
+  in << "seed = " << ts.stiffness.text("table_seed") << "\n\n[surface]\nny = " << g.ny
+     << "\nspacing = " << io::exact_text(g.cell) << "\nanisotropy = " << ts.surface.text("anisotropy")
      << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
      << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
      << "\n\n[texture]\n";

@@ -1,7 +1,7 @@
 #pragma once
 // One rough strip of the study's surface: the height field a contact stage slides the ball along
 // (blocked force, equivalent roughness, path table). Strip `index` is the surface realisation
-// keyed (study.seed, index) on the Philox surface streams, so every stage that asks for strip 0
+// keyed ([stiffness] table_seed, index) on the tables' own Philox surface streams, so every stage that asks for strip 0
 // of the same grid sees the same heights.
 #include <cstddef>
 #include <cstdint>
@@ -26,7 +26,7 @@ struct StripGrid {
 texture::Surface study_strip(const TableStudy& ts, const StripGrid& g, std::uint64_t index);
 
 // The part of a contact stage's input text (its cache hash) that fixes the strip's heights and the
-// solver settings: [stiffness] hardness, tolerance, max_iterations, the seed, the strip grid's width
+// solver settings: [stiffness] hardness, tolerance, max_iterations, table_seed, the strip grid's width
 // and cell, the surface and texture keys and a fingerprint of the texture's input files.
 std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g);
 

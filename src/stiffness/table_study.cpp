@@ -16,7 +16,6 @@ bool has_section(const study::KeyReader& s, const std::string& section) {
 
 TableStudy TableStudy::parse(const study::KeyReader& s) {
   TableStudy t;
-  t.study = study::StudySection::parse(s);
   t.stiffness = study::StiffnessSection::parse(s);
   t.surface = study::StripSurfaceSection::parse(s);
   const bool strips = has_section(s, "blocked_force");
@@ -26,7 +25,7 @@ TableStudy TableStudy::parse(const study::KeyReader& s) {
   }
   t.store.study_file = s.file();
   t.store.study_text = s.canonical_text();
-  t.store.seed = t.study.seed;
+  t.store.seed = t.stiffness.table_seed;
   t.store.table_dir = t.stiffness.text("table_dir");
   t.store.table_origin = t.stiffness.table_origin;
   t.store.table_dir_origin = t.stiffness.table_dir_origin;
@@ -40,7 +39,10 @@ TableStudy TableStudy::parse(const study::KeyReader& s) {
     t.psd_fingerprint = hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s)));
     t.profile_derived_keys = texture_io::profile_derived_surface_keys(s);
   }
-  t.surfaces = [&s] { return texture_io::study_surface_generator(s, texture_io::study_psd(s)); };
+  if (t.stiffness.rough) {
+    t.texture = study::TextureSection::parse(s);
+    t.surface_generator = study::SurfaceSection::parse(s);
+  }
   return t;
 }
 

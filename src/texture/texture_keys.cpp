@@ -276,15 +276,18 @@ std::vector<std::string> profile_derived_surface_keys(const TextureSection& t, c
 
 std::size_t SurfaceGenerator::random_count() const { return spectral ? 2 * spectral->modes() : seed->random_count(); }
 
-void SurfaceGenerator::generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out) const {
+void SurfaceGenerator::generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out,
+                                bool table) const {
+  const rng::Stream phase = table ? rng::Stream::table_surface_phase : rng::Stream::surface_phase;
+  const rng::Stream amplitude = table ? rng::Stream::table_surface_amplitude : rng::Stream::surface_amplitude;
   if (spectral) {
     std::vector<double> up(spectral->modes()), ua(spectral->modes());
-    rng::PhiloxStream(seed_value, realisation, rng::Stream::surface_phase).uniform_open(up.data(), up.size());
-    rng::PhiloxStream(seed_value, realisation, rng::Stream::surface_amplitude).uniform_open(ua.data(), ua.size());
+    rng::PhiloxStream(seed_value, realisation, phase).uniform_open(up.data(), up.size());
+    rng::PhiloxStream(seed_value, realisation, amplitude).uniform_open(ua.data(), ua.size());
     spectral->generate(up.data(), ua.data(), out);
   } else {
     std::vector<double> u(seed->random_count());
-    rng::PhiloxStream(seed_value, realisation, rng::Stream::surface_phase).uniform_open(u.data(), u.size());
+    rng::PhiloxStream(seed_value, realisation, phase).uniform_open(u.data(), u.size());
     seed->generate(u.data(), out);
   }
 }

@@ -73,7 +73,8 @@ struct SurfaceGenerator {
   std::unique_ptr<texture::SeedSurfaceGenerator> seed;
   std::size_t random_count() const;  // U(0,1) numbers per surface
   // Draws from Philox (seed, realisation, surface streams) and fills out.
-  void generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out) const;
+  // Draws from the realisation surface streams, or with `table` from the contact tables' own family.
+  void generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out, bool table = false) const;
 };
 SurfaceGenerator surface_generator(const study::TextureSection& t, const study::SurfaceSection& s,
                                    const texture::Psd& psd);

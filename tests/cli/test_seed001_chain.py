@@ -40,11 +40,14 @@ def test_both_beams_run_the_table_law_from_the_profiles(beams):
 
 
 def test_beam_r_loses_contact_frequently_and_beam_s_rarely(beams):
-    # Measured: S 2.2 %, R 48 % of the time out of contact (25 realisations each, contact kernel 3).
+    # The share depends on the stiffness table (6 surfaces for S, 10 for R; its sampling error, kernels/spectral
+    # D-28). Measured, 25 realisations each: S 5.1 % with the default [stiffness] table_seed 1, 3.3-3.5 % with
+    # table seeds 2-4 (2.2-4.0 % when the study seed drew the table); R 45-58 % over table seeds 1-5
+    # (K = 800), 51 % with table seed 1. The bounds hold the finding for any of these tables.
     s, r = beams["s"]["loss"], beams["r"]["loss"]
-    assert s < 0.05, s
+    assert s < 0.08, s
     assert r > 0.3, r
-    assert r > 10 * s, (s, r)
+    assert r > 5 * s, (s, r)
 
 
 def test_the_rougher_beam_is_louder_where_the_roughness_drives_it(beams):

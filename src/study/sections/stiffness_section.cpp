@@ -32,6 +32,16 @@ std::vector<KeySpec> StiffnessSection::keys() {
                std::string("1e-8"), 1e-15, 1e-2),
       integer_key("stiffness", "max_iterations", "CG iterations allowed per contact solve", std::string("20000"), 10,
                   1e7),
+      integer_key("stiffness", "table_seed",
+                  "seed of every contact table's surfaces and strips (their own Philox streams, keyed by (table_seed, "
+                  "index)); independent of [study] seed, so another study seed reuses the tables",
+                  std::string("1"), 0, 9.0e18),
+      real_key("stiffness", "table_shift", "-",
+               "law = table / literal: shift the table's mean force / stiffness by this many standard errors of its "
+               "mean over the surfaces (std / sqrt(realisations)); runs at +1 and -1 with the same [study] seed "
+               "give the band levels' response to that shift (kernels/spectral/README.md D-28: it understates the "
+               "table's share)",
+               std::string("0"), -10.0, 10.0),
   };
 }
 
@@ -47,8 +57,11 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   t.solver.hardness = h > 0.0 ? h : std::numeric_limits<double>::infinity();
   t.solver.tolerance = s.real("stiffness.tolerance");
   t.solver.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
+  t.table_seed = static_cast<std::uint64_t>(s.integer("stiffness.table_seed"));
+  t.table_shift = s.real("stiffness.table_shift");
   t.ball_rms_origin = {s.where("stiffness.ball_rms")};
   t.approach_max_origin = {s.where("stiffness.approach_max")};
+  t.table_shift_origin = {s.where("stiffness.table_shift")};
   t.table_origin = {s.where("stiffness.table")};
   t.table_dir_origin = {s.where("stiffness.table_dir")};
   for (const auto& k : keys()) t.texts_[k.key] = s.text(k.full_name());

@@ -3,6 +3,7 @@
 // ball-on-beam), read once. The strip stages (blocked force, equivalent roughness, path table) and
 // the stiffness table take their solver options from here, one parse of hardness, tolerance and
 // max_iterations. The keys' canonical texts are kept for the cached tables' input texts (their hashes).
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -21,8 +22,10 @@ struct StiffnessSection {
   contact::BallShape shape = contact::BallShape::Sphere;
   double ball_rms = 0.0, approach_max = 0.0;
   long long steps = 0, realisations = 0;
+  std::uint64_t table_seed = 1;   // every table's surfaces and strips; never the study seed
+  double table_shift = 0.0;       // standard errors of the table mean added to the law (not in its hash)
   contact::SolverOptions solver;  // hardness (0: none, so infinite), tolerance, max_iterations
-  KeyOrigin ball_rms_origin, approach_max_origin;
+  KeyOrigin ball_rms_origin, approach_max_origin, table_shift_origin;
   KeyOrigin table_origin, table_dir_origin;  // where a table may not be written
 
   static std::vector<KeySpec> keys();
