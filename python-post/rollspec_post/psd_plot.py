@@ -75,7 +75,7 @@ def curve_styles(style):
 def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None,
              fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150, kind=None, title=None, label=None,
              ylim=None, style="default", measurement_label=None):
-    """`sensor` (name or index) picks the row drawn and compared (default: the row `rollspec compare`
+    """`sensor` (a name, or K for sensor_K) picks the row drawn and compared (default: the row `rollspec compare`
     uses, sensor_mean when present). `sensors_all` adds every sensor as a thin grey line. fmin/fmax
     bound the axis and the compared bands (default: the study's band range, from 0 Hz on a linear
     axis). `label`, `measurement_label`: legend names of the simulated mean and the measurement;

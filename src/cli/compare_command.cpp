@@ -247,7 +247,8 @@ int compare_command(const Args& args) {
   long long skip_rows = -1;
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
-      "sensor", po::value(&sensor), "sensor name or index in the result (default: sensor_mean if present, else 0)")(
+      "sensor", po::value(&sensor),
+      "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
       "column", po::value(&column),
       "PSD column of the measurement CSV (default: psd, else the only column besides frequency_hz)")(
       "measured-averages", po::value(&records), "independent records averaged into the measurement (>= 1)")(

@@ -61,9 +61,13 @@ def test_the_output_names_the_sensor_and_the_question(files):
     r = run(["compare", files["model"], files["meas"], "--measured-averages", 25, "--sensor", "sensor_2"])
     assert "sensor sensor_2" in r.stdout.splitlines()[0]
     assert "prediction interval of a measurement averaged over M = 25" in r.stdout.splitlines()[1]
-    assert "sensor sensor_3" in run(["compare", files["model"], files["meas"], "--sensor", 2]).stdout
-    r = run(["compare", files["model"], files["meas"], "--sensor", "sensor_9"])
-    assert r.returncode == EX_USAGE and "0 = sensor_1, 1 = sensor_2, 2 = sensor_3, 3 = sensor_mean" in r.stderr
+    # A number is the K of sensor_K, the name's own count (1-based), not a row index.
+    assert "sensor sensor_2" in run(["compare", files["model"], files["meas"], "--sensor", 2]).stdout
+    assert "sensor sensor_3" in run(["compare", files["model"], files["meas"], "--sensor", 3]).stdout
+    for wrong in ("sensor_9", "0", "4"):
+        r = run(["compare", files["model"], files["meas"], "--sensor", wrong])
+        assert r.returncode == EX_USAGE and "has the sensors sensor_1, sensor_2, sensor_3, sensor_mean" in r.stderr
+        assert "allowed: a name, or the number K of sensor_K" in r.stderr
     assert r.stdout == ""
 
 
