@@ -101,7 +101,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
         raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: 0 <= fmin < fmax, both finite", EX_USAGE)
     meas = read_measurement(measurement, column) if measurement else None
     delta_panel = bands and meas is not None
-    cmp = compare_bands(meas, band_data, row, fmin, fmax, measured_averages) if delta_panel else None
+    cmp = compare_bands(meas, band_data, names[row], fmin, fmax, measured_averages) if delta_panel else None
     sim_style, meas_style = curve_styles(style)
     sim_label = label or (f"computed, mean of {k}" if style == "seed" else f"{names[row]}, mean of {k}")
     meas_label = measurement_label or ("measured" if style == "seed" else "measurement")

@@ -202,7 +202,7 @@ def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, co
     """The page as text; `HTML_MARKER` in its head lets a later run replace it without --force.
     `loss_threshold`: the loss-of-contact share above which the page opens with a warning."""
     r = read_result(result, sensor)
-    sensor = r["sensor"]
+    sensor = r["sensor_name"]  # the name: a number would be read as the K of sensor_K
     meas = read_measurement(measurement, column) if measurement else None
     cmp = compare_bands(meas, r["bands"], sensor, fmin, fmax, measured_averages) if meas is not None else None
     if cmp is not None and cmp["count"] == 0:
