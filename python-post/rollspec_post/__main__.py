@@ -81,7 +81,8 @@ def build_parser():
     p.add_argument("result", help="rollspec result file (HDF5)")
     p.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column")
     p.add_argument("--bands", action="store_true", help="draw third-octave band levels (and ΔL with a measurement)")
-    p.add_argument("--sensor", help="the row drawn and compared: name or index (default: sensor_mean if present, else 0)")
+    p.add_argument("--sensor", help="the row drawn and compared: a name, or K for sensor_K "
+                                    "(default: sensor_mean if present, else the first)")
     p.add_argument("--sensors", choices=("one", "all"), default="one", help="all: every sensor as thin grey lines too")
     p.add_argument("--xscale", choices=("linear", "log"), default="linear", help="frequency axis (default linear)")
     p.add_argument("--dpi", type=dpi, default=150, help=f"resolution of a PNG (default 150, at most {MAX_DPI})")
@@ -108,7 +109,8 @@ def build_parser():
     n.add_argument("--panel", nargs="+", action="append", required=True, metavar="WORD",
                    help="TITLE FILE=LABEL [FILE=LABEL ...]: one panel; FILE a result or a measured PSD CSV (rollspec psd's, "
                         "or frequency and PSD columns); the first curve solid black, the others dotted/dashed")
-    n.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
+    n.add_argument("--sensor", help="a sensor name, or K for sensor_K "
+                                    "(default: sensor_mean if present, else the first)")
     n.add_argument("--fmax", type=frequency, default=5000.0, help="highest frequency drawn (Hz; default 5000)")
     n.add_argument("--column", help="PSD column of a measured CSV that has several (default: psd, or its only one)")
     w = writer(sub, "sweep", "a sweep result: band levels against the swept value, and PSDs of points overlaid",
@@ -120,7 +122,8 @@ def build_parser():
     r = writer(sub, "report", "one self-contained HTML page: key figures, PSD, provenance, study", None, "output HTML")
     r.add_argument("result", help="rollspec result file (HDF5)")
     r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
-    r.add_argument("--sensor", help="sensor name or index (default: sensor_mean if present, else 0)")
+    r.add_argument("--sensor", help="a sensor name, or K for sensor_K "
+                                    "(default: sensor_mean if present, else the first)")
     r.add_argument("--fmin", type=frequency, default=0.0, help="lowest band edge compared (Hz)")
     r.add_argument("--fmax", type=upper_frequency, default=math.inf, help="highest band edge compared (Hz)")
     r.add_argument("--loss-threshold", type=finite, default=0.05, metavar="SHARE",

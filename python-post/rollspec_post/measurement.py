@@ -105,17 +105,17 @@ def read_measurement(path, column=None):
 
 
 def sensor_row(names, sensor=None):
-    """The row `rollspec compare` uses: a name or an index; by default sensor_mean if present, else 0."""
+    """The row `rollspec compare` uses: a name, or the number K of the name sensor_K (1-based, as the
+    names and the study's [sensors] positions count); by default sensor_mean if present, else the first."""
     if not names:
         raise PostError("the result names no sensors (/psd/sensor is empty); nothing to draw or compare", EX_DATAERR)
     if sensor is None:
         return names.index("sensor_mean") if "sensor_mean" in names else 0
-    if str(sensor) in names:
-        return names.index(str(sensor))
-    if str(sensor).isdigit() and int(sensor) < len(names):
-        return int(sensor)
-    listed = ", ".join(f"{i} = {n}" for i, n in enumerate(names))
-    raise PostError(f"--sensor {sensor}: the result has the sensors {listed}; allowed: a name or an index", EX_USAGE)
+    name = f"sensor_{int(sensor)}" if str(sensor).isdigit() else str(sensor)
+    if name in names:
+        return names.index(name)
+    raise PostError(f"--sensor {sensor}: the result has the sensors {', '.join(names)}; allowed: a name, or the "
+                    "number K of sensor_K", EX_USAGE)
 
 
 def read_bands(f):

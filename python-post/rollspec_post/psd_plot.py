@@ -42,6 +42,7 @@ def read_psd(result):
         k = attr(f, "/psd", "realisations", int)
         level = attr(f, "/psd", "confidence_level")
         band_data = read_bands(f)
+        loss = text_attr(f["/contact"], "loss_of_contact_warning") if "/contact" in f else None
     shape = (len(names), freq.size)
     if freq.size < 2 or any(v.shape != shape for v in (mean, lo, hi) + ((ref,) if ref is not None else ())):
         raise PostError(f"{result}: /psd/mean, ci_lower, ci_upper (and /reference/psd) must be sensors x "
@@ -49,7 +50,15 @@ def read_psd(result):
     if not np.any(np.isfinite(mean) & (mean > 0)):
         raise PostError(f"{result}: /psd/mean holds no positive finite value (all zero or NaN); "
                         "nothing to draw on a dB scale", EX_DATAERR)
-    return freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data
+    return freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data, loss
+
+
+def loss_note(ax, warning):
+    """The run's loss-of-contact warning on the PSD axes, in red at the top: a figure sent on alone
+    still says that its levels are those of a ball that flies (or of a linearised law past its validity)."""
+    return ax.text(0.5, 0.97, "LOSS OF CONTACT: " + warning, transform=ax.transAxes, ha="center", va="top",
+                   fontsize=7.5, color="#7b1d12", wrap=True, zorder=10,
+                   bbox={"boxstyle": "round", "facecolor": "#fdecea", "edgecolor": "#c0392b", "lw": 1.5})
 
 
 STYLES = ("default", "seed")
@@ -66,12 +75,14 @@ def curve_styles(style):
 def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None,
              fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150, kind=None, title=None, label=None,
              ylim=None, style="default", measurement_label=None):
-    """`sensor` (name or index) picks the row drawn and compared (default: the row `rollspec compare`
+    """`sensor` (a name, or K for sensor_K) picks the row drawn and compared (default: the row `rollspec compare`
     uses, sensor_mean when present). `sensors_all` adds every sensor as a thin grey line. fmin/fmax
     bound the axis and the compared bands (default: the study's band range, from 0 Hz on a linear
     axis). `label`, `measurement_label`: legend names of the simulated mean and the measurement;
     `ylim` (low, high) in dB; `style` default or seed. Returns {"legend": labels, "comparison":
-    compare_bands(...) or None}."""
+    compare_bands(...) or None, "loss_note": the loss-of-contact note drawn on the figure or None}.
+    A result whose run warned of loss of contact (/contact@loss_of_contact_warning) gets that warning
+    drawn on the axes in red."""
     if xscale not in ("linear", "log"):
         raise PostError(f"--xscale {xscale}: allowed: linear or log", EX_USAGE)
     if style not in STYLES:
@@ -79,7 +90,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     if ylim is not None and not (len(ylim) == 2 and np.all(np.isfinite(ylim)) and ylim[0] < ylim[1]):
         raise PostError(f"--ylim {' '.join(map(str, ylim))}: allowed: two finite levels LOW < HIGH (dB)", EX_USAGE)
     fmt = kind or output_format(out)
-    freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data = read_psd(result)
+    freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data, loss = read_psd(result)
     row = sensor_row(names, sensor)
     have_bands = band_data["lower_frequency"].size > 0
     if fmin is None:
@@ -90,7 +101,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
         raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: 0 <= fmin < fmax, both finite", EX_USAGE)
     meas = read_measurement(measurement, column) if measurement else None
     delta_panel = bands and meas is not None
-    cmp = compare_bands(meas, band_data, row, fmin, fmax, measured_averages) if delta_panel else None
+    cmp = compare_bands(meas, band_data, names[row], fmin, fmax, measured_averages) if delta_panel else None
     sim_style, meas_style = curve_styles(style)
     sim_label = label or (f"computed, mean of {k}" if style == "seed" else f"{names[row]}, mean of {k}")
     meas_label = measurement_label or ("measured" if style == "seed" else "measurement")
@@ -146,10 +157,11 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     # Above the axes, so it never covers data.
     ax.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.0, 1.01, 1.0, 0.1), mode="expand", ncol=2,
               fontsize=8, frameon=False, borderaxespad=0.0, handler_map={tuple: HandlerTuple(ndivide=None)})
+    note = loss_note(ax, loss) if loss else None
     if delta_panel:
         delta_axes(fig.add_subplot(2, 1, 2), cmp, band_data, row, meas_label)
     emit_figure(fig, out, fmt, dpi)
-    return {"legend": labels, "comparison": cmp, "figure": fig}
+    return {"legend": labels, "comparison": cmp, "figure": fig, "loss_note": note.get_text() if note else None}
 
 
 def delta_axes(ax2, cmp, band_data, row, meas_label):

@@ -67,7 +67,9 @@ def read_result(path, sensor):
              "wall_seconds": scalar(f, "/run/wall_seconds"),
              "threads": plain(f["/run"].attrs.get("threads")) if "/run" in f else None,
              "loss": scalar(f, "/contact/loss_of_contact_share"),
-             "loss_std": scalar(f, "/contact/loss_of_contact_share_std")}
+             "loss_std": scalar(f, "/contact/loss_of_contact_share_std"),
+             "loss_warning": text_attr(f["/contact"], "loss_of_contact_warning") if "/contact" in f else None,
+             "law": text_attr(f["/contact"], "law") if "/contact" in f else None}
         r["confidence"] = r["bands"]["confidence"]
         r["sensor"] = sensor = sensor_row(r["sensors"], sensor)
         r["sensor_name"] = r["sensors"][sensor]
@@ -95,18 +97,24 @@ def card(key, value, note="", alert=False):
 
 
 def loss_too_high(r, threshold):
-    return r["loss"] is not None and np.isfinite(r["loss"]) and r["loss"] > threshold
+    """Above `threshold`, or with law = linearised whenever the run warned (any loss of contact leaves
+    that law's validity, whatever the threshold)."""
+    linearised_left = r.get("law") == "linearised" and bool(r.get("loss_warning"))
+    return linearised_left or (r["loss"] is not None and np.isfinite(r["loss"]) and r["loss"] > threshold)
 
 
 def loss_warning(r, threshold):
-    """The banner at the top of the page when the ball leaves the beam more than `threshold` of the time."""
+    """The banner at the top of the page when the ball leaves the beam more than `threshold` of the time,
+    or when the run warned of its loss of contact (its words quoted)."""
     if not loss_too_high(r, threshold):
         return ""
     spread = f" (± {100 * r['loss_std']:.2g} % over realisations)" if r["loss_std"] is not None else ""
+    above = r["loss"] is not None and np.isfinite(r["loss"]) and r["loss"] > threshold
+    said = f" The run warned: {esc(r['loss_warning'])}." if r.get("loss_warning") else ""
     return (f'<div class="warning" role="alert"><strong>Loss of contact: {100 * r["loss"]:.3g} % of the time'
-            f"{esc(spread)}</strong>, above the {100 * threshold:.3g} % this report flags. The ball leaves the "
-            "surface: the contact force is not the linear response to the roughness, and levels and ΔL "
-            "should be read with that in mind.</div>")
+            f"{esc(spread)}</strong>{f', above the {100 * threshold:.3g} % this report flags' if above else ''}."
+            f"{said} The ball leaves the surface: the contact force is not the linear response to the roughness, "
+            "and levels and ΔL should be read with that in mind.</div>")
 
 
 def key_figures(r, cmp, threshold=LOSS_WARNING_SHARE):
@@ -194,7 +202,7 @@ def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, co
     """The page as text; `HTML_MARKER` in its head lets a later run replace it without --force.
     `loss_threshold`: the loss-of-contact share above which the page opens with a warning."""
     r = read_result(result, sensor)
-    sensor = r["sensor"]
+    sensor = r["sensor_name"]  # the name: a number would be read as the K of sensor_K
     meas = read_measurement(measurement, column) if measurement else None
     cmp = compare_bands(meas, r["bands"], sensor, fmin, fmax, measured_averages) if meas is not None else None
     if cmp is not None and cmp["count"] == 0:

@@ -35,7 +35,8 @@ def engine(beam, *args):
     return json.loads(r.stdout)
 
 
-@pytest.mark.parametrize("extra", [[], ["--measured-averages", 25], ["--sensor", "sensor_2", "--fmin", 200]])
+@pytest.mark.parametrize("extra", [[], ["--measured-averages", 25], ["--sensor", "sensor_2", "--fmin", 200],
+                                   ["--sensor", "3"]])
 def test_python_and_engine_give_the_same_bands_and_answers(beam, extra):
     from rollspec_post.measurement import compare_bands, read_bands, read_measurement
     j = engine(beam, *extra)
@@ -45,6 +46,8 @@ def test_python_and_engine_give_the_same_bands_and_answers(beam, extra):
     cmp = compare_bands(read_measurement(beam["csv"], "level"), bands, opts.get("--sensor"),
                         float(opts.get("--fmin", 0.0)), np.inf, opts.get("--measured-averages"))
     assert cmp["sensor"] == j["sensor"] and cmp["question"] in j["question"]
+    if opts.get("--sensor") == "3":  # a number is the K of sensor_K in both
+        assert j["sensor"] == "sensor_3"
     used = cmp["used"]
     assert used.sum() == len(j["bands"]) and cmp["inside_count"] == j["inside"] and cmp["judged"] == j["judged"]
     np.testing.assert_allclose(cmp["measured_db"][used], [b["measured_db"] for b in j["bands"]], atol=1e-9)

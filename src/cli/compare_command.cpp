@@ -77,7 +77,10 @@ const char* const kCompareUsage =
     "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
     "--format json writes everything (the test as p_value, combined_test).\n"
     "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
-    "--skip-rows N: the header follows the first N lines.";
+    "--skip-rows N: the header follows the first N lines.\n"
+    "A result whose ball lost contact (more than 5 % of the time, or at all with law = linearised) is\n"
+    "flagged: a `WARNING:` line before the table (`# WARNING:` in csv, on stderr too), and in json\n"
+    "loss_of_contact_share and loss_of_contact_warning (null without).";
 
 // The bands inside [fmin, fmax] that the measurement covers, with the simulated mean's interval
 // and, for records > 0 (a measurement averaged over that many records), the prediction interval.
@@ -121,6 +124,21 @@ std::vector<BandRow> band_rows(const io::BandLevels& b, const Measurement& m, co
   return rows;
 }
 
+// The result's loss of contact (ball-on-beam): its share and, above the threshold or with law =
+// linearised, the warning `run` wrote; a comparison of such a result says so before anything else.
+struct LossOfContact {
+  double share = NAN;
+  std::string warning;
+};
+
+LossOfContact loss_of_contact(const io::Hdf5Reader& r) {
+  LossOfContact l;
+  if (r.exists("/contact/loss_of_contact_share")) l.share = r.read("/contact/loss_of_contact_share").at(0);
+  if (r.exists("/contact") && r.has_attribute("/contact", "loss_of_contact_warning"))
+    l.warning = r.string_attribute("/contact", "loss_of_contact_warning");
+  return l;
+}
+
 // What the printed forms of a comparison share.
 struct Comparison {
   const std::string &result, &measurement, &column;
@@ -133,12 +151,13 @@ struct Comparison {
   double rms;
   int inside, judged;
   const CombinedTest& test;
+  const LossOfContact& loss;
 };
 
 // `--format json`: one object with the inputs, the question, every band and the summary.
 std::string json_text(const Comparison& c) {
   const auto& [result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged,
-               test] = c;
+               test, loss] = c;
   std::string text;
   text += "{\n  \"result\": " + json_string(result) + ",\n  \"sensor\": " + json_string(b.sensor) +
           ",\n  \"measurement\": " + json_string(measurement) +
@@ -147,6 +166,8 @@ std::string json_text(const Comparison& c) {
           ",\n  \"confidence_level\": " + json_number(b.confidence) +
           ",\n  \"interval_method\": " + json_string(b.interval_method) +
           ",\n  \"measured_averages\": " + (predict ? json_number(records) : "null") +
+          ",\n  \"loss_of_contact_share\": " + json_number(loss.share) +
+          ",\n  \"loss_of_contact_warning\": " + (loss.warning.empty() ? "null" : json_string(loss.warning)) +
           ",\n  \"question\": " + json_string(question) + ",\n  \"bands\": [\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& x = rows[i];
@@ -183,7 +204,8 @@ int compare_command(const Args& args) {
   long long skip_rows = -1;
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
-      "sensor", po::value(&sensor), "sensor name or index in the result (default: sensor_mean if present, else 0)")(
+      "sensor", po::value(&sensor),
+      "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
       "column", po::value(&column),
       "PSD column of the measurement CSV (default: psd, else the only column besides frequency_hz)")(
       "measured-averages", po::value(&records), "independent records averaged into the measurement (>= 1)")(
@@ -238,6 +260,7 @@ int compare_command(const Args& args) {
   }
   const double rms = std::sqrt(sq / static_cast<double>(rows.size()));
   const int judged = has_interval ? static_cast<int>(rows.size()) : 0;
+  const LossOfContact loss = loss_of_contact(r);
   const std::string source = "result " + result + " (" + std::to_string(b.realisations) + " realisations), sensor " +
                              b.sensor + "; measurement " + measurement + ", column " +
                              (column.empty() ? "psd" : column);
@@ -249,9 +272,12 @@ int compare_command(const Args& args) {
 
   // Printed only once every band is computed: a refused input leaves no partial output.
   const Comparison c{result,       measurement, column, b,      rows,   predict, records,
-                     has_interval, question,    rms,    inside, judged, test};
+                     has_interval, question,    rms,    inside, judged, test,    loss};
   std::string text;
   char buf[320];
+  // On stderr too: a result dominated by impacts (or a linearised law past its validity) is no
+  // comparison of the roughness model, whatever the form the table is read in.
+  if (!loss.warning.empty()) std::cerr << "rollspec compare: WARNING: " << result << ": " << loss.warning << "\n";
   if (format == "json") {
     std::fputs(json_text(c).c_str(), stdout);
     return 0;
@@ -261,7 +287,8 @@ int compare_command(const Args& args) {
         "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,prediction_upper_db,"
         "inside\n";
   else {
-    text += source + "\nquestion: " + question + "\n";
+    text += source + "\n" + (loss.warning.empty() ? "" : "WARNING: " + loss.warning + "\n") + "question: " + question +
+            "\n";
     std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
                   "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
     text += buf;
@@ -288,7 +315,8 @@ int compare_command(const Args& args) {
   // Without M there is no test (it asks whether the measurement is a mean of M records): no line.
   const std::string test_line = predict ? "combined_test: " + test.verdict + "\n" : std::string();
   if (format == "csv")
-    text += "# " + source + "\n# question: " + question + "\n" + (predict ? "# " + test_line : "") + "# " + buf;
+    text += "# " + source + "\n" + (loss.warning.empty() ? "" : "# WARNING: " + loss.warning + "\n") +
+            "# question: " + question + "\n" + (predict ? "# " + test_line : "") + "# " + buf;
   else
     text += test_line + buf;
   std::fputs(text.c_str(), stdout);

@@ -13,24 +13,24 @@ namespace {
 
 std::string join(const std::vector<std::string>& names) {
   std::string s;
-  for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + std::to_string(i) + " = " + names[i];
+  for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
   return s;
 }
 
+// A sensor is picked by its name, or by the number K of its name sensor_K (1-based, as the names and
+// the study's [sensors] positions count): one scheme, whatever the row order.
 std::size_t pick_row(const Hdf5Reader& r, const std::vector<std::string>& names, const std::string& sensor) {
   if (sensor.empty()) {
     for (std::size_t i = 0; i < names.size(); ++i)
       if (names[i] == "sensor_mean") return i;
     return 0;
   }
+  const bool number = sensor.find_first_not_of("0123456789") == std::string::npos && sensor.size() < 10;
+  const std::string name = number ? "sensor_" + std::to_string(std::stoul(sensor)) : sensor;
   for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == sensor) return i;
-  if (sensor.find_first_not_of("0123456789") == std::string::npos && sensor.size() < 10) {
-    const std::size_t i = std::stoul(sensor);
-    if (i < names.size()) return i;
-  }
+    if (names[i] == name) return i;
   throw usage_error("--sensor " + sensor.substr(0, 200) + ": " + r.path() + " has the sensors " + join(names) +
-                    "; allowed: a name or an index");
+                    "; allowed: a name, or the number K of sensor_K");
 }
 
 // Well-formed UTF-8 without control characters: a name that is printed and written into JSON.

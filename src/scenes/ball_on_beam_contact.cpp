@@ -15,6 +15,7 @@ ResolvedContact contact_from_settings(const BallOnBeamSettings& b) {
   ResolvedContact c;
   c.law = b.model.contact;
   c.static_compression = b.static_compression;
+  c.contact_stiffness = b.contact_stiffness;
   c.line_psd = b.line_psd;
   return c;
 }
@@ -57,7 +58,8 @@ void take_stiffness_table(const BallOnBeamSettings& b, const stiffness::Stiffnes
   if (!(c.static_compression > 0.0))
     b.stiffness.approach_max_origin.refuse("the table's largest force " + std::to_string(t.force_mean.back()) +
                                            " N does not reach the ball's weight; raise approach_max");
-  check_contact_resolution(b, t.stiffness_at(b.weight()));
+  c.contact_stiffness = t.stiffness_at(b.weight());
+  check_contact_resolution(b, c.contact_stiffness);
 }
 
 void take_path_table(const BallOnBeamSettings& b, const stiffness::PathTableData& t, ResolvedContact& c) {
@@ -138,7 +140,8 @@ void take_blocked_force(const BallOnBeamSettings& b, const stiffness::BlockedFor
   c.blocked = t;
   c.law.k0 = c.blocked.k0;
   c.static_compression = b.weight() / c.blocked.k0;
-  check_contact_resolution(b, c.blocked.k0);
+  c.contact_stiffness = c.blocked.k0;
+  check_contact_resolution(b, c.contact_stiffness);
 }
 
 // F0 PSD along the path: the table's, and at long wavelengths, where the ball follows the

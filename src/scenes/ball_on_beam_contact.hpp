@@ -19,6 +19,7 @@ namespace rollspec::scenes {
 struct ResolvedContact {
   beam::ContactLaw law;                  // the law the integration runs
   double static_compression = 0.0;       // at the weight, under that law
+  double contact_stiffness = 0.0;        // tangent stiffness at the weight the step was checked with (0: none)
   texture::Psd line_psd;                 // what a synthesised line is drawn from (filter = solver: h_eq's PSD)
   beam::UniformSamples strip_line;       // [equivalent_roughness] line = strip: h_eq of strip 0 along the path
   stiffness::BlockedForceTable blocked;  // blocked_force = solver: k0 and the PSD of F0 along the path

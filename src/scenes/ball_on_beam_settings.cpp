@@ -132,6 +132,9 @@ texture::Psd iso2d_study_psd(const BallOnBeamSettings& b) {
 // The step must resolve the ball's bounce on the contact spring: h <= T_c / 20 with
 // T_c = 2 pi sqrt(m_ball / k_contact) at the static load (kernels/README.md D-23). Coarser steps stay
 // finite but misstate loss of contact and the high-frequency levels, so they are refused.
+// With the quadratic hold the ball's step (B37) lets that bounce grow by (w_c h)^4 / 48 per step
+// (kernels/beam README B37a): over a long record a bounce that D-23 resolves can grow from rounding
+// to loss of contact. Refused unless the contact damper outweighs it (B37b).
 void check_contact_resolution(const BallOnBeamSettings& b, double k_contact) {
   const double tc = 2.0 * M_PI * std::sqrt(b.model.ball.mass / k_contact);
   const double h = b.integration_step();
@@ -143,6 +146,39 @@ void check_contact_resolution(const BallOnBeamSettings& b, double k_contact) {
                              " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
                              " at this sample rate");
   }
+  const double growth = free_bounce_growth(b, k_contact);
+  if (!(growth > kFreeBounceGrowthLimit)) return;
+  const double w = 2.0 * M_PI / tc, duration = record_duration(b), m2 = b.model.ball.mass;
+  const double decay = b.contact_section.damping / (2.0 * m2);
+  const double h_max = std::cbrt(48.0 * (std::log(kFreeBounceGrowthLimit) / duration + decay) / std::pow(w, 4));
+  const auto need = static_cast<long long>(std::ceil(1.0 / (h_max * b.model.sample_rate)));
+  const double c_min = 2.0 * m2 * (std::pow(w * h, 4) / (48.0 * h) - std::log(kFreeBounceGrowthLimit) / duration);
+  b.substeps_origin.refuse(
+      "with the quadratic hold ([signal] hold = quadratic) the step h = " + io::four_digits(h) +
+      " s lets the ball's free bounce on the contact spring (T_c = " + io::four_digits(tc) +
+      " s, k_contact = " + io::four_digits(k_contact) +
+      " N/m at the weight) grow by (2 pi h / T_c)^4 / 48 per step, less the contact "
+      "damping's c / (2 m_ball) = " +
+      io::four_digits(decay) + " 1/s (kernels/beam README B37a, B37b): a factor " + io::four_digits(growth) +
+      " over the record's " + io::four_digits(duration) +
+      " s, so rounding grows into spurious loss of contact; allowed: substeps >= " + std::to_string(need) +
+      " at this sample rate (growth <= " + io::four_digits(kFreeBounceGrowthLimit) +
+      "), [signal] hold = linear (no growth), or [contact] damping >= " + io::four_digits(c_min) + " N s/m");
+}
+
+double record_duration(const BallOnBeamSettings& b) {
+  const beam::Traverse& t = b.model.traverse;
+  return t.speed > 0.0 ? (t.x_end - t.x_start) / t.speed : t.duration;
+}
+
+// B37b: the amplitude factor of the free contact bounce over the record, exp(T (w^4 h^3 / 48 - c / 2 m)),
+// at least 1; 1 where the step does not grow it (linear hold, Dormand-Prince).
+double free_bounce_growth(const BallOnBeamSettings& b, double k_contact) {
+  if (b.dopri || b.step.hold != beam::ForceHold::quadratic || !(k_contact > 0.0)) return 1.0;
+  const double m2 = b.model.ball.mass, h = b.integration_step();
+  const double w = std::sqrt(k_contact / m2);
+  const double rate = std::pow(w * h, 4) / (48.0 * h) - b.contact_section.damping / (2.0 * m2);
+  return std::exp(std::max(0.0, rate) * record_duration(b));
 }
 
 namespace {
@@ -262,9 +298,11 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
     b.line_psd = (b.patch_half_width > 0.0 && b.band_limit_wavenumber * b.spacing < M_PI)
                      ? texture::interpolation_compensated(b.psd, b.spacing)
                      : b.psd;
-  if (!b.uses_table() && !b.blocked_solver())
-    check_contact_resolution(
-        b, b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression));
+  if (!b.uses_table() && !b.blocked_solver()) {
+    b.contact_stiffness =
+        b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression);
+    check_contact_resolution(b, b.contact_stiffness);
+  }
   check_step_coefficients(b);
   // Record and spectra.
   b.samples = beam::output_samples(m);

@@ -78,6 +78,7 @@ struct BallOnBeamSettings {
   double spacing = 0.0;             // line texture sample spacing, m
   std::size_t line_samples = 0;     // over the whole span
   double patch_half_width = 0.0;    // contact_half_width for filter = patch, else 0 (no patch average)
+  double contact_stiffness = 0.0;   // the point law's tangent stiffness at the weight (0: tables, solver)
   double static_compression = 0.0;  // the keys' law at the weight: Hertz (or weight / k0); tables resolve theirs
   beam::ExactStepOptions step;
   bool dopri = false;  // Dormand-Prince reference instead of the exact step
@@ -114,5 +115,13 @@ std::vector<double> iso2d_line_psd_at(const BallOnBeamSettings& b, const std::ve
 // Refuses (at [signal] substeps) a step that does not resolve the ball's bounce on a contact
 // stiffness k_contact at the weight; the table laws call it again once their stiffness is known.
 void check_contact_resolution(const BallOnBeamSettings& b, double k_contact);
+
+// B37b: above it the free contact bounce's growth over the record is refused (10 % in amplitude).
+constexpr double kFreeBounceGrowthLimit = 1.1;
+// The amplitude factor of the ball's free bounce on k_contact over the record under the step
+// (kernels/beam README B37b); 1 with the linear hold or Dormand-Prince.
+double free_bounce_growth(const BallOnBeamSettings& b, double k_contact);
+// The traverse's duration (s): (end - start) / speed, or the still ball's duration.
+double record_duration(const BallOnBeamSettings& b);
 
 }  // namespace rollspec::scenes

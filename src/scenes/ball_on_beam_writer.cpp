@@ -51,6 +51,10 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
     w.attribute("/contact", "loss_of_contact_warning", loss);
   }
   w.attribute("/contact", "static_compression", c_.static_compression);
+  if (c_.contact_stiffness > 0.0) {  // what the step was checked against (D-23, B37b)
+    w.attribute("/contact", "contact_period", 2.0 * M_PI * std::sqrt(b_.model.ball.mass / c_.contact_stiffness));
+    w.attribute("/contact", "free_bounce_growth", free_bounce_growth(b_, c_.contact_stiffness));
+  }
   w.attribute("/contact", "patch_half_width", b_.patch_half_width);
   w.attribute("/contact", "filter", b_.filter_applied);
   if (b_.filter_applied != b_.filter_name)

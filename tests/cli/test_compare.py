@@ -30,6 +30,12 @@ def files(tmp_path_factory):
     return {"model": model, "rough": rough, "few": few, "meas": meas, "dir": d}
 
 
+def table_lines(r):
+    """The output without the loss-of-contact WARNING line (this study's ball flies: it is flagged,
+    test_loss_of_contact_flags.py)."""
+    return [line for line in r.stdout.splitlines() if not line.startswith("WARNING: ")]
+
+
 def last_line(r):
     assert r.returncode == 0, r.stderr
     line = r.stdout.strip().splitlines()[-1]
@@ -55,15 +61,19 @@ def test_a_model_with_twice_the_roughness_psd_is_told_apart(files):
 
 def test_the_output_names_the_sensor_and_the_question(files):
     r = run(["compare", files["model"], files["meas"]])
-    head = r.stdout.splitlines()[:2]
+    head = table_lines(r)[:2]
     assert "sensor sensor_mean" in head[0] and "(25 realisations)" in head[0]
     assert "interval of the simulated mean" in head[1] and "--measured-averages" in head[1]
     r = run(["compare", files["model"], files["meas"], "--measured-averages", 25, "--sensor", "sensor_2"])
-    assert "sensor sensor_2" in r.stdout.splitlines()[0]
-    assert "prediction interval of a measurement averaged over M = 25" in r.stdout.splitlines()[1]
-    assert "sensor sensor_3" in run(["compare", files["model"], files["meas"], "--sensor", 2]).stdout
-    r = run(["compare", files["model"], files["meas"], "--sensor", "sensor_9"])
-    assert r.returncode == EX_USAGE and "0 = sensor_1, 1 = sensor_2, 2 = sensor_3, 3 = sensor_mean" in r.stderr
+    assert "sensor sensor_2" in table_lines(r)[0]
+    assert "prediction interval of a measurement averaged over M = 25" in table_lines(r)[1]
+    # A number is the K of sensor_K, the name's own count (1-based), not a row index.
+    assert "sensor sensor_2" in run(["compare", files["model"], files["meas"], "--sensor", 2]).stdout
+    assert "sensor sensor_3" in run(["compare", files["model"], files["meas"], "--sensor", 3]).stdout
+    for wrong in ("sensor_9", "0", "4"):
+        r = run(["compare", files["model"], files["meas"], "--sensor", wrong])
+        assert r.returncode == EX_USAGE and "has the sensors sensor_1, sensor_2, sensor_3, sensor_mean" in r.stderr
+        assert "allowed: a name, or the number K of sensor_K" in r.stderr
     assert r.stdout == ""
 
 
@@ -95,7 +105,7 @@ def test_psd_output_chains_into_compare_by_column(files, tmp_path):
     assert r.returncode == 0, r.stderr
     assert "column ch3" in r.stdout.splitlines()[0]
     white = 10 * np.log10(2 * 0.01 / fs)  # one-sided PSD of white noise of variance 0.01
-    rows = [line.split() for line in r.stdout.splitlines()[3:-1]]
+    rows = [line.split() for line in table_lines(r)[3:-1]]
     assert len(rows) >= 10 and all(abs(float(x[2]) - white) < 1.0 for x in rows)
     r = run(["compare", files["model"], out])
     assert r.returncode != 0 and "no column 'psd'" in r.stderr and "ch1, ch3" in r.stderr
