@@ -96,8 +96,7 @@ int texture_command(const Args& args) {
     study.sets.push_back("lines.count=" + std::to_string(count));
     study.sets.push_back("surface.count=" + std::to_string(count));
   }
-  scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1,
-                       vm.count("force") > 0);
+  scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1, vm.count("force") > 0);
   const auto seed = study_keys.seed;
   const auto tex = study::TextureSection::parse(s);
   const auto line_keys = study::LinesSection::parse(s);
@@ -117,7 +116,8 @@ int texture_command(const Args& args) {
                                  psd, spacing, static_cast<std::size_t>(samples), false);
   const texture::LineTextureSpec& ls = lines->spec();
   const texture_io::SurfaceGenerator surfaces =
-      n_surf ? texture_io::surface_generator(tex, surface_keys, psd) : texture_io::SurfaceGenerator{};
+      n_surf ? texture_io::surface_generator(tex, texture_io::with_profile_values(tex, surface_keys), psd)
+             : texture_io::SurfaceGenerator{};
 
   io::OutputTarget target{out, "rollspec-texture"};
   target.force = vm.count("force") > 0;

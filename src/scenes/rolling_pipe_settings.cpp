@@ -48,7 +48,7 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   p.psd = texture_io::study_psd(p.texture);
   const auto roughness = PipeRoughnessSection::parse(s);
   p.line_keys = texture_io::LineGeneratorKeys::of(p.texture, roughness.spacing_origin, "[roughness] spacing");
-  if (!roughness.line) p.surface = study::SurfaceSection::parse(s);
+  if (!roughness.line) p.surface = texture_io::with_profile_values(p.texture, study::SurfaceSection::parse(s));
   p.line = roughness.line;
   const auto sensors = PipeSensorsSection::parse(s);
   p.sensor_mean = sensors.average;

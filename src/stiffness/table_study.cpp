@@ -41,7 +41,7 @@ TableStudy TableStudy::parse(const study::KeyReader& s) {
   }
   if (t.stiffness.rough) {
     t.texture = study::TextureSection::parse(s);
-    t.surface_generator = study::SurfaceSection::parse(s);
+    t.surface_generator = texture_io::with_profile_values(t.texture, study::SurfaceSection::parse(s));
   }
   return t;
 }

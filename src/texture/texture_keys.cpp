@@ -293,7 +293,25 @@ void SurfaceGenerator::generate(std::uint64_t seed_value, std::uint64_t realisat
 }
 
 SurfaceGenerator study_surface_generator(const KeyReader& s, const texture::Psd& psd) {
-  return surface_generator(TextureSection::parse(s), SurfaceSection::parse(s), psd);
+  const TextureSection t = TextureSection::parse(s);
+  return surface_generator(t, with_profile_values(t, SurfaceSection::parse(s)), psd);
+}
+
+SurfaceSection with_profile_values(const TextureSection& t, SurfaceSection s) {
+  // Seed 001 §3.1 and Eq. 10: sigma and the correlation lengths (isotropic) are the measured
+  // profiles' unless [surface] gives them.
+  const auto measured = profile_derived_surface_keys(t, s);
+  if (measured.empty()) return s;
+  const texture::EstimatedPsd est = profile_estimate(t);
+  for (const auto& k : measured) {
+    if (k == "sigma") s.sigma = est.sigma;
+    if (std::isfinite(est.correlation_length)) {
+      if (k == "correlation_x") s.correlation_x = est.correlation_length;
+      if (k == "correlation_y") s.correlation_y = est.correlation_length;
+    }
+  }
+  s.sigma_default = s.correlation_x_default = s.correlation_y_default = false;  // resolved
+  return s;
 }
 
 SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection& s, const texture::Psd& psd) {
@@ -319,19 +337,6 @@ SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection
       r.correlation_x = s.correlation_x;
       r.correlation_y = s.correlation_y;
       r.sigma = s.sigma;
-      // Seed 001 §3.1 and Eq. 10: sigma and the correlation lengths (isotropic) are the measured
-      // profiles' unless [surface] gives them.
-      const auto measured = profile_derived_surface_keys(t, s);
-      if (!measured.empty()) {
-        const texture::EstimatedPsd est = profile_estimate(t);
-        for (const auto& k : measured) {
-          if (k == "sigma") r.sigma = est.sigma;
-          if (std::isfinite(est.correlation_length)) {
-            if (k == "correlation_x") r.correlation_x = est.correlation_length;
-            if (k == "correlation_y") r.correlation_y = est.correlation_length;
-          }
-        }
-      }
       r.amplitudes = study_amplitudes(t);
       g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
     }

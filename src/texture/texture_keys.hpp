@@ -76,6 +76,10 @@ struct SurfaceGenerator {
   // Draws from the realisation surface streams, or with `table` from the contact tables' own family.
   void generate(std::uint64_t seed_value, std::uint64_t realisation, texture::Surface& out, bool table = false) const;
 };
+// [surface] with the seed-method keys it leaves at their default resolved from the measured profiles
+// (profile_derived_surface_keys; the profiles are read here), so a generator made from it reads no file.
+study::SurfaceSection with_profile_values(const study::TextureSection& t, study::SurfaceSection s);
+// `s` as with_profile_values gives it.
 SurfaceGenerator surface_generator(const study::TextureSection& t, const study::SurfaceSection& s,
                                    const texture::Psd& psd);
 SurfaceGenerator study_surface_generator(const study::KeyReader& s, const texture::Psd& psd);
