@@ -138,20 +138,30 @@ texture::Psd iso2d_study_psd(const BallOnBeamSettings& b) {
 void check_contact_resolution(const BallOnBeamSettings& b, double k_contact) {
   const double tc = 2.0 * M_PI * std::sqrt(b.model.ball.mass / k_contact);
   const double h = b.integration_step();
+  const double w = 2.0 * M_PI / tc, duration = record_duration(b), m2 = b.model.ball.mass;
+  const double decay = b.contact_section.damping / (2.0 * m2);
+  // The largest step whose free-bounce growth stays within the limit (B37b), and its substeps.
+  const double h_max = std::cbrt(48.0 * (std::log(kFreeBounceGrowthLimit) / duration + decay) / std::pow(w, 4));
+  const auto need_growth = free_bounce_growth(b, k_contact) > 1.0 || h > tc / 20.0
+                               ? static_cast<long long>(std::ceil(1.0 / (h_max * b.model.sample_rate)))
+                               : 0LL;
+  const bool grows = !b.dopri && b.step.hold == beam::ForceHold::quadratic;
   if (h > tc / 20.0) {
-    const auto need = static_cast<long long>(std::ceil(20.0 / (tc * b.model.sample_rate)));
+    // The substeps suggested satisfy B37b too, so following the advice is not refused again.
+    const auto need_d23 = static_cast<long long>(std::ceil(20.0 / (tc * b.model.sample_rate)));
+    const long long need = grows ? std::max(need_d23, need_growth) : need_d23;
     b.substeps_origin.refuse("the integration step 1 / (sample_rate x substeps) = " + io::four_digits(h) +
                              " s exceeds the contact resolution limit dt <= T_c / 20 = " + io::four_digits(tc / 20.0) +
                              " s (T_c = 2 pi sqrt(m_ball / k_contact), k_contact = " + io::four_digits(k_contact) +
                              " N/m at the ball's weight); allowed: substeps >= " + std::to_string(need) +
-                             " at this sample rate");
+                             " at this sample rate" +
+                             (need > need_d23 ? " (the quadratic hold's growth limit, kernels/beam README B37b, "
+                                                "asks for more than T_c / 20)"
+                                              : ""));
   }
   const double growth = free_bounce_growth(b, k_contact);
   if (!(growth > kFreeBounceGrowthLimit)) return;
-  const double w = 2.0 * M_PI / tc, duration = record_duration(b), m2 = b.model.ball.mass;
-  const double decay = b.contact_section.damping / (2.0 * m2);
-  const double h_max = std::cbrt(48.0 * (std::log(kFreeBounceGrowthLimit) / duration + decay) / std::pow(w, 4));
-  const auto need = static_cast<long long>(std::ceil(1.0 / (h_max * b.model.sample_rate)));
+  const long long need = need_growth;
   const double c_min = 2.0 * m2 * (std::pow(w * h, 4) / (48.0 * h) - std::log(kFreeBounceGrowthLimit) / duration);
   b.substeps_origin.refuse(
       "with the quadratic hold ([signal] hold = quadratic) the step h = " + io::four_digits(h) +

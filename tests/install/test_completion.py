@@ -130,7 +130,7 @@ def test_positional_options_are_hidden():
     assert positional_options("psd") == {"--signal"}
     assert positional_options("compare") == {"--result", "--measurement"}
     assert complete("rollspec", "run", "--st") == []
-    assert complete("rollspec", "plan", "--s") == ["--set"]
+    assert complete("rollspec", "plan", "--s") == ["--set", "--sweep"]
 
 
 def test_psd_completes_its_signal_and_options(files):
