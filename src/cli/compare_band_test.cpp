@@ -10,6 +10,18 @@
 
 namespace rollspec::cli {
 
+ChosenBands chosen_bands(const io::BandLevels& b, const std::vector<std::size_t>& band,
+                         const std::vector<double>& measured_db) {
+  const std::size_t p = band.size(), nb = b.level_db.size();
+  ChosenBands c{std::vector<double>(p), std::vector<double>(p), std::vector<double>(p * p)};
+  for (std::size_t i = 0; i < p; ++i) {
+    c.y[i] = measured_db[i] * std::log(10.0) / 10.0;
+    c.mean[i] = std::pow(10.0, b.level_db[band[i]] / 10.0);
+    for (std::size_t j = 0; j < p; ++j) c.cov[i * p + j] = b.log_covariance[band[i] * nb + band[j]];
+  }
+  return c;
+}
+
 CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_t>& band,
                            const std::vector<double>& measured_db, double records, double level) {
   CombinedTest t;
@@ -23,15 +35,10 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
     t.verdict = "none (the result has no /bands/log_level_covariance: re-run it with this rollspec)";
     return t;
   }
-  const std::size_t p = band.size(), nb = b.level_db.size();
-  std::vector<double> y(p), mean(p), cov(p * p);
-  for (std::size_t i = 0; i < p; ++i) {
-    y[i] = measured_db[i] * std::log(10.0) / 10.0;
-    mean[i] = std::pow(10.0, b.level_db[band[i]] / 10.0);
-    for (std::size_t j = 0; j < p; ++j) cov[i * p + j] = b.log_covariance[band[i] * nb + band[j]];
-  }
+  const std::size_t p = band.size();
+  const ChosenBands c = chosen_bands(b, band, measured_db);
   try {
-    t.result = spectral::band_test(y.data(), mean.data(), cov.data(), p, b.realisations, records);
+    t.result = spectral::band_test(c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records);
   } catch (const std::invalid_argument& e) {
     t.verdict = std::string("none (") + e.what() + ")";
     return t;

@@ -18,6 +18,14 @@ struct CombinedTest {
   std::string verdict;  // one line: rejected / not rejected with p, or why there is no test
 };
 
+// The compared bands as D-26 takes them: measured band logs y (natural log of power), the model's mean
+// band powers, and the between-band covariance of the band logs (p x p, row-major).
+struct ChosenBands {
+  std::vector<double> y, mean, cov;
+};
+ChosenBands chosen_bands(const io::BandLevels& b, const std::vector<std::size_t>& band,
+                         const std::vector<double>& measured_db);
+
 // `band`: indices of the compared bands in b; `measured_db`: their measured levels; records: M (0:
 // not given, no test).
 CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_t>& band,

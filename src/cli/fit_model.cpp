@@ -107,16 +107,11 @@ double FitModel::negative_log_likelihood(const std::vector<double>& u) {
   const auto hit = cache_.find(u);
   if (hit != cache_.end()) return hit->second;
   const io::BandLevels b = run_at(u);
-  const std::size_t p = band_.size(), nb = b.level_db.size();
-  std::vector<double> y(p), mean(p), cov(p * p);
-  for (std::size_t i = 0; i < p; ++i) {
-    y[i] = measured_db_[i] * std::log(10.0) / 10.0;
-    mean[i] = std::pow(10.0, b.level_db[band_[i]] / 10.0);
-    for (std::size_t j = 0; j < p; ++j) cov[i * p + j] = b.log_covariance[band_[i] * nb + band_[j]];
-  }
+  const ChosenBands c = chosen_bands(b, band_, measured_db_);
   double value = INFINITY;  // a point where the model has no power in a band: impossible
   try {
-    value = -spectral::band_log_likelihood(y.data(), mean.data(), cov.data(), p, b.realisations, in_.records);
+    value = -spectral::band_log_likelihood(c.y.data(), c.mean.data(), c.cov.data(), band_.size(), b.realisations,
+                                           in_.records);
   } catch (const std::invalid_argument&) {
   }
   cache_.emplace(u, value);

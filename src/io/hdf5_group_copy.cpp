@@ -57,11 +57,20 @@ void copy_dataset(hid_t from, const std::string& source, hid_t to, const std::st
   const herr_t w = b.valid() ? H5Dwrite(b.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) : -1;
   if (is_variable(type.get())) H5Dvlen_reclaim(type.get(), space.get(), H5P_DEFAULT, buf.data());
   check(w >= 0, source);
-  hid_t to_id = b.get();
-  check(H5Aiterate2(a.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, copy_attribute, &to_id) >= 0, source);
+  check(copy_attributes(a.get(), b.get()), source);
 }
 
 }  // namespace
+
+bool copy_attributes(hid_t from, hid_t to) {
+  return H5Aiterate2(from, H5_INDEX_NAME, H5_ITER_INC, nullptr, copy_attribute, &to) >= 0;
+}
+
+std::string attached_scale(hid_t d, unsigned dim) {
+  std::string scale;
+  H5DSiterate_scales(d, dim, nullptr, scale_path, &scale);
+  return scale;
+}
 
 void copy_group(hid_t from, const std::string& group, hid_t to, const std::string& to_group) {
   Hdf5Handle g(H5Gopen2(from, group.c_str(), H5P_DEFAULT));
@@ -84,8 +93,7 @@ void copy_group(hid_t from, const std::string& group, hid_t to, const std::strin
     Hdf5Handle space(H5Dget_space(a.get()));
     const int rank = H5Sget_simple_extent_ndims(space.get());
     for (int d = 0; d < rank; ++d) {
-      std::string scale;
-      H5DSiterate_scales(a.get(), static_cast<unsigned>(d), nullptr, scale_path, &scale);
+      const std::string scale = attached_scale(a.get(), static_cast<unsigned>(d));
       if (scale.rfind(group + "/", 0) != 0) continue;  // a scale outside the group is not copied
       Hdf5Handle b(H5Dopen2(to, (to_group + "/" + n).c_str(), H5P_DEFAULT));
       Hdf5Handle s(H5Dopen2(to, (to_group + scale.substr(group.size())).c_str(), H5P_DEFAULT));

@@ -12,4 +12,11 @@ namespace rollspec::io {
 // its parents). Throws cannot_create if HDF5 refuses a step.
 void copy_group(hid_t from, const std::string& group, hid_t to, const std::string& to_group);
 
+// Copies the attributes of object `from` to object `to`, except those the dimension-scale API keeps
+// (DIMENSION_LIST, REFERENCE_LIST, CLASS, NAME). False if HDF5 refuses one.
+bool copy_attributes(hid_t from, hid_t to);
+
+// The path of the first dimension scale attached to axis `dim` of dataset `d` ("" if none).
+std::string attached_scale(hid_t d, unsigned dim);
+
 }  // namespace rollspec::io

@@ -177,29 +177,6 @@ AttributeValue read_attribute(hid_t file, const std::string& object, const std::
   return v;
 }
 
-herr_t first_scale(hid_t, unsigned, hid_t scale, void* out) {
-  char name[1024] = {0};
-  H5Iget_name(scale, name, sizeof name);
-  *static_cast<std::string*>(out) = name;
-  return 1;
-}
-
-herr_t copy_attribute(hid_t from, const char* name, const H5A_info_t*, void* to_ptr) {
-  static const std::set<std::string> kept_by_scales = {"DIMENSION_LIST", "REFERENCE_LIST", "CLASS", "NAME"};
-  if (kept_by_scales.count(name)) return 0;
-  Hdf5Handle a(H5Aopen(from, name, H5P_DEFAULT));
-  Hdf5Handle type(H5Aget_type(a.get())), space(H5Aget_space(a.get()));
-  const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get()));
-  std::vector<char> buf(n * H5Tget_size(type.get()) + 1);
-  if (H5Aread(a.get(), type.get(), buf.data()) < 0) return -1;
-  const hid_t to = *static_cast<hid_t*>(to_ptr);
-  Hdf5Handle b(H5Acreate2(to, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
-  const herr_t w = b.valid() ? H5Awrite(b.get(), type.get(), buf.data()) : -1;
-  if (H5Tdetect_class(type.get(), H5T_VLEN) > 0 || H5Tis_variable_str(type.get()) > 0)
-    H5Dvlen_reclaim(type.get(), space.get(), H5P_DEFAULT, buf.data());
-  return w < 0 ? -1 : 0;
-}
-
 struct Stacker {
   const StackRequest& q;
   hid_t file;
@@ -238,7 +215,7 @@ struct Stacker {
     Hdf5Handle from(H5Dopen2(file, old.c_str(), H5P_DEFAULT));
     const auto rank = points.front().dims.size();
     std::vector<std::string> scales(rank);
-    for (unsigned d = 0; d < rank; ++d) H5DSiterate_scales(from.get(), d, nullptr, first_scale, &scales[d]);
+    for (unsigned d = 0; d < rank; ++d) scales[d] = attached_scale(from.get(), d);
     std::vector<hsize_t> dims = lead();
     const auto axes = dims.size();
     dims.insert(dims.end(), points.front().dims.begin(), points.front().dims.end());
@@ -249,9 +226,7 @@ struct Stacker {
     Hdf5Handle to(H5Dcreate2(file, path.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
     check(to.valid() && H5Dwrite(to.get(), mem.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, all.data()) >= 0,
           "dataset " + path);
-    hid_t to_id = to.get();
-    check(H5Aiterate2(from.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, copy_attribute, &to_id) >= 0,
-          "attributes of " + path);
+    check(copy_attributes(from.get(), to.get()), "attributes of " + path);
     for (unsigned d = 0; d < rank; ++d)
       if (!scales[d].empty()) {
         Hdf5Handle s(H5Dopen2(file, scales[d].c_str(), H5P_DEFAULT));

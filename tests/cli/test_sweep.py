@@ -7,7 +7,7 @@ import time
 import h5py
 import numpy as np
 
-from conftest import BIN, EX_CONFIG, EX_INTERRUPTED, assert_refused, result_datasets, run
+from conftest import BIN, EX_CONFIG, EX_INTERRUPTED, assert_refused, result_datasets, run, study_result
 
 MASSES, FREQUENCIES = ["1", "2.5"], ["30", "45"]
 
@@ -20,13 +20,7 @@ def sweep_study(small_study, sweep, realisations=6, duration=4, chunk=2):
 
 def single(small_study, tmp_path, name, sets, realisations=6, duration=4, chunk=2):
     study = small_study(realisations=realisations, chunk=chunk, duration=duration, name="plain.ini")
-    out = tmp_path / f"{name}.h5"
-    args = ["run", study, "--out", out, "--quiet"]
-    for s in sets:
-        args += ["--set", s]
-    r = run(args)
-    assert r.returncode == 0, r.stderr
-    return result_datasets(out)
+    return result_datasets(study_result(study, tmp_path, name, *sets))
 
 
 def assert_same(got, want, name):
