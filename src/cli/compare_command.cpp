@@ -239,10 +239,10 @@ int compare_command(const Args& args) {
     throw usage_error("--measured-averages " + number_text(records) +
                       ": allowed: a finite count >= 1 of independent records");
 
+  const io::SensorChoice choice = io::sensor_choice(
+      sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
-  io::SensorChoice choice{sensor, std::nullopt};
-  if (vm.count("measured-position")) choice.position = measured_position;
   const io::BandLevels b = io::read_band_levels(r, choice);
   if (vm.count("skip-rows") && skip_rows < 0)
     throw usage_error("--skip-rows " + std::to_string(skip_rows) +

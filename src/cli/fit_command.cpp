@@ -105,6 +105,8 @@ int fit_command(const Args& args) {
     throw usage_error("--measured-averages " + number_text(records) +
                       ": allowed: a finite count >= 1 of independent records");
   FitInputs in;
+  in.sensor = io::sensor_choice(
+      sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   if (vary_specs.size() > 3)
     throw usage_error("--vary given " + std::to_string(vary_specs.size()) + " times; allowed: 1 to 3 keys");
   for (const auto& s : vary_specs) {
@@ -117,8 +119,7 @@ int fit_command(const Args& args) {
       if (s.rfind(v.key + "=", 0) == 0)
         throw usage_error("--set " + clip(s) + ": " + v.key + " is varied by --vary; allowed: one of the two");
   if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
-  in.study = study, in.measurement_path = measurement, in.sensor = {sensor, std::nullopt}, in.sets = sets;
-  if (vm.count("measured-position")) in.sensor.position = measured_position;
+  in.study = study, in.measurement_path = measurement, in.sets = sets;
   in.records = records, in.fmin = fmin, in.fmax = fmax;
   in.measurement = read_measurement(measurement, column, -1, "fit");
 

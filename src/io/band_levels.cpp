@@ -41,7 +41,6 @@ std::size_t pick_by_name(const Hdf5Reader& r, const std::vector<std::string>& na
 std::size_t pick_by_position(const Hdf5Reader& r, const std::vector<std::string>& names,
                              const std::vector<double>& positions, double x, std::string& note) {
   const std::string option = "--measured-position " + number_text(x) + " m";
-  if (!std::isfinite(x)) throw usage_error(option + ": allowed: a finite position in m");
   std::vector<std::size_t> placed;
   for (std::size_t i = 0; i < positions.size(); ++i)
     if (std::isfinite(positions[i])) placed.push_back(i);
@@ -80,12 +79,8 @@ std::size_t pick_by_position(const Hdf5Reader& r, const std::vector<std::string>
 // The one chooser of a result's row, for compare and fit.
 std::size_t pick_row(const Hdf5Reader& r, const std::vector<std::string>& names, const std::vector<double>& positions,
                      const SensorChoice& choice, std::string& note) {
-  if (!choice.position) return pick_by_name(r, names, choice.name);
-  if (!choice.name.empty())
-    throw usage_error("--sensor " + choice.name.substr(0, 200) + " and --measured-position " +
-                      number_text(*choice.position) +
-                      " m both given; allowed: one of the two (a sensor by name, or the one nearest a place)");
-  return pick_by_position(r, names, positions, *choice.position, note);
+  const SensorChoice c = sensor_choice(choice.name, choice.position);
+  return c.position ? pick_by_position(r, names, positions, *c.position, note) : pick_by_name(r, names, c.name);
 }
 
 // Well-formed UTF-8 without control characters: a name that is printed and written into JSON.
@@ -108,6 +103,15 @@ bool printable_utf8(const std::string& s) {
 constexpr double kLargestLevelDb = 3100.0;
 
 }  // namespace
+
+SensorChoice sensor_choice(const std::string& name, std::optional<double> position) {
+  if (position && !std::isfinite(*position))
+    throw usage_error("--measured-position " + number_text(*position) + ": allowed: a finite position in m");
+  if (position && !name.empty())
+    throw usage_error("--sensor " + name.substr(0, 200) + " and --measured-position " + number_text(*position) +
+                      " m both given; allowed: one of the two (a sensor by name, or the one nearest a place)");
+  return {name, position};
+}
 
 BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice) {
   const std::string& file = r.path();

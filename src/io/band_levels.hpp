@@ -34,9 +34,12 @@ struct SensorChoice {
   std::optional<double> position;
 };
 
-// Refuses (exit 64) an unknown sensor, naming the ones there are, both ways of choosing at once, a
-// position with no sensor near it or a result without positions, and (exit 65) datasets of the
-// wrong shape or with NaN.
+// The choice of --sensor and --measured-position, refused (exit 64) before any work when both are
+// given or the position is not a finite number.
+SensorChoice sensor_choice(const std::string& name, std::optional<double> position);
+
+// Refuses (exit 64) an unknown sensor, naming the ones there are, a position with no sensor near it or a result without
+// positions, and (exit 65) datasets of the wrong shape or with NaN.
 BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice);
 
 }  // namespace rollspec::io
