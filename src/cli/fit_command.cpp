@@ -84,7 +84,8 @@ int fit_command(const Args& args) {
       "vary", po::value(&vary_specs)->required(), "section.key=lo:hi[:log], 1 to 3 times")(
       "measured-averages", po::value(&records)->required(), "independent records averaged into the measurement")(
       "set", po::value(&sets), "section.key=value for every run")(
-      "sensor", po::value(&sensor), "sensor name or index (default: sensor_mean if present, else 0)")(
+      "sensor", po::value(&sensor),
+      "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
       "measured-position", po::value(&measured_position),
       "where the measurement was taken (m): the sensor nearest it, as compare picks it")(
       "column", po::value(&column), "PSD column of the measurement CSV")("fmin", po::value(&fmin)->default_value(0.0),

@@ -4,10 +4,14 @@
 //   rollspec plan STUDY.ini
 //   rollspec psd SIGNAL.csv --fs HZ [--segment N] [--overlap F] [--window hann|rect] [--out FILE.csv]
 //   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K | --measured-position X] [--column NAME]
-//   [--measured-averages M] [--format table|csv|json] rollspec texture STUDY.ini [--out FILE.h5] [--count N] rollspec
-//   modes STUDY.ini rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild] rollspec keys [SCENE] rollspec init
-//   [SCENE] [--out FILE.ini] [--force] rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log]
-//   --measured-averages M rollspec version (or rollspec --version, rollspec -V)
+//                    [--measured-averages M] [--format table|csv|json]
+//   rollspec texture STUDY.ini [--out FILE.h5] [--count N]
+//   rollspec modes STUDY.ini
+//   rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild]
+//   rollspec keys [SCENE]
+//   rollspec init [SCENE] [--out FILE.ini] [--force]
+//   rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] --measured-averages M
+//   rollspec version (or rollspec --version, rollspec -V)
 //
 // Exit codes follow <sysexits.h>: 64 usage, 65 bad data, 66 missing input, 73 cannot create
 // output, 74 cannot write standard output, 78 bad configuration, 130 interrupted.
