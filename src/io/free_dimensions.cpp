@@ -49,6 +49,8 @@ bool name_free_dimensions(hid_t file) {
       if (H5LTmake_dataset_double(file, scale.c_str(), 1, &n, index.data()) < 0 ||
           H5LTset_attribute_string(file, scale.c_str(), "units", "1") < 0 ||
           H5LTset_attribute_string(file, scale.c_str(), "description",
+                                   ("index along axis " + std::to_string(k) + " of " + base).c_str()) < 0 ||
+          H5LTset_attribute_string(file, scale.c_str(), "long_name",
                                    ("index along axis " + std::to_string(k) + " of " + base).c_str()) < 0)
         return false;
       const Closer s{H5Dopen2(file, scale.c_str(), H5P_DEFAULT), H5Dclose};

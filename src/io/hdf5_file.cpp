@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "src/io/long_name.hpp"
 #include "src/error.hpp"
 #include "src/io/free_dimensions.hpp"
 #include "src/io/available_memory.hpp"
@@ -137,7 +138,10 @@ void Hdf5Writer::write(const std::string& path, const std::vector<std::size_t>& 
   if (H5LTmake_dataset_double(file_.get(), path.c_str(), static_cast<int>(d.size()), d.data(), data) < 0)
     throw cannot_create(failure_reason("cannot write dataset " + path + " to " + temp_path_));
   attribute(path, "units", units);
-  if (!description.empty()) attribute(path, "description", description);
+  if (!description.empty()) {
+    attribute(path, "description", description);
+    attribute(path, "long_name", long_name_of(description));
+  }
 }
 
 void Hdf5Writer::write_strings(const std::string& path, const std::vector<std::string>& values,
@@ -154,7 +158,10 @@ void Hdf5Writer::write_strings(const std::string& path, const std::vector<std::s
   if (!set.valid() || H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
     throw cannot_create(failure_reason("cannot write dataset " + path + " to " + temp_path_));
   attribute(path, "units", "1");
-  if (!description.empty()) attribute(path, "description", description);
+  if (!description.empty()) {
+    attribute(path, "description", description);
+    attribute(path, "long_name", long_name_of(description));
+  }
 }
 
 void Hdf5Writer::make_scale(const std::string& scale, const std::string& name) {

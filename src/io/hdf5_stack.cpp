@@ -10,6 +10,7 @@
 #include <limits>
 #include <set>
 
+#include "src/io/long_name.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/hdf5_group_copy.hpp"
@@ -142,6 +143,7 @@ void write_values(hid_t file, const std::string& path, const StackAxis& axis) {
   check(set.valid() && w >= 0, "dataset " + path);
   string_attribute(file, path, "units", axis.units);
   string_attribute(file, path, "description", axis.description);
+  string_attribute(file, path, "long_name", long_name_of(axis.description));
 }
 
 herr_t attribute_name(hid_t, const char* name, const H5A_info_t*, void* out) {
