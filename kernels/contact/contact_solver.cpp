@@ -109,7 +109,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   if (!load) {
     // The outputs read the exact gap on the plastic cells (plastic volume) and on the open cells
     // within two cells of E (the sub-cell edge): u = C p on the box of the loaded cells {p > 0}
-    // grown by two cells (Eq. 3d), NaN outside it.
+    // grown by two cells (Eq. 3d), zero outside it (not read there; the work arrays stay finite).
     if (!policy.u_full()) {
       loaded_.clear();
       for (const std::uint32_t i : active_)
@@ -124,7 +124,7 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
 }
 
 // README Eq. 3d: out = C v on the bounding box of `cells` grown by kOutputMargin cells (v is zero
-// off `cells`), by the DC-FFT of the ladder box that holds it (Eq. 3c); NaN outside that box. The
+// off `cells`), by the DC-FFT of the ladder box that holds it (Eq. 3c); zero outside that box. The
 // whole grid's product when the grown box is the grid (then the same bits as op_.apply).
 void ContactSolver::apply_around(const double* v, const std::vector<std::uint32_t>& cells, double* out) {
   const Grid& g = op_.grid();
@@ -152,7 +152,7 @@ void ContactSolver::apply_around(const double* v, const std::vector<std::uint32_
     op_.apply(v, out);
     return;
   }
-  std::fill(out, out + g.size(), std::numeric_limits<double>::quiet_NaN());
+  std::fill(out, out + g.size(), 0.0);
   around_box_->apply(v, out);
 }
 
