@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "kernels/contact/cell_loops.hpp"
@@ -106,13 +107,53 @@ ContactResult ContactSolver::run(const std::vector<double>& s, double target, bo
   res.iterations = polonsky_keer(policy, u_valid, opt, res);
   res.approach = policy.approach();
   if (!load) {
-    // The outputs (plastic volume, the sub-cell edge's open cells) want the exact gap everywhere.
-    if (!policy.u_full()) op_.apply(p.data(), u_.data());
+    // The outputs read the exact gap on the plastic cells (plastic volume) and on the open cells
+    // within two cells of E (the sub-cell edge): u = C p on the box of the loaded cells {p > 0}
+    // grown by two cells (Eq. 3d), zero outside it (not read there; the work arrays stay finite).
+    if (!policy.u_full()) {
+      loaded_.clear();
+      for (const std::uint32_t i : active_)
+        if (p[i] > 0.0) loaded_.push_back(i);
+      apply_around(p.data(), loaded_, u_.data());
+    }
     for (std::size_t i = 0; i < n; ++i) g_[i] = s[i] - w + u_[i];
   }
   summarise(p, g_, hardness, grid.cell_area(), nullptr, res);  // seed 001 Eq. 12; README Eq. 10
   if (opt.compute_stiffness && op_.boundary() == Boundary::Open) frozen_stiffness(p, opt, res);
   return res;
+}
+
+// README Eq. 3d: out = C v on the bounding box of `cells` grown by kOutputMargin cells (v is zero
+// off `cells`), by the DC-FFT of the ladder box that holds it (Eq. 3c); zero outside that box. The
+// whole grid's product when the grown box is the grid (then the same bits as op_.apply).
+void ContactSolver::apply_around(const double* v, const std::vector<std::uint32_t>& cells, double* out) {
+  const Grid& g = op_.grid();
+  std::size_t x_lo = g.nx, x_hi = 0, y_lo = g.ny, y_hi = 0;
+  for (const std::uint32_t i : cells) {
+    x_lo = std::min<std::size_t>(x_lo, i % g.nx);
+    x_hi = std::max<std::size_t>(x_hi, i % g.nx);
+    y_lo = std::min<std::size_t>(y_lo, i / g.nx);
+    y_hi = std::max<std::size_t>(y_hi, i / g.nx);
+  }
+  if (cells.empty() || op_.boundary() != Boundary::Open) {
+    op_.apply(v, out);
+    return;
+  }
+  x_lo = x_lo >= kOutputMargin ? x_lo - kOutputMargin : 0;
+  y_lo = y_lo >= kOutputMargin ? y_lo - kOutputMargin : 0;
+  x_hi = std::min(g.nx - 1, x_hi + kOutputMargin);
+  y_hi = std::min(g.ny - 1, y_hi + kOutputMargin);
+  around_.clear();
+  for (std::size_t y = y_lo; y <= y_hi; ++y)
+    for (std::size_t x = x_lo; x <= x_hi; ++x) around_.push_back(static_cast<std::uint32_t>(y * g.nx + x));
+  if (!around_box_) around_box_ = std::make_unique<BoxProduct>(op_);
+  around_box_->set_cells(around_);
+  if (around_box_->box_nx() == g.nx && around_box_->box_ny() == g.ny) {
+    op_.apply(v, out);
+    return;
+  }
+  std::fill(out, out + g.size(), 0.0);
+  around_box_->apply(v, out);
 }
 
 // C v on the cells `cells` (v = 0 elsewhere): direct sums over v's non-zero cells for those cells
@@ -126,7 +167,11 @@ bool ContactSolver::apply_on(const double* v, const std::vector<std::uint32_t>& 
     // Eq. 3c: v is zero off `cells` and u is wanted on `cells` only: the product on the box that
     // holds them (the whole grid when no smaller box of the ladder does).
     if (!cell_box_) cell_box_ = std::make_unique<BoxProduct>(op_);
-    cell_box_->set_cells(cells);
+    // The box of a list is placed once: every CG iteration of a solve passes the same A (or E).
+    if (cell_box_cells_ != cells) {
+      cell_box_cells_ = cells;
+      cell_box_->set_cells(cell_box_cells_);
+    }
     const bool whole = cell_box_->box_nx() == op_.grid().nx && cell_box_->box_ny() == op_.grid().ny;
     if (static_cast<double>(sources_.size()) * static_cast<double>(cells.size()) < cell_box_->fft_cost()) {
       op_.apply_direct(v, sources_, cells, out);
@@ -178,7 +223,8 @@ bool ContactSolver::coarse_start(const std::vector<double>& s, double w, std::ve
 // k = dP/dw with the contact set frozen (README Eq. 11): on the elastic contact cells E
 // (0 < p < H) solve C_EE Δp = 1 by CG; plastic cells stay at H, open cells at 0; k = ΔA Σ Δp.
 // Then the sub-cell edge correction δk (README Eq. 13–15): stiffness = k_frozen + δk.
-void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverOptions& opt, ContactResult& res) {
+void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverOptions& opt, ContactResult& res,
+                                     bool full_outputs) {
   const std::size_t n = p.size();
   const double hardness = opt.hardness;
   std::size_t m = 0;
@@ -253,8 +299,12 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
   res.frozen_stiffness = op_.grid().cell_area() * sum;
   res.stiffness_converged = ok;
   res.stiffness_iterations = it;
-  // Sub-cell contact edge (README Eq. 13–15): one more half-space product, u' = C dp.
-  op_.apply(dp_.data(), r_.data());
+  // Sub-cell contact edge (README Eq. 13–15): one more half-space product, u' = C dp, read on the
+  // open cells within two cells of E: on E's box grown by two cells (Eq. 3d); the reference on all.
+  if (full_outputs)
+    op_.apply(dp_.data(), r_.data());
+  else
+    apply_around(dp_.data(), elastic_, r_.data());
   const EdgeCorrection edge = edge_correction(op_.grid(), op_.e_star(), res.approach, p, dp_, gap_, r_, hardness);
   res.edge_correction = edge.delta_k;
   res.stiffness = res.frozen_stiffness + edge.delta_k;

@@ -131,7 +131,12 @@ class ContactSolver {
                     const SolverOptions& options);
   ContactResult run_reference(const std::vector<double>& gap, double target, bool load, std::vector<double>& pressure,
                               const SolverOptions& options);
-  void frozen_stiffness(const std::vector<double>& pressure, const SolverOptions& options, ContactResult& result);
+  // `full_outputs`: u' = C dp on the whole grid (the reference) instead of around E (Eq. 3d).
+  void frozen_stiffness(const std::vector<double>& pressure, const SolverOptions& options, ContactResult& result,
+                        bool full_outputs = false);
+  // The outputs' products (gap, u' = C dp): on the box of the cells grown by this many cells (Eq. 3d).
+  static constexpr std::size_t kOutputMargin = 2;
+  void apply_around(const double* v, const std::vector<std::uint32_t>& cells, double* out);
 
   HalfSpaceOperator op_;
   std::vector<double> u_, g_, t_, r_, x_, gap_;  // work arrays, one set per solver (thread-private use)
@@ -149,9 +154,12 @@ class ContactSolver {
   // Load control (solve_at_force): products on the box of the listed cells; the listed cells L; a
   // step's departures from −τ t (clipped, released, rescaled cells) and where they are.
   std::unique_ptr<BoxProduct> box_;
-  std::unique_ptr<BoxProduct> cell_box_;  // displacement control: products on the box of A or E (Eq. 3c)
+  std::unique_ptr<BoxProduct> cell_box_;       // displacement control: products on the box of A or E (Eq. 3c)
+  std::vector<std::uint32_t> cell_box_cells_;  // the cells cell_box_ was placed for
   std::vector<std::uint32_t> listed_, free_, touched_;
   std::vector<double> delta_;
+  std::unique_ptr<BoxProduct> around_box_;  // the outputs' products (Eq. 3d) and their cells
+  std::vector<std::uint32_t> around_, loaded_;
 };
 
 }  // namespace rollspec::contact

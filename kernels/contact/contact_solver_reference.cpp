@@ -377,7 +377,7 @@ ContactResult ContactSolver::run_reference(const std::vector<double>& s, double 
   std::fill(t_.begin(), t_.end(), 0.0);
   ref.iterate();
   ref.outputs(area);
-  if (opt.compute_stiffness && op_.boundary() == Boundary::Open) frozen_stiffness(p, opt, res);
+  if (opt.compute_stiffness && op_.boundary() == Boundary::Open) frozen_stiffness(p, opt, res, true);
   return res;
 }
 

@@ -9,6 +9,8 @@ namespace rollspec::contact {
 // stopping rule, other last bits. 4: open padding to the smallest 2^a 3^b 5^c 7^d >= 2n - 1 (README
 // Eq. 3) instead of 2n: the same sums, other last bits. 5: displacement control's products on A and
 // E on the box that holds them (Eq. 3c), the frozen-set CG from a given rate (Eq. 11a), chunked paths.
-inline constexpr int kernel_version = 5;
+// 6: the outputs' gap and u' = C dp on the box around A and E (Eq. 3d): other last bits of the
+// plastic volume and the stiffness's sub-cell edge.
+inline constexpr int kernel_version = 6;
 
 }  // namespace rollspec::contact

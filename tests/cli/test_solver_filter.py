@@ -69,7 +69,8 @@ def test_runs_is_cached_and_filters_below_the_patch_scale(tmp_path):
 
 
 def test_the_table_has_the_same_bits_on_one_and_two_threads(tmp_path):
-    heights = []
+    # Every dataset and number attribute of the table (h_eq, its PSD, the stiffness k_eq), bit for bit.
+    tables = []
     for n in (1, 2):
         d = tmp_path / f"t{n}"
         d.mkdir()
@@ -78,8 +79,14 @@ def test_the_table_has_the_same_bits_on_one_and_two_threads(tmp_path):
         r = run(["run", d / "rig.ini", "--out", d / "r.h5", *args], env={"OMP_NUM_THREADS": str(n)}, cwd=d)
         assert r.returncode == 0, r.stderr
         with h5py.File(glob.glob(str(d / "tables" / "equivalent-roughness-*.h5"))[0]) as t:
-            heights.append((t["/equivalent_roughness/height"][:], t["/equivalent_roughness/psd"][:]))
-    assert np.array_equal(heights[0][0], heights[1][0]) and np.array_equal(heights[0][1], heights[1][1])
+            g = t["/equivalent_roughness"]
+            table = {k: v[...].tobytes() for k, v in g.items() if isinstance(v, h5py.Dataset)}
+            table.update({"@" + k: np.asarray(v).tobytes() for k, v in g.attrs.items() if np.asarray(v).dtype.kind == "f"})
+            tables.append(table)
+    assert {"height", "psd", "stiffness"} <= tables[0].keys()
+    assert tables[0].keys() == tables[1].keys()
+    for k in tables[0]:
+        assert tables[0][k] == tables[1][k], k
 
 
 def test_bad_combinations_are_refused(tmp_path):

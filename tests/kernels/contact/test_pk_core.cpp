@@ -2,7 +2,9 @@
 // it replaced (contact_solver_reference.cpp, load_control_reference.cpp): both constraint policies,
 // elastic and elastic-plastic, cold, coarse, warm and hinted starts, unconverged exits. The core is
 // the same arithmetic in the same order, so everything is compared bit for bit (memcmp of the
-// fields, == of the counts): the shipped studies depend on these bits.
+// fields, == of the counts): the shipped studies depend on these bits. Except, in displacement
+// control, the outputs formed from the final products (plastic volume, the sub-cell edge δk): the
+// core forms them on the box around A and E (README Eq. 3d), the reference on the whole grid.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -26,7 +28,7 @@ bool same_field(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
 
-void check_same(const ContactResult& a, const ContactResult& b) {
+void check_same(const ContactResult& a, const ContactResult& b, bool outputs_around = false) {
   CHECK(a.converged == b.converged);
   CHECK(a.iterations == b.iterations);
   CHECK(a.coarse_iterations == b.coarse_iterations);
@@ -38,11 +40,22 @@ void check_same(const ContactResult& a, const ContactResult& b) {
   CHECK(same_bits(a.error, b.error));
   CHECK(same_bits(a.force, b.force));
   CHECK(same_bits(a.contact_area, b.contact_area));
-  CHECK(same_bits(a.plastic_volume, b.plastic_volume));
   CHECK(same_bits(a.max_pressure, b.max_pressure));
-  CHECK(same_bits(a.stiffness, b.stiffness));
   CHECK(same_bits(a.frozen_stiffness, b.frozen_stiffness));
-  CHECK(same_bits(a.edge_correction, b.edge_correction));
+  if (!outputs_around) {
+    CHECK(same_bits(a.plastic_volume, b.plastic_volume));
+    CHECK(same_bits(a.stiffness, b.stiffness));
+    CHECK(same_bits(a.edge_correction, b.edge_correction));
+    return;
+  }
+  // Displacement control forms the outputs' gap and u' = C dp on the box around A and E (README
+  // Eq. 3d), the reference on the whole grid: the same sums, other rounding. The plastic volume is
+  // a sum of gaps (each off by the rounding of u ≈ w, ~1e-16 w); δk of gaps over 1 − u'. Measured:
+  // at most 5e-31 m^3 and 3e-15 k.
+  CHECK(std::fabs(a.plastic_volume - b.plastic_volume) <=
+        1e-15 * a.approach * a.contact_area + std::numeric_limits<double>::min());
+  CHECK(std::fabs(a.edge_correction - b.edge_correction) <= 1e-13 * std::fabs(b.frozen_stiffness));
+  CHECK(std::fabs(a.stiffness - b.stiffness) <= 1e-13 * std::fabs(b.frozen_stiffness));
 }
 
 // One displacement-controlled solve by the core and by the reference, each on its own solver and
@@ -51,7 +64,7 @@ void compare_solve(ContactSolver& fast, ContactSolver& ref, const std::vector<do
                    std::vector<double>& p_fast, std::vector<double>& p_ref, const SolverOptions& opt) {
   const ContactResult a = fast.solve(gap, w, p_fast, opt);
   const ContactResult b = ref.solve_reference(gap, w, p_ref, opt);
-  check_same(a, b);
+  check_same(a, b, true);
   CHECK(same_field(p_fast, p_ref));
   CHECK(same_field(fast.pressure_rate(), ref.pressure_rate()));
 }
