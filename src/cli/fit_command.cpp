@@ -63,8 +63,8 @@ double profile_value(FitModel& model, std::size_t n, std::size_t j, double t, st
 
 const char* const kFitUsage =
     "usage: rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] [--vary ...] --measured-averages M\n"
-    "                    [--set section.key=value ...] [--sensor NAME|K] [--column NAME] [--fmin HZ] [--fmax HZ]\n"
-    "                    [--format text|json]\n"
+    "                    [--set section.key=value ...] [--sensor NAME|K | --measured-position X]\n"
+    "                    [--column NAME] [--fmin HZ] [--fmax HZ] [--format text|json]\n"
     "\n"
     "Estimates the 1 to 3 study keys named by --vary (each searched in [lo, hi], `log`: on a log scale) from\n"
     "a measured PSD (as `rollspec compare` reads it) that averages M independent records: the values that\n"
@@ -78,13 +78,16 @@ int fit_command(const Args& args) {
   po::options_description opts("options");
   std::string study, measurement, format = "text", sensor, column;
   std::vector<std::string> vary_specs, sets;
-  double fmin = 0.0, fmax = INFINITY, records = 0.0;
+  double fmin = 0.0, fmax = INFINITY, records = 0.0, measured_position = NAN;
   opts.add_options()("study", po::value(&study)->required(), "study (INI)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
       "vary", po::value(&vary_specs)->required(), "section.key=lo:hi[:log], 1 to 3 times")(
       "measured-averages", po::value(&records)->required(), "independent records averaged into the measurement")(
       "set", po::value(&sets), "section.key=value for every run")(
-      "sensor", po::value(&sensor), "sensor name or index (default: sensor_mean if present, else 0)")(
+      "sensor", po::value(&sensor),
+      "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
+      "measured-position", po::value(&measured_position),
+      "where the measurement was taken (m): the sensor nearest it, as compare picks it")(
       "column", po::value(&column), "PSD column of the measurement CSV")("fmin", po::value(&fmin)->default_value(0.0),
                                                                          "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
@@ -103,6 +106,8 @@ int fit_command(const Args& args) {
     throw usage_error("--measured-averages " + number_text(records) +
                       ": allowed: a finite count >= 1 of independent records");
   FitInputs in;
+  in.sensor = io::sensor_choice(
+      sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   if (vary_specs.size() > 3)
     throw usage_error("--vary given " + std::to_string(vary_specs.size()) + " times; allowed: 1 to 3 keys");
   for (const auto& s : vary_specs) {
@@ -115,7 +120,7 @@ int fit_command(const Args& args) {
       if (s.rfind(v.key + "=", 0) == 0)
         throw usage_error("--set " + clip(s) + ": " + v.key + " is varied by --vary; allowed: one of the two");
   if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
-  in.study = study, in.measurement_path = measurement, in.sensor = sensor, in.sets = sets;
+  in.study = study, in.measurement_path = measurement, in.sets = sets;
   in.records = records, in.fmin = fmin, in.fmax = fmax;
   in.measurement = read_measurement(measurement, column, -1, "fit");
 

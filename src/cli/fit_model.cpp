@@ -76,6 +76,7 @@ io::BandLevels FitModel::run_at(const std::vector<double>& u) {
     b = io::read_band_levels(r, in_.sensor);
   }
   std::filesystem::remove(out);
+  if (band_.empty() && !b.pick_note.empty()) std::fprintf(stderr, "rollspec fit: %s\n", b.pick_note.c_str());
   if (band_.empty()) choose_bands(b);
   return b;
 }

@@ -27,7 +27,8 @@ struct VaryRange {
 VaryRange parse_vary(const std::string& spec);
 
 struct FitInputs {
-  std::string study, measurement_path, sensor;
+  std::string study, measurement_path;
+  io::SensorChoice sensor;
   std::vector<std::string> sets;  // --set passed on to every run
   std::vector<VaryRange> vary;
   Measurement measurement;
