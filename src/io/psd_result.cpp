@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "kernels/spectral/ensemble_interval.hpp"
+#include "src/io/band_tail_check.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
 
@@ -132,6 +133,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     w.attach_scale("/bands/log_level_covariance", "/bands/centre_frequency", 1);
     w.attach_scale("/bands/log_level_covariance", "/bands/centre_frequency", 2);
   }
+  write_band_tail_check(w, e, bands);
   if (K < spectral::kMinRealisationsForInterval)
     std::fprintf(stderr, "rollspec: note: confidence intervals: %s\n", interval_method(K).c_str());
 }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "kernels/spectral/ensemble_interval.hpp"
+#include "kernels/spectral/tail_check.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 
 namespace rollspec::io {
@@ -34,6 +35,7 @@ struct PsdEnsemble {
   std::vector<spectral::Scatter> scatter;       // rows x frequency: moments of x and ln x
   std::vector<spectral::Scatter> band_scatter;  // rows x bands: of the realisations' band averages
   std::vector<double> band_log_covariance;      // rows x bands x bands, of ln band average (empty: not kept)
+  std::vector<spectral::TailCheck> band_tail;   // rows x bands: is K enough for the interval (D-29; empty: no check)
   std::uint64_t realisations = 0;
   double welch_dof = 0.0;  // K x the Welch dof (D-16) of a stationary record: information only
   double window_enbw_bins = 1.5;

@@ -41,6 +41,11 @@ void PsdRows::finish(double* values) const {
   for (std::size_t r = 0; r < rows(); ++r)
     for (std::size_t b = 0; b < nb; ++b)
       for (std::size_t c = b; c < nb; ++c) *product++ = values[band_log_index(r, b)] * values[band_log_index(r, c)];
+  for (std::size_t r = 0; r < rows(); ++r)
+    for (std::size_t b = 0; b < nb; ++b) {
+      const double y = values[band_log_index(r, b)];
+      *product++ = y * y * y;  // D-29: the skewness of the band logs
+    }
 }
 
 io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
@@ -74,6 +79,10 @@ io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
         e.band_log_covariance[(r * n_bands + b) * n_bands + c] = v;
         e.band_log_covariance[(r * n_bands + c) * n_bands + b] = v;
       }
+  for (std::size_t i = 0; i < nb; ++i, ++p) {  // D-29: from the sums of y, y^2 and y^3
+    const std::size_t y = logs + n + i;
+    e.band_tail.push_back(spectral::tail_check(sums.count, sums.sum[y], sums.sum_sq[y], sums.sum[p]));
+  }
   return e;
 }
 

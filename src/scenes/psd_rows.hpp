@@ -1,13 +1,14 @@
 #pragma once
 // One realisation's result vector for a scene that writes /psd and /bands:
 //   [PSD rows: rows x nf][band values: rows x nb][ln of both: rows x (nf + nb)][the scene's extras]
-//   [products of a row's band logs: rows x nb (nb + 1) / 2, pairs b <= c]
+//   [products of a row's band logs: rows x nb (nb + 1) / 2, pairs b <= c][cubes of the band logs: rows x nb]
 // Rows are the sensors, then their mean when the study asks for it. A row's band values are its
 // third-octave band averages (D-17); their scatter over realisations gives the band intervals
 // (D-21), which the band average of the mean PSD alone cannot. The logarithms give the moments of
 // ln x that the lognormal law of D-21b needs (the driver sums values and their squares). The
 // products give the between-band covariance of the band logs that compare's combined test needs
-// (D-26); they sit after the extras so that every earlier value keeps its place and its sums.
+// (D-26); they sit after the extras so that every earlier value keeps its place and its sums. The
+// cubes give the skewness of the band logs, whether K suffices for the band intervals (D-29).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -27,7 +28,7 @@ class PsdRows {
   std::size_t rows() const { return names_.size(); }
   std::size_t sensors() const { return sensors_; }
   std::size_t n_freq() const { return frequency_.size(); }
-  std::size_t size() const { return 2 * spectra() + extras_ + products(); }
+  std::size_t size() const { return 2 * spectra() + extras_ + products() + rows() * bands_.size(); }
 
   double* row(double* values, std::size_t r) const { return values + r * n_freq(); }
   std::size_t extra_index(std::size_t i) const { return 2 * spectra() + i; }
@@ -37,8 +38,8 @@ class PsdRows {
   // logarithms of all of them.
   void finish(double* values) const;
 
-  // The ensemble of the rows (means, scatter of bins and bands) for io::write_psd_result; the
-  // caller sets units, quantity and confidence.
+  // The ensemble of the rows (means, scatter of bins and bands, the bands' tail check) for
+  // io::write_psd_result; the caller sets units, quantity and confidence.
   io::PsdEnsemble ensemble(const ensemble::EnsembleSums& sums) const;
 
  private:

@@ -78,6 +78,8 @@ CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, doub
     in << k << " = " << stiffness.text(k) << "\n";
   in << "realisations = " << (stiffness.rough ? stiffness.text("realisations") : "1")
      << "\nseed = " << stiffness.text("table_seed") << "\n";  // the table seed
+  // A leave-one-out sub-table (D-30): only when set, so every other table keeps its hash.
+  if (stiffness.table_leave_out >= 0) in << "leave out = " << stiffness.text("table_leave_out") << "\n";
   in << "\n[surface]\n";
   for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
     in << k << " = " << t.surface.text(k) << "\n";
@@ -118,6 +120,30 @@ void StiffnessTable::load_from(const io::Hdf5Reader& r) {
   realisations = static_cast<std::int64_t>(r.double_attribute("/stiffness", "realisations"));
 }
 
+namespace {
+
+// Power-law fit P = c delta^n by least squares in log-log (a smooth monotone summary; the dynamics
+// interpolate the table itself with a monotone cubic).
+void fit_power_law(StiffnessTable& t) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  for (std::size_t j = 1; j < t.approach.size(); ++j)
+    if (t.force_mean[j] > 0) {
+      const double x = std::log(t.approach[j]), y = std::log(t.force_mean[j]);
+      sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
+    }
+  if (m >= 2) {
+    t.fit_exponent = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+    t.fit_coefficient = std::exp((sy - t.fit_exponent * sx) / m);
+    for (std::size_t j = 1; j < t.approach.size(); ++j)
+      if (t.force_mean[j] > 0)
+        t.fit_max_relative_error =
+            std::max(t.fit_max_relative_error,
+                     std::abs(t.fit_coefficient * std::pow(t.approach[j], t.fit_exponent) / t.force_mean[j] - 1.0));
+  }
+}
+
+}  // namespace
+
 StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effective_modulus, bool quiet) {
   contact::Grid grid;
   grid.nx = static_cast<std::size_t>(ts.surface.nx);
@@ -133,6 +159,12 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
   const double ball_rms = stiffness.ball_rms;
   if (ball_rms > 0.0 && !is_rough)
     stiffness.ball_rms_origin.refuse("needs [stiffness] surface = rough (the flat's realisations)");
+  const long long left_out = stiffness.table_leave_out;  // D-30: a leave-one-out sub-table
+  if (left_out >= 0 && (!is_rough || R < 2 || left_out >= R))
+    stiffness.table_leave_out_origin.refuse(
+        "needs [stiffness] surface = rough and an index below [stiffness] "
+        "realisations = " +
+        std::to_string(R) + " (at least 2)");
   contact::SolverOptions opts = stiffness.solver;
   std::vector<double> deltas(steps);
   for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);
@@ -144,7 +176,7 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
   std::vector<std::vector<contact::ContactResult>> results(static_cast<std::size_t>(R));
   std::exception_ptr failure;
   int mine = 0;
-  for (int r = rank; r < R; r += ranks) ++mine;
+  for (int r = rank; r < R; r += ranks) mine += r != left_out;
   ensemble::Progress progress("stiffness realisations", static_cast<std::uint64_t>(mine), quiet,
                               ensemble::rank_prefix());
 #pragma omp parallel
@@ -152,7 +184,7 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
     std::unique_ptr<contact::ContactSolver> solver;
 #pragma omp for schedule(dynamic, 1)
     for (int r = 0; r < R; ++r) {
-      if (failure || r % ranks != rank) continue;
+      if (failure || r % ranks != rank || r == left_out) continue;
       try {
         if (!solver) solver = std::make_unique<contact::ContactSolver>(grid, effective_modulus);
         texture::Surface surf;
@@ -200,6 +232,7 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
     // Six numbers per step and realisation travel to every rank.
     std::map<std::uint64_t, std::vector<double>> rows;
     for (int r = rank; r < R; r += ranks) {
+      if (r == left_out) continue;
       auto& row = rows[static_cast<std::uint64_t>(r)];
       for (const auto& c : results[static_cast<std::size_t>(r)])
         row.insert(row.end(), {c.force, c.stiffness, c.contact_area, static_cast<double>(c.plastic_cells),
@@ -224,12 +257,13 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
     c->push_back(0.0);
   for (std::size_t j = 0; j < steps; ++j) {
     double f = 0, f2 = 0, k = 0, k2 = 0, a = 0, pc = 0, pm = 0, it = 0;
-    for (const auto& res : results) {
-      const auto& c = res[j];
+    for (std::size_t r = 0; r < results.size(); ++r) {
+      if (static_cast<long long>(r) == left_out) continue;
+      const auto& c = results[r][j];
       f += c.force, f2 += c.force * c.force, k += c.stiffness, k2 += c.stiffness * c.stiffness;
       a += c.contact_area, pc += static_cast<double>(c.plastic_cells), pm += c.max_pressure, it += c.iterations;
     }
-    const double n = R;
+    const double n = left_out >= 0 ? R - 1 : R;
     auto sd = [n](double s1, double s2) {
       return n > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / n) / (n - 1))) : 0.0;
     };
@@ -239,27 +273,11 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
     t.contact_area_mean.push_back(a / n), t.plastic_cells_mean.push_back(pc / n);
     t.max_pressure_mean.push_back(pm / n), t.iterations_mean.push_back(it / n);
   }
-  // Power-law fit P = c delta^n by least squares in log-log (a smooth monotone summary; the dynamics
-  // interpolate the table itself with a monotone cubic).
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
-  for (std::size_t j = 1; j < t.approach.size(); ++j)
-    if (t.force_mean[j] > 0) {
-      const double x = std::log(t.approach[j]), y = std::log(t.force_mean[j]);
-      sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
-    }
-  if (m >= 2) {
-    t.fit_exponent = (m * sxy - sx * sy) / (m * sxx - sx * sx);
-    t.fit_coefficient = std::exp((sy - t.fit_exponent * sx) / m);
-    for (std::size_t j = 1; j < t.approach.size(); ++j)
-      if (t.force_mean[j] > 0)
-        t.fit_max_relative_error =
-            std::max(t.fit_max_relative_error,
-                     std::abs(t.fit_coefficient * std::pow(t.approach[j], t.fit_exponent) / t.force_mean[j] - 1.0));
-  }
+  fit_power_law(t);
   t.ball_radius = ball_radius;
   t.effective_modulus = effective_modulus;
   t.hardness = opts.hardness;
-  t.realisations = R;
+  t.realisations = left_out >= 0 ? R - 1 : R;
   t.tolerance = opts.tolerance;
   return t;
 }

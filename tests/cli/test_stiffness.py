@@ -179,3 +179,29 @@ def test_a_fit_beyond_its_tolerance_is_flagged(tmp_path):
     assert r.returncode == 0, r.stderr
     _, err = check_fit(out, r.stdout)
     assert err > 0.1 and "NOT USABLE" in r.stdout
+
+
+def test_leave_one_out_sub_tables_are_the_means_without_one_surface(tmp_path):
+    # [stiffness] table_leave_out (the jackknife's sub-tables, kernels/spectral D-30): leaving out the
+    # last of 3 surfaces is the 2-surface table bit for bit (the same surface streams, in order); the
+    # mean of the 3 sub-tables' means is the full table's mean.
+    study = copy_study(tmp_path, "seed002-table.ini")
+    full, two = tmp_path / "full.h5", tmp_path / "two.h5"
+    assert run(["stiffness", study, "--out", full, *SMALL_ROUGH]).returncode == 0
+    small = [a if a != "stiffness.realisations=3" else "stiffness.realisations=2" for a in SMALL_ROUGH]
+    assert run(["stiffness", study, "--out", two, *small]).returncode == 0
+    subs = []
+    for i in range(3):
+        out = tmp_path / f"loo{i}.h5"
+        r = run(["stiffness", study, "--out", out, *SMALL_ROUGH, "--set", f"stiffness.table_leave_out={i}"])
+        assert r.returncode == 0, r.stderr
+        with h5py.File(out) as f:
+            subs.append(f["/stiffness/force_mean"][:])
+            assert int(f["/stiffness"].attrs["realisations"]) == 2
+    with h5py.File(two) as f:
+        assert f["/stiffness/force_mean"][:].tobytes() == subs[2].tobytes()
+    with h5py.File(full) as f:
+        np.testing.assert_allclose(np.mean(subs, axis=0), f["/stiffness/force_mean"][:], rtol=1e-13, atol=0)
+        assert not np.array_equal(subs[0], f["/stiffness/force_mean"][:])
+    r = run(["stiffness", study, "--out", tmp_path / "bad.h5", *SMALL_ROUGH, "--set", "stiffness.table_leave_out=3"])
+    assert r.returncode != 0 and "table_leave_out" in r.stderr, r.stderr

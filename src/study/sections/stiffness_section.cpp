@@ -42,6 +42,10 @@ std::vector<KeySpec> StiffnessSection::keys() {
                "give the band levels' response to that shift (kernels/spectral/README.md D-28: it understates the "
                "table's share)",
                std::string("0"), -10.0, 10.0),
+      integer_key("stiffness", "table_leave_out",
+                  "surface index (0 .. realisations - 1) left out of the stiffness table's mean: a leave-one-out "
+                  "sub-table for the jackknife of the table's own error (kernels/spectral/README.md D-30); -1: none",
+                  std::string("-1"), -1, 99999),
   };
 }
 
@@ -59,6 +63,8 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   t.solver.max_iterations = static_cast<int>(s.integer("stiffness.max_iterations"));
   t.table_seed = static_cast<std::uint64_t>(s.integer("stiffness.table_seed"));
   t.table_shift = s.real("stiffness.table_shift");
+  t.table_leave_out = s.integer("stiffness.table_leave_out");
+  t.table_leave_out_origin = {s.where("stiffness.table_leave_out")};
   t.ball_rms_origin = {s.where("stiffness.ball_rms")};
   t.approach_max_origin = {s.where("stiffness.approach_max")};
   t.table_shift_origin = {s.where("stiffness.table_shift")};

@@ -22,10 +22,11 @@ struct StiffnessSection {
   contact::BallShape shape = contact::BallShape::Sphere;
   double ball_rms = 0.0, approach_max = 0.0;
   long long steps = 0, realisations = 0;
-  std::uint64_t table_seed = 1;   // every table's surfaces and strips; never the study seed
-  double table_shift = 0.0;       // standard errors of the table mean added to the law (not in its hash)
-  contact::SolverOptions solver;  // hardness (0: none, so infinite), tolerance, max_iterations
-  KeyOrigin ball_rms_origin, approach_max_origin, table_shift_origin;
+  std::uint64_t table_seed = 1;    // every table's surfaces and strips; never the study seed
+  double table_shift = 0.0;        // standard errors of the table mean added to the law (not in its hash)
+  long long table_leave_out = -1;  // surface left out of the stiffness table's mean (-1: none; in its hash when set)
+  contact::SolverOptions solver;   // hardness (0: none, so infinite), tolerance, max_iterations
+  KeyOrigin ball_rms_origin, approach_max_origin, table_shift_origin, table_leave_out_origin;
   KeyOrigin table_origin, table_dir_origin;  // where a table may not be written
 
   static std::vector<KeySpec> keys();

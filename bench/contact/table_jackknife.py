@@ -1,0 +1,103 @@
+#!/usr/bin/python3
+"""The stiffness table's own error in the band intervals by a leave-one-surface-out jackknife
+(kernels/spectral/README.md D-30); a measurement, not yet the engine's intervals.
+
+usage: table_jackknife.py ROLLSPEC STUDY [--n 4] [--k 25] [--table-seeds 11,12,13,14,15]
+                          [--ref-seeds 21,22,23,24] [--k-ref 400] [--seed 999] [--ref-seed 555] [--work DIR]
+
+Reference: the mean band level (dB) over the tables of --ref-seeds, each at K_ref realisations.
+For every test table seed t: the full N-surface table and its N leave-one-out sub-tables
+([stiffness] table_leave_out = i), each run at the same study seed and K (common random numbers:
+the differences are the table's alone). theta_i: band levels (dB) with sub-table i, theta: with
+the full table; jackknife variance V_J = (N - 1)/N sum_i (theta_i - mean theta_i)^2 (D-30a).
+Within-ensemble standard error s_w = h / t_{K-1} (h: half width of the engine's 95 % interval in
+dB); combined s^2 = s_w^2 + V_J, Welch-Satterthwaite dof nu = s^4 / (s_w^4/(K-1) + V_J^2/(N-1)),
+half width t_nu s (D-30b). Coverage of the reference by [L - h, L + h] and by the widened
+interval, bands 100 Hz - 5 kHz of every sensor.
+"""
+import argparse
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
+from scipy import stats
+
+
+def run(binary, study, out, sets):
+    args = [binary, "run", study, "--out", out, "--quiet"]
+    for s in sets:
+        args += ["--set", s]
+    r = subprocess.run(args, capture_output=True, text=True)
+    if r.returncode:
+        sys.exit(f"{' '.join(map(str, args))}: exit {r.returncode}\n{r.stderr}")
+
+
+def bands(path):
+    with h5py.File(path) as f:
+        nominal = f["bands/nominal_frequency"][:]
+        keep = (nominal >= 99.0) & (nominal <= 5001.0)
+        return (f["bands/level_db"][:][:, keep], f["bands/ci_lower_db"][:][:, keep],
+                f["bands/ci_upper_db"][:][:, keep])
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("binary")
+    p.add_argument("study")
+    p.add_argument("--n", type=int, default=4)
+    p.add_argument("--k", type=int, default=25)
+    p.add_argument("--table-seeds", default="11,12,13,14,15")
+    p.add_argument("--ref-seeds", default="21,22,23,24")
+    p.add_argument("--k-ref", type=int, default=400)
+    p.add_argument("--seed", type=int, default=999)
+    p.add_argument("--ref-seed", type=int, default=555)
+    p.add_argument("--work", default="table-jackknife")
+    a = p.parse_args()
+    work = Path(a.work).resolve()
+    (work / "tables").mkdir(parents=True, exist_ok=True)
+    common = [f"stiffness.realisations={a.n}", f"stiffness.table_dir={work / 'tables'}"]
+
+    refs = []
+    for t in map(int, a.ref_seeds.split(",")):
+        out = work / f"ref-{t}.h5"
+        run(a.binary, a.study, out, common + [f"stiffness.table_seed={t}", f"study.seed={a.ref_seed}",
+                                              f"study.realisations={a.k_ref}"])
+        refs.append(bands(out)[0])
+    ref = np.mean(refs, axis=0)
+
+    held, held_j, ratio, full_levels, var_j_all = [], [], [], [], []
+    t_k = stats.t.ppf(0.975, a.k - 1)
+    for t in map(int, a.table_seeds.split(",")):
+        sets = common + [f"stiffness.table_seed={t}", f"study.seed={a.seed}", f"study.realisations={a.k}"]
+        out = work / f"full-{t}.h5"
+        run(a.binary, a.study, out, sets)
+        level, lo, hi = bands(out)
+        theta = []
+        for i in range(a.n):
+            sub = work / f"loo-{t}-{i}.h5"
+            run(a.binary, a.study, sub, sets + [f"stiffness.table_leave_out={i}"])
+            theta.append(bands(sub)[0])
+        theta = np.array(theta)
+        var_j = (a.n - 1) / a.n * ((theta - theta.mean(axis=0)) ** 2).sum(axis=0)
+        s_w = 0.5 * (hi - lo) / t_k
+        s2 = s_w ** 2 + var_j
+        nu = s2 ** 2 / (s_w ** 4 / (a.k - 1) + var_j ** 2 / (a.n - 1))
+        half = stats.t.ppf(0.975, nu) * np.sqrt(s2)
+        held.append((lo <= ref) & (ref <= hi))
+        held_j.append(np.abs(level - ref) <= half)
+        full_levels.append(level)
+        var_j_all.append(var_j)
+        print(f"table seed {t}: coverage {np.mean(held[-1]):.3f} without, {np.mean(held_j[-1]):.3f} with the "
+              f"jackknife term; median sqrt(V_J) {np.median(np.sqrt(var_j)):.3f} dB, median h "
+              f"{np.median(0.5 * (hi - lo)):.3f} dB, median dof {np.median(nu):.1f}", flush=True)
+    between = np.var(np.array(full_levels), axis=0, ddof=1)
+    print(f"coverage of the other table seeds' mean ({len(held)} tables x {held[0].size} sensor-bands): "
+          f"{np.mean(held):.3f} without, {np.mean(held_j):.3f} with the jackknife term")
+    print(f"between-table variance of the band levels over the mean jackknife variance (median over "
+          f"sensor-bands): {np.median(between / np.mean(var_j_all, axis=0)):.2f}")
+
+
+if __name__ == "__main__":
+    main()
