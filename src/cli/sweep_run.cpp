@@ -162,6 +162,7 @@ std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<st
   if (s.sweep.empty())
     throw config_error(args.file + ": [sweep] names no keys; allowed: section.key = v1, v2, ... (or remove [sweep])");
   check_values(s);
+  check_sweep_shapes(s);
   s.study_text = base.canonical_text() + "\n[sweep]\nmode = " + (s.sweep.zipped ? "zipped" : "crossed") + "\n";
   for (const auto& k : s.sweep.keys) {
     std::string v;

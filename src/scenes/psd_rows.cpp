@@ -43,6 +43,15 @@ void PsdRows::finish(double* values) const {
       for (std::size_t c = b; c < nb; ++c) *product++ = values[band_log_index(r, b)] * values[band_log_index(r, c)];
 }
 
+ResultShape PsdRows::shape() const {
+  ResultShape s{names_, frequency_, {}, {}};
+  for (const auto& b : bands_) {
+    s.band_lower.push_back(b.lower);
+    s.band_upper.push_back(b.upper);
+  }
+  return s;
+}
+
 io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
   io::PsdEnsemble e;
   e.frequency = frequency_;
