@@ -61,13 +61,32 @@ std::string point_path(const std::string& dir, std::size_t i) {
   return (fs::path(dir) / name).string();
 }
 
-// The sweep's work directory holds only point files and their checkpoints: anything else is not ours to remove.
+// The sweep's work directory is a directory of rollspec's own that holds only point files and their
+// checkpoints: a link, a file, a pipe or a user's file in it is not ours to write into or remove.
+// Returns whether it exists.
+bool check_work_directory(const std::string& dir) {
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(dir, ec);
+  if (st.type() == fs::file_type::not_found) return false;
+  const std::string advice = "; move it away, or choose another --out";
+  if (fs::is_symlink(st))
+    throw cannot_create("sweep work directory " + dir + " is a symbolic link; rollspec keeps a sweep's points in a " +
+                        "directory of its own" + advice);
+  if (ec || !fs::is_directory(st))
+    throw cannot_create("sweep work directory " + dir + " is not a directory (a file rollspec did not write)" + advice);
+  for (fs::directory_iterator e(dir, ec), end; !ec && e != end; e.increment(ec))
+    if (e->path().filename().string().rfind("point_", 0) != 0)
+      throw cannot_create("sweep work directory " + dir + " holds " + e->path().filename().string() +
+                          ", which rollspec did not write" + advice);
+  if (ec) throw cannot_create("cannot read sweep work directory " + dir + ": " + ec.message() + advice);
+  return true;
+}
+
 void remove_work_directory(const std::string& dir) {
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().rfind("point_", 0) != 0)
-      throw cannot_create("sweep work directory " + dir + " holds " + e.path().filename().string() +
-                          ", which rollspec did not write; move it away, or choose another --out");
-  fs::remove_all(dir);
+  check_work_directory(dir);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  if (ec) throw cannot_create("cannot remove sweep work directory " + dir + ": " + ec.message());
 }
 
 io::StackAxis axis_of(const SweepStudy& s, const study::SweptKey& k) {
@@ -181,11 +200,14 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
   target.inputs = point_study(s.args).input_files();
   const std::string write_path = io::check_output_target(target);
   const std::string dir = write_path + ".sweep";
-  if (fs::exists(dir) && q.restart && ensemble::mpi_rank() == 0) remove_work_directory(dir);
-  if (fs::exists(dir) && !q.resume && !q.restart)
+  const bool unfinished = check_work_directory(dir);
+  if (unfinished && q.restart && ensemble::mpi_rank() == 0) remove_work_directory(dir);
+  if (unfinished && !q.resume && !q.restart)
     throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
                         "; allowed: --resume to finish it, or --restart to discard it");
-  fs::create_directories(dir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw cannot_create("cannot create sweep work directory " + dir + ": " + ec.message());
   const std::size_t n = s.points();
   std::vector<std::string> inputs;
   for (std::size_t i = 0; i < n; ++i) {
