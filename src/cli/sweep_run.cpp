@@ -206,7 +206,7 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
     throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
                         "; allowed: --resume to finish it, or --restart to discard it");
   std::error_code ec;
-  fs::create_directories(dir, ec);
+  fs::create_directory(dir, ec);  // not its parents: a missing directory of OUT is refused as run refuses it
   if (ec) throw cannot_create("cannot create sweep work directory " + dir + ": " + ec.message());
   const std::size_t n = s.points();
   std::vector<std::string> inputs;

@@ -5,7 +5,11 @@ new command that writes a file fails `test_every_writing_command_is_covered` unt
 here. Each (command, output) meets each target below; the suite checks the exit code, a one-line
 message without "internal error", the user's data byte-identical, no temporary file left and no
 hang, and the last test prints the totals: tried / refused cleanly / accepted / destroyed /
-internal errors / hangs.
+internal errors / hangs (and the known ones, marked xfail with their reason, apart).
+
+Sweeps (`run --sweep`, a [sweep] study) meet every target too, and so does their work directory
+OUT.sweep; a sweep interrupted (SIGINT) or killed (SIGKILL) and resumed writes the uninterrupted
+file bit for bit. `fit` writes no --out: its temporary directory under $TMPDIR meets the targets.
 
 Label `fault`: an 8 MiB tmpfs (root) gives the full-disk cases."""
 import os
@@ -20,7 +24,8 @@ from conftest import BIN, SMALL_OSCILLATOR, SOURCE
 
 USER_DATA = b"precious user data, not written by rollspec\n"
 TIMEOUT = 60
-TALLY = {"tried": 0, "refused cleanly": 0, "accepted": 0, "destroyed": 0, "internal errors": 0, "hangs": 0}
+TALLY = {"tried": 0, "refused cleanly": 0, "accepted": 0, "destroyed": 0, "internal errors": 0, "hangs": 0,
+         "resumed identically": 0, "known internal errors (xfail)": 0}
 
 TEXTURE = """\
 [study]
@@ -49,9 +54,13 @@ count = 1
 """
 
 
+SWEEP = "\n[sweep]\noscillator.natural_frequency = 30, 45\n"
+
+
 def setup_inputs(d):
     """The inputs every recipe reads, written into d."""
     (d / "osc.ini").write_text(SMALL_OSCILLATOR.format(realisations=4, chunk=4, duration=2))
+    (d / "sweep.ini").write_text(SMALL_OSCILLATOR.format(realisations=4, chunk=4, duration=2) + SWEEP)
     (d / "tex.ini").write_text(TEXTURE)
     hertz = (SOURCE / "studies" / "hertz.ini").read_text().replace("steps = 20", "steps = 3")
     (d / "hertz.ini").write_text(hertz)
@@ -61,6 +70,10 @@ def setup_inputs(d):
 # command -> (output kind, arguments with OUT for the output path, the input a target may alias)
 RECIPES = {
     "run": ("result", ["run", "osc.ini", "--out", "OUT", "--quiet"], "osc.ini"),
+    # sweeps write OUT (stacked) and their points in the work directory OUT.sweep
+    "run --sweep": ("sweep result", ["run", "osc.ini", "--out", "OUT", "--quiet", "--sweep", "oscillator.mass=1,2"],
+                    "osc.ini"),
+    "run [sweep]": ("sweep result", ["run", "sweep.ini", "--out", "OUT", "--quiet"], "sweep.ini"),
     "psd": ("psd csv", ["psd", "signal.csv", "--unit", "g", "--segment", "1024", "--out", "OUT"], "signal.csv"),
     "texture": ("texture", ["texture", "tex.ini", "--out", "OUT", "--quiet"], "tex.ini"),
     "stiffness": ("stiffness table", ["stiffness", "hertz.ini", "--out", "OUT", "--quiet"], "hertz.ini"),
@@ -74,7 +87,7 @@ RECIPES = {
 # table it can reuse as bad data (65), and a table path in a missing directory as a bad key (78).
 EXTRA_CODES = {"stiffness": {65, 78}, "stiffness --rebuild": {78}}
 # What each output kind is not: a rollspec file of another kind made by another recipe.
-OTHER_KIND = {"run": "texture", "psd": "run", "texture": "run", "stiffness": "run", "stiffness --rebuild": "run",
+OTHER_KIND = {"run": "texture", "run --sweep": "texture", "run [sweep]": "texture", "psd": "run", "texture": "run", "stiffness": "run", "stiffness --rebuild": "run",
               "init": "run"}
 
 
@@ -189,7 +202,8 @@ TARGETS = {f.__name__[2:]: f for f in (t_user_file, t_other_kind, t_link_to_user
                                        t_read_only_directory)}
 
 
-def judge(r, expected, before, after, protected):
+def judge(r, expected, before, after, protected, known_bug=False):
+    """Counts and checks one case; `known_bug`: an xfail case, whose internal error is counted apart."""
     TALLY["tried"] += 1
     if r is None:
         TALLY["hangs"] += 1
@@ -198,7 +212,7 @@ def judge(r, expected, before, after, protected):
     if lost:
         TALLY["destroyed"] += 1
     if "internal error" in r.stderr or r.returncode < 0:
-        TALLY["internal errors"] += 1
+        TALLY["known internal errors (xfail)" if known_bug else "internal errors"] += 1
     if r.returncode == 0:
         TALLY["accepted"] += 1
     elif r.returncode in expected and "error:" in r.stderr:
@@ -218,7 +232,7 @@ def test_hostile_output(tmp_path, command, target):
     out, expected, protected = TARGETS[target](tmp_path, command)
     if expected != {0}:
         expected = expected | EXTRA_CODES.get(command, set())
-    before = snapshot(tmp_path)
+    before, names = snapshot(tmp_path), set(os.listdir(tmp_path))
     r = execute(tmp_path, RECIPES[command][1], out)
     after = snapshot(tmp_path)
     judge(r, expected, before, after, protected)
@@ -226,6 +240,8 @@ def test_hostile_output(tmp_path, command, target):
         assert os.path.islink(tmp_path / "link.out"), "the link was replaced by a file"
     left = [n for n in os.listdir(tmp_path) if ".tmp" in n]
     assert not left, f"temporary files left: {left}"
+    work = [n for n in set(os.listdir(tmp_path)) - names if n.endswith(".sweep")]
+    assert not work, f"sweep work directory left: {work}"
 
 
 # run keeps its checkpoint in <out>.checkpoint/: whatever the user has there is never removed.
