@@ -210,25 +210,33 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
   if (ec) throw cannot_create("cannot create sweep work directory " + dir + ": " + ec.message());
   const std::size_t n = s.points();
   std::vector<std::string> inputs;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::string path = point_path(dir, i);
-    inputs.push_back(path);
-    if (!q.quiet) std::cout << "sweep point " << i + 1 << " of " << n << ": " << s.label(i) << "\n" << std::flush;
-    if (q.resume && finished_point(path, point_study(s.point(i)))) {
-      if (!q.quiet) std::cout << "  finished before: kept " << path << "\n";
-    } else {
-      run_point(s, q, i, path);
+  try {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string path = point_path(dir, i);
+      inputs.push_back(path);
+      if (!q.quiet) std::cout << "sweep point " << i + 1 << " of " << n << ": " << s.label(i) << "\n" << std::flush;
+      if (q.resume && finished_point(path, point_study(s.point(i)))) {
+        if (!q.quiet) std::cout << "  finished before: kept " << path << "\n";
+      } else {
+        run_point(s, q, i, path);
+      }
+      if (ensemble::stop_requested())
+        throw UserError(130, "interrupted after sweep point " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                                 "; rollspec run --resume finishes the sweep");
+      // A key that changes a dataset's shape is refused at its first point that does, not after the last.
+      if (i > 0 && ensemble::mpi_rank() == 0) {
+        const std::string why = io::stack_difference(inputs[0], path);
+        if (!why.empty())
+          throw config_error(changed_keys(s, i) + ": " + why +
+                             "; allowed: sweeps of keys that keep every dataset's shape and coordinates");
+      }
     }
-    if (ensemble::stop_requested())
-      throw UserError(130, "interrupted after sweep point " + std::to_string(i + 1) + " of " + std::to_string(n) +
-                               "; rollspec run --resume finishes the sweep");
-    // A key that changes a dataset's shape is refused at its first point that does, not after the last.
-    if (i > 0 && ensemble::mpi_rank() == 0) {
-      const std::string why = io::stack_difference(inputs[0], path);
-      if (!why.empty())
-        throw config_error(changed_keys(s, i) + ": " + why +
-                           "; allowed: sweeps of keys that keep every dataset's shape and coordinates");
-    }
+  } catch (...) {
+    // A sweep that failed before any of its work reached the disk (a full disk) leaves no empty work
+    // directory that would make the next run ask for --resume.
+    std::error_code empty_ec;
+    if (ensemble::mpi_rank() == 0 && fs::is_empty(dir, empty_ec) && !empty_ec) fs::remove(dir, empty_ec);
+    throw;
   }
   if (ensemble::mpi_rank() != 0) return 0;
   io::StackRequest r;
