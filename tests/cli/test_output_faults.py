@@ -89,8 +89,8 @@ RECIPES = {
 # table it can reuse as bad data (65), and a table path in a missing directory as a bad key (78).
 EXTRA_CODES = {"stiffness": {65, 78}, "stiffness --rebuild": {78}}
 # What each output kind is not: a rollspec file of another kind made by another recipe.
-OTHER_KIND = {"run": "texture", "run --sweep": "texture", "run [sweep]": "texture", "psd": "run", "texture": "run", "stiffness": "run", "stiffness --rebuild": "run",
-              "init": "run"}
+OTHER_KIND = {"run": "texture", "run --sweep": "texture", "run [sweep]": "texture", "psd": "run", "texture": "run",
+              "stiffness": "run", "stiffness --rebuild": "run", "init": "run"}
 
 
 def writing_commands():
