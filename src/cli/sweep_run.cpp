@@ -89,6 +89,29 @@ void remove_work_directory(const std::string& dir) {
   if (ec) throw cannot_create("cannot remove sweep work directory " + dir + ": " + ec.message());
 }
 
+// Every rank reads the work directory before rank 0 changes it, so that all decide alike; rank 0
+// alone removes it (--restart) and creates it, and every rank learns whether that failed.
+void prepare_work_directory(const std::string& dir, const std::string& out, const RunRequest& q) {
+  const bool unfinished = check_work_directory(dir);
+  if (unfinished && !q.resume && !q.restart)
+    throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
+                        "; allowed: --resume to finish it, or --restart to discard it");
+  ensemble::mpi_barrier();
+  std::string failure;
+  if (ensemble::mpi_rank() == 0) {
+    try {
+      if (unfinished && q.restart) remove_work_directory(dir);
+      std::error_code ec;
+      fs::create_directory(dir, ec);  // not its parents: a missing directory of OUT is refused as run refuses it
+      if (ec) throw cannot_create("cannot create sweep work directory " + dir + ": " + ec.message());
+    } catch (const UserError& e) {
+      failure = e.what();
+    }
+  }
+  if (ensemble::any_rank(!failure.empty()))
+    throw cannot_create(failure.empty() ? "rank 0 could not prepare the sweep work directory " + dir : failure);
+}
+
 io::StackAxis axis_of(const SweepStudy& s, const study::SweptKey& k) {
   io::StackAxis a{k.dimension, k.unit == "-" ? "1" : k.unit, "swept study key " + k.key, {}, {}};
   for (const auto& v : k.values) {
@@ -200,14 +223,7 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
   target.inputs = point_study(s.args).input_files();
   const std::string write_path = io::check_output_target(target);
   const std::string dir = write_path + ".sweep";
-  const bool unfinished = check_work_directory(dir);
-  if (unfinished && q.restart && ensemble::mpi_rank() == 0) remove_work_directory(dir);
-  if (unfinished && !q.resume && !q.restart)
-    throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
-                        "; allowed: --resume to finish it, or --restart to discard it");
-  std::error_code ec;
-  fs::create_directory(dir, ec);  // not its parents: a missing directory of OUT is refused as run refuses it
-  if (ec) throw cannot_create("cannot create sweep work directory " + dir + ": " + ec.message());
+  prepare_work_directory(dir, out, q);
   const std::size_t n = s.points();
   std::vector<std::string> inputs;
   try {
