@@ -230,9 +230,10 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string path = point_path(dir, i);
       inputs.push_back(path);
-      if (!q.quiet) std::cout << "sweep point " << i + 1 << " of " << n << ": " << s.label(i) << "\n" << std::flush;
+      if (!q.quiet && ensemble::mpi_rank() == 0)
+        std::cout << "sweep point " << i + 1 << " of " << n << ": " << s.label(i) << "\n" << std::flush;
       if (q.resume && finished_point(path, point_study(s.point(i)))) {
-        if (!q.quiet) std::cout << "  finished before: kept " << path << "\n";
+        if (!q.quiet && ensemble::mpi_rank() == 0) std::cout << "  finished before: kept " << path << "\n";
       } else {
         run_point(s, q, i, path);
       }

@@ -113,6 +113,7 @@ def test_two_rank_sweep_equals_one_process_bitwise(tmp_path):
     assert r.returncode == 0, r.stderr
     r = mpi(2, "run", s, "--out", two, *sweep, timeout=300)
     assert r.returncode == 0, r.stderr
-    assert r.stdout.count("wrote ") == 1, f"written by more than one rank:\n{r.stdout}"
+    assert r.stdout.count(f"wrote {two} (sweep") == 1, f"written by more than one rank:\n{r.stdout}"
+    assert r.stdout.count("sweep point 1 of 4") == 1, f"the points are announced once:\n{r.stdout}"
     assert not (tmp_path / "two.h5.sweep").exists(), "the work directory is removed after the merge"
     assert_bitwise_equal(one, two)
