@@ -61,13 +61,55 @@ std::string point_path(const std::string& dir, std::size_t i) {
   return (fs::path(dir) / name).string();
 }
 
-// The sweep's work directory holds only point files and their checkpoints: anything else is not ours to remove.
+// The sweep's work directory is a directory of rollspec's own that holds only point files and their
+// checkpoints: a link, a file, a pipe or a user's file in it is not ours to write into or remove.
+// Returns whether it exists.
+bool check_work_directory(const std::string& dir) {
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(dir, ec);
+  if (st.type() == fs::file_type::not_found) return false;
+  const std::string advice = "; move it away, or choose another --out";
+  if (fs::is_symlink(st))
+    throw cannot_create("sweep work directory " + dir + " is a symbolic link; rollspec keeps a sweep's points in a " +
+                        "directory of its own" + advice);
+  if (ec || !fs::is_directory(st))
+    throw cannot_create("sweep work directory " + dir + " is not a directory (a file rollspec did not write)" + advice);
+  for (fs::directory_iterator e(dir, ec), end; !ec && e != end; e.increment(ec))
+    if (e->path().filename().string().rfind("point_", 0) != 0)
+      throw cannot_create("sweep work directory " + dir + " holds " + e->path().filename().string() +
+                          ", which rollspec did not write" + advice);
+  if (ec) throw cannot_create("cannot read sweep work directory " + dir + ": " + ec.message() + advice);
+  return true;
+}
+
 void remove_work_directory(const std::string& dir) {
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().rfind("point_", 0) != 0)
-      throw cannot_create("sweep work directory " + dir + " holds " + e.path().filename().string() +
-                          ", which rollspec did not write; move it away, or choose another --out");
-  fs::remove_all(dir);
+  check_work_directory(dir);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  if (ec) throw cannot_create("cannot remove sweep work directory " + dir + ": " + ec.message());
+}
+
+// Every rank reads the work directory before rank 0 changes it, so that all decide alike; rank 0
+// alone removes it (--restart) and creates it, and every rank learns whether that failed.
+void prepare_work_directory(const std::string& dir, const std::string& out, const RunRequest& q) {
+  const bool unfinished = check_work_directory(dir);
+  if (unfinished && !q.resume && !q.restart)
+    throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
+                        "; allowed: --resume to finish it, or --restart to discard it");
+  ensemble::mpi_barrier();
+  std::string failure;
+  if (ensemble::mpi_rank() == 0) {
+    try {
+      if (unfinished && q.restart) remove_work_directory(dir);
+      std::error_code ec;
+      fs::create_directory(dir, ec);  // not its parents: a missing directory of OUT is refused as run refuses it
+      if (ec) throw cannot_create("cannot create sweep work directory " + dir + ": " + ec.message());
+    } catch (const UserError& e) {
+      failure = e.what();
+    }
+  }
+  if (ensemble::any_rank(!failure.empty()))
+    throw cannot_create(failure.empty() ? "rank 0 could not prepare the sweep work directory " + dir : failure);
 }
 
 io::StackAxis axis_of(const SweepStudy& s, const study::SweptKey& k) {
@@ -162,6 +204,7 @@ std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<st
   if (s.sweep.empty())
     throw config_error(args.file + ": [sweep] names no keys; allowed: section.key = v1, v2, ... (or remove [sweep])");
   check_values(s);
+  check_sweep_shapes(s);
   s.study_text = base.canonical_text() + "\n[sweep]\nmode = " + (s.sweep.zipped ? "zipped" : "crossed") + "\n";
   for (const auto& k : s.sweep.keys) {
     std::string v;
@@ -180,32 +223,37 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
   target.inputs = point_study(s.args).input_files();
   const std::string write_path = io::check_output_target(target);
   const std::string dir = write_path + ".sweep";
-  if (fs::exists(dir) && q.restart && ensemble::mpi_rank() == 0) remove_work_directory(dir);
-  if (fs::exists(dir) && !q.resume && !q.restart)
-    throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
-                        "; allowed: --resume to finish it, or --restart to discard it");
-  fs::create_directories(dir);
+  prepare_work_directory(dir, out, q);
   const std::size_t n = s.points();
   std::vector<std::string> inputs;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::string path = point_path(dir, i);
-    inputs.push_back(path);
-    if (!q.quiet) std::cout << "sweep point " << i + 1 << " of " << n << ": " << s.label(i) << "\n" << std::flush;
-    if (q.resume && finished_point(path, point_study(s.point(i)))) {
-      if (!q.quiet) std::cout << "  finished before: kept " << path << "\n";
-    } else {
-      run_point(s, q, i, path);
+  try {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string path = point_path(dir, i);
+      inputs.push_back(path);
+      if (!q.quiet && ensemble::mpi_rank() == 0)
+        std::cout << "sweep point " << i + 1 << " of " << n << ": " << s.label(i) << "\n" << std::flush;
+      if (q.resume && finished_point(path, point_study(s.point(i)))) {
+        if (!q.quiet && ensemble::mpi_rank() == 0) std::cout << "  finished before: kept " << path << "\n";
+      } else {
+        run_point(s, q, i, path);
+      }
+      if (ensemble::stop_requested())
+        throw UserError(130, "interrupted after sweep point " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                                 "; rollspec run --resume finishes the sweep");
+      // A key that changes a dataset's shape is refused at its first point that does, not after the last.
+      if (i > 0 && ensemble::mpi_rank() == 0) {
+        const std::string why = io::stack_difference(inputs[0], path);
+        if (!why.empty())
+          throw config_error(changed_keys(s, i) + ": " + why +
+                             "; allowed: sweeps of keys that keep every dataset's shape and coordinates");
+      }
     }
-    if (ensemble::stop_requested())
-      throw UserError(130, "interrupted after sweep point " + std::to_string(i + 1) + " of " + std::to_string(n) +
-                               "; rollspec run --resume finishes the sweep");
-    // A key that changes a dataset's shape is refused at its first point that does, not after the last.
-    if (i > 0 && ensemble::mpi_rank() == 0) {
-      const std::string why = io::stack_difference(inputs[0], path);
-      if (!why.empty())
-        throw config_error(changed_keys(s, i) + ": " + why +
-                           "; allowed: sweeps of keys that keep every dataset's shape and coordinates");
-    }
+  } catch (...) {
+    // A sweep that failed before any of its work reached the disk (a full disk) leaves no empty work
+    // directory that would make the next run ask for --resume.
+    std::error_code empty_ec;
+    if (ensemble::mpi_rank() == 0 && fs::is_empty(dir, empty_ec) && !empty_ec) fs::remove(dir, empty_ec);
+    throw;
   }
   if (ensemble::mpi_rank() != 0) return 0;
   io::StackRequest r;

@@ -36,6 +36,10 @@ std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<st
 // the study on disk with its own on --resume.
 study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets);
 
+// Refuses a sweep whose points give /psd or /bands different shapes or coordinates (from each
+// point's settings, before any point runs), naming the swept keys, their values and the shapes.
+void check_sweep_shapes(const SweepStudy& sweep);
+
 int run_sweep(const SweepStudy& sweep, const RunRequest& request);
 int plan_sweep(const SweepStudy& sweep, bool probe);
 

@@ -47,10 +47,8 @@ class BallOnBeam final : public EnsembleScene {
     for (const auto& w : b_.warnings) std::fprintf(stderr, "rollspec: warning: %s\n", w.c_str());
     lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
-    std::vector<std::string> names;
-    for (std::size_t k = 0; k < b_.model.sensors.size(); ++k) names.push_back("sensor_" + std::to_string(k + 1));
-    rows_ = std::make_unique<PsdRows>(names, b_.sensor_mean, welch_->frequencies(), b_.band_min, b_.band_max,
-                                      2 * welch_->n_freq() + 1);
+    rows_ = std::make_unique<PsdRows>(numbered_sensors(b_.model.sensors.size()), b_.sensor_mean, welch_->frequencies(),
+                                      b_.band_min, b_.band_max, 2 * welch_->n_freq() + 1);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(b_.welch.segment));
     add_pipeline_stages(s.tables);
@@ -332,6 +330,11 @@ class BallOnBeam final : public EnsembleScene {
 
 std::unique_ptr<Scene> make_ball_on_beam(const KeyReader& s) {
   return std::make_unique<BallOnBeam>(BallOnBeamSections::parse(s));
+}
+
+ResultShape ball_on_beam_result_shape(const KeyReader& s) {
+  const BallOnBeamSettings b = read_ball_on_beam_settings(BallOnBeamSections::parse(s));
+  return psd_result_shape(numbered_sensors(b.model.sensors.size()), b.sensor_mean, b.welch, b.band_min, b.band_max);
 }
 
 }  // namespace rollspec::scenes

@@ -18,6 +18,8 @@ namespace rollspec::scenes {
 
 std::vector<study::KeySpec> ball_on_beam_keys();
 std::unique_ptr<Scene> make_ball_on_beam(const study::KeyReader& s);
+// The shape of its /psd and /bands, from its settings (a sweep checks it before any point runs).
+ResultShape ball_on_beam_result_shape(const study::KeyReader& s);
 
 // The modal beam a study describes (for `rollspec modes`).
 beam::ModalBeam study_modal_beam(const study::KeyReader& s);

@@ -48,6 +48,15 @@ void PsdRows::finish(double* values) const {
     }
 }
 
+ResultShape PsdRows::shape() const {
+  ResultShape s{names_, frequency_, {}, {}};
+  for (const auto& b : bands_) {
+    s.band_lower.push_back(b.lower);
+    s.band_upper.push_back(b.upper);
+  }
+  return s;
+}
+
 io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
   io::PsdEnsemble e;
   e.frequency = frequency_;

@@ -16,6 +16,7 @@
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/psd_result.hpp"
+#include "src/scenes/result_shape.hpp"
 
 namespace rollspec::scenes {
 
@@ -41,6 +42,9 @@ class PsdRows {
   // The ensemble of the rows (means, scatter of bins and bands, the bands' tail check) for
   // io::write_psd_result; the caller sets units, quantity and confidence.
   io::PsdEnsemble ensemble(const ensemble::EnsembleSums& sums) const;
+
+  // The rows, bins and bands /psd and /bands are written with.
+  ResultShape shape() const;
 
  private:
   std::size_t spectra() const { return rows() * (n_freq() + bands_.size()); }  // PSD and band values

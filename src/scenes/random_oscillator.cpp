@@ -133,6 +133,11 @@ class RandomOscillator final : public EnsembleScene {
 
 std::unique_ptr<Scene> make_random_oscillator(const KeyReader& s) { return std::make_unique<RandomOscillator>(s); }
 
+ResultShape random_oscillator_result_shape(const KeyReader& s) {
+  const RandomOscillatorSettings o = read_random_oscillator_settings(s);
+  return psd_result_shape({"mass"}, false, o.welch, o.band_min, o.band_max);
+}
+
 double random_oscillator_exact_psd(double f, double s_f, double mass, double natural_frequency, double damping_ratio,
                                    double sample_rate) {
   const double w = 2.0 * M_PI * f, wn = 2.0 * M_PI * natural_frequency;

@@ -16,6 +16,8 @@ namespace rollspec::scenes {
 
 std::vector<study::KeySpec> random_oscillator_keys();
 std::unique_ptr<Scene> make_random_oscillator(const study::KeyReader& s);
+// The shape of its /psd and /bands, from its settings (a sweep checks it before any point runs).
+ResultShape random_oscillator_result_shape(const study::KeyReader& s);
 
 // The exact acceleration PSD of D-19 at frequency f for a force PSD value s_f.
 double random_oscillator_exact_psd(double f, double s_f, double mass, double natural_frequency, double damping_ratio,

@@ -53,9 +53,8 @@ class RollingPipe final : public EnsembleScene {
           std::make_unique<texture_io::SurfaceGenerator>(texture_io::surface_generator(p_.texture, p_.surface, p_.psd));
     }
     welch_ = std::make_unique<spectral::WelchPlan>(p_.welch);
-    std::vector<std::string> names;
-    for (std::size_t j = 0; j < p_.sensor_nodes.size(); ++j) names.push_back("sensor_" + std::to_string(j + 1));
-    rows_ = std::make_unique<PsdRows>(names, p_.sensor_mean, welch_->frequencies(), p_.band_min, p_.band_max, extras);
+    rows_ = std::make_unique<PsdRows>(numbered_sensors(p_.sensor_nodes.size()), p_.sensor_mean, welch_->frequencies(),
+                                      p_.band_min, p_.band_max, extras);
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(p_.welch.segment));
     add_stages(fixed_stages());  // after the members the descriptions name
@@ -280,5 +279,10 @@ class RollingPipe final : public EnsembleScene {
 }  // namespace
 
 std::unique_ptr<Scene> make_rolling_pipe(const KeyReader& s) { return std::make_unique<RollingPipe>(s); }
+
+ResultShape rolling_pipe_result_shape(const KeyReader& s) {
+  const RollingPipeSettings p = read_rolling_pipe_settings(s);
+  return psd_result_shape(numbered_sensors(p.sensor_nodes.size()), p.sensor_mean, p.welch, p.band_min, p.band_max);
+}
 
 }  // namespace rollspec::scenes

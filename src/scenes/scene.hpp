@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "src/ensemble/ensemble_driver.hpp"
+#include "src/scenes/result_shape.hpp"
 #include "src/scenes/stage.hpp"
 #include "src/study/key_spec.hpp"
 
@@ -90,6 +91,8 @@ struct SceneInfo {
   SceneKind kind;                                     // which of the scene types make() returns (make_scene checks it)
   std::function<std::vector<study::KeySpec>()> keys;  // scene-specific keys (common keys are added)
   std::function<std::unique_ptr<Scene>(const study::KeyReader&)> make;
+  // The shape of /psd and /bands from the settings alone (empty for scenes that write no /psd).
+  std::function<ResultShape(const study::KeyReader&)> result_shape;
 };
 
 const std::vector<SceneInfo>& scene_registry();

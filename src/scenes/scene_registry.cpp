@@ -21,18 +21,22 @@ const std::vector<SceneInfo>& scene_registry() {
   static const std::vector<SceneInfo> scenes = {
       {"random-oscillator",
        "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
-       SceneKind::ensemble, random_oscillator_keys, [](const KeyReader& s) { return make_random_oscillator(s); }},
+       SceneKind::ensemble, random_oscillator_keys, [](const KeyReader& s) { return make_random_oscillator(s); },
+       random_oscillator_result_shape},
       {"ball-on-beam", "smooth rigid ball rolling over a rough modal beam; sensor acceleration PSDs (seeds 001, 002)",
-       SceneKind::ensemble, ball_on_beam_keys, [](const KeyReader& s) { return make_ball_on_beam(s); }},
+       SceneKind::ensemble, ball_on_beam_keys, [](const KeyReader& s) { return make_ball_on_beam(s); },
+       ball_on_beam_result_shape},
       {"rolling-beam", "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
-       SceneKind::single_run, rolling_beam_keys, [](const KeyReader& s) { return make_rolling_beam(s); }},
+       SceneKind::single_run, rolling_beam_keys, [](const KeyReader& s) { return make_rolling_beam(s); }, nullptr},
       {"rolling-pipe",
        "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs",
-       SceneKind::ensemble, rolling_pipe_keys, [](const KeyReader& s) { return make_rolling_pipe(s); }},
+       SceneKind::ensemble, rolling_pipe_keys, [](const KeyReader& s) { return make_rolling_pipe(s); },
+       rolling_pipe_result_shape},
       {"stiffness", "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
-       SceneKind::stages_only, stiffness_scene_keys, [](const KeyReader& s) { return make_stiffness_scene(s); }},
+       SceneKind::stages_only, stiffness_scene_keys, [](const KeyReader& s) { return make_stiffness_scene(s); },
+       nullptr},
       {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
-       SceneKind::stages_only, texture_scene_keys, [](const KeyReader& s) { return make_texture_scene(s); }},
+       SceneKind::stages_only, texture_scene_keys, [](const KeyReader& s) { return make_texture_scene(s); }, nullptr},
   };
   return scenes;
 }

@@ -168,14 +168,28 @@ def test_zipped_lists_of_unequal_length_are_refused(small_study, tmp_path):
     assert_refused(r, EX_CONFIG, ["zipped", "oscillator.mass has 2 values", "oscillator.natural_frequency has 3"])
 
 
-def test_shape_changing_key_is_refused_naming_it(small_study, tmp_path):
+def test_shape_changing_key_is_refused_by_plan_and_run_before_any_point(small_study, tmp_path):
     study = sweep_study(small_study, "spectrum.segment = 1024, 512, 256\n")
+    line = study.read_text().splitlines().index("spectrum.segment = 1024, 512, 256") + 1
+    # the key, its values, and the shapes of both points (513 and 257 bins of segments 1024 and 512)
+    words = [f"{study}:{line}", "[sweep] spectrum.segment = 1024, 512, 256", "shape",
+             "at spectrum.segment=1024 /psd/mean 1 x 513", "at spectrum.segment=512 /psd/mean 1 x 257"]
+    assert_refused(run(["plan", study]), EX_CONFIG, words)
     out = tmp_path / "x.h5"
-    r = run(["run", study, "--out", out, "--quiet"])
-    assert_refused(r, EX_CONFIG, ["[sweep] spectrum.segment", "shape", "/psd/"])
+    assert_refused(run(["run", study, "--out", out, "--quiet"]), EX_CONFIG, words)
     assert not out.exists()
-    # refused at the second point, before the third ran
-    assert not (tmp_path / "x.h5.sweep" / "point_0002.h5").exists()
+    assert not (tmp_path / "x.h5.sweep").exists(), "refused before the first point, not after the second"
+
+
+def test_key_that_moves_the_frequency_grid_is_refused_before_any_point(small_study, tmp_path):
+    # Same number of bins, other frequencies: the stacked /psd/frequency could not be one coordinate.
+    study = small_study(realisations=6, chunk=2, duration=4)
+    out = tmp_path / "x.h5"
+    r = run(["run", study, "--out", out, "--quiet", "--sweep", "signal.sample_rate=1024,2048",
+             "--sweep", "oscillator.mass=1,2"])
+    assert_refused(r, EX_CONFIG, ["command line", "[sweep] signal.sample_rate", "0 .. 512 Hz", "0 .. 1024 Hz"])
+    assert "oscillator.mass = " not in r.stderr, "only the key that changes the grid is named"
+    assert not (tmp_path / "x.h5.sweep").exists()
 
 
 def test_speed_sweep_keeps_grids_that_follow_the_speed_per_point(tmp_path):

@@ -102,3 +102,18 @@ def test_single_run_is_computed_and_written_once(tmp_path):
     assert r.stderr.count("rolling-beam:") == 1, f"computed on more than one rank:\n{r.stderr}"
     assert r.stdout.count("wrote ") == 1, f"written by more than one rank:\n{r.stdout}"
     assert_bitwise_equal(one, two)
+
+
+def test_two_rank_sweep_equals_one_process_bitwise(tmp_path):
+    """A sweep's points each run on every rank; rank 0 alone stacks them and removes the work directory."""
+    s = study(tmp_path, realisations=13, chunk=2, duration=4)
+    sweep = ["--sweep", "oscillator.mass=1,2.5", "--sweep", "oscillator.natural_frequency=30,45"]
+    one, two = tmp_path / "one.h5", tmp_path / "two.h5"
+    r = run([BIN, "run", s, "--out", one, "--quiet", *sweep], threads="2")
+    assert r.returncode == 0, r.stderr
+    r = mpi(2, "run", s, "--out", two, *sweep, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.count(f"wrote {two} (sweep") == 1, f"written by more than one rank:\n{r.stdout}"
+    assert r.stdout.count("sweep point 1 of 4") == 1, f"the points are announced once:\n{r.stdout}"
+    assert not (tmp_path / "two.h5.sweep").exists(), "the work directory is removed after the merge"
+    assert_bitwise_equal(one, two)
