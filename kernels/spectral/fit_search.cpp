@@ -166,6 +166,7 @@ std::vector<double> inverse_correlation(const std::vector<double>& h, std::size_
 }
 
 double fisher_combined_p(const std::vector<double>& p) {
+  if (p.empty()) return 1.0;
   double half = 0.0;  // x / 2 = -sum ln p_i
   for (const double v : p) {
     if (!(v > 0.0)) return 0.0;
