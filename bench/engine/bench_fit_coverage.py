@@ -11,6 +11,7 @@ estimate, wall time and evaluations per fit. Cases:
   rig-loss        the seed 002 rig: the beam's loss factor beam.loss_factor
 
     /usr/bin/python3 bench/engine/bench_fit_coverage.py [--case oscillator] [--experiments 100] [--jobs 2]
+        [--log FILE]   (each fit's JSON appended as it ends; --summarise FILE prints the figures of a log)
 """
 import argparse
 import concurrent.futures
@@ -84,14 +85,32 @@ def main():
     ap.add_argument("--records", type=int, help="M: realisations averaged into a measurement (default: the case's)")
     ap.add_argument("--realisations", type=int, help="K: realisations per fit evaluation (default: the case's)")
     ap.add_argument("--two", action="store_true", help="the same as --case oscillator-two")
+    ap.add_argument("--log", help="append each experiment's fit (JSON, one line) here as it ends")
+    ap.add_argument("--summarise", metavar="LOG", help="print the figures of a --log (an interrupted bench too)")
     a = ap.parse_args()
-    case = CASES["oscillator-two" if a.two else a.case]
+    name = "oscillator-two" if a.two else a.case
+    case = CASES[name]
     records, realisations = a.records or case["records"], a.realisations or case["realisations"]
+    if a.summarise:
+        runs = [(json.loads(line), None) for line in Path(a.summarise).read_text().splitlines() if line.strip()]
+        return summarise(name, case, records, realisations, runs, a.jobs)
+
+    def logged(seed, work):
+        out = experiment(a.binary, seed, case, records, realisations, work)
+        if a.log:
+            with open(a.log, "a") as f:
+                f.write(json.dumps(out[0] | {"seed": seed, "wall": out[1]}) + "\n")
+        return out
+
     with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        runs = list(pool.map(lambda s: experiment(a.binary, 1000 + s, case, records, realisations, work),
-                             range(a.experiments)))
+        runs = list(pool.map(lambda s: logged(1000 + s, work), range(a.experiments)))
+    return summarise(name, case, records, realisations, runs, a.jobs)
+
+
+def summarise(name, case, records, realisations, runs, jobs):
     n = len(runs)
-    print(f"case {'oscillator-two' if a.two else a.case}: M = {records}, K = {realisations}, {n} experiments")
+    runs = [(r, t if t is not None else r.get("wall", float("nan"))) for r, t in runs]
+    print(f"case {name}: M = {records}, K = {realisations}, {n} experiments")
     for k, truth in case["truth"].items():
         est = np.array([r["parameters"][k]["estimate"] for r, _ in runs])
         held = sum(r["parameters"][k]["interval"][0] <= truth <= r["parameters"][k]["interval"][1] for r, _ in runs)
@@ -103,7 +122,7 @@ def main():
               f"median log half-width {np.median([math.log(r['parameters'][k]['interval'][1] / r['parameters'][k]['interval'][0]) / 2 for r, _ in runs]):.3g}")
     pv = np.array([r["p_value"] for r, _ in runs if r["p_value"] is not None])
     print(f"goodness of fit: {np.mean(pv < 0.05):.3f} of {len(pv)} fits rejected at 0.05")
-    print(f"per fit: wall {np.mean([t for _, t in runs]):.2f} s (jobs {a.jobs}), "
+    print(f"per fit: wall {np.mean([t for _, t in runs]):.2f} s (jobs {jobs}), "
           f"evaluations {np.mean([r['evaluations'] for r, _ in runs]):.1f}")
     return 0
 

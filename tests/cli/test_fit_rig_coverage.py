@@ -1,5 +1,5 @@
 """Calibration of `rollspec fit`'s intervals on a ball-on-beam scene (kernels/spectral D-27g), label
-`statistics`: the seed 002 rig with a short roll, synthetic measurements at the study's roughness
+`statistics`: the seed 002 rig with half its roll, synthetic measurements at the study's roughness
 level (texture.rms) or beam loss factor (beam.loss_factor) made with other seeds, each fitted for that
 key; the nominal 95 % profile intervals must hold the truth about 95 % of the time.
 
@@ -17,10 +17,11 @@ from conftest import SOURCE, measurement_from, run
 from fit_experiment import sets
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
-# A 0.1 m roll with 1024-sample segments, the 13 bands 224 .. 3548 Hz (modes 2 and 5).
-SHORT = ["ball.end=0.12", "spectrum.segment=1024"]
-BANDS = ["--fmin", "200", "--fmax", "3600"]
-RECORDS, REALISATIONS, EXPERIMENTS = 25, 20, 20
+# As bench_fit_coverage.py --case rig-rms / rig-loss (other seeds): a 0.18 m roll, the 16 bands
+# 89 .. 3548 Hz (modes 2 and 5), M = 25 as the rig, K = 30.
+SHORT = ["ball.end=0.2"]
+BANDS = ["--fmin", "85", "--fmax", "3600"]
+RECORDS, REALISATIONS, EXPERIMENTS = 25, 30, 20
 CASES = {"texture.rms": (0.123e-6, "0.03e-6:0.5e-6:log"), "beam.loss_factor": (0.01, "0.002:0.05:log")}
 
 
