@@ -55,7 +55,7 @@ def sets(pairs):
     return [a for kv in pairs for a in ("--set", kv)]
 
 
-def experiment(binary, seed, case, records, realisations, workdir):
+def experiment(binary, seed, case, records, realisations, workdir, model_seed=None):
     d = Path(workdir) / f"e{seed}"
     d.mkdir()
     truth = [f"{k}={v}" for k, v in case["truth"].items()]
@@ -69,7 +69,8 @@ def experiment(binary, seed, case, records, realisations, workdir):
     out = subprocess.run([binary, "fit", case["study"], d / "m.csv", "--measured-averages", str(records),
                           "--format", "json", *case["bands"],
                           *[a for k, r in case["ranges"].items() for a in ("--vary", f"{k}={r}")],
-                          *sets(case["sets"] + [f"study.realisations={realisations}"])],
+                          *sets(case["sets"] + [f"study.realisations={realisations}"]
+                                + ([f"study.seed={model_seed}"] if model_seed else []))],
                          capture_output=True, text=True)
     if out.returncode != 0:
         raise RuntimeError(f"fit of seed {seed} failed ({out.returncode}): {out.stderr}")
@@ -85,6 +86,8 @@ def main():
     ap.add_argument("--records", type=int, help="M: realisations averaged into a measurement (default: the case's)")
     ap.add_argument("--realisations", type=int, help="K: realisations per fit evaluation (default: the case's)")
     ap.add_argument("--two", action="store_true", help="the same as --case oscillator-two")
+    ap.add_argument("--model-seeds", action="store_true",
+                    help="each fit's runs with a seed of their own (default: the study's, the same in every fit)")
     ap.add_argument("--log", help="append each experiment's fit (JSON, one line) here as it ends")
     ap.add_argument("--summarise", metavar="LOG", help="print the figures of a --log (an interrupted bench too)")
     a = ap.parse_args()
@@ -96,7 +99,7 @@ def main():
         return summarise(name, case, records, realisations, runs, a.jobs)
 
     def logged(seed, work):
-        out = experiment(a.binary, seed, case, records, realisations, work)
+        out = experiment(a.binary, seed, case, records, realisations, work, 50000 + seed if a.model_seeds else None)
         if a.log:
             with open(a.log, "a") as f:
                 f.write(json.dumps(out[0] | {"seed": seed, "wall": out[1]}) + "\n")
@@ -120,8 +123,14 @@ def summarise(name, case, records, realisations, runs, jobs):
               f"(binomial s.e. at 0.95: {math.sqrt(0.95 * 0.05 / n):.3f}; {below} wholly below it); "
               f"estimate mean {est.mean():.4g}, spread {est.std(ddof=1):.3g}, "
               f"median log half-width {np.median([math.log(r['parameters'][k]['interval'][1] / r['parameters'][k]['interval'][0]) / 2 for r, _ in runs]):.3g}")
+        # The intervals' own sigma (half-width / 1.96, in ln) against the estimates' scatter (ln): a ratio
+        # above 1 means intervals wider than the scatter they should describe (over-coverage).
+        sig = np.median([math.log(r["parameters"][k]["interval"][1] / r["parameters"][k]["interval"][0]) / 3.92
+                         for r, _ in runs])
+        print(f"  interval sigma / scatter of ln estimate: {sig / np.log(est).std(ddof=1):.2f}")
     pv = np.array([r["p_value"] for r, _ in runs if r["p_value"] is not None])
-    print(f"goodness of fit: {np.mean(pv < 0.05):.3f} of {len(pv)} fits rejected at 0.05")
+    print(f"goodness of fit: {np.mean(pv < 0.05):.3f} of {len(pv)} fits rejected at 0.05; median p {np.median(pv):.2f} "
+          f"(0.5 if the law is calibrated)")
     print(f"per fit: wall {np.mean([t for _, t in runs]):.2f} s (jobs {jobs}), "
           f"evaluations {np.mean([r['evaluations'] for r, _ in runs]):.1f}")
     return 0

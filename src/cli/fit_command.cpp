@@ -18,6 +18,7 @@
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/temp_files.hpp"
 
 namespace rollspec::cli {
 
@@ -38,8 +39,10 @@ struct TempDir {
       throw cannot_create("cannot create a temporary directory under " +
                           std::filesystem::temp_directory_path().string() + " (set TMPDIR)");
     path = pattern;
+    io::register_temp_dir(path);  // an interrupt (which ends the process without unwinding) removes it too
   }
   ~TempDir() {
+    io::unregister_temp_dir(path);
     std::error_code ec;
     std::filesystem::remove_all(path, ec);
   }

@@ -1,6 +1,7 @@
 """`rollspec fit` of several measurements, each at its operating point (--measurement FILE --at KEYS),
 with shared unknowns (kernels/spectral D-27f), and --journal: an interrupted fit resumed without
 rerunning its finished evaluations."""
+import os
 import signal
 import subprocess
 import time
@@ -95,7 +96,10 @@ def start_fit(measured, journal):
 def test_an_interrupted_fit_resumes_from_its_journal(measured, tmp_path):
     import json
     journal = tmp_path / "fit.journal"
-    proc = subprocess.Popen(start_fit(measured, journal), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    temp = tmp_path / "temp"  # the fit's run files go here (TMPDIR); an interrupt leaves none
+    temp.mkdir()
+    proc = subprocess.Popen(start_fit(measured, journal), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env=dict(os.environ, TMPDIR=str(temp)))
     deadline = time.time() + 300
     while time.time() < deadline and proc.poll() is None:
         if journal.exists() and len(journal.read_text().splitlines()) >= 6:  # the key and 5 evaluations
@@ -107,6 +111,7 @@ def test_an_interrupted_fit_resumes_from_its_journal(measured, tmp_path):
     done = len(journal.read_text().splitlines()) - 1
     assert done >= 5
     assert not list(tmp_path.glob("fit.journal.tmp-*"))
+    assert not list(temp.iterdir())
     r = subprocess.run(start_fit(measured, journal), capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     resumed = json.loads(r.stdout)
