@@ -11,7 +11,8 @@ from matplotlib.legend_handler import HandlerTuple
 
 from .log_ticks import label_log_axes
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
-from .result_file import EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, strings, text_attr
+from .result_file import (EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, sensor_labels, strings,
+                          text_attr)
 from .safe_output import emit_figure, picture_kind
 
 
@@ -31,11 +32,13 @@ def short(label):
 
 
 def read_psd(result):
-    """The /psd rows with their interval, the reference, the bands; checked for shape and for data."""
+    """The /psd rows with their interval, the reference, the bands, the rows' legend labels (with the
+    sensors' positions); checked for shape and for data."""
     with open_rollspec(result) as f:
         freq = read_rows(f, "/psd/frequency", 1)
         mean, lo, hi = (read_rows(f, "/psd/" + n, 2) for n in ("mean", "ci_lower", "ci_upper"))
         names = strings(f, "/psd/sensor")
+        labels = sensor_labels(f)
         ref = read_rows(f, "/reference/psd", 2) if "/reference/psd" in f else None
         ref_label = text_attr(f["/reference/psd"], "label", "reference") if ref is not None else None
         units = text_attr(f["/psd/mean"], "units")
@@ -50,7 +53,7 @@ def read_psd(result):
     if not np.any(np.isfinite(mean) & (mean > 0)):
         raise PostError(f"{result}: /psd/mean holds no positive finite value (all zero or NaN); "
                         "nothing to draw on a dB scale", EX_DATAERR)
-    return freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data, loss
+    return freq, mean, lo, hi, names, labels, ref, ref_label, units, k, level, band_data, loss
 
 
 def loss_note(ax, warning):
@@ -90,7 +93,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     if ylim is not None and not (len(ylim) == 2 and np.all(np.isfinite(ylim)) and ylim[0] < ylim[1]):
         raise PostError(f"--ylim {' '.join(map(str, ylim))}: allowed: two finite levels LOW < HIGH (dB)", EX_USAGE)
     fmt = kind or output_format(out)
-    freq, mean, lo, hi, names, ref, ref_label, units, k, level, band_data, loss = read_psd(result)
+    freq, mean, lo, hi, names, labels, ref, ref_label, units, k, level, band_data, loss = read_psd(result)
     row = sensor_row(names, sensor)
     have_bands = band_data["lower_frequency"].size > 0
     if fmin is None:
@@ -103,7 +106,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     delta_panel = bands and meas is not None
     cmp = compare_bands(meas, band_data, names[row], fmin, fmax, measured_averages) if delta_panel else None
     sim_style, meas_style = curve_styles(style)
-    sim_label = label or (f"computed, mean of {k}" if style == "seed" else f"{names[row]}, mean of {k}")
+    sim_label = label or (f"computed, mean of {k}" if style == "seed" else f"{labels[row]}, mean of {k}")
     meas_label = measurement_label or ("measured" if style == "seed" else "measurement")
     fig = Figure(figsize=(7.5, 6.6 if delta_panel else 4.6), layout="constrained")
     if title:

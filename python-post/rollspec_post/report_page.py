@@ -12,7 +12,7 @@ import numpy as np
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .psd_plot import plot_psd
 from .rig_summary import rig_parameters
-from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read, scalar, strings, text_attr
+from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read, scalar, sensor_labels, strings, text_attr
 from .safe_output import HTML_MARKER, write_atomic
 from . import __version__
 
@@ -73,6 +73,7 @@ def read_result(path, sensor):
         r["confidence"] = r["bands"]["confidence"]
         r["sensor"] = sensor = sensor_row(r["sensors"], sensor)
         r["sensor_name"] = r["sensors"][sensor]
+        r["sensor_label"] = sensor_labels(f)[sensor]  # with its position along the span, where recorded
         if "/reference/psd" in f:
             # share of PSD bins over the band range whose interval holds the reference, named by what it is
             r["reference_label"] = str(text_attr(f["/reference/psd"], "label", "reference"))
@@ -119,7 +120,7 @@ def loss_warning(r, threshold):
 
 def key_figures(r, cmp, threshold=LOSS_WARNING_SHARE):
     level = f"{100 * r['confidence']:.0f} %"
-    cards = [card("realisations", r["realisations"], f"sensor {r['sensor_name']}")]
+    cards = [card("realisations", r["realisations"], f"sensor {r['sensor_label']}")]
     if cmp is not None:
         over = f"over {cmp['count']} third-octave bands"
         cards.append(card("mean ΔL (bias), simulated − measured", f"{cmp['bias_db']:+.2f} dB", over))

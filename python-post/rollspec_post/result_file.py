@@ -92,6 +92,20 @@ def strings(f, name):
     return [v.decode(errors="replace") if isinstance(v, bytes) else str(v) for v in np.reshape(read(f, name), -1)]
 
 
+def sensor_labels(f, group="/psd"):
+    """The group's sensor names with their positions where the result records them ("sensor_2
+    (0.2 m)", from <group>/sensor_position); the name alone for sensor_mean, which is at no one place,
+    and for results written before positions were a coordinate."""
+    names = strings(f, group + "/sensor")
+    if group + "/sensor_position" not in f:
+        return names
+    pos = read_rows(f, group + "/sensor_position", 1)
+    if pos.size != len(names):
+        raise PostError(f"{f.filename}: {group}/sensor_position has {pos.size} values; expected {len(names)} "
+                        f"(one per name of {group}/sensor)", EX_DATAERR)
+    return [f"{n} ({p:g} m)" if np.isfinite(p) else n for n, p in zip(names, pos)]
+
+
 def scalar(f, name, default=None):
     """A one-element dataset as a float, or `default` when absent (optional key figures)."""
     if name not in f:

@@ -60,8 +60,9 @@ struct BandRow {
 }  // namespace
 
 const char* const kCompareUsage =
-    "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M]\n"
-    "                        [--fmin HZ] [--fmax HZ] [--test-level A] [--format table|csv|json] [--skip-rows N]\n"
+    "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K | --measured-position X] [--column NAME]\n"
+    "                        [--measured-averages M] [--fmin HZ] [--fmax HZ] [--test-level A] [--format "
+    "table|csv|json] [--skip-rows N]\n"
     "\n"
     "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: the one --column names,\n"
     "else `psd`, else in the output of `rollspec psd` of one channel its only PSD column (so it is read\n"
@@ -78,6 +79,9 @@ const char* const kCompareUsage =
     "--format json writes everything (the test as p_value, combined_test).\n"
     "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
     "--skip-rows N: the header follows the first N lines.\n"
+    "--measured-position X (m, where the measurement was taken) compares the sensor nearest X in the\n"
+    "result's /bands/sensor_position, named on stderr with its position; refused if no sensor lies within\n"
+    "half the smallest spacing between sensors (nothing nearer than the study resolves), or with --sensor.\n"
     "A result whose ball lost contact (more than 5 % of the time, or at all with law = linearised) is\n"
     "flagged: a `WARNING:` line before the table (`# WARNING:` in csv, on stderr too), and in json\n"
     "loss_of_contact_share and loss_of_contact_warning (null without).";
@@ -200,12 +204,15 @@ int compare_command(const Args& args) {
   const std::string usage = kCompareUsage;
   po::options_description opts("options");
   std::string result, measurement, format = "table", sensor, column;
+  double measured_position = NAN;
   double fmin = 0.0, fmax = INFINITY, records = 0.0, test_level = 0.05;
   long long skip_rows = -1;
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
       "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
       "sensor", po::value(&sensor),
       "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
+      "measured-position", po::value(&measured_position),
+      "where the measurement was taken (m): the sensor nearest it, within half the sensors' smallest spacing")(
       "column", po::value(&column),
       "PSD column of the measurement CSV (default: psd, else the only column besides frequency_hz)")(
       "measured-averages", po::value(&records), "independent records averaged into the measurement (>= 1)")(
@@ -232,9 +239,11 @@ int compare_command(const Args& args) {
     throw usage_error("--measured-averages " + number_text(records) +
                       ": allowed: a finite count >= 1 of independent records");
 
+  const io::SensorChoice choice = io::sensor_choice(
+      sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
-  const io::BandLevels b = io::read_band_levels(r, sensor);
+  const io::BandLevels b = io::read_band_levels(r, choice);
   if (vm.count("skip-rows") && skip_rows < 0)
     throw usage_error("--skip-rows " + std::to_string(skip_rows) +
                       ": allowed: a whole number >= 0 (lines before the header)");
@@ -277,6 +286,7 @@ int compare_command(const Args& args) {
   char buf[320];
   // On stderr too: a result dominated by impacts (or a linearised law past its validity) is no
   // comparison of the roughness model, whatever the form the table is read in.
+  if (!b.pick_note.empty()) std::cerr << "rollspec compare: " << b.pick_note << "\n";
   if (!loss.warning.empty()) std::cerr << "rollspec compare: WARNING: " << result << ": " << loss.warning << "\n";
   if (format == "json") {
     std::fputs(json_text(c).c_str(), stdout);

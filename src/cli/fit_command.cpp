@@ -107,8 +107,8 @@ const char* const kFitUsage =
     "usage: rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] [--vary ...] --measured-averages M\n"
     "       rollspec fit STUDY.ini --measurement M1.csv --at section.key=value[,...] --measurement M2.csv --at ...\n"
     "                    --vary ... --measured-averages M [--measured-averages M2 ...]\n"
-    "                    [--set section.key=value ...] [--sensor NAME|K] [--column NAME] [--fmin HZ] [--fmax HZ]\n"
-    "                    [--journal FILE] [--format text|json]\n"
+    "                    [--set section.key=value ...] [--sensor NAME|K | --measured-position X]\n"
+    "                    [--column NAME] [--fmin HZ] [--fmax HZ] [--journal FILE] [--format text|json]\n"
     "\n"
     "Estimates the 1 to 3 study keys named by --vary (each searched in [lo, hi], `log`: on a log scale) from\n"
     "a measured PSD (as `rollspec compare` reads it) that averages M independent records: the values that\n"
@@ -128,7 +128,7 @@ int fit_command(const Args& args) {
   std::string study, format = "text", sensor, column, journal_path;
   std::vector<std::string> vary_specs, sets, files, ats;
   std::vector<double> averages;
-  double fmin = 0.0, fmax = INFINITY;
+  double fmin = 0.0, fmax = INFINITY, measured_position = NAN;
   opts.add_options()("study", po::value(&study)->required(), "study (INI)")(
       "measurement", po::value(&files), "measured PSD (CSV); repeatable, each with its --at")(
       "at", po::value(&ats), "section.key=value[,...]: the operating point of the measurement of the same rank")(
@@ -136,7 +136,10 @@ int fit_command(const Args& args) {
       "measured-averages", po::value(&averages)->required(),
       "independent records averaged into the measurement (once, or once per measurement)")(
       "set", po::value(&sets), "section.key=value for every run")(
-      "sensor", po::value(&sensor), "sensor name or index (default: sensor_mean if present, else 0)")(
+      "sensor", po::value(&sensor),
+      "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
+      "measured-position", po::value(&measured_position),
+      "where the measurement was taken (m): the sensor nearest it, as compare picks it")(
       "column", po::value(&column), "PSD column of the measurement CSV")("fmin", po::value(&fmin)->default_value(0.0),
                                                                          "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
@@ -153,6 +156,8 @@ int fit_command(const Args& args) {
     throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) +
                       " Hz)");
   FitInputs in;
+  in.sensor = io::sensor_choice(
+      sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   if (vary_specs.size() > 3)
     throw usage_error("--vary given " + std::to_string(vary_specs.size()) + " times; allowed: 1 to 3 keys");
   for (const auto& s : vary_specs) {
@@ -165,7 +170,7 @@ int fit_command(const Args& args) {
       if (s.rfind(v.key + "=", 0) == 0)
         throw usage_error("--set " + clip(s) + ": " + v.key + " is varied by --vary; allowed: one of the two");
   if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
-  in.study = study, in.sensor = sensor, in.sets = sets, in.fmin = fmin, in.fmax = fmax;
+  in.study = study, in.sets = sets, in.fmin = fmin, in.fmax = fmax;
   in.points = fit_points(files, ats, averages, in, column);
 
   const TempDir temp;

@@ -1,5 +1,6 @@
 #include "src/cli/fit_journal.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -51,7 +52,8 @@ std::uint64_t fit_journal_key(const FitInputs& in, const std::string& column) {
   f.add_file(in.study);
   for (const auto& s : in.sets) f.add("set " + s);
   for (const auto& v : in.vary) f.add(v.key), f.add(v.lo), f.add(v.hi), f.add(v.log ? "log" : "linear");
-  f.add("sensor " + in.sensor), f.add("column " + column), f.add(in.fmin), f.add(in.fmax);
+  f.add("sensor " + in.sensor.name), f.add(in.sensor.position ? *in.sensor.position : NAN);
+  f.add("column " + column), f.add(in.fmin), f.add(in.fmax);
   for (const auto& p : in.points) f.add_file(p.path), f.add("at " + p.at), f.add(p.records);
   return f.h;
 }

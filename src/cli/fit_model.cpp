@@ -108,6 +108,7 @@ io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u)
     b = io::read_band_levels(r, in_.sensor);
   }
   std::filesystem::remove(out);
+  if (band_[point].empty() && !b.pick_note.empty()) std::fprintf(stderr, "rollspec fit: %s\n", b.pick_note.c_str());
   if (band_[point].empty()) choose_bands(point, b);
   return b;
 }

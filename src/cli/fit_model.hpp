@@ -39,7 +39,8 @@ struct FitPoint {
 std::vector<std::string> parse_at(const std::string& at);
 
 struct FitInputs {
-  std::string study, sensor;
+  std::string study;
+  io::SensorChoice sensor;
   std::vector<std::string> sets;  // --set passed on to every run
   std::vector<VaryRange> vary;
   std::vector<FitPoint> points;

@@ -3,9 +3,13 @@
 //   rollspec run STUDY.ini [--out FILE.h5] [--set section.key=value ...] [--resume] [--quiet]
 //   rollspec plan STUDY.ini
 //   rollspec psd SIGNAL.csv --fs HZ [--segment N] [--overlap F] [--window hann|rect] [--out FILE.csv]
-//   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K] [--column NAME] [--measured-averages M] [--format
-//   table|csv|json] rollspec texture STUDY.ini [--out FILE.h5] [--count N] rollspec modes STUDY.ini rollspec stiffness
-//   STUDY.ini [--out FILE.h5] [--rebuild] rollspec keys [SCENE] rollspec init [SCENE] [--out FILE.ini] [--force]
+//   rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K | --measured-position X] [--column NAME]
+//                    [--measured-averages M] [--format table|csv|json]
+//   rollspec texture STUDY.ini [--out FILE.h5] [--count N]
+//   rollspec modes STUDY.ini
+//   rollspec stiffness STUDY.ini [--out FILE.h5] [--rebuild]
+//   rollspec keys [SCENE]
+//   rollspec init [SCENE] [--out FILE.ini] [--force]
 //   rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] --measured-averages M
 //   rollspec version (or rollspec --version, rollspec -V)
 //

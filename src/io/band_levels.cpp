@@ -1,5 +1,6 @@
 #include "src/io/band_levels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -19,7 +20,7 @@ std::string join(const std::vector<std::string>& names) {
 
 // A sensor is picked by its name, or by the number K of its name sensor_K (1-based, as the names and
 // the study's [sensors] positions count): one scheme, whatever the row order.
-std::size_t pick_row(const Hdf5Reader& r, const std::vector<std::string>& names, const std::string& sensor) {
+std::size_t pick_by_name(const Hdf5Reader& r, const std::vector<std::string>& names, const std::string& sensor) {
   if (sensor.empty()) {
     for (std::size_t i = 0; i < names.size(); ++i)
       if (names[i] == "sensor_mean") return i;
@@ -31,6 +32,55 @@ std::size_t pick_row(const Hdf5Reader& r, const std::vector<std::string>& names,
     if (names[i] == name) return i;
   throw usage_error("--sensor " + sensor.substr(0, 200) + ": " + r.path() + " has the sensors " + join(names) +
                     "; allowed: a name, or the number K of sensor_K");
+}
+
+// The sensor nearest x (the first of equally near ones). It must lie within half the smallest
+// spacing between the sensors' places: then no other sensor is nearer than the spacing the study
+// resolves, and a place between two sensors is not silently read as one of them. With one place
+// there is no spacing to judge by: only that place is accepted.
+std::size_t pick_by_position(const Hdf5Reader& r, const std::vector<std::string>& names,
+                             const std::vector<double>& positions, double x, std::string& note) {
+  const std::string option = "--measured-position " + number_text(x) + " m";
+  std::vector<std::size_t> placed;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (std::isfinite(positions[i])) placed.push_back(i);
+  if (placed.empty())
+    throw usage_error(option + ": " + r.path() +
+                      " has no sensor positions (/bands/sensor_position: written since sensor positions are a "
+                      "coordinate, by scenes whose sensors have places); allowed: --sensor NAME|K");
+  std::vector<double> sorted;
+  for (const std::size_t i : placed) sorted.push_back(positions[i]);
+  std::sort(sorted.begin(), sorted.end());
+  double gap = INFINITY;
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i] > sorted[i - 1]) gap = std::min(gap, sorted[i] - sorted[i - 1]);
+  const double tolerance = std::isinf(gap) ? 0.0 : gap / 2.0;
+  std::size_t best = placed[0];
+  for (const std::size_t i : placed)
+    if (std::fabs(positions[i] - x) < std::fabs(positions[best] - x)) best = i;
+  const double distance = std::fabs(positions[best] - x);
+  const std::string within = number_text(tolerance) + " m of a sensor (" +
+                             (std::isinf(gap) ? "one sensor: no spacing to judge a distance by"
+                                              : "half the smallest spacing between sensors") +
+                             ")";
+  if (distance > tolerance) {
+    std::string places;
+    for (const std::size_t i : placed)
+      places += (places.empty() ? "" : ", ") + names[i] + " " + number_text(positions[i]) + " m";
+    throw usage_error(option + ": the nearest sensor, " + names[best] + " at " + number_text(positions[best]) +
+                      " m, is " + number_text(distance) + " m away; " + r.path() + " has the sensors at " + places +
+                      "; allowed: a position within " + within + ", or --sensor NAME|K");
+  }
+  note = option + ": " + names[best] + " at " + number_text(positions[best]) + " m, the nearest sensor (within " +
+         within + ")";
+  return best;
+}
+
+// The one chooser of a result's row, for compare and fit.
+std::size_t pick_row(const Hdf5Reader& r, const std::vector<std::string>& names, const std::vector<double>& positions,
+                     const SensorChoice& choice, std::string& note) {
+  const SensorChoice c = sensor_choice(choice.name, choice.position);
+  return c.position ? pick_by_position(r, names, positions, *c.position, note) : pick_by_name(r, names, c.name);
 }
 
 // Well-formed UTF-8 without control characters: a name that is printed and written into JSON.
@@ -54,7 +104,16 @@ constexpr double kLargestLevelDb = 3100.0;
 
 }  // namespace
 
-BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
+SensorChoice sensor_choice(const std::string& name, std::optional<double> position) {
+  if (position && !std::isfinite(*position))
+    throw usage_error("--measured-position " + number_text(*position) + ": allowed: a finite position in m");
+  if (position && !name.empty())
+    throw usage_error("--sensor " + name.substr(0, 200) + " and --measured-position " + number_text(*position) +
+                      " m both given; allowed: one of the two (a sensor by name, or the one nearest a place)");
+  return {name, position};
+}
+
+BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice) {
   const std::string& file = r.path();
   std::vector<std::size_t> dims;
   const auto level = r.read("/bands/level_db", &dims);
@@ -72,10 +131,17 @@ BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor) {
       throw data_error(file + ": /bands/sensor[" + std::to_string(i) +
                        "] is not printable UTF-8 text; allowed: sensor names "
                        "as rollspec writes them (the file was altered or damaged)");
-  const std::size_t row = pick_row(r, names, sensor);
-
+  std::vector<double> positions;  // results written before positions were a coordinate lack them
+  if (r.exists("/bands/sensor_position")) {
+    positions = r.read("/bands/sensor_position");
+    if (positions.size() != ns)
+      throw data_error(file + ": /bands/sensor_position has " + std::to_string(positions.size()) +
+                       " values; expected " + std::to_string(ns) + " (one per row of /bands/level_db)");
+  }
   BandLevels b;
+  const std::size_t row = pick_row(r, names, positions, choice, b.pick_note);
   b.sensor = names[row];
+  if (!positions.empty()) b.position = positions[row];
   const double realisations = r.double_attribute("/psd", "realisations");
   if (!(realisations >= 1.0 && realisations <= 9.0e15 && realisations == std::floor(realisations)))
     throw data_error(file + ": /psd@realisations = " + number_text(realisations) +

@@ -2,7 +2,9 @@
 // One row (a sensor or the sensor mean) of a result's third-octave bands, as `rollspec compare`
 // reads it: levels, the interval of the simulated mean, and the realisations' scatter of their
 // band averages, from which a measurement's prediction interval follows (kernels/spectral D-22).
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,8 @@ namespace rollspec::io {
 
 struct BandLevels {
   std::string sensor;                         // the row's name in /bands/sensor
+  double position = NAN;                      // m, from /bands/sensor_position (NaN: none, or sensor_mean)
+  std::string pick_note;                      // how --measured-position chose the row (empty: by name)
   std::vector<double> nominal, lower, upper;  // Hz
   std::vector<double> level_db, ci_lower_db, ci_upper_db;
   std::vector<double> std_dev;         // of one realisation's band average, PSD unit
@@ -22,9 +26,20 @@ struct BandLevels {
   std::string interval_method;
 };
 
-// `sensor`: a name from /bands/sensor or an index; empty picks "sensor_mean" when the result has
-// it, else the first row. Refuses (exit 64) an unknown sensor, naming the ones there are, and
-// (exit 65) datasets of the wrong shape or with NaN.
-BandLevels read_band_levels(const Hdf5Reader& r, const std::string& sensor);
+// How a command picks its row: --sensor (a name from /bands/sensor, or K of sensor_K) or
+// --measured-position X (m: the sensor nearest X in /bands/sensor_position); neither picks
+// "sensor_mean" when the result has it, else the first row.
+struct SensorChoice {
+  std::string name;
+  std::optional<double> position;
+};
+
+// The choice of --sensor and --measured-position, refused (exit 64) before any work when both are
+// given or the position is not a finite number.
+SensorChoice sensor_choice(const std::string& name, std::optional<double> position);
+
+// Refuses (exit 64) an unknown sensor, naming the ones there are, a position with no sensor near it or a result without
+// positions, and (exit 65) datasets of the wrong shape or with NaN.
+BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice);
 
 }  // namespace rollspec::io

@@ -34,6 +34,16 @@ void write_sensor_scale(Hdf5Writer& w, const std::string& group, const std::vect
   w.make_scale(group + "/sensor", "sensor");
 }
 
+void write_sensor_positions(Hdf5Writer& w, const std::string& group, const std::vector<double>& positions,
+                            std::size_t rows, const std::string& long_name) {
+  std::vector<double> p(rows, NAN);  // the sensor mean is at no one place
+  std::copy_n(positions.begin(), std::min(rows, positions.size()), p.begin());
+  w.write(group + "/sensor_position", {rows}, p.data(), "m", long_name);
+  w.attribute(group + "/sensor_position", "long_name", long_name);  // CF: the label plots and xarray show
+  w.attach_scale(group + "/sensor_position", group + "/sensor", 0);
+  w.attribute(group, "coordinates", std::string("sensor_position"));
+}
+
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
   const std::uint64_t K = e.realisations;
@@ -59,6 +69,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     w.attach_scale(d, "/psd/sensor", 0);
     w.attach_scale(d, "/psd/frequency", 1);
   }
+  if (!e.position_meaning.empty()) write_sensor_positions(w, "/psd", e.sensor_position, ns, e.position_meaning);
   w.attribute("/psd", "realisations", static_cast<std::int64_t>(K));
   w.attribute("/psd", "interval_method", interval_method(K));
   if (e.welch_dof > 0.0) w.attribute("/psd", "welch_degrees_of_freedom", e.welch_dof);
@@ -114,6 +125,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     w.attach_scale(d, "/bands/centre_frequency", 1);
     w.attribute(d, "coordinates", std::string("nominal_frequency"));  // CF: xarray shows the IEC label as a coordinate
   }
+  if (!e.position_meaning.empty()) write_sensor_positions(w, "/bands", e.sensor_position, ns, e.position_meaning);
   if (!e.band_log_covariance.empty()) {  // D-26: rows x bands x bands
     w.write("/bands/log_level_covariance", {ns, nb, nb}, e.band_log_covariance.data(), "1",
             "between-band covariance (K - 1) of the natural log of one realisation's band-averaged PSD");

@@ -6,6 +6,8 @@
 //   /bands/upper_frequency (band), /bands/level_db, /bands/ci_lower_db, /bands/ci_upper_db,
 //   /bands/std, /bands/log_std, /bands/degrees_of_freedom (sensor x band),
 //   /bands/log_level_covariance (sensor x band x band)
+//   /psd/sensor_position, /bands/sensor_position (m, on the sensor scale; NaN for sensor_mean): an
+//   auxiliary coordinate, named by the group attribute `coordinates` (xarray shows it beside the names)
 // Every interval comes from the realisations' own scatter (kernels/spectral D-21): realisations
 // are independent, nothing inside one is (adjacent Welch bins, segments of a moving-load record).
 // The band interval uses the scatter of each realisation's band average, not a count of bins;
@@ -25,6 +27,8 @@ class Hdf5Writer;
 struct PsdEnsemble {
   std::vector<double> frequency;                // Hz, uniform from 0
   std::vector<std::string> sensors;             // rows
+  std::vector<double> sensor_position;          // m, per sensor; rows past it (sensor_mean) have none
+  std::string position_meaning;                 // long_name of sensor_position (empty: no positions)
   std::vector<double> mean;                     // rows x frequency
   std::vector<double> std_dev;                  // ensemble standard deviation of one realisation's PSD
   std::vector<spectral::Scatter> scatter;       // rows x frequency: moments of x and ln x
@@ -52,5 +56,10 @@ std::string interval_method(std::uint64_t realisations);
 // h5netcdf engine follows), so every group with spectra carries its own.
 void write_frequency_scale(Hdf5Writer& w, const std::string& group, const std::vector<double>& frequency);
 void write_sensor_scale(Hdf5Writer& w, const std::string& group, const std::vector<std::string>& sensors);
+
+// <group>/sensor_position (m) on the sensor scale of `rows` rows, NaN past the positions given; named
+// as a coordinate by the group attribute `coordinates` (CF, read by xarray's decoder).
+void write_sensor_positions(Hdf5Writer& w, const std::string& group, const std::vector<double>& positions,
+                            std::size_t rows, const std::string& long_name);
 
 }  // namespace rollspec::io

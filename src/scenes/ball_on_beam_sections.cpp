@@ -19,11 +19,15 @@ BallOnBeamSections BallOnBeamSections::parse(const study::KeyReader& s) {
   b.texture = study::TextureSection::parse(s);
   b.equivalent_roughness = study::EquivalentRoughnessSection::parse(s);
   b.stiffness = study::StiffnessSection::parse(s);
-  b.strip_surface = study::StripSurfaceSection::parse(s);
+  b.surface = study::SurfaceSection::parse(s);
+  b.strip_surface = study::StripSurfaceSection::of(b.surface, b.texture);
   b.blocked_force = study::BlockedForceSection::parse(s);
   b.path_table = study::PathTableSection::parse(s);
   b.texture_psd = texture_io::study_psd(b.texture);
-  b.tables = stiffness::TableStudy::parse(s);
+  const stiffness::TableSections tables{
+      b.stiffness,           b.texture, b.surface, true, b.contact.uses_stiffness_table(), b.blocked_force,
+      b.equivalent_roughness};
+  b.tables = stiffness::TableStudy::of(tables, b.texture_psd, s);
   return b;
 }
 

@@ -21,6 +21,7 @@
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/strip_surface_section.hpp"
 #include "src/study/sections/study_section.hpp"
+#include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
 
 namespace rollspec::study {
@@ -44,7 +45,8 @@ struct BallOnBeamSections {
   study::TextureSection texture;
   study::EquivalentRoughnessSection equivalent_roughness;
   study::StiffnessSection stiffness;
-  study::StripSurfaceSection strip_surface;
+  study::SurfaceSection surface;
+  study::StripSurfaceSection strip_surface;  // of [surface] and [texture]
   study::BlockedForceSection blocked_force;
   study::PathTableSection path_table;
   texture::Psd texture_psd;      // the roughness PSD [texture] describes (texture_io::study_psd)

@@ -28,6 +28,8 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   e.welch_dof = K * welch_->equivalent_dof(b_.samples - b_.skip);  // stationary D-16 value, for information
   e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
   e.confidence = b_.confidence;
+  e.sensor_position = b_.model.sensors;
+  e.position_meaning = "sensor position along the span";
   io::write_psd_result(w, e);
 
   std::vector<double> force(nf), ball(nf);

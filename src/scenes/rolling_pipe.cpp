@@ -154,6 +154,9 @@ class RollingPipe final : public EnsembleScene {
     e.welch_dof = K * welch_->equivalent_dof(p_.samples - p_.skip);
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
     e.confidence = p_.confidence;
+    // A sensor records its nearest node: its place along the tube, from the end at y = -length/2.
+    for (const int n : p_.sensor_nodes) e.sensor_position.push_back(n * p_.length / (p_.nodes() - 1));
+    e.position_meaning = "position along the tube of the sensor's node, from its end at y = -length/2";
     io::write_psd_result(w, e);
 
     const std::size_t x0 = rows_->extra_index(0);

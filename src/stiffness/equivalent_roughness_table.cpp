@@ -197,6 +197,7 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     progress.advance();
   }
+  progress.finish();  // the bar's "took" line (a log's only line of it)
   for (std::size_t k = 0; k < mean.size(); ++k) {
     t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));
     t.psd.push_back(mean[k] / (2.0 * M_PI));

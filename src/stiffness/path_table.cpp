@@ -195,6 +195,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
   } catch (const std::invalid_argument& e) {
     ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
   }
+  progress.finish();  // the bar's "took" line (a log's only line of it), short of its total when B43a adds less
   if (!t.converged)
     throw data_error("path table: a contact solve did not converge (largest error " + io::exact_text(t.max_error) +
                      "); raise [stiffness] max_iterations or tolerance");

@@ -136,8 +136,6 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
   contact::SolverOptions opts = stiffness.solver;
   std::vector<double> deltas(steps);
   for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);
-  texture_io::SurfaceGenerator surfaces;
-  if (is_rough) surfaces = texture_io::surface_generator(ts.texture, ts.surface_generator, ts.psd);
 
   // Realisation r runs on rank r mod ranks (OpenMP inside each rank); every rank then holds every
   // realisation's results and reduces them in realisation order, so the table has the same bits
@@ -158,12 +156,12 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
       try {
         if (!solver) solver = std::make_unique<contact::ContactSolver>(grid, effective_modulus);
         texture::Surface surf;
-        if (is_rough) surfaces.generate(seed, static_cast<std::uint64_t>(r), surf, true);
+        if (is_rough) ts.surfaces->generate(seed, static_cast<std::uint64_t>(r), surf, true);
         if (is_rough && ball_rms > 0.0) {
           // Rough on rough: the gap depends only on h_flat + h_ball (design §4); the ball's heights are
           // an independent realisation (ids offset by kBallRealisations) scaled to the ball's rms.
           texture::Surface ball;
-          surfaces.generate(seed, kBallRealisations + static_cast<std::uint64_t>(r), ball, true);
+          ts.surfaces->generate(seed, kBallRealisations + static_cast<std::uint64_t>(r), ball, true);
           double sq = 0.0;
           for (double v : ball.heights) sq += v * v;
           const double scale = ball_rms / std::sqrt(sq / static_cast<double>(ball.heights.size()));

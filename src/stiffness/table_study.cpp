@@ -14,15 +14,25 @@ bool has_section(const study::KeyReader& s, const std::string& section) {
 }
 }  // namespace
 
-TableStudy TableStudy::parse(const study::KeyReader& s) {
-  TableStudy t;
+TableSections TableSections::parse(const study::KeyReader& s) {
+  TableSections t;
   t.stiffness = study::StiffnessSection::parse(s);
-  t.surface = study::StripSurfaceSection::parse(s);
-  const bool strips = has_section(s, "blocked_force");
-  if (strips) {
+  t.texture = study::TextureSection::parse(s);
+  t.surface = study::SurfaceSection::parse(s);
+  t.strips = has_section(s, "blocked_force");
+  if (t.strips) {
     t.blocked_force = study::BlockedForceSection::parse(s);
     t.equivalent_roughness = study::EquivalentRoughnessSection::parse(s);
   }
+  return t;
+}
+
+TableStudy TableStudy::of(const TableSections& sections, const texture::Psd& psd, const study::KeyReader& s) {
+  TableStudy t;
+  t.stiffness = sections.stiffness;
+  t.surface = study::StripSurfaceSection::of(sections.surface, sections.texture);
+  t.blocked_force = sections.blocked_force;
+  t.equivalent_roughness = sections.equivalent_roughness;
   t.store.study_file = s.file();
   t.store.study_text = s.canonical_text();
   t.store.seed = t.stiffness.table_seed;
@@ -30,20 +40,24 @@ TableStudy TableStudy::parse(const study::KeyReader& s) {
   t.store.table_origin = t.stiffness.table_origin;
   t.store.table_dir_origin = t.stiffness.table_dir_origin;
   t.store.inputs = s.input_files();
-  for (const auto& p : texture_io::profile_files(s)) t.store.inputs.push_back(p);
+  for (const auto& p : texture_io::profile_files(sections.texture)) t.store.inputs.push_back(p);
   // A smooth stiffness study needs no texture (its PSD keys are never resolved).
-  t.textured = t.stiffness.rough || strips;
+  t.textured = sections.textured();
   if (t.textured) {
-    t.psd = texture_io::study_psd(s);
-    t.amplitudes = texture_io::study_amplitudes(s);
-    t.psd_fingerprint = hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(s)));
-    t.profile_derived_keys = texture_io::profile_derived_surface_keys(s);
+    t.psd = psd;
+    t.amplitudes = texture_io::study_amplitudes(sections.texture);
+    t.psd_fingerprint = hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(sections.texture)));
+    t.profile_derived_keys = texture_io::profile_derived_surface_keys(sections.texture, sections.surface);
   }
-  if (t.stiffness.rough) {
-    t.texture = study::TextureSection::parse(s);
-    t.surface_generator = texture_io::with_profile_values(t.texture, study::SurfaceSection::parse(s));
-  }
+  if (t.stiffness.rough && sections.stiffness_table)
+    t.surfaces = std::make_shared<const texture_io::SurfaceGenerator>(texture_io::surface_generator(
+        sections.texture, texture_io::with_profile_values(sections.texture, sections.surface), psd));
   return t;
+}
+
+TableStudy TableStudy::parse(const study::KeyReader& s) {
+  const TableSections sections = TableSections::parse(s);
+  return of(sections, sections.textured() ? texture_io::study_psd(sections.texture) : texture::Psd{}, s);
 }
 
 }  // namespace rollspec::stiffness

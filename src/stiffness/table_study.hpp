@@ -4,6 +4,7 @@
 // cut strips and surfaces from. Their random surfaces and strips draw from the tables' own streams
 // keyed by ([stiffness] table_seed, index), never the study seed. The builders and the input texts (the tables' hashes)
 // read this value only, never the study's keys.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,21 @@
 
 namespace rollspec::stiffness {
 
+// The sections a table stage reads, parsed once (by the scene's sections or by TableStudy::parse).
+struct TableSections {
+  study::StiffnessSection stiffness;
+  study::TextureSection texture;
+  study::SurfaceSection surface;
+  bool strips = false;          // the scene has the strip stages' sections (ball-on-beam)
+  bool stiffness_table = true;  // a stiffness table is built (ball-on-beam: [contact] law = table or literal)
+  study::BlockedForceSection blocked_force;
+  study::EquivalentRoughnessSection equivalent_roughness;
+
+  static TableSections parse(const study::KeyReader& s);
+  // Whether a table reads the texture: a rough stiffness table or any strip stage.
+  bool textured() const { return stiffness.rough || strips; }
+};
+
 struct TableStudy {
   TableStore store;
   study::StiffnessSection stiffness;
@@ -33,10 +49,14 @@ struct TableStudy {
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
   std::string psd_fingerprint;                    // 16 hex digits over the PSD's input files
   std::vector<std::string> profile_derived_keys;  // texture_io::profile_derived_surface_keys
-  // The [texture] and [surface] sections of a rough stiffness table's surface generator.
-  study::TextureSection texture;
-  study::SurfaceSection surface_generator;
+  // A rough stiffness table's surface generator ([texture], and [surface] with the measured
+  // profiles' values), made once here where a stiffness table is built; shared by the copies the
+  // table stages keep.
+  std::shared_ptr<const texture_io::SurfaceGenerator> surfaces;
 
+  // From parsed sections and the PSD they describe (texture_io::study_psd; unused unless
+  // sections.textured()); `s` gives the study's file, canonical text and input files only.
+  static TableStudy of(const TableSections& sections, const texture::Psd& psd, const study::KeyReader& s);
   static TableStudy parse(const study::KeyReader& s);
 };
 

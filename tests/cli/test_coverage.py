@@ -13,6 +13,8 @@ Measured when this was written, with this file's seeds (K_ref = 1000 unless said
   seed002-rig-1ms (K = 25, issue 13's case)      0.865 / 0.964       0.632 / 0.965   (not run here; "after"
                                                  re-measured with the issue 15 roughness, 74 s)
   small pipe (K = 16, K_ref = 480)               0.800 / 0.922       0.798 / 0.947
+  seed001-beam-r, 4-surface table (K = 25)       -     / 0.958       -     / 0.951
+  seed002-rig-1ms, blocked force = solver        -     / 0.962       -     / 0.953   (0.7 % loss of contact)
 "Before" is the Welch / bin-count dof (Satterthwaite-capped for the pipe) this replaced. All runs
 are Philox-keyed, so each figure is reproducible bit for bit."""
 import h5py
@@ -67,13 +69,19 @@ def coverage(tmp_path, study, K, M, K_ref, sets=()):
     # to build). Every study seed shares the table ([stiffness] table_seed): the intervals are
     # conditional on it, and so is this check (its own sampling error: kernels/spectral D-28).
     ("seed001-beam-r.ini", 25, 20, 1000, ["stiffness.realisations=4", "stiffness.table_dir={tmp}/tables"]),
-], ids=["random-oscillator", "ball-on-beam-loss-of-contact", "rolling-pipe", "table-law-loss-of-contact"])
-def test_nominal_95_percent_intervals_hold_the_large_k_mean_in_90_to_98_percent(tmp_path, study, K, M, K_ref, sets):
+    # The seed 002 rig on its own route: the linearised law's blocked force from the contact solver
+    # along strips of the texture (a solver table, built once, about 35 s CPU), shared by every study
+    # seed as above.
+    ("seed002-rig-1ms.ini", 25, 20, 1000, ["contact.blocked_force=solver", "stiffness.table_dir={tmp}/tables"]),
+], ids=["random-oscillator", "ball-on-beam-loss-of-contact", "rolling-pipe", "table-law-loss-of-contact",
+        "solver-table"])
+def test_nominal_95_percent_intervals_hold_the_large_k_mean_in_90_to_98_percent(request, tmp_path, study, K, M, K_ref,
+                                                                                sets):
     (tmp_path / "tables").mkdir()  # a table study's cache, outside the source tree
     sets = [s.format(tmp=tmp_path) for s in sets]
     held_bins, held_bands, ref = coverage(tmp_path, study, K, M, K_ref, sets)
     print(f"{study}: K = {K}, M = {M}, K_ref = {K_ref}: bins {held_bins:.3f}, bands {held_bands:.3f}")
-    if "loss" in ref:
+    if "loss-of-contact" in request.node.callspec.id:
         assert ref["loss"] > 0.2, "the ball-on-beam case must lose contact"
     assert 0.90 <= held_bins <= 0.98
     assert 0.90 <= held_bands <= 0.98

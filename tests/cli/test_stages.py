@@ -1,5 +1,6 @@
 """Stages are objects: `rollspec plan` prints the same inspection `rollspec run` acts on. A table a
 run builds shows as cached in the next plan, and the next run reuses it, for every table stage."""
+import re
 import shutil
 
 import h5py
@@ -43,6 +44,13 @@ def test_a_table_built_by_a_run_is_cached_in_the_next_plan(tmp_path, study, stag
     first = run([command, s, *args, *extra, *out])
     assert first.returncode == 0, first.stderr
     assert "built " in first.stderr + first.stdout
+    # Not a terminal (a log): a build's progress, once shown (the stiffness realisations always, the path
+    # table's solves after 2 s), ends in one final line with its count and the time it took.
+    label = {"stiffness_table": "stiffness realisations", "path_table": "path table solves"}.get(stage)
+    lines = [line for line in first.stderr.splitlines() if label and line.startswith(label + ": ")]
+    if stage == "stiffness_table" or lines:
+        assert lines and re.search(r": \d+/\d+ .* took ", lines[-1]), first.stderr
+        assert sum(" took " in line for line in lines) == 1, first.stderr
     again = run(["plan", s, *args])
     status, reason = stage_status(again.stdout, stage)
     assert status == "cached", again.stdout

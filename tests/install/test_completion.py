@@ -169,3 +169,9 @@ def test_set_completes_the_values_of_a_choice_key():
     assert complete("rollspec", "run", "--set", "spectrum.window", "=", "") == ["hann", "rectangular"]
     assert complete("rollspec", "plan", "--set", "study.scene", "=", "rolling-") == ["rolling-beam", "rolling-pipe"]
     assert complete("rollspec", "run", "--set", "study.seed", "=", "") == []  # a number: nothing offered
+
+
+def test_compare_and_fit_complete_measured_position():
+    """The sensor nearest a place is one option of both commands that choose a result's row."""
+    for command in ("compare", "fit"):
+        assert complete("rollspec", command, "--measured-p") == ["--measured-position"]

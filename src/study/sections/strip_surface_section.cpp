@@ -2,26 +2,27 @@
 
 #include <stdexcept>
 
-#include "src/study/key_reader.hpp"
-#include "src/texture/texture_keys.hpp"
-
 namespace rollspec::study {
 
-StripSurfaceSection StripSurfaceSection::parse(const KeyReader& s) {
+StripSurfaceSection StripSurfaceSection::of(const SurfaceSection& surface, const TextureSection& texture) {
   StripSurfaceSection t;
-  t.spacing_set = s.is_set("surface.spacing");
-  t.ny_set = s.is_set("surface.ny");
-  t.spacing = s.real("surface.spacing");
-  t.anisotropy = s.real("surface.anisotropy");
-  t.nx = s.integer("surface.nx");
-  t.ny = s.integer("surface.ny");
-  t.self_affine = s.text("texture.source") == "self-affine";
-  t.rolloff_wavelength = s.real("texture.rolloff_wavelength");
-  t.ny_origin = {s.where("surface.ny")};
-  t.spacing_origin = {s.where("surface.spacing")};
-  for (const auto& k : texture_io::surface_keys()) t.surface_texts_[k.key] = s.text(k.full_name());
-  for (const auto& k : texture_io::psd_keys()) t.texture_texts.emplace_back(k.key, s.text(k.full_name()));
+  t.spacing_set = surface.spacing_set;
+  t.ny_set = surface.ny_set;
+  t.spacing = surface.spacing;
+  t.anisotropy = surface.anisotropy;
+  t.nx = surface.nx;
+  t.ny = surface.ny;
+  t.self_affine = texture.source == "self-affine";
+  t.rolloff_wavelength = texture.rolloff_wavelength;
+  t.ny_origin = surface.ny_origin;
+  t.spacing_origin = surface.spacing_origin;
+  t.surface_texts_ = surface.texts;
+  t.texture_texts = texture.texts;
   return t;
+}
+
+StripSurfaceSection StripSurfaceSection::parse(const KeyReader& s) {
+  return of(SurfaceSection::parse(s), TextureSection::parse(s));
 }
 
 const std::string& StripSurfaceSection::text(const std::string& key) const {

@@ -2,13 +2,15 @@
 // The [surface] and [texture] keys a strip stage's grid derives from (stiffness/blocked_force_geometry,
 // path_table): the cell and the width where the study sets them, the anisotropy, and the self-affine
 // roll-off; and the canonical texts of those keys, which the cached tables' input texts (their
-// hashes) repeat. The keys themselves are the shared [surface] / [texture] tables (texture/texture_keys).
+// hashes) repeat. Made from the parsed SurfaceSection and TextureSection: those keys are read there only.
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 
 namespace rollspec::study {
 
@@ -24,6 +26,7 @@ struct StripSurfaceSection {
   // [texture] keys in table order with their canonical value texts.
   std::vector<std::pair<std::string, std::string>> texture_texts;
 
+  static StripSurfaceSection of(const SurfaceSection& surface, const TextureSection& texture);
   static StripSurfaceSection parse(const KeyReader& s);
   // The canonical value text of [surface] `key` (as the resolved study writes it).
   const std::string& text(const std::string& key) const;

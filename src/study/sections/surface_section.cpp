@@ -57,6 +57,9 @@ SurfaceSection SurfaceSection::parse(const KeyReader& s) {
   t.nx_origin = {s.where("surface.nx")};
   t.ny_origin = {s.where("surface.ny")};
   t.spacing_origin = {s.where("surface.spacing")};
+  t.spacing_set = s.is_set("surface.spacing");
+  t.ny_set = s.is_set("surface.ny");
+  for (const auto& k : keys()) t.texts[k.key] = s.text(k.full_name());
   return t;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // [surface]: grid and method of isotropic surfaces (spectral or seed), read once. Scenes without
 // [surface] parse to present = false; count exists in the texture scene only (0 elsewhere).
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,11 @@ struct SurfaceSection {
   // The seed-method keys at their documented default (not set by the study or --set), which take
   // the measured profiles' values with [texture] source = profiles.
   bool sigma_default = true, correlation_x_default = true, correlation_y_default = true;
+  bool spacing_set = false, ny_set = false;  // set by the study or --set (strip grids derive them otherwise)
   KeyOrigin nx_origin, ny_origin, spacing_origin;
+  // The canonical value texts of the keys() (as the resolved study writes them), for the cached
+  // tables' input texts (their hashes).
+  std::map<std::string, std::string> texts;
 
   static std::vector<KeySpec> keys();
   static std::vector<KeySpec> count_keys();  // [surface] count (texture scene)

@@ -66,6 +66,7 @@ TextureSection TextureSection::parse(const KeyReader& s) {
   t.long_wavelength_origin = {s.where("texture.long_wavelength")};
   t.short_wavelength_origin = {s.where("texture.short_wavelength")};
   t.rms_origin = {s.where("texture.rms")};
+  for (const auto& k : keys()) t.texts.emplace_back(k.key, s.text(k.full_name()));
   return t;
 }
 

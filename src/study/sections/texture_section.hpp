@@ -3,6 +3,7 @@
 // ISO 3095), its amplitudes and the extension beyond a table's band, read once. Scenes without
 // [texture] parse to present = false.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "src/study/key_spec.hpp"
@@ -24,6 +25,8 @@ struct TextureSection {
   std::string rms_kind, road_class, amplitudes;
   KeyOrigin source_origin, table_extension_origin, profiles_origin, long_wavelength_origin, short_wavelength_origin,
       rms_origin;
+  // The keys() in table order with their canonical value texts, for the cached tables' input texts.
+  std::vector<std::pair<std::string, std::string>> texts;
 
   static std::vector<KeySpec> keys();
   static TextureSection parse(const KeyReader& s);
