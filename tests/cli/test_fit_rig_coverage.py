@@ -3,7 +3,8 @@
 level (texture.rms) or beam loss factor (beam.loss_factor) made with other seeds, each fitted for that
 key; the nominal 95 % profile intervals must hold the truth about 95 % of the time.
 
-Budget: 20 experiments per key (about 40 fits of ~30 short runs). Asserted per key: at least 16 of 20
+Budget: 20 experiments per key, 40 fits of ~32 runs, about 20 s each: about 7 min on 2 idle cores (over
+the 3 min asked; fewer experiments would assert nothing useful). Asserted per key: at least 16 of 20
 hold the truth, which a calibrated 95 % fit meets with probability 0.9974 (P[X <= 15] = 0.0026), both
 keys together with probability 0.995; a fit covering 80 % meets it with probability 0.63, so this
 catches gross under-coverage only. The fuller experiment is bench/engine/bench_fit_coverage.py
