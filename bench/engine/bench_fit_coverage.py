@@ -1,12 +1,17 @@
 #!/usr/bin/python3
 """Coverage of `rollspec fit`'s 95 % profile-likelihood intervals (kernels/spectral D-27).
 
-Each experiment makes a synthetic measurement with rollspec itself (the random oscillator at a known
-force.level, another seed, M realisations, its sensor-mean PSD written as CSV) and fits force.level
-(and, with --two, oscillator.damping_ratio) from it. Prints the fraction of intervals that hold the
-truth, its binomial standard error, the mean estimate, wall time and evaluations per fit.
+Each experiment makes a synthetic measurement with rollspec itself (the case's study at known key
+values, another seed, M realisations, its sensor-mean PSD written as CSV) and fits the case's keys
+from it. Prints the fraction of intervals that hold the truth, its binomial standard error, the mean
+estimate, wall time and evaluations per fit. Cases:
+  oscillator      the random oscillator's force.level (4 s records, bands 20 .. 200 Hz)
+  oscillator-two  force.level and oscillator.damping_ratio together
+  rig-rms         the seed 002 rig (studies/seed002-rig-1ms.ini, half its roll): the roughness level texture.rms
+  rig-loss        the seed 002 rig: the beam's loss factor beam.loss_factor
 
-    /usr/bin/python3 bench/engine/bench_fit_coverage.py [--experiments 100] [--jobs 2] [--two]
+    /usr/bin/python3 bench/engine/bench_fit_coverage.py [--case oscillator] [--experiments 100] [--jobs 2]
+        [--log FILE]   (each fit's JSON appended as it ends; --summarise FILE prints the figures of a log)
 """
 import argparse
 import concurrent.futures
@@ -23,32 +28,49 @@ import h5py
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
-STUDY = ROOT / "studies" / "random-oscillator.ini"
-# A fast scene: 4 s records, the bands 20 .. 200 Hz around the 50 Hz resonance.
+OSCILLATOR = ROOT / "studies" / "random-oscillator.ini"
+RIG = ROOT / "studies" / "seed002-rig-1ms.ini"
+# The oscillator fast: 4 s records, the bands 20 .. 200 Hz around the 50 Hz resonance.
 FAST = ["signal.duration=4", "signal.sample_rate=1024", "spectrum.segment=2048", "spectrum.band_min=20",
         "spectrum.band_max=200"]
-TRUTH = {"force.level": 2.0, "oscillator.damping_ratio": 0.05}
-RANGES = {"force.level": "0.1:10:log", "oscillator.damping_ratio": "0.01:0.2:log"}
+# The rig with half its roll (0.18 m, to halve the cost of a run), its bands 89 .. 3548 Hz (16 bands,
+# modes 2 and 5; K = 30 >= 16 + 4).
+RIG_SETS = ["ball.end=0.2"]
+RIG_BANDS = ["--fmin", "85", "--fmax", "3600"]
+CASES = {
+    "oscillator": dict(study=OSCILLATOR, sets=FAST, bands=[], truth={"force.level": 2.0},
+                       ranges={"force.level": "0.1:10:log"}, records=16, realisations=40),
+    "oscillator-two": dict(study=OSCILLATOR, sets=FAST, bands=[],
+                           truth={"force.level": 2.0, "oscillator.damping_ratio": 0.05},
+                           ranges={"force.level": "0.1:10:log", "oscillator.damping_ratio": "0.01:0.2:log"},
+                           records=16, realisations=40),
+    "rig-rms": dict(study=RIG, sets=RIG_SETS, bands=RIG_BANDS, truth={"texture.rms": 0.123e-6},
+                    ranges={"texture.rms": "0.03e-6:0.5e-6:log"}, records=25, realisations=30),
+    "rig-loss": dict(study=RIG, sets=RIG_SETS, bands=RIG_BANDS, truth={"beam.loss_factor": 0.01},
+                     ranges={"beam.loss_factor": "0.002:0.05:log"}, records=25, realisations=30),
+}
 
 
 def sets(pairs):
     return [a for kv in pairs for a in ("--set", kv)]
 
 
-def experiment(binary, seed, keys, records, realisations, workdir):
+def experiment(binary, seed, case, records, realisations, workdir, model_seed=None):
     d = Path(workdir) / f"e{seed}"
     d.mkdir()
-    truth = [f"{k}={TRUTH[k]}" for k in keys]
-    subprocess.run([binary, "run", STUDY, "--out", d / "m.h5", "--quiet",
-                    *sets(FAST + truth + [f"study.realisations={records}", f"study.seed={seed}"])],
+    truth = [f"{k}={v}" for k, v in case["truth"].items()]
+    subprocess.run([binary, "run", case["study"], "--out", d / "m.h5", "--quiet",
+                    *sets(case["sets"] + truth + [f"study.realisations={records}", f"study.seed={seed}"])],
                    check=True, capture_output=True)
     with h5py.File(d / "m.h5") as f:
         freq, psd = f["/psd/frequency"][1:], f["/psd/mean"][-1, 1:]
     np.savetxt(d / "m.csv", np.c_[freq, psd], delimiter=",", header="frequency_hz,psd", comments="", fmt="%.17g")
     start = time.time()
-    out = subprocess.run([binary, "fit", STUDY, d / "m.csv", "--measured-averages", str(records), "--format", "json",
-                          *[a for k in keys for a in ("--vary", f"{k}={RANGES[k]}")],
-                          *sets(FAST + [f"study.realisations={realisations}"])],
+    out = subprocess.run([binary, "fit", case["study"], d / "m.csv", "--measured-averages", str(records),
+                          "--format", "json", *case["bands"],
+                          *[a for k, r in case["ranges"].items() for a in ("--vary", f"{k}={r}")],
+                          *sets(case["sets"] + [f"study.realisations={realisations}"]
+                                + ([f"study.seed={model_seed}"] if model_seed else []))],
                          capture_output=True, text=True)
     if out.returncode != 0:
         raise RuntimeError(f"fit of seed {seed} failed ({out.returncode}): {out.stderr}")
@@ -58,27 +80,58 @@ def experiment(binary, seed, keys, records, realisations, workdir):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--binary", default=os.environ.get("ROLLSPEC_BIN", str(ROOT / "build/werror/rollspec")))
+    ap.add_argument("--case", choices=sorted(CASES), default="oscillator")
     ap.add_argument("--experiments", type=int, default=100)
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--records", type=int, default=16, help="M: realisations averaged into a measurement")
-    ap.add_argument("--realisations", type=int, default=40, help="K: realisations per fit evaluation")
-    ap.add_argument("--two", action="store_true", help="also fit oscillator.damping_ratio")
+    ap.add_argument("--records", type=int, help="M: realisations averaged into a measurement (default: the case's)")
+    ap.add_argument("--realisations", type=int, help="K: realisations per fit evaluation (default: the case's)")
+    ap.add_argument("--two", action="store_true", help="the same as --case oscillator-two")
+    ap.add_argument("--model-seeds", action="store_true",
+                    help="each fit's runs with a seed of their own (default: the study's, the same in every fit)")
+    ap.add_argument("--log", help="append each experiment's fit (JSON, one line) here as it ends")
+    ap.add_argument("--summarise", metavar="LOG", help="print the figures of a --log (an interrupted bench too)")
     a = ap.parse_args()
-    keys = ["force.level"] + (["oscillator.damping_ratio"] if a.two else [])
+    name = "oscillator-two" if a.two else a.case
+    case = CASES[name]
+    records, realisations = a.records or case["records"], a.realisations or case["realisations"]
+    if a.summarise:
+        runs = [(json.loads(line), None) for line in Path(a.summarise).read_text().splitlines() if line.strip()]
+        return summarise(name, case, records, realisations, runs, a.jobs)
+
+    def logged(seed, work):
+        out = experiment(a.binary, seed, case, records, realisations, work, 50000 + seed if a.model_seeds else None)
+        if a.log:
+            with open(a.log, "a") as f:
+                f.write(json.dumps(out[0] | {"seed": seed, "wall": out[1]}) + "\n")
+        return out
+
     with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        runs = list(pool.map(lambda s: experiment(a.binary, 1000 + s, keys, a.records, a.realisations, work),
-                             range(a.experiments)))
+        runs = list(pool.map(lambda s: logged(1000 + s, work), range(a.experiments)))
+    return summarise(name, case, records, realisations, runs, a.jobs)
+
+
+def summarise(name, case, records, realisations, runs, jobs):
     n = len(runs)
-    for k in keys:
+    runs = [(r, t if t is not None else r.get("wall", float("nan"))) for r, t in runs]
+    print(f"case {name}: M = {records}, K = {realisations}, {n} experiments")
+    for k, truth in case["truth"].items():
         est = np.array([r["parameters"][k]["estimate"] for r, _ in runs])
-        held = sum(r["parameters"][k]["interval"][0] <= TRUTH[k] <= r["parameters"][k]["interval"][1] for r, _ in runs)
+        held = sum(r["parameters"][k]["interval"][0] <= truth <= r["parameters"][k]["interval"][1] for r, _ in runs)
+        below = sum(r["parameters"][k]["interval"][1] < truth for r, _ in runs)
         frac = held / n
-        print(f"{k}: truth {TRUTH[k]}: intervals holding it {held}/{n} = {frac:.3f} "
-              f"(binomial s.e. at 0.95: {math.sqrt(0.95 * 0.05 / n):.3f}); "
-              f"estimate mean {est.mean():.4g}, spread {est.std(ddof=1):.3g}")
+        print(f"{k}: truth {truth:.4g}: intervals holding it {held}/{n} = {frac:.3f} "
+              f"(binomial s.e. at 0.95: {math.sqrt(0.95 * 0.05 / n):.3f}; {below} wholly below it); "
+              f"estimate mean {est.mean():.4g}, spread {est.std(ddof=1):.3g}, "
+              f"median log half-width {np.median([math.log(r['parameters'][k]['interval'][1] / r['parameters'][k]['interval'][0]) / 2 for r, _ in runs]):.3g}")
+        # The intervals' own sigma (half-width / 1.96, in ln) against the estimates' scatter (ln): a ratio
+        # above 1 means intervals wider than the scatter they should describe (over-coverage).
+        sig = np.median([math.log(r["parameters"][k]["interval"][1] / r["parameters"][k]["interval"][0]) / 3.92
+                         for r, _ in runs])
+        print(f"  interval sigma / scatter of ln estimate: {sig / np.log(est).std(ddof=1):.2f}")
     pv = np.array([r["p_value"] for r, _ in runs if r["p_value"] is not None])
-    print(f"goodness of fit: {np.mean(pv < 0.05):.3f} of {len(pv)} fits rejected at 0.05")
-    print(f"per fit: wall {np.mean([t for _, t in runs]):.2f} s (jobs {a.jobs}), "
+    print(f"goodness of fit: {np.mean(pv < 0.05):.3f} of {len(pv)} fits rejected at 0.05; median p {np.median(pv):.2f} "
+          f"(0.5 if the law is calibrated)")
+    print(f"per fit: wall {np.mean([t for _, t in runs]):.2f} s (jobs {jobs}), "
           f"evaluations {np.mean([r['evaluations'] for r, _ in runs]):.1f}")
     return 0
 

@@ -165,4 +165,20 @@ std::vector<double> inverse_correlation(const std::vector<double>& h, std::size_
   return corr;
 }
 
+double fisher_combined_p(const std::vector<double>& p) {
+  if (p.empty()) return 1.0;
+  double half = 0.0;  // x / 2 = -sum ln p_i
+  for (const double v : p) {
+    if (!(v > 0.0)) return 0.0;
+    half -= std::log(std::min(v, 1.0));
+  }
+  // P(chi2_2k >= x) = exp(-x/2) sum_{i<k} (x/2)^i / i!
+  double term = std::exp(-half), sum = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    sum += term;
+    term *= half / static_cast<double>(i + 1);
+  }
+  return std::min(sum, 1.0);
+}
+
 }  // namespace rollspec::spectral

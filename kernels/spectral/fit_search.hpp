@@ -44,4 +44,8 @@ std::vector<double> box_hessian(const BoxObjective& f, const std::vector<double>
 // empty when it is not positive definite.
 std::vector<double> inverse_correlation(const std::vector<double>& h, std::size_t n);
 
+// Fisher's combination of k independent tests' p-values: P(chi2_2k >= -2 sum ln p_i), in closed form
+// (the chi2 survival function of even degrees of freedom, a Poisson sum). 1 for k = 0; 0 if a p is 0.
+double fisher_combined_p(const std::vector<double>& p);
+
 }  // namespace rollspec::spectral

@@ -6,16 +6,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "kernels/spectral/fit_search.hpp"
 #include "src/cli/commands.hpp"
+#include "src/cli/fit_journal.hpp"
 #include "src/cli/fit_model.hpp"
 #include "src/cli/fit_report.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/temp_files.hpp"
 
 namespace rollspec::cli {
 
@@ -36,8 +39,10 @@ struct TempDir {
       throw cannot_create("cannot create a temporary directory under " +
                           std::filesystem::temp_directory_path().string() + " (set TMPDIR)");
     path = pattern;
+    io::register_temp_dir(path);  // an interrupt (which ends the process without unwinding) removes it too
   }
   ~TempDir() {
+    io::unregister_temp_dir(path);
     std::error_code ec;
     std::filesystem::remove_all(path, ec);
   }
@@ -59,30 +64,77 @@ double profile_value(FitModel& model, std::size_t n, std::size_t j, double t, st
   return m.value;
 }
 
+// The measurements and their operating points: MEASUREMENT / --measurement FILE (repeatable, in order),
+// each paired with the --at of the same rank; --measured-averages once for all or once per measurement.
+std::vector<FitPoint> fit_points(const std::vector<std::string>& files, const std::vector<std::string>& ats,
+                                 const std::vector<double>& averages, const FitInputs& in, std::string& column) {
+  if (files.empty()) throw usage_error("no measurement; allowed: MEASUREMENT.csv or --measurement FILE --at KEYS");
+  if (!(ats.empty() && files.size() == 1) && ats.size() != files.size())
+    throw usage_error(std::to_string(files.size()) + " measurements and " + std::to_string(ats.size()) +
+                      " --at; allowed: one --at per measurement, in the same order (none for a single measurement)");
+  if (averages.size() != 1 && averages.size() != files.size())
+    throw usage_error("--measured-averages given " + std::to_string(averages.size()) + " times for " +
+                      std::to_string(files.size()) + " measurements; allowed: once for all, or once per measurement");
+  std::vector<FitPoint> points;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    FitPoint p;
+    p.path = files[i];
+    p.records = averages[averages.size() == 1 ? 0 : i];
+    if (!(p.records >= 1.0 && std::isfinite(p.records)))
+      throw usage_error("--measured-averages " + number_text(p.records) +
+                        ": allowed: a finite count >= 1 of independent records");
+    if (!ats.empty()) p.at = ats[i], p.sets = parse_at(ats[i]);
+    for (const auto& kv : p.sets) {
+      const std::string key = kv.substr(0, kv.find('='));
+      for (const auto& v : in.vary)
+        if (key == v.key)
+          throw usage_error("--at " + clip(p.at) + ": " + key + " is varied by --vary; allowed: one of the two");
+    }
+    for (std::size_t j = 0; j < i; ++j)
+      if (points[j].at == p.at && points[j].path == p.path)
+        throw usage_error("--measurement " + clip(p.path) + " given twice at the same point");
+    std::string col = column;
+    p.measurement = read_measurement(p.path, col, -1, "fit");
+    if (i + 1 == files.size()) column = col;
+    points.push_back(std::move(p));
+  }
+  return points;
+}
+
 }  // namespace
 
 const char* const kFitUsage =
     "usage: rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] [--vary ...] --measured-averages M\n"
+    "       rollspec fit STUDY.ini --measurement M1.csv --at section.key=value[,...] --measurement M2.csv --at ...\n"
+    "                    --vary ... --measured-averages M [--measured-averages M2 ...]\n"
     "                    [--set section.key=value ...] [--sensor NAME|K | --measured-position X]\n"
-    "                    [--column NAME] [--fmin HZ] [--fmax HZ] [--format text|json]\n"
+    "                    [--column NAME] [--fmin HZ] [--fmax HZ] [--journal FILE] [--format text|json]\n"
     "\n"
     "Estimates the 1 to 3 study keys named by --vary (each searched in [lo, hi], `log`: on a log scale) from\n"
     "a measured PSD (as `rollspec compare` reads it) that averages M independent records: the values that\n"
     "maximise the likelihood of the measured third-octave band levels under compare's prediction law\n"
-    "(kernels/spectral D-27). Every evaluation runs the study with its own seed (common random numbers).\n"
+    "(kernels/spectral D-27). Several measurements, each taken at its operating point (--at: the keys set\n"
+    "in its runs only, e.g. ball.speed=3), are fitted jointly: the varied keys are shared and ln L is the\n"
+    "sum over the points. Every evaluation runs the study with its own seed (common random numbers).\n"
     "Prints each key's estimate and 95 % profile-likelihood interval, the keys' correlation (from the\n"
-    "Hessian of ln L), the combined test of the best fit (D-26) and the number of study runs. A key the\n"
-    "measurement cannot identify (its likelihood flat over its range) is refused, named.";
+    "Hessian of ln L), the combined test of the best fit (D-26; several points: each point's and Fisher's\n"
+    "combination of them) and the number of study runs. A key the measurements cannot identify (its\n"
+    "likelihood flat over its range) is refused, named. --journal FILE records every evaluation: a fit\n"
+    "interrupted and run again with the same --journal reruns none it finished (a journal of another\n"
+    "study, measurement, option or build is refused).";
 
 int fit_command(const Args& args) {
   po::options_description opts("options");
-  std::string study, measurement, format = "text", sensor, column;
-  std::vector<std::string> vary_specs, sets;
-  double fmin = 0.0, fmax = INFINITY, records = 0.0, measured_position = NAN;
+  std::string study, format = "text", sensor, column, journal_path;
+  std::vector<std::string> vary_specs, sets, files, ats;
+  std::vector<double> averages;
+  double fmin = 0.0, fmax = INFINITY, measured_position = NAN;
   opts.add_options()("study", po::value(&study)->required(), "study (INI)")(
-      "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
+      "measurement", po::value(&files), "measured PSD (CSV); repeatable, each with its --at")(
+      "at", po::value(&ats), "section.key=value[,...]: the operating point of the measurement of the same rank")(
       "vary", po::value(&vary_specs)->required(), "section.key=lo:hi[:log], 1 to 3 times")(
-      "measured-averages", po::value(&records)->required(), "independent records averaged into the measurement")(
+      "measured-averages", po::value(&averages)->required(),
+      "independent records averaged into the measurement (once, or once per measurement)")(
       "set", po::value(&sets), "section.key=value for every run")(
       "sensor", po::value(&sensor),
       "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
@@ -91,6 +143,7 @@ int fit_command(const Args& args) {
       "column", po::value(&column), "PSD column of the measurement CSV")("fmin", po::value(&fmin)->default_value(0.0),
                                                                          "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
+      "journal", po::value(&journal_path), "record evaluations here; reuse those of an interrupted identical fit")(
       "format", po::value(&format)->default_value("text"), "text or json");
   po::positional_options_description pos;
   pos.add("study", 1).add("measurement", 1);
@@ -102,9 +155,6 @@ int fit_command(const Args& args) {
   if (!(fmax > fmin))
     throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) +
                       " Hz)");
-  if (!(records >= 1.0 && std::isfinite(records)))
-    throw usage_error("--measured-averages " + number_text(records) +
-                      ": allowed: a finite count >= 1 of independent records");
   FitInputs in;
   in.sensor = io::sensor_choice(
       sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
@@ -120,18 +170,19 @@ int fit_command(const Args& args) {
       if (s.rfind(v.key + "=", 0) == 0)
         throw usage_error("--set " + clip(s) + ": " + v.key + " is varied by --vary; allowed: one of the two");
   if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
-  in.study = study, in.measurement_path = measurement, in.sets = sets;
-  in.records = records, in.fmin = fmin, in.fmax = fmax;
-  in.measurement = read_measurement(measurement, column, -1, "fit");
+  in.study = study, in.sets = sets, in.fmin = fmin, in.fmax = fmax;
+  in.points = fit_points(files, ats, averages, in, column);
 
   const TempDir temp;
-  FitModel model(in, temp.path);
+  std::unique_ptr<FitJournal> journal;
+  if (!journal_path.empty()) journal = std::make_unique<FitJournal>(journal_path, fit_journal_key(in, column));
+  FitModel model(in, temp.path, journal.get());
   const std::size_t n = in.vary.size();
   const spectral::BoxObjective f = [&](const std::vector<double>& u) { return model.negative_log_likelihood(u); };
   const spectral::BoxMinimum best =
       spectral::box_minimum(f, std::vector<double>(n, 0.5), 0.25, 1e-4, 150 * static_cast<int>(n));
   if (!std::isfinite(best.value))
-    throw data_error(measurement + ": the study has no power in a compared band anywhere the search went");
+    throw data_error(in.points[0].path + ": the study has no power in a compared band anywhere the search went");
   FitReport report;
   int extra = 0;
   for (std::size_t j = 0; j < n; ++j) {
@@ -152,12 +203,15 @@ int fit_command(const Args& args) {
     report.parameters.push_back({v.key, v.value(best.x[j]), v.value(lo), v.value(hi), lo == 0.0, hi == 1.0});
   }
   report.correlation = spectral::inverse_correlation(spectral::box_hessian(f, best.x, 0.02, &extra), n);
-  report.test = model.test_at(best.x);
+  const std::vector<CombinedTest> tests = model.tests_at(best.x);
+  for (std::size_t i = 0; i < in.points.size(); ++i)
+    report.points.push_back({in.points[i].path, in.points[i].at, tests[i], model.bands(i), in.points[i].records});
+  combine_point_tests(report);
   report.log_likelihood = -best.value;
   report.evaluations = model.runs();
+  report.reused = model.reused();
   report.bands = model.bands();
   report.realisations = model.realisations();
-  report.records = records;
   std::fputs((format == "json" ? fit_json(report) : fit_text(report)).c_str(), stdout);
   return 0;
 }

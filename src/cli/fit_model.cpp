@@ -9,6 +9,7 @@
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/cli/commands.hpp"
+#include "src/cli/fit_journal.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
@@ -56,12 +57,43 @@ VaryRange parse_vary(const std::string& spec) {
   return r;
 }
 
-FitModel::FitModel(const FitInputs& in, std::string temp_dir) : in_(in), temp_dir_(std::move(temp_dir)) {}
+std::vector<std::string> parse_at(const std::string& at) {
+  std::vector<std::string> sets;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = at.find(',', start);
+    const std::string kv = at.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto eq = kv.find('=');
+    const auto dot = kv.find('.');
+    if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 >= eq || eq + 1 == kv.size())
+      throw usage_error("--at " + clip(at) + ": '" + clip(kv) +
+                        "' is not section.key=value; allowed: section.key=value[,section.key=value ...], e.g. "
+                        "ball.speed=3");
+    sets.push_back(kv);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return sets;
+}
 
-io::BandLevels FitModel::run_at(const std::vector<double>& u) {
+FitModel::FitModel(const FitInputs& in, std::string temp_dir, FitJournal* journal)
+    : in_(in),
+      temp_dir_(std::move(temp_dir)),
+      journal_(journal),
+      band_(in.points.size()),
+      measured_db_(in.points.size()) {}
+
+std::size_t FitModel::bands() const {
+  std::size_t n = 0;
+  for (const auto& b : band_) n += b.size();
+  return n;
+}
+
+io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u) {
   const std::string out = temp_dir_ + "/run-" + std::to_string(runs_) + ".h5";
   Args args{in_.study, "--out", out, "--quiet"};
   for (const auto& s : in_.sets) args.insert(args.end(), {"--set", s});
+  for (const auto& s : in_.points[point].sets) args.insert(args.end(), {"--set", s});
   for (std::size_t i = 0; i < in_.vary.size(); ++i) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.17g", in_.vary[i].value(u[i]));
@@ -76,30 +108,34 @@ io::BandLevels FitModel::run_at(const std::vector<double>& u) {
     b = io::read_band_levels(r, in_.sensor);
   }
   std::filesystem::remove(out);
-  if (band_.empty() && !b.pick_note.empty()) std::fprintf(stderr, "rollspec fit: %s\n", b.pick_note.c_str());
-  if (band_.empty()) choose_bands(b);
+  if (band_[point].empty() && !b.pick_note.empty()) std::fprintf(stderr, "rollspec fit: %s\n", b.pick_note.c_str());
+  if (band_[point].empty()) choose_bands(point, b);
   return b;
 }
 
-// The bands inside [fmin, fmax] that the measurement covers with power, as compare takes them.
-void FitModel::choose_bands(const io::BandLevels& b) {
-  const Measurement& m = in_.measurement;
+// The bands inside [fmin, fmax] that the point's measurement covers with power, as compare takes them.
+void FitModel::choose_bands(std::size_t point, const io::BandLevels& b) {
+  const FitPoint& pt = in_.points[point];
+  const Measurement& m = pt.measurement;
+  auto& band = band_[point];
   for (std::size_t k = 0; k < b.level_db.size(); ++k) {
     if (b.lower[k] < in_.fmin || b.upper[k] > in_.fmax) continue;
     if (m.frequency.size() < 2 || m.frequency.front() > b.lower[k] || m.frequency.back() < b.upper[k]) continue;
     const double meas =
         spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
     if (!(meas > 0.0) || !std::isfinite(meas)) continue;
-    band_.push_back(k);
-    measured_db_.push_back(10.0 * std::log10(meas));
+    band.push_back(k);
+    measured_db_[point].push_back(10.0 * std::log10(meas));
   }
   realisations_ = b.realisations;
-  const std::size_t needed = band_.size() + spectral::kExtraRealisations;
-  if (band_.empty()) throw data_error(in_.measurement_path + ": covers none of the result's bands inside [fmin, fmax]");
+  const std::size_t needed = band.size() + spectral::kExtraRealisations;
+  const std::string at = pt.at.empty() ? "" : " (at " + pt.at + ")";
+  if (band.empty()) throw data_error(pt.path + ": covers none of the result's bands inside [fmin, fmax]" + at);
   if (b.log_covariance.empty())
     throw data_error(in_.study + ": its result has no /bands/log_level_covariance; fit needs it");
   if (b.realisations < needed)
-    throw config_error(in_.study + ": " + std::to_string(band_.size()) + " bands need K >= " + std::to_string(needed) +
+    throw config_error(in_.study + at + ": " + std::to_string(band.size()) +
+                       " bands need K >= " + std::to_string(needed) +
                        " realisations for the band covariance, the study runs " + std::to_string(b.realisations) +
                        "; raise study.realisations (--set) or choose fewer bands with --fmin/--fmax");
 }
@@ -107,21 +143,35 @@ void FitModel::choose_bands(const io::BandLevels& b) {
 double FitModel::negative_log_likelihood(const std::vector<double>& u) {
   const auto hit = cache_.find(u);
   if (hit != cache_.end()) return hit->second;
-  const io::BandLevels b = run_at(u);
-  const ChosenBands c = chosen_bands(b, band_, measured_db_);
-  double value = INFINITY;  // a point where the model has no power in a band: impossible
-  try {
-    value = -spectral::band_log_likelihood(c.y.data(), c.mean.data(), c.cov.data(), band_.size(), b.realisations,
-                                           in_.records);
-  } catch (const std::invalid_argument&) {
+  double value = 0.0;
+  if (journal_ && journal_->find(u, value)) {
+    ++reused_;
+    cache_.emplace(u, value);
+    return value;
+  }
+  for (std::size_t point = 0; point < in_.points.size(); ++point) {
+    const io::BandLevels b = run_at(point, u);
+    const ChosenBands c = chosen_bands(b, band_[point], measured_db_[point]);
+    try {
+      value -= spectral::band_log_likelihood(c.y.data(), c.mean.data(), c.cov.data(), band_[point].size(),
+                                             b.realisations, in_.points[point].records);
+    } catch (const std::invalid_argument&) {
+      value = INFINITY;  // a point where the model has no power in a band: impossible
+      break;
+    }
   }
   cache_.emplace(u, value);
+  if (journal_) journal_->record(u, value);
   return value;
 }
 
-CombinedTest FitModel::test_at(const std::vector<double>& u) {
-  const io::BandLevels b = run_at(u);
-  return combined_test(b, band_, measured_db_, in_.records, 0.05);
+std::vector<CombinedTest> FitModel::tests_at(const std::vector<double>& u) {
+  std::vector<CombinedTest> tests;
+  for (std::size_t point = 0; point < in_.points.size(); ++point) {
+    const io::BandLevels b = run_at(point, u);
+    tests.push_back(combined_test(b, band_[point], measured_db_[point], in_.points[point].records, 0.05));
+  }
+  return tests;
 }
 
 }  // namespace rollspec::cli

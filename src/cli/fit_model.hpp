@@ -1,8 +1,9 @@
 #pragma once
-// rollspec fit's model: the study run at a point of the parameters' box, its band levels read back,
-// and ln L of the measured band levels under the prediction-interval law (kernels/spectral D-27).
-// Every run keeps the study's seed, so realisation i draws the same numbers at every point (common
-// random numbers) and ln L is smooth in the parameters.
+// rollspec fit's model: the study run at a point of the parameters' box, at each operating point (its
+// --at keys set), its band levels read back, and ln L of each point's measured band levels under the
+// prediction-interval law (kernels/spectral D-27), summed over the points (independent measurements).
+// Every run keeps the study's seed, so realisation i draws the same numbers at every parameter value
+// (common random numbers) and ln L is smooth in the parameters.
 #include <cstddef>
 #include <map>
 #include <string>
@@ -26,38 +27,54 @@ struct VaryRange {
 // Refuses (exit 64) a malformed spec, lo >= hi, a non-finite end, or log with lo <= 0.
 VaryRange parse_vary(const std::string& spec);
 
+// One measurement and the operating point it was taken at (--at keys set in its runs only).
+struct FitPoint {
+  std::string path, at;           // at: "section.key=value,..." as given ("" for none)
+  std::vector<std::string> sets;  // at, split into --set values
+  Measurement measurement;
+  double records = 1.0;  // M
+};
+
+// Refuses (exit 64) an --at that is not section.key=value[,section.key=value ...].
+std::vector<std::string> parse_at(const std::string& at);
+
 struct FitInputs {
-  std::string study, measurement_path;
+  std::string study;
   io::SensorChoice sensor;
   std::vector<std::string> sets;  // --set passed on to every run
   std::vector<VaryRange> vary;
-  Measurement measurement;
-  double records = 1.0;  // M
+  std::vector<FitPoint> points;
   double fmin = 0.0, fmax = 0.0;
 };
 
+// Lookup of -ln L at parameter values already evaluated (a resumed fit's journal); null: none.
+class FitJournal;
+
 class FitModel {
  public:
-  FitModel(const FitInputs& in, std::string temp_dir);
-  // -ln L at u (cached: a point already run is not run again).
+  FitModel(const FitInputs& in, std::string temp_dir, FitJournal* journal = nullptr);
+  // -ln L at u, summed over the points (cached, and journalled: a value already known is not run again).
   double negative_log_likelihood(const std::vector<double>& u);
-  // D-26's combined test of the measurement against the run at u.
-  CombinedTest test_at(const std::vector<double>& u);
+  // D-26's combined test of each point's measurement against its run at u.
+  std::vector<CombinedTest> tests_at(const std::vector<double>& u);
   int runs() const { return runs_; }
-  std::size_t bands() const { return band_.size(); }
+  int reused() const { return reused_; }  // values taken from the journal
+  std::size_t bands() const;              // over all points
+  std::size_t bands(std::size_t point) const { return band_[point].size(); }
   std::uint64_t realisations() const { return realisations_; }
 
  private:
-  io::BandLevels run_at(const std::vector<double>& u);
-  void choose_bands(const io::BandLevels& b);
+  io::BandLevels run_at(std::size_t point, const std::vector<double>& u);
+  void choose_bands(std::size_t point, const io::BandLevels& b);
 
   const FitInputs& in_;
   std::string temp_dir_;
+  FitJournal* journal_;
   std::map<std::vector<double>, double> cache_;
-  std::vector<std::size_t> band_;    // indices of the compared bands in the result
-  std::vector<double> measured_db_;  // their measured levels
+  std::vector<std::vector<std::size_t>> band_;    // per point: indices of the compared bands in the result
+  std::vector<std::vector<double>> measured_db_;  // per point: their measured levels
   std::uint64_t realisations_ = 0;
-  int runs_ = 0;
+  int runs_ = 0, reused_ = 0;
 };
 
 }  // namespace rollspec::cli

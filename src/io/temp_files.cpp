@@ -20,6 +20,10 @@ std::set<std::string>& registry() {
   static std::set<std::string> r;
   return r;
 }
+std::set<std::string>& dir_registry() {
+  static std::set<std::string> r;
+  return r;
+}
 
 bool process_alive(long pid) {
   if (pid <= 0) return true;  // not a pid we wrote: treat as live, keep the file
@@ -39,10 +43,23 @@ void unregister_temp(const std::string& path) {
   registry().erase(path);
 }
 
+void register_temp_dir(const std::string& path) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  dir_registry().insert(path);
+}
+
+void unregister_temp_dir(const std::string& path) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  dir_registry().erase(path);
+}
+
 void remove_registered_temps() {
   std::lock_guard<std::mutex> lock(g_mutex);
   for (const auto& p : registry()) ::unlink(p.c_str());
   registry().clear();
+  std::error_code ec;
+  for (const auto& p : dir_registry()) fs::remove_all(p, ec);
+  dir_registry().clear();
 }
 
 int remove_stale_temps(const std::string& final_path) {

@@ -12,6 +12,9 @@ std::string temp_name(const std::string& final_path);
 
 void register_temp(const std::string& path);
 void unregister_temp(const std::string& path);
+// A temporary directory (a fit's run files), removed with everything in it on an interrupt.
+void register_temp_dir(const std::string& path);
+void unregister_temp_dir(const std::string& path);
 // Removes every registered temporary file. Async-signal-unsafe: called by the stop watchdog thread.
 void remove_registered_temps();
 

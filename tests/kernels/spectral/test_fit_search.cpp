@@ -97,3 +97,16 @@ TEST_CASE("fit likelihood: ln L of uncorrelated bands is the sum of the bands' G
   }
   CHECK(band_log_likelihood(y.data(), mean.data(), cov.data(), p, K, M) == doctest::Approx(expected).epsilon(1e-12));
 }
+
+TEST_CASE("fit search: Fisher's combination of p-values against chi-square tail values") {
+  // One test: its own p. Two tests of p = 0.05 each: x = -2 ln 0.0025 = 11.98, P(chi2_4 >= x) = 0.0174787.
+  CHECK(fisher_combined_p({0.3}) == doctest::Approx(0.3).epsilon(1e-14));
+  CHECK(fisher_combined_p({0.05, 0.05}) == doctest::Approx(0.0174787).epsilon(1e-5));
+  // Three: x = -2 ln(0.5 * 0.2 * 0.9) = 4.8159; P(chi2_6 >= x) = exp(-x/2)(1 + x/2 + (x/2)^2/2) = 0.567634.
+  const double h = -std::log(0.5 * 0.2 * 0.9);
+  CHECK(fisher_combined_p({0.5, 0.2, 0.9}) == doctest::Approx(std::exp(-h) * (1.0 + h + h * h / 2.0)).epsilon(1e-14));
+  CHECK(fisher_combined_p({0.5, 0.2, 0.9}) == doctest::Approx(0.567634).epsilon(1e-5));
+  CHECK(fisher_combined_p({1.0, 1.0}) == 1.0);
+  CHECK(fisher_combined_p({0.4, 0.0}) == 0.0);
+  CHECK(fisher_combined_p({}) == 1.0);
+}

@@ -1,0 +1,52 @@
+"""Calibration of `rollspec fit`'s intervals on a ball-on-beam scene (kernels/spectral D-27g), label
+`statistics`: the seed 002 rig with half its roll, synthetic measurements at the study's roughness
+level (texture.rms) or beam loss factor (beam.loss_factor) made with other seeds, each fitted for that
+key; the nominal 95 % profile intervals must hold the truth about 95 % of the time.
+
+Budget: 20 experiments per key, 40 fits of ~32 runs, about 20 s each: about 7 min on 2 idle cores (over
+the 3 min asked; fewer experiments would assert nothing useful). Asserted per key: at least 16 of 20
+hold the truth, which a calibrated 95 % fit meets with probability 0.9974 (P[X <= 15] = 0.0026), both
+keys together with probability 0.995; a fit covering 80 % meets it with probability 0.63, so this
+catches gross under-coverage only. The fuller experiment is bench/engine/bench_fit_coverage.py
+(--case rig-rms, rig-loss)."""
+import concurrent.futures
+import json
+
+import pytest
+
+from conftest import SOURCE, measurement_from, run
+from fit_experiment import sets
+
+RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
+# As bench_fit_coverage.py --case rig-rms / rig-loss --model-seeds (other seeds): each fit's runs with a
+# seed of their own, so the model's own noise varies between experiments as the measurement's does (with
+# the study's seed in every fit, all fits share one model error and coverage is conditional on it);
+# a 0.18 m roll, the 16 bands 89 .. 3548 Hz (modes 2 and 5), M = 25 as the rig, K = 30.
+SHORT = ["ball.end=0.2"]
+BANDS = ["--fmin", "85", "--fmax", "3600"]
+RECORDS, REALISATIONS, EXPERIMENTS = 25, 30, 20
+CASES = {"texture.rms": (0.123e-6, "0.03e-6:0.5e-6:log"), "beam.loss_factor": (0.01, "0.002:0.05:log")}
+
+
+def one(directory, key, seed):
+    truth, rng = CASES[key]
+    out = directory / f"m{seed}.h5"
+    r = run(["run", RIG, "--out", out, "--quiet",
+             *sets(SHORT + [f"{key}={truth}", f"study.realisations={RECORDS}", f"study.seed={seed}"])])
+    assert r.returncode == 0, r.stderr
+    csv = measurement_from(out, directory / f"m{seed}.csv")
+    r = run(["fit", RIG, csv, "--measured-averages", RECORDS, "--format", "json", "--vary", f"{key}={rng}", *BANDS,
+             *sets(SHORT + [f"study.realisations={REALISATIONS}", f"study.seed={50000 + seed}"])])
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)["parameters"][key]
+
+
+@pytest.mark.parametrize("key", sorted(CASES))
+def test_rig_intervals_hold_the_truth_at_their_nominal_rate(tmp_path, key):
+    truth = CASES[key][0]
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        fits = list(pool.map(lambda s: one(tmp_path, key, 6100 + s), range(EXPERIMENTS)))
+    held = sum(p["interval"][0] <= truth <= p["interval"][1] for p in fits)
+    below = sum(p["interval"][1] < truth for p in fits)
+    print(f"{key}: coverage {held}/{EXPERIMENTS} ({below} wholly below the truth)")
+    assert held >= 16, f"{key}: {held}/{EXPERIMENTS} intervals hold the truth, {below} wholly below it"
