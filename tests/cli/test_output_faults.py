@@ -59,6 +59,18 @@ count = 1
 SWEEP = "\n[sweep]\noscillator.natural_frequency = 30, 45\n"
 
 
+def fill_disk(d):
+    """Fill the file system of directory d to its last page (a file `filler` in d)."""
+    fd = os.open(d / "filler", os.O_WRONLY | os.O_CREAT)
+    try:
+        while os.write(fd, b"\0" * 4096) > 0:
+            pass
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
 def setup_inputs(d):
     """The inputs every recipe reads, written into d."""
     (d / "osc.ini").write_text(SMALL_OSCILLATOR.format(realisations=4, chunk=4, duration=2))
@@ -396,14 +408,7 @@ def test_full_disk_keeps_the_previous_output(tmp_path, small_disk, command):
     setup_inputs(small_disk)
     old = make_output(small_disk, command, "old.out")
     keep = old.read_bytes()
-    fd = os.open(small_disk / "filler", os.O_WRONLY | os.O_CREAT)
-    try:  # fill the disk to the last page
-        while os.write(fd, b"\0" * 4096) > 0:
-            pass
-    except OSError:
-        pass
-    finally:
-        os.close(fd)
+    fill_disk(small_disk)
     before = snapshot(small_disk)
     r = execute(small_disk, RECIPES[command][1], old)
     after = snapshot(small_disk)
@@ -496,14 +501,7 @@ def test_read_only_fit_temporary_directory(tmp_path, mounted, fit_measurement):
 def test_fit_on_a_full_disk_leaves_no_temporary_directory(tmp_path, mounted, fit_measurement):
     t = mounted(tmp_path / "t", "1m")
     (t / "keep.txt").write_bytes(USER_DATA)
-    fd = os.open(t / "filler", os.O_WRONLY | os.O_CREAT)
-    try:  # fill the disk to the last page
-        while os.write(fd, b"\0" * 4096) > 0:
-            pass
-    except OSError:
-        pass
-    finally:
-        os.close(fd)
+    fill_disk(t)
     before = snapshot(t)
     r = fit_in(t, fit_measurement)
     after = snapshot(t)
