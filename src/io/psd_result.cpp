@@ -40,6 +40,7 @@ void write_sensor_positions(Hdf5Writer& w, const std::string& group, const std::
   std::vector<double> p(rows, NAN);  // the sensor mean is at no one place
   std::copy_n(positions.begin(), std::min(rows, positions.size()), p.begin());
   w.write(group + "/sensor_position", {rows}, p.data(), "m", long_name);
+  w.attribute(group + "/sensor_position", "_FillValue", static_cast<double>(NAN));  // CF: NaN marks "no position"
   w.attach_scale(group + "/sensor_position", group + "/sensor", 0);
   w.attribute(group, "coordinates", std::string("sensor_position"));
 }

@@ -28,7 +28,10 @@ def finite_datasets(path):
         def check(name, obj):
             nonlocal count
             if isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f":
-                assert np.all(np.isfinite(obj[()])), f"{name}: not finite"
+                values = obj[()]
+                if np.all(np.isnan(obj.attrs.get("_FillValue", 0.0))):  # NaN is its declared missing value
+                    values = values[~np.isnan(values)]
+                assert np.all(np.isfinite(values)), f"{name}: not finite"
                 count += 1
         f.visititems(check)
     return count
@@ -42,6 +45,20 @@ def test_a_result_with_inf_or_nan_fails(tmp_path, bad):
         f["bands/ci_upper_db"] = np.array([1.0, bad, 3.0])
     with pytest.raises(AssertionError, match="bands/ci_upper_db: not finite"):
         finite_datasets(path)
+
+
+@pytest.mark.parametrize("bad,fails", [(np.nan, False), (np.inf, True)])
+def test_nan_passes_only_as_a_declared_fill_value(tmp_path, bad, fails):
+    path = tmp_path / "result.h5"
+    with h5py.File(path, "w") as f:
+        f["psd/frequency"] = np.arange(4.0)
+        f["psd/sensor_position"] = np.array([0.5, bad])
+        f["psd/sensor_position"].attrs["_FillValue"] = np.nan
+    if fails:
+        with pytest.raises(AssertionError, match="psd/sensor_position: not finite"):
+            finite_datasets(path)
+    else:
+        assert finite_datasets(path) == 2
 
 
 @pytest.mark.parametrize("name", STUDIES)
