@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -34,10 +35,19 @@ constexpr double kUnitTolerance = 1e-3;  // of the interval ends, in the unit bo
 struct TempDir {
   std::string path;
   TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "rollspec-fit-XXXXXX").string();
+    // $TMPDIR as POSIX reads it (unset or empty: /tmp), checked here: the library's lookup throws
+    // on a $TMPDIR that is not a directory, which would end in an internal error.
+    const char* env = std::getenv("TMPDIR");
+    const std::string base = env && *env ? env : "/tmp";
+    std::error_code ec;
+    if (!std::filesystem::is_directory(base, ec))
+      throw cannot_create("TMPDIR = " + base + " is not a directory (" +
+                          (std::filesystem::exists(std::filesystem::symlink_status(base, ec)) ? "another kind of file"
+                                                                                              : "it does not exist") +
+                          "); allowed: a writable directory for the fit's temporary results");
+    std::string pattern = (std::filesystem::path(base) / "rollspec-fit-XXXXXX").string();
     if (!::mkdtemp(pattern.data()))
-      throw cannot_create("cannot create a temporary directory under " +
-                          std::filesystem::temp_directory_path().string() + " (set TMPDIR)");
+      throw cannot_create("cannot create a temporary directory under " + base + " (set TMPDIR)");
     path = pattern;
     io::register_temp_dir(path);  // an interrupt (which ends the process without unwinding) removes it too
   }
@@ -99,6 +109,46 @@ std::vector<FitPoint> fit_points(const std::vector<std::string>& files, const st
     points.push_back(std::move(p));
   }
   return points;
+}
+
+// The search, the profile-likelihood intervals and the tests at the best fit (kernels/spectral D-27).
+FitReport fit_search(FitModel& model, const FitInputs& in) {
+  FitReport report;
+  const std::size_t n = in.vary.size();
+  const spectral::BoxObjective f = [&](const std::vector<double>& u) { return model.negative_log_likelihood(u); };
+  const spectral::BoxMinimum best =
+      spectral::box_minimum(f, std::vector<double>(n, 0.5), 0.25, 1e-4, 150 * static_cast<int>(n));
+  if (!std::isfinite(best.value))
+    throw data_error(in.points[0].path + ": the study has no power in a compared band anywhere the search went");
+  int extra = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<double> start;
+    for (std::size_t i = 0; i < n; ++i)
+      if (i != j) start.push_back(best.x[i]);
+    std::vector<double> others = start;
+    const auto profile = [&](double t) { return profile_value(model, n, j, t, others); };
+    const double lo = spectral::profile_end(profile, best.x[j], best.value, 0.0, kProfileRise, kUnitTolerance, &extra);
+    others = start;
+    const double hi = spectral::profile_end(profile, best.x[j], best.value, 1.0, kProfileRise, kUnitTolerance, &extra);
+    const VaryRange& v = in.vary[j];
+    if (lo == 0.0 && hi == 1.0)
+      throw data_error("--vary " + v.key + ": the measurement cannot identify " + v.key +
+                       ": its profile likelihood stays within " + number_text(kProfileRise) +
+                       " of the maximum over the whole range " + number_text(v.lo) + " .. " + number_text(v.hi) +
+                       " (a flat likelihood); fix it in the study, or fit it from bands where it matters");
+    report.parameters.push_back({v.key, v.value(best.x[j]), v.value(lo), v.value(hi), lo == 0.0, hi == 1.0});
+  }
+  report.correlation = spectral::inverse_correlation(spectral::box_hessian(f, best.x, 0.02, &extra), n);
+  const std::vector<CombinedTest> tests = model.tests_at(best.x);
+  for (std::size_t i = 0; i < in.points.size(); ++i)
+    report.points.push_back({in.points[i].path, in.points[i].at, tests[i], model.bands(i), in.points[i].records});
+  combine_point_tests(report);
+  report.log_likelihood = -best.value;
+  report.evaluations = model.runs();
+  report.reused = model.reused();
+  report.bands = model.bands();
+  report.realisations = model.realisations();
+  return report;
 }
 
 }  // namespace
@@ -177,41 +227,19 @@ int fit_command(const Args& args) {
   std::unique_ptr<FitJournal> journal;
   if (!journal_path.empty()) journal = std::make_unique<FitJournal>(journal_path, fit_journal_key(in, column));
   FitModel model(in, temp.path, journal.get());
-  const std::size_t n = in.vary.size();
-  const spectral::BoxObjective f = [&](const std::vector<double>& u) { return model.negative_log_likelihood(u); };
-  const spectral::BoxMinimum best =
-      spectral::box_minimum(f, std::vector<double>(n, 0.5), 0.25, 1e-4, 150 * static_cast<int>(n));
-  if (!std::isfinite(best.value))
-    throw data_error(in.points[0].path + ": the study has no power in a compared band anywhere the search went");
   FitReport report;
-  int extra = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    std::vector<double> start;
-    for (std::size_t i = 0; i < n; ++i)
-      if (i != j) start.push_back(best.x[i]);
-    std::vector<double> others = start;
-    const auto profile = [&](double t) { return profile_value(model, n, j, t, others); };
-    const double lo = spectral::profile_end(profile, best.x[j], best.value, 0.0, kProfileRise, kUnitTolerance, &extra);
-    others = start;
-    const double hi = spectral::profile_end(profile, best.x[j], best.value, 1.0, kProfileRise, kUnitTolerance, &extra);
-    const VaryRange& v = in.vary[j];
-    if (lo == 0.0 && hi == 1.0)
-      throw data_error("--vary " + v.key + ": the measurement cannot identify " + v.key +
-                       ": its profile likelihood stays within " + number_text(kProfileRise) +
-                       " of the maximum over the whole range " + number_text(v.lo) + " .. " + number_text(v.hi) +
-                       " (a flat likelihood); fix it in the study, or fit it from bands where it matters");
-    report.parameters.push_back({v.key, v.value(best.x[j]), v.value(lo), v.value(hi), lo == 0.0, hi == 1.0});
+  try {
+    report = fit_search(model, in);
+  } catch (const UserError& e) {
+    if (e.exit_code() != kExitInterrupted) throw;
+    // The ensemble's message names a checkpoint in the temporary directory, which is gone now.
+    throw UserError(kExitInterrupted,
+                    "interrupted after " + std::to_string(model.runs()) + " study runs; " +
+                        (journal_path.empty() ? "nothing was kept: give --journal FILE to keep the evaluations "
+                                                "of a fit that may be interrupted"
+                                              : "the finished evaluations are in " + journal_path +
+                                                    ": the same command with the same --journal goes on from them"));
   }
-  report.correlation = spectral::inverse_correlation(spectral::box_hessian(f, best.x, 0.02, &extra), n);
-  const std::vector<CombinedTest> tests = model.tests_at(best.x);
-  for (std::size_t i = 0; i < in.points.size(); ++i)
-    report.points.push_back({in.points[i].path, in.points[i].at, tests[i], model.bands(i), in.points[i].records});
-  combine_point_tests(report);
-  report.log_likelihood = -best.value;
-  report.evaluations = model.runs();
-  report.reused = model.reused();
-  report.bands = model.bands();
-  report.realisations = model.realisations();
   std::fputs((format == "json" ? fit_json(report) : fit_text(report)).c_str(), stdout);
   return 0;
 }

@@ -5,7 +5,7 @@ new command that writes a file fails `test_every_writing_command_is_covered` unt
 here. Each (command, output) meets each target below; the suite checks the exit code, a one-line
 message without "internal error", the user's data byte-identical, no temporary file left and no
 hang, and the last test prints the totals: tried / refused cleanly / accepted / destroyed /
-internal errors / hangs (and the known ones, marked xfail with their reason, apart).
+internal errors / hangs.
 
 Sweeps (`run --sweep`, a [sweep] study) meet every target too, and so does their work directory
 OUT.sweep; a sweep interrupted (SIGINT) or killed (SIGKILL) and resumed writes the uninterrupted
@@ -27,7 +27,7 @@ from conftest import BIN, SMALL_OSCILLATOR, SOURCE, assert_bitwise_equal
 USER_DATA = b"precious user data, not written by rollspec\n"
 TIMEOUT = 60
 TALLY = {"tried": 0, "refused cleanly": 0, "accepted": 0, "destroyed": 0, "internal errors": 0, "hangs": 0,
-         "resumed identically": 0, "known internal errors (xfail)": 0}
+         "resumed identically": 0}
 
 TEXTURE = """\
 [study]
@@ -216,8 +216,8 @@ TARGETS = {f.__name__[2:]: f for f in (t_user_file, t_other_kind, t_link_to_user
                                        t_read_only_directory)}
 
 
-def judge(r, expected, before, after, protected, known_bug=False):
-    """Counts and checks one case; `known_bug`: an xfail case, whose internal error is counted apart."""
+def judge(r, expected, before, after, protected):
+    """Counts and checks one case."""
     TALLY["tried"] += 1
     if r is None:
         TALLY["hangs"] += 1
@@ -226,7 +226,7 @@ def judge(r, expected, before, after, protected, known_bug=False):
     if lost:
         TALLY["destroyed"] += 1
     if "internal error" in r.stderr or r.returncode < 0:
-        TALLY["known internal errors (xfail)" if known_bug else "internal errors"] += 1
+        TALLY["internal errors"] += 1
     if r.returncode == 0:
         TALLY["accepted"] += 1
     elif r.returncode in expected and "error:" in r.stderr:
@@ -466,8 +466,6 @@ def fit_temps(tmpdir):
     return [n for n in os.listdir(tmpdir) if n.startswith("rollspec-fit")] if os.path.isdir(tmpdir) else []
 
 
-TEMP_BUG = pytest.mark.xfail(strict=True, reason="fit: an unusable $TMPDIR ends in an internal error "
-                             "(std::filesystem::temp_directory_path throws before fit's own refusal)")
 FIT_TARGETS = {  # name -> (builds $TMPDIR in d, expected exit codes)
     "user file": (lambda d: (d / "t").write_bytes(USER_DATA), {73}),
     "fifo": (lambda d: os.mkfifo(d / "t"), {73}),
@@ -475,18 +473,18 @@ FIT_TARGETS = {  # name -> (builds $TMPDIR in d, expected exit codes)
     "dangling link": (lambda d: (d / "t").symlink_to("nowhere"), {73}),
     "link to a user directory": (lambda d: (d / "t").symlink_to(user_directory(d / "mine")), {0}),
 }
-KNOWN_FIT_BUGS = {"user file", "fifo", "missing directory", "dangling link"}
 
 
-@pytest.mark.parametrize("target", [pytest.param(t, marks=TEMP_BUG) if t in KNOWN_FIT_BUGS else t
-                                    for t in sorted(FIT_TARGETS)])
+@pytest.mark.parametrize("target", sorted(FIT_TARGETS))
 def test_hostile_fit_temporary_directory(tmp_path, fit_measurement, target):
     build, expected = FIT_TARGETS[target]
     build(tmp_path)
     before = snapshot(tmp_path)
     r = fit_in(tmp_path / "t", fit_measurement)
     after = snapshot(tmp_path)
-    judge(r, expected, before, after, list(before), known_bug=target in KNOWN_FIT_BUGS)
+    judge(r, expected, before, after, list(before))
+    if expected == {73}:
+        assert "TMPDIR" in r.stderr, r.stderr
     assert not fit_temps(tmp_path / "t"), "temporary directory left"
 
 
@@ -540,8 +538,6 @@ def test_interrupted_fit_exits_cleanly_without_its_temporary_directory(tmp_path,
     assert not fit_temps(tmp_path), "temporary directory left"
 
 
-@pytest.mark.xfail(strict=True, reason="fit: the interruption message is run's: it names the checkpoint in the "
-                   "temporary directory fit has just removed and advises --resume, which fit does not take")
 def test_interrupted_fit_names_no_removed_file(tmp_path, fit_measurement):
     r, _ = interrupted_fit(tmp_path, fit_measurement)
     assert r is not None and r.returncode == 130, r and r.stderr
