@@ -111,6 +111,20 @@ std::vector<FitPoint> fit_points(const std::vector<std::string>& files, const st
   return points;
 }
 
+// The runs' own warnings (loss of contact, a band's heavy tail, a suspect key) gathered over the fit:
+// how many runs gave any, and those of the run at the estimate, once each.
+void say_run_warnings(const FitModel& model, const FitInputs& in) {
+  if (model.warned_runs() == 0) return;
+  bool at_estimate = false;
+  for (std::size_t i = 0; i < in.points.size(); ++i) at_estimate = at_estimate || !model.last_warnings(i).empty();
+  std::fprintf(stderr, "rollspec fit: %d of %d runs of the study warned; %s\n", model.warned_runs(), model.runs(),
+               at_estimate ? "the run at the estimate warned:" : "the run at the estimate did not");
+  for (std::size_t i = 0; i < in.points.size(); ++i)
+    for (const std::string& line : model.last_warnings(i))
+      std::fprintf(stderr, "  %s%s\n", in.points[i].at.empty() ? "" : ("(at " + in.points[i].at + ") ").c_str(),
+                   line.c_str());
+}
+
 // The search, the profile-likelihood intervals and the tests at the best fit (kernels/spectral D-27).
 FitReport fit_search(FitModel& model, const FitInputs& in) {
   FitReport report;
@@ -140,6 +154,7 @@ FitReport fit_search(FitModel& model, const FitInputs& in) {
   }
   report.correlation = spectral::inverse_correlation(spectral::box_hessian(f, best.x, 0.02, &extra), n);
   const std::vector<CombinedTest> tests = model.tests_at(best.x);
+  say_run_warnings(model, in);
   for (std::size_t i = 0; i < in.points.size(); ++i)
     report.points.push_back({in.points[i].path, in.points[i].at, tests[i], model.bands(i), in.points[i].records});
   combine_point_tests(report);

@@ -14,6 +14,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
+#include "src/io/run_warning.hpp"
 
 namespace rollspec::cli {
 
@@ -81,7 +82,8 @@ FitModel::FitModel(const FitInputs& in, std::string temp_dir, FitJournal* journa
       temp_dir_(std::move(temp_dir)),
       journal_(journal),
       band_(in.points.size()),
-      measured_db_(in.points.size()) {}
+      measured_db_(in.points.size()),
+      last_warnings_(in.points.size()) {}
 
 std::size_t FitModel::bands() const {
   std::size_t n = 0;
@@ -100,7 +102,12 @@ io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u)
     args.insert(args.end(), {"--set", in_.vary[i].key + "=" + buf});
   }
   ++runs_;
-  run_command(args);
+  {
+    const io::RunWarningCapture capture;  // said once, for the run at the estimate (fit_command)
+    run_command(args);
+    last_warnings_[point] = capture.lines();
+  }
+  if (!last_warnings_[point].empty()) ++warned_runs_;
   io::BandLevels b;
   {
     const io::Hdf5Reader r(out);

@@ -62,6 +62,9 @@ class FitModel {
   std::size_t bands() const;              // over all points
   std::size_t bands(std::size_t point) const { return band_[point].size(); }
   std::uint64_t realisations() const { return realisations_; }
+  // The warnings of the point's latest run (after tests_at(u): the run at u), and how many runs warned.
+  const std::vector<std::string>& last_warnings(std::size_t point) const { return last_warnings_[point]; }
+  int warned_runs() const { return warned_runs_; }
 
  private:
   io::BandLevels run_at(std::size_t point, const std::vector<double>& u);
@@ -71,10 +74,11 @@ class FitModel {
   std::string temp_dir_;
   FitJournal* journal_;
   std::map<std::vector<double>, double> cache_;
-  std::vector<std::vector<std::size_t>> band_;    // per point: indices of the compared bands in the result
-  std::vector<std::vector<double>> measured_db_;  // per point: their measured levels
+  std::vector<std::vector<std::size_t>> band_;           // per point: indices of the compared bands in the result
+  std::vector<std::vector<double>> measured_db_;         // per point: their measured levels
+  std::vector<std::vector<std::string>> last_warnings_;  // per point
   std::uint64_t realisations_ = 0;
-  int runs_ = 0, reused_ = 0;
+  int runs_ = 0, reused_ = 0, warned_runs_ = 0;
 };
 
 }  // namespace rollspec::cli

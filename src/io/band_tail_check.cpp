@@ -4,6 +4,7 @@
 
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/run_warning.hpp"
 
 namespace rollspec::io {
 
@@ -49,7 +50,7 @@ void write_band_tail_check(Hdf5Writer& w, const PsdEnsemble& e, const std::vecto
   const BandTailVerdict v = band_tail_verdict(e, bands);
   w.attribute("/bands", "tail_check", v.text);
   w.attribute("/bands", "tail_check_realisations_needed", static_cast<std::int64_t>(v.needed));
-  if (v.short_of) std::fprintf(stderr, "rollspec: warning: %s\n", v.text.c_str());
+  if (v.short_of) warn(v.text);
 }
 
 }  // namespace rollspec::io

@@ -27,6 +27,7 @@
 #include "src/stiffness/strip_equivalent_roughness.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/io/run_warning.hpp"
 
 namespace rollspec::scenes {
 
@@ -44,7 +45,7 @@ class BallOnBeam final : public EnsembleScene {
  public:
   explicit BallOnBeam(const BallOnBeamSections& s)
       : b_(read_ball_on_beam_settings(s)), contact_(contact_from_settings(b_)) {
-    for (const auto& w : b_.warnings) std::fprintf(stderr, "rollspec: warning: %s\n", w.c_str());
+    for (const auto& w : b_.warnings) io::warn(w);
     lines_ = texture_io::line_generator(b_.line_keys, b_.line_psd, b_.spacing, b_.line_samples);
     welch_ = std::make_unique<spectral::WelchPlan>(b_.welch);
     rows_ = std::make_unique<PsdRows>(numbered_sensors(b_.model.sensors.size()), b_.sensor_mean, welch_->frequencies(),

@@ -16,6 +16,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/scenes/ball_on_beam_plausibility.hpp"
+#include "src/io/run_warning.hpp"
 
 namespace rollspec::scenes {
 
@@ -49,7 +50,7 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.attribute("/contact", "law", b_.law_name);
   const std::string loss = loss_of_contact_warning(share, linearised());
   if (!loss.empty()) {  // printed even when quiet: the result's validity, not progress
-    std::fprintf(stderr, "rollspec: WARNING: %s\n", loss.c_str());
+    io::warn(loss, true);
     w.attribute("/contact", "loss_of_contact_warning", loss);
   }
   w.attribute("/contact", "static_compression", c_.static_compression);
