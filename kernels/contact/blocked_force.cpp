@@ -271,7 +271,11 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     const std::size_t stride = positions.size() / m;
     std::vector<double> subset;
     for (std::size_t k = 0; k < positions.size(); k += stride) subset.push_back(positions[k]);
-    PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, path_options);
+    // Its positions lie S steps apart, farther than a window: each starts cold anyway, so chunked
+    // paths cut the subset in four chunks (BF-6c: on the threads, the same bits on any count).
+    BlockedForceOptions sub_options = path_options;
+    if (sub_options.chunk_positions > 0) sub_options.chunk_positions = (subset.size() + 3) / 4;
+    PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, sub_options);
     const BlockedForcePath sub =
         search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance), path_options.max_paths, warm,
                store_count(subset.size()), d_hertz, d_hertz, path_options.cold_tolerance, total, path_options.on_path);

@@ -87,7 +87,8 @@
 // Chunks. With chunk_positions = m > 0 the path is cut into fixed chunks of m positions; each chunk
 // starts cold (or from BF-6') and warm-starts along itself by BF-6, the chunks run in parallel, one
 // solver per thread; the frozen-set CG starts from the previous path's rate (README Eq. 11a). The cut
-// depends on m alone, so the path has the same bits for any thread count.               (BF-6c)
+// depends on m alone, so the path has the same bits for any thread count. The pre-search's subset
+// (BF-4'), whose positions lie farther apart than a window, is cut in four chunks.         (BF-6c)
 //
 // Use in the dynamics (D-11): F_c = F0(t) + k0 (w1(ξ) − w2 + d0) + c0 (ẇ1 − ẇ2) with
 // F0(t) = F0(x = v t); the PSD of F0 along the path in cycles/m (sample rate 1/Δx) is mapped to

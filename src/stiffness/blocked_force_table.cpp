@@ -62,7 +62,7 @@ std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, dou
   std::ostringstream in;
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
-     << "\nchunk_positions = " << kChunkPositions
+     << "\nchunk_positions = " << kChunkPositions << "\nwarm_start = strip"
      << "\nload_tolerance = " << io::exact_text(strip_load_tolerance(ts.stiffness.solver)) << "\nstiffness_tolerance = "
      << io::exact_text(std::max(contact::SolverOptions{}.stiffness_tolerance, ts.stiffness.solver.tolerance)) << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
@@ -109,6 +109,9 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
     // saying how far its mean force is off the load.
     contact::BlockedForceOptions path_opts;
     path_opts.chunk_positions = kChunkPositions;
+    // BF-6 on a rough strip: the contact spots stay on their asperities (measured on the seed 002
+    // rig's cold path: 15.4 CG iterations per position against 19.4 with the field shifted with the ball).
+    path_opts.warm_start = contact::PathWarmStart::Strip;
     // BF-3 to the solves' own accuracy (as the filter's ER-1): the mean of forces each solved to the
     // solver tolerance cannot be placed on the load more closely; a tighter stop costs a whole path.
     path_opts.load_tolerance = strip_load_tolerance(opts);
