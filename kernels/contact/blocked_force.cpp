@@ -184,8 +184,8 @@ namespace {
 // the bracket while one side is unknown. Counts go to `total`; returns the last path, converged
 // only if |F̄ − W| ≤ tolerance · W.
 BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double load, double tolerance, int max_paths,
-                        bool warm, std::size_t store_count, double d_start, double step, BlockedForcePath& total,
-                        const std::function<void(const BlockedForcePath&, double)>& on_path) {
+                        bool warm, std::size_t store_count, double d_start, double step, double cold_tolerance,
+                        BlockedForcePath& total, const std::function<void(const BlockedForcePath&, double)>& on_path) {
   // BF-5 caps the approach: the search stays at or below d_cap.
   std::size_t limiting = 0;
   const double d_cap = runner.max_approach(&limiting);
@@ -193,16 +193,25 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
   double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
   PathFields previous, current;
   for (int paths = 0;;) {
+    // BF-4'': a cold path (no earlier fields to start from) only places the next Newton step.
+    const bool cold = paths == 0;
+    SolverOptions path_opt = opt;
+    if (cold && cold_tolerance > opt.tolerance) {
+      path_opt.tolerance = cold_tolerance;
+      path_opt.stiffness_tolerance = std::max(opt.stiffness_tolerance, cold_tolerance);
+    }
+    const bool exact = path_opt.tolerance == opt.tolerance;
     BlockedForcePath path =
-        runner.run(d, opt, paths > 0 && warm ? &previous : nullptr, warm ? &current : nullptr, store_count);
+        runner.run(d, path_opt, paths > 0 && warm ? &previous : nullptr, warm ? &current : nullptr, store_count);
     ++paths;
     std::swap(previous, current);
     accumulate(total, path);
-    const bool on_load = std::fabs(path.mean_force - load) <= tolerance * load;
+    const bool on_load = exact && std::fabs(path.mean_force - load) <= tolerance * load;
     if (on_path) on_path(path, std::fabs(path.mean_force - load) / load);
-    if (path.mean_force < load)
+    // An inexact path's mean force may sit on the wrong side of W near the root: no bracket from it.
+    if (exact && path.mean_force < load)
       lo = d;
-    else
+    else if (exact)
       hi = d;
     const bool exhausted =
         std::isfinite(lo) && std::isfinite(hi) && hi - lo <= 1e-15 * std::max(std::fabs(hi), std::fabs(lo));
@@ -222,7 +231,7 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
       }
     }
     if (next > d_cap) {
-      if (d >= d_cap) {
+      if (d >= d_cap && exact) {
         std::ostringstream os;
         os.precision(9);
         os << "the load " << load << " N exceeds the mean force " << path.mean_force
@@ -262,16 +271,21 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     const std::size_t stride = positions.size() / m;
     std::vector<double> subset;
     for (std::size_t k = 0; k < positions.size(); k += stride) subset.push_back(positions[k]);
-    PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, path_options);
+    // Its positions lie S steps apart, farther than a window: each starts cold anyway, so chunked
+    // paths cut the subset in four chunks (BF-6c: on the threads, the same bits on any count).
+    BlockedForceOptions sub_options = path_options;
+    if (sub_options.chunk_positions > 0) sub_options.chunk_positions = (subset.size() + 3) / 4;
+    PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, sub_options);
     const BlockedForcePath sub =
         search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance), path_options.max_paths, warm,
-               store_count(subset.size()), d_hertz, d_hertz, total, path_options.on_path);
+               store_count(subset.size()), d_hertz, d_hertz, path_options.cold_tolerance, total, path_options.on_path);
     total.presearch_paths = total.paths;
     total.paths = 0;
     if (sub.converged) d_start = sub.approach;
   }
-  BlockedForcePath path = search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
-                                 store_count(positions.size()), d_start, d_hertz, total, path_options.on_path);
+  BlockedForcePath path =
+      search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
+             store_count(positions.size()), d_start, d_hertz, path_options.cold_tolerance, total, path_options.on_path);
   path.paths = total.paths;
   path.presearch_paths = total.presearch_paths;
   path.solves = total.solves;

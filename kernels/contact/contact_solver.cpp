@@ -305,7 +305,9 @@ void ContactSolver::frozen_stiffness(const std::vector<double>& p, const SolverO
     op_.apply(dp_.data(), r_.data());
   else
     apply_around(dp_.data(), elastic_, r_.data());
-  const EdgeCorrection edge = edge_correction(op_.grid(), op_.e_star(), res.approach, p, dp_, gap_, r_, hardness);
+  const EdgeCorrection edge =
+      full_outputs ? edge_correction_reference(op_.grid(), op_.e_star(), res.approach, p, dp_, gap_, r_, hardness)
+                   : edge_correction(op_.grid(), op_.e_star(), res.approach, p, dp_, gap_, r_, hardness);
   res.edge_correction = edge.delta_k;
   res.stiffness = res.frozen_stiffness + edge.delta_k;
 }

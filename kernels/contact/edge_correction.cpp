@@ -28,9 +28,9 @@ double cell_fraction_inside(double t, double nx, double ny, double dx, double dy
   return t >= 0.0 ? f : 1.0 - f;
 }
 
-EdgeCorrection edge_correction(const Grid& grid, double e_star, double w, const std::vector<double>& p,
-                               const std::vector<double>& dp, const std::vector<double>& gap,
-                               const std::vector<double>& rate_u, double hardness) {
+EdgeCorrection edge_correction_reference(const Grid& grid, double e_star, double w, const std::vector<double>& p,
+                                         const std::vector<double>& dp, const std::vector<double>& gap,
+                                         const std::vector<double>& rate_u, double hardness) {
   const std::size_t nx = grid.nx, ny = grid.ny, n = grid.size();
   const double dx = grid.dx, dy = grid.dy, h = std::sqrt(dx * dy);
   EdgeCorrection out;
@@ -108,6 +108,111 @@ EdgeCorrection edge_correction(const Grid& grid, double e_star, double w, const 
       for (long yy = std::max(0L, y0 - radius); yy <= std::min(static_cast<long>(ny) - 1, y0 + radius); ++yy)
         for (long xx = std::max(0L, x0 - radius); xx <= std::min(static_cast<long>(nx) - 1, x0 + radius); ++xx) {
           const double v = m[static_cast<std::size_t>(yy) * nx + static_cast<std::size_t>(xx)];
+          if (std::isfinite(v)) {
+            msum += v;
+            ++count;
+          }
+        }
+      if (count == 0) continue;
+      ++out.used_cells;
+      sum += (msum / count) * (theta - chi);
+    }
+  out.delta_k = grid.cell_area() * sum;
+  return out;
+}
+
+// The same sums on the box of the elastic cells E grown by two cells (every cell the reference
+// reads for a band cell: band cells lie within one cell of E, their gradients read one more; m is
+// finite on E only). Cells in the same order, so the same bits as the reference.
+EdgeCorrection edge_correction(const Grid& grid, double e_star, double w, const std::vector<double>& p,
+                               const std::vector<double>& dp, const std::vector<double>& gap,
+                               const std::vector<double>& rate_u, double hardness) {
+  const std::size_t nx = grid.nx, ny = grid.ny;
+  const double dx = grid.dx, dy = grid.dy, h = std::sqrt(dx * dy);
+  EdgeCorrection out;
+  std::size_t ex0 = nx, ex1 = 0, ey0 = ny, ey1 = 0;  // box of E
+  for (std::size_t iy = 0; iy < ny; ++iy)
+    for (std::size_t ix = 0; ix < nx; ++ix) {
+      const double v = p[iy * nx + ix];
+      if (v > 0.0 && v < hardness) {
+        ex0 = std::min(ex0, ix), ex1 = std::max(ex1, ix);
+        ey0 = std::min(ey0, iy), ey1 = std::max(ey1, iy);
+      }
+    }
+  if (ex0 > ex1) return out;  // no elastic cell: no band
+  // R: E's box grown by two cells (clamped); local arrays over R, x-fastest.
+  const std::size_t rx0 = ex0 >= 2 ? ex0 - 2 : 0, ry0 = ey0 >= 2 ? ey0 - 2 : 0;
+  const std::size_t rx1 = std::min(nx - 1, ex1 + 2), ry1 = std::min(ny - 1, ey1 + 2);
+  const std::size_t rw = rx1 - rx0 + 1, rh = ry1 - ry0 + 1, rn = rw * rh;
+  const auto local = [&](std::size_t ix, std::size_t iy) { return (iy - ry0) * rw + (ix - rx0); };
+  std::vector<unsigned char> state(rn);
+  std::vector<double> t_lin(rn, kNaN), t_edge(rn, kNaN), gx(rn, kNaN), gy(rn, kNaN), m(rn, kNaN);
+  for (std::size_t iy = ry0; iy <= ry1; ++iy)
+    for (std::size_t ix = rx0; ix <= rx1; ++ix) {
+      const std::size_t i = iy * nx + ix, l = local(ix, iy);
+      state[l] = p[i] <= 0.0 ? 0 : (p[i] < hardness ? 1 : 2);
+      if (state[l] == 1 && dp[i] > 0.0) {
+        t_lin[l] = w - p[i] / dp[i];
+        t_edge[l] = w - p[i] / (2.0 * dp[i]);
+      } else if (state[l] == 0 && rate_u[i] < 1.0) {
+        t_lin[l] = w + gap[i] / (1.0 - rate_u[i]);
+        t_edge[l] = w + 1.5 * gap[i] / (1.0 - rate_u[i]);
+      }
+    }
+  // Gradients on E's box grown by one cell (their neighbours lie in R or off the grid).
+  const std::size_t gx0 = ex0 >= 1 ? ex0 - 1 : 0, gy0 = ey0 >= 1 ? ey0 - 1 : 0;
+  const std::size_t gx1 = std::min(nx - 1, ex1 + 1), gy1 = std::min(ny - 1, ey1 + 1);
+  auto derivative = [&](std::size_t l, std::size_t j, std::size_t len, std::size_t stride, double step) {
+    const bool lo = j > 0 && std::isfinite(t_edge[l - stride]);
+    const bool hi = j + 1 < len && std::isfinite(t_edge[l + stride]);
+    if (lo && hi) return (t_edge[l + stride] - t_edge[l - stride]) / (2.0 * step);
+    if (hi) return (t_edge[l + stride] - t_edge[l]) / step;
+    if (lo) return (t_edge[l] - t_edge[l - stride]) / step;
+    return kNaN;
+  };
+  for (std::size_t iy = gy0; iy <= gy1; ++iy)
+    for (std::size_t ix = gx0; ix <= gx1; ++ix) {
+      const std::size_t l = local(ix, iy);
+      if (!std::isfinite(t_edge[l])) continue;
+      gx[l] = derivative(l, ix, nx, 1, dx);
+      gy[l] = derivative(l, iy, ny, rw, dy);
+      // README Eq. 15 on the elastic cells (all in E's box).
+      if (state[l] != 1) continue;
+      const double g = std::hypot(gx[l], gy[l]);
+      if (!(g > 0.0) || !std::isfinite(g)) continue;
+      const double d = (w - t_edge[l]) / g;
+      const std::size_t i = iy * nx + ix;
+      if (d >= 1.5 * h && d <= 3.5 * h) m[l] = 2.0 * kPi * d * dp[i] * dp[i] / e_star;
+    }
+  const long radius = 4;  // as the reference
+  double sum = 0.0;
+  for (std::size_t iy = gy0; iy <= gy1; ++iy)
+    for (std::size_t ix = gx0; ix <= gx1; ++ix) {
+      const std::size_t l = local(ix, iy);
+      if (state[l] == 2) continue;
+      const unsigned char other = state[l] == 1 ? 0 : 1;
+      const bool band = (ix > 0 && state[l - 1] == other) || (ix + 1 < nx && state[l + 1] == other) ||
+                        (iy > 0 && state[l - rw] == other) || (iy + 1 < ny && state[l + rw] == other);
+      if (!band) continue;
+      ++out.band_cells;
+      const double g = std::hypot(gx[l], gy[l]);
+      if (!std::isfinite(t_lin[l]) || !(g > 0.0) || !std::isfinite(g)) continue;
+      const double delta = (w - t_lin[l]) / g;
+      const double theta = cell_fraction_inside(delta, -gx[l] / g, -gy[l] / g, dx, dy);
+      const double chi = state[l] == 1 ? 1.0 : 0.0;
+      if (theta == chi) {
+        ++out.used_cells;
+        continue;
+      }
+      double msum = 0.0;
+      int count = 0;
+      // m is finite on E's box only: the reference's window clipped to it, in the same order.
+      const long x0 = static_cast<long>(ix), y0 = static_cast<long>(iy);
+      const long xa = std::max(static_cast<long>(ex0), x0 - radius), xb = std::min(static_cast<long>(ex1), x0 + radius);
+      const long ya = std::max(static_cast<long>(ey0), y0 - radius), yb = std::min(static_cast<long>(ey1), y0 + radius);
+      for (long yy = ya; yy <= yb; ++yy)
+        for (long xx = xa; xx <= xb; ++xx) {
+          const double v = m[local(static_cast<std::size_t>(xx), static_cast<std::size_t>(yy))];
           if (std::isfinite(v)) {
             msum += v;
             ++count;

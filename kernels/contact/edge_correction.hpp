@@ -23,10 +23,15 @@ struct EdgeCorrection {
 
 // p: contact pressure (Pa); dp: frozen-set rate dp/dw (README Eq. 11, Pa/m); gap: g = s − w + C p
 // (m); rate_u: C dp (dimensionless, the displacement rate on every cell); hardness H (may be +inf).
-// All arrays on `grid`, x-fastest. Plain loops (no FFT): this is its own reference.
+// All arrays on `grid`, x-fastest. Plain loops (no FFT), on the box of the elastic cells grown by
+// two cells (all that the sums read); `edge_correction_reference` runs them on the whole grid (the
+// same bits).
 EdgeCorrection edge_correction(const Grid& grid, double e_star, double approach, const std::vector<double>& p,
                                const std::vector<double>& dp, const std::vector<double>& gap,
                                const std::vector<double>& rate_u, double hardness);
+EdgeCorrection edge_correction_reference(const Grid& grid, double e_star, double approach, const std::vector<double>& p,
+                                         const std::vector<double>& dp, const std::vector<double>& gap,
+                                         const std::vector<double>& rate_u, double hardness);
 
 // Fraction of a dx × dy cell on the inner side of a straight edge with outward unit normal
 // (nx, ny) that lies at signed distance t beyond the cell centre (t > 0: centre inside). README Eq. 14.

@@ -10,7 +10,9 @@ namespace rollspec::contact {
 // Eq. 3) instead of 2n: the same sums, other last bits. 5: displacement control's products on A and
 // E on the box that holds them (Eq. 3c), the frozen-set CG from a given rate (Eq. 11a), chunked paths.
 // 6: the outputs' gap and u' = C dp on the box around A and E (Eq. 3d): other last bits of the
-// plastic volume and the stiffness's sub-cell edge.
-inline constexpr int kernel_version = 6;
+// plastic volume and the stiffness's sub-cell edge. 7: the blocked-force load search's cold path
+// solved loosely (BF-4''), its stop at the solves' accuracy and its stiffness CG to the solver
+// tolerance: another d0 within the solver tolerance.
+inline constexpr int kernel_version = 7;
 
 }  // namespace rollspec::contact

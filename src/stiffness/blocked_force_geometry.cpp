@@ -106,14 +106,14 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
   // Cost (CPU seconds), measured on studies/seed002-rig-1ms.ini (window 128, 1024 positions, kernel
-  // version 5): the load search's first full path 19 ms per position (31 CG + 24.5 stiffness
-  // iterations, products on the box of the contact cells, contact README Eq. 3c), the second 9 ms,
-  // the last two 3 ms each (started from the previous path's fields and rates, BF-6', Eq. 11a), the
-  // pre-search 1.4 s: 36 s in all, i.e. about 1.6 first-path positions plus 70, at 21 ms each
+  // version 7, a shared machine): the load search's first full path, solved to 1e-4 (BF-4''),
+  // 10 ms per position (15.4 + 8.4 CG + stiffness iterations), the second 8–9 ms (13.5 + 14.7), the
+  // last 1.7 ms (started from the previous path's fields and rates, BF-6', Eq. 11a), the pre-search
+  // 1.1 s: 22 s in all, i.e. about one first-path position per position plus 50, at 21 ms each
   // (scaled with the window's (2 window)^2 product). The chunks of 64 positions (BF-6c) share the threads.
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
   const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
-  g.estimated_seconds = per_solve * (1.6 * static_cast<double>(g.positions) + 70.0);
+  g.estimated_seconds = per_solve * (1.0 * static_cast<double>(g.positions) + 50.0);
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
 }

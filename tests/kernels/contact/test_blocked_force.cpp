@@ -422,3 +422,31 @@ TEST_CASE("chunked path (BF-6c): the same bits on 1 and 2 threads, equal to the 
                                            "force difference to the unchunked path "
                                         << max_relative_difference(one.force, ref.force));
 }
+
+TEST_CASE("loose cold path (BF-4''): the root of the exact search, never itself the result") {
+  const Hertz h;
+  const StripCase c = strip_case(h, 12.0, 1.9, 36, 10);
+  const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
+  const auto x = cell_positions(c.strip, -15, 2, 16);
+  SolverOptions opt;
+  opt.hardness = 0.5 * h.p0();
+  BlockedForceOptions loose, exact;
+  exact.cold_tolerance = 0.0;  // every path to the solver's tolerances (the search before BF-4'')
+  const auto at_load = [&](double load, const BlockedForceOptions& o) {
+    ContactSolver solver(c.window, h.e_star);
+    return blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, load, opt, o);
+  };
+  const double w = 1.3 * 3.0;  // N, off the Hertz start: several paths
+  const BlockedForcePath a = at_load(w, loose), b = at_load(w, exact);
+  REQUIRE(a.converged);
+  REQUIRE(b.converged);
+  CHECK(a.paths >= 2);  // the loose first path only places the Newton step
+  CHECK(std::fabs(a.mean_force / w - 1.0) < 1e-8);
+  CHECK(a.approach == doctest::Approx(b.approach).epsilon(1e-8));
+  CHECK(max_relative_difference(a.force, b.force) < 1e-8);
+  CHECK(max_relative_difference(a.stiffness, b.stiffness) < 1e-8);
+  CHECK(a.iterations + a.stiffness_iterations < b.iterations + b.stiffness_iterations);
+  MESSAGE("loose cold path: " << a.paths << " paths, " << a.iterations << " + " << a.stiffness_iterations
+                              << " CG + stiffness iterations; exact: " << b.paths << " paths, " << b.iterations << " + "
+                              << b.stiffness_iterations);
+}

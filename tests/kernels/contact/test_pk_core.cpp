@@ -14,6 +14,8 @@
 
 #include "hertz_fixture.hpp"
 #include "kernels/contact/contact_solver.hpp"
+#include "kernels/contact/edge_correction.hpp"
+#include "kernels/contact/half_space_operator.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "rough_fixture.hpp"
 
@@ -208,4 +210,46 @@ TEST_CASE("PK core, imposed total load (solve_at_force): bit for bit the referen
         compare_at_force(fast, ref, gap, h.force(), c_fast, c_ref, few, h.approach);
         compare_at_force(fast, ref, gap, 0.0, c_fast, c_ref, opt, nan);
       }
+}
+
+TEST_CASE("sub-cell edge on the box around E: bit for bit the whole-grid reference") {
+  // edge_correction reads only E's box grown by two cells (README Eq. 13–15); the reference loops
+  // over every cell. Same cells in the same order: same δk bits and the same band counts.
+  const Hertz h;
+  for (const bool rough : {false, true})
+    for (const bool plastic : {false, true}) {
+      CAPTURE(rough);
+      CAPTURE(plastic);
+      const Grid grid = h.grid(rough ? 10.0 : 12.0, 1.5);
+      const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid) : smooth_gap(h, grid);
+      SolverOptions opt;
+      if (plastic) opt.hardness = 0.5 * h.p0();
+      ContactSolver solver(grid, h.e_star);
+      HalfSpaceOperator op(grid, h.e_star);
+      std::vector<double> p;
+      for (const double f : {1.0, 0.37, 1.3}) {
+        CAPTURE(f);
+        const double w = f * h.approach;
+        const ContactResult r = solver.solve(gap, w, p, opt);
+        REQUIRE(r.stiffness_converged);
+        const std::vector<double> dp = solver.pressure_rate();
+        std::vector<double> u(grid.size()), g(grid.size()), rate_u(grid.size());
+        op.apply(p.data(), u.data());
+        for (std::size_t i = 0; i < grid.size(); ++i) g[i] = gap[i] - w + u[i];
+        op.apply(dp.data(), rate_u.data());
+        const EdgeCorrection a = edge_correction(grid, h.e_star, w, p, dp, g, rate_u, opt.hardness);
+        const EdgeCorrection b = edge_correction_reference(grid, h.e_star, w, p, dp, g, rate_u, opt.hardness);
+        CHECK(b.band_cells > 0);
+        CHECK(a.band_cells == b.band_cells);
+        CHECK(a.used_cells == b.used_cells);
+        CHECK(same_bits(a.delta_k, b.delta_k));
+      }
+    }
+  // No elastic cell: no band, δk = 0 on both.
+  const Grid grid = h.grid(12.0, 1.5);
+  const std::vector<double> zero(grid.size(), 0.0), one(grid.size(), 1.0);
+  const EdgeCorrection a = edge_correction(grid, h.e_star, h.approach, zero, zero, one, zero, 1.0);
+  const EdgeCorrection b = edge_correction_reference(grid, h.e_star, h.approach, zero, zero, one, zero, 1.0);
+  CHECK(a.band_cells == b.band_cells);
+  CHECK(same_bits(a.delta_k, b.delta_k));
 }
