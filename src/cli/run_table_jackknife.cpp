@@ -12,8 +12,8 @@ namespace rollspec::cli {
 
 void run_table_jackknife(const study::Study& s, const StudyReload& reload, scenes::EnsembleScene& scene,
                          const ensemble::EnsembleConfig& cfg, bool quiet, bool rebuild) {
+  if (!study::StiffnessSection::asks_table_jackknife(s) || cfg.only >= 0) return;
   const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
-  if (!stiffness.table_jackknife || cfg.only >= 0) return;
   const long long n = stiffness.realisations;
   std::vector<io::PsdEnsemble> subs;
   for (long long i = 0; i < n; ++i) {

@@ -54,10 +54,10 @@ class BallOnBeam final : public EnsembleScene {
       workspaces_.push_back(std::make_unique<Workspace>(b_.welch.segment));
     add_pipeline_stages(s.tables);
     table_error_.table = random_tables();
-    if (b_.stiffness.table_jackknife && !(uses_table() && b_.stiffness.rough))
+    if (b_.stiffness.table_jackknife && !(uses_table() && b_.stiffness.rough && b_.stiffness.realisations >= 2))
       b_.stiffness.table_error_origin.refuse(
-          "jackknife needs a rough stiffness table ([contact] law = table or literal, [stiffness] surface = rough); "
-          "allowed here: none");
+          "jackknife needs a rough stiffness table of at least 2 surfaces ([contact] law = table or literal, "
+          "[stiffness] surface = rough, realisations >= 2); allowed here: none");
     if (b_.stiffness.table_jackknife) tables_ = s.tables;
   }
 

@@ -87,6 +87,10 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   return t;
 }
 
+bool StiffnessSection::asks_table_jackknife(const KeyReader& s) {
+  return s.has("stiffness.table_error") && s.text("stiffness.table_error") == "jackknife";
+}
+
 const std::string& StiffnessSection::text(const std::string& key) const {
   const auto it = texts_.find(key);
   if (it == texts_.end()) throw std::logic_error("not a [stiffness] key: " + key);

@@ -32,6 +32,8 @@ struct StiffnessSection {
 
   static std::vector<KeySpec> keys();
   static StiffnessSection parse(const KeyReader& s);
+  // Whether the study asks for table_error = jackknife (false for scenes without a [stiffness] section).
+  static bool asks_table_jackknife(const KeyReader& s);
   // The canonical value text of [stiffness] `key` (as the resolved study writes it).
   const std::string& text(const std::string& key) const;
   // The section of leave-one-out sub-table `i` (D-30): table_leave_out = i, its own cached file
