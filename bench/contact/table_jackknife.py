@@ -4,7 +4,7 @@
 
 usage: table_jackknife.py ROLLSPEC STUDY [--n 4] [--k 25] [--table-seeds 11,12,13,14,15]
                           [--ref-seeds 21,22,23,24] [--k-ref 400] [--seed 999] [--ref-seed 555] [--work DIR]
-                          [--engine]
+                          [--engine] [--reuse-reference]
 
 --engine: the widened intervals as `run` writes them with [stiffness] table_error = jackknife (one run
 per table seed; its sub-tables made from one solve per surface), instead of the N sub-table runs made
@@ -71,6 +71,7 @@ def main():
     p.add_argument("--ref-seed", type=int, default=555)
     p.add_argument("--work", default="table-jackknife")
     p.add_argument("--engine", action="store_true", help="the intervals of run's table_error = jackknife")
+    p.add_argument("--reuse-reference", action="store_true", help="keep reference files of an earlier call in --work")
     a = p.parse_args()
     work = Path(a.work).resolve()
     (work / "tables").mkdir(parents=True, exist_ok=True)
@@ -79,8 +80,9 @@ def main():
     refs = []
     for t in map(int, a.ref_seeds.split(",")):
         out = work / f"ref-{t}.h5"
-        run(a.binary, a.study, out, common + [f"stiffness.table_seed={t}", f"study.seed={a.ref_seed}",
-                                              f"study.realisations={a.k_ref}"])
+        if not (a.reuse_reference and out.exists()):
+            run(a.binary, a.study, out, common + [f"stiffness.table_seed={t}", f"study.seed={a.ref_seed}",
+                                                  f"study.realisations={a.k_ref}"])
         refs.append(bands(out)[0])
     ref = np.mean(refs, axis=0)
 
