@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 #include "src/cli/commands.hpp"
@@ -15,6 +16,7 @@
 #include "src/scenes/scene.hpp"
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/ensemble_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/io/number_text.hpp"
 
@@ -81,6 +83,15 @@ int plan_command(const Args& args) {
     const bool solver_table = p.stage == "blocked_force" && blocked_force_solver;
     if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
   }
+  // table_error = jackknife (D-30): the ensemble once with the table and once per sub-table.
+  const bool jackknife = study::StiffnessSection::asks_table_jackknife(s);
+  const double ensembles = jackknife ? static_cast<double>(study::StiffnessSection::parse(s).realisations) + 1.0 : 1.0;
+  if (jackknife)
+    std::printf(
+        "table jackknife: [stiffness] table_error = jackknife runs the ensemble %.0f times (the full table and each "
+        "of its %.0f leave-one-out sub-tables, the same realisation streams): %.0f x the ensemble's run time; the "
+        "sub-tables are cached, made from one more solve of each surface when missing\n",
+        ensembles, ensembles - 1.0, ensembles);
   if (!vm.count("probe")) return 0;
   if (!ensemble_scene) {
     std::cout << "run time: not probed (no ensemble: the run is one deterministic computation)\n";
@@ -90,16 +101,27 @@ int plan_command(const Args& args) {
     std::cout << "run time: not probed (the stage tables are not built yet; rollspec stiffness builds them)\n";
     return 0;
   }
-  ensemble_scene->prepare(true, false);  // the tables are cached: this loads them
-  std::vector<double> values(ensemble_scene->values_per_realisation());
+  // The tables are cached: this loads them. The probe runs the full table alone: no sub-table is built.
+  std::unique_ptr<scenes::EnsembleScene> plain;
+  if (jackknife) {
+    StudyArgs without = study;
+    without.sets.push_back("stiffness.table_error=none");
+    plain = make_scene<scenes::EnsembleScene>(resolve_study(without));
+  }
+  scenes::EnsembleScene& probe = plain ? *plain : *ensemble_scene;
+  probe.prepare(true, false);
+  std::vector<double> values(probe.values_per_realisation());
   const auto start = std::chrono::steady_clock::now();
-  ensemble_scene->run_realisation(0, 0, values.data());
+  probe.run_realisation(0, 0, values.data());
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double K = static_cast<double>(study_keys.realisations);
   std::printf(
       "run time: %.3g s per realisation (probe of realisation 0); the ensemble of %.0f on %d thread(s): about %.3g s "
       "(plus stage tables and the final write)\n",
       t, K, threads, t * K / threads);
+  if (jackknife)
+    std::printf("run time with the table jackknife: %.0f ensembles, about %.3g s\n", ensembles,
+                ensembles * t * K / threads);
   return 0;
 }
 

@@ -1,4 +1,5 @@
 #include "src/cli/run_phases.hpp"
+#include "src/cli/run_table_jackknife.hpp"
 
 #include <omp.h>
 
@@ -152,6 +153,12 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
   const ensemble::EnsembleSums sums = ensemble::run_ensemble(
       cfg, scene->values_per_realisation(),
       [&](std::uint64_t id, int thread, double* values) { scene->run_realisation(id, thread, values); });
+  const StudyReload reload = [&q](const std::vector<std::string>& extra) {
+    RunRequest r = q;
+    r.study.sets.insert(r.study.sets.end(), extra.begin(), extra.end());
+    return load_study(r);
+  };
+  run_table_jackknife(run.study, reload, *scene, cfg, q.quiet, q.rebuild);  // table_error = jackknife only
 
   if (ensemble::mpi_rank() != 0) return 0;  // rank 0 holds the sums and writes the result
   {

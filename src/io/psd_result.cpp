@@ -45,6 +45,35 @@ void write_sensor_positions(Hdf5Writer& w, const std::string& group, const std::
   w.attribute(group, "coordinates", std::string("sensor_position"));
 }
 
+namespace {
+// What the intervals include, and the table's own term where they include it (D-30).
+void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
+  const TableError& t = e.table_error;
+  const std::string includes = interval_includes(t);
+  w.attribute("/psd", "interval_includes", includes);
+  w.attribute("/bands", "interval_includes", includes);
+  if (t.surfaces == 0) return;
+  const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
+  std::vector<double> bin_sd(t.bin_variance.size()), band_sd(t.band_variance.size());
+  for (std::size_t i = 0; i < bin_sd.size(); ++i) bin_sd[i] = std::sqrt(t.bin_variance[i]);
+  for (std::size_t i = 0; i < band_sd.size(); ++i) band_sd[i] = std::sqrt(t.band_variance[i]);
+  w.write("/psd/table_std_db", {ns, nf}, bin_sd.data(), "dB",
+          "jackknife standard error of the bin's level from the stiffness table's own surfaces (kernels/spectral "
+          "D-30; NaN: a bin without power)");
+  w.attribute("/psd/table_std_db", "_FillValue", static_cast<double>(NAN));
+  w.attach_scale("/psd/table_std_db", "/psd/sensor", 0);
+  w.attach_scale("/psd/table_std_db", "/psd/frequency", 1);
+  w.write("/bands/table_std_db", {ns, nb}, band_sd.data(), "dB",
+          "jackknife standard error of the band level from the stiffness table's own surfaces (kernels/spectral "
+          "D-30; NaN: a band without power)");
+  w.attribute("/bands/table_std_db", "_FillValue", static_cast<double>(NAN));
+  w.attach_scale("/bands/table_std_db", "/bands/sensor", 0);
+  w.attach_scale("/bands/table_std_db", "/bands/centre_frequency", 1);
+  w.attribute("/bands/table_std_db", "coordinates", std::string("nominal_frequency"));
+  w.attribute("/bands", "table_jackknife_surfaces", static_cast<std::int64_t>(t.surfaces));
+}
+}  // namespace
+
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
   const std::uint64_t K = e.realisations;
@@ -54,6 +83,9 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     lo[i] = ci.defined() ? e.mean[i] * ci.lower : 0.0;  // no interval: [0, inf), even for a bin without power
     hi[i] = ci.defined() ? e.mean[i] * ci.upper : HUGE_VAL;
     nu[i] = ci.dof;
+    if (e.table_error.surfaces > 0)
+      widen_bin_interval(e.mean[i], lo[i], hi[i], e.table_error.bin_variance[i], e.table_error.surfaces, K,
+                         e.confidence);
   }
   write_frequency_scale(w, "/psd", e.frequency);
   write_sensor_scale(w, "/psd", e.sensors);
@@ -96,6 +128,9 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
       cil[i] = ci.defined() ? 10.0 * std::log10(avg * ci.lower) : -HUGE_VAL;
       ciu[i] = ci.defined() ? 10.0 * std::log10(avg * ci.upper) : HUGE_VAL;
       dof[i] = ci.dof;
+      if (e.table_error.surfaces > 0)
+        widen_band_interval(level[i], cil[i], ciu[i], e.table_error.band_variance[i], e.table_error.surfaces, K,
+                            e.confidence);
       sd[i] = e.band_scatter[i].std_dev;
       log_sd[i] = e.band_scatter[i].log_std;
     }
@@ -135,6 +170,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     w.attach_scale("/bands/log_level_covariance", "/bands/centre_frequency", 2);
   }
   write_band_tail_check(w, e, bands);
+  write_table_error(w, e, nb);
   if (K < spectral::kMinRealisationsForInterval)
     std::fprintf(stderr, "rollspec: note: confidence intervals: %s\n", interval_method(K).c_str());
 }

@@ -20,6 +20,7 @@
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "kernels/spectral/tail_check.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
+#include "src/io/table_error.hpp"
 
 namespace rollspec::io {
 
@@ -43,6 +44,7 @@ struct PsdEnsemble {
   double band_min = 0.0, band_max = 0.0;  // Hz
   std::string units = "(m/s^2)^2/Hz";
   std::string quantity = "acceleration";
+  TableError table_error;  // a table's own error the intervals include, or the table they are conditional on
 };
 
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "kernels/beam/ball_on_beam.hpp"
@@ -53,6 +54,24 @@ class BallOnBeam final : public EnsembleScene {
     for (int t = 0; t < ensemble::ensemble_threads(); ++t)
       workspaces_.push_back(std::make_unique<Workspace>(b_.welch.segment));
     add_pipeline_stages(s.tables);
+    table_error_.table = random_tables();
+    if (b_.stiffness.table_jackknife && !(uses_table() && b_.stiffness.rough && b_.stiffness.realisations >= 2))
+      b_.stiffness.table_error_origin.refuse(
+          "jackknife needs a rough stiffness table of at least 2 surfaces ([contact] law = table or literal, "
+          "[stiffness] surface = rough, realisations >= 2); allowed here: none");
+    if (b_.stiffness.table_jackknife) tables_ = s.tables;
+  }
+
+  // The tables drawn from random surfaces or strips that every realisation shares: the intervals are
+  // conditional on them (kernels/spectral/README.md D-28).
+  std::string random_tables() const {
+    std::string out;
+    auto add = [&out](const char* name) { out += (out.empty() ? "" : ", ") + std::string(name); };
+    if (uses_table() && b_.stiffness.rough) add("stiffness table");
+    if (blocked_solver()) add("blocked-force table");
+    if (solver_filter()) add("equivalent-roughness table");
+    if (b_.path_law()) add("path table");
+    return out;
   }
 
   // texture, surface, stiffness_table, blocked_force, dynamics, spectra: the tables are stage
@@ -177,7 +196,14 @@ class BallOnBeam final : public EnsembleScene {
 
   void prepare(bool quiet, bool rebuild) override {
     quiet_ = quiet;
-    resolve_stages(quiet, rebuild);  // the tables' use_* complete the contact law
+    resolve_stages(quiet, rebuild);      // the tables' use_* complete the contact law
+    if (b_.stiffness.table_jackknife) {  // D-30: every sub-table cached now, from one solve per surface
+      const auto status = stiffness::resolve_leave_out_tables(*tables_, b_.model.contact.radius,
+                                                              b_.model.contact.effective_modulus, rebuild, quiet);
+      if (!quiet)
+        std::fprintf(stderr, "stiffness table: %zu leave-one-out sub-tables for the jackknife (first: %s)\n",
+                     status.size(), status.empty() ? "-" : status[0].c_str());
+    }
     model_ = std::make_unique<const beam::BallOnBeamModel>(resolved_model(b_, contact_));
     integrator_ = std::make_unique<beam::ExactStepIntegrator>(*model_, b_.step);
     excitation_ = make_ball_on_beam_excitation(b_, contact_, lines_, static_cast<int>(workspaces_.size()));
@@ -189,10 +215,15 @@ class BallOnBeam final : public EnsembleScene {
     if (!quiet)
       std::fprintf(stderr,
                    "stiffness table: %s (%lld surfaces, [stiffness] table_seed = %s, table_shift = %g standard "
-                   "errors)\nintervals: the realisations' sampling error only, conditional on this table; its own "
-                   "sampling error is not included (kernels/spectral/README.md D-28)\n",
+                   "errors)\nintervals: %s\n",
                    status.c_str(), static_cast<long long>(t.realisations), b_.stiffness.text("table_seed").c_str(),
-                   b_.stiffness.table_shift);
+                   b_.stiffness.table_shift,
+                   b_.stiffness.table_jackknife
+                       ? "the realisations' and the table's own sampling error (a jackknife over its surfaces: the "
+                         "ensemble runs once more per surface; kernels/spectral/README.md D-30)"
+                       : "the realisations' sampling error only, conditional on this table; its own sampling error "
+                         "is not included ([stiffness] table_error = jackknife includes it; kernels/spectral/README.md "
+                         "D-28, D-30)");
     take_stiffness_table(b_, t, contact_);
   }
 
@@ -271,9 +302,15 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).write(w, sums);
+    BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).write(w, sums, table_error_);
     if (b_.time_histories) write_time_histories(w, sums.only);
   }
+
+  io::PsdEnsemble spectra(const ensemble::EnsembleSums& sums) const override {
+    return BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).spectra(sums);
+  }
+
+  void include_table_error(io::TableError e) override { table_error_ = std::move(e); }
 
  private:
   // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume;
@@ -312,6 +349,8 @@ class BallOnBeam final : public EnsembleScene {
 
   const BallOnBeamSettings b_;  // the keys' values; the table stages resolve contact_
   ResolvedContact contact_;
+  io::TableError table_error_;                   // what the intervals include besides the realisations
+  std::optional<stiffness::TableStudy> tables_;  // table_error = jackknife: the sub-tables' inputs
   bool linearised() const { return b_.linearised(); }
   bool uses_table() const { return b_.uses_table(); }
   bool blocked_solver() const { return b_.blocked_solver(); }

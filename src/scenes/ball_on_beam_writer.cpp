@@ -20,17 +20,25 @@
 
 namespace rollspec::scenes {
 
-void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const {
-  const std::size_t nf = welch_->n_freq();
-  const double K = static_cast<double>(sums.count);
-  auto mean_of = [&](std::size_t i) { return sums.mean(i); };
-  auto std_of = [&](std::size_t i) { return sums.std_dev(i); };
+io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) const {
   io::PsdEnsemble e = rows_->ensemble(sums);
-  e.welch_dof = K * welch_->equivalent_dof(b_.samples - b_.skip);  // stationary D-16 value, for information
+  e.welch_dof = static_cast<double>(sums.count) *
+                welch_->equivalent_dof(b_.samples - b_.skip);  // stationary D-16 value, for information
   e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
   e.confidence = b_.confidence;
   e.sensor_position = b_.model.sensors;
   e.position_meaning = "sensor position along the span";
+  return e;
+}
+
+void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums,
+                             const io::TableError& table_error) const {
+  const std::size_t nf = welch_->n_freq();
+  const double K = static_cast<double>(sums.count);
+  auto mean_of = [&](std::size_t i) { return sums.mean(i); };
+  auto std_of = [&](std::size_t i) { return sums.std_dev(i); };
+  io::PsdEnsemble e = spectra(sums);
+  e.table_error = table_error;
   io::write_psd_result(w, e);
 
   std::vector<double> force(nf), ball(nf);

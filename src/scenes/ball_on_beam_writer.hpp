@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kernels/spectral/welch.hpp"
+#include "src/io/psd_result.hpp"
 #include "src/scenes/ball_on_beam_contact.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
 #include "src/scenes/psd_rows.hpp"
@@ -26,7 +27,10 @@ class BallOnBeamWriter {
                    const PsdRows& rows, double line_fundamental, bool quiet)
       : b_(b), c_(c), welch_(&welch), rows_(&rows), line_fundamental_(line_fundamental), quiet_(quiet) {}
 
-  void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const;
+  // `table_error`: what the intervals include besides the realisations (io/table_error.hpp).
+  void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, const io::TableError& table_error) const;
+  // The sensors' spectra as write() writes them under /psd and /bands.
+  io::PsdEnsemble spectra(const ensemble::EnsembleSums& sums) const;
 
  private:
   void write_roughness(io::Hdf5Writer& w) const;

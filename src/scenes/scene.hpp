@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "src/ensemble/ensemble_driver.hpp"
+#include "src/io/psd_result.hpp"
 #include "src/scenes/result_shape.hpp"
 #include "src/scenes/stage.hpp"
 #include "src/study/key_spec.hpp"
@@ -72,6 +74,13 @@ class EnsembleScene : public Scene {
   // Thread-safe for distinct `thread` indices in [0, ensemble_threads()).
   virtual void run_realisation(std::uint64_t id, int thread, double* values) const = 0;
   virtual void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const = 0;
+  // [stiffness] table_error = jackknife (kernels/spectral/README.md D-30): the spectra of `sums`
+  // without writing them, and the table's own error that write_results adds to the intervals.
+  // Only a scene with a rough stiffness table runs it; the others refuse the key before this.
+  virtual io::PsdEnsemble spectra(const ensemble::EnsembleSums&) const {
+    throw std::logic_error("this scene has no stiffness table to jackknife");
+  }
+  virtual void include_table_error(io::TableError) { throw std::logic_error("this scene has no stiffness table"); }
 };
 
 // One deterministic computation (e.g. `rolling-beam`): run() once after prepare(), then written.

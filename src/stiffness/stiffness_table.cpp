@@ -10,6 +10,7 @@
 #include <exception>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include "kernels/contact/geometry.hpp"
@@ -144,7 +145,15 @@ void fit_power_law(StiffnessTable& t) {
 
 }  // namespace
 
-StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effective_modulus, bool quiet) {
+namespace {
+
+// Each surface's contact curve, surfaces[r][j] at approach step j (empty for the one left out).
+struct SurfaceCurves {
+  std::vector<double> deltas;
+  std::vector<std::vector<contact::ContactResult>> surfaces;
+};
+
+SurfaceCurves surface_curves(const TableStudy& ts, double ball_radius, double effective_modulus, bool quiet) {
   contact::Grid grid;
   grid.nx = static_cast<std::size_t>(ts.surface.nx);
   grid.ny = static_cast<std::size_t>(ts.surface.ny);
@@ -249,7 +258,17 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
     }
   }
 
-  // Mean and standard deviation in realisation order: the same bits for any thread count.
+  return {deltas, std::move(results)};
+}
+
+// Mean and standard deviation over the surfaces but `left_out` (-1: none), in realisation order:
+// the same bits for any thread count.
+StiffnessTable reduce_table(const SurfaceCurves& curves, long long left_out, double ball_radius,
+                            double effective_modulus, const contact::SolverOptions& opts) {
+  const auto& results = curves.surfaces;
+  const auto& deltas = curves.deltas;
+  const std::size_t steps = deltas.size();
+  const int R = static_cast<int>(results.size());
   StiffnessTable t;
   t.approach.push_back(0.0);
   for (auto* c : {&t.force_mean, &t.force_std, &t.stiffness_mean, &t.stiffness_std, &t.contact_area_mean,
@@ -280,6 +299,37 @@ StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effe
   t.realisations = left_out >= 0 ? R - 1 : R;
   t.tolerance = opts.tolerance;
   return t;
+}
+
+}  // namespace
+
+StiffnessTable build_table(const TableStudy& ts, double ball_radius, double effective_modulus, bool quiet) {
+  return reduce_table(surface_curves(ts, ball_radius, effective_modulus, quiet), ts.stiffness.table_leave_out,
+                      ball_radius, effective_modulus, ts.stiffness.solver);
+}
+
+std::vector<std::string> resolve_leave_out_tables(const TableStudy& ts, double ball_radius, double effective_modulus,
+                                                  bool rebuild, bool quiet) {
+  std::vector<std::string> status(static_cast<std::size_t>(ts.stiffness.realisations));
+  std::unique_ptr<SurfaceCurves> curves;  // every surface's curve, solved once for the first sub-table built
+  TableStudy all = ts;
+  all.stiffness = ts.stiffness.leaving_out(-1);
+  for (long long i = 0; i < ts.stiffness.realisations; ++i) {
+    TableStudy sub = ts;
+    sub.stiffness = ts.stiffness.leaving_out(i);
+    StiffnessTable t;
+    stiffness_cached_table(sub, ball_radius, effective_modulus)
+        .resolve(
+            t, rebuild,
+            [&](TableData& out) {
+              if (!curves)
+                curves = std::make_unique<SurfaceCurves>(surface_curves(all, ball_radius, effective_modulus, quiet));
+              static_cast<StiffnessTable&>(out) =
+                  reduce_table(*curves, i, ball_radius, effective_modulus, sub.stiffness.solver);
+            },
+            status[static_cast<std::size_t>(i)]);
+  }
+  return status;
 }
 
 void StiffnessTable::save_to(io::Hdf5Writer& w) const {

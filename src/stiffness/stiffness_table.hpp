@@ -57,4 +57,11 @@ StiffnessTable build_table(const TableStudy& t, double ball_radius, double effec
 StiffnessTable resolve_table(const TableStudy& t, double ball_radius, double effective_modulus, bool rebuild,
                              bool quiet, std::string& status);
 
+// [stiffness] table_error = jackknife (kernels/spectral/README.md D-30): every leave-one-out
+// sub-table of t's surfaces, each a cached table of its own (the file `table_leave_out = i` names,
+// with the same bits). Sub-tables missing from the cache are reduced from one solve of every
+// surface, never one solve per sub-table. Returns each sub-table's status (as resolve_table).
+std::vector<std::string> resolve_leave_out_tables(const TableStudy& t, double ball_radius, double effective_modulus,
+                                                  bool rebuild, bool quiet);
+
 }  // namespace rollspec::stiffness

@@ -46,6 +46,12 @@ std::vector<KeySpec> StiffnessSection::keys() {
                   "surface index (0 .. realisations - 1) left out of the stiffness table's mean: a leave-one-out "
                   "sub-table for the jackknife of the table's own error (kernels/spectral/README.md D-30); -1: none",
                   std::string("-1"), -1, 99999),
+      choice_key("stiffness", "table_error",
+                 "what `run`'s intervals include besides the realisations' scatter: none (conditional on the stiffness "
+                 "table), or jackknife: the table's own sampling error, from the ensemble run again with each of the "
+                 "table's leave-one-surface-out sub-tables (realisations + 1 ensembles, the same random streams; "
+                 "kernels/spectral/README.md D-30); needs [contact] law = table or literal and surface = rough",
+                 std::string("none"), {"none", "jackknife"}),
   };
 }
 
@@ -65,6 +71,13 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   t.table_shift = s.real("stiffness.table_shift");
   t.table_leave_out = s.integer("stiffness.table_leave_out");
   t.table_leave_out_origin = {s.where("stiffness.table_leave_out")};
+  t.table_jackknife = s.text("stiffness.table_error") == "jackknife";
+  t.table_error_origin = {s.where("stiffness.table_error")};
+  if (t.table_jackknife && t.table_leave_out >= 0)
+    t.table_error_origin.refuse(
+        "jackknife runs every leave-one-out sub-table itself; allowed with it: "
+        "[stiffness] table_leave_out = -1 (" +
+        t.table_leave_out_origin.where + ")");
   t.ball_rms_origin = {s.where("stiffness.ball_rms")};
   t.approach_max_origin = {s.where("stiffness.approach_max")};
   t.table_shift_origin = {s.where("stiffness.table_shift")};
@@ -74,10 +87,28 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   return t;
 }
 
+bool StiffnessSection::asks_table_jackknife(const KeyReader& s) {
+  return s.has("stiffness.table_error") && s.text("stiffness.table_error") == "jackknife";
+}
+
 const std::string& StiffnessSection::text(const std::string& key) const {
   const auto it = texts_.find(key);
   if (it == texts_.end()) throw std::logic_error("not a [stiffness] key: " + key);
   return it->second;
+}
+
+StiffnessSection StiffnessSection::leaving_out(long long i) const {
+  StiffnessSection t = *this;
+  t.table_leave_out = i;
+  t.table_jackknife = false;
+  t.texts_["table_leave_out"] = std::to_string(i);
+  t.texts_["table"] = "auto";
+  t.texts_["table_error"] = "none";
+  return t;
+}
+
+std::vector<std::string> StiffnessSection::leave_out_sets(long long i) {
+  return {"stiffness.table_leave_out=" + std::to_string(i), "stiffness.table=auto", "stiffness.table_error=none"};
 }
 
 }  // namespace rollspec::study

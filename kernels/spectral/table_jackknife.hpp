@@ -1,0 +1,33 @@
+#pragma once
+// A table's own sampling error in an interval by a leave-one-surface-out jackknife
+// (kernels/spectral/README.md D-30). The ensemble is run with the full table of N surfaces and
+// with each of its N leave-one-out sub-tables, the same realisation streams in every run; theta_i
+// is a log level (dB) with sub-table i.
+//   (a) V_J = (N - 1)/N sum_i (theta_i - mean theta)^2
+//   (b) s^2 = s_w^2 + V_J, s_w = h / t_{K-1}(level), nu = s^4 / (s_w^4/(K - 1) + V_J^2/(N - 1)),
+//       widened half width t_nu(level) s
+// (b) is applied to each side of an interval on its own (D-21's interval is not symmetric).
+#include <cstddef>
+#include <cstdint>
+
+namespace rollspec::spectral {
+
+// (a) from the N leave-one-out values, two passes (mean, then squared deviations). NaN when a
+// value is not finite (a bin without power in some run); 0 for N < 2.
+double jackknife_variance(const double* theta, std::size_t n);
+
+// (a) by pairs, sum_i (theta_i - mean)^2 = (1/N) sum_{i<j} (theta_i - theta_j)^2: the plain
+// reference for the tests (no mean is formed).
+double jackknife_variance_reference(const double* theta, std::size_t n);
+
+struct WidenedHalfWidth {
+  double half_width = 0.0;  // t_nu s, in the units of h
+  double dof = 0.0;         // nu (Welch-Satterthwaite)
+};
+
+// (b): a half width h of the realisations' interval at `level` from K realisations, widened by a
+// jackknife variance v over N surfaces. h unchanged (dof K - 1) when v is 0, not finite, or h is
+// not a finite positive width (no interval).
+WidenedHalfWidth widen_half_width(double h, std::uint64_t realisations, double v, std::uint64_t surfaces, double level);
+
+}  // namespace rollspec::spectral

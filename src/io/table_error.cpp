@@ -1,0 +1,72 @@
+#include "src/io/table_error.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "kernels/spectral/table_jackknife.hpp"
+#include "src/io/psd_result.hpp"
+
+namespace rollspec::io {
+
+std::vector<double> band_levels_db(const PsdEnsemble& e) {
+  const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
+  const double df = nf > 1 ? e.frequency[1] - e.frequency[0] : 1.0;
+  const auto bands = result_bands(e.frequency, e.band_min, e.band_max);
+  std::vector<double> level(ns * bands.size());
+  for (std::size_t b = 0; b < bands.size(); ++b)
+    for (std::size_t s = 0; s < ns; ++s)
+      level[s * bands.size() + b] =
+          10.0 * std::log10(spectral::band_average(e.mean.data() + s * nf, nf, df, bands[b].lower, bands[b].upper));
+  return level;
+}
+
+TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const std::string& table) {
+  TableError t;
+  t.surfaces = sub_tables.size();
+  t.table = table;
+  if (sub_tables.empty()) return t;
+  const std::size_t n = sub_tables.size(), bins = sub_tables[0].mean.size();
+  std::vector<std::vector<double>> bands;
+  for (const auto& e : sub_tables) {
+    if (e.mean.size() != bins) throw std::logic_error("table jackknife: sub-table spectra of different shapes");
+    bands.push_back(band_levels_db(e));
+  }
+  std::vector<double> theta(n);
+  t.bin_variance.resize(bins);
+  for (std::size_t i = 0; i < bins; ++i) {
+    for (std::size_t j = 0; j < n; ++j) theta[j] = 10.0 * std::log10(sub_tables[j].mean[i]);
+    t.bin_variance[i] = spectral::jackknife_variance(theta.data(), n);
+  }
+  t.band_variance.resize(bands[0].size());
+  for (std::size_t i = 0; i < bands[0].size(); ++i) {
+    for (std::size_t j = 0; j < n; ++j) theta[j] = bands[j].at(i);
+    t.band_variance[i] = spectral::jackknife_variance(theta.data(), n);
+  }
+  return t;
+}
+
+std::string interval_includes(const TableError& t) {
+  if (t.surfaces > 0)
+    return "realisations, " + t.table + " (jackknife over " + std::to_string(t.surfaces) + " surfaces)";
+  if (!t.table.empty()) return "realisations only (conditional on the " + t.table + ")";
+  return "realisations";
+}
+
+void widen_band_interval(double level, double& lo, double& hi, double v, std::uint64_t surfaces, std::uint64_t K,
+                         double level_p) {
+  if (!std::isfinite(level)) return;
+  lo = level - spectral::widen_half_width(level - lo, K, v, surfaces, level_p).half_width;
+  hi = level + spectral::widen_half_width(hi - level, K, v, surfaces, level_p).half_width;
+}
+
+void widen_bin_interval(double mean, double& lo, double& hi, double v, std::uint64_t surfaces, std::uint64_t K,
+                        double level_p) {
+  if (!(mean > 0.0) || !(lo > 0.0) || !std::isfinite(hi)) return;
+  const double db = 10.0 * std::log10(mean);
+  double lo_db = 10.0 * std::log10(lo), hi_db = 10.0 * std::log10(hi);
+  widen_band_interval(db, lo_db, hi_db, v, surfaces, K, level_p);
+  lo = std::pow(10.0, lo_db / 10.0);
+  hi = std::pow(10.0, hi_db / 10.0);
+}
+
+}  // namespace rollspec::io
