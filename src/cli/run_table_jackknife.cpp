@@ -1,44 +1,15 @@
 #include "src/cli/run_table_jackknife.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <vector>
 
 #include "src/cli/run_phases.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/io/run_warning.hpp"
 #include "src/io/table_error.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 
 namespace rollspec::cli {
-
-namespace {
-// A sub-table's scene is the full table's study again: its construction warnings (printed when a
-// scene is made) were printed once already, so stderr is closed while it is made.
-class StderrMuted {
- public:
-  StderrMuted() {
-    std::fflush(stderr);
-    saved_ = ::dup(STDERR_FILENO);
-    const int null = ::open("/dev/null", O_WRONLY);
-    if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
-    if (null >= 0) ::close(null);
-  }
-  ~StderrMuted() {
-    std::fflush(stderr);
-    if (saved_ >= 0) {
-      ::dup2(saved_, STDERR_FILENO);
-      ::close(saved_);
-    }
-  }
-  StderrMuted(const StderrMuted&) = delete;
-  StderrMuted& operator=(const StderrMuted&) = delete;
-
- private:
-  int saved_ = -1;
-};
-}  // namespace
 
 void run_table_jackknife(const study::Study& s, const StudyReload& reload, scenes::EnsembleScene& scene,
                          const ensemble::EnsembleConfig& cfg, bool quiet, bool rebuild) {
@@ -52,7 +23,8 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
                    n, i);
     const study::Study sub = reload(study::StiffnessSection::leave_out_sets(i));
     const auto sub_scene = [&sub] {
-      const StderrMuted muted;
+      // The full table's study again: its construction warnings were said once, by the full run.
+      const io::RunWarningCapture already_said;
       return make_scene<scenes::EnsembleScene>(sub);
     }();
     sub_scene->prepare(/*quiet=*/true, rebuild);  // its table is cached: the full table's scene built it
