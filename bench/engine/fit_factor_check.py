@@ -15,8 +15,14 @@ median p of D-26's test at the best fit, for several likelihood variants:
   none   c = 1
   t      -(n+1)/2 ln(1 + T^2/n) - ln det V / 2 (the covariance integrated out: multivariate t)
 
-    /usr/bin/python3 bench/engine/fit_factor_check.py [--key level|loss] [--experiments 400] [--K 30] [--M 25]
-    /usr/bin/python3 bench/engine/fit_factor_check.py --save-rig RIG.npz LOSS_LO.h5 MID.h5 LOSS_HI.h5
+    /usr/bin/python3 bench/engine/fit_factor_check.py [--key level|loss] [--law gsg|fw] [--experiments 400]
+        [--K 30] [--M 25] [--variants c,none,t]
+
+The rig's figures (bench/engine/fit_factor_rig.npz) come from three K = 400 runs with one seed:
+    for e in 0.008 0.01 0.0125; do rollspec run studies/seed002-rig-1ms.ini --out eta$e.h5 --quiet \
+        --set ball.end=0.2 --set study.realisations=400 --set study.seed=777 --set beam.loss_factor=$e; done
+    /usr/bin/python3 bench/engine/fit_factor_check.py --save-rig bench/engine/fit_factor_rig.npz \
+        eta0.008.h5 eta0.01.h5 eta0.0125.h5
 """
 import argparse
 import sys
