@@ -9,22 +9,26 @@ namespace rollspec::spectral {
 
 namespace {
 
-// Fenton-Wilkinson: covariance of ln of an n-record mean, ln(1 + (e^{S_bc} - 1) / n) (D-26a).
-double log_mean_covariance(double s, double n) { return std::log1p(std::expm1(s) / n); }
+// Fenton-Wilkinson: variance of ln of an n-record mean, ln(1 + (e^{S_bb} - 1) / n) (D-26a).
+double log_mean_variance(double s, double n) { return std::log1p(std::expm1(s) / n); }
 
-// d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = V_M + V_K (D-26a, b).
+// d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = G S G, G_bb^2 = (V_M,bb + V_K,bb) / S_bb (D-26a, b): each
+// band's variance from Fenton-Wilkinson, the correlations those of S. V stays S scaled band by band,
+// so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not (D-26a).
 void deviation_and_covariance(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
                               std::vector<double>& d, std::vector<double>& v) {
   if (!(M >= 1.0) || !(K >= 2.0)) throw std::invalid_argument("band test: needs records >= 1 and K >= 2");
   d.assign(p, 0.0);
   v.assign(p * p, 0.0);
+  std::vector<double> g(p);
   for (std::size_t b = 0; b < p; ++b) {
     if (!(mean[b] > 0.0) || !std::isfinite(y[b])) throw std::invalid_argument("band test: a band without power");
-    for (std::size_t c = 0; c < p; ++c)
-      v[b * p + c] = log_mean_covariance(cov[b * p + c], M) + log_mean_covariance(cov[b * p + c], K);
-    const double s = cov[b * p + b];
-    d[b] = y[b] - (std::log(mean[b]) + 0.5 * (log_mean_covariance(s, K) - log_mean_covariance(s, M)));
+    const double s = cov[b * p + b], vm = log_mean_variance(s, M), vk = log_mean_variance(s, K);
+    g[b] = s > 0.0 ? std::sqrt((vm + vk) / s) : std::sqrt(1.0 / M + 1.0 / K);  // the limit s -> 0
+    d[b] = y[b] - (std::log(mean[b]) + 0.5 * (vk - vm));
   }
+  for (std::size_t b = 0; b < p; ++b)
+    for (std::size_t c = 0; c < p; ++c) v[b * p + c] = g[b] * cov[b * p + c] * g[c];
 }
 
 // Cholesky V = L L^T in place (lower triangle); returns |L^{-1} d|^2 (d is overwritten) and, when
@@ -90,8 +94,18 @@ double band_log_likelihood(const double* measured_log, const double* mean, const
 
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                               std::uint64_t realisations, double records) {
-  std::vector<double> d, v;
-  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  // V and d written out plainly from D-26a, b (not through deviation_and_covariance).
+  const double K = static_cast<double>(realisations), M = records;
+  std::vector<double> d(p), v(p * p), vb(p);
+  for (std::size_t b = 0; b < p; ++b) {
+    const double s = covariance[b * p + b];
+    const double vm = std::log(1.0 + (std::exp(s) - 1.0) / M), vk = std::log(1.0 + (std::exp(s) - 1.0) / K);
+    vb[b] = vm + vk;
+    d[b] = measured_log[b] - std::log(mean[b]) - 0.5 * (vk - vm);
+  }
+  for (std::size_t b = 0; b < p; ++b)
+    for (std::size_t c = 0; c < p; ++c)
+      v[b * p + c] = covariance[b * p + c] * std::sqrt(vb[b] * vb[c] / (covariance[b * p + b] * covariance[c * p + c]));
   std::vector<double> inv(p * p, 0.0);
   for (std::size_t i = 0; i < p; ++i) inv[i * p + i] = 1.0;
   for (std::size_t c = 0; c < p; ++c) {  // Gauss-Jordan with partial pivoting

@@ -1,7 +1,8 @@
 #pragma once
 // Combined test of a measurement's band levels against an ensemble (theory D-26): a Hotelling-type
 // T^2 of the measured-minus-predicted band logs with the covariance of an M-record measurement plus
-// that of the K-realisation mean, both from the realisations' between-band covariance of ln x,
+// that of the K-realisation mean, both the realisations' between-band covariance of ln x scaled band by
+// band to each band's Fenton-Wilkinson variance,
 // referred to F(p, K - p) (K - 1 dof of the covariance estimate).
 #include <cstddef>
 #include <cstdint>
@@ -33,7 +34,7 @@ BandTestResult band_test(const double* measured_log, const double* mean, const d
 double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                            std::uint64_t realisations, double records);
 
-// The same T^2 by a plain Gauss-Jordan inverse, for tests.
+// The same T^2 with d and V written out plainly and a Gauss-Jordan inverse, for tests.
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                               std::uint64_t realisations, double records);
 

@@ -180,8 +180,8 @@ EXTRA_REALISATIONS = 4  # kernels/spectral kExtraRealisations: the test needs K 
 
 def combined_test(measured_db, level_db, cov, realisations, records, test_level=0.05):
     """D-26, as `rollspec compare` prints it: Hotelling T^2 of the measured band logs against the model
-    with the covariance of an M-record mean plus the K-realisation mean's (Fenton-Wilkinson from the
-    realisations' between-band covariance of ln x), F(p, K - p). Returns a dict with p_value
+    with the covariance of an M-record mean plus the K-realisation mean's (the realisations' between-band
+    covariance of ln x scaled band by band to each band's Fenton-Wilkinson variance), F(p, K - p). Returns a dict with p_value
     (None when the test is not defined) and the verdict line."""
     p, K, M = len(measured_db), realisations, records
     out = {"p_value": None, "rejected": None, "level": test_level}
@@ -192,9 +192,13 @@ def combined_test(measured_db, level_db, cov, realisations, records, test_level=
         out["verdict"] = (f"none ({p} bands need K >= {p + EXTRA_REALISATIONS} realisations, the result has {K}; "
                           "run more or choose fewer bands with --fmin/--fmax)")
         return out
-    vm, vk = np.log1p(np.expm1(cov) / M), np.log1p(np.expm1(cov) / K)
-    d = measured_db * np.log(10) / 10 - (level_db * np.log(10) / 10 + (np.diag(vk) - np.diag(vm)) / 2)
-    t2 = float(d @ np.linalg.solve(vm + vk, d))
+    s = np.diag(cov)
+    vm, vk = np.log1p(np.expm1(s) / M), np.log1p(np.expm1(s) / K)
+    # V = G S G: each band's variance from Fenton-Wilkinson, the correlations those of S (T^2 keeps
+    # Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not).
+    g = np.where(s > 0, np.sqrt((vm + vk) / np.where(s > 0, s, 1.0)), np.sqrt(1.0 / M + 1.0 / K))
+    d = measured_db * np.log(10) / 10 - (level_db * np.log(10) / 10 + (vk - vm) / 2)
+    t2 = float(d @ np.linalg.solve(cov * np.outer(g, g), d))
     nu = K - 1
     f = (nu - p + 1) / (nu * p) * t2
     out.update(p_value=float(stats.f.sf(f, p, nu - p + 1)), t2=t2, f=f, dof=(p, nu - p + 1))

@@ -68,7 +68,7 @@ TEST_CASE("band test: size near nominal and power on simulated lognormal bands")
     for (std::size_t b = 0; b < p; ++b)
       x[b] = std::exp(sy * (std::sqrt(rho) * z0 + std::sqrt(1.0 - rho) * normal(rng)) - 0.3 * static_cast<double>(b));
   };
-  const int trials = 2000;
+  const int trials = 8000;  // binomial s.e. 0.0024 at 0.05
   int rejected = 0, rejected_shifted = 0;
   std::vector<double> x(p), mean(p), cov(p * p), ly(p), y(p), y_shift(p), meas(p);
   for (int t = 0; t < trials; ++t) {
@@ -101,4 +101,51 @@ TEST_CASE("band test: size near nominal and power on simulated lognormal bands")
   CHECK(size > 0.03);
   CHECK(size < 0.075);
   CHECK(rejected_shifted / static_cast<double>(trials) > 0.9);
+}
+
+// Many bands for few realisations, wide spreads, weak correlation (as the seed 002 rig: p = 16, K = 30):
+// the size stays nominal only if V is S scaled band by band (D-26a); the elementwise
+// ln(1 + (e^S - 1)/n) of the noisy S rejected 0.005 here (T^2 too small: its inverse is not Wishart's).
+TEST_CASE("band test: size near nominal with many bands, few realisations and wide spreads") {
+  const std::size_t p = 12;
+  const std::uint64_t K = 20;
+  const double M = 25.0, rho = 0.1;
+  std::mt19937_64 rng(2027);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  auto draw = [&](std::vector<double>& x) {
+    const double z0 = normal(rng);
+    for (std::size_t b = 0; b < p; ++b) {
+      const double sy = 0.3 + 0.06 * static_cast<double>(b);  // log spreads 0.3 .. 0.96
+      x[b] = std::exp(sy * (std::sqrt(rho) * z0 + std::sqrt(1.0 - rho) * normal(rng)) - 0.2 * static_cast<double>(b));
+    }
+  };
+  const int trials = 3000;
+  int rejected = 0;
+  std::vector<double> x(p), mean(p), lm(p), cov(p * p), y(p), meas(p);
+  std::vector<std::vector<double>> logs(K, std::vector<double>(p));
+  for (int t = 0; t < trials; ++t) {
+    std::fill(mean.begin(), mean.end(), 0.0);
+    std::fill(lm.begin(), lm.end(), 0.0);
+    for (auto& l : logs) {
+      draw(x);
+      for (std::size_t b = 0; b < p; ++b)
+        mean[b] += x[b] / static_cast<double>(K), l[b] = std::log(x[b]), lm[b] += l[b] / static_cast<double>(K);
+    }
+    for (std::size_t b = 0; b < p; ++b)
+      for (std::size_t c = 0; c < p; ++c) {
+        double s = 0.0;
+        for (const auto& l : logs) s += (l[b] - lm[b]) * (l[c] - lm[c]);
+        cov[b * p + c] = s / static_cast<double>(K - 1);
+      }
+    std::fill(meas.begin(), meas.end(), 0.0);
+    for (int m = 0; m < static_cast<int>(M); ++m) {
+      draw(x);
+      for (std::size_t b = 0; b < p; ++b) meas[b] += x[b] / M;
+    }
+    for (std::size_t b = 0; b < p; ++b) y[b] = std::log(meas[b]);
+    rejected += band_test(y.data(), mean.data(), cov.data(), p, K, M).p_value < 0.05;
+  }
+  const double size = rejected / static_cast<double>(trials);  // binomial s.e. 0.004 at 0.05
+  CHECK(size > 0.035);
+  CHECK(size < 0.07);
 }
