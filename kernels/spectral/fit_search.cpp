@@ -91,6 +91,28 @@ BoxMinimum box_minimum_grid_reference(const BoxObjective& f, std::size_t n, int 
   return out;
 }
 
+ProfileContinuation::ProfileContinuation(BoxObjective f, std::size_t n, std::size_t j, double t0,
+                                         const std::vector<double>& others0, double step, double tolerance,
+                                         int max_evaluations)
+    : f_(std::move(f)), n_(n), j_(j), step_(step), tolerance_(tolerance), max_evaluations_(max_evaluations) {
+  solved_.emplace_back(t0, others0);
+}
+
+double ProfileContinuation::operator()(double t) {
+  if (n_ == 1) return f_({t});
+  std::size_t nearest = 0;
+  for (std::size_t i = 1; i < solved_.size(); ++i)
+    if (std::fabs(solved_[i].first - t) < std::fabs(solved_[nearest].first - t)) nearest = i;
+  const BoxObjective g = [&](const std::vector<double>& o) {
+    std::vector<double> u;
+    for (std::size_t i = 0, k = 0; i < n_; ++i) u.push_back(i == j_ ? t : o[k++]);
+    return f_(u);
+  };
+  const BoxMinimum m = box_minimum(g, solved_[nearest].second, step_, tolerance_, max_evaluations_);
+  solved_.emplace_back(t, m.x);
+  return m.value;
+}
+
 double profile_end(const std::function<double(double)>& profile, double t0, double f0, double end, double rise,
                    double tolerance, int* evaluations) {
   // h(t) = sqrt(profile - f0) - sqrt(rise) is linear in t for a Gaussian likelihood: regula falsi

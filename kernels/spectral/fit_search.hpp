@@ -5,6 +5,7 @@
 // search is the plain reference the tests compare the simplex with.
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace rollspec::spectral {
@@ -35,6 +36,25 @@ BoxMinimum box_minimum_grid_reference(const BoxObjective& f, std::size_t n, int 
 // returns `end` when profile(end) - f0 <= rise (the interval reaches the end of the range).
 double profile_end(const std::function<double(double)>& profile, double t0, double f0, double end, double rise,
                    double tolerance, int* evaluations);
+
+// The profile of f in coordinate j: profile(t) = f minimised over the other coordinates with x_j = t
+// (Nelder-Mead, initial step `step`). Each search starts from the optimum of the nearest t already
+// solved, beginning with (t0, others0), the fit's optimum: continuation along the profile. A start
+// carried over from the previous call instead (regula falsi jumps between a bracket's ends, one of
+// them the range's end) can sit in another basin and make the profile rise falsely.
+class ProfileContinuation {
+ public:
+  ProfileContinuation(BoxObjective f, std::size_t n, std::size_t j, double t0, const std::vector<double>& others0,
+                      double step, double tolerance, int max_evaluations);
+  double operator()(double t);
+
+ private:
+  BoxObjective f_;
+  std::size_t n_, j_;
+  double step_, tolerance_;
+  int max_evaluations_;
+  std::vector<std::pair<double, std::vector<double>>> solved_;  // t, the other coordinates' optimum
+};
 
 // Hessian (n x n, row-major) of f at x by central differences of step h, the stencil moved inside
 // the box where x is nearer than h to an edge.

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -59,20 +60,6 @@ struct TempDir {
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
 };
-
-// -ln L minimised over the other coordinates with coordinate j held at t.
-// `others` starts the search (the previous profile point's optimum) and returns this one's.
-double profile_value(FitModel& model, std::size_t n, std::size_t j, double t, std::vector<double>& others) {
-  if (n == 1) return model.negative_log_likelihood({t});
-  const spectral::BoxObjective f = [&](const std::vector<double>& o) {
-    std::vector<double> u;
-    for (std::size_t i = 0, k = 0; i < n; ++i) u.push_back(i == j ? t : o[k++]);
-    return model.negative_log_likelihood(u);
-  };
-  const spectral::BoxMinimum m = spectral::box_minimum(f, others, 0.05, kUnitTolerance, 40 * static_cast<int>(n - 1));
-  others = m.x;
-  return m.value;
-}
 
 // The measurements and their operating points: MEASUREMENT / --measurement FILE (repeatable, in order),
 // each paired with the --at of the same rank; --measured-averages once for all or once per measurement.
@@ -139,11 +126,12 @@ FitReport fit_search(FitModel& model, const FitInputs& in) {
     std::vector<double> start;
     for (std::size_t i = 0; i < n; ++i)
       if (i != j) start.push_back(best.x[i]);
-    std::vector<double> others = start;
-    const auto profile = [&](double t) { return profile_value(model, n, j, t, others); };
-    const double lo = spectral::profile_end(profile, best.x[j], best.value, 0.0, kProfileRise, kUnitTolerance, &extra);
-    others = start;
-    const double hi = spectral::profile_end(profile, best.x[j], best.value, 1.0, kProfileRise, kUnitTolerance, &extra);
+    spectral::ProfileContinuation profile(f, n, j, best.x[j], start, 0.05, kUnitTolerance,
+                                          40 * static_cast<int>(n - 1));
+    const double lo =
+        spectral::profile_end(std::ref(profile), best.x[j], best.value, 0.0, kProfileRise, kUnitTolerance, &extra);
+    const double hi =
+        spectral::profile_end(std::ref(profile), best.x[j], best.value, 1.0, kProfileRise, kUnitTolerance, &extra);
     const VaryRange& v = in.vary[j];
     if (lo == 0.0 && hi == 1.0)
       throw data_error("--vary " + v.key + ": the measurement cannot identify " + v.key +

@@ -2,7 +2,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "kernels/spectral/band_test.hpp"
@@ -62,6 +64,32 @@ TEST_CASE("fit search: the profile interval of a Gaussian log-likelihood is its 
   const auto flat = [](double) { return 1.0; };
   CHECK(profile_end(flat, mu, 1.0, 0.0, rise, 1e-9, &evaluations) == 0.0);
   CHECK(profile_end(flat, mu, 1.0, 1.0, rise, 1e-9, &evaluations) == 1.0);
+}
+
+TEST_CASE("fit search: the profile continues from the nearest solved point, not from the range's end") {
+  // A ridge y = t whose profile is ((t - 0.5)/0.1)^2, and a basin at y = 0.02 of height 30 beside it: a
+  // profile search started from the range end's optimum (y near 0) falls into the basin near t = 0.5.
+  const BoxObjective f = [](const std::vector<double>& x) {
+    const double ridge = std::pow((x[1] - x[0]) / 0.05, 2) + std::pow((x[0] - 0.5) / 0.1, 2);
+    const double basin = 30.0 + std::pow((x[1] - 0.02) / 0.01, 2);
+    return std::min(ridge, basin);
+  };
+  const double rise = 3.84 / 2.0, end = 0.1 * std::sqrt(rise);
+  int evaluations = 0;
+  ProfileContinuation profile(f, 2, 0, 0.5, {0.5}, 0.05, 1e-4, 40);
+  const double lo = profile_end(std::ref(profile), 0.5, 0.0, 0.0, rise, 1e-4, &evaluations);
+  const double hi = profile_end(std::ref(profile), 0.5, 0.0, 1.0, rise, 1e-4, &evaluations);
+  CHECK(lo == doctest::Approx(0.5 - end).epsilon(2e-3));
+  CHECK(hi == doctest::Approx(0.5 + end).epsilon(2e-3));
+  // The start carried over from the previous call (the former rule) collapses the lower end onto 0.5.
+  std::vector<double> others{0.5};
+  const auto carried = [&](double t) {
+    const BoxObjective g = [&](const std::vector<double>& o) { return f({t, o[0]}); };
+    const BoxMinimum m = box_minimum(g, others, 0.05, 1e-4, 40);
+    others = m.x;
+    return m.value;
+  };
+  CHECK(profile_end(carried, 0.5, 0.0, 0.0, rise, 1e-4, &evaluations) > 0.5 - 0.5 * end);
 }
 
 TEST_CASE("fit search: Hessian and correlation of a bivariate Gaussian's negative log-likelihood") {
