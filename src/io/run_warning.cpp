@@ -20,12 +20,13 @@ void warn(const std::string& text, bool loud) {
 
 RunWarningCapture::RunWarningCapture() {
   const std::lock_guard<std::mutex> lock(capture_mutex);
+  outer_ = capture;
   capture = &lines_;
 }
 
 RunWarningCapture::~RunWarningCapture() {
   const std::lock_guard<std::mutex> lock(capture_mutex);
-  capture = nullptr;
+  capture = outer_;
 }
 
 }  // namespace rollspec::io

@@ -10,7 +10,8 @@ namespace rollspec::io {
 // Prints "rollspec: warning: TEXT" ("WARNING" when loud), or hands it to the capture in force.
 void warn(const std::string& text, bool loud = false);
 
-// While one is alive, warn() appends its lines here instead of printing them (not nested).
+// While one is alive, warn() appends its lines here instead of printing them; an inner capture (a
+// jackknife run inside a fit) takes them while it lives, then hands warn() back to the outer one.
 class RunWarningCapture {
  public:
   RunWarningCapture();
@@ -21,6 +22,7 @@ class RunWarningCapture {
 
  private:
   std::vector<std::string> lines_;
+  std::vector<std::string>* outer_;
 };
 
 }  // namespace rollspec::io
