@@ -6,6 +6,13 @@
 //   (a) V_J = (N - 1)/N sum_i (theta_i - mean theta)^2
 //   (b) s^2 = s_w^2 + V_J, s_w = h / t_{K-1}(level), nu = s^4 / (s_w^4/(K - 1) + V_J^2/(N - 1)),
 //       widened half width t_nu(level) s
+//   (c) the part of (a) that is the N ensembles' own sampling noise, removed from it: with x_ir
+//       realisation r's value (linear: a bin's PSD, a band's average) under sub-table i, m_i its
+//       mean over K realisations, d_ir = x_ir - (1/N) sum_j x_jr (the same realisation's mean over
+//       the N runs), q = sum_r sum_i d_ir^2 and s_i^2 the variance of d_ir over r,
+//       sum_i s_i^2 = (q - K sum_i (m_i - mean m)^2)/(K - 1),
+//       noise = (10/ln 10)^2 (N - 1)/N sum_i s_i^2 / (K mean m^2)   (dB^2, to first order)
+//       table variance V = max(V_J - noise, 0)
 // (b) is applied to each side of an interval on its own (D-21's interval is not symmetric).
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +26,14 @@ double jackknife_variance(const double* theta, std::size_t n);
 // (a) by pairs, sum_i (theta_i - mean)^2 = (1/N) sum_{i<j} (theta_i - theta_j)^2: the plain
 // reference for the tests (no mean is formed).
 double jackknife_variance_reference(const double* theta, std::size_t n);
+
+// (c) from the sums a combined run keeps: q, and the N runs' means m[0..n) over K realisations.
+// NaN when the mean of m is not positive or K < 2.
+double paired_noise_variance(double q, const double* m, std::size_t n, std::uint64_t K);
+
+// (c) directly from the paired values x[i * K + r] (run i, realisation r), two passes per run:
+// the plain reference for the tests.
+double paired_noise_variance_reference(const double* x, std::size_t n, std::uint64_t K);
 
 struct WidenedHalfWidth {
   double half_width = 0.0;  // t_nu s, in the units of h

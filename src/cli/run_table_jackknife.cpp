@@ -1,6 +1,8 @@
 #include "src/cli/run_table_jackknife.hpp"
 
 #include <cstdio>
+#include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "src/cli/run_phases.hpp"
@@ -11,34 +13,81 @@
 
 namespace rollspec::cli {
 
+namespace {
+// Sums of value block i of the combined run: run i's own ensemble sums.
+ensemble::EnsembleSums block(const ensemble::EnsembleSums& all, std::size_t i, std::size_t nv) {
+  ensemble::EnsembleSums b;
+  const auto first = static_cast<std::ptrdiff_t>(i * nv), last = static_cast<std::ptrdiff_t>((i + 1) * nv);
+  b.sum.assign(all.sum.begin() + first, all.sum.begin() + last);
+  b.sum_sq.assign(all.sum_sq.begin() + first, all.sum_sq.begin() + last);
+  b.count = all.count;
+  b.computed = all.computed;
+  b.seconds = all.seconds;
+  return b;
+}
+
+// After the N runs of realisation `values` filled their blocks: q's summand, sum_i (x_i - mean x)^2,
+// for each of the leading `lin` linear values (D-30c), into `q`.
+void paired_squares(const double* values, std::size_t n, std::size_t nv, std::size_t lin, double* q) {
+  for (std::size_t j = 0; j < lin; ++j) {
+    double mean = 0.0;
+    for (std::size_t i = 0; i < n; ++i) mean += values[i * nv + j];
+    mean /= static_cast<double>(n);
+    double sq = 0.0;
+    for (std::size_t i = 0; i < n; ++i) sq += (values[i * nv + j] - mean) * (values[i * nv + j] - mean);
+    q[j] = sq;
+  }
+}
+}  // namespace
+
 void run_table_jackknife(const study::Study& s, const StudyReload& reload, scenes::EnsembleScene& scene,
                          const ensemble::EnsembleConfig& cfg, bool quiet, bool rebuild) {
   if (!study::StiffnessSection::asks_table_jackknife(s) || cfg.only >= 0) return;
   const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
-  const long long n = stiffness.realisations;
-  std::vector<io::PsdEnsemble> subs;
-  for (long long i = 0; i < n; ++i) {
-    if (!quiet)
-      std::fprintf(stderr, "table jackknife: the ensemble with sub-table %lld of %lld (surface %lld left out)\n", i + 1,
-                   n, i);
-    const study::Study sub = reload(study::StiffnessSection::leave_out_sets(i));
-    const auto sub_scene = [&sub] {
+  const auto n = static_cast<std::size_t>(stiffness.realisations);
+  std::vector<std::unique_ptr<scenes::EnsembleScene>> subs;
+  for (std::size_t i = 0; i < n; ++i) {
+    const study::Study sub = reload(study::StiffnessSection::leave_out_sets(static_cast<long long>(i)));
+    subs.push_back([&sub] {
       // The full table's study again: its construction warnings were said once, by the full run.
       const io::RunWarningCapture already_said;
       return make_scene<scenes::EnsembleScene>(sub);
-    }();
-    sub_scene->prepare(/*quiet=*/true, rebuild);  // its table is cached: the full table's scene built it
-    ensemble::EnsembleConfig c = cfg;
-    c.checkpoint_dir.clear();
-    c.resume = false;
-    c.quiet = quiet;
-    c.study_hash = scenes::study_result_hash(sub);
-    const ensemble::EnsembleSums sums = ensemble::run_ensemble(
-        c, sub_scene->values_per_realisation(),
-        [&](std::uint64_t id, int thread, double* values) { sub_scene->run_realisation(id, thread, values); });
-    if (ensemble::mpi_rank() == 0) subs.push_back(sub_scene->spectra(sums));
+    }());
+    subs.back()->prepare(/*quiet=*/true, rebuild);  // its table is cached: the full table's scene built it
   }
-  if (ensemble::mpi_rank() == 0) scene.include_table_error(io::table_jackknife(subs, "stiffness table"));
+  const std::size_t nv = scene.values_per_realisation(), lin = scene.linear_spectral_values();
+  for (const auto& sub : subs)
+    if (sub->values_per_realisation() != nv)
+      throw std::logic_error("table jackknife: sub-table scene of another shape");
+  if (!quiet)
+    std::fprintf(stderr,
+                 "table jackknife: the ensemble again with each of the %zu sub-tables (one surface left out of each), "
+                 "realisation by realisation\n",
+                 n);
+  // One ensemble whose realisation runs the N sub-tables' scenes on the same streams (common random
+  // numbers), so that the same realisation's values can be paired across them (D-30c).
+  ensemble::EnsembleConfig c = cfg;
+  c.checkpoint_dir.clear();
+  c.resume = false;
+  c.quiet = quiet;
+  const ensemble::EnsembleSums sums =
+      ensemble::run_ensemble(c, n * nv + lin, [&](std::uint64_t id, int thread, double* values) {
+        for (std::size_t i = 0; i < n; ++i) subs[i]->run_realisation(id, thread, values + i * nv);
+        paired_squares(values, n, nv, lin, values + n * nv);
+      });
+  if (ensemble::mpi_rank() != 0) return;
+  std::vector<io::PsdEnsemble> spectra;
+  io::PairedSums paired;
+  paired.realisations = sums.count;
+  paired.q.assign(sums.sum.begin() + static_cast<std::ptrdiff_t>(n * nv), sums.sum.end());
+  for (std::size_t i = 0; i < n; ++i) {
+    const ensemble::EnsembleSums b = block(sums, i, nv);
+    spectra.push_back(subs[i]->spectra(b));
+    std::vector<double> m(lin);
+    for (std::size_t j = 0; j < lin; ++j) m[j] = b.mean(j);
+    paired.means.push_back(std::move(m));
+  }
+  scene.include_table_error(io::table_jackknife(spectra, paired, "stiffness table"));
 }
 
 }  // namespace rollspec::cli

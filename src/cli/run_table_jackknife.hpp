@@ -3,7 +3,8 @@
 // the ensemble with the full table, the same ensemble (study seed, K, realisation streams) once per
 // leave-one-out sub-table, each by its own scene of the study with table_leave_out = i; the
 // jackknife variance of their levels is handed to `scene`, whose write widens its intervals.
-// The sub-table ensembles keep no checkpoint: an interrupted run resumes the full-table ensemble
+// The sub-table ensembles run as one ensemble whose realisations run every sub-table (D-30c pairs
+// them); it keeps no checkpoint: an interrupted run resumes the full-table ensemble
 // from its checkpoint and runs the sub-tables again.
 #include <functional>
 #include <string>

@@ -58,14 +58,14 @@ void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   for (std::size_t i = 0; i < bin_sd.size(); ++i) bin_sd[i] = std::sqrt(t.bin_variance[i]);
   for (std::size_t i = 0; i < band_sd.size(); ++i) band_sd[i] = std::sqrt(t.band_variance[i]);
   w.write("/psd/table_std_db", {ns, nf}, bin_sd.data(), "dB",
-          "jackknife standard error of the bin's level from the stiffness table's own surfaces (kernels/spectral "
-          "D-30; NaN: a bin without power)");
+          "standard error of the bin's level from the stiffness table's own surfaces: the jackknife less the "
+          "runs' own noise (kernels/spectral D-30c; NaN: a bin without power)");
   w.attribute("/psd/table_std_db", "_FillValue", static_cast<double>(NAN));
   w.attach_scale("/psd/table_std_db", "/psd/sensor", 0);
   w.attach_scale("/psd/table_std_db", "/psd/frequency", 1);
   w.write("/bands/table_std_db", {ns, nb}, band_sd.data(), "dB",
-          "jackknife standard error of the band level from the stiffness table's own surfaces (kernels/spectral "
-          "D-30; NaN: a band without power)");
+          "standard error of the band level from the stiffness table's own surfaces: the jackknife less the "
+          "runs' own noise (kernels/spectral D-30c; NaN: a band without power)");
   w.attribute("/bands/table_std_db", "_FillValue", static_cast<double>(NAN));
   w.attach_scale("/bands/table_std_db", "/bands/sensor", 0);
   w.attach_scale("/bands/table_std_db", "/bands/centre_frequency", 1);

@@ -1,5 +1,6 @@
 #include "src/io/table_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,7 +21,21 @@ std::vector<double> band_levels_db(const PsdEnsemble& e) {
   return level;
 }
 
-TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const std::string& table) {
+namespace {
+// D-30c at value j of the paired sums: the runs' own noise in dB^2.
+double paired_noise(const PairedSums& p, std::size_t j, std::vector<double>& m) {
+  for (std::size_t i = 0; i < m.size(); ++i) m[i] = p.means[i].at(j);
+  return spectral::paired_noise_variance(p.q.at(j), m.data(), m.size(), p.realisations);
+}
+
+// (a) less (c), at least 0; (a) alone where either has no value (NaN stays NaN).
+double table_variance(double jackknife, double noise) {
+  return std::isfinite(noise) && std::isfinite(jackknife) ? std::max(0.0, jackknife - noise) : jackknife;
+}
+}  // namespace
+
+TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
+                           const std::string& table) {
   TableError t;
   t.surfaces = sub_tables.size();
   t.table = table;
@@ -31,16 +46,23 @@ TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const std
     if (e.mean.size() != bins) throw std::logic_error("table jackknife: sub-table spectra of different shapes");
     bands.push_back(band_levels_db(e));
   }
-  std::vector<double> theta(n);
+  const std::size_t nb = bands[0].size();
+  if (paired.means.size() != n || paired.q.size() != bins + nb)
+    throw std::logic_error("table jackknife: paired sums of another shape than the spectra");
+  std::vector<double> theta(n), m(n);
   t.bin_variance.resize(bins);
+  t.bin_noise.resize(bins);
   for (std::size_t i = 0; i < bins; ++i) {
     for (std::size_t j = 0; j < n; ++j) theta[j] = 10.0 * std::log10(sub_tables[j].mean[i]);
-    t.bin_variance[i] = spectral::jackknife_variance(theta.data(), n);
+    t.bin_noise[i] = paired_noise(paired, i, m);
+    t.bin_variance[i] = table_variance(spectral::jackknife_variance(theta.data(), n), t.bin_noise[i]);
   }
-  t.band_variance.resize(bands[0].size());
-  for (std::size_t i = 0; i < bands[0].size(); ++i) {
+  t.band_variance.resize(nb);
+  t.band_noise.resize(nb);
+  for (std::size_t i = 0; i < nb; ++i) {
     for (std::size_t j = 0; j < n; ++j) theta[j] = bands[j].at(i);
-    t.band_variance[i] = spectral::jackknife_variance(theta.data(), n);
+    t.band_noise[i] = paired_noise(paired, bins + i, m);
+    t.band_variance[i] = table_variance(spectral::jackknife_variance(theta.data(), n), t.band_noise[i]);
   }
   return t;
 }

@@ -310,6 +310,8 @@ class BallOnBeam final : public EnsembleScene {
     return BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).spectra(sums);
   }
 
+  std::size_t linear_spectral_values() const override { return rows_->linear_values(); }
+
   void include_table_error(io::TableError e) override { table_error_ = std::move(e); }
 
  private:

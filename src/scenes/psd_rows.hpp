@@ -31,6 +31,10 @@ class PsdRows {
   std::size_t n_freq() const { return frequency_.size(); }
   std::size_t size() const { return 2 * spectra() + extras_ + products() + rows() * bands_.size(); }
 
+  // The leading values in linear units, what the table jackknife pairs (D-30c): rows x nf PSD, then
+  // rows x nb band values.
+  std::size_t linear_values() const { return spectra(); }
+
   double* row(double* values, std::size_t r) const { return values + r * n_freq(); }
   std::size_t extra_index(std::size_t i) const { return 2 * spectra() + i; }
   double* extras(double* values) const { return values + extra_index(0); }

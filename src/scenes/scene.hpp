@@ -80,6 +80,11 @@ class EnsembleScene : public Scene {
   virtual io::PsdEnsemble spectra(const ensemble::EnsembleSums&) const {
     throw std::logic_error("this scene has no stiffness table to jackknife");
   }
+  // The number of leading values of a realisation that are its spectra in linear units, in the
+  // order of PsdEnsemble's bins and then its bands: what the jackknife pairs across runs (D-30c).
+  virtual std::size_t linear_spectral_values() const {
+    throw std::logic_error("this scene has no stiffness table to jackknife");
+  }
   virtual void include_table_error(io::TableError) { throw std::logic_error("this scene has no stiffness table"); }
 };
 

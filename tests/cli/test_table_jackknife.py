@@ -4,7 +4,8 @@ stiffness table's own sampling error by a leave-one-surface-out jackknife.
 On seed 001 beam R with a small 3-surface table: the central values are those of the run without the
 jackknife bit for bit; the sub-tables the jackknife caches are those `table_leave_out = i` builds on its
 own, bit for bit; and every band's and bin's interval is widened by exactly the term computed here from
-the three leave-one-out runs made separately with `table_leave_out`.
+the three leave-one-out runs made separately with `table_leave_out`: their jackknife (D-30a) less the
+runs' own noise (D-30c), which is computed here from each realisation of each of them run alone (--only).
 """
 import h5py
 import numpy as np
@@ -51,6 +52,30 @@ def jackknife(theta):
     return (N - 1) / N * ((theta - theta.mean(axis=0)) ** 2).sum(axis=0)
 
 
+def paired_noise(x):
+    """D-30c from the paired values x[i, r, ...] (sub-table i, realisation r; linear), as written down:
+    (10/ln 10)^2 (N - 1)/N sum_i var_r(x_ir - mean_j x_jr) / (K mean^2)."""
+    d = x - x.mean(axis=0)
+    s2 = d.var(axis=1, ddof=1).sum(axis=0)
+    return (10 / np.log(10)) ** 2 * (N - 1) / N * s2 / (K * x.mean(axis=(0, 1)) ** 2)
+
+
+def each_realisation(tmp_path, tables):
+    """x[i, r]: realisation r's PSD (linear) and band values under sub-table i, each run alone."""
+    bins, bands = [], []
+    for i in range(N):
+        for r in range(K):
+            out = tmp_path / f"only-{i}-{r}.h5"
+            res = run(["run", STUDY, "--out", out, "--quiet", "--only", str(r),
+                       *sets(*SMALL, f"stiffness.table_dir={tables}", f"stiffness.table_leave_out={i}")])
+            assert res.returncode == 0, res.stderr
+            with h5py.File(out) as f:
+                bins.append(f["psd/mean"][:])
+                bands.append(10 ** (f["bands/level_db"][:] / 10))
+    shape = (N, K)
+    return np.reshape(bins, shape + bins[0].shape), np.reshape(bands, shape + bands[0].shape)
+
+
 def test_jackknife_widens_by_the_leave_one_out_runs_and_keeps_the_central_values(tmp_path):
     shared, alone = tmp_path / "tables", tmp_path / "alone"
     shared.mkdir()
@@ -86,18 +111,23 @@ def test_jackknife_widens_by_the_leave_one_out_runs_and_keeps_the_central_values
         with h5py.File(path) as f:
             levels.append(f["bands/level_db"][:])
             bins.append(10 * np.log10(f["psd/mean"][:]))
-    v = jackknife(levels)
-    assert np.median(np.sqrt(v)) > 0.05  # the table term is not negligible here: the test can see it
-    np.testing.assert_array_equal(jsd, np.sqrt(v))
+    x_bins, x_bands = each_realisation(tmp_path, alone)
+    # The runs' means are the means of their realisations run alone (the same streams).
+    np.testing.assert_allclose(10 * np.log10(x_bands.mean(axis=1)), levels, rtol=0, atol=1e-9)
+    raw, noise = jackknife(levels), paired_noise(x_bands)
+    v = np.maximum(raw - noise, 0)
+    # Both terms are seen here: the noise is a real part of the jackknife, and a table term is left.
+    assert np.median(noise / raw) > 0.05 and np.median(np.sqrt(v)) > 0.05
+    np.testing.assert_allclose(jsd, np.sqrt(v), rtol=1e-9, atol=1e-9)
     want_lo, want_hi = widened(level, lo, hi, v)
     np.testing.assert_allclose(jlo, want_lo, rtol=0, atol=1e-7)  # dB; the two t quantiles' own accuracy
     np.testing.assert_allclose(jhi, want_hi, rtol=0, atol=1e-7)
-    assert np.all(jhi - jlo > hi - lo)
+    assert np.all(jhi - jlo >= hi - lo) and np.all((jhi - jlo > hi - lo)[v > 0])
 
     has_power = mean > 0
-    vb = jackknife(np.where(has_power, bins, 0.0))
+    vb = np.maximum(jackknife(np.where(has_power, bins, 0.0)) - paired_noise(np.where(has_power, x_bins, 1.0)), 0)
     # numpy's log10 and the C library's differ in the last bits
-    np.testing.assert_allclose(jbsd[has_power], np.sqrt(vb)[has_power], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(jbsd[has_power], np.sqrt(vb)[has_power], rtol=1e-9, atol=1e-9)
     assert np.all(np.isnan(jbsd[~has_power]))
     db = 10 * np.log10(np.where(has_power, mean, 1.0))
     want_blo, want_bhi = widened(db, 10 * np.log10(np.where(has_power, blo, 1.0)),
