@@ -6,13 +6,13 @@
 //   (a) V_J = (N - 1)/N sum_i (theta_i - mean theta)^2
 //   (b) s^2 = s_w^2 + V_J, s_w = h / t_{K-1}(level), nu = s^4 / (s_w^4/(K - 1) + V_J^2/(N - 1)),
 //       widened half width t_nu(level) s
-//   (c) the part of (a) that is the N ensembles' own sampling noise, removed from it: with x_ir
+//   (c) the part of (a) that is the N ensembles' own sampling noise (reported beside (a)): with x_ir
 //       realisation r's value (linear: a bin's PSD, a band's average) under sub-table i, m_i its
 //       mean over K realisations, d_ir = x_ir - (1/N) sum_j x_jr (the same realisation's mean over
 //       the N runs), q = sum_r sum_i d_ir^2 and s_i^2 the variance of d_ir over r,
 //       sum_i s_i^2 = (q - K sum_i (m_i - mean m)^2)/(K - 1),
 //       noise = (10/ln 10)^2 (N - 1)/N sum_i s_i^2 / (K mean m^2)   (dB^2, to first order)
-//       table variance V = max(V_J - noise, 0)
+//       V_J - noise is an unbiased estimate of the table's term alone, but too noisy to widen by
 // (b) is applied to each side of an interval on its own (D-21's interval is not symmetric).
 #include <cstddef>
 #include <cstdint>
@@ -41,8 +41,8 @@ struct WidenedHalfWidth {
 };
 
 // (b): a half width h of the realisations' interval at `level` from K realisations, widened by a
-// jackknife variance v over N surfaces. h unchanged (dof K - 1) when v is 0, not finite, or h is
-// not a finite positive width (no interval).
+// jackknife variance v over N surfaces. h unchanged (dof K - 1) when v is 0, not
+// finite, or h is not a finite positive width (no interval).
 WidenedHalfWidth widen_half_width(double h, std::uint64_t realisations, double v, std::uint64_t surfaces, double level);
 
 }  // namespace rollspec::spectral

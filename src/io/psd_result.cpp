@@ -46,6 +46,21 @@ void write_sensor_positions(Hdf5Writer& w, const std::string& group, const std::
 }
 
 namespace {
+// One of the table's terms as a standard deviation in dB, rows x (bins or bands), with its scales.
+void write_table_std(Hdf5Writer& w, const std::string& group, const std::vector<double>& variance, std::size_t columns,
+                     const std::string& name, const std::string& description) {
+  const bool bands = group == "/bands";
+  std::vector<double> sd(variance.size());
+  for (std::size_t i = 0; i < sd.size(); ++i) sd[i] = std::sqrt(variance[i]);
+  const std::string path = group + "/" + name;
+  w.write(path, {sd.size() / columns, columns}, sd.data(), "dB",
+          (bands ? "band level: " : "bin's level: ") + description + " (kernels/spectral D-30; NaN: no power)");
+  w.attribute(path, "_FillValue", static_cast<double>(NAN));
+  w.attach_scale(path, group + "/sensor", 0);
+  w.attach_scale(path, group + (bands ? "/centre_frequency" : "/frequency"), 1);
+  if (bands) w.attribute(path, "coordinates", std::string("nominal_frequency"));
+}
+
 // What the intervals include, and the table's own term where they include it (D-30).
 void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   const TableError& t = e.table_error;
@@ -53,24 +68,15 @@ void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   w.attribute("/psd", "interval_includes", includes);
   w.attribute("/bands", "interval_includes", includes);
   if (t.surfaces == 0) return;
-  const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
-  std::vector<double> bin_sd(t.bin_variance.size()), band_sd(t.band_variance.size());
-  for (std::size_t i = 0; i < bin_sd.size(); ++i) bin_sd[i] = std::sqrt(t.bin_variance[i]);
-  for (std::size_t i = 0; i < band_sd.size(); ++i) band_sd[i] = std::sqrt(t.band_variance[i]);
-  w.write("/psd/table_std_db", {ns, nf}, bin_sd.data(), "dB",
-          "standard error of the bin's level from the stiffness table's own surfaces: the jackknife less the "
-          "runs' own noise (kernels/spectral D-30c; NaN: a bin without power)");
-  w.attribute("/psd/table_std_db", "_FillValue", static_cast<double>(NAN));
-  w.attach_scale("/psd/table_std_db", "/psd/sensor", 0);
-  w.attach_scale("/psd/table_std_db", "/psd/frequency", 1);
-  w.write("/bands/table_std_db", {ns, nb}, band_sd.data(), "dB",
-          "standard error of the band level from the stiffness table's own surfaces: the jackknife less the "
-          "runs' own noise (kernels/spectral D-30c; NaN: a band without power)");
-  w.attribute("/bands/table_std_db", "_FillValue", static_cast<double>(NAN));
-  w.attach_scale("/bands/table_std_db", "/bands/sensor", 0);
-  w.attach_scale("/bands/table_std_db", "/bands/centre_frequency", 1);
-  w.attribute("/bands/table_std_db", "coordinates", std::string("nominal_frequency"));
+  const std::size_t nf = e.frequency.size();
+  const std::string table = "the stiffness table's own error by a jackknife over its surfaces, in the intervals (a)";
+  const std::string noise = "the part of table_std_db that is the sub-table runs' own noise (c)";
+  write_table_std(w, "/psd", t.bin_variance, nf, "table_std_db", table);
+  write_table_std(w, "/psd", t.bin_noise, nf, "table_noise_std_db", noise);
+  write_table_std(w, "/bands", t.band_variance, nb, "table_std_db", table);
+  write_table_std(w, "/bands", t.band_noise, nb, "table_noise_std_db", noise);
   w.attribute("/bands", "table_jackknife_surfaces", static_cast<std::int64_t>(t.surfaces));
+  if (!t.noise_warning.empty()) w.attribute("/bands", "table_noise_warning", t.noise_warning);
 }
 }  // namespace
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "kernels/spectral/table_jackknife.hpp"
@@ -28,10 +29,6 @@ double paired_noise(const PairedSums& p, std::size_t j, std::vector<double>& m) 
   return spectral::paired_noise_variance(p.q.at(j), m.data(), m.size(), p.realisations);
 }
 
-// (a) less (c), at least 0; (a) alone where either has no value (NaN stays NaN).
-double table_variance(double jackknife, double noise) {
-  return std::isfinite(noise) && std::isfinite(jackknife) ? std::max(0.0, jackknife - noise) : jackknife;
-}
 }  // namespace
 
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
@@ -54,17 +51,45 @@ TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const Pai
   t.bin_noise.resize(bins);
   for (std::size_t i = 0; i < bins; ++i) {
     for (std::size_t j = 0; j < n; ++j) theta[j] = 10.0 * std::log10(sub_tables[j].mean[i]);
+    t.bin_variance[i] = spectral::jackknife_variance(theta.data(), n);
     t.bin_noise[i] = paired_noise(paired, i, m);
-    t.bin_variance[i] = table_variance(spectral::jackknife_variance(theta.data(), n), t.bin_noise[i]);
   }
   t.band_variance.resize(nb);
   t.band_noise.resize(nb);
   for (std::size_t i = 0; i < nb; ++i) {
     for (std::size_t j = 0; j < n; ++j) theta[j] = bands[j].at(i);
+    t.band_variance[i] = spectral::jackknife_variance(theta.data(), n);
     t.band_noise[i] = paired_noise(paired, bins + i, m);
-    t.band_variance[i] = table_variance(spectral::jackknife_variance(theta.data(), n), t.band_noise[i]);
   }
   return t;
+}
+
+std::string table_noise_warning(const TableError& t, std::uint64_t K) {
+  std::vector<double> share, ratio;  // noise / jackknife, and noise / table term, per band
+  for (std::size_t i = 0; i < t.band_variance.size(); ++i) {
+    const double j = t.band_variance[i], noise = std::min(t.band_noise[i], j), v = j - noise;
+    if (!(j > 0.0) || !std::isfinite(j) || !std::isfinite(noise)) continue;
+    share.push_back(noise / j);
+    ratio.push_back(v > 0.0 ? noise / v : HUGE_VAL);
+  }
+  if (share.empty()) return "";
+  const auto median = [](std::vector<double> x) {
+    std::nth_element(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2), x.end());
+    return x[x.size() / 2];
+  };
+  const double noise = median(share), r = median(ratio);
+  if (noise <= 0.5) return "";
+  char text[400];
+  const std::string k_needed =
+      std::isfinite(r)
+          ? "about K = " + std::to_string(static_cast<long long>(std::ceil(3.0 * r * static_cast<double>(K))))
+          : "a K large enough that the table's term shows above it";
+  std::snprintf(text, sizeof text,
+                "table jackknife: %.0f %% of the jackknife variance (median over the bands) is the sub-table runs' own "
+                "noise, not the table's (the realisations are chaotic in the table), so at K = %llu the intervals are "
+                "wider than the table's error alone needs (kernels/spectral D-30c); ",
+                100.0 * noise, static_cast<unsigned long long>(K));
+  return text + k_needed + " would bring the noise to a quarter of the table's term";
 }
 
 std::string interval_includes(const TableError& t) {

@@ -4,8 +4,8 @@
 // kernels/spectral/README.md D-30). The ensemble runs once with the full table (the result's
 // central values) and once with each of its N sub-tables on the same realisation streams; the
 // jackknife variance of each bin's and band's level (dB) over the N runs widens that bin's or
-// band's interval on each side (D-30b), less the part of it that is the runs' own sampling noise,
-// measured from the same realisations paired across the runs (D-30c).
+// band's interval on each side (D-30b). The part of it that is the runs' own sampling noise is
+// measured from the same realisations paired across the runs (D-30c) and reported beside it.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,11 +16,12 @@ struct PsdEnsemble;
 
 struct TableError {
   std::uint64_t surfaces = 0;         // N (0: the intervals are conditional on the table)
-  std::vector<double> bin_variance;   // rows x frequency, dB^2 (NaN where a bin has no power in some run)
+  std::vector<double> bin_variance;   // the jackknife, rows x frequency, dB^2 (NaN: a bin without power in some run)
   std::vector<double> band_variance;  // rows x bands, dB^2
-  std::vector<double> bin_noise;      // what D-30c removed from the jackknife, dB^2 (NaN: nothing)
+  std::vector<double> bin_noise;      // the part of it that is the runs' own noise (D-30c), dB^2 (NaN: unknown)
   std::vector<double> band_noise;
-  std::string table;  // the table the intervals are conditional on ("": none)
+  std::string table;          // the table the intervals are conditional on ("": none)
+  std::string noise_warning;  // non-empty when the term is mostly the runs' own noise (table_noise_warning)
 };
 
 // Band levels (dB) of e, rows x bands, as /bands/level_db holds them.
@@ -35,16 +36,22 @@ struct PairedSums {
   std::vector<std::vector<double>> means;  // [run][bins, then bands]
 };
 
-// The table's variances from the N sub-table ensembles (their spectra; same rows, bins, bands):
-// the jackknife (D-30a) less the runs' own noise (D-30c), at least 0.
+// The table's variances from the N sub-table ensembles (their spectra; same rows, bins, bands): the
+// jackknife (D-30a), and the runs' own noise in it (D-30c).
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
                            const std::string& table);
+
+// When more than half of the jackknife is the runs' own noise (D-30c, median over the bands), the
+// term is mostly that noise (realisations chaotic in the table) and the intervals are wider than the
+// table's error alone needs: the sentence that says so, with the K that would bring the noise to a
+// quarter of the table's term (the noise falls as 1/K). Empty otherwise.
+std::string table_noise_warning(const TableError& t, std::uint64_t K);
 
 // The sentence /psd@interval_includes and /bands@interval_includes hold.
 std::string interval_includes(const TableError& t);
 
 // Widens the bin interval [lo, hi] of a bin of mean `mean` (linear units), or the band interval
-// [lo, hi] of level `level` (dB), by variance v (dB^2) of a table over `t.surfaces` (D-30b); K
+// [lo, hi] of level `level` (dB), by variance v (dB^2) of a table over `surfaces` (D-30b); K
 // realisations, confidence `level_p`. Unchanged where v is not finite or there is no interval.
 void widen_bin_interval(double mean, double& lo, double& hi, double v, std::uint64_t surfaces, std::uint64_t K,
                         double level_p);
