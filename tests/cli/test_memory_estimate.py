@@ -178,3 +178,20 @@ def test_resume_may_drop_the_reference_but_not_change_what_the_chunks_hold(tmp_p
         assert "reference" not in a
         assert a["/run"].attrs["realisations_computed"] < 400
     assert_bitwise_equal(ref, out)
+
+
+def test_table_jackknife_holds_its_sub_tables_scenes_and_the_estimate_says_so(tmp_path):
+    # [stiffness] table_error = jackknife runs the N sub-tables' scenes in one ensemble (kernels/spectral D-30c):
+    # N more scenes' time records and chunk sums alive at once. A small table (6 surfaces of 128^2) keeps it quick.
+    study = SOURCE / "studies" / "seed001-beam-r.ini"
+    small = ["stiffness.realisations=6", "surface.nx=128", "surface.ny=128", "study.realisations=8",
+             f"stiffness.table_dir={tmp_path}"]
+    plain, _ = estimate(study, *small)
+    jack, line = estimate(study, *small, "stiffness.table_error=jackknife")
+    assert "the sub-tables' scenes" in line and "[stiffness] table_error = jackknife" in line, line
+    assert jack > 1.5 * plain, (plain, jack)
+    sets = [a for s in small for a in ("--set", s)]
+    code, rss, err = peak_rss_of_run(["run", study, "--out", tmp_path / "jk.h5", "--quiet", *sets,
+                                      "--set", "stiffness.table_error=jackknife"])
+    assert code == 0, err
+    assert 0.5 < jack / rss < 2, (jack, rss)
