@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The stiffness table's own error in the band intervals by a leave-one-surface-out jackknife
-(kernels/spectral/README.md D-30); a measurement, not yet the engine's intervals.
+(kernels/spectral/README.md D-30): the coverage of its intervals, as `run` writes them (--engine) or combined here.
 
 usage: table_jackknife.py ROLLSPEC STUDY [--n 4] [--k 25] [--table-seeds 11,12,13,14,15]
                           [--ref-seeds 21,22,23,24] [--k-ref 400] [--seed 999] [--ref-seed 555] [--work DIR]
@@ -73,6 +73,10 @@ def main():
     p.add_argument("--engine", action="store_true", help="the intervals of run's table_error = jackknife")
     p.add_argument("--reuse-reference", action="store_true", help="keep reference files of an earlier call in --work")
     a = p.parse_args()
+    shared = set(a.table_seeds.split(",")) & set(a.ref_seeds.split(","))
+    if shared:
+        sys.exit(f"table_jackknife.py: --table-seeds and --ref-seeds share {','.join(sorted(shared))}: a test table "
+                 "must not be part of the reference")
     work = Path(a.work).resolve()
     (work / "tables").mkdir(parents=True, exist_ok=True)
     common = [f"stiffness.realisations={a.n}", f"stiffness.table_dir={work / 'tables'}"]
@@ -101,6 +105,7 @@ def main():
                 nominal = f["bands/nominal_frequency"][:]
                 keep = (nominal >= 99.0) & (nominal <= 5001.0)
                 var_j = f["bands/table_std_db"][:][:, keep] ** 2
+                noise = f["bands/table_noise_std_db"][:][:, keep] ** 2
             assert np.array_equal(level_j, level), "the jackknife run's central values differ from the plain run's"
             nu = np.full_like(var_j, np.nan)
             held.append((lo <= ref) & (ref <= hi))
@@ -109,7 +114,8 @@ def main():
             var_j_all.append(var_j)
             print(f"table seed {t}: coverage {np.mean(held[-1]):.3f} without, {np.mean(held_j[-1]):.3f} with the "
                   f"jackknife term (engine); median sqrt(V_J) {np.median(np.sqrt(var_j)):.3f} dB, median h "
-                  f"{np.median(0.5 * (hi - lo)):.3f} dB", flush=True)
+                  f"{np.median(0.5 * (hi - lo)):.3f} dB; the runs' own noise is {np.median(np.minimum(noise, var_j) / var_j):.2f} "
+                  "of V_J (median, D-30c)", flush=True)
             continue
         theta = []
         for i in range(a.n):
