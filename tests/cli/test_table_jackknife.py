@@ -4,9 +4,7 @@ stiffness table's own sampling error by a leave-one-surface-out jackknife.
 On seed 001 beam R with a small 3-surface table: the central values are those of the run without the
 jackknife bit for bit; the sub-tables the jackknife caches are those `table_leave_out = i` builds on its
 own, bit for bit; and every band's and bin's interval is widened by exactly the term computed here from
-the three leave-one-out runs made separately with `table_leave_out` (D-30a, b); the part of it that is
-the runs' own noise (D-30c) equals the one computed here from each realisation of each of them run alone
-(--only).
+the three leave-one-out runs made separately with `table_leave_out` (D-30a, b).
 """
 import h5py
 import numpy as np
@@ -53,30 +51,6 @@ def jackknife(theta):
     return (N - 1) / N * ((theta - theta.mean(axis=0)) ** 2).sum(axis=0)
 
 
-def paired_noise(x):
-    """D-30c from the paired values x[i, r, ...] (sub-table i, realisation r; linear), as written down:
-    (10/ln 10)^2 (N - 1)/N sum_i var_r(x_ir - mean_j x_jr) / (K mean^2)."""
-    d = x - x.mean(axis=0)
-    s2 = d.var(axis=1, ddof=1).sum(axis=0)
-    return (10 / np.log(10)) ** 2 * (N - 1) / N * s2 / (K * x.mean(axis=(0, 1)) ** 2)
-
-
-def each_realisation(tmp_path, tables):
-    """x[i, r]: realisation r's PSD (linear) and band values under sub-table i, each run alone."""
-    bins, bands = [], []
-    for i in range(N):
-        for r in range(K):
-            out = tmp_path / f"only-{i}-{r}.h5"
-            res = run(["run", STUDY, "--out", out, "--quiet", "--only", str(r),
-                       *sets(*SMALL, f"stiffness.table_dir={tables}", f"stiffness.table_leave_out={i}")])
-            assert res.returncode == 0, res.stderr
-            with h5py.File(out) as f:
-                bins.append(f["psd/mean"][:])
-                bands.append(10 ** (f["bands/level_db"][:] / 10))
-    shape = (N, K)
-    return np.reshape(bins, shape + bins[0].shape), np.reshape(bands, shape + bands[0].shape)
-
-
 def test_jackknife_widens_by_the_leave_one_out_runs_and_keeps_the_central_values(tmp_path):
     shared, alone = tmp_path / "tables", tmp_path / "alone"
     shared.mkdir()
@@ -114,19 +88,13 @@ def test_jackknife_widens_by_the_leave_one_out_runs_and_keeps_the_central_values
         with h5py.File(path) as f:
             levels.append(f["bands/level_db"][:])
             bins.append(10 * np.log10(f["psd/mean"][:]))
-    x_bins, x_bands = each_realisation(tmp_path, alone)
-    # The runs' means are the means of their realisations run alone (the same streams).
-    np.testing.assert_allclose(10 * np.log10(x_bands.mean(axis=1)), levels, rtol=0, atol=1e-9)
-    v, noise = jackknife(levels), paired_noise(x_bands)
-    # Both are seen here: the table term is not negligible, and part of it is the runs' own noise.
-    assert np.median(np.sqrt(v)) > 0.05 and 0.05 < np.median(noise / v) < 1
+    v = jackknife(levels)
+    assert np.median(np.sqrt(v)) > 0.05  # the table term is not negligible here: the test can see it
     np.testing.assert_array_equal(jsd, np.sqrt(v))
-    np.testing.assert_allclose(jnoise, np.sqrt(noise), rtol=1e-9, atol=0)
-    # run says so when the runs' own noise is most of the term (median share over the bands above a half)
-    share = np.median(np.minimum(noise, v) / v)
-    assert bool(warning) == (share > 0.5), (share, warning)
-    if warning:
-        assert f"{100 * share:.0f} % of the jackknife variance" in warning and f"K = {K}" in warning
+    # The runs' own noise in it (D-30c; its values: test_table_jackknife_noise.py), and the warning says so
+    # exactly when it is most of it (median share over the bands above a half).
+    share = np.median(np.minimum(jnoise ** 2, v) / v)
+    assert 0.05 < share < 1 and bool(warning) == (share > 0.5), (share, warning)
     want_lo, want_hi = widened(level, lo, hi, v)
     np.testing.assert_allclose(jlo, want_lo, rtol=0, atol=1e-7)  # dB; the two t quantiles' own accuracy
     np.testing.assert_allclose(jhi, want_hi, rtol=0, atol=1e-7)
@@ -134,8 +102,7 @@ def test_jackknife_widens_by_the_leave_one_out_runs_and_keeps_the_central_values
 
     has_power = mean > 0
     vb = jackknife(np.where(has_power, bins, 0.0))
-    nb = paired_noise(np.where(has_power, x_bins, 1.0))
-    np.testing.assert_allclose(jbnoise[has_power], np.sqrt(nb)[has_power], rtol=1e-9, atol=0)
+    assert np.all(jbnoise[has_power] >= 0) and np.all(np.isnan(jbnoise[~has_power]) | (jbnoise[~has_power] >= 0))
     # numpy's log10 and the C library's differ in the last bits
     np.testing.assert_allclose(jbsd[has_power], np.sqrt(vb)[has_power], rtol=1e-12, atol=0)
     assert np.all(np.isnan(jbsd[~has_power]))
