@@ -13,6 +13,7 @@ to reach code paths no shipped study takes. Exit 1 if anything differs.
 """
 import difflib
 import re
+import os
 import shutil
 import subprocess
 import sys
@@ -167,7 +168,14 @@ def main():
     if len(sys.argv) < 3:
         raise SystemExit(__doc__)
     before, after = (str(Path(b).resolve()) for b in sys.argv[1:3])
-    items = sys.argv[3:] or sorted(p.name for p in (SOURCE / "studies").glob("*.ini"))
+    # a study by its name in studies/ (a path to one there is taken by its name)
+    items = [Path(a).name for a in sys.argv[3:]] or sorted(p.name for p in (SOURCE / "studies").glob("*.ini"))
+    missing = [i for i in items if not (SOURCE / "studies" / i).is_file()]
+    if missing:
+        raise SystemExit(f"compare_results.py: no study {', '.join(missing)} in {SOURCE / 'studies'}")
+    for b in (before, after):
+        if not os.access(b, os.X_OK):
+            raise SystemExit(f"compare_results.py: {b}: not an executable rollspec")
     ok = True
     with tempfile.TemporaryDirectory(prefix="rollspec-compare-") as tmp:
         for item in items:
