@@ -6,7 +6,8 @@ A record holds
   title     what was measured (a heading on the page)
   command   the command that measured it, as run (shown above the table)
   date      the day it was measured (YYYY-MM-DD)
-  machine   {"cores": N, ...}: the machine's facts (cores are required)
+  machine   {"cores": N, ...}: the machine's facts (cores are required; other_work_cores: the cores
+            other work kept busy during the measurement, from /proc/stat, where the script measured it)
   builds    {name: {"description": text, ...}}: the builds measured; other fields (for example the
             build's own `rollspec version` line, which names its commit) are kept but not printed
   settings  how it was run (threads, repeats, medians), one sentence
@@ -22,6 +23,7 @@ import json
 import os
 import platform
 import re
+import shlex
 import subprocess
 from pathlib import Path
 
@@ -45,7 +47,7 @@ def command_line(argv):
             except ValueError:
                 return a
         return a
-    return " ".join(["/usr/bin/python3"] + [rel(a) for a in argv])
+    return shlex.join(["/usr/bin/python3"] + [rel(a) for a in argv])
 
 
 def machine():
@@ -56,15 +58,40 @@ def machine():
     return {"cores": os.cpu_count(), "cpu": model or platform.processor(), "system": platform.system()}
 
 
+def busy_seconds():
+    """CPU seconds every core of the machine has been busy since boot (/proc/stat; 0 where there is none)."""
+    stat = Path("/proc/stat")
+    if not stat.exists():
+        return 0.0
+    ticks = [int(x) for x in stat.read_text().split("\n", 1)[0].split()[1:]]
+    idle = ticks[3] + (ticks[4] if len(ticks) > 4 else 0)
+    return (sum(ticks[:8]) - idle) / os.sysconf("SC_CLK_TCK")
+
+
+def own_cpu():
+    """CPU seconds of this process and its finished children."""
+    import resource
+    return sum(u.ru_utime + u.ru_stime for u in (resource.getrusage(resource.RUSAGE_SELF),
+                                                  resource.getrusage(resource.RUSAGE_CHILDREN)))
+
+
+def other_work(busy_before, own_cpu, wall):
+    """Cores that other work kept busy while a benchmark ran: the machine's busy seconds minus its own."""
+    return max(0.0, (busy_seconds() - busy_before - own_cpu) / wall) if wall > 0 else 0.0
+
+
 def build_version(binary):
     """The binary's own `rollspec version` line (kept in the record, not printed)."""
     r = subprocess.run([str(binary), "version"], capture_output=True, text=True)
     return r.stdout.splitlines()[0] if r.returncode == 0 and r.stdout else "unknown"
 
 
-def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=None):
+def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=None, other_cores=None):
+    facts = machine()
+    if other_cores is not None:
+        facts["other_work_cores"] = round(other_cores, 2)
     record = {"title": title, "command": command_line(argv), "date": datetime.date.today().isoformat(),
-              "machine": machine(), "builds": builds, "settings": settings, "columns": columns, "rows": rows}
+              "machine": facts, "builds": builds, "settings": settings, "columns": columns, "rows": rows}
     if notes:
         record["notes"] = notes
     if data is not None:
@@ -74,6 +101,8 @@ def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=
 
 
 def looks_like_commit(text):
+    # 1.509577e-03 is a number, not a commit.
+    text = re.sub(r"(?<![0-9a-f.])\d*\.?\d+e[-+]?\d+(?![0-9a-f])", " ", text)
     return [w for w in re.findall(r"\b[0-9a-f]{7,40}\b", text)
             if re.search(r"[a-f]", w) and re.search(r"\d", w) and not re.fullmatch(r"\d+e\d+", w)]
 
@@ -136,8 +165,9 @@ def markdown(record, level=3):
     """A record as Markdown: heading, command, builds and machine, the table, the notes."""
     m = record["machine"]
     lines = [f"{'#' * level} {record['title']}", "", "Measured by", "", "```text", record["command"], "```", "",
-             f"on {record['date']}, {m['cores']} cores" + (f" ({m['cpu']})" if m.get("cpu") else "") + ". "
-             + record["settings"], ""]
+             f"on {record['date']}, {m['cores']} cores" + (f" ({m['cpu']})" if m.get("cpu") else "")
+             + (f"; other work kept {m['other_work_cores']:.1f} of them busy meanwhile"
+                if isinstance(m.get("other_work_cores"), (int, float)) else "") + ". " + record["settings"], ""]
     lines += [f"- **{name}**: {v['description']}" for name, v in record["builds"].items()]
     lines += ["", "| " + " | ".join(cell(c) for c in record["columns"]) + " |",
               "|" + "---|" * len(record["columns"])]

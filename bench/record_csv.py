@@ -7,13 +7,14 @@ which the documentation's benchmarks page renders under this command; stdout is 
       --describe "the build in words" [--env NAME=VALUE ...] [--notes TEXT] -- COMMAND [ARG ...]
 
 The first line of stdout that has a comma and no '#' opens the table (its headings); the table ends
-at the first blank line, comment or line with another number of cells. The build described is the
+at the first blank line, comment or line with fewer cells (more: the last cell held a comma). The build described is the
 first argument of COMMAND that is an executable rollspec binary or bench program; its `version` line
 is kept in the record when it has one (not printed on the page). Cells are kept as printed.
 """
 import argparse
 import csv
 import os
+import resource
 import subprocess
 import sys
 import time
@@ -36,6 +37,8 @@ def first_table(text):
         if not line.strip() or line.lstrip().startswith("#"):
             break
         row = next(csv.reader([line]))
+        if len(row) > len(head):  # an unquoted comma in the last (free-text) cell
+            row = row[:len(head) - 1] + [",".join(row[len(head) - 1:])]
         if len(row) != len(head):
             break
         rows.append(row)
@@ -55,9 +58,14 @@ def main():
     if not command:
         sys.exit("record_csv: no command after --")
     env = dict(os.environ, **dict(e.split("=", 1) for e in a.env))
+    busy, own = bench_record.busy_seconds(), bench_record.own_cpu()
+    child = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     r = subprocess.run(command, capture_output=True, text=True, env=env)
     wall = time.perf_counter() - t0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime - child.ru_utime + after.ru_stime - child.ru_stime
+    others = bench_record.other_work(busy, bench_record.own_cpu() - own, wall)
     sys.stdout.write(r.stdout)
     if r.returncode != 0:
         sys.exit(f"record_csv: {' '.join(command)} exited {r.returncode}\n{r.stderr[-3000:]}")
@@ -66,10 +74,11 @@ def main():
     build = {"description": a.describe}
     if binary:
         build["version"] = bench_record.build_version(binary)
-    settings = (f"Environment {', '.join(a.env)}; " if a.env else "") + f"the whole command took {wall:.0f} s wall."
+    took = f"whole command took {wall:.0f} s wall, {cpu:.0f} s CPU."
+    settings = f"Environment {', '.join(a.env)}; the {took}" if a.env else f"The {took}"
     bench_record.write(a.record, title=a.title, argv=sys.argv, builds={"measured": build}, settings=settings,
                        columns=[h.replace("_", " ") for h in head], rows=rows,
-                       notes=a.notes)
+                       notes=a.notes, other_cores=others)
 
 
 if __name__ == "__main__":

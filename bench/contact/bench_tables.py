@@ -135,6 +135,7 @@ def main():
     kinds = o.kinds.split(",")
     builds = {"reference": o.reference, "current": o.current}
     runs = {k: {b: [] for b in builds} for k in kinds}
+    busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     for rep in range(o.repeats):  # interleaved: every kind and build once per round
         for k in kinds:
             for b, binary in builds.items():
@@ -142,6 +143,7 @@ def main():
                 runs[k][b].append(r)
                 print(f"round {rep + 1} {k:13s} {b:9s} {r['wall']:8.2f} s wall {r['cpu']:8.2f} s CPU  "
                       f"iterations/position {r['iterations']}", file=sys.stderr, flush=True)
+    others = bench_record.other_work(busy, bench_record.own_cpu() - own, time.perf_counter() - t0)
     summary = {"reference": o.reference, "current": o.current, "threads": o.threads, "repeats": o.repeats,
                "kinds": {}}
     cells = []
@@ -189,7 +191,7 @@ def main():
             "iterations). Max rel diff: the largest difference of the two builds' table values, relative to "
             "each column's largest magnitude. Repeat bits: every run of a build wrote the same table bits. "
             "Estimate: the table's \"build about X s CPU\" (what `rollspec plan` shows) over the measured CPU.",
-            data=summary)
+            data=summary, other_cores=others)
 
 
 if __name__ == "__main__":
