@@ -119,6 +119,11 @@ def same_bits(runs):
                for r in runs[1:])
 
 
+def title(reference):
+    """The record's heading: the tables against the reference build, named by its description's first clause."""
+    return f"Contact-solver tables of the seed 002 rig against {reference.split(' (')[0].split(',')[0]}"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--reference", required=True, help="rollspec binary to compare with (the build before)")
@@ -178,7 +183,7 @@ def main():
         pathlib.Path(o.markdown).write_text(text + "\n")
     if o.record:
         bench_record.write(
-            o.record, title="Contact-solver tables of the seed 002 rig: reference build against current",
+            o.record, title=title(o.describe_reference),
             argv=sys.argv, settings=f"Whole `rollspec run` commands of studies/seed002-rig-1ms.ini from an empty "
             f"table directory, OMP_NUM_THREADS={o.threads}, {o.repeats} interleaved runs per build, medians; "
             "ratio = reference / current (above 1: the current build is faster).",
