@@ -2,7 +2,8 @@
 # Builds the rollspec documentation into BUILD_DIR/html (default build/docs), warnings as errors.
 #   bash docs/build.sh [BUILD_DIR]        binary: $ROLLSPEC_BIN, else build/werror/rollspec
 # The reference (commands, options, study keys, exit codes, result-file schema) is generated from the
-# binary by docs/generate_reference.py, and the benchmark figures from bench/goals.json, on every build;
+# binary by docs/generate_reference.py, and the benchmark figures from bench/goals.json and the bench
+# scripts' records (bench/records/; $ROLLSPEC_BENCH_RECORDS names another directory), on every build;
 # every link inside the built site is then checked (docs/check_links.py).
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
@@ -15,7 +16,8 @@ rm -rf "$out/src"
 mkdir -p "$out"
 cp -r "$repo/docs" "$out/src"
 ln -s "$repo" "$out/src/_repo"
-"$python" "$repo/docs/generate_reference.py" --bin "$bin" --out "$out/src"
+"$python" "$repo/docs/generate_reference.py" --bin "$bin" --out "$out/src" \
+  --records "${ROLLSPEC_BENCH_RECORDS:-$repo/bench/records}"
 ROLLSPEC_SOURCE="$repo" ROLLSPEC_BIN="$bin" MPLBACKEND=Agg "$python" -m sphinx -W --keep-going -q -b html -d "$out/doctrees" "$out/src" "$out/html"
 "$python" "$repo/docs/check_links.py" "$out/html"
 echo "docs: $out/html/index.html"

@@ -10,6 +10,9 @@ reference cannot drift from the program:
                                      (random-oscillator study, 5 realisations, in a temporary directory)
   validation/generated/goals-table.md, goals.png   the benchmark goals table and figure from bench/goals.json
   validation/generated/work-precision.png  from python-post/docs/work-precision.csv
+  validation/generated/bench-records.md  every benchmark record of bench/records/ (written by the bench
+                                     scripts, bench/bench_record.py), a table each with its command;
+                                     a malformed record stops the build with one line naming it
 
   /usr/bin/python3 docs/generate_reference.py --bin build/werror/rollspec --out DOCS_SOURCE_DIR
 """
@@ -238,16 +241,29 @@ def write_work_precision(out):
         env=dict(os.environ, PYTHONPATH=str(REPO / "python-post"), MPLBACKEND="Agg"))
 
 
+def write_bench_records(records, out):
+    """The bench scripts' records as tables, each under the command that measured it."""
+    sys.path.insert(0, str(REPO / "bench"))
+    import bench_record  # noqa: E402
+    try:
+        text = bench_record.render_all(records, level=3)
+    except bench_record.RecordError as e:
+        sys.exit(f"generate_reference: {e}")
+    (out / "bench-records.md").write_text(text)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", default=os.environ.get("ROLLSPEC_BIN", str(REPO / "build" / "werror" / "rollspec")))
     ap.add_argument("--out", required=True, help="the documentation source directory (a copy of docs/)")
+    ap.add_argument("--records", default=str(REPO / "bench" / "records"), help="the benchmark records' directory")
     a = ap.parse_args()
     binary = str(Path(a.bin).resolve())
     ref = Path(a.out) / "reference" / "generated"
     val = Path(a.out) / "validation" / "generated"
     ref.mkdir(parents=True, exist_ok=True)
     val.mkdir(parents=True, exist_ok=True)
+    write_bench_records(Path(a.records), val)  # first: a malformed record fails before the slow pages
     write_commands(binary, ref)
     write_keys(binary, ref)
     write_exit_codes(ref)

@@ -5,7 +5,8 @@ per position, and the agreement of the table values.
 
   /usr/bin/python3 bench/contact/bench_tables.py --reference /path/to/old/rollspec \
       [--current build/werror/rollspec] [--repeats 3] [--threads 2] [--kinds blocked_force,filter,path] \
-      [--json out.json] [--markdown out.md]
+      [--json out.json] [--markdown out.md] [--record bench/records/contact-tables.json \
+       --describe-reference TEXT --describe-current TEXT]
 
 Cases (studies/seed002-rig-1ms.ini, 2 realisations, tables built from scratch in a fresh directory
 every run):
@@ -17,6 +18,8 @@ Wall seconds by the clock, CPU seconds from the children's rusage; ratio = refer
 builds' tables (first run of each), relative to the column's largest magnitude; "repeat bits"
 says whether every run of a build wrote the same table bits; "estimate / measured CPU" is the
 table's "build about X s CPU" (the same figure `rollspec plan` shows) over the whole command's CPU.
+--record writes the table as a benchmark record (bench/bench_record.py) that the documentation's
+benchmarks page renders, with this command above it and the two builds described in words.
 """
 import argparse
 import glob
@@ -36,6 +39,9 @@ import h5py
 import numpy as np
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.dont_write_bytecode = True  # no __pycache__ in bench/
+sys.path.insert(0, str(ROOT / "bench"))
+import bench_record  # noqa: E402
 STUDY = ROOT / "studies" / "seed002-rig-1ms.ini"
 
 CASES = {
@@ -113,6 +119,11 @@ def same_bits(runs):
                for r in runs[1:])
 
 
+def title(reference):
+    """The record's heading: the tables against the reference build, named by its description's first clause."""
+    return f"Contact-solver tables of the seed 002 rig against {reference.split(' (')[0].split(',')[0]}"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--reference", required=True, help="rollspec binary to compare with (the build before)")
@@ -122,10 +133,14 @@ def main():
     ap.add_argument("--kinds", default="blocked_force,filter,path")
     ap.add_argument("--json")
     ap.add_argument("--markdown")
+    ap.add_argument("--record", help="write a benchmark record (bench/records/NAME.json) for the documentation")
+    ap.add_argument("--describe-reference", default="the reference build", help="the reference build in words")
+    ap.add_argument("--describe-current", default="the current build", help="the current build in words")
     o = ap.parse_args()
     kinds = o.kinds.split(",")
     builds = {"reference": o.reference, "current": o.current}
     runs = {k: {b: [] for b in builds} for k in kinds}
+    busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     for rep in range(o.repeats):  # interleaved: every kind and build once per round
         for k in kinds:
             for b, binary in builds.items():
@@ -133,9 +148,10 @@ def main():
                 runs[k][b].append(r)
                 print(f"round {rep + 1} {k:13s} {b:9s} {r['wall']:8.2f} s wall {r['cpu']:8.2f} s CPU  "
                       f"iterations/position {r['iterations']}", file=sys.stderr, flush=True)
-    load = os.getloadavg()
+    others = bench_record.other_work(busy, bench_record.own_cpu() - own, time.perf_counter() - t0)
     summary = {"reference": o.reference, "current": o.current, "threads": o.threads, "repeats": o.repeats,
-               "load_average_at_end": load, "kinds": {}}
+               "kinds": {}}
+    cells = []
     lines = [f"Seed 002 rig tables, OMP_NUM_THREADS={o.threads}, {o.repeats} interleaved runs per build, medians", "",
              "| table | reference wall / CPU (s) | current wall / CPU (s) | ratio wall / CPU | iterations per position ref / cur | max rel diff | repeat bits ref / cur | estimate / measured CPU (current) |",
              "|---|---|---|---|---|---|---|---|"]
@@ -151,18 +167,36 @@ def main():
                "runs": {b: [{q: r[q] for q in ("wall", "cpu", "iterations", "estimate_cpu", "estimate_wall")}
                             for r in runs[k][b]] for b in builds}}
         summary["kinds"][k] = row
-        lines.append(f"| {k} | {med['reference']['wall']:.1f} / {med['reference']['cpu']:.1f} | "
-                     f"{med['current']['wall']:.1f} / {med['current']['cpu']:.1f} | {row['ratio_wall']:.2f} / "
-                     f"{row['ratio_cpu']:.2f} | {row['iterations']['reference']} / {row['iterations']['current']} | "
-                     f"{diff:.2e} ({column}) | {row['repeat_bits']['reference']} / {row['repeat_bits']['current']} | "
-                     f"{runs[k]['current'][0]['estimate_cpu']:.3g} / {med['current']['cpu']:.3g} = "
-                     f"{row['estimate_ratio_cpu']:.2f} |")
+        cells.append([k, f"{med['reference']['wall']:.1f} / {med['reference']['cpu']:.1f}",
+                      f"{med['current']['wall']:.1f} / {med['current']['cpu']:.1f}",
+                      f"{row['ratio_wall']:.2f} / {row['ratio_cpu']:.2f}",
+                      f"{row['iterations']['reference']} / {row['iterations']['current']}", f"{diff:.2e} ({column})",
+                      f"{row['repeat_bits']['reference']} / {row['repeat_bits']['current']}",
+                      f"{runs[k]['current'][0]['estimate_cpu']:.3g} / {med['current']['cpu']:.3g} = "
+                      f"{row['estimate_ratio_cpu']:.2f}"])
+        lines.append("| " + " | ".join(cells[-1]) + " |")
     text = "\n".join(lines)
     print(text)
     if o.json:
         pathlib.Path(o.json).write_text(json.dumps(summary, indent=1))
     if o.markdown:
         pathlib.Path(o.markdown).write_text(text + "\n")
+    if o.record:
+        bench_record.write(
+            o.record, title=title(o.describe_reference),
+            argv=sys.argv, settings=f"Whole `rollspec run` commands of studies/seed002-rig-1ms.ini from an empty "
+            f"table directory, OMP_NUM_THREADS={o.threads}, {o.repeats} interleaved runs per build, medians; "
+            "ratio = reference / current (above 1: the current build is faster).",
+            builds={"reference": {"description": o.describe_reference, "version": bench_record.build_version(o.reference)},
+                    "current": {"description": o.describe_current, "version": bench_record.build_version(o.current)}},
+            columns=["table", "reference wall / CPU (s)", "current wall / CPU (s)", "ratio wall / CPU",
+                     "iterations per position ref / cur", "max rel diff", "repeat bits ref / cur",
+                     "estimate / measured CPU (current)"],
+            rows=cells, notes="Iterations per position: CG iterations per solve (blocked force: + stiffness "
+            "iterations). Max rel diff: the largest difference of the two builds' table values, relative to "
+            "each column's largest magnitude. Repeat bits: every run of a build wrote the same table bits. "
+            "Estimate: the table's \"build about X s CPU\" (what `rollspec plan` shows) over the measured CPU.",
+            data=summary, other_cores=others)
 
 
 if __name__ == "__main__":

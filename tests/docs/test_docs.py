@@ -16,6 +16,8 @@ BIN = os.environ.get("ROLLSPEC_BIN", str(SOURCE / "build" / "werror" / "rollspec
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, str(SOURCE / "docs"))
 import generate_reference as gen  # noqa: E402  (the same parsers the site is generated with)
+sys.path.insert(0, str(SOURCE / "bench"))
+import bench_record  # noqa: E402  (the bench scripts' record format the benchmarks page renders)
 
 
 def text_of(page):
@@ -73,9 +75,69 @@ def test_schema_exit_codes_and_api_are_generated(site):
     assert list((site / "_images").glob("goals*.png")), "the benchmark figure from bench/goals.json"
 
 
+def test_every_benchmark_record_is_on_the_benchmarks_page(site):
+    page = text_of(site / "validation" / "benchmarks.html")
+    records = sorted((SOURCE / "bench" / "records").glob("*.json"))
+    assert records, "no benchmark record in bench/records"
+    for path in records:
+        record = bench_record.load(path)
+        last_row = map(bench_record.cell, record["rows"][-1])
+        for text in (record["title"], record["command"], *record["columns"], *last_row):
+            assert re.sub(r"\s+", " ", html.unescape(text)) in page, f"{path.name}: {text!r} not on the page"
+
+
+def small_record():
+    return {"title": "Hertz solve", "command": "/usr/bin/python3 bench/x.py --record r.json", "date": "2026-01-02",
+            "machine": {"cores": 2, "cpu": "test CPU"}, "settings": "2 threads, median of 3.",
+            "builds": {"reference": {"description": "the build before", "version": "rollspec 0.1.0 (git 0123abc)"},
+                       "current": {"description": "this build"}},
+            "columns": ["case", "seconds"], "rows": [["512²", 0.2261], ["1024²", "1.04"]]}
+
+
+def test_a_benchmark_record_renders_as_a_table_under_its_command(tmp_path):
+    (tmp_path / "a.json").write_text(__import__("json").dumps(small_record()))
+    gen.write_bench_records(tmp_path, tmp_path)
+    text = (tmp_path / "bench-records.md").read_text()
+    assert "### Hertz solve" in text
+    assert "```text\n/usr/bin/python3 bench/x.py --record r.json\n```" in text
+    assert "2 cores (test CPU)" in text and "**reference**: the build before" in text
+    assert "| case | seconds |\n|---|---|\n| 512² | 0.2261 |\n| 1024² | 1.04 |" in text
+    assert "0123abc" not in text, "the build's version line (its commit) is kept, not printed"
+
+
+@pytest.mark.parametrize("change, fault", [
+    (lambda r: r.pop("command"), "no 'command'"),
+    (lambda r: r["rows"].append(["2048²"]), "row 3 has 1 cells, the columns 2"),
+    (lambda r: r["machine"].pop("cores"), "'machine' has no 'cores'"),
+    (lambda r: r["builds"]["current"].update(description="main at ba5a7c3"), "printed text names a commit (ba5a7c3"),
+    (lambda r: r.update(notes="load average 3.1"), "printed text names a load average"),
+])
+def test_a_malformed_benchmark_record_is_refused_in_one_line(tmp_path, change, fault):
+    record = small_record()
+    change(record)
+    (tmp_path / "bad.json").write_text(__import__("json").dumps(record))
+    with pytest.raises(bench_record.RecordError, match=re.escape(f"benchmark record bad.json: {fault}")):
+        bench_record.load(tmp_path / "bad.json")
+
+
+def test_a_malformed_benchmark_record_fails_the_docs_build_in_one_line(tmp_path):
+    records = tmp_path / "records"
+    records.mkdir()
+    (records / "broken.json").write_text('{"title": "x",')
+    env = dict(os.environ, ROLLSPEC_BIN=BIN, ROLLSPEC_BENCH_RECORDS=str(records))
+    r = subprocess.run(["bash", str(SOURCE / "docs" / "build.sh"), str(tmp_path / "out")], capture_output=True,
+                       text=True, timeout=600, env=env)
+    assert r.returncode != 0
+    assert r.stderr.startswith("generate_reference: benchmark record broken.json: not JSON"), r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert not (tmp_path / "out" / "html").exists()
+
+
 def lab_notebook_findings(text):
     """Commit hashes, issue numbers and load averages in a user-facing text (empty: none)."""
-    hashes = [w for w in re.findall(r"\b[0-9a-f]{7,40}\b", text)
+    # 1.509577e-03 is a number, not a commit.
+    numbers = re.sub(r"(?<![0-9a-f.])\d*\.?\d+e[-+]?\d+(?![0-9a-f])", " ", text)
+    hashes = [w for w in re.findall(r"\b[0-9a-f]{7,40}\b", numbers)
               if re.search(r"[a-f]", w) and re.search(r"\d", w) and not re.fullmatch(r"\d+e\d+", w)]
     found = [f"commit hash {h}" for h in hashes]
     found += [f"issue number '{m}'" for m in re.findall(r"\bissues? #?\d+", text, re.I)]

@@ -1,0 +1,185 @@
+"""Benchmark records: one JSON file per benchmark in bench/records/, written by the bench script that
+measured it and rendered into the documentation's benchmarks page (docs/generate_reference.py), so no
+measured figure on that page is typed by hand.
+
+A record holds
+  title     what was measured (a heading on the page)
+  command   the command that measured it, as run (shown above the table)
+  date      the day it was measured (YYYY-MM-DD)
+  machine   {"cores": N, ...}: the machine's facts (cores are required; other_work_cores: the cores
+            other work kept busy during the measurement, from /proc/stat, where the script measured it)
+  builds    {name: {"description": text, ...}}: the builds measured; other fields (for example the
+            build's own `rollspec version` line, which names its commit) are kept but not printed
+  settings  how it was run (threads, repeats, medians), one sentence
+  columns   the table's headings; rows: the table's rows, one cell (text or number) per column
+  notes     optional text printed under the table
+  data      optional raw figures for scripts; never printed
+
+`write` is what a bench script calls; `load` checks a file and raises RecordError with one line that
+names the file and the fault; `markdown` renders a checked record.
+"""
+import datetime
+import json
+import os
+import platform
+import re
+import shlex
+import subprocess
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+RECORDS = ROOT / "bench" / "records"
+REQUIRED = {"title": str, "command": str, "date": str, "machine": dict, "builds": dict, "settings": str,
+            "columns": list, "rows": list}
+
+
+class RecordError(ValueError):
+    pass
+
+
+def command_line(argv):
+    """The command as a user in the repository root would type it: paths inside the repository relative."""
+    def rel(a):
+        p = Path(a)
+        if p.is_absolute():
+            try:
+                return str(p.resolve().relative_to(ROOT))
+            except ValueError:
+                return a
+        return a
+    return shlex.join(["/usr/bin/python3"] + [rel(a) for a in argv])
+
+
+def machine():
+    model = ""
+    if Path("/proc/cpuinfo").exists():
+        m = re.search(r"^model name\s*:\s*(.*)$", Path("/proc/cpuinfo").read_text(), re.M)
+        model = m.group(1).strip() if m else ""
+    return {"cores": os.cpu_count(), "cpu": model or platform.processor(), "system": platform.system()}
+
+
+def busy_seconds():
+    """CPU seconds every core of the machine has been busy since boot (/proc/stat; 0 where there is none)."""
+    stat = Path("/proc/stat")
+    if not stat.exists():
+        return 0.0
+    ticks = [int(x) for x in stat.read_text().split("\n", 1)[0].split()[1:]]
+    idle = ticks[3] + (ticks[4] if len(ticks) > 4 else 0)
+    return (sum(ticks[:8]) - idle) / os.sysconf("SC_CLK_TCK")
+
+
+def own_cpu():
+    """CPU seconds of this process and its finished children."""
+    import resource
+    return sum(u.ru_utime + u.ru_stime for u in (resource.getrusage(resource.RUSAGE_SELF),
+                                                  resource.getrusage(resource.RUSAGE_CHILDREN)))
+
+
+def other_work(busy_before, own_cpu, wall):
+    """Cores that other work kept busy while a benchmark ran: the machine's busy seconds minus its own."""
+    return max(0.0, (busy_seconds() - busy_before - own_cpu) / wall) if wall > 0 else 0.0
+
+
+def build_version(binary):
+    """The binary's own `rollspec version` line (kept in the record, not printed)."""
+    r = subprocess.run([str(binary), "version"], capture_output=True, text=True)
+    return r.stdout.splitlines()[0] if r.returncode == 0 and r.stdout else "unknown"
+
+
+def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=None, other_cores=None):
+    facts = machine()
+    if other_cores is not None:
+        facts["other_work_cores"] = round(other_cores, 2)
+    record = {"title": title, "command": command_line(argv), "date": datetime.date.today().isoformat(),
+              "machine": facts, "builds": builds, "settings": settings, "columns": columns, "rows": rows}
+    if notes:
+        record["notes"] = notes
+    if data is not None:
+        record["data"] = data
+    check(record, str(path))
+    Path(path).write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n")
+
+
+def looks_like_commit(text):
+    # 1.509577e-03 is a number, not a commit.
+    text = re.sub(r"(?<![0-9a-f.])\d*\.?\d+e[-+]?\d+(?![0-9a-f])", " ", text)
+    return [w for w in re.findall(r"\b[0-9a-f]{7,40}\b", text)
+            if re.search(r"[a-f]", w) and re.search(r"\d", w) and not re.fullmatch(r"\d+e\d+", w)]
+
+
+def check(record, name):
+    def fail(what):
+        raise RecordError(f"benchmark record {name}: {what}")
+
+    if not isinstance(record, dict):
+        fail("not a JSON object")
+    for key, kind in REQUIRED.items():
+        if key not in record:
+            fail(f"no '{key}'")
+        if not isinstance(record[key], kind) or (kind is str and not record[key].strip()):
+            fail(f"'{key}' is not a non-empty {kind.__name__}")
+    if not re.fullmatch(r"\d{4}-\d{2}-\d{2}", record["date"]):
+        fail(f"'date' {record['date']!r} is not YYYY-MM-DD")
+    if not isinstance(record["machine"].get("cores"), int) or record["machine"]["cores"] < 1:
+        fail("'machine' has no 'cores' (a positive integer)")
+    if not record["builds"]:
+        fail("'builds' names no build")
+    for b, v in record["builds"].items():
+        if not isinstance(v, dict) or not isinstance(v.get("description"), str) or not v["description"].strip():
+            fail(f"build '{b}' has no 'description'")
+    if not record["columns"] or not all(isinstance(c, str) for c in record["columns"]):
+        fail("'columns' is not a list of headings")
+    if not record["rows"]:
+        fail("'rows' is empty")
+    for i, row in enumerate(record["rows"], 1):
+        if not isinstance(row, list) or len(row) != len(record["columns"]):
+            fail(f"row {i} has {len(row) if isinstance(row, list) else 'no'} cells, the columns "
+                 f"{len(record['columns'])}")
+        if not all(isinstance(c, (str, int, float)) for c in row):
+            fail(f"row {i} has a cell that is neither text nor a number")
+    printed = " ".join([record["title"], record["command"], record["settings"], record.get("notes", "")]
+                       + [v["description"] for v in record["builds"].values()] + record["columns"]
+                       + [str(c) for row in record["rows"] for c in row])
+    if looks_like_commit(printed):
+        fail(f"printed text names a commit ({looks_like_commit(printed)[0]}); describe the build instead")
+    if re.search(r"load average", printed, re.I):
+        fail("printed text names a load average")
+
+
+def load(path):
+    path = Path(path)
+    try:
+        record = json.loads(path.read_text())
+    except json.JSONDecodeError as e:
+        raise RecordError(f"benchmark record {path.name}: not JSON ({e})") from None
+    check(record, path.name)
+    return record
+
+
+def cell(value):
+    text = f"{value:.4g}" if isinstance(value, float) else str(value)
+    return text.replace("|", "\\|").replace("\n", " ")
+
+
+def markdown(record, level=3):
+    """A record as Markdown: heading, command, builds and machine, the table, the notes."""
+    m = record["machine"]
+    lines = [f"{'#' * level} {record['title']}", "", "Measured by", "", "```text", record["command"], "```", "",
+             f"on {record['date']}, {m['cores']} cores" + (f" ({m['cpu']})" if m.get("cpu") else "")
+             + (f"; other work kept {m['other_work_cores']:.1f} of them busy meanwhile"
+                if isinstance(m.get("other_work_cores"), (int, float)) else "") + ". " + record["settings"], ""]
+    lines += [f"- **{name}**: {v['description']}" for name, v in record["builds"].items()]
+    lines += ["", "| " + " | ".join(cell(c) for c in record["columns"]) + " |",
+              "|" + "---|" * len(record["columns"])]
+    lines += ["| " + " | ".join(cell(c) for c in row) + " |" for row in record["rows"]]
+    if record.get("notes"):
+        lines += ["", record["notes"]]
+    return "\n".join(lines) + "\n"
+
+
+def render_all(directory=RECORDS, level=3):
+    """Every record of a directory, in file-name order, as one Markdown text; RecordError on the first fault."""
+    files = sorted(Path(directory).glob("*.json"))
+    if not files:
+        raise RecordError(f"benchmark records: none in {directory}")
+    return "\n".join(markdown(load(f), level) for f in files)
