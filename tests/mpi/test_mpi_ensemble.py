@@ -117,3 +117,19 @@ def test_two_rank_sweep_equals_one_process_bitwise(tmp_path):
     assert r.stdout.count("sweep point 1 of 4") == 1, f"the points are announced once:\n{r.stdout}"
     assert not (tmp_path / "two.h5.sweep").exists(), "the work directory is removed after the merge"
     assert_bitwise_equal(one, two)
+
+
+def test_table_jackknife_over_two_ranks_equals_one_process_bitwise(tmp_path):
+    # [stiffness] table_error = jackknife (kernels/spectral D-30): the sub-tables' combined ensemble and its
+    # paired noise (D-30c) are summed on rank 0 from every rank's chunks, the same bits as one process.
+    study = pathlib.Path(os.environ.get("ROLLSPEC_SOURCE", ".")) / "studies" / "seed001-beam-r.ini"
+    small = [a for s in ("stiffness.realisations=3", "surface.nx=128", "surface.ny=128", "study.realisations=12",
+                         "ensemble.chunk_size=2", "stiffness.table_error=jackknife",
+                         f"stiffness.table_dir={tmp_path / 'tables'}") for a in ("--set", s)]
+    (tmp_path / "tables").mkdir()
+    one, two = tmp_path / "one.h5", tmp_path / "two.h5"
+    r = run([BIN, "run", study, "--out", one, "--quiet", *small], threads="2")
+    assert r.returncode == 0, r.stderr
+    r = mpi(2, "run", study, "--out", two, "--quiet", *small)
+    assert r.returncode == 0, r.stderr
+    assert_bitwise_equal(one, two)
