@@ -84,14 +84,18 @@ int plan_command(const Args& args) {
     if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
   }
   // table_error = jackknife (D-30): the ensemble once with the table and once per sub-table.
-  const bool jackknife = study::StiffnessSection::asks_table_jackknife(s);
-  const double ensembles = jackknife ? static_cast<double>(study::StiffnessSection::parse(s).realisations) + 1.0 : 1.0;
-  if (jackknife)
+  const bool jackknife = study::StiffnessSection::asks_table_jackknife(s) && ensemble_scene;
+  const double ensembles = jackknife ? static_cast<double>(ensemble_scene->table_jackknife().n) + 1.0 : 1.0;
+  if (jackknife) {
+    const scenes::TableJackknifePlan jk = ensemble_scene->table_jackknife();
     std::printf(
-        "table jackknife: [stiffness] table_error = jackknife runs the ensemble %.0f times (the full table and each "
-        "of its %.0f leave-one-out sub-tables, the same realisation streams): %.0f x the ensemble's run time; the "
-        "sub-tables are cached, made from one more solve of each surface when missing\n",
-        ensembles, ensembles - 1.0, ensembles);
+        "table jackknife: [stiffness] table_error = jackknife runs the ensemble %zu times (the full %s and each of its "
+        "%zu leave-one-out sub-tables, the same realisation streams): %zu x the ensemble's run time; the sub-tables "
+        "%s\n",
+        jk.n + 1, jk.table.c_str(), jk.n, jk.n + 1,
+        jk.unit == "surfaces" ? "are cached, made from one more solve of each surface when missing"
+                              : "are made from the full table's strips, without a new solve");
+  }
   if (!vm.count("probe")) return 0;
   if (!ensemble_scene) {
     std::cout << "run time: not probed (no ensemble: the run is one deterministic computation)\n";

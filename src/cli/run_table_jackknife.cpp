@@ -43,27 +43,28 @@ void paired_squares(const double* values, std::size_t n, std::size_t nv, std::si
 void run_table_jackknife(const study::Study& s, const StudyReload& reload, scenes::EnsembleScene& scene,
                          const ensemble::EnsembleConfig& cfg, bool quiet, bool rebuild) {
   if (!study::StiffnessSection::asks_table_jackknife(s) || cfg.only >= 0) return;
-  const study::StiffnessSection stiffness = study::StiffnessSection::parse(s);
-  const auto n = static_cast<std::size_t>(stiffness.realisations);
+  const scenes::TableJackknifePlan plan = scene.table_jackknife();
+  const std::size_t n = plan.n;
   std::vector<std::unique_ptr<scenes::EnsembleScene>> subs;
   for (std::size_t i = 0; i < n; ++i) {
-    const study::Study sub = reload(study::StiffnessSection::leave_out_sets(static_cast<long long>(i)));
+    const study::Study sub = reload(plan.leave_out_sets(static_cast<long long>(i)));
     subs.push_back([&sub] {
       // The full table's study again: its construction warnings were said once, by the full run.
       const io::RunWarningCapture already_said;
       return make_scene<scenes::EnsembleScene>(sub);
     }());
-    subs.back()->prepare(/*quiet=*/true, rebuild);  // its table is cached: the full table's scene built it
+    subs.back()->prepare(/*quiet=*/true, rebuild);  // its table is cached, or reduced from the full one
   }
   const std::size_t nv = scene.values_per_realisation(), lin = scene.linear_spectral_values();
   for (const auto& sub : subs)
     if (sub->values_per_realisation() != nv)
       throw std::logic_error("table jackknife: sub-table scene of another shape");
   if (!quiet)
-    std::fprintf(stderr,
-                 "table jackknife: the ensemble again with each of the %zu sub-tables (one surface left out of each), "
-                 "realisation by realisation\n",
-                 n);
+    std::fprintf(
+        stderr,
+        "table jackknife: the ensemble again with each of the %zu sub-tables of the %s (one of its %s left out "
+        "of each), realisation by realisation\n",
+        n, plan.table.c_str(), plan.unit.c_str());
   // One ensemble whose realisation runs the N sub-tables' scenes on the same streams (common random
   // numbers), so that the same realisation's values can be paired across them (D-30c).
   ensemble::EnsembleConfig c = cfg;
@@ -87,7 +88,7 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
     for (std::size_t j = 0; j < lin; ++j) m[j] = b.mean(j);
     paired.means.push_back(std::move(m));
   }
-  io::TableError t = io::table_jackknife(spectra, paired, "stiffness table");
+  io::TableError t = io::table_jackknife(spectra, paired, plan.table, plan.unit);
   t.noise_warning = io::table_noise_warning(t, sums.count);
   if (!t.noise_warning.empty()) io::warn(t.noise_warning, true);  // the result's validity, not progress
   scene.include_table_error(std::move(t));

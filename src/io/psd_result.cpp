@@ -69,7 +69,8 @@ void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   w.attribute("/bands", "interval_includes", includes);
   if (t.surfaces == 0) return;
   const std::size_t nf = e.frequency.size();
-  const std::string table = "the stiffness table's own error by a jackknife over its surfaces, in the intervals (a)";
+  const std::string table =
+      "the " + t.table + "'s own error by a jackknife over its " + t.unit + ", in the intervals (a)";
   const std::string noise = "the part of table_std_db that is the sub-table runs' own noise (c)";
   write_table_std(w, "/psd", t.bin_variance, nf, "table_std_db", table);
   write_table_std(w, "/psd", t.bin_noise, nf, "table_noise_std_db", noise);

@@ -32,10 +32,11 @@ double paired_noise(const PairedSums& p, std::size_t j, std::vector<double>& m) 
 }  // namespace
 
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
-                           const std::string& table) {
+                           const std::string& table, const std::string& unit) {
   TableError t;
   t.surfaces = sub_tables.size();
   t.table = table;
+  t.unit = unit;
   if (sub_tables.empty()) return t;
   const std::size_t n = sub_tables.size(), bins = sub_tables[0].mean.size();
   std::vector<std::vector<double>> bands;
@@ -94,7 +95,7 @@ std::string table_noise_warning(const TableError& t, std::uint64_t K) {
 
 std::string interval_includes(const TableError& t) {
   if (t.surfaces > 0)
-    return "realisations, " + t.table + " (jackknife over " + std::to_string(t.surfaces) + " surfaces)";
+    return "realisations, " + t.table + " (jackknife over " + std::to_string(t.surfaces) + " " + t.unit + ")";
   if (!t.table.empty()) return "realisations only (conditional on the " + t.table + ")";
   return "realisations";
 }

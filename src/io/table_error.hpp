@@ -20,8 +20,9 @@ struct TableError {
   std::vector<double> band_variance;  // rows x bands, dB^2
   std::vector<double> bin_noise;      // the part of it that is the runs' own noise (D-30c), dB^2 (NaN: unknown)
   std::vector<double> band_noise;
-  std::string table;          // the table the intervals are conditional on ("": none)
-  std::string noise_warning;  // non-empty when the term is mostly the runs' own noise (table_noise_warning)
+  std::string table;              // the table the intervals are conditional on ("": none)
+  std::string unit = "surfaces";  // what the jackknife left out one at a time (surfaces, strips)
+  std::string noise_warning;      // non-empty when the term is mostly the runs' own noise (table_noise_warning)
 };
 
 // Band levels (dB) of e, rows x bands, as /bands/level_db holds them.
@@ -39,7 +40,7 @@ struct PairedSums {
 // The table's variances from the N sub-table ensembles (their spectra; same rows, bins, bands): the
 // jackknife (D-30a), and the runs' own noise in it (D-30c).
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
-                           const std::string& table);
+                           const std::string& table, const std::string& unit);
 
 // When more than half of the jackknife is the runs' own noise (D-30c, median over the bands), the
 // term is mostly that noise (realisations chaotic in the table) and the intervals are wider than the

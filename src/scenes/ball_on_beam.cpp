@@ -55,12 +55,24 @@ class BallOnBeam final : public EnsembleScene {
       workspaces_.push_back(std::make_unique<Workspace>(b_.welch.segment));
     add_pipeline_stages(s.tables);
     table_error_.table = random_tables();
-    if (b_.stiffness.table_jackknife && !(uses_table() && b_.stiffness.rough && b_.stiffness.realisations >= 2))
+    if (b_.stiffness.table_jackknife) check_table_jackknife();
+    if (jackknifes_stiffness_table()) tables_ = s.tables;
+  }
+
+  // D-30: one random table, of at least 2 surfaces or strips.
+  void check_table_jackknife() const {
+    const bool stiffness_table = uses_table() && b_.stiffness.rough, strips = solver_filter() && !b_.strip_line;
+    if (stiffness_table && strips)
+      b_.stiffness.table_error_origin.refuse(
+          "jackknife takes one table; this study has a rough stiffness table and an equivalent-roughness table "
+          "([contact] filter = solver); allowed here: none, or one of the two");
+    if (!(stiffness_table && b_.stiffness.realisations >= 2) && !(strips && b_.equivalent_roughness_strips >= 2))
       b_.stiffness.table_error_origin.refuse(
           "jackknife needs a rough stiffness table of at least 2 surfaces ([contact] law = table or literal, "
-          "[stiffness] surface = rough, realisations >= 2); allowed here: none");
-    if (b_.stiffness.table_jackknife) tables_ = s.tables;
+          "[stiffness] surface = rough, realisations >= 2) or an equivalent-roughness table of at least 2 strips "
+          "([contact] filter = solver, [equivalent_roughness] line = synthesised, strips >= 2); allowed here: none");
   }
+  bool jackknifes_stiffness_table() const { return b_.stiffness.table_jackknife && uses_table() && b_.stiffness.rough; }
 
   // The tables drawn from random surfaces or strips that every realisation shares: the intervals are
   // conditional on them (kernels/spectral/README.md D-28).
@@ -197,7 +209,7 @@ class BallOnBeam final : public EnsembleScene {
   void prepare(bool quiet, bool rebuild) override {
     quiet_ = quiet;
     resolve_stages(quiet, rebuild);      // the tables' use_* complete the contact law
-    if (b_.stiffness.table_jackknife) {  // D-30: every sub-table cached now, from one solve per surface
+    if (jackknifes_stiffness_table()) {  // D-30: every sub-table cached now, from one solve per surface
       const auto status = stiffness::resolve_leave_out_tables(*tables_, b_.model.contact.radius,
                                                               b_.model.contact.effective_modulus, rebuild, quiet);
       if (!quiet)
@@ -218,7 +230,7 @@ class BallOnBeam final : public EnsembleScene {
                    "errors)\nintervals: %s\n",
                    status.c_str(), static_cast<long long>(t.realisations), b_.stiffness.text("table_seed").c_str(),
                    b_.stiffness.table_shift,
-                   b_.stiffness.table_jackknife
+                   jackknifes_stiffness_table()
                        ? "the realisations' and the table's own sampling error (a jackknife over its surfaces: the "
                          "ensemble runs once more per surface; kernels/spectral/README.md D-30)"
                        : "the realisations' sampling error only, conditional on this table; its own sampling error "
@@ -254,10 +266,16 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   // filter = solver: the line is drawn from h_eq's PSD, so its generator is made again.
-  void use_equivalent_roughness(const stiffness::EquivalentRoughnessTable& t, const std::string& status, bool quiet) {
+  // [equivalent_roughness] leave_out = i: the cached table without strip i (D-30; no new solve).
+  void use_equivalent_roughness(const stiffness::EquivalentRoughnessTable& full, const std::string& status,
+                                bool quiet) {
+    const long long skip = b_.equivalent_roughness_leave_out;
+    const stiffness::EquivalentRoughnessTable t =
+        skip >= 0 ? stiffness::leave_out_strip(full, static_cast<std::size_t>(skip), blocked_force_grid()) : full;
     if (!quiet)
-      std::fprintf(stderr, "equivalent roughness table: %s (%g strips x %zu positions, delta_smooth = %.4g m)\n",
-                   status.c_str(), t.strips, t.position.size(), t.smooth_approach);
+      std::fprintf(stderr, "equivalent roughness table: %s (%g strips x %zu positions, delta_smooth = %.4g m%s)\n",
+                   status.c_str(), t.strips, t.position.size(), t.smooth_approach,
+                   skip >= 0 ? (", strip " + std::to_string(skip) + " left out").c_str() : "");
     take_equivalent_roughness_psd(b_, t, contact_);
     apply_equivalent_stiffness(t, quiet);
     lines_ = texture_io::line_generator(b_.line_keys, contact_.line_psd, b_.spacing, b_.line_samples);
@@ -311,6 +329,17 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   std::size_t linear_spectral_values() const override { return rows_->linear_values(); }
+
+  TableJackknifePlan table_jackknife() const override {
+    if (jackknifes_stiffness_table())
+      return {static_cast<std::size_t>(b_.stiffness.realisations), "stiffness table", "surfaces",
+              &study::StiffnessSection::leave_out_sets};
+    return {static_cast<std::size_t>(b_.equivalent_roughness_strips), "equivalent-roughness table", "strips",
+            [](long long i) {
+              return std::vector<std::string>{"equivalent_roughness.leave_out=" + std::to_string(i),
+                                              "stiffness.table_error=none"};
+            }};
+  }
 
   void include_table_error(io::TableError e) override { table_error_ = std::move(e); }
 

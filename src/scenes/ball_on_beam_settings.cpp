@@ -110,6 +110,12 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
   // rough, seed 001's chain) carries the rough contact's compliance already.
   b.equivalent_stiffness =
       b.filter == ContactFilter::solver && er.stiffness == "strip" && !(b.uses_table() && b.stiffness.rough);
+  b.equivalent_roughness_strips = er.strips;
+  b.equivalent_roughness_leave_out = er.leave_out;
+  if (er.leave_out >= 0 && !(b.filter == ContactFilter::solver && !b.strip_line))
+    er.leave_out_origin.refuse(
+        "leaves a strip out of the table [contact] filter = solver synthesises its lines from; allowed with filter = " +
+        b.filter_name + (b.strip_line ? " and line = strip" : "") + ": -1");
   if (b.strip_line && b.filter != ContactFilter::solver)
     er.line_origin.refuse("= strip is the line of [contact] filter = solver; allowed with filter = " + b.filter_name +
                           ": synthesised");

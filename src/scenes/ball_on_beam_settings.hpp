@@ -74,6 +74,9 @@ struct BallOnBeamSettings {
   // filter = solver with [equivalent_roughness] stiffness = strip: the point law carries the weight with
   // the strips' mean contact stiffness (kernels/contact ER-7).
   bool equivalent_stiffness = false;
+  // filter = solver: [equivalent_roughness] leave_out, the strip the table is used without (-1: none; D-30).
+  long long equivalent_roughness_leave_out = -1;
+  long long equivalent_roughness_strips = 0;
   double contact_half_width = 0.0;  // Hertz contact radius a at the weight (what the filters use)
   double spacing = 0.0;             // line texture sample spacing, m
   std::size_t line_samples = 0;     // over the whole span

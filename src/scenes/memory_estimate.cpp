@@ -154,9 +154,11 @@ std::vector<Item> ball_on_beam(const BallOnBeamSections& b, double threads) {
   out.push_back(
       chunk_sums(b.study, b.ensemble, b.spectrum, sensors + 4.0, {positions_text("sensors", b.sensors.positions)}));
   if (b.stiffness.table_jackknife) {  // D-30: the N sub-tables' scenes run together, each its own records and sums
-    const double n = static_cast<double>(b.stiffness.realisations);
+    const bool surfaces = (b.contact.law == "table" || b.contact.law == "literal") && b.stiffness.rough;  // else strips
+    const double n = static_cast<double>(surfaces ? b.stiffness.realisations : b.equivalent_roughness.strips);
     out.push_back({n * (out[out.size() - 2].bytes + out.back().bytes),
-                   {key_text("stiffness", "realisations", n), "[stiffness] table_error = jackknife"},
+                   {surfaces ? key_text("stiffness", "realisations", n) : key_text("equivalent_roughness", "strips", n),
+                    "[stiffness] table_error = jackknife"},
                    "the sub-tables' scenes (time records per thread, chunk sums)"});
   }
   const double histories = static_cast<double>(b.output.time_histories);

@@ -67,6 +67,15 @@ class Scene {
   std::vector<std::unique_ptr<Stage>> stages_;
 };
 
+// [stiffness] table_error = jackknife (D-30): which random table the scene's runs share, over how many
+// surfaces or strips, and the --set that makes the sub-table without one of them.
+struct TableJackknifePlan {
+  std::size_t n = 0;  // surfaces or strips
+  std::string table;  // "stiffness table", "equivalent-roughness table"
+  std::string unit;   // "surfaces", "strips"
+  std::function<std::vector<std::string>(long long)> leave_out_sets;
+};
+
 // A Monte-Carlo scene: independent realisations, summed by the ensemble driver, written from the sums.
 class EnsembleScene : public Scene {
  public:
@@ -80,6 +89,7 @@ class EnsembleScene : public Scene {
   virtual io::PsdEnsemble spectra(const ensemble::EnsembleSums&) const {
     throw std::logic_error("this scene has no stiffness table to jackknife");
   }
+  virtual TableJackknifePlan table_jackknife() const { throw std::logic_error("this scene has no table to jackknife"); }
   // The number of leading values of a realisation that are its spectra in linear units, in the
   // order of PsdEnsemble's bins and then its bands: what the jackknife pairs across runs (D-30c).
   virtual std::size_t linear_spectral_values() const {

@@ -140,6 +140,50 @@ CachedTable equivalent_roughness_cached_table(const TableStudy& ts, const Blocke
   return CachedTable(kEquivalentRoughnessTableKind, ts.store, inputs_text(ts, g, radius, e_star, load));
 }
 
+namespace {
+// The one-sided PSD of h_eq along the path per rad/m, the mean over t's strips:
+// Welch with f_s = 1 / (step dx) cycles/m per strip, the strips' mean in strip order, then per rad/m
+// (as the blocked-force F0 PSD; D-5).
+void strip_mean_psd(EquivalentRoughnessTable& t, const BlockedForceGeometry& g) {
+  const auto n_strips = static_cast<std::size_t>(t.strips), n = t.position.size();
+  spectral::WelchConfig wc;
+  wc.sample_rate = 1.0 / (static_cast<double>(g.step) * g.cell);
+  wc.segment = std::min(g.segment, n);
+  wc.overlap = wc.segment / 2;
+  const spectral::WelchPlan plan(wc);
+  spectral::WelchWorkspace ws(wc.segment);
+  std::vector<double> one(plan.n_freq()), mean(plan.n_freq(), 0.0);
+  for (std::size_t si = 0; si < n_strips; ++si) {
+    plan.psd(t.height.data() + si * n, n, one.data(), ws);
+    for (std::size_t k = 0; k < one.size(); ++k) mean[k] += one[k] / static_cast<double>(n_strips);
+  }
+  t.psd_wavenumber.clear();
+  t.psd.clear();
+  for (std::size_t k = 0; k < mean.size(); ++k) {
+    t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));
+    t.psd.push_back(mean[k] / (2.0 * M_PI));
+  }
+}
+}  // namespace
+
+EquivalentRoughnessTable leave_out_strip(const EquivalentRoughnessTable& t, std::size_t skip,
+                                         const BlockedForceGeometry& g) {
+  const auto n_strips = static_cast<std::size_t>(t.strips), n = t.position.size();
+  if (skip >= n_strips || n_strips < 2) throw std::logic_error("equivalent roughness: no strip to leave out");
+  EquivalentRoughnessTable s = t;
+  s.strips = t.strips - 1.0;
+  s.height.clear();
+  s.stiffness.clear();
+  for (std::size_t si = 0; si < n_strips; ++si) {
+    if (si == skip) continue;
+    const auto first = static_cast<std::ptrdiff_t>(si * n), last = static_cast<std::ptrdiff_t>((si + 1) * n);
+    s.height.insert(s.height.end(), t.height.begin() + first, t.height.begin() + last);
+    s.stiffness.insert(s.stiffness.end(), t.stiffness.begin() + first, t.stiffness.begin() + last);
+  }
+  strip_mean_psd(s, g);
+  return s;
+}
+
 EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& geo,
                                                     double radius, double e_star, double load, bool quiet) {
   const double dx = geo.cell;
@@ -157,15 +201,6 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
   if (!quiet)
     std::fprintf(stderr, "%sequivalent roughness: %s\n", ensemble::rank_prefix().c_str(),
                  equivalent_roughness_describe(ts, geo).c_str());
-  // PSD of h_eq along the path: Welch with f_s = 1 / (step dx) cycles/m per strip, the strips'
-  // mean, then per rad/m (as the blocked-force F0 PSD; D-5).
-  spectral::WelchConfig wc;
-  wc.sample_rate = 1.0 / (static_cast<double>(step) * dx);
-  wc.segment = std::min(geo.segment, positions.size());
-  wc.overlap = wc.segment / 2;
-  const spectral::WelchPlan plan(wc);
-  spectral::WelchWorkspace ws(wc.segment);
-  std::vector<double> one(plan.n_freq()), mean(plan.n_freq(), 0.0);
   EquivalentRoughnessTable t;
   t.position = positions;
   t.load = load;
@@ -189,8 +224,6 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
     t.smooth_stiffness = r.smooth_stiffness;
     t.height.insert(t.height.end(), r.height.begin(), r.height.end());
     t.stiffness.insert(t.stiffness.end(), r.stiffness.begin(), r.stiffness.end());
-    plan.psd(r.height.data(), r.height.size(), one.data(), ws);
-    for (std::size_t k = 0; k < one.size(); ++k) mean[k] += one[k] / static_cast<double>(n_strips);
     if (!quiet)
       std::fprintf(stderr, "%sequivalent roughness: strip %zu of %zu, %d CG iterations, %.3g s wall\n",
                    ensemble::rank_prefix().c_str(), si + 1, n_strips, r.iterations,
@@ -198,10 +231,7 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
     progress.advance();
   }
   progress.finish();  // the bar's "took" line (a log's only line of it)
-  for (std::size_t k = 0; k < mean.size(); ++k) {
-    t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));
-    t.psd.push_back(mean[k] / (2.0 * M_PI));
-  }
+  strip_mean_psd(t, geo);
   return t;
 }
 

@@ -46,6 +46,12 @@ std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedFor
 CachedTable equivalent_roughness_cached_table(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                               double effective_modulus, double load);
 
+// The table without strip `skip` (its h_eq PSD and stiffness from the other strips; no new solve):
+// the jackknife's sub-table ([equivalent_roughness] leave_out, kernels/spectral D-30); `g`: the geometry
+// the table was made on (its step and Welch segment).
+EquivalentRoughnessTable leave_out_strip(const EquivalentRoughnessTable& t, std::size_t skip,
+                                         const BlockedForceGeometry& g);
+
 EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                                     double effective_modulus, double load, bool quiet);
 

@@ -29,7 +29,7 @@ def go(tmp_path, name, tables, *extra):
     return out
 
 
-def widened(level, lo, hi, v):
+def widened(level, lo, hi, v, K=K, N=N):
     """D-30b on each side, as a plain reference (scipy's t quantiles)."""
     t_k = stats.t.ppf(0.975, K - 1)
     out = []

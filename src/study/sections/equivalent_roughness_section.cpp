@@ -22,6 +22,11 @@ std::vector<KeySpec> EquivalentRoughnessSection::keys() {
                  "with the strips' mean contact stiffness dP/d delta at delta_eq, kernels/contact ER-7) or law (the "
                  "law's own stiffness; h_eq alone)",
                  std::string("strip"), {"strip", "law"}),
+      integer_key("equivalent_roughness", "leave_out",
+                  "filter = solver: strip index (0 .. strips - 1) left out of the table's mean PSD and stiffness, from "
+                  "the cached table without a new solve: a leave-one-out sub-table for the jackknife of the table's "
+                  "own error ([stiffness] table_error = jackknife; kernels/spectral/README.md D-30); -1: none",
+                  std::string("-1"), -1, 1023),
   };
 }
 
@@ -31,6 +36,12 @@ EquivalentRoughnessSection EquivalentRoughnessSection::parse(const KeyReader& s)
   p.line = s.text("equivalent_roughness.line");
   p.stiffness = s.text("equivalent_roughness.stiffness");
   p.line_origin = {s.where("equivalent_roughness.line")};
+  p.leave_out = s.integer("equivalent_roughness.leave_out");
+  p.leave_out_origin = {s.where("equivalent_roughness.leave_out")};
+  if (p.leave_out >= p.strips)
+    p.leave_out_origin.refuse("leaves out a strip the table does not have; allowed: -1 .. " +
+                              std::to_string(p.strips - 1) +
+                              " ([equivalent_roughness] strips = " + std::to_string(p.strips) + ")");
   return p;
 }
 

@@ -15,6 +15,8 @@ struct EquivalentRoughnessSection {
   long long strips = 0;
   std::string line, stiffness;  // as written
   KeyOrigin line_origin;
+  long long leave_out = -1;  // >= 0: the sub-table without this strip (D-30)
+  KeyOrigin leave_out_origin;
 
   static std::vector<KeySpec> keys();
   static EquivalentRoughnessSection parse(const KeyReader& s);

@@ -50,7 +50,9 @@ std::vector<KeySpec> StiffnessSection::keys() {
                  "what `run`'s intervals include besides the realisations' scatter: none (conditional on the stiffness "
                  "table), or jackknife: the table's own sampling error, from the ensemble run again with each of the "
                  "table's leave-one-surface-out sub-tables (realisations + 1 ensembles, the same random streams; "
-                 "kernels/spectral/README.md D-30); needs [contact] law = table or literal and surface = rough",
+                 "kernels/spectral/README.md D-30); needs a rough stiffness table ([contact] law = table or literal, "
+                 "surface = rough; over its surfaces) or an equivalent-roughness table ([contact] filter = solver; "
+                 "over its [equivalent_roughness] strips)",
                  std::string("none"), {"none", "jackknife"}),
   };
 }
