@@ -2,7 +2,7 @@
 """The stiffness table's own error in the band intervals by a leave-one-surface-out jackknife
 (kernels/spectral/README.md D-30): the coverage of its intervals, as `run` writes them (--engine) or combined here.
 
-usage: table_jackknife.py ROLLSPEC STUDY [--n 4] [--k 25] [--table-seeds 11,12,13,14,15]
+usage: table_jackknife.py ROLLSPEC STUDY [--n 4] [--size-key KEY] [--set KEY=VALUE ...] [--k 25] [--table-seeds 11,12,13,14,15]
                           [--ref-seeds 21,22,23,24] [--k-ref 400] [--seed 999] [--ref-seed 555] [--work DIR]
                           [--engine] [--reuse-reference]
 
@@ -12,7 +12,7 @@ and combined here; both give the same intervals (the engine's t quantiles to abo
 
 Reference: the mean band level (dB) over the tables of --ref-seeds, each at K_ref realisations.
 For every test table seed t: the full N-surface table and its N leave-one-out sub-tables
-([stiffness] table_leave_out = i), each run at the same study seed and K (common random numbers:
+([stiffness] table_leave_out = i; the stiffness table only: use --engine for others), each run at the same study seed and K (common random numbers:
 the differences are the table's alone). theta_i: band levels (dB) with sub-table i, theta: with
 the full table; jackknife variance V_J = (N - 1)/N sum_i (theta_i - mean theta_i)^2 (D-30a).
 Within-ensemble standard error s_w = h / t_{K-1} (h: half width of the engine's 95 % interval in
@@ -72,6 +72,9 @@ def main():
     p.add_argument("--work", default="table-jackknife")
     p.add_argument("--engine", action="store_true", help="the intervals of run's table_error = jackknife")
     p.add_argument("--reuse-reference", action="store_true", help="keep reference files of an earlier call in --work")
+    p.add_argument("--size-key", default="stiffness.realisations",
+                   help="the key --n sets: the table's surfaces, or equivalent_roughness.strips")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="more settings for every run")
     a = p.parse_args()
     shared = set(a.table_seeds.split(",")) & set(a.ref_seeds.split(","))
     if shared:
@@ -79,7 +82,7 @@ def main():
                  "must not be part of the reference")
     work = Path(a.work).resolve()
     (work / "tables").mkdir(parents=True, exist_ok=True)
-    common = [f"stiffness.realisations={a.n}", f"stiffness.table_dir={work / 'tables'}"]
+    common = [f"{a.size_key}={a.n}", f"stiffness.table_dir={work / 'tables'}", *a.set]
 
     refs = []
     for t in map(int, a.ref_seeds.split(",")):
