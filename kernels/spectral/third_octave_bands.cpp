@@ -65,4 +65,10 @@ double band_average_irregular(const double* f, const double* psd, std::size_t n,
   return acc / (upper - lower);
 }
 
+double band_rule_shift(const double* psd, std::size_t n, double df, double lower, double upper) {
+  std::vector<double> f(n);
+  for (std::size_t k = 0; k < n; ++k) f[k] = df * static_cast<double>(k);
+  return std::log(band_average_irregular(f.data(), psd, n, lower, upper) / band_average(psd, n, df, lower, upper));
+}
+
 }  // namespace rollspec::spectral

@@ -28,6 +28,12 @@ double band_average(const double* psd, std::size_t n, double df, double lower, d
 // its piecewise-linear interpolant. Returns NaN when the grid does not cover the band.
 double band_average_irregular(const double* f, const double* psd, std::size_t n, double lower, double upper);
 
+// ln of the ratio of one PSD's band means by the two rules above, on the grid f_k = k df:
+// band_average_irregular (a measurement's rule: its points joined linearly) over band_average (the
+// engine's: each bin flat over [k - 1/2, k + 1/2] df). Near 0 where the band spans many bins; a band
+// of a bin or two beside a steep slope reads differently by the two (kernels/spectral D-27h).
+double band_rule_shift(const double* psd, std::size_t n, double df, double lower, double upper);
+
 // Number of bins (fractional, by overlap) that a band covers.
 double band_bins(double df, double lower, double upper);
 

@@ -20,6 +20,27 @@ namespace rollspec::cli {
 
 using io::number_text;
 
+namespace {
+
+// The result's mean PSD in the row named `sensor` and its bin width (empty: the result lacks them).
+std::vector<double> mean_psd_row(const io::Hdf5Reader& r, const std::string& sensor, double& df) {
+  if (!r.exists("/psd/sensor") || !r.exists("/psd/mean") || !r.exists("/psd/frequency")) return {};
+  std::vector<std::size_t> dims;
+  const auto mean = r.read("/psd/mean", &dims);
+  const auto names = r.read_strings("/psd/sensor");
+  const auto f = r.read("/psd/frequency");
+  if (dims.size() != 2 || dims[0] != names.size() || dims[1] != f.size() || f.size() < 2) return {};
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == sensor) {
+      df = f[1] - f[0];
+      return {mean.begin() + static_cast<std::ptrdiff_t>(i * f.size()),
+              mean.begin() + static_cast<std::ptrdiff_t>((i + 1) * f.size())};
+    }
+  return {};
+}
+
+}  // namespace
+
 double VaryRange::value(double u) const { return log ? lo * std::pow(hi / lo, u) : lo + u * (hi - lo); }
 
 double VaryRange::unit(double v) const { return log ? std::log(v / lo) / std::log(hi / lo) : (v - lo) / (hi - lo); }
@@ -109,14 +130,20 @@ io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u)
   }
   if (!last_warnings_[point].empty()) ++warned_runs_;
   io::BandLevels b;
+  std::vector<double> psd;  // the row's mean PSD, for the point's first run only (check_band_rules)
+  double df = 0.0;
   {
     const io::Hdf5Reader r(out);
     io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
     b = io::read_band_levels(r, in_.sensor);
+    if (band_[point].empty()) psd = mean_psd_row(r, b.sensor, df);
   }
   std::filesystem::remove(out);
   if (band_[point].empty() && !b.pick_note.empty()) std::fprintf(stderr, "rollspec fit: %s\n", b.pick_note.c_str());
-  if (band_[point].empty()) choose_bands(point, b);
+  if (band_[point].empty()) {
+    choose_bands(point, b);
+    check_band_rules(point, b, psd, df);
+  }
   return b;
 }
 
@@ -145,6 +172,31 @@ void FitModel::choose_bands(std::size_t point, const io::BandLevels& b) {
                        " bands need K >= " + std::to_string(needed) +
                        " realisations for the band covariance, the study runs " + std::to_string(b.realisations) +
                        "; raise study.realisations (--set) or choose fewer bands with --fmin/--fmax");
+}
+
+// The measurement's band average joins its points linearly, the model's band level sums its bins: a band of
+// a bin or two beside a steep slope reads differently by the two. Measured on the model's own mean PSD, a
+// difference above the band's standard deviation would bias the fit by itself (kernels/spectral D-27h).
+void FitModel::check_band_rules(std::size_t point, const io::BandLevels& b, const std::vector<double>& psd,
+                                double df) const {
+  if (psd.empty() || !(df > 0.0)) return;
+  const std::size_t nb = b.level_db.size();
+  const double K = static_cast<double>(b.realisations), M = in_.points[point].records;
+  const std::string at = in_.points[point].at.empty() ? "" : "(at " + in_.points[point].at + ") ";
+  for (const std::size_t k : band_[point]) {
+    const double shift = spectral::band_rule_shift(psd.data(), psd.size(), df, b.lower[k], b.upper[k]);
+    const double s = b.log_covariance[k * nb + k];
+    const double sd = std::sqrt(std::log1p(std::expm1(s) / M) + std::log1p(std::expm1(s) / K));
+    if (!(std::fabs(shift) > sd)) continue;
+    std::fprintf(stderr,
+                 "rollspec fit: WARNING: %sband %.4g .. %.4g Hz spans %.2g bins of the model's %.4g Hz grid: the "
+                 "model's mean PSD averaged as the measurement is (its points joined linearly) reads %+.2f dB from "
+                 "its band level (its bins), %.2g times the band's standard deviation, a bias of the fit by itself "
+                 "(kernels/spectral D-27h); leave the band out (--fmin/--fmax) or refine the model's grid "
+                 "(spectrum.segment)\n",
+                 at.c_str(), b.lower[k], b.upper[k], (b.upper[k] - b.lower[k]) / df, df, 10.0 / std::log(10.0) * shift,
+                 std::fabs(shift) / sd);
+  }
 }
 
 double FitModel::negative_log_likelihood(const std::vector<double>& u) {

@@ -69,6 +69,7 @@ class FitModel {
  private:
   io::BandLevels run_at(std::size_t point, const std::vector<double>& u);
   void choose_bands(std::size_t point, const io::BandLevels& b);
+  void check_band_rules(std::size_t point, const io::BandLevels& b, const std::vector<double>& psd, double df) const;
 
   const FitInputs& in_;
   std::string temp_dir_;

@@ -73,3 +73,18 @@ def test_missing_inputs_are_refused(tmp_path, measured):
     assert r.returncode == 64 and "vary" in r.stderr
     r = run(["fit", STUDY, measured, "--vary", "force.level=1:2", "--set", "force.level=3", "--measured-averages", 16])
     assert r.returncode == 64 and "force.level is varied by --vary" in r.stderr
+
+
+def test_a_band_of_a_bin_or_two_is_warned_about(tmp_path, measured):
+    # On 16 Hz bins (spectrum.segment = 64 at 1024 Hz) the bands below ~110 Hz span about a bin or less: the
+    # measurement's rule (its points joined linearly) and the model's (its bins) read them differently, by
+    # several of the band's standard deviations beside the 50 Hz resonance (kernels/spectral D-27h).
+    coarse = measurement(tmp_path, 4243, {"force.level": TRUTH, "spectrum.segment": 64})
+    out, r = fit(coarse, {"force.level": "0.1:10:log"}, "--set", "spectrum.segment=64")
+    assert out is not None, r.stderr
+    lines = [x for x in r.stderr.splitlines() if x.startswith("rollspec fit: WARNING: band ")]
+    assert lines and all("of the model's 16 Hz grid" in x and "D-27h" in x for x in lines), r.stderr
+    assert any(x.startswith("rollspec fit: WARNING: band 70.79 .. 89.13 Hz spans 1.1 bins") for x in lines), r.stderr
+    # The fast setting's 0.5 Hz bins resolve every band: no such warning.
+    _, r = fit(measured, {"force.level": "0.1:10:log"})
+    assert r.returncode == 0 and "WARNING: band" not in r.stderr, r.stderr

@@ -54,3 +54,17 @@ TEST_CASE("band averages of a flat PSD are the PSD, of a linear PSD the midpoint
         doctest::Approx(b.lower + b.upper).epsilon(1e-12));
   CHECK(std::isnan(band_average_irregular(f.data(), linear.data(), f.size(), 1900.0, 2100.0)));
 }
+
+TEST_CASE("band_rule_shift: the two band rules agree on a flat PSD and part beside a spike") {
+  const std::vector<double> flat(12, 3.0);
+  CHECK(band_rule_shift(flat.data(), flat.size(), 1.0, 3.6, 4.4) == doctest::Approx(0.0).epsilon(1e-15));
+  // A spike of 101 in bin 3, 1 elsewhere; the band [3.6, 4.4] lies inside bin 4 ([3.5, 4.5]): the bin
+  // rule reads 1. Linearly, 41 at 3.6 falls to 1 at 4: (0.4 (41 + 1) / 2 + 0.4) / 0.8 = 11.
+  std::vector<double> spike(12, 1.0);
+  spike[3] = 101.0;
+  CHECK(band_rule_shift(spike.data(), spike.size(), 1.0, 3.6, 4.4) == doctest::Approx(std::log(11.0)).epsilon(1e-13));
+  // Wide bands see the spike by both rules nearly alike.
+  std::vector<double> wide(400, 1.0);
+  wide[100] = 101.0;
+  CHECK(std::fabs(band_rule_shift(wide.data(), wide.size(), 1.0, 50.0, 250.0)) < 1e-9);
+}
