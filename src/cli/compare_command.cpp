@@ -86,6 +86,44 @@ const char* const kCompareUsage =
     "flagged: a `WARNING:` line before the table (`# WARNING:` in csv, on stderr too), and in json\n"
     "loss_of_contact_share and loss_of_contact_warning (null without).";
 
+// The measurement's band average joins its points linearly, the result's band level sums its bins: a
+// band of a bin or two beside a steep slope reads differently by the two. Measured on the result's own
+// mean PSD, a difference above the band's standard deviation in a prediction interval (the mean's and
+// a measurement of `records` records') decides the band by itself (kernels/spectral D-27h, as `fit`
+// checks). One line naming every such band; nothing without --measured-averages, where the mean's own
+// interval is narrower than any grid's rule.
+void warn_band_rules(const io::Hdf5Reader& r, const io::BandLevels& b, const std::vector<BandRow>& rows,
+                     double records) {
+  if (!r.exists("/psd/mean") || !r.exists("/psd/sensor") || !r.exists("/psd/frequency")) return;
+  const auto names = r.read_strings("/psd/sensor");
+  const auto f = r.read("/psd/frequency"), mean = r.read("/psd/mean");
+  const auto it = std::find(names.begin(), names.end(), b.sensor);
+  if (it == names.end() || f.size() < 2 || mean.size() != names.size() * f.size() || f[0] != 0.0) return;
+  const double* psd = mean.data() + static_cast<std::size_t>(it - names.begin()) * f.size();
+  const double df = f[1] - f[0], K = static_cast<double>(b.realisations);
+  std::string bands;
+  int count = 0;
+  for (const auto& row : rows) {
+    const std::size_t k = row.band;
+    const double s = b.log_std[k] * b.log_std[k];
+    const double sd = std::sqrt(std::log1p(std::expm1(s) / K) + std::log1p(std::expm1(s) / records));
+    const double shift = spectral::band_rule_shift(psd, f.size(), df, b.lower[k], b.upper[k]);
+    if (!(sd > 0.0) || !(std::fabs(shift) > sd)) continue;
+    char one[160];
+    std::snprintf(one, sizeof one, "%s%.4g .. %.4g Hz (%.2g bins, %+.2f dB, %.2g sd)", count ? "; " : "", b.lower[k],
+                  b.upper[k], (b.upper[k] - b.lower[k]) / df, 10.0 / std::log(10.0) * shift, std::fabs(shift) / sd);
+    bands += one;
+    ++count;
+  }
+  if (count == 0) return;
+  std::fprintf(stderr,
+               "rollspec compare: WARNING: %d band%s of the result's %.4g Hz grid read differently as the "
+               "measurement is read (its points joined linearly) and as the result's band levels are (its bins), by "
+               "more than the band's standard deviation, enough to decide the band by itself (kernels/spectral "
+               "D-27h): %s; leave %s out (--fmin/--fmax) or refine the result's grid (spectrum.segment)\n",
+               count, count == 1 ? "" : "s", df, bands.c_str(), count == 1 ? "it" : "them");
+}
+
 // The bands inside [fmin, fmax] that the measurement covers, with the simulated mean's interval
 // and, for records > 0 (a measurement averaged over that many records), the prediction interval.
 std::vector<BandRow> band_rows(const io::BandLevels& b, const Measurement& m, const std::string& measurement,
@@ -261,6 +299,7 @@ int compare_command(const Args& args) {
 
   const std::vector<BandRow> rows = band_rows(b, m, measurement, fmin, fmax, predict ? records : 0.0);
   if (rows.empty()) throw data_error(measurement + ": covers none of the result's bands inside [fmin, fmax]");
+  if (has_interval && predict) warn_band_rules(r, b, rows, records);
   double sq = 0.0;
   int inside = 0;
   for (const auto& row : rows) {

@@ -127,3 +127,27 @@ def test_too_few_realisations_give_no_interval_and_say_so(files):
 def test_bad_options_are_refused(files, args, fragment):
     r = run(["compare", files["model"], files["meas"], *args])
     assert r.returncode == EX_USAGE and fragment in r.stderr and r.stdout == ""
+
+
+def test_a_band_of_a_bin_or_two_is_warned_about(tmp_path):
+    # As `fit` (kernels/spectral D-27h): on 16 Hz bins (spectrum.segment = 64 at 1024 Hz) the bands below ~110 Hz
+    # span about a bin; the measurement's rule (points joined linearly) and the result's (its bins) read them
+    # differently, by several of the band's standard deviations beside the 50 Hz resonance.
+    from fit_experiment import FAST, STUDY, measurement, sets
+    measured = measurement(tmp_path, 4243, {"force.level": 2.0})
+    for segment, warned in ((64, True), (2048, False)):
+        out = tmp_path / f"model-{segment}.h5"
+        r = run(["run", STUDY, "--out", out, "--quiet",
+                 *sets(FAST + ["study.realisations=40", f"spectrum.segment={segment}"])])
+        assert r.returncode == 0, r.stderr
+        r = run(["compare", out, measured, "--measured-averages", 16])
+        assert r.returncode == 0, r.stderr
+        lines = [x for x in r.stderr.splitlines() if "grid read differently" in x]
+        if warned:  # one line naming the bands
+            assert len(lines) == 1 and "of the result's 16 Hz grid" in lines[0] and "D-27h" in lines[0], r.stderr
+            assert "70.79 .. 89.13 Hz (1.1 bins" in lines[0], lines[0]
+        else:
+            assert not lines, r.stderr
+    # Without --measured-averages the question is the mean's own interval: no such warning.
+    r = run(["compare", tmp_path / "model-64.h5", measured])
+    assert r.returncode == 0 and "grid read differently" not in r.stderr, r.stderr
