@@ -7,10 +7,9 @@
 
 namespace rollspec::spectral {
 
-namespace {
-
-// Fenton-Wilkinson: variance of ln of an n-record mean, ln(1 + (e^{S_bb} - 1) / n) (D-26a).
 double log_mean_variance(double s, double n) { return std::log1p(std::expm1(s) / n); }
+
+namespace {
 
 // d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = G S G, G_bb^2 = (V_M,bb + V_K,bb) / S_bb (D-26a, b): each
 // band's variance from Fenton-Wilkinson, the correlations those of S. V stays S scaled band by band,

@@ -18,6 +18,10 @@ struct BandTestResult {
   std::uint64_t needed = 0;       // realisations the test needs for p bands: p + kExtraRealisations
 };
 
+// Fenton-Wilkinson: variance of ln of an n-record mean, ln(1 + (e^s - 1) / n), from the variance s of
+// one record's ln band average (D-26a). A band's V_bb is log_mean_variance(s, M) + log_mean_variance(s, K).
+double log_mean_variance(double s, double n);
+
 // Realisations beyond p that the test asks for (F denominator dof >= this + 1).
 constexpr std::uint64_t kExtraRealisations = 4;
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/cli/commands.hpp"

@@ -186,7 +186,7 @@ void FitModel::check_band_rules(std::size_t point, const io::BandLevels& b, cons
   for (const std::size_t k : band_[point]) {
     const double shift = spectral::band_rule_shift(psd.data(), psd.size(), df, b.lower[k], b.upper[k]);
     const double s = b.log_covariance[k * nb + k];
-    const double sd = std::sqrt(std::log1p(std::expm1(s) / M) + std::log1p(std::expm1(s) / K));
+    const double sd = std::sqrt(spectral::log_mean_variance(s, M) + spectral::log_mean_variance(s, K));
     if (!(std::fabs(shift) > sd)) continue;
     std::fprintf(stderr,
                  "rollspec fit: WARNING: %sband %.4g .. %.4g Hz spans %.2g bins of the model's %.4g Hz grid: the "

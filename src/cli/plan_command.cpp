@@ -85,9 +85,9 @@ int plan_command(const Args& args) {
   }
   // table_error = jackknife (D-30): the ensemble once with the table and once per sub-table.
   const bool jackknife = study::StiffnessSection::asks_table_jackknife(s) && ensemble_scene;
-  const double ensembles = jackknife ? static_cast<double>(ensemble_scene->table_jackknife().n) + 1.0 : 1.0;
+  const scenes::TableJackknifePlan jk = jackknife ? ensemble_scene->table_jackknife() : scenes::TableJackknifePlan{};
+  const double ensembles = static_cast<double>(jk.n) + 1.0;
   if (jackknife) {
-    const scenes::TableJackknifePlan jk = ensemble_scene->table_jackknife();
     std::printf(
         "table jackknife: [stiffness] table_error = jackknife runs the ensemble %zu times (the full %s and each of its "
         "%zu leave-one-out sub-tables, the same realisation streams): %zu x the ensemble's run time; the sub-tables "

@@ -270,8 +270,9 @@ class BallOnBeam final : public EnsembleScene {
   void use_equivalent_roughness(const stiffness::EquivalentRoughnessTable& full, const std::string& status,
                                 bool quiet) {
     const long long skip = b_.equivalent_roughness_leave_out;
-    const stiffness::EquivalentRoughnessTable t =
-        skip >= 0 ? stiffness::leave_out_strip(full, static_cast<std::size_t>(skip), blocked_force_grid()) : full;
+    std::optional<stiffness::EquivalentRoughnessTable> sub;  // only a sub-table is a new table
+    if (skip >= 0) sub = stiffness::leave_out_strip(full, static_cast<std::size_t>(skip), blocked_force_grid());
+    const stiffness::EquivalentRoughnessTable& t = sub ? *sub : full;
     if (!quiet)
       std::fprintf(stderr, "equivalent roughness table: %s (%g strips x %zu positions, delta_smooth = %.4g m%s)\n",
                    status.c_str(), t.strips, t.position.size(), t.smooth_approach,
