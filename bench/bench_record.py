@@ -25,9 +25,12 @@ import platform
 import re
 import shlex
 import subprocess
+import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "python-post"))
+from rollspec_post import safe_output  # noqa: E402  (the one atomic writer)
 RECORDS = ROOT / "bench" / "records"
 REQUIRED = {"title": str, "command": str, "date": str, "machine": dict, "builds": dict, "settings": str,
             "columns": list, "rows": list}
@@ -97,7 +100,40 @@ def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=
     if data is not None:
         record["data"] = data
     check(record, str(path))
-    Path(path).write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n")
+    replace_text(path, json.dumps(record, indent=1, ensure_ascii=False) + "\n", own=is_record)
+
+
+def is_record(path):
+    try:
+        load(path)
+        return True
+    except (RecordError, OSError, UnicodeDecodeError):
+        return False
+
+
+def check_target(path, own=lambda target: True):
+    """The file `path` would replace (symbolic links resolved); RecordError, in one line, for a directory,
+    FIFO or device, a missing directory, or an existing file that own(target) does not recognise. Bench
+    scripts call it before measuring, so a long measurement is not lost at the end."""
+    target = os.path.realpath(path)
+    if os.path.exists(target) and not os.path.isfile(target):
+        raise RecordError(f"{path}: is not a regular file; allowed: a new file or one this script wrote")
+    if os.path.exists(target) and not own(target):
+        raise RecordError(f"{path}: exists and is not a benchmark record; allowed: a new file or a record "
+                          "written by a bench script")
+    if not os.path.isdir(os.path.dirname(target)):
+        raise RecordError(f"{path}: no directory {os.path.dirname(target)}")
+    return target
+
+
+def replace_text(path, text, own=lambda target: True):
+    """Writes `text` to `path` through a temporary and a rename: the old file stays whole if the write
+    fails; a symbolic link's target is replaced."""
+    target = check_target(path, own)
+    try:
+        safe_output.write_atomic(target, lambda fh: fh.write(text.encode()))
+    except safe_output.PostError as e:
+        raise RecordError(str(e)) from None
 
 
 def looks_like_commit(text):

@@ -57,6 +57,10 @@ def main():
     command = a.command[1:] if a.command[:1] == ["--"] else a.command
     if not command:
         sys.exit("record_csv: no command after --")
+    try:
+        bench_record.check_target(a.record, bench_record.is_record)
+    except bench_record.RecordError as e:
+        sys.exit(f"record_csv: {e}")
     env = dict(os.environ, **dict(e.split("=", 1) for e in a.env))
     busy, own = bench_record.busy_seconds(), bench_record.own_cpu()
     child = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -76,9 +80,12 @@ def main():
         build["version"] = bench_record.build_version(binary)
     took = f"whole command took {wall:.0f} s wall, {cpu:.0f} s CPU."
     settings = f"Environment {', '.join(a.env)}; the {took}" if a.env else f"The {took}"
-    bench_record.write(a.record, title=a.title, argv=sys.argv, builds={"measured": build}, settings=settings,
-                       columns=[h.replace("_", " ") for h in head], rows=rows,
-                       notes=a.notes, other_cores=others)
+    try:
+        bench_record.write(a.record, title=a.title, argv=sys.argv, builds={"measured": build}, settings=settings,
+                           columns=[h.replace("_", " ") for h in head], rows=rows,
+                           notes=a.notes, other_cores=others)
+    except bench_record.RecordError as e:
+        sys.exit(f"record_csv: {e}")
 
 
 if __name__ == "__main__":

@@ -137,6 +137,12 @@ def main():
     ap.add_argument("--describe-reference", default="the reference build", help="the reference build in words")
     ap.add_argument("--describe-current", default="the current build", help="the current build in words")
     o = ap.parse_args()
+    try:  # refused before hours of measurement, not after
+        for out, own in ((o.json, None), (o.markdown, None), (o.record, bench_record.is_record)):
+            if out:
+                bench_record.check_target(out, own or (lambda target: True))
+    except bench_record.RecordError as e:
+        sys.exit(f"bench_tables: {e}")
     kinds = o.kinds.split(",")
     builds = {"reference": o.reference, "current": o.current}
     runs = {k: {b: [] for b in builds} for k in kinds}
@@ -178,9 +184,9 @@ def main():
     text = "\n".join(lines)
     print(text)
     if o.json:
-        pathlib.Path(o.json).write_text(json.dumps(summary, indent=1))
+        bench_record.replace_text(o.json, json.dumps(summary, indent=1))
     if o.markdown:
-        pathlib.Path(o.markdown).write_text(text + "\n")
+        bench_record.replace_text(o.markdown, text + "\n")
     if o.record:
         bench_record.write(
             o.record, title=title(o.describe_reference),

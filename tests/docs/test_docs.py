@@ -120,6 +120,33 @@ def test_a_malformed_benchmark_record_is_refused_in_one_line(tmp_path, change, f
         bench_record.load(tmp_path / "bad.json")
 
 
+def write_small(path):
+    r = small_record()
+    bench_record.write(path, title=r["title"], argv=["bench/x.py", "--record", "r.json"], builds=r["builds"],
+                       settings=r["settings"], columns=r["columns"], rows=r["rows"])
+
+
+def test_a_record_replaces_only_a_record_and_never_a_foreign_or_special_file(tmp_path):
+    record = tmp_path / "r.json"
+    write_small(record)
+    write_small(record)  # its own record: replaced
+    assert bench_record.load(record)["title"] == small_record()["title"]
+    link = tmp_path / "link.json"
+    link.symlink_to(record)
+    write_small(link)  # a link to a record: the record is replaced, the link stays
+    assert link.is_symlink() and bench_record.load(record)
+    foreign = tmp_path / "notes.json"
+    foreign.write_text('{"mine": 1}\n')
+    fifo = tmp_path / "fifo.json"
+    os.mkfifo(fifo)
+    for path, fault in ((foreign, "exists and is not a benchmark record"), (fifo, "is not a regular file"),
+                        (tmp_path, "is not a regular file"), (tmp_path / "no" / "r.json", "no directory")):
+        with pytest.raises(bench_record.RecordError, match=re.escape(f"{path}: {fault}")):
+            write_small(path)
+    assert foreign.read_text() == '{"mine": 1}\n'
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fifo.json", "link.json", "notes.json", "r.json"]
+
+
 def test_a_malformed_benchmark_record_fails_the_docs_build_in_one_line(tmp_path):
     records = tmp_path / "records"
     records.mkdir()
