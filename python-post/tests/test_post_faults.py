@@ -13,6 +13,7 @@ import sys
 import numpy as np
 import pytest
 
+import forked_run
 from conftest import SOURCE
 from post_samples import (PRIMARY, command_args, copy, marked_output, snapshot, write_measurement, write_primary,
                           write_result)
@@ -34,6 +35,7 @@ def writers():
 
 
 WRITERS = list(writers())
+forked_run.preload()
 
 
 def reads_measurement(command):
@@ -55,9 +57,12 @@ CASES = [(c, k, t) for c, kinds in WRITERS for k in kinds for t in TARGETS]
 
 
 def run_post(args, timeout=TIMEOUT, env=None, python=()):
-    """rollspec-post in a subprocess; a hang fails the test (and is counted)."""
-    env = env or dict(os.environ, PYTHONPATH=str(SOURCE / "python-post"))
+    """rollspec-post as a command (in a fork of this process with its modules imported, forked_run.py, or,
+    for another environment or interpreter option, a new interpreter); a hang fails the test (and is counted)."""
     try:
+        if env is None and not python and forked_run.forking():
+            return forked_run.run(args, timeout)
+        env = env or dict(os.environ, PYTHONPATH=str(SOURCE / "python-post"))
         return subprocess.run([sys.executable, *python, "-m", "rollspec_post", *map(str, args)], capture_output=True,
                               text=True,
                               env=env, timeout=timeout, stdin=subprocess.DEVNULL)
