@@ -8,8 +8,8 @@
 
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
-#include "src/cli/commands.hpp"
 #include "src/cli/fit_journal.hpp"
+#include "src/cli/run_phases.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
@@ -114,18 +114,23 @@ std::size_t FitModel::bands() const {
 
 io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u) {
   const std::string out = temp_dir_ + "/run-" + std::to_string(runs_) + ".h5";
-  Args args{in_.study, "--out", out, "--quiet"};
-  for (const auto& s : in_.sets) args.insert(args.end(), {"--set", s});
-  for (const auto& s : in_.points[point].sets) args.insert(args.end(), {"--set", s});
+  RunRequest request;
+  request.study.file = in_.study;
+  request.out = out;
+  request.quiet = true;
+  request.spectra_only = true;  // the bands are all a fit reads
+  auto& sets = request.study.sets;
+  sets = in_.sets;
+  sets.insert(sets.end(), in_.points[point].sets.begin(), in_.points[point].sets.end());
   for (std::size_t i = 0; i < in_.vary.size(); ++i) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.17g", in_.vary[i].value(u[i]));
-    args.insert(args.end(), {"--set", in_.vary[i].key + "=" + buf});
+    sets.push_back(in_.vary[i].key + "=" + buf);
   }
   ++runs_;
   {
     const io::RunWarningCapture capture;  // said once, for the run at the estimate (fit_command)
-    run_command(args);
+    run_request(request);
     last_warnings_[point] = capture.lines();
   }
   if (!last_warnings_[point].empty()) ++warned_runs_;

@@ -57,7 +57,11 @@ int run_command(const Args& args) {
 
   RunRequest request{study, out, resume, restart, vm.count("force") > 0, vm.count("rebuild") > 0, vm.count("quiet") > 0,
                      only};
-  if (const auto sweep = load_sweep(study, sweeps)) return run_sweep(*sweep, request);
+  return run_request(request, sweeps);
+}
+
+int run_request(const RunRequest& request, const std::vector<std::string>& sweeps) {
+  if (const auto sweep = load_sweep(request.study, sweeps)) return run_sweep(*sweep, request);
   ResolvedRun run = resolve_run(request);
   check_resources(run.study, request.force);
   return run.scene->kind == scenes::SceneKind::single_run ? run_single_phase(run, request)

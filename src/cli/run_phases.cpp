@@ -138,6 +138,7 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
     run.checkpoint.lock = std::make_unique<ensemble::CheckpointLock>(run.write_path + ".checkpoint");
   if (q.only < 0 && !q.resume) open_run_checkpoint(run, q);
   const auto scene = make_scene<scenes::EnsembleScene>(s);
+  if (q.spectra_only) scene->write_spectra_only();
   scene->prepare(q.quiet, q.rebuild);
   ensemble::EnsembleConfig cfg;
   cfg.checkpoint_dir = run.checkpoint.directory;

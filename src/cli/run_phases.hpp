@@ -24,6 +24,7 @@ struct RunRequest {
   std::string out;  // empty: from the study file's name
   bool resume = false, restart = false, force = false, rebuild = false, quiet = false;
   long long only = -1;  // >= 0: just this realisation
+  bool spectra_only = false;  // a fit's evaluation: the result needs only /psd and /bands (write_spectra_only)
 };
 
 struct ResolvedRun {
@@ -57,5 +58,8 @@ std::unique_ptr<T> make_scene(const study::KeyReader& s) {
 // Phases 3-5 of each kind; each returns the exit code.
 int run_single_phase(ResolvedRun& run, const RunRequest& request);
 int run_ensemble_phase(ResolvedRun& run, const RunRequest& request);
+
+// `rollspec run` after its options are read: the phases above, or a sweep's points (--sweep or [sweep]).
+int run_request(const RunRequest& request, const std::vector<std::string>& sweeps = {});
 
 }  // namespace rollspec::cli

@@ -321,7 +321,8 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).write(w, sums, table_error_);
+    BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).write(w, sums, table_error_,
+                                                                                      spectra_only_);
     if (b_.time_histories) write_time_histories(w, sums.only);
   }
 
@@ -388,7 +389,9 @@ class BallOnBeam final : public EnsembleScene {
   bool blocked_solver() const { return b_.blocked_solver(); }
   bool solver_filter() const { return b_.filter == ContactFilter::solver; }
   bool writes_reference() const { return b_.linearised() && b_.reference; }
+  void write_spectra_only() override { spectra_only_ = true; }
   bool quiet_ = false;
+  bool spectra_only_ = false;
   std::shared_ptr<const texture::LineTextureGenerator> lines_;  // of contact_.line_psd
   std::unique_ptr<const beam::BallOnBeamModel> model_;          // the settings' model with contact_'s law
   std::unique_ptr<beam::ExactStepIntegrator> integrator_;

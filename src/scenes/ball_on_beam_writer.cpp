@@ -31,8 +31,8 @@ io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) co
   return e;
 }
 
-void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums,
-                             const io::TableError& table_error) const {
+void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, const io::TableError& table_error,
+                             bool spectra_only) const {
   const std::size_t nf = welch_->n_freq();
   const double K = static_cast<double>(sums.count);
   auto mean_of = [&](std::size_t i) { return sums.mean(i); };
@@ -95,6 +95,7 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.attribute("/ball", "mass", b_.model.ball.mass);
   w.attribute("/ball", "speed", b_.model.traverse.speed);
 
+  if (spectra_only) return;
   write_roughness(w);
   if (writes_reference()) write_linear_reference(w, e.frequency, e.sensors, K);
 }

@@ -28,7 +28,9 @@ class BallOnBeamWriter {
       : b_(b), c_(c), welch_(&welch), rows_(&rows), line_fundamental_(line_fundamental), quiet_(quiet) {}
 
   // `table_error`: what the intervals include besides the realisations (io/table_error.hpp).
-  void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, const io::TableError& table_error) const;
+  // `spectra_only` (a fit's evaluation): without /roughness and the linearised reference.
+  void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, const io::TableError& table_error,
+             bool spectra_only = false) const;
   // The sensors' spectra as write() writes them under /psd and /bands.
   io::PsdEnsemble spectra(const ensemble::EnsembleSums& sums) const;
 

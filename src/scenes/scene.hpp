@@ -96,6 +96,10 @@ class EnsembleScene : public Scene {
     throw std::logic_error("this scene has no stiffness table to jackknife");
   }
   virtual void include_table_error(io::TableError) { throw std::logic_error("this scene has no stiffness table"); }
+  // A fit's evaluation reads only the spectra and bands: write_results then leaves out what the scene
+  // derives beside the ensemble (ball-on-beam: the roughness PSDs and the linearised reference, 90 % of
+  // a short run's time). A scene with no such extras ignores it.
+  virtual void write_spectra_only() {}
 };
 
 // One deterministic computation (e.g. `rolling-beam`): run() once after prepare(), then written.

@@ -76,3 +76,38 @@ TEST_CASE("plan --probe makes one scene") {
   CHECK(scenes::Scene::made() - start == 1);
   fs::remove_all(dir);
 }
+
+TEST_CASE("a fit's evaluation (spectra only) writes the same spectra and bands as the full run, nothing else") {
+  const fs::path dir = fs::temp_directory_path() / "rollspec_test_spectra_only";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "rig.ini")
+      << "[study]\nscene = ball-on-beam\nrealisations = 6\nseed = 7\n"
+         "[beam]\nsupport = clamped-clamped\nlength = 0.39\nwidth = 0.05\nthickness = 0.006\nyoungs_modulus = 210e9\n"
+         "density = 7850\nmax_frequency = 3000\nloss_factor = 0.01\n"
+         "[ball]\nradius = 0.02\nspeed = 1.0\nstart = 0.1\nend = 0.2\n"
+         "[contact]\nlaw = linearised\nk0 = 6.8e6\n"
+         "[texture]\nsource = self-affine\nhurst = 0.2\nrolloff_wavelength = 50e-3\nshort_wavelength = 4e-6\nrms = 0.1e-6\n"
+         "[signal]\nsample_rate = 8192\n[sensors]\npositions = 0.13, 0.26\n"
+         "[spectrum]\nsegment = 512\nband_min = 80\nband_max = 2000\n";
+  auto run = [&](const std::string& out, bool spectra_only) {
+    cli::RunRequest q;
+    q.study.file = (dir / "rig.ini").string();
+    q.out = (dir / out).string();
+    q.quiet = true;
+    q.spectra_only = spectra_only;
+    REQUIRE(cli::run_request(q) == 0);
+    return io::Hdf5Reader(q.out);
+  };
+  const io::Hdf5Reader full = run("full.h5", false), fit = run("fit.h5", true);
+  for (const char* d : {"/psd/frequency", "/psd/mean", "/psd/ci_lower", "/psd/ci_upper", "/psd/std", "/bands/level_db", "/bands/ci_lower_db",
+                        "/bands/log_level_covariance"}) {
+    CAPTURE(d);
+    CHECK(full.read(d) == fit.read(d));  // the same bits
+  }
+  CHECK(full.exists("/roughness"));
+  CHECK(full.exists("/reference/psd"));
+  CHECK_FALSE(fit.exists("/roughness"));
+  CHECK_FALSE(fit.exists("/reference"));
+  fs::remove_all(dir);
+}
