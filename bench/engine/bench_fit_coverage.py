@@ -11,7 +11,7 @@ estimate, wall time and evaluations per fit. Cases:
   rig-loss        the seed 002 rig: the beam's loss factor beam.loss_factor
 
     /usr/bin/python3 bench/engine/bench_fit_coverage.py [--case oscillator] [--experiments 100] [--jobs 2]
-        [--log FILE]   (each fit's JSON appended as it ends; --summarise FILE prints the figures of a log)
+        [--first-seed S] [--log FILE]   (each fit's JSON appended as it ends; --summarise FILE prints the figures of a log)
 """
 import argparse
 import concurrent.futures
@@ -88,6 +88,9 @@ def main():
     ap.add_argument("--two", action="store_true", help="the same as --case oscillator-two")
     ap.add_argument("--model-seeds", action="store_true",
                     help="each fit's runs with a seed of their own (default: the study's, the same in every fit)")
+    ap.add_argument("--first-seed", type=int, default=1000,
+                    help="experiment i's measurement has seed FIRST + i (its model seed 50000 + that); another "
+                         "FIRST gives experiments independent of an earlier run's")
     ap.add_argument("--log", help="append each experiment's fit (JSON, one line) here as it ends")
     ap.add_argument("--summarise", metavar="LOG", help="print the figures of a --log (an interrupted bench too)")
     a = ap.parse_args()
@@ -106,7 +109,7 @@ def main():
         return out
 
     with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        runs = list(pool.map(lambda s: logged(1000 + s, work), range(a.experiments)))
+        runs = list(pool.map(lambda s: logged(a.first_seed + s, work), range(a.experiments)))
     return summarise(name, case, records, realisations, runs, a.jobs)
 
 
