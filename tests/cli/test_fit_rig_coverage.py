@@ -4,8 +4,8 @@ factor made with other seeds, each fitted for it; the nominal 95 % profile inter
 about 95 % of the time. The loss factor is the harder key: it changes the bands' shape and their
 scatter (a level key is calibrated by test_fit_coverage.py on the oscillator; the rig's roughness level,
 texture.rms, by bench/engine/bench_fit_coverage.py --case rig-rms: 55 of 60).
-Budget: 20 experiments, 20 fits of ~32 runs, about 20 s each: about 4 min on 2 idle cores (over the
-3 min asked; fewer experiments would assert nothing useful). Asserted: at least 16 of 20 hold the truth,
+Budget: 20 experiments, 20 fits of ~32 runs, about 8 s each (a fit's runs write only the spectra it
+reads): 83 s on 2 idle cores (fewer experiments would assert nothing useful). Asserted: at least 16 of 20 hold the truth,
 which a calibrated 95 % fit meets with probability 0.9974 (P[X <= 15] = 0.0026); a fit covering 80 %
 meets it with probability 0.63, one covering 70 % with 0.24, so this catches gross under-coverage only.
 The fuller experiment is bench/engine/bench_fit_coverage.py (--case rig-loss: 55 of 60)."""
