@@ -323,7 +323,7 @@ class BallOnBeam final : public EnsembleScene {
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
     BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).write(w, sums, table_error_,
                                                                                       spectra_only_);
-    if (b_.time_histories) write_time_histories(w, sums.only);
+    if (b_.time_histories && !spectra_only_) write_time_histories(w, sums.only);  // re-simulates: not for a fit
   }
 
   io::PsdEnsemble spectra(const ensemble::EnsembleSums& sums) const override {

@@ -97,8 +97,9 @@ class EnsembleScene : public Scene {
   }
   virtual void include_table_error(io::TableError) { throw std::logic_error("this scene has no stiffness table"); }
   // A fit's evaluation reads only the spectra and bands: write_results then leaves out what the scene
-  // derives beside the ensemble (ball-on-beam: the roughness PSDs and the linearised reference, 90 % of
-  // a short run's time). A scene with no such extras ignores it.
+  // derives beside the ensemble (ball-on-beam: the roughness PSDs, the linearised reference, 90 % of
+  // a short run's time, and the stored time histories, which it simulates again). A scene with no
+  // such extras ignores it.
   virtual void write_spectra_only() {}
 };
 
