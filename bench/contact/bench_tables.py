@@ -208,4 +208,7 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except bench_record.RecordError as e:  # a write that failed at the end (full disk): one line, the old files whole
+        sys.exit(f"bench_tables: {e}")
