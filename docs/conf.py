@@ -27,7 +27,8 @@ sphinx_gallery_conf = {
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}  # .rst: the gallery's generated pages
 myst_enable_extensions = ["colon_fence", "dollarmath"]
 myst_heading_anchors = 3
-exclude_patterns = ["_repo", "_repo/**", "build.sh", "**/README.md", "examples/**", "validation/generated/goals-table.md"]
+exclude_patterns = ["_repo", "_repo/**", "build.sh", "**/README.md", "examples/**", "validation/generated/goals-table.md",
+                    "validation/generated/validation-records.md"]
 html_theme = "furo"
 html_title = "rollspec"
 autodoc_member_order = "bysource"

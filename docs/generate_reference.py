@@ -13,6 +13,7 @@ reference cannot drift from the program:
   validation/generated/bench-records.md  every benchmark record of bench/records/ (written by the bench
                                      scripts, bench/bench_record.py), a table each with its command;
                                      a malformed record stops the build with one line naming it
+  validation/generated/validation-records.md  the same for bench/records/validation/ (the seeds page)
 
   /usr/bin/python3 docs/generate_reference.py --bin build/werror/rollspec --out DOCS_SOURCE_DIR
 """
@@ -252,6 +253,19 @@ def write_bench_records(records, out):
     (out / "bench-records.md").write_text(text)
 
 
+def write_validation_records(records, out):
+    """The bench scripts' validation records (bench/records/validation/), for the seeds page."""
+    import bench_record  # noqa: E402  (on the path: write_bench_records runs first)
+    if not records.is_dir():  # another records directory ($ROLLSPEC_BENCH_RECORDS) may have none
+        (out / "validation-records.md").write_text("")
+        return
+    try:
+        text = bench_record.render_all(records, level=3)
+    except bench_record.RecordError as e:
+        sys.exit(f"generate_reference: {e}")
+    (out / "validation-records.md").write_text(text)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", default=os.environ.get("ROLLSPEC_BIN", str(REPO / "build" / "werror" / "rollspec")))
@@ -264,6 +278,7 @@ def main():
     ref.mkdir(parents=True, exist_ok=True)
     val.mkdir(parents=True, exist_ok=True)
     write_bench_records(Path(a.records), val)  # first: a malformed record fails before the slow pages
+    write_validation_records(Path(a.records) / "validation", val)
     write_commands(binary, ref)
     write_keys(binary, ref)
     write_exit_codes(ref)

@@ -73,7 +73,8 @@ def main():
     p.add_argument("--engine", action="store_true", help="the intervals of run's table_error = jackknife")
     p.add_argument("--reuse-reference", action="store_true", help="keep reference files of an earlier call in --work")
     p.add_argument("--size-key", default="stiffness.realisations",
-                   help="the key --n sets: the table's surfaces, or equivalent_roughness.strips")
+                   help="the key --n sets: the table's surfaces, or equivalent_roughness.strips; none: the study's "
+                        "own (the blocked-force table's Welch segments follow from its strip)")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="more settings for every run")
     a = p.parse_args()
     shared = set(a.table_seeds.split(",")) & set(a.ref_seeds.split(","))
@@ -82,7 +83,9 @@ def main():
                  "must not be part of the reference")
     work = Path(a.work).resolve()
     (work / "tables").mkdir(parents=True, exist_ok=True)
-    common = [f"{a.size_key}={a.n}", f"stiffness.table_dir={work / 'tables'}", *a.set]
+    size = [] if a.size_key == "none" else [f"{a.size_key}={a.n}"]
+    # The plain runs without the term, whatever the study says (the engine's runs add it).
+    common = [*size, f"stiffness.table_dir={work / 'tables'}", "stiffness.table_error=none", *a.set]
 
     refs = []
     for t in map(int, a.ref_seeds.split(",")):

@@ -80,9 +80,8 @@ double paired_noise_variance_reference(const double* x, std::size_t n, std::uint
   return noise_db2(sum_s2, mean, n, K);
 }
 
-WidenedHalfWidth widen_half_width(double h, std::uint64_t realisations, double v, std::uint64_t surfaces,
-                                  double level) {
-  const double k1 = static_cast<double>(realisations) - 1.0, n1 = static_cast<double>(surfaces) - 1.0;
+WidenedHalfWidth widen_half_width(double h, std::uint64_t realisations, double v, double table_dof, double level) {
+  const double k1 = static_cast<double>(realisations) - 1.0, n1 = table_dof;
   if (!(h > 0.0) || !std::isfinite(h) || !(v > 0.0) || !std::isfinite(v) || !(k1 >= 1.0) || !(n1 >= 1.0))
     return {h, k1};
   const double s_w = h / t_quantile(k1, level);

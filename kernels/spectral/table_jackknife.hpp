@@ -4,8 +4,9 @@
 // with each of its N leave-one-out sub-tables, the same realisation streams in every run; theta_i
 // is a log level (dB) with sub-table i.
 //   (a) V_J = (N - 1)/N sum_i (theta_i - mean theta)^2
-//   (b) s^2 = s_w^2 + V_J, s_w = h / t_{K-1}(level), nu = s^4 / (s_w^4/(K - 1) + V_J^2/(N - 1)),
-//       widened half width t_nu(level) s
+//   (b) s^2 = s_w^2 + V_J, s_w = h / t_{K-1}(level), nu = s^4 / (s_w^4/(K - 1) + V_J^2/nu_T),
+//       widened half width t_nu(level) s; nu_T = N - 1 for independent surfaces or strips (D-30d:
+//       fewer for overlapping Welch segments)
 //   (c) the part of (a) that is the N ensembles' own sampling noise (reported beside (a)): with x_ir
 //       realisation r's value (linear: a bin's PSD, a band's average) under sub-table i, m_i its
 //       mean over K realisations, d_ir = x_ir - (1/N) sum_j x_jr (the same realisation's mean over
@@ -41,8 +42,8 @@ struct WidenedHalfWidth {
 };
 
 // (b): a half width h of the realisations' interval at `level` from K realisations, widened by a
-// jackknife variance v over N surfaces. h unchanged (dof K - 1) when v is 0, not
-// finite, or h is not a finite positive width (no interval).
-WidenedHalfWidth widen_half_width(double h, std::uint64_t realisations, double v, std::uint64_t surfaces, double level);
+// jackknife variance v of table_dof degrees of freedom (nu_T: N - 1 over N independent surfaces). h
+// unchanged (dof K - 1) when v is 0, not finite, or h is not a finite positive width (no interval).
+WidenedHalfWidth widen_half_width(double h, std::uint64_t realisations, double v, double table_dof, double level);
 
 }  // namespace rollspec::spectral

@@ -94,7 +94,7 @@ int plan_command(const Args& args) {
         "%s\n",
         jk.n + 1, jk.table.c_str(), jk.n, jk.n + 1,
         jk.unit == "surfaces" ? "are cached, made from one more solve of each surface when missing"
-                              : "are made from the full table's strips, without a new solve");
+                              : ("are made from the full table's " + jk.unit + ", without a new solve").c_str());
   }
   if (!vm.count("probe")) return 0;
   if (!ensemble_scene) {

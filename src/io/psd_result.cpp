@@ -77,6 +77,8 @@ void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   write_table_std(w, "/bands", t.band_variance, nb, "table_std_db", table);
   write_table_std(w, "/bands", t.band_noise, nb, "table_noise_std_db", noise);
   w.attribute("/bands", "table_jackknife_surfaces", static_cast<std::int64_t>(t.surfaces));
+  w.attribute("/bands", "table_jackknife_dof", t.dof);
+  w.attribute("/bands", "table_jackknife_variance_factor", t.variance_factor);
   if (!t.noise_warning.empty()) w.attribute("/bands", "table_noise_warning", t.noise_warning);
 }
 }  // namespace
@@ -91,7 +93,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     hi[i] = ci.defined() ? e.mean[i] * ci.upper : HUGE_VAL;
     nu[i] = ci.dof;
     if (e.table_error.surfaces > 0)
-      widen_bin_interval(e.mean[i], lo[i], hi[i], e.table_error.bin_variance[i], e.table_error.surfaces, K,
+      widen_bin_interval(e.mean[i], lo[i], hi[i], e.table_error.bin_variance[i], e.table_error.dof, K,
                          e.confidence);
   }
   write_frequency_scale(w, "/psd", e.frequency);
@@ -136,7 +138,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
       ciu[i] = ci.defined() ? 10.0 * std::log10(avg * ci.upper) : HUGE_VAL;
       dof[i] = ci.dof;
       if (e.table_error.surfaces > 0)
-        widen_band_interval(level[i], cil[i], ciu[i], e.table_error.band_variance[i], e.table_error.surfaces, K,
+        widen_band_interval(level[i], cil[i], ciu[i], e.table_error.band_variance[i], e.table_error.dof, K,
                             e.confidence);
       sd[i] = e.band_scatter[i].std_dev;
       log_sd[i] = e.band_scatter[i].log_std;

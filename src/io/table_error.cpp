@@ -32,9 +32,12 @@ double paired_noise(const PairedSums& p, std::size_t j, std::vector<double>& m) 
 }  // namespace
 
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
-                           const std::string& table, const std::string& unit) {
+                           const std::string& table, const std::string& unit, double variance_factor,
+                           double dof) {
   TableError t;
   t.surfaces = sub_tables.size();
+  t.dof = dof > 0.0 ? dof : static_cast<double>(t.surfaces) - 1.0;
+  t.variance_factor = variance_factor;
   t.table = table;
   t.unit = unit;
   if (sub_tables.empty()) return t;
@@ -52,15 +55,15 @@ TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const Pai
   t.bin_noise.resize(bins);
   for (std::size_t i = 0; i < bins; ++i) {
     for (std::size_t j = 0; j < n; ++j) theta[j] = 10.0 * std::log10(sub_tables[j].mean[i]);
-    t.bin_variance[i] = spectral::jackknife_variance(theta.data(), n);
-    t.bin_noise[i] = paired_noise(paired, i, m);
+    t.bin_variance[i] = variance_factor * spectral::jackknife_variance(theta.data(), n);
+    t.bin_noise[i] = variance_factor * paired_noise(paired, i, m);
   }
   t.band_variance.resize(nb);
   t.band_noise.resize(nb);
   for (std::size_t i = 0; i < nb; ++i) {
     for (std::size_t j = 0; j < n; ++j) theta[j] = bands[j].at(i);
-    t.band_variance[i] = spectral::jackknife_variance(theta.data(), n);
-    t.band_noise[i] = paired_noise(paired, bins + i, m);
+    t.band_variance[i] = variance_factor * spectral::jackknife_variance(theta.data(), n);
+    t.band_noise[i] = variance_factor * paired_noise(paired, bins + i, m);
   }
   return t;
 }
@@ -100,19 +103,19 @@ std::string interval_includes(const TableError& t) {
   return "realisations";
 }
 
-void widen_band_interval(double level, double& lo, double& hi, double v, std::uint64_t surfaces, std::uint64_t K,
+void widen_band_interval(double level, double& lo, double& hi, double v, double table_dof, std::uint64_t K,
                          double level_p) {
   if (!std::isfinite(level)) return;
-  lo = level - spectral::widen_half_width(level - lo, K, v, surfaces, level_p).half_width;
-  hi = level + spectral::widen_half_width(hi - level, K, v, surfaces, level_p).half_width;
+  lo = level - spectral::widen_half_width(level - lo, K, v, table_dof, level_p).half_width;
+  hi = level + spectral::widen_half_width(hi - level, K, v, table_dof, level_p).half_width;
 }
 
-void widen_bin_interval(double mean, double& lo, double& hi, double v, std::uint64_t surfaces, std::uint64_t K,
+void widen_bin_interval(double mean, double& lo, double& hi, double v, double table_dof, std::uint64_t K,
                         double level_p) {
   if (!(mean > 0.0) || !(lo > 0.0) || !std::isfinite(hi)) return;
   const double db = 10.0 * std::log10(mean);
   double lo_db = 10.0 * std::log10(lo), hi_db = 10.0 * std::log10(hi);
-  widen_band_interval(db, lo_db, hi_db, v, surfaces, K, level_p);
+  widen_band_interval(db, lo_db, hi_db, v, table_dof, K, level_p);
   lo = std::pow(10.0, lo_db / 10.0);
   hi = std::pow(10.0, hi_db / 10.0);
 }

@@ -20,6 +20,8 @@ struct TableError {
   std::vector<double> band_variance;  // rows x bands, dB^2
   std::vector<double> bin_noise;      // the part of it that is the runs' own noise (D-30c), dB^2 (NaN: unknown)
   std::vector<double> band_noise;
+  double dof = 0.0;               // nu_T of the variances: N - 1, fewer over overlapping Welch segments (D-30d)
+  double variance_factor = 1.0;   // applied to the jackknife: 1, or 2 N / nu_Welch over overlapping segments (D-30d)
   std::string table;              // the table the intervals are conditional on ("": none)
   std::string unit = "surfaces";  // what the jackknife left out one at a time (surfaces, strips)
   std::string noise_warning;      // non-empty when the term is mostly the runs' own noise (table_noise_warning)
@@ -39,8 +41,11 @@ struct PairedSums {
 
 // The table's variances from the N sub-table ensembles (their spectra; same rows, bins, bands): the
 // jackknife (D-30a), and the runs' own noise in it (D-30c).
+// Overlapping units (Welch segments of one path, D-30d) scale both by `variance_factor` and give the
+// widening `dof` degrees of freedom; independent ones leave 1 and N - 1 (dof 0 means N - 1).
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
-                           const std::string& table, const std::string& unit);
+                           const std::string& table, const std::string& unit, double variance_factor = 1.0,
+                           double dof = 0.0);
 
 // When more than half of the jackknife is the runs' own noise (D-30c, median over the bands), the
 // term is mostly that noise (realisations chaotic in the table) and the intervals are wider than the
@@ -52,11 +57,11 @@ std::string table_noise_warning(const TableError& t, std::uint64_t K);
 std::string interval_includes(const TableError& t);
 
 // Widens the bin interval [lo, hi] of a bin of mean `mean` (linear units), or the band interval
-// [lo, hi] of level `level` (dB), by variance v (dB^2) of a table over `surfaces` (D-30b); K
+// [lo, hi] of level `level` (dB), by variance v (dB^2) of `table_dof` degrees of freedom (D-30b); K
 // realisations, confidence `level_p`. Unchanged where v is not finite or there is no interval.
-void widen_bin_interval(double mean, double& lo, double& hi, double v, std::uint64_t surfaces, std::uint64_t K,
+void widen_bin_interval(double mean, double& lo, double& hi, double v, double table_dof, std::uint64_t K,
                         double level_p);
-void widen_band_interval(double level, double& lo, double& hi, double v, std::uint64_t surfaces, std::uint64_t K,
+void widen_band_interval(double level, double& lo, double& hi, double v, double table_dof, std::uint64_t K,
                          double level_p);
 
 }  // namespace rollspec::io

@@ -56,21 +56,42 @@ class BallOnBeam final : public EnsembleScene {
     add_pipeline_stages(s.tables);
     table_error_.table = random_tables();
     if (b_.stiffness.table_jackknife) check_table_jackknife();
+    check_blocked_force_leave_out();
+    if (blocked_solver())
+      if (const std::string w = blocked_force_resolution_warning(b_, blocked_force_grid()); !w.empty()) io::warn(w);
     if (jackknifes_stiffness_table()) tables_ = s.tables;
   }
 
-  // D-30: one random table, of at least 2 surfaces or strips.
+  // D-30: one random table, of at least 2 surfaces, strips or Welch segments of F0.
   void check_table_jackknife() const {
     const bool stiffness_table = uses_table() && b_.stiffness.rough, strips = solver_filter() && !b_.strip_line;
     if (stiffness_table && strips)
       b_.stiffness.table_error_origin.refuse(
           "jackknife takes one table; this study has a rough stiffness table and an equivalent-roughness table "
           "([contact] filter = solver); allowed here: none, or one of the two");
-    if (!(stiffness_table && b_.stiffness.realisations >= 2) && !(strips && b_.equivalent_roughness_strips >= 2))
+    if (!(stiffness_table && b_.stiffness.realisations >= 2) && !(strips && b_.equivalent_roughness_strips >= 2) &&
+        !(blocked_solver() && stiffness::f0_segments(blocked_force_grid()).segments >= 2))
       b_.stiffness.table_error_origin.refuse(
           "jackknife needs a rough stiffness table of at least 2 surfaces ([contact] law = table or literal, "
-          "[stiffness] surface = rough, realisations >= 2) or an equivalent-roughness table of at least 2 strips "
-          "([contact] filter = solver, [equivalent_roughness] line = synthesised, strips >= 2); allowed here: none");
+          "[stiffness] surface = rough, realisations >= 2), an equivalent-roughness table of at least 2 strips "
+          "([contact] filter = solver, [equivalent_roughness] line = synthesised, strips >= 2) or a blocked-force "
+          "table of at least 2 Welch segments ([contact] blocked_force = solver); allowed here: none");
+  }
+
+  // [blocked_force] leave_out (D-30d): a Welch segment of the solver's F0, which must exist.
+  void check_blocked_force_leave_out() const {
+    const long long i = b_.blocked_force.leave_out;
+    if (i < 0) return;
+    if (!blocked_solver())
+      b_.blocked_force.leave_out_origin.refuse(
+          "leaves a Welch segment out of the blocked-force table of [contact] blocked_force = solver, which this "
+          "study does not use; allowed here: -1");
+    const std::size_t n = stiffness::f0_segments(blocked_force_grid()).segments;
+    if (static_cast<std::size_t>(i) >= n)
+      b_.blocked_force.leave_out_origin.refuse("leaves out a Welch segment F0's path does not have; allowed: -1 .. " +
+                                               std::to_string(static_cast<long long>(n) - 1) +
+                                               " (the path's segments, `rollspec plan` shows its positions and "
+                                               "segment)");
   }
   bool jackknifes_stiffness_table() const { return b_.stiffness.table_jackknife && uses_table() && b_.stiffness.rough; }
 
@@ -282,11 +303,15 @@ class BallOnBeam final : public EnsembleScene {
     lines_ = texture_io::line_generator(b_.line_keys, contact_.line_psd, b_.spacing, b_.line_samples);
   }
 
-  void use_blocked_force(const stiffness::BlockedForceTable& table, const std::string& status, bool quiet) {
+  // [blocked_force] leave_out = i: the cached table without Welch segment i of F0 (D-30d; no new solve).
+  void use_blocked_force(const stiffness::BlockedForceTable& full, const std::string& status, bool quiet) {
+    const long long skip = b_.blocked_force.leave_out;
+    std::optional<stiffness::BlockedForceTable> sub;  // only a sub-table is a new table
+    if (skip >= 0) sub = stiffness::leave_out_segment(full, static_cast<std::size_t>(skip), blocked_force_grid());
     if (!quiet)
-      std::fprintf(stderr, "blocked force table: %s (k0 = %.4g N/m, d0 = %.4g m)\n", status.c_str(), table.k0,
-                   table.approach);
-    take_blocked_force(b_, table, contact_);
+      std::fprintf(stderr, "blocked force table: %s (k0 = %.4g N/m, d0 = %.4g m%s)\n", status.c_str(), full.k0,
+                   full.approach, skip >= 0 ? (", Welch segment " + std::to_string(skip) + " left out").c_str() : "");
+    take_blocked_force(b_, sub ? *sub : full, contact_);
   }
 
   std::vector<std::string> warnings() const override { return b_.warnings; }
@@ -336,6 +361,16 @@ class BallOnBeam final : public EnsembleScene {
     if (jackknifes_stiffness_table())
       return {static_cast<std::size_t>(b_.stiffness.realisations), "stiffness table", "surfaces",
               &study::StiffnessSection::leave_out_sets};
+    if (blocked_solver()) {  // D-30d: over the overlapping Welch segments of F0 along the path
+      const stiffness::SegmentJackknife j = stiffness::f0_segments(blocked_force_grid());
+      TableJackknifePlan plan{j.segments, "blocked-force table", "Welch segments of F0", [](long long i) {
+                                return std::vector<std::string>{"blocked_force.leave_out=" + std::to_string(i),
+                                                                "stiffness.table_error=none"};
+                              }};
+      plan.variance_factor = j.variance_factor;
+      plan.dof = j.dof;
+      return plan;
+    }
     return {static_cast<std::size_t>(b_.equivalent_roughness_strips), "equivalent-roughness table", "strips",
             [](long long i) {
               return std::vector<std::string>{"equivalent_roughness.leave_out=" + std::to_string(i),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <string>
@@ -147,9 +148,13 @@ void take_blocked_force(const BallOnBeamSettings& b, const stiffness::BlockedFor
 // F0 PSD along the path: the table's, and at long wavelengths, where the ball follows the
 // texture (F0 = W + k0 h), the texture's shape scaled to the table at its third bin: bins 1 and 2
 // of a Hann-windowed segment hold the leakage of waves longer than the segment (the strip is finite).
+namespace {
+constexpr std::size_t kAnchorBin = 3;  // the F0 table's first bin clear of the segment's own leakage
+}  // namespace
+
 double blocked_force_psd(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t, double k) {
   if (k > b.band_limit_wavenumber) return 0.0;  // B40, as the texture
-  const std::size_t anchor = std::min<std::size_t>(3, t.psd_wavenumber.size() - 1);
+  const std::size_t anchor = std::min<std::size_t>(kAnchorBin, t.psd_wavenumber.size() - 1);
   const double k1 = t.psd_wavenumber.size() > 1 ? t.psd_wavenumber[anchor] : 0.0;
   if (k >= k1 || !(k > 0.0)) return t.psd_at(k);
   const double g1 = b.psd(k1);
@@ -160,6 +165,21 @@ double blocked_force_psd(const BallOnBeamSettings& b, const stiffness::BlockedFo
 double blocked_force_time_psd(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t, double f) {
   const double v = b.model.traverse.speed;
   return 2.0 * M_PI * blocked_force_psd(b, t, 2.0 * M_PI * f / v) / v;
+}
+
+std::string blocked_force_resolution_warning(const BallOnBeamSettings& b, const stiffness::BlockedForceGeometry& g) {
+  const double segment = static_cast<double>(std::min(g.segment, g.positions)) * static_cast<double>(g.step) * g.cell;
+  const double wavelength = segment / static_cast<double>(kAnchorBin), v = b.model.traverse.speed;
+  const double f = v / wavelength;
+  if (!(f > b.band_min)) return {};
+  char text[640];
+  std::snprintf(text, sizeof text,
+                "[blocked_force] segment: F0's PSD is the contact solver's own from its Welch bin %zu up, wavelength "
+                "%.3g mm, i.e. %.4g Hz at [ball] speed = %g m/s; the bands from [spectrum] band_min = %g Hz to there "
+                "take the texture PSD's shape scaled to that bin (the strip's segment of %.3g mm resolves no longer "
+                "wave). A longer [blocked_force] segment (and strip_length, for as many segments) resolves them",
+                kAnchorBin, wavelength * 1e3, f, v, b.band_min, segment * 1e3);
+  return text;
 }
 
 }  // namespace rollspec::scenes

@@ -4,6 +4,7 @@
 // The settings stay const; each stage's result lands here, and the excitation, the integration and
 // the writer read it. The functions only compute: the scene prints the stages' status lines.
 #include <memory>
+#include <string>
 
 #include "kernels/beam/ball_on_beam.hpp"
 #include "kernels/beam/contact_law.hpp"
@@ -27,6 +28,11 @@ struct ResolvedContact {
 
 // The contact the keys give, before any table stage.
 ResolvedContact contact_from_settings(const BallOnBeamSettings& b);
+
+// blocked_force = solver on grid g: the sentence that says which bands below [spectrum] band_min's
+// side take the texture's shape instead of the solver's F0 (the segment is too short for them);
+// empty when the table resolves every band.
+std::string blocked_force_resolution_warning(const BallOnBeamSettings& b, const stiffness::BlockedForceGeometry& g);
 
 // The model the integration runs: the settings' beam, ball, traverse and sensors with c's law.
 beam::BallOnBeamModel resolved_model(const BallOnBeamSettings& b, const ResolvedContact& c);

@@ -76,6 +76,14 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   if (blocked_solver()) {
     w.attribute("/contact", "blocked_force_approach", c_.blocked.approach);
     w.attribute("/contact", "blocked_force_input_hash", c_.blocked.input_hash);
+    // The F0 PSD the realisations were drawn from: the table's, or its sub-table's under
+    // [blocked_force] leave_out (D-30d); below the table's third bin the run scales the texture's shape.
+    const std::vector<double>& k = c_.blocked.psd_wavenumber;
+    w.write("/contact/blocked_force_wavenumber", {k.size()}, k.data(), "rad/m", "wavenumber along the path");
+    w.make_scale("/contact/blocked_force_wavenumber", "wavenumber");
+    w.write("/contact/blocked_force_psd", {k.size()}, c_.blocked.psd.data(), "N^2 m/rad",
+            "one-sided PSD of F0 along the path (Welch over the table's strip), as the realisations used it");
+    w.attach_scale("/contact/blocked_force_psd", "/contact/blocked_force_wavenumber", 0);
   }
 
   const auto& b = b_.model.beam;

@@ -12,6 +12,7 @@
 #include "src/scenes/rolling_beam_settings.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/blocked_force_geometry.hpp"
+#include "src/stiffness/blocked_force_table.hpp"
 #include "src/io/number_text.hpp"
 #include "src/scenes/ball_on_beam_sections.hpp"
 #include "src/study/key_reader.hpp"
@@ -63,10 +64,13 @@ double ball_e_star(const BallOnBeamSections& b) {
 
 // The solver's square window and the rough strip it slides along, on the grid the stage uses
 // (derived from the contact radius where the study leaves it open).
+stiffness::BlockedForceGeometry blocked_force_grid(const BallOnBeamSections& b) {
+  return stiffness::blocked_force_geometry(b.blocked_force, b.strip_surface, b.texture_psd, b.ball.radius,
+                                           ball_e_star(b), b.ball.weight(), b.ball.speed / b.signal.sample_rate);
+}
+
 Item blocked_force_window(const BallOnBeamSections& b) {
-  const auto g =
-      stiffness::blocked_force_geometry(b.blocked_force, b.strip_surface, b.texture_psd, b.ball.radius, ball_e_star(b),
-                                        b.ball.weight(), b.ball.speed / b.signal.sample_rate);
+  const auto g = blocked_force_grid(b);
   const double w = static_cast<double>(g.window), strip = static_cast<double>(g.nx) * static_cast<double>(g.ny);
   return {16.0 * 4.0 * w * w * 5.0 + 8.0 * strip * 4.0,
           {key_text("blocked_force", "window", static_cast<double>(b.blocked_force.window)),
@@ -154,10 +158,15 @@ std::vector<Item> ball_on_beam(const BallOnBeamSections& b, double threads) {
   out.push_back(
       chunk_sums(b.study, b.ensemble, b.spectrum, sensors + 4.0, {positions_text("sensors", b.sensors.positions)}));
   if (b.stiffness.table_jackknife) {  // D-30: the N sub-tables' scenes run together, each its own records and sums
-    const bool surfaces = (b.contact.law == "table" || b.contact.law == "literal") && b.stiffness.rough;  // else strips
-    const double n = static_cast<double>(surfaces ? b.stiffness.realisations : b.equivalent_roughness.strips);
+    const bool surfaces = (b.contact.law == "table" || b.contact.law == "literal") && b.stiffness.rough;
+    const bool segments = b.contact.law == "linearised" && b.contact.blocked_force == "solver";  // else strips
+    const double n = static_cast<double>(surfaces ? b.stiffness.realisations
+                                         : segments ? stiffness::f0_segments(blocked_force_grid(b)).segments
+                                                    : b.equivalent_roughness.strips);
     out.push_back({n * (out[out.size() - 2].bytes + out.back().bytes),
-                   {surfaces ? key_text("stiffness", "realisations", n) : key_text("equivalent_roughness", "strips", n),
+                   {surfaces   ? key_text("stiffness", "realisations", n)
+                    : segments ? "[blocked_force] segment, strip_length (" + io::exact_text(n) + " Welch segments of F0)"
+                               : key_text("equivalent_roughness", "strips", n),
                     "[stiffness] table_error = jackknife"},
                    "the sub-tables' scenes (time records per thread, chunk sums)"});
   }

@@ -70,10 +70,13 @@ class Scene {
 // [stiffness] table_error = jackknife (D-30): which random table the scene's runs share, over how many
 // surfaces or strips, and the --set that makes the sub-table without one of them.
 struct TableJackknifePlan {
-  std::size_t n = 0;  // surfaces or strips
-  std::string table;  // "stiffness table", "equivalent-roughness table"
-  std::string unit;   // "surfaces", "strips"
+  std::size_t n = 0;  // surfaces, strips or Welch segments
+  std::string table;  // "stiffness table", "equivalent-roughness table", "blocked-force table"
+  std::string unit;   // "surfaces", "strips", "Welch segments of F0"
   std::function<std::vector<std::string>(long long)> leave_out_sets;
+  // Overlapping units (D-30d): the jackknife's variance times this, of `dof` degrees of freedom
+  // (0: n - 1, independent units).
+  double variance_factor = 1.0, dof = 0.0;
 };
 
 // A Monte-Carlo scene: independent realisations, summed by the ensemble driver, written from the sums.

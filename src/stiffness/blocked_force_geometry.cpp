@@ -105,15 +105,17 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
     bf.strip_length_origin.refuse("leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
-  // Cost (CPU seconds), measured on studies/seed002-rig-1ms.ini (window 128, 1024 positions, kernel
-  // version 7, a shared machine): the load search's first full path, solved to 1e-4 (BF-4''),
-  // 10 ms per position (15.4 + 8.4 CG + stiffness iterations), the second 8–9 ms (13.5 + 14.7), the
-  // last 1.7 ms (started from the previous path's fields and rates, BF-6', Eq. 11a), the pre-search
-  // 1.1 s: 22 s in all, i.e. about one first-path position per position plus 50, at 21 ms each
-  // (scaled with the window's (2 window)^2 product). The chunks of 64 positions (BF-6c) share the threads.
-  const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
-  const double per_solve = 21e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
-  g.estimated_seconds = per_solve * (1.0 * static_cast<double>(g.positions) + 50.0);
+  // Cost (CPU seconds, kernel version 7, whole load searches of 0.9–3.7k positions on one thread):
+  // a CG iteration works on the box of the contact (Eq. 3c), about the Hertz diameter 2a, padded
+  // to twice its side, so a position costs c m log2 m with m = (2 min(2a/dx, window))^2; rough
+  // textures (sigma against delta_H = a^2/R) touch on fewer cells and converge in fewer iterations,
+  // a factor 1 / (1 + sigma/delta_H). c = 2.23e-7 s fits the seed 002 rig (a/24, sigma/delta_H 0.37:
+  // 22.6 and 24.7 ms per position), the Ra 0.3 um surface (a/13, 1.57: 3.4 and 2.5 ms) and a smoother
+  // one (a/29, 0.21: 26.7 ms) within a factor 1.3 each.
+  const double box = std::min(2.0 * g.contact_radius / g.cell, static_cast<double>(g.window));
+  const double m = 4.0 * box * box, delta_h = g.contact_radius * g.contact_radius / radius;
+  const double per_position = 2.23e-7 * m * std::log2(m) / (1.0 + g.rms / delta_h);
+  g.estimated_seconds = per_position * static_cast<double>(g.positions);
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
 }

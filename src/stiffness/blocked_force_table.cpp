@@ -171,20 +171,65 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
   t.k0 = path.k0;
   t.mean_force = path.mean_force;
   t.load = load;
-  // PSD of F0 along the path: Welch with f_s = 1 / (step dx) cycles/m, then per rad/m.
-  spectral::WelchConfig wc;
-  wc.sample_rate = 1.0 / (static_cast<double>(step) * dx);
-  wc.segment = std::min(geo.segment, path.force.size());
-  wc.overlap = wc.segment / 2;
-  const spectral::WelchPlan plan(wc);
-  spectral::WelchWorkspace ws(wc.segment);
-  std::vector<double> g(plan.n_freq());
-  plan.psd(path.force.data(), path.force.size(), g.data(), ws);
-  for (std::size_t k = 0; k < g.size(); ++k) {
-    t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));
-    t.psd.push_back(g[k] / (2.0 * M_PI));
-  }
+  f0_psd(t, geo, -1);
   return t;
+}
+
+namespace {
+// The Welch plan of F0 along the path: f_s = 1 / (step dx) cycles/m, half-overlapping Hann segments.
+spectral::WelchConfig f0_welch(const BlockedForceGeometry& g, std::size_t positions) {
+  spectral::WelchConfig wc;
+  wc.sample_rate = 1.0 / (static_cast<double>(g.step) * g.cell);
+  wc.segment = std::min(g.segment, positions);
+  wc.overlap = wc.segment / 2;
+  return wc;
+}
+}  // namespace
+
+void f0_psd(BlockedForceTable& t, const BlockedForceGeometry& g, long long skip) {
+  const std::size_t n = t.force.size();
+  const spectral::WelchPlan plan(f0_welch(g, n));
+  spectral::WelchWorkspace ws(plan.config().segment);
+  std::vector<double> mean(plan.n_freq(), 0.0);
+  if (skip < 0) {
+    plan.psd(t.force.data(), n, mean.data(), ws);
+  } else {
+    // D-30d: the mean of the other segments' periodograms (each segment a Welch estimate of its own:
+    // detrended and windowed as in the full average).
+    const std::size_t segments = plan.segments(n), hop = plan.config().segment - plan.config().overlap;
+    if (static_cast<std::size_t>(skip) >= segments || segments < 2)
+      throw std::logic_error("blocked force: no Welch segment to leave out");
+    std::vector<double> one(plan.n_freq());
+    for (std::size_t j = 0; j < segments; ++j) {
+      if (j == static_cast<std::size_t>(skip)) continue;
+      plan.psd(t.force.data() + j * hop, plan.config().segment, one.data(), ws);
+      for (std::size_t k = 0; k < one.size(); ++k) mean[k] += one[k] / static_cast<double>(segments - 1);
+    }
+  }
+  t.psd_wavenumber.clear();
+  t.psd.clear();
+  for (std::size_t k = 0; k < mean.size(); ++k) {
+    t.psd_wavenumber.push_back(2.0 * M_PI * plan.frequency_step() * static_cast<double>(k));
+    t.psd.push_back(mean[k] / (2.0 * M_PI));
+  }
+}
+
+SegmentJackknife f0_segments(const BlockedForceGeometry& g) {
+  const spectral::WelchPlan plan(f0_welch(g, g.positions));
+  SegmentJackknife j;
+  j.segments = plan.segments(g.positions);
+  const double nu = plan.equivalent_dof(g.positions);  // D-16: 2 N / (1 + 2 sum (1 - m/N) rho(m)^2)
+  if (j.segments >= 2 && nu > 0.0) {
+    j.variance_factor = 2.0 * static_cast<double>(j.segments) / nu;
+    j.dof = std::max(1.0, nu / 2.0 - 1.0);
+  }
+  return j;
+}
+
+BlockedForceTable leave_out_segment(const BlockedForceTable& t, std::size_t skip, const BlockedForceGeometry& g) {
+  BlockedForceTable s = t;
+  f0_psd(s, g, static_cast<long long>(skip));
+  return s;
 }
 
 void BlockedForceTable::save_to(io::Hdf5Writer& w) const {

@@ -42,4 +42,21 @@ CachedTable blocked_force_cached_table(const TableStudy& ts, const BlockedForceG
 BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                       double effective_modulus, double load, bool quiet);
 
+// The one-sided PSD of F0 - mean along the path into t.psd (per rad/m) from t.force: Welch on g's
+// step and segment, over every segment (skip < 0) or over all but segment `skip` (D-30d).
+void f0_psd(BlockedForceTable& t, const BlockedForceGeometry& g, long long skip);
+
+// The Welch segments of F0 on grid g, the jackknife's units (kernels/spectral/README.md D-30d): half
+// overlapping, so the jackknife's variance is scaled by 2 N / nu_Welch and has nu_Welch / 2 - 1
+// degrees of freedom (D-16's equivalent dof of the Welch mean).
+struct SegmentJackknife {
+  std::size_t segments = 0;
+  double variance_factor = 1.0, dof = 0.0;
+};
+SegmentJackknife f0_segments(const BlockedForceGeometry& g);
+
+// The cached table with Welch segment `skip` left out of its F0 PSD ([blocked_force] leave_out, no
+// new solve). k0, d0 and F0 along the path are the whole path's.
+BlockedForceTable leave_out_segment(const BlockedForceTable& t, std::size_t skip, const BlockedForceGeometry& g);
+
 }  // namespace rollspec::stiffness

@@ -29,14 +29,16 @@ def go(tmp_path, name, tables, *extra):
     return out
 
 
-def widened(level, lo, hi, v, K=K, N=N):
-    """D-30b on each side, as a plain reference (scipy's t quantiles)."""
+def widened(level, lo, hi, v, K=K, N=N, dof=None):
+    """D-30b on each side, as a plain reference (scipy's t quantiles); the table term of `dof`
+    degrees of freedom (N - 1 unless given)."""
     t_k = stats.t.ppf(0.975, K - 1)
+    nu_t = N - 1 if dof is None else dof
     out = []
     for h in (level - lo, hi - level):
         s_w = h / t_k
         s2 = s_w ** 2 + v
-        nu = s2 ** 2 / (s_w ** 4 / (K - 1) + v ** 2 / (N - 1))
+        nu = s2 ** 2 / (s_w ** 4 / (K - 1) + v ** 2 / nu_t)
         out.append(np.where(v > 0, stats.t.ppf(0.975, nu) * np.sqrt(s2), h))
     return level - out[0], level + out[1]
 

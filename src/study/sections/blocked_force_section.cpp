@@ -24,6 +24,12 @@ std::vector<KeySpec> BlockedForceSection::keys() {
           "Welch segment (positions, 16 or more) of the F0 PSD along the path; 0: four times the F0 correlation "
           "length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
           std::string("0"), 0, 1 << 20),
+      integer_key("blocked_force", "leave_out",
+                  "[contact] blocked_force = solver: Welch segment (0 .. segments - 1) of F0 along the path left out "
+                  "of the table's PSD, from the cached table without a new solve: a leave-one-out sub-table for the "
+                  "jackknife of the table's own error ([stiffness] table_error = jackknife; kernels/spectral/README.md "
+                  "D-30d); -1: none",
+                  std::string("-1"), -1, 1 << 20),
   };
 }
 
@@ -36,6 +42,8 @@ BlockedForceSection BlockedForceSection::parse(const KeyReader& s) {
   b.strip_length_origin = {s.where("blocked_force.strip_length")};
   b.window_origin = {s.where("blocked_force.window")};
   b.segment_origin = {s.where("blocked_force.segment")};
+  b.leave_out = s.integer("blocked_force.leave_out");
+  b.leave_out_origin = {s.where("blocked_force.leave_out")};
   return b;
 }
 

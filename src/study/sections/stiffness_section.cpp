@@ -51,8 +51,9 @@ std::vector<KeySpec> StiffnessSection::keys() {
                  "table), or jackknife: the table's own sampling error, from the ensemble run again with each of the "
                  "table's leave-one-surface-out sub-tables (realisations + 1 ensembles, the same random streams; "
                  "kernels/spectral/README.md D-30); needs a rough stiffness table ([contact] law = table or literal, "
-                 "surface = rough; over its surfaces) or an equivalent-roughness table ([contact] filter = solver; "
-                 "over its [equivalent_roughness] strips)",
+                 "surface = rough; over its surfaces), an equivalent-roughness table ([contact] filter = solver; "
+                 "over its [equivalent_roughness] strips) or a blocked-force table ([contact] blocked_force = solver; "
+                 "over the Welch segments of F0 along its strip)",
                  std::string("none"), {"none", "jackknife"}),
   };
 }

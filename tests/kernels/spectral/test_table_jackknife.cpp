@@ -41,23 +41,24 @@ TEST_CASE("jackknife of a mean is the sample variance of the mean, s^2 / N") {
 }
 
 TEST_CASE("widened half width: Welch-Satterthwaite between its limits") {
-  const std::uint64_t K = 25, N = 10;
+  const std::uint64_t K = 25;
+  const double N1 = 9.0;  // table dof: N - 1 over N = 10 surfaces
   const double h = 0.4;  // dB
   // No table term: the interval is left alone.
-  const auto none = widen_half_width(h, K, 0.0, N, 0.95);
+  const auto none = widen_half_width(h, K, 0.0, N1, 0.95);
   CHECK(none.half_width == h);
   CHECK(none.dof == 24.0);
-  CHECK(widen_half_width(h, K, std::nan(""), N, 0.95).half_width == h);
-  CHECK(widen_half_width(HUGE_VAL, K, 0.1, N, 0.95).half_width == HUGE_VAL);  // no interval stays none
+  CHECK(widen_half_width(h, K, std::nan(""), N1, 0.95).half_width == h);
+  CHECK(widen_half_width(HUGE_VAL, K, 0.1, N1, 0.95).half_width == HUGE_VAL);  // no interval stays none
   // A value worked by hand: s_w = h / t_24, s^2 = s_w^2 + v, nu = s^4 / (s_w^4/24 + v^2/9).
   const double v = 0.09, s_w = h / t975(24.0), s2 = s_w * s_w + v;
   const double nu = s2 * s2 / (std::pow(s_w, 4) / 24.0 + v * v / 9.0);
-  const auto w = widen_half_width(h, K, v, N, 0.95);
+  const auto w = widen_half_width(h, K, v, N1, 0.95);
   CHECK(w.dof == doctest::Approx(nu).epsilon(1e-14));
   CHECK(w.half_width == doctest::Approx(t975(nu) * std::sqrt(s2)).epsilon(1e-14));
   CHECK(w.half_width > h);
   // A negligible realisation term: the table's alone, t_{N-1} sqrt(v).
-  const auto table_only = widen_half_width(1e-9, K, v, N, 0.95);
+  const auto table_only = widen_half_width(1e-9, K, v, N1, 0.95);
   CHECK(table_only.dof == doctest::Approx(9.0).epsilon(1e-9));
   CHECK(table_only.half_width == doctest::Approx(t975(9.0) * std::sqrt(v)).epsilon(1e-9));
 }
