@@ -17,7 +17,8 @@ std::vector<spectral::Band> result_bands(const std::vector<double>& frequency, d
   return spectral::third_octave_bands(std::max(band_min, df), std::min(band_max, frequency.back()));
 }
 
-std::string interval_method(std::uint64_t realisations) {
+std::string interval_method(std::uint64_t realisations, const std::string& no_interval) {
+  if (!no_interval.empty()) return "none (" + no_interval + ")";
   if (realisations < spectral::kMinRealisationsForInterval)
     return "none (" + counted(realisations, "realisation") + ", fewer than the " +
            std::to_string(spectral::kMinRealisationsForInterval) + " that an interval from their scatter needs)";
@@ -64,7 +65,7 @@ void write_table_std(Hdf5Writer& w, const std::string& group, const std::vector<
 // What the intervals include, and the table's own term where they include it (D-30).
 void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   const TableError& t = e.table_error;
-  const std::string includes = interval_includes(t);
+  const std::string includes = e.no_interval.empty() ? interval_includes(t) : "none (no interval: " + e.no_interval + ")";
   w.attribute("/psd", "interval_includes", includes);
   w.attribute("/bands", "interval_includes", includes);
   if (t.surfaces == 0) return;
@@ -87,8 +88,11 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   const std::size_t nf = e.frequency.size(), ns = e.sensors.size();
   const std::uint64_t K = e.realisations;
   std::vector<double> lo(e.mean.size()), hi(e.mean.size()), nu(e.mean.size());
+  const auto interval = [&e, K](const spectral::Scatter& s) {
+    return e.no_interval.empty() ? spectral::mean_interval(s, K, e.confidence) : spectral::ScatterInterval{};
+  };
   for (std::size_t i = 0; i < e.mean.size(); ++i) {
-    const auto ci = spectral::mean_interval(e.scatter[i], K, e.confidence);
+    const auto ci = interval(e.scatter[i]);
     lo[i] = ci.defined() ? e.mean[i] * ci.lower : 0.0;  // no interval: [0, inf), even for a bin without power
     hi[i] = ci.defined() ? e.mean[i] * ci.upper : HUGE_VAL;
     nu[i] = ci.dof;
@@ -113,7 +117,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   }
   if (!e.position_meaning.empty()) write_sensor_positions(w, "/psd", e.sensor_position, ns, e.position_meaning);
   w.attribute("/psd", "realisations", static_cast<std::int64_t>(K));
-  w.attribute("/psd", "interval_method", interval_method(K));
+  w.attribute("/psd", "interval_method", interval_method(K, e.no_interval));
   if (e.welch_dof > 0.0) w.attribute("/psd", "welch_degrees_of_freedom", e.welch_dof);
   w.attribute("/psd", "confidence_level", e.confidence);
   w.attribute("/psd", "window_enbw_bins", e.window_enbw_bins);
@@ -132,7 +136,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     for (std::size_t s = 0; s < ns; ++s) {
       const std::size_t i = s * nb + b;
       const double avg = spectral::band_average(e.mean.data() + s * nf, nf, df, bands[b].lower, bands[b].upper);
-      const auto ci = spectral::mean_interval(e.band_scatter[i], K, e.confidence);
+      const auto ci = interval(e.band_scatter[i]);
       level[i] = 10.0 * std::log10(avg);
       cil[i] = ci.defined() ? 10.0 * std::log10(avg * ci.lower) : -HUGE_VAL;
       ciu[i] = ci.defined() ? 10.0 * std::log10(avg * ci.upper) : HUGE_VAL;
@@ -180,8 +184,8 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   }
   write_band_tail_check(w, e, bands);
   write_table_error(w, e, nb);
-  if (K < spectral::kMinRealisationsForInterval)
-    std::fprintf(stderr, "rollspec: note: confidence intervals: %s\n", interval_method(K).c_str());
+  if (K < spectral::kMinRealisationsForInterval || !e.no_interval.empty())
+    std::fprintf(stderr, "rollspec: note: confidence intervals: %s\n", interval_method(K, e.no_interval).c_str());
 }
 
 }  // namespace rollspec::io

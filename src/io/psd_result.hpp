@@ -45,6 +45,9 @@ struct PsdEnsemble {
   std::string units = "(m/s^2)^2/Hz";
   std::string quantity = "acceleration";
   TableError table_error;  // a table's own error the intervals include, or the table they are conditional on
+  // Non-empty: the realisations do not sample what varies (every one rolls over the same strip), so no
+  // interval is given, and this says why (the interval_method text and run's note).
+  std::string no_interval;
 };
 
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);
@@ -52,8 +55,9 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);
 // The third-octave bands of a result: those inside [max(band_min, df), min(band_max, f_max)].
 std::vector<spectral::Band> result_bands(const std::vector<double>& frequency, double band_min, double band_max);
 
-// How the intervals were made, as stored in the /psd attribute interval_method.
-std::string interval_method(std::uint64_t realisations);
+// How the intervals were made, as stored in the /psd attribute interval_method (`no_interval`: why
+// there are none although K would allow them).
+std::string interval_method(std::uint64_t realisations, const std::string& no_interval = "");
 
 // Coordinate scales of a group: <group>/frequency (Hz) and <group>/sensor (names). Dimension
 // scales are visible only in their own group and below (netCDF semantics, which xarray's

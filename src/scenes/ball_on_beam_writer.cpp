@@ -28,6 +28,11 @@ io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) co
   e.confidence = b_.confidence;
   e.sensor_position = b_.model.sensors;
   e.position_meaning = "sensor position along the span";
+  if (b_.path_law() || b_.strip_line)  // one strip, and nothing else random
+    e.no_interval = std::string("every realisation rolls over the one strip of the ") +
+                    (b_.path_law() ? "path table" : "equivalent-roughness table (line = strip)") +
+                    ", so the realisations are the same run and the strip's own variability is not sampled: "
+                    "the result is one strip's";
   return e;
 }
 

@@ -57,6 +57,22 @@ def test_smooth_strip_reproduces_hertz_and_the_table_is_cached(tmp_path):
     assert r3.returncode == 0 and "path table: cached" in r3.stderr, r3.stderr
 
 
+def test_one_strip_gives_no_interval_however_many_realisations(tmp_path):
+    # Every realisation rolls over the same strip: 6 identical realisations would give zero-width
+    # intervals that claim a certainty the one strip does not have; the result has none, and says why.
+    sets = [s for s in SMOOTH if not s.startswith("study.realisations")] + ["study.realisations=6"]
+    r, out = rig(tmp_path, "contact.law=path", *sets)
+    assert r.returncode == 0, r.stderr
+    assert "confidence intervals: none (every realisation rolls over the one strip of the path table" in r.stderr
+    with h5py.File(out) as f:
+        assert np.all(f["/bands/ci_lower_db"][:] == -np.inf) and np.all(f["/bands/ci_upper_db"][:] == np.inf)
+        assert np.all(f["/psd/ci_lower"][:] == 0) and np.all(f["/psd/ci_upper"][:] == np.inf)
+        assert f["/bands"].attrs["interval_includes"].startswith(b"none (no interval: every realisation rolls")
+    r, out = rig(tmp_path, "contact.law=hertz", *sets, name="hertz.h5")  # realisations that differ keep theirs
+    with h5py.File(out) as f:
+        assert np.all(np.isfinite(f["/bands/ci_lower_db"][:]))
+
+
 def test_plan_lists_the_stage(tmp_path):
     r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, command="plan")
     assert r.returncode == 0, r.stderr
