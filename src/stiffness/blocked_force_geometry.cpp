@@ -105,19 +105,23 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
     bf.strip_length_origin.refuse("leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
-  // Cost (CPU seconds, kernel version 7, whole load searches of 0.9–3.7k positions on one thread):
-  // a CG iteration works on the box of the contact (Eq. 3c), about the Hertz diameter 2a, padded
-  // to twice its side, so a position costs c m log2 m with m = (2 min(2a/dx, window))^2; rough
-  // textures (sigma against delta_H = a^2/R) touch on fewer cells and converge in fewer iterations,
-  // a factor 1 / (1 + sigma/delta_H). c = 2.23e-7 s fits the seed 002 rig (a/24, sigma/delta_H 0.37:
-  // 22.6 and 24.7 ms per position), the Ra 0.3 um surface (a/13, 1.57: 3.4 and 2.5 ms) and a smoother
-  // one (a/29, 0.21: 26.7 ms) within a factor 1.3 each.
-  const double box = std::min(2.0 * g.contact_radius / g.cell, static_cast<double>(g.window));
-  const double m = 4.0 * box * box, delta_h = g.contact_radius * g.contact_radius / radius;
-  const double per_position = 2.23e-7 * m * std::log2(m) / (1.0 + g.rms / delta_h);
-  g.estimated_seconds = per_position * static_cast<double>(g.positions);
+  // Cost: c = 2.23e-7 s per position of the whole load search (contact_box_work).
+  g.estimated_seconds = 2.23e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
+}
+
+// A CG iteration works on the box of the contact (Eq. 3c), about the Hertz diameter 2a, padded to
+// twice its side: m log2 m with m = (2 min(2a/dx, window))^2. Rough textures (sigma against delta_H =
+// a^2/R) touch on fewer cells and converge in fewer iterations: a factor 1 / (1 + sigma/delta_H).
+// Fitted (kernel version 7, one thread, whole builds): the blocked-force load search at c = 2.23e-7 s
+// per position on the seed 002 rig (a/24, sigma/delta_H 0.37: 22.6 and 24.7 ms per position), the
+// Ra 0.3 um surface (a/13, 1.57: 3.4 and 2.5 ms) and a smoother one (a/29, 0.21: 26.7 ms), each
+// within 1.33; the path table at 3.7e-7 s per solve on the same three (36, 4.3, 53 ms), within 1.2.
+double contact_box_work(const BlockedForceGeometry& g, std::size_t window, double radius) {
+  const double box = std::min(2.0 * g.contact_radius / g.cell, static_cast<double>(window));
+  const double m = 4.0 * box * box, delta_h = g.contact_radius * g.contact_radius / radius;
+  return m * std::log2(m) / (1.0 + g.rms / delta_h);
 }
 
 std::string BlockedForceGeometry::describe() const {

@@ -52,4 +52,8 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bl
                                             double radius, double effective_modulus, double load,
                                             double max_step_length);
 
+// The relative cost of one contact solve on g's grid in a window of `window` cells (ball radius
+// `radius`): plan's table estimates scale it by a measured constant per table kind.
+double contact_box_work(const BlockedForceGeometry& g, std::size_t window, double radius);
+
 }  // namespace rollspec::stiffness

@@ -69,14 +69,10 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
     g.nx = need;
   }
   g.nx += g.nx % 2;
-  // Cost (CPU seconds): J paths and the two rows B43a usually adds, over every position, 17 ms per
-  // solve at a 128 window scaled with the (2 window)^2 product (measured, kernel version 6, by
-  // bench/contact/bench_tables.py on studies/seed002-rig-1ms.ini, 20 -> 20.5 mm: window 200, 37
-  // positions x 10 rows, 33 CG iterations per solve, output products on the contact's box (Eq. 3d):
-  // 12.6 and 13.5 s CPU in two runs; this model 16 s). Chunks of positions (PT-1) share the threads.
-  const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window);
-  const double per_solve = 17e-3 * n2 * std::log2(n2) / (256.0 * 256.0 * 16.0);
-  g.estimated_seconds = per_solve * static_cast<double>(g.positions * (g.approaches + 2));
+  // Cost: J rows and the two B43a usually adds, over every position, at 3.7e-7 s per solve
+  // (contact_box_work, fitted on three textures; bench/contact/bench_tables.py's rig: 13.5 s CPU).
+  g.estimated_seconds =
+      3.7e-7 * contact_box_work(g.base, g.window, radius) * static_cast<double>(g.positions * (g.approaches + 2));
   const std::size_t chunk = contact::PathTableOptions{}.chunk_positions;
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + chunk - 1) / chunk)));
   return g;
