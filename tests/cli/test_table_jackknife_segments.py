@@ -107,3 +107,18 @@ def test_segment_leave_out_and_jackknife_refusals(tmp_path):
     r, _ = run_copied_study("seed002-rig-1ms.ini", tmp_path, "stiffness.table_error=jackknife", command="plan")
     assert_refused(r, EX_CONFIG, ["[stiffness] table_error = jackknife", "blocked-force table of at least 2 Welch",
                                   "allowed here: none"])
+
+
+def test_run_says_below_which_frequency_f0_is_the_texture_shape(tmp_path):
+    # F0's PSD is the solver's own from the table's third Welch bin: f = 3 v / (segment x step x cell).
+    # The coarse rig: 64 positions of 12 um at 1 m/s -> 3 / 0.768 mm = 3906 Hz, above band_min = 400 Hz.
+    r, _ = run_copied_study("seed002-rig-1ms.ini", tmp_path, *SOLVER, command="plan")
+    assert r.returncode == 0, r.stderr
+    assert "[blocked_force] segment: F0's PSD is the contact solver's own from its Welch bin 3 up, wavelength " \
+           "0.256 mm, i.e. 3906 Hz at [ball] speed = 1 m/s; the bands from [spectrum] band_min = 400 Hz" in r.stderr
+    # A segment of 480 positions (5.76 mm) resolves from 521 Hz: still above 400 Hz; from 600 Hz up, none.
+    r, _ = run_copied_study("seed002-rig-1ms.ini", tmp_path, *SOLVER, "blocked_force.segment=480", command="plan")
+    assert "i.e. 520.8 Hz" in r.stderr
+    r, _ = run_copied_study("seed002-rig-1ms.ini", tmp_path, *SOLVER, "blocked_force.segment=480",
+                            "spectrum.band_min=600", command="plan")
+    assert r.returncode == 0 and "Welch bin 3" not in r.stderr, r.stderr
