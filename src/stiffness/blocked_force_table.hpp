@@ -23,7 +23,6 @@ struct BlockedForceTable : TableData {
   std::vector<double> position, force, stiffness;  // m, N, N/m along the path
   std::vector<double> psd_wavenumber, psd;         // rad/m, N^2 m / rad (one-sided PSD of F0 - mean)
   double approach = 0.0, k0 = 0.0, mean_force = 0.0, load = 0.0;
-  std::string input_hash;  // of the CachedTable it came from
   // G of F0 at wavenumber k: log-log between the PSD bins, the first bin's level below them, zero
   // above the path's Nyquist wavenumber.
   double psd_at(double k) const;

@@ -109,12 +109,14 @@ void CachedTable::resolve(TableData& t, bool rebuild, const std::function<void(T
   const TableState state = inspect(t, why);
   if (state == TableState::valid && !rebuild) {
     status = "cached " + path_;
+    t.input_hash = hash_;
     return;
   }
   if (state == TableState::mismatched && !rebuild) throw data_error(why + "\nrun with --rebuild to replace it");
   // Before the build: never replace anything but a rollspec table.
   const std::string write_path = table_write_path(store_, path_, kind_.file_type, automatic_);
   build(t);
+  t.input_hash = hash_;
   if (ensemble::mpi_rank() == 0) write(write_path, t);
   ensemble::mpi_barrier();  // the table file exists for every rank from here on
   status = "built " + path_;

@@ -26,6 +26,7 @@ class TableData {
   virtual void load_from(const io::Hdf5Reader& r) = 0;
   virtual void save_to(io::Hdf5Writer& w) const = 0;
   virtual std::string checksum() const = 0;
+  std::string input_hash;  // of the CachedTable that resolved it (set by CachedTable::resolve)
 };
 
 struct TableKind {

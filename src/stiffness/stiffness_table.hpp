@@ -33,7 +33,6 @@ struct StiffnessTable : TableData {
   // over the table's nonzero forces exceeds this is flagged as not usable wherever it is shown.
   static constexpr double fit_tolerance = 0.05;
   bool fit_usable() const { return fit_max_relative_error <= fit_tolerance; }
-  std::string input_hash;  // of the CachedTable it came from
   // Approach and stiffness where the mean force equals `load` (monotone interpolation of the table).
   double approach_at(double load) const;
   double stiffness_at(double load) const;

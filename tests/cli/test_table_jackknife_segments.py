@@ -60,7 +60,11 @@ def test_a_left_out_segment_is_the_mean_of_the_other_periodograms(tmp_path):
     position, force, table_psd = table_force(tmp_path)
     p = periodograms(position, force)
     assert len(p) == 15
+    (table,) = glob.glob(str(tmp_path / "tables" / "blocked-force-*.h5"))
     with h5py.File(full) as a, h5py.File(left) as b:
+        # The result names the table it used (the cached file's input hash), the same for the sub-table's run.
+        for f in (a, b):
+            assert f["contact"].attrs["blocked_force_input_hash"].decode() == table.split("-")[-1][:-3]
         assert a["contact/blocked_force_psd"][()].tobytes() == table_psd.tobytes()
         np.testing.assert_allclose(table_psd, p.mean(axis=0), rtol=1e-10, atol=0)
         np.testing.assert_allclose(b["contact/blocked_force_psd"][:], np.delete(p, 3, axis=0).mean(axis=0),
