@@ -12,6 +12,7 @@ third-octave bands, the facts the seed states beside what each route gives. --re
 table as a record that the documentation's seeds page renders (bench/bench_record.py).
 """
 import argparse
+import os
 import pathlib
 import shutil
 import subprocess
@@ -76,6 +77,8 @@ def main():
         except bench_record.RecordError as e:
             sys.exit(f"seed002_routes: {e}")
     binary = str(pathlib.Path(a.bin).resolve())
+    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+        sys.exit(f"seed002_routes: --bin {a.bin}: not an executable file; allowed: a rollspec binary")
     work = pathlib.Path(tempfile.mkdtemp(prefix="seed002-routes-"))
     try:
         columns = {}

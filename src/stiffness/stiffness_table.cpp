@@ -379,8 +379,7 @@ StiffnessTable resolve_table(const TableStudy& ts, double ball_radius, double ef
       [&](TableData& out) {
         static_cast<StiffnessTable&>(out) = build_table(ts, ball_radius, effective_modulus, quiet);
       },
-      status);
-  t.input_hash = cached.hash();
+      status);  // sets t.input_hash
   return t;
 }
 
