@@ -28,10 +28,17 @@ def text_of(page):
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory):
-    out = tmp_path_factory.mktemp("docs")
-    r = subprocess.run(["bash", str(SOURCE / "docs" / "build.sh"), str(out)], env=dict(os.environ, ROLLSPEC_BIN=BIN),
-                       capture_output=True, text=True, timeout=600)
-    assert r.returncode == 0, f"docs/build.sh failed (exit {r.returncode}):\n{r.stdout[-3000:]}\n{r.stderr[-6000:]}"
+    """Under CTest (ROLLSPEC_BUILD set) the site is the build tree's target rollspec_docs, built once here and
+    then installed by the test install_docs; run alone, it is built into a temporary directory."""
+    build = os.environ.get("ROLLSPEC_BUILD")
+    if build:
+        cmd = [os.environ.get("CMAKE_COMMAND", "cmake"), "--build", build, "--target", "rollspec_docs"]
+        out = Path(build) / "docs"
+    else:
+        out = tmp_path_factory.mktemp("docs")
+        cmd = ["bash", str(SOURCE / "docs" / "build.sh"), str(out)]
+    r = subprocess.run(cmd, env=dict(os.environ, ROLLSPEC_BIN=BIN), capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, f"{' '.join(cmd)} failed (exit {r.returncode}):\n{r.stdout[-3000:]}\n{r.stderr[-6000:]}"
     return out / "html"
 
 
