@@ -29,9 +29,11 @@ int plan_command(const Args& args) {
       "Validates the study and prints each stage of its scene as run / cached / skipped with the\n"
       "reason, and the estimated peak memory and checkpoint disk. Nothing is computed and no file is\n"
       "written, except with --probe: realisation 0 is run once (when the stage tables exist) to\n"
-      "estimate the run time.";
+      "estimate the run time, and a table that is not built yet and whose cost depends on the texture\n"
+      "(the equivalent roughness of filter = solver) has a few of its solves timed to estimate its build.";
   po::options_description opts("options");
-  opts.add_options()("probe", "run realisation 0 once to estimate the run time");
+  opts.add_options()("probe", "run realisation 0 once (and a few solves of a missing equivalent-roughness table) to "
+                               "estimate the run time");
   StudyArgs study;
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
@@ -80,7 +82,8 @@ int plan_command(const Args& args) {
       s.scene() == "ball-on-beam" && study::ContactSection::parse(s).blocked_force == "solver";
   for (const auto& p : scene->plan()) {
     std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::status_name(p.status), p.reason.c_str());
-    const bool solver_table = p.stage == "blocked_force" && blocked_force_solver;
+    const bool solver_table = (p.stage == "blocked_force" && blocked_force_solver) ||
+                              p.stage == "equivalent_roughness" || p.stage == "path_table";
     if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
   }
   // table_error = jackknife (D-30): the ensemble once with the table and once per sub-table.
@@ -101,8 +104,13 @@ int plan_command(const Args& args) {
     std::cout << "run time: not probed (no ensemble: the run is one deterministic computation)\n";
     return 0;
   }
+  // The tables it would build whose cost the plan's model misses: measured on a few of their solves.
+  for (const auto& t : ensemble_scene->probe_tables())
+    std::printf("table %s: about %.2g s CPU, %.2g s wall on %d thread%s (probe: %s)\n", t.table.c_str(), t.seconds,
+                t.seconds / t.threads, t.threads, t.threads == 1 ? "" : "s", t.how.c_str());
   if (tables_missing) {
-    std::cout << "run time: not probed (the stage tables are not built yet; rollspec stiffness builds them)\n";
+    std::cout << "run time: not probed (the stage tables are not built yet; rollspec run builds them, rollspec "
+                 "stiffness the stiffness table alone)\n";
     return 0;
   }
   // The tables are cached: this loads them. The probe runs the full table alone: no sub-table is built.

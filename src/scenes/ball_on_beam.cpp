@@ -60,6 +60,23 @@ class BallOnBeam final : public EnsembleScene {
     if (blocked_solver())
       if (const std::string w = blocked_force_resolution_warning(b_, blocked_force_grid()); !w.empty()) io::warn(w);
     if (jackknifes_stiffness_table()) tables_ = s.tables;
+    if (solver_filter() && !b_.strip_line) filter_tables_ = s.tables;
+  }
+
+  // plan --probe: the equivalent-roughness table of filter = solver, when it is not cached, from a few
+  // of its solves (its cost follows the texture's listed cells, which the plan's model cannot see).
+  std::vector<TableEstimate> probe_tables() const override {
+    if (!filter_tables_) return {};
+    for (const auto& p : plan())
+      if (p.stage == "equivalent_roughness" && p.status != StageStatus::run) return {};
+    const stiffness::BlockedForceGeometry g = blocked_force_grid();
+    const stiffness::TableProbe t = stiffness::probe_equivalent_roughness(
+        *filter_tables_, g, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight());
+    const int chunks = static_cast<int>((g.positions + 63) / 64);
+    char how[160];
+    std::snprintf(how, sizeof how, "the first %zu positions of strip 0 solved in %.2g s CPU", t.positions,
+                  t.probe_seconds);
+    return {{"equivalent_roughness", t.seconds, std::max(1, std::min(ensemble::ensemble_threads(), chunks)), how}};
   }
 
   // D-30: one random table, of at least 2 surfaces, strips or Welch segments of F0.
@@ -419,6 +436,7 @@ class BallOnBeam final : public EnsembleScene {
   ResolvedContact contact_;
   io::TableError table_error_;                   // what the intervals include besides the realisations
   std::optional<stiffness::TableStudy> tables_;  // table_error = jackknife: the sub-tables' inputs
+  std::optional<stiffness::TableStudy> filter_tables_;  // filter = solver: what plan --probe solves
   bool linearised() const { return b_.linearised(); }
   bool uses_table() const { return b_.uses_table(); }
   bool blocked_solver() const { return b_.blocked_solver(); }

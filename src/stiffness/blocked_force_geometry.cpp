@@ -105,8 +105,13 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
     bf.strip_length_origin.refuse("leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
-  // Cost: c = 2.23e-7 s per position of the whole load search (contact_box_work).
-  g.estimated_seconds = 2.23e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
+  // Cost: c = 2.23e-7 s per position of the whole load search (contact_box_work), plus the solvers'
+  // set-up (FFT plans of the window's boxes and the coarse grid, made on the first cold solves): about
+  // 0.5 s on a 128-cell window (the Ra 0.3 um finish's derived strip: the pre-search's first path of 34
+  // positions 0.67 s, its second 0.14 s), which short strips otherwise miss (bench_plan_estimates.py).
+  constexpr double kSetupSeconds = 0.5;
+  g.estimated_seconds =
+      kSetupSeconds + 2.23e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -35,6 +36,8 @@ constexpr std::size_t kChunkPositions = 64;
 // 1024 positions, 128^2 window, 23.7 CG iterations per position, 24.1 s CPU, i.e. 11.8 ms per
 // position, 15 ms at 144^2); scaled to other windows as the padded FFT product, N log2 N with
 // N = 4 window^2. (Earlier: 27 ms at 144^2 from bench_equivalent_roughness seed002, 33 iterations.)
+// Other textures cost up to about three times as much (their listed cells reach further):
+// bench/contact/bench_plan_estimates.py; plan --probe measures instead (probe_equivalent_roughness).
 constexpr double kSecondsPerPosition144 = 15e-3;
 
 std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& t) {
@@ -92,7 +95,7 @@ std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedFor
       buf, sizeof buf,
       "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
       "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
-      "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
+      "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s (from the window; plan --probe times a few solves)",
       static_cast<long long>(ts.equivalent_roughness.strips),
       static_cast<long long>(ts.equivalent_roughness.strips - 1), g.nx, g.ny,
       um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),
@@ -184,20 +187,62 @@ EquivalentRoughnessTable leave_out_strip(const EquivalentRoughnessTable& t, std:
   return s;
 }
 
+namespace {
+// What the build and its probe solve: the strip grid, the path's positions and the options.
+struct PathSetup {
+  contact::Grid strip_grid, window_grid;
+  std::vector<double> positions;
+  contact::SolverOptions opts;
+  contact::EquivalentRoughnessOptions po;
+};
+
+PathSetup path_setup(const TableStudy& ts, const BlockedForceGeometry& geo) {
+  const double dx = geo.cell;
+  PathSetup p{{geo.nx, geo.ny, dx, dx}, {geo.window, geo.window, dx, dx}, {}, ts.stiffness.solver, {}};
+  for (std::size_t j = geo.window / 2; j + geo.window / 2 < geo.nx; j += geo.step)
+    p.positions.push_back(p.strip_grid.x(j));
+  p.po.chunk_positions = kChunkPositions;
+  // ER-1 to the solves' own accuracy (strip_load_tolerance).
+  p.po.load_tolerance = strip_load_tolerance(p.opts);
+  return p;
+}
+}  // namespace
+
+TableProbe probe_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& geo, double radius,
+                                      double e_star, double load) {
+  const PathSetup p = path_setup(ts, geo);
+  const texture::Surface strip = study_strip(ts, StripGrid{geo.nx, geo.ny, geo.cell, geo.derived_cell}, 0);
+  contact::ContactSolver solver(p.window_grid, e_star);
+  // One whole chunk, as the build solves it (from the flat strip's field, then warm along the path):
+  // its first positions cost more than the rest, so fewer positions would overstate the chunk.
+  const std::size_t n = p.positions.size(), count = std::min(n, kChunkPositions);
+  const std::vector<double> first(p.positions.begin(), p.positions.begin() + static_cast<std::ptrdiff_t>(count));
+  TableProbe out;
+  const std::clock_t start = std::clock();
+  try {
+    contact::equivalent_roughness(solver, p.strip_grid, strip.heights, radius, ts.stiffness.shape, first, load, p.opts,
+                                  p.po);
+  } catch (const std::invalid_argument& e) {  // as the build refuses it
+    ts.blocked_force.window_origin.refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
+  }
+  out.probe_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+  out.positions = count;
+  out.seconds = static_cast<double>(ts.equivalent_roughness.strips) * out.probe_seconds * static_cast<double>(n) /
+                static_cast<double>(count);
+  return out;
+}
+
 EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& geo,
                                                     double radius, double e_star, double load, bool quiet) {
   const double dx = geo.cell;
-  const std::size_t nx = geo.nx, ny = geo.ny, window = geo.window, step = geo.step;
+  const std::size_t nx = geo.nx, ny = geo.ny;
   const auto n_strips = static_cast<std::size_t>(ts.equivalent_roughness.strips);
-  const contact::Grid strip_grid{nx, ny, dx, dx}, window_grid{window, window, dx, dx};
-  std::vector<double> positions;
-  for (std::size_t j = window / 2; j + window / 2 < nx; j += step) positions.push_back(strip_grid.x(j));
-  contact::SolverOptions opts = ts.stiffness.solver;
+  const PathSetup setup = path_setup(ts, geo);
+  const contact::Grid& strip_grid = setup.strip_grid;
+  const std::vector<double>& positions = setup.positions;
+  const contact::SolverOptions& opts = setup.opts;
   const contact::BallShape shape = ts.stiffness.shape;
-  contact::EquivalentRoughnessOptions po;
-  po.chunk_positions = kChunkPositions;
-  // ER-1 to the solves' own accuracy (strip_load_tolerance).
-  po.load_tolerance = strip_load_tolerance(opts);
+  const contact::EquivalentRoughnessOptions& po = setup.po;
   if (!quiet)
     std::fprintf(stderr, "%sequivalent roughness: %s\n", ensemble::rank_prefix().c_str(),
                  equivalent_roughness_describe(ts, geo).c_str());
@@ -205,7 +250,7 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
   t.position = positions;
   t.load = load;
   t.strips = static_cast<double>(n_strips);
-  contact::ContactSolver solver(window_grid, e_star);
+  contact::ContactSolver solver(setup.window_grid, e_star);
   const auto start = std::chrono::steady_clock::now();
   ensemble::Progress progress("equivalent roughness strips", n_strips, quiet);  // bar and ETA
   progress.show_after(2.0);

@@ -40,6 +40,18 @@ struct EquivalentRoughnessTable : TableData {
 // Estimated build time on one core (s), for the plan: strips x positions force-controlled solves.
 double equivalent_roughness_seconds(const TableStudy& ts, const BlockedForceGeometry& g);
 
+// `plan --probe`: the build's CPU time (s) measured rather than modelled: the first chunk of strip 0
+// (64 positions, with the flat strip's solve) solved as the build solves it, on one thread, scaled to
+// every position of every strip. The solves' cost follows the listed cells' box, which the texture
+// sets and the window model above cannot see (contact README Eq. 17).
+struct TableProbe {
+  double seconds = 0.0;        // estimated CPU seconds of the whole build
+  double probe_seconds = 0.0;  // CPU seconds the probe took
+  std::size_t positions = 0;   // positions the probe solved
+};
+TableProbe probe_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
+                                      double effective_modulus, double load);
+
 // "2 strips of 400 x 64 cells, ... positions, ...; build about ... s" for the plan and the log.
 std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedForceGeometry& g);
 

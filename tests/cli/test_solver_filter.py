@@ -97,3 +97,33 @@ def test_bad_combinations_are_refused(tmp_path):
         assert_refused(r, EX_CONFIG, ["[contact] filter = solver", "allowed", named])
     r, _ = rig(tmp_path, *SOLVER, "equivalent_roughness.strips=0", command="plan")
     assert r.returncode != 0 and "strips" in r.stderr, r.stderr
+
+
+def test_plan_probe_times_the_first_chunk_of_a_missing_table_and_writes_nothing(tmp_path):
+    """plan --probe: the equivalent-roughness table's build is estimated from its first chunk of solves
+    (64 positions of strip 0, as the build solves them), scaled to every position of every strip; no table
+    is written; once the table is cached there is nothing to probe and realisation 0 is timed instead."""
+    import re
+    study = tmp_path / "rig.ini"
+    shutil.copy(RIG, study)
+    sets = [a for kv in SOLVER for a in ("--set", kv)]
+    p = run(["plan", study, "--probe", *sets])
+    assert p.returncode == 0, p.stderr
+    positions = int(re.search(r"(\d+) positions per strip", stage_row(p.stdout, "equivalent_roughness")).group(1))
+    m = re.search(r"^table equivalent_roughness: about ([\d.e+-]+) s CPU, ([\d.e+-]+) s wall on (\d+) threads? "
+                  r"\(probe: the first (\d+) positions of strip 0 solved in ([\d.e+-]+) s CPU\)$", p.stdout, re.M)
+    assert m, p.stdout
+    total, wall, threads, probed, probe = (float(m.group(i)) for i in range(1, 6))
+    assert probed == min(64, positions)
+    # Two strips, each positions / probed chunks' worth of the probe (the figures are printed to 2 digits).
+    assert abs(total - 2 * probe * positions / probed) <= 0.1 * total, (total, probe, positions, probed)
+    assert abs(wall - total / threads) <= 0.1 * wall
+    assert "run time: not probed (the stage tables are not built yet" in p.stdout
+    assert not list(tmp_path.rglob("*.h5")), list(tmp_path.rglob("*"))
+
+    r = run(["run", study, "--out", tmp_path / "r.h5", *sets])
+    assert r.returncode == 0, r.stderr
+    p = run(["plan", study, "--probe", *sets])
+    assert p.returncode == 0, p.stderr
+    assert "table equivalent_roughness:" not in p.stdout, p.stdout
+    assert "s per realisation (probe of realisation 0)" in p.stdout, p.stdout
