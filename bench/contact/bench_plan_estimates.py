@@ -15,6 +15,7 @@ Ratio = estimate / measured CPU; the models' constants were fitted on rig, rough
 and flat are held out); the probe is fitted on nothing.
 """
 import argparse
+import json
 import os
 import pathlib
 import re
@@ -79,6 +80,16 @@ def measure(binary, texture, kind):
         shutil.rmtree(work, ignore_errors=True)
 
 
+def is_own_json(path):
+    """A --json file this script wrote (a list of its cases), which a new run may replace."""
+    try:
+        with open(path) as f:
+            d = json.load(f)
+        return isinstance(d, list) and all(isinstance(x, dict) and {"texture", "kind", "cpu"} <= x.keys() for x in d)
+    except (OSError, ValueError):
+        return False
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--binary", default=str(ROOT / "build" / "werror" / "rollspec"))
@@ -98,7 +109,7 @@ def main():
         sys.exit(f"bench_plan_estimates: no rollspec binary at {o.binary}; allowed: a built rollspec (--binary)")
     try:  # refused before the measurement, not after
         if o.json:
-            bench_record.check_target(o.json)
+            bench_record.check_target(o.json, is_own_json)
         if o.record:
             bench_record.check_target(o.record, bench_record.is_record)
     except bench_record.RecordError as e:
@@ -122,7 +133,7 @@ def main():
     print(text)
     others = bench_record.other_work(busy, bench_record.own_cpu() - own, time.perf_counter() - t0)
     if o.json:
-        bench_record.replace_text(o.json, __import__("json").dumps(data, indent=1))
+        bench_record.replace_text(o.json, json.dumps(data, indent=1), own=is_own_json)
     if o.record:
         bench_record.write(
             o.record, title="Table build estimates of rollspec plan against the measured builds", argv=sys.argv,
@@ -144,3 +155,5 @@ if __name__ == "__main__":
         main()
     except bench_record.RecordError as e:  # a write that failed at the end: one line, the old file whole
         sys.exit(f"bench_plan_estimates: {e}")
+    except KeyboardInterrupt:  # the case's temporary directory is removed on the way out
+        sys.exit("bench_plan_estimates: interrupted; nothing written")

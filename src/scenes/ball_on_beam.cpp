@@ -72,11 +72,10 @@ class BallOnBeam final : public EnsembleScene {
     const stiffness::BlockedForceGeometry g = blocked_force_grid();
     const stiffness::TableProbe t = stiffness::probe_equivalent_roughness(
         *filter_tables_, g, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight());
-    const int chunks = static_cast<int>((g.positions + 63) / 64);
     char how[160];
     std::snprintf(how, sizeof how, "the first %zu positions of strip 0 solved in %.2g s CPU", t.positions,
                   t.probe_seconds);
-    return {{"equivalent_roughness", t.seconds, std::max(1, std::min(ensemble::ensemble_threads(), chunks)), how}};
+    return {{"equivalent_roughness", t.seconds, t.threads, how}};
   }
 
   // D-30: one random table, of at least 2 surfaces, strips or Welch segments of F0.

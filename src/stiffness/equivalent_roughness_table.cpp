@@ -86,10 +86,16 @@ double equivalent_roughness_seconds(const TableStudy& ts, const BlockedForceGeom
   return static_cast<double>(ts.equivalent_roughness.strips) * static_cast<double>(g.positions) * per_position;
 }
 
-std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedForceGeometry& g) {
-  // The chunks of kChunkPositions positions share the threads.
+namespace {
+// The chunks of kChunkPositions positions share the threads.
+int build_threads(const BlockedForceGeometry& g) {
   const int chunks = static_cast<int>((g.positions + kChunkPositions - 1) / kChunkPositions);
-  const int threads = std::max(1, std::min(omp_get_max_threads(), chunks));
+  return std::max(1, std::min(omp_get_max_threads(), chunks));
+}
+}  // namespace
+
+std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedForceGeometry& g) {
+  const int threads = build_threads(g);
   char buf[768];
   std::snprintf(
       buf, sizeof buf,
@@ -227,6 +233,7 @@ TableProbe probe_equivalent_roughness(const TableStudy& ts, const BlockedForceGe
   }
   out.probe_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
   out.positions = count;
+  out.threads = build_threads(geo);
   out.seconds = static_cast<double>(ts.equivalent_roughness.strips) * out.probe_seconds * static_cast<double>(n) /
                 static_cast<double>(count);
   return out;

@@ -48,6 +48,7 @@ struct TableProbe {
   double seconds = 0.0;        // estimated CPU seconds of the whole build
   double probe_seconds = 0.0;  // CPU seconds the probe took
   std::size_t positions = 0;   // positions the probe solved
+  int threads = 1;             // threads the build would use (its chunks share them)
 };
 TableProbe probe_equivalent_roughness(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
                                       double effective_modulus, double load);

@@ -2,6 +2,7 @@
 the equivalent-roughness table stage runs, is cached, the plan lists it; the line PSD it gives lies
 below the raw path PSD where the patch filters (ER-3, ka > 1.5); bad combinations are refused."""
 import glob
+import re
 import shutil
 
 import h5py
