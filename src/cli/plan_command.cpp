@@ -8,13 +8,13 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/cli/plan_tables.hpp"
 #include "src/cli/run_phases.hpp"
 #include "src/cli/sweep_run.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/available_memory.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/ensemble_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/study_section.hpp"
@@ -32,8 +32,9 @@ int plan_command(const Args& args) {
       "estimate the run time, and a table that is not built yet and whose cost depends on the texture\n"
       "(the equivalent roughness of filter = solver) has a few of its solves timed to estimate its build.";
   po::options_description opts("options");
-  opts.add_options()("probe", "run realisation 0 once (and a few solves of a missing equivalent-roughness table) to "
-                               "estimate the run time");
+  opts.add_options()("probe",
+                     "run realisation 0 once (and a few solves of a missing equivalent-roughness table) to "
+                     "estimate the run time");
   StudyArgs study;
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
@@ -76,16 +77,10 @@ int plan_command(const Args& args) {
   }
   for (const auto& w : scene->warnings()) std::cout << "warning: " << w << "\n";
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");
-  bool tables_missing = false;
-  // Only ball-on-beam has a blocked-force stage; its table exists with [contact] blocked_force = solver.
-  const bool blocked_force_solver =
-      s.scene() == "ball-on-beam" && study::ContactSection::parse(s).blocked_force == "solver";
-  for (const auto& p : scene->plan()) {
+  const auto stages = scene->plan();
+  for (const auto& p : stages)
     std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::status_name(p.status), p.reason.c_str());
-    const bool solver_table = (p.stage == "blocked_force" && blocked_force_solver) ||
-                              p.stage == "equivalent_roughness" || p.stage == "path_table";
-    if ((p.stage == "stiffness_table" || solver_table) && p.status == scenes::StageStatus::run) tables_missing = true;
-  }
+  const bool tables_missing = any_missing_table(s, stages);
   // table_error = jackknife (D-30): the ensemble once with the table and once per sub-table.
   const bool jackknife = study::StiffnessSection::asks_table_jackknife(s) && ensemble_scene;
   const scenes::TableJackknifePlan jk = jackknife ? ensemble_scene->table_jackknife() : scenes::TableJackknifePlan{};
@@ -105,9 +100,7 @@ int plan_command(const Args& args) {
     return 0;
   }
   // The tables it would build whose cost the plan's model misses: measured on a few of their solves.
-  for (const auto& t : ensemble_scene->probe_tables())
-    std::printf("table %s: about %.2g s CPU, %.2g s wall on %d thread%s (probe: %s)\n", t.table.c_str(), t.seconds,
-                t.seconds / t.threads, t.threads, t.threads == 1 ? "" : "s", t.how.c_str());
+  for (const auto& t : ensemble_scene->probe_tables()) std::cout << table_probe_line(t) << "\n";
   if (tables_missing) {
     std::cout << "run time: not probed (the stage tables are not built yet; rollspec run builds them, rollspec "
                  "stiffness the stiffness table alone)\n";

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "src/cli/plan_tables.hpp"
 #include "src/cli/sweep_run.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/study/sections/study_section.hpp"
@@ -15,11 +16,10 @@ namespace rollspec::cli {
 namespace {
 
 // Seconds of one ensemble point from realisation 0; < 0 if it cannot be probed (tables not built, single run).
-double probe_point(const study::Study& s, scenes::Scene& scene, const std::vector<scenes::StagePlan>& stages) {
-  auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(&scene);
+double probe_point(const study::Study& s, scenes::EnsembleScene* ensemble_scene,
+                   const std::vector<scenes::StagePlan>& stages) {
   if (!ensemble_scene) return -1;
-  for (const auto& p : stages)
-    if (p.stage.find("table") != std::string::npos && p.status == scenes::StageStatus::run) return -1;
+  if (any_missing_table(s, stages)) return -1;
   ensemble_scene->prepare(true, false);
   std::vector<double> values(ensemble_scene->values_per_realisation());
   const auto start = std::chrono::steady_clock::now();
@@ -39,6 +39,7 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
   std::vector<std::pair<std::string, std::string>> tables;  // (stage: reason, points) in first-seen order
   double total = 0;
   bool probed = probe;
+  std::vector<std::string> probed_tables, probe_lines;
   for (std::size_t i = 0; i < n; ++i) {
     const study::Study s = resolve_study(sweep.point(i));
     check_resources(s, false);
@@ -57,14 +58,26 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
     }
     if (i == 0) first = stages;
     for (const auto& p : stages) {
-      if (p.stage.find("table") == std::string::npos || p.status == scenes::StageStatus::skipped) continue;
+      if (!table_stage(s, p) || p.status == scenes::StageStatus::skipped) continue;
       const std::string what = p.stage + ": " + p.reason;
       auto it = std::find_if(tables.begin(), tables.end(), [&](const auto& t) { return t.first == what; });
       if (it == tables.end()) it = tables.insert(tables.end(), {what, ""});
       it->second += (it->second.empty() ? "" : ", ") + std::to_string(i + 1);
     }
+    auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(scene.get());
+    // The missing tables a few real solves estimate better than the model: once per table file (the
+    // stage's reason names it), under the first point that needs it.
+    if (probe && ensemble_scene && any_missing_table(s, stages))
+      for (const auto& t : ensemble_scene->probe_tables()) {
+        const auto stage =
+            std::find_if(stages.begin(), stages.end(), [&](const auto& p) { return p.stage == t.table; });
+        const std::string what = t.table + ": " + (stage == stages.end() ? std::string() : stage->reason);
+        if (std::find(probed_tables.begin(), probed_tables.end(), what) != probed_tables.end()) continue;
+        probed_tables.push_back(what);
+        probe_lines.push_back("  point " + std::to_string(i + 1) + ": " + table_probe_line(t));
+      }
     if (probe && probed) {
-      const double t = probe_point(s, *scene, stages);
+      const double t = probe_point(s, ensemble_scene, stages);
       probed = t >= 0;
       total += t;
     }
@@ -73,6 +86,8 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
   if (!tables.empty()) std::cout << "tables (one build each, shared by the points listed):\n";
   for (const auto& [what, points] : tables) std::cout << "  points " << points << ": " << what << "\n";
   if (!probe) return 0;
+  if (!probe_lines.empty()) std::cout << "tables probed (a few of their solves timed):\n";
+  for (const auto& line : probe_lines) std::cout << line << "\n";
   if (!probed)
     std::cout << "run time: not probed (a point is one deterministic run, or its stage tables are not built yet)\n";
   else

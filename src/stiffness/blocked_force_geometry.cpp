@@ -105,13 +105,13 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
     bf.strip_length_origin.refuse("leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
-  // Cost: c = 2.23e-7 s per position of the whole load search (contact_box_work), plus the solvers'
+  // Cost: c = 2.9e-7 s per position of the whole load search (contact_box_work), plus the solvers'
   // set-up (FFT plans of the window's boxes and the coarse grid, made on the first cold solves): about
   // 0.5 s on a 128-cell window (the Ra 0.3 um finish's derived strip: the pre-search's first path of 34
   // positions 0.67 s, its second 0.14 s), which short strips otherwise miss (bench_plan_estimates.py).
   constexpr double kSetupSeconds = 0.5;
   g.estimated_seconds =
-      kSetupSeconds + 2.23e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
+      kSetupSeconds + 2.9e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
 }
@@ -119,10 +119,11 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
 // A CG iteration works on the box of the contact (Eq. 3c), about the Hertz diameter 2a, padded to
 // twice its side: m log2 m with m = (2 min(2a/dx, window))^2. Rough textures (sigma against delta_H =
 // a^2/R) touch on fewer cells and converge in fewer iterations: a factor 1 / (1 + sigma/delta_H).
-// Fitted (kernel version 7, one thread, whole builds): the blocked-force load search at c = 2.23e-7 s
-// per position on the seed 002 rig (a/24, sigma/delta_H 0.37: 22.6 and 24.7 ms per position), the
-// Ra 0.3 um surface (a/13, 1.57: 3.4 and 2.5 ms) and a smoother one (a/29, 0.21: 26.7 ms), each
-// within 1.33; the path table at 3.7e-7 s per solve on the same three (36, 4.3, 53 ms), within 1.2.
+// Fitted (kernel version 7, one thread, whole builds less the cached run, bench_plan_estimates.py) on
+// the seed 002 rig (a/24, sigma/delta_H 0.37), the Ra 0.3 um surface (a/13, 1.57) and a smoother one
+// (a/29, 0.21), each the geometric mean of two sessions' builds (which differed by up to 27 %): the
+// blocked-force load search at c = 2.9e-7 s, the value that centres their estimate/measured ratios;
+// the path table at 3.7e-7 s per solve on the same three (36, 4.3, 53 ms), within 1.2.
 double contact_box_work(const BlockedForceGeometry& g, std::size_t window, double radius) {
   const double box = std::min(2.0 * g.contact_radius / g.cell, static_cast<double>(window));
   const double m = 4.0 * box * box, delta_h = g.contact_radius * g.contact_radius / radius;

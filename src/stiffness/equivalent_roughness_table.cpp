@@ -31,14 +31,13 @@ namespace {
 // Positions per warm-started chunk: fixed, so the table has the same bits for any thread count
 // (EquivalentRoughnessOptions::chunk_positions).
 constexpr std::size_t kChunkPositions = 64;
-// CPU seconds per position: one load-controlled solve (contact README Eq. 17), measured on
-// studies/seed002-rig-1ms.ini with contact.filter = solver (bench/contact/bench_tables.py: 2 strips of
-// 1024 positions, 128^2 window, 23.7 CG iterations per position, 24.1 s CPU, i.e. 11.8 ms per
-// position, 15 ms at 144^2); scaled to other windows as the padded FFT product, N log2 N with
-// N = 4 window^2. (Earlier: 27 ms at 144^2 from bench_equivalent_roughness seed002, 33 iterations.)
-// Other textures cost up to about three times as much (their listed cells reach further):
-// bench/contact/bench_plan_estimates.py; plan --probe measures instead (probe_equivalent_roughness).
-constexpr double kSecondsPerPosition144 = 15e-3;
+// CPU seconds per position: one load-controlled solve (contact README Eq. 17) on a 144^2 window, scaled
+// to other windows as the padded FFT product, N log2 N with N = 4 window^2. The window cannot see how
+// far a texture's listed cells reach, so on three textures (bench/contact/bench_plan_estimates.py: the
+// seed 002 rig, the Ra 0.3 um finish, a smoother one; geometric means of two sessions' one-thread
+// builds) one constant's estimates spread over a factor 2. The constant centres that spread;
+// plan --probe measures instead (probe_equivalent_roughness).
+constexpr double kSecondsPerPosition144 = 28e-3;
 
 std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& t) {
   return {&t.position, &t.height, &t.psd_wavenumber, &t.psd, &t.stiffness};

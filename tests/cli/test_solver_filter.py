@@ -128,3 +128,20 @@ def test_plan_probe_times_the_first_chunk_of_a_missing_table_and_writes_nothing(
     assert p.returncode == 0, p.stderr
     assert "table equivalent_roughness:" not in p.stdout, p.stdout
     assert "s per realisation (probe of realisation 0)" in p.stdout, p.stdout
+
+
+def test_plan_probe_of_a_sweep_probes_each_missing_table_once_and_builds_none(tmp_path):
+    """plan --probe of a sweep: a table that several points share (the same cache file) is probed once,
+    under the first point that needs it; no point's realisation 0 is run while a table is missing (that
+    would build it), and nothing is written."""
+    study = tmp_path / "rig.ini"
+    shutil.copy(RIG, study)
+    sets = [a for kv in SOLVER for a in ("--set", kv)]
+    p = run(["plan", study, "--probe", *sets, "--sweep", "ball.speed=1,0.8"])
+    assert p.returncode == 0, p.stderr
+    assert "tables (one build each, shared by the points listed):\n  points 1, 2: equivalent_roughness:" in p.stdout
+    lines = re.findall(r"^  point (\d+): table equivalent_roughness: about [\d.e+-]+ s CPU, .*\(probe: the first "
+                       r"\d+ positions of strip 0 solved in [\d.e+-]+ s CPU\)$", p.stdout, re.M)
+    assert lines == ["1"], p.stdout
+    assert "run time: not probed" in p.stdout, p.stdout
+    assert not list(tmp_path.rglob("*.h5")), list(tmp_path.rglob("*"))

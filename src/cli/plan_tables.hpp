@@ -1,0 +1,24 @@
+#pragma once
+// `rollspec plan` of a study or of a sweep's points: which stages are tables that are not built yet,
+// and, with --probe, the measured estimates of those whose cost a few real solves tell better than
+// the plan's model (EnsembleScene::probe_tables).
+#include <string>
+#include <vector>
+
+#include "src/scenes/scene.hpp"
+#include "src/study/study.hpp"
+
+namespace rollspec::cli {
+
+// A stage of `s` that is a cached table: the stiffness table, or a table of the contact solver along
+// the ball's path (a blocked-force table only with [contact] blocked_force = solver).
+bool table_stage(const study::Study& s, const scenes::StagePlan& stage);
+// A table stage that is not cached (status run). --probe never runs realisation 0 while one is
+// missing: preparing the scene would build it.
+bool missing_table(const study::Study& s, const scenes::StagePlan& stage);
+bool any_missing_table(const study::Study& s, const std::vector<scenes::StagePlan>& stages);
+
+// "table NAME: about X s CPU, Y s wall on T threads (probe: ...)", without a newline.
+std::string table_probe_line(const scenes::TableEstimate& t);
+
+}  // namespace rollspec::cli
