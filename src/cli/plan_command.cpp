@@ -28,13 +28,14 @@ int plan_command(const Args& args) {
       "\n"
       "Validates the study and prints each stage of its scene as run / cached / skipped with the\n"
       "reason, and the estimated peak memory and checkpoint disk. Nothing is computed and no file is\n"
-      "written, except with --probe: realisation 0 is run once (when the stage tables exist) to\n"
-      "estimate the run time, and a table that is not built yet and whose cost depends on the texture\n"
-      "(the equivalent roughness of filter = solver) has a few of its solves timed to estimate its build.";
+      "written. A table that is not built yet and whose cost depends on the texture (the equivalent\n"
+      "roughness of filter = solver) has its first solves timed to estimate its build, when they take a\n"
+      "few seconds. --probe runs realisation 0 once (when the stage tables exist) to estimate the run\n"
+      "time, and times those solves whatever they take.";
   po::options_description opts("options");
   opts.add_options()("probe",
-                     "run realisation 0 once (and a few solves of a missing equivalent-roughness table) to "
-                     "estimate the run time");
+                     "run realisation 0 once to estimate the run time (and time the first solves of a missing "
+                     "equivalent-roughness table however long they take)");
   StudyArgs study;
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
@@ -94,13 +95,17 @@ int plan_command(const Args& args) {
         jk.unit == "surfaces" ? "are cached, made from one more solve of each surface when missing"
                               : ("are made from the full table's " + jk.unit + ", without a new solve").c_str());
   }
-  if (!vm.count("probe")) return 0;
+  // The tables it would build whose cost the plan's model misses: measured on a few of their solves
+  // (without --probe only when that is quick).
+  const bool probing = vm.count("probe") > 0;
+  if (ensemble_scene)
+    for (const auto& t : ensemble_scene->probe_tables(table_probe_limit(probing)))
+      std::cout << table_probe_line(t) << "\n";
+  if (!probing) return 0;
   if (!ensemble_scene) {
     std::cout << "run time: not probed (no ensemble: the run is one deterministic computation)\n";
     return 0;
   }
-  // The tables it would build whose cost the plan's model misses: measured on a few of their solves.
-  for (const auto& t : ensemble_scene->probe_tables()) std::cout << table_probe_line(t) << "\n";
   if (tables_missing) {
     std::cout << "run time: not probed (the stage tables are not built yet; rollspec run builds them, rollspec "
                  "stiffness the stiffness table alone)\n";

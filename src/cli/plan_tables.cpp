@@ -1,6 +1,7 @@
 #include "src/cli/plan_tables.hpp"
 
 #include <cstdio>
+#include <limits>
 
 #include "src/study/sections/contact_section.hpp"
 
@@ -22,6 +23,11 @@ bool any_missing_table(const study::Study& s, const std::vector<scenes::StagePla
   for (const auto& p : stages)
     if (missing_table(s, p)) return true;
   return false;
+}
+
+double table_probe_limit(bool probe) {
+  // A few seconds against a build about thirty times longer (the probe is one chunk of one strip).
+  return probe ? std::numeric_limits<double>::infinity() : 5.0;
 }
 
 std::string table_probe_line(const scenes::TableEstimate& t) {

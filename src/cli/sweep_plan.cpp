@@ -1,6 +1,6 @@
 // rollspec plan of a sweep: the points, each point's stages (a table every point needs appears
 // under the same name and status at each, and is built once: cached tables are keyed by their
-// inputs' hash), and with --probe the time of the whole sweep.
+// inputs' hash), the probes of missing tables, and with --probe the time of the whole sweep.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -67,8 +67,8 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
     auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(scene.get());
     // The missing tables a few real solves estimate better than the model: once per table file (the
     // stage's reason names it), under the first point that needs it.
-    if (probe && ensemble_scene && any_missing_table(s, stages))
-      for (const auto& t : ensemble_scene->probe_tables()) {
+    if (ensemble_scene && any_missing_table(s, stages))
+      for (const auto& t : ensemble_scene->probe_tables(table_probe_limit(probe))) {
         const auto stage =
             std::find_if(stages.begin(), stages.end(), [&](const auto& p) { return p.stage == t.table; });
         const std::string what = t.table + ": " + (stage == stages.end() ? std::string() : stage->reason);
@@ -85,9 +85,9 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
   // Cached tables are named by the hash of their inputs: points that name the same table share one build.
   if (!tables.empty()) std::cout << "tables (one build each, shared by the points listed):\n";
   for (const auto& [what, points] : tables) std::cout << "  points " << points << ": " << what << "\n";
-  if (!probe) return 0;
   if (!probe_lines.empty()) std::cout << "tables probed (a few of their solves timed):\n";
   for (const auto& line : probe_lines) std::cout << line << "\n";
+  if (!probe) return 0;
   if (!probed)
     std::cout << "run time: not probed (a point is one deterministic run, or its stage tables are not built yet)\n";
   else

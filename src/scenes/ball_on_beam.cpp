@@ -63,13 +63,14 @@ class BallOnBeam final : public EnsembleScene {
     if (solver_filter() && !b_.strip_line) filter_tables_ = s.tables;
   }
 
-  // plan --probe: the equivalent-roughness table of filter = solver, when it is not cached, from a few
-  // of its solves (its cost follows the texture's listed cells, which the plan's model cannot see).
-  std::vector<TableEstimate> probe_tables() const override {
+  // plan: the equivalent-roughness table of filter = solver, when it is not cached, from a few of its
+  // solves (its cost follows the texture's listed cells, which the plan's model cannot see).
+  std::vector<TableEstimate> probe_tables(double max_probe_seconds) const override {
     if (!filter_tables_) return {};
     for (const auto& p : plan())
       if (p.stage == "equivalent_roughness" && p.status != StageStatus::run) return {};
     const stiffness::BlockedForceGeometry g = blocked_force_grid();
+    if (stiffness::equivalent_roughness_probe_seconds(*filter_tables_, g) > max_probe_seconds) return {};
     const stiffness::TableProbe t = stiffness::probe_equivalent_roughness(
         *filter_tables_, g, b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight());
     char how[160];
@@ -362,8 +363,8 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
-    BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_).write(w, sums, table_error_,
-                                                                                      spectra_only_);
+    BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_)
+        .write(w, sums, table_error_, spectra_only_);
     if (b_.time_histories && !spectra_only_) write_time_histories(w, sums.only);  // re-simulates: not for a fit
   }
 
@@ -433,8 +434,8 @@ class BallOnBeam final : public EnsembleScene {
 
   const BallOnBeamSettings b_;  // the keys' values; the table stages resolve contact_
   ResolvedContact contact_;
-  io::TableError table_error_;                   // what the intervals include besides the realisations
-  std::optional<stiffness::TableStudy> tables_;  // table_error = jackknife: the sub-tables' inputs
+  io::TableError table_error_;                          // what the intervals include besides the realisations
+  std::optional<stiffness::TableStudy> tables_;         // table_error = jackknife: the sub-tables' inputs
   std::optional<stiffness::TableStudy> filter_tables_;  // filter = solver: what plan --probe solves
   bool linearised() const { return b_.linearised(); }
   bool uses_table() const { return b_.uses_table(); }

@@ -79,12 +79,12 @@ struct TableJackknifePlan {
   double variance_factor = 1.0, dof = 0.0;
 };
 
-// `plan --probe`: a table the run would build, its build time measured on a few of its solves.
+// `plan`: a table the run would build, its build time measured on a few of its solves.
 struct TableEstimate {
-  std::string table;           // the stage
-  double seconds = 0.0;        // estimated CPU seconds of the build
-  int threads = 1;             // threads the build would use
-  std::string how;             // what the probe solved, in words
+  std::string table;     // the stage
+  double seconds = 0.0;  // estimated CPU seconds of the build
+  int threads = 1;       // threads the build would use
+  std::string how;       // what the probe solved, in words
 };
 
 // A Monte-Carlo scene: independent realisations, summed by the ensemble driver, written from the sums.
@@ -112,9 +112,10 @@ class EnsembleScene : public Scene {
   // a short run's time, and the stored time histories, which it simulates again). A scene with no
   // such extras ignores it.
   virtual void write_spectra_only() {}
-  // `plan --probe`: the tables this run would build whose cost a few real solves measure better than
-  // the plan's model (none by default).
-  virtual std::vector<TableEstimate> probe_tables() const { return {}; }
+  // `plan`: the tables this run would build whose cost a few real solves measure better than the
+  // plan's model, each probed only if the model puts its few solves at or under `max_probe_seconds`
+  // (none by default).
+  virtual std::vector<TableEstimate> probe_tables(double /*max_probe_seconds*/) const { return {}; }
 };
 
 // One deterministic computation (e.g. `rolling-beam`): run() once after prepare(), then written.

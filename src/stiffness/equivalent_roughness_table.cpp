@@ -36,7 +36,7 @@ constexpr std::size_t kChunkPositions = 64;
 // far a texture's listed cells reach, so on three textures (bench/contact/bench_plan_estimates.py: the
 // seed 002 rig, the Ra 0.3 um finish, a smoother one; geometric means of two sessions' one-thread
 // builds) one constant's estimates spread over a factor 2. The constant centres that spread;
-// plan --probe measures instead (probe_equivalent_roughness).
+// plan measures its first solves instead (probe_equivalent_roughness).
 constexpr double kSecondsPerPosition144 = 28e-3;
 
 std::vector<const std::vector<double>*> columns(const EquivalentRoughnessTable& t) {
@@ -85,6 +85,13 @@ double equivalent_roughness_seconds(const TableStudy& ts, const BlockedForceGeom
   return static_cast<double>(ts.equivalent_roughness.strips) * static_cast<double>(g.positions) * per_position;
 }
 
+double equivalent_roughness_probe_seconds(const TableStudy& ts, const BlockedForceGeometry& g) {
+  if (ts.equivalent_roughness.strips <= 0 || g.positions == 0) return 0.0;
+  const std::size_t count = std::min(g.positions, kChunkPositions);
+  return equivalent_roughness_seconds(ts, g) * static_cast<double>(count) /
+         (static_cast<double>(ts.equivalent_roughness.strips) * static_cast<double>(g.positions));
+}
+
 namespace {
 // The chunks of kChunkPositions positions share the threads.
 int build_threads(const BlockedForceGeometry& g) {
@@ -100,7 +107,7 @@ std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedFor
       buf, sizeof buf,
       "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
       "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
-      "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s (from the window; plan --probe times a few solves)",
+      "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s (from the window; plan times its first solves)",
       static_cast<long long>(ts.equivalent_roughness.strips),
       static_cast<long long>(ts.equivalent_roughness.strips - 1), g.nx, g.ny,
       um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),

@@ -7,6 +7,7 @@ import shutil
 
 import h5py
 import numpy as np
+import pytest
 
 from conftest import EX_CONFIG, SOURCE, assert_refused, hertz_radius, run, run_copied_study
 
@@ -100,48 +101,66 @@ def test_bad_combinations_are_refused(tmp_path):
     assert r.returncode != 0 and "strips" in r.stderr, r.stderr
 
 
-def test_plan_probe_times_the_first_chunk_of_a_missing_table_and_writes_nothing(tmp_path):
-    """plan --probe: the equivalent-roughness table's build is estimated from its first chunk of solves
-    (64 positions of strip 0, as the build solves them), scaled to every position of every strip; no table
-    is written; once the table is cached there is nothing to probe and realisation 0 is timed instead."""
-    import re
+PROBE_LINE = (r"^table equivalent_roughness: about ([\d.e+-]+) s CPU, ([\d.e+-]+) s wall on (\d+) threads? "
+              r"\(probe: the first (\d+) positions of strip 0 solved in ([\d.e+-]+) s CPU\)$")
+
+
+@pytest.mark.parametrize("flags", [[], ["--probe"]], ids=["plan", "plan --probe"])
+def test_plan_times_the_first_chunk_of_a_missing_table_and_writes_nothing(tmp_path, flags):
+    """plan (when the model puts the chunk at 5 s or less, as here) and plan --probe: the
+    equivalent-roughness table's build is estimated from its first chunk of solves (64 positions of
+    strip 0, as the build solves them), scaled to every position of every strip; no table is written;
+    once the table is cached there is nothing to probe (and --probe times realisation 0 instead)."""
     study = tmp_path / "rig.ini"
     shutil.copy(RIG, study)
     sets = [a for kv in SOLVER for a in ("--set", kv)]
-    p = run(["plan", study, "--probe", *sets])
+    p = run(["plan", study, *flags, *sets])
     assert p.returncode == 0, p.stderr
     positions = int(re.search(r"(\d+) positions per strip", stage_row(p.stdout, "equivalent_roughness")).group(1))
-    m = re.search(r"^table equivalent_roughness: about ([\d.e+-]+) s CPU, ([\d.e+-]+) s wall on (\d+) threads? "
-                  r"\(probe: the first (\d+) positions of strip 0 solved in ([\d.e+-]+) s CPU\)$", p.stdout, re.M)
+    m = re.search(PROBE_LINE, p.stdout, re.M)
     assert m, p.stdout
     total, wall, threads, probed, probe = (float(m.group(i)) for i in range(1, 6))
     assert probed == min(64, positions)
     # Two strips, each positions / probed chunks' worth of the probe (the figures are printed to 2 digits).
     assert abs(total - 2 * probe * positions / probed) <= 0.1 * total, (total, probe, positions, probed)
     assert abs(wall - total / threads) <= 0.1 * wall
-    assert "run time: not probed (the stage tables are not built yet" in p.stdout
+    assert ("run time: not probed (the stage tables are not built yet" in p.stdout) == bool(flags), p.stdout
     assert not list(tmp_path.rglob("*.h5")), list(tmp_path.rglob("*"))
 
     r = run(["run", study, "--out", tmp_path / "r.h5", *sets])
     assert r.returncode == 0, r.stderr
-    p = run(["plan", study, "--probe", *sets])
+    p = run(["plan", study, *flags, *sets])
     assert p.returncode == 0, p.stderr
     assert "table equivalent_roughness:" not in p.stdout, p.stdout
-    assert "s per realisation (probe of realisation 0)" in p.stdout, p.stdout
+    assert ("s per realisation (probe of realisation 0)" in p.stdout) == bool(flags), p.stdout
 
 
-def test_plan_probe_of_a_sweep_probes_each_missing_table_once_and_builds_none(tmp_path):
-    """plan --probe of a sweep: a table that several points share (the same cache file) is probed once,
+def test_plan_leaves_a_long_probe_to_plan_probe(tmp_path):
+    """A 256-cell window on the seed 002 rig: the model puts the first 64 positions at about 6 s, over the
+    5 s plan spends unasked, so plan prints the model's estimate alone, at once."""
+    study = tmp_path / "rig.ini"
+    shutil.copy(RIG, study)
+    p = run(["plan", study, "--set", "contact.law=hertz", "--set", "contact.filter=solver",
+             "--set", "blocked_force.window=256"])
+    assert p.returncode == 0, p.stderr
+    assert "build about" in stage_row(p.stdout, "equivalent_roughness"), p.stdout
+    assert "table equivalent_roughness:" not in p.stdout, p.stdout
+    assert not list(tmp_path.rglob("*.h5")), list(tmp_path.rglob("*"))
+
+
+@pytest.mark.parametrize("probe", [[], ["--probe"]], ids=["plan", "plan --probe"])
+def test_plan_of_a_sweep_probes_each_missing_table_once_and_builds_none(tmp_path, probe):
+    """plan (--probe) of a sweep: a table that several points share (the same cache file) is probed once,
     under the first point that needs it; no point's realisation 0 is run while a table is missing (that
     would build it), and nothing is written."""
     study = tmp_path / "rig.ini"
     shutil.copy(RIG, study)
     sets = [a for kv in SOLVER for a in ("--set", kv)]
-    p = run(["plan", study, "--probe", *sets, "--sweep", "ball.speed=1,0.8"])
+    p = run(["plan", study, *probe, *sets, "--sweep", "ball.speed=1,0.8"])
     assert p.returncode == 0, p.stderr
     assert "tables (one build each, shared by the points listed):\n  points 1, 2: equivalent_roughness:" in p.stdout
     lines = re.findall(r"^  point (\d+): table equivalent_roughness: about [\d.e+-]+ s CPU, .*\(probe: the first "
                        r"\d+ positions of strip 0 solved in [\d.e+-]+ s CPU\)$", p.stdout, re.M)
     assert lines == ["1"], p.stdout
-    assert "run time: not probed" in p.stdout, p.stdout
+    assert ("run time: not probed" in p.stdout) == bool(probe), p.stdout
     assert not list(tmp_path.rglob("*.h5")), list(tmp_path.rglob("*"))
