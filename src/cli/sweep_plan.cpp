@@ -66,16 +66,23 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
     }
     auto* ensemble_scene = dynamic_cast<scenes::EnsembleScene*>(scene.get());
     // The missing tables a few real solves estimate better than the model: once per table file (the
-    // stage's reason names it), under the first point that needs it.
-    if (ensemble_scene && any_missing_table(s, stages))
+    // stage's reason names it), under the first point that needs it; a point whose missing tables were
+    // all seen at earlier points is not probed again.
+    std::vector<std::string> missing;
+    for (const auto& p : stages)
+      if (missing_table(s, p)) missing.push_back(p.stage + ": " + p.reason);
+    const auto seen = [&](const std::string& what) {
+      return std::find(probed_tables.begin(), probed_tables.end(), what) != probed_tables.end();
+    };
+    if (ensemble_scene && !std::all_of(missing.begin(), missing.end(), seen)) {
       for (const auto& t : ensemble_scene->probe_tables(table_probe_limit(probe))) {
         const auto stage =
             std::find_if(stages.begin(), stages.end(), [&](const auto& p) { return p.stage == t.table; });
-        const std::string what = t.table + ": " + (stage == stages.end() ? std::string() : stage->reason);
-        if (std::find(probed_tables.begin(), probed_tables.end(), what) != probed_tables.end()) continue;
-        probed_tables.push_back(what);
+        if (stage == stages.end() || seen(t.table + ": " + stage->reason)) continue;
         probe_lines.push_back("  point " + std::to_string(i + 1) + ": " + table_probe_line(t));
       }
+      probed_tables.insert(probed_tables.end(), missing.begin(), missing.end());
+    }
     if (probe && probed) {
       const double t = probe_point(s, ensemble_scene, stages);
       probed = t >= 0;
