@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/study/sections/contact_section.hpp"
 
 namespace rollspec::cli {
@@ -26,8 +27,7 @@ bool any_missing_table(const study::Study& s, const std::vector<scenes::StagePla
 }
 
 double table_probe_limit(bool probe) {
-  // A few seconds against a build about thirty times longer (the probe is one chunk of one strip).
-  return probe ? std::numeric_limits<double>::infinity() : 5.0;
+  return probe ? std::numeric_limits<double>::infinity() : stiffness::kQuickProbeSeconds;
 }
 
 std::string table_probe_line(const scenes::TableEstimate& t) {

@@ -107,7 +107,7 @@ std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedFor
       buf, sizeof buf,
       "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
       "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
-      "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s (from the window; plan times its first solves)",
+      "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s (from the window; plan%s times its first solves)",
       static_cast<long long>(ts.equivalent_roughness.strips),
       static_cast<long long>(ts.equivalent_roughness.strips - 1), g.nx, g.ny,
       um(static_cast<double>(g.nx) * g.cell).c_str(), um(static_cast<double>(g.ny) * g.cell).c_str(),
@@ -115,7 +115,8 @@ std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedFor
       g.truncated_wavelength > 0.0 ? (", texture below " + um(g.truncated_wavelength) + " dropped").c_str() : "",
       g.window, g.positions, g.step, um(static_cast<double>(g.step) * g.cell).c_str(), g.segment,
       um(g.contact_radius).c_str(), equivalent_roughness_seconds(ts, g), equivalent_roughness_seconds(ts, g) / threads,
-      threads, threads == 1 ? "" : "s");
+      threads, threads == 1 ? "" : "s",
+      equivalent_roughness_probe_seconds(ts, g) <= kQuickProbeSeconds ? "" : " --probe");
   return buf;
 }
 

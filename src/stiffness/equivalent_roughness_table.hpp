@@ -39,8 +39,11 @@ struct EquivalentRoughnessTable : TableData {
 
 // Estimated build time on one core (s), for the plan: strips x positions force-controlled solves.
 double equivalent_roughness_seconds(const TableStudy& ts, const BlockedForceGeometry& g);
-// The same model's time of probe_equivalent_roughness (s): `plan` probes only when it is short.
+// The same model's time of probe_equivalent_roughness (s): `plan` probes unasked only when it is at
+// most kQuickProbeSeconds (a few seconds against a build about thirty times longer); `plan --probe`
+// always.
 double equivalent_roughness_probe_seconds(const TableStudy& ts, const BlockedForceGeometry& g);
+constexpr double kQuickProbeSeconds = 5.0;
 
 // `plan`: the build's CPU time (s) measured rather than modelled: the first chunk of strip 0
 // (64 positions, with the flat strip's solve) solved as the build solves it, on one thread, scaled to
