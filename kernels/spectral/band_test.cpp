@@ -9,12 +9,9 @@ namespace rollspec::spectral {
 
 double log_mean_variance(double s, double n) { return std::log1p(std::expm1(s) / n); }
 
-namespace {
-
-// d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = G S G, G_bb^2 = (V_M,bb + V_K,bb) / S_bb (D-26a, b): each
-// band's variance from Fenton-Wilkinson, the correlations those of S. V stays S scaled band by band,
-// so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not (D-26a).
-void deviation_and_covariance(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
+// Each band's variance from Fenton-Wilkinson, the correlations those of S: V stays S scaled band by
+// band, so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not (D-26a).
+void band_deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
                               std::vector<double>& d, std::vector<double>& v) {
   if (!(M >= 1.0) || !(K >= 2.0)) throw std::invalid_argument("band test: needs records >= 1 and K >= 2");
   d.assign(p, 0.0);
@@ -30,8 +27,6 @@ void deviation_and_covariance(const double* y, const double* mean, const double*
     for (std::size_t c = 0; c < p; ++c) v[b * p + c] = g[b] * cov[b * p + c] * g[c];
 }
 
-// Cholesky V = L L^T in place (lower triangle); returns |L^{-1} d|^2 (d is overwritten) and, when
-// log_det is given, ln det V.
 double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size_t p, double* log_det) {
   for (std::size_t j = 0; j < p; ++j) {
     for (std::size_t i = j; i < p; ++i) {
@@ -56,15 +51,13 @@ double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size
   return t2;
 }
 
-}  // namespace
-
 BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                          std::uint64_t realisations, double records) {
   BandTestResult r;
   r.needed = p + kExtraRealisations;
   if (p == 0 || realisations < r.needed) return r;
   std::vector<double> d, v;
-  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
   const double t2 = whitened_square(d, v, p, nullptr);
   const double nu = static_cast<double>(realisations - 1), pp = static_cast<double>(p);
   r.defined = true;
@@ -79,7 +72,7 @@ BandTestResult band_test(const double* measured_log, const double* mean, const d
 double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                            std::uint64_t realisations, double records) {
   std::vector<double> d, v;
-  deviation_and_covariance(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
   double log_det = 0.0;
   const double t2 = whitened_square(d, v, p, &log_det);
   // The covariance is estimated from K realisations (n = K - 1 dof): its inverse overstates the
@@ -93,7 +86,7 @@ double band_log_likelihood(const double* measured_log, const double* mean, const
 
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                               std::uint64_t realisations, double records) {
-  // V and d written out plainly from D-26a, b (not through deviation_and_covariance).
+  // V and d written out plainly from D-26a, b (not through band_deviation).
   const double K = static_cast<double>(realisations), M = records;
   std::vector<double> d(p), v(p * p), vb(p);
   for (std::size_t b = 0; b < p; ++b) {

@@ -6,6 +6,7 @@
 // referred to F(p, K - p) (K - 1 dof of the covariance estimate).
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace rollspec::spectral {
 
@@ -16,11 +17,22 @@ struct BandTestResult {
   double dof1 = 0.0, dof2 = 0.0;  // F(p, K - p)
   double p_value = 1.0;           // P(F(p, K - p) >= f)
   std::uint64_t needed = 0;       // realisations the test needs for p bands: p + kExtraRealisations
+  std::size_t draws = 0;          // 0: p from the F law; else from a parametric bootstrap of B draws (D-31)
 };
 
 // Fenton-Wilkinson: variance of ln of an n-record mean, ln(1 + (e^s - 1) / n), from the variance s of
 // one record's ln band average (D-26a). A band's V_bb is log_mean_variance(s, M) + log_mean_variance(s, K).
 double log_mean_variance(double s, double n);
+
+// D-26a, b: d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = G S G (p x p, row-major), G_bb^2 =
+// (V_M,bb + V_K,bb) / S_bb, for measured band logs y, the model's mean band powers m, their log covariance S,
+// K realisations and M records. Throws std::invalid_argument on a band without power or M < 1, K < 2.
+void band_deviation(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                    double realisations, double records, std::vector<double>& d, std::vector<double>& v);
+
+// Cholesky V = L L^T in place (lower triangle) and |L^{-1} d|^2 (d is overwritten); ln det V into
+// log_det when given. Throws std::invalid_argument when V is not positive definite.
+double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size_t p, double* log_det);
 
 // Realisations beyond p that the test asks for (F denominator dof >= this + 1).
 constexpr std::uint64_t kExtraRealisations = 4;

@@ -1,25 +1,22 @@
-// rollspec compare: simulated third-octave band levels against a measured PSD (design §7).
-// Two questions, said in the output: is the measured level inside the interval of the simulated
-// *mean* (the default), or, given --measured-averages M, inside the prediction interval of a
-// measurement that averages M independent records (kernels/spectral D-22)?
-#include <algorithm>
+// rollspec compare: a result's third-octave band levels against a measurement (design §7, "the verdict
+// has two ends"). The measurement is the recordings themselves (put through the model's own estimator,
+// src/compare/measured_spectrum.hpp) or a PSD table; the verdict (src/compare/band_verdict.hpp) is
+// computed whole before anything is printed, so a refused input leaves no partial output.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/ensemble_interval.hpp"
-#include "kernels/spectral/third_octave_bands.hpp"
 #include "src/cli/commands.hpp"
-#include "src/cli/compare_band_test.hpp"
 #include "src/cli/measured_psd.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/compare/band_verdict.hpp"
+#include "src/compare/measured_spectrum.hpp"
 #include "src/error.hpp"
 #include "src/io/band_levels.hpp"
-#include "src/io/csv_table.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
@@ -30,145 +27,39 @@ namespace {
 
 using io::number_text;
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const unsigned char c : s) {
-    if (c == '"' || c == '\\')
-      out += '\\', out += static_cast<char>(c);
-    else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else
-      out += static_cast<char>(c);
-  }
-  return out + "\"";
-}
-
-std::string json_number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-struct BandRow {
-  double centre, simulated, measured, delta, ci_lower, ci_upper, pred_lower, pred_upper;
-  bool inside_ci, inside_prediction;
-  std::size_t band;  // index in the result's bands
-};
-
-}  // namespace
-
 const char* const kCompareUsage =
-    "usage: rollspec compare RESULT.h5 MEASUREMENT.csv [--sensor NAME|K | --measured-position X] [--column NAME]\n"
-    "                        [--measured-averages M] [--fmin HZ] [--fmax HZ] [--test-level A] [--format "
-    "table|csv|json] [--skip-rows N]\n"
+    "usage: rollspec compare RESULT.h5 MEASUREMENT... [--sensor NAME|K | --measured-position X] [--column NAME]...\n"
+    "                        [--unit U] [--scale X] [--fs HZ] [--time-column NAME|none] [--skip-rows N]\n"
+    "                        [--roll-per-channel] [--measured-averages M] [--noise QUIET] [--noise-margin DB]\n"
+    "                        [--keep-floor-bands] [--same-surface] [--fmin HZ] [--fmax HZ] [--test-level A]\n"
+    "                        [--format table|csv|json]\n"
     "\n"
-    "MEASUREMENT.csv holds frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz: the one --column names,\n"
-    "else `psd`, else in the output of `rollspec psd` of one channel its only PSD column (so it is read\n"
-    "directly). For every third-octave band of the result inside [fmin, fmax] that the measurement covers,\n"
-    "prints the simulated and measured band levels\n"
-    "(dB re 1 (m/s^2)^2/Hz), their difference, the interval of the simulated mean and, with\n"
-    "--measured-averages M (the number of independent records averaged into the measurement, e.g. rolls;\n"
-    "sensors of one roll are not independent), the prediction interval for such a measurement. `inside`\n"
-    "answers the question the output states. With --measured-averages M, `combined_test:` gives one test\n"
-    "over all compared bands at once (kernels/spectral D-26: Hotelling T2 with the realisations'\n"
-    "between-band covariance, F law): its p-value and verdict at --test-level A (default 0.05); a count of\n"
-    "bands inside has no known law, this test has. The last line is `rms_db_error: X  inside_ci: Y/Z`.\n"
-    "--format csv writes the table with numeric columns and the summary as `# ` lines (pandas: comment='#');\n"
-    "--format json writes everything (the test as p_value, combined_test).\n"
-    "Preamble lines before the measurement's header are skipped (said on stderr), as `rollspec psd` does;\n"
-    "--skip-rows N: the header follows the first N lines.\n"
-    "--measured-position X (m, where the measurement was taken) compares the sensor nearest X in the\n"
-    "result's /bands/sensor_position, named on stderr with its position; refused if no sensor lies within\n"
-    "half the smallest spacing between sensors (nothing nearer than the study resolves), or with --sensor.\n"
-    "A result whose ball lost contact (more than 5 % of the time, or at all with law = linearised) is\n"
-    "flagged: a `WARNING:` line before the table (`# WARNING:` in csv, on stderr too), and in json\n"
-    "loss_of_contact_share and loss_of_contact_warning (null without).";
+    "MEASUREMENT is either the recordings themselves (CSV/text, WAV/FLAC/..., .mat, read as `rollspec psd` reads\n"
+    "them: units from the file, each choice said in one line), one file per roll, or one PSD table\n"
+    "(frequency_hz and a one-sided PSD column in (m/s^2)^2/Hz, e.g. the output of `rollspec psd`).\n"
+    "Recordings go through the model's own estimator (its Welch segment in seconds, window, overlap and\n"
+    "detrending), so their bands average the model's bins and M, the number of rolls, is known: one file is\n"
+    "one roll whose channels are the result's sensors (averaged for sensor_mean); --roll-per-channel takes\n"
+    "each channel for a roll of one sensor. --measured-averages M gives M for a PSD table (or overrides it).\n"
+    "\n"
+    "For every third-octave band of the result inside [fmin, fmax] that the measurement covers it prints the\n"
+    "simulated and measured band levels (dB re 1 (m/s^2)^2/Hz), their difference, the interval of the\n"
+    "simulated mean and, with M, the prediction interval for a measurement of M rolls. Where the model's\n"
+    "contact law is a random table (a stiffness, blocked-force or equivalent-roughness table), the question\n"
+    "is a rig with another surface of this roughness: the table's own error enters twice, the model's table\n"
+    "and the rig's surface (kernels/spectral D-31); --same-surface asks of the very surface the table was\n"
+    "built on. `combined_test:` is one test over the tested bands (D-26, D-31), `level_offset:` the one level\n"
+    "by which the model differs from the measurement over them with its interval (D-34).\n"
+    "Bands near the noise floor leave the test and the offset and are shown apart: with --noise QUIET (a\n"
+    "recording of the rig at rest, or its PSD), those within --noise-margin DB (default 10) of it; without,\n"
+    "those where the measurement stays flat at its lowest level while the model falls far below (D-33b;\n"
+    "--keep-floor-bands keeps them). A likely unit slip (every band off by 19.8 dB or 60 dB) and a PSD table on\n"
+    "coarser bins than the model's (with by how many dB that moves its bands) are flagged.\n"
+    "--format csv writes the table only (numeric columns; the summary goes to stderr), json everything.\n"
+    "--measured-position X (m) compares the sensor nearest X (within half the sensors' smallest spacing).\n"
+    "A result whose ball lost contact (more than 5 % of the time, or at all with law = linearised) is flagged.";
 
-// The measurement's band average joins its points linearly, the result's band level sums its bins: a
-// band of a bin or two beside a steep slope reads differently by the two. Measured on the result's own
-// mean PSD, a difference above the band's standard deviation in a prediction interval (the mean's and
-// a measurement of `records` records') decides the band by itself (kernels/spectral D-27h, as `fit`
-// checks). One line naming every such band; nothing without --measured-averages, where the mean's own
-// interval is narrower than any grid's rule.
-void warn_band_rules(const io::Hdf5Reader& r, const io::BandLevels& b, const std::vector<BandRow>& rows,
-                     double records) {
-  if (!r.exists("/psd/mean") || !r.exists("/psd/sensor") || !r.exists("/psd/frequency")) return;
-  const auto names = r.read_strings("/psd/sensor");
-  const auto f = r.read("/psd/frequency"), mean = r.read("/psd/mean");
-  const auto it = std::find(names.begin(), names.end(), b.sensor);
-  if (it == names.end() || f.size() < 2 || mean.size() != names.size() * f.size() || f[0] != 0.0) return;
-  const double* psd = mean.data() + static_cast<std::size_t>(it - names.begin()) * f.size();
-  const double df = f[1] - f[0], K = static_cast<double>(b.realisations);
-  std::string bands;
-  int count = 0;
-  for (const auto& row : rows) {
-    const std::size_t k = row.band;
-    const double s = b.log_std[k] * b.log_std[k];
-    const double sd = std::sqrt(std::log1p(std::expm1(s) / K) + std::log1p(std::expm1(s) / records));
-    const double shift = spectral::band_rule_shift(psd, f.size(), df, b.lower[k], b.upper[k]);
-    if (!(sd > 0.0) || !(std::fabs(shift) > sd)) continue;
-    char one[160];
-    std::snprintf(one, sizeof one, "%s%.4g .. %.4g Hz (%.2g bins, %+.2f dB, %.2g sd)", count ? "; " : "", b.lower[k],
-                  b.upper[k], (b.upper[k] - b.lower[k]) / df, 10.0 / std::log(10.0) * shift, std::fabs(shift) / sd);
-    bands += one;
-    ++count;
-  }
-  if (count == 0) return;
-  std::fprintf(stderr,
-               "rollspec compare: WARNING: %d band%s of the result's %.4g Hz grid read differently as the "
-               "measurement is read (its points joined linearly) and as the result's band levels are (its bins), by "
-               "more than the band's standard deviation, enough to decide the band by itself (kernels/spectral "
-               "D-27h): %s; leave %s out (--fmin/--fmax) or refine the result's grid (spectrum.segment)\n",
-               count, count == 1 ? "" : "s", df, bands.c_str(), count == 1 ? "it" : "them");
-}
-
-// The bands inside [fmin, fmax] that the measurement covers, with the simulated mean's interval
-// and, for records > 0 (a measurement averaged over that many records), the prediction interval.
-std::vector<BandRow> band_rows(const io::BandLevels& b, const Measurement& m, const std::string& measurement,
-                               double fmin, double fmax, double records) {
-  const bool predict = records > 0.0;
-  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
-  std::vector<BandRow> rows;
-  for (std::size_t k = 0; k < b.level_db.size(); ++k) {
-    if (b.lower[k] < fmin || b.upper[k] > fmax) continue;
-    if (m.frequency.size() < 2 || m.frequency.front() > b.lower[k] || m.frequency.back() < b.upper[k]) continue;
-    const double meas =
-        spectral::band_average_irregular(m.frequency.data(), m.psd.data(), m.frequency.size(), b.lower[k], b.upper[k]);
-    if (!std::isfinite(meas))
-      throw data_error(measurement + ": the measured PSD averaged over the band " + number_text(b.lower[k]) + " .. " +
-                       number_text(b.upper[k]) +
-                       " Hz is not finite (overflow); allowed: psd values whose band average is a finite double");
-    if (meas <= 0.0) continue;
-    BandRow row{};
-    row.band = k;
-    row.centre = b.nominal[k];
-    row.simulated = b.level_db[k];
-    row.measured = 10.0 * std::log10(meas);
-    row.delta = row.simulated - row.measured;
-    row.ci_lower = b.ci_lower_db[k];
-    row.ci_upper = b.ci_upper_db[k];
-    row.inside_ci = has_interval && row.measured >= row.ci_lower && row.measured <= row.ci_upper;
-    row.pred_lower = row.pred_upper = NAN;
-    if (predict && has_interval) {
-      const double level = std::pow(10.0, row.simulated / 10.0);
-      // The realisations' band averages: mean, spread, and the spread of their log (the level stands in
-      // for the mean of the logs' law, which only needs the spread).
-      const spectral::Scatter sc{level, b.std_dev[k], std::log(level), b.log_std[k]};
-      const auto p = spectral::prediction_interval(sc, b.realisations, records, b.confidence);
-      row.pred_lower = row.simulated + 10.0 * std::log10(p.lower);
-      row.pred_upper = row.simulated + 10.0 * std::log10(p.upper);
-      row.inside_prediction = row.measured >= row.pred_lower && row.measured <= row.pred_upper;
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-// The result's loss of contact (ball-on-beam): its share and, above the threshold or with law =
-// linearised, the warning `run` wrote; a comparison of such a result says so before anything else.
+// The result's loss of contact (ball-on-beam): its share and the warning `run` wrote.
 struct LossOfContact {
   double share = NAN;
   std::string warning;
@@ -182,193 +73,288 @@ LossOfContact loss_of_contact(const io::Hdf5Reader& r) {
   return l;
 }
 
-// What the printed forms of a comparison share.
-struct Comparison {
-  const std::string &result, &measurement, &column;
-  const io::BandLevels& b;
-  const std::vector<BandRow>& rows;
-  bool predict;
-  double records;
-  bool has_interval;
-  const std::string& question;
-  double rms;
-  int inside, judged;
-  const CombinedTest& test;
-  const LossOfContact& loss;
-};
-
-// `--format json`: one object with the inputs, the question, every band and the summary.
-std::string json_text(const Comparison& c) {
-  const auto& [result, measurement, column, b, rows, predict, records, has_interval, question, rms, inside, judged,
-               test, loss] = c;
-  std::string text;
-  text += "{\n  \"result\": " + json_string(result) + ",\n  \"sensor\": " + json_string(b.sensor) +
-          ",\n  \"measurement\": " + json_string(measurement) +
-          ",\n  \"column\": " + json_string(column.empty() ? "psd" : column) +
-          ",\n  \"realisations\": " + std::to_string(b.realisations) +
-          ",\n  \"confidence_level\": " + json_number(b.confidence) +
-          ",\n  \"interval_method\": " + json_string(b.interval_method) +
-          ",\n  \"measured_averages\": " + (predict ? json_number(records) : "null") +
-          ",\n  \"loss_of_contact_share\": " + json_number(loss.share) +
-          ",\n  \"loss_of_contact_warning\": " + (loss.warning.empty() ? "null" : json_string(loss.warning)) +
-          ",\n  \"question\": " + json_string(question) + ",\n  \"bands\": [\n";
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const auto& x = rows[i];
-    text += "    {\"centre_hz\": " + json_number(x.centre) + ", \"simulated_db\": " + json_number(x.simulated) +
-            ", \"measured_db\": " + json_number(x.measured) + ", \"delta_db\": " + json_number(x.delta) +
-            ", \"ci_lower_db\": " + json_number(x.ci_lower) + ", \"ci_upper_db\": " + json_number(x.ci_upper) +
-            ", \"prediction_lower_db\": " + json_number(x.pred_lower) +
-            ", \"prediction_upper_db\": " + json_number(x.pred_upper) + ", \"inside\": " +
-            (!has_interval                                   ? "null"
-             : (predict ? x.inside_prediction : x.inside_ci) ? "true"
-                                                             : "false") +
-            "}" + (i + 1 < rows.size() ? ",\n" : "\n");
-  }
-  text += "  ],\n  \"rms_db_error\": " + json_number(rms) +
-          ",\n  \"inside\": " + std::to_string(has_interval ? inside : 0) +
-          ",\n  \"judged\": " + std::to_string(judged) + ",\n  \"bands_compared\": " + std::to_string(rows.size()) +
-          ",\n  \"p_value\": " + (test.result.defined ? json_number(test.result.p_value) : "null") +
-          ",\n  \"combined_test\": {\"method\": \"Hotelling T2, F law (kernels/spectral D-26)\", \"level\": " +
-          json_number(test.level) + ", \"defined\": " + (test.result.defined ? "true" : "false") +
-          ", \"rejected\": " + (test.result.defined ? (test.rejected ? "true" : "false") : "null") +
-          ", \"t2\": " + (test.result.defined ? json_number(test.result.t2) : "null") +
-          ", \"f\": " + (test.result.defined ? json_number(test.result.f) : "null") + ", \"dof\": " +
-          (test.result.defined ? "[" + json_number(test.result.dof1) + ", " + json_number(test.result.dof2) + "]"
-                               : "null") +
-          ", \"bands\": " + std::to_string(test.bands) + ", \"verdict\": " + json_string(test.verdict) + "}\n}\n";
-  return text;
+// The row's mean PSD and bin width (the resolution check); empty when the result lacks them.
+std::vector<double> mean_psd_row(const io::Hdf5Reader& r, const std::string& sensor, double& df) {
+  if (!r.exists("/psd/mean") || !r.exists("/psd/sensor") || !r.exists("/psd/frequency")) return {};
+  const auto names = r.read_strings("/psd/sensor");
+  const auto f = r.read("/psd/frequency"), mean = r.read("/psd/mean");
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == sensor && f.size() >= 2 && mean.size() == names.size() * f.size() && f[0] == 0.0) {
+      df = f[1] - f[0];
+      return {mean.begin() + static_cast<std::ptrdiff_t>(i * f.size()),
+              mean.begin() + static_cast<std::ptrdiff_t>((i + 1) * f.size())};
+    }
+  return {};
 }
+
+// A PSD table as the measurement: on the model's grid when its points are the model's bins.
+compare::MeasuredSpectrum psd_table(const std::string& path, std::string& column, long long skip_rows, double df) {
+  const Measurement t = read_measurement(path, column, skip_rows, "compare");
+  compare::MeasuredSpectrum m;
+  m.source = path;
+  m.frequency = t.frequency;
+  m.psd = t.psd;
+  bool grid = df > 0.0 && m.frequency.size() >= 2 && m.frequency[0] == 0.0;
+  for (std::size_t k = 0; grid && k < m.frequency.size(); ++k)
+    grid = std::fabs(m.frequency[k] - static_cast<double>(k) * df) <= 1e-9 * df * static_cast<double>(k + 1);
+  m.model_grid = grid;
+  return m;
+}
+
+std::size_t sensors_in_row(const io::Hdf5Reader& r, const std::string& row) {
+  if (row != "sensor_mean") return 1;
+  std::size_t n = 0;
+  for (const auto& name : r.read_strings("/bands/sensor")) n += name != "sensor_mean";
+  return n;
+}
+
+// A CSV cell: every bit of the number, empty where there is none (no interval, no noise recording).
+std::string cell(double v) { return std::isfinite(v) ? io::exact_text(v) : ""; }
+
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json verdict_json(const std::string& result, const std::string& column, const io::BandLevels& b,
+                            const compare::MeasuredSpectrum& m, const compare::Verdict& v, const LossOfContact& loss) {
+  using nlohmann::json;
+  const bool predict = m.records > 0.0;
+  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
+  json bands = json::array();
+  for (const auto& r : v.rows)
+    bands.push_back({{"centre_hz", r.centre},
+                     {"simulated_db", number(r.simulated)},
+                     {"measured_db", number(r.measured)},
+                     {"delta_db", number(r.delta)},
+                     {"ci_lower_db", number(r.ci_lower)},
+                     {"ci_upper_db", number(r.ci_upper)},
+                     {"prediction_lower_db", number(r.pred_lower)},
+                     {"prediction_upper_db", number(r.pred_upper)},
+                     {"noise_db", number(r.noise)},
+                     {"use", compare::band_use_name(r.use)},
+                     {"inside", has_interval ? json(predict ? r.inside_prediction : r.inside_ci) : json(nullptr)}});
+  const auto& t = v.test.result;
+  json offset = nullptr;
+  if (v.offset)
+    offset = {{"estimate_db", v.offset->estimate}, {"lower_db", v.offset->lower}, {"upper_db", v.offset->upper},
+              {"dof", v.offset->dof}, {"bands", v.tested}, {"method", "generalised least squares (kernels/spectral D-34)"}};
+  return {{"result", result},
+          {"sensor", b.sensor},
+          {"measurement", m.source},
+          {"column", column.empty() ? json(nullptr) : json(column)},
+          {"realisations", b.realisations},
+          {"confidence_level", b.confidence},
+          {"interval_method", b.interval_method},
+          {"measured_averages", predict ? json(m.records) : json(nullptr)},
+          {"measured_averages_source", m.records_source},
+          {"measurement_notes", m.notes},
+          {"table_term", {{"factor", v.table_factor},
+                          {"table", b.table.empty() ? json(nullptr) : json(b.table)},
+                          {"units", b.table_units},
+                          {"dof", number(b.table_dof)},
+                          {"estimated", b.table_units >= 2}}},
+          {"loss_of_contact_share", number(loss.share)},
+          {"loss_of_contact_warning", loss.warning.empty() ? json(nullptr) : json(loss.warning)},
+          {"question", v.question},
+          {"bands", bands},
+          {"rms_db_error", number(v.rms_db)},
+          {"inside", has_interval ? v.inside : 0},
+          {"judged", v.judged},
+          {"bands_compared", v.rows.size()},
+          {"bands_tested", v.tested},
+          {"level_offset", offset},
+          {"warnings", v.warnings},
+          {"p_value", t.defined ? json(t.p_value) : json(nullptr)},
+          {"combined_test",
+           {{"method", t.draws > 0 ? "Hotelling T2, law by parametric bootstrap with the table term (kernels/spectral D-31)"
+                                   : "Hotelling T2, F law (kernels/spectral D-26)"},
+            {"level", v.test.level},
+            {"defined", t.defined},
+            {"rejected", t.defined ? json(v.test.rejected) : json(nullptr)},
+            {"t2", t.defined ? json(t.t2) : json(nullptr)},
+            {"f", t.defined && t.draws == 0 ? json(t.f) : json(nullptr)},
+            {"dof", t.defined && t.draws == 0 ? json::array({t.dof1, t.dof2}) : json(nullptr)},
+            {"bootstrap_draws", t.draws},
+            {"bands", v.test.bands},
+            {"verdict", v.test.verdict}}}};
+}
+
+std::string offset_line(const compare::Verdict& v, double confidence) {
+  if (!v.offset) return "";
+  char buf[240];
+  std::snprintf(buf, sizeof buf,
+                "level_offset: model - measurement %+.2f dB, %d %% interval %+.2f .. %+.2f dB over %d tested bands "
+                "(kernels/spectral D-34)\n",
+                v.offset->estimate, static_cast<int>(std::lround(100.0 * confidence)), v.offset->lower,
+                v.offset->upper, v.tested);
+  return buf;
+}
+
+}  // namespace
 
 int compare_command(const Args& args) {
   const std::string usage = kCompareUsage;
   po::options_description opts("options");
-  std::string result, measurement, format = "table", sensor, column;
-  double measured_position = NAN;
-  double fmin = 0.0, fmax = INFINITY, records = 0.0, test_level = 0.05;
-  long long skip_rows = -1;
+  std::string result, format = "table", sensor, noise;
+  std::vector<std::string> measurements;
+  io::SignalRequest signal;
+  double measured_position = NAN, records = 0.0;
+  compare::VerdictOptions o;
   opts.add_options()("result", po::value(&result)->required(), "result file (HDF5)")(
-      "measurement", po::value(&measurement)->required(), "measured PSD (CSV)")(
+      "measurement", po::value(&measurements)->required()->multitoken(),
+      "recordings (one file per roll) or one PSD table")(
       "sensor", po::value(&sensor),
       "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
       "measured-position", po::value(&measured_position),
       "where the measurement was taken (m): the sensor nearest it, within half the sensors' smallest spacing")(
-      "column", po::value(&column),
-      "PSD column of the measurement CSV (default: psd, else the only column besides frequency_hz)")(
-      "measured-averages", po::value(&records), "independent records averaged into the measurement (>= 1)")(
-      "fmin", po::value(&fmin)->default_value(0.0), "lowest band edge (Hz)")(
-      "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
+      "column", po::value(&signal.columns)->composing(),
+      "channel(s) of the recordings, or the PSD column of a PSD table (default: every channel; psd)")(
+      "unit", po::value(&signal.unit), "unit of the recordings' values (default: from the file; m/s2, g, mm/s2, ...)")(
+      "scale", po::value(&signal.scale), "physical units per file unit, or per full scale (integer PCM)")(
+      "fs", po::value(&signal.fs), "sample rate of the recordings (Hz; default: from the file)")(
+      "time-column", po::value(&signal.time_column), "time column of CSV recordings, or none")(
+      "skip-rows", po::value(&signal.skip_rows), "CSV lines before the header (default: found from the data)")(
+      "roll-per-channel", "each channel of the recordings is one roll of one sensor")(
+      "measured-averages", po::value(&records), "M, independent rolls averaged into the measurement (>= 1)")(
+      "noise", po::value(&noise), "a recording of the rig at rest (or its PSD table): its floor leaves the test")(
+      "noise-margin", po::value(&o.noise_margin_db)->default_value(10.0, "10"),
+      "bands within this many dB of the noise leave the test")(
+      "keep-floor-bands", "keep the bands that look like the noise floor (no --noise) in the test")(
+      "same-surface", "the measurement was taken on the very surface the model's table was built on (D-31)")(
+      "fmin", po::value(&o.fmin)->default_value(0.0, "0"), "lowest band edge (Hz)")(
+      "fmax", po::value(&o.fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
       "format", po::value(&format)->default_value("table"), "table, csv or json")(
-      "test-level", po::value(&test_level)->default_value(0.05), "level of the combined test (0 < A < 1)")(
-      "skip-rows", po::value(&skip_rows), "measurement CSV lines before its header (default: found from the data)");
+      "test-level", po::value(&o.test_level)->default_value(0.05, "0.05"), "level of the combined test (0 < A < 1)");
   po::positional_options_description pos;
-  pos.add("result", 1).add("measurement", 1);
+  pos.add("result", 1).add("measurement", -1);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   if (format != "table" && format != "csv" && format != "json")
     throw usage_error("--format " + format.substr(0, 200) + ": allowed: table, csv or json");
-  if (!(fmin >= 0.0) || std::isinf(fmin))
-    throw usage_error("--fmin " + number_text(fmin) + ": allowed: a finite frequency >= 0 Hz");
-  if (!(fmax > fmin))
-    throw usage_error("--fmax " + number_text(fmax) + ": allowed: a frequency above --fmin (" + number_text(fmin) +
+  if (!(o.fmin >= 0.0) || std::isinf(o.fmin))
+    throw usage_error("--fmin " + number_text(o.fmin) + ": allowed: a finite frequency >= 0 Hz");
+  if (!(o.fmax > o.fmin))
+    throw usage_error("--fmax " + number_text(o.fmax) + ": allowed: a frequency above --fmin (" + number_text(o.fmin) +
                       " Hz)");
-  if (!(test_level > 0.0 && test_level < 1.0))
-    throw usage_error("--test-level " + number_text(test_level) + ": allowed: a level 0 < A < 1, e.g. 0.05");
-  const bool predict = vm.count("measured-averages") > 0;
-  if (predict && !(records >= 1.0 && std::isfinite(records)))
+  if (!(o.test_level > 0.0 && o.test_level < 1.0))
+    throw usage_error("--test-level " + number_text(o.test_level) + ": allowed: a level 0 < A < 1, e.g. 0.05");
+  if (!(o.noise_margin_db >= 0.0 && std::isfinite(o.noise_margin_db)))
+    throw usage_error("--noise-margin " + number_text(o.noise_margin_db) + ": allowed: a finite margin >= 0 dB");
+  if (vm.count("measured-averages") && !(records >= 1.0 && std::isfinite(records)))
     throw usage_error("--measured-averages " + number_text(records) +
-                      ": allowed: a finite count >= 1 of independent records");
+                      ": allowed: a finite count >= 1 of independent rolls");
+  if (vm.count("skip-rows") && signal.skip_rows < 0)
+    throw usage_error("--skip-rows " + std::to_string(signal.skip_rows) +
+                      ": allowed: a whole number >= 0 (lines before the header)");
+  if (vm.count("fs") && !(signal.fs > 0.0 && std::isfinite(signal.fs)))
+    throw usage_error("--fs " + number_text(signal.fs) + ": allowed: a finite sample rate > 0 Hz");
+  signal.scale_given = vm.count("scale") > 0;
+  o.same_surface = vm.count("same-surface") > 0;
+  o.floor_check = vm.count("keep-floor-bands") == 0;
 
   const io::SensorChoice choice = io::sensor_choice(
       sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
   const io::BandLevels b = io::read_band_levels(r, choice);
-  if (vm.count("skip-rows") && skip_rows < 0)
-    throw usage_error("--skip-rows " + std::to_string(skip_rows) +
-                      ": allowed: a whole number >= 0 (lines before the header)");
-  const Measurement m = read_measurement(measurement, column, skip_rows, "compare");
-  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
-  const int pct = static_cast<int>(std::lround(100.0 * b.confidence));
-  const std::string question =
-      !has_interval ? "none: " + b.interval_method
-      : predict     ? "is the measured level inside the " + std::to_string(pct) +
-                      " % prediction interval of a measurement averaged over M = " + number_text(records) +
-                      " independent records?"
-                : "is the measured level inside the " + std::to_string(pct) +
-                      " % interval of the simulated mean? (it ignores the measurement's own scatter; give "
-                      "--measured-averages M to ask whether a measurement of M records agrees with the model)";
+  o.model_psd = mean_psd_row(r, b.sensor, o.model_df);
 
-  const std::vector<BandRow> rows = band_rows(b, m, measurement, fmin, fmax, predict ? records : 0.0);
-  if (rows.empty()) throw data_error(measurement + ": covers none of the result's bands inside [fmin, fmax]");
-  if (has_interval && predict) warn_band_rules(r, b, rows, records);
-  double sq = 0.0;
-  int inside = 0;
-  for (const auto& row : rows) {
-    sq += row.delta * row.delta;
-    inside += predict ? row.inside_prediction : row.inside_ci;
+  // The measurement: one PSD table, or recordings through the model's estimator.
+  const bool table = measurements.size() == 1 && compare::is_psd_table(measurements[0]);
+  std::string column = signal.columns.size() == 1 ? signal.columns[0] : "";
+  compare::MeasuredSpectrum m;
+  const auto estimator = compare::read_model_estimator(r);
+  compare::RecordingOptions ro;
+  ro.signal = signal;
+  ro.roll_per_channel = vm.count("roll-per-channel") > 0;
+  ro.model_sensors = sensors_in_row(r, b.sensor);
+  if (table) {
+    if (signal.columns.size() > 1)
+      throw usage_error("--column: " + std::to_string(signal.columns.size()) +
+                        " columns for a PSD table; allowed: one PSD column");
+    m = psd_table(measurements[0], column, signal.skip_rows, o.model_df);
+  } else {
+    if (!estimator)
+      throw data_error(result + ": has no record of its estimator (/psd@sample_rate, welch_segment, ...: written "
+                                "by this rollspec); re-run the study, or give compare a PSD table of the recording");
+    m = compare::measure_recordings(measurements, ro, *estimator);
   }
-  const double rms = std::sqrt(sq / static_cast<double>(rows.size()));
-  const int judged = has_interval ? static_cast<int>(rows.size()) : 0;
+  if (vm.count("measured-averages")) {
+    if (m.records > 0.0 && records != m.records)
+      m.notes.push_back("--measured-averages " + number_text(records) + " replaces M = " + number_text(m.records) +
+                        " (" + m.records_source + ")");
+    m.records = records;
+    m.records_source = "--measured-averages";
+  }
+  compare::MeasuredSpectrum quiet;
+  if (!noise.empty()) {
+    if (compare::is_psd_table(noise)) {
+      std::string noise_column;
+      quiet = psd_table(noise, noise_column, -1, o.model_df);
+    } else {
+      if (!estimator) throw data_error(result + ": has no record of its estimator; give --noise as a PSD table");
+      quiet = compare::measure_recordings({noise}, ro, *estimator);
+    }
+    o.noise = &quiet;
+  }
+  const compare::Verdict v = compare::band_verdict(b, m, o);
   const LossOfContact loss = loss_of_contact(r);
-  const std::string source = "result " + result + " (" + std::to_string(b.realisations) + " realisations), sensor " +
-                             b.sensor + "; measurement " + measurement + ", column " +
-                             (column.empty() ? "psd" : column);
 
-  std::vector<std::size_t> band_index;
-  std::vector<double> measured_db;
-  for (const auto& row : rows) band_index.push_back(row.band), measured_db.push_back(row.measured);
-  const CombinedTest test = combined_test(b, band_index, measured_db, predict ? records : 0.0, test_level);
-
-  // Printed only once every band is computed: a refused input leaves no partial output.
-  const Comparison c{result,       measurement, column, b,      rows,   predict, records,
-                     has_interval, question,    rms,    inside, judged, test,    loss};
-  std::string text;
-  char buf[320];
-  // On stderr too: a result dominated by impacts (or a linearised law past its validity) is no
-  // comparison of the roughness model, whatever the form the table is read in.
+  // Printed only once everything is computed: a refused input leaves no partial output.
   if (!b.pick_note.empty()) std::cerr << "rollspec compare: " << b.pick_note << "\n";
+  for (const auto& note : m.notes) std::cerr << "rollspec compare: " << note << "\n";
   if (!loss.warning.empty()) std::cerr << "rollspec compare: WARNING: " << result << ": " << loss.warning << "\n";
+  if (b.table_error_missing && !o.same_surface && m.records > 0.0)
+    std::cerr << "rollspec compare: WARNING: " << result << ": its intervals are conditional on its " << b.table
+              << " (the table's own error was not estimated: [stiffness] table_error = none), so this verdict leaves "
+                 "that error out and holds only for the surface the table was built on\n";
+  for (const auto& w : v.warnings) std::cerr << "rollspec compare: WARNING: " << w << "\n";
   if (format == "json") {
-    std::fputs(json_text(c).c_str(), stdout);
+    std::cout << verdict_json(result, column, b, m, v, loss).dump(2) << "\n";
     return 0;
   }
-  if (format == "csv")
-    text +=
-        "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,prediction_upper_db,"
-        "inside\n";
-  else {
-    text += source + "\n" + (loss.warning.empty() ? "" : "WARNING: " + loss.warning + "\n") + "question: " + question +
-            "\n";
-    std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
-                  "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
-    text += buf;
-  }
-  for (const auto& x : rows) {
-    const bool in = predict ? x.inside_prediction : x.inside_ci;
-    if (format == "csv") {
-      auto cell = [](double v) {
-        return std::isfinite(v) ? json_number(v) : std::isnan(v) ? std::string() : v > 0 ? "inf" : "-inf";
-      };
+  const bool predict = m.records > 0.0 && b.realisations >= spectral::kMinRealisationsForInterval;
+  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
+  std::string text;
+  char buf[320];
+  if (format == "csv") {
+    text += "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,"
+            "prediction_upper_db,noise_db,use,inside\n";
+    for (const auto& x : v.rows) {
+      const bool in = predict ? x.inside_prediction : x.inside_ci;
       text += number_text(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," +
               cell(x.ci_lower) + "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
-              (has_interval ? (in ? "1" : "0") : "") + "\n";
-    } else {
-      char ci[40] = "", pi[40] = "";
-      std::snprintf(ci, sizeof ci, "%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
-      if (predict && has_interval) std::snprintf(pi, sizeof pi, "%7.2f..%-7.2f", x.pred_lower, x.pred_upper);
-      std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured,
-                    x.delta, ci, pi, has_interval ? (in ? "yes" : "no") : "-");
-      text += buf;
+              cell(x.noise) + "," + compare::band_use_name(x.use) + "," + (has_interval ? (in ? "1" : "0") : "") +
+              "\n";
     }
+    std::fputs(text.c_str(), stdout);
+    std::cerr << "rollspec compare: question: " << v.question << "\n" << offset_line(v, b.confidence);
+    if (predict) std::cerr << "combined_test: " << v.test.verdict << "\n";
+    return 0;
   }
-  std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", rms, has_interval ? inside : 0, judged);
-  // Without M there is no test (it asks whether the measurement is a mean of M records): no line.
-  const std::string test_line = predict ? "combined_test: " + test.verdict + "\n" : std::string();
-  if (format == "csv")
-    text += "# " + source + "\n" + (loss.warning.empty() ? "" : "# WARNING: " + loss.warning + "\n") +
-            "# question: " + question + "\n" + (predict ? "# " + test_line : "") + "# " + buf;
-  else
-    text += test_line + buf;
+  text += "result " + result + " (" + std::to_string(b.realisations) + " realisations), sensor " + b.sensor +
+          "; measurement " + m.source + (table ? ", column " + (column.empty() ? std::string("psd") : column) : "") +
+          (m.records_source.empty() ? "" : " (" + m.records_source + ")") + "\n";
+  if (!loss.warning.empty()) text += "WARNING: " + loss.warning + "\n";
+  text += "question: " + v.question + "\n";
+  std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
+                "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
+  text += buf;
+  for (const auto& x : v.rows) {
+    const bool in = predict ? x.inside_prediction : x.inside_ci;
+    char ci[40] = "", pi[40] = "";
+    std::snprintf(ci, sizeof ci, "%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
+    if (predict) std::snprintf(pi, sizeof pi, "%7.2f..%-7.2f", x.pred_lower, x.pred_upper);
+    const std::string mark = x.use != compare::BandUse::test ? compare::band_use_name(x.use)
+                             : has_interval                  ? (in ? "yes" : "no")
+                                                             : "-";
+    std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured,
+                  x.delta, ci, pi, mark.c_str());
+    text += buf;
+  }
+  for (const auto& w : v.warnings) text += "WARNING: " + w + "\n";
+  text += offset_line(v, b.confidence);
+  if (predict) text += "combined_test: " + v.test.verdict + "\n";
+  std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", v.rms_db, v.inside, v.judged);
+  text += buf;
   std::fputs(text.c_str(), stdout);
   return 0;
 }

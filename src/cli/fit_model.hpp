@@ -9,11 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "src/cli/compare_band_test.hpp"
+#include "src/compare/combined_test.hpp"
 #include "src/cli/measured_psd.hpp"
 #include "src/io/band_levels.hpp"
 
 namespace rollspec::cli {
+
+using compare::ChosenBands;
+using compare::CombinedTest;
+using compare::chosen_bands;
+using compare::combined_test;
 
 // --vary section.key=lo:hi[:log]: the range searched, mapped onto u in [0, 1] (log: geometric).
 struct VaryRange {

@@ -4,9 +4,14 @@
 #include <string>
 #include <vector>
 
-#include "src/cli/compare_band_test.hpp"
+#include "src/compare/combined_test.hpp"
 
 namespace rollspec::cli {
+
+using compare::ChosenBands;
+using compare::CombinedTest;
+using compare::chosen_bands;
+using compare::combined_test;
 
 struct FitParameter {
   std::string key;

@@ -89,6 +89,7 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
     paired.means.push_back(std::move(m));
   }
   io::TableError t = io::table_jackknife(spectra, paired, plan.table, plan.unit, plan.variance_factor, plan.dof);
+  t.independent_bands = plan.independent_bands;
   t.noise_warning = io::table_noise_warning(t, sums.count);
   if (!t.noise_warning.empty()) io::warn(t.noise_warning, true);  // the result's validity, not progress
   scene.include_table_error(std::move(t));

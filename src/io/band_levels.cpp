@@ -102,6 +102,49 @@ bool printable_utf8(const std::string& s) {
 // that a level is not a level of any PSD a double holds.
 constexpr double kLargestLevelDb = 3100.0;
 
+// The table term of the row (D-31): the sub-table runs' levels, their dof and variance factor, checked
+// against the result's shape; or, for a result whose intervals are conditional on a random table, the
+// flag that says its verdict cannot carry the table's error.
+void read_table_term(const Hdf5Reader& r, std::size_t row, std::size_t ns, std::size_t nb, BandLevels& b) {
+  const std::string& file = r.path();
+  const std::string includes =
+      r.has_attribute("/bands", "interval_includes") ? r.string_attribute("/bands", "interval_includes") : "";
+  if (!r.exists("/bands/table_leave_out_level_db")) {
+    b.table_error_missing = includes.find("conditional on") != std::string::npos;
+    const auto at = includes.find("conditional on the ");
+    if (at != std::string::npos) b.table = includes.substr(at + 19, includes.find(')', at) - at - 19);
+    return;
+  }
+  std::vector<std::size_t> d;
+  const auto v = r.read("/bands/table_leave_out_level_db", &d);
+  if (d.size() != 3 || d[1] != ns || d[2] != nb || d[0] < 2)
+    throw data_error(file + ": /bands/table_leave_out_level_db is not (sub-tables >= 2) x sensor x band (" +
+                     std::to_string(ns) + " x " + std::to_string(nb) + ")");
+  b.table_units = d[0];
+  for (std::size_t i = 0; i < d[0]; ++i)
+    for (std::size_t k = 0; k < nb; ++k) {
+      const double x = v[(i * ns + row) * nb + k];
+      if (!(std::fabs(x) <= kLargestLevelDb) && !(std::isinf(x) && x < 0.0))
+        throw data_error(file + ": /bands/table_leave_out_level_db[" + std::to_string(i) + ", " + std::to_string(row) +
+                         ", " + std::to_string(k) + "] = " + number_text(x) +
+                         " dB; allowed: -inf (no power) or a level within +-" + number_text(kLargestLevelDb) +
+                         " dB (the file was altered or damaged)");
+      b.table_levels_db.push_back(x);
+    }
+  b.table_dof = r.double_attribute("/bands", "table_jackknife_dof");
+  b.table_variance_factor = r.double_attribute("/bands", "table_jackknife_variance_factor");
+  if (!(b.table_dof > 0.0 && std::isfinite(b.table_dof)) ||
+      !(b.table_variance_factor > 0.0 && std::isfinite(b.table_variance_factor)))
+    throw data_error(file + ": /bands@table_jackknife_dof = " + number_text(b.table_dof) +
+                     ", table_jackknife_variance_factor = " + number_text(b.table_variance_factor) +
+                     "; allowed: finite numbers > 0 (the file was altered or damaged)");
+  b.table_independent_bands = r.has_attribute("/bands", "table_covariance") &&
+                              r.string_attribute("/bands", "table_covariance").rfind("independent", 0) == 0;
+  const auto open = includes.find(", ");
+  b.table = open == std::string::npos ? "table" : includes.substr(open + 2, includes.find(" (", open) - open - 2);
+}
+
+
 }  // namespace
 
 SensorChoice sensor_choice(const std::string& name, std::optional<double> position) {
@@ -217,7 +260,25 @@ BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice) {
     b.log_covariance.assign(v.begin() + static_cast<std::ptrdiff_t>(row * nb * nb),
                             v.begin() + static_cast<std::ptrdiff_t>((row + 1) * nb * nb));
   }
+  read_table_term(r, row, ns, nb, b);
   return b;
+}
+
+std::vector<double> table_log_covariance(const BandLevels& b, const std::vector<std::size_t>& band) {
+  const std::size_t n = b.table_units, nb = b.level_db.size(), p = band.size();
+  if (n < 2 || b.table_levels_db.size() != n * nb) return {};
+  const double to_log = std::log(10.0) / 10.0;
+  std::vector<double> mean(p, 0.0), cov(p * p, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < p; ++k) mean[k] += b.table_levels_db[i * nb + band[k]] / static_cast<double>(n);
+  const double scale = b.table_variance_factor * static_cast<double>(n - 1) / static_cast<double>(n) * to_log * to_log;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < p; ++k)
+      for (std::size_t l = 0; l < p; ++l)
+        if (k == l || !b.table_independent_bands)
+          cov[k * p + l] += scale * (b.table_levels_db[i * nb + band[k]] - mean[k]) *
+                            (b.table_levels_db[i * nb + band[l]] - mean[l]);
+  return cov;
 }
 
 }  // namespace rollspec::io

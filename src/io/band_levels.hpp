@@ -24,7 +24,23 @@ struct BandLevels {
   std::uint64_t realisations = 0;
   double confidence = 0.95;
   std::string interval_method;
+  // The table's own error (kernels/spectral D-30, D-31): the N leave-one-out sub-table runs' levels of
+  // this row, N x bands (empty: the result's table is not random, or its error was not estimated).
+  std::vector<double> table_levels_db;
+  std::size_t table_units = 0;         // N
+  double table_dof = 0.0;              // nu_T
+  double table_variance_factor = 1.0;  // D-30d
+  std::string table;                   // the table the term is of, as /bands@interval_includes says
+  bool table_independent_bands = false;  // D-31c: the term's covariance is diagonal (/bands@table_covariance)
+  // The result's table is random but its error was not estimated (/bands@interval_includes says the
+  // intervals are conditional on it): a verdict cannot carry it.
+  bool table_error_missing = false;
 };
+
+// The table term's covariance between the bands `band` (indices into b), in (natural log)^2: the
+// jackknife (D-30a) of the sub-table runs' levels times the variance factor (D-30d), its diagonal only
+// where the bands' errors are independent (D-31c). Row-major p x p; empty when b has no table term.
+std::vector<double> table_log_covariance(const BandLevels& b, const std::vector<std::size_t>& band);
 
 // How a command picks its row: --sensor (a name from /bands/sensor, or K of sensor_K) or
 // --measured-position X (m: the sensor nearest X in /bands/sensor_position); neither picks

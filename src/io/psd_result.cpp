@@ -77,6 +77,23 @@ void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   write_table_std(w, "/psd", t.bin_noise, nf, "table_noise_std_db", noise);
   write_table_std(w, "/bands", t.band_variance, nb, "table_std_db", table);
   write_table_std(w, "/bands", t.band_noise, nb, "table_noise_std_db", noise);
+  // The sub-table runs' levels themselves: compare and fit form the term's covariance between bands from
+  // them (kernels/spectral D-31), which the standard deviations above do not hold.
+  const std::size_t rows = t.band_variance.size() / std::max<std::size_t>(nb, 1);
+  std::vector<double> index(t.surfaces);
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<double>(i);
+  w.write("/bands/table_leave_out", {index.size()}, index.data(), "1",
+          "the " + t.unit + " left out of each sub-table of the " + t.table);
+  w.make_scale("/bands/table_leave_out", "table_leave_out");
+  w.write("/bands/table_leave_out_level_db", {t.surfaces, rows, nb}, t.band_levels.data(), "dB re 1 " + e.units,
+          "band level of the run with each leave-one-out sub-table of the " + t.table +
+              " (the jackknife of (a), kernels/spectral D-30, D-31)");
+  w.attach_scale("/bands/table_leave_out_level_db", "/bands/table_leave_out", 0);
+  w.attach_scale("/bands/table_leave_out_level_db", "/bands/sensor", 1);
+  w.attach_scale("/bands/table_leave_out_level_db", "/bands/centre_frequency", 2);
+  w.attribute("/bands", "table_covariance",
+              std::string(t.independent_bands ? "independent bands (a spectral estimate's error; D-31c)"
+                                              : "the sub-tables' band-by-band covariance (one curve's error; D-31c)"));
   w.attribute("/bands", "table_jackknife_surfaces", static_cast<std::int64_t>(t.surfaces));
   w.attribute("/bands", "table_jackknife_dof", t.dof);
   w.attribute("/bands", "table_jackknife_variance_factor", t.variance_factor);
@@ -122,6 +139,14 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
   w.attribute("/psd", "confidence_level", e.confidence);
   w.attribute("/psd", "window_enbw_bins", e.window_enbw_bins);
   w.attribute("/psd", "quantity", e.quantity);
+  if (e.welch.sample_rate > 0.0) {  // the estimator a measurement is put through to be compared (D-32)
+    w.attribute("/psd", "sample_rate", e.welch.sample_rate);
+    w.attribute("/psd", "welch_segment", static_cast<std::int64_t>(e.welch.segment));
+    w.attribute("/psd", "welch_overlap", static_cast<std::int64_t>(e.welch.overlap));
+    w.attribute("/psd", "welch_window", std::string(e.welch.window == spectral::Window::hann ? "hann" : "rect"));
+    w.attribute("/psd", "welch_detrend", std::string(e.welch.detrend == spectral::Detrend::constant ? "mean" : "none"));
+    w.attribute("/psd", "record_samples", static_cast<std::int64_t>(e.record_samples));
+  }
 
   const double df = nf > 1 ? e.frequency[1] - e.frequency[0] : 1.0;
   const auto bands = result_bands(e.frequency, e.band_min, e.band_max);

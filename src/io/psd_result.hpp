@@ -20,6 +20,7 @@
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "kernels/spectral/tail_check.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
+#include "kernels/spectral/welch.hpp"
 #include "src/io/table_error.hpp"
 
 namespace rollspec::io {
@@ -39,6 +40,11 @@ struct PsdEnsemble {
   std::vector<spectral::TailCheck> band_tail;   // rows x bands: is K enough for the interval (D-29; empty: no check)
   std::uint64_t realisations = 0;
   double welch_dof = 0.0;  // K x the Welch dof (D-16) of a stationary record: information only
+  // The estimator each realisation's record went through, so that a measurement can go through the same
+  // one (`rollspec compare RESULT RECORDING`): /psd@sample_rate, welch_segment, welch_overlap,
+  // welch_window, record_samples. sample_rate 0: not written.
+  spectral::WelchConfig welch{0.0, 0, 0, spectral::Window::hann, spectral::Detrend::constant};
+  std::size_t record_samples = 0;
   double window_enbw_bins = 1.5;
   double confidence = 0.95;
   double band_min = 0.0, band_max = 0.0;  // Hz

@@ -48,6 +48,7 @@ TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const Pai
     bands.push_back(band_levels_db(e));
   }
   const std::size_t nb = bands[0].size();
+  for (const auto& b : bands) t.band_levels.insert(t.band_levels.end(), b.begin(), b.end());
   if (paired.means.size() != n || paired.q.size() != bins + nb)
     throw std::logic_error("table jackknife: paired sums of another shape than the spectra");
   std::vector<double> theta(n), m(n);

@@ -28,7 +28,12 @@ enum class Stream : std::uint64_t {
   // never shares numbers with the realisations it serves, whatever the two seeds.
   table_surface_phase = 9,
   table_surface_amplitude = 10,
+  // compare's and fit's parametric bootstrap of the combined test's law (kernels/spectral D-31): keyed
+  // by (kVerdictSeed, draw), so the same inputs give the same p-value.
+  verdict_bootstrap = 11,
 };
+
+inline constexpr std::uint64_t kVerdictSeed = 0x726f6c6c73706563ULL;  // "rollspec"
 
 class PhiloxStream {
  public:

@@ -386,13 +386,16 @@ class BallOnBeam final : public EnsembleScene {
                               }};
       plan.variance_factor = j.variance_factor;
       plan.dof = j.dof;
+      plan.independent_bands = true;
       return plan;
     }
-    return {static_cast<std::size_t>(b_.equivalent_roughness_strips), "equivalent-roughness table", "strips",
-            [](long long i) {
-              return std::vector<std::string>{"equivalent_roughness.leave_out=" + std::to_string(i),
-                                              "stiffness.table_error=none"};
-            }};
+    TableJackknifePlan plan{static_cast<std::size_t>(b_.equivalent_roughness_strips), "equivalent-roughness table",
+                            "strips", [](long long i) {
+                              return std::vector<std::string>{"equivalent_roughness.leave_out=" + std::to_string(i),
+                                                              "stiffness.table_error=none"};
+                            }};
+    plan.independent_bands = true;
+    return plan;
   }
 
   void include_table_error(io::TableError e) override { table_error_ = std::move(e); }

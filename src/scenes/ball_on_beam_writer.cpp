@@ -25,6 +25,8 @@ io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) co
   e.welch_dof = static_cast<double>(sums.count) *
                 welch_->equivalent_dof(b_.samples - b_.skip);  // stationary D-16 value, for information
   e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
+  e.welch = welch_->config();
+  e.record_samples = b_.samples - b_.skip;
   e.confidence = b_.confidence;
   e.sensor_position = b_.model.sensors;
   e.position_meaning = "sensor position along the span";

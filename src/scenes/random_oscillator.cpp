@@ -96,6 +96,8 @@ class RandomOscillator final : public EnsembleScene {
     io::PsdEnsemble e = rows_->ensemble(sums);
     e.welch_dof = static_cast<double>(sums.count) * welch_->equivalent_dof(o_.samples);
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
+    e.welch = welch_->config();
+    e.record_samples = o_.samples;
     e.confidence = o_.confidence;
     io::write_psd_result(w, e);
 

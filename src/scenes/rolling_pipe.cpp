@@ -152,6 +152,8 @@ class RollingPipe final : public EnsembleScene {
     // Welch noise; the intervals come from their scatter (D-21), the Welch value is information.
     e.welch_dof = K * welch_->equivalent_dof(p_.samples - p_.skip);
     e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch_->window());
+    e.welch = welch_->config();
+    e.record_samples = p_.samples - p_.skip;
     e.confidence = p_.confidence;
     // A sensor records its nearest node: its place along the tube, from the end at y = -length/2.
     for (const int n : p_.sensor_nodes) e.sensor_position.push_back(n * p_.length / (p_.nodes() - 1));

@@ -77,6 +77,11 @@ struct TableJackknifePlan {
   // Overlapping units (D-30d): the jackknife's variance times this, of `dof` degrees of freedom
   // (0: n - 1, independent units).
   double variance_factor = 1.0, dof = 0.0;
+  // The table's error in different bands (kernels/spectral D-31c): independent for a spectral estimate
+  // (a PSD averaged over Welch segments or strips: its bins' errors are uncorrelated), so only each
+  // band's variance is kept; one curve's error for a stiffness table (it moves every band together),
+  // kept as the sub-tables' whole band-by-band covariance.
+  bool independent_bands = false;
 };
 
 // `plan`: a table the run would build, its build time measured on a few of its solves.

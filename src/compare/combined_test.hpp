@@ -8,7 +8,7 @@
 #include "kernels/spectral/band_test.hpp"
 #include "src/io/band_levels.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::compare {
 
 struct CombinedTest {
   spectral::BandTestResult result;
@@ -26,9 +26,21 @@ struct ChosenBands {
 ChosenBands chosen_bands(const io::BandLevels& b, const std::vector<std::size_t>& band,
                          const std::vector<double>& measured_db);
 
-// `band`: indices of the compared bands in b; `measured_db`: their measured levels; records: M (0:
-// not given, no test).
-CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_t>& band,
-                           const std::vector<double>& measured_db, double records, double level);
+// How many of the table's terms a verdict carries (kernels/spectral D-31): 2 for a rig with another
+// surface of this roughness (the model's table and the rig's surface each deviate from the roughness's
+// mean), 0 for the very surface the table was built on (--same-surface).
+constexpr double kNewSurfaceTableFactor = 2.0;
 
-}  // namespace rollspec::cli
+// Draws of D-31's parametric bootstrap: the p-value's own standard error is below 0.0022 at p = 0.05.
+constexpr std::size_t kBootstrapDraws = 10000;
+
+// `band`: indices of the compared bands in b; `measured_db`: their measured levels; records: M (0:
+// not given, no test); table_factor: c of D-31 (0: none; the F law of D-26).
+CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_t>& band,
+                           const std::vector<double>& measured_db, double records, double level,
+                           double table_factor = 0.0);
+
+// The table term's variance of band k of b in dB^2 (D-30a times the variance factor; 0 without a term).
+double table_band_variance_db(const io::BandLevels& b, std::size_t k);
+
+}  // namespace rollspec::compare

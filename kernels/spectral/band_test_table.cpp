@@ -1,0 +1,164 @@
+#include "kernels/spectral/band_test_table.hpp"
+
+#include <Eigen/Dense>
+#include <boost/math/special_functions/gamma.hpp>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace rollspec::spectral {
+
+namespace {
+
+using Matrix = Eigen::MatrixXd;
+using Vector = Eigen::VectorXd;
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// Box-Muller: n standard normals from 2 ceil(n / 2) uniforms on (0, 1).
+void standard_normals(const double* u, std::size_t n, double* z) {
+  for (std::size_t i = 0; i < n; i += 2) {
+    const double r = std::sqrt(-2.0 * std::log(u[i])), phi = 2.0 * M_PI * u[i + 1];
+    z[i] = r * std::cos(phi);
+    if (i + 1 < n) z[i + 1] = r * std::sin(phi);
+  }
+}
+
+// G S G's diagonal scaling and d's offset (V_K,bb - V_M,bb) / 2 from a covariance (D-26a, b).
+void scaling(const Matrix& s, double K, double M, Vector& g, Vector& offset) {
+  const auto p = s.rows();
+  g.resize(p);
+  offset.resize(p);
+  for (Eigen::Index b = 0; b < p; ++b) {
+    const double sb = s(b, b), vm = log_mean_variance(sb, M), vk = log_mean_variance(sb, K);
+    g(b) = sb > 0.0 ? std::sqrt((vm + vk) / sb) : std::sqrt(1.0 / M + 1.0 / K);
+    offset(b) = 0.5 * (vk - vm);
+  }
+}
+
+// Sigma_T = U U^T over its positive eigenvalues (rank r = U's columns); refuses an asymmetric or
+// indefinite matrix. Eigenvalues below 1e-12 of the largest are the jackknife's null space.
+Matrix table_factor(const Matrix& t) {
+  const double scale = t.cwiseAbs().maxCoeff();
+  if (!std::isfinite(scale)) throw std::invalid_argument("band test: the table covariance is not finite");
+  if (scale == 0.0) return Matrix(t.rows(), 0);
+  if ((t - t.transpose()).cwiseAbs().maxCoeff() > 1e-10 * scale)
+    throw std::invalid_argument("band test: the table covariance is not symmetric");
+  const Eigen::SelfAdjointEigenSolver<Matrix> eig(t);
+  const Vector& lambda = eig.eigenvalues();
+  const double top = lambda.maxCoeff();
+  if (lambda.minCoeff() < -1e-9 * top)
+    throw std::invalid_argument("band test: the table covariance is not positive semi-definite");
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index i = 0; i < lambda.size(); ++i)
+    if (lambda(i) > 1e-12 * top) keep.push_back(i);
+  Matrix u(t.rows(), static_cast<Eigen::Index>(keep.size()));
+  for (std::size_t k = 0; k < keep.size(); ++k)
+    u.col(static_cast<Eigen::Index>(k)) = eig.eigenvectors().col(keep[k]) * std::sqrt(lambda(keep[k]));
+  return u;
+}
+
+}  // namespace
+
+std::size_t bartlett_uniforms(std::size_t q) { return q + 2 * ((q * (q - 1) / 2 + 1) / 2); }
+
+void bartlett_wishart(std::size_t q, double nu, const double* u, double* a) {
+  Matrix l = Matrix::Zero(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q));
+  std::vector<double> z(q * (q - 1) / 2);
+  standard_normals(u + q, z.size(), z.data());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < q; ++i) {
+    const double shape = 0.5 * (nu - static_cast<double>(i));
+    l(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)) = std::sqrt(2.0 * boost::math::gamma_p_inv(shape, u[i]));
+    for (std::size_t j = 0; j < i; ++j) l(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = z[k++];
+  }
+  Eigen::Map<RowMatrix>(a, static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) = l * l.transpose();
+}
+
+BandTestResult band_test_with_table(const double* measured_log, const double* mean, const double* covariance,
+                                    std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
+                                    const DrawUniforms& uniform, std::size_t draws) {
+  if (!(table.factor > 0.0) || table.covariance == nullptr || draws == 0)
+    return band_test(measured_log, mean, covariance, p, realisations, records);
+  BandTestResult r;
+  r.needed = p + kExtraRealisations;
+  if (p == 0 || realisations < r.needed) return r;
+  const auto n = static_cast<Eigen::Index>(p);
+  const double K = static_cast<double>(realisations), nu = K - 1.0;
+  const Matrix s = Eigen::Map<const RowMatrix>(covariance, n, n);
+  const Matrix t_full = Eigen::Map<const RowMatrix>(table.covariance, n, n);
+  // Independent bands (D-31c): Sigma_T is its diagonal, each band's variance drawn alone. Else its
+  // factor over the positive eigenvalues, drawn as one Wishart of its rank.
+  Vector t_diag;
+  Matrix u;
+  std::size_t rank = 0;
+  if (table.independent) {
+    t_diag = t_full.diagonal();
+    if (!t_diag.allFinite() || t_diag.minCoeff() < 0.0)
+      throw std::invalid_argument("band test: a table variance is negative or not finite");
+    rank = static_cast<std::size_t>((t_diag.array() > 0.0).count());
+  } else {
+    u = table_factor(t_full);
+    rank = static_cast<std::size_t>(u.cols());
+  }
+  if (rank == 0) return band_test(measured_log, mean, covariance, p, realisations, records);
+  if (!(table.dof > (table.independent ? 0.0 : static_cast<double>(rank) - 1.0)) || !std::isfinite(table.dof))
+    throw std::invalid_argument("band test: the table term's degrees of freedom must exceed its rank - 1");
+  const Matrix t_used = table.independent ? Matrix(t_diag.asDiagonal()) : Matrix(u * u.transpose());
+
+  // The observed T^2 with V = G S G + c Sigma_T (D-31a).
+  std::vector<double> d, v;
+  band_deviation(measured_log, mean, covariance, p, K, records, d, v);
+  Matrix vv = Eigen::Map<const RowMatrix>(v.data(), n, n);
+  vv += table.factor * t_used;
+  const Eigen::LLT<Matrix> llt(vv);
+  if (llt.info() != Eigen::Success) throw std::invalid_argument("band test: the band covariance is not positive definite");
+  const double t2 = llt.solve(Eigen::Map<const Vector>(d.data(), n)).dot(Eigen::Map<const Vector>(d.data(), n));
+
+  // The bootstrap (D-31b): estimates drawn about the observed ones, d* from the law they give.
+  const Eigen::LLT<Matrix> s_llt(s);
+  if (s_llt.info() != Eigen::Success) throw std::invalid_argument("band test: the band covariance is not positive definite");
+  const Matrix ls = s_llt.matrixL(), lv = llt.matrixL();
+  Vector g, offset, g_star, offset_star;
+  scaling(s, K, records, g, offset);
+  const std::size_t ns = bartlett_uniforms(p), nt = table.independent ? p : bartlett_uniforms(rank);
+  std::vector<double> uni(ns + nt + 2 * ((p + 1) / 2)), a_s(p * p), a_t(rank * rank);
+  std::size_t exceed = 0;
+  for (std::size_t j = 0; j < draws; ++j) {
+    uniform(j, uni.data(), uni.size());
+    bartlett_wishart(p, nu, uni.data(), a_s.data());
+    const Matrix s_star = ls * Eigen::Map<const RowMatrix>(a_s.data(), n, n) * ls.transpose() / nu;
+    Matrix t_star;
+    if (table.independent) {
+      Vector diag(n);
+      for (Eigen::Index b = 0; b < n; ++b)
+        diag(b) = t_diag(b) * 2.0 * boost::math::gamma_p_inv(0.5 * table.dof, uni[ns + static_cast<std::size_t>(b)]) /
+                  table.dof;
+      t_star = diag.asDiagonal();
+    } else {
+      bartlett_wishart(rank, table.dof, uni.data() + ns, a_t.data());
+      const auto nr = static_cast<Eigen::Index>(rank);
+      t_star = u * Eigen::Map<const RowMatrix>(a_t.data(), nr, nr) * u.transpose() / table.dof;
+    }
+    scaling(s_star, K, records, g_star, offset_star);
+    const Matrix v_star = g_star.asDiagonal() * s_star * g_star.asDiagonal() + table.factor * t_star;
+    Vector z(n);
+    standard_normals(uni.data() + ns + nt, p, z.data());
+    const Vector d_star = lv * z + offset - offset_star;
+    const Eigen::LLT<Matrix> star(v_star);
+    if (star.info() != Eigen::Success) {
+      ++exceed;  // a draw whose covariance breaks down counts against the model: the p-value stays conservative
+      continue;
+    }
+    if (star.solve(d_star).dot(d_star) >= t2) ++exceed;
+  }
+  r.defined = true;
+  r.t2 = t2;
+  r.dof1 = static_cast<double>(p);
+  r.dof2 = nu - static_cast<double>(p) + 1.0;
+  r.f = r.dof2 / (nu * static_cast<double>(p)) * t2;
+  r.draws = draws;
+  r.p_value = (1.0 + static_cast<double>(exceed)) / (1.0 + static_cast<double>(draws));
+  return r;
+}
+
+}  // namespace rollspec::spectral

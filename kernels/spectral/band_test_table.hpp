@@ -1,0 +1,48 @@
+#pragma once
+// The combined test over bands with a table term (kernels/spectral/README.md D-31): D-26's T^2 whose
+// covariance adds c times the table's band-by-band covariance Sigma_T (D-30's jackknife, nu_T dof):
+//   V = G S G + c Sigma_T,   T^2 = d^T V^{-1} d      (d, G, S as D-26a, b)
+// c = 2 asks of a rig with another surface of this roughness (the model's table and the rig's own
+// surface each deviate from the roughness's mean by Sigma_T), c = 0 of the very surface the table was
+// built on (D-26 itself). With c > 0 the law of T^2 depends on S and Sigma_T, so its p-value comes
+// from a parametric bootstrap: B draws of the estimates S* ~ W_p(S, K - 1) / (K - 1) and
+// Sigma_T* ~ W_r(Sigma_T, nu_T) / nu_T (Bartlett, r = rank Sigma_T) and of d* ~ N(0, V), each
+// giving T*^2 = d*^T V*^{-1} d* with V* from the draws as V from the estimates (D-31b);
+// p = (1 + #{T*^2 >= T^2}) / (B + 1). With Sigma_T = 0 the bootstrap law is Hotelling's (pivotal).
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
+#include "kernels/spectral/band_test.hpp"
+
+namespace rollspec::spectral {
+
+// uniform(draw, u, n): fills u[0..n) with independent uniforms on (0, 1) for bootstrap draw `draw`
+// (a counter-based stream: the draws do not depend on the order they are asked in).
+using DrawUniforms = std::function<void(std::uint64_t draw, double* u, std::size_t n)>;
+
+struct TableTerm {
+  const double* covariance = nullptr;  // Sigma_T, p x p row-major, of the band logs (natural log squared)
+  double dof = 0.0;                    // nu_T (> rank - 1)
+  double factor = 2.0;                 // c
+  bool independent = false;            // Sigma_T diagonal: each band's variance drawn alone, chi^2(nu_T) / nu_T
+};
+
+// D-31. Without a table term (factor 0, or no covariance) it is band_test (the F law). `draws`: B.
+// Throws std::invalid_argument as band_test does, and for a table covariance that is not symmetric
+// positive semi-definite or nu_T <= rank - 1.
+BandTestResult band_test_with_table(const double* measured_log, const double* mean, const double* covariance,
+                                    std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
+                                    const DrawUniforms& uniform, std::size_t draws);
+
+// The variance term D-31 adds to each band of a prediction interval, in the same units as Sigma_T.
+inline double table_prediction_variance(double table_variance, double factor) { return factor * table_variance; }
+
+// W_q(I, nu) by Bartlett's decomposition: A = L L^T, L lower triangular, L_ii^2 ~ chi^2(nu - i)
+// (i = 0..q-1, by the inverse of the regularised gamma function from u[i]), L_ij ~ N(0, 1) below the
+// diagonal (Box-Muller from the uniforms after the first q). Row-major q x q into a; it reads
+// bartlett_uniforms(q) uniforms. Exposed for its test.
+std::size_t bartlett_uniforms(std::size_t q);
+void bartlett_wishart(std::size_t q, double nu, const double* u, double* a);
+
+}  // namespace rollspec::spectral
