@@ -16,9 +16,10 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
+#include "src/io/psd_csv.hpp"
 #include "src/io/signal_file.hpp"
-#include "src/io/output_target.hpp"
-#include "src/io/temp_files.hpp"
+#include "src/version.hpp"
 
 namespace rollspec::cli {
 
@@ -76,8 +77,8 @@ int psd_command(const Args& args) {
       "fs", po::value(&request.fs), "sample rate (Hz); default: from the file")(
       "column", po::value(&request.columns)->composing(),
       "channel(s) to analyse, repeatable or comma-separated (default: all)")(
-      "unit", po::value(&request.unit)->default_value("m/s2"),
-      "unit of the values: m/s2 or g, or one per channel (g,m/s2)")(
+      "unit", po::value(&request.unit),
+      "unit of the values (g, m/s2, mm/s2, ...), or one per channel (g,m/s2); default: from the file, else m/s2")(
       "scale", po::value(&request.scale),
       "physical units per file unit, or per full scale (integer PCM; needed there); default 1")(
       "time-column", po::value(&request.time_column),
@@ -139,17 +140,10 @@ int psd_command(const Args& args) {
       }
   }
 
+  const std::vector<std::string> titles = io::psd_column_titles(t.channels);
   std::ostringstream s;
-  // The marker line tells rollspec's own PSD files from a measurement in the same columns (an
-  // existing --out is replaced only if it starts with it); readers skip '#' lines.
-  s << io::kPsdCsvMarker << ": one-sided PSD in (m/s^2)^2/Hz, Welch\n";
   s << "frequency_hz";
-  for (std::string c : t.channels) {
-    // The output is comma-delimited and read back by the same reader: no delimiter inside a name.
-    for (char& ch : c)
-      if (ch == ',' || ch == ';' || ch == '\t' || ch == '"') ch = '_';
-    s << "," << c;
-  }
+  for (const auto& title : titles) s << "," << title;
   s << "\n";
   const auto f = plan.frequencies();
   char buf[32];
@@ -166,33 +160,26 @@ int psd_command(const Args& args) {
     std::cout << s.str();
     return 0;
   }
-  // Written beside the output and renamed onto it: an existing file is replaced whole or not at all,
-  // and the temporary file never outlives a failure.
-  io::OutputTarget target{out, io::kPsdCsvKind};
-  target.force = vm.count("force") > 0;
-  target.inputs = {input};
-  const std::string write_path = io::check_output_target(target);
-  const std::string tmp = io::temp_name(write_path);
-  io::register_temp(tmp);
-  const auto fail = [&](const std::string& what, int err) {
-    std::remove(tmp.c_str());
-    io::unregister_temp(tmp);
-    return cannot_create(what + " (writing " + tmp + ": " +
-                         (err == ENOSPC ? std::string("no space left on device") : std::string(std::strerror(err))) +
-                         ")");
-  };
-  {
-    errno = 0;
-    std::ofstream o(tmp, std::ios::trunc);
-    if (!o) throw fail("cannot create output file '" + out + "'", errno ? errno : EIO);
-    o << s.str();
-    o.close();
-    if (!o) throw fail("cannot write output file '" + out + "'", errno ? errno : EIO);
+  io::PsdCsvMetadata m;
+  m.sample_rate = t.sample_rate;
+  m.rate_source = t.rate_source;
+  m.segment = cfg.segment;
+  m.overlap = cfg.overlap;
+  m.window = window;
+  m.detrend = "mean";
+  m.samples = t.samples();
+  m.segments = plan.segments(t.samples());
+  m.edof = plan.equivalent_dof(t.samples());
+  m.scale = t.scale;
+  m.source = input;
+  m.source_hash = io::sha256_file(input);
+  m.version = std::string(kVersion) + " (" + kGitSha + ")";
+  std::vector<io::PsdColumnMetadata> columns;
+  for (std::size_t c = 0; c < t.channels.size(); ++c) {
+    const std::string title = titles[c];
+    columns.push_back({title, title.substr(0, title.rfind(" [")), t.channels[c], t.units[c].text, t.units[c].where});
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, write_path, ec);
-  if (ec) throw fail("cannot create output file '" + out + "': " + ec.message(), ec.value());
-  io::unregister_temp(tmp);
+  io::write_psd_csv(out, vm.count("force") > 0, {input}, s.str(), m, columns);
   return 0;
 }
 

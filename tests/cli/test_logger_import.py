@@ -34,7 +34,7 @@ def psd(args, tmp_path, name="psd.csv"):
     out = tmp_path / name
     r = run(["psd", *args, "--out", out])
     assert r.returncode == 0, r.stderr
-    data = np.loadtxt(out, delimiter=",", skiprows=2, ndmin=2)
+    data = np.loadtxt(out, delimiter=",", skiprows=1, ndmin=2)
     return data, r.stderr
 
 
@@ -148,7 +148,7 @@ def test_a_unit_per_column(tmp_path):
     np.testing.assert_allclose(data[:, 1:], p[:, ::-1], rtol=1e-10, atol=1e-10 * p.max())
     assert_refused(run(["psd", sig, "--unit", "g,g,g", "--fs", FS]), EX_USAGE,
                    ["--unit g,g,g: 3 units for 2 channels (acc_g, acc_ms2)", "one per channel"])
-    assert_refused(run(["psd", sig, "--unit", "g,mm", "--fs", FS]), EX_USAGE, ["--unit g,mm: 'mm'", "allowed: m/s2"])
+    assert_refused(run(["psd", sig, "--unit", "g,mm", "--fs", FS]), EX_USAGE, ["--unit g,mm: 'mm'", "allowed: g, m/s2"])
 
 
 def test_time_column_option(tmp_path):
@@ -162,12 +162,17 @@ def test_time_column_option(tmp_path):
     data, _ = psd([sig, "--time-column", "none", "--fs", FS, "--segment", 512, "--column", "acc"], tmp_path)
     f, p = welch(x, FS, 512)
     assert_psd(data, f, p)
-    # ... and --time-column NAME picks the stamps (no unit in the name: seconds)
+    # ... and --time-column NAME picks the stamps, in the unit its name gives (us: microseconds) ...
     r = run(["psd", sig, "--time-column", "stamp_us", "--segment", 512, "--column", "acc", "--out", tmp_path / "us.csv"])
     assert r.returncode == 0, r.stderr
-    assert "sample rate 0.0256 Hz from the time column 'stamp_us' (--time-column; its name gives no unit: seconds)" in r.stderr
+    assert "sample rate 25600 Hz from the time column 'stamp_us' (microseconds by its name, --time-column)" in r.stderr
+    # ... or in seconds when the name gives none
+    sig.write_text(sig.read_text().replace("stamp_us;", "stamp;", 1))
+    r = run(["psd", sig, "--time-column", "stamp", "--segment", 512, "--column", "acc", "--out", tmp_path / "s.csv"])
+    assert r.returncode == 0, r.stderr
+    assert "sample rate 0.0256 Hz from the time column 'stamp' (--time-column; its name gives no unit: seconds)" in r.stderr
     assert_refused(run(["psd", sig, "--time-column", "clock"]), EX_USAGE,
-                   ["--time-column clock: no such column", "columns found: stamp_us, t, acc"])
+                   ["--time-column clock: no such column", "columns found: stamp, t, acc"])
 
 
 def test_integer_wav_needs_scale(tmp_path):
