@@ -1,7 +1,6 @@
 #include "src/io/csv_layout.hpp"
 
 #include <cstdlib>
-#include <sstream>
 
 #include "src/io/measurement_unit.hpp"
 #include "src/text_trim.hpp"
@@ -14,21 +13,26 @@ CsvLayoutFinder::Shape CsvLayoutFinder::shape(const std::string& line, char deli
   const auto cells = split_cells(line, delimiter);
   s.cells = cells.size();
   s.numeric = !cells.empty();
-  bool units = true, named = false;
   for (const auto& c : cells) {
     const bool number = numeric_cell(c, delimiter != ',');
     s.numeric = s.numeric && number;
     s.any_number = s.any_number || number;
     s.any_empty = s.any_empty || c.empty();
-    named = named || !c.empty();
   }
-  if (!s.numeric) {
-    for (const auto& c : cells) units = units && units_row_cell(c);
-    s.units = units && named;
-  }
+  if (!s.numeric) s.text = line;
   s.has_delimiter = delimiter != 0 && line.find(delimiter) != std::string::npos;
   s.has_comma = line.find(',') != std::string::npos;
   return s;
+}
+
+bool CsvLayoutFinder::units_row(const Shape& s, char delimiter) {
+  if (s.numeric) return false;
+  bool named = false;
+  for (const auto& c : split_cells(s.text, delimiter)) {
+    if (!units_row_cell(c)) return false;
+    named = named || !c.empty();
+  }
+  return named;
 }
 
 // A line after numeric rows of its width heads a table only if it holds names alone: with a number
@@ -63,7 +67,8 @@ void CsvLayoutFinder::Tracker::add(const Shape& s, bool first_only) {
       c.delimiter = delimiter;
       c.rows = 1;
       c.rows_before = numeric_rows;
-      if (two && prev1.units && !prev2.units && may_head(prev2, i - 2, first_only)) {
+      const bool units1 = units_row(prev1, delimiter), units2 = two && units_row(prev2, delimiter);
+      if (two && units1 && !units2 && may_head(prev2, i - 2, first_only)) {
         c.header = i - 2;
         c.header_line = prev2.line;
         c.units_row = true;
@@ -74,7 +79,7 @@ void CsvLayoutFinder::Tracker::add(const Shape& s, bool first_only) {
       } else if (may_head(prev1, i - 1, first_only)) {
         c.header = i - 1;
         c.header_line = prev1.line;
-        if (two && prev2.units && !prev1.units && !first_only) {
+        if (units2 && !units1 && !first_only) {
           c.units_row = true;
           c.units = i - 2;
           c.units_line = prev2.line;
@@ -94,7 +99,11 @@ void CsvLayoutFinder::Tracker::add(const Shape& s, bool first_only) {
 }
 
 void CsvLayoutFinder::add(const std::string& line, int file_line) {
-  for (auto& t : trackers_) t.add(shape(line, t.delimiter, file_line), first_only_);
+  // A line without a tracker's delimiter is one cell for it, as for the one-column reading (0).
+  const Shape whole = shape(line, 0, file_line);
+  for (auto& t : trackers_)
+    t.add(t.delimiter != 0 && line.find(t.delimiter) != std::string::npos ? shape(line, t.delimiter, file_line) : whole,
+          first_only_);
 }
 
 CsvLayout CsvLayoutFinder::result() const {
@@ -125,10 +134,13 @@ std::vector<std::string> split_cells(const std::string& line, char delimiter) {
     return c;
   };
   if (delimiter == 0) return {clean(line)};
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, delimiter)) out.push_back(clean(cell));
-  if (!line.empty() && line.back() == delimiter) out.push_back("");
+  for (std::size_t from = 0;;) {
+    const auto at = line.find(delimiter, from);
+    out.push_back(clean(line.substr(from, at == std::string::npos ? std::string::npos : at - from)));
+    if (at == std::string::npos) break;
+    from = at + 1;
+  }
+  if (line.empty()) out.clear();  // as getline: an empty line has no cell
   return out;
 }
 

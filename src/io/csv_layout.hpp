@@ -45,7 +45,7 @@ class CsvLayoutFinder {
     bool numeric = false;       // every cell a number
     bool any_number = false;    // some cell a number
     bool any_empty = false;     // some cell empty
-    bool units = false;         // every cell a unit or empty, at least one not empty
+    std::string text;           // the line, if not numeric: a units row is looked for only next to data
     bool has_delimiter = false;
     bool has_comma = false;
     int line = 0;
@@ -65,6 +65,8 @@ class CsvLayoutFinder {
     bool may_head(const Shape& h, std::size_t index, bool first_only) const;
   };
   static Shape shape(const std::string& line, char delimiter, int file_line);
+  // Every cell a unit or empty, at least one not empty (measurement_unit.hpp).
+  static bool units_row(const Shape& s, char delimiter);
 
   bool first_only_;
   std::array<Tracker, 4> trackers_{Tracker{'\t'}, Tracker{';'}, Tracker{','}, Tracker{0}};

@@ -19,6 +19,7 @@ std::string normalise(const std::string& in) {
   for (std::size_t i = 0; i < in.size();) {
     bool done = false;
     for (const auto& [from, to] : kUtf8) {
+      if (static_cast<unsigned char>(in[i]) < 0x80) break;
       const std::string f = from;
       if (in.compare(i, f.size(), f) == 0) {
         s += to;

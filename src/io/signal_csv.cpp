@@ -31,6 +31,7 @@ std::string column_list(const CsvTable& t) {
 
 // What the header and the units row say of one column.
 struct ColumnUnit {
+  std::string conflict;                    // the refusal when name and units row disagree
   NamedUnit named;
   std::string row;                         // the units row's cell ("" if none)
   std::optional<MeasurementUnit> row_unit;
@@ -45,10 +46,10 @@ ColumnUnit column_unit(const CsvTable& t, std::size_t c) {
     u.row_unit = parse_measurement_unit(u.row);
   }
   if (u.named.unit && u.row_unit && u.named.unit->text != u.row_unit->text)
-    throw data_error(t.file + ":" + std::to_string(t.units_line) + ": column '" + clip(t.columns[c]) + "' is in " +
-                     u.named.unit->text + " by its name but in " + u.row_unit->text +
-                     " by the units row; allowed: one unit per column (--unit UNIT says a channel's, --fs HZ "
-                     "overrides a time column)");
+    u.conflict = t.file + ":" + std::to_string(t.units_line) + ": column '" + clip(t.columns[c]) + "' is in " +
+                 u.named.unit->text + " by its name but in " + u.row_unit->text +
+                 " by the units row; allowed: one unit per column (--unit UNIT says a channel's, --fs HZ "
+                 "overrides a time column)";
   const auto is_time = [](const std::optional<MeasurementUnit>& m) { return m && m->quantity == Quantity::time; };
   const bool named_time = time_like_name(u.named, t.columns[c]);
   if (named_time && !u.named.unit && !u.row_unit && u.named.written.empty()) u.seconds = 1.0;
@@ -162,6 +163,7 @@ void check_other_time_columns(SignalTable& s, const CsvTable& t, const std::vect
 
 ChannelUnit channel_unit(const CsvTable& t, const ColumnUnit& u) {
   ChannelUnit ch;
+  ch.conflict = u.conflict;
   // A time unit after '_' (`acc_s`) may be part of a name; a time unit in brackets or a units row is one.
   const bool named = u.named.unit && (u.named.bracketed || u.named.unit->quantity != Quantity::time);
   const auto& unit = named ? u.named.unit : u.row_unit;
@@ -190,6 +192,7 @@ SignalTable read_csv_signal(const std::string& path, const SignalRequest& r) {
   const auto times = time_columns(t, units, r.time_column);
   const std::size_t time = times.empty() ? t.columns.size() : times.front();
   if (!times.empty()) {
+    if (!units[time].conflict.empty() && r.fs <= 0.0) throw data_error(units[time].conflict);
     s.time_column = t.columns[time];
     s.time_samples = t.rows();
     double seconds = units[time].seconds;

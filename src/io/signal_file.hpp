@@ -27,6 +27,7 @@ struct ChannelUnit {
   double factor = 0.0;  // m/s² per unit (9.80665 for g); 0: no unit found, or no acceleration
   UnitOrigin origin = UnitOrigin::none;
   std::string where;    // for messages: "its name", "the units row (line 3)", "--unit", "assumed"
+  std::string conflict;  // readers: name and units row disagree (the refusal, unless --unit decides)
 };
 
 struct SignalTable {

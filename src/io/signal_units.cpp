@@ -23,7 +23,7 @@ std::vector<ChannelUnit> option_units(const std::string& units) {
     if (!u || u->quantity != Quantity::acceleration)
       throw usage_error("--unit " + clip(units) + (one == units ? "" : ": '" + clip(one) + "'") +
                         ": allowed: " + kSignalUnits);
-    out.push_back(ChannelUnit{u->text, one, u->factor, UnitOrigin::option, "--unit"});
+    out.push_back(ChannelUnit{u->text, one, u->factor, UnitOrigin::option, "--unit", ""});
     if (comma == std::string::npos) return out;
     from = comma + 1;
   }
@@ -87,6 +87,7 @@ std::vector<ChannelUnit> choose_units(const SignalTable& s, const std::vector<st
   for (std::size_t k = 0; k < picked.size(); ++k) {
     const std::string& name = s.channels[picked[k]];
     const ChannelUnit f = file_unit(s, picked[k]);
+    if (option.empty() && !f.conflict.empty()) throw data_error(f.conflict);
     if (!option.empty()) {
       out.push_back(option[option.size() == 1 ? 0 : k]);
       const auto& u = out.back();
@@ -104,7 +105,7 @@ std::vector<ChannelUnit> choose_units(const SignalTable& s, const std::vector<st
                        ", not an acceleration; allowed: channels in " + kAccelerationUnits +
                        " (pick them with --column), or --unit UNIT if its values are accelerations after all");
     } else {
-      out.push_back(ChannelUnit{"m/s^2", "", 1.0, UnitOrigin::assumed, "assumed"});
+      out.push_back(ChannelUnit{"m/s^2", "", 1.0, UnitOrigin::assumed, "assumed", ""});
       add_note(groups, assumption(s, r), name);
     }
   }
