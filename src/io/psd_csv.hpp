@@ -53,7 +53,7 @@ struct PsdCsvMetadata {
 std::string psd_sidecar_path(const std::string& csv_path);
 
 // Header titles of the PSD columns of these channels: the channel without its unit, then
-// " [(m/s^2)^2/Hz]"; ',', ';', tab and '"' become '_'; where two would be equal, the whole channel names.
+// " [(m/s^2)^2/Hz]"; ',', ';', tab, '"' and '#' become '_'; where two would be equal, the whole channel names.
 std::vector<std::string> psd_column_titles(const std::vector<std::string>& channels);
 
 // The sidecar's JSON for the CSV text `csv` written at a path whose file name is `csv_name`.
@@ -76,7 +76,7 @@ bool psd_csv_written_by_rollspec(const std::string& csv_path);
 
 // Writes the CSV and its sidecar, each to a temporary file renamed into place; an existing CSV or
 // sidecar is replaced only if rollspec wrote it (above; a sidecar: rollspec's JSON), or with `force`
-// (output_target.hpp for what is never replaced). `json` makes the sidecar from the CSV's file name.
+// (output_target.hpp for what is never replaced).
 void write_psd_csv(const std::string& out, bool force, const std::vector<std::string>& inputs, const std::string& csv,
                    const PsdCsvMetadata& m, const std::vector<PsdColumnMetadata>& columns);
 

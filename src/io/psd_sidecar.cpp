@@ -16,9 +16,10 @@ using Json = nlohmann::ordered_json;
 constexpr const char* kKind = "rollspec-psd-csv";
 constexpr const char* kMarker = "# rollspec-psd-csv";
 
+// No delimiter or quote in a title, and no '#', where numpy.genfromtxt's header would end.
 std::string clean_title(std::string s) {
   for (char& c : s)
-    if (c == ',' || c == ';' || c == '\t' || c == '"') c = '_';
+    if (c == ',' || c == ';' || c == '\t' || c == '"' || c == '#') c = '_';
   return s;
 }
 
