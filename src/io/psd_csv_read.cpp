@@ -85,7 +85,7 @@ std::size_t pick_column(const CsvTable& m, std::size_t fc, const std::string& co
   for (const auto c : psd_columns)
     if (m.columns[c] == "psd") return c;
   bool stated = !psd_columns.empty();
-  for (const auto c : psd_columns) stated = stated && split_title(m.columns[c]).unit.has_value();
+  for (const auto c : psd_columns) stated = stated && split_title(m.columns[c]).states_unit;
   if (psd_columns.size() == 1 && (rollspec_output || stated)) {
     out.notes.push_back(m.file + ": the PSD is column '" + clip(m.columns[psd_columns[0]]) +
                         "', the only one besides frequency_hz (--column NAME picks another)");
