@@ -13,15 +13,15 @@
 namespace rollspec::io {
 
 struct CsvLayout {
-  bool found = false;            // false: no line is followed by numeric rows of its own width
-  std::size_t header = 0;        // index of the header among the lines given
-  int header_line = 0;           // its line in the file
-  bool units_row = false;        // a units row of the header's width next to it (above or below)
-  std::size_t units = 0;         // its index among the lines given
-  int units_line = 0;            // its line in the file
-  char delimiter = ',';          // ',', ';', '\t', or 0: one column, nothing to split
-  std::size_t rows = 0;          // numeric rows of the header's width that follow it
-  std::size_t rows_before = 0;   // numeric rows before the header (a table in the preamble)
+  bool found = false;           // false: no line is followed by numeric rows of its own width
+  std::size_t header = 0;       // index of the header among the lines given
+  int header_line = 0;          // its line in the file
+  bool units_row = false;       // a units row of the header's width next to it (above or below)
+  std::size_t units = 0;        // its index among the lines given
+  int units_line = 0;           // its line in the file
+  char delimiter = ',';         // ',', ';', '\t', or 0: one column, nothing to split
+  std::size_t rows = 0;         // numeric rows of the header's width that follow it
+  std::size_t rows_before = 0;  // numeric rows before the header (a table in the preamble)
 };
 
 // Fed the lines (non-blank, non-comment, in file order) from the start of the data or after --skip-rows,
@@ -42,10 +42,10 @@ class CsvLayoutFinder {
  private:
   struct Shape {
     std::size_t cells = 0;
-    bool numeric = false;       // every cell a number
-    bool any_number = false;    // some cell a number
-    bool any_empty = false;     // some cell empty
-    std::string text;           // the line, if not numeric: a units row is looked for only next to data
+    bool numeric = false;     // every cell a number
+    bool any_number = false;  // some cell a number
+    bool any_empty = false;   // some cell empty
+    std::string text;         // the line, if not numeric: a units row is looked for only next to data
     bool has_delimiter = false;
     bool has_comma = false;
     int line = 0;

@@ -237,8 +237,10 @@ CsvTable read_csv(const std::string& path, const CsvReadOptions& options) {
     t.layout_found = true;
     t.preamble_rows = layout.rows_before;
     while (reader.line() < layout.header_line) {
-      if (reader.line() == layout.units_line) t.units = split_cells(line, t.delimiter);
-      else ++t.preamble_lines;
+      if (reader.line() == layout.units_line)
+        t.units = split_cells(line, t.delimiter);
+      else
+        ++t.preamble_lines;
       reader.next(line);
     }
   }

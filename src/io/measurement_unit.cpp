@@ -12,8 +12,8 @@ namespace {
 // a Windows export writes) to ASCII; blanks, '*', '^' and '.' dropped; lower case.
 std::string normalise(const std::string& in) {
   static const std::pair<const char*, const char*> kUtf8[] = {
-      {"\xC2\xB2", "2"},     {"\xC2\xB3", "3"},     {"\xC2\xB5", "u"},     {"\xCE\xBC", "u"},
-      {"\xE2\x81\xBB", "-"}, {"\xE2\x88\x92", "-"}, {"\xC2\xB7", "*"},     {"\xE2\x8B\x85", "*"},
+      {"\xC2\xB2", "2"},     {"\xC2\xB3", "3"},     {"\xC2\xB5", "u"},       {"\xCE\xBC", "u"},
+      {"\xE2\x81\xBB", "-"}, {"\xE2\x88\x92", "-"}, {"\xC2\xB7", "*"},       {"\xE2\x8B\x85", "*"},
       {"\xE2\x80\xA2", "*"}, {"\xC2\xB0", "deg"},   {"\xE2\x84\x83", "degc"}};
   std::string s;
   for (std::size_t i = 0; i < in.size();) {
@@ -30,11 +30,16 @@ std::string normalise(const std::string& in) {
     }
     if (done) continue;
     const auto c = static_cast<unsigned char>(in[i++]);
-    if (c == 0xB2) s += '2';
-    else if (c == 0xB3) s += '3';
-    else if (c == 0xB5) s += 'u';
-    else if (c == 0xB7) s += '*';
-    else if (c == 0xB0) s += "deg";
+    if (c == 0xB2)
+      s += '2';
+    else if (c == 0xB3)
+      s += '3';
+    else if (c == 0xB5)
+      s += 'u';
+    else if (c == 0xB7)
+      s += '*';
+    else if (c == 0xB0)
+      s += "deg";
     else if (c != ' ' && c != '\t' && c != '*' && c != '^' && c != '.')
       s += static_cast<char>(std::tolower(c));
   }
@@ -44,9 +49,8 @@ std::string normalise(const std::string& in) {
 std::optional<MeasurementUnit> acceleration(const std::string& s) {
   if (s == "g" || s == "gn") return MeasurementUnit{"g", Quantity::acceleration, 9.80665};
   if (s == "ms2" || s == "mps2") return MeasurementUnit{"m/s^2", Quantity::acceleration, 1.0};
-  static const std::pair<const char*, double> kLength[] = {{"m", 1.0},    {"cm", 1e-2},      {"mm", 1e-3},
-                                                           {"um", 1e-6},  {"in", 0.0254},    {"inch", 0.0254},
-                                                           {"ft", 0.3048}};
+  static const std::pair<const char*, double> kLength[] = {
+      {"m", 1.0}, {"cm", 1e-2}, {"mm", 1e-3}, {"um", 1e-6}, {"in", 0.0254}, {"inch", 0.0254}, {"ft", 0.3048}};
   for (const auto& [length, metres] : kLength) {
     const std::string l = length;
     if (s.compare(0, l.size(), l) != 0) continue;
@@ -58,11 +62,21 @@ std::optional<MeasurementUnit> acceleration(const std::string& s) {
 }
 
 std::optional<MeasurementUnit> time_unit(const std::string& s) {
-  static const std::pair<const char*, std::pair<const char*, double>> kTime[] = {
-      {"s", {"s", 1.0}},          {"sec", {"s", 1.0}},      {"secs", {"s", 1.0}},       {"second", {"s", 1.0}},
-      {"seconds", {"s", 1.0}},    {"ms", {"ms", 1e-3}},     {"msec", {"ms", 1e-3}},     {"millisecond", {"ms", 1e-3}},
-      {"milliseconds", {"ms", 1e-3}}, {"us", {"us", 1e-6}}, {"usec", {"us", 1e-6}},     {"microsecond", {"us", 1e-6}},
-      {"microseconds", {"us", 1e-6}}, {"ns", {"ns", 1e-9}}, {"nsec", {"ns", 1e-9}}};
+  static const std::pair<const char*, std::pair<const char*, double>> kTime[] = {{"s", {"s", 1.0}},
+                                                                                 {"sec", {"s", 1.0}},
+                                                                                 {"secs", {"s", 1.0}},
+                                                                                 {"second", {"s", 1.0}},
+                                                                                 {"seconds", {"s", 1.0}},
+                                                                                 {"ms", {"ms", 1e-3}},
+                                                                                 {"msec", {"ms", 1e-3}},
+                                                                                 {"millisecond", {"ms", 1e-3}},
+                                                                                 {"milliseconds", {"ms", 1e-3}},
+                                                                                 {"us", {"us", 1e-6}},
+                                                                                 {"usec", {"us", 1e-6}},
+                                                                                 {"microsecond", {"us", 1e-6}},
+                                                                                 {"microseconds", {"us", 1e-6}},
+                                                                                 {"ns", {"ns", 1e-9}},
+                                                                                 {"nsec", {"ns", 1e-9}}};
   for (const auto& [spelling, unit] : kTime)
     if (s == spelling) return MeasurementUnit{unit.first, Quantity::time, unit.second};
   return std::nullopt;
@@ -70,9 +84,9 @@ std::optional<MeasurementUnit> time_unit(const std::string& s) {
 
 // Units that are known to be no acceleration: a channel in one of them is not read as one in silence.
 bool other_unit(const std::string& s) {
-  for (const char* u : {"v",    "mv",   "uv",   "kv",  "n",    "kn",   "nm",   "pa",   "kpa", "mpa",  "bar", "mbar",
-                        "hz",   "khz",  "degc", "degf", "%",    "-",    "1",    "rpm",  "a",   "ma",   "m",   "cm",
-                        "mm",   "um",   "in",   "ft",   "m/s",  "cm/s", "mm/s", "um/s", "in/s", "db", "counts", "w"})
+  for (const char* u : {"v",  "mv",  "uv",   "kv",   "n",   "kn",   "nm",   "pa",   "kpa",  "mpa", "bar",    "mbar",
+                        "hz", "khz", "degc", "degf", "%",   "-",    "1",    "rpm",  "a",    "ma",  "m",      "cm",
+                        "mm", "um",  "in",   "ft",   "m/s", "cm/s", "mm/s", "um/s", "in/s", "db",  "counts", "w"})
     if (s == u) return true;
   return false;
 }
@@ -174,7 +188,8 @@ bool units_row_cell(const std::string& cell) {
 bool time_like_name(const NamedUnit& n, const std::string& name) {
   std::string b;
   for (const char c : n.base)
-    if (!std::isspace(static_cast<unsigned char>(c))) b += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!std::isspace(static_cast<unsigned char>(c)))
+      b += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   // A bare capital T is a temperature or a tension as often as a time: only with a unit.
   if (trim(name) == "T") return false;
   for (const char* t : {"t", "time", "zeit", "temps", "tiempo", "tempo", "tijd", "tid"})

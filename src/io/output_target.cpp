@@ -88,8 +88,8 @@ std::string check_output_target(const OutputTarget& t) {
                         "'); refusing to overwrite an input; choose another " + t.option);
   }
   if (t.check_kind && !same_kind(out, t.kind) && !t.force && !(t.replace_damaged_hdf5 && is_damaged_hdf5(out)))
-    throw cannot_create("output file '" + out + "' (" + t.option + ") exists and is not " + kind_description(t.kind, out) +
-                        "; refusing to replace it; choose another " + t.option +
+    throw cannot_create("output file '" + out + "' (" + t.option + ") exists and is not " +
+                        kind_description(t.kind, out) + "; refusing to replace it; choose another " + t.option +
                         (t.option.rfind("--", 0) == 0 ? ", or add --force to replace it" : ""));
   const std::string target = link ? fs::canonical(out, ec).string() : out;
   if (ec) throw cannot_create("cannot resolve the symbolic link '" + out + "': " + ec.message());

@@ -18,7 +18,7 @@
 
 namespace rollspec::io {
 
-constexpr const char* kPsdUnit = "(m/s^2)^2/Hz";  // what rollspec psd writes, and compare expects
+constexpr const char* kPsdUnit = "(m/s^2)^2/Hz";                   // what rollspec psd writes, and compare expects
 constexpr const char* kPsdMetadataKind = "rollspec-psd-metadata";  // OutputTarget kind of the sidecar
 
 // One PSD column as the sidecar records it.
@@ -32,21 +32,21 @@ struct PsdColumnMetadata {
 
 // A PSD CSV's metadata (the sidecar's), and of the column read from it (read_psd_csv).
 struct PsdCsvMetadata {
-  std::string unit = kPsdUnit;   // PSD unit
-  double sample_rate = 0.0;      // Hz
-  std::string rate_source;       // "time column 'time_s'", "--fs", "the file header"
-  std::size_t segment = 0;       // Welch segment, samples
-  std::size_t overlap = 0;       // samples
-  std::string window;            // "hann" or "rect"
-  std::string detrend;           // "mean" (each segment's mean removed)
-  std::size_t samples = 0;       // samples per channel
-  std::size_t segments = 0;      // segments averaged
-  double edof = 0.0;             // equivalent degrees of freedom of the Welch mean (D-16)
-  double scale = 1.0;            // --scale
-  std::string source;            // the signal file, as given to psd
-  std::string source_hash;       // its SHA-256 (hex)
-  std::string version;           // rollspec version and git sha that wrote it
-  PsdColumnMetadata column;      // read_psd_csv: the column read; empty when the sidecar has no entry for it
+  std::string unit = kPsdUnit;  // PSD unit
+  double sample_rate = 0.0;     // Hz
+  std::string rate_source;      // "time column 'time_s'", "--fs", "the file header"
+  std::size_t segment = 0;      // Welch segment, samples
+  std::size_t overlap = 0;      // samples
+  std::string window;           // "hann" or "rect"
+  std::string detrend;          // "mean" (each segment's mean removed)
+  std::size_t samples = 0;      // samples per channel
+  std::size_t segments = 0;     // segments averaged
+  double edof = 0.0;            // equivalent degrees of freedom of the Welch mean (D-16)
+  double scale = 1.0;           // --scale
+  std::string source;           // the signal file, as given to psd
+  std::string source_hash;      // its SHA-256 (hex)
+  std::string version;          // rollspec version and git sha that wrote it
+  PsdColumnMetadata column;     // read_psd_csv: the column read; empty when the sidecar has no entry for it
 };
 
 // "<csv>-metadata.json".
@@ -83,11 +83,11 @@ void write_psd_csv(const std::string& out, bool force, const std::vector<std::st
 // A measured PSD: frequency_hz and one PSD column of a CSV, as rollspec psd writes it (either format)
 // or a spreadsheet export (preamble lines, ';', decimal comma, --skip-rows, a units row).
 struct PsdCsv {
-  std::vector<double> frequency, psd;     // Hz, and (m/s^2)^2/Hz (converted from a g^2/Hz title)
-  std::string column;                     // the header title of the column read
+  std::vector<double> frequency, psd;      // Hz, and (m/s^2)^2/Hz (converted from a g^2/Hz title)
+  std::string column;                      // the header title of the column read
   std::optional<PsdCsvMetadata> metadata;  // from the sidecar, only when it records this CSV's SHA-256
-  bool rollspec_output = false;           // the sidecar (verified) or the marker line says psd wrote it
-  std::vector<std::string> notes;         // choices made (preamble, column, unit, sidecar ignored), one line each
+  bool rollspec_output = false;            // the sidecar (verified) or the marker line says psd wrote it
+  std::vector<std::string> notes;          // choices made (preamble, column, unit, sidecar ignored), one line each
 };
 
 // `column`: a header title, a title without its unit ("Acc" for "Acc [(m/s^2)^2/Hz]") or the sidecar's

@@ -72,12 +72,13 @@ std::size_t pick_column(const CsvTable& m, std::size_t fc, const std::string& co
     for (const auto c : psd_columns) {
       bool same = split_title(m.columns[c]).base == column;
       if (side)
-        for (const auto& s : side->columns) same = same || (s.title == m.columns[c] && (s.channel == column || s.name == column));
+        for (const auto& s : side->columns)
+          same = same || (s.title == m.columns[c] && (s.channel == column || s.name == column));
       if (same) match.push_back(c);
     }
     if (match.size() > 1)
-      throw usage_error("--column " + clip(column) + ": names " + std::to_string(match.size()) + " columns of " + m.file +
-                        " (" + list(m, match) + "); allowed: one of these titles");
+      throw usage_error("--column " + clip(column) + ": names " + std::to_string(match.size()) + " columns of " +
+                        m.file + " (" + list(m, match) + "); allowed: one of these titles");
     if (match.empty()) return m.column_index(column);  // the error naming the columns found
     out.notes.push_back(m.file + ": --column " + column + " is the column '" + m.columns[match[0]] + "'");
     return match[0];
@@ -112,7 +113,8 @@ PsdCsv read_psd_csv(const std::string& path, const std::string& column, long lon
   const CsvTable m = read_csv(path, options);
   PsdCsv out;
   if (m.preamble_lines > 0)
-    out.notes.push_back(path + ": skipped " + counted(static_cast<unsigned long long>(m.preamble_lines), "preamble line") +
+    out.notes.push_back(path + ": skipped " +
+                        counted(static_cast<unsigned long long>(m.preamble_lines), "preamble line") +
                         " before the header '" + clip(m.header_text) + "' (line " + std::to_string(m.header_line) +
                         "; --skip-rows N says where it is)");
   std::optional<PsdSidecar> side;

@@ -59,8 +59,9 @@ void write_psd_csv(const std::string& out, bool force, const std::vector<std::st
   for (std::size_t i = 0; i < files.size(); ++i) {
     std::error_code ec;
     std::filesystem::rename(files[i].tmp, files[i].path, ec);
-    if (ec) fail({files.begin() + static_cast<std::ptrdiff_t>(i), files.end()},
-                 "cannot create output file '" + files[i].out + "': " + ec.message(), ec.value());
+    if (ec)
+      fail({files.begin() + static_cast<std::ptrdiff_t>(i), files.end()},
+           "cannot create output file '" + files[i].out + "': " + ec.message(), ec.value());
     unregister_temp(files[i].tmp);
   }
 }

@@ -29,8 +29,10 @@ std::string identifier(const std::string& s) {
   for (const char c : s) {
     const auto u = static_cast<unsigned char>(c);
     const bool keep = (u < 128 && std::isalnum(u)) || c == '_';
-    if (keep) out += c;
-    else if (!out.empty() && out.back() != '_') out += '_';
+    if (keep)
+      out += c;
+    else if (!out.empty() && out.back() != '_')
+      out += '_';
   }
   while (!out.empty() && out.back() == '_') out.pop_back();
   if (out.empty() || out.front() == '_') out = "c" + out;
@@ -69,7 +71,8 @@ std::vector<std::string> psd_column_titles(const std::vector<std::string>& chann
 std::string psd_sidecar_json(const PsdCsvMetadata& m, const std::vector<PsdColumnMetadata>& columns,
                              const std::string& csv_name, const std::string& csv) {
   Json cols = Json::array();
-  cols.push_back({{"name", "frequency_hz"}, {"titles", "frequency_hz"}, {"datatype", "double"}, {"rollspec:unit", "Hz"}});
+  cols.push_back(
+      {{"name", "frequency_hz"}, {"titles", "frequency_hz"}, {"datatype", "double"}, {"rollspec:unit", "Hz"}});
   std::set<std::string> names{"frequency_hz"};
   for (const auto& c : columns) {
     std::string name = identifier(c.name);

@@ -31,11 +31,11 @@ std::string column_list(const CsvTable& t) {
 
 // What the header and the units row say of one column.
 struct ColumnUnit {
-  std::string conflict;                    // the refusal when name and units row disagree
+  std::string conflict;  // the refusal when name and units row disagree
   NamedUnit named;
-  std::string row;                         // the units row's cell ("" if none)
+  std::string row;  // the units row's cell ("" if none)
   std::optional<MeasurementUnit> row_unit;
-  double seconds = 0.0;                    // > 0: a time column (auto), seconds per unit
+  double seconds = 0.0;  // > 0: a time column (auto), seconds per unit
 };
 
 ColumnUnit column_unit(const CsvTable& t, std::size_t c) {
@@ -52,9 +52,12 @@ ColumnUnit column_unit(const CsvTable& t, std::size_t c) {
                  "overrides a time column)";
   const auto is_time = [](const std::optional<MeasurementUnit>& m) { return m && m->quantity == Quantity::time; };
   const bool named_time = time_like_name(u.named, t.columns[c]);
-  if (named_time && !u.named.unit && !u.row_unit && u.named.written.empty()) u.seconds = 1.0;
-  else if ((named_time || u.named.bracketed) && is_time(u.named.unit)) u.seconds = u.named.unit->factor;
-  else if (!u.named.unit && is_time(u.row_unit)) u.seconds = u.row_unit->factor;
+  if (named_time && !u.named.unit && !u.row_unit && u.named.written.empty())
+    u.seconds = 1.0;
+  else if ((named_time || u.named.bracketed) && is_time(u.named.unit))
+    u.seconds = u.named.unit->factor;
+  else if (!u.named.unit && is_time(u.row_unit))
+    u.seconds = u.row_unit->factor;
   return u;
 }
 
@@ -111,8 +114,8 @@ void rate_from_column(SignalTable& s, const CsvTable& t, std::size_t time, doubl
   if (r.fs > 0.0) {
     std::string stamps;
     try {
-      stamps = "its stamps imply " + rate_text(rate_from_time_stamps(t.values[time], seconds, name, where, digits)) +
-               " Hz";
+      stamps =
+          "its stamps imply " + rate_text(rate_from_time_stamps(t.values[time], seconds, name, where, digits)) + " Hz";
     } catch (const UserError& e) {
       stamps = "its stamps are refused: " + std::string(e.what());
     }
@@ -141,9 +144,9 @@ void check_other_time_columns(SignalTable& s, const CsvTable& t, const std::vect
   for (const auto c : times) {
     std::string rate;
     try {
-      const double hz = rate_from_time_stamps(t.values[c], units[c].seconds, t.columns[c],
-                                              [&](std::size_t row) { return t.where(row); },
-                                              StampDigits{t.decimals[c], t.significant[c]});
+      const double hz = rate_from_time_stamps(
+          t.values[c], units[c].seconds, t.columns[c], [&](std::size_t row) { return t.where(row); },
+          StampDigits{t.decimals[c], t.significant[c]});
       rate = rate_text(hz) + " Hz";
       if (s.sample_rate > 0.0 && std::fabs(hz - s.sample_rate) > kRateTolerance * s.sample_rate) agree = false;
     } catch (const UserError& e) {

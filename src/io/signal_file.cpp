@@ -59,8 +59,10 @@ bool is_hdf5(const std::string& path) {
   if (filetype.rfind("rollspec-", 0) == 0)
     throw data_error(path + ": a rollspec file of filetype '" + clip(filetype) + "' (HDF5), not a measured signal" +
                      reads);
-  throw data_error(path + ": an HDF5 file, not a measured signal (a MATLAB v7.3 file starts with its 'MATLAB' "
-                   "header)" + reads);
+  throw data_error(path +
+                   ": an HDF5 file, not a measured signal (a MATLAB v7.3 file starts with its 'MATLAB' "
+                   "header)" +
+                   reads);
 }
 
 Family by_extension(const std::string& path) {

@@ -26,7 +26,7 @@ struct ChannelUnit {
   std::string written;  // as the file or --unit wrote it ("g", "m/s²", "[mm/s^2]"); "" if none
   double factor = 0.0;  // m/s² per unit (9.80665 for g); 0: no unit found, or no acceleration
   UnitOrigin origin = UnitOrigin::none;
-  std::string where;    // for messages: "its name", "the units row (line 3)", "--unit", "assumed"
+  std::string where;     // for messages: "its name", "the units row (line 3)", "--unit", "assumed"
   std::string conflict;  // readers: name and units row disagree (the refusal, unless --unit decides)
 };
 

@@ -101,7 +101,7 @@ std::vector<ChannelUnit> choose_units(const SignalTable& s, const std::vector<st
       out.push_back(f);
       add_note(groups, "read in " + f.text + per_unit(f) + " by " + f.where + "; --unit UNIT overrides it", name);
     } else if (f.origin != UnitOrigin::none) {
-      throw data_error(s.file + ": channel '" + clip(name) + "' is in " + clip(f.written) + " by " + f.where +
+      throw data_error(s.file + ": channel '" + clip(name) + "' is in " + clip(f.text) + " by " + f.where +
                        ", not an acceleration; allowed: channels in " + kAccelerationUnits +
                        " (pick them with --column), or --unit UNIT if its values are accelerations after all");
     } else {

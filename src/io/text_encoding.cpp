@@ -73,7 +73,8 @@ std::unique_ptr<std::istream> open_text(const std::string& path, std::string& en
   file->seekg(0);
   encoding.clear();
   const std::string resave = "; allowed: UTF-8 text (re-save the file as UTF-8, or as UTF-16 with a byte-order mark)";
-  if (head.compare(0, 4, std::string("\xFF\xFE\0\0", 4)) == 0 || head.compare(0, 4, std::string("\0\0\xFE\xFF", 4)) == 0)
+  if (head.compare(0, 4, std::string("\xFF\xFE\0\0", 4)) == 0 ||
+      head.compare(0, 4, std::string("\0\0\xFE\xFF", 4)) == 0)
     throw data_error(path + ": UTF-32 text" + resave);
   const bool le = head.compare(0, 2, "\xFF\xFE") == 0, be = head.compare(0, 2, "\xFE\xFF") == 0;
   if (!le && !be) {
@@ -83,8 +84,8 @@ std::unique_ptr<std::istream> open_text(const std::string& path, std::string& en
   encoding = le ? "UTF-16LE" : "UTF-16BE";
   const std::string bytes((std::istreambuf_iterator<char>(*file)), std::istreambuf_iterator<char>());
   if (bytes.size() % 2 != 0)
-    throw data_error(path + ": " + encoding + " text (byte-order mark) of an odd number of bytes: cut short or not UTF-16" +
-                     resave);
+    throw data_error(path + ": " + encoding +
+                     " text (byte-order mark) of an odd number of bytes: cut short or not UTF-16" + resave);
   return std::make_unique<std::istringstream>(utf16_to_utf8(bytes.substr(2), be));
 }
 

@@ -31,8 +31,9 @@ void refuse_irregular_coarse_steps(const std::vector<double>& t, double u, doubl
   std::vector<long long> k(t.size(), 0);
   for (std::size_t i = 1; i < t.size(); ++i) ++count[k[i] = std::llround((t[i] - t[i - 1]) / u)];
   if (count.size() <= 1) return;
-  const auto mode = std::max_element(count.begin(), count.end(),
-                                     [](const auto& a, const auto& b) { return a.second < b.second; })->first;
+  const auto mode = std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) {
+                      return a.second < b.second;
+                    })->first;
   std::size_t i = 1;
   while (k[i] == mode) ++i;
   throw data_error(where(i) + ": " + col + " steps by " + stamp_text(t[i] - t[i - 1]) + " (from " +
@@ -86,7 +87,8 @@ double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_un
   const auto rounding = [&](std::size_t i) { return digits.half_unit(t[i]); };
   const std::string rounding_note = digits.decimals >= 400 ? "" : ", or within the rounding of its printed digits";
   const double unit = 2.0 * std::max(digits.printed_half_unit(t[0]), digits.printed_half_unit(t[n - 1]));
-  if (unit > 0.0 && dt > 0.0 && dt < 2.0 * unit) refuse_irregular_coarse_steps(t, unit, dt, seconds_per_unit, col, where);
+  if (unit > 0.0 && dt > 0.0 && dt < 2.0 * unit)
+    refuse_irregular_coarse_steps(t, unit, dt, seconds_per_unit, col, where);
   for (std::size_t i = 1; i < n; ++i)
     if (!(t[i] > t[i - 1]) && !(dt > 0.0 && dt - (t[i] - t[i - 1]) <= rounding(i) + rounding(i - 1)))
       throw data_error(where(i) + ": " + col + " value " + stamp_text(t[i]) + " does not increase (previous stamp " +
