@@ -49,7 +49,7 @@ struct PsdCsvMetadata {
   PsdColumnMetadata column;     // read_psd_csv: the column read; empty when the sidecar has no entry for it
 };
 
-// "<csv>-metadata.json".
+// "<csv>-metadata.json", beside the file a symbolic link `csv_path` points to.
 std::string psd_sidecar_path(const std::string& csv_path);
 
 // Header titles of the PSD columns of these channels: the channel without its unit, then

@@ -46,11 +46,11 @@ void write_psd_csv(const std::string& out, bool force, const std::vector<std::st
   target.force = force;
   target.inputs = inputs;
   const std::string csv_path = check_output_target(target);
-  OutputTarget side{psd_sidecar_path(out), kPsdMetadataKind};
+  OutputTarget side{psd_sidecar_path(csv_path), kPsdMetadataKind};
   side.force = force;
   side.inputs = inputs;
   const std::string side_path = check_output_target(side);
-  const std::string name = std::filesystem::path(out).filename().string();
+  const std::string name = std::filesystem::path(csv_path).filename().string();
   std::vector<Pending> files;
   put(files, {out, csv_path, temp_name(csv_path)}, csv);
   put(files, {side.path, side_path, temp_name(side_path)}, psd_sidecar_json(m, columns, name, csv));

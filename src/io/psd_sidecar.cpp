@@ -51,7 +51,14 @@ T get(const Json& j, const char* key, T fallback) {
 }
 }  // namespace
 
-std::string psd_sidecar_path(const std::string& csv_path) { return csv_path + "-metadata.json"; }
+std::string psd_sidecar_path(const std::string& csv_path) {
+  // beside the file itself: a link to a PSD CSV shares its metadata
+  std::error_code ec;
+  const std::filesystem::path real = std::filesystem::is_symlink(csv_path, ec)
+                                         ? std::filesystem::canonical(csv_path, ec)
+                                         : std::filesystem::path(csv_path);
+  return (ec ? csv_path : real.string()) + "-metadata.json";
+}
 
 std::vector<std::string> psd_column_titles(const std::vector<std::string>& channels) {
   std::vector<std::string> bases;

@@ -108,6 +108,11 @@ def test_an_existing_output_is_replaced_only_if_psd_wrote_it_and_nobody_edited_i
     assert_refused(run(["psd", sig, "--segment", SEGMENT, "--out", other]), EX_CANTCREAT,
                    ["n.csv-metadata.json", "is not the metadata of a PSD written by rollspec psd", "--force"])
     assert not other.exists() and (tmp_path / "n.csv-metadata.json").read_text() == '{"mine": true}\n'
+    # through a link: the file it points to is replaced, its metadata beside it
+    (tmp_path / "link.csv").symlink_to("m.csv")
+    assert run(["psd", sig, "--segment", 512, "--out", tmp_path / "link.csv"]).returncode == 0
+    assert (tmp_path / "link.csv").is_symlink() and not (tmp_path / "link.csv-metadata.json").exists()
+    assert json.loads(side.read_text())["rollspec:segment"] == 512
     assert not list(tmp_path.glob("*.tmp-*"))
 
 
