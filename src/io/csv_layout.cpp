@@ -27,12 +27,12 @@ CsvLayoutFinder::Shape CsvLayoutFinder::shape(const std::string& line, char deli
 
 bool CsvLayoutFinder::units_row(const Shape& s, char delimiter) {
   if (s.numeric) return false;
-  bool named = false;
+  bool known = false;  // a section line such as "[Data]" is bracketed, but no unit
   for (const auto& c : split_cells(s.text, delimiter)) {
     if (!units_row_cell(c)) return false;
-    named = named || !c.empty();
+    known = known || parse_measurement_unit(c).has_value();
   }
-  return named;
+  return known;
 }
 
 // A line after numeric rows of its width heads a table only if it holds names alone: with a number

@@ -27,8 +27,8 @@ struct CsvLayout {
 // Fed the lines (non-blank, non-comment, in file order) from the start of the data or after --skip-rows,
 // one at a time, so that the whole file is looked at without being held. The header is the non-numeric
 // line followed by the longest run of numeric rows of its width (the earliest on ties; only the first
-// line if `first_only`), with a units row (every cell a unit, bracketed or empty) between them or just
-// above it. A line after numeric rows of its width is a bad data row, never a header, if any of its
+// line if `first_only`), with a units row (every cell a unit, bracketed or empty, one at least a known
+// unit) between them or just above it. A line after numeric rows of its width is a bad data row, never a header, if any of its
 // cells is a number; a line of names there heads a second, longer table (a table in the preamble).
 // The delimiter is the one whose header explains the most rows: tab, ';' and ',' in that order on
 // ties, each only if the header holds it; one column with a decimal comma only if it explains strictly
@@ -65,7 +65,7 @@ class CsvLayoutFinder {
     bool may_head(const Shape& h, std::size_t index, bool first_only) const;
   };
   static Shape shape(const std::string& line, char delimiter, int file_line);
-  // Every cell a unit or empty, at least one not empty (measurement_unit.hpp).
+  // Every cell a unit, bracketed or empty, and at least one a unit of measurement_unit.hpp's list.
   static bool units_row(const Shape& s, char delimiter);
 
   bool first_only_;

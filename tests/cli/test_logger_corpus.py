@@ -178,6 +178,8 @@ def special():
                preamble=("Calibration", "f_hz,sens") + tuple(f"{10 + i},{1 + i / 1e4:.4f}" for i in range(1500))),
         Export("bare-t-temperature", [Channel("T", "m/s^2", "b", said="taken as"), Channel("acc (g)", "g", "a")],
                ("time_us", 1e-6, 0, ""), delimiter=";"),
+        Export("ini-sections", [Channel("acc", "m/s^2", "a", said="taken as")], ("Time [s]", 1.0, 3, ""),
+               preamble=("[Header]", "Device=XY-3", "[Data]"), delimiter="\t"),
         Export("crlf-quoted-bom", [Channel("Accel X (g)", "g", "a"), Channel("Accel Y (g)", "g", "b")],
                ("Time [s]", 1.0, 3, ""), encoding="utf-8-sig", crlf=True, quote=True, delimiter=";", comma=True),
     ]
