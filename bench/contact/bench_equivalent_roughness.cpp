@@ -20,7 +20,7 @@
 //              against G_eq, and the mean contact area over the flat one
 //
 // Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] [ER_CELL=2e-6 (seed002 cell, m)] [ER_CHUNK=0 (positions per
-// parallel chunk)] [ER_DUMP=file (position,approach,h_eq per line)] bench_equivalent_roughness [small | departure |
+// parallel chunk)] [ER_DUMP=file (CSV: position_m,approach_m,height_m)] bench_equivalent_roughness [small | departure |
 // isotropic | seed002 [length_m] [window_half_width_in_a]]
 #include <chrono>
 #include <cmath>
@@ -81,9 +81,12 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
     plastic += r.plastic_cells[k];
   }
   const double n = static_cast<double>(x.size());
-  if (const char* dump = std::getenv("ER_DUMP")) {  // position, δ_eq, h_eq per line (%.17g: old/new paths compared)
+  // position, δ_eq, h_eq per line (%.17g: old/new paths compared), a CSV standard readers load as it is;
+  // the smooth approach, one number, on stderr
+  if (const char* dump = std::getenv("ER_DUMP")) {
     if (FILE* f = std::fopen(dump, "w")) {
-      std::fprintf(f, "# smooth_approach %.17g\n", r.smooth_approach);
+      std::fprintf(stderr, "%s: smooth_approach %.17g m\n", dump, r.smooth_approach);
+      std::fprintf(f, "position_m,approach_m,height_m\n");
       for (std::size_t k = 0; k < x.size(); ++k)
         std::fprintf(f, "%.17g,%.17g,%.17g\n", x[k], r.approach[k], r.height[k]);
       std::fclose(f);

@@ -1,9 +1,10 @@
-"""Measured PSDs drawn by `panels` beside results: the CSV `rollspec psd` writes (a first line
-`# rollspec-psd-csv: ...`, then `frequency_hz,<channel>,...`) or a plain measurement CSV (a frequency
-column, then PSD columns), read by the rule of rollspec's CSV reader (measurement._read_table)."""
+"""Measured PSDs drawn by `panels` beside results: the CSV `rollspec psd` writes
+(`frequency_hz,<channel> [(m/s^2)^2/Hz],...`, with its metadata in `<csv>-metadata.json`; older files start
+with a line `# rollspec-psd-csv: ...`) or a plain measurement CSV (a frequency column, then PSD columns),
+read by the rule of rollspec's CSV reader (measurement._read_table)."""
 import numpy as np
 
-from .measurement import _read_table
+from .measurement import _read_table, psd_column, psd_values, split_title
 from .result_file import EX_DATAERR, PostError
 
 HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
@@ -20,17 +21,19 @@ def is_hdf5(path):
 
 
 def pick_column(path, header, column):
-    """The PSD column: `column`, else `psd`, else the only one beside the frequency."""
+    """The PSD column: `column` (a title, or a title without its unit), else `psd`, else the only one beside
+    the frequency."""
     others = header[1:] if "frequency_hz" not in header else [h for h in header if h != "frequency_hz"]
     if column is not None:
-        if column not in others:
+        if column in others:
+            return column
+        named = [h for h in others if split_title(h)[0] == column]
+        if len(named) != 1:
             raise PostError(f"{path}: no PSD column {column!r}; columns: {', '.join(others)}", EX_DATAERR)
-        return column
-    if "psd" in others:
-        return "psd"
-    if len(others) == 1:
-        return others[0]
-    raise PostError(f"{path}: {len(others)} PSD columns ({', '.join(others)}); name one with --column", EX_DATAERR)
+        return named[0]
+    if "psd" in others or len(others) == 1:
+        return "psd" if "psd" in others else others[0]
+    return psd_column(path, header, None, others)  # the error naming --column and the channels
 
 
 def read_panel_csv(path, column=None):
@@ -40,7 +43,7 @@ def read_panel_csv(path, column=None):
         raise PostError(f"{path}: needs a frequency column and a PSD column; found {', '.join(header)}", EX_DATAERR)
     name = pick_column(path, header, column)
     f = data[:, header.index("frequency_hz") if "frequency_hz" in header else 0]
-    p = data[:, header.index(name)]
+    p = psd_values(path, name, data[:, header.index(name)])
     if not (np.all(np.isfinite(f)) and np.all(np.isfinite(p))):
         raise PostError(f"{path}: values must be finite numbers", EX_DATAERR)
     if np.any(np.diff(f) <= 0):

@@ -56,7 +56,7 @@ def test_panels_command_and_its_errors(tmp_path):
 
 
 def test_panels_draw_measured_csvs_beside_results(tmp_path):
-    """The CSV `rollspec psd` writes (marker line, frequency_hz, one column per channel) and a plain
+    """The CSV `rollspec psd` writes (frequency_hz, one column per channel titled with its unit) and a plain
     measurement CSV (frequency column, PSD column) are curves too, drawn as they are, labelled as given."""
     from rollspec_post.panels_plot import STYLES, plot_panels
     a = rig(tmp_path, "a")
@@ -68,11 +68,11 @@ def test_panels_draw_measured_csvs_beside_results(tmp_path):
     both = tmp_path / "both.csv"
     r = subprocess.run([BIN, "psd", signal, "--out", both], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    assert both.read_text().startswith("# rollspec-psd-csv:")
+    assert both.read_text().startswith("frequency_hz,acc_a [(m/s^2)^2/Hz],acc_b [(m/s^2)^2/Hz]\n")
     one = tmp_path / "one.csv"
     r = subprocess.run([BIN, "psd", signal, "--column", "acc_b", "--out", one], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    table = np.loadtxt(one, delimiter=",", skiprows=2)
+    table = np.loadtxt(one, delimiter=",", skiprows=1)
     plain = tmp_path / "plain.csv"
     plain.write_text("f;G\n" + "".join(f"{f:.17g};{g:.17g}\n".replace(".", ",") for f, g in table[1:]))
     drawn = plot_panels([("rig", [(one, "measured"), (a, "model")]), ("plain", [(plain, "export")])],

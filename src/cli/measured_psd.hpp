@@ -1,18 +1,23 @@
 #pragma once
-// A measured PSD as compare and fit read it (frequency_hz and a one-sided PSD column).
+// A measured PSD as compare and fit read it (frequency_hz and a one-sided PSD column), through
+// io::read_psd_csv (src/io/psd_csv.hpp), with its notes said on stderr.
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "src/io/psd_csv.hpp"
 
 namespace rollspec::cli {
 
 struct Measurement {
   std::vector<double> frequency, psd;
+  std::optional<io::PsdCsvMetadata> metadata;  // rollspec psd's sidecar, when it records this CSV's SHA-256
 };
 
 // A spreadsheet export of a measured PSD: preamble lines before the header skipped (and said), or
 // --skip-rows; delimiter and decimal comma as `rollspec psd` reads a signal. Without --column the PSD
-// is `psd`, else, in a `rollspec psd` output (its first line states the PSD unit), the only column
-// besides frequency_hz (named after the channel), said on stderr; `column` is set to the one read.
+// is `psd`, else, in a `rollspec psd` output, the only PSD column (said on stderr); several and no
+// --column: refused naming --column and the columns. `column` is set to the title read.
 Measurement read_measurement(const std::string& path, std::string& column, long long skip_rows,
                              const std::string& command);
 

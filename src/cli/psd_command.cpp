@@ -16,37 +16,46 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
+#include "src/io/psd_csv.hpp"
 #include "src/io/signal_file.hpp"
-#include "src/io/output_target.hpp"
-#include "src/io/temp_files.hpp"
+#include "src/version.hpp"
 
 namespace rollspec::cli {
 
 namespace {
 const char* const kPsdUsage =
-    "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit m/s2|g] [--scale X] [--segment N]\n"
-    "                    [--overlap F] [--window hann|rect] [--time-column NAME|none] [--skip-rows N] [--out "
-    "FILE.csv]\n"
-    "                    [--quiet]\n"
+    "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit UNIT] [--scale X] [--segment N]\n"
+    "                    [--overlap F] [--window hann|rect] [--time-column NAME|none] [--skip-rows N]\n"
+    "                    [--out FILE.csv] [--force] [--quiet]\n"
     "\n"
     "One-sided Welch PSD of each channel of a measured signal, in (m/s^2)^2/Hz: segments mean-detrended and\n"
-    "windowed, density scaling. Output CSV: the line '# rollspec-psd-csv: ...' (the PSD unit; rollspec\n"
-    "replaces an existing --out only if it starts so), then frequency_hz,<channel>,... (to stdout without\n"
-    "--out; a ',', ';', tab or '\"' in a channel name is written as '_').\n"
+    "windowed, density scaling. Output: a CSV that pandas.read_csv and numpy.genfromtxt(names=True) read\n"
+    "as it is, frequency_hz,<channel> [(m/s^2)^2/Hz],... (the channel without its own unit: 'Acc (g)' gives\n"
+    "'Acc [(m/s^2)^2/Hz]'; ',', ';', tab, '\"' and '#' in a name become '_'); to stdout without --out. With\n"
+    "--out, FILE.csv-metadata.json beside it (W3C CSVW) records the PSD unit, segment, overlap, window,\n"
+    "detrending, segments averaged and their equivalent degrees of freedom, the sample rate, the source\n"
+    "file and its SHA-256, the version and the CSV's own SHA-256. An existing --out (or metadata file) is\n"
+    "replaced only if psd wrote it and it was not edited since (its metadata records its SHA-256; or it\n"
+    "starts with the older marker line '# rollspec-psd-csv'), or with --force.\n"
     "\n"
     "SIGNAL is read by its content, else by its extension:\n"
     "  CSV/text  a header line naming the columns, then one sample per row. Delimiter ',', ';' or tab, from\n"
-    "            the data rows (tab, else ';', else ','); with ';' or tab a decimal comma is accepted (0,125;1,5),\n"
-    "            one decimal mark per file; one column with a decimal comma (0,0123 per row) is read as such.\n"
-    "            Preamble lines before the header (logger, date, units) are skipped: the header is the line\n"
-    "            followed by the most rows of numbers of its width (--skip-rows N: the header follows the\n"
-    "            first N lines). A column named t or time, alone or with the unit s or ms written\n"
-    "            _s, [s], (s) or /s (time_s, Time (s), t [ms]; case and spaces ignored; a bare capital T is\n"
-    "            not: a temperature or tension) is the time column:\n"
-    "            never a channel, it gives the sample rate (--time-column NAME picks another, in seconds unless\n"
-    "            its name says ms; --time-column none: no time column). Its stamps must increase, each within\n"
-    "            0.1 sample interval of the uniform grid through the first and last stamps, or within the\n"
-    "            rounding of its printed digits (half a unit of the last digit). --fs overrides it.\n"
+    "            the data rows; with ';' or tab a decimal comma is accepted (0,125;1,5), one decimal mark per\n"
+    "            file; one column with a decimal comma (0,0123 per row) is read as such. UTF-8 (with or\n"
+    "            without a byte-order mark) or UTF-16 with a byte-order mark. Preamble lines before the header\n"
+    "            (logger, date, a calibration table) are skipped: the header is the line followed by the most\n"
+    "            rows of numbers of its width in the file (--skip-rows N: the header follows the first N\n"
+    "            lines). A units row next to the header ([s], [m/s²], g, ... or empty cells) gives units.\n"
+    "            The time column is named t, time or zeit, alone (seconds) or with a unit s, ms, us (µs) or ns\n"
+    "            written _ms, [ms], (ms), /ms (time_s, Time (s), t [ms], zeit_ms, t [µs]), or has a time unit\n"
+    "            in brackets or the units row (case and spaces ignored; a bare capital T is no time: a\n"
+    "            temperature or tension). It is never a channel and gives the sample rate (--time-column NAME\n"
+    "            picks another, in the unit its name or the units row gives, else seconds; --time-column none:\n"
+    "            no time column; several time columns are read if they agree). Its stamps must increase, each\n"
+    "            within 0.1 sample interval of the uniform grid through the first and last stamps, or within\n"
+    "            the rounding of its printed digits; stamps printed so coarsely that a missing sample would not\n"
+    "            show (1 ms at 1 kHz) are read only if every step is the same. --fs overrides it.\n"
     "  WAV, FLAC, AIFF, AU, CAF, Ogg (libsndfile)  rate from the header, channels channel_1..channel_N.\n"
     "            Integer PCM is a fraction of full scale (within +-1: a 16-bit sample / 32768) and needs\n"
     "            --scale (the recorder's full scale in --unit); float data are read as stored.\n"
@@ -57,12 +66,15 @@ const char* const kPsdUsage =
     "            variables are not channels.\n"
     "--fs is needed when the file gives no rate; it overrides a CSV time column; a sound file's or .mat\n"
     "file's own rate it must match within 0.1 %.\n"
-    "--unit says what the values are in after --scale: m/s2 (default) or g (times 9.80665 m/s^2 per g); one\n"
-    "unit for all channels, or one per channel in output order (--unit g,m/s2).\n"
-    "--scale X multiplies every value: the physical value (in --unit) of one file unit, or for integer PCM\n"
-    "of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).\n"
-    "Each choice made from the file (delimiter, decimal comma, header line, time column, sample rate) is\n"
-    "said in one line on stderr (not with --quiet).";
+    "Units: each channel's from its name (Acc (g), a [m/s²], acc [mm/s^2], acc_g, a/(m/s^2)) or the units\n"
+    "row: g (9.80665 m/s^2), m/s^2 (m/s², m/s2, m s^-2), cm/s^2, mm/s^2, um/s^2 (µm/s²), in/s^2, ft/s^2;\n"
+    "a channel named in another unit (V, N, ...) is refused. Without one (a bare name, a sound file, a .mat\n"
+    "variable) values are taken as m/s^2, and said so. --unit UNIT overrides the file: one unit for all\n"
+    "channels, or one per channel in output order (--unit g,m/s2).\n"
+    "--scale X multiplies every value: the physical value (in the channel's unit) of one file unit, or for\n"
+    "integer PCM of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).\n"
+    "Each choice made from the file (encoding, delimiter, decimal comma, header and units row, time column,\n"
+    "sample rate, each channel's unit) is said in one line on stderr (not with --quiet).";
 }  // namespace
 
 int psd_command(const Args& args) {
@@ -76,8 +88,8 @@ int psd_command(const Args& args) {
       "fs", po::value(&request.fs), "sample rate (Hz); default: from the file")(
       "column", po::value(&request.columns)->composing(),
       "channel(s) to analyse, repeatable or comma-separated (default: all)")(
-      "unit", po::value(&request.unit)->default_value("m/s2"),
-      "unit of the values: m/s2 or g, or one per channel (g,m/s2)")(
+      "unit", po::value(&request.unit),
+      "unit of the values (g, m/s2, mm/s2, ...), or one per channel (g,m/s2); default: from the file, else m/s2")(
       "scale", po::value(&request.scale),
       "physical units per file unit, or per full scale (integer PCM; needed there); default 1")(
       "time-column", po::value(&request.time_column),
@@ -87,7 +99,7 @@ int psd_command(const Args& args) {
                                                               "segment length (samples)")(
       "overlap", po::value(&overlap)->default_value(0.5), "overlap as a fraction of the segment, in [0, 0.95]")(
       "window", po::value(&window)->default_value("hann"), "hann or rect")("out,o", po::value(&out), "output CSV")(
-      "force", "replace an existing --out file even if it is not a PSD written by rollspec psd");
+      "force", "replace an existing --out (and its metadata file) even if psd did not write it");
   po::positional_options_description pos;
   pos.add("signal", 1);
   po::variables_map vm;
@@ -139,17 +151,10 @@ int psd_command(const Args& args) {
       }
   }
 
+  const std::vector<std::string> titles = io::psd_column_titles(t.channels);
   std::ostringstream s;
-  // The marker line tells rollspec's own PSD files from a measurement in the same columns (an
-  // existing --out is replaced only if it starts with it); readers skip '#' lines.
-  s << io::kPsdCsvMarker << ": one-sided PSD in (m/s^2)^2/Hz, Welch\n";
   s << "frequency_hz";
-  for (std::string c : t.channels) {
-    // The output is comma-delimited and read back by the same reader: no delimiter inside a name.
-    for (char& ch : c)
-      if (ch == ',' || ch == ';' || ch == '\t' || ch == '"') ch = '_';
-    s << "," << c;
-  }
+  for (const auto& title : titles) s << "," << title;
   s << "\n";
   const auto f = plan.frequencies();
   char buf[32];
@@ -166,33 +171,26 @@ int psd_command(const Args& args) {
     std::cout << s.str();
     return 0;
   }
-  // Written beside the output and renamed onto it: an existing file is replaced whole or not at all,
-  // and the temporary file never outlives a failure.
-  io::OutputTarget target{out, io::kPsdCsvKind};
-  target.force = vm.count("force") > 0;
-  target.inputs = {input};
-  const std::string write_path = io::check_output_target(target);
-  const std::string tmp = io::temp_name(write_path);
-  io::register_temp(tmp);
-  const auto fail = [&](const std::string& what, int err) {
-    std::remove(tmp.c_str());
-    io::unregister_temp(tmp);
-    return cannot_create(what + " (writing " + tmp + ": " +
-                         (err == ENOSPC ? std::string("no space left on device") : std::string(std::strerror(err))) +
-                         ")");
-  };
-  {
-    errno = 0;
-    std::ofstream o(tmp, std::ios::trunc);
-    if (!o) throw fail("cannot create output file '" + out + "'", errno ? errno : EIO);
-    o << s.str();
-    o.close();
-    if (!o) throw fail("cannot write output file '" + out + "'", errno ? errno : EIO);
+  io::PsdCsvMetadata m;
+  m.sample_rate = t.sample_rate;
+  m.rate_source = t.rate_source;
+  m.segment = cfg.segment;
+  m.overlap = cfg.overlap;
+  m.window = window;
+  m.detrend = "mean";
+  m.samples = t.samples();
+  m.segments = plan.segments(t.samples());
+  m.edof = plan.equivalent_dof(t.samples());
+  m.scale = t.scale;
+  m.source = input;
+  m.source_hash = io::sha256_file(input);
+  m.version = std::string(kVersion) + " (" + kGitSha + ")";
+  std::vector<io::PsdColumnMetadata> columns;
+  for (std::size_t c = 0; c < t.channels.size(); ++c) {
+    const std::string title = titles[c];
+    columns.push_back({title, title.substr(0, title.rfind(" [")), t.channels[c], t.units[c].text, t.units[c].where});
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, write_path, ec);
-  if (ec) throw fail("cannot create output file '" + out + "': " + ec.message(), ec.value());
-  io::unregister_temp(tmp);
+  io::write_psd_csv(out, vm.count("force") > 0, {input}, s.str(), m, columns);
   return 0;
 }
 

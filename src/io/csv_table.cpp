@@ -13,6 +13,7 @@
 #include "src/error.hpp"
 #include "src/io/csv_layout.hpp"
 #include "src/io/input_file.hpp"
+#include "src/io/text_encoding.hpp"
 #include "src/text_trim.hpp"
 
 namespace rollspec::io {
@@ -108,7 +109,7 @@ namespace {
 // blank and '#' lines passed over (unless `raw`).
 class LineReader {
  public:
-  LineReader(std::ifstream& in, const std::string& path) : in_(in), path_(path) {}
+  LineReader(std::istream& in, const std::string& path) : in_(in), path_(path) {}
   bool next(std::string& out, bool raw = false) {
     std::string line;
     while (std::getline(in_, line)) {
@@ -137,7 +138,7 @@ class LineReader {
   int line() const { return n_; }
 
  private:
-  std::ifstream& in_;
+  std::istream& in_;
   std::string path_;
   int n_ = 0;
 };
@@ -187,9 +188,29 @@ void read_row(CsvTable& t, const std::string& s, int n, DecimalMark& mark) {
   t.lines.push_back(n);
 }
 
-// Lines looked at to find the header: enough for any preamble, few enough to hold.
-constexpr std::size_t kLayoutLines = 200;
-constexpr std::size_t kLayoutBytes = 4u << 20;
+void skip_lines(LineReader& reader, const std::string& path, long long skip_rows) {
+  std::string line;
+  for (long long k = 0; k < skip_rows; ++k)
+    if (!reader.next(line, true))
+      throw data_error(path + ": --skip-rows " + std::to_string(skip_rows) + " skips the whole file (" +
+                       std::to_string(reader.line()) +
+                       " lines); allowed: fewer lines than the file holds, then a header and data");
+}
+
+// The whole file once, for its layout (csv_layout.hpp): where the header and units row are, the delimiter.
+CsvLayout find_layout(std::istream& in, const std::string& path, const CsvReadOptions& options) {
+  LineReader reader(in, path);
+  skip_lines(reader, path, options.skip_rows);
+  CsvLayoutFinder finder(options.skip_rows >= 0);
+  std::string line;
+  bool any = false;
+  while (reader.next(line)) {
+    finder.add(line, reader.line());
+    any = true;
+  }
+  if (!any) throw data_error(path + ": empty file; expected a header line and data rows");
+  return finder.result();
+}
 }  // namespace
 
 CsvTable read_csv(const std::string& path, const CsvReadOptions& options) {
@@ -197,41 +218,39 @@ CsvTable read_csv(const std::string& path, const CsvReadOptions& options) {
   if (std::filesystem::is_directory(path, ec))
     throw missing_input("cannot read '" + path + "': it is a directory; expected a CSV file");
   require_regular_input(path, "CSV file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw missing_input("cannot open '" + path + "'");
   CsvTable t;
   t.file = path;
-  LineReader reader(in, path);
-  std::string line;
-  for (long long k = 0; k < options.skip_rows; ++k)
-    if (!reader.next(line, true))
-      throw data_error(path + ": --skip-rows " + std::to_string(options.skip_rows) + " skips the whole file (" +
-                       std::to_string(reader.line()) +
-                       " lines); allowed: fewer lines than the file holds, then a header and data");
-  std::vector<std::string> head;
-  std::vector<int> head_lines;
-  std::size_t bytes = 0;
-  while (head.size() < (options.find_header ? kLayoutLines : 1) && bytes < kLayoutBytes && reader.next(line)) {
-    bytes += line.size();
-    head.push_back(line);
-    head_lines.push_back(reader.line());
-  }
-  if (head.empty()) throw data_error(path + ": empty file; expected a header line and data rows");
-  std::size_t header = 0;
-  t.delimiter = detect_delimiter(head[0]);
+  const auto in = open_text(path, t.encoding);
+  CsvLayout layout;
   if (options.find_header) {
-    const CsvLayout layout = find_csv_layout(head, options.skip_rows >= 0);
-    if (layout.found) {  // else the first line is the header, and its errors are today's
-      header = layout.header;
-      t.delimiter = layout.delimiter;
-      t.layout_found = true;
-      t.preamble_lines = static_cast<int>(header);
+    layout = find_layout(*in, path, options);
+    in->clear();
+    in->seekg(0);
+  }
+  LineReader reader(*in, path);
+  skip_lines(reader, path, options.skip_rows);
+  std::string line;
+  if (!reader.next(line)) throw data_error(path + ": empty file; expected a header line and data rows");
+  t.delimiter = detect_delimiter(line);
+  if (layout.found) {  // else the first line is the header, and its errors are today's
+    t.delimiter = layout.delimiter;
+    t.layout_found = true;
+    t.preamble_rows = layout.rows_before;
+    while (reader.line() < layout.header_line) {
+      if (reader.line() == layout.units_line)
+        t.units = split_cells(line, t.delimiter);
+      else
+        ++t.preamble_lines;
+      reader.next(line);
     }
   }
   DecimalMark mark;
-  read_header(t, head[header], head_lines[header]);
-  for (std::size_t i = header + 1; i < head.size(); ++i) read_row(t, head[i], head_lines[i], mark);
-  head.clear();
+  read_header(t, line, reader.line());
+  if (layout.units_row && layout.units_line > layout.header_line) {
+    reader.next(line);
+    t.units = split_cells(line, t.delimiter);
+  }
+  if (!t.units.empty()) t.units_line = layout.units_line;
   while (reader.next(line)) read_row(t, line, reader.line(), mark);
   if (t.lines.empty())
     throw data_error(path + ": header but no data rows; expected at least one row of numbers after the header");

@@ -3,8 +3,9 @@
 // The delimiter is taken from the header line: tab if it holds one, else ';' if it holds one, else ','.
 // With ';' or tab a decimal comma is accepted (European loggers write `0,125;1,5`), but one file uses
 // one decimal mark: a value with the other mark, or with both, is refused. CsvReadOptions::find_header
-// (measured signals) also skips preamble lines before the header and reads a one-column file with a
-// decimal comma (csv_layout.hpp). Names and values may be
+// (measured signals) also skips preamble lines before the header, reads a units row next to it and a
+// one-column file with a decimal comma (csv_layout.hpp), and UTF-16 files with a byte-order mark
+// (text_encoding.hpp). Names and values may be
 // enclosed in double quotes (spreadsheet exports). Errors name the file, line, column and value
 // (exit 65), or the missing file (exit 66).
 #include <string>
@@ -22,7 +23,11 @@ struct CsvTable {
   int header_line = 0;                      // file line of the header
   std::string header_text;                  // the header line as written
   int preamble_lines = 0;                   // lines skipped (found, not --skip-rows) before the header
+  std::size_t preamble_rows = 0;            // numeric rows among them (a table in the preamble)
   bool layout_found = false;                // find_header: the header and delimiter came from the data rows
+  std::vector<std::string> units;           // find_header: the units row's cells, one per column (none: empty)
+  int units_line = 0;                       // its file line (0: no units row)
+  std::string encoding;                     // "" (UTF-8 or ASCII), or "UTF-16LE"/"UTF-16BE" read as UTF-8
   // Printed precision of each column: most decimal places (fixed notation) and most significant digits
   // of any value; rounded time stamps are judged by them (time_column.hpp).
   std::vector<int> decimals, significant;

@@ -8,6 +8,7 @@
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/input_file.hpp"
+#include "src/io/psd_csv.hpp"
 #include "src/io/temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -16,12 +17,15 @@ namespace rollspec::io {
 
 namespace {
 
-bool is_psd_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string marker = kPsdCsvMarker;
-  std::string head(marker.size(), '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  return in.gcount() == static_cast<std::streamsize>(head.size()) && head == marker;
+bool is_psd_sidecar(const std::string& path) {
+  std::string why;
+  return read_psd_sidecar(path, "", why).has_value();
+}
+
+bool same_kind(const std::string& path, const std::string& kind) {
+  if (kind == kPsdCsvKind) return psd_csv_written_by_rollspec(path);
+  if (kind == kPsdMetadataKind) return is_psd_sidecar(path);
+  return is_rollspec_hdf5(path, kind);
 }
 
 // HDF5's format signature at offset 0, and HDF5 itself cannot open the file.
@@ -38,8 +42,11 @@ bool is_damaged_hdf5(const std::string& path) {
   }
 }
 
-std::string kind_description(const std::string& kind) {
-  if (kind == kPsdCsvKind) return std::string("a PSD written by rollspec psd (first line '") + kPsdCsvMarker + "...')";
+std::string kind_description(const std::string& kind, const std::string& path) {
+  if (kind == kPsdCsvKind)
+    return "a PSD written by rollspec psd and not edited since (its sidecar " + psd_sidecar_path(path) +
+           " would record the file's SHA-256)";
+  if (kind == kPsdMetadataKind) return "the metadata of a PSD written by rollspec psd";
   return "a rollspec file of filetype '" + kind + "'";
 }
 }  // namespace
@@ -80,10 +87,9 @@ std::string check_output_target(const OutputTarget& t) {
       throw usage_error(t.option + " " + out + " is also an input of this command ('" + in +
                         "'); refusing to overwrite an input; choose another " + t.option);
   }
-  const bool same_kind = !t.check_kind || t.kind == kPsdCsvKind ? is_psd_csv(out) : is_rollspec_hdf5(out, t.kind);
-  if (t.check_kind && !same_kind && !t.force && !(t.replace_damaged_hdf5 && is_damaged_hdf5(out)))
-    throw cannot_create("output file '" + out + "' (" + t.option + ") exists and is not " + kind_description(t.kind) +
-                        "; refusing to replace it; choose another " + t.option +
+  if (t.check_kind && !same_kind(out, t.kind) && !t.force && !(t.replace_damaged_hdf5 && is_damaged_hdf5(out)))
+    throw cannot_create("output file '" + out + "' (" + t.option + ") exists and is not " +
+                        kind_description(t.kind, out) + "; refusing to replace it; choose another " + t.option +
                         (t.option.rfind("--", 0) == 0 ? ", or add --force to replace it" : ""));
   const std::string target = link ? fs::canonical(out, ec).string() : out;
   if (ec) throw cannot_create("cannot resolve the symbolic link '" + out + "': " + ec.message());

@@ -5,7 +5,8 @@
 //   - a path that resolves to an input of the run (study, tables, signals; symlinks followed) is
 //     refused;
 //   - an existing regular file is replaced only if it is a rollspec output of the same kind
-//     (HDF5 `filetype` attribute, or the PSD CSV header), or with --force.
+//     (HDF5 `filetype` attribute; a PSD CSV whose sidecar records its SHA-256, or that starts with the
+//     older marker line; the sidecar of a PSD CSV), or with --force.
 // Stale "<out>.tmp-<pid>" files of dead processes are removed (temp_files.hpp).
 #include <string>
 #include <utility>
@@ -13,15 +14,16 @@
 
 namespace rollspec::io {
 
-// The CSV written by `rollspec psd` (no HDF5 filetype attribute): recognised by its first line,
-// which starts with kPsdCsvMarker ("frequency_hz,..." alone is the measurement format compare reads).
+// The CSV written by `rollspec psd` (no HDF5 filetype attribute): recognised by its sidecar
+// `<csv>-metadata.json`, which records the CSV's SHA-256 (psd_csv.hpp), or, written before the sidecar,
+// by its first line, which starts with kPsdCsvMarker ("frequency_hz,..." alone is a user's measurement).
 constexpr const char* kPsdCsvKind = "rollspec-psd-csv";
 constexpr const char* kPsdCsvMarker = "# rollspec-psd-csv";
 
 struct OutputTarget {
   OutputTarget(std::string p, std::string k) : path(std::move(p)), kind(std::move(k)) {}
   std::string path;  // the path as the user gave it
-  std::string kind;  // HDF5 filetype (e.g. "rollspec-result") or kPsdCsvKind
+  std::string kind;  // HDF5 filetype (e.g. "rollspec-result"), kPsdCsvKind or kPsdMetadataKind (psd_csv.hpp)
   std::string option = "--out";
   bool force = false;               // replace any existing regular file
   std::vector<std::string> inputs;  // files the run reads

@@ -7,7 +7,9 @@
 #include <fstream>
 
 #include "src/error.hpp"
+#include "src/io/hdf5_file.hpp"
 #include "src/io/input_file.hpp"
+#include "src/io/provenance.hpp"
 #include "src/io/signal_file.hpp"
 
 namespace rollspec::io {
@@ -25,6 +27,42 @@ Family by_content(const std::string& head) {
     if (at(0, magic)) return Family::sound;
   if (head.compare(0, 6, "MATLAB") == 0) return Family::mat;  // v5 and v7.3 headers; v4 has none
   return Family::text;
+}
+
+// HDF5 (signature at 0, or after a 512-byte user block) that is no MATLAB v7.3 file: rollspec's own
+// files, or another program's; refused in one line saying what reads it.
+bool is_hdf5(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string signature("\x89HDF\r\n\x1a\n", 8);
+  for (const std::streamoff at : {0, 512}) {
+    std::string head(8, '\0');
+    in.clear();
+    in.seekg(at);
+    in.read(head.data(), 8);
+    if (in.gcount() == 8 && head == signature) return true;
+  }
+  return false;
+}
+
+[[noreturn]] void refuse_hdf5(const std::string& path) {
+  std::string filetype;
+  try {
+    const Hdf5Reader r(path);
+    if (r.has_attribute("/", "filetype")) filetype = r.string_attribute("/", "filetype");
+  } catch (const UserError&) {
+  }
+  const std::string reads = "; rollspec psd reads measured signals (CSV/text, WAV/FLAC, .mat)";
+  if (filetype == kResultFileType)
+    throw data_error(path + ": a rollspec result (HDF5), not a measured signal: `rollspec compare " + path +
+                     " MEASUREMENT` compares it with a measurement, `python3 -m rollspec_post psd " + path +
+                     " --out PICTURE.png` plots its PSD" + reads);
+  if (filetype.rfind("rollspec-", 0) == 0)
+    throw data_error(path + ": a rollspec file of filetype '" + clip(filetype) + "' (HDF5), not a measured signal" +
+                     reads);
+  throw data_error(path +
+                   ": an HDF5 file, not a measured signal (a MATLAB v7.3 file starts with its 'MATLAB' "
+                   "header)" +
+                   reads);
 }
 
 Family by_extension(const std::string& path) {
@@ -53,6 +91,7 @@ SignalTable read_signal(const std::string& path, const SignalRequest& request) {
   char head[12] = {};
   in.read(head, sizeof head);
   Family family = by_content(std::string(head, static_cast<std::size_t>(in.gcount())));
+  if (family == Family::text && is_hdf5(path)) refuse_hdf5(path);
   if (family == Family::text) family = by_extension(path);
   if (family != Family::text && request.skip_rows >= 0)
     throw usage_error("--skip-rows: '" + path + "' is a " + (family == Family::sound ? "sound" : "MATLAB .mat") +

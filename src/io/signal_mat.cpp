@@ -264,8 +264,8 @@ SignalTable read_mat_signal(const std::string& path, const SignalRequest& reques
     const auto& tv = *std::find_if(vars.begin(), vars.end(), [&](const VarInfo& v) { return v.name == s.time_column; });
     const auto t = read_values(m.get(), s, tv);
     s.time_samples = t.size();
-    const double unit =
-        time_column_unit(tv.name);  // a vector picked by --time-column with no unit in its name: seconds
+    // a vector picked by --time-column: the unit in its name (stamp_us), else seconds
+    const double unit = time_column_unit(tv.name) != 0.0 ? time_column_unit(tv.name) : time_unit_in_name(tv.name);
     const double fs = rate_from_time_stamps(t, unit == 0.0 ? 1.0 : unit, tv.name, [&](std::size_t i) {
       return path + ": variable '" + tv.name + "' element " + std::to_string(i + 1);
     });

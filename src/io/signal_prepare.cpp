@@ -12,29 +12,6 @@
 namespace rollspec::io {
 
 namespace {
-double unit_factor(const std::string& unit, const std::string& whole) {
-  if (unit == "m/s2" || unit == "m/s^2") return 1.0;
-  if (unit == "g") return kStandardGravity;
-  throw usage_error("--unit " + clip(whole) + (unit == whole ? "" : ": '" + clip(unit) + "'") +
-                    ": allowed: " + kSignalUnits);
-}
-
-// --unit: one unit for every channel, or one per picked channel in their order ("g,m/s^2").
-std::vector<double> unit_factors(const std::string& units) {
-  std::vector<double> out;
-  std::size_t from = 0;
-  for (;;) {
-    const auto comma = units.find(',', from);
-    const auto end = comma == std::string::npos ? units.size() : comma;
-    const auto b = units.find_first_not_of(" \t", from);
-    const auto e = units.find_last_not_of(" \t", end == 0 ? 0 : end - 1);
-    const std::string one = b == std::string::npos || b >= end ? "" : units.substr(b, e - b + 1);
-    out.push_back(unit_factor(one, units));
-    if (comma == std::string::npos) return out;
-    from = comma + 1;
-  }
-}
-
 std::string list(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
@@ -115,7 +92,7 @@ std::vector<std::size_t> pick(const SignalTable& s, const std::vector<std::strin
 }  // namespace
 
 SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
-  const std::vector<double> units = unit_factors(r.unit);
+  if (!r.unit.empty()) option_units(r.unit);  // a bad --unit is refused before the file is read
   if (!(r.scale > 0.0) || !std::isfinite(r.scale))
     throw usage_error("--scale " + number_text(r.scale) +
                       ": allowed: a finite number > 0 (physical units per file unit or per full scale)");
@@ -177,13 +154,11 @@ SignalTable prepare_signal(const std::string& path, const SignalRequest& r) {
                       (s.skipped.empty() ? "" : "; not used: " + skipped_list(s)));
   }
 
-  if (units.size() != 1 && units.size() != out.channels.size())
-    throw usage_error("--unit " + clip(r.unit) + ": " + counted(units.size(), "unit") + " for " +
-                      counted(out.channels.size(), "channel") + " (" + list(out.channels) +
-                      "); allowed: one unit for all channels, or one per channel in that order");
+  out.units = choose_units(s, picked, r, out.notes);
+  out.scale = r.scale;
   // Samples are scaled, not the PSD: the table then holds what it says, m/s².
   for (std::size_t c = 0; c < out.values.size(); ++c) {
-    const double factor = r.scale * units[units.size() == 1 ? 0 : c];
+    const double factor = r.scale * out.units[c].factor;
     if (factor != 1.0)
       for (double& x : out.values[c]) x *= factor;
   }

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 #include "src/error.hpp"
+#include "src/io/measurement_unit.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::io {
@@ -20,26 +22,47 @@ std::string stamp_text(double v) {
 
 const char* const kAllowed =
     "strictly increasing, uniformly spaced stamps (each within 0.1 sample interval of t_0 + i*dt)";
+
+// Stamps printed to a unit u of more than half a sample interval: a missing sample lengthens a step
+// by dt, rounding changes one by up to u, so only a column of identical steps (an exact grid) is read.
+void refuse_irregular_coarse_steps(const std::vector<double>& t, double u, double dt, double seconds_per_unit,
+                                   const std::string& col, const std::function<std::string(std::size_t)>& where) {
+  std::map<long long, std::size_t> count;
+  std::vector<long long> k(t.size(), 0);
+  for (std::size_t i = 1; i < t.size(); ++i) ++count[k[i] = std::llround((t[i] - t[i - 1]) / u)];
+  if (count.size() <= 1) return;
+  const auto mode = std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) {
+                      return a.second < b.second;
+                    })->first;
+  std::size_t i = 1;
+  while (k[i] == mode) ++i;
+  throw data_error(where(i) + ": " + col + " steps by " + stamp_text(t[i] - t[i - 1]) + " (from " +
+                   stamp_text(t[i - 1]) + " to " + stamp_text(t[i]) + ") where most steps are " +
+                   stamp_text(static_cast<double>(mode) * u) + ": stamps printed to the nearest " + stamp_text(u) +
+                   " cannot show a missing or repeated sample at a sample interval of " + stamp_text(dt) +
+                   " (a rate a little off prints such steps too); allowed: stamps printed with more digits, or " +
+                   "--fs HZ, which overrides the time column (the stamps' mean step gives " +
+                   rate_text(1.0 / (dt * seconds_per_unit)) + " Hz)");
+}
 }  // namespace
 
 double time_column_unit(const std::string& name) {
-  std::string n;
-  for (const char c : name)
-    if (!std::isspace(static_cast<unsigned char>(c)))
-      n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* base : {"time", "t"}) {
-    const std::string b = base;
-    if (n.compare(0, b.size(), b) != 0) continue;
-    const std::string unit = n.substr(b.size());
-    // A bare capital T is a temperature or a tension as often as a time: only "t", "time" or a
-    // name with a time unit ("T (s)") is taken for the time column.
-    if (unit.empty()) return n == "t" && name.find('T') != std::string::npos ? 0.0 : 1.0;
-    for (const auto& [u, seconds] : {std::pair<const char*, double>{"s", 1.0}, {"ms", 1e-3}})
-      for (const auto& [open, close] :
-           {std::pair<const char*, const char*>{"_", ""}, {"[", "]"}, {"(", ")"}, {"/", ""}})
-        if (unit == std::string(open) + u + close) return seconds;
-  }
-  return 0.0;
+  const NamedUnit n = unit_in_name(name);
+  if (!time_like_name(n, name)) return 0.0;
+  if (!n.unit) return n.written.empty() ? 1.0 : 0.0;  // `time (sensor 2)` is no time column
+  return n.unit->quantity == Quantity::time ? n.unit->factor : 0.0;
+}
+
+double time_unit_in_name(const std::string& name) {
+  const NamedUnit n = unit_in_name(name);
+  return n.unit && n.unit->quantity == Quantity::time ? n.unit->factor : 0.0;
+}
+
+std::string time_unit_words(double seconds_per_unit) {
+  return seconds_per_unit == 1e-3   ? "milliseconds"
+         : seconds_per_unit == 1e-6 ? "microseconds"
+         : seconds_per_unit == 1e-9 ? "nanoseconds"
+                                    : "seconds";
 }
 
 double StampDigits::printed_half_unit(double t) const {
@@ -63,6 +86,9 @@ double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_un
   const double dt = (t[n - 1] - t[0]) / static_cast<double>(n - 1);
   const auto rounding = [&](std::size_t i) { return digits.half_unit(t[i]); };
   const std::string rounding_note = digits.decimals >= 400 ? "" : ", or within the rounding of its printed digits";
+  const double unit = 2.0 * std::max(digits.printed_half_unit(t[0]), digits.printed_half_unit(t[n - 1]));
+  if (unit > 0.0 && dt > 0.0 && dt < 2.0 * unit)
+    refuse_irregular_coarse_steps(t, unit, dt, seconds_per_unit, col, where);
   for (std::size_t i = 1; i < n; ++i)
     if (!(t[i] > t[i - 1]) && !(dt > 0.0 && dt - (t[i] - t[i - 1]) <= rounding(i) + rounding(i - 1)))
       throw data_error(where(i) + ": " + col + " value " + stamp_text(t[i]) + " does not increase (previous stamp " +

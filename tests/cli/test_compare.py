@@ -11,7 +11,7 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import EX_USAGE, SOURCE, measurement_from, run, study_result
+from conftest import EX_USAGE, SOURCE, assert_refused, measurement_from, run, study_result
 
 STUDY = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
 
@@ -109,7 +109,7 @@ def test_psd_output_chains_into_compare_by_column(files, tmp_path):
     rows = [line.split() for line in table_lines(r)[3:-1]]
     assert len(rows) >= 10 and all(abs(float(x[2]) - white) < 1.0 for x in rows)
     r = run(["compare", files["model"], out])
-    assert r.returncode != 0 and "no column 'psd'" in r.stderr and "ch1, ch3" in r.stderr
+    assert_refused(r, EX_USAGE, ["m.csv: 2 PSD columns (ch1, ch3", "no --column", "allowed: --column NAME"])
 
 
 def test_too_few_realisations_give_no_interval_and_say_so(files):

@@ -48,10 +48,11 @@ def test_psd_out_refuses_a_measured_psd_and_replaces_its_own(tmp_path):
     args = ["psd", SOURCE / "studies" / "data" / "example-signal.csv", "--unit", "g"]
     r = run([*args, "--segment", "2048", "--out", m])
     assert_refused(r, EX_CANTCREAT, ["m.csv", "not a PSD written by rollspec psd", "--force"])
-    assert m.read_bytes() == before
+    assert m.read_bytes() == before and not (tmp_path / "m.csv-metadata.json").exists()
     own = tmp_path / "p.csv"
     assert run([*args, "--segment", "2048", "--out", own]).returncode == 0
-    assert own.read_text().startswith("# rollspec-psd-csv")
+    assert own.read_text().startswith("frequency_hz,")  # no marker line: its sidecar says whose it is
+    assert (tmp_path / "p.csv-metadata.json").is_file()
     r = run([*args, "--segment", "1024", "--out", own])
     assert r.returncode == 0, r.stderr
     no_temps(tmp_path)

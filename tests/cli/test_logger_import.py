@@ -34,7 +34,7 @@ def psd(args, tmp_path, name="psd.csv"):
     out = tmp_path / name
     r = run(["psd", *args, "--out", out])
     assert r.returncode == 0, r.stderr
-    data = np.loadtxt(out, delimiter=",", skiprows=2, ndmin=2)
+    data = np.loadtxt(out, delimiter=",", skiprows=1, ndmin=2)
     return data, r.stderr
 
 
@@ -148,7 +148,7 @@ def test_a_unit_per_column(tmp_path):
     np.testing.assert_allclose(data[:, 1:], p[:, ::-1], rtol=1e-10, atol=1e-10 * p.max())
     assert_refused(run(["psd", sig, "--unit", "g,g,g", "--fs", FS]), EX_USAGE,
                    ["--unit g,g,g: 3 units for 2 channels (acc_g, acc_ms2)", "one per channel"])
-    assert_refused(run(["psd", sig, "--unit", "g,mm", "--fs", FS]), EX_USAGE, ["--unit g,mm: 'mm'", "allowed: m/s2"])
+    assert_refused(run(["psd", sig, "--unit", "g,mm", "--fs", FS]), EX_USAGE, ["--unit g,mm: 'mm'", "allowed: g, m/s2"])
 
 
 def test_time_column_option(tmp_path):
@@ -162,12 +162,17 @@ def test_time_column_option(tmp_path):
     data, _ = psd([sig, "--time-column", "none", "--fs", FS, "--segment", 512, "--column", "acc"], tmp_path)
     f, p = welch(x, FS, 512)
     assert_psd(data, f, p)
-    # ... and --time-column NAME picks the stamps (no unit in the name: seconds)
+    # ... and --time-column NAME picks the stamps, in the unit its name gives (us: microseconds) ...
     r = run(["psd", sig, "--time-column", "stamp_us", "--segment", 512, "--column", "acc", "--out", tmp_path / "us.csv"])
     assert r.returncode == 0, r.stderr
-    assert "sample rate 0.0256 Hz from the time column 'stamp_us' (--time-column; its name gives no unit: seconds)" in r.stderr
+    assert "sample rate 25600 Hz from the time column 'stamp_us' (microseconds by its name, --time-column)" in r.stderr
+    # ... or in seconds when the name gives none
+    sig.write_text(sig.read_text().replace("stamp_us;", "stamp;", 1))
+    r = run(["psd", sig, "--time-column", "stamp", "--segment", 512, "--column", "acc", "--out", tmp_path / "s.csv"])
+    assert r.returncode == 0, r.stderr
+    assert "sample rate 0.0256 Hz from the time column 'stamp' (--time-column; its name gives no unit: seconds)" in r.stderr
     assert_refused(run(["psd", sig, "--time-column", "clock"]), EX_USAGE,
-                   ["--time-column clock: no such column", "columns found: stamp_us, t, acc"])
+                   ["--time-column clock: no such column", "columns found: stamp, t, acc"])
 
 
 def test_integer_wav_needs_scale(tmp_path):
@@ -227,3 +232,83 @@ def test_time_column_option_with_mat_and_sound_files(tmp_path):
     wav = tmp_path / "rec.wav"
     scipy.io.wavfile.write(wav, int(fs), x.astype(np.float32))
     assert_refused(run(["psd", wav, "--time-column", "stamps"]), EX_USAGE, ["--time-column stamps", "is a sound file"])
+
+
+def test_a_units_row_under_the_header_is_read_as_units(tmp_path):
+    # Time⇥Acceleration, then [s]⇥[m/s²]: the units row is no header, and no data row either
+    _, x = signal(n=8192)
+    clean = tmp_path / "clean.csv"
+    clean.write_text("time_s,acc\n" + "".join(f"{i / FS:.17g},{v:.6f}\n" for i, v in enumerate(x)))
+    want, _ = psd([clean, "--segment", 1024], tmp_path, "want.csv")
+    export = tmp_path / "export.txt"
+    export.write_text("Time\tAcceleration\n[s]\t[m/s²]\n" +
+                      "".join(f"{i / FS:.17g}\t{v:.6f}\n" for i, v in enumerate(x)), encoding="utf-8")
+    got, err = psd([export, "--segment", 1024], tmp_path, "got.csv")
+    np.testing.assert_array_equal(got, want)
+    assert "export.txt: line 2 is a units row" in err
+    assert "sample rate 25600 Hz from the time column 'Time' (seconds, by the units row)" in err
+    assert "'Acceleration': read in m/s^2 by the units row (line 2)" in err
+    # in g by the units row: the PSD times g^2, as --unit g gives it
+    export.write_text(export.read_text(encoding="utf-8").replace("[m/s²]", "[g]", 1), encoding="utf-8")
+    got, _ = psd([export, "--segment", 1024], tmp_path, "g.csv")
+    np.testing.assert_allclose(got[:, 1], G**2 * want[:, 1], rtol=1e-12)
+
+
+def test_a_missing_sample_is_found_at_any_number_of_printed_digits(tmp_path):
+    # 1 kHz, sample 500 deleted, stamps printed in whole ms (0..499, 501..): a 999 Hz logger prints the same
+    # steps, so the stamps cannot tell; refused at the line of the gap, naming --fs
+    fs, n = 1000.0, 4096
+    x = np.random.default_rng(2).standard_normal(n)
+    keep = np.arange(n) != 500
+    for name, digits in (("ms", 0), ("s6", 6)):
+        sig = tmp_path / f"gap-{name}.csv"
+        stamps = np.arange(n)[keep] * (1.0 if name == "ms" else 1e-3)
+        sig.write_text(("time_ms" if name == "ms" else "time_s") + ",acc\n" +
+                       "".join(f"{t:.{digits}f},{v:.6f}\n" for t, v in zip(stamps, x[keep])))
+        r = run(["psd", sig, "--segment", 256])
+        assert_refused(r, EX_DATAERR, [f"gap-{name}.csv:502: time column", "steps by", "--fs HZ"])
+    r = run(["psd", tmp_path / "gap-ms.csv", "--segment", 256])
+    assert "steps by 2 (from 499 to 501) where most steps are 1: stamps printed to the nearest 1 cannot show" in r.stderr
+    # the same stamps without the gap are an exact grid, read as such
+    whole = tmp_path / "whole-ms.csv"
+    whole.write_text("time_ms,acc\n" + "".join(f"{t},{v:.6f}\n" for t, v in zip(range(n), x)))
+    _, err = psd([whole, "--segment", 256], tmp_path, "whole.csv")
+    assert "sample rate 1000 Hz from the time column 'time_ms' (milliseconds)" in err
+    # stamps too coarse for the rate (0.01 s at 1 kHz): refused naming --fs, which then reads the file
+    coarse = tmp_path / "coarse.csv"
+    coarse.write_text("time_s,acc\n" + "".join(f"{i / fs:.2f},{v:.6f}\n" for i, v in enumerate(x)))
+    assert_refused(run(["psd", coarse, "--segment", 256]), EX_DATAERR,
+                   ["stamps printed to the nearest 0.01 cannot show a missing or repeated sample", "--fs HZ"])
+    got, err = psd([coarse, "--segment", 256, "--fs", 1000], tmp_path, "coarse-psd.csv")
+    np.testing.assert_array_equal(got, psd([whole, "--segment", 256], tmp_path, "w2.csv")[0])
+
+
+def test_zeit_ms_is_read_in_milliseconds(tmp_path):
+    _, x = signal(n=4096)
+    sig = tmp_path / "zeit.csv"
+    sig.write_text("zeit_ms;acc\n" + "".join(f"{1000 * i / FS:.6f};{v:.6f}\n".replace(".", ",") for i, v in enumerate(x)))
+    _, err = psd([sig, "--segment", 512], tmp_path)
+    assert "sample rate 25600 Hz from the time column 'zeit_ms' (milliseconds)" in err
+    sig.write_text("zeit_ms;count;acc\n" +
+                   "".join(f"{1000 * i / FS:.6f};{i};{v:.6f}\n".replace(".", ",") for i, v in enumerate(x)))
+    r = run(["psd", sig, "--time-column", "zeit_ms", "--column", "acc", "--segment", 512, "--out", tmp_path / "z.csv"])
+    assert r.returncode == 0 and "sample rate 25600 Hz from the time column 'zeit_ms' (milliseconds by its name, " \
+                                  "--time-column)" in r.stderr, r.stderr
+
+
+def test_a_table_in_the_preamble_does_not_hide_the_data(tmp_path):
+    # a 3000-row calibration table before a 4096-row recording: the header is the line followed by the
+    # most rows of numbers in the whole file, not only in its first lines
+    _, x = signal(n=4096)
+    data = "time_s,acc\n" + "".join(f"{i / FS:.17g},{v:.6f}\n" for i, v in enumerate(x))
+    alone = tmp_path / "alone.csv"
+    alone.write_text(data)
+    want, _ = psd([alone, "--segment", 512], tmp_path, "want.csv")
+    for name, table in (("wide", "f_hz,sensitivity,phase\n" + "".join(f"{i},{1 + i / 1e4},{i / 100}\n" for i in range(3000))),
+                        ("same-width", "f_hz,sensitivity\n" + "".join(f"{i},{1 + i / 1e4}\n" for i in range(3000)))):
+        sig = tmp_path / f"{name}.csv"
+        sig.write_text("Calibration of sensor 12\n" + table + data)
+        got, err = psd([sig, "--segment", 512], tmp_path, f"{name}-psd.csv")
+        np.testing.assert_array_equal(got, want)
+        assert "skipped 3002 preamble lines (3000 rows of numbers among them: the data are the longer table after " \
+               "them) before the header 'time_s,acc' (line 3003" in err

@@ -12,15 +12,20 @@ from conftest import EX_DATAERR, EX_NOINPUT, EX_USAGE, assert_refused, oscillato
 G = 9.80665
 
 
+UNIT = " [(m/s^2)^2/Hz]"
+
+
 def psd(args, tmp_path, name="psd.csv"):
-    """Runs rollspec psd ARGS --out tmp_path/name; returns (header, data, raw bytes of the output)."""
+    """Runs rollspec psd ARGS --out tmp_path/name; returns (header with each PSD title's unit checked and
+    removed, data, raw bytes of the output)."""
     out = tmp_path / name
     r = run(["psd", *args, "--out", out])
     assert r.returncode == 0, r.stderr
     with open(out) as f:
-        assert f.readline().startswith("# rollspec-psd-csv: one-sided PSD in (m/s^2)^2/Hz")
         header = f.readline().strip().split(",")
-    return header, np.loadtxt(out, delimiter=",", skiprows=2, ndmin=2), out.read_bytes()
+    assert header[0] == "frequency_hz" and all(h.endswith(UNIT) for h in header[1:]), header
+    header = [header[0]] + [h[:-len(UNIT)] for h in header[1:]]
+    return header, np.loadtxt(out, delimiter=",", skiprows=1, ndmin=2), out.read_bytes()
 
 
 def sine_plus_noise(n, fs, f0, amplitude, sigma, seed, channels=1):
@@ -98,7 +103,7 @@ def test_semicolon_decimal_comma_and_tab_give_the_same_bits_as_plain_csv(tmp_pat
     ms.write_text('"t [ms]";"left";"right"\n' + "".join(
         f"{1000 * ti:.17g};{a:.17g};{b:.17g}\n".replace(".", ",") for ti, (a, b) in zip(t, x)))
     _, data, _ = psd([ms, "--segment", 1024], tmp_path, "ms-psd.csv")
-    np.testing.assert_allclose(data, np.loadtxt(tmp_path / "plain-psd.csv", delimiter=",", skiprows=2), rtol=1e-12, atol=0)
+    np.testing.assert_allclose(data, np.loadtxt(tmp_path / "plain-psd.csv", delimiter=",", skiprows=1), rtol=1e-12, atol=0)
 
 
 def test_column_picks_channels_in_the_order_asked(tmp_path):
@@ -132,7 +137,9 @@ def test_unit_g_and_scale_multiply_the_psd_exactly(tmp_path):
     np.testing.assert_array_equal(in_g[:, 0], base[:, 0])
     np.testing.assert_allclose(in_g[:, 1], G**2 * base[:, 1], rtol=1e-12, atol=0)
     np.testing.assert_allclose(scaled[:, 1], (0.5 * G) ** 2 * base[:, 1], rtol=1e-12, atol=0)
-    assert_refused(run(["psd", sig, "--fs", fs, "--unit", "mm/s2"]), EX_USAGE, ["--unit mm/s2", "allowed: m/s2", "or g"])
+    _, mm, _ = psd([sig, "--fs", fs, "--segment", 1024, "--unit", "mm/s2"], tmp_path, "mm.csv")
+    np.testing.assert_allclose(mm[:, 1], 1e-6 * base[:, 1], rtol=1e-12, atol=0)
+    assert_refused(run(["psd", sig, "--fs", fs, "--unit", "mm/s"]), EX_USAGE, ["--unit mm/s", "allowed: g, m/s2", "mm/s2"])
     assert_refused(run(["psd", sig, "--fs", fs, "--scale", 0]), EX_USAGE, ["--scale 0", "allowed: a finite number > 0"])
     assert "(m/s^2)^2/Hz" in run(["psd", "--help"]).stdout
 

@@ -64,6 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // column gives a finite rate > 0, and there is no rate without one.
     const rollspec::io::SignalTable s = rollspec::io::read_csv_signal(temp_path());
     if (s.channels.size() != s.values.size() || s.groups.size() != s.channels.size()) std::abort();
+    if (s.units.size() != s.channels.size()) std::abort();  // one unit (or none found) per channel
     for (const auto& col : s.values)
       if (col.size() != s.values.front().size()) std::abort();
     if (s.time_column.empty() != (s.sample_rate == 0.0)) std::abort();
