@@ -66,7 +66,7 @@ void rate_from_column(SignalTable& s, const CsvTable& t, std::size_t time, const
   const double unit = time_column_unit(t.columns[time]);
   const double seconds =
       unit == 0.0 ? 1.0 : unit;  // a column picked by --time-column with no unit in its name: seconds
-  const StampDigits digits{t.decimals[time], t.significant[time]};
+  const PrintedDigits digits{t.decimals[time], t.significant[time]};
   const auto where = [&](std::size_t row) { return t.where(row); };
   const std::string f = s.file + ": ";
   if (r.fs > 0.0) {

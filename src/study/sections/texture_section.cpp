@@ -66,8 +66,17 @@ TextureSection TextureSection::parse(const KeyReader& s) {
   t.long_wavelength_origin = {s.where("texture.long_wavelength")};
   t.short_wavelength_origin = {s.where("texture.short_wavelength")};
   t.rms_origin = {s.where("texture.rms")};
-  for (const auto& k : keys()) t.texts.emplace_back(k.key, s.text(k.full_name()));
+  for (const auto& k : keys()) {
+    t.texts.emplace_back(k.key, s.text(k.full_name()));
+    if (s.is_set(k.full_name())) t.set_keys.emplace_back(k.key, KeyOrigin{s.where(k.full_name())});
+  }
   return t;
+}
+
+bool TextureSection::is_set(const std::string& key) const {
+  for (const auto& [k, origin] : set_keys)
+    if (k == key) return true;
+  return false;
 }
 
 }  // namespace rollspec::study
