@@ -64,12 +64,30 @@ void add_periodogram(const spectral::WelchPlan& plan, spectral::WelchWorkspace& 
   for (std::size_t j = 0; j < g.size(); ++j) acc[j] += g[j] / (2.0 * M_PI);  // per cycle/m -> per rad/m (Eq. 1)
 }
 
+// Eq. 42: the lowest bin whose octave the unresolved variance, as the scan's longest wave, leaks
+// at most eps of the measured power into. Short profiles: at most N/2.
+std::size_t first_resolved_bin(const EstimatedPsd& e, const ProfilePsdOptions& options) {
+  const std::size_t top = e.psd.size() - 1, lowest = std::min(options.first_resolved_bin, top);
+  if (!std::isfinite(options.resolved_leakage)) return lowest;
+  const std::vector<double> leak = longest_wave_leakage(e.samples, e.spacing);
+  std::vector<double> above(e.psd.size() + 1, 0.0);  // above[j] = sum_{i >= j} G_i dk
+  for (std::size_t j = top + 1; j-- > 0;) above[j] = above[j + 1] + e.psd[j] * e.dk;
+  for (std::size_t j = lowest; 2 * j <= top; ++j) {
+    double leaked = 0.0, measured = 0.0;
+    for (std::size_t i = j; i < 2 * j; ++i) {
+      leaked += leak[i];
+      measured += e.psd[i];
+    }
+    if (std::max(0.0, e.variance - above[j]) * leaked <= options.resolved_leakage * measured) return j;
+  }
+  return lowest;  // no octave clears it (a scan that is all form): the lowest bin, V_u says the rest
+}
+
 EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, const ProfilePsdOptions& options) {
   EstimatedPsd out;
   if (options.first_resolved_bin < 2)
     throw std::invalid_argument("the first resolved bin must be >= 2 (bin 1 is the scan's longest wave), got " +
                                 std::to_string(options.first_resolved_bin));
-  out.first_resolved = std::min(options.first_resolved_bin, rows.front().size() / 2);  // short profiles: N/2
   out.samples = rows.front().size();
   out.spacing = dx;
   out.profiles = rows.size();
@@ -103,6 +121,7 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   if (!std::isfinite(held) || !std::isfinite(out.variance))
     throw std::invalid_argument("the profiles' variance overflows a double (" + g6(out.variance) +
                                 " m^2, periodogram sum " + g6(held) + " m^2); heights must be far below 1e150 m");
+  out.first_resolved = first_resolved_bin(out, options);
   out.wavenumber.resize(out.psd.size());
   for (std::size_t j = 0; j < out.psd.size(); ++j) out.wavenumber[j] = out.dk * static_cast<double>(j);
   return out;
@@ -183,6 +202,22 @@ std::vector<double> hann_periodogram(const std::vector<double>& z, double dx) {
   return g;
 }
 
+std::vector<double> longest_wave_leakage(std::size_t n, double dx) {
+  if (n < kMinSamples) throw std::invalid_argument("periodogram needs at least 8 samples");
+  std::vector<double> c(n), s(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phase = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    c[i] = std::sqrt(2.0) * std::cos(phase);  // unit variance
+    s[i] = std::sqrt(2.0) * std::sin(phase);
+  }
+  remove_linear_trend(c);
+  remove_linear_trend(s);
+  std::vector<double> out = hann_periodogram(c, dx);
+  const std::vector<double> ps = hann_periodogram(s, dx);
+  for (std::size_t j = 0; j < out.size(); ++j) out[j] = 0.5 * (out[j] + ps[j]);  // mean over the phase
+  return out;
+}
+
 EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdOptions& options) {
   if (profiles.empty()) throw std::invalid_argument("a PSD from measured profiles needs at least 1 profile, got none");
   const double dx = checked_spacing(profiles.front(), 0);
@@ -195,8 +230,8 @@ EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdO
                                   " samples but profile 0 has " + std::to_string(profiles.front().z.size()) +
                                   "; periodograms are averaged on one grid");
     if (std::abs(dxp / dx - 1.0) > kSpacingTolerance)
-      throw std::invalid_argument("profile " + std::to_string(p) + " has spacing " + g6(dxp) +
-                                  " m but profile 0 has " + g6(dx) + " m");
+      throw std::invalid_argument("profile " + std::to_string(p) + " has spacing " + g6(dxp) + " m but profile 0 has " +
+                                  g6(dx) + " m");
     rows.push_back(profiles[p].z);
     remove_linear_trend(rows.back());  // Eq. 15, 1D
   }

@@ -27,14 +27,19 @@ struct Profile {
   std::vector<double> z;  // heights, m
 };
 
-// The lowest bin the estimate resolves (README Eq. 42): the Hann main lobe spans bins j - 2 .. j + 2
-// and the linear trend removal takes power from bins 1-2, so from 4 fundamentals up the periodogram
-// of a scan is its spectrum, below it the window and the trend decide.
+// The lowest bin the estimate may resolve (README Eq. 42): the Hann main lobe spans bins j - 2 .. j + 2
+// and the linear trend removal takes power from bins 1-2, so below 4 fundamentals the window and the
+// trend decide the periodogram. Above it a bin is resolved once the variance below it, as the scan's
+// longest wave, would leak at most kResolvedLeakage of the measured power into the octave it starts:
+//   j_r = min { j >= 4 :  V_u(j) sum_{i=j}^{2j-1} L_i  <=  eps sum_{i=j}^{2j-1} G_i },
+//   V_u(j) = max(0, V - sum_{i>=j} G_i dk),  L = longest_wave_leakage                     (Eq. 42)
 constexpr std::size_t kFirstResolvedBin = 4;
+constexpr double kResolvedLeakage = 0.05;  // eps: 0.2 dB
 
 struct ProfilePsdOptions {
-  bool median_filter = false;                       // step 2
-  std::size_t first_resolved_bin = kFirstResolvedBin;  // j_r, >= 2 (Eq. 42)
+  bool median_filter = false;                          // step 2
+  std::size_t first_resolved_bin = kFirstResolvedBin;  // the lowest j_r, >= 2 (Eq. 42)
+  double resolved_leakage = kResolvedLeakage;          // eps of Eq. 42 (infinity: j_r = first_resolved_bin)
 };
 
 struct EstimatedPsd {
@@ -46,8 +51,8 @@ struct EstimatedPsd {
   std::size_t profiles = 0;        // P
   double sigma = 0.0;  // mean standard deviation of the profiles after steps 1-2, m (seed 001's sigma_meas, Eq. 10)
   double correlation_length =
-      0.0;  // mean 1/e correlation length of those profiles (README Eq. 24), m; NaN if none reaches 1/e
-  double variance = 0.0;           // V: mean variance of the profiles after steps 1-2, m^2
+      0.0;                // mean 1/e correlation length of those profiles (README Eq. 24), m; NaN if none reaches 1/e
+  double variance = 0.0;  // V: mean variance of the profiles after steps 1-2, m^2
   std::size_t first_resolved = 1;  // j_r: the resolved band is bins j_r .. N/2 (Eq. 42)
 
   double resolved_variance() const;    // V_r = sum_{j >= j_r} G_j dk (Eq. 44)
@@ -71,5 +76,8 @@ void remove_quadratic_surface(Surface& map);
 void median_filter3(std::vector<double>& z);
 // Eq. 16 for one profile (N >= 8), uniform spacing dx.
 std::vector<double> hann_periodogram(const std::vector<double>& z, double dx);
+// L_j of Eq. 42: the expected Eq. 16 periodogram, after the linear trend, of a wave of unit variance
+// at bin 1 with a uniform random phase (the mean of its cosine and sine), m (m^2 per rad/m per m^2).
+std::vector<double> longest_wave_leakage(std::size_t n, double dx);
 
 }  // namespace rollspec::texture

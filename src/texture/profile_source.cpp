@@ -1,6 +1,8 @@
 #include "src/texture/profile_source.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "kernels/texture/measured_psd.hpp"
@@ -41,6 +43,22 @@ void refuse_idle_keys(const TextureSection& s) {
   }
 }
 
+// A step fitted to positions rounded by up to `half_unit` is known to its standard error
+// (half_unit / sqrt(3)) / sqrt(n (n^2 - 1) / 12): 1e-7 um for 9600 positions of 0.156 um printed to
+// 0.1 um. The shortest decimal within it is the step the instrument used (0.15625 um, fitted
+// 0.1562499957 um), so a study's [lines] spacing equal to it resolves the scans' Nyquist wavenumber.
+double nominal_step(double fitted, std::size_t n, double half_unit) {
+  const double nn = static_cast<double>(n);
+  const double error = half_unit / std::sqrt(3.0) / std::sqrt(nn * (nn * nn - 1.0) / 12.0);
+  for (int digits = 1; digits <= 17; ++digits) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*e", digits - 1, fitted);
+    const double shortest = std::strtod(text, nullptr);  // the double nearest that decimal
+    if (std::fabs(shortest - fitted) <= error) return shortest;
+  }
+  return fitted;
+}
+
 std::string percent(double share) { return io::four_digits(100.0 * share) + " %"; }
 }  // namespace
 
@@ -67,13 +85,8 @@ texture::Profile read_profile(const std::string& path) {
   bool fitted = false;
   double dx = io::uniform_grid_step(
       x, [&](std::size_t i) { return t.where(i); }, names, io::PrintedDigits{t.decimals[0], t.significant[0]}, &fitted);
-  // A step fitted to rounded positions is known to a part in 10^6 at best (0.05 um of rounding over
-  // 9600 samples of 0.156 um: 1e-6); seven digits keep what it knows, and a study's spacing equal to
-  // the nominal step (0.15625 um, fitted 0.1562499957 um) then resolves the scans' Nyquist wavenumber.
-  if (fitted) {
-    const double unit = std::pow(10.0, std::floor(std::log10(dx)) - 6.0);
-    dx = std::round(dx / unit) * unit;
-  }
+  if (fitted)
+    dx = nominal_step(dx, x.size(), io::PrintedDigits{t.decimals[0], t.significant[0]}.printed_half_unit(x.back()));
   texture::Profile p;
   p.x.resize(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) p.x[i] = x.front() + dx * static_cast<double>(i);
