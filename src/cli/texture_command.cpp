@@ -55,6 +55,11 @@ void refuse_overflow(const study::TextureSection& s, const char* what, std::size
   if (source == "table" || source == "profiles") throw data_error(m);
   throw config_error(m);
 }
+// [texture] source = profiles: what the scans resolve and what they leave unresolved.
+void say_profile_note(const study::TextureSection& tex, bool quiet) {
+  const std::string note = texture_io::profile_note(tex);
+  if (!note.empty() && !quiet) std::fprintf(stderr, "rollspec texture: note: %s\n", note.c_str());
+}
 }  // namespace
 
 int texture_command(const Args& args) {
@@ -64,9 +69,8 @@ int texture_command(const Args& args) {
       "Generates the line textures ([lines]) and isotropic surfaces ([surface]) of the study's roughness\n"
       "PSD ([texture]) for realisations 0..N-1 (Philox keyed by seed and realisation) and writes\n"
       "/texture/x, /texture/lines, /texture/psd_wavenumber, /texture/psd_target, /texture/psd_realised,\n"
-      "/surface/x, /surface/y, /surface/heights (and /profiles with [texture] source = profiles). Prints\n"
-      "the mean and the standard deviation over realisations of rms, skewness, kurtosis and correlation\n"
-      "lengths (--list: every realisation too).\n"
+      "/surface/x, /surface/y, /surface/heights, /profiles (measured scans). Prints the mean and the standard\n"
+      "deviation over realisations of rms, skewness, kurtosis and correlation lengths (--list: every one too).\n"
       "The study's scene must be `texture`.";
   po::options_description opts("options");
   StudyArgs study;
@@ -108,8 +112,7 @@ int texture_command(const Args& args) {
       count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(surface_keys.count);
 
   const texture::Psd psd = texture_io::study_psd(tex);
-  if (const std::string note = texture_io::profile_note(tex); !note.empty() && !quiet)
-    std::fprintf(stderr, "rollspec texture: note: %s\n", note.c_str());
+  say_profile_note(tex, quiet);
   const double spacing = line_keys.spacing;
   const double samples = std::floor(line_keys.length / spacing);
   if (samples < 8 || samples > 1 << 26)

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "kernels/texture/line_texture.hpp"
+#include "kernels/texture/measured_psd.hpp"
 #include "kernels/texture/profile_psd.hpp"
 #include "kernels/texture/psd.hpp"
 #include "kernels/texture/psd_smoothing.hpp"
@@ -93,9 +94,14 @@ TEST_CASE("surfaces from a PSD estimated from 5, 15 and 50 profiles keep the pro
         spectral_rms(estimated_psd_table(est, Extension::zero).to_psd(), side, dx, rng, &clamp_raw) / est.sigma;
     const double smooth =
         spectral_rms(smoothed_psd_table(est, Extension::zero).to_psd(), side, dx, rng, &clamp_smooth) / est.sigma;
+    double clamp_measured = 0.0;  // the generators' PSD: resolved band from j_r, unresolved cells (Eq. 45)
+    const double measured =
+        spectral_rms(measured_line_psd(est, Extension::zero), side, dx, rng, &clamp_measured) / est.sigma;
     MESSAGE(count << " profiles (sigma " << est.sigma << " m): surface rms / profile rms " << raw << " raw ("
-                  << clamp_raw << " of Eq. 19 nodes clamped), " << smooth << " band-averaged (" << clamp_smooth << ")");
+                  << clamp_raw << " of Eq. 19 nodes clamped), " << smooth << " band-averaged (" << clamp_smooth << "), "
+                  << measured << " with Eq. 45 (" << clamp_measured << ")");
     CHECK(std::abs(smooth - 1.0) < 0.1);
+    CHECK(std::abs(measured - 1.0) < 0.1);
     CHECK(raw > 1.1);  // the raw periodogram table fails the same bound (README §5a): the test has teeth
     // Seed method: Eq. 30 with sigma = the profiles' sigma (seed 001 Eq. 10).
     SeedSurfaceRequest rq;
