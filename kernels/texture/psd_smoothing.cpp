@@ -19,17 +19,19 @@ BandAveragedPsd band_averaged_psd(const EstimatedPsd& e, const PsdBands& b) {
   for (std::size_t a = b.first_bin; a <= top;) {
     std::size_t end = std::min(std::max(2 * a, a + b.min_bins), top + 1);  // one past the octave's last bin
     if (top + 1 - end < b.min_bins) end = top + 1;
-    const std::size_t bins = end - a;
-    const std::size_t t = std::max<std::size_t>(1, std::min(b.bands_per_octave, bins / b.min_bins));
     const double ratio = static_cast<double>(end) / static_cast<double>(a);
+    // Edge i of t parts: a ratio^{i/t}, rounded; t as large as bands_per_octave allows while the
+    // first (smallest) part keeps min_bins.
+    const auto edge = [&](std::size_t i, std::size_t t) {
+      return i == t ? end
+                    : static_cast<std::size_t>(std::lround(
+                          static_cast<double>(a) * std::pow(ratio, static_cast<double>(i) / static_cast<double>(t))));
+    };
+    std::size_t t = std::min(b.bands_per_octave, (end - a) / b.min_bins);
+    while (t > 1 && edge(1, t) < a + b.min_bins) --t;
+    t = std::max<std::size_t>(t, 1);
     for (std::size_t i = 0; i < t; ++i) {
-      const std::size_t j = i == 0 ? a : out.last.back() + 1;
-      const std::size_t l =
-          i + 1 == t
-              ? end - 1
-              : static_cast<std::size_t>(std::lround(
-                    static_cast<double>(a) * std::pow(ratio, static_cast<double>(i + 1) / static_cast<double>(t)))) -
-                    1;
+      const std::size_t j = edge(i, t), l = edge(i + 1, t) - 1;
       double sum = 0.0;
       for (std::size_t k = j; k <= l; ++k) sum += e.psd[k];
       out.first.push_back(j);

@@ -67,6 +67,18 @@ TEST_CASE("band averages keep the estimate's power and span its range") {
   }
   CHECK(b.first.front() == 1);
   CHECK(b.last.back() == 1000);
+  // From a first resolved bin of 4: octaves of bins [4 2^m, 4 2^(m+1)) are unions of bands (Eq. 33), each
+  // band of at least 4 bins.
+  const BandAveragedPsd o = band_averaged_psd(e, PsdBands{3, 4, 4});
+  for (std::size_t i = 0; i < o.psd.size(); ++i) {
+    CHECK(o.last[i] - o.first[i] + 1 >= 4);
+    if (i) CHECK(o.first[i] == o.last[i - 1] + 1);
+  }
+  for (std::size_t octave = 4; octave <= 512; octave *= 2) {
+    bool starts = false;
+    for (std::size_t f : o.first) starts = starts || f == octave;
+    CHECK(starts);
+  }
   CHECK(banded == doctest::Approx(raw).epsilon(1e-13).scale(0));
   CHECK(b.psd.size() < 40);  // 3 decades at 10 per decade, fewer where bands need 4 bins
   const TabulatedPsd t = smoothed_psd_table(e, Extension::error);
