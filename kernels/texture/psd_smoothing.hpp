@@ -21,8 +21,8 @@ namespace rollspec::texture {
 
 struct PsdBands {
   std::size_t bands_per_octave = 3;  // band width in log k (wider where min_bins asks for it)
-  std::size_t min_bins = 4;           // periodogram bins per band at least
-  std::size_t first_bin = 1;          // bins below carry no roughness (DC) or are biased (Eq. 15)
+  std::size_t min_bins = 4;          // periodogram bins per band at least
+  std::size_t first_bin = 1;         // bins below carry no roughness (DC) or are biased (Eq. 15)
 };
 
 struct BandAveragedPsd {
