@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -54,8 +55,11 @@ IsotropicPsd::IsotropicPsd(const Psd& g, double q_min, double q_cap, std::size_t
   g_.resize(q_.size());
   for (std::size_t i = 0; i < q_.size(); ++i) {
     g_[i] = g(q_[i]);
-    if (!(g_[i] >= 0.0) || !std::isfinite(g_[i]))
-      throw std::invalid_argument("isotropic PSD: G(" + std::to_string(q_[i]) + ") = " + std::to_string(g_[i]));
+    if (!(g_[i] >= 0.0) || !std::isfinite(g_[i])) {
+      char buf[96];  // %g: a PSD value of 1e-20 m^3 is not "0.000000"
+      std::snprintf(buf, sizeof buf, "isotropic PSD: G(%.6g rad/m) = %.6g m^3", q_[i], g_[i]);
+      throw std::invalid_argument(buf);
+    }
   }
   jump_ = g_.back();  // G drops to 0 above q_e
   s_.assign(q_.size(), 0.0);

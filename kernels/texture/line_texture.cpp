@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -19,13 +20,18 @@ std::size_t resolve_period(const LineTextureSpec& s) {
   return s.period;
 }
 
+std::string g6(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
 void check_sampling(const Psd& psd, double dx, bool allow_truncation) {
   const double k_nyquist = M_PI / dx;
   if (psd.support_max > k_nyquist * (1.0 + 1e-12) && !allow_truncation)
-    throw UnresolvedPsd("sampling dx = " + std::to_string(dx) +
-                            " m resolves k up to pi/dx = " + std::to_string(k_nyquist) + " rad/m, but the PSD (" +
-                            psd.description + ") carries power up to k_max = " + std::to_string(psd.support_max) +
-                            " rad/m; refine dx or give the PSD a short cut-off",
+    throw UnresolvedPsd("sampling dx = " + g6(dx) + " m resolves k up to pi/dx = " + g6(k_nyquist) +
+                            " rad/m, but the PSD (" + psd.description + ") carries power up to k_max = " +
+                            g6(psd.support_max) + " rad/m; a finer dx or a PSD that ends at or below pi/dx resolves it",
                         psd.support_max);
 }
 }  // namespace

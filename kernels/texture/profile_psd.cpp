@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +16,13 @@ namespace rollspec::texture {
 namespace {
 constexpr std::size_t kMinSamples = 8;
 constexpr double kSpacingTolerance = 1e-3;
+
+// A length or variance in messages, six significant digits ("1.5625e-07 m", never "0.000000 m").
+std::string g6(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
 
 double checked_spacing(const Profile& p, std::size_t index) {
   const std::string who = "profile " + std::to_string(index);
@@ -32,8 +40,8 @@ double checked_spacing(const Profile& p, std::size_t index) {
   for (std::size_t i = 1; i < p.x.size(); ++i) {
     const double d = p.x[i] - p.x[i - 1];
     if (std::abs(d / dx - 1.0) > kSpacingTolerance)
-      throw std::invalid_argument(who + ": non-uniform spacing at sample " + std::to_string(i) + " (step " +
-                                  std::to_string(d) + " m, mean step " + std::to_string(dx) + " m)");
+      throw std::invalid_argument(who + ": non-uniform spacing at sample " + std::to_string(i) + " (step " + g6(d) +
+                                  " m, mean step " + g6(dx) + " m)");
   }
   return dx;
 }
@@ -56,8 +64,30 @@ void add_periodogram(const spectral::WelchPlan& plan, spectral::WelchWorkspace& 
   for (std::size_t j = 0; j < g.size(); ++j) acc[j] += g[j] / (2.0 * M_PI);  // per cycle/m -> per rad/m (Eq. 1)
 }
 
+// Eq. 42: the lowest bin whose octave the unresolved variance, as the scan's longest wave, leaks
+// at most eps of the measured power into. Short profiles: at most N/2.
+std::size_t first_resolved_bin(const EstimatedPsd& e, const ProfilePsdOptions& options) {
+  const std::size_t top = e.psd.size() - 1, lowest = std::min(options.first_resolved_bin, top);
+  if (!std::isfinite(options.resolved_leakage)) return lowest;
+  const std::vector<double> leak = longest_wave_leakage(e.samples, e.spacing);
+  std::vector<double> above(e.psd.size() + 1, 0.0);  // above[j] = sum_{i >= j} G_i dk
+  for (std::size_t j = top + 1; j-- > 0;) above[j] = above[j + 1] + e.psd[j] * e.dk;
+  for (std::size_t j = lowest; 2 * j <= top; ++j) {
+    double leaked = 0.0, measured = 0.0;
+    for (std::size_t i = j; i < 2 * j; ++i) {
+      leaked += leak[i];
+      measured += e.psd[i];
+    }
+    if (std::max(0.0, e.variance - above[j]) * leaked <= options.resolved_leakage * measured) return j;
+  }
+  return lowest;  // no octave clears it (a scan that is all form): the lowest bin, V_u says the rest
+}
+
 EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, const ProfilePsdOptions& options) {
   EstimatedPsd out;
+  if (options.first_resolved_bin < 2)
+    throw std::invalid_argument("the first resolved bin must be >= 2 (bin 1 is the scan's longest wave), got " +
+                                std::to_string(options.first_resolved_bin));
   out.samples = rows.front().size();
   out.spacing = dx;
   out.profiles = rows.size();
@@ -66,7 +96,7 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   const spectral::WelchPlan plan(periodogram_config(out.samples, dx));
   spectral::WelchWorkspace ws(out.samples);
   std::vector<HeightStatistics> lengths;  // seed 001 takes its correlation lengths from the profiles (§3.1)
-  double variance = 0.0;                  // sum of the profiles' variances (Eq. 17b)
+  double variance = 0.0;                  // sum of the profiles' variances (Eq. 44)
   for (std::vector<double> z : rows) {
     if (options.median_filter) median_filter3(z);
     add_periodogram(plan, ws, z, out.psd);
@@ -81,25 +111,30 @@ EstimatedPsd average(const std::vector<std::vector<double>>& rows, double dx, co
   out.sigma /= static_cast<double>(rows.size());
   out.correlation_length = mean_statistics(lengths).correlation_length_x;  // NaN only if no profile reaches 1/e
   for (double& g : out.psd) g /= static_cast<double>(rows.size());         // Eq. 17
-  // Eq. 17b: the Hann window weighs the middle of a profile and leaks the lowest bin's power into
-  // DC, so sum_{j>=1} G_j dk is a weighted variance (0.84-2.1x the profiles' on real scans). The
-  // estimate keeps its shape and takes its level from Parseval: the mean variance of the profiles
-  // after Eq. 15 (and the median filter).
+  // The periodogram keeps its own level (Eq. 43): no rescaling to the variance, whose bulk on real
+  // scans sits in the bins the window cannot resolve (Eq. 44 reports it apart). The DC bin holds the
+  // windowed mean, no roughness.
+  out.psd[0] = 0.0;
+  out.variance = variance / static_cast<double>(rows.size());
   double held = 0.0;
-  for (std::size_t j = 1; j < out.psd.size(); ++j) held += out.psd[j] * out.dk;
-  if (!std::isfinite(held) || !std::isfinite(variance))
-    throw std::invalid_argument("the profiles' variance overflows a double (" + std::to_string(variance) +
-                                " m^2, periodogram sum " + std::to_string(held) +
-                                " m^2); heights must be far below 1e150 m");
-  if (held > 0.0) {
-    out.psd[0] = 0.0;
-    for (double& g : out.psd) g *= variance / static_cast<double>(rows.size()) / held;
-  }
+  for (double g : out.psd) held += g * out.dk;
+  if (!std::isfinite(held) || !std::isfinite(out.variance))
+    throw std::invalid_argument("the profiles' variance overflows a double (" + g6(out.variance) +
+                                " m^2, periodogram sum " + g6(held) + " m^2); heights must be far below 1e150 m");
+  out.first_resolved = first_resolved_bin(out, options);
   out.wavenumber.resize(out.psd.size());
   for (std::size_t j = 0; j < out.psd.size(); ++j) out.wavenumber[j] = out.dk * static_cast<double>(j);
   return out;
 }
 }  // namespace
+
+double EstimatedPsd::resolved_variance() const {
+  double v = 0.0;
+  for (std::size_t j = first_resolved; j < psd.size(); ++j) v += psd[j] * dk;
+  return v;
+}
+
+double EstimatedPsd::unresolved_variance() const { return std::max(0.0, variance - resolved_variance()); }
 
 TabulatedPsd estimated_psd_table(const EstimatedPsd& e, Extension extension, std::size_t first_bin) {
   if (first_bin < 1 || first_bin + 2 > e.psd.size())
@@ -167,10 +202,24 @@ std::vector<double> hann_periodogram(const std::vector<double>& z, double dx) {
   return g;
 }
 
+std::vector<double> longest_wave_leakage(std::size_t n, double dx) {
+  if (n < kMinSamples) throw std::invalid_argument("periodogram needs at least 8 samples");
+  std::vector<double> c(n), s(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phase = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    c[i] = std::sqrt(2.0) * std::cos(phase);  // unit variance
+    s[i] = std::sqrt(2.0) * std::sin(phase);
+  }
+  remove_linear_trend(c);
+  remove_linear_trend(s);
+  std::vector<double> out = hann_periodogram(c, dx);
+  const std::vector<double> ps = hann_periodogram(s, dx);
+  for (std::size_t j = 0; j < out.size(); ++j) out[j] = 0.5 * (out[j] + ps[j]);  // mean over the phase
+  return out;
+}
+
 EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdOptions& options) {
-  if (profiles.size() < 2)
-    throw std::invalid_argument("a PSD from measured profiles needs at least 2 profiles, got " +
-                                std::to_string(profiles.size()));
+  if (profiles.empty()) throw std::invalid_argument("a PSD from measured profiles needs at least 1 profile, got none");
   const double dx = checked_spacing(profiles.front(), 0);
   std::vector<std::vector<double>> rows;
   rows.reserve(profiles.size());
@@ -181,8 +230,8 @@ EstimatedPsd profile_psd(const std::vector<Profile>& profiles, const ProfilePsdO
                                   " samples but profile 0 has " + std::to_string(profiles.front().z.size()) +
                                   "; periodograms are averaged on one grid");
     if (std::abs(dxp / dx - 1.0) > kSpacingTolerance)
-      throw std::invalid_argument("profile " + std::to_string(p) + " has spacing " + std::to_string(dxp) +
-                                  " m but profile 0 has " + std::to_string(dx) + " m");
+      throw std::invalid_argument("profile " + std::to_string(p) + " has spacing " + g6(dxp) + " m but profile 0 has " +
+                                  g6(dx) + " m");
     rows.push_back(profiles[p].z);
     remove_linear_trend(rows.back());  // Eq. 15, 1D
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "kernels/texture/gauss_panel.hpp"
@@ -63,7 +64,9 @@ Psd interpolation_compensated(Psd psd, double dx) {
     const double sinc = x < 1e-8 ? 1.0 : std::sin(x) / x;
     return g(k) / (sinc * sinc * sinc * sinc);
   };
-  psd.description += ", compensated for the linear interpolant at dx = " + std::to_string(dx) + " m";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", dx);
+  psd.description += ", compensated for the linear interpolant at dx = " + std::string(buf) + " m";
   return psd;
 }
 

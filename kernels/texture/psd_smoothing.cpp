@@ -8,25 +8,39 @@
 namespace rollspec::texture {
 
 BandAveragedPsd band_averaged_psd(const EstimatedPsd& e, const PsdBands& b) {
-  if (b.bands_per_decade < 1 || b.min_bins < 1 || b.first_bin < 1)
-    throw std::invalid_argument("PSD bands: bands_per_decade, min_bins and first_bin must be >= 1");
+  if (b.bands_per_octave < 1 || b.min_bins < 1 || b.first_bin < 1)
+    throw std::invalid_argument("PSD bands: bands_per_octave, min_bins and first_bin must be >= 1");
   if (e.psd.size() < 2) throw std::invalid_argument("PSD bands: the estimate has no bins");
   const std::size_t top = e.psd.size() - 1;  // the Nyquist bin N/2
-  const double ratio = std::pow(10.0, 1.0 / static_cast<double>(b.bands_per_decade));
   BandAveragedPsd out;
-  for (std::size_t j = b.first_bin; j <= top;) {
-    // Bin i covers [i - 1/2, i + 1/2] dk: the band ends at the last bin inside (j - 1/2) ratio.
-    const double edge = (static_cast<double>(j) - 0.5) * ratio;
-    std::size_t l = edge > 0.5 ? static_cast<std::size_t>(std::floor(edge - 0.5)) : j;
-    l = std::max(l, j + b.min_bins - 1);
-    if (l + b.min_bins > top) l = top;  // too few bins left for a band of their own: merge them
-    double sum = 0.0;
-    for (std::size_t i = j; i <= l; ++i) sum += e.psd[i];
-    out.first.push_back(j);
-    out.last.push_back(l);
-    out.psd.push_back(sum / static_cast<double>(l - j + 1));                                                  // Eq. 33
-    out.centre.push_back(e.dk * std::sqrt((static_cast<double>(j) - 0.5) * (static_cast<double>(l) + 0.5)));  // Eq. 34
-    j = l + 1;
+  // Octave [a, 2a) of bins (the last one ends at the Nyquist bin) in t geometric parts of at least
+  // min_bins bins each (Eq. 33); an octave of fewer than min_bins bins (at the top, or below bin
+  // min_bins) is widened to min_bins or joins the one below.
+  for (std::size_t a = b.first_bin; a <= top;) {
+    std::size_t end = std::min(std::max(2 * a, a + b.min_bins), top + 1);  // one past the octave's last bin
+    if (top + 1 - end < b.min_bins) end = top + 1;
+    const double ratio = static_cast<double>(end) / static_cast<double>(a);
+    // Edge i of t parts: a ratio^{i/t}, rounded; t as large as bands_per_octave allows while the
+    // first (smallest) part keeps min_bins.
+    const auto edge = [&](std::size_t i, std::size_t t) {
+      return i == t ? end
+                    : static_cast<std::size_t>(std::lround(
+                          static_cast<double>(a) * std::pow(ratio, static_cast<double>(i) / static_cast<double>(t))));
+    };
+    std::size_t t = std::min(b.bands_per_octave, (end - a) / b.min_bins);
+    while (t > 1 && edge(1, t) < a + b.min_bins) --t;
+    t = std::max<std::size_t>(t, 1);
+    for (std::size_t i = 0; i < t; ++i) {
+      const std::size_t j = edge(i, t), l = edge(i + 1, t) - 1;
+      double sum = 0.0;
+      for (std::size_t k = j; k <= l; ++k) sum += e.psd[k];
+      out.first.push_back(j);
+      out.last.push_back(l);
+      out.psd.push_back(sum / static_cast<double>(l - j + 1));  // Eq. 33
+      out.centre.push_back(e.dk *
+                           std::sqrt((static_cast<double>(j) - 0.5) * (static_cast<double>(l) + 0.5)));  // Eq. 34
+    }
+    a = end;
   }
   if (out.psd.size() < 2)
     throw std::invalid_argument("PSD bands: " + std::to_string(top + 1 - b.first_bin) + " bins above bin " +

@@ -8,7 +8,9 @@
 // Averaging the bins in log-spaced bands (at least `min_bins` per band) keeps the band power
 //   G_b = (1/M_b) sum_{j in b} G_j,   G_b M_b dk = sum_{j in b} G_j dk                      (Eq. 33)
 // exactly, so the table's variance is that of the estimate, while the scatter drops to about
-// 1/sqrt(P M_b / 1.5) (1.5 bins: the Hann window's noise bandwidth).
+// 1/sqrt(P M_b / 1.94) (Hann bins are correlated). The bands split the octaves of bins
+// [f 2^m, f 2^{m+1}) (f = first_bin) into up to `bands_per_octave` geometric parts of at least
+// min_bins bins each, so every such octave keeps its measured power exactly.
 #include <cstddef>
 #include <vector>
 
@@ -18,9 +20,9 @@
 namespace rollspec::texture {
 
 struct PsdBands {
-  std::size_t bands_per_decade = 10;  // band width in log k (wider where min_bins asks for it)
-  std::size_t min_bins = 4;           // periodogram bins per band at least
-  std::size_t first_bin = 1;          // bins below carry no roughness (DC) or are biased (Eq. 15)
+  std::size_t bands_per_octave = 3;  // band width in log k (wider where min_bins asks for it)
+  std::size_t min_bins = 4;          // periodogram bins per band at least
+  std::size_t first_bin = 1;         // bins below carry no roughness (DC) or are biased (Eq. 15)
 };
 
 struct BandAveragedPsd {

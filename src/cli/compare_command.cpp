@@ -4,6 +4,7 @@
 // computed whole before anything is printed, so a refused input leaves no partial output.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -18,6 +19,7 @@
 #include "src/error.hpp"
 #include "src/io/band_levels.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/io/input_file.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
 
@@ -250,6 +252,13 @@ int compare_command(const Args& args) {
   o.same_surface = vm.count("same-surface") > 0;
   o.floor_check = vm.count("keep-floor-bands") == 0;
 
+  for (const auto& path : measurements) {
+    io::require_regular_input(path, "a measurement");
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+      throw missing_input("cannot read '" + path +
+                          "': it is a directory; expected a recording (CSV/text, WAV/FLAC, .mat) or a PSD table (CSV)");
+  }
   const io::SensorChoice choice = io::sensor_choice(
       sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   const io::Hdf5Reader r(result);

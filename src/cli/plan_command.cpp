@@ -18,6 +18,8 @@
 #include "src/study/sections/ensemble_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/study_section.hpp"
+#include "src/study/sections/texture_section.hpp"
+#include "src/texture/profile_source.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
@@ -77,6 +79,8 @@ int plan_command(const Args& args) {
               << scenes::format_bytes(std::ceil(K / C) * chunk_bytes) << " beside the result while the run lasts\n";
   }
   for (const auto& w : scene->warnings()) std::cout << "warning: " << w << "\n";
+  if (const std::string note = texture_io::profile_note(study::TextureSection::parse(s)); !note.empty())
+    std::cout << "note: " << note << "\n";
   std::printf("%-16s %-8s %s\n", "stage", "status", "reason");
   const auto stages = scene->plan();
   for (const auto& p : stages)

@@ -18,6 +18,8 @@
 #include "src/scenes/memory_estimate.hpp"
 #include "src/study/sections/ensemble_section.hpp"
 #include "src/study/sections/study_section.hpp"
+#include "src/study/sections/texture_section.hpp"
+#include "src/texture/profile_source.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
@@ -37,6 +39,13 @@ void refuse_replacing_an_ensemble(const std::string& write_path, const std::stri
   throw cannot_create("output file '" + out + "' (--out) holds a finished ensemble result (" + n +
                       "realisations computed); --only would replace it with one realisation; choose another --out (the "
                       "default is STUDY-only-ID.h5), or add --force to replace it");
+}
+
+// [texture] source = profiles: what the scans resolve and the variance they leave unresolved (stderr).
+void say_profile_note(const study::KeyReader& s, bool quiet) {
+  if (quiet) return;
+  const std::string note = texture_io::profile_note(study::TextureSection::parse(s));
+  if (!note.empty()) std::cerr << "rollspec: note: " << note << "\n";
 }
 
 // <out>.checkpoint of the file `out` names (a symbolic link followed), before the output is checked.
@@ -120,6 +129,7 @@ int run_single_phase(ResolvedRun& run, const RunRequest& q) {
   // the same study (phase 1) and stop.
   if (ensemble::mpi_rank() != 0) return 0;
   const auto scene = make_scene<scenes::SingleRunScene>(run.study);
+  say_profile_note(run.study, q.quiet);
   scene->prepare(q.quiet, q.rebuild);
   scene->run(q.quiet);
   io::Hdf5Writer w(run.write_path);
@@ -127,6 +137,7 @@ int run_single_phase(ResolvedRun& run, const RunRequest& q) {
                        study::StudySection::parse(run.study).seed);
   w.attribute("/", "scene", run.study.scene());
   scene->write_results(w);
+  texture_io::write_profile_record(w, "/profiles", study::TextureSection::parse(run.study));
   w.commit();
   if (!q.quiet) std::cout << "wrote " << run.out << "\n";
   return 0;
@@ -138,6 +149,7 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
     run.checkpoint.lock = std::make_unique<ensemble::CheckpointLock>(run.write_path + ".checkpoint");
   if (q.only < 0 && !q.resume) open_run_checkpoint(run, q);
   const auto scene = make_scene<scenes::EnsembleScene>(s);
+  if (ensemble::mpi_rank() == 0) say_profile_note(s, q.quiet);
   if (q.spectra_only) scene->write_spectra_only();
   scene->prepare(q.quiet, q.rebuild);
   ensemble::EnsembleConfig cfg;
@@ -167,6 +179,7 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
     io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, s.canonical_text(), cfg.seed);
     w.attribute("/", "scene", s.scene());
     scene->write_results(w, sums);
+    texture_io::write_profile_record(w, "/profiles", study::TextureSection::parse(s));
     write_run_attributes(w, sums, cfg.only);
     const ensemble::CriticalSection finishing;  // an interrupt waits until the bookkeeping is done
     w.commit();

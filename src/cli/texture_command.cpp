@@ -21,6 +21,7 @@
 #include "src/study/sections/study_section.hpp"
 #include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
+#include "src/texture/profile_source.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
@@ -54,6 +55,11 @@ void refuse_overflow(const study::TextureSection& s, const char* what, std::size
   if (source == "table" || source == "profiles") throw data_error(m);
   throw config_error(m);
 }
+// [texture] source = profiles: what the scans resolve and what they leave unresolved.
+void say_profile_note(const study::TextureSection& tex, bool quiet) {
+  const std::string note = texture_io::profile_note(tex);
+  if (!note.empty() && !quiet) std::fprintf(stderr, "rollspec texture: note: %s\n", note.c_str());
+}
 }  // namespace
 
 int texture_command(const Args& args) {
@@ -63,8 +69,8 @@ int texture_command(const Args& args) {
       "Generates the line textures ([lines]) and isotropic surfaces ([surface]) of the study's roughness\n"
       "PSD ([texture]) for realisations 0..N-1 (Philox keyed by seed and realisation) and writes\n"
       "/texture/x, /texture/lines, /texture/psd_wavenumber, /texture/psd_target, /texture/psd_realised,\n"
-      "/surface/x, /surface/y, /surface/heights. Prints the mean and the standard deviation over\n"
-      "realisations of rms, skewness, kurtosis and correlation lengths (--list: every realisation too).\n"
+      "/surface/x, /surface/y, /surface/heights, /profiles (measured scans). Prints the mean and the standard\n"
+      "deviation over realisations of rms, skewness, kurtosis and correlation lengths (--list: every one too).\n"
       "The study's scene must be `texture`.";
   po::options_description opts("options");
   StudyArgs study;
@@ -106,6 +112,7 @@ int texture_command(const Args& args) {
       count >= 0 ? static_cast<std::size_t>(count) : static_cast<std::size_t>(surface_keys.count);
 
   const texture::Psd psd = texture_io::study_psd(tex);
+  say_profile_note(tex, quiet);
   const double spacing = line_keys.spacing;
   const double samples = std::floor(line_keys.length / spacing);
   if (samples < 8 || samples > 1 << 26)
@@ -127,6 +134,7 @@ int texture_command(const Args& args) {
   io::Hdf5Writer w(io::check_output_target(target));
   io::write_provenance(w, "rollspec-texture", "1.0", s.canonical_text(), seed);
   w.attribute("/", "psd", psd.description);
+  texture_io::write_profile_record(w, "/profiles", tex);
   // Per-realisation rows name their index; the summary rows, how many realisations they summarise.
   if (!quiet)
     std::printf("%-9s %6s %12s %10s %10s %14s %14s\n", "kind", list ? "index" : "count", "rms_m", "skewness",

@@ -48,13 +48,25 @@ bool is_psd_table(const std::string& path) {
   head.resize(static_cast<std::size_t>(in.gcount()));
   for (const char* magic : {"RIFF", "FORM", "fLaC", "OggS", ".snd", "MATLAB", "\x89HDF"})
     if (head.rfind(magic, 0) == 0) return false;
+  // A header naming a frequency or a PSD (frequency_hz, psd, a title in (m/s^2)^2/Hz or g^2/Hz) marks a
+  // PSD table; a signal's header names channels and perhaps a time column.
   std::ifstream text(path);
   std::string line;
   for (int n = 0; n < 200 && std::getline(text, line); ++n) {
     if (n == 0 && line.rfind("# rollspec-psd-csv", 0) == 0) return true;
     std::string low;
     for (const char c : line) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (low.find("frequency_hz") != std::string::npos) return true;
+    for (const char* mark : {"frequency_hz", "/hz]", "/hz)", "frequency (hz)", "frequency [hz]"})
+      if (low.find(mark) != std::string::npos) return true;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i <= low.size(); ++i)
+      if (i == low.size() || low[i] == ',' || low[i] == ';' || low[i] == '\t') {
+        std::string cell = low.substr(start, i - start);
+        cell.erase(0, cell.find_first_not_of(" \t\r\""));
+        cell.erase(cell.find_last_not_of(" \t\r\"") + 1);
+        if (cell == "psd") return true;
+        start = i + 1;
+      }
   }
   return false;
 }

@@ -1,9 +1,12 @@
 #pragma once
 // Numbers as messages and tables print them.
 // number_text: six significant digits ("%.6g"), nan and inf spelled out; four_digits: "%.4g";
-// exact_text: "%.17g", every bit of a double (the input texts that cached tables hash).
+// exact_text: "%.17g", every bit of a double (the input texts that cached tables hash); si_text and
+// length_text: SI-prefixed, six digits ("156.25 nm").
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace rollspec::io {
 
@@ -24,6 +27,28 @@ inline std::string exact_text(double v) {
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
 }
+
+// A quantity with an SI prefix and six significant digits (or `digits`), for lengths far from 1 m:
+// si_text(1.5625e-7, "m") = "156.25 nm", si_text(0.0086722, "m") = "8.6722 mm" (ASCII "u" for micro).
+inline std::string si_text(double v, const std::string& unit, int digits = 6) {
+  static const std::pair<double, const char*> prefixes[] = {{1e3, "k"},  {1.0, ""},    {1e-3, "m"}, {1e-6, "u"},
+                                                            {1e-9, "n"}, {1e-12, "p"}, {1e-15, "f"}};
+  const double a = std::fabs(v);
+  std::pair<double, const char*> p{1.0, ""};  // zero, inf and nan without a prefix
+  if (a > 0.0 && std::isfinite(a)) {
+    p = prefixes[6];
+    for (const auto& q : prefixes)
+      if (a >= q.first * (1.0 - 5e-11)) {  // 0.99999999999 mm prints as 1 mm
+        p = q;
+        break;
+      }
+  }
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g %s", digits, v / p.first, p.second);
+  return buf + unit;
+}
+
+inline std::string length_text(double metres, int digits = 6) { return si_text(metres, "m", digits); }
 
 // A count with its noun, singular for one: "1 realisation", "3 realisations" (nouns with a plain -s plural).
 inline std::string counted(unsigned long long n, const std::string& noun) {

@@ -107,7 +107,7 @@ std::string stamps_refused_hint(const std::string& name) {
 // The rate from a time column, or --fs over it (said, with what the stamps say).
 void rate_from_column(SignalTable& s, const CsvTable& t, std::size_t time, double seconds, const std::string& unit_note,
                       const SignalRequest& r) {
-  const StampDigits digits{t.decimals[time], t.significant[time]};
+  const PrintedDigits digits{t.decimals[time], t.significant[time]};
   const auto where = [&](std::size_t row) { return t.where(row); };
   const std::string f = s.file + ": ";
   const std::string& name = t.columns[time];
@@ -146,7 +146,7 @@ void check_other_time_columns(SignalTable& s, const CsvTable& t, const std::vect
     try {
       const double hz = rate_from_time_stamps(
           t.values[c], units[c].seconds, t.columns[c], [&](std::size_t row) { return t.where(row); },
-          StampDigits{t.decimals[c], t.significant[c]});
+          PrintedDigits{t.decimals[c], t.significant[c]});
       rate = rate_text(hz) + " Hz";
       if (s.sample_rate > 0.0 && std::fabs(hz - s.sample_rate) > kRateTolerance * s.sample_rate) agree = false;
     } catch (const UserError& e) {

@@ -12,7 +12,6 @@
 #include "kernels/texture/iso3095_rail_psd.hpp"
 #include "kernels/texture/iso8608_psd.hpp"
 #include "kernels/texture/profile_psd.hpp"
-#include "kernels/texture/psd_smoothing.hpp"
 #include "kernels/texture/psd_units.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
 #include "kernels/texture/tabulated_psd.hpp"
@@ -20,11 +19,13 @@
 #include "src/io/input_file.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/csv_table.hpp"
+#include "src/io/run_warning.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/ball_section.hpp"
 #include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
+#include "src/texture/profile_source.hpp"
 
 namespace fs = std::filesystem;
 
@@ -79,55 +80,6 @@ texture::Psd read_psd_table(const TextureSection& s) {
   }
 }
 
-texture::Profile read_profile(const std::string& path) {
-  const io::CsvTable t = io::read_csv(path);
-  texture::Profile p;
-  const bool micrometres = t.columns.size() == 2 && t.columns[1] == "height_um";
-  if (t.columns.size() != 2 || t.columns[0] != "position_m" || (t.columns[1] != "height_m" && !micrometres))
-    throw data_error(path + ":1: a profile has the columns position_m,height_m (or position_m,height_um)");
-  io::require_increasing(t, 0);
-  p.x = t.values[0];
-  p.z = t.values[1];
-  if (micrometres)
-    for (double& z : p.z) z *= 1e-6;
-  return p;
-}
-
-// Eq. 15-17 of the study's measured profiles.
-texture::EstimatedPsd profile_estimate(const TextureSection& s) {
-  const auto& files = s.profile_paths;
-  if (files.size() < 2)
-    s.profiles_origin.refuse("names " + std::to_string(files.size()) +
-                             " profile file(s); allowed: at least 2 comma-separated CSV files");
-  std::vector<texture::Profile> profiles;
-  for (const auto& p : files) {
-    io::require_regular_input(p, "profile file (" + s.profiles_origin.where + ")");
-    if (!fs::is_regular_file(p)) throw missing_input(s.profiles_origin.where + ": no such profile file " + p);
-    profiles.push_back(read_profile(p));
-    if (profiles.back().z.size() < 8)
-      throw data_error(p + ": " + std::to_string(profiles.back().z.size()) + " samples; a profile needs at least 8");
-  }
-  try {
-    texture::ProfilePsdOptions opt;
-    opt.median_filter = s.median_filter;
-    return texture::profile_psd(profiles, opt);
-  } catch (const std::invalid_argument& e) {
-    throw data_error(s.profiles_origin.where + ": " + e.what());
-  }
-}
-
-// The estimate band-averaged in log k (kernels/texture/README.md Eq. 33-35): the raw periodogram's
-// bin-to-bin scatter would make isotropic surfaces far too rough (inverse Abel transform, Eq. 19).
-texture::Psd profile_psd(const TextureSection& s) {
-  const texture::EstimatedPsd est = profile_estimate(s);
-  try {
-    texture::Psd psd = texture::smoothed_psd_table(est, extension_of(s.table_extension)).to_psd();
-    psd.cell_average = true;  // Eq. 14b: every synthesis grid keeps the table's variance
-    return psd;
-  } catch (const std::invalid_argument& e) {
-    throw data_error(s.profiles_origin.where + ": " + e.what());
-  }
-}
 }  // namespace
 
 std::vector<KeySpec> psd_keys() { return TextureSection::keys(); }
@@ -205,7 +157,7 @@ std::string grid_message(const LineGeneratorKeys& k, const std::exception& e, do
            "the table's last wavenumber, with " + k.spacing_key + " at most pi over that wavenumber";
     } else {
       m += "; allowed: " + k.spacing_key + " at most " + io::four_digits(M_PI / (u->k_max * stretch)) + " m";
-      if (k.source == "self-affine")
+      if (k.source == "self-affine" || k.source == "profiles")
         m += ", or [texture] short_wavelength at least " + io::four_digits(2.0 * spacing * stretch) + " m";
       if (k.source == "iso3095") m += iso3095_note(k);
     }
@@ -256,8 +208,15 @@ std::string psd_input_fingerprint(const TextureSection& s) {
     out << "file " << fs::path(p).filename().string() << "\n" << in.rdbuf() << "\n";
   };
   if (s.source == "table") add_file(s.table_path);
-  if (s.source == "profiles")
+  if (s.source == "profiles") {
     for (const auto& p : s.profile_paths) add_file(p);
+    // How a PSD is made from them: the estimator (whole scans, measured level, unresolved variance
+    // apart: kernels/texture Eq. 42-45), and a short-wavelength cut only where the study sets one
+    // (Eq. 46; the canonical text shows the key's default either way).
+    out << "profile estimator = periodogram level, unresolved variance apart (Eq. 42-45)\n";
+    out << "short_wavelength cut = " << (s.is_set("short_wavelength") ? io::exact_text(s.short_wavelength) : "none")
+        << "\n";
+  }
   return out.str();
 }
 
@@ -346,6 +305,8 @@ SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection
     throw config_error(
         grid_message(LineGeneratorKeys::of(t, s.spacing_origin, "[surface] spacing"), e, h, std::max(a, 1.0 / a)));
   }
+  if (g.spectral)  // a grid smaller than the measured profiles drops their longer waves: say how much
+    if (const std::string w = surface_share_warning(t, s, psd, g.spectral->target_variance()); !w.empty()) io::warn(w);
   return g;
 }
 

@@ -108,7 +108,7 @@ def test_measurement_is_a_directory_or_missing(tmp_path, good_result):
     d = tmp_path / "m.csv"
     d.mkdir()
     r = run(["compare", good_result, d])
-    assert_refused(r, EX_NOINPUT, ["m.csv", "is a directory", "expected a CSV file"])
+    assert_refused(r, EX_NOINPUT, ["m.csv", "is a directory", "expected a recording", "or a PSD table"])
     r = run(["compare", good_result, tmp_path / "absent.csv"])
     assert_refused(r, EX_NOINPUT, ["cannot open", "absent.csv"])
 
@@ -304,7 +304,8 @@ def swapped_x(n=64):
 
 PROFILES = [
     ("non-uniform spacing", profile_bytes(x=nonuniform_x()), EX_DATAERR,
-     ["s.ini:7: [texture] profiles = good.csv, bad.csv", "profile 1", "non-uniform spacing"]),
+     ["s.ini:7: [texture] profiles = good.csv, bad.csv", "bad.csv:18: column 'position_m' value 16 um is -0.1",
+      "steps off the uniform grid x_0 + i*dx", "dx = 1.00635 um", "the spacing is not constant"]),
     ("one column", b"position_m\n" + b"".join(f"{i * 1e-6!r}\n".encode() for i in range(64)), EX_DATAERR,
      ["bad.csv:1: a profile has the columns position_m,height_m"]),
     ("wrong unit header", profile_bytes(header="position_mm,height_m"), EX_DATAERR,

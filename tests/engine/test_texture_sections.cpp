@@ -37,11 +37,18 @@ TEST_CASE("texture section: values, profile paths beside the study file, origins
   CHECK(texture_io::profile_files(t) == t.profile_paths);
   CHECK(t.profiles_origin.where == s.where("texture.profiles"));
   CHECK(t.source_origin.where == "/tmp/rollspec_texture_sections/s.ini:6: [texture] source = profiles");
-  // Fewer than two profiles: refused at [texture] profiles, as the string reads did.
-  const auto one = study::TextureSection::parse(texture_study("[texture]\nsource = profiles\nprofiles = a.csv\n"));
-  CHECK(message_of([&] { texture_io::study_psd(one); }) ==
-        "/tmp/rollspec_texture_sections/s.ini:7: [texture] profiles = a.csv: names 1 profile file(s); allowed: at "
-        "least 2 comma-separated CSV files");
+  // A key that cannot act on measured profiles is refused where it is set, before any file is read.
+  CHECK(message_of([&] { texture_io::study_psd(t); }) ==
+        "/tmp/rollspec_texture_sections/s.ini:8: [texture] hurst = 0.6: does not act on measured profiles ([texture] "
+        "source = profiles); allowed with profiles: profiles, median_filter, table_extension, short_wavelength (cuts "
+        "the measured PSD) and amplitudes; remove it");
+  CHECK(t.is_set("hurst"));
+  CHECK_FALSE(t.is_set("rms"));
+  // One scan is enough (each is used whole); none is refused at [texture] profiles.
+  const auto none = study::TextureSection::parse(texture_study("[texture]\nsource = profiles\nprofiles = ,\n"));
+  CHECK(message_of([&] { texture_io::study_psd(none); }) ==
+        "/tmp/rollspec_texture_sections/s.ini:7: [texture] profiles = ,: names no profile file; allowed: one or more "
+        "comma-separated CSV files (position_m,height_m), each a whole scan");
 }
 
 TEST_CASE("texture section: the PSD from the section is the PSD from the study") {

@@ -17,7 +17,8 @@ std::vector<KeySpec> TextureSection::keys() {
                std::string("none")),
       choice_key("texture", "table_extension", "PSD outside the table or measured band", std::string("error"),
                  {"error", "constant", "power_law", "zero"}),
-      text_key("texture", "profiles", "measured profiles: comma-separated CSV files (position_m,height_m)",
+      text_key("texture", "profiles",
+               "measured scans, each used whole: comma-separated CSV files (position_m,height_m or height_um)",
                std::string("")),
       bool_key("texture", "median_filter", "3-point median filter on measured profiles", std::string("false")),
       real_key("texture", "hurst", "-", "Hurst exponent H of the self-affine PSD", std::string("0.8"), 0.0, 1.0, false,
@@ -25,7 +26,9 @@ std::vector<KeySpec> TextureSection::keys() {
       real_key("texture", "long_wavelength", "m", "long-wavelength cut-off (0: none)", std::string("0"), 0.0, inf),
       real_key("texture", "rolloff_wavelength", "m", "roll-off wavelength (plateau above it)", std::string("1e-3"), 0.0,
                inf, false),
-      real_key("texture", "short_wavelength", "m", "short-wavelength cut-off", std::string("1e-5"), 0.0, inf, false),
+      real_key("texture", "short_wavelength", "m",
+               "short-wavelength cut-off (with source = profiles: cuts the measured PSD, only where set)",
+               std::string("1e-5"), 0.0, inf, false),
       choice_key("texture", "rms_kind", "what `rms` sets for the self-affine PSD", std::string("height"),
                  {"height", "slope"}),
       real_key("texture", "rms", "m (height) or - (slope)", "rms height or rms slope of the self-affine PSD",
@@ -66,8 +69,17 @@ TextureSection TextureSection::parse(const KeyReader& s) {
   t.long_wavelength_origin = {s.where("texture.long_wavelength")};
   t.short_wavelength_origin = {s.where("texture.short_wavelength")};
   t.rms_origin = {s.where("texture.rms")};
-  for (const auto& k : keys()) t.texts.emplace_back(k.key, s.text(k.full_name()));
+  for (const auto& k : keys()) {
+    t.texts.emplace_back(k.key, s.text(k.full_name()));
+    if (s.is_set(k.full_name())) t.set_keys.emplace_back(k.key, KeyOrigin{s.where(k.full_name())});
+  }
   return t;
+}
+
+bool TextureSection::is_set(const std::string& key) const {
+  for (const auto& [k, origin] : set_keys)
+    if (k == key) return true;
+  return false;
 }
 
 }  // namespace rollspec::study

@@ -27,6 +27,11 @@ struct TextureSection {
       rms_origin;
   // The keys() in table order with their canonical value texts, for the cached tables' input texts.
   std::vector<std::pair<std::string, std::string>> texts;
+  // The keys the study file or a --set gave a value (not their documented default), with where:
+  // source = profiles refuses those that cannot act on measured profiles and cuts at short_wavelength
+  // only when it is set.
+  std::vector<std::pair<std::string, KeyOrigin>> set_keys;
+  bool is_set(const std::string& key) const;
 
   static std::vector<KeySpec> keys();
   static TextureSection parse(const KeyReader& s);

@@ -1,47 +1,95 @@
-"""Converts three measured line scans from SurfaceTopography's test data (MIT licence, see
-README.md) into rollspec profile files (position_m,height_m), each scan cut into two halves, the
-two profiles a PSD estimate needs.
+"""Converts measured scans from SurfaceTopography's test data (MIT licence, see README.md) into
+rollspec profile files (position_m,height_m or position_m,height_um), each scan whole and with its
+numbers as the instrument printed them: a length in mm or um becomes metres by moving the decimal
+point, so a position keeps exactly its printed digits (and its rounding, which `[texture] source =
+profiles` accepts). Only the AFM map (binary) is scaled: its integer counts times the header's factor.
 
-    /usr/bin/python3 make_measured_profiles.py DIR   # DIR holds dektak-1.csv, opdx-3.txt, xy-4.txt
+    /usr/bin/python3 make_measured_profiles.py DIR   # DIR holds the files named in SOURCES
 """
+import decimal
 import pathlib
+import re
 import sys
+import zipfile
 
 import numpy as np
 
+HERE = pathlib.Path(__file__).resolve().parent
+
+
+def shifted(text, places):
+    """The decimal `text` times 10^-places, as text with the same digits (no binary rounding)."""
+    return format(decimal.Decimal(text.strip()).scaleb(-places), "f")
+
 
 def dektak(path):
-    """Bruker Dektak stylus export: 1500 um scan, 9600 samples; lateral column rounded to 0.1 um,
-    so positions come from the stated length; heights in um."""
+    """Bruker Dektak export: lateral um (printed to 0.1 um for 0.156 um steps), raw um."""
     lines = path.read_text(encoding="latin-1").splitlines()
     start = lines.index("Lateral um,Raw Micrometer,") + 1
-    z = np.array([float(l.split(",")[1]) for l in lines[start:] if l[:1] and l[0] in "-0123456789"]) * 1e-6
-    return np.arange(z.size) * 1500e-6 / z.size, z
+    rows = [line.split(",")[:2] for line in lines[start:] if line[:1] and line[0] in "-0123456789"]
+    return "position_m,height_um", [(shifted(x, 6), z) for x, z in rows]
 
 
 def opdx(path):
-    """Bruker OPDx stylus export: position and height in m."""
-    d = np.loadtxt(path)
-    return d[:, 0], d[:, 1]
+    """Bruker OPDx export: position and height in m."""
+    return "position_m,height_m", [tuple(line.split()) for line in path.read_text().splitlines() if line.strip()]
 
 
 def xy4(path):
-    """Stylus line scan, position and height in um (as SurfaceTopography's own tests read it)."""
-    d = np.loadtxt(path)
-    x = (d[:, 0] - d[0, 0]) * 1e-6
-    return np.arange(x.size) * (x[-1] / (x.size - 1)), d[:, 1] * 1e-6
+    """Stylus line scan, position and height in um (as SurfaceTopography's tests read it)."""
+    rows = [line.split() for line in path.read_text().splitlines() if line.strip()]
+    return "position_m,height_um", [(shifted(x, 6), z) for x, z in rows]
+
+
+def hfm(path):
+    """Stylus export X;Y;valid in mm, printed to 1 nm; rows flagged invalid (none here) left out."""
+    rows = [line.split(";") for line in path.read_text().splitlines()[2:] if line.strip()]
+    return "position_m,height_m", [(shifted(x, 3), shifted(z, 3)) for x, z, valid in rows if valid.strip() == "1"]
+
+
+def mitutoyo(path):
+    """Mitutoyo spreadsheet: sheet 2 column E position in mm, F height in um (shortest decimals, as a
+    spreadsheet shows the stored values)."""
+    sheet = zipfile.ZipFile(path).read("xl/worksheets/sheet2.xml").decode()
+    cells = {(c, int(r)): v for c, r, v in re.findall(r'<c r="([A-Z]+)(\d+)"[^>]*?>(?:<f>.*?</f>)?<v>(.*?)</v></c>',
+                                                      sheet)}
+    rows, r = [], 1
+    while ("E", r) in cells:
+        rows.append((shifted(repr(float(cells[("E", r)])), 3), repr(float(cells[("F", r)]))))
+        r += 1
+    return "position_m,height_um", rows
+
+
+def wsxm_rows(path, every=16):
+    """WSxM AFM map (600 nm square, 256 x 256 int16): every 16th row along the fast scan axis, heights
+    = counts * Z Amplitude / (Maximum - Minimum) as SurfaceTopography scales them."""
+    data = path.read_bytes()
+    header = data[:2245].decode("latin-1")
+    value = lambda key: float(re.search(key + r":\s*([-0-9.eE+]+)", header).group(1))
+    scale = value("Z Amplitude") * 1e-9 / (value("Maximum") - value("Minimum"))
+    counts = np.frombuffer(data[2245:2245 + 2 * 256 * 256], dtype="<i2").reshape(256, 256)
+    dx = 600e-9 / 256
+    for row in range(0, 256, every):
+        yield row, "position_m,height_m", [(repr(i * dx), f"{c * scale:.6g}") for i, c in enumerate(counts[row])]
+
+
+def write(name, header, rows):
+    with open(HERE / name, "w") as f:
+        f.write(header + "\n")
+        f.writelines(f"{a},{b}\n" for a, b in rows)
+
+
+SOURCES = [("dektak-1", dektak, "dektak-1.csv"), ("opdx-3", opdx, "opdx-3.txt"), ("xy-4", xy4, "xy-4.txt"),
+           ("hfm-1", hfm, "hfm-1.hfm"), ("mitutoyo-2", mitutoyo, "mitutoyo_2_mock.xlsx")]
 
 
 def main(src):
     src = pathlib.Path(src)
-    for name, reader, file in [("dektak-1", dektak, "dektak-1.csv"), ("opdx-3", opdx, "opdx-3.txt"), ("xy-4", xy4, "xy-4.txt")]:
-        x, z = reader(src / file)
-        n = z.size // 2
-        dx = (x[-1] - x[0]) / (x.size - 1)
-        for part, sl in (("a", slice(0, n)), ("b", slice(n, 2 * n))):
-            out = pathlib.Path(__file__).with_name(f"{name}-{part}.csv")
-            np.savetxt(out, np.c_[np.arange(n) * dx, z[sl]], delimiter=",", header="position_m,height_m", comments="",
-                       fmt="%.10e")
+    for name, reader, file in SOURCES:
+        write(f"{name}.csv", *reader(src / file))
+    (HERE / "top-1-rows").mkdir(exist_ok=True)
+    for row, header, rows in wsxm_rows(src / "top-1.top"):
+        write(f"top-1-rows/row-{row:03d}.csv", header, rows)
 
 
 if __name__ == "__main__":

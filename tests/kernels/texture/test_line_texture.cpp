@@ -116,7 +116,7 @@ TEST_CASE("sampling check: dx > pi / k_max is refused unless truncation is allow
   const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 100.0, 1e5, RmsTarget::height, 1e-6});
   CHECK_THROWS_WITH_AS(
       LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, false}),
-      doctest::Contains("refine dx"), UnresolvedPsd);
+      doctest::Contains("a finer dx or a PSD that ends at or below pi/dx"), UnresolvedPsd);
   try {  // k_max rides along, so a caller can say how fine the grid must be
     LineTextureGenerator(model.to_psd(), LineTextureSpec{1024, 1e-4, 0, Amplitudes::rayleigh, false});
   } catch (const UnresolvedPsd& e) {
