@@ -68,7 +68,8 @@ void bartlett_wishart(std::size_t q, double nu, const double* u, double* a) {
   std::size_t k = 0;
   for (std::size_t i = 0; i < q; ++i) {
     const double shape = 0.5 * (nu - static_cast<double>(i));
-    l(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)) = std::sqrt(2.0 * boost::math::gamma_p_inv(shape, u[i]));
+    l(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)) =
+        std::sqrt(2.0 * boost::math::gamma_p_inv(shape, u[i]));
     for (std::size_t j = 0; j < i; ++j) l(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = z[k++];
   }
   Eigen::Map<RowMatrix>(a, static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) = l * l.transpose();
@@ -111,12 +112,14 @@ BandTestResult band_test_with_table(const double* measured_log, const double* me
   Matrix vv = Eigen::Map<const RowMatrix>(v.data(), n, n);
   vv += table.factor * t_used;
   const Eigen::LLT<Matrix> llt(vv);
-  if (llt.info() != Eigen::Success) throw std::invalid_argument("band test: the band covariance is not positive definite");
+  if (llt.info() != Eigen::Success)
+    throw std::invalid_argument("band test: the band covariance is not positive definite");
   const double t2 = llt.solve(Eigen::Map<const Vector>(d.data(), n)).dot(Eigen::Map<const Vector>(d.data(), n));
 
   // The bootstrap (D-31b): estimates drawn about the observed ones, d* from the law they give.
   const Eigen::LLT<Matrix> s_llt(s);
-  if (s_llt.info() != Eigen::Success) throw std::invalid_argument("band test: the band covariance is not positive definite");
+  if (s_llt.info() != Eigen::Success)
+    throw std::invalid_argument("band test: the band covariance is not positive definite");
   const Matrix ls = s_llt.matrixL(), lv = llt.matrixL();
   Vector g, offset, g_star, offset_star;
   scaling(s, K, records, g, offset);

@@ -27,12 +27,13 @@ LevelOffset finish(double estimate, double a_s, double a_t, double nu_s, double 
 
 }  // namespace
 
-LevelOffset level_offset(const double* d, const double* v_s, const double* v_t, std::size_t p, double nu_s,
-                         double nu_t, double level) {
+LevelOffset level_offset(const double* d, const double* v_s, const double* v_t, std::size_t p, double nu_s, double nu_t,
+                         double level) {
   if (p == 0) throw std::invalid_argument("level offset: no bands");
   const auto n = static_cast<Eigen::Index>(p);
   const Eigen::MatrixXd vs = Eigen::Map<const RowMatrix>(v_s, n, n);
-  const Eigen::MatrixXd vt = v_t ? Eigen::MatrixXd(Eigen::Map<const RowMatrix>(v_t, n, n)) : Eigen::MatrixXd::Zero(n, n);
+  const Eigen::MatrixXd vt =
+      v_t ? Eigen::MatrixXd(Eigen::Map<const RowMatrix>(v_t, n, n)) : Eigen::MatrixXd::Zero(n, n);
   const Eigen::VectorXd diag = (vs + vt).diagonal();
   if (!(diag.minCoeff() > 0.0) || !diag.allFinite())
     throw std::invalid_argument("level offset: a band without a positive finite variance");

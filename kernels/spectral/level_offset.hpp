@@ -14,16 +14,16 @@
 namespace rollspec::spectral {
 
 struct LevelOffset {
-  double estimate = 0.0;  // c, in the units of d
-  double variance = 0.0;  // var c
-  double dof = 0.0;       // nu
+  double estimate = 0.0;            // c, in the units of d
+  double variance = 0.0;            // var c
+  double dof = 0.0;                 // nu
   double lower = 0.0, upper = 0.0;  // c -+ t_{nu, (1 + level)/2} sqrt(var c)
 };
 
 // d: p deviations; v_s, v_t: p x p row-major (v_t may be null: no table term); nu_s, nu_t: their dof.
 // Throws std::invalid_argument when V is not positive definite or p = 0.
-LevelOffset level_offset(const double* d, const double* v_s, const double* v_t, std::size_t p, double nu_s,
-                         double nu_t, double level);
+LevelOffset level_offset(const double* d, const double* v_s, const double* v_t, std::size_t p, double nu_s, double nu_t,
+                         double level);
 
 // The same written out with an explicit inverse (Gauss-Jordan), for the tests.
 LevelOffset level_offset_reference(const double* d, const double* v_s, const double* v_t, std::size_t p, double nu_s,

@@ -113,11 +113,14 @@ std::size_t sensors_in_row(const io::Hdf5Reader& r, const std::string& row) {
 // A CSV cell: every bit of the number, empty where there is none (no interval, no noise recording).
 std::string cell(double v) { return std::isfinite(v) ? io::exact_text(v) : ""; }
 
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::ordered_json number(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
 
-nlohmann::json verdict_json(const std::string& result, const std::string& column, const io::BandLevels& b,
-                            const compare::MeasuredSpectrum& m, const compare::Verdict& v, const LossOfContact& loss) {
-  using nlohmann::json;
+nlohmann::ordered_json verdict_json(const std::string& result, const std::string& column, const io::BandLevels& b,
+                                    const compare::MeasuredSpectrum& m, const compare::Verdict& v,
+                                    const LossOfContact& loss) {
+  using json = nlohmann::ordered_json;
   const bool predict = m.records > 0.0;
   const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
   json bands = json::array();
@@ -136,47 +139,53 @@ nlohmann::json verdict_json(const std::string& result, const std::string& column
   const auto& t = v.test.result;
   json offset = nullptr;
   if (v.offset)
-    offset = {{"estimate_db", v.offset->estimate}, {"lower_db", v.offset->lower}, {"upper_db", v.offset->upper},
-              {"dof", v.offset->dof}, {"bands", v.tested}, {"method", "generalised least squares (kernels/spectral D-34)"}};
-  return {{"result", result},
-          {"sensor", b.sensor},
-          {"measurement", m.source},
-          {"column", column.empty() ? json(nullptr) : json(column)},
-          {"realisations", b.realisations},
-          {"confidence_level", b.confidence},
-          {"interval_method", b.interval_method},
-          {"measured_averages", predict ? json(m.records) : json(nullptr)},
-          {"measured_averages_source", m.records_source},
-          {"measurement_notes", m.notes},
-          {"table_term", {{"factor", v.table_factor},
-                          {"table", b.table.empty() ? json(nullptr) : json(b.table)},
-                          {"units", b.table_units},
-                          {"dof", number(b.table_dof)},
-                          {"estimated", b.table_units >= 2}}},
-          {"loss_of_contact_share", number(loss.share)},
-          {"loss_of_contact_warning", loss.warning.empty() ? json(nullptr) : json(loss.warning)},
-          {"question", v.question},
-          {"bands", bands},
-          {"rms_db_error", number(v.rms_db)},
-          {"inside", has_interval ? v.inside : 0},
-          {"judged", v.judged},
-          {"bands_compared", v.rows.size()},
-          {"bands_tested", v.tested},
-          {"level_offset", offset},
-          {"warnings", v.warnings},
-          {"p_value", t.defined ? json(t.p_value) : json(nullptr)},
-          {"combined_test",
-           {{"method", t.draws > 0 ? "Hotelling T2, law by parametric bootstrap with the table term (kernels/spectral D-31)"
-                                   : "Hotelling T2, F law (kernels/spectral D-26)"},
-            {"level", v.test.level},
-            {"defined", t.defined},
-            {"rejected", t.defined ? json(v.test.rejected) : json(nullptr)},
-            {"t2", t.defined ? json(t.t2) : json(nullptr)},
-            {"f", t.defined && t.draws == 0 ? json(t.f) : json(nullptr)},
-            {"dof", t.defined && t.draws == 0 ? json::array({t.dof1, t.dof2}) : json(nullptr)},
-            {"bootstrap_draws", t.draws},
-            {"bands", v.test.bands},
-            {"verdict", v.test.verdict}}}};
+    offset = {{"estimate_db", v.offset->estimate},
+              {"lower_db", v.offset->lower},
+              {"upper_db", v.offset->upper},
+              {"dof", v.offset->dof},
+              {"bands", v.tested},
+              {"method", "generalised least squares (kernels/spectral D-34)"}};
+  return {
+      {"result", result},
+      {"sensor", b.sensor},
+      {"measurement", m.source},
+      {"column", column.empty() ? json(nullptr) : json(column)},
+      {"realisations", b.realisations},
+      {"confidence_level", b.confidence},
+      {"interval_method", b.interval_method},
+      {"measured_averages", predict ? json(m.records) : json(nullptr)},
+      {"measured_averages_source", m.records_source},
+      {"measurement_notes", m.notes},
+      {"table_term",
+       {{"factor", v.table_factor},
+        {"table", b.table.empty() ? json(nullptr) : json(b.table)},
+        {"units", b.table_units},
+        {"dof", number(b.table_dof)},
+        {"estimated", b.table_units >= 2}}},
+      {"loss_of_contact_share", number(loss.share)},
+      {"loss_of_contact_warning", loss.warning.empty() ? json(nullptr) : json(loss.warning)},
+      {"question", v.question},
+      {"bands", bands},
+      {"rms_db_error", number(v.rms_db)},
+      {"inside", has_interval ? v.inside : 0},
+      {"judged", v.judged},
+      {"bands_compared", v.rows.size()},
+      {"bands_tested", v.tested},
+      {"level_offset", offset},
+      {"warnings", v.warnings},
+      {"p_value", t.defined ? json(t.p_value) : json(nullptr)},
+      {"combined_test",
+       {{"method", t.draws > 0 ? "Hotelling T2, law by parametric bootstrap with the table term (kernels/spectral D-31)"
+                               : "Hotelling T2, F law (kernels/spectral D-26)"},
+        {"level", v.test.level},
+        {"defined", t.defined},
+        {"rejected", t.defined ? json(v.test.rejected) : json(nullptr)},
+        {"t2", t.defined ? json(t.t2) : json(nullptr)},
+        {"f", t.defined && t.draws == 0 ? json(t.f) : json(nullptr)},
+        {"dof", t.defined && t.draws == 0 ? json::array({t.dof1, t.dof2}) : json(nullptr)},
+        {"bootstrap_draws", t.draws},
+        {"bands", v.test.bands},
+        {"verdict", v.test.verdict}}}};
 }
 
 std::string offset_line(const compare::Verdict& v, double confidence) {
@@ -185,8 +194,8 @@ std::string offset_line(const compare::Verdict& v, double confidence) {
   std::snprintf(buf, sizeof buf,
                 "level_offset: model - measurement %+.2f dB, %d %% interval %+.2f .. %+.2f dB over %d tested bands "
                 "(kernels/spectral D-34)\n",
-                v.offset->estimate, static_cast<int>(std::lround(100.0 * confidence)), v.offset->lower,
-                v.offset->upper, v.tested);
+                v.offset->estimate, static_cast<int>(std::lround(100.0 * confidence)), v.offset->lower, v.offset->upper,
+                v.tested);
   return buf;
 }
 
@@ -282,8 +291,9 @@ int compare_command(const Args& args) {
     m = psd_table(measurements[0], column, signal.skip_rows, o.model_df);
   } else {
     if (!estimator)
-      throw data_error(result + ": has no record of its estimator (/psd@sample_rate, welch_segment, ...: written "
-                                "by this rollspec); re-run the study, or give compare a PSD table of the recording");
+      throw data_error(result +
+                       ": has no record of its estimator (/psd@sample_rate, welch_segment, ...: written "
+                       "by this rollspec); re-run the study, or give compare a PSD table of the recording");
     m = compare::measure_recordings(measurements, ro, *estimator);
   }
   if (vm.count("measured-averages")) {
@@ -325,14 +335,14 @@ int compare_command(const Args& args) {
   std::string text;
   char buf[320];
   if (format == "csv") {
-    text += "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,"
-            "prediction_upper_db,noise_db,use,inside\n";
+    text +=
+        "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,"
+        "prediction_upper_db,noise_db,use,inside\n";
     for (const auto& x : v.rows) {
       const bool in = predict ? x.inside_prediction : x.inside_ci;
       text += number_text(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," +
               cell(x.ci_lower) + "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
-              cell(x.noise) + "," + compare::band_use_name(x.use) + "," + (has_interval ? (in ? "1" : "0") : "") +
-              "\n";
+              cell(x.noise) + "," + compare::band_use_name(x.use) + "," + (has_interval ? (in ? "1" : "0") : "") + "\n";
     }
     std::fputs(text.c_str(), stdout);
     std::cerr << "rollspec compare: question: " << v.question << "\n" << offset_line(v, b.confidence);

@@ -67,9 +67,9 @@ std::string question_text(const io::BandLevels& b, const MeasuredSpectrum& m, bo
            "themselves, or --measured-averages M, to ask whether a measurement of M rolls agrees with the model)";
   std::string surface;
   if (b.table_units < 2)
-    surface = b.table_error_missing ? " of the very surface the model's " + b.table +
-                                          " was built on (its error was not estimated)"
-                                    : "";
+    surface = b.table_error_missing
+                  ? " of the very surface the model's " + b.table + " was built on (its error was not estimated)"
+                  : "";
   else if (same_surface)
     surface = " of the very surface the model's " + b.table + " was built on (--same-surface)";
   else
@@ -115,13 +115,14 @@ std::string resolution_warning(const io::BandLevels& b, const MeasuredSpectrum& 
                                const std::vector<BandRow>& rows) {
   if (m.model_grid || o.model_psd.size() < 3 || !(o.model_df > 0.0) || m.frequency.size() < 2) return "";
   const double df = m.frequency[1] - m.frequency[0], ratio = df / o.model_df;
-  const std::string bins = "the measurement's PSD has bins of " + number_text(df) + " Hz, the model's " +
-                           number_text(o.model_df) + " Hz";
+  const std::string bins =
+      "the measurement's PSD has bins of " + number_text(df) + " Hz, the model's " + number_text(o.model_df) + " Hz";
   const double whole = std::round(ratio);
   if (ratio < 1.0 - 1e-9 || std::fabs(ratio - whole) > 1e-6 * ratio || whole < 2.0) {
     if (std::fabs(ratio - 1.0) <= 1e-9) return "";
-    return bins + ": its bands average other bins than the model's; give compare the recording itself (it then "
-                  "uses the model's estimator)";
+    return bins +
+           ": its bands average other bins than the model's; give compare the recording itself (it then "
+           "uses the model's estimator)";
   }
   const std::size_t refine = static_cast<std::size_t>(whole), segment = 2 * (o.model_psd.size() - 1);
   if (segment % refine != 0 || segment / refine < 4) return "";
@@ -163,7 +164,8 @@ std::string band_rule_warning(const io::BandLevels& b, const MeasuredSpectrum& m
     const std::size_t k = row.band;
     const double s = b.log_std[k] * b.log_std[k];
     const double sd = std::sqrt(spectral::log_mean_variance(s, K) + spectral::log_mean_variance(s, m.records));
-    const double shift = spectral::band_rule_shift(o.model_psd.data(), o.model_psd.size(), o.model_df, b.lower[k], b.upper[k]);
+    const double shift =
+        spectral::band_rule_shift(o.model_psd.data(), o.model_psd.size(), o.model_df, b.lower[k], b.upper[k]);
     if (!(sd > 0.0) || !(std::fabs(shift) > sd)) continue;
     char one[160];
     std::snprintf(one, sizeof one, "%s%.4g .. %.4g Hz (%.2g bins, %+.2f dB, %.2g sd)", count ? "; " : "", b.lower[k],
@@ -210,9 +212,8 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
       r.pred_lower = r.simulated + 10.0 * std::log10(p.lower);
       r.pred_upper = r.simulated + 10.0 * std::log10(p.upper);
       if (v.table_factor > 0.0)  // a new surface: the model's table and the rig's surface (D-31)
-        io::widen_band_interval(r.simulated, r.pred_lower, r.pred_upper,
-                                v.table_factor * table_band_variance_db(b, k), b.table_dof, b.realisations,
-                                b.confidence);
+        io::widen_band_interval(r.simulated, r.pred_lower, r.pred_upper, v.table_factor * table_band_variance_db(b, k),
+                                b.table_dof, b.realisations, b.confidence);
       r.inside_prediction = r.measured >= r.pred_lower && r.measured <= r.pred_upper;
     }
     v.rows.push_back(r);
@@ -272,7 +273,8 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
       if (r.use == BandUse::test) spread += (r.delta - v.offset->estimate) * (r.delta - v.offset->estimate);
     spread = std::sqrt(spread / v.tested);
     for (const Slip& s : kSlips)
-      if (std::fabs(v.offset->estimate - s.db) < 3.0 && spread < 6.0 && (v.offset->lower > 0.0 || v.offset->upper < 0.0))
+      if (std::fabs(v.offset->estimate - s.db) < 3.0 && spread < 6.0 &&
+          (v.offset->lower > 0.0 || v.offset->upper < 0.0))
         v.warnings.push_back("the model lies " + number_text(std::round(10.0 * v.offset->estimate) / 10.0) +
                              " dB from the measurement in every band (spread " +
                              number_text(std::round(10.0 * spread) / 10.0) + " dB about it): " + s.what + "?");

@@ -24,7 +24,7 @@ enum class BandUse {
 const char* band_use_name(BandUse u);
 
 struct BandRow {
-  std::size_t band = 0;  // index in the result's bands
+  std::size_t band = 0;                                               // index in the result's bands
   double centre = 0.0, simulated = 0.0, measured = 0.0, delta = 0.0;  // dB; delta = simulated - measured
   double ci_lower = NAN, ci_upper = NAN, pred_lower = NAN, pred_upper = NAN;
   bool inside_ci = false, inside_prediction = false;
@@ -44,7 +44,7 @@ struct VerdictOptions {
 };
 
 struct Verdict {
-  std::string question;    // what `inside` and the test answer
+  std::string question;       // what `inside` and the test answer
   double table_factor = 0.0;  // c of D-31 (0: same surface, or no random table)
   std::vector<BandRow> rows;
   CombinedTest test;

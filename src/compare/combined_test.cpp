@@ -50,9 +50,10 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
     rng::PhiloxStream(rng::kVerdictSeed, draw, rng::Stream::verdict_bootstrap).uniform_open(u, n);
   };
   try {
-    t.result = spectral::band_test_with_table(c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records,
-                                              {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands},
-                                              uniform, kBootstrapDraws);
+    t.result = spectral::band_test_with_table(
+        c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records,
+        {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands}, uniform,
+        kBootstrapDraws);
   } catch (const std::invalid_argument& e) {
     t.verdict = std::string("none (") + e.what() + ")";
     return t;

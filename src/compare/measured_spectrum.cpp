@@ -20,7 +20,8 @@ std::optional<ModelEstimator> read_model_estimator(const io::Hdf5Reader& r) {
     if (!r.has_attribute("/psd", a)) return std::nullopt;
   ModelEstimator m;
   m.welch.sample_rate = r.double_attribute("/psd", "sample_rate");
-  const double segment = r.double_attribute("/psd", "welch_segment"), overlap = r.double_attribute("/psd", "welch_overlap");
+  const double segment = r.double_attribute("/psd", "welch_segment"),
+               overlap = r.double_attribute("/psd", "welch_overlap");
   const double record = r.double_attribute("/psd", "record_samples");
   const std::string window = r.string_attribute("/psd", "welch_window");
   if (!(m.welch.sample_rate > 0.0 && std::isfinite(m.welch.sample_rate)) || !(segment >= 4.0 && segment < 1e9) ||
@@ -120,7 +121,8 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
     if (!note.empty()) m.notes.push_back(path + ": " + note);
     const std::size_t n = t.samples();
     if (n < c.segment)
-      throw data_error(path + ": " + std::to_string(n) + " samples (" + number_text(static_cast<double>(n) / t.sample_rate) +
+      throw data_error(path + ": " + std::to_string(n) + " samples (" +
+                       number_text(static_cast<double>(n) / t.sample_rate) +
                        " s), fewer than one segment of the model's estimator (" + std::to_string(c.segment) +
                        " samples, " + number_text(static_cast<double>(c.segment) / t.sample_rate) +
                        " s); allowed: a recording of the ball's roll, at least one segment long");

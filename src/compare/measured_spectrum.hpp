@@ -30,20 +30,20 @@ struct ModelEstimator {
 std::optional<ModelEstimator> read_model_estimator(const io::Hdf5Reader& r);
 
 struct MeasuredSpectrum {
-  std::string source;                        // the file(s), for messages and the JSON
-  std::vector<double> frequency;             // Hz
-  std::vector<double> psd;                   // mean over the rolls, (m/s^2)^2/Hz
-  std::vector<std::vector<double>> rolls;    // each roll's PSD (recordings; empty for a PSD table)
-  double records = 0.0;                      // M, independent rolls (0: the file cannot say)
-  std::string records_source;                // how M was found ("3 recordings", "--measured-averages")
-  bool model_grid = false;                   // on the model's own bins: bands average them as the model's do
-  double welch_dof = 0.0;                    // D-16 dof of one roll's Welch estimate (0: unknown)
-  double seconds = 0.0;                      // one roll's length (0: unknown)
-  std::vector<std::string> notes;            // every choice made without being asked, one line each
+  std::string source;                      // the file(s), for messages and the JSON
+  std::vector<double> frequency;           // Hz
+  std::vector<double> psd;                 // mean over the rolls, (m/s^2)^2/Hz
+  std::vector<std::vector<double>> rolls;  // each roll's PSD (recordings; empty for a PSD table)
+  double records = 0.0;                    // M, independent rolls (0: the file cannot say)
+  std::string records_source;              // how M was found ("3 recordings", "--measured-averages")
+  bool model_grid = false;                 // on the model's own bins: bands average them as the model's do
+  double welch_dof = 0.0;                  // D-16 dof of one roll's Welch estimate (0: unknown)
+  double seconds = 0.0;                    // one roll's length (0: unknown)
+  std::vector<std::string> notes;          // every choice made without being asked, one line each
 };
 
 struct RecordingOptions {
-  io::SignalRequest signal;  // --column, --unit, --scale, --fs, --time-column, --skip-rows
+  io::SignalRequest signal;       // --column, --unit, --scale, --fs, --time-column, --skip-rows
   bool roll_per_channel = false;  // each channel is a roll of one sensor (default: a file is a roll, its
                                   // channels the sensors)
   std::size_t model_sensors = 1;  // the rows the compared row averages (sensor_mean: every sensor; else 1)

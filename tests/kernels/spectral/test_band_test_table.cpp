@@ -34,7 +34,8 @@ Eigen::MatrixXd banded(std::size_t p, double level, double rho) {
   Eigen::MatrixXd s(p, p);
   for (std::size_t b = 0; b < p; ++b)
     for (std::size_t c = 0; c < p; ++c)
-      s(b, c) = level * (1.0 + 0.3 * std::sin(static_cast<double>(b))) * std::pow(rho, std::fabs(double(b) - double(c)));
+      s(b, c) =
+          level * (1.0 + 0.3 * std::sin(static_cast<double>(b))) * std::pow(rho, std::fabs(double(b) - double(c)));
   return 0.5 * (s + s.transpose());
 }
 
@@ -98,7 +99,7 @@ TEST_CASE("D-31: Bartlett's decomposition has the Wishart's mean and the chi-squ
     sq00 += m(0, 0) * m(0, 0);
   }
   const Eigen::Matrix3d mean = sum / double(n);
-  CHECK((mean - nu * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 0.1);  // E W(I, nu) = nu I
+  CHECK((mean - nu * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 0.1);                  // E W(I, nu) = nu I
   CHECK(sq00 / double(n) - mean(0, 0) * mean(0, 0) == doctest::Approx(2.0 * nu).epsilon(0.05));  // chi2(nu)
 }
 
@@ -152,9 +153,10 @@ TEST_CASE("D-31: size on simulated measurements from other tables") {
     std::vector<double> y0(p);
     for (std::size_t b = 0; b < p; ++b) y0[b] = std::log(mean[b]);
     band_deviation(y0.data(), mean.data(), st.data(), p, double(K), M, d, v);  // d = -offset here
-    const Eigen::MatrixXd v_true = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-                                       v.data(), Eigen::Index(p), Eigen::Index(p)) +
-                                   2.0 * t_true;
+    const Eigen::MatrixXd v_true =
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            v.data(), Eigen::Index(p), Eigen::Index(p)) +
+        2.0 * t_true;
     const Eigen::MatrixXd lv = v_true.llt().matrixL();
     Eigen::VectorXd e(p);
     for (std::size_t b = 0; b < p; ++b) e(b) = z();
