@@ -144,7 +144,7 @@ nlohmann::ordered_json verdict_json(const std::string& result, const std::string
               {"upper_db", v.offset->upper},
               {"dof", v.offset->dof},
               {"bands", v.tested},
-              {"method", "generalised least squares (kernels/spectral D-34)"}};
+              {"method", "weighted least squares, each band by its own variance (kernels/spectral D-34)"}};
   return {
       {"result", result},
       {"sensor", b.sensor},
