@@ -86,16 +86,17 @@ int plan_command(const Args& args) {
   for (const auto& p : stages)
     std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::status_name(p.status), p.reason.c_str());
   const bool tables_missing = any_missing_table(s, stages);
-  // table_error = jackknife (D-30): the ensemble once with the table and once per sub-table.
-  const bool jackknife = study::StiffnessSection::asks_table_jackknife(s) && ensemble_scene;
+  // The table's own error (D-30, D-30f): the ensemble once with the table and once per sub-table.
+  const bool jackknife = ensemble_scene && ensemble_scene->estimates_table_error();
   const scenes::TableJackknifePlan jk = jackknife ? ensemble_scene->table_jackknife() : scenes::TableJackknifePlan{};
   const double ensembles = static_cast<double>(jk.n) + 1.0;
   if (jackknife) {
     std::printf(
-        "table jackknife: [stiffness] table_error = jackknife runs the ensemble %zu times (the full %s and each of its "
-        "%zu leave-one-out sub-tables, the same realisation streams): %zu x the ensemble's run time; the sub-tables "
-        "%s\n",
-        jk.n + 1, jk.table.c_str(), jk.n, jk.n + 1,
+        "table jackknife: the %s's own error ([stiffness] table_error) runs the ensemble %zu times (the full table and "
+        "each of its %zu leave-one-out sub-tables, the same realisation streams): %zu x the ensemble's run time, more "
+        "where the sub-table runs' own noise asks for up to %d realisations each (kernels/spectral D-30f); the "
+        "sub-tables %s\n",
+        jk.table.c_str(), jk.n + 1, jk.n, jk.n + 1, 1024,
         jk.unit == "surfaces" ? "are cached, made from one more solve of each surface when missing"
                               : ("are made from the full table's " + jk.unit + ", without a new solve").c_str());
   }

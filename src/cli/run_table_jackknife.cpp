@@ -1,5 +1,7 @@
 #include "src/cli/run_table_jackknife.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -9,7 +11,6 @@
 #include "src/ensemble/mpi_context.hpp"
 #include "src/io/run_warning.hpp"
 #include "src/io/table_error.hpp"
-#include "src/study/sections/stiffness_section.hpp"
 
 namespace rollspec::cli {
 
@@ -40,9 +41,26 @@ void paired_squares(const double* values, std::size_t n, std::size_t nv, std::si
 }
 }  // namespace
 
+namespace {
+
+// D-30f: the sub-table runs' own noise n (D-30c) falls as 1/K_J, the table's part V_J - n does not; the
+// sub-table ensemble is run again with K_J raised until n is at most a quarter of the table's part
+// (median over the bands), up to kJackknifeRealisationCap realisations.
+constexpr std::uint64_t kJackknifeRealisationCap = 1024;
+constexpr double kNoiseShareTarget = 0.25;
+
+// The sub-tables' ensemble of k realisations (ids 0..k-1 of the study's streams): the jackknife and its noise.
+struct JackknifePass {
+  io::TableError table;
+  std::uint64_t realisations = 0;
+};
+
+}  // namespace
+
 void run_table_jackknife(const study::Study& s, const StudyReload& reload, scenes::EnsembleScene& scene,
                          const ensemble::EnsembleConfig& cfg, bool quiet, bool rebuild) {
-  if (!study::StiffnessSection::asks_table_jackknife(s) || cfg.only >= 0) return;
+  if (!scene.estimates_table_error() || cfg.only >= 0) return;
+  (void)s;
   const scenes::TableJackknifePlan plan = scene.table_jackknife();
   const std::size_t n = plan.n;
   std::vector<std::unique_ptr<scenes::EnsembleScene>> subs;
@@ -59,38 +77,64 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
   for (const auto& sub : subs)
     if (sub->values_per_realisation() != nv)
       throw std::logic_error("table jackknife: sub-table scene of another shape");
-  if (!quiet)
-    std::fprintf(
-        stderr,
-        "table jackknife: the ensemble again with each of the %zu sub-tables of the %s (one of its %s left out "
-        "of each), realisation by realisation\n",
-        n, plan.table.c_str(), plan.unit.c_str());
   // One ensemble whose realisation runs the N sub-tables' scenes on the same streams (common random
   // numbers), so that the same realisation's values can be paired across them (D-30c).
-  ensemble::EnsembleConfig c = cfg;
-  c.checkpoint_dir.clear();
-  c.resume = false;
-  c.quiet = quiet;
-  const ensemble::EnsembleSums sums =
-      ensemble::run_ensemble(c, n * nv + lin, [&](std::uint64_t id, int thread, double* values) {
-        for (std::size_t i = 0; i < n; ++i) subs[i]->run_realisation(id, thread, values + i * nv);
-        paired_squares(values, n, nv, lin, values + n * nv);
-      });
-  if (ensemble::mpi_rank() != 0) return;
-  std::vector<io::PsdEnsemble> spectra;
-  io::PairedSums paired;
-  paired.realisations = sums.count;
-  paired.q.assign(sums.sum.begin() + static_cast<std::ptrdiff_t>(n * nv), sums.sum.end());
-  for (std::size_t i = 0; i < n; ++i) {
-    const ensemble::EnsembleSums b = block(sums, i, nv);
-    spectra.push_back(subs[i]->spectra(b));
-    std::vector<double> m(lin);
-    for (std::size_t j = 0; j < lin; ++j) m[j] = b.mean(j);
-    paired.means.push_back(std::move(m));
+  const auto pass = [&](std::uint64_t k) {
+    if (!quiet)
+      std::fprintf(stderr,
+                   "table jackknife: %llu realisations again with each of the %zu sub-tables of the %s (one of its "
+                   "%s left out of each), realisation by realisation\n",
+                   static_cast<unsigned long long>(k), n, plan.table.c_str(), plan.unit.c_str());
+    ensemble::EnsembleConfig c = cfg;
+    c.realisations = k;
+    c.checkpoint_dir.clear();
+    c.resume = false;
+    c.quiet = quiet;
+    const ensemble::EnsembleSums sums =
+        ensemble::run_ensemble(c, n * nv + lin, [&](std::uint64_t id, int thread, double* values) {
+          for (std::size_t i = 0; i < n; ++i) subs[i]->run_realisation(id, thread, values + i * nv);
+          paired_squares(values, n, nv, lin, values + n * nv);
+        });
+    JackknifePass out;
+    out.realisations = k;
+    if (ensemble::mpi_rank() != 0) return out;
+    std::vector<io::PsdEnsemble> spectra;
+    io::PairedSums paired;
+    paired.realisations = sums.count;
+    paired.q.assign(sums.sum.begin() + static_cast<std::ptrdiff_t>(n * nv), sums.sum.end());
+    for (std::size_t i = 0; i < n; ++i) {
+      const ensemble::EnsembleSums b = block(sums, i, nv);
+      spectra.push_back(subs[i]->spectra(b));
+      std::vector<double> m(lin);
+      for (std::size_t j = 0; j < lin; ++j) m[j] = b.mean(j);
+      paired.means.push_back(std::move(m));
+    }
+    out.table = io::table_jackknife(spectra, paired, plan.table, plan.unit, plan.variance_factor, plan.dof);
+    return out;
+  };
+  JackknifePass j = pass(cfg.realisations);
+  // D-30f: enough realisations that the runs' own noise is a small part of the term. Decided on rank 0,
+  // known to every rank (the others add 0).
+  std::uint64_t wanted = 0, needed = 0;
+  if (ensemble::mpi_rank() == 0) {
+    const double ratio = io::median_noise_ratio(j.table);  // n / (V_J - n)
+    if (ratio > kNoiseShareTarget) {
+      const double k = std::ceil(static_cast<double>(cfg.realisations) * ratio / kNoiseShareTarget);
+      needed = std::isfinite(k) && k < 1e15 ? static_cast<std::uint64_t>(k) : 0;
+      wanted = std::min<std::uint64_t>(needed == 0 ? kJackknifeRealisationCap : needed,
+                                       std::max(kJackknifeRealisationCap, cfg.realisations));
+    }
   }
-  io::TableError t = io::table_jackknife(spectra, paired, plan.table, plan.unit, plan.variance_factor, plan.dof);
+  wanted = ensemble::sum_over_ranks(wanted);
+  if (wanted > cfg.realisations) j = pass(wanted);
+  if (ensemble::mpi_rank() != 0) return;
+  io::TableError& t = j.table;
   t.independent_bands = plan.independent_bands;
-  t.noise_warning = io::table_noise_warning(t, sums.count);
+  t.realisations = j.realisations;
+  t.noise_warning = io::table_noise_warning(t, j.realisations);
+  if (!t.noise_warning.empty() && wanted > 0 && (needed == 0 || needed > wanted))
+    t.noise_warning += " (the sub-table runs stopped at the cap of " + std::to_string(wanted) +
+                       " realisations; kernels/spectral D-30f)";
   if (!t.noise_warning.empty()) io::warn(t.noise_warning, true);  // the result's validity, not progress
   scene.include_table_error(std::move(t));
 }

@@ -95,6 +95,8 @@ void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
               std::string(t.independent_bands ? "independent bands (a spectral estimate's error; D-31c)"
                                               : "the sub-tables' band-by-band covariance (one curve's error; D-31c)"));
   w.attribute("/bands", "table_jackknife_surfaces", static_cast<std::int64_t>(t.surfaces));
+  if (t.realisations > 0)  // D-30f: the sub-table runs' realisations, where they exceed the result's K
+    w.attribute("/bands", "table_jackknife_realisations", static_cast<std::int64_t>(t.realisations));
   w.attribute("/bands", "table_jackknife_dof", t.dof);
   w.attribute("/bands", "table_jackknife_variance_factor", t.variance_factor);
   if (!t.noise_warning.empty()) w.attribute("/bands", "table_noise_warning", t.noise_warning);

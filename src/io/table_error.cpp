@@ -69,6 +69,18 @@ TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const Pai
   return t;
 }
 
+double median_noise_ratio(const TableError& t) {
+  std::vector<double> ratio;
+  for (std::size_t i = 0; i < t.band_variance.size(); ++i) {
+    const double j = t.band_variance[i], noise = std::min(t.band_noise[i], j), v = j - noise;
+    if (!(j > 0.0) || !std::isfinite(j) || !std::isfinite(noise)) continue;
+    ratio.push_back(v > 0.0 ? noise / v : HUGE_VAL);
+  }
+  if (ratio.empty()) return 0.0;
+  std::nth_element(ratio.begin(), ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2), ratio.end());
+  return ratio[ratio.size() / 2];
+}
+
 std::string table_noise_warning(const TableError& t, std::uint64_t K) {
   std::vector<double> share, ratio;  // noise / jackknife, and noise / table term, per band
   for (std::size_t i = 0; i < t.band_variance.size(); ++i) {
@@ -87,12 +99,12 @@ std::string table_noise_warning(const TableError& t, std::uint64_t K) {
   char text[400];
   const std::string k_needed =
       std::isfinite(r)
-          ? "about K = " + std::to_string(static_cast<long long>(std::ceil(3.0 * r * static_cast<double>(K))))
-          : "a K large enough that the table's term shows above it";
+          ? "about " + std::to_string(static_cast<long long>(std::ceil(4.0 * r * static_cast<double>(K))))
+          : "enough realisations that the table's term shows above it";
   std::snprintf(text, sizeof text,
                 "table jackknife: %.0f %% of the jackknife variance (median over the bands) is the sub-table runs' own "
-                "noise, not the table's (the realisations are chaotic in the table), so at K = %llu the intervals are "
-                "wider than the table's error alone needs (kernels/spectral D-30c); ",
+                "noise, not the table's (the realisations are chaotic in the table), so with %llu realisations per "
+                "sub-table the intervals are wider than the table's error alone needs (kernels/spectral D-30c, D-30f); ",
                 100.0 * noise, static_cast<unsigned long long>(K));
   return text + k_needed + " would bring the noise to a quarter of the table's term";
 }

@@ -28,6 +28,7 @@ struct TableError {
   std::string unit = "surfaces";  // what the jackknife left out one at a time (surfaces, strips)
   std::string noise_warning;      // non-empty when the term is mostly the runs' own noise (table_noise_warning)
   bool independent_bands = false;  // D-31c: only each band's variance is the table's term across bands
+  std::uint64_t realisations = 0;  // K_J, the sub-table runs' realisations (D-30f: may exceed the run's K)
 };
 
 // Band levels (dB) of e, rows x bands, as /bands/level_db holds them.
@@ -49,6 +50,10 @@ struct PairedSums {
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
                            const std::string& table, const std::string& unit, double variance_factor = 1.0,
                            double dof = 0.0);
+
+// The runs' own noise against the table's part, n / (V_J - n), median over the bands (D-30c): +inf
+// where the term is all noise, 0 without bands.
+double median_noise_ratio(const TableError& t);
 
 // When more than half of the jackknife is the runs' own noise (D-30c, median over the bands), the
 // term is mostly that noise (realisations chaotic in the table) and the intervals are wider than the

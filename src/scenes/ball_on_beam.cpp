@@ -110,7 +110,19 @@ class BallOnBeam final : public EnsembleScene {
                                                " (the path's segments, `rollspec plan` shows its positions and "
                                                "segment)");
   }
-  bool jackknifes_stiffness_table() const { return b_.stiffness.table_jackknife && uses_table() && b_.stiffness.rough; }
+  bool jackknifes_stiffness_table() const { return estimates_table_error() && uses_table() && b_.stiffness.rough; }
+
+  // D-30, D-31: explicit jackknife (checked in the constructor), or auto with exactly one random table
+  // of at least two units. Sub-tables and legs of a blocked-force or equivalent-roughness leave-out run none.
+  bool estimates_table_error() const override {
+    if (b_.stiffness.table_jackknife) return true;
+    if (!b_.stiffness.table_error_auto || b_.blocked_force.leave_out >= 0 || b_.equivalent_roughness_leave_out >= 0)
+      return false;
+    const int tables = (uses_table() && b_.stiffness.rough && b_.stiffness.realisations >= 2) +
+                       (solver_filter() && !b_.strip_line && b_.equivalent_roughness_strips >= 2) +
+                       (blocked_solver() && stiffness::f0_segments(blocked_force_grid()).segments >= 2);
+    return tables == 1;
+  }
 
   // The tables drawn from random surfaces or strips that every realisation shares: the intervals are
   // conditional on them (kernels/spectral/README.md D-28).

@@ -112,6 +112,9 @@ class EnsembleScene : public Scene {
     throw std::logic_error("this scene has no stiffness table to jackknife");
   }
   virtual void include_table_error(io::TableError) { throw std::logic_error("this scene has no stiffness table"); }
+  // Whether `run` estimates a random table's own error ([stiffness] table_error: jackknife, or auto
+  // with one random table; kernels/spectral D-30, D-31).
+  virtual bool estimates_table_error() const { return false; }
   // A fit's evaluation reads only the spectra and bands: write_results then leaves out what the scene
   // derives beside the ensemble (ball-on-beam: the roughness PSDs, the linearised reference, 90 % of
   // a short run's time, and the stored time histories, which it simulates again). A scene with no

@@ -47,14 +47,16 @@ std::vector<KeySpec> StiffnessSection::keys() {
                   "sub-table for the jackknife of the table's own error (kernels/spectral/README.md D-30); -1: none",
                   std::string("-1"), -1, 99999),
       choice_key("stiffness", "table_error",
-                 "what `run`'s intervals include besides the realisations' scatter: none (conditional on the stiffness "
-                 "table), or jackknife: the table's own sampling error, from the ensemble run again with each of the "
-                 "table's leave-one-surface-out sub-tables (realisations + 1 ensembles, the same random streams; "
-                 "kernels/spectral/README.md D-30); needs a rough stiffness table ([contact] law = table or literal, "
-                 "surface = rough; over its surfaces), an equivalent-roughness table ([contact] filter = solver; "
-                 "over its [equivalent_roughness] strips) or a blocked-force table ([contact] blocked_force = solver; "
-                 "over the Welch segments of F0 along its strip)",
-                 std::string("none"), {"none", "jackknife"}),
+                 "what `run`'s intervals, compare and fit include besides the realisations' scatter: auto (jackknife "
+                 "where the study's contact uses one random table, none otherwise), none (conditional on the table: "
+                 "the verdict then holds only for the surface the table was built on), or jackknife: the table's own "
+                 "sampling error, from the ensemble run again with each of the table's leave-one-out sub-tables "
+                 "(realisations + 1 ensembles on the same random streams, more realisations per sub-table where "
+                 "their own noise asks for them; kernels/spectral/README.md D-30, D-30f, D-31); needs a rough "
+                 "stiffness table ([contact] law = table or literal, surface = rough; over its surfaces), an "
+                 "equivalent-roughness table ([contact] filter = solver; over its [equivalent_roughness] strips) or a "
+                 "blocked-force table ([contact] blocked_force = solver; over the Welch segments of F0 along its strip)",
+                 std::string("auto"), {"auto", "none", "jackknife"}),
   };
 }
 
@@ -75,7 +77,9 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   t.table_leave_out = s.integer("stiffness.table_leave_out");
   t.table_leave_out_origin = {s.where("stiffness.table_leave_out")};
   t.table_jackknife = s.text("stiffness.table_error") == "jackknife";
+  t.table_error_auto = s.text("stiffness.table_error") == "auto";
   t.table_error_origin = {s.where("stiffness.table_error")};
+  if (t.table_leave_out >= 0) t.table_error_auto = false;  // a sub-table itself: no jackknife of its own
   if (t.table_jackknife && t.table_leave_out >= 0)
     t.table_error_origin.refuse(
         "jackknife runs every leave-one-out sub-table itself; allowed with it: "
@@ -90,10 +94,6 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   return t;
 }
 
-bool StiffnessSection::asks_table_jackknife(const KeyReader& s) {
-  return s.has("stiffness.table_error") && s.text("stiffness.table_error") == "jackknife";
-}
-
 const std::string& StiffnessSection::text(const std::string& key) const {
   const auto it = texts_.find(key);
   if (it == texts_.end()) throw std::logic_error("not a [stiffness] key: " + key);
@@ -104,6 +104,7 @@ StiffnessSection StiffnessSection::leaving_out(long long i) const {
   StiffnessSection t = *this;
   t.table_leave_out = i;
   t.table_jackknife = false;
+  t.table_error_auto = false;
   t.texts_["table_leave_out"] = std::to_string(i);
   t.texts_["table"] = "auto";
   t.texts_["table_error"] = "none";

@@ -26,14 +26,13 @@ struct StiffnessSection {
   double table_shift = 0.0;        // standard errors of the table mean added to the law (not in its hash)
   long long table_leave_out = -1;  // surface left out of the stiffness table's mean (-1: none; in its hash when set)
   bool table_jackknife = false;    // table_error = jackknife: the intervals include the table's own error (D-30)
+  bool table_error_auto = false;   // table_error = auto (the default): jackknife where the study has one random table
   contact::SolverOptions solver;   // hardness (0: none, so infinite), tolerance, max_iterations
   KeyOrigin ball_rms_origin, approach_max_origin, table_shift_origin, table_leave_out_origin, table_error_origin;
   KeyOrigin table_origin, table_dir_origin;  // where a table may not be written
 
   static std::vector<KeySpec> keys();
   static StiffnessSection parse(const KeyReader& s);
-  // Whether the study asks for table_error = jackknife (false for scenes without a [stiffness] section).
-  static bool asks_table_jackknife(const KeyReader& s);
   // The canonical value text of [stiffness] `key` (as the resolved study writes it).
   const std::string& text(const std::string& key) const;
   // The section of leave-one-out sub-table `i` (D-30): table_leave_out = i, its own cached file

@@ -1,0 +1,169 @@
+#!/usr/bin/python3
+"""The verdict against measurements from other tables (kernels/spectral D-30f, D-31): what a user's rig
+with another surface of the model's roughness gives, at the shipped defaults.
+
+usage: bench_table_verdict.py ROLLSPEC --scene beam-r|beam-s|route [--tables 20] [--models 5] [--rolls 25]
+                              [--work DIR] [--record FILE] [--keep]
+
+For each of --tables table seeds t (101, 102, ...) the shipped study is run twice:
+  model t        the study as shipped (its K, its study seed, [stiffness] table_error at its default), table seed t;
+  measurement t  --rolls realisations of table seed t at study seed 5000 + t, table_error = none: a rig with
+                 that surface, measured over M = --rolls rolls (its sensor-mean PSD as a PSD table).
+Figures (bands band_min..band_max of the study, every sensor row for the coverage, sensor_mean for compare):
+  coverage   share of the model runs' band intervals that hold the other tables' mean level (the mean of the
+             measurement runs of every other table), and the width ratio: the factor by which the intervals
+             would have to be scaled to cover 0.95 (1: calibrated; over 1: too wide);
+  size       `compare MODEL MEASUREMENT --measured-averages M` for the first --models tables against the
+             measurements of every other table: the share rejected at 0.05;
+  power      the same with the model's beam.loss_factor x 2 and contact.damping x 2.
+Writes bench/records/table-verdict-SCENE.json (or --record) through the bench record writer; --work keeps the
+runs (default: a temporary directory).
+"""
+import argparse
+import json
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "bench"))
+import bench_record  # noqa: E402
+
+SCENES = {
+    "beam-r": ("studies/seed001-beam-r.ini", "seed 001 beam R (stiffness table, 10 surfaces, ~50 % loss of contact)"),
+    "beam-s": ("studies/seed001-beam-s.ini", "seed 001 beam S (stiffness table, 6 surfaces)"),
+    "route": ("studies/seed002-rig-1ms-seed-route.ini",
+              "seed 002 route at 1 m/s (blocked-force table from the contact solver on one strip)"),
+}
+
+
+class BenchError(Exception):
+    pass
+
+
+def run(binary, args, timeout=7200):
+    try:
+        r = subprocess.run([str(binary), *map(str, args)], capture_output=True, text=True, timeout=timeout)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        raise BenchError(f"{binary} {' '.join(map(str, args[:3]))}: {e}") from None
+    if r.returncode:
+        raise BenchError(f"{binary} {' '.join(map(str, args))}: exit {r.returncode}: {r.stderr.strip()[-400:]}")
+    return r
+
+
+def run_study(binary, study, out, sets):
+    if not out.exists():
+        run(binary, ["run", study, "--out", out, "--quiet"] + sum([["--set", s] for s in sets], []))
+    return out
+
+
+def bands(path):
+    with h5py.File(path, "r") as f:
+        names = [n.decode() if isinstance(n, bytes) else n for n in f["bands/sensor"][:]]
+        return {"level": f["bands/level_db"][:], "lo": f["bands/ci_lower_db"][:], "hi": f["bands/ci_upper_db"][:],
+                "names": names, "f": f["psd/frequency"][:], "psd": f["psd/mean"][:]}
+
+
+def psd_table(result, out):
+    b = bands(result)
+    row = b["names"].index("sensor_mean") if "sensor_mean" in b["names"] else 0
+    np.savetxt(out, np.c_[b["f"], b["psd"][row]], delimiter=",", header="frequency_hz,psd", comments="")
+    return out
+
+
+def coverage(models, measured):
+    """Share of intervals holding the other tables' mean, and the scale that would make it 0.95."""
+    hits, lo_h, hi_h, gaps = [], [], [], []
+    for t, m in models.items():
+        ref = np.mean([measured[u]["level"] for u in measured if u != t], axis=0)
+        level, lo, hi = m["level"], m["lo"], m["hi"]
+        ok = np.isfinite(level) & np.isfinite(ref) & np.isfinite(lo) & np.isfinite(hi)
+        hits.append(((ref >= lo) & (ref <= hi))[ok])
+        # the scale s at which [level - s (level - lo), level + s (hi - level)] just holds ref
+        gap = np.where(ref >= level, (ref - level) / np.maximum(hi - level, 1e-12),
+                       (level - ref) / np.maximum(level - lo, 1e-12))
+        gaps.append(gap[ok])
+    hits, gaps = np.concatenate(hits), np.concatenate(gaps)
+    return float(hits.mean()), float(1.0 / np.quantile(gaps, 0.95)), int(hits.size)
+
+
+def verdicts(binary, model, measurements, rolls):
+    out = []
+    for path in measurements:
+        r = run(binary, ["compare", model, path, "--measured-averages", rolls, "--format", "json"])
+        j = json.loads(r.stdout)
+        out.append((j["p_value"], np.mean([b["inside"] for b in j["bands"] if b["inside"] is not None])))
+    return out
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("binary")
+    p.add_argument("--scene", choices=sorted(SCENES), required=True)
+    p.add_argument("--tables", type=int, default=20)
+    p.add_argument("--models", type=int, default=5)
+    p.add_argument("--rolls", type=int, default=25)
+    p.add_argument("--work")
+    p.add_argument("--record")
+    a = p.parse_args()
+    study, description = SCENES[a.scene]
+    study = ROOT / study
+    record = Path(a.record) if a.record else ROOT / "bench" / "records" / f"table-verdict-{a.scene}.json"
+    bench_record.check_target(record, own=bench_record.is_record)
+    work = Path(a.work) if a.work else Path(tempfile.mkdtemp(prefix="table-verdict-"))
+    work.mkdir(parents=True, exist_ok=True)
+    # The study's own folder of tables stays untouched: the runs cache their tables under the work folder.
+    sets = [f"stiffness.table_dir={work / 'tables'}"]
+    start = time.monotonic()
+    seeds = list(range(101, 101 + a.tables))
+    measured, tables = {}, {}
+    for t in seeds:
+        r = run_study(a.binary, study, work / f"measurement-{t}.h5",
+                      sets + [f"stiffness.table_seed={t}", f"study.realisations={a.rolls}", f"study.seed={5000 + t}",
+                              "stiffness.table_error=none"])
+        measured[t] = bands(r)
+        tables[t] = psd_table(r, work / f"measurement-{t}.csv")
+        print(f"measurement {t}", file=sys.stderr)
+    models = {t: bands(run_study(a.binary, study, work / f"model-{t}.h5", sets + [f"stiffness.table_seed={t}"]))
+              for t in seeds}
+    cov, width, n_bands = coverage(models, measured)
+    cases = [("correct model (size)", []), ("loss factor x 2", ["beam.loss_factor=0.02"]),
+             ("contact damping x 2", ["contact.damping=200"])]
+    rows = [["coverage of other tables' mean", f"{cov:.3f}", f"width ratio {width:.2f}", n_bands]]
+    data = {"coverage": cov, "width_ratio": width, "cases": {}}
+    for name, extra in cases:
+        found = []
+        for t in seeds[:a.models]:
+            model = run_study(a.binary, study, work / f"model-{t}-{'-'.join(extra) or 'as-shipped'}.h5",
+                              sets + [f"stiffness.table_seed={t}"] + extra)
+            found += verdicts(a.binary, model, [tables[u] for u in seeds if u != t], a.rolls)
+        pv = np.array([x[0] if x[0] is not None else np.nan for x in found], dtype=float)
+        rejected = float(np.mean(pv < 0.05))
+        rows.append([name, f"{rejected:.3f}", f"median p {np.nanmedian(pv):.3g}", len(found)])
+        data["cases"][name] = {"rejected": rejected, "median_p": float(np.nanmedian(pv)),
+                               "bands_inside": float(np.mean([x[1] for x in found])), "comparisons": len(found)}
+        print(f"{name}: rejected {rejected:.3f}", file=sys.stderr)
+    minutes = (time.monotonic() - start) / 60.0
+    bench_record.write(
+        record, title=f"The verdict against measurements from other tables: {description}",
+        argv=sys.argv, builds={"rollspec": {"description": bench_record.build_version(a.binary)}},
+        settings=f"{a.tables} table seeds; models as shipped; measurements of {a.rolls} rolls of each other table "
+                 f"(study seed 5000 + t); compare --measured-averages {a.rolls} at level 0.05; {minutes:.0f} min",
+        columns=["figure", "value", "detail", "count"], rows=rows, data=data)
+    if not a.work:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except (BenchError, bench_record.RecordError, OSError) as e:
+        sys.exit(f"bench_table_verdict: {e}")
+    except KeyboardInterrupt:
+        sys.exit("bench_table_verdict: interrupted")
