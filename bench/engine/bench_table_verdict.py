@@ -13,9 +13,10 @@ Figures (bands band_min..band_max of the study, every sensor row for the coverag
   coverage   share of the model runs' band intervals that hold the other tables' mean level (the mean of the
              measurement runs of every other table), and the width ratio: the factor by which the intervals
              would have to be scaled to cover 0.95 (1: calibrated; over 1: too wide);
-  size       `compare MODEL MEASUREMENT --measured-averages M` for the first --models tables against the
+  size       `compare MODEL MEASUREMENT --measured-averages M` for every model table against the
              measurements of every other table: the share rejected at 0.05;
-  power      the same with the model's beam.loss_factor x 2 and contact.damping x 2.
+  power      the same with the model's beam.loss_factor x 2 and contact.damping x 2 (the first --models tables;
+             default: all).
 Writes bench/records/table-verdict-SCENE.json (or --record) through the bench record writer; --work keeps the
 runs (default: a temporary directory).
 """
@@ -107,7 +108,7 @@ def main():
     p.add_argument("binary")
     p.add_argument("--scene", choices=sorted(SCENES), required=True)
     p.add_argument("--tables", type=int, default=20)
-    p.add_argument("--models", type=int, default=5)
+    p.add_argument("--models", type=int, default=0, help="tables whose models are compared (default: all)")
     p.add_argument("--rolls", type=int, default=25)
     p.add_argument("--work")
     p.add_argument("--record")
@@ -118,10 +119,12 @@ def main():
     bench_record.check_target(record, own=bench_record.is_record)
     work = Path(a.work) if a.work else Path(tempfile.mkdtemp(prefix="table-verdict-"))
     work.mkdir(parents=True, exist_ok=True)
+    (work / "tables").mkdir(exist_ok=True)
     # The study's own folder of tables stays untouched: the runs cache their tables under the work folder.
     sets = [f"stiffness.table_dir={work / 'tables'}"]
     start = time.monotonic()
     seeds = list(range(101, 101 + a.tables))
+    a.models = a.models or a.tables
     measured, tables = {}, {}
     for t in seeds:
         r = run_study(a.binary, study, work / f"measurement-{t}.h5",
@@ -140,8 +143,8 @@ def main():
     for name, extra in cases:
         found = []
         for t in seeds[:a.models]:
-            model = run_study(a.binary, study, work / f"model-{t}-{'-'.join(extra) or 'as-shipped'}.h5",
-                              sets + [f"stiffness.table_seed={t}"] + extra)
+            model = work / f"model-{t}.h5" if not extra else run_study(
+                a.binary, study, work / f"model-{t}-{'-'.join(extra)}.h5", sets + [f"stiffness.table_seed={t}"] + extra)
             found += verdicts(a.binary, model, [tables[u] for u in seeds if u != t], a.rolls)
         pv = np.array([x[0] if x[0] is not None else np.nan for x in found], dtype=float)
         rejected = float(np.mean(pv < 0.05))

@@ -64,7 +64,7 @@ const char* const kCompareUsage =
 // The result's loss of contact (ball-on-beam): its share and the warning `run` wrote.
 struct LossOfContact {
   double share = NAN;
-  std::string warning;
+  std::string warning, note;  // a warning where it moved bands (D-35), else a note of its share
 };
 
 LossOfContact loss_of_contact(const io::Hdf5Reader& r) {
@@ -72,6 +72,8 @@ LossOfContact loss_of_contact(const io::Hdf5Reader& r) {
   if (r.exists("/contact/loss_of_contact_share")) l.share = r.read("/contact/loss_of_contact_share").at(0);
   if (r.exists("/contact") && r.has_attribute("/contact", "loss_of_contact_warning"))
     l.warning = r.string_attribute("/contact", "loss_of_contact_warning");
+  if (r.exists("/contact") && r.has_attribute("/contact", "loss_of_contact_note"))
+    l.note = r.string_attribute("/contact", "loss_of_contact_note");
   return l;
 }
 
@@ -164,6 +166,7 @@ nlohmann::ordered_json verdict_json(const std::string& result, const std::string
         {"estimated", b.table_units >= 2}}},
       {"loss_of_contact_share", number(loss.share)},
       {"loss_of_contact_warning", loss.warning.empty() ? json(nullptr) : json(loss.warning)},
+      {"loss_of_contact_note", loss.note.empty() ? json(nullptr) : json(loss.note)},
       {"question", v.question},
       {"bands", bands},
       {"rms_db_error", number(v.rms_db)},
@@ -353,6 +356,7 @@ int compare_command(const Args& args) {
           "; measurement " + m.source + (table ? ", column " + (column.empty() ? std::string("psd") : column) : "") +
           (m.records_source.empty() ? "" : " (" + m.records_source + ")") + "\n";
   if (!loss.warning.empty()) text += "WARNING: " + loss.warning + "\n";
+  if (!loss.note.empty()) text += "note: " + loss.note + "\n";
   text += "question: " + v.question + "\n";
   std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
                 "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");

@@ -1,4 +1,5 @@
 #include "src/cli/run_phases.hpp"
+#include "src/cli/run_loss_effect.hpp"
 #include "src/cli/run_table_jackknife.hpp"
 
 #include <omp.h>
@@ -171,7 +172,8 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
     r.study.sets.insert(r.study.sets.end(), extra.begin(), extra.end());
     return load_study(r);
   };
-  run_table_jackknife(run.study, reload, *scene, cfg, q.quiet, q.rebuild);  // table_error = jackknife only
+  run_table_jackknife(run.study, reload, *scene, cfg, q.quiet, q.rebuild);  // a random table's error only
+  run_loss_effect(reload, *scene, cfg, sums, q.quiet, q.rebuild);           // lost contact under law = linearised
 
   if (ensemble::mpi_rank() != 0) return 0;  // rank 0 holds the sums and writes the result
   {

@@ -376,7 +376,7 @@ class BallOnBeam final : public EnsembleScene {
 
   void write_results(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums) const override {
     BallOnBeamWriter(b_, contact_, *welch_, *rows_, lines_->fundamental(), quiet_)
-        .write(w, sums, table_error_, spectra_only_);
+        .write(w, sums, table_error_, spectra_only_, loss_effect_);
     if (b_.time_histories && !spectra_only_) write_time_histories(w, sums.only);  // re-simulates: not for a fit
   }
 
@@ -411,6 +411,15 @@ class BallOnBeam final : public EnsembleScene {
   }
 
   void include_table_error(io::TableError e) override { table_error_ = std::move(e); }
+
+  // D-35: the linearised law assumes a closed contact; where the run lost it, the same realisations run
+  // again with one that never opens size what that moved.
+  std::vector<std::string> closed_contact_sets(const ensemble::EnsembleSums& sums) const override {
+    if (!b_.linearised() || b_.contact_section.loss == "closed" || spectra_only_) return {};
+    if (!(sums.mean(rows_->extra_index(2 * welch_->n_freq())) > 0.0)) return {};
+    return {"contact.loss=closed", "stiffness.table_error=none"};
+  }
+  void include_loss_effect(io::LossEffect e) override { loss_effect_ = std::move(e); }
 
  private:
   // Realisations 0..n-1 again (deterministic: same Philox keys), so histories survive --resume;
@@ -449,6 +458,7 @@ class BallOnBeam final : public EnsembleScene {
 
   const BallOnBeamSettings b_;  // the keys' values; the table stages resolve contact_
   ResolvedContact contact_;
+  io::LossEffect loss_effect_;  // D-35: what lost contact moved (measured: the law assumes a closed contact)
   io::TableError table_error_;                          // what the intervals include besides the realisations
   std::optional<stiffness::TableStudy> tables_;         // table_error = jackknife: the sub-tables' inputs
   std::optional<stiffness::TableStudy> filter_tables_;  // filter = solver: what plan --probe solves

@@ -150,12 +150,11 @@ std::vector<std::string> check_ball_on_beam_plausibility(const BallOnBeamSetting
 std::string loss_of_contact_warning(double share, bool linearised) {
   if (!(share > 0.0)) return "";
   const std::string pct = g3(100.0 * share) + " %";
-  if (linearised)
-    return "the ball lost contact " + pct +
-           " of the time: [contact] law = linearised assumes a closed contact; its result is not valid there";
+  if (linearised)  // unmeasured (a fit's evaluation): no size to give, so no claim either way
+    return "the ball lost contact " + pct + " of the time ([contact] law = linearised assumes a closed contact)";
   if (share > loss_of_contact_warning_share)
     return "the ball lost contact " + pct + " of the time (more than " + g3(100.0 * loss_of_contact_warning_share) +
-           " %): the response is dominated by impacts, not by the roughness's linear excitation";
+           " %): the response is dominated by impacts, which the [contact] law models";
   return "";
 }
 

@@ -282,6 +282,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   law.k0 = b.contact_section.k0;
   law.damping = b.contact_section.damping;
   law.loss = b.contact_section.loss == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
+  law.allow_tension = b.contact_section.loss == "closed";  // linearised only (the section refuses it otherwise)
   const double hertz_compression =
       std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;

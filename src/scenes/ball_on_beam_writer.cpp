@@ -20,6 +20,35 @@
 
 namespace rollspec::scenes {
 
+void BallOnBeamWriter::write_loss_of_contact(io::Hdf5Writer& w, double share, const io::LossEffect& effect) const {
+  if (!(share > 0.0)) return;
+  bool warning = false;
+  std::string text;
+  if (linearised() && effect.measured) {
+    text = io::loss_effect_sentence(share, effect, warning);
+    const std::size_t nb = effect.shift_db.size() / std::max<std::size_t>(rows(), 1);
+    w.write("/bands/loss_of_contact_shift_db", {rows(), nb}, effect.shift_db.data(), "dB",
+            "band level as run minus with a contact that never opens, the same realisations (kernels/spectral D-35)");
+    w.write("/bands/loss_of_contact_shift_se_db", {rows(), nb}, effect.shift_se_db.data(), "dB",
+            "standard error of loss_of_contact_shift_db from the pairs of realisations");
+    for (const char* d : {"/bands/loss_of_contact_shift_db", "/bands/loss_of_contact_shift_se_db"}) {
+      w.attach_scale(d, "/bands/sensor", 0);
+      w.attach_scale(d, "/bands/centre_frequency", 1);
+      w.attribute(d, "coordinates", std::string("nominal_frequency"));
+    }
+  } else {
+    text = loss_of_contact_warning(share, linearised());  // a law that models the loss: a note of its share
+  }
+  if (text.empty()) return;
+  if (warning) {  // printed even when quiet: the result's validity, not progress
+    io::warn(text, true);
+    w.attribute("/contact", "loss_of_contact_warning", text);
+  } else {
+    if (!quiet_) std::fprintf(stderr, "rollspec: note: %s\n", text.c_str());
+    w.attribute("/contact", "loss_of_contact_note", text);
+  }
+}
+
 io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) const {
   io::PsdEnsemble e = rows_->ensemble(sums);
   e.welch_dof = static_cast<double>(sums.count) *
@@ -39,7 +68,7 @@ io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) co
 }
 
 void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, const io::TableError& table_error,
-                             bool spectra_only) const {
+                             bool spectra_only, const io::LossEffect& loss_effect) const {
   const std::size_t nf = welch_->n_freq();
   const double K = static_cast<double>(sums.count);
   auto mean_of = [&](std::size_t i) { return sums.mean(i); };
@@ -63,11 +92,7 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
   w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
   w.attribute("/contact", "law", b_.law_name);
-  const std::string loss = loss_of_contact_warning(share, linearised());
-  if (!loss.empty()) {  // printed even when quiet: the result's validity, not progress
-    io::warn(loss, true);
-    w.attribute("/contact", "loss_of_contact_warning", loss);
-  }
+  write_loss_of_contact(w, share, loss_effect);
   w.attribute("/contact", "static_compression", c_.static_compression);
   if (c_.contact_stiffness > 0.0) {  // what the step was checked against (D-23, B37b)
     w.attribute("/contact", "contact_period", 2.0 * M_PI * std::sqrt(b_.model.ball.mass / c_.contact_stiffness));

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kernels/spectral/welch.hpp"
+#include "src/io/loss_effect.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/scenes/ball_on_beam_contact.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
@@ -29,13 +30,16 @@ class BallOnBeamWriter {
 
   // `table_error`: what the intervals include besides the realisations (io/table_error.hpp).
   // `spectra_only` (a fit's evaluation): without /roughness and the linearised reference.
+  // `loss`: what loss of contact moved, where it was measured (D-35).
   void write(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, const io::TableError& table_error,
-             bool spectra_only = false) const;
+             bool spectra_only = false, const io::LossEffect& loss = {}) const;
   // The sensors' spectra as write() writes them under /psd and /bands.
   io::PsdEnsemble spectra(const ensemble::EnsembleSums& sums) const;
 
  private:
   void write_roughness(io::Hdf5Writer& w) const;
+  // The loss of contact's warning or note (D-35: with the size it measured, for the linearised law).
+  void write_loss_of_contact(io::Hdf5Writer& w, double share, const io::LossEffect& effect) const;
   void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,
                               double realisations) const;
   std::size_t rows() const { return rows_->rows(); }

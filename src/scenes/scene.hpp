@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "src/ensemble/ensemble_driver.hpp"
+#include "src/io/loss_effect.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/scenes/result_shape.hpp"
 #include "src/scenes/stage.hpp"
@@ -115,6 +116,11 @@ class EnsembleScene : public Scene {
   // Whether `run` estimates a random table's own error ([stiffness] table_error: jackknife, or auto
   // with one random table; kernels/spectral D-30, D-31).
   virtual bool estimates_table_error() const { return false; }
+  // kernels/spectral D-35: the --set that run the same realisations with a contact that never opens, when
+  // the run (its sums) lost contact under a law that assumes a closed one; empty: no check. The measured
+  // effect comes back through include_loss_effect before write_results.
+  virtual std::vector<std::string> closed_contact_sets(const ensemble::EnsembleSums&) const { return {}; }
+  virtual void include_loss_effect(io::LossEffect) {}
   // A fit's evaluation reads only the spectra and bands: write_results then leaves out what the scene
   // derives beside the ensemble (ball-on-beam: the roughness PSDs, the linearised reference, 90 % of
   // a short run's time, and the stored time histories, which it simulates again). A scene with no

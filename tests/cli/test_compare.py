@@ -31,9 +31,9 @@ def files(tmp_path_factory):
 
 
 def table_lines(r):
-    """The output without the loss-of-contact WARNING line (this study's ball flies: it is flagged,
+    """The output without the loss-of-contact WARNING or note line (this study's ball flies: it is flagged,
     test_loss_of_contact_flags.py)."""
-    return [line for line in r.stdout.splitlines() if not line.startswith("WARNING: ")]
+    return [line for line in r.stdout.splitlines() if not line.startswith(("WARNING: ", "note: "))]
 
 
 def last_line(r):

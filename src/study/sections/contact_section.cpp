@@ -18,8 +18,11 @@ std::vector<KeySpec> ContactSection::keys() {
                  std::string("hertz"), {"hertz", "table", "literal", "linearised", "path"}),
       real_key("contact", "damping", "N s/m", "contact damping c_c (c0 for the linearised law)", std::string("100"),
                0.0, inf),
-      choice_key("contact", "loss", "force during loss of contact: damping_only (seed 001 Eq. 8) or zero",
-                 std::string("damping_only"), {"damping_only", "zero"}),
+      choice_key("contact", "loss",
+                 "force during loss of contact: damping_only (seed 001 Eq. 8) or zero; closed (law = linearised "
+                 "only): the contact never opens, the linear law holds in tension too (the counterfactual that "
+                 "sizes loss of contact, kernels/spectral D-35)",
+                 std::string("damping_only"), {"damping_only", "zero", "closed"}),
       real_key("contact", "k0", "N/m", "linearised contact stiffness k0", std::string("6.8e6"), 0.0, inf, false),
       choice_key(
           "contact", "blocked_force",
@@ -45,6 +48,9 @@ ContactSection ContactSection::parse(const KeyReader& s) {
   p.blocked_force = s.text("contact.blocked_force");
   p.filter = s.text("contact.filter");
   p.filter_origin = {s.where("contact.filter")};
+  if (p.loss == "closed" && p.law != "linearised")
+    KeyOrigin{s.where("contact.loss")}.refuse("a contact that never opens is the linear law's counterfactual; "
+                                              "allowed with [contact] law = " + p.law + ": damping_only or zero");
   return p;
 }
 
