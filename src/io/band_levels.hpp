@@ -24,6 +24,7 @@ struct BandLevels {
   std::uint64_t realisations = 0;
   double confidence = 0.95;
   std::string interval_method;
+  std::string point;  // the sweep point read ("section.key=value, ..."; "" for a result that is no sweep)
 };
 
 // How a command picks its row: --sensor (a name from /bands/sensor, or K of sensor_K) or
@@ -39,7 +40,9 @@ struct SensorChoice {
 SensorChoice sensor_choice(const std::string& name, std::optional<double> position);
 
 // Refuses (exit 64) an unknown sensor, naming the ones there are, a position with no sensor near it or a result without
-// positions, and (exit 65) datasets of the wrong shape or with NaN.
-BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice);
+// positions, and (exit 65) datasets of the wrong shape or with NaN. `point` picks one point of a sweep result
+// (src/io/sweep_point.hpp: K, or section.key=value[,...]); a sweep result without it, or a point for a result
+// that is no sweep, is refused (exit 64) naming the points there are.
+BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice, const std::string& point = "");
 
 }  // namespace rollspec::io
