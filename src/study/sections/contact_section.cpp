@@ -45,6 +45,7 @@ ContactSection ContactSection::parse(const KeyReader& s) {
   p.blocked_force = s.text("contact.blocked_force");
   p.filter = s.text("contact.filter");
   p.filter_origin = {s.where("contact.filter")};
+  p.filter_set = s.is_set("contact.filter");
   return p;
 }
 
