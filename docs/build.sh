@@ -13,6 +13,7 @@ repo="$(cd "$(dirname "$0")/.." && pwd)"
 fail() { echo "docs/build.sh: $2" >&2; exit "$1"; }
 [ "$#" -le 1 ] || fail 64 "expected at most one argument, BUILD_DIR; got $#"
 [ "${1-x}" != "" ] || fail 64 "BUILD_DIR is empty; allowed: a new or empty folder, or one docs/build.sh built"
+[ ! -L "${1:-$repo/build/docs}" ] || fail 73 "BUILD_DIR ${1:-$repo/build/docs} is a symbolic link; allowed: a new folder, or one docs/build.sh built"
 out="$(realpath -m -- "${1:-$repo/build/docs}")"
 marker="$out/.rollspec-docs"
 if [ -n "${ROLLSPEC_BIN:-}" ]; then
@@ -31,7 +32,6 @@ case "$out/" in
     fail 73 "BUILD_DIR $out is the repository or inside its sources; allowed: a new folder, e.g. build/docs" ;;
 esac
 case "$repo/" in "$out/"*) fail 73 "BUILD_DIR $out holds the repository; allowed: a new folder, e.g. build/docs" ;; esac
-if [ -L "$out" ]; then fail 73 "BUILD_DIR $out is a symbolic link; allowed: a new folder, or one docs/build.sh built"; fi
 if [ -e "$out" ]; then
   [ -d "$out" ] || fail 73 "BUILD_DIR $out exists and is not a folder; allowed: a new folder, or one docs/build.sh built"
   # A folder built before the marker existed holds only src/ (with conf.py), doctrees/ and html/.

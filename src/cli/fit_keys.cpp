@@ -40,7 +40,9 @@ study::Study load_with(const FitInputs& in, const std::vector<std::string>& sets
   StudyArgs a{in.study, in.sets, ""};
   a.sets.insert(a.sets.end(), sets.begin(), sets.end());
   try {
-    return resolve_study(a);
+    study::Study s = resolve_study(a);
+    make_scene<scenes::Scene>(s);  // the scene's own cross-key checks (a record against its segment)
+    return s;
   } catch (const UserError& e) {
     throw UserError(e.exit_code(), what + ": " + e.what());
   }
