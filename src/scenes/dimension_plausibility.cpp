@@ -11,12 +11,14 @@ namespace rollspec::scenes {
 
 namespace {
 
-// Decades between a key's value and its documented default (0 for a default of 0 or a non-number):
-// where two written keys fail the same relations, the one further from the usual is the slip.
+// Decades between a key's value and its documented default: where two written keys fail the same
+// relations, the one further from the usual is the slip. A key whose default is 0 (derived from the
+// others unless written) counts as far off: written, it is the one the user chose to state.
 double decades_from_default(const study::KeyReader& s, const std::string& key) {
   for (const auto& k : s.keys()) {
     if (k.full_name() != key || !k.default_value) continue;
     const double d = std::strtod(k.default_value->c_str(), nullptr), v = s.real(key);
+    if (d == 0.0) return 5.0;
     return d > 0.0 && v > 0.0 ? std::fabs(std::log10(v / d)) : 0.0;
   }
   return 0.0;
@@ -33,30 +35,31 @@ bool is_number_key(const study::KeyReader& s, const std::string& key) {
 void refuse_failed_relations(const study::KeyReader& s, const std::vector<DimensionRelation>& relations) {
   std::map<std::string, int> failed_in;  // written keys: the relations each fails
   const DimensionRelation* first = nullptr;
-  for (const auto& r : relations) {
+  std::vector<DimensionRelation> failed;  // of the relations with a key the user wrote: defaults alone are
+  for (const auto& r : relations) {       // no slip (an unused stage's defaults need not suit the study)
     if (r.holds) continue;
-    if (!first) first = &r;
+    bool written = false;
     for (const auto& k : r.keys)
-      if (s.has(k) && s.is_set(k)) ++failed_in[k];
+      if (s.has(k) && s.is_set(k)) ++failed_in[k], written = true;
+    if (written) failed.push_back(r);
   }
-  if (!first) return;
-  // The culprit: a written key of the most failed relations, then the furthest from its default,
-  // then the first named (a relation lists its likelier culprit first).
+  if (failed.empty()) return;
+  first = &failed.front();
+  // The culprit: a written key of the most failed relations, then the furthest from its default
+  // (in decades), then the first named (a relation lists its likelier culprit first).
   std::string culprit;
   double score = -1.0;
-  for (const auto& r : relations) {
-    if (r.holds) continue;
+  for (const auto& r : failed) {
     for (const auto& k : r.keys) {
       if (!failed_in.count(k)) continue;
       const double v = failed_in[k] * 1000.0 + (is_number_key(s, k) ? decades_from_default(s, k) : 0.0);
-      if (v > score) culprit = k, score = v;
+      if (v > score + 1e-9) culprit = k, score = v;
     }
   }
-  if (culprit.empty()) culprit = first->keys.front();  // only defaults involved: name the first
   const DimensionRelation* shown = first;
   int more = 0;
-  for (const auto& r : relations)
-    if (!r.holds && std::find(r.keys.begin(), r.keys.end(), culprit) != r.keys.end()) {
+  for (const auto& r : failed)
+    if (std::find(r.keys.begin(), r.keys.end(), culprit) != r.keys.end()) {
       if (shown == first && std::find(first->keys.begin(), first->keys.end(), culprit) == first->keys.end())
         shown = &r;
       ++more;

@@ -13,15 +13,24 @@ namespace rollspec::scenes {
 
 std::string dim(double v, const char* unit) {
   char buf[48];
-  std::snprintf(buf, sizeof buf, "%.3g %s", v, unit);
+  std::snprintf(buf, sizeof buf, *unit ? "%.3g %s" : "%.3g%s", v, unit);
   return buf;
+}
+
+bool self_affine_written(const study::KeyReader& s) {
+  bool written = false;
+  for (const char* k : {"texture.hurst", "texture.long_wavelength", "texture.rolloff_wavelength",
+                        "texture.short_wavelength", "texture.rms_kind", "texture.rms"})
+    written = written || (s.has(k) && s.is_set(k));
+  return written;
 }
 
 // [texture] of a self-affine source: its rms slope and height from the exact integrals (README Eq. 7-8),
 // against 45 degrees, an atom and the span that holds the profile.
 void add_texture_relations(const study::KeyReader& s, const std::string& span_key, double span,
                            const std::string& span_what, std::vector<DimensionRelation>& out) {
-  if (!s.has("texture.source") || s.text("texture.source") != "self-affine") return;
+  // A self-affine source's keys, or any of them written for another source (a slip is a slip there too).
+  if (!s.has("texture.source") || (s.text("texture.source") != "self-affine" && !self_affine_written(s))) return;
   const double lr = s.real("texture.rolloff_wavelength"), ls = s.real("texture.short_wavelength");
   const double ll = s.real("texture.long_wavelength"), rms = s.real("texture.rms");
   const bool slope_kind = s.text("texture.rms_kind") == "slope";
@@ -61,7 +70,7 @@ void add_texture_relations(const study::KeyReader& s, const std::string& span_ke
                                             : std::vector<std::string>{"texture.rms", "texture.short_wavelength",
                                                                        "texture.rolloff_wavelength"};
   out.push_back({keys, slope <= 1.0,
-                 "the self-affine profile's rms slope would be " + dim(slope, "") +
+                 "the self-affine profile's rms slope would be " + dim(slope, "") + " "
                      "(steeper than 45 degrees): a surface this steep is no nominally flat plane, which the "
                      "contact laws and the half-space solver assume (D-6; ground and machined steel: 0.01-0.3)"});
   out.push_back({{"texture.rms", "texture.rolloff_wavelength"}, height >= 1e-10,
@@ -87,8 +96,10 @@ void add_surface_relations(const study::KeyReader& s, bool rough, double contact
     out.push_back({{"surface.spacing", "ball.radius"}, dx <= contact_radius / 2.0,
                    "a grid spacing of " + dim(dx, "m") + " puts fewer than four cells across the Hertz contact 2a = " +
                        dim(2.0 * contact_radius, "m") + ": the solver cannot resolve the contact"});
-  if (!rough) return;
-  if (s.text("surface.method") == "seed") {
+  if (!rough && !s.is_set("surface.sigma") && !s.is_set("surface.correlation_x") && !s.is_set("surface.correlation_y"))
+    return;
+  const bool seed = s.text("surface.method") == "seed";
+  if (seed || s.is_set("surface.sigma") || s.is_set("surface.correlation_x") || s.is_set("surface.correlation_y")) {
     const double cx = s.real("surface.correlation_x"), cy = s.real("surface.correlation_y");
     const double sigma = s.real("surface.sigma"), c = std::min(cx, cy);
     out.push_back({{"surface.sigma", "surface.correlation_x", "surface.correlation_y"}, sigma <= c,
@@ -97,12 +108,13 @@ void add_surface_relations(const study::KeyReader& s, bool rough, double contact
                        "slopes, D-6)"});
     out.push_back({{"surface.sigma"}, sigma >= 1e-10,
                    "an rms height of " + dim(sigma, "m") + " is below the size of one atom (1e-10 m)"});
-    out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"}, c >= dx,
-                   "a correlation length of " + dim(c, "m") + " is shorter than the grid spacing " + dim(dx, "m") +
-                       ": the grid holds no correlated heights"});
     out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"}, std::max(cx, cy) <= patch,
                    "a correlation length of " + dim(std::max(cx, cy), "m") + " exceeds the surface patch nx x spacing = " +
                        dim(patch, "m") + ": the patch holds no independent heights"});
+    if (!seed) return;  // written for another method: the grid's spacing is not theirs to resolve
+    out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"}, c >= dx,
+                   "a correlation length of " + dim(c, "m") + " is shorter than the grid spacing " + dim(dx, "m") +
+                       ": the grid holds no correlated heights"});
   } else if (s.has("texture.source") && s.text("texture.source") == "self-affine") {
     const double ls = s.real("texture.short_wavelength");
     out.push_back({{"surface.spacing", "texture.short_wavelength"}, dx <= ls / 2.0,
@@ -128,7 +140,7 @@ void ball_relations(double a, double r, std::vector<DimensionRelation>& out) {
                  "the Hertz contact radius under the ball's weight would be " + dim(a, "m") +
                      ", a few atoms: continuum contact (Hertz, D-6) does not hold at that size"});
   out.push_back({{"ball.radius"}, a <= 0.1 * r,
-                 "the Hertz contact radius under the ball's weight would be " + dim(a, "m") + ", " + dim(a / r, "") +
+                 "the Hertz contact radius under the ball's weight would be " + dim(a, "m") + ", " + dim(a / r, "") + " "
                      "of the radius: Hertz theory needs a/R <= 0.1"});
 }
 
@@ -140,7 +152,7 @@ void approach_relations(const study::KeyReader& s, double a, std::vector<Dimensi
                  "the table stops at an approach of " + dim(w, "m") + ", below the ball's static compression " +
                      dim(d0, "m") + " under its weight: the run would read the law beyond the table"});
   out.push_back({{"stiffness.approach_max", "ball.radius"}, w <= 0.01 * r,
-                 "an approach of " + dim(w, "m") + " is " + dim(w / r, "") +
+                 "an approach of " + dim(w, "m") + " is " + dim(w / r, "") + " "
                      "of the ball's radius: its contact radius sqrt(R w) passes R / 10, beyond the half-space "
                      "theory of a small contact (D-6)"});
   const double rms = s.real("stiffness.ball_rms");
@@ -158,10 +170,11 @@ std::vector<DimensionRelation> stiffness_relations(const study::KeyReader& s) {
   approach_relations(s, a, out);
   const bool rough = s.text("stiffness.surface") == "rough";
   add_surface_relations(s, rough, a, true, out);
-  if (rough) {
-    const double patch = s.real("surface.spacing") * static_cast<double>(s.integer("surface.nx"));
-    add_texture_relations(s, "surface.spacing", patch, "the surface patch nx x spacing", out);
-  }
+  // A smooth ball on a smooth flat draws no texture: its keys, written, are checked against the patch
+  // the rough surface would be drawn on.
+  const double patch = s.real("surface.spacing") * static_cast<double>(s.integer("surface.nx"));
+  add_texture_relations(s, "surface.spacing", rough || self_affine_written(s) ? patch : 0.0,
+                        "the surface patch nx x spacing", out);
   return out;
 }
 
@@ -169,8 +182,9 @@ std::vector<DimensionRelation> texture_relations(const study::KeyReader& s) {
   std::vector<DimensionRelation> out;
   const double length = s.real("lines.length"), dx = s.real("lines.spacing");
   add_texture_relations(s, "lines.length", length, "the line length", out);
-  out.push_back({{"lines.spacing"}, dx >= 1e-9,
-                 "a sample spacing of " + dim(dx, "m") + " is a few atoms: no profile is measured that finely"});
+  out.push_back({{"lines.spacing"}, dx >= 1e-8,
+                 "a sample spacing of " + dim(dx, "m") + " puts a few tens of atoms between samples: no profile is "
+                 "measured that finely, and continuum contact (D-6) does not hold there"});
   out.push_back({{"lines.spacing", "lines.length"}, length >= 16.0 * dx,
                  "a line of " + dim(length, "m") + " holds fewer than 16 samples at spacing " + dim(dx, "m")});
   if (s.text("texture.source") == "self-affine")

@@ -21,7 +21,7 @@ std::vector<DimensionRelation> rolling_pipe_relations(const study::KeyReader& s)
   out.push_back({{"pipe.inner_diameter", "pipe.diameter"}, di < D,
                  "an inner diameter of " + dim(di, "m") + " leaves no wall inside the outer " + dim(D, "m")});
   out.push_back({{"roll.speed"}, v <= 100.0,
-                 "a tube rolling at " + dim(v, "m/s") + "(" + dim(3.6 * v, "km/h") +
+                 "a tube rolling at " + dim(v, "m/s") + " (" + dim(3.6 * v, "km/h") +
                      ") is beyond any rig: a tube on a floor rolls at walking or running speed"});
   out.push_back({{"roughness.spacing", "pipe.diameter"}, s.real("roughness.spacing") <= D,
                  "a floor sampled every " + dim(s.real("roughness.spacing"), "m") +
