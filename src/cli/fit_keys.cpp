@@ -48,12 +48,13 @@ study::Study load_with(const FitInputs& in, const std::vector<std::string>& sets
   }
 }
 
-void check_vary(const study::KeyReader& base, const VaryRange& v) {
+void check_vary(const FitInputs& in, const study::KeyReader& base, const VaryRange& v) {
   const std::string where = "--vary " + v.key + "=" + number_text(v.lo) + ":" + number_text(v.hi);
   const study::KeySpec* k = find_spec(base, v.key);
-  if (!k)
-    throw usage_error(where + ": " + v.key + " is not a key of scene " + base.scene() + " (rollspec keys " +
-                      base.scene() + "); allowed: a real-valued key of the study");
+  if (!k) {  // the loader names an unknown key and the keys of its section
+    load_with(in, {v.key + "=" + exact(v.lo)}, where);
+    throw usage_error(where + ": " + v.key + " is not a key of scene " + base.scene());
+  }
   if (k->type != study::KeyType::real)
     throw usage_error(where + ": " + v.key + " takes " + k->allowed() +
                       "; fit searches a continuous range, so it varies real-valued keys only");
@@ -67,7 +68,7 @@ void check_vary(const study::KeyReader& base, const VaryRange& v) {
 void check_fit_keys(const FitInputs& in) {
   io::require_regular_input(in.study, "study file");
   const study::Study base = load_with(in, {}, in.study);
-  for (const auto& v : in.vary) check_vary(base, v);
+  for (const auto& v : in.vary) check_vary(in, base, v);
   std::vector<std::vector<std::string>> points;
   for (const auto& p : in.points) points.push_back(p.sets);
   if (points.empty()) points.emplace_back();

@@ -61,8 +61,8 @@ void ball_against_beam(const study::KeyReader& s, double a, std::vector<Dimensio
                  "the ball's Hertz contact 2a = " + dim(2.0 * a, "m") + " under its weight is wider than the beam (" +
                      dim(b, "m") + "): a point contact on a beam needs a contact narrower than the beam"});
   out.push_back({{"ball.radius", "beam.thickness", "beam.length"}, deflection <= t,
-                 "the beam's static deflection under the ball's weight (" + dim(weight, "N") + ") would be " +
-                     dim(deflection, "m") + ", more than its thickness " + dim(t, "m") +
+                 "the beam's static deflection under the ball's weight W = " + dim(weight, "N") + " reaches " +
+                     dim(deflection, "m") + " at midspan, more than the beam thickness " + dim(t, "m") +
                      ": linear beam theory needs deflections small against the thickness"});
   out.push_back({{"ball.start", "beam.length"}, x0 < L,
                  "the ball starts at " + dim(x0, "m") + ", beyond the span [0, " + dim(L, "m") + "]"});
@@ -80,9 +80,9 @@ void ball_against_beam(const study::KeyReader& s, double a, std::vector<Dimensio
 void strip_relations(const study::KeyReader& s, std::vector<DimensionRelation>& out) {
   const double L = s.real("beam.length"), dx = s.real("roughness.spacing");
   if (dx > 0.0)
-    out.push_back({{"roughness.spacing", "beam.length"}, dx >= 1e-9 && dx <= L / 16.0,
+    out.push_back({{"roughness.spacing", "beam.length"}, dx >= 1e-9 && dx <= L / 4.0,
                    "a roughness sample spacing of " + dim(dx, "m") + " over a span of " + dim(L, "m") +
-                       ": between a few atoms (1e-9 m) and a sixteenth of the span"});
+                       ": between a few atoms (1e-9 m) and a quarter of the span"});
   for (const char* key : {"blocked_force.strip_length", "path_table.strip_length"}) {
     const double strip = s.real(key);
     if (strip > 0.0)
@@ -111,9 +111,7 @@ std::vector<DimensionRelation> ball_on_beam_relations(const study::KeyReader& s)
   bool surface_written = false;
   for (const auto& k : s.keys()) surface_written = surface_written || (k.section == "surface" && s.is_set(k.full_name()));
   if (table || s.is_set("stiffness.approach_max") || s.is_set("stiffness.ball_rms")) approach_relations(s, a, out);
-  // A table's patch (nx x spacing) holds the contact; the solver stages size their own windows.
-  if (table || solver || surface_written)
-    add_surface_relations(s, solver || s.text("stiffness.surface") == "rough", a, table, out);
+  if (table || solver || surface_written) add_surface_relations(s, solver || s.text("stiffness.surface") == "rough", a, out);
   return out;
 }
 

@@ -44,7 +44,7 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
 std::string dim(double v, const char* unit);
 void add_texture_relations(const study::KeyReader& s, const std::string& span_key, double span,
                            const std::string& span_what, std::vector<DimensionRelation>& out);
-void add_surface_relations(const study::KeyReader& s, bool rough, double contact_radius, bool patch_holds_contact,
+void add_surface_relations(const study::KeyReader& s, bool rough, double contact_radius,
                            std::vector<DimensionRelation>& out);
 double e_star(double e1, double nu1, double e2, double nu2);
 double hertz_radius(const study::KeyReader& s, double e, double nu);

@@ -41,7 +41,7 @@ std::vector<DimensionRelation> rolling_pipe_relations(const study::KeyReader& s)
                        " long (nx x spacing)"});
     out.push_back({{"surface.spacing", "pipe.diameter"}, dx <= D,
                    "a floor grid spacing of " + dim(dx, "m") + " is flat under a tube " + dim(D, "m") + " across"});
-    add_surface_relations(s, true, 0.0, false, out);
+    add_surface_relations(s, true, 0.0, out);
   }
   add_texture_relations(s, "roll.distance", floor_length, "the rolled floor", out);
   if (s.text("texture.source") == "self-affine" && s.text("texture.rms_kind") == "height")
@@ -120,15 +120,6 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
     const double length = ends.size() == 2 ? (ends[1] - ends[0]).norm() : 0.0;
     out.push_back({{"beam.diameter"}, d <= length / 2.0,
                    "a beam " + dim(d, "m") + " across and " + dim(length, "m") + " long is no slender beam"});
-    const auto points = vectors(s.text("plane.point")), normals = vectors(s.text("plane.normal"));
-    for (std::size_t p = 0; p < points.size() && p < normals.size() && ends.size() == 2; ++p) {
-      if (!(normals[p].norm() > 0.0)) continue;
-      const Eigen::Vector3d n = normals[p].normalized();
-      const double gap = std::min((ends[0] - points[p]).dot(n), (ends[1] - points[p]).dot(n)) - d / 2.0;
-      out.push_back({{"beam.diameter"}, gap >= -d / 4.0,
-                     "the beam's contact spheres (diameter " + dim(d, "m") + ") would start " + dim(-gap, "m") +
-                         " inside plane " + std::to_string(p + 1) + ": a body starts on or above a plane"});
-    }
   }
   const double pen = s.real("analysis.max_new_penetration");
   if (pen > 0.0)

@@ -5,12 +5,13 @@ key is covered by default) and every shipped study of that scene, study files ar
 m. Each must be refused with exit 78 and no output file, in one line naming the key and a reason.
 
 Division is the slip only for keys whose values are micrometres (default below 1 mm: grid spacings,
-correlation lengths, approaches, roughness heights and wavelengths): nm written for um, so those are
-divided by 1e3 and 1e6 too. For heights and wavelengths a value 10^3 smaller is a smoother or finer
-surface that exists (0.3 nm rms is a super-polished one), so only 1e6 (below an atom) is written. For
-the other keys a value 10^3 or 10^6 smaller is a physically possible study (a smaller ball, a slower
-roll, a start at the support): no physical reason refuses it, and it is not written. EXEMPT lists, with
-the reason, the few slipped values that are studies someone can mean."""
+correlation lengths, approaches, wavelengths): nm written for um, so those are divided by 1e3 and 1e6
+too. A wavelength 10^3 smaller is a finer surface that exists, so only 1e6 (below an atom) is written;
+a smaller rms height is a smoother surface, down to the "smooth" the tests write as 1e-20, and a line
+sampled below 1 nm is an atomic-force microscope's, so those are not divided (NOT_DIVIDED). For the
+keys of millimetres and more a value 10^3 or 10^6 smaller is a physically possible study (a smaller
+ball, a slower roll, a start at the support): no physical reason refuses it, and it is not written.
+EXEMPT lists, with the reason, the few slipped values that are studies someone can mean."""
 import concurrent.futures
 import re
 import shutil
@@ -24,9 +25,11 @@ UNIT = re.compile(r"allowed: a (?:finite|whole) number.*\((m|m/s|m \(height\) or
 COMMAND = {"stiffness": "stiffness", "texture": "texture"}  # the scene's own command; others: run
 TIMEOUT = 10  # a refusal takes milliseconds; a study accepted starts its work and is stopped here
 
-# Heights and wavelengths: 10^3 smaller is a smoother or finer surface that exists.
-PLAUSIBLY_SMALLER = {"texture.rms", "surface.sigma", "stiffness.ball_rms", "texture.short_wavelength",
-                     "texture.long_wavelength", "texture.rolloff_wavelength"}
+# Smaller is a real study: a smoother surface, down to the "smooth" the tests write as rms = 1e-20; an
+# atomic-force microscope's profile sampled below 1 nm.
+NOT_DIVIDED = {"texture.rms", "surface.sigma", "stiffness.ball_rms", "lines.spacing"}
+# Wavelengths 10^3 smaller (nm) are a finer surface that exists; 10^6 smaller is below an atom.
+ONLY_MILLION = {"texture.short_wavelength", "texture.long_wavelength", "texture.rolloff_wavelength"}
 SHIPPED_ROLLOFF = ("the value seed 002's rig studies ship (50 mm): a roll-off at 5 cm on a 39-40 cm span is a "
                    "real surface's")
 # (study, key, factor): why the slipped value is a study that can be meant.
@@ -36,6 +39,7 @@ EXEMPT = {
     ("seed001-beam-r-hertz.ini", "texture.rolloff_wavelength", 1e3): SHIPPED_ROLLOFF,
     ("seed001-beam-s-hertz.ini", "texture.rolloff_wavelength", 1e3): SHIPPED_ROLLOFF,
     ("seed002-rig-1ms-seed-route.ini", "texture.rolloff_wavelength", 1e3): SHIPPED_ROLLOFF,
+    ("seed002-table.ini", "texture.rolloff_wavelength", 1e3): SHIPPED_ROLLOFF,
     ("seed002-rig-3ms-seed-route.ini", "texture.rolloff_wavelength", 1e3): SHIPPED_ROLLOFF,
     ("rolling-pipe.ini", "surface.correlation_x", 1e3):
         "a 1 cm correlation length on a 32 cm floor is a surface that exists (and [surface] method = spectral draws "
@@ -123,7 +127,8 @@ def cases(scene):
             if value == 0.0:  # 0: derived from the other keys; no slip multiplies it
                 continue
             micro = float(default) < 1e-3 if re.match(r"^[\d.e+-]+$", default or "") else False
-            smaller = (1e-6,) if f"{section}.{key}" in PLAUSIBLY_SMALLER else (1e-3, 1e-6)
+            name = f"{section}.{key}"
+            smaller = () if name in NOT_DIVIDED else (1e-6,) if name in ONLY_MILLION else (1e-3, 1e-6)
             for factor in (1e3, 1e6) + (smaller if micro and float(default) > 0 else ()):
                 out.append((study.name, section, key, value, factor))
     return out
