@@ -288,6 +288,11 @@ def main():
     ap.add_argument("--records", default=str(REPO / "bench" / "records"), help="the benchmark records' directory")
     a = ap.parse_args()
     binary = str(Path(a.bin).resolve())
+    # It writes into a copy of docs/ (docs/build.sh makes one): never into the sources, never elsewhere.
+    out = Path(a.out)
+    if not (out / "conf.py").is_file() or out.resolve() == (REPO / "docs").resolve():
+        fail(f"--out {a.out}: not a copy of docs/ (a folder holding conf.py, not docs/ itself); allowed: the folder "
+             "docs/build.sh copies the sources into", 73)
     ref = Path(a.out) / "reference" / "generated"
     val = Path(a.out) / "validation" / "generated"
     ref.mkdir(parents=True, exist_ok=True)

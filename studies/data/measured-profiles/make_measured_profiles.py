@@ -4,6 +4,8 @@ two profiles a PSD estimate needs.
 
     /usr/bin/python3 make_measured_profiles.py DIR   # DIR holds dektak-1.csv, opdx-3.txt, xy-4.txt
 """
+import io
+import os
 import pathlib
 import sys
 
@@ -34,15 +36,31 @@ def xy4(path):
 
 def main(src):
     src = pathlib.Path(src)
+    names = [f"{name}-{part}.csv" for name in ("dektak-1", "opdx-3", "xy-4") for part in "ab"]
+    targets = {n: check_output_file(pathlib.Path(__file__).with_name(n), "profile", own=starts_with(b"position_m,height_m"))
+               for n in names}  # every output checked before any is written
     for name, reader, file in [("dektak-1", dektak, "dektak-1.csv"), ("opdx-3", opdx, "opdx-3.txt"), ("xy-4", xy4, "xy-4.txt")]:
         x, z = reader(src / file)
         n = z.size // 2
         dx = (x[-1] - x[0]) / (x.size - 1)
         for part, sl in (("a", slice(0, n)), ("b", slice(n, 2 * n))):
-            out = pathlib.Path(__file__).with_name(f"{name}-{part}.csv")
-            np.savetxt(out, np.c_[np.arange(n) * dx, z[sl]], delimiter=",", header="position_m,height_m", comments="",
+            text = io.StringIO()
+            np.savetxt(text, np.c_[np.arange(n) * dx, z[sl]], delimiter=",", header="position_m,height_m", comments="",
                        fmt="%.10e")
+            write_output_file(targets[f"{name}-{part}.csv"], text.getvalue().encode())
+
+
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../python-post"))
+from rollspec_post.script_main import check_output_file, starts_with, write_output_file, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
+def checked_main():
+    if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
+        sys.exit("make_measured_profiles: error: usage: make_measured_profiles.py SOURCE_DIR (the folder of "
+                 "dektak-1.csv, opdx-3.txt and xy-4.txt)")
+    main(sys.argv[1])
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    script_main(checked_main)
