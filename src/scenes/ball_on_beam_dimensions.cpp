@@ -19,7 +19,7 @@ void beam_relations(const study::KeyReader& s, std::vector<DimensionRelation>& o
   const double L = s.real("beam.length"), t = s.real("beam.thickness"), b = s.real("beam.width");
   const double leff = s.real("beam.effective_length"), span = std::max(L, leff);
   const bool clamped = s.text("beam.support") == "clamped-clamped";
-  const double g = s.real("ball.gravity") > 0.0 ? s.real("ball.gravity") : 9.81;
+  const double g = 9.81;  // the beam's own weight on Earth ([ball] gravity loads the ball, a model choice)
   const double sag = (clamped ? 1.0 : 5.0) * s.real("beam.density") * g * std::pow(span, 4) /
                      (32.0 * s.real("beam.youngs_modulus") * t * t);
   const std::vector<std::string> span_keys =

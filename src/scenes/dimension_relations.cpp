@@ -98,9 +98,10 @@ void add_surface_relations(const study::KeyReader& s, bool rough, double contact
                    "the surface's rms height " + dim(sigma, "m") + " exceeds its correlation length " + dim(c, "m") +
                        ": slopes beyond 45 degrees, no nominally flat plane (the half-space solver assumes small "
                        "slopes, D-6)"});
-    out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"}, std::max(cx, cy) <= patch,
-                   "a correlation length of " + dim(std::max(cx, cy), "m") + " exceeds the surface patch nx x spacing = " +
-                       dim(patch, "m") + ": the patch holds no independent heights"});
+    out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"},
+                   std::max(cx, cy) <= 10.0 * patch,
+                   "a correlation length of " + dim(std::max(cx, cy), "m") + " exceeds ten times the surface patch nx x "
+                   "spacing = " + dim(patch, "m") + ": the patch holds a sliver of one correlated height, no rough surface"});
     if (!seed) return;  // written for another method: the grid's spacing is not theirs to resolve
     out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"}, c >= dx,
                    "a correlation length of " + dim(c, "m") + " is shorter than the grid spacing " + dim(dx, "m") +
