@@ -167,10 +167,10 @@ def point_label(f):
 
 def _stacked(f, ds):
     """Whether dataset `ds` carries the sweep's leading axes (its first dimension's scale is the sweep's)."""
-    axes = sweep_axes(f)[1]
     try:
+        axes = sweep_axes(f)[1]
         return ds.ndim >= 1 and len(ds.dims[0]) > 0 and ds.dims[0][0].name.rsplit("/", 1)[-1] == axes[0][0]
-    except (RuntimeError, KeyError, OSError):
+    except (PostError, RuntimeError, KeyError, OSError):  # a /sweep without keys: nothing is stacked by it
         return False
 
 
