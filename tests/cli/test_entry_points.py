@@ -183,3 +183,26 @@ def test_resume_reads_each_checkpointed_chunk_once(tmp_path):
         time.sleep(0.002)
     assert p.wait() == 0
     assert read < 1.5 * chunk_bytes, f"read {read / chunk_bytes:.2f} times the chunks' bytes"
+
+
+def test_resume_after_the_study_file_is_deleted(tmp_path):
+    """`run STUDY --resume --out X` with STUDY gone since the interrupted run: the checkpoint's own study."""
+    from conftest import assert_bitwise_equal
+    study, kept = tmp_path / "s.ini", tmp_path / "kept.ini"
+    study.write_text(SMALL_OSCILLATOR.format(realisations=400, chunk=2, duration=8))
+    kept.write_text(study.read_text())
+    out, ck = tmp_path / "r.h5", tmp_path / "r.h5.checkpoint"
+    p = subprocess.Popen([BIN, "run", study, "--out", out, "--quiet"], stderr=subprocess.PIPE, text=True,
+                         env={**os.environ, "OMP_NUM_THREADS": "1"})
+    while p.poll() is None and not list(ck.glob("chunk_*.bin")):
+        time.sleep(0.01)
+    p.send_signal(signal.SIGINT)
+    p.communicate(timeout=60)
+    assert p.returncode == 130
+    study.unlink()
+    r = run(["run", study, "--resume", "--out", out], timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert "s.ini no longer exists; resuming the study" in r.stderr
+    ref = tmp_path / "ref.h5"
+    assert run(["run", kept, "--out", ref, "--quiet"]).returncode == 0
+    assert_bitwise_equal(out, ref)
