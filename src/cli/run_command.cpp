@@ -79,7 +79,8 @@ bool resume_without_study(RunRequest& q) {
              sweep = std::filesystem::exists(q.out + ".sweep", ec);
   if (!checkpoint && !sweep) return false;
   if (!q.quiet && ensemble::mpi_rank() == 0)
-    std::cerr << "rollspec run: " << q.study.file << " no longer exists; resuming the study " << (sweep ? q.out + ".sweep" : q.out + ".checkpoint") << " keeps\n";
+    std::cerr << "rollspec run: " << q.study.file << " no longer exists; resuming the study "
+              << (sweep ? q.out + ".sweep" : q.out + ".checkpoint") << " keeps\n";
   q.study.file.clear();
   return true;
 }

@@ -27,7 +27,7 @@ struct RunRequest {
   StudyArgs study;
   std::string out;  // empty: from the study file's name
   bool resume = false, restart = false, force = false, rebuild = false, quiet = false;
-  long long only = -1;  // >= 0: just this realisation
+  long long only = -1;        // >= 0: just this realisation
   bool spectra_only = false;  // a fit's evaluation: the result needs only /psd and /bands (write_spectra_only)
   std::size_t max_sweep_points = kDefaultMaxSweepPoints;  // --max-points
 };

@@ -164,8 +164,7 @@ void write_manifest(const std::string& dir, const SweepStudy& s) {
   if (ec) throw cannot_create("cannot write " + path + ": " + ec.message());
 }
 
-void prepare_work_directory(const std::string& dir, const std::string& out, const RunRequest& q,
-                            const SweepStudy& s) {
+void prepare_work_directory(const std::string& dir, const std::string& out, const RunRequest& q, const SweepStudy& s) {
   const bool unfinished = check_work_directory(dir);
   if (unfinished && !q.resume && !q.restart)
     throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
@@ -311,12 +310,14 @@ std::optional<SweepStudy> load_sweep_manifest(const std::string& out, const Swee
   if (!fs::is_regular_file(fs::symlink_status(path, ec)))
     throw missing_input("no study file given, and " + dir +
                         " holds no sweep manifest (written by an older rollspec); resume with the study file: "
-                        "rollspec run STUDY.ini --out " + out + " --resume");
+                        "rollspec run STUDY.ini --out " +
+                        out + " --resume");
   const auto text = read_text(path);
   if (!text || text->rfind("# rollspec sweep of ", 0) != 0)
     throw data_error(path + ": not a sweep manifest rollspec wrote; resume with the study file");
   const std::size_t eol = text->find('\n');
-  StudyArgs args{text->substr(20, eol == std::string::npos ? std::string::npos : eol - 20), {},
+  StudyArgs args{text->substr(20, eol == std::string::npos ? std::string::npos : eol - 20),
+                 {},
                  eol == std::string::npos ? std::string() : "\n" + text->substr(eol + 1)};
   SweepLimits l = limits;
   l.max_points = SIZE_MAX;  // accepted when it started

@@ -12,9 +12,9 @@ namespace rollspec::io {
 namespace {
 
 struct SweptAxis {
-  std::string dimension, key;              // "oscillator_mass", "oscillator.mass"
-  std::vector<std::string> texts;          // the values as text
-  std::vector<double> numbers;             // and as numbers, when they are
+  std::string dimension, key;      // "oscillator_mass", "oscillator.mass"
+  std::vector<std::string> texts;  // the values as text
+  std::vector<double> numbers;     // and as numbers, when they are
 };
 
 std::vector<std::string> split(const std::string& text, char by) {
@@ -31,7 +31,8 @@ std::vector<std::string> split(const std::string& text, char by) {
 SweptAxis read_axis(const Hdf5Reader& r, const std::string& dimension) {
   SweptAxis a{dimension, dimension, {}, {}};
   const std::string path = "/sweep/" + dimension;
-  if (!r.exists(path)) throw data_error(r.path() + ": /sweep@keys names " + dimension + ", but " + path + " is missing");
+  if (!r.exists(path))
+    throw data_error(r.path() + ": /sweep@keys names " + dimension + ", but " + path + " is missing");
   if (r.has_attribute(path, "description")) {
     const std::string d = r.string_attribute(path, "description"), prefix = "swept study key ";
     if (d.rfind(prefix, 0) == 0) a.key = d.substr(prefix.size());
@@ -79,7 +80,8 @@ SweepPoint sweep_point(const Hdf5Reader& r, const std::string& spec) {
   SweepPoint p;
   if (!r.exists("/sweep")) {
     if (!spec.empty())
-      throw usage_error("point " + clip(spec) + ": " + r.path() + " is not a sweep result (no /sweep); allowed: no point");
+      throw usage_error("point " + clip(spec) + ": " + r.path() +
+                        " is not a sweep result (no /sweep); allowed: no point");
     return p;
   }
   const bool zipped = r.has_attribute("/sweep", "mode") && r.string_attribute("/sweep", "mode") == "zipped";
@@ -100,12 +102,14 @@ SweepPoint sweep_point(const Hdf5Reader& r, const std::string& spec) {
   std::vector<std::size_t> index(p.shape.size(), std::string::npos);
   if (spec.find_first_not_of("0123456789") == std::string::npos && spec.size() < 16) {
     const std::size_t k = std::stoull(spec);
-    if (k < 1 || k > n) throw usage_error("point " + spec + ": " + r.path() + " has " + describe(axes, zipped, n) + allowed);
+    if (k < 1 || k > n)
+      throw usage_error("point " + spec + ": " + r.path() + " has " + describe(axes, zipped, n) + allowed);
     p.offset = k - 1;
   } else {
     for (const auto& item : split(spec, ',')) {
       const std::size_t eq = item.find('=');
-      const std::string key = trim(item.substr(0, eq)), value = eq == std::string::npos ? "" : trim(item.substr(eq + 1));
+      const std::string key = trim(item.substr(0, eq)),
+                        value = eq == std::string::npos ? "" : trim(item.substr(eq + 1));
       std::size_t axis = axes.size();
       for (std::size_t a = 0; a < axes.size(); ++a)
         if (axes[a].key == key || axes[a].dimension == key) axis = a;
@@ -141,8 +145,8 @@ SweepPoint sweep_point(const Hdf5Reader& r, const std::string& spec) {
   return p;
 }
 
-std::vector<double> read_at_point(const Hdf5Reader& r, const SweepPoint& p, const std::string& name,
-                                  std::size_t rank, std::vector<std::size_t>* dims) {
+std::vector<double> read_at_point(const Hdf5Reader& r, const SweepPoint& p, const std::string& name, std::size_t rank,
+                                  std::vector<std::size_t>* dims) {
   std::vector<std::size_t> d;
   std::vector<double> v = r.read(name, &d);
   const std::size_t lead = p.shape.size();

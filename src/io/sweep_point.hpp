@@ -28,7 +28,7 @@ SweepPoint sweep_point(const Hdf5Reader& r, const std::string& spec);
 // Dataset `name` of `r`, of `rank` dimensions in one result, read at the point: a stacked one (the
 // sweep's leading axes in front) as the point's block, one equal at every point (kept once) as it is;
 // `dims` without the leading axes. Refused (exit 65) when it is neither.
-std::vector<double> read_at_point(const Hdf5Reader& r, const SweepPoint& p, const std::string& name,
-                                  std::size_t rank, std::vector<std::size_t>* dims = nullptr);
+std::vector<double> read_at_point(const Hdf5Reader& r, const SweepPoint& p, const std::string& name, std::size_t rank,
+                                  std::vector<std::size_t>* dims = nullptr);
 
 }  // namespace rollspec::io

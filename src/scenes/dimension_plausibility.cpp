@@ -60,8 +60,7 @@ void refuse_failed_relations(const study::KeyReader& s, const std::vector<Dimens
   int more = 0;
   for (const auto& r : failed)
     if (std::find(r.keys.begin(), r.keys.end(), culprit) != r.keys.end()) {
-      if (shown == first && std::find(first->keys.begin(), first->keys.end(), culprit) == first->keys.end())
-        shown = &r;
+      if (shown == first && std::find(first->keys.begin(), first->keys.end(), culprit) == first->keys.end()) shown = &r;
       ++more;
     }
   std::string others;
