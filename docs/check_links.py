@@ -32,7 +32,8 @@ class Links(html.parser.HTMLParser):
 def parse(path, cache):
     if path not in cache:
         p = Links()
-        p.feed(path.read_text(encoding="utf-8", errors="replace"))
+        if path.is_file():  # a FIFO named *.html would block the read: a page is a regular file
+            p.feed(path.read_text(encoding="utf-8", errors="replace"))
         cache[path] = p
     return cache[path]
 

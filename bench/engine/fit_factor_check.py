@@ -138,6 +138,7 @@ def main():
         for h5 in a.save_rig[1:]:
             check_input(h5, "a rollspec result")
         return save_rig(*a.save_rig)
+    check_input(a.rig, "a rig file (.npz)")
     rig = dict(np.load(a.rig))
     rng = np.random.default_rng(a.seed)
     grid = np.linspace(-1.5, 1.5, 601)

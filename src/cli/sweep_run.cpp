@@ -180,6 +180,12 @@ void prepare_work_directory(const std::string& dir, const std::string& out, cons
       if (!s.from_manifest) write_manifest(dir, s);
     } catch (const UserError& e) {
       failure = e.what();
+      // A directory made here whose manifest could not be written (a full disk) holds no point: gone
+      // again, so that the next run is not asked for --resume.
+      if (no_points(dir)) {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+      }
     }
   }
   if (ensemble::any_rank(!failure.empty()))
