@@ -24,14 +24,14 @@ def fit_args(csv, *extra, vary="force.level=0.1:10:log"):
                              *sets(FAST + [f"study.realisations={REALISATIONS}"]), *extra]]
 
 
-@pytest.mark.parametrize("vary,fragments", [
-    ("study.seed=1:100", ["takes a whole number", "varies real-valued keys only"]),
-    ("force.level=-2:1", ["-2 lies outside the key's range", "allowed: a finite number > 0"]),
-    ("force.lvel=1:2", ["force.lvel is not a key of scene random-oscillator"]),
+@pytest.mark.parametrize("vary,code,fragments", [
+    ("study.seed=1:100", EX_USAGE, ["takes a whole number", "varies real-valued keys only"]),
+    ("force.level=-2:1", EX_USAGE, ["-2 lies outside the key's range", "allowed: a finite number > 0"]),
+    ("force.lvel=1:2", EX_CONFIG, ["--vary force.lvel=1:2: ", "unknown key [force] lvel"]),
 ])
-def test_vary_is_checked_against_its_key_before_any_run(measured, tmp_path, vary, fragments):
+def test_vary_is_checked_against_its_key_before_any_run(measured, tmp_path, vary, code, fragments):
     r = run(fit_args(measured, vary=vary), env={"TMPDIR": str(tmp_path)}, timeout=60)
-    assert_refused(r, EX_USAGE, fragments)
+    assert_refused(r, code, fragments)
     assert "seed = 50.5" not in r.stderr and "level = -1.25" not in r.stderr
     assert not os.listdir(tmp_path), "a run was made before the refusal"
 
