@@ -193,6 +193,8 @@ def main():
     ap.add_argument("--base", help="previous build directory, for the ratios of goals 1 (the reference), 3 and 4")
     ap.add_argument("--repeats", type=int, default=3)
     a = ap.parse_args()
+    if a.action == "measure":  # the goals file is this script's: checked before anything is measured
+        check_output_file(RESULTS, "goals file", own=starts_with(b"{"))
     results = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
     if a.action == "measure":
         for g in sorted({int(x) for x in a.goals.split(",")}):
@@ -202,12 +204,15 @@ def main():
             figures = MEASURE[g](a)
             results[str(g)] = {"figures": figures, "date": datetime.date.today().isoformat(), "commit": commit(),
                                "load_before": before, "load_after": os.getloadavg()[0]}
-            tmp = RESULTS.with_name(RESULTS.name + ".tmp")
-            tmp.write_text(json.dumps(results, indent=1, sort_keys=True) + "\n")
-            os.replace(tmp, RESULTS)
+            write_output_file(os.path.realpath(RESULTS), (json.dumps(results, indent=1, sort_keys=True) + "\n").encode())
             print(f"goal {g}: {json.dumps(figures)}", flush=True)
     write_table(results)
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../python-post"))
+from rollspec_post.script_main import check_output_file, starts_with, write_output_file, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

@@ -31,6 +31,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "python-post"))
 from rollspec_post import safe_output  # noqa: E402  (the one atomic writer)
+from rollspec_post.script_main import fail, flush_stdout, script_main  # noqa: E402,F401  (the scripts' rule)
 RECORDS = ROOT / "bench" / "records"
 REQUIRED = {"title": str, "command": str, "date": str, "machine": dict, "builds": dict, "settings": str,
             "columns": list, "rows": list}
@@ -182,12 +183,23 @@ def check(record, name):
         fail("printed text names a load average")
 
 
+MAX_RECORD_BYTES = 16 * 2**20  # the largest record written is a few kB
+
+
 def load(path):
     path = Path(path)
     try:
-        record = json.loads(path.read_text())
+        if not path.is_file():  # a FIFO would block the read, a device never end
+            raise RecordError(f"benchmark record {path.name}: not a regular file")
+        if path.stat().st_size > MAX_RECORD_BYTES:
+            raise RecordError(f"benchmark record {path.name}: larger than {MAX_RECORD_BYTES // 2**20} MiB")
+        record = json.loads(path.read_bytes().decode("utf-8"))
+    except UnicodeDecodeError as e:
+        raise RecordError(f"benchmark record {path.name}: not UTF-8 text (byte {e.start})") from None
     except json.JSONDecodeError as e:
         raise RecordError(f"benchmark record {path.name}: not JSON ({e})") from None
+    except OSError as e:
+        raise RecordError(f"benchmark record {path.name}: cannot read ({e.strerror})") from None
     check(record, path.name)
     return record
 

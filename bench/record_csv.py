@@ -23,6 +23,7 @@ from pathlib import Path
 sys.dont_write_bytecode = True  # no __pycache__ in bench/
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_record  # noqa: E402
+from bench_record import fail, flush_stdout, script_main  # noqa: E402
 
 
 def first_table(text):
@@ -30,7 +31,7 @@ def first_table(text):
     lines = text.splitlines()
     start = next((i for i, l in enumerate(lines) if "," in l and not l.lstrip().startswith("#")), None)
     if start is None:
-        sys.exit("record_csv: the command printed no CSV table")
+        fail("the command printed no CSV table", 65)
     head = next(csv.reader([lines[start]]))
     rows = []
     for line in lines[start + 1:]:
@@ -56,23 +57,30 @@ def main():
     a = ap.parse_args()
     command = a.command[1:] if a.command[:1] == ["--"] else a.command
     if not command:
-        sys.exit("record_csv: no command after --")
+        fail("no command after --", 64)
     try:
         bench_record.check_target(a.record, bench_record.is_record)
     except bench_record.RecordError as e:
-        sys.exit(f"record_csv: {e}")
+        fail(e, 73)
+    bad = [e for e in a.env if "=" not in e or not e.split("=", 1)[0]]
+    if bad:
+        fail(f"--env {bad[0]!r}: allowed: NAME=VALUE", 64)
     env = dict(os.environ, **dict(e.split("=", 1) for e in a.env))
     busy, own = bench_record.busy_seconds(), bench_record.own_cpu()
     child = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    r = subprocess.run(command, capture_output=True, text=True, env=env)
+    try:
+        r = subprocess.run(command, capture_output=True, text=True, errors="replace", env=env)
+    except OSError as e:  # no such command, not executable
+        fail(f"cannot run {command[0]}: {e.strerror}", 66 if isinstance(e, FileNotFoundError) else 69)
     wall = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = after.ru_utime - child.ru_utime + after.ru_stime - child.ru_stime
     others = bench_record.other_work(busy, bench_record.own_cpu() - own, wall)
     sys.stdout.write(r.stdout)
     if r.returncode != 0:
-        sys.exit(f"record_csv: {' '.join(command)} exited {r.returncode}\n{r.stderr[-3000:]}")
+        last = (r.stderr.strip().splitlines() or [""])[-1]
+        fail(f"{' '.join(command)} exited {r.returncode}: {last}", 70)
     head, rows = first_table(r.stdout)
     binary = next((c for c in command if Path(c).name in ("rollspec",) and os.access(c, os.X_OK)), None)
     build = {"description": a.describe}
@@ -85,8 +93,9 @@ def main():
                            columns=[h.replace("_", " ") for h in head], rows=rows,
                            notes=a.notes, other_cores=others)
     except bench_record.RecordError as e:
-        sys.exit(f"record_csv: {e}")
+        fail(e, 73)
+    flush_stdout()
 
 
 if __name__ == "__main__":
-    main()
+    script_main(main)

@@ -6,6 +6,7 @@ not fetched: the build runs offline.
 
 Prints one line per broken link (page: link: why) and exits 1 if there is any, 2 on bad usage."""
 import html.parser
+import os
 import pathlib
 import sys
 import urllib.parse
@@ -31,7 +32,8 @@ class Links(html.parser.HTMLParser):
 def parse(path, cache):
     if path not in cache:
         p = Links()
-        p.feed(path.read_text(encoding="utf-8", errors="replace"))
+        if path.is_file():  # a FIFO named *.html would block the read: a page is a regular file
+            p.feed(path.read_text(encoding="utf-8", errors="replace"))
         cache[path] = p
     return cache[path]
 
@@ -68,5 +70,10 @@ def main(argv):
     return 1 if broken else 0
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../python-post"))
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    script_main(lambda: main(sys.argv))

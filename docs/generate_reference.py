@@ -29,10 +29,25 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 
 
+EX_DATAERR, EX_SOFTWARE, EX_IOERR = 65, 70, 74
+
+
+def fail(message, code):
+    """One line on stderr and a sysexits code: the build stops there."""
+    print(f"generate_reference: {' '.join(str(message).split())}", file=sys.stderr)
+    sys.exit(code)
+
+
 def run(argv, **kw):
-    r = subprocess.run(argv, capture_output=True, text=True, timeout=300, **kw)
+    try:
+        r = subprocess.run(argv, capture_output=True, text=True, errors="replace", timeout=300, **kw)
+    except OSError as e:
+        fail(f"cannot run {argv[0]}: {e.strerror}", EX_SOFTWARE)
+    except subprocess.TimeoutExpired:
+        fail(f"{' '.join(map(str, argv))}: no answer within 300 s", EX_SOFTWARE)
     if r.returncode != 0:
-        sys.exit(f"generate_reference: {' '.join(map(str, argv))} exited {r.returncode}\n{r.stderr}")
+        last = (r.stderr.strip().splitlines() or [""])[-1]
+        fail(f"{' '.join(map(str, argv))} exited {r.returncode}: {last}", EX_SOFTWARE)
     return r.stdout
 
 
@@ -249,7 +264,7 @@ def write_bench_records(records, out):
     try:
         text = bench_record.render_all(records, level=3)
     except bench_record.RecordError as e:
-        sys.exit(f"generate_reference: {e}")
+        fail(e, EX_DATAERR)
     (out / "bench-records.md").write_text(text)
 
 
@@ -262,7 +277,7 @@ def write_validation_records(records, out):
     try:
         text = bench_record.render_all(records, level=3)
     except bench_record.RecordError as e:
-        sys.exit(f"generate_reference: {e}")
+        fail(e, EX_DATAERR)
     (out / "validation-records.md").write_text(text)
 
 
@@ -273,6 +288,11 @@ def main():
     ap.add_argument("--records", default=str(REPO / "bench" / "records"), help="the benchmark records' directory")
     a = ap.parse_args()
     binary = str(Path(a.bin).resolve())
+    # It writes into a copy of docs/ (docs/build.sh makes one): never into the sources, never elsewhere.
+    out = Path(a.out)
+    if not (out / "conf.py").is_file() or out.resolve() == (REPO / "docs").resolve():
+        fail(f"--out {a.out}: not a copy of docs/ (a folder holding conf.py, not docs/ itself); allowed: the folder "
+             "docs/build.sh copies the sources into", 73)
     ref = Path(a.out) / "reference" / "generated"
     val = Path(a.out) / "validation" / "generated"
     ref.mkdir(parents=True, exist_ok=True)
@@ -288,4 +308,7 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except OSError as e:  # a full disk, a folder that cannot be written: one line, not a traceback
+        fail(f"{e.filename or ''}: {e.strerror or e}", EX_IOERR)

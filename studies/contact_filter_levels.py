@@ -75,7 +75,7 @@ def main():
     ap.add_argument("--realisations", type=int, default=25)
     ap.add_argument("--keep", help="directory for the result files (default: a temporary one)")
     args = ap.parse_args()
-    tmp = pathlib.Path(args.keep or tempfile.mkdtemp(prefix="contact-filter-"))
+    tmp = pathlib.Path(own_folder(args.keep, "contact_filter_levels") if args.keep else tempfile.mkdtemp(prefix="contact-filter-"))
     tmp.mkdir(parents=True, exist_ok=True)
     for title, study, variants, pairs in STUDIES:
         res = {}
@@ -100,5 +100,10 @@ def main():
     print(f"\nresult files: {tmp}")
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../python-post"))
+from rollspec_post.script_main import own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

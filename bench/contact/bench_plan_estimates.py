@@ -150,10 +150,17 @@ def main():
             data={"runs": data}, other_cores=others)
 
 
-if __name__ == "__main__":
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+
+
+def checked_main():
     try:
         main()
     except bench_record.RecordError as e:  # a write that failed at the end: one line, the old file whole
         sys.exit(f"bench_plan_estimates: {e}")
-    except KeyboardInterrupt:  # the case's temporary directory is removed on the way out
-        sys.exit("bench_plan_estimates: interrupted; nothing written")
+
+
+if __name__ == "__main__":
+    script_main(checked_main)  # an interrupt removes the case's temporary directory on the way out

@@ -46,6 +46,9 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--skip-sides", action="store_true")
     o = ap.parse_args()
+    for program, option in ((o.reference, "--reference"), (o.current, "--current")) + \
+            (() if o.skip_sides else ((o.bench, "--bench"),)):
+        require_program(program, option)  # before the first measurement, not after an hour of them
     lines = []
     if not o.skip_sides:
         t = sides(o.bench, o.repeats)
@@ -87,5 +90,10 @@ def main():
     print("\n".join(lines))
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import require_program, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

@@ -124,6 +124,27 @@ def title(reference):
     return f"Contact-solver tables of the seed 002 rig against {reference.split(' (')[0].split(',')[0]}"
 
 
+MARKDOWN_HEAD = b"Seed 002 rig tables, OMP_NUM_THREADS="
+
+
+def is_own_json(path):
+    """A --json file this script wrote (its summary object), which a new run may replace."""
+    try:
+        with open(path) as f:
+            return isinstance(json.load(f), dict)
+    except (OSError, ValueError):
+        return False
+
+
+def is_own_markdown(path):
+    """A --markdown file this script wrote: it starts with the title line its tables open with."""
+    try:
+        with open(path, "rb") as f:
+            return f.read(len(MARKDOWN_HEAD)) == MARKDOWN_HEAD
+    except OSError:
+        return False
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--reference", required=True, help="rollspec binary to compare with (the build before)")
@@ -137,10 +158,11 @@ def main():
     ap.add_argument("--describe-reference", default="the reference build", help="the reference build in words")
     ap.add_argument("--describe-current", default="the current build", help="the current build in words")
     o = ap.parse_args()
-    try:  # refused before hours of measurement, not after
-        for out in (o.json, o.markdown):
-            if out:
-                bench_record.check_target(out)
+    try:  # refused before hours of measurement, not after; only files this script wrote are replaced
+        if o.json:
+            bench_record.check_target(o.json, is_own_json)
+        if o.markdown:
+            bench_record.check_target(o.markdown, is_own_markdown)
         if o.record:
             bench_record.check_target(o.record, bench_record.is_record)
     except bench_record.RecordError as e:
@@ -186,9 +208,9 @@ def main():
     text = "\n".join(lines)
     print(text)
     if o.json:
-        bench_record.replace_text(o.json, json.dumps(summary, indent=1))
+        bench_record.replace_text(o.json, json.dumps(summary, indent=1), own=is_own_json)
     if o.markdown:
-        bench_record.replace_text(o.markdown, text + "\n")
+        bench_record.replace_text(o.markdown, text + "\n", own=is_own_markdown)
     if o.record:
         bench_record.write(
             o.record, title=title(o.describe_reference),
@@ -207,8 +229,17 @@ def main():
             data=summary, other_cores=others)
 
 
-if __name__ == "__main__":
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+
+
+def checked_main():
     try:
         main()
     except bench_record.RecordError as e:  # a write that failed at the end (full disk): one line, the old files whole
         sys.exit(f"bench_tables: {e}")
+
+
+if __name__ == "__main__":
+    script_main(checked_main)

@@ -20,6 +20,7 @@ dB); combined s^2 = s_w^2 + V_J, Welch-Satterthwaite dof nu = s^4 / (s_w^4/(K-1)
 half width t_nu s (D-30b). Coverage of the reference by [L - h, L + h] and by the widened
 interval, bands 100 Hz - 5 kHz of every sensor.
 """
+import os
 import argparse
 import subprocess
 import sys
@@ -81,7 +82,7 @@ def main():
     if shared:
         sys.exit(f"table_jackknife.py: --table-seeds and --ref-seeds share {','.join(sorted(shared))}: a test table "
                  "must not be part of the reference")
-    work = Path(a.work).resolve()
+    work = Path(own_folder(a.work, "table_jackknife")).resolve()
     (work / "tables").mkdir(parents=True, exist_ok=True)
     size = [] if a.size_key == "none" else [f"{a.size_key}={a.n}"]
     # The plain runs without the term, whatever the study says (the engine's runs add it).
@@ -145,5 +146,10 @@ def main():
           f"sensor-bands): {np.median(between / np.mean(var_j_all, axis=0)):.2f}")
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

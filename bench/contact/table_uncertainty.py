@@ -15,6 +15,7 @@ common random numbers), then
   - coverage (Eq. T-4): how often run A's interval, without and with the table term, holds the
     reference level of the OTHER table seeds (the mean of their seed-B levels).
 """
+import os
 import argparse
 import shutil
 import subprocess
@@ -56,7 +57,7 @@ def main():
     p.add_argument("--k-shift", type=int, default=100)
     p.add_argument("--work", default="table-uncertainty")
     a = p.parse_args()
-    work = Path(a.work).resolve()
+    work = Path(own_folder(a.work, "table_uncertainty")).resolve()
     work.mkdir(parents=True, exist_ok=True)
     studies = work / "studies"
     if not studies.exists():
@@ -97,5 +98,10 @@ def main():
           f"realisations only {plain / n:.3f}; with the table term (Eq. T-3) {widened / n:.3f}")
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

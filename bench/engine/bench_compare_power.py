@@ -10,6 +10,7 @@ x 2, contact damping x 2, roughness PSD x 2 (texture rms x sqrt 2). Each measure
 with `compare --measured-averages M --format json`; the rejection rate at 0.05 and the mean
 fraction of bands inside the per-band prediction intervals (D-22) are printed per case.
 """
+import os
 import argparse
 import json
 import math
@@ -82,5 +83,10 @@ def main():
             print(f"{name:24s} {rejected:4d}/{a.trials:<4d}  {100.0 * sum(inside) / len(inside):17.1f} %", flush=True)
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

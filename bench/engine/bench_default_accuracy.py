@@ -14,6 +14,7 @@ a 1-realisation run's (set-up). Cases: substeps 2/4/8 at their default line spac
 [roughness] band_limit = output (the default: roughness beyond f_s/2 dropped, the patch filter's
 interpolation loss undone, kernels/beam B40-B40a) and = step (before issue 18).
 """
+import os
 import argparse
 import sys
 import tempfile
@@ -90,5 +91,10 @@ def keep(base, out, sets):
     return out
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

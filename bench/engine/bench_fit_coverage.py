@@ -97,9 +97,13 @@ def main():
     name = "oscillator-two" if a.two else a.case
     case = CASES[name]
     records, realisations = a.records or case["records"], a.realisations or case["realisations"]
-    if a.summarise:
+    if a.summarise:  # a regular file of JSON lines: a FIFO would block the read
+        check_input(a.summarise, "a --log of this bench", 256 * 2**20)
         runs = [(json.loads(line), None) for line in Path(a.summarise).read_text().splitlines() if line.strip()]
         return summarise(name, case, records, realisations, runs, a.jobs)
+
+    if a.log:  # appended to as experiments end: a file of this bench's lines, checked before the first
+        check_output_file(a.log, "--log", own=starts_with(b'{"'))
 
     def logged(seed, work):
         out = experiment(a.binary, seed, case, records, realisations, work, 50000 + seed if a.model_seeds else None)
@@ -139,5 +143,11 @@ def summarise(name, case, records, realisations, runs, jobs):
     return 0
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.safe_output import check_input  # noqa: E402
+from rollspec_post.script_main import check_output_file, starts_with, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    script_main(main)

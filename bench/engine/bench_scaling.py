@@ -70,5 +70,10 @@ def main():
         print(f"projection,{P},1,{k * P},,{t:.4f},{r_chunk * (k * P / a.chunk):.6f},{k * c / t:.3f}")
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

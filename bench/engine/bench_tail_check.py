@@ -8,6 +8,7 @@ simulate: D-21's interval and (c)'s warning on one band of synthetic realisation
 per law and K. scene: M ensembles of K realisations (study seeds 1000 + m) against one of K_REF
 (seed 900001): coverage of the bands 100 Hz-5 kHz and the share of ensembles `run` warned about.
 """
+import os
 import subprocess
 import sys
 import tempfile
@@ -90,11 +91,23 @@ def scene(binary, study, ks, M, k_ref, sets):
         print(f"{Path(study).name} K = {K}: band coverage {np.mean(held):.3f}, warned {warned} of {M}")
 
 
-if __name__ == "__main__":
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+
+
+def main():
     if sys.argv[1:2] == ["simulate"]:
         simulate()
     elif sys.argv[1:2] == ["scene"] and len(sys.argv) >= 7:
-        scene(sys.argv[2], sys.argv[3], [int(k) for k in sys.argv[4].split(",")], int(sys.argv[5]),
-              int(sys.argv[6]), sys.argv[7:])
+        try:
+            ks, reps, m = [int(k) for k in sys.argv[4].split(",")], int(sys.argv[5]), int(sys.argv[6])
+        except ValueError:
+            sys.exit("bench_tail_check: error: K,K,... R M must be whole numbers; usage: see the module text")
+        scene(sys.argv[2], sys.argv[3], ks, reps, m, sys.argv[7:])
     else:
         raise SystemExit(__doc__)
+
+
+if __name__ == "__main__":
+    script_main(main)

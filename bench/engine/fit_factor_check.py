@@ -24,6 +24,8 @@ The rig's figures (bench/engine/fit_factor_rig.npz) come from three K = 400 runs
     /usr/bin/python3 bench/engine/fit_factor_check.py --save-rig bench/engine/fit_factor_rig.npz \
         eta0.008.h5 eta0.01.h5 eta0.0125.h5
 """
+import io
+import os
 import argparse
 import sys
 from pathlib import Path
@@ -113,7 +115,9 @@ def save_rig(path, lo, mid, hi):
     c, Sc = load(mid)
     b, Sb = load(hi)
     h = np.log(0.0125 / 0.008)
-    np.savez(path, mu=c, S=Sc, A=(b - a) / h, B=(np.log(np.diag(Sb)) - np.log(np.diag(Sa))) / (2 * h))
+    buf = io.BytesIO()
+    np.savez(buf, mu=c, S=Sc, A=(b - a) / h, B=(np.log(np.diag(Sb)) - np.log(np.diag(Sa))) / (2 * h))
+    write_output_file(os.path.realpath(path), buf.getvalue())
 
 
 def main():
@@ -129,8 +133,12 @@ def main():
                     help="V: fw = elementwise Fenton-Wilkinson of S (the engine before), gsg = G S G (D-26a now)")
     ap.add_argument("--save-rig", nargs=4, metavar=("NPZ", "LOSS_0.008_H5", "LOSS_0.01_H5", "LOSS_0.0125_H5"))
     a = ap.parse_args()
-    if a.save_rig:
+    if a.save_rig:  # the .npz is replaced only if it is one (a zip archive); the three results are inputs
+        check_output_file(a.save_rig[0], "--save-rig", own=starts_with(b"PK"))
+        for h5 in a.save_rig[1:]:
+            check_input(h5, "a rollspec result")
         return save_rig(*a.save_rig)
+    check_input(a.rig, "a rig file (.npz)")
     rig = dict(np.load(a.rig))
     rng = np.random.default_rng(a.seed)
     grid = np.linspace(-1.5, 1.5, 601)
@@ -154,5 +162,11 @@ def main():
     return 0
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.safe_output import check_input  # noqa: E402
+from rollspec_post.script_main import check_output_file, starts_with, write_output_file, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    script_main(main)

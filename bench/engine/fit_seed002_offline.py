@@ -79,7 +79,7 @@ def main():
     ap.add_argument("--reference", type=int, default=2000, help="K of the reference run (seed 777777)")
     ap.add_argument("--keep", help="directory for the runs (reused when there)")
     a = ap.parse_args()
-    work = a.keep or tempfile.mkdtemp()
+    work = own_folder(a.keep, "fit_seed002_offline") if a.keep else tempfile.mkdtemp()
     Path(work).mkdir(parents=True, exist_ok=True)
     seeds = [2002] + list(range(1, a.seeds + 1))
     runs = {sp: [run(a.binary, f"{work}/m{sp}-{s}.h5", sp, M, s) for s in seeds] for sp in g.POINTS}
@@ -136,5 +136,10 @@ def linear_rule_arrays(fr, psd, lo, hi):
     return np.array(out)
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    script_main(main)

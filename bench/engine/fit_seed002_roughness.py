@@ -226,6 +226,9 @@ def main():
     ap.add_argument("--fmin", default=FMIN, help="--scan's lowest band edge (Hz)")
     ap.add_argument("--seeds", default="1-10", help="--scan's model seeds, A-B")
     a = ap.parse_args()
+    if a.log:  # read and appended to: a file of this bench's lines, checked before any fit runs
+        check_output_file(a.log, "--log", own=starts_with(b'{"'))
+    doc_target = None if a.dry_run else check_output_file(DOC, "the fit page", own=starts_with(b"#"))
     results = {}
     with tempfile.TemporaryDirectory() as work:
         csvs = {speed: stand_in(a.binary, work, speed) for speed in POINTS}
@@ -261,10 +264,15 @@ def main():
         doc = doc[:doc.index(BEGIN)] + text + doc[doc.index(END) + len(END) + 1:]
     else:
         doc = doc.rstrip("\n") + "\n\n" + text
-    DOC.write_text(doc)
+    write_output_file(doc_target, doc.encode())
     print(f"wrote {DOC}")
     return 0
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import check_output_file, starts_with, write_output_file, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    script_main(main)

@@ -13,6 +13,9 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import rollspec_post as rp
+from rollspec_post.script_main import one_line_errors
+
+one_line_errors()  # run as python3 FILE: a failure is one line, not a traceback
 
 # The repository: $ROLLSPEC_SOURCE when the site is built, else this file's checkout.
 REPO = Path(os.environ.get("ROLLSPEC_SOURCE") or Path(__file__).resolve().parents[2])

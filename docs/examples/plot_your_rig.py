@@ -22,6 +22,9 @@ import h5py
 import matplotlib.pyplot as plt
 import numpy as np
 from rollspec_post.notebook import engine_binary
+from rollspec_post.script_main import one_line_errors
+
+one_line_errors()  # run as python3 FILE: a failure is one line, not a traceback
 
 ROLLSPEC = engine_binary()
 G = 9.80665  # m/s^2 per g

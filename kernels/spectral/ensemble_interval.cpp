@@ -14,6 +14,9 @@ namespace rollspec::spectral {
 namespace {
 
 constexpr double kMaxDof = 1e12;  // beyond this the gamma-law interval is [m, m] to double precision
+// Below this the gamma law is so skewed (a spread of 45 means or more) that its central quantiles
+// are 0 and beyond any double, and boost's series for them do not converge: the interval is [0, inf).
+constexpr double kMinDof = 1e-3;
 
 void check(std::uint64_t realisations, double level) {
   if (!(level > 0.0 && level < 1.0)) throw std::invalid_argument("confidence level must lie in (0, 1)");
@@ -51,7 +54,9 @@ ScatterInterval mean_interval(const Scatter& s, std::uint64_t realisations, doub
   const double nu = std::min(K * dof_one(s.mean, s.std_dev), kMaxDof);
   if (!(s.mean > 0.0)) return {1.0, 1.0, nu};
   ScatterInterval out{1.0, 1.0, nu};
-  if (nu < kMaxDof) {  // D-21a: gamma law, chi-square on nu dof, widened by t_{K-1}/z
+  if (!(nu >= kMinDof)) {
+    out.lower = 0.0, out.upper = std::numeric_limits<double>::infinity();
+  } else if (nu < kMaxDof) {  // D-21a: gamma law, chi-square on nu dof, widened by t_{K-1}/z
     const boost::math::chi_squared chi2(nu);
     const double a = 1.0 - level, w = widening(realisations, level);
     out.lower = std::pow(nu / boost::math::quantile(chi2, 1.0 - a / 2.0), w);
@@ -75,7 +80,9 @@ ScatterInterval prediction_interval(const Scatter& s, std::uint64_t realisations
   const double nu1 = std::min(dof_one(s.mean, s.std_dev), kMaxDof / std::max(K, records));
   ScatterInterval out{1.0, 1.0, K * nu1};
   if (!(s.mean > 0.0)) return out;
-  if (K * nu1 < kMaxDof) {  // D-22a: m_M / m_K ~ F(M nu_1, K nu_1), widened by t_{K-1}/z
+  if (!(std::min(records, K) * nu1 >= kMinDof)) {
+    out.lower = 0.0, out.upper = std::numeric_limits<double>::infinity();
+  } else if (K * nu1 < kMaxDof) {  // D-22a: m_M / m_K ~ F(M nu_1, K nu_1), widened by t_{K-1}/z
     const boost::math::fisher_f f(records * nu1, K * nu1);
     const double a = 1.0 - level, w = widening(realisations, level);
     out.lower = std::pow(boost::math::quantile(f, a / 2.0), w);

@@ -7,6 +7,13 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=build/release/rollspec
 docs=python-post/docs
+fail() { echo "make_readme_pictures.sh: error: $2" >&2; exit "$1"; }
+[ -x "$bin" ] || fail 66 "no $bin; build it first: cmake --preset release && cmake --build --preset release"
+# --force below replaces the README's pictures whatever they hold: only regular files of this folder, never
+# a link that would carry the write elsewhere.
+for f in "$docs"/*.png; do
+  if [ -L "$f" ] || { [ -e "$f" ] && [ ! -f "$f" ]; }; then fail 73 "$f is not a picture this script wrote (a link, or not a regular file); move it away"; fi
+done
 # --force: the committed pictures predate the rollspec-post marker that lets a run replace its own output
 post() { PYTHONPATH=python-post /usr/bin/python3 -m rollspec_post "$@" --force; }
 work=$(mktemp -d)

@@ -131,6 +131,9 @@ def build_parser():
     p.add_argument("--fmin", type=frequency, help="lowest frequency drawn and compared (Hz; default: the study's band "
                    "range, from 0 on a linear axis)")
     p.add_argument("--fmax", type=frequency, help="highest frequency drawn and compared (Hz; default: the study's band range)")
+    for q in (p, r, n):
+        q.add_argument("--point", metavar="K|KEY=VALUE",
+                       help="of a sweep result: the point read, K (1-based, run order) or section.key=value[,...]")
     for q in (p, r):
         q.add_argument("--column", help="PSD column of the measurement CSV (default: psd)")
         q.add_argument("--measured-averages", type=finite, metavar="M",
@@ -225,7 +228,9 @@ def render(args, kind):
 
 def run(args):
     """Checks every input and the output before reading any data, renders, then writes atomically."""
+    from .result_file import select_point
     from .safe_output import check_input, check_output, picture_kind, refuse_inputs, write_atomic
+    select_point(getattr(args, "point", None))
     files = inputs(args)
     check_ranges(args)
     refuse_inputs(args.out, [path for path, _, _ in files])  # first: the most important answer
@@ -259,6 +264,21 @@ def one_line(text):
     return " ".join(str(text).split())
 
 
+def raised_by_hdf5(e):
+    """Whether the exception came out of h5py (a soft-link loop, undecodable text, a damaged object)."""
+    tb = e.__traceback__
+    while tb is not None:
+        if "h5py" in tb.tb_frame.f_code.co_filename:
+            return True
+        tb = tb.tb_next
+    return isinstance(e, UnicodeError)
+
+
+def args_inputs(args):
+    return ", ".join(str(getattr(args, n)) for n in ("result", "texture_file", "table", "csv", "measurement")
+                     if getattr(args, n, None)) or "an input"
+
+
 def checked_run(args, prefix):
     """run() with every failure as one line and an exit code."""
     from .result_file import PostError
@@ -272,7 +292,12 @@ def checked_run(args, prefix):
         return EX_SOFTWARE
     except ImportError:
         raise
-    except Exception as e:  # last resort: a bug, but still one line and no partial output
+    except Exception as e:
+        if raised_by_hdf5(e):  # a damaged or unusual file h5py could not read: bad data, not a bug
+            print(f"{prefix} {args_inputs(args)}: cannot be read ({type(e).__name__}: {one_line(e)}); "
+                  f"{args.out} not written", file=sys.stderr)
+            return 65
+        # last resort: a bug, but still one line and no partial output
         print(f"{prefix} internal error ({type(e).__name__}: {one_line(e)}); {args.out} not written; "
               "please report this", file=sys.stderr)
         return EX_SOFTWARE

@@ -11,8 +11,8 @@ from matplotlib.legend_handler import HandlerTuple
 
 from .log_ticks import label_log_axes
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
-from .result_file import (EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, sensor_labels, strings,
-                          text_attr)
+from .result_file import (EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, point_label, read_rows, sensor_labels,
+                          strings, text_attr)
 from .safe_output import emit_figure, picture_kind
 
 
@@ -39,6 +39,8 @@ def read_psd(result):
         mean, lo, hi = (read_rows(f, "/psd/" + n, 2) for n in ("mean", "ci_lower", "ci_upper"))
         names = strings(f, "/psd/sensor")
         labels = sensor_labels(f)
+        point = point_label(f)  # a sweep result: the point read (--point)
+        labels = [f"{label} at {point}" for label in labels] if point else labels
         ref = read_rows(f, "/reference/psd", 2) if "/reference/psd" in f else None
         ref_label = text_attr(f["/reference/psd"], "label", "reference") if ref is not None else None
         units = text_attr(f["/psd/mean"], "units")

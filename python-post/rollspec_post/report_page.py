@@ -12,7 +12,8 @@ import numpy as np
 from .measurement import compare_bands, read_bands, read_measurement, sensor_row
 from .psd_plot import plot_psd
 from .rig_summary import rig_parameters
-from .result_file import EX_DATAERR, PostError, attr, open_rollspec, read, scalar, sensor_labels, strings, text_attr
+from .result_file import (EX_DATAERR, PostError, as_text, attr, open_rollspec, point_label, read, scalar, sensor_labels,
+                          strings, text_attr)
 from .safe_output import HTML_MARKER, write_atomic
 from . import __version__
 
@@ -54,7 +55,7 @@ def png_data_uri(render):
 def plain(value):
     if isinstance(value, np.ndarray):
         value = value.reshape(-1)[0] if value.size == 1 else value.tolist()
-    return value.decode() if isinstance(value, bytes) else value
+    return as_text(value)
 
 
 def read_result(path, sensor):
@@ -69,7 +70,8 @@ def read_result(path, sensor):
              "loss": scalar(f, "/contact/loss_of_contact_share"),
              "loss_std": scalar(f, "/contact/loss_of_contact_share_std"),
              "loss_warning": text_attr(f["/contact"], "loss_of_contact_warning") if "/contact" in f else None,
-             "law": text_attr(f["/contact"], "law") if "/contact" in f else None}
+             "law": text_attr(f["/contact"], "law") if "/contact" in f else None,
+             "point": point_label(f)}
         r["confidence"] = r["bands"]["confidence"]
         r["sensor"] = sensor = sensor_row(r["sensors"], sensor)
         r["sensor_name"] = r["sensors"][sensor]
@@ -216,7 +218,8 @@ def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, co
     if measurement:
         prov["measurement_file"] = os.path.basename(measurement)
     scene = prov["scene"]
-    parts = [f"<h1>rollspec report: {esc(scene)}</h1>",
+    at = f" at the sweep point {r['point']}" if r["point"] else ""
+    parts = [f"<h1>rollspec report: {esc(scene)}{esc(at)}</h1>",
              f'<p class="sub">{esc(description(r["study"]) or os.path.basename(result))}</p>',
              loss_warning(r, loss_threshold),
              "<h2>Key figures</h2>", key_figures(r, cmp, loss_threshold), rig_table(r["study"]),

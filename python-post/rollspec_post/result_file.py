@@ -19,15 +19,27 @@ class PostError(Exception):
         self.exit_code = exit_code
 
 
-def text_attr(obj, name, default=None):
-    if name not in obj.attrs:
-        return default
-    v = obj.attrs[name]
+def as_text(v):
+    """Bytes or a string h5py decoded with surrogate escapes, as printable text (bad bytes replaced)."""
     if isinstance(v, bytes):
-        return v.decode()
-    if hasattr(v, "shape") and v.shape == (1,):
-        return v[0]
+        return v.decode("utf-8", errors="replace")
+    if isinstance(v, str):
+        return v.encode("utf-8", errors="surrogateescape").decode("utf-8", errors="replace")
     return v
+
+
+def text_attr(obj, name, default=None):
+    """An attribute as text (a one-element array as its element); a clear error for one that cannot be read."""
+    try:
+        if name not in obj.attrs:
+            return default
+        v = obj.attrs[name]
+    except (OSError, RuntimeError, KeyError, TypeError, UnicodeError) as e:
+        raise PostError(f"{getattr(obj.file, 'filename', '?')}: attribute {name} cannot be read ({e})",
+                        EX_DATAERR) from None
+    if hasattr(v, "shape") and v.shape == (1,):
+        v = v[0]
+    return as_text(v)
 
 
 def open_rollspec(path, filetypes=("rollspec-result",)):
@@ -38,28 +50,153 @@ def open_rollspec(path, filetypes=("rollspec-result",)):
         f = h5py.File(path, "r")
     except OSError as e:
         raise PostError(f"{path}: not a readable HDF5 file ({e})", EX_DATAERR) from None
-    filetype = text_attr(f, "filetype")
-    if filetype not in filetypes:
+    try:
+        filetype = text_attr(f, "filetype")
+    except PostError:
+        f.close()
+        raise
+    if not isinstance(filetype, str) or filetype not in filetypes:
         f.close()
         raise PostError(f"{path}: not a rollspec file of type {' or '.join(filetypes)} (filetype: {filetype!r})",
                         EX_DATAERR)
-    version = str(text_attr(f, "schema_version", ""))
+    try:
+        version = str(text_attr(f, "schema_version", ""))
+    except PostError:
+        f.close()
+        raise
     major = int(version.split(".")[0]) if version.split(".")[0].isdigit() else -1
     if major != KNOWN_SCHEMA_MAJOR[filetype]:
         f.close()
         raise PostError(f"{path}: schema_version {version!r} is not readable by rollspec_post "
                         f"(reads major version {KNOWN_SCHEMA_MAJOR[filetype]})", EX_DATAERR)
+    if _POINT[0] is not None and "/sweep" not in f:
+        f.close()
+        raise PostError(f"--point {_POINT[0]}: {path} is not a sweep result (no /sweep); allowed: no --point",
+                        EX_USAGE)
     return f
 
 
-def read(f, name):
-    """Dataset `name` as an array; a clear error (not a KeyError) when the file lacks it."""
-    if name not in f:
-        raise PostError(f"{f.filename}: has no {name}", EX_DATAERR)
+# The sweep point the commands read (--point): K (1-based, run order) or section.key=value[,...].
+_POINT = [None]
+
+
+def select_point(spec):
+    _POINT[0] = spec
+
+
+def sweep_axes(f):
+    """(zipped, [(dimension, key, values)]) of a sweep result's /sweep, or None for a result that is no sweep."""
+    if "/sweep" not in f:
+        return None
+    g = f["/sweep"]
+    zipped = text_attr(g, "mode", "crossed") == "zipped"
+    axes = []
+    for d in [k.strip() for k in str(text_attr(g, "keys", "")).split(",") if k.strip()]:
+        if d not in g:
+            raise PostError(f"{f.filename}: /sweep@keys names {d}, but /sweep/{d} is missing", EX_DATAERR)
+        key = str(text_attr(g[d], "description", ""))
+        key = key[len("swept study key "):] if key.startswith("swept study key ") else d
+        values = np.reshape(read_plain(f, f"/sweep/{d}"), -1)
+        axes.append((d, key, [as_text(v) if isinstance(v, (bytes, str)) else v for v in values]))
+    if not axes:
+        raise PostError(f"{f.filename}: /sweep names no swept key", EX_DATAERR)
+    return zipped, axes
+
+
+def describe_sweep(zipped, axes):
+    n = len(axes[0][2]) if zipped else int(np.prod([len(a[2]) for a in axes]))
+    text = (" with " if zipped else " x ").join(
+        f"{key} = {', '.join(show(v) for v in values[:8])}"
+        + (", ..." if len(values) > 8 else "") for _, key, values in axes)
+    return n, f"{n} points ({'zipped' if zipped else 'crossed'}: {text})"
+
+
+def show(value):
+    return f"{value:g}" if isinstance(value, (float, np.floating)) else str(value)
+
+
+def _same(value, text):
+    if isinstance(value, (int, float, np.number)):
+        try:
+            return float(text) == float(value)
+        except ValueError:
+            return False
+    return str(value) == text
+
+
+def sweep_point(f, spec):
+    """(shape of the leading axes, offset in run order, label) of the point `spec` names."""
+    zipped, axes = sweep_axes(f)
+    n, what = describe_sweep(zipped, axes)
+    shape = [len(axes[0][2])] if zipped else [len(a[2]) for a in axes]
+    allowed = f"; allowed: --point K (1 to {n}, run order) or --point section.key=value[,...]"
+    if spec is None:
+        raise PostError(f"{f.filename} is a sweep result of {what}: choose one point{allowed}", EX_USAGE)
+    spec = str(spec).strip()
+    if spec.isdigit():
+        if not 1 <= int(spec) <= n:
+            raise PostError(f"--point {spec}: {f.filename} has {what}{allowed}", EX_USAGE)
+        offset = int(spec) - 1
+    else:
+        index = [None] * len(shape)
+        for item in spec.split(","):
+            key, _, value = (x.strip() for x in item.partition("="))
+            hit = [a for a, (d, k, _) in enumerate(axes) if key in (d, k)]
+            if not hit or not _:
+                raise PostError(f"--point {spec}: {item.strip()!r} names no swept key of {f.filename} ({what})"
+                                f"{allowed}", EX_USAGE)
+            found = [i for i, v in enumerate(axes[hit[0]][2]) if _same(v, value)]
+            slot = 0 if zipped else hit[0]
+            if not found or index[slot] not in (None, found[0]):
+                raise PostError(f"--point {spec}: {key} = {value} is no point of {f.filename} ({what}){allowed}",
+                                EX_USAGE)
+            index[slot] = found[0]
+        if None in index:
+            missing = axes[index.index(None)][1]
+            raise PostError(f"--point {spec}: names no value of {missing} ({what}){allowed}", EX_USAGE)
+        offset = int(np.ravel_multi_index(index, shape))
+    at = np.unravel_index(offset, shape)
+    label = ", ".join(f"{k}={show(v[at[0] if zipped else at[a]])}" for a, (_, k, v) in enumerate(axes))
+    return shape, offset, label
+
+
+def point_label(f):
+    """The selected point of a sweep result ("ball.speed=3"), or None for a result that is no sweep."""
+    return sweep_point(f, _POINT[0])[2] if "/sweep" in f else None
+
+
+def _stacked(f, ds):
+    """Whether dataset `ds` carries the sweep's leading axes (its first dimension's scale is the sweep's)."""
     try:
+        axes = sweep_axes(f)[1]
+        return ds.ndim >= 1 and len(ds.dims[0]) > 0 and ds.dims[0][0].name.rsplit("/", 1)[-1] == axes[0][0]
+    except (PostError, RuntimeError, KeyError, OSError):  # a /sweep without keys: nothing is stacked by it
+        return False
+
+
+def read_plain(f, name):
+    """Dataset `name` as stored; a clear error (not a KeyError) when the file lacks it."""
+    try:
+        if name not in f:
+            raise PostError(f"{f.filename}: has no {name}", EX_DATAERR)
         return f[name][()]
-    except (OSError, KeyError, TypeError, AttributeError) as e:  # a group, or a damaged dataset
+    except (OSError, KeyError, TypeError, AttributeError, RuntimeError, UnicodeError) as e:
+        # a group, a damaged dataset, a soft link that loops
         raise PostError(f"{f.filename}: {name} cannot be read as a dataset ({e})", EX_DATAERR) from None
+
+
+def read(f, name):
+    """Dataset `name` as an array; of a sweep result, the selected point's block of a stacked dataset."""
+    v = read_plain(f, name)
+    if "/sweep" in f and not name.startswith("/sweep/"):
+        ds = f[name]
+        shape, offset, _ = sweep_point(f, _POINT[0]) if _stacked(f, ds) else (None, 0, None)
+        if shape is not None:
+            if tuple(np.shape(v)[:len(shape)]) != tuple(shape):
+                raise PostError(f"{f.filename}: {name} has shape {np.shape(v)}; its leading axes are not the sweep's "
+                                f"{tuple(shape)}", EX_DATAERR)
+            v = np.reshape(v, (-1,) + np.shape(v)[len(shape):])[offset]
+    return v
 
 
 def read_rows(f, name, ndim):
@@ -89,7 +226,7 @@ def attr(f, obj, name, kind=float):
 
 def strings(f, name):
     """A dataset of names (sensors) as str."""
-    return [v.decode(errors="replace") if isinstance(v, bytes) else str(v) for v in np.reshape(read(f, name), -1)]
+    return [str(as_text(v)) for v in np.reshape(read(f, name), -1)]
 
 
 def sensor_labels(f, group="/psd"):

@@ -312,6 +312,38 @@ def test_degenerate_result(command, variant, samples, tmp_path):
     assert os.path.exists(out) == (r.returncode == 0)
 
 
+def _soft_link_loop(f):
+    del f["/psd/mean"]
+    f["/psd/mean"] = h5py_module().SoftLink("/psd/mean_again")
+    f["/psd/mean_again"] = h5py_module().SoftLink("/psd/mean")
+
+
+def _bad_utf8(f):
+    h5py = h5py_module()
+    for obj, name in ((f["/psd/mean"], "units"), (f, "study")):
+        if name in obj.attrs:
+            del obj.attrs[name]
+        obj.attrs.create(name, np.array(b"\xff\xfe", dtype=h5py.string_dtype("utf-8", 2)))
+
+
+def h5py_module():
+    import h5py
+    return h5py
+
+
+@pytest.mark.parametrize("command", ["psd", "report"])
+@pytest.mark.parametrize("variant", ["soft link loop", "non-UTF-8 attributes"])
+def test_damaged_hdf5_content_is_one_line(command, variant, samples, tmp_path):
+    """A soft link that loops and attributes that are not UTF-8 were internal errors (exit 70)."""
+    bad = copy(samples[command], tmp_path / "bad.h5")
+    with h5py_module().File(bad, "a") as f:
+        (_soft_link_loop if variant == "soft link loop" else _bad_utf8)(f)
+    out = tmp_path / ("out.html" if command == "report" else "out.png")
+    r = run_post([command, *command_args(command, bad, samples["measurement"]), "--out", out])
+    record(r, {0, 65}, {}, {}, temporaries(tmp_path))
+    assert os.path.exists(out) == (r.returncode == 0)
+
+
 MEASUREMENT_VARIANTS = ("fifo", "dev_zero", "directory", "empty", "binary", "huge")
 
 

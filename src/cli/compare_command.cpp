@@ -22,6 +22,7 @@
 #include "src/io/input_file.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
+#include "src/io/sweep_point.hpp"
 
 namespace rollspec::cli {
 
@@ -34,7 +35,7 @@ const char* const kCompareUsage =
     "                        [--unit U] [--scale X] [--fs HZ] [--time-column NAME|none] [--skip-rows N]\n"
     "                        [--roll-per-channel] [--measured-averages M] [--noise QUIET] [--noise-margin DB]\n"
     "                        [--keep-floor-bands] [--same-surface] [--fmin HZ] [--fmax HZ] [--test-level A]\n"
-    "                        [--format table|csv|json]\n"
+    "                        [--point K|KEY=VALUE] [--format table|csv|json]\n"
     "\n"
     "MEASUREMENT is either the recordings themselves (CSV/text, WAV/FLAC/..., .mat, read as `rollspec psd` reads\n"
     "them: units from the file, each choice said in one line), one file per roll, or one PSD table\n"
@@ -59,6 +60,7 @@ const char* const kCompareUsage =
     "coarser bins than the model's (with by how many dB that moves its bands) are flagged.\n"
     "--format csv writes the table only (numeric columns; the summary goes to stderr), json everything.\n"
     "--measured-position X (m) compares the sensor nearest X (within half the sensors' smallest spacing).\n"
+    "--point picks one point of a sweep result (its number K in run order, or its swept values).\n"
     "A result whose ball lost contact (more than 5 % of the time, or at all with law = linearised) is flagged.";
 
 // The result's loss of contact (ball-on-beam): its share and the warning `run` wrote.
@@ -67,9 +69,10 @@ struct LossOfContact {
   std::string warning, note;  // a warning where it moved bands (D-35), else a note of its share
 };
 
-LossOfContact loss_of_contact(const io::Hdf5Reader& r) {
+LossOfContact loss_of_contact(const io::Hdf5Reader& r, const io::SweepPoint& at) {
   LossOfContact l;
-  if (r.exists("/contact/loss_of_contact_share")) l.share = r.read("/contact/loss_of_contact_share").at(0);
+  if (r.exists("/contact/loss_of_contact_share"))
+    l.share = io::read_at_point(r, at, "/contact/loss_of_contact_share", 1).at(0);
   if (r.exists("/contact") && r.has_attribute("/contact", "loss_of_contact_warning"))
     l.warning = r.string_attribute("/contact", "loss_of_contact_warning");
   if (r.exists("/contact") && r.has_attribute("/contact", "loss_of_contact_note"))
@@ -78,10 +81,11 @@ LossOfContact loss_of_contact(const io::Hdf5Reader& r) {
 }
 
 // The row's mean PSD and bin width (the resolution check); empty when the result lacks them.
-std::vector<double> mean_psd_row(const io::Hdf5Reader& r, const std::string& sensor, double& df) {
+std::vector<double> mean_psd_row(const io::Hdf5Reader& r, const io::SweepPoint& at, const std::string& sensor,
+                                 double& df) {
   if (!r.exists("/psd/mean") || !r.exists("/psd/sensor") || !r.exists("/psd/frequency")) return {};
   const auto names = r.read_strings("/psd/sensor");
-  const auto f = r.read("/psd/frequency"), mean = r.read("/psd/mean");
+  const auto f = r.read("/psd/frequency"), mean = io::read_at_point(r, at, "/psd/mean", 2);
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == sensor && f.size() >= 2 && mean.size() == names.size() * f.size() && f[0] == 0.0) {
       df = f[1] - f[0];
@@ -207,7 +211,7 @@ std::string offset_line(const compare::Verdict& v, double confidence) {
 int compare_command(const Args& args) {
   const std::string usage = kCompareUsage;
   po::options_description opts("options");
-  std::string result, format = "table", sensor, noise;
+  std::string result, format = "table", sensor, noise, point;
   std::vector<std::string> measurements;
   io::SignalRequest signal;
   double measured_position = NAN, records = 0.0;
@@ -235,6 +239,7 @@ int compare_command(const Args& args) {
       "same-surface", "the measurement was taken on the very surface the model's table was built on (D-31)")(
       "fmin", po::value(&o.fmin)->default_value(0.0, "0"), "lowest band edge (Hz)")(
       "fmax", po::value(&o.fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
+      "point", po::value(&point), "the point of a sweep result: K (in run order) or section.key=value[,...]")(
       "format", po::value(&format)->default_value("table"), "table, csv or json")(
       "test-level", po::value(&o.test_level)->default_value(0.05, "0.05"), "level of the combined test (0 < A < 1)");
   po::positional_options_description pos;
@@ -275,8 +280,9 @@ int compare_command(const Args& args) {
       sensor, vm.count("measured-position") ? std::optional<double>(measured_position) : std::nullopt);
   const io::Hdf5Reader r(result);
   io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
-  const io::BandLevels b = io::read_band_levels(r, choice);
-  o.model_psd = mean_psd_row(r, b.sensor, o.model_df);
+  const io::BandLevels b = io::read_band_levels(r, choice, point);
+  const io::SweepPoint at = io::sweep_point(r, point);
+  o.model_psd = mean_psd_row(r, at, b.sensor, o.model_df);
 
   // The measurement: one PSD table, or recordings through the model's estimator.
   const bool table = measurements.size() == 1 && compare::is_psd_table(measurements[0]);
@@ -318,7 +324,7 @@ int compare_command(const Args& args) {
     o.noise = &quiet;
   }
   const compare::Verdict v = compare::band_verdict(b, m, o);
-  const LossOfContact loss = loss_of_contact(r);
+  const LossOfContact loss = loss_of_contact(r, at);
 
   // Printed only once everything is computed: a refused input leaves no partial output.
   if (!b.pick_note.empty()) std::cerr << "rollspec compare: " << b.pick_note << "\n";

@@ -86,6 +86,10 @@ std::vector<FitPoint> fit_points(const std::vector<std::string>& files, const st
       for (const auto& v : in.vary)
         if (key == v.key)
           throw usage_error("--at " + clip(p.at) + ": " + key + " is varied by --vary; allowed: one of the two");
+      for (const auto& s : in.sets)
+        if (s.substr(0, s.find('=')) == key)
+          throw usage_error("--at " + clip(p.at) + ": " + key + " is also given by --set " + clip(s) +
+                            "; allowed: one of the two");
     }
     for (std::size_t j = 0; j < i; ++j)
       if (points[j].at == p.at && points[j].path == p.path)
@@ -225,6 +229,7 @@ int fit_command(const Args& args) {
   if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
   in.study = study, in.sets = sets, in.fmin = fmin, in.fmax = fmax;
   in.points = fit_points(files, ats, averages, in, column);
+  check_fit_keys(in);
 
   const TempDir temp;
   std::unique_ptr<FitJournal> journal;

@@ -1,7 +1,14 @@
 #include "src/cli/fit_journal.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +17,7 @@
 
 #include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
+#include "src/io/input_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/io/temp_files.hpp"
 
@@ -58,26 +66,76 @@ std::uint64_t fit_journal_key(const FitInputs& in, const std::string& column) {
   return f.h;
 }
 
+namespace {
+
+constexpr std::uintmax_t kLargestJournal = 64u << 20;  // a line is ~80 bytes: far more than any fit evaluates
+
+// The journal's bytes, or nullopt if there is none; refused at once if it is not a regular file.
+std::optional<std::string> read_journal(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return std::nullopt;
+    throw cannot_create("--journal " + path + ": " + std::strerror(errno));
+  }
+  if (!S_ISREG(st.st_mode))
+    throw cannot_create("--journal " + path + " is " + io::file_kind(st.st_mode) +
+                        "; allowed: a new file or the journal of this fit (a regular file)");
+  if (static_cast<std::uintmax_t>(st.st_size) > kLargestJournal)
+    throw cannot_create("--journal " + path + ": " + std::to_string(st.st_size >> 20) +
+                        " MiB, larger than any fit journal; allowed: a new file or the journal of this fit");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw cannot_create("--journal " + path + ": " + std::strerror(errno));
+  std::string text;
+  char buf[65536];
+  for (ssize_t n; (n = ::read(fd, buf, sizeof buf)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 || text.size() + static_cast<std::size_t>(n) > kLargestJournal) {
+      ::close(fd);
+      throw cannot_create("--journal " + path + ": cannot read it whole");
+    }
+    text.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return text;
+}
+
+}  // namespace
+
 FitJournal::FitJournal(std::string path, std::uint64_t key) : path_(std::move(path)), key_(key) {
-  std::ifstream f(path_);
-  if (!f) return;
-  std::string line;
+  const auto text = read_journal(path_);
+  if (!text) {  // a new journal: its folder must take it, before the first evaluation runs
+    const std::filesystem::path dir = std::filesystem::absolute(path_).parent_path();
+    if (!std::filesystem::is_directory(dir) || ::access(dir.c_str(), W_OK | X_OK) != 0)
+      throw cannot_create("--journal " + path_ + ": cannot create it in " + dir.string() +
+                          " (no such folder, or not writable)");
+    return;
+  }
   const std::string expected = kHeader + hex(key_);
-  if (!std::getline(f, line) || line.rfind(kHeader, 0) != 0)
+  const std::size_t end = text->find('\n');
+  const std::string first = text->substr(0, end);
+  if (end == std::string::npos || first.rfind(kHeader, 0) != 0)
     throw cannot_create("--journal " + path_ +
                         ": not a rollspec fit journal; allowed: a new file or the journal of "
                         "this fit (remove it or choose another path)");
-  if (line != expected)
+  if (first != expected)
     throw cannot_create("--journal " + path_ +
                         ": the journal of another fit (its study, measurements, options or build differ); allowed: "
                         "the journal of this fit, or a new file (remove it or choose another path)");
-  for (int number = 2; std::getline(f, line); ++number) {
-    std::istringstream s(line);
+  whole_ = true;
+  std::size_t at = end + 1;
+  for (int number = 2; at < text->size(); ++number) {
+    const std::size_t eol = text->find('\n', at);
+    if (eol == std::string::npos) {  // torn: its write did not finish (a crash, a full disk)
+      whole_ = false;
+      break;
+    }
+    std::istringstream s(text->substr(at, eol - at));
+    at = eol + 1;
     std::vector<double> row;
     for (std::string word; s >> word;) {
-      char* end = nullptr;
-      row.push_back(std::strtod(word.c_str(), &end));
-      if (*end != '\0') row.clear(), s.setstate(std::ios::failbit);
+      char* stop = nullptr;
+      row.push_back(std::strtod(word.c_str(), &stop));
+      if (*stop != '\0' || !std::isfinite(row.back())) row.clear(), s.setstate(std::ios::failbit);
     }
     if (row.size() < 2)
       throw data_error(path_ + ":" + std::to_string(number) + ": not a line of parameter values and -ln L");
@@ -95,27 +153,82 @@ bool FitJournal::find(const std::vector<double>& u, double& value) const {
   return true;
 }
 
-void FitJournal::record(const std::vector<double>& u, double value) {
-  order_.emplace_back(u, value);
-  entries_.emplace(u, value);
+namespace {
+std::string journal_line(const std::vector<double>& x, double v) {
+  std::string line;
+  char buf[32];
+  for (const double c : x) std::snprintf(buf, sizeof buf, "%.17g ", c), line += buf;
+  std::snprintf(buf, sizeof buf, "%.17g\n", v);
+  return line + buf;
+}
+
+void write_all(int fd, const std::string& bytes, const std::string& what) {
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw cannot_create("--journal " + what + ": " + std::strerror(n < 0 ? errno : EIO));
+    done += static_cast<std::size_t>(n);
+  }
+}
+}  // namespace
+
+// The whole journal through a temporary renamed onto it: the old file stays whole if this fails.
+void FitJournal::rewrite() {
+  std::string bytes = kHeader + hex(key_) + "\n";
+  for (const auto& [x, v] : order_) bytes += journal_line(x, v);
   const std::string temp = io::temp_name(path_);
   io::register_temp(temp);
-  {
-    std::ofstream out(temp);
-    out << kHeader << hex(key_) << "\n";
-    char buf[32];
-    for (const auto& [x, v] : order_) {
-      for (const double c : x) std::snprintf(buf, sizeof buf, "%.17g ", c), out << buf;
-      std::snprintf(buf, sizeof buf, "%.17g\n", v);
-      out << buf;
-    }
-    if (!out.flush()) throw cannot_create("--journal " + path_ + ": cannot write " + temp);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    io::unregister_temp(temp);
+    throw cannot_create("--journal " + path_ + ": cannot write " + temp + ": " + std::strerror(errno));
   }
+  try {
+    write_all(fd, bytes, path_);
+    if (::fsync(fd) != 0) throw cannot_create("--journal " + path_ + ": " + std::strerror(errno));
+  } catch (...) {
+    ::close(fd);
+    std::remove(temp.c_str());
+    io::unregister_temp(temp);
+    throw;
+  }
+  ::close(fd);
   const ensemble::CriticalSection keep;  // an interrupt waits for the rename
   std::error_code ec;
   std::filesystem::rename(temp, path_, ec);
+  if (ec) std::remove(temp.c_str());
   io::unregister_temp(temp);
   if (ec) throw cannot_create("--journal " + path_ + ": cannot rename " + temp + " onto it: " + ec.message());
+  whole_ = true;
+}
+
+// One evaluation, one write: a crash leaves at most this line torn, which the next reader discards.
+void FitJournal::append(const std::string& line) {
+  const int fd = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_NONBLOCK | O_CLOEXEC);
+  struct stat st {};
+  if (fd < 0 || ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    if (fd >= 0) ::close(fd);
+    throw cannot_create("--journal " + path_ + ": no longer the journal this fit wrote (moved or replaced)");
+  }
+  const ensemble::CriticalSection keep;  // an interrupt waits for the line
+  try {
+    write_all(fd, line, path_);
+    if (::fsync(fd) != 0) throw cannot_create("--journal " + path_ + ": " + std::strerror(errno));
+  } catch (...) {
+    ::close(fd);
+    whole_ = false;  // the line may be torn: the next record rewrites the file
+    throw;
+  }
+  ::close(fd);
+}
+
+void FitJournal::record(const std::vector<double>& u, double value) {
+  order_.emplace_back(u, value);
+  entries_.emplace(u, value);
+  if (whole_)
+    append(journal_line(u, value));
+  else
+    rewrite();
 }
 
 }  // namespace rollspec::cli

@@ -2,8 +2,10 @@
 // rollspec fit --journal FILE: every evaluated parameter vector and its -ln L, so a fit interrupted
 // (SIGINT) and run again with the same --journal reruns no finished evaluation. The search is
 // deterministic, so the rerun asks for the same points in the same order and finds them here. The file
-// is rewritten whole (temporary file renamed onto it) after every evaluation, and starts with a key of
-// everything the values depend on, so the journal of another fit is refused, never reused.
+// starts with a key of everything the values depend on, so the journal of another fit is refused, never
+// reused. It is made whole (a temporary renamed onto it), then each evaluation is appended as one line
+// by one write and synced; a last line without its newline (a crash or a full disk mid-write) is torn
+// and discarded, and the file is rewritten without it before anything is appended.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -19,7 +21,8 @@ std::uint64_t fit_journal_key(const FitInputs& in, const std::string& column);
 
 class FitJournal {
  public:
-  // Reads `path` if it exists: refused (exit 73) if it is not a fit journal or has another key.
+  // Reads `path` if it exists: refused (exit 73) at once if it is not a regular file (a FIFO would
+  // block, a device never end) or is not a fit journal or has another key.
   FitJournal(std::string path, std::uint64_t key);
   bool find(const std::vector<double>& u, double& value) const;
   void record(const std::vector<double>& u, double value);
@@ -30,6 +33,10 @@ class FitJournal {
   std::uint64_t key_;
   std::vector<std::pair<std::vector<double>, double>> order_;  // as evaluated
   std::map<std::vector<double>, double> entries_;
+  bool whole_ = false;  // the file holds exactly the header and order_ (else it is rewritten first)
+
+  void rewrite();
+  void append(const std::string& line);
 };
 
 }  // namespace rollspec::cli

@@ -91,6 +91,10 @@ std::vector<std::string> parse_at(const std::string& at) {
       throw usage_error("--at " + clip(at) + ": '" + clip(kv) +
                         "' is not section.key=value; allowed: section.key=value[,section.key=value ...], e.g. "
                         "ball.speed=3");
+    for (const auto& earlier : sets)
+      if (earlier.substr(0, earlier.find('=')) == kv.substr(0, eq))
+        throw usage_error("--at " + clip(at) + ": " + clip(kv.substr(0, eq)) +
+                          " given twice; allowed: each key once per --at");
     sets.push_back(kv);
     if (comma == std::string::npos) break;
     start = comma + 1;

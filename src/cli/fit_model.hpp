@@ -40,7 +40,7 @@ struct FitPoint {
   double records = 1.0;  // M
 };
 
-// Refuses (exit 64) an --at that is not section.key=value[,section.key=value ...].
+// Refuses (exit 64) an --at that is not section.key=value[,section.key=value ...], or names a key twice.
 std::vector<std::string> parse_at(const std::string& at);
 
 struct FitInputs {
@@ -51,6 +51,10 @@ struct FitInputs {
   std::vector<FitPoint> points;
   double fmin = 0.0, fmax = 0.0;
 };
+
+// Refuses, before the first run, a study or --at point that does not load, and a --vary range outside
+// its key's type or range or whose ends the study refuses (fit_keys.cpp).
+void check_fit_keys(const FitInputs& in);
 
 // Lookup of -ln L at parameter values already evaluated (a resumed fit's journal); null: none.
 class FitJournal;

@@ -68,6 +68,8 @@ int init_command(const Args& args) {
   for (const auto& s : scenes::scene_registry()) known = known || s.name == scene;
   if (!known) throw usage_error("unknown scene '" + clip(scene) + "'; allowed: one of " + scene_names());
   const std::string text = study_template(scene);
+  if (out.empty() && vm.count("out"))
+    throw usage_error("--out is empty; allowed: the path of the study file to write (or no --out: standard output)");
   if (out.empty()) {
     std::cout << text;
     return 0;

@@ -42,10 +42,12 @@ int plan_command(const Args& args) {
   po::positional_options_description pos;
   add_study_options(opts, pos, study);
   std::vector<std::string> sweeps;
-  add_sweep_option(opts, sweeps);
+  std::size_t max_points = kDefaultMaxSweepPoints;
+  add_sweep_option(opts, sweeps, max_points);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (const auto sweep = load_sweep(study, sweeps)) return plan_sweep(*sweep, vm.count("probe") > 0);
+  if (const auto sweep = load_sweep(study, sweeps, {max_points, false, false}))
+    return plan_sweep(*sweep, vm.count("probe") > 0);
 
   const study::Study s = resolve_study(study);
   const study::StudySection study_keys = study::StudySection::parse(s);

@@ -1,9 +1,13 @@
 // rollspec run: validate the study, plan, run the ensemble, write the result file atomically.
 
+#include <filesystem>
+#include <iostream>
+
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/cli/run_phases.hpp"
 #include "src/cli/sweep_run.hpp"
+#include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
 
 namespace rollspec::cli {
@@ -41,7 +45,8 @@ int run_command(const Args& args) {
   po::positional_options_description pos;
   add_study_options(opts, pos, study, /*required=*/false);
   std::vector<std::string> sweeps;
-  add_sweep_option(opts, sweeps);
+  std::size_t max_points = kDefaultMaxSweepPoints;
+  add_sweep_option(opts, sweeps, max_points);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   const bool resume = vm.count("resume") > 0, restart = vm.count("restart") > 0;
@@ -55,13 +60,38 @@ int run_command(const Args& args) {
       throw usage_error("--only runs one realisation without checkpoints; it takes no --resume or --restart");
   }
 
+  if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the result file");
   RunRequest request{study, out, resume, restart, vm.count("force") > 0, vm.count("rebuild") > 0, vm.count("quiet") > 0,
                      only};
+  request.max_sweep_points = max_points;
   return run_request(request, sweeps);
 }
 
-int run_request(const RunRequest& request, const std::vector<std::string>& sweeps) {
-  if (const auto sweep = load_sweep(request.study, sweeps)) return run_sweep(*sweep, request);
+namespace {
+// `run --resume --out X.h5` names a study only through X.h5's checkpoint or sweep; a study file
+// named but gone since the interrupted run is the same case, said in one line.
+bool resume_without_study(RunRequest& q) {
+  if (!q.resume || q.out.empty()) return false;
+  if (q.study.file.empty()) return true;
+  std::error_code ec;
+  if (std::filesystem::exists(std::filesystem::symlink_status(q.study.file, ec))) return false;
+  const bool checkpoint = std::filesystem::exists(q.out + ".checkpoint", ec),
+             sweep = std::filesystem::exists(q.out + ".sweep", ec);
+  if (!checkpoint && !sweep) return false;
+  if (!q.quiet && ensemble::mpi_rank() == 0)
+    std::cerr << "rollspec run: " << q.study.file << " no longer exists; resuming the study "
+              << (sweep ? q.out + ".sweep" : q.out + ".checkpoint") << " keeps\n";
+  q.study.file.clear();
+  return true;
+}
+}  // namespace
+
+int run_request(const RunRequest& given, const std::vector<std::string>& sweeps) {
+  RunRequest request = given;
+  SweepLimits limits{request.max_sweep_points, request.force, !request.quiet};
+  if (sweeps.empty() && resume_without_study(request))
+    if (const auto sweep = load_sweep_manifest(request.out, limits)) return run_sweep(*sweep, request);
+  if (const auto sweep = load_sweep(request.study, sweeps, limits)) return run_sweep(*sweep, request);
   ResolvedRun run = resolve_run(request);
   check_resources(run.study, request.force);
   return run.scene->kind == scenes::SceneKind::single_run ? run_single_phase(run, request)

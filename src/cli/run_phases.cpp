@@ -16,6 +16,7 @@
 #include "src/io/number_text.hpp"
 #include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
+#include "src/scenes/dimension_plausibility.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/study/sections/ensemble_section.hpp"
 #include "src/study/sections/study_section.hpp"
@@ -63,7 +64,9 @@ study::Study load_study(const RunRequest& q) {
     throw usage_error(
         "the study file is missing; allowed: rollspec run STUDY.ini [--out FILE.h5] ..., or rollspec run "
         "--resume --out FILE.h5 to finish that file's checkpoint without its study file");
-  return checkpoint_study(resolved_checkpoint(q.out), q.study.sets);
+  study::Study s = checkpoint_study(resolved_checkpoint(q.out), q.study.sets);
+  scenes::check_dimensions(s);
+  return s;
 }
 
 // The checkpoint (and its lock) belongs to the file written, not to the name given: two runs on
@@ -86,8 +89,10 @@ void write_run_attributes(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums,
 }  // namespace
 
 study::Study resolve_study(const StudyArgs& args) {
-  if (!args.text.empty()) return study::Study::parse(args.file, args.text, args.sets, scenes::schema_for);
-  return study::Study::load(args.file, args.sets, scenes::schema_for);
+  study::Study s = !args.text.empty() ? study::Study::parse(args.file, args.text, args.sets, scenes::schema_for)
+                                      : study::Study::load(args.file, args.sets, scenes::schema_for);
+  scenes::check_dimensions(s);  // every length and speed against the others, before anything is made
+  return s;
 }
 
 ResolvedRun resolve_run(const RunRequest& q) {

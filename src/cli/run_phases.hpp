@@ -19,12 +19,17 @@
 
 namespace rollspec::cli {
 
+// A sweep of more points than this is refused unless --max-points allows it: each point is one run
+// of the study and one file, and each is checked before the first runs.
+constexpr std::size_t kDefaultMaxSweepPoints = 1000;
+
 struct RunRequest {
   StudyArgs study;
   std::string out;  // empty: from the study file's name
   bool resume = false, restart = false, force = false, rebuild = false, quiet = false;
-  long long only = -1;  // >= 0: just this realisation
+  long long only = -1;        // >= 0: just this realisation
   bool spectra_only = false;  // a fit's evaluation: the result needs only /psd and /bands (write_spectra_only)
+  std::size_t max_sweep_points = kDefaultMaxSweepPoints;  // --max-points
 };
 
 struct ResolvedRun {

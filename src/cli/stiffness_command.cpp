@@ -39,6 +39,7 @@ int stiffness_command(const Args& args) {
   add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
   if (!out.empty()) study.sets.push_back("stiffness.table=" + std::filesystem::absolute(out).string());
   const study::Study s = resolve_study(study);
   if (s.scene() != "stiffness" && s.scene() != "ball-on-beam")

@@ -1,6 +1,7 @@
 #include "src/cli/sweep_run.hpp"
 
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +15,10 @@
 #include "src/io/hdf5_stack.hpp"
 #include "src/io/input_file.hpp"
 #include "src/io/output_target.hpp"
+#include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
+#include "src/io/temp_files.hpp"
+#include "src/text_trim.hpp"
 
 namespace rollspec::cli {
 
@@ -41,18 +45,52 @@ std::optional<std::string> read_text(const std::string& path) {
 
 study::Study point_study(const StudyArgs& a) { return study::Study::parse(a.file, a.text, a.sets, scenes::schema_for); }
 
-// Every value of every swept key, loaded alone into the study: a bad value is refused before any work.
+// Every value of every swept key, loaded alone into the study: a bad value is refused before any work,
+// and so is a value given twice (compared as the loader canonicalises it: 2, 2.0 and 2e0 are one value).
 void check_values(const SweepStudy& s) {
-  for (const auto& k : s.sweep.keys)
+  for (const auto& k : s.sweep.keys) {
+    std::vector<std::pair<std::string, std::string>> seen;  // canonical, as written
     for (const auto& v : k.values) {
       StudyArgs a = s.args;
       a.sets.push_back(k.key + "=" + v);
+      std::string canonical;
       try {
-        point_study(a);
+        canonical = study::SweepSection::value_at(point_study(a), k.key);
       } catch (const UserError& e) {
         throw UserError(e.exit_code(), k.origin.where + ": the value " + clip(v) + " is refused: " + e.what());
       }
+      for (const auto& [c, written] : seen)
+        if (c == canonical)
+          throw config_error(k.origin.where + ": the value " + clip(v) + " is given twice (first as " + clip(written) +
+                             "); allowed: each value once (a point would run twice)");
+      seen.emplace_back(canonical, v);
     }
+  }
+}
+
+// A key both swept and set (--set) would run with the swept values only, the --set silently lost.
+void check_swept_against_sets(const SweepStudy& s) {
+  for (const auto& k : s.sweep.keys)
+    for (const auto& set : s.args.sets)
+      if (trim(set.substr(0, set.find('='))) == k.key)
+        throw usage_error(k.origin.where + ": " + k.key + " is also given by --set " + clip(set) +
+                          "; allowed: one of the two (a swept key takes its value from the sweep)");
+}
+
+// The point count, refused above the limit before anything else is done (counted in double: a
+// crossed sweep's product may exceed any integer type).
+void check_point_count(const SweepStudy& s, std::size_t limit) {
+  double n = s.sweep.zipped ? static_cast<double>(s.sweep.keys.front().values.size()) : 1.0;
+  std::string shape;
+  for (const auto& k : s.sweep.keys) {
+    shape += (shape.empty() ? "" : s.sweep.zipped ? ", " : " x ") + std::to_string(k.values.size()) + " " + k.key;
+    if (!s.sweep.zipped) n *= static_cast<double>(k.values.size());
+  }
+  if (n > static_cast<double>(limit))
+    throw config_error("the sweep of " + s.args.file + " has " + io::number_text(n) + " points (" +
+                       (s.sweep.zipped ? "zipped: " : "crossed: ") + shape + "), more than " + std::to_string(limit) +
+                       "; each point is one run of the study and one file in OUT.sweep; allowed: fewer values, or "
+                       "--max-points N to run them all");
 }
 
 std::string point_path(const std::string& dir, std::size_t i) {
@@ -62,8 +100,12 @@ std::string point_path(const std::string& dir, std::size_t i) {
 }
 
 // The sweep's work directory is a directory of rollspec's own that holds only point files and their
-// checkpoints: a link, a file, a pipe or a user's file in it is not ours to write into or remove.
-// Returns whether it exists.
+// checkpoints, and its manifest: a link, a file, a pipe or a user's file in it is not ours to write
+// into or remove. Returns whether it exists.
+constexpr const char* kManifest = "sweep.ini";  // the sweep's own study, for `run --resume --out` alone
+
+bool ours(const std::string& name) { return name.rfind("point_", 0) == 0 || name.rfind(kManifest, 0) == 0; }
+
 bool check_work_directory(const std::string& dir) {
   std::error_code ec;
   const fs::file_status st = fs::symlink_status(dir, ec);
@@ -75,11 +117,20 @@ bool check_work_directory(const std::string& dir) {
   if (ec || !fs::is_directory(st))
     throw cannot_create("sweep work directory " + dir + " is not a directory (a file rollspec did not write)" + advice);
   for (fs::directory_iterator e(dir, ec), end; !ec && e != end; e.increment(ec))
-    if (e->path().filename().string().rfind("point_", 0) != 0)
+    if (!ours(e->path().filename().string()))
       throw cannot_create("sweep work directory " + dir + " holds " + e->path().filename().string() +
                           ", which rollspec did not write" + advice);
   if (ec) throw cannot_create("cannot read sweep work directory " + dir + ": " + ec.message() + advice);
   return true;
+}
+
+// Whether the work directory holds no point yet (its manifest aside): nothing of the user's work.
+bool no_points(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(dir, ec)) || ec) return false;
+  for (fs::directory_iterator e(dir, ec), end; !ec && e != end; e.increment(ec))
+    if (e->path().filename().string().rfind("point_", 0) == 0) return false;
+  return !ec;
 }
 
 void remove_work_directory(const std::string& dir) {
@@ -91,7 +142,29 @@ void remove_work_directory(const std::string& dir) {
 
 // Every rank reads the work directory before rank 0 changes it, so that all decide alike; rank 0
 // alone removes it (--restart) and creates it, and every rank learns whether that failed.
-void prepare_work_directory(const std::string& dir, const std::string& out, const RunRequest& q) {
+// OUT.sweep/sweep.ini: the study file's path, then the resolved study with its [sweep]; written whole
+// (a temporary renamed onto it), so that an interrupted sweep resumes from it without its study file.
+void write_manifest(const std::string& dir, const SweepStudy& s) {
+  const std::string path = (fs::path(dir) / kManifest).string(), temp = io::temp_name(path);
+  io::register_temp(temp);
+  {
+    std::ofstream f(temp, std::ios::binary);
+    f << "# rollspec sweep of " << fs::absolute(s.args.file).string() << "\n" << s.study_text;
+    if (!f.flush()) {
+      f.close();
+      std::remove(temp.c_str());
+      io::unregister_temp(temp);
+      throw cannot_create("cannot write " + path + " (no space left on device?)");
+    }
+  }
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) std::remove(temp.c_str());
+  io::unregister_temp(temp);
+  if (ec) throw cannot_create("cannot write " + path + ": " + ec.message());
+}
+
+void prepare_work_directory(const std::string& dir, const std::string& out, const RunRequest& q, const SweepStudy& s) {
   const bool unfinished = check_work_directory(dir);
   if (unfinished && !q.resume && !q.restart)
     throw cannot_create("an unfinished sweep of " + out + " is in " + dir +
@@ -104,8 +177,15 @@ void prepare_work_directory(const std::string& dir, const std::string& out, cons
       std::error_code ec;
       fs::create_directory(dir, ec);  // not its parents: a missing directory of OUT is refused as run refuses it
       if (ec) throw cannot_create("cannot create sweep work directory " + dir + ": " + ec.message());
+      if (!s.from_manifest) write_manifest(dir, s);
     } catch (const UserError& e) {
       failure = e.what();
+      // A directory made here whose manifest could not be written (a full disk) holds no point: gone
+      // again, so that the next run is not asked for --resume.
+      if (no_points(dir)) {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+      }
     }
   }
   if (ensemble::any_rank(!failure.empty()))
@@ -152,6 +232,7 @@ void run_point(const SweepStudy& s, const RunRequest& q, std::size_t i, const st
   pq.out = path;
   pq.resume = q.resume && fs::exists(path + ".checkpoint");
   pq.restart = false;
+  if (s.from_manifest && pq.resume) pq.study.file.clear();  // the point's checkpoint holds its own study
   ResolvedRun run = resolve_run(pq);
   check_resources(run.study, q.force);
   if (run.scene->kind == scenes::SceneKind::single_run)
@@ -181,20 +262,25 @@ study::Study load_study_without_sweep(const std::string& file, const std::vector
   return point_study(a);
 }
 
-void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps) {
+void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps, std::size_t& max_points) {
   options.add_options()("sweep", po::value(&sweeps)->composing(),
-                        "sweep a study key: --sweep section.key=v1,v2,... (repeatable; added to the study's [sweep])");
+                        "sweep a study key: --sweep section.key=v1,v2,... (repeatable; added to the study's [sweep])")(
+      "max-points", po::value(&max_points)->default_value(kDefaultMaxSweepPoints),
+      "the most points a sweep may have (each is one run and one file)");
 }
 
-std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps) {
+std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps,
+                                     const SweepLimits& limits) {
   if (args.file.empty()) {
     if (!sweeps.empty()) throw usage_error("--sweep needs the study file");
     return std::nullopt;
   }
   SweepStudy s{args, {}, {}};
-  const auto text = read_text(args.file);
-  if (!text) return std::nullopt;  // too large for a study: the ordinary loader refuses it
-  s.args.text = *text;
+  if (s.args.text.empty()) {
+    const auto text = read_text(args.file);
+    if (!text) return std::nullopt;  // too large for a study: the ordinary loader refuses it
+    s.args.text = *text;
+  }
   const std::vector<study::SweepLine> lines = study::split_sweep(args.file, s.args.text);
   if (lines.empty() && sweeps.empty()) {
     if (s.args.text.find("[sweep]") == std::string::npos) return std::nullopt;
@@ -203,14 +289,47 @@ std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<st
   s.sweep = study::SweepSection::parse(args.file, lines, sweeps, base);
   if (s.sweep.empty())
     throw config_error(args.file + ": [sweep] names no keys; allowed: section.key = v1, v2, ... (or remove [sweep])");
+  check_swept_against_sets(s);
+  check_point_count(s, limits.max_points);
+  if (limits.announce && ensemble::mpi_rank() == 0)
+    std::cout << "sweep of " << args.file << ": " << s.points() << " point" << (s.points() == 1 ? "" : "s") << " ("
+              << (s.sweep.zipped ? "zipped" : "crossed") << "), each one run of the study; checking every value, "
+              << "result shape and memory estimate before the first point runs\n"
+              << std::flush;
   check_values(s);
-  check_sweep_shapes(s);
+  check_sweep_points(s, limits.force);
   s.study_text = base.canonical_text() + "\n[sweep]\nmode = " + (s.sweep.zipped ? "zipped" : "crossed") + "\n";
   for (const auto& k : s.sweep.keys) {
     std::string v;
     for (const auto& x : k.values) v += (v.empty() ? "" : ", ") + x;
     s.study_text += k.key + " = " + v + "\n";
   }
+  return s;
+}
+
+std::optional<SweepStudy> load_sweep_manifest(const std::string& out, const SweepLimits& limits) {
+  std::error_code ec;
+  const fs::path target = fs::is_symlink(out, ec) ? fs::canonical(out, ec) : fs::path(out);
+  const std::string dir = (ec ? fs::path(out) : target).string() + ".sweep";
+  if (!check_work_directory(dir)) return std::nullopt;
+  const std::string path = (fs::path(dir) / kManifest).string();
+  if (!fs::is_regular_file(fs::symlink_status(path, ec)))
+    throw missing_input("no study file given, and " + dir +
+                        " holds no sweep manifest (written by an older rollspec); resume with the study file: "
+                        "rollspec run STUDY.ini --out " +
+                        out + " --resume");
+  const auto text = read_text(path);
+  if (!text || text->rfind("# rollspec sweep of ", 0) != 0)
+    throw data_error(path + ": not a sweep manifest rollspec wrote; resume with the study file");
+  const std::size_t eol = text->find('\n');
+  StudyArgs args{text->substr(20, eol == std::string::npos ? std::string::npos : eol - 20),
+                 {},
+                 eol == std::string::npos ? std::string() : "\n" + text->substr(eol + 1)};
+  SweepLimits l = limits;
+  l.max_points = SIZE_MAX;  // accepted when it started
+  auto s = load_sweep(args, {}, l);
+  if (!s) throw data_error(path + ": holds no [sweep]; resume with the study file");
+  s->from_manifest = true;
   return s;
 }
 
@@ -223,7 +342,7 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
   target.inputs = point_study(s.args).input_files();
   const std::string write_path = io::check_output_target(target);
   const std::string dir = write_path + ".sweep";
-  prepare_work_directory(dir, out, q);
+  prepare_work_directory(dir, out, q, s);
   const std::size_t n = s.points();
   std::vector<std::string> inputs;
   try {
@@ -252,7 +371,7 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
     // A sweep that failed before any of its work reached the disk (a full disk) leaves no empty work
     // directory that would make the next run ask for --resume.
     std::error_code empty_ec;
-    if (ensemble::mpi_rank() == 0 && fs::is_empty(dir, empty_ec) && !empty_ec) fs::remove(dir, empty_ec);
+    if (ensemble::mpi_rank() == 0 && no_points(dir)) fs::remove_all(dir, empty_ec);
     throw;
   }
   if (ensemble::mpi_rank() != 0) return 0;

@@ -15,30 +15,46 @@
 
 namespace rollspec::cli {
 
+// What a sweep is checked against before any work.
+struct SweepLimits {
+  std::size_t max_points = kDefaultMaxSweepPoints;  // --max-points
+  bool force = false;     // run --force: a point's memory estimate may exceed the available memory
+  bool announce = false;  // print the line that says what the sweep will do, before the checks
+};
+
 struct SweepStudy {
   StudyArgs args;  // the study file, its text without [sweep], and the --set overrides
   study::SweepSection sweep;
-  std::string study_text;  // the resolved base study with its [sweep], for the result file
+  std::string study_text;      // the resolved base study with its [sweep], for the result file
+  bool from_manifest = false;  // `run --resume --out X.h5`: read from X.h5.sweep/sweep.ini
 
   std::size_t points() const { return sweep.points(); }
   StudyArgs point(std::size_t i) const;    // the study of point i (args with the point's --set)
   std::string label(std::size_t i) const;  // "ball.speed=1, ball.radius=0.01"
 };
 
-// The repeatable --sweep section.key=v1,v2,... option of run and plan.
-void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps);
+// The repeatable --sweep section.key=v1,v2,... option of run and plan, and --max-points N.
+void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps, std::size_t& max_points);
 
-// nullopt: the study has no [sweep] and no --sweep was given (an ordinary run). Every swept value
-// is checked now, before any work.
-std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps);
+// nullopt: the study has no [sweep] and no --sweep was given (an ordinary run). The sweep is checked
+// as a whole now, before any work: its point count against `limits.max_points` first, then every
+// swept value (strictly: no empty item, no value twice, no key also given by --set), every point's
+// result shape and memory estimate.
+std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps,
+                                     const SweepLimits& limits = {});
+
+// `run --resume --out OUT` without a study file: the sweep whose work directory OUT.sweep holds its
+// manifest (sweep.ini: the resolved study with its [sweep]); nullopt if there is no such directory.
+std::optional<SweepStudy> load_sweep_manifest(const std::string& out, const SweepLimits& limits);
 
 // The study file with `sets`, its [sweep] (if any) left out: a sweep point's checkpoint compares
 // the study on disk with its own on --resume.
 study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets);
 
 // Refuses a sweep whose points give /psd or /bands different shapes or coordinates (from each
-// point's settings, before any point runs), naming the swept keys, their values and the shapes.
-void check_sweep_shapes(const SweepStudy& sweep);
+// point's settings, before any point runs), naming the swept keys, their values and the shapes, and
+// a point whose memory estimate exceeds the available memory (unless forced).
+void check_sweep_points(const SweepStudy& sweep, bool force);
 
 int run_sweep(const SweepStudy& sweep, const RunRequest& request);
 int plan_sweep(const SweepStudy& sweep, bool probe);

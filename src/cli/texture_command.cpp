@@ -87,6 +87,7 @@ int texture_command(const Args& args) {
   add_study_options(opts, pos, study);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
+  if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
   const bool quiet = vm.count("quiet") > 0, list = vm.count("list") > 0;
   if (quiet && list) throw usage_error("--list and --quiet: allowed: one of them");
   if (vm.count("count") && (count < 0 || count > 1000000))

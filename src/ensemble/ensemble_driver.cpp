@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -124,8 +125,13 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
     for (std::uint64_t i = first; i < last; ++i) {
       const std::uint64_t lo = i * C, hi = chunk_hi(lo);
       if (cfg.resume && !cfg.checkpoint_dir.empty() && store.has(lo, hi)) {
-        acc.push(lo, hi, store.read(lo, hi, 2 * n_values).values);
-        continue;
+        try {
+          acc.push(lo, hi, store.read(lo, hi, 2 * n_values).values);
+          continue;
+        } catch (const DamagedChunk& e) {  // computed again (the same bits) and written over
+          std::cerr << cfg.log_prefix << "rollspec: warning: " << e.what() << "; computing it again\n";
+          reused -= hi - lo;
+        }
       }
       ChunkSums c = run_chunk(lo, hi, n_values, realisation, cfg.seed, progress);
       if (c.values.empty()) break;  // stopped

@@ -7,6 +7,7 @@
 
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/sweep_point.hpp"
 
 namespace rollspec::io {
 
@@ -105,7 +106,8 @@ constexpr double kLargestLevelDb = 3100.0;
 // The table term of the row (D-31): the sub-table runs' levels, their dof and variance factor, checked
 // against the result's shape; or, for a result whose intervals are conditional on a random table, the
 // flag that says its verdict cannot carry the table's error.
-void read_table_term(const Hdf5Reader& r, std::size_t row, std::size_t ns, std::size_t nb, BandLevels& b) {
+void read_table_term(const Hdf5Reader& r, const SweepPoint& at, std::size_t row, std::size_t ns, std::size_t nb,
+                     BandLevels& b) {
   const std::string& file = r.path();
   const std::string includes =
       r.has_attribute("/bands", "interval_includes") ? r.string_attribute("/bands", "interval_includes") : "";
@@ -116,7 +118,7 @@ void read_table_term(const Hdf5Reader& r, std::size_t row, std::size_t ns, std::
     return;
   }
   std::vector<std::size_t> d;
-  const auto v = r.read("/bands/table_leave_out_level_db", &d);
+  const auto v = read_at_point(r, at, "/bands/table_leave_out_level_db", 3, &d);
   if (d.size() != 3 || d[1] != ns || d[2] != nb || d[0] < 2)
     throw data_error(file + ": /bands/table_leave_out_level_db is not (sub-tables >= 2) x sensor x band (" +
                      std::to_string(ns) + " x " + std::to_string(nb) + ")");
@@ -156,10 +158,11 @@ SensorChoice sensor_choice(const std::string& name, std::optional<double> positi
   return {name, position};
 }
 
-BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice) {
+BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice, const std::string& point) {
   const std::string& file = r.path();
+  const SweepPoint at = sweep_point(r, point);
   std::vector<std::size_t> dims;
-  const auto level = r.read("/bands/level_db", &dims);
+  const auto level = read_at_point(r, at, "/bands/level_db", 2, &dims);
   if (dims.size() != 2) throw data_error(file + ": /bands/level_db is not sensor x band");
   const std::size_t ns = dims[0], nb = dims[1];
   if (ns == 0 || nb == 0)
@@ -182,6 +185,7 @@ BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice) {
                        " values; expected " + std::to_string(ns) + " (one per row of /bands/level_db)");
   }
   BandLevels b;
+  b.point = at.label;
   const std::size_t row = pick_row(r, names, positions, choice, b.pick_note);
   b.sensor = names[row];
   if (!positions.empty()) b.position = positions[row];
@@ -199,7 +203,7 @@ BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice) {
   const std::string shape = std::to_string(ns) + " x " + std::to_string(nb);
   auto row_of = [&](const char* name, std::vector<double>& out) {
     std::vector<std::size_t> d;
-    const auto v = r.read(name, &d);
+    const auto v = read_at_point(r, at, name, 2, &d);
     if (d != dims) throw data_error(file + ": " + name + " does not have the shape of /bands/level_db (" + shape + ")");
     out.assign(v.begin() + static_cast<std::ptrdiff_t>(row * nb),
                v.begin() + static_cast<std::ptrdiff_t>((row + 1) * nb));
@@ -253,14 +257,14 @@ BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice) {
           " Hz; allowed: finite, 0 < lower < upper (/bands/lower_frequency, upper_frequency, nominal_frequency)");
   if (r.exists("/bands/log_level_covariance")) {  // D-26; results written before it lack it
     std::vector<std::size_t> d;
-    const auto v = r.read("/bands/log_level_covariance", &d);
+    const auto v = read_at_point(r, at, "/bands/log_level_covariance", 3, &d);
     if (d != std::vector<std::size_t>{ns, nb, nb})
       throw data_error(file + ": /bands/log_level_covariance is not sensor x band x band (" + shape + " x " +
                        std::to_string(nb) + ")");
     b.log_covariance.assign(v.begin() + static_cast<std::ptrdiff_t>(row * nb * nb),
                             v.begin() + static_cast<std::ptrdiff_t>((row + 1) * nb * nb));
   }
-  read_table_term(r, row, ns, nb, b);
+  read_table_term(r, at, row, ns, nb, b);
   return b;
 }
 

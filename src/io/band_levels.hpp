@@ -35,6 +35,7 @@ struct BandLevels {
   // The result's table is random but its error was not estimated (/bands@interval_includes says the
   // intervals are conditional on it): a verdict cannot carry it.
   bool table_error_missing = false;
+  std::string point;  // the sweep point read ("section.key=value, ..."; "" for a result that is no sweep)
 };
 
 // The table term's covariance between the bands `band` (indices into b), in (natural log)^2: the
@@ -55,7 +56,9 @@ struct SensorChoice {
 SensorChoice sensor_choice(const std::string& name, std::optional<double> position);
 
 // Refuses (exit 64) an unknown sensor, naming the ones there are, a position with no sensor near it or a result without
-// positions, and (exit 65) datasets of the wrong shape or with NaN.
-BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice);
+// positions, and (exit 65) datasets of the wrong shape or with NaN. `point` picks one point of a sweep result
+// (src/io/sweep_point.hpp: K, or section.key=value[,...]); a sweep result without it, or a point for a result
+// that is no sweep, is refused (exit 64) naming the points there are.
+BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice, const std::string& point = "");
 
 }  // namespace rollspec::io

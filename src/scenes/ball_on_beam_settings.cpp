@@ -87,6 +87,11 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
   // law = path and blocked_force = solver resolve the contact on a strip themselves: a patch filter
   // is accepted there but not applied, and the result says so (/contact@filter is what was applied).
   b.filter_applied = b.filter == ContactFilter::patch && (b.path_law() || b.blocked_solver()) ? "none" : b.filter_name;
+  if (b.filter_applied != b.filter_name && b.contact_section.filter_set)  // said, not silently dropped
+    b.warnings.push_back(filter_origin.where + ": not applied: " +
+                         (b.path_law() ? std::string("law = path") : std::string("blocked_force = solver")) +
+                         " resolves the contact on its strip itself, so the line texture is not filtered (the "
+                         "result records /contact@filter = none); allowed without this note: filter = none");
   if (b.filter == ContactFilter::iso2d && b.blocked_solver())
     filter_origin.refuse(
         "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
@@ -289,7 +294,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   read_contact_filter(s.equivalent_roughness, b, beam::hertz_half_width(radius, hertz_compression));
   const study::TextureSection& texture = s.texture;
   b.roughness_origin = texture.source == "self-affine" ? texture.rms_origin : texture.source_origin;
-  b.warnings = check_ball_on_beam_plausibility(b);  // before any step or table check that the values could break
+  // Before any step or table check that the values could break.
+  for (auto& w : check_ball_on_beam_plausibility(b)) b.warnings.push_back(std::move(w));
   // Integration step.
   b.step.substeps = static_cast<int>(signal.substeps);
   b.step.hold = signal.hold == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;

@@ -85,6 +85,9 @@ std::string check_value(const KeySpec& spec, const std::string& value, const Ori
       char* end = nullptr;
       const double v = std::strtod(value.c_str(), &end);
       if (end == value.c_str() || *end != '\0') throw config_error(head + "not a number" + allowed);
+      // strtod also reads C's hexadecimal numbers (0x10 = 16): a study states its values in decimal.
+      if (value.find_first_of("xX") != std::string::npos)
+        throw config_error(head + "a hexadecimal number; write it in decimal" + allowed);
       if (std::isnan(v)) throw config_error(head + "NaN is not a value" + allowed);
       if (!std::isfinite(v)) throw config_error(head + "not finite (too large for a double, or Inf)" + allowed);
       const bool below = spec.min_inclusive ? v < spec.min : v <= spec.min;
@@ -100,8 +103,11 @@ std::string check_value(const KeySpec& spec, const std::string& value, const Ori
       const auto r = std::from_chars(b, e, v);
       if (r.ec == std::errc::result_out_of_range) throw config_error(head + "too large a number" + allowed);
       if (r.ec != std::errc() || r.ptr != e) throw config_error(head + "not a whole number" + allowed);
+      // Exactly, not through a double: 9000000000000000001 rounds to 9e18 and would pass a bound of 9e18.
       const auto d = static_cast<double>(v);
-      if (d < spec.min || d > spec.max) throw config_error(head + "out of range" + allowed);
+      const bool below = d < spec.min || (d == spec.min && v < static_cast<long long>(spec.min));
+      const bool above = d > spec.max || (d == spec.max && v > static_cast<long long>(spec.max));
+      if (below || above) throw config_error(head + "out of range" + allowed);
       if (spec.power_of_two && !is_power_of_two(v)) throw config_error(head + "not a power of two" + allowed);
       return std::to_string(v);
     }

@@ -12,6 +12,8 @@ history kept. From that run:
   measured-psd.csv    frequency_hz,psd: the mean PSD of the 5 sensors over the 25 rolls, (m/s^2)^2/Hz, plus the
                       noise floor of that average (a measurement of 25 rolls for `compare --measured-averages 25`).
 The same build gives the same files (the run is bitwise reproducible, the noise has a fixed seed)."""
+import io
+import os
 import pathlib
 import subprocess
 import sys
@@ -30,12 +32,20 @@ WAV_SENSOR = 2               # sensor 3 in the WAV
 WAV_FULL_SCALE_G = 10.0
 
 
+# Each output, and the start of the file this script writes there: it replaces only its own.
+OUTPUTS = {"example-signal.csv": b"Time (s);", "example-signal.wav": b"RIFF", "measured-psd.csv": b"frequency_hz,psd"}
+
+
 def main():
     binary = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ROOT / "build" / "release" / "rollspec")
+    targets = {n: check_output_file(OUT / n, "stand-in", own=starts_with(head)) for n, head in OUTPUTS.items()}
     with tempfile.TemporaryDirectory() as tmp:
         rolls = pathlib.Path(tmp) / "rolls.h5"
-        subprocess.run([str(binary), "run", str(ROOT / "studies" / "seed002-rig-1ms.ini"), "--out", str(rolls),
-                        "--set", "study.seed=7002", "--set", "output.time_histories=1", "--quiet"], check=True)
+        r = subprocess.run([str(binary), "run", str(ROOT / "studies" / "seed002-rig-1ms.ini"), "--out", str(rolls),
+                            "--set", "study.seed=7002", "--set", "output.time_histories=1", "--quiet"],
+                           stderr=subprocess.PIPE, text=True, errors="replace")
+        if r.returncode != 0:
+            sys.exit(f"{binary} run exited {r.returncode}: {(r.stderr.strip().splitlines() or [''])[-1]}")
         with h5py.File(rolls, "r") as f:
             t = f["/time_history/time"][()]
             acc = f["/time_history/sensor_acceleration"][0]          # sensor x time, m/s^2
@@ -49,17 +59,24 @@ def main():
     for i, ti in enumerate(t):
         cells = [f"{ti:.7f}"] + [f"{noisy[k, i] / G:.6g}" for k in SENSORS]
         rows.append(";".join(cells).replace(".", ","))
-    (OUT / "example-signal.csv").write_text("\n".join(rows) + "\n")
+    write_output_file(targets["example-signal.csv"], ("\n".join(rows) + "\n").encode())
 
     pcm = np.round(noisy[WAV_SENSOR] / G / WAV_FULL_SCALE_G * 32768.0)
     assert np.abs(pcm).max() < 32767, "the signal clips at the chosen full scale"
-    scipy.io.wavfile.write(OUT / "example-signal.wav", int(round(fs)), pcm.astype(np.int16))
+    wav = io.BytesIO()
+    scipy.io.wavfile.write(wav, int(round(fs)), pcm.astype(np.int16))
+    write_output_file(targets["example-signal.wav"], wav.getvalue())
 
     # The 5 sensors' noise is independent: their mean carries a fifth of one sensor's noise PSD.
     psd = mean + NOISE_PSD / 5
     lines = ["frequency_hz,psd"] + [f"{a:.10g},{b:.6g}" for a, b in zip(freq, psd)]
-    (OUT / "measured-psd.csv").write_text("\n".join(lines) + "\n")
+    write_output_file(targets["measured-psd.csv"], ("\n".join(lines) + "\n").encode())
+
+
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import check_output_file, starts_with, write_output_file, script_main  # noqa: E402  (one line per failure, no traceback)
 
 
 if __name__ == "__main__":
-    main()
+    script_main(main)

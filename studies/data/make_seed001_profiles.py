@@ -12,6 +12,7 @@ stylus spacing (1 um would make ~8 MB of CSV; 2 um keeps all 30 files near 4 MB 
 Written as seed001-profiles/beam-{s,r}-NN.csv with the columns position_m,height_um (heights to 5
 significant digits, as a stylus instrument exports them). The same build gives the same files.
 """
+import os
 import math
 import pathlib
 import subprocess
@@ -54,6 +55,10 @@ spacing = {spacing!r}
 def main():
     binary = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ROOT / "build" / "release" / "rollspec")
     OUT.mkdir(exist_ok=True)
+    # Every profile checked before the first texture runs: only this script's own files are replaced.
+    targets = {(name, i): check_output_file(OUT / f"beam-{name}-{i + 1:02d}.csv", "profile",
+                                            own=starts_with(b"position_m,height_um"))
+               for name in BEAMS for i in range(COUNT)}
     samples = int(round(LENGTH / SPACING)) + 1
     with tempfile.TemporaryDirectory() as tmp:
         for name, (ra, rolloff, seed) in BEAMS.items():
@@ -63,18 +68,26 @@ def main():
             ini.write_text(STUDY.format(seed=seed, name=name.upper(), rolloff=rolloff, rms=rms, count=COUNT,
                                         length=(samples + 0.5) * SPACING, spacing=SPACING))
             out = pathlib.Path(tmp) / f"beam-{name}.h5"
-            subprocess.run([str(binary), "texture", str(ini), "--out", str(out), "--quiet"], check=True)
+            r = subprocess.run([str(binary), "texture", str(ini), "--out", str(out), "--quiet"], stderr=subprocess.PIPE,
+                               text=True, errors="replace")
+            if r.returncode != 0:
+                sys.exit(f"{binary} texture exited {r.returncode}: {(r.stderr.strip().splitlines() or [''])[-1]}")
             with h5py.File(out, "r") as f:
                 x, lines = f["/texture/x"][()], f["/texture/lines"][()]
             assert lines.shape == (COUNT, samples), lines.shape
             ras = []
             for i, z in enumerate(lines):
                 rows = ["position_m,height_um"] + [f"{a:.6f},{b * 1e6:.5g}" for a, b in zip(x, z)]
-                (OUT / f"beam-{name}-{i + 1:02d}.csv").write_text("\n".join(rows) + "\n")
+                write_output_file(targets[(name, i)], ("\n".join(rows) + "\n").encode())
                 ras.append(np.mean(np.abs(z - z.mean())))
             print(f"beam {name.upper()}: {COUNT} profiles of {samples} samples, Ra {np.mean(ras) * 1e6:.3f} um "
                   f"(target {ra * 1e6:.2f}, profiles {min(ras) * 1e6:.3f}-{max(ras) * 1e6:.3f})")
 
 
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.script_main import check_output_file, starts_with, write_output_file, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
 if __name__ == "__main__":
-    main()
+    script_main(main)

@@ -16,6 +16,7 @@ struct ContactSection {
   std::string law, loss, blocked_force, filter;  // as written
   double damping = 0.0, k0 = 0.0;
   KeyOrigin filter_origin;
+  bool filter_set = false;  // written in the study or by --set (not the default)
   // The laws that read a stiffness table (table: the fitted curve; literal: seed 001 Eq. 7 from it).
   bool uses_stiffness_table() const { return law == "table" || law == "literal"; }
 

@@ -1,6 +1,7 @@
 #include "src/study/sections/sweep_section.hpp"
 
 #include <sstream>
+#include <string>
 
 #include "src/study/key_reader.hpp"
 #include "src/text_trim.hpp"
@@ -9,13 +10,22 @@ namespace rollspec::study {
 
 namespace {
 
-std::vector<std::string> split_values(const std::string& text) {
+// "v1, v2, ..." strictly: an empty item (",," or a comma at either end) is a slip, not a value to drop.
+std::vector<std::string> split_values(const std::string& text, const std::string& where, const KeySpec& spec) {
   std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(text);
-  while (std::getline(in, item, ','))
-    if (!trim(item).empty()) out.push_back(trim(item));
-  return out;
+  if (trim(text).empty()) throw config_error(where + ": no values; allowed: v1, v2, ... (" + spec.allowed() + ")");
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = trim(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (item.empty())
+      throw config_error(where + ": item " + std::to_string(out.size() + 1) +
+                         " is empty; allowed: v1, v2, ... with a value between every two commas (" + spec.allowed() +
+                         ")");
+    out.push_back(item);
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
 }
 
 std::string where_of(const std::string& file, const SweepLine& l) {
@@ -51,9 +61,8 @@ SweptKey swept_key(const std::string& file, const SweepLine& l, const KeyReader&
     throw config_error(where +
                        ": cannot be swept; every point runs the same scene with the same seed (common random "
                        "numbers)");
-  SweptKey k{l.key, l.key, spec->unit, split_values(l.value), {where}};
+  SweptKey k{l.key, l.key, spec->unit, split_values(l.value, where, *spec), {where}};
   k.dimension[dot] = '_';
-  if (k.values.empty()) throw config_error(where + ": no values; allowed: v1, v2, ... (" + spec->allowed() + ")");
   return k;
 }
 

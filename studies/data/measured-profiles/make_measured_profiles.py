@@ -7,6 +7,7 @@ profiles` accepts). Only the AFM map (binary) is scaled: its integer counts time
     /usr/bin/python3 make_measured_profiles.py DIR   # DIR holds the files named in SOURCES
 """
 import decimal
+import os
 import pathlib
 import re
 import sys
@@ -73,10 +74,8 @@ def wsxm_rows(path, every=16):
         yield row, "position_m,height_m", [(repr(i * dx), f"{c * scale:.6g}") for i, c in enumerate(counts[row])]
 
 
-def write(name, header, rows):
-    with open(HERE / name, "w") as f:
-        f.write(header + "\n")
-        f.writelines(f"{a},{b}\n" for a, b in rows)
+def text_of(header, rows):
+    return (header + "\n" + "".join(f"{a},{b}\n" for a, b in rows)).encode()
 
 
 SOURCES = [("dektak-1", dektak, "dektak-1.csv"), ("opdx-3", opdx, "opdx-3.txt"), ("xy-4", xy4, "xy-4.txt"),
@@ -85,12 +84,27 @@ SOURCES = [("dektak-1", dektak, "dektak-1.csv"), ("opdx-3", opdx, "opdx-3.txt"),
 
 def main(src):
     src = pathlib.Path(src)
-    for name, reader, file in SOURCES:
-        write(f"{name}.csv", *reader(src / file))
-    (HERE / "top-1-rows").mkdir(exist_ok=True)
+    outputs = {f"{name}.csv": text_of(*reader(src / file)) for name, reader, file in SOURCES}
     for row, header, rows in wsxm_rows(src / "top-1.top"):
-        write(f"top-1-rows/row-{row:03d}.csv", header, rows)
+        outputs[f"top-1-rows/row-{row:03d}.csv"] = text_of(header, rows)
+    (HERE / "top-1-rows").mkdir(exist_ok=True)
+    own = starts_with(b"position_m,height_")
+    targets = {n: check_output_file(HERE / n, "profile", own=own) for n in outputs}  # every one before any write
+    for name, data in outputs.items():
+        write_output_file(targets[name], data)
+
+
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../python-post"))
+from rollspec_post.script_main import check_output_file, starts_with, write_output_file, script_main  # noqa: E402  (one line per failure, no traceback)
+
+
+def checked_main():
+    if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
+        sys.exit("make_measured_profiles: error: usage: make_measured_profiles.py SOURCE_DIR (the folder of the "
+                 "SurfaceTopography files named in SOURCES)")
+    main(sys.argv[1])
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    script_main(checked_main)

@@ -162,3 +162,21 @@ TEST_CASE("coverage by experiment: 4000 ensembles hold the true mean in 93-98 % 
     CHECK(predicted / double(trials) <= 0.98);
   }
 }
+
+TEST_CASE("edge cases: a spread of many means (a damaged file, a vanishing signal) gives [0, inf), not an error") {
+  // nu = 2 K (m / s)^2 far below 1: the gamma law's quantiles are 0 and beyond any double; boost's
+  // series for them do not converge (or refuse a zero dof), which must not end the command.
+  for (const double s : {1e3, 1e6, 1e300}) {
+    CAPTURE(s);
+    const auto m = mean_interval({1.0, s, 0.0, kNoLog}, 25, 0.95);
+    CHECK(m.lower == 0.0);
+    CHECK(std::isinf(m.upper));
+    const auto p = prediction_interval({1e-10, s, 0.0, kNoLog}, 25, 5.0, 0.95);
+    CHECK(p.lower == 0.0);
+    CHECK(std::isinf(p.upper));
+  }
+  // Just above the floor the gamma law still gives a finite, wide interval.
+  const auto wide = mean_interval({1.0, 60.0, 0.0, kNoLog}, 25, 0.95);  // nu = 50 / 3600 = 0.0139
+  CHECK(wide.lower >= 0.0);
+  CHECK(wide.upper > 1e6);
+}

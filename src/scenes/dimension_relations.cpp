@@ -1,0 +1,202 @@
+// The physical relations between the dimensional keys of the ball-on-beam, stiffness and texture
+// scenes, and those of [texture] and [surface] the rolling pipe shares (dimension_plausibility.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "kernels/texture/self_affine_psd.hpp"
+#include "src/scenes/dimension_plausibility.hpp"
+#include "src/study/key_reader.hpp"
+
+namespace rollspec::scenes {
+
+std::string dim(double v, const char* unit) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, *unit ? "%.3g %s" : "%.3g%s", v, unit);
+  return buf;
+}
+
+bool self_affine_written(const study::KeyReader& s) {
+  bool written = false;
+  for (const char* k : {"texture.hurst", "texture.long_wavelength", "texture.rolloff_wavelength",
+                        "texture.short_wavelength", "texture.rms_kind", "texture.rms"})
+    written = written || (s.has(k) && s.is_set(k));
+  return written;
+}
+
+// [texture] of a self-affine source: its rms slope and height from the exact integrals (README Eq. 7-8),
+// against 45 degrees, an atom and the span that holds the profile.
+void add_texture_relations(const study::KeyReader& s, const std::string& span_key, double span,
+                           const std::string& span_what, std::vector<DimensionRelation>& out) {
+  // A self-affine source's keys, or any of them written for another source (a slip is a slip there too).
+  if (!s.has("texture.source") || (s.text("texture.source") != "self-affine" && !self_affine_written(s))) return;
+  const double lr = s.real("texture.rolloff_wavelength"), ls = s.real("texture.short_wavelength");
+  const double ll = s.real("texture.long_wavelength"), rms = s.real("texture.rms");
+  const bool slope_kind = s.text("texture.rms_kind") == "slope";
+  out.push_back({{"texture.short_wavelength", "texture.rolloff_wavelength"},
+                 ls < lr,
+                 "the shortest roughness wavelength " + dim(ls, "m") + " is not below the roll-off wavelength " +
+                     dim(lr, "m") + ": the self-affine range between them is empty"});
+  if (ll > 0.0)
+    out.push_back({{"texture.long_wavelength", "texture.rolloff_wavelength"},
+                   ll >= lr,
+                   "the long-wavelength cut-off " + dim(ll, "m") + " lies below the roll-off wavelength " +
+                       dim(lr, "m") + ": the plateau between them is empty"});
+  out.push_back({{"texture.short_wavelength"},
+                 ls >= 1e-9,
+                 "a roughness wavelength of " + dim(ls, "m") +
+                     " spans fewer than a few atoms (0.1-0.3 nm each): continuum contact theory (D-6) stops "
+                     "well above it"});
+  if (span > 0.0)
+    out.push_back({{"texture.rolloff_wavelength", span_key},
+                   lr <= span,
+                   "the roll-off wavelength " + dim(lr, "m") + " exceeds " + span_what + " " + dim(span, "m") +
+                       ": the rms height [texture] sets lies in wavelengths longer than " + span_what +
+                       " holds, so what rolls over it is not that roughness"});
+  if (!(ls < lr) || !(lr > 0.0) || !(ll < lr)) return;
+  texture::SelfAffineSpec spec;
+  spec.hurst = s.real("texture.hurst");
+  spec.k_long = ll > 0.0 ? 2.0 * M_PI / ll : 0.0;
+  spec.k_rolloff = 2.0 * M_PI / lr;
+  spec.k_short = 2.0 * M_PI / ls;
+  spec.target = slope_kind ? texture::RmsTarget::slope : texture::RmsTarget::height;
+  spec.rms = rms;
+  double slope = 0.0;
+  try {
+    slope = texture::SelfAffinePsd(spec).rms_slope();
+  } catch (const std::exception&) {  // the texture's own checks refuse it, naming its key
+    return;
+  }
+  const std::vector<std::string> keys =
+      slope_kind ? std::vector<std::string>{"texture.rms"}
+                 : std::vector<std::string>{"texture.rms", "texture.short_wavelength", "texture.rolloff_wavelength"};
+  out.push_back({keys, slope <= 1.0,
+                 "the self-affine profile's rms slope would be " + dim(slope, "") +
+                     " "
+                     "(steeper than 45 degrees): a surface this steep is no nominally flat plane, which the "
+                     "contact laws and the half-space solver assume (D-6; ground and machined steel: 0.01-0.3)"});
+}
+
+// [surface]: the grid the contact solver (or the texture scene) draws heights on, and for the seed
+// method its rms sigma and correlation lengths.
+void add_surface_relations(const study::KeyReader& s, bool rough, double contact_radius,
+                           std::vector<DimensionRelation>& out) {
+  if (!s.has("surface.spacing")) return;
+  const double dx = s.real("surface.spacing"), patch = dx * static_cast<double>(s.integer("surface.nx"));
+  out.push_back({{"surface.spacing"},
+                 dx >= 1e-8,
+                 "a grid spacing of " + dim(dx, "m") +
+                     " puts fewer than a hundred atoms in a cell: the continuum half-space (D-6) does not hold "
+                     "there"});
+  if (contact_radius > 0.0)
+    out.push_back({{"surface.spacing", "ball.radius"},
+                   dx <= contact_radius / 2.0,
+                   "a grid spacing of " + dim(dx, "m") + " puts fewer than four cells across the Hertz contact 2a = " +
+                       dim(2.0 * contact_radius, "m") + ": the solver cannot resolve the contact"});
+  if (!rough && !s.is_set("surface.sigma") && !s.is_set("surface.correlation_x") && !s.is_set("surface.correlation_y"))
+    return;
+  const bool seed = s.text("surface.method") == "seed";
+  if (seed || s.is_set("surface.sigma") || s.is_set("surface.correlation_x") || s.is_set("surface.correlation_y")) {
+    const double cx = s.real("surface.correlation_x"), cy = s.real("surface.correlation_y");
+    const double sigma = s.real("surface.sigma"), c = std::min(cx, cy);
+    out.push_back({{"surface.sigma", "surface.correlation_x", "surface.correlation_y"},
+                   sigma <= c,
+                   "the surface's rms height " + dim(sigma, "m") + " exceeds its correlation length " + dim(c, "m") +
+                       ": slopes beyond 45 degrees, no nominally flat plane (the half-space solver assumes small "
+                       "slopes, D-6)"});
+    out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"},
+                   std::max(cx, cy) <= 10.0 * patch,
+                   "a correlation length of " + dim(std::max(cx, cy), "m") +
+                       " exceeds ten times the surface patch nx x "
+                       "spacing = " +
+                       dim(patch, "m") + ": the patch holds a sliver of one correlated height, no rough surface"});
+    if (!seed) return;  // written for another method: the grid's spacing is not theirs to resolve
+    out.push_back({{"surface.correlation_x", "surface.correlation_y", "surface.spacing"},
+                   c >= dx,
+                   "a correlation length of " + dim(c, "m") + " is shorter than the grid spacing " + dim(dx, "m") +
+                       ": the grid holds no correlated heights"});
+  } else if (s.has("texture.source") && s.text("texture.source") == "self-affine") {
+    const double ls = s.real("texture.short_wavelength");
+    out.push_back({{"surface.spacing", "texture.short_wavelength"},
+                   dx <= ls / 2.0,
+                   "a grid spacing of " + dim(dx, "m") + " cannot represent the shortest roughness wavelength " +
+                       dim(ls, "m") + " (Nyquist: spacing <= wavelength / 2)"});
+  }
+}
+
+double e_star(double e1, double nu1, double e2, double nu2) {
+  return 1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2);
+}
+
+// The ball's Hertz contact radius under its own weight (1 N without gravity) on a flat of (e, nu).
+double hertz_radius(const study::KeyReader& s, double e, double nu) {
+  const double r = s.real("ball.radius"), g = s.real("ball.gravity");
+  const double weight = g > 0.0 ? 4.0 / 3.0 * M_PI * r * r * r * s.real("ball.density") * g : 1.0;
+  return std::cbrt(3.0 * weight * r / (4.0 * e_star(s.real("ball.youngs_modulus"), s.real("ball.poisson"), e, nu)));
+}
+
+// The ball alone: its Hertz contact against atoms and against Hertz theory's small contacts.
+void ball_relations(double a, double r, std::vector<DimensionRelation>& out) {
+  out.push_back({{"ball.radius"},
+                 a >= 1e-9,
+                 "the Hertz contact radius under the ball's weight would be " + dim(a, "m") +
+                     ", a few atoms: continuum contact (Hertz, D-6) does not hold at that size"});
+  out.push_back({{"ball.radius"},
+                 a <= 0.1 * r,
+                 "the Hertz contact radius under the ball's weight would be " + dim(a, "m") + ", " + dim(a / r, "") +
+                     " "
+                     "of the radius: Hertz theory needs a/R <= 0.1"});
+}
+
+// [stiffness] approach_max against the ball: the table must pass the static compression and stay a
+// small contact (sqrt(R w) <= R / 10).
+void approach_relations(const study::KeyReader& s, double a, std::vector<DimensionRelation>& out) {
+  const double w = s.real("stiffness.approach_max"), r = s.real("ball.radius"), d0 = a * a / r;
+  out.push_back({{"stiffness.approach_max", "ball.radius"},
+                 w >= d0,
+                 "the table stops at an approach of " + dim(w, "m") + ", below the ball's static compression " +
+                     dim(d0, "m") + " under its weight: the run would read the law beyond the table"});
+  out.push_back({{"stiffness.approach_max", "ball.radius"},
+                 w <= 0.01 * r,
+                 "an approach of " + dim(w, "m") + " is " + dim(w / r, "") +
+                     " "
+                     "of the ball's radius: its contact radius sqrt(R w) passes R / 10, beyond the half-space "
+                     "theory of a small contact (D-6)"});
+  const double rms = s.real("stiffness.ball_rms");
+  if (rms > 0.0)
+    out.push_back({{"stiffness.ball_rms", "ball.radius"},
+                   rms <= 0.01 * r && rms >= 1e-10,
+                   "a ball roughness of " + dim(rms, "m") + " rms on a ball of radius " + dim(r, "m") +
+                       ": a sphere's roughness lies between an atom (1e-10 m) and a hundredth of its radius"});
+}
+
+std::vector<DimensionRelation> stiffness_relations(const study::KeyReader& s) {
+  std::vector<DimensionRelation> out;
+  const double r = s.real("ball.radius");
+  const double a = hertz_radius(s, s.real("flat.youngs_modulus"), s.real("flat.poisson"));
+  ball_relations(a, r, out);
+  approach_relations(s, a, out);
+  const bool rough = s.text("stiffness.surface") == "rough";
+  add_surface_relations(s, rough, a, out);
+  // The patch holds the contact, not the whole roughness: a roll-off up to a hundred patches long still
+  // leaves it a share of the stated rms (the template's 1 mm over 128 um). A smooth ball on a smooth flat
+  // draws no texture: its keys, written, are checked all the same.
+  const double patch = s.real("surface.spacing") * static_cast<double>(s.integer("surface.nx"));
+  add_texture_relations(s, "surface.spacing", rough || self_affine_written(s) ? 100.0 * patch : 0.0,
+                        "a hundred times the surface patch nx x spacing", out);
+  return out;
+}
+
+std::vector<DimensionRelation> texture_relations(const study::KeyReader& s) {
+  std::vector<DimensionRelation> out;
+  const double length = s.real("lines.length"), dx = s.real("lines.spacing");
+  add_texture_relations(s, "lines.length", length, "the line length", out);
+  out.push_back({{"lines.spacing", "lines.length"},
+                 length >= 16.0 * dx,
+                 "a line of " + dim(length, "m") + " holds fewer than 16 samples at spacing " + dim(dx, "m")});
+  add_surface_relations(s, true, 0.0, out);
+  return out;
+}
+
+}  // namespace rollspec::scenes

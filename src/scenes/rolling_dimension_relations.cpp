@@ -1,0 +1,150 @@
+// The physical relations between the dimensional keys of the rolling-pipe and rolling-beam scenes
+// (dimension_plausibility.hpp): a slender tube on a floor that holds it and its roll, a disc or puck
+// of a solid's density, walls the body can meet and does not start inside.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "src/scenes/dimension_plausibility.hpp"
+#include "src/study/key_reader.hpp"
+
+namespace rollspec::scenes {
+
+std::vector<DimensionRelation> rolling_pipe_relations(const study::KeyReader& s) {
+  std::vector<DimensionRelation> out;
+  const double L = s.real("pipe.length"), D = s.real("pipe.diameter"), di = s.real("pipe.inner_diameter");
+  const double v = s.real("roll.speed"), distance = s.real("roll.distance");
+  out.push_back({{"pipe.diameter", "pipe.length"},
+                 D <= L / 2.0,
+                 "a tube " + dim(D, "m") + " across and " + dim(L, "m") +
+                     " long is no slender tube: its beam elements need a length well above the diameter"});
+  out.push_back({{"pipe.inner_diameter", "pipe.diameter"},
+                 di < D,
+                 "an inner diameter of " + dim(di, "m") + " leaves no wall inside the outer " + dim(D, "m")});
+  out.push_back({{"roll.speed"},
+                 v <= 100.0,
+                 "a tube rolling at " + dim(v, "m/s") + " (" + dim(3.6 * v, "km/h") +
+                     ") is beyond any rig: a tube on a floor rolls at walking or running speed"});
+  out.push_back({{"roughness.spacing", "pipe.diameter"},
+                 s.real("roughness.spacing") <= D,
+                 "a floor sampled every " + dim(s.real("roughness.spacing"), "m") + " is flat under a tube " +
+                     dim(D, "m") + " across: the contact spheres meet one sample"});
+  const bool line = s.text("roughness.kind") == "line";
+  double floor_length = distance + D;
+  if (!line) {  // the grid holds the rolled strip (x) and the tube across it (y)
+    const double dx = s.real("surface.spacing");
+    const double fx = dx * static_cast<double>(s.integer("surface.nx") - 1),
+                 fy = dx * static_cast<double>(s.integer("surface.ny") - 1);
+    floor_length = fx;
+    out.push_back({{"pipe.length", "surface.spacing"},
+                   L <= fy,
+                   "a tube " + dim(L, "m") + " long lies across a floor only " + dim(fy, "m") +
+                       " wide (ny x spacing): its ends hang off the surface"});
+    out.push_back(
+        {{"roll.distance", "surface.spacing"},
+         distance <= fx,
+         "a roll of " + dim(distance, "m") + " runs off a floor only " + dim(fx, "m") + " long (nx x spacing)"});
+    out.push_back({{"surface.spacing", "pipe.diameter"},
+                   dx <= D,
+                   "a floor grid spacing of " + dim(dx, "m") + " is flat under a tube " + dim(D, "m") + " across"});
+    add_surface_relations(s, true, 0.0, out);
+  }
+  add_texture_relations(s, "roll.distance", floor_length, "the rolled floor", out);
+  if (s.text("texture.source") == "self-affine" && s.text("texture.rms_kind") == "height")
+    out.push_back({{"texture.rms", "pipe.diameter"},
+                   s.real("texture.rms") <= D / 10.0,
+                   "a floor roughness of " + dim(s.real("texture.rms"), "m") + " rms is as tall as the tube (" +
+                       dim(D, "m") + " across): a tube rolls over roughness well below its size"});
+  return out;
+}
+
+namespace {
+
+// "x, y, z; x, y, z" as points.
+std::vector<Eigen::Vector3d> vectors(const std::string& text) {
+  std::vector<Eigen::Vector3d> out;
+  std::istringstream items(text);
+  for (std::string item; std::getline(items, item, ';');) {
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    std::istringstream c(item);
+    std::string part;
+    for (int i = 0; i < 3 && std::getline(c, part, ','); ++i) v[i] = std::strtod(part.c_str(), nullptr);
+    out.push_back(v);
+  }
+  return out;
+}
+
+// The body kinds' own sections: a key written for another kind changes nothing, which is a slip too.
+void refuse_unused_sections(const study::KeyReader& s, const std::string& kind) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> owner = {
+      {"puck", {"puck"}}, {"flying_beam", {"flying-beam"}}, {"disc", {"disc", "puck"}}, {"beam", {"beam"}}};
+  for (const auto& [section, kinds] : owner) {
+    if (std::find(kinds.begin(), kinds.end(), kind) != kinds.end()) continue;
+    for (const auto& k : s.keys())
+      if (k.section == section && s.is_set(k.full_name()))
+        s.refuse(k.full_name(), "has no effect: [body] kind = " + kind + " uses no [" + section +
+                                    "] (remove it, or set [body] kind to the body it describes)");
+  }
+}
+
+}  // namespace
+
+std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s) {
+  std::vector<DimensionRelation> out;
+  const std::string kind = s.text("body.kind");
+  refuse_unused_sections(s, kind);
+  const double t_end = s.real("analysis.t_end");
+  if (kind == "disc" || kind == "puck") {
+    const double r = s.real("disc.radius"), len = s.real("disc.length"), m = s.real("disc.mass");
+    const double rho = m / (M_PI * r * r * len);
+    out.push_back({{"disc.radius", "disc.length"},
+                   rho >= 10.0 && rho <= 25000.0,
+                   "a disc of " + dim(m, "kg") + " with radius " + dim(r, "m") + " and length " + dim(len, "m") +
+                       " would have a density of " + dim(rho, "kg/m^3") +
+                       ", outside every solid's (10 kg/m^3 for foams to 22600 for osmium)"});
+  }
+  if (kind == "puck") {  // a triangular pulse's impulse F T / 2 moves the puck at most that far in t_end
+    const double r = s.real("disc.radius"), hw = s.real("puck.half_width");
+    const double reach = r + s.real("puck.force_peak") * s.real("puck.pulse") / 2.0 / s.real("disc.mass") * t_end;
+    out.push_back({{"puck.half_width", "disc.radius"},
+                   hw > r,
+                   "walls at +-" + dim(hw, "m") + " cut through a puck of radius " + dim(r, "m") + " at the centre"});
+    out.push_back({{"puck.half_width"},
+                   hw <= 10.0 * reach,
+                   "walls at +-" + dim(hw, "m") + " lie beyond ten times the farthest the puck can travel in t_end (" +
+                       dim(reach, "m") + ", its pulse's impulse over its mass): it never meets them"});
+  }
+  if (kind == "flying-beam") {  // seed 4.4: a 1000 m beam along x on y = 0, spheres of radius 25 m
+    const double wall = s.real("flying_beam.wall_distance"), clear = (wall - 500.0) / std::sqrt(2.0);
+    const double reach = s.real("flying_beam.force_peak") * s.real("flying_beam.ramp") / 2.0 / 1.3 * t_end;
+    out.push_back({{"flying_beam.wall_distance"},
+                   clear >= 25.0,
+                   "an oblique wall at " + dim(wall, "m") +
+                       " cuts through the beam where it starts (its end at x = "
+                       "500 m, contact spheres of radius 25 m)"});
+    out.push_back({{"flying_beam.wall_distance"},
+                   clear <= 10.0 * reach,
+                   "an oblique wall at " + dim(wall, "m") +
+                       " lies beyond ten times the farthest the beam can fly in "
+                       "t_end (" +
+                       dim(reach, "m") + ", its force's impulse over its 1.3 kg): it never meets it"});
+  }
+  if (kind == "beam") {  // a geometrically exact beam: slender, and not starting deep inside a plane
+    const double d = s.real("beam.diameter");
+    const auto ends = vectors(s.text("beam.start") + ";" + s.text("beam.end"));
+    const double length = ends.size() == 2 ? (ends[1] - ends[0]).norm() : 0.0;
+    out.push_back({{"beam.diameter"},
+                   d <= length / 2.0,
+                   "a beam " + dim(d, "m") + " across and " + dim(length, "m") + " long is no slender beam"});
+  }
+  const double pen = s.real("analysis.max_new_penetration");
+  if (pen > 0.0)
+    out.push_back({{"analysis.max_new_penetration"},
+                   pen <= 1.0 && pen >= 1e-12,
+                   "a largest new penetration of " + dim(pen, "m") +
+                       ": a penalty contact's penetration is a small fraction of the body's size"});
+  return out;
+}
+
+}  // namespace rollspec::scenes
