@@ -113,8 +113,8 @@ void read_table_term(const Hdf5Reader& r, const SweepPoint& at, std::size_t row,
       r.has_attribute("/bands", "interval_includes") ? r.string_attribute("/bands", "interval_includes") : "";
   if (!r.exists("/bands/table_leave_out_level_db")) {
     b.table_error_missing = includes.find("conditional on") != std::string::npos;
-    const auto at = includes.find("conditional on the ");
-    if (at != std::string::npos) b.table = includes.substr(at + 19, includes.find(')', at) - at - 19);
+    const auto on = includes.find("conditional on the ");
+    if (on != std::string::npos) b.table = includes.substr(on + 19, includes.find(')', on) - on - 19);
     return;
   }
   std::vector<std::size_t> d;
