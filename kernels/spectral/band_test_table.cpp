@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <boost/math/special_functions/gamma.hpp>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -59,6 +60,20 @@ Matrix table_factor(const Matrix& t) {
 
 }  // namespace
 
+std::vector<double> smoothed_variances(const std::vector<double>& v, std::size_t w, std::vector<std::size_t>* count) {
+  const std::size_t p = v.size();
+  std::vector<double> out(p);
+  if (count) count->assign(p, 0);
+  for (std::size_t b = 0; b < p; ++b) {
+    const std::size_t lo = b >= w ? b - w : 0, hi = std::min(p, b + w + 1);
+    double s = 0.0;
+    for (std::size_t c = lo; c < hi; ++c) s += v[c];
+    out[b] = s / static_cast<double>(hi - lo);
+    if (count) (*count)[b] = hi - lo;
+  }
+  return out;
+}
+
 std::size_t bartlett_uniforms(std::size_t q) { return q + 2 * ((q * (q - 1) / 2 + 1) / 2); }
 
 void bartlett_wishart(std::size_t q, double nu, const double* u, double* a) {
@@ -92,10 +107,13 @@ BandTestResult band_test_with_table(const double* measured_log, const double* me
   Vector t_diag;
   Matrix u;
   std::size_t rank = 0;
+  Vector raw;
   if (table.independent) {
-    t_diag = t_full.diagonal();
-    if (!t_diag.allFinite() || t_diag.minCoeff() < 0.0)
+    raw = t_full.diagonal();
+    if (!raw.allFinite() || raw.minCoeff() < 0.0)
       throw std::invalid_argument("band test: a table variance is negative or not finite");
+    t_diag = Eigen::Map<const Vector>(
+        smoothed_variances(std::vector<double>(raw.data(), raw.data() + n), table.smooth).data(), n);
     rank = static_cast<std::size_t>((t_diag.array() > 0.0).count());
   } else {
     u = table_factor(t_full);
@@ -132,11 +150,12 @@ BandTestResult band_test_with_table(const double* measured_log, const double* me
     const Matrix s_star = ls * Eigen::Map<const RowMatrix>(a_s.data(), n, n) * ls.transpose() / nu;
     Matrix t_star;
     if (table.independent) {
-      Vector diag(n);
-      for (Eigen::Index b = 0; b < n; ++b)
-        diag(b) = t_diag(b) * 2.0 * boost::math::gamma_p_inv(0.5 * table.dof, uni[ns + static_cast<std::size_t>(b)]) /
-                  table.dof;
-      t_star = diag.asDiagonal();
+      std::vector<double> drawn(p);
+      for (std::size_t b = 0; b < p; ++b)
+        drawn[b] = raw(static_cast<Eigen::Index>(b)) * 2.0 * boost::math::gamma_p_inv(0.5 * table.dof, uni[ns + b]) /
+                   table.dof;
+      const std::vector<double> diag = smoothed_variances(drawn, table.smooth);
+      t_star = Eigen::Map<const Vector>(diag.data(), n).asDiagonal();
     } else {
       bartlett_wishart(rank, table.dof, uni.data() + ns, a_t.data());
       const auto nr = static_cast<Eigen::Index>(rank);

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "kernels/spectral/band_test.hpp"
 
@@ -26,7 +27,14 @@ struct TableTerm {
   double dof = 0.0;                    // nu_T (> rank - 1)
   double factor = 2.0;                 // c
   bool independent = false;            // Sigma_T diagonal: each band's variance drawn alone, chi^2(nu_T) / nu_T
+  // Independent bands only (D-31d): each band's variance is the mean of the raw estimates over the bands
+  // within `smooth` of it (its neighbours among the p), in the observed term and in every draw alike.
+  std::size_t smooth = 0;
 };
+
+// D-31d: the moving mean of v[0..p) over [b - w, b + w] (clipped at the ends), and the number of
+// estimates each output averages.
+std::vector<double> smoothed_variances(const std::vector<double>& v, std::size_t w, std::vector<std::size_t>* count = nullptr);
 
 // D-31. Without a table term (factor 0, or no covariance) it is band_test (the F law). `draws`: B.
 // Throws std::invalid_argument as band_test does, and for a table covariance that is not symmetric

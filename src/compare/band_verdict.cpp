@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "kernels/spectral/band_test.hpp"
+#include "kernels/spectral/band_test_table.hpp"
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch_expectation.hpp"
@@ -181,6 +182,22 @@ std::string band_rule_warning(const io::BandLevels& b, const MeasuredSpectrum& m
          " out (--fmin/--fmax), refine the result's grid (spectrum.segment), or give compare the recording itself";
 }
 
+// A new surface: the model's table and the rig's surface each add the table's variance (D-31), a spectral
+// table's pooled over neighbouring bands with the dof of the estimates pooled (D-31d); then `inside`.
+void widen_for_table(Verdict& v, const io::BandLevels& b) {
+  std::vector<double> raw;
+  for (const auto& r : v.rows) raw.push_back(v.table_factor > 0.0 ? table_band_variance_db(b, r.band) : 0.0);
+  std::vector<std::size_t> count(raw.size(), 1);
+  if (b.table_independent_bands) raw = spectral::smoothed_variances(raw, kSpectralTableSmoothing, &count);
+  for (std::size_t i = 0; i < v.rows.size(); ++i) {
+    BandRow& r = v.rows[i];
+    if (raw[i] > 0.0)
+      io::widen_band_interval(r.simulated, r.pred_lower, r.pred_upper, v.table_factor * raw[i],
+                              b.table_dof * static_cast<double>(count[i]), b.realisations, b.confidence);
+    r.inside_prediction = r.measured >= r.pred_lower && r.measured <= r.pred_upper;
+  }
+}
+
 }  // namespace
 
 Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const VerdictOptions& o) {
@@ -211,14 +228,11 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
       const auto p = spectral::prediction_interval(sc, b.realisations, m.records, b.confidence);
       r.pred_lower = r.simulated + 10.0 * std::log10(p.lower);
       r.pred_upper = r.simulated + 10.0 * std::log10(p.upper);
-      if (v.table_factor > 0.0)  // a new surface: the model's table and the rig's surface (D-31)
-        io::widen_band_interval(r.simulated, r.pred_lower, r.pred_upper, v.table_factor * table_band_variance_db(b, k),
-                                b.table_dof, b.realisations, b.confidence);
-      r.inside_prediction = r.measured >= r.pred_lower && r.measured <= r.pred_upper;
     }
     v.rows.push_back(r);
   }
   if (v.rows.empty()) throw data_error(m.source + ": covers none of the result's bands inside [fmin, fmax]");
+  if (predict) widen_for_table(v, b);
   mark_floor(v.rows, b, o);
 
   std::vector<std::size_t> index;
@@ -245,11 +259,22 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
       spectral::band_deviation(c.y.data(), c.mean.data(), c.cov.data(), index.size(),
                                static_cast<double>(b.realisations), m.records, d, vs);
       std::vector<double> vt = v.table_factor > 0.0 ? io::table_log_covariance(b, index) : std::vector<double>{};
+      double table_dof = b.table_dof;
+      if (!vt.empty() && b.table_independent_bands) {  // D-31d: pooled as the test pools them
+        const std::size_t p = index.size();
+        std::vector<double> diag(p);
+        std::vector<std::size_t> count;
+        for (std::size_t i = 0; i < p; ++i) diag[i] = vt[i * p + i];
+        diag = spectral::smoothed_variances(diag, kSpectralTableSmoothing, &count);
+        double pooled = 0.0;
+        for (std::size_t i = 0; i < p; ++i) vt[i * p + i] = diag[i], pooled += static_cast<double>(count[i]);
+        table_dof *= pooled / static_cast<double>(p);
+      }
       for (auto& x : d) x *= -kDb;  // simulated - measured, dB
       for (auto& x : vs) x *= kDb * kDb;
       for (auto& x : vt) x *= v.table_factor * kDb * kDb;
       v.offset = spectral::level_offset(d.data(), vs.data(), vt.empty() ? nullptr : vt.data(), index.size(),
-                                        static_cast<double>(b.realisations - 1), b.table_dof, b.confidence);
+                                        static_cast<double>(b.realisations - 1), table_dof, b.confidence);
     } catch (const std::invalid_argument&) {
       v.offset.reset();  // a band without power or a singular covariance: no offset, the test says why
     }

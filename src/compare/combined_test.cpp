@@ -52,7 +52,8 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
   try {
     t.result = spectral::band_test_with_table(
         c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records,
-        {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands}, uniform,
+        {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands,
+                                               b.table_independent_bands ? kSpectralTableSmoothing : 0}, uniform,
         kBootstrapDraws);
   } catch (const std::invalid_argument& e) {
     t.verdict = std::string("none (") + e.what() + ")";

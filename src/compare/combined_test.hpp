@@ -31,6 +31,10 @@ ChosenBands chosen_bands(const io::BandLevels& b, const std::vector<std::size_t>
 // mean), 0 for the very surface the table was built on (--same-surface).
 constexpr double kNewSurfaceTableFactor = 2.0;
 
+// D-31d: a spectral table's band variances (independent bands) are pooled over each band and its neighbour
+// on either side among the compared bands, in the test and the prediction intervals alike.
+constexpr std::size_t kSpectralTableSmoothing = 1;
+
 // Draws of D-31's parametric bootstrap: the p-value's own standard error is below 0.0022 at p = 0.05.
 constexpr std::size_t kBootstrapDraws = 10000;
 

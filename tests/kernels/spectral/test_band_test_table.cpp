@@ -237,3 +237,11 @@ TEST_CASE("D-31c: size with independent bands, against the rank-limited covarian
   CHECK(size < 0.08);
   CHECK(size_full > 0.12);
 }
+
+TEST_CASE("D-31d: neighbouring bands' variances pooled, the ends with fewer") {
+  std::vector<std::size_t> count;
+  const std::vector<double> v = smoothed_variances({3.0, 6.0, 0.0, 9.0}, 1, &count);
+  CHECK(v == std::vector<double>{4.5, 3.0, 5.0, 4.5});
+  CHECK(count == std::vector<std::size_t>{2, 3, 3, 2});
+  CHECK(smoothed_variances({1.0, 2.0}, 0) == std::vector<double>{1.0, 2.0});
+}
