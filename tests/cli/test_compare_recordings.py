@@ -102,3 +102,23 @@ def test_rounded_time_stamps_and_unequal_rolls_stay_on_the_model_bins(rig):
     assert [b["measured_db"] for b in rounded["bands"]] == [b["measured_db"] for b in exact["bands"]]
     assert rounded["level_offset"] == exact["level_offset"]
     assert not any("bins" in w for w in rounded["warnings"]), rounded["warnings"]
+
+
+def test_json_holds_the_spectra_it_compared(rig):
+    """The measured PSD through the model's estimator (on the model's own frequencies) and the noise
+    recording's, for a plot of what was compared; each band with its edges."""
+    d, fs = rig["dir"], rig["fs"]
+    files = [write(d / f"spectra-{i}.csv", fs, a, "acc [m/s^2]") for i, a in enumerate(rig["acc"][:2])]
+    quiet = write(d / "quiet.csv", fs, 1e-3 * np.random.default_rng(3).standard_normal(rig["acc"].shape[1]),
+                  "acc [m/s^2]")
+    j, _ = verdict(rig["model"], files, "--noise", quiet)
+    with h5py.File(rig["model"]) as f:
+        freq = f["/psd/frequency"][()]
+        lower, upper = f["/bands/lower_frequency"][()], f["/bands/upper_frequency"][()]
+    for spectrum in (j["measured_psd"], j["noise_psd"]):
+        assert spectrum["model_bins"] and spectrum["units"] == "(m/s^2)^2/Hz"
+        assert spectrum["frequency_hz"] == list(freq) and len(spectrum["psd"]) == freq.size
+    assert [(b["lower_hz"], b["upper_hz"]) for b in j["bands"]] == list(zip(lower, upper))[:len(j["bands"])]
+    # White noise of 1e-3 m/s^2 rms: one-sided 2 sigma^2 / fs, flat.
+    assert np.median(j["noise_psd"]["psd"][1:-1]) == pytest.approx(2e-6 / fs, rel=0.1)
+    assert verdict(rig["model"], files)[0]["noise_psd"] is None
