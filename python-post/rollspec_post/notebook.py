@@ -1,13 +1,11 @@
 """Notebook access: `open_result` reads every group of a rollspec file as xarray Datasets, and
 `run` runs the engine from Python and opens what it wrote."""
-import os
-import pathlib
-import shutil
 import subprocess
 
 import h5py
 
-from .result_file import EX_NOINPUT, EX_USAGE, KNOWN_SCHEMA_MAJOR, PostError, open_rollspec
+from .engine_compare import engine_binary
+from .result_file import EX_USAGE, KNOWN_SCHEMA_MAJOR, PostError, open_rollspec
 
 FILETYPES = tuple(KNOWN_SCHEMA_MAJOR)  # every file kind the engine writes
 
@@ -25,19 +23,6 @@ def open_result(path):
         with xr.open_dataset(path, engine="h5netcdf", group=g, phony_dims="sort") as ds:
             out[g.strip("/") or "/"] = ds.load()
     return out
-
-
-def engine_binary():
-    """$ROLLSPEC_BIN, else `rollspec` on PATH, else this checkout's build/release/rollspec."""
-    if os.environ.get("ROLLSPEC_BIN"):
-        return os.environ["ROLLSPEC_BIN"]
-    found = shutil.which("rollspec")
-    if found:
-        return found
-    local = pathlib.Path(__file__).resolve().parents[2] / "build" / "release" / "rollspec"
-    if local.exists():
-        return str(local)
-    raise PostError("no rollspec binary: set ROLLSPEC_BIN, put rollspec on PATH or build this checkout", EX_NOINPUT)
 
 
 def run(study, out, set=None, quiet=True, sweep=None):  # noqa: A002 (the engine's own word for it)
