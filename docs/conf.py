@@ -31,6 +31,9 @@ exclude_patterns = ["_repo", "_repo/**", "build.sh", "**/README.md", "examples/*
                     "validation/generated/validation-records.md"]
 html_theme = "furo"
 html_title = "rollspec"
+# Wide tables and long usage lines wrap inside the page's column instead of being cut off (1280 px).
+html_static_path = ["_static"]
+html_css_files = ["rollspec.css"]
 autodoc_member_order = "bysource"
 autodoc_mock_imports = []
 # The kernel notes are written for GitHub: they start at '##' under the page title and skip levels.

@@ -11,11 +11,11 @@ import sys
 
 EX_USAGE, EX_UNAVAILABLE, EX_SOFTWARE = 64, 69, 70
 # module, the Debian package that provides it
-REQUIRED = (("numpy", "python3-numpy"), ("scipy", "python3-scipy"), ("h5py", "python3-h5py"),
-            ("matplotlib", "python3-matplotlib"))
+REQUIRED = (("numpy", "python3-numpy"), ("h5py", "python3-h5py"), ("matplotlib", "python3-matplotlib"))
 PICTURES = (".png", ".pdf", ".svg")
 MAX_DPI = 1200  # a 7.5-inch figure at 1200 dpi is 9000 pixels wide; more only exhausts memory
 MAX_CSV_BYTES = 64 * 2**20  # a measured PSD of a million lines is ~40 MB
+MAX_MEASUREMENT_BYTES = 2**30  # a recording: 40 million samples as text; a 5 GB file of zeros is refused first
 
 
 def program_name():
@@ -79,7 +79,6 @@ def build_parser():
     p = writer(sub, "psd", "acceleration PSD with confidence band, measurement and band levels", PICTURES,
                "output picture: .png, .pdf or .svg")
     p.add_argument("result", help="rollspec result file (HDF5)")
-    p.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column")
     p.add_argument("--bands", action="store_true", help="draw third-octave band levels (and ΔL with a measurement)")
     p.add_argument("--sensor", help="the row drawn and compared: a name, or K for sensor_K "
                                     "(default: sensor_mean if present, else the first)")
@@ -121,11 +120,10 @@ def build_parser():
                    help="indices along the first swept key whose PSDs are overlaid (default: all)")
     r = writer(sub, "report", "one self-contained HTML page: key figures, PSD, provenance, study", None, "output HTML")
     r.add_argument("result", help="rollspec result file (HDF5)")
-    r.add_argument("--measurement", help="measured PSD, CSV with frequency_hz and a PSD column (rule of `rollspec compare`)")
     r.add_argument("--sensor", help="a sensor name, or K for sensor_K "
                                     "(default: sensor_mean if present, else the first)")
-    r.add_argument("--fmin", type=frequency, default=0.0, help="lowest band edge compared (Hz)")
-    r.add_argument("--fmax", type=upper_frequency, default=math.inf, help="highest band edge compared (Hz)")
+    r.add_argument("--fmin", type=frequency, help="lowest band edge compared (Hz; default: every band)")
+    r.add_argument("--fmax", type=upper_frequency, help="highest band edge compared (Hz; default: every band)")
     r.add_argument("--loss-threshold", type=finite, default=0.05, metavar="SHARE",
                    help="loss-of-contact share (0-1) above which the page opens with a warning (default 0.05)")
     p.add_argument("--fmin", type=frequency, help="lowest frequency drawn and compared (Hz; default: the study's band "
@@ -135,10 +133,47 @@ def build_parser():
         q.add_argument("--point", metavar="K|KEY=VALUE",
                        help="of a sweep result: the point read, K (1-based, run order) or section.key=value[,...]")
     for q in (p, r):
-        q.add_argument("--column", help="PSD column of the measurement CSV (default: psd)")
-        q.add_argument("--measured-averages", type=finite, metavar="M",
-                       help="independent records averaged into the measurement: judge it by its prediction interval")
+        compare_arguments(q)
     return parser
+
+
+def compare_arguments(q):
+    """The measurement and the options of `rollspec compare` that python-post passes through to it."""
+    q.add_argument("--measurement", nargs="+", metavar="FILE",
+                   help="the recordings (one file per roll: CSV, WAV/FLAC, .mat) or one PSD table, compared by "
+                        "`rollspec compare` (ROLLSPEC_BIN, else rollspec on PATH)")
+    q.add_argument("--noise", metavar="QUIET", help="a recording of the rig at rest (or its PSD table): bands within "
+                                                    "--noise-margin of it leave the test")
+    q.add_argument("--noise-margin", type=finite, metavar="DB", help="compare's margin to the noise (default 10 dB)")
+    q.add_argument("--keep-floor-bands", action="store_true",
+                   help="keep bands that look like the logger's noise floor (no --noise) in the test")
+    q.add_argument("--same-surface", action="store_true",
+                   help="the measurement was taken on the very surface the model's contact table was built on")
+    q.add_argument("--column", action="append", metavar="NAME",
+                   help="channel(s) of the recordings, or the PSD column of a PSD table (repeatable)")
+    q.add_argument("--unit", help="unit of the recordings' values (default: from the file; m/s2, g, mm/s2, ...)")
+    q.add_argument("--scale", type=finite, help="physical units per file unit, or per full scale (integer PCM)")
+    q.add_argument("--fs", type=finite, metavar="HZ", help="sample rate of the recordings (default: from the file)")
+    q.add_argument("--time-column", metavar="NAME", help="time column of CSV recordings, or none")
+    q.add_argument("--skip-rows", type=int, metavar="N", help="CSV lines before the header (default: from the data)")
+    q.add_argument("--roll-per-channel", action="store_true", help="each channel of the recordings is one roll")
+    q.add_argument("--measured-averages", type=finite, metavar="M",
+                   help="independent rolls averaged into a PSD table (recordings: their number)")
+    q.add_argument("--test-level", type=finite, metavar="A", help="level of the combined test (default 0.05)")
+
+
+COMPARE_OPTIONS = ("noise", "noise_margin", "keep_floor_bands", "same_surface", "column", "unit", "scale", "fs",
+                   "time_column", "skip_rows", "roll_per_channel", "measured_averages", "test_level")
+
+
+def compare_options(args):
+    """The CompareOptions of the command line (the sensor and band range are the caller's)."""
+    from .engine_compare import CompareOptions
+    return CompareOptions(columns=args.column or [], unit=args.unit, scale=args.scale, fs=args.fs,
+                          time_column=args.time_column, skip_rows=args.skip_rows,
+                          roll_per_channel=args.roll_per_channel, measured_averages=args.measured_averages,
+                          noise=args.noise, noise_margin=args.noise_margin, keep_floor_bands=args.keep_floor_bands,
+                          same_surface=args.same_surface, test_level=args.test_level)
 
 
 def missing_module(name=None):
@@ -162,8 +197,16 @@ def inputs(args):
              if getattr(args, n, None)]
     if getattr(args, "csv", None):
         files.append((args.csv, "a benchmark CSV", MAX_CSV_BYTES))
-    if getattr(args, "measurement", None):
-        files.append((args.measurement, "a measurement CSV", MAX_CSV_BYTES))
+    for path in getattr(args, "measurement", None) or []:
+        files.append((path, "a measurement (a recording or a PSD table)", MAX_MEASUREMENT_BYTES))
+    if getattr(args, "noise", None):
+        files.append((args.noise, "a noise recording (or its PSD table)", MAX_MEASUREMENT_BYTES))
+    given = [name for name in COMPARE_OPTIONS if args.command in ("psd", "report") and getattr(args, name, None)
+             is not None and getattr(args, name) is not False and getattr(args, name) != []]  # 0.0 == False
+    if given and not getattr(args, "measurement", None):
+        from .result_file import EX_USAGE as usage, PostError
+        raise PostError(f"--{given[0].replace('_', '-')}: an option of the comparison with a measurement; allowed with "
+                        "--measurement FILE... only", usage)
     if args.command == "panels":
         from .panels_plot import parse_panel
         args.panels = [parse_panel(words) for words in args.panel]
@@ -185,9 +228,7 @@ def check_ranges(args):
     ylim = getattr(args, "ylim", None)
     if ylim is not None and not ylim[0] < ylim[1]:
         raise PostError(f"--ylim {ylim[0]:g} {ylim[1]:g}: allowed: LOW < HIGH", usage)
-    m = getattr(args, "measured_averages", None)
-    if m is not None and not m >= 1:
-        raise PostError(f"--measured-averages {m:g}: allowed: a finite count >= 1 of independent records", usage)
+
 
 
 def render(args, kind):
@@ -195,7 +236,7 @@ def render(args, kind):
     buf = io.BytesIO()
     if args.command == "psd":
         from .psd_plot import plot_psd
-        plot_psd(args.result, buf, args.measurement, args.bands, args.sensor, args.column, args.measured_averages,
+        plot_psd(args.result, buf, args.measurement, args.bands, args.sensor, compare_options(args),
                  args.fmin, args.fmax, args.xscale, args.sensors == "all", args.dpi, kind=kind, title=args.title,
                  label=args.label, ylim=args.ylim, style=args.style, measurement_label=args.measurement_label)
     elif args.command == "texture":
@@ -221,8 +262,9 @@ def render(args, kind):
         plot_sweep(args.result, buf, args.sensor, args.points, kind=kind)
     elif args.command == "report":
         from .report_page import report_html
-        return report_html(args.result, args.measurement, args.sensor, args.fmin, args.fmax, args.column,
-                           args.measured_averages, args.loss_threshold).encode("utf-8")
+        options = compare_options(args)
+        options.sensor, options.fmin, options.fmax = args.sensor, args.fmin, args.fmax
+        return report_html(args.result, args.measurement, options, args.loss_threshold).encode("utf-8")
     return buf.getvalue()
 
 

@@ -3,11 +3,10 @@
 exception type, PostError (its message one line, its exit_code the command's), never another."""
 import collections.abc
 import os
-import pathlib
-import shutil
 import subprocess
 
-from .result_file import (EX_DATAERR, EX_NOINPUT, EX_SOFTWARE, EX_UNAVAILABLE, EX_USAGE, KNOWN_SCHEMA_MAJOR, PostError,
+from .engine_compare import engine_binary
+from .result_file import (EX_DATAERR, EX_SOFTWARE, EX_UNAVAILABLE, EX_USAGE, KNOWN_SCHEMA_MAJOR, PostError,
                           open_rollspec)
 
 FILETYPES = tuple(KNOWN_SCHEMA_MAJOR)  # every file kind the engine writes
@@ -61,19 +60,6 @@ def open_result(path):
         raise PostError(f"{path}: out of memory while loading it", EX_SOFTWARE) from None
     except Exception as e:  # h5py or xarray on damaged or unusual content: bad data, in one line
         raise PostError(f"{path}: cannot be read ({type(e).__name__}: {one_line(e)})", EX_DATAERR) from None
-
-
-def engine_binary():
-    """$ROLLSPEC_BIN, else `rollspec` on PATH, else this checkout's build/release/rollspec."""
-    if os.environ.get("ROLLSPEC_BIN"):
-        return os.environ["ROLLSPEC_BIN"]
-    found = shutil.which("rollspec")
-    if found:
-        return found
-    local = pathlib.Path(__file__).resolve().parents[2] / "build" / "release" / "rollspec"
-    if local.exists():
-        return str(local)
-    raise PostError("no rollspec binary: set ROLLSPEC_BIN, put rollspec on PATH or build this checkout", EX_NOINPUT)
 
 
 def mapping(value, what):

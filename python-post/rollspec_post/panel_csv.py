@@ -1,10 +1,10 @@
 """Measured PSDs drawn by `panels` beside results: the CSV `rollspec psd` writes
 (`frequency_hz,<channel> [(m/s^2)^2/Hz],...`, with its metadata in `<csv>-metadata.json`; older files start
 with a line `# rollspec-psd-csv: ...`) or a plain measurement CSV (a frequency column, then PSD columns),
-read by the rule of rollspec's CSV reader (measurement._read_table)."""
+read by the rule of rollspec's CSV reader (psd_table._read_table)."""
 import numpy as np
 
-from .measurement import _read_table, psd_column, psd_values, split_title
+from .psd_table import _read_table, psd_column, psd_values, split_title
 from .result_file import EX_DATAERR, PostError
 
 HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"

@@ -6,10 +6,10 @@ A curve is a result file or a measured PSD CSV (panel_csv.py), told apart by con
 import numpy as np
 from matplotlib.figure import Figure
 
-from .measurement import sensor_row
 from .panel_csv import UNITS, is_hdf5, read_panel_csv
 from .psd_plot import db, output_format
-from .result_file import EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, strings, text_attr
+from .result_file import (EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, read_rows, sensor_row, strings,
+                          text_attr)
 from .safe_output import emit_figure
 
 STYLES = ({"color": "black", "ls": "-", "lw": 0.9}, {"color": "C3", "ls": ":", "lw": 1.3},

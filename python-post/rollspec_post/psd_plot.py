@@ -1,18 +1,20 @@
 """`psd`: the acceleration PSD of one row of a result (by default the sensor mean) with its interval,
 the reference dashed, a measurement solid black, and (with --bands) the third-octave levels and a
-ΔL panel that judges the measurement by the rule of `rollspec compare`. Made for a paper: level in
-dB re 1 (m/s²)²/Hz (the seeds' "dB re 1 m/s²"), a linear frequency axis over the study's band range
-by default, a legend of at most six entries above the axes, PNG, PDF or SVG by the file name."""
+ΔL panel. The measurement is drawn as `rollspec compare` saw it (its JSON: the recordings through the
+model's estimator, or the PSD table as read; the noise recording; each band tested or left out and why):
+python-post never judges a measurement itself. Made for a paper: level in dB re 1 (m/s²)²/Hz (the seeds'
+"dB re 1 m/s²"), a linear frequency axis over the study's band range by default, a legend of at most six
+entries above the axes, PNG, PDF or SVG by the file name."""
 import os
 
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.legend_handler import HandlerTuple
 
+from .engine_compare import CompareOptions, left_out, run_compare, tested
 from .log_ticks import label_log_axes
-from .measurement import compare_bands, read_bands, read_measurement, sensor_row
-from .result_file import (EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, point_label, read_rows, sensor_labels,
-                          strings, text_attr)
+from .result_file import (EX_DATAERR, EX_USAGE, PostError, attr, open_rollspec, point_label, read_bands, read_rows,
+                          sensor_labels, sensor_row, strings, text_attr)
 from .safe_output import emit_figure, picture_kind
 
 
@@ -77,17 +79,34 @@ def curve_styles(style):
     return {"color": "C0", "ls": "-", "lw": 1.0}, {"color": "k", "ls": "-", "lw": 1.0}
 
 
-def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=None, measured_averages=None,
-             fmin=None, fmax=None, xscale="linear", sensors_all=False, dpi=150, kind=None, title=None, label=None,
-             ylim=None, style="default", measurement_label=None):
+def measurements_of(measurement):
+    """A path or a list of paths (one recording per roll, or one PSD table) as a list."""
+    if measurement is None:
+        return []
+    return [measurement] if isinstance(measurement, (str, os.PathLike)) else list(measurement)
+
+
+def answer_for(result, measurement, options, row_name, fmin, fmax):
+    """compare's JSON for the drawn row, over the drawn range where the caller bounded it."""
+    o = CompareOptions(**vars(options)) if options is not None else CompareOptions()
+    o.sensor = row_name
+    o.fmin = fmin if o.fmin is None else o.fmin
+    o.fmax = fmax if o.fmax is None else o.fmax
+    return run_compare(result, measurements_of(measurement), o)
+
+
+def plot_psd(result, out, measurement=None, bands=False, sensor=None, options=None, fmin=None, fmax=None,
+             xscale="linear", sensors_all=False, dpi=150, kind=None, title=None, label=None, ylim=None,
+             style="default", measurement_label=None, answer=None):
     """`sensor` (a name, or K for sensor_K) picks the row drawn and compared (default: the row `rollspec compare`
-    uses, sensor_mean when present). `sensors_all` adds every sensor as a thin grey line. fmin/fmax
-    bound the axis and the compared bands (default: the study's band range, from 0 Hz on a linear
-    axis). `label`, `measurement_label`: legend names of the simulated mean and the measurement;
-    `ylim` (low, high) in dB; `style` default or seed. Returns {"legend": labels, "comparison":
-    compare_bands(...) or None, "loss_note": the loss-of-contact note drawn on the figure or None}.
-    A result whose run warned of loss of contact (/contact@loss_of_contact_warning) gets that warning
-    drawn on the axes in red."""
+    uses, sensor_mean when present). `measurement`: recordings (one per roll) or a PSD table, put through
+    `rollspec compare` with `options` (a CompareOptions: columns, unit, noise, ...), or `answer`, compare's JSON
+    already made. `sensors_all` adds every sensor as a thin grey line. fmin/fmax bound the axis and the compared
+    bands (default: the study's band range, from 0 Hz on a linear axis). `label`, `measurement_label`: legend
+    names of the simulated mean and the measurement; `ylim` (low, high) in dB; `style` default or seed. Returns
+    {"legend": labels, "comparison": compare's JSON or None, "loss_note": the loss-of-contact note drawn on the
+    figure or None}. A result whose run warned of loss of contact (/contact@loss_of_contact_warning) gets that
+    warning drawn on the axes in red."""
     if xscale not in ("linear", "log"):
         raise PostError(f"--xscale {xscale}: allowed: linear or log", EX_USAGE)
     if style not in STYLES:
@@ -98,15 +117,15 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     freq, mean, lo, hi, names, labels, ref, ref_label, units, k, level, band_data, loss = read_psd(result)
     row = sensor_row(names, sensor)
     have_bands = band_data["lower_frequency"].size > 0
+    if answer is None and measurements_of(measurement):
+        answer = answer_for(result, measurement, options, names[row], fmin, fmax)
     if fmin is None:
         fmin = band_data["lower_frequency"][0] if (xscale == "log" and have_bands) else (freq[1] if xscale == "log" else 0.0)
     if fmax is None:
         fmax = band_data["upper_frequency"][-1] if have_bands else freq[-1]
     if not (np.isfinite(fmin) and np.isfinite(fmax) and 0 <= fmin < fmax):
         raise PostError(f"--fmin {fmin:g} --fmax {fmax:g}: allowed: 0 <= fmin < fmax, both finite", EX_USAGE)
-    meas = read_measurement(measurement, column) if measurement else None
-    delta_panel = bands and meas is not None
-    cmp = compare_bands(meas, band_data, names[row], fmin, fmax, measured_averages) if delta_panel else None
+    delta_panel = bands and answer is not None
     sim_style, meas_style = curve_styles(style)
     sim_label = label or (f"computed, mean of {k}" if style == "seed" else f"{labels[row]}, mean of {k}")
     meas_label = measurement_label or ("measured" if style == "seed" else "measurement")
@@ -126,18 +145,21 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     ax.plot(freq[sel], db(mean[row, sel]), label=sim_label, **sim_style)
     if ref is not None:
         ax.plot(freq[sel], db(ref[row, sel]), "--", color="0.25", lw=0.8, label=short(ref_label))
-    if meas is not None:
-        m = (meas[0] > 0) & (meas[0] >= fmin) & (meas[0] <= fmax)
-        ax.plot(meas[0][m], db(meas[1][m]), label=meas_label, **meas_style)
+    if answer is not None:
+        draw_spectrum(ax, answer["measured_psd"], fmin, fmax, meas_label, meas_style)
+        draw_spectrum(ax, answer.get("noise_psd"), fmin, fmax, "noise recording (rig at rest)",
+                      {"color": "0.45", "ls": "--", "lw": 0.8})
     band_handles = []
     if bands and have_bands:
         inb = (band_data["lower_frequency"] >= fmin) & (band_data["upper_frequency"] <= fmax)
         band_handles.append(ax.hlines(band_data["level_db"][row][inb], band_data["lower_frequency"][inb],
                                       band_data["upper_frequency"][inb], color="C1", lw=2.0))
-    if cmp is not None and cmp["count"]:  # the measured band levels the ΔL panel subtracts
-        ok = cmp["used"]
-        band_handles.append(ax.hlines(cmp["measured_db"][ok], band_data["lower_frequency"][ok],
-                                      band_data["upper_frequency"][ok], color="k", lw=2.0))
+    if bands and answer is not None:  # the measured band levels the ΔL panel subtracts; left-out ones dotted grey
+        for chosen, style_of in ((tested(answer), {"color": "k", "lw": 2.0}),
+                                 (left_out(answer), {"color": "0.5", "lw": 2.0, "linestyles": ":"})):
+            if chosen:
+                band_handles.append(ax.hlines([b["measured_db"] for b in chosen], [b["lower_hz"] for b in chosen],
+                                              [b["upper_hz"] for b in chosen], **style_of))
     # y from the data inside the band range: the bins next to 0 Hz on a linear axis carry no power
     # worth the scale.
     lowest = max(fmin, band_data["lower_frequency"][0]) if have_bands else fmin
@@ -156,36 +178,81 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, column=Non
     ax.grid(True, which="both", alpha=0.3)
     label_log_axes(ax, plain="x")
     handles, labels = ax.get_legend_handles_labels()
-    if band_handles:  # one entry for both band sets: the legend stays at six entries at most
+    if band_handles:  # one entry for every band set: the legend stays at six entries at most
         handles.append(tuple(band_handles))
-        labels.append("third-octave bands" + (f": simulated, {meas_label}" if len(band_handles) > 1 else ""))
+        labels.append("third-octave bands" + (f": simulated, {meas_label}" if len(band_handles) > 1 else "")
+                      + (" (dotted: left out)" if len(band_handles) > 2 else ""))
     # Above the axes, so it never covers data.
     ax.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.0, 1.01, 1.0, 0.1), mode="expand", ncol=2,
               fontsize=8, frameon=False, borderaxespad=0.0, handler_map={tuple: HandlerTuple(ndivide=None)})
     note = loss_note(ax, loss) if loss else None
     if delta_panel:
-        delta_axes(fig.add_subplot(2, 1, 2), cmp, band_data, row, meas_label)
+        delta_axes(fig.add_subplot(2, 1, 2), answer, meas_label)
     emit_figure(fig, out, fmt, dpi)
-    return {"legend": labels, "comparison": cmp, "figure": fig, "loss_note": note.get_text() if note else None}
+    return {"legend": labels, "comparison": answer, "figure": fig, "loss_note": note.get_text() if note else None}
 
 
-def delta_axes(ax2, cmp, band_data, row, meas_label):
-    """ΔL per band, coloured by the answer of `rollspec compare`, over the interval it allows (grey)."""
-    ok = cmp["used"]
-    x = np.arange(ok.sum())
-    lvl = band_data["level_db"][row][ok]
-    if cmp["judged"]:
-        ax2.bar(x, cmp["upper_db"][ok] - cmp["lower_db"][ok], bottom=lvl - cmp["upper_db"][ok], width=0.8,
-                color="0.85")
-    ax2.bar(x, cmp["delta_db"][ok], width=0.4, color=np.where(cmp["inside"][ok], "C0", "C3"))
+def draw_spectrum(ax, spectrum, fmin, fmax, label, style):
+    """A spectrum of compare's JSON (measured_psd, noise_psd) over [fmin, fmax], bins with power only."""
+    if not spectrum:
+        return
+    f, p = np.asarray(spectrum["frequency_hz"], float), np.asarray(spectrum["psd"], float)
+    m = (f > 0) & (f >= fmin) & (f <= fmax) & (p > 0)
+    ax.plot(f[m], db(p[m]), label=label, **style)
+
+
+def headline(answer):
+    """The level offset with its interval and the combined test's verdict, over the tested bands (one or two
+    lines), or what compare says instead."""
+    o, t = answer.get("level_offset"), answer["combined_test"]
+    pct = f"{100 * answer['confidence_level']:.0f} %"
+    if o is None:
+        return f"no level offset: {answer['question']}"
+    verdict = ("model rejected" if t["rejected"] else "not rejected") if t["defined"] else "none"
+    p = f", p = {answer['p_value']:.2g}" if t["defined"] else ""
+    return (f"level offset, model − measurement: {o['estimate_db']:+.2f} dB ({pct} interval {o['lower_db']:+.2f} … "
+            f"{o['upper_db']:+.2f} dB) over {o['bands']} tested bands; combined test at level {t['level']:g}: "
+            f"{verdict}{p}")
+
+
+def delta_axes(ax2, answer, meas_label):
+    """ΔL per compared band: tested bands coloured by compare's answer over the interval it allows (grey),
+    left-out bands grey and hatched, named below the axis."""
+    bands = answer["bands"]
+    x = np.arange(len(bands))
+    predicted = answer.get("measured_averages") is not None
+    key = "prediction" if predicted else "ci"
+    lo = np.array([b[f"{key}_lower_db"] if b[f"{key}_lower_db"] is not None else np.nan for b in bands], float)
+    hi = np.array([b[f"{key}_upper_db"] if b[f"{key}_upper_db"] is not None else np.nan for b in bands], float)
+    sim = np.array([b["simulated_db"] for b in bands], float)
+    delta = np.array([b["delta_db"] for b in bands], float)
+    test = np.array([b["use"] == "test" for b in bands])
+    inside = np.array([bool(b["inside"]) for b in bands])
+    if np.isfinite(hi).any():
+        ax2.bar(x[test], (hi - lo)[test], bottom=(sim - hi)[test], width=0.8, color="0.85")
+    ax2.bar(x[test], delta[test], width=0.4, color=np.where(inside[test], "C0", "C3"))
+    if (~test).any():
+        ax2.bar(x[~test], delta[~test], width=0.4, color="none", edgecolor="0.5", hatch="////", lw=0.6,
+                label="left out: " + ", ".join(sorted({b["use"] for b in bands if b["use"] != "test"})))
+        ax2.legend(loc="upper left", fontsize=7, frameon=False)
     ax2.set_xticks(x)
-    ax2.set_xticklabels([f"{v:g}" for v in band_data["nominal_frequency"][ok]], rotation=90, fontsize=7)
+    ax2.set_xticklabels([f"{b['centre_hz']:g}" for b in bands], rotation=90, fontsize=7)
     ax2.axhline(0, color="k", lw=0.8)
+    o = answer.get("level_offset")
+    if o is not None:
+        ax2.axhline(o["estimate_db"], color="C2", lw=0.8, ls="--")
+    # The scale of the tested bands: a left-out band 50 dB under its floor would flatten them (it is hatched,
+    # clipped at the edge, and in the report's table).
+    shown = np.concatenate([delta[test], (sim - hi)[test], (sim - lo)[test], [0.0]])
+    shown = shown[np.isfinite(shown)]
+    if (~test).any() and shown.size:
+        low, high = shown.min(), shown.max()
+        pad = max(2.0, 0.15 * (high - low))
+        ax2.set_ylim(low - pad, high + pad)
     ax2.set_ylabel(f"ΔL simulated − {meas_label} (dB)", fontsize=9)
-    kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the mean"
-    ax2.set_title(f"mean ΔL {cmp['bias_db']:+.2f} dB, rms about it {cmp['spread_db']:.2f} dB; inside the {kind} (grey) in {cmp['inside_count']}/"
-                  f"{cmp['judged']} bands (blue: inside, red: outside)"
-                  + (f"\ncombined test: {cmp['combined_test']['verdict']}" if cmp.get("combined_test") else "")
-                  if cmp["count"] else f"the {meas_label} covers none of the bands", fontsize=8)
+    kind = "prediction interval" if predicted else "interval of the mean"
+    ax2.set_title(headline(answer).replace("; combined", ";\ncombined") + f"; inside the {kind} (grey) in "
+                  f"{answer['inside']}/{answer['judged']} tested bands (blue: inside, red: outside; dashed green: the "
+                  "level offset)", fontsize=8, wrap=True)
     ax2.set_xlabel("third-octave band (Hz)")
     ax2.grid(True, axis="y", alpha=0.3)

@@ -1,6 +1,9 @@
 """`report`: one self-contained HTML page from a result file (the page a user sends to a colleague):
-key figures, the PSD plot (embedded as a PNG data URI), the band comparison with a measurement,
-provenance and the resolved study text. No scripts and no external resources."""
+key figures, the PSD plot (embedded as a PNG data URI), the comparison with a measurement, provenance and
+the resolved study text. No scripts and no external resources. The comparison is `rollspec compare`'s
+answer (engine_compare.py), shown as it is: a headline from the tested bands (the level offset with its
+interval, the combined test's verdict), the bands left out apart with the reason, compare's warnings, and
+how the measurement files were read."""
 import base64
 import html
 import io
@@ -9,11 +12,11 @@ import re
 
 import numpy as np
 
-from .measurement import compare_bands, read_bands, read_measurement, sensor_row
-from .psd_plot import plot_psd
+from .engine_compare import THEORY, WHY_LEFT_OUT, CompareOptions, left_out, plain_text, run_compare, tested
+from .psd_plot import headline, plot_psd
 from .rig_summary import rig_parameters
-from .result_file import (EX_DATAERR, PostError, as_text, attr, open_rollspec, point_label, read, scalar, sensor_labels,
-                          strings, text_attr)
+from .result_file import (EX_DATAERR, PostError, as_text, attr, open_rollspec, point_label, read, read_bands, scalar,
+                          sensor_labels, sensor_row, strings, text_attr)
 from .safe_output import HTML_MARKER, write_atomic
 from . import __version__
 
@@ -32,6 +35,10 @@ h1 { font-size: 1.6em; margin: 0 0 4px; } h2 { font-size: 1.15em; margin: 28px 0
 table { border-collapse: collapse; font-size: .9em; } td, th { border: 1px solid #d6dae3; padding: 3px 8px; text-align: left; }
 th { background: #eef0f5; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 tr.out td { background: #fdecec; }
+tr.left td { background: #f1f1f3; color: #6b6f7a; font-style: italic; }
+p.headline { font-size: 1.1em; border-left: 4px solid #3b6fb6; padding: 6px 12px; background: #f3f6fb; }
+ul.flags li { margin: 4px 0; } sup { font-size: .75em; } details { margin: 10px 0; }
+.wide { overflow-x: auto; }
 .warning { border: 2px solid #c0392b; background: #fdecea; color: #7b1d12; border-radius: 6px; padding: 10px 14px;
   margin: 0 0 18px; font-size: 1.05em; } .warning strong { font-size: 1.1em; }
 .card.alert { border-color: #c0392b; background: #fdecea; }
@@ -120,26 +127,75 @@ def loss_warning(r, threshold):
             "and levels and ΔL should be read with that in mind.</div>")
 
 
-def key_figures(r, cmp, threshold=LOSS_WARNING_SHARE):
+class Footnotes:
+    """The theory notes' equation labels the engine's texts cite, as numbered footnotes: the page's text
+    carries none of them."""
+
+    def __init__(self):
+        self.labels = []
+
+    def text(self, value):
+        """`value` without its labels, escaped, with a footnote mark for them."""
+        plain, labels = plain_text(str(value))
+        if not labels:
+            return esc(plain)
+        marks = []
+        for label in labels:
+            if label not in self.labels:
+                self.labels.append(label)
+            marks.append(str(self.labels.index(label) + 1))
+        return esc(plain) + f"<sup>{','.join(marks)}</sup>"
+
+    def html(self):
+        if not self.labels:
+            return ""
+        items = "".join(f"<li>{esc(label)}</li>" for label in self.labels)
+        return (f'<h2>Notes</h2><p>How compare decides, equation by equation: the theory notes '
+                f'<code>{esc(THEORY)}</code> (Theory › Spectral in the documentation).</p><ol class="notes">{items}</ol>')
+
+
+def offset_cards(answer, level):
+    """The headline's figures: the level offset and the combined test over the tested bands."""
+    o, t = answer.get("level_offset"), answer["combined_test"]
+    if o is None:
+        return [card("level offset, model − measurement", "—", "none: " + answer["question"])]
+    d = np.array([b["delta_db"] for b in tested(answer)], float)
+    about = float(np.sqrt(np.mean((d - o["estimate_db"]) ** 2))) if d.size else float("nan")
+    cards = [card("level offset, model − measurement", f"{o['estimate_db']:+.2f} dB",
+                  f"{level} interval {o['lower_db']:+.2f} … {o['upper_db']:+.2f} dB over {o['bands']} tested bands; "
+                  f"rms of ΔL about it {about:.2f} dB")]
+    if t["defined"]:
+        cards.append(card(f"combined test over the {t['bands']} tested bands",
+                          "model rejected" if t["rejected"] else "not rejected",
+                          f"p = {answer['p_value']:.3g} at level {t['level']:g}", bool(t["rejected"])))
+    else:
+        cards.append(card("combined test over the tested bands", "—", plain_text(t["verdict"])[0]))
+    return cards
+
+
+def band_ranges(bands):
+    """'12.5–630 Hz' style runs of consecutive band centres."""
+    return ", ".join(f"{b['centre_hz']:g} Hz" for b in bands) if len(bands) <= 3 else \
+        f"{len(bands)} bands, {bands[0]['centre_hz']:g} … {bands[-1]['centre_hz']:g} Hz"
+
+
+def key_figures(r, answer, threshold=LOSS_WARNING_SHARE):
     level = f"{100 * r['confidence']:.0f} %"
     cards = [card("realisations", r["realisations"], f"sensor {r['sensor_label']}")]
-    if cmp is not None:
-        over = f"over {cmp['count']} third-octave bands"
-        cards.append(card("mean ΔL (bias), simulated − measured", f"{cmp['bias_db']:+.2f} dB", over))
-        cards.append(card("rms of ΔL about the bias", f"{cmp['spread_db']:.2f} dB",
-                          f"rms dB error including the bias: {cmp['rms_db_error']:.2f} dB"))
-        kind = "prediction interval" if "prediction" in cmp["question"] else "interval of the simulated mean"
-        cards.append(card(f"bands with the measurement inside the {level} {kind}",
-                          f"{100 * cmp['inside_count'] / cmp['judged']:.0f} %" if cmp["judged"] else "—",
-                          f"{cmp['inside_count']} of {cmp['judged']} bands" if cmp["judged"] else cmp["question"]))
-        if cmp.get("combined_test"):  # D-26, the verdict `rollspec compare` prints
-            t = cmp["combined_test"]
-            cards.append(card("combined test over the bands (D-26)",
-                              "—" if t["p_value"] is None else f"p = {t['p_value']:.3g}", t["verdict"],
-                              bool(t["rejected"])))
+    if answer is not None:
+        cards += offset_cards(answer, level)
+        predicted = answer.get("measured_averages") is not None
+        kind = "prediction interval" if predicted else "interval of the simulated mean"
+        cards.append(card(f"tested bands with the measurement inside the {level} {kind}",
+                          f"{answer['inside']} of {answer['judged']}" if answer["judged"] else "—",
+                          f"{answer['bands_compared']} bands compared, {answer['bands_tested']} tested; rms ΔL over "
+                          f"them {answer['rms_db_error']:.2f} dB" if answer["rms_db_error"] is not None else ""))
+        gone = left_out(answer)
+        cards.append(card("bands left out of the test and the offset", f"{len(gone)} of {answer['bands_compared']}",
+                          "; ".join(f"{use}: {band_ranges([b for b in gone if b['use'] == use])}"
+                                    for use in dict.fromkeys(b["use"] for b in gone)) or "none"))
     else:
-        cards.append(card("mean ΔL (bias) and rms about it", "—", "no measurement given (--measurement CSV)"))
-        cards.append(card(f"bands with the measurement inside the {level} interval", "—", "no measurement given"))
+        cards.append(card("level offset, model − measurement", "—", "no measurement given (--measurement FILE...)"))
     if r["loss"] is not None:
         note = f"± {100 * r['loss_std']:.2g} % over realisations" if r["loss_std"] is not None else ""
         alert = loss_too_high(r, threshold)
@@ -170,21 +226,68 @@ def rig_table(study):
     return f'<h2>Rig</h2><table class="rig">{rows}</table>'
 
 
-def band_table(r, cmp):
-    b, s = r["bands"], r["sensor"]
-    predicted = "prediction" in cmp["question"]
+def comparison_headline(answer, notes):
+    """One paragraph from the tested bands only, and what was left out and why."""
+    gone = left_out(answer)
+    text = f"Over the tested bands: {esc(headline(answer))}."
+    if gone:
+        why = "; ".join(f"{band_ranges([b for b in gone if b['use'] == use])} ({use}: {WHY_LEFT_OUT.get(use, use)})"
+                        for use in dict.fromkeys(b["use"] for b in gone))
+        text += f" Left out of the test and the offset: {esc(why)}."
+    return f'<p class="headline">{text}</p><p>Question: {notes.text(answer["question"])}</p>'
+
+
+def warnings_list(answer, notes):
+    if not answer["warnings"]:
+        return ""
+    items = "".join(f"<li>{notes.text(w)}</li>" for w in answer["warnings"])
+    return f'<h3>What compare flagged</h3><ul class="flags">{items}</ul>'
+
+
+def number(value, digits=2):
+    return "—" if value is None else f"{value:.{digits}f}"
+
+
+def band_table(answer, notes):
+    """Every compared band; the left-out ones marked, with the reason."""
+    predicted = answer.get("measured_averages") is not None
+    noise = any(b["noise_db"] is not None for b in answer["bands"])
     rows = []
-    for i in np.flatnonzero(cmp["used"]):
-        cls = "" if cmp["inside"][i] else ' class="out"'
-        cells = (f"{b['nominal_frequency'][i]:g}", f"{b['level_db'][s][i]:.2f}", f"{cmp['measured_db'][i]:.2f}",
-                 f"{cmp['delta_db'][i]:+.2f}", f"{b['ci_lower_db'][s][i]:.2f} … {b['ci_upper_db'][s][i]:.2f}",
-                 f"{cmp['lower_db'][i]:.2f} … {cmp['upper_db'][i]:.2f}" if predicted else "",
-                 ("yes" if cmp["inside"][i] else "no") if cmp["judged"] else "—")
+    for b in answer["bands"]:
+        kept = b["use"] == "test"
+        cls = ' class="left"' if not kept else ("" if b["inside"] or b["inside"] is None else ' class="out"')
+        answer_cell = ("yes" if b["inside"] else "no" if b["inside"] is not None else "—") if kept else \
+            f"left out: {b['use']}"
+        cells = [f"{b['centre_hz']:g}", number(b["simulated_db"]), number(b["measured_db"]), f"{b['delta_db']:+.2f}",
+                 f"{number(b['ci_lower_db'])} … {number(b['ci_upper_db'])}"]
+        if predicted:
+            cells.append(f"{number(b['prediction_lower_db'])} … {number(b['prediction_upper_db'])}")
+        if noise:
+            cells.append(number(b["noise_db"]))
+        cells.append(answer_cell)
         rows.append(f"<tr{cls}>" + "".join(f'<td class="num">{esc(c)}</td>' for c in cells) + "</tr>")
-    head = "".join(f"<th>{esc(h)}</th>" for h in ("band (Hz)", "simulated (dB)", "measured (dB)", "Δ (dB)",
-                                                  "interval of the mean (dB)", "prediction interval (dB)", "inside"))
-    return (f'<p>Question: {esc(cmp["question"])}</p>'
-            f"<table><tr>{head}</tr>{''.join(rows)}</table>")
+    head = ["band (Hz)", "simulated (dB)", "measured (dB)", "Δ (dB)", "interval of the mean (dB)"] + \
+        (["prediction interval (dB)"] if predicted else []) + (["noise (dB)"] if noise else []) + ["inside"]
+    legend = "; ".join(f"{use}: {WHY_LEFT_OUT.get(use, use)}" for use in dict.fromkeys(b["use"] for b in left_out(answer)))
+    return (f'<div class="wide"><table><tr>{"".join(f"<th>{esc(h)}</th>" for h in head)}</tr>{"".join(rows)}</table></div>'
+            + (f"<p>Grey rows are left out of the test and the level offset ({esc(legend)}).</p>" if legend else ""))
+
+
+def read_notes(answer, measurements, notes):
+    """How compare read the files, each line once: a note repeated for every roll names the rolls once."""
+    names = [str(m) for m in measurements]
+    grouped = {}
+    for line in answer.get("measurement_notes", []):
+        who, rest = next(((n, line[len(n) + 2:]) for n in names if line.startswith(n + ": ")), (None, line))
+        grouped.setdefault(rest, []).append(who)
+    items = []
+    for rest, who in grouped.items():
+        files = [os.path.basename(w) for w in who if w]
+        prefix = "" if not files else (f"{files[0]}: " if len(files) == 1 else
+                                       f"{files[0]} … {files[-1]} ({len(files)} files): ")
+        items.append(f"<li>{esc(prefix)}{notes.text(rest)}</li>")
+    return (f"<details><summary>How the measurement was read ({len(items)} lines)</summary><ul>{''.join(items)}</ul>"
+            "</details>") if items else ""
 
 
 def description(study):
@@ -192,44 +295,52 @@ def description(study):
     return m.group(1).strip() if m else ""
 
 
-def build_report(result, out, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None,
-                 loss_threshold=LOSS_WARNING_SHARE):
-    page = report_html(result, measurement, sensor, fmin, fmax, column, measured_averages,
-                       loss_threshold).encode("utf-8")
+def build_report(result, out, measurements=(), options=None, loss_threshold=LOSS_WARNING_SHARE, sensor=None):
+    page = report_html(result, measurements, options, loss_threshold, sensor).encode("utf-8")
     write_atomic(os.path.realpath(out), lambda fh: fh.write(page))  # a failed write leaves the old file
     return out
 
 
-def report_html(result, measurement=None, sensor=None, fmin=0.0, fmax=np.inf, column=None, measured_averages=None,
-                loss_threshold=LOSS_WARNING_SHARE):
+def file_list(paths):
+    names = [os.path.basename(str(p)) for p in paths]
+    return ", ".join(names) if len(names) <= 3 else f"{names[0]} … {names[-1]} ({len(names)} files)"
+
+
+def report_html(result, measurements=(), options=None, loss_threshold=LOSS_WARNING_SHARE, sensor=None):
     """The page as text; `HTML_MARKER` in its head lets a later run replace it without --force.
-    `loss_threshold`: the loss-of-contact share above which the page opens with a warning."""
-    r = read_result(result, sensor)
-    sensor = r["sensor_name"]  # the name: a number would be read as the K of sensor_K
-    meas = read_measurement(measurement, column) if measurement else None
-    cmp = compare_bands(meas, r["bands"], sensor, fmin, fmax, measured_averages) if meas is not None else None
-    if cmp is not None and cmp["count"] == 0:
-        raise PostError(f"{measurement}: covers none of the result's bands inside [{fmin:g}, {fmax:g}] Hz",
-                        EX_DATAERR)
-    psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurement, True, sensor, column, measured_averages,
-                                                        fmin if fmin > 0 else None,
-                                                        fmax if np.isfinite(fmax) else None))
+    `measurements`: recordings (one per roll) or a PSD table, compared by `rollspec compare` with `options`
+    (CompareOptions). `loss_threshold`: the loss-of-contact share above which the page opens with a warning.
+    `sensor` (a name, or K for sensor_K; default options.sensor, else sensor_mean if present): the row shown."""
+    options = CompareOptions(**vars(options)) if options is not None else CompareOptions()
+    options.sensor = sensor if sensor is not None else options.sensor
+    r = read_result(result, options.sensor)
+    options.sensor = r["sensor_name"]  # the name: a number would be read as the K of sensor_K
+    measurements = [measurements] if isinstance(measurements, (str, os.PathLike)) else list(measurements or [])
+    answer = run_compare(result, measurements, options) if measurements else None
+    notes = Footnotes()
+    fmin = options.fmin if options.fmin else None
+    fmax = options.fmax if options.fmax is not None and np.isfinite(options.fmax) else None
+    psd_uri = png_data_uri(lambda buf: plot_psd(result, buf, measurements or None, True, r["sensor_name"],
+                                                fmin=fmin, fmax=fmax, answer=answer))
     prov = dict(r["provenance"], result_file=os.path.basename(result))
-    if measurement:
-        prov["measurement_file"] = os.path.basename(measurement)
+    if measurements:
+        prov["measurement_files"] = file_list(measurements)
+    if options.noise:
+        prov["noise_recording"] = os.path.basename(str(options.noise))
     scene = prov["scene"]
     at = f" at the sweep point {r['point']}" if r["point"] else ""
     parts = [f"<h1>rollspec report: {esc(scene)}{esc(at)}</h1>",
              f'<p class="sub">{esc(description(r["study"]) or os.path.basename(result))}</p>',
              loss_warning(r, loss_threshold),
-             "<h2>Key figures</h2>", key_figures(r, cmp, loss_threshold), rig_table(r["study"]),
+             "<h2>Key figures</h2>", key_figures(r, answer, loss_threshold), rig_table(r["study"]),
              "<h2>Acceleration PSD</h2>",
              f'<img alt="acceleration PSD of sensor {esc(r["sensor_name"])}" src="{psd_uri}">']
-    if cmp is not None:
-        parts += ["<h2>Third-octave bands against the measurement</h2>", band_table(r, cmp)]
-    parts += ["<h2>Provenance</h2>",
-              "<table>" + "".join(f"<tr><th>{esc(k)}</th><td>{esc(v)}</td></tr>" for k, v in prov.items())
-              + "</table>",
+    if answer is not None:
+        parts += ["<h2>Third-octave bands against the measurement</h2>", comparison_headline(answer, notes),
+                  warnings_list(answer, notes), band_table(answer, notes), read_notes(answer, measurements, notes)]
+    parts += [notes.html(), "<h2>Provenance</h2>",
+              '<div class="wide"><table>' + "".join(f"<tr><th>{esc(k)}</th><td>{esc(v)}</td></tr>"
+                                                    for k, v in prov.items()) + "</table></div>",
               "<h2>Study (resolved, defaults included)</h2>", f"<pre>{esc(r['study'])}</pre>",
               f"<footer>made by rollspec_post {esc(__version__)} from {esc(os.path.basename(result))}</footer>"]
     return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">{HTML_MARKER}'

@@ -260,3 +260,43 @@ def is_dimension_scale(obj):
     v = obj.attrs.get("CLASS") if hasattr(obj, "attrs") else None
     v = v.decode(errors="replace") if isinstance(v, bytes) else str(v)
     return v == "DIMENSION_SCALE"
+
+
+def sensor_row(names, sensor=None):
+    """The row drawn (and the one `rollspec compare` uses): a name, or the number K of the name sensor_K
+    (1-based, as the names and the study's [sensors] positions count); by default sensor_mean if present,
+    else the first."""
+    if not names:
+        raise PostError("the result names no sensors (/psd/sensor is empty); nothing to draw or compare", EX_DATAERR)
+    if sensor is None:
+        return names.index("sensor_mean") if "sensor_mean" in names else 0
+    name = f"sensor_{int(sensor)}" if str(sensor).isdigit() else str(sensor)
+    if name in names:
+        return names.index(name)
+    raise PostError(f"--sensor {sensor}: the result has the sensors {', '.join(names)}; allowed: a name, or the "
+                    "number K of sensor_K", EX_USAGE)
+
+
+BAND_EDGES = ("nominal_frequency", "lower_frequency", "upper_frequency")
+BAND_ROWS = ("level_db", "ci_lower_db", "ci_upper_db")  # sensors x bands
+
+
+def read_bands(f):
+    """The result's third-octave bands as drawn: edges, each sensor's level and interval, the sensor names,
+    the realisations and the confidence level."""
+    bands = {}
+    for n in BAND_EDGES + BAND_ROWS:
+        try:
+            bands[n] = np.asarray(read(f, "/bands/" + n), float)
+        except (TypeError, ValueError):
+            raise PostError(f"{f.filename}: /bands/{n} is not numeric", EX_DATAERR) from None
+    bands["sensor"] = strings(f, "/bands/sensor")
+    bands["realisations"] = attr(f, "/psd", "realisations", int)
+    bands["confidence"] = attr(f, "/psd", "confidence_level") if "confidence_level" in f["/psd"].attrs else 0.95
+    n, rows = bands["lower_frequency"].shape, (len(bands["sensor"]),) + bands["lower_frequency"].shape
+    wrong = [b for b in BAND_EDGES if bands[b].shape != n or bands[b].ndim != 1] + \
+            [b for b in BAND_ROWS if bands[b].shape != rows]
+    if wrong:
+        raise PostError(f"{f.filename}: /bands/{wrong[0]} has shape {bands[wrong[0]].shape}; expected "
+                        f"{n if wrong[0] in BAND_EDGES else rows} (sensors x bands)", EX_DATAERR)
+    return bands

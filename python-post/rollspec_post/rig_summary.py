@@ -5,7 +5,7 @@ import configparser
 # section, keys shown (in this order); a key absent from the study is left out, a section with none too
 RIG_KEYS = (("beam", ("support", "length", "width", "thickness", "youngs_modulus", "density", "loss_factor")),
             ("ball", ("radius", "density", "youngs_modulus", "speed", "start", "end")),
-            ("contact", ("law", "filter", "k0", "damping")),
+            ("contact", ("law", "blocked_force", "k0", "damping", "loss", "filter")),
             ("roughness", ("spacing", "band_limit")),
             ("texture", ("source", "rms_kind", "rms", "hurst", "profiles")),
             ("sensors", ("positions", "average")))
@@ -32,13 +32,29 @@ def shown_value(key, value):
     return f"{value} {unit}" if unit and value not in ("0", "") else value
 
 
+def contact_keys(values):
+    """The [contact] keys the study's own law uses (a resolved study holds every key, k0 of a Hertz law too):
+    k0 and blocked_force are the linearised law's (k0 from a solver's table when blocked_force = solver);
+    loss is the nonlinear laws'; the filter acts on the line texture, which law = path and a solver's blocked
+    force do not use."""
+    law, force = values.get("law", "hertz"), values.get("blocked_force", "spring")
+    keys = {"law", "damping"}
+    if law == "linearised":
+        keys |= {"blocked_force"} | ({"k0", "filter"} if force == "spring" else set())
+    else:
+        keys |= {"loss"} | ({"filter"} if law != "path" else set())
+    return keys
+
+
 def rig_parameters(text):
-    """[(section, [(key, value shown)])] of the sections of RIG_KEYS the study holds."""
+    """[(section, [(key, value shown)])] of the sections of RIG_KEYS the study holds ([contact]: the keys of its
+    law only)."""
     study = parse_study(text)
     out = []
     for section, keys in RIG_KEYS:
         values = study.get(section, {})
-        rows = [(k, shown_value(k, values[k])) for k in keys if k in values]
+        used = contact_keys(values) if section == "contact" else set(keys)
+        rows = [(k, shown_value(k, values[k])) for k in keys if k in values and k in used]
         if rows:
             out.append((section, rows))
     return out

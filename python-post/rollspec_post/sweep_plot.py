@@ -1,13 +1,15 @@
 """`sweep`: a parameter sweep's result (rollspec run with [sweep]): the third-octave band levels of one
 sensor against the swept value, one line per band, and the PSDs of chosen points overlaid. A crossed
 sweep of several keys is drawn along its first key, the other keys at their first value (named in
-the title)."""
+the title). Thirty bands or points would make a legend that covers the data: the bands are told apart by
+a colour bar of their centre frequency, the points by a legend above the axes up to LEGEND_POINTS of them
+and by a colour bar of the swept value beyond."""
 import matplotlib
 import numpy as np
+from matplotlib.colors import LogNorm, Normalize
 from matplotlib.figure import Figure
 
-from .measurement import sensor_row
-from .result_file import EX_DATAERR, EX_USAGE, PostError, open_rollspec, read_rows, strings, text_attr
+from .result_file import EX_DATAERR, EX_USAGE, PostError, open_rollspec, read_rows, sensor_row, strings, text_attr
 from .safe_output import emit_figure
 
 
@@ -51,6 +53,9 @@ def read_sweep(result, sensor=None):
             "sensor": names[row]}
 
 
+LEGEND_POINTS = 6  # more PSDs than this get a colour bar instead of legend entries
+
+
 def axis_label(name, units):
     return f"{name} ({units})" if units not in ("", "1", "-") else name
 
@@ -69,21 +74,35 @@ def plot_sweep(result, out, sensor=None, points=None, kind=None):
         raise PostError(f"--points {bad[0]}: the sweep has points 0 to {len(values) - 1} along {name}", EX_USAGE)
     fig = Figure(figsize=(11, 4.8), constrained_layout=True)
     left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
-    colours = matplotlib.colormaps["viridis"](np.linspace(0, 0.95, levels.shape[1]))
-    for b in range(levels.shape[1]):
-        if np.any(np.isfinite(levels[:, b])):
-            left.plot(values, levels[:, b], marker="o", ms=3, lw=1, color=colours[b], label=f"{d['nominal'][b]:g} Hz")
+    drawn = [b for b in range(levels.shape[1]) if np.any(np.isfinite(levels[:, b]))]
+    centres = d["nominal"][drawn] if drawn else np.array([1.0])
+    band_norm = LogNorm(centres.min(), max(centres.max(), centres.min() * 1.01))
+    bands = matplotlib.colormaps["viridis"]
+    for b in drawn:
+        left.plot(values, levels[:, b], marker="o", ms=3, lw=1, color=bands(band_norm(d["nominal"][b])),
+                  label=f"{d['nominal'][b]:g} Hz")
     left.set_xlabel(axis_label(name, units))
     left.set_ylabel("band level (dB)")
     left.set_xticks(values)
     left.grid(True, alpha=0.3)
-    left.legend(fontsize=6, ncol=2, title="band", title_fontsize=7)
-    for p in chosen:
-        right.plot(d["frequency"], db(psd[p]), lw=0.9, label=f"{name} = {values[p]:g}")
+    bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=band_norm, cmap=bands), ax=left, pad=0.01)
+    bar.set_label("third-octave band centre (Hz)", fontsize=8)
+    points_norm = Normalize(values[chosen].min(), values[chosen].max() if values[chosen].max() > values[chosen].min()
+                            else values[chosen].min() + 1.0)
+    cmap = matplotlib.colormaps["plasma"]
+    for i, p in enumerate(chosen):
+        colour = cmap(0.9 * points_norm(values[p])) if len(chosen) > LEGEND_POINTS else f"C{i}"
+        right.plot(d["frequency"], db(psd[p]), lw=0.9, color=colour, label=f"{name} = {values[p]:g}")
     right.set_xlabel("frequency (Hz)")
     right.set_ylabel("PSD level (dB)")
     right.grid(True, alpha=0.3)
-    right.legend(fontsize=8)
+    if len(chosen) > LEGEND_POINTS:
+        bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=points_norm, cmap=matplotlib.colors.ListedColormap(
+            cmap(np.linspace(0, 0.9, 256)))), ax=right, pad=0.01)
+        bar.set_label(axis_label(name, units), fontsize=8)
+    else:  # above the axes, where it covers nothing
+        right.legend(loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=3, fontsize=8, frameon=False,
+                     borderaxespad=0.0)
     fixed = ", ".join(f"{n} = {v[0]:g}" if v.dtype.kind in "fiu" else f"{n} = {v[0]}" for n, v, _ in rest)
     fig.suptitle(f"sweep of {name}, sensor {d['sensor']}" + (f" ({fixed})" if fixed else ""), fontsize=10)
     return emit_figure(fig, out, kind)

@@ -1,6 +1,6 @@
 """`python3 -m rollspec_post ARGS` run in a fork of the test process instead of a new interpreter.
 
-A new interpreter spends about 1.5 s of CPU importing numpy, h5py, scipy and matplotlib before the
+A new interpreter spends about 1.5 s of CPU importing numpy, h5py and matplotlib before the
 command starts; the fault suite runs hundreds of commands. The fork has them imported already and
 is otherwise the command as a user runs it: its own stdin (/dev/null), stdout and stderr (pipes),
 sys.argv, exit status (SystemExit as Python maps it; an uncaught exception prints its traceback and
@@ -17,7 +17,7 @@ import time
 import traceback
 
 PACKAGE = "rollspec_post"
-MODULES = ("numpy", "h5py", "scipy.signal", "scipy.stats", "matplotlib.figure", "matplotlib.backends.backend_agg",
+MODULES = ("numpy", "h5py", "matplotlib.figure", "matplotlib.backends.backend_agg",
            "matplotlib.backends.backend_pdf", "matplotlib.backends.backend_svg")
 
 

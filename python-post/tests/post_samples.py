@@ -24,9 +24,10 @@ def _psd(f, scale):
     mean = scale * np.vstack([1e-3 / (1 + (freq / 800.0) ** 2)] * len(SENSORS))
     f["/psd/frequency"], f["/psd/mean"] = freq, mean
     f["/psd/ci_lower"], f["/psd/ci_upper"] = 0.8 * mean, 1.25 * mean
-    f["/psd/sensor"] = np.array(SENSORS, dtype="S")
+    f["/psd/sensor"] = np.array(SENSORS, dtype=h5py.string_dtype())  # as the engine writes them: compare reads it
     f["/psd/mean"].attrs["units"] = "(m/s^2)^2/Hz"
     f["/psd"].attrs["realisations"], f["/psd"].attrs["confidence_level"] = 8, 0.95
+    f["/psd"].attrs["interval_method"] = "synthetic"
     f["/reference/psd"] = mean
     nominal = np.array([100.0, 125, 160, 200, 250, 315, 400, 500, 630, 800, 1000, 1250, 1600, 2000])
     f["/bands/nominal_frequency"] = nominal
@@ -36,7 +37,7 @@ def _psd(f, scale):
     for name, v in (("level_db", rows), ("ci_lower_db", rows - 1), ("ci_upper_db", rows + 1),
                     ("std", 0.3 * 10 ** (rows / 10)), ("log_std", np.full(rows.shape, 0.3))):
         f["/bands/" + name] = v
-    f["/bands/sensor"] = np.array(SENSORS, dtype="S")
+    f["/bands/sensor"] = np.array(SENSORS, dtype=h5py.string_dtype())
 
 
 def _roughness(f, scale):

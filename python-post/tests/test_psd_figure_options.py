@@ -50,7 +50,7 @@ def test_compare_draws_the_measured_band_levels(oscillator_result, measurement, 
     black = [c for c in top.collections if isinstance(c, LineCollection) and np.allclose(c.get_color()[0], (0, 0, 0, 1))]
     assert len(black) == 1
     levels = np.array([seg[0][1] for seg in black[0].get_segments()])
-    np.testing.assert_allclose(levels, cmp["measured_db"][cmp["used"]])
+    np.testing.assert_allclose(levels, [b["measured_db"] for b in cmp["bands"] if b["use"] == "test"])
     assert "third-octave bands: simulated, rig" in shown["legend"] and "rig" in shown["legend"]
     assert "rig" in delta.get_ylabel()
     renderer = renderer_of(fig)  # the legend's entries do not run into each other

@@ -123,15 +123,24 @@ nlohmann::ordered_json number(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
+// A spectrum as drawn (python-post's report plots it): the measurement through the model's estimator, or
+// the PSD table as read; null without one.
+nlohmann::ordered_json spectrum_json(const compare::MeasuredSpectrum* m) {
+  if (!m) return nullptr;
+  return {{"frequency_hz", m->frequency}, {"psd", m->psd}, {"units", "(m/s^2)^2/Hz"}, {"model_bins", m->model_grid}};
+}
+
 nlohmann::ordered_json verdict_json(const std::string& result, const std::string& column, const io::BandLevels& b,
-                                    const compare::MeasuredSpectrum& m, const compare::Verdict& v,
-                                    const LossOfContact& loss) {
+                                    const compare::MeasuredSpectrum& m, const compare::MeasuredSpectrum* noise,
+                                    const compare::Verdict& v, const LossOfContact& loss) {
   using json = nlohmann::ordered_json;
   const bool predict = m.records > 0.0;
   const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
   json bands = json::array();
   for (const auto& r : v.rows)
     bands.push_back({{"centre_hz", r.centre},
+                     {"lower_hz", b.lower[r.band]},
+                     {"upper_hz", b.upper[r.band]},
                      {"simulated_db", number(r.simulated)},
                      {"measured_db", number(r.measured)},
                      {"delta_db", number(r.delta)},
@@ -192,7 +201,9 @@ nlohmann::ordered_json verdict_json(const std::string& result, const std::string
         {"dof", t.defined && t.draws == 0 ? json::array({t.dof1, t.dof2}) : json(nullptr)},
         {"bootstrap_draws", t.draws},
         {"bands", v.test.bands},
-        {"verdict", v.test.verdict}}}};
+        {"verdict", v.test.verdict}}},
+      {"measured_psd", spectrum_json(&m)},
+      {"noise_psd", spectrum_json(noise)}};
 }
 
 std::string offset_line(const compare::Verdict& v, double confidence) {
@@ -336,7 +347,7 @@ int compare_command(const Args& args) {
                  "that error out and holds only for the surface the table was built on\n";
   for (const auto& w : v.warnings) std::cerr << "rollspec compare: WARNING: " << w << "\n";
   if (format == "json") {
-    std::cout << verdict_json(result, column, b, m, v, loss).dump(2) << "\n";
+    std::cout << verdict_json(result, column, b, m, o.noise, v, loss).dump(2) << "\n";
     return 0;
   }
   const bool predict = m.records > 0.0 && b.realisations >= spectral::kMinRealisationsForInterval;

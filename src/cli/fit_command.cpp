@@ -197,11 +197,11 @@ int fit_command(const Args& args) {
       "sensor name, or the number K of sensor_K (1-based; default: sensor_mean if present, else the first)")(
       "measured-position", po::value(&measured_position),
       "where the measurement was taken (m): the sensor nearest it, as compare picks it")(
-      "column", po::value(&column), "PSD column of the measurement CSV")("fmin", po::value(&fmin)->default_value(0.0),
-                                                                         "lowest band edge (Hz)")(
+      "column", po::value(&column), "PSD column of the measurement CSV")(
+      "fmin", po::value(&fmin)->default_value(0.0, "0"), "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
       "journal", po::value(&journal_path), "record evaluations here; reuse those of an interrupted identical fit")(
-      "format", po::value(&format)->default_value("text"), "text or json");
+      "format", po::value(&format)->default_value("text", "text"), "text or json");
   po::positional_options_description pos;
   pos.add("study", 1).add("measurement", 1);
   po::variables_map vm;

@@ -95,10 +95,11 @@ int psd_command(const Args& args) {
       "time-column", po::value(&request.time_column),
       "CSV column of time stamps, or none (default: the column named like a time)")(
       "skip-rows", po::value(&request.skip_rows), "CSV lines before the header (default: found from the data)")(
-      "quiet,q", "do not say the choices made from the file")("segment", po::value(&segment)->default_value(1024),
-                                                              "segment length (samples)")(
-      "overlap", po::value(&overlap)->default_value(0.5), "overlap as a fraction of the segment, in [0, 0.95]")(
-      "window", po::value(&window)->default_value("hann"), "hann or rect")("out,o", po::value(&out), "output CSV")(
+      "quiet,q", "do not say the choices made from the file")(
+      "segment", po::value(&segment)->default_value(1024, "1024"), "segment length (samples)")(
+      "overlap", po::value(&overlap)->default_value(0.5, "0.5"), "overlap as a fraction of the segment, in [0, 0.95]")(
+      "window", po::value(&window)->default_value("hann", "hann"), "hann or rect")("out,o", po::value(&out),
+                                                                                   "output CSV")(
       "force", "replace an existing --out (and its metadata file) even if psd did not write it");
   po::positional_options_description pos;
   pos.add("signal", 1);

@@ -10,6 +10,7 @@
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/time_column.hpp"
 
 namespace rollspec::compare {
 
@@ -72,23 +73,40 @@ bool is_psd_table(const std::string& path) {
   return false;
 }
 
+namespace {
+
+// A rate fitted to rounded time stamps (6 printed decimals: 25599.99994 Hz for 25600) differs from the true
+// rate in its last digits. Two rates that place the highest bin of a segment less than this share of a bin
+// apart give the same bins: a recording at such a rate is on the model's grid, and rolls at such rates agree.
+constexpr double kSameBinShare = 0.01;
+
+bool same_grid(double a, double b, std::size_t segment) {
+  return std::fabs(a - b) / b * (static_cast<double>(segment) / 2.0) < kSameBinShare;
+}
+
+}  // namespace
+
 spectral::WelchConfig estimator_at(const ModelEstimator& model, double sample_rate, std::string& note) {
   spectral::WelchConfig c = model.welch;
+  note.clear();
+  if (same_grid(sample_rate, model.welch.sample_rate, model.welch.segment)) {
+    if (sample_rate != model.welch.sample_rate)
+      note = "sampled at " + io::rate_text(sample_rate) + " Hz, taken as the model's " +
+             number_text(model.welch.sample_rate) + " Hz (the difference moves no bin by a hundredth of a bin)";
+    return c;
+  }
   const double ratio = sample_rate / model.welch.sample_rate;
   c.sample_rate = sample_rate;
   c.segment = static_cast<std::size_t>(std::lround(static_cast<double>(model.welch.segment) * ratio));
   c.overlap = static_cast<std::size_t>(std::lround(static_cast<double>(model.welch.overlap) * ratio));
   if (c.segment < 4) c.segment = 4;
   if (c.overlap >= c.segment) c.overlap = c.segment / 2;
-  note.clear();
-  if (ratio != 1.0) {
-    const double df = sample_rate / static_cast<double>(c.segment), dfm = model.frequency_step();
-    note = "sampled at " + number_text(sample_rate) + " Hz, the model at " + number_text(model.welch.sample_rate) +
-           " Hz: Welch segment " + std::to_string(c.segment) + " samples (the model's " +
-           number_text(static_cast<double>(model.welch.segment) / model.welch.sample_rate) + " s), bins of " +
-           number_text(df) + " Hz" +
-           (std::fabs(df - dfm) <= 1e-9 * dfm ? "" : " against the model's " + number_text(dfm) + " Hz");
-  }
+  const double df = sample_rate / static_cast<double>(c.segment), dfm = model.frequency_step();
+  note = "sampled at " + number_text(sample_rate) + " Hz, the model at " + number_text(model.welch.sample_rate) +
+         " Hz: Welch segment " + std::to_string(c.segment) + " samples (the model's " +
+         number_text(static_cast<double>(model.welch.segment) / model.welch.sample_rate) + " s), bins of " +
+         number_text(df) + " Hz" +
+         (std::fabs(df - dfm) <= 1e-9 * dfm ? "" : " against the model's " + number_text(dfm) + " Hz");
   return c;
 }
 
@@ -151,21 +169,21 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
                            "': its PSD overflows a double; allowed: samples whose squares stay finite");
       if (options.roll_per_channel) {
         rolls.push_back({path + " [" + t.channels[ch] + "]", one, static_cast<double>(n) / t.sample_rate,
-                         plan->equivalent_dof(n), plan->frequency_step(), t.sample_rate});
+                         plan->equivalent_dof(n), plan->frequency_step(), c.sample_rate});
       } else {
         for (std::size_t k = 0; k < one.size(); ++k) sum[k] += one[k] / static_cast<double>(channels);
       }
     }
     if (!options.roll_per_channel)
       rolls.push_back({path, sum, static_cast<double>(n) / t.sample_rate, plan->equivalent_dof(n),
-                       plan->frequency_step(), t.sample_rate});
+                       plan->frequency_step(), c.sample_rate});
     if (channels > 1 && !options.roll_per_channel)
       m.notes.push_back(path + ": channels " + names(t.channels) + " taken as the result's sensors 1.." +
                         std::to_string(channels) + " of one roll, their PSDs averaged as the row averages them");
   }
   const Roll& first = rolls.front();
   for (const Roll& r : rolls)
-    if (r.rate != first.rate || r.psd.size() != first.psd.size())
+    if (!same_grid(r.rate, first.rate, 2 * (first.psd.size() - 1)) || r.psd.size() != first.psd.size())
       throw usage_error(r.file + ": sampled at " + number_text(r.rate) + " Hz, " + first.file + " at " +
                         number_text(first.rate) + " Hz; allowed: rolls recorded at one sample rate");
   const double dfm = model.frequency_step();

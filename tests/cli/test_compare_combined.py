@@ -65,17 +65,6 @@ def test_the_same_model_is_accepted_and_loss_factor_x2_rejected(files):
     assert not compare(files, "model", "lossy", "--test-level", lossy["p_value"] / 2)["combined_test"]["rejected"]
 
 
-def test_python_post_gives_the_same_p_value(files):
-    from rollspec_post.measurement import compare_bands, read_bands
-
-    with h5py.File(files["model"]) as f:
-        bands = read_bands(f)
-    for meas in ("same", "lossy"):
-        m = np.loadtxt(files[meas], delimiter=",", skiprows=1).T
-        t = compare_bands((m[0], m[1]), bands, None, 100, 5000, 25)["combined_test"]
-        assert t["p_value"] == pytest.approx(compare(files, "model", meas)["p_value"], rel=1e-6)
-
-
 def test_the_table_prints_the_verdict_above_the_summary(files):
     r = run(["compare", files["model"], files["lossy"], "--measured-averages", 25, "--fmin", 100, "--fmax", 5000])
     lines = r.stdout.strip().splitlines()

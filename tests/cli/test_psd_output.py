@@ -163,7 +163,7 @@ def test_compare_reads_the_columns_by_title_name_or_channel_and_says_when_metada
 
 
 def test_rollspec_post_reads_both_formats(tmp_path):
-    from rollspec_post.measurement import read_measurement
+    from rollspec_post.psd_table import read_measurement
     from rollspec_post.panel_csv import read_panel_csv
     from rollspec_post.result_file import PostError
     sig, x = signal(tmp_path)

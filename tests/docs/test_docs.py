@@ -236,3 +236,43 @@ def test_the_link_check_finds_a_missing_page_and_a_missing_anchor(tmp_path):
     assert "index.html: gone.html: no such file" in r.stderr
     assert "index.html: sub/page.html#nowhere: no anchor #nowhere in page.html" in r.stderr
     assert r.stderr.count("check_links:") == 2 and "1 external links" in r.stdout
+
+
+CHROMIUM = "/usr/bin/chromium"
+# In each page, every code block and table whose content is wider than its box (a line or a column cut off)
+LAYOUT_PROBE = """<script>
+window.addEventListener('load', function () {
+  var cut = [];
+  document.querySelectorAll('article pre, article .table-wrapper, article table').forEach(function (el) {
+    if (el.scrollWidth > el.clientWidth + 1) cut.push(el.tagName + ' ' + (el.textContent || '').trim().slice(0, 60));
+  });
+  document.body.setAttribute('data-cut', JSON.stringify(cut));
+});
+</script>"""
+# Pages with the longest usage lines, the widest tables and the longest commands.
+WIDE_PAGES = ("reference/generated/commands.html", "reference/generated/keys.html", "validation/benchmarks.html",
+              "tutorials/compare.html", "tutorials/tour.html", "tutorials/your-rig.html")
+
+
+@pytest.mark.skipif(not os.path.exists(CHROMIUM), reason="/usr/bin/chromium absent (Debian package chromium)")
+@pytest.mark.parametrize("page", WIDE_PAGES)
+def test_nothing_is_cut_off_at_1280_px(site, page, tmp_path):
+    """Headless Chromium lays the page out in a 1280 px window; no code line or table column runs out of its
+    box (docs/_static/rollspec.css wraps them)."""
+    import json
+    path = site / page
+    probe = path.with_name(path.stem + ".layout-probe.html")  # beside it: the page's CSS and images resolve
+    probe.write_text(path.read_text().replace("</body>", LAYOUT_PROBE + "</body>"))
+    try:
+        r = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+                            "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                            f"--user-data-dir={tmp_path / 'profile'}", "--window-size=1280,900",
+                            "--virtual-time-budget=3000", "--dump-dom", f"file://{probe}"],
+                           capture_output=True, text=True, timeout=120)
+    finally:
+        probe.unlink()
+    found = re.search(r'data-cut="([^"]*)"', r.stdout)
+    assert found, f"the probe did not run: {r.stderr[-1000:]}"
+    cut = json.loads(html.unescape(found.group(1)))
+    assert not cut, f"{page}: cut off at 1280 px: {cut[:5]}"
+

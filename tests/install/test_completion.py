@@ -47,7 +47,8 @@ def positional_options(command):
     if not text.startswith("usage:"):
         return set()
     first = text.split("\n\n")[0].split("\n       rollspec ")[0]
-    return {"--" + m.lower() for m in re.findall(r"(?<![-\w])\[?([A-Z][A-Z_]+)(?:\.[a-z0-9]+)?\]?(?=[\s\]]|$)", first.split(command, 1)[1])
+    return {"--" + m.lower() for m in re.findall(r"(?<![-\w])\[?([A-Z][A-Z_]+)(?:\.[a-z0-9]+)?\]?(?=[\s\]]|\.\.\.|$)",
+                                                 first.split(command, 1)[1])
             if not re.search(r"--[a-z-]+ \[?" + m, first)}
 
 
@@ -105,9 +106,12 @@ def files(tmp_path):
     (("stiffness", "--out", ""), ["folder", "result.h5"]),
     (("texture", "--study", ""), ["folder", "study.ini"]),
     (("compare", ""), ["folder", "result.h5"]),                     # result, then measurement
-    (("compare", "result.h5", ""), ["folder", "measured.csv"]),
-    (("compare", "--fmin", "100", "result.h5", ""), ["folder", "measured.csv"]),
-    (("compare", "result.h5", "measured.csv", ""), []),
+    # recordings of any kind (CSV, WAV, FLAC, .mat) or a PSD table, one per roll: every file, again and again
+    (("compare", "result.h5", ""), ["folder", "measured.csv", "notes.txt", "result.h5", "study.ini"]),
+    (("compare", "--fmin", "100", "result.h5", ""), ["folder", "measured.csv", "notes.txt", "result.h5", "study.ini"]),
+    (("compare", "result.h5", "measured.csv", ""), ["folder", "measured.csv", "notes.txt", "result.h5", "study.ini"]),
+    (("compare", "result.h5", "measured.csv", "--noise", ""), ["folder", "measured.csv", "notes.txt", "result.h5",
+                                                               "study.ini"]),
     (("compare", "--format", ""), ["csv", "json", "table"]),
     (("run", "--only", ""), []),                                    # a number: nothing offered
     (("version", ""), []),
@@ -137,7 +141,7 @@ def test_psd_completes_its_signal_and_options(files):
     assert complete("rollspec", "psd", "", cwd=files) == ["folder", "measured.csv", "notes.txt", "result.h5", "study.ini"]
     assert complete("rollspec", "psd", "--ti") == ["--time-column"]
     assert complete("rollspec", "psd", "--skip-rows", "3", "", cwd=files) == ["folder", "measured.csv", "notes.txt", "result.h5", "study.ini"]
-    assert complete("rollspec", "psd", "--unit", "") == ["g", "m/s2"]
+    assert complete("rollspec", "psd", "--unit", "") == []  # UNIT: g, m/s2, mm/s2, in/s2, ... (free text)
 
 
 def scene_keys():
@@ -175,3 +179,32 @@ def test_compare_and_fit_complete_measured_position():
     """The sensor nearest a place is one option of both commands that choose a result's row."""
     for command in ("compare", "fit"):
         assert complete("rollspec", command, "--measured-p") == ["--measured-position"]
+
+
+def keys_of(scene):
+    section, keys = None, set()
+    for line in subprocess.run([BIN, "keys", scene], capture_output=True, text=True).stdout.splitlines():
+        m = re.match(r"^\[(\w+)\]$", line)
+        section = m.group(1) if m else section
+        m = re.match(r"^  (\w+) = ", line)
+        if m and section:
+            keys.add(f"{section}.{m.group(1)}=")
+    return sorted(keys)
+
+
+def test_set_after_a_study_file_offers_its_scenes_keys_only(tmp_path):
+    (tmp_path / "osc.ini").write_text("[study]\nscene = random-oscillator\nrealisations = 4\n")
+    (tmp_path / "rig.ini").write_text("# my rig\n[study]\n  scene=ball-on-beam   # the beam\n")
+    (tmp_path / "odd.ini").write_text("[study]\nscene = no-such-scene\n")
+    oscillator = keys_of("random-oscillator")
+    assert "oscillator.mass=" in oscillator and "beam.length=" not in oscillator
+    for command in ("run", "plan", "texture", "stiffness", "modes"):
+        assert complete("rollspec", command, "osc.ini", "--set", "", cwd=tmp_path) == oscillator
+    assert complete("rollspec", "run", "--set", "study.seed=1", "osc.ini", "--set", "o", cwd=tmp_path) == \
+        [k for k in oscillator if k.startswith("o")]
+    assert complete("rollspec", "texture", "--study", "rig.ini", "--set", "beam.le", cwd=tmp_path) == ["beam.length="]
+    assert complete("rollspec", "plan", "rig.ini", "--set", "", cwd=tmp_path) == keys_of("ball-on-beam")
+    # No study file yet, an unreadable one or an unknown scene: every key, as before.
+    assert complete("rollspec", "run", "--set", "", cwd=tmp_path) == scene_keys()
+    assert complete("rollspec", "run", "absent.ini", "--set", "", cwd=tmp_path) == scene_keys()
+    assert complete("rollspec", "run", "odd.ini", "--set", "", cwd=tmp_path) == scene_keys()

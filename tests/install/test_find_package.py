@@ -48,6 +48,15 @@ def test_man_page_and_completion_installed(prefix):
     help_text = run(prefix / "bin" / "rollspec", "--help").stdout
     commands = re.findall(r"^  ([a-z]+) ", help_text.split("commands:\n")[1].split("\n\n")[0], re.M)
     assert len(commands) >= 9
+    # SYNOPSIS: each form of a command's usage (`rollspec run STUDY.ini ...`, `rollspec run --resume ...`) on a
+    # line of its own, as its --help writes them.
+    synopsis = text.split(".SH SYNOPSIS")[1].split(".SH ")[0]
+    assert all(line.count("rollspec") <= 1 for line in synopsis.splitlines()), synopsis
+    for c in commands:
+        usage = run(prefix / "bin" / "rollspec", c, "--help").stdout.split("\n\n")[0]
+        forms = len(re.findall(rf"^(?:usage: )?\s*rollspec {c}\b", usage, re.M)) if usage.startswith("usage:") else 1
+        assert synopsis.count(f"\\fBrollspec {c}\\fR") == forms, (c, forms, synopsis)
+    assert synopsis.count("\\fBrollspec run\\fR") == 2 and synopsis.count("\\fBrollspec fit\\fR") == 2
     if shutil.which("man"):  # rendered, as a user reads it
         rendered = run("man", "-l", man, env=dict(os.environ, MANWIDTH="100", MANPAGER="cat", PAGER="cat")).stdout
         for section in ("NAME", "SYNOPSIS", "DESCRIPTION", "COMMANDS", "EXIT STATUS"):
