@@ -130,7 +130,6 @@ SurfaceFit surface_search(FitModel& model, const FitInputs& in) {
   std::vector<Replicate> pool;
   std::uint64_t index = 0;
   SurfaceFit fit;
-  const int runs_before = model.runs();
   for (int round = 1; round <= kMaxRounds; ++round) {
     for (const auto& u : design(lo, hi)) pool.push_back({u, model.replicate(u, index++)});
     const Surrogate s = smooth(pool, lo, hi, points);
@@ -176,7 +175,7 @@ SurfaceFit surface_search(FitModel& model, const FitInputs& in) {
     for (std::size_t point = 0; point < points; ++point) fit.jacobians.push_back(s.surface[point].gradient(fit.best));
     const bool quadratic = s.fit.p_value >= kLackOfFitLevel;
     if (!edge && local && quadratic) {
-      fit.runs = model.runs() - runs_before;
+      fit.runs = static_cast<int>(pool.size());
       return fit;
     }
     if (!edge && local && !quadratic) {  // the interval fits in a box half as wide: try the quadratic there
@@ -203,7 +202,7 @@ SurfaceFit surface_search(FitModel& model, const FitInputs& in) {
   }
   // No interval: the last round's estimate stands, with its surface's derivatives for the test at it.
   fit.lower.clear(), fit.upper.clear();
-  fit.runs = model.runs() - runs_before;
+  fit.runs = static_cast<int>(pool.size());
   return fit;
 }
 

@@ -54,3 +54,21 @@ def test_impacts_are_found_and_the_smoothed_intervals_hold_the_truth(tmp_path):
     refused = sum(out["no_interval"] is not None for out in fits)
     print(f"{KEY}: {held} of {EXPERIMENTS - refused} intervals hold the truth, {refused} fits gave none")
     assert held + refused >= 10, f"{held} of {EXPERIMENTS - refused} intervals hold the truth"
+
+
+def test_a_smoothed_fit_resumes_from_its_journal(tmp_path):
+    # Every replicate (its seed of its own) is journalled with its band logs and covariance: the same fit
+    # again reruns none of them and gives the same numbers bit for bit.
+    out = tmp_path / "m.h5"
+    assert run(["run", STUDY, "--out", out, "--quiet",
+                *sets(SHORT + [f"{KEY}={TRUTH}", f"study.realisations={RECORDS}", "study.seed=6300"])]).returncode == 0
+    csv = measurement_from(out, tmp_path / "m.csv")
+    args = ["fit", STUDY, csv, "--measured-averages", RECORDS, "--format", "json", "--vary", f"{KEY}={RANGE}", *BANDS,
+            "--journal", tmp_path / "fit.journal", *sets(SHORT + [f"study.realisations={REALISATIONS}"])]
+    first, again = run(args), run(args)
+    assert first.returncode == 0 and again.returncode == 0, first.stderr + again.stderr
+    a, b = json.loads(first.stdout), json.loads(again.stdout)
+    replicates = a["objective"]["surface_runs"]
+    assert a["reused_from_journal"] == 0 and b["reused_from_journal"] == replicates >= 9
+    assert b["evaluations"] == a["evaluations"] - replicates  # the probe's and the estimate's runs again
+    assert b["parameters"] == a["parameters"] and b["objective"] == a["objective"]
