@@ -29,7 +29,7 @@ struct SurfaceFit {
   std::string refused;                         // non-empty: why there is no interval
   std::vector<double> correlation;             // keys x keys (empty: not a maximum)
   std::vector<std::vector<double>> jacobians;  // per point: d ln m / d u at best, bands x keys
-  int runs = 0, rounds = 0;  // runs: the replicates smoothed (run, or read from a journal)
+  int runs = 0, rounds = 0;                    // runs: the replicates smoothed (run, or read from a journal)
   double lack_of_fit_p = 1.0;
 };
 

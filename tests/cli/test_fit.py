@@ -33,7 +33,7 @@ def test_recovers_the_force_level_inside_its_interval(measured):
     # fit reads ln L of the study's seed; its test counts the fitted key (D-27j) beside compare's.
     assert out["objective"]["common_random_numbers"] is True and out["objective"]["incoherent_share"] < 1e-6
     assert out["no_interval"] is None and out["points"][0]["question"] is None
-    assert "9 bands less 1 fitted keys" in out["goodness_of_fit"] and "F = " in out["goodness_of_fit"]
+    assert "9 bands less 1 fitted key," in out["goodness_of_fit"] and "F = " in out["goodness_of_fit"]
     assert 0.0 < out["p_value_uncorrected"] <= 1.0
 
 
