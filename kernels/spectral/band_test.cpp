@@ -9,22 +9,33 @@ namespace rollspec::spectral {
 
 double log_mean_variance(double s, double n) { return std::log1p(std::expm1(s) / n); }
 
-// Each band's variance from Fenton-Wilkinson, the correlations those of S: V stays S scaled band by
-// band, so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not (D-26a).
-void band_deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
-                              std::vector<double>& d, std::vector<double>& v) {
+namespace {
+
+// D-26a, b with the model mean's variance scaled by h (D-27i): g_b^2 = (V_M,bb + h V_K,bb) / S_bb.
+void deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M, double h,
+               std::vector<double>& d, std::vector<double>& v) {
   if (!(M >= 1.0) || !(K >= 2.0)) throw std::invalid_argument("band test: needs records >= 1 and K >= 2");
+  if (!(h >= 0.0)) throw std::invalid_argument("band likelihood: the mean's variance share must be >= 0");
   d.assign(p, 0.0);
   v.assign(p * p, 0.0);
   std::vector<double> g(p);
   for (std::size_t b = 0; b < p; ++b) {
     if (!(mean[b] > 0.0) || !std::isfinite(y[b])) throw std::invalid_argument("band test: a band without power");
     const double s = cov[b * p + b], vm = log_mean_variance(s, M), vk = log_mean_variance(s, K);
-    g[b] = s > 0.0 ? std::sqrt((vm + vk) / s) : std::sqrt(1.0 / M + 1.0 / K);  // the limit s -> 0
+    g[b] = s > 0.0 ? std::sqrt((vm + h * vk) / s) : std::sqrt(1.0 / M + h / K);  // the limit s -> 0
     d[b] = y[b] - (std::log(mean[b]) + 0.5 * (vk - vm));
   }
   for (std::size_t b = 0; b < p; ++b)
     for (std::size_t c = 0; c < p; ++c) v[b * p + c] = g[b] * cov[b * p + c] * g[c];
+}
+
+}  // namespace
+
+// Each band's variance from Fenton-Wilkinson, the correlations those of S: V stays S scaled band by
+// band, so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not (D-26a).
+void band_deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
+                    std::vector<double>& d, std::vector<double>& v) {
+  deviation(y, mean, cov, p, K, M, 1.0, d, v);
 }
 
 double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size_t p, double* log_det) {
@@ -69,19 +80,30 @@ BandTestResult band_test(const double* measured_log, const double* mean, const d
   return r;
 }
 
+double likelihood_temper(double n, std::size_t p) {
+  // The covariance is estimated with n dof: its inverse overstates the precision by n / (n - p - 1) and
+  // the weights' noise adds (n - 1) / (n - p) to the estimate's variance (D-27b). ln L is tempered by the
+  // inverse of both: the maximum stays the Gaussian one, the profile intervals widen to keep their level.
+  const double pp = static_cast<double>(p);
+  if (!(n - pp - 1.0 > 0.0)) throw std::invalid_argument("band likelihood: needs K > p + 2 realisations");
+  return (n - pp) * (n - pp - 1.0) / (n * (n - 1.0));
+}
+
 double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                            std::uint64_t realisations, double records) {
+  return band_log_likelihood(measured_log, mean, covariance, p, realisations, records, LikelihoodTerms{});
+}
+
+double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                           std::uint64_t realisations, double records, const LikelihoodTerms& terms) {
   std::vector<double> d, v;
-  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, terms.mean_share, d, v);
+  if (terms.table)
+    for (std::size_t i = 0; i < p * p; ++i) v[i] += terms.table[i];
   double log_det = 0.0;
   const double t2 = whitened_square(d, v, p, &log_det);
-  // The covariance is estimated from K realisations (n = K - 1 dof): its inverse overstates the
-  // precision by n / (n - p - 1) and the weights' noise adds (n - 1) / (n - p) to the estimate's
-  // variance (D-27b). ln L is tempered by the inverse of both: the maximum stays the Gaussian one,
-  // the profile intervals widen to keep their level.
-  const double n = static_cast<double>(realisations) - 1.0, pp = static_cast<double>(p);
-  if (!(n - pp - 1.0 > 0.0)) throw std::invalid_argument("band likelihood: needs K > p + 2 realisations");
-  return -0.5 * (n - pp) * (n - pp - 1.0) / (n * (n - 1.0)) * (t2 + log_det);
+  const double n = terms.covariance_dof > 0.0 ? terms.covariance_dof : static_cast<double>(realisations) - 1.0;
+  return -0.5 * likelihood_temper(n, p) * (t2 + log_det);
 }
 
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,

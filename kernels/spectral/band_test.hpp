@@ -50,6 +50,25 @@ BandTestResult band_test(const double* measured_log, const double* mean, const d
 double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                            std::uint64_t realisations, double records);
 
+// The terms a fit's likelihood adds to D-27a. mean_share h: the model mean's own variance is h V_K
+// (1: one run's K-realisation mean; a response surface's leverage h(u), D-27i), the offset of d keeps
+// the whole V_K (each run's log of a mean is biased by it). covariance_dof: the degrees of freedom of
+// S in c (0: K - 1 of one run; S pooled over runs has more, D-27i). table: c_T Sigma_T (p x p,
+// natural log squared, already times its factor; null: none) added to V (D-31a).
+struct LikelihoodTerms {
+  double mean_share = 1.0;
+  double covariance_dof = 0.0;
+  const double* table = nullptr;
+};
+
+// ln L of D-27a with those terms; with the defaults it is band_log_likelihood above, bit for bit.
+double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                           std::uint64_t realisations, double records, const LikelihoodTerms& terms);
+
+// D-27b's c for S of n degrees of freedom and p bands: (n - p)(n - p - 1) / (n (n - 1)); throws
+// std::invalid_argument for n <= p + 1.
+double likelihood_temper(double n, std::size_t p);
+
 // The same T^2 with d and V written out plainly and a Gauss-Jordan inverse, for tests.
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                               std::uint64_t realisations, double records);

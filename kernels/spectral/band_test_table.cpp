@@ -1,6 +1,7 @@
 #include "kernels/spectral/band_test_table.hpp"
 
 #include <Eigen/Dense>
+#include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 #include <algorithm>
 #include <cmath>
@@ -90,11 +91,53 @@ void bartlett_wishart(std::size_t q, double nu, const double* u, double* a) {
   Eigen::Map<RowMatrix>(a, static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) = l * l.transpose();
 }
 
-BandTestResult band_test_with_table(const double* measured_log, const double* mean, const double* covariance,
-                                    std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
-                                    const DrawUniforms& uniform, std::size_t draws) {
-  if (!(table.factor > 0.0) || table.covariance == nullptr || draws == 0)
-    return band_test(measured_log, mean, covariance, p, realisations, records);
+namespace {
+
+// T^2 = d^T V^{-1} d, or of C^T d and C^T V C when C is given (D-27j); false when V is not positive definite.
+bool statistic(const Matrix* c, const Vector& d, const Matrix& v, double& t2) {
+  if (!c) {
+    const Eigen::LLT<Matrix> llt(v);
+    if (llt.info() != Eigen::Success) return false;
+    t2 = llt.solve(d).dot(d);
+    return true;
+  }
+  const Vector dc = c->transpose() * d;
+  const Eigen::LLT<Matrix> llt(c->transpose() * v * *c);
+  if (llt.info() != Eigen::Success) return false;
+  t2 = llt.solve(dc).dot(dc);
+  return true;
+}
+
+// D-26's F law of T^2 in p' = p - q dimensions after the projection C (D-27j).
+BandTestResult projected_f_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                                std::uint64_t realisations, double records, const Matrix& c) {
+  BandTestResult r;
+  r.needed = p + kExtraRealisations;
+  if (p == 0 || realisations < r.needed) return r;
+  const auto n = static_cast<Eigen::Index>(p);
+  std::vector<double> d, v;
+  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
+  double t2 = 0.0;
+  if (!statistic(&c, Eigen::Map<const Vector>(d.data(), n), Eigen::Map<const RowMatrix>(v.data(), n, n), t2))
+    throw std::invalid_argument("band test: the band covariance is not positive definite");
+  const double nu = static_cast<double>(realisations - 1), pp = static_cast<double>(c.cols());
+  r.defined = true;
+  r.t2 = t2;
+  r.dof1 = pp;
+  r.dof2 = nu - pp + 1.0;
+  r.f = r.dof2 / (nu * pp) * t2;
+  r.p_value = boost::math::cdf(boost::math::complement(boost::math::fisher_f(r.dof1, r.dof2), r.f));
+  return r;
+}
+
+BandTestResult table_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                          std::uint64_t realisations, double records, const TableTerm& table,
+                          const DrawUniforms& uniform, std::size_t draws, const Matrix* c) {
+  const auto untabled = [&] {
+    return c ? projected_f_test(measured_log, mean, covariance, p, realisations, records, *c)
+             : band_test(measured_log, mean, covariance, p, realisations, records);
+  };
+  if (!(table.factor > 0.0) || table.covariance == nullptr || draws == 0) return untabled();
   BandTestResult r;
   r.needed = p + kExtraRealisations;
   if (p == 0 || realisations < r.needed) return r;
@@ -119,7 +162,7 @@ BandTestResult band_test_with_table(const double* measured_log, const double* me
     u = table_factor(t_full);
     rank = static_cast<std::size_t>(u.cols());
   }
-  if (rank == 0) return band_test(measured_log, mean, covariance, p, realisations, records);
+  if (rank == 0) return untabled();
   if (!(table.dof > (table.independent ? 0.0 : static_cast<double>(rank) - 1.0)) || !std::isfinite(table.dof))
     throw std::invalid_argument("band test: the table term's degrees of freedom must exceed its rank - 1");
   const Matrix t_used = table.independent ? Matrix(t_diag.asDiagonal()) : Matrix(u * u.transpose());
@@ -130,9 +173,9 @@ BandTestResult band_test_with_table(const double* measured_log, const double* me
   Matrix vv = Eigen::Map<const RowMatrix>(v.data(), n, n);
   vv += table.factor * t_used;
   const Eigen::LLT<Matrix> llt(vv);
-  if (llt.info() != Eigen::Success)
+  double t2 = 0.0;
+  if (llt.info() != Eigen::Success || !statistic(c, Eigen::Map<const Vector>(d.data(), n), vv, t2))
     throw std::invalid_argument("band test: the band covariance is not positive definite");
-  const double t2 = llt.solve(Eigen::Map<const Vector>(d.data(), n)).dot(Eigen::Map<const Vector>(d.data(), n));
 
   // The bootstrap (D-31b): estimates drawn about the observed ones, d* from the law they give.
   const Eigen::LLT<Matrix> s_llt(s);
@@ -166,21 +209,43 @@ BandTestResult band_test_with_table(const double* measured_log, const double* me
     Vector z(n);
     standard_normals(uni.data() + ns + nt, p, z.data());
     const Vector d_star = lv * z + offset - offset_star;
-    const Eigen::LLT<Matrix> star(v_star);
-    if (star.info() != Eigen::Success) {
-      ++exceed;  // a draw whose covariance breaks down counts against the model: the p-value stays conservative
-      continue;
-    }
-    if (star.solve(d_star).dot(d_star) >= t2) ++exceed;
+    double t2_star = 0.0;
+    // A draw whose covariance breaks down counts against the model: the p-value stays conservative.
+    if (!statistic(c, d_star, v_star, t2_star) || t2_star >= t2) ++exceed;
   }
+  const double pp = c ? static_cast<double>(c->cols()) : static_cast<double>(p);
   r.defined = true;
   r.t2 = t2;
-  r.dof1 = static_cast<double>(p);
-  r.dof2 = nu - static_cast<double>(p) + 1.0;
-  r.f = r.dof2 / (nu * static_cast<double>(p)) * t2;
+  r.dof1 = pp;
+  r.dof2 = nu - pp + 1.0;
+  r.f = r.dof2 / (nu * pp) * t2;
   r.draws = draws;
   r.p_value = (1.0 + static_cast<double>(exceed)) / (1.0 + static_cast<double>(draws));
   return r;
+}
+
+}  // namespace
+
+BandTestResult band_test_with_table(const double* measured_log, const double* mean, const double* covariance,
+                                    std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
+                                    const DrawUniforms& uniform, std::size_t draws) {
+  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr);
+}
+
+BandTestResult band_test_fitted(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                                std::uint64_t realisations, double records, const double* jacobian, std::size_t q,
+                                const TableTerm& table, const DrawUniforms& uniform, std::size_t draws) {
+  if (q == 0 || jacobian == nullptr)
+    return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr);
+  if (q >= p) throw std::invalid_argument("band test: as many fitted keys as bands leave nothing to test");
+  const auto n = static_cast<Eigen::Index>(p), k = static_cast<Eigen::Index>(q);
+  // C: the last p - q columns of Q in J = Q R (Householder), orthonormal and orthogonal to J's columns.
+  const Matrix j = Eigen::Map<const RowMatrix>(jacobian, n, k);
+  const Eigen::ColPivHouseholderQR<Matrix> qr(j);
+  if (qr.rank() < k) throw std::invalid_argument("band test: the fitted keys' band-log derivatives are dependent");
+  const Matrix full = qr.householderQ() * Matrix::Identity(n, n);
+  const Matrix c = full.rightCols(n - k);
+  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, &c);
 }
 
 }  // namespace rollspec::spectral

@@ -43,6 +43,19 @@ BandTestResult band_test_with_table(const double* measured_log, const double* me
                                     std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
                                     const DrawUniforms& uniform, std::size_t draws);
 
+// D-27j: the combined test of a fit, its search accounted for. The q fitted keys move the model's band
+// logs along the columns of J (p x q, row-major: d ln m_b / d u_k at the estimate), so the part of d they
+// can absorb is no evidence against the model: with C (p x p', p' = p - q) an orthonormal basis of the
+// complement of J's columns,
+//   T^2 = (C^T d)^T (C^T V C)^{-1} (C^T d),
+// Hotelling's statistic in p' dimensions: F = (nu - p' + 1) / (nu p') T^2 ~ F(p', nu - p' + 1) (the test
+// of a linear structure of the mean, Rao 1959), or, with a table term, D-31b's bootstrap with every draw
+// projected the same way. q = 0 (or J null) is band_test_with_table itself. Throws as it does, and for
+// q >= p or a J of rank below q.
+BandTestResult band_test_fitted(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
+                                std::uint64_t realisations, double records, const double* jacobian, std::size_t q,
+                                const TableTerm& table, const DrawUniforms& uniform, std::size_t draws);
+
 // The variance term D-31 adds to each band of a prediction interval, in the same units as Sigma_T.
 inline double table_prediction_variance(double table_variance, double factor) { return factor * table_variance; }
 

@@ -217,6 +217,71 @@ std::string offset_line(const compare::Verdict& v, double confidence) {
   return buf;
 }
 
+// Every option's value checked before any file is read.
+void check_options(const std::string& format, const compare::VerdictOptions& o, const po::variables_map& vm,
+                   double records, const io::SignalRequest& signal) {
+  if (format != "table" && format != "csv" && format != "json")
+    throw usage_error("--format " + format.substr(0, 200) + ": allowed: table, csv or json");
+  if (!(o.fmin >= 0.0) || std::isinf(o.fmin))
+    throw usage_error("--fmin " + number_text(o.fmin) + ": allowed: a finite frequency >= 0 Hz");
+  if (!(o.fmax > o.fmin))
+    throw usage_error("--fmax " + number_text(o.fmax) + ": allowed: a frequency above --fmin (" + number_text(o.fmin) +
+                      " Hz)");
+  if (!(o.test_level > 0.0 && o.test_level < 1.0))
+    throw usage_error("--test-level " + number_text(o.test_level) + ": allowed: a level 0 < A < 1, e.g. 0.05");
+  if (!(o.noise_margin_db >= 0.0 && std::isfinite(o.noise_margin_db)))
+    throw usage_error("--noise-margin " + number_text(o.noise_margin_db) + ": allowed: a finite margin >= 0 dB");
+  if (vm.count("measured-averages") && !(records >= 1.0 && std::isfinite(records)))
+    throw usage_error("--measured-averages " + number_text(records) +
+                      ": allowed: a finite count >= 1 of independent rolls");
+  if (vm.count("skip-rows") && signal.skip_rows < 0)
+    throw usage_error("--skip-rows " + std::to_string(signal.skip_rows) +
+                      ": allowed: a whole number >= 0 (lines before the header)");
+  if (vm.count("fs") && !(signal.fs > 0.0 && std::isfinite(signal.fs)))
+    throw usage_error("--fs " + number_text(signal.fs) + ": allowed: a finite sample rate > 0 Hz");
+}
+
+// --format csv: the band table only (one header line), for pandas and numpy's readers.
+std::string csv_text(const compare::Verdict& v, bool predict, bool has_interval) {
+  std::string text =
+      "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,"
+      "prediction_upper_db,noise_db,use,inside\n";
+  for (const auto& x : v.rows) {
+    const bool in = predict ? x.inside_prediction : x.inside_ci;
+    text += number_text(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," +
+            cell(x.ci_lower) + "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
+            cell(x.noise) + "," + compare::band_use_name(x.use) + "," + (has_interval ? (in ? "1" : "0") : "") + "\n";
+  }
+  return text;
+}
+
+// --format table: the question, a row per band, the warnings, the level offset and the combined test.
+std::string table_text(const compare::Verdict& v, const io::BandLevels& b, bool predict) {
+  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
+  std::string text = "question: " + v.question + "\n";
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
+                "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
+  text += buf;
+  for (const auto& x : v.rows) {
+    const bool in = predict ? x.inside_prediction : x.inside_ci;
+    char ci[40] = "", pi[40] = "";
+    std::snprintf(ci, sizeof ci, "%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
+    if (predict) std::snprintf(pi, sizeof pi, "%7.2f..%-7.2f", x.pred_lower, x.pred_upper);
+    const std::string mark = x.use != compare::BandUse::test ? compare::band_use_name(x.use)
+                             : has_interval                  ? (in ? "yes" : "no")
+                                                             : "-";
+    std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured,
+                  x.delta, ci, pi, mark.c_str());
+    text += buf;
+  }
+  for (const auto& w : v.warnings) text += "WARNING: " + w + "\n";
+  text += offset_line(v, b.confidence);
+  if (predict) text += "combined_test: " + v.test.verdict + "\n";
+  std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", v.rms_db, v.inside, v.judged);
+  return text + buf;
+}
+
 }  // namespace
 
 int compare_command(const Args& args) {
@@ -257,25 +322,7 @@ int compare_command(const Args& args) {
   pos.add("result", 1).add("measurement", -1);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (format != "table" && format != "csv" && format != "json")
-    throw usage_error("--format " + format.substr(0, 200) + ": allowed: table, csv or json");
-  if (!(o.fmin >= 0.0) || std::isinf(o.fmin))
-    throw usage_error("--fmin " + number_text(o.fmin) + ": allowed: a finite frequency >= 0 Hz");
-  if (!(o.fmax > o.fmin))
-    throw usage_error("--fmax " + number_text(o.fmax) + ": allowed: a frequency above --fmin (" + number_text(o.fmin) +
-                      " Hz)");
-  if (!(o.test_level > 0.0 && o.test_level < 1.0))
-    throw usage_error("--test-level " + number_text(o.test_level) + ": allowed: a level 0 < A < 1, e.g. 0.05");
-  if (!(o.noise_margin_db >= 0.0 && std::isfinite(o.noise_margin_db)))
-    throw usage_error("--noise-margin " + number_text(o.noise_margin_db) + ": allowed: a finite margin >= 0 dB");
-  if (vm.count("measured-averages") && !(records >= 1.0 && std::isfinite(records)))
-    throw usage_error("--measured-averages " + number_text(records) +
-                      ": allowed: a finite count >= 1 of independent rolls");
-  if (vm.count("skip-rows") && signal.skip_rows < 0)
-    throw usage_error("--skip-rows " + std::to_string(signal.skip_rows) +
-                      ": allowed: a whole number >= 0 (lines before the header)");
-  if (vm.count("fs") && !(signal.fs > 0.0 && std::isfinite(signal.fs)))
-    throw usage_error("--fs " + number_text(signal.fs) + ": allowed: a finite sample rate > 0 Hz");
+  check_options(format, o, vm, records, signal);
   signal.scale_given = vm.count("scale") > 0;
   o.same_surface = vm.count("same-surface") > 0;
   o.floor_check = vm.count("keep-floor-bands") == 0;
@@ -351,50 +398,19 @@ int compare_command(const Args& args) {
     return 0;
   }
   const bool predict = m.records > 0.0 && b.realisations >= spectral::kMinRealisationsForInterval;
-  const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
-  std::string text;
-  char buf[320];
   if (format == "csv") {
-    text +=
-        "centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,prediction_lower_db,"
-        "prediction_upper_db,noise_db,use,inside\n";
-    for (const auto& x : v.rows) {
-      const bool in = predict ? x.inside_prediction : x.inside_ci;
-      text += number_text(x.centre) + "," + cell(x.simulated) + "," + cell(x.measured) + "," + cell(x.delta) + "," +
-              cell(x.ci_lower) + "," + cell(x.ci_upper) + "," + cell(x.pred_lower) + "," + cell(x.pred_upper) + "," +
-              cell(x.noise) + "," + compare::band_use_name(x.use) + "," + (has_interval ? (in ? "1" : "0") : "") + "\n";
-    }
-    std::fputs(text.c_str(), stdout);
+    std::fputs(csv_text(v, predict, b.realisations >= spectral::kMinRealisationsForInterval).c_str(), stdout);
     std::cerr << "rollspec compare: question: " << v.question << "\n" << offset_line(v, b.confidence);
     if (predict) std::cerr << "combined_test: " << v.test.verdict << "\n";
     return 0;
   }
-  text += "result " + result + " (" + std::to_string(b.realisations) + " realisations), sensor " + b.sensor +
-          "; measurement " + m.source + (table ? ", column " + (column.empty() ? std::string("psd") : column) : "") +
-          (m.records_source.empty() ? "" : " (" + m.records_source + ")") + "\n";
+  std::string text = "result " + result + " (" + std::to_string(b.realisations) + " realisations), sensor " + b.sensor +
+                     "; measurement " + m.source +
+                     (table ? ", column " + (column.empty() ? std::string("psd") : column) : "") +
+                     (m.records_source.empty() ? "" : " (" + m.records_source + ")") + "\n";
   if (!loss.warning.empty()) text += "WARNING: " + loss.warning + "\n";
   if (!loss.note.empty()) text += "note: " + loss.note + "\n";
-  text += "question: " + v.question + "\n";
-  std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
-                "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
-  text += buf;
-  for (const auto& x : v.rows) {
-    const bool in = predict ? x.inside_prediction : x.inside_ci;
-    char ci[40] = "", pi[40] = "";
-    std::snprintf(ci, sizeof ci, "%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
-    if (predict) std::snprintf(pi, sizeof pi, "%7.2f..%-7.2f", x.pred_lower, x.pred_upper);
-    const std::string mark = x.use != compare::BandUse::test ? compare::band_use_name(x.use)
-                             : has_interval                  ? (in ? "yes" : "no")
-                                                             : "-";
-    std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured,
-                  x.delta, ci, pi, mark.c_str());
-    text += buf;
-  }
-  for (const auto& w : v.warnings) text += "WARNING: " + w + "\n";
-  text += offset_line(v, b.confidence);
-  if (predict) text += "combined_test: " + v.test.verdict + "\n";
-  std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", v.rms_db, v.inside, v.judged);
-  text += buf;
+  text += table_text(v, b, predict);
   std::fputs(text.c_str(), stdout);
   return 0;
 }

@@ -14,9 +14,11 @@
 
 #include "kernels/spectral/fit_search.hpp"
 #include "src/cli/commands.hpp"
+#include "src/cli/fit_goodness.hpp"
 #include "src/cli/fit_journal.hpp"
 #include "src/cli/fit_model.hpp"
 #include "src/cli/fit_report.hpp"
+#include "src/cli/fit_surface.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
@@ -27,10 +29,6 @@ namespace rollspec::cli {
 namespace {
 
 using io::number_text;
-
-// chi2_1(0.95) / 2: the rise of -ln L that bounds a 95 % profile-likelihood interval.
-constexpr double kProfileRise = 3.841458820694124 / 2.0;
-constexpr double kUnitTolerance = 1e-3;  // of the interval ends, in the unit box
 
 // A directory for the runs' result files, removed with everything in it when the fit ends.
 struct TempDir {
@@ -116,9 +114,10 @@ void say_run_warnings(const FitModel& model, const FitInputs& in) {
                    line.c_str());
 }
 
-// The search, the profile-likelihood intervals and the tests at the best fit (kernels/spectral D-27).
-FitReport fit_search(FitModel& model, const FitInputs& in) {
-  FitReport report;
+// Where common random numbers hold: Nelder-Mead on ln L of the study's seed, the profile-likelihood
+// intervals and the Hessian's correlation (kernels/spectral D-27c-e).
+void crn_search(FitModel& model, const FitInputs& in, FitReport& report, std::vector<double>& best_u,
+                std::vector<std::vector<double>>& jacobians) {
   const std::size_t n = in.vary.size();
   const spectral::BoxObjective f = [&](const std::vector<double>& u) { return model.negative_log_likelihood(u); };
   const spectral::BoxMinimum best =
@@ -127,15 +126,7 @@ FitReport fit_search(FitModel& model, const FitInputs& in) {
     throw data_error(in.points[0].path + ": the study has no power in a compared band anywhere the search went");
   int extra = 0;
   for (std::size_t j = 0; j < n; ++j) {
-    std::vector<double> start;
-    for (std::size_t i = 0; i < n; ++i)
-      if (i != j) start.push_back(best.x[i]);
-    spectral::ProfileContinuation profile(f, n, j, best.x[j], start, 0.05, kUnitTolerance,
-                                          40 * static_cast<int>(n - 1));
-    const double lo =
-        spectral::profile_end(std::ref(profile), best.x[j], best.value, 0.0, kProfileRise, kUnitTolerance, &extra);
-    const double hi =
-        spectral::profile_end(std::ref(profile), best.x[j], best.value, 1.0, kProfileRise, kUnitTolerance, &extra);
+    const auto [lo, hi] = profile_interval(f, best.x, best.value, j, &extra);
     const VaryRange& v = in.vary[j];
     if (lo == 0.0 && hi == 1.0)
       throw data_error("--vary " + v.key + ": the measurement cannot identify " + v.key +
@@ -145,12 +136,48 @@ FitReport fit_search(FitModel& model, const FitInputs& in) {
     report.parameters.push_back({v.key, v.value(best.x[j]), v.value(lo), v.value(hi), lo == 0.0, hi == 1.0});
   }
   report.correlation = spectral::inverse_correlation(spectral::box_hessian(f, best.x, 0.02, &extra), n);
-  const std::vector<CombinedTest> tests = model.tests_at(best.x);
-  say_run_warnings(model, in);
-  for (std::size_t i = 0; i < in.points.size(); ++i)
-    report.points.push_back({in.points[i].path, in.points[i].at, tests[i], model.bands(i), in.points[i].records});
-  combine_point_tests(report);
   report.log_likelihood = -best.value;
+  best_u = best.x;
+  jacobians = crn_jacobians(model, best.x, kCoherenceStep);
+}
+
+// Where they do not: the response surface of replicates with seeds of their own (D-27i).
+void smoothed_search(FitModel& model, const FitInputs& in, FitReport& report, std::vector<double>& best_u,
+                     std::vector<std::vector<double>>& jacobians) {
+  const SurfaceFit s = surface_search(model, in);
+  for (std::size_t j = 0; j < in.vary.size(); ++j) {
+    const VaryRange& v = in.vary[j];
+    const bool interval = s.refused.empty();
+    report.parameters.push_back({v.key, v.value(s.best[j]), interval ? v.value(s.lower[j]) : NAN,
+                                 interval ? v.value(s.upper[j]) : NAN, interval && s.lower[j] == 0.0,
+                                 interval && s.upper[j] == 1.0});
+  }
+  if (!s.refused.empty())
+    report.no_interval = "the estimate is the smoothed likelihood's maximum, without an interval: " + s.refused;
+  report.correlation = s.correlation;
+  report.log_likelihood = -s.value;
+  report.objective.surface_runs = s.runs, report.objective.rounds = s.rounds;
+  report.objective.lack_of_fit_p = s.lack_of_fit_p;
+  best_u = s.best;
+  jacobians = s.jacobians;
+}
+
+// The start's probe decides how ln L is read; then the search, the intervals and the tests at the
+// best fit (kernels/spectral D-27).
+FitReport fit_search(FitModel& model, const FitInputs& in) {
+  FitReport report;
+  const Coherence c = model.probe(std::vector<double>(in.vary.size(), 0.5), kCoherenceStep);
+  report.objective.step = c.step, report.objective.incoherent_share = c.incoherent_share;
+  report.objective.common_random_numbers = c.holds;
+  std::vector<double> best;
+  std::vector<std::vector<double>> jacobians;
+  if (c.holds)
+    crn_search(model, in, report, best, jacobians);
+  else
+    smoothed_search(model, in, report, best, jacobians);
+  report.points = point_tests(model, in, best, jacobians);
+  say_run_warnings(model, in);
+  combine_point_tests(report);
   report.evaluations = model.runs();
   report.reused = model.reused();
   report.bands = model.bands();
@@ -164,7 +191,7 @@ const char* const kFitUsage =
     "usage: rollspec fit STUDY.ini MEASUREMENT.csv --vary section.key=lo:hi[:log] [--vary ...] --measured-averages M\n"
     "       rollspec fit STUDY.ini --measurement M1.csv --at section.key=value[,...] --measurement M2.csv --at ...\n"
     "                    --vary ... --measured-averages M [--measured-averages M2 ...]\n"
-    "                    [--set section.key=value ...] [--sensor NAME|K | --measured-position X]\n"
+    "                    [--set section.key=value ...] [--sensor NAME|K | --measured-position X] [--same-surface]\n"
     "                    [--column NAME] [--fmin HZ] [--fmax HZ] [--journal FILE] [--format text|json]\n"
     "\n"
     "Estimates the 1 to 3 study keys named by --vary (each searched in [lo, hi], `log`: on a log scale) from\n"
@@ -172,13 +199,19 @@ const char* const kFitUsage =
     "maximise the likelihood of the measured third-octave band levels under compare's prediction law\n"
     "(kernels/spectral D-27). Several measurements, each taken at its operating point (--at: the keys set\n"
     "in its runs only, e.g. ball.speed=3), are fitted jointly: the varied keys are shared and ln L is the\n"
-    "sum over the points. Every evaluation runs the study with its own seed (common random numbers).\n"
+    "sum over the points. Three runs at the start say whether common random numbers hold (D-27i): if they\n"
+    "do, every evaluation runs the study with its own seed and ln L is smooth; if not (impacts make the\n"
+    "runs chaotic in the keys), runs with seeds of their own are smoothed by a quadratic response surface,\n"
+    "and where no surface holds the interval the estimate is given without one, with the reason. A random\n"
+    "contact table's error enters the likelihood (V = G S G + 2 Sigma_T: a rig with another surface, D-31;\n"
+    "--same-surface: the table's own surface), estimated once at the start and held.\n"
     "Prints each key's estimate and 95 % profile-likelihood interval, the keys' correlation (from the\n"
-    "Hessian of ln L), the combined test of the best fit (D-26; several points: each point's and Fisher's\n"
-    "combination of them) and the number of study runs. A key the measurements cannot identify (its\n"
-    "likelihood flat over its range) is refused, named. --journal FILE records every evaluation: a fit\n"
-    "interrupted and run again with the same --journal reruns none it finished (a journal of another\n"
-    "study, measurement, option or build is refused).";
+    "Hessian of ln L), the combined test of the best fit corrected for the fitted keys (D-27j; several\n"
+    "points: each point's and Fisher's combination of them), compare's uncorrected test, and the number of\n"
+    "study runs. A key the measurements cannot identify (its likelihood flat over its range) is refused,\n"
+    "named. --journal FILE records every evaluation: a fit interrupted and run again with the same\n"
+    "--journal reruns none it finished (a journal of another study, measurement, option or build is\n"
+    "refused).";
 
 int fit_command(const Args& args) {
   po::options_description opts("options");
@@ -201,6 +234,7 @@ int fit_command(const Args& args) {
       "fmin", po::value(&fmin)->default_value(0.0, "0"), "lowest band edge (Hz)")(
       "fmax", po::value(&fmax)->default_value(INFINITY, "inf"), "highest band edge (Hz)")(
       "journal", po::value(&journal_path), "record evaluations here; reuse those of an interrupted identical fit")(
+      "same-surface", "the measurement was taken on the very surface the model's table was built on (D-31)")(
       "format", po::value(&format)->default_value("text", "text"), "text or json");
   po::positional_options_description pos;
   pos.add("study", 1).add("measurement", 1);
@@ -228,6 +262,7 @@ int fit_command(const Args& args) {
         throw usage_error("--set " + clip(s) + ": " + v.key + " is varied by --vary; allowed: one of the two");
   if (!std::filesystem::exists(study)) throw missing_input(study + ": no such study file");
   in.study = study, in.sets = sets, in.fmin = fmin, in.fmax = fmax;
+  in.same_surface = vm.count("same-surface") > 0;
   in.points = fit_points(files, ats, averages, in, column);
   check_fit_keys(in);
 

@@ -63,6 +63,7 @@ std::uint64_t fit_journal_key(const FitInputs& in, const std::string& column) {
   f.add("sensor " + in.sensor.name), f.add(in.sensor.position ? *in.sensor.position : NAN);
   f.add("column " + column), f.add(in.fmin), f.add(in.fmax);
   for (const auto& p : in.points) f.add_file(p.path), f.add("at " + p.at), f.add(p.records);
+  f.add(in.same_surface ? "same surface" : "new surface");
   return f.h;
 }
 
@@ -129,37 +130,45 @@ FitJournal::FitJournal(std::string path, std::uint64_t key) : path_(std::move(pa
       whole_ = false;
       break;
     }
-    std::istringstream s(text->substr(at, eol - at));
+    const std::string line = text->substr(at, eol - at);
     at = eol + 1;
-    std::vector<double> row;
-    for (std::string word; s >> word;) {
-      char* stop = nullptr;
-      row.push_back(std::strtod(word.c_str(), &stop));
-      if (*stop != '\0' || !std::isfinite(row.back())) row.clear(), s.setstate(std::ios::failbit);
+    const auto bar = line.find(';');
+    std::vector<double> point, values;
+    bool ok = bar != std::string::npos;
+    for (int half = 0; half < 2 && ok; ++half) {
+      std::istringstream s(half == 0 ? line.substr(0, bar) : line.substr(bar + 1));
+      auto& row = half == 0 ? point : values;
+      for (std::string word; s >> word;) {
+        char* stop = nullptr;
+        row.push_back(std::strtod(word.c_str(), &stop));
+        if (*stop != '\0' || !std::isfinite(row.back())) ok = false;
+      }
+      ok = ok && !row.empty();
     }
-    if (row.size() < 2)
-      throw data_error(path_ + ":" + std::to_string(number) + ": not a line of parameter values and -ln L");
-    const double value = row.back();
-    row.pop_back();
-    order_.emplace_back(row, value);
-    entries_.emplace(row, value);
+    if (!ok)
+      throw data_error(path_ + ":" + std::to_string(number) +
+                       ": not a line of an evaluation's key and values (numbers, then ';', then numbers)");
+    order_.emplace_back(point, values);
+    entries_.emplace(point, values);
   }
 }
 
-bool FitJournal::find(const std::vector<double>& u, double& value) const {
-  const auto hit = entries_.find(u);
+bool FitJournal::find(const std::vector<double>& key, std::vector<double>& values) const {
+  const auto hit = entries_.find(key);
   if (hit == entries_.end()) return false;
-  value = hit->second;
+  values = hit->second;
   return true;
 }
 
 namespace {
-std::string journal_line(const std::vector<double>& x, double v) {
+// "key ; values": the parameter vector (and a replicate's index), then what the fit read from it.
+std::string journal_line(const std::vector<double>& x, const std::vector<double>& v) {
   std::string line;
   char buf[32];
   for (const double c : x) std::snprintf(buf, sizeof buf, "%.17g ", c), line += buf;
-  std::snprintf(buf, sizeof buf, "%.17g\n", v);
-  return line + buf;
+  line += ";";
+  for (const double c : v) std::snprintf(buf, sizeof buf, " %.17g", c), line += buf;
+  return line + "\n";
 }
 
 void write_all(int fd, const std::string& bytes, const std::string& what) {
@@ -222,11 +231,11 @@ void FitJournal::append(const std::string& line) {
   ::close(fd);
 }
 
-void FitJournal::record(const std::vector<double>& u, double value) {
-  order_.emplace_back(u, value);
-  entries_.emplace(u, value);
+void FitJournal::record(const std::vector<double>& key, const std::vector<double>& values) {
+  order_.emplace_back(key, values);
+  entries_.emplace(key, values);
   if (whole_)
-    append(journal_line(u, value));
+    append(journal_line(key, values));
   else
     rewrite();
 }

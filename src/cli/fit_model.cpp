@@ -1,5 +1,6 @@
 #include "src/cli/fit_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
 #include "src/io/run_warning.hpp"
+#include "src/rng/philox_stream.hpp"
 
 namespace rollspec::cli {
 
@@ -108,6 +110,7 @@ FitModel::FitModel(const FitInputs& in, std::string temp_dir, FitJournal* journa
       journal_(journal),
       band_(in.points.size()),
       measured_db_(in.points.size()),
+      table_(in.points.size()),
       last_warnings_(in.points.size()) {}
 
 std::size_t FitModel::bands() const {
@@ -116,7 +119,8 @@ std::size_t FitModel::bands() const {
   return n;
 }
 
-io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u) {
+io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u, const std::vector<std::string>& extra,
+                                std::vector<double>* psd, double* df) {
   const std::string out = temp_dir_ + "/run-" + std::to_string(runs_) + ".h5";
   RunRequest request;
   request.study.file = in_.study;
@@ -131,6 +135,7 @@ io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u)
     std::snprintf(buf, sizeof buf, "%.17g", in_.vary[i].value(u[i]));
     sets.push_back(in_.vary[i].key + "=" + buf);
   }
+  sets.insert(sets.end(), extra.begin(), extra.end());
   ++runs_;
   {
     const io::RunWarningCapture capture;  // said once, for the run at the estimate (fit_command)
@@ -139,21 +144,61 @@ io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u)
   }
   if (!last_warnings_[point].empty()) ++warned_runs_;
   io::BandLevels b;
-  std::vector<double> psd;  // the row's mean PSD, for the point's first run only (check_band_rules)
-  double df = 0.0;
   {
     const io::Hdf5Reader r(out);
     io::check_filetype(r, io::kResultFileType, io::kResultSchemaMajor);
     b = io::read_band_levels(r, in_.sensor);
-    if (band_[point].empty()) psd = mean_psd_row(r, b.sensor, df);
+    if (psd) *psd = mean_psd_row(r, b.sensor, *df);
+    if (psd) seed_ = static_cast<std::uint64_t>(r.double_attribute("/", "seed"));
   }
   std::filesystem::remove(out);
-  if (band_[point].empty() && !b.pick_note.empty()) std::fprintf(stderr, "rollspec fit: %s\n", b.pick_note.c_str());
-  if (band_[point].empty()) {
-    choose_bands(point, b);
-    check_band_rules(point, b, psd, df);
-  }
   return b;
+}
+
+// The point's first run, at the start: its bands, and its table term (D-31), estimated here if the
+// study leaves it out, held for the whole fit.
+io::BandLevels FitModel::first_run(std::size_t point, const std::vector<double>& u) {
+  std::vector<double> psd;
+  double df = 0.0;
+  io::BandLevels b = run_at(point, u, {}, &psd, &df);
+  if (!b.pick_note.empty()) std::fprintf(stderr, "rollspec fit: %s\n", b.pick_note.c_str());
+  choose_bands(point, b);
+  check_band_rules(point, b, psd, df);
+  std::string refused;
+  if (b.table_error_missing && !in_.same_surface) {
+    try {
+      b = run_at(point, u, {"stiffness.table_error=jackknife"});
+    } catch (const UserError& e) {
+      if (e.exit_code() != EX_CONFIG) throw;
+      refused = e.what();
+    }
+  }
+  hold_table(point, b, refused);
+  return b;
+}
+
+void FitModel::hold_table(std::size_t point, const io::BandLevels& b, const std::string& refused) {
+  PointTable& t = table_[point];
+  t.random = b.table_units >= 2 || b.table_error_missing;
+  t.held = b;
+  if (!t.random) return;
+  const std::string units = std::to_string(b.table_units) + " units";
+  if (b.table_units >= 2 && !in_.same_surface) {
+    t.factor = compare::kNewSurfaceTableFactor;
+    t.covariance = io::table_log_covariance(b, band_[point]);
+    for (double& x : t.covariance) x *= t.factor;
+    t.question =
+        "a rig with another surface of this roughness: V = G S G + 2 Sigma_T (kernels/spectral D-31), "
+        "Sigma_T the " +
+        b.table + "'s error by the start point's jackknife over " + units +
+        ", held for the whole fit (every later run with stiffness.table_error = none); --same-surface "
+        "for the table's own surface";
+  } else if (in_.same_surface) {
+    t.question = "the very surface the model's " + b.table + " was built on (--same-surface: no table term)";
+  } else {
+    t.question = "the very surface the model's " + b.table + " was built on: its error could not be estimated (" +
+                 clip(refused) + "), so the fit leaves it out";
+  }
 }
 
 // The bands inside [fmin, fmax] that the point's measurement covers with power, as compare takes them.
@@ -208,38 +253,152 @@ void FitModel::check_band_rules(std::size_t point, const io::BandLevels& b, cons
   }
 }
 
+std::vector<std::string> FitModel::later_sets(std::size_t point) const {
+  if (!table_[point].random) return {};
+  return {"stiffness.table_error=none"};  // the term is held from the start (D-27, D-31)
+}
+
+PointRun FitModel::point_run(std::size_t point, const io::BandLevels& b) const {
+  const ChosenBands c = chosen_bands(b, band_[point], measured_db_[point]);
+  PointRun r{std::vector<double>(c.mean.size()), c.cov, b.realisations};
+  for (std::size_t k = 0; k < c.mean.size(); ++k) r.log_mean[k] = std::log(c.mean[k]);
+  return r;
+}
+
+std::vector<PointRun> FitModel::crn_runs(const std::vector<double>& u) {
+  const auto hit = crn_.find(u);
+  if (hit != crn_.end()) return hit->second;
+  std::vector<PointRun> runs;
+  for (std::size_t point = 0; point < in_.points.size(); ++point)
+    runs.push_back(point_run(point, run_at(point, u, later_sets(point))));
+  crn_.emplace(u, runs);
+  return runs;
+}
+
+Coherence FitModel::probe(const std::vector<double>& start, double step) {
+  std::vector<PointRun> centre;
+  for (std::size_t point = 0; point < in_.points.size(); ++point)
+    centre.push_back(point_run(point, first_run(point, start)));
+  crn_.emplace(start, centre);
+  std::vector<double> up = start, down = start;
+  for (std::size_t i = 0; i < start.size(); ++i) up[i] += step, down[i] -= step;
+  const std::vector<PointRun> a = crn_runs(up), z = crn_runs(down);
+  Coherence c;
+  c.step = step;
+  for (std::size_t point = 0; point < centre.size(); ++point) {
+    const std::size_t p = band_[point].size();
+    double share = 0.0;
+    for (std::size_t b = 0; b < p; ++b) {
+      const auto vk = [&](const PointRun& r) {
+        return spectral::log_mean_variance(r.cov[b * p + b], static_cast<double>(r.realisations));
+      };
+      const double second = a[point].log_mean[b] - 2.0 * centre[point].log_mean[b] + z[point].log_mean[b];
+      const double independent = vk(a[point]) + 4.0 * vk(centre[point]) + vk(z[point]);
+      share += independent > 0.0 ? second * second / independent / static_cast<double>(p) : 0.0;
+    }
+    c.incoherent_share = std::max(c.incoherent_share, share);
+  }
+  c.holds = c.incoherent_share < kCoherenceLimit;
+  return c;
+}
+
+double FitModel::point_log_likelihood(std::size_t point, const PointRun& run, double mean_share, double dof) const {
+  const std::size_t p = band_[point].size();
+  std::vector<double> y(p), mean(p);
+  for (std::size_t k = 0; k < p; ++k)
+    y[k] = measured_db_[point][k] * std::log(10.0) / 10.0, mean[k] = std::exp(run.log_mean[k]);
+  const PointTable& t = table_[point];
+  return spectral::band_log_likelihood(y.data(), mean.data(), run.cov.data(), p, run.realisations,
+                                       in_.points[point].records,
+                                       {mean_share, dof, t.covariance.empty() ? nullptr : t.covariance.data()});
+}
+
 double FitModel::negative_log_likelihood(const std::vector<double>& u) {
   const auto hit = cache_.find(u);
   if (hit != cache_.end()) return hit->second;
-  double value = 0.0;
-  if (journal_ && journal_->find(u, value)) {
+  // Runs made outside the search (the start's probe) are neither looked up in nor written to the
+  // journal: a resumed fit makes them again.
+  const bool journalled = journal_ && crn_.find(u) == crn_.end();
+  std::vector<double> values;
+  if (journalled && journal_->find(u, values)) {
     ++reused_;
-    cache_.emplace(u, value);
-    return value;
+    cache_.emplace(u, values[0]);
+    return values[0];
   }
-  for (std::size_t point = 0; point < in_.points.size(); ++point) {
-    const io::BandLevels b = run_at(point, u);
-    const ChosenBands c = chosen_bands(b, band_[point], measured_db_[point]);
+  const std::vector<PointRun> runs = crn_runs(u);
+  double value = 0.0;
+  for (std::size_t point = 0; point < runs.size(); ++point) {
     try {
-      value -= spectral::band_log_likelihood(c.y.data(), c.mean.data(), c.cov.data(), band_[point].size(),
-                                             b.realisations, in_.points[point].records);
+      value -= point_log_likelihood(point, runs[point], 1.0, 0.0);
     } catch (const std::invalid_argument&) {
       value = INFINITY;  // a point where the model has no power in a band: impossible
       break;
     }
   }
   cache_.emplace(u, value);
-  if (journal_) journal_->record(u, value);
+  if (journalled) journal_->record(u, {value});
   return value;
 }
 
-std::vector<CombinedTest> FitModel::tests_at(const std::vector<double>& u) {
-  std::vector<CombinedTest> tests;
-  for (std::size_t point = 0; point < in_.points.size(); ++point) {
-    const io::BandLevels b = run_at(point, u);
-    tests.push_back(combined_test(b, band_[point], measured_db_[point], in_.points[point].records, 0.05));
+std::vector<std::vector<double>> FitModel::log_means(const std::vector<double>& u) {
+  std::vector<std::vector<double>> out;
+  for (const PointRun& r : crn_runs(u)) out.push_back(r.log_mean);
+  return out;
+}
+
+std::vector<PointRun> FitModel::replicate(const std::vector<double>& u, std::uint64_t index) {
+  std::vector<double> key = u, values;
+  key.push_back(static_cast<double>(index));
+  std::vector<PointRun> runs;
+  if (journal_ && journal_->find(key, values)) {
+    ++reused_;
+    std::size_t at = 0;
+    for (std::size_t point = 0; point < in_.points.size(); ++point) {
+      const std::size_t p = band_[point].size();
+      if (values.size() < at + 1 + p + p * p) throw data_error("--journal: a replicate's line is cut short");
+      PointRun r;
+      r.realisations = static_cast<std::uint64_t>(values[at]);
+      r.log_mean.assign(values.begin() + static_cast<std::ptrdiff_t>(at + 1),
+                        values.begin() + static_cast<std::ptrdiff_t>(at + 1 + p));
+      r.cov.assign(values.begin() + static_cast<std::ptrdiff_t>(at + 1 + p),
+                   values.begin() + static_cast<std::ptrdiff_t>(at + 1 + p + p * p));
+      at += 1 + p + p * p;
+      runs.push_back(std::move(r));
+    }
+    return runs;
   }
-  return tests;
+  double draw = 0.0;
+  rng::PhiloxStream(seed_, index, rng::Stream::fit_replicate_seed).uniform_open(&draw, 1);
+  const std::string seed = "study.seed=" + std::to_string(static_cast<std::uint64_t>(draw * 9.0e18));
+  for (std::size_t point = 0; point < in_.points.size(); ++point) {
+    std::vector<std::string> extra = later_sets(point);
+    extra.push_back(seed);
+    runs.push_back(point_run(point, run_at(point, u, extra)));
+    values.push_back(static_cast<double>(runs.back().realisations));
+    values.insert(values.end(), runs.back().log_mean.begin(), runs.back().log_mean.end());
+    values.insert(values.end(), runs.back().cov.begin(), runs.back().cov.end());
+  }
+  if (journal_) journal_->record(key, values);
+  return runs;
+}
+
+std::vector<io::BandLevels> FitModel::runs_at(const std::vector<double>& u) {
+  std::vector<io::BandLevels> out;
+  for (std::size_t point = 0; point < in_.points.size(); ++point) {
+    io::BandLevels b = run_at(point, u, later_sets(point));
+    const io::BandLevels& held = table_[point].held;
+    if (held.table_units >= 2) {  // the term held from the start (D-31), as the likelihood has it
+      b.table_levels_db = held.table_levels_db;
+      b.table_units = held.table_units;
+      b.table_dof = held.table_dof;
+      b.table_variance_factor = held.table_variance_factor;
+      b.table = held.table;
+      b.table_independent_bands = held.table_independent_bands;
+      b.table_error_missing = false;
+    }
+    out.push_back(std::move(b));
+  }
+  return out;
 }
 
 }  // namespace rollspec::cli

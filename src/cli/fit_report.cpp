@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "kernels/spectral/fit_search.hpp"
+#include "src/cli/fit_model.hpp"
 
 namespace rollspec::cli {
 
@@ -32,29 +33,57 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
+// Fisher's combination of the points' p-values, or the one point's, with its verdict line.
+void combine(const std::vector<bool>& defined, const std::vector<double>& p_values,
+             const std::vector<std::string>& verdicts, bool& out_defined, double& out_p, std::string& out_verdict) {
+  if (p_values.size() == 1) {
+    out_defined = defined[0], out_p = p_values[0], out_verdict = verdicts[0];
+    return;
+  }
+  for (std::size_t i = 0; i < p_values.size(); ++i)
+    if (!defined[i]) {
+      out_verdict = "none (point " + std::to_string(i + 1) + ": " + verdicts[i] + ")";
+      return;
+    }
+  out_defined = true;
+  out_p = spectral::fisher_combined_p(p_values);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s at level 0.05: p = %.3g (Fisher's combination of the %zu points' tests)",
+                out_p < 0.05 ? "REJECTED" : "not rejected", out_p, p_values.size());
+  out_verdict = buf;
+}
+
+std::string objective_text(const FitObjective& o) {
+  char buf[480];
+  if (o.common_random_numbers)
+    std::snprintf(buf, sizeof buf,
+                  "common random numbers hold (the band logs' second difference over a step of %g of each range is "
+                  "%.2g %% of independent runs'): ln L of the study's seed, profile-likelihood intervals "
+                  "(kernels/spectral D-27d)",
+                  o.step, 100.0 * o.incoherent_share);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "common random numbers do not hold (the band logs' second difference over a step of %g of each "
+                  "range is %.3g %% of independent runs', above %g %%): ln L smoothed by a quadratic response "
+                  "surface of %d runs with seeds of their own, %d rounds, lack of fit p = %.2g (kernels/spectral "
+                  "D-27i)",
+                  o.step, 100.0 * o.incoherent_share, 100.0 * kCoherenceLimit, o.surface_runs, o.rounds,
+                  o.lack_of_fit_p);
+  return buf;
+}
+
 }  // namespace
 
 void combine_point_tests(FitReport& r) {
-  if (r.points.size() == 1) {
-    r.test_defined = r.points[0].test.result.defined;
-    r.p_value = r.points[0].test.result.p_value;
-    r.verdict = r.points[0].test.verdict;
-    return;
+  std::vector<bool> d, du;
+  std::vector<double> p, pu;
+  std::vector<std::string> v, vu;
+  for (const auto& x : r.points) {
+    d.push_back(x.fitted.defined), p.push_back(x.fitted.p_value), v.push_back(x.fitted_verdict);
+    du.push_back(x.test.result.defined), pu.push_back(x.test.result.p_value), vu.push_back(x.test.verdict);
   }
-  std::vector<double> p;
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    if (!r.points[i].test.result.defined) {
-      r.verdict = "none (point " + std::to_string(i + 1) + ": " + r.points[i].test.verdict + ")";
-      return;
-    }
-    p.push_back(r.points[i].test.result.p_value);
-  }
-  r.test_defined = true;
-  r.p_value = spectral::fisher_combined_p(p);
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%s at level 0.05: p = %.3g (Fisher's combination of the %zu points' tests)",
-                r.p_value < 0.05 ? "REJECTED" : "not rejected", r.p_value, p.size());
-  r.verdict = buf;
+  combine(d, p, v, r.test_defined, r.p_value, r.verdict);
+  combine(du, pu, vu, r.uncorrected_defined, r.p_value_uncorrected, r.verdict_uncorrected);
 }
 
 std::string fit_text(const FitReport& r) {
@@ -67,13 +96,18 @@ std::string fit_text(const FitReport& r) {
     std::snprintf(buf, sizeof buf, "joint fit over %zu points, %zu bands in all, K = %llu realisations per run\n",
                   r.points.size(), r.bands, static_cast<unsigned long long>(r.realisations));
   text += buf;
+  text += "objective: " + objective_text(r.objective) + "\n";
   std::snprintf(buf, sizeof buf, "%-28s %14s %14s %14s\n", "key", "estimate", "95%_lower", "95%_upper");
   text += buf;
   for (const auto& p : r.parameters) {
-    std::snprintf(buf, sizeof buf, "%-28s %14.6g %14.6g%s %14.6g%s\n", p.key.c_str(), p.estimate, p.lower,
-                  p.lower_at_range_end ? "*" : " ", p.upper, p.upper_at_range_end ? "*" : " ");
+    if (r.no_interval.empty())
+      std::snprintf(buf, sizeof buf, "%-28s %14.6g %14.6g%s %14.6g%s\n", p.key.c_str(), p.estimate, p.lower,
+                    p.lower_at_range_end ? "*" : " ", p.upper, p.upper_at_range_end ? "*" : " ");
+    else
+      std::snprintf(buf, sizeof buf, "%-28s %14.6g %14s  %14s\n", p.key.c_str(), p.estimate, "none", "none");
     text += buf;
   }
+  if (!r.no_interval.empty()) text += "no_interval: " + r.no_interval + "\n";
   if (r.parameters.size() > 1) {
     text += "correlation:";
     if (r.correlation.empty()) text += " none (ln L is not curved like a maximum there)";
@@ -85,10 +119,14 @@ std::string fit_text(const FitReport& r) {
     text += "\n";
   }
   for (const auto& p : r.parameters)
-    if (p.lower_at_range_end || p.upper_at_range_end) {
+    if (r.no_interval.empty() && (p.lower_at_range_end || p.upper_at_range_end)) {
       text += "*: the interval reaches the end of the --vary range there (widen the range to see where it ends)\n";
       break;
     }
+  for (std::size_t i = 0; i < r.points.size(); ++i)
+    if (!r.points[i].question.empty())
+      text += (r.points.size() > 1 ? "point " + std::to_string(i + 1) + " asks of: " : "question: ") +
+              r.points[i].question + "\n";
   std::snprintf(buf, sizeof buf, "log_likelihood: %.6g\n", r.log_likelihood);
   text += buf;
   if (r.points.size() > 1)
@@ -96,9 +134,11 @@ std::string fit_text(const FitReport& r) {
       const auto& p = r.points[i];
       std::snprintf(buf, sizeof buf, "point %zu: %s at %s: %zu bands, M = %g: ", i + 1, p.measurement.c_str(),
                     p.at.empty() ? "the study's keys" : p.at.c_str(), p.bands, p.records);
-      text += buf + p.test.verdict + "\n";
+      text += buf + p.fitted_verdict + "\n";
     }
-  text += "goodness_of_fit: " + r.verdict + "\nevaluations: " + std::to_string(r.evaluations) + "\n";
+  text += "goodness_of_fit: " + r.verdict + "\ngoodness_of_fit_uncorrected: " + r.verdict_uncorrected +
+          " (compare's test of the run at the estimate, blind to the fitted keys)\nevaluations: " +
+          std::to_string(r.evaluations) + "\n";
   if (r.reused > 0) text += "reused_from_journal: " + std::to_string(r.reused) + "\n";
   return text;
 }
@@ -108,9 +148,13 @@ std::string fit_json(const FitReport& r) {
   std::string text = "{\n  \"parameters\": {\n";
   for (std::size_t i = 0; i < n; ++i) {
     const auto& p = r.parameters[i];
-    text += "    " + quoted(p.key) + ": {\"estimate\": " + number(p.estimate) + ", \"interval\": [" + number(p.lower) +
-            ", " + number(p.upper) + "], \"interval_at_range_end\": [" + (p.lower_at_range_end ? "true" : "false") +
-            ", " + (p.upper_at_range_end ? "true" : "false") + "]}" + (i + 1 < n ? ",\n" : "\n");
+    const std::string interval =
+        r.no_interval.empty()
+            ? "[" + number(p.lower) + ", " + number(p.upper) + "], \"interval_at_range_end\": [" +
+                  (p.lower_at_range_end ? "true" : "false") + ", " + (p.upper_at_range_end ? "true" : "false") + "]"
+            : "null, \"interval_at_range_end\": null";
+    text += "    " + quoted(p.key) + ": {\"estimate\": " + number(p.estimate) + ", \"interval\": " + interval + "}" +
+            (i + 1 < n ? ",\n" : "\n");
   }
   text += "  },\n  \"correlation\": ";
   if (r.correlation.empty())
@@ -124,16 +168,30 @@ std::string fit_json(const FitReport& r) {
     }
     text += "]";
   }
-  text += ",\n  \"confidence_level\": 0.95,\n  \"log_likelihood\": " + number(r.log_likelihood) +
+  const FitObjective& o = r.objective;
+  text += ",\n  \"confidence_level\": 0.95,\n  \"no_interval\": " +
+          (r.no_interval.empty() ? std::string("null") : quoted(r.no_interval)) +
+          ",\n  \"objective\": {\"common_random_numbers\": " + (o.common_random_numbers ? "true" : "false") +
+          ", \"incoherent_share\": " + number(o.incoherent_share) + ", \"step\": " + number(o.step) +
+          ", \"incoherent_limit\": " + number(kCoherenceLimit) + ", \"method\": " +
+          quoted(o.common_random_numbers ? "profile likelihood of the study's seed" : "quadratic response surface") +
+          ", \"surface_runs\": " + std::to_string(o.surface_runs) + ", \"rounds\": " + std::to_string(o.rounds) +
+          ", \"lack_of_fit_p\": " + (o.common_random_numbers ? "null" : number(o.lack_of_fit_p)) +
+          ", \"text\": " + quoted(objective_text(o)) + "}" + ",\n  \"log_likelihood\": " + number(r.log_likelihood) +
           ",\n  \"p_value\": " + (r.test_defined ? number(r.p_value) : "null") +
-          ",\n  \"goodness_of_fit\": " + quoted(r.verdict) + ",\n  \"points\": [";
+          ",\n  \"goodness_of_fit\": " + quoted(r.verdict) +
+          ",\n  \"p_value_uncorrected\": " + (r.uncorrected_defined ? number(r.p_value_uncorrected) : "null") +
+          ",\n  \"goodness_of_fit_uncorrected\": " + quoted(r.verdict_uncorrected) + ",\n  \"points\": [";
   for (std::size_t i = 0; i < r.points.size(); ++i) {
     const auto& p = r.points[i];
     text += std::string(i ? "," : "") + "\n    {\"measurement\": " + quoted(p.measurement) +
             ", \"at\": " + quoted(p.at) + ", \"bands\": " + std::to_string(p.bands) +
             ", \"measured_averages\": " + number(p.records) +
-            ", \"p_value\": " + (p.test.result.defined ? number(p.test.result.p_value) : "null") +
-            ", \"goodness_of_fit\": " + quoted(p.test.verdict) + "}";
+            ", \"p_value\": " + (p.fitted.defined ? number(p.fitted.p_value) : "null") +
+            ", \"goodness_of_fit\": " + quoted(p.fitted_verdict) +
+            ", \"p_value_uncorrected\": " + (p.test.result.defined ? number(p.test.result.p_value) : "null") +
+            ", \"goodness_of_fit_uncorrected\": " + quoted(p.test.verdict) +
+            ", \"question\": " + (p.question.empty() ? std::string("null") : quoted(p.question)) + "}";
   }
   text += "\n  ],\n  \"bands\": " + std::to_string(r.bands) +
           ",\n  \"realisations\": " + std::to_string(r.realisations) +

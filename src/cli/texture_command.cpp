@@ -60,6 +60,37 @@ void say_profile_note(const study::TextureSection& tex, bool quiet) {
   const std::string note = texture_io::profile_note(tex);
   if (!note.empty() && !quiet) std::fprintf(stderr, "rollspec texture: note: %s\n", note.c_str());
 }
+// The isotropic surfaces of realisations 0..n_surf-1: their statistics printed, their heights written.
+void write_surfaces(io::Hdf5Writer& w, const texture_io::SurfaceGenerator& surfaces, std::uint64_t seed,
+                    std::size_t n_surf, const study::TextureSection& tex, const std::string& method, bool list,
+                    bool quiet) {
+  texture::Surface surf;
+  std::vector<double> heights;
+  std::vector<texture::HeightStatistics> stats;
+  for (std::size_t r = 0; r < n_surf; ++r) {
+    surfaces.generate(seed, r, surf);
+    heights.insert(heights.end(), surf.heights.begin(), surf.heights.end());
+    const auto st = texture::surface_statistics(surf);
+    refuse_overflow(tex, "surface", r, st, surf.heights.data(), surf.heights.size());
+    print_statistics("surface", r, st, true, !list);
+    stats.push_back(st);
+  }
+  print_statistics("surf_mean", n_surf, texture::mean_statistics(stats), true, quiet);
+  if (n_surf >= 2) print_statistics("surf_std", n_surf, texture::std_statistics(stats), true, quiet);
+  std::vector<double> xs(surf.nx), ys(surf.ny);
+  for (std::size_t i = 0; i < surf.nx; ++i) xs[i] = surf.dx * static_cast<double>(i);
+  for (std::size_t i = 0; i < surf.ny; ++i) ys[i] = surf.dy * static_cast<double>(i);
+  w.write("/surface/x", {surf.nx}, xs.data(), "m", "grid x");
+  w.write("/surface/y", {surf.ny}, ys.data(), "m", "grid y");
+  w.write("/surface/heights", {n_surf, surf.ny, surf.nx}, heights.data(), "m",
+          "surface heights z(y, x) per realisation");
+  w.make_scale("/surface/x", "x");
+  w.make_scale("/surface/y", "y");
+  w.attach_scale("/surface/heights", "/surface/y", 1);
+  w.attach_scale("/surface/heights", "/surface/x", 2);
+  w.attribute("/surface", "method", method);
+}
+
 }  // namespace
 
 int texture_command(const Args& args) {
@@ -178,33 +209,7 @@ int texture_command(const Args& args) {
     }
     w.attribute("/texture", "target_rms", std::sqrt(lines->target_variance()));
   }
-  if (n_surf) {
-    texture::Surface surf;
-    std::vector<double> heights;
-    std::vector<texture::HeightStatistics> stats;
-    for (std::size_t r = 0; r < n_surf; ++r) {
-      surfaces.generate(seed, r, surf);
-      heights.insert(heights.end(), surf.heights.begin(), surf.heights.end());
-      const auto st = texture::surface_statistics(surf);
-      refuse_overflow(tex, "surface", r, st, surf.heights.data(), surf.heights.size());
-      print_statistics("surface", r, st, true, !list);
-      stats.push_back(st);
-    }
-    print_statistics("surf_mean", n_surf, texture::mean_statistics(stats), true, quiet);
-    if (n_surf >= 2) print_statistics("surf_std", n_surf, texture::std_statistics(stats), true, quiet);
-    std::vector<double> xs(surf.nx), ys(surf.ny);
-    for (std::size_t i = 0; i < surf.nx; ++i) xs[i] = surf.dx * static_cast<double>(i);
-    for (std::size_t i = 0; i < surf.ny; ++i) ys[i] = surf.dy * static_cast<double>(i);
-    w.write("/surface/x", {surf.nx}, xs.data(), "m", "grid x");
-    w.write("/surface/y", {surf.ny}, ys.data(), "m", "grid y");
-    w.write("/surface/heights", {n_surf, surf.ny, surf.nx}, heights.data(), "m",
-            "surface heights z(y, x) per realisation");
-    w.make_scale("/surface/x", "x");
-    w.make_scale("/surface/y", "y");
-    w.attach_scale("/surface/heights", "/surface/y", 1);
-    w.attach_scale("/surface/heights", "/surface/x", 2);
-    w.attribute("/surface", "method", surface_keys.method);
-  }
+  if (n_surf) write_surfaces(w, surfaces, seed, n_surf, tex, surface_keys.method, list, quiet);
   target.check_kind = true;
   io::check_output_target(target);
   w.commit();

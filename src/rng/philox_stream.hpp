@@ -31,6 +31,10 @@ enum class Stream : std::uint64_t {
   // compare's and fit's parametric bootstrap of the combined test's law (kernels/spectral D-31): keyed
   // by (kVerdictSeed, draw), so the same inputs give the same p-value.
   verdict_bootstrap = 11,
+  // fit's replicate runs where common random numbers do not hold (kernels/spectral D-27i): replicate j of
+  // a fit of study seed s runs with the seed drawn from (s, j), so every replicate's realisations are
+  // independent of every other's and of the study seed's.
+  fit_replicate_seed = 12,
 };
 
 inline constexpr std::uint64_t kVerdictSeed = 0x726f6c6c73706563ULL;  // "rollspec"

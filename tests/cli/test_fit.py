@@ -29,6 +29,12 @@ def test_recovers_the_force_level_inside_its_interval(measured):
     assert out["correlation"] == [[1]]
     assert 0.0 < out["p_value"] <= 1.0
     assert 10 < out["evaluations"] < 100
+    # A linear scene: the start's probe finds common random numbers hold (kernels/spectral D-27i a), so the
+    # fit reads ln L of the study's seed; its test counts the fitted key (D-27j) beside compare's.
+    assert out["objective"]["common_random_numbers"] is True and out["objective"]["incoherent_share"] < 1e-6
+    assert out["no_interval"] is None and out["points"][0]["question"] is None
+    assert "9 bands less 1 fitted key," in out["goodness_of_fit"] and "F = " in out["goodness_of_fit"]
+    assert 0.0 < out["p_value_uncorrected"] <= 1.0
 
 
 def test_text_output_names_the_key_and_the_test(measured):
@@ -37,6 +43,7 @@ def test_text_output_names_the_key_and_the_test(measured):
              "--set", "spectrum.band_min=20", "--set", "spectrum.band_max=200", "--set", "study.realisations=40"])
     assert r.returncode == 0, r.stderr
     assert "force.level" in r.stdout and "goodness_of_fit:" in r.stdout and "evaluations:" in r.stdout
+    assert "objective: common random numbers hold" in r.stdout and "goodness_of_fit_uncorrected:" in r.stdout
 
 
 def test_a_key_that_does_not_change_the_bands_is_refused_by_name(measured):
