@@ -35,7 +35,7 @@ const char* const kCompareUsage =
     "                        [--unit U] [--scale X] [--fs HZ] [--time-column NAME|none] [--skip-rows N]\n"
     "                        [--roll-per-channel] [--measured-averages M] [--noise QUIET] [--noise-margin DB]\n"
     "                        [--keep-floor-bands] [--same-surface] [--fmin HZ] [--fmax HZ] [--test-level A]\n"
-    "                        [--point K|KEY=VALUE] [--format table|csv|json]\n"
+    "                        [--point K|section.key=value] [--format table|csv|json]\n"
     "\n"
     "MEASUREMENT is either the recordings themselves (CSV/text, WAV/FLAC/..., .mat, read as `rollspec psd` reads\n"
     "them: units from the file, each choice said in one line), one file per roll, or one PSD table\n"

@@ -10,6 +10,7 @@
 #include "src/error.hpp"
 #include "src/io/input_file.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/run_warning.hpp"
 
 namespace rollspec::cli {
 
@@ -66,6 +67,8 @@ void check_vary(const FitInputs& in, const study::KeyReader& base, const VaryRan
 }  // namespace
 
 void check_fit_keys(const FitInputs& in) {
+  // Only refusals are this check's; a warning at a range's end is the run's there, gathered with the others.
+  const io::RunWarningCapture quiet;
   io::require_regular_input(in.study, "study file");
   const study::Study base = load_with(in, {}, in.study);
   for (const auto& v : in.vary) check_vary(in, base, v);

@@ -34,7 +34,15 @@ LossEffect loss_effect(const PsdEnsemble& open, const PsdEnsemble& closed, const
     e.shift_db[i] = db * std::log(a.mean / b.mean);
     e.shift_se_db[i] = db * std::sqrt(std::max(rel, 0.0) / k);
     const auto ci = spectral::mean_interval(a, K, level);
-    if (!ci.defined()) continue;
+    if (!ci.defined()) {  // no interval (too few realisations): the largest shift is still said
+      if (e.judged == 0 && std::fabs(e.shift_db[i]) > largest) {
+        largest = std::fabs(e.shift_db[i]);
+        e.worst_db = e.shift_db[i];
+        e.worst_band = open.sensors[i / nb] + ", " + number_text(bands[i % nb].nominal) + " Hz";
+      }
+      continue;
+    }
+    if (e.judged == 0) largest = -1.0;  // the first band with an interval: judged bands only from here
     e.half_width_db[i] = 0.5 * db * std::log(ci.upper / ci.lower);
     ++e.judged;
     const double shift = std::fabs(e.shift_db[i]);
@@ -56,6 +64,13 @@ std::string loss_effect_sentence(double share, const LossEffect& e, bool& warnin
   const std::string against =
       "against the same realisations with a contact that never opens ([contact] loss = closed; kernels/spectral "
       "D-35)";
+  if (e.judged == 0) {  // nothing to hold a shift against, so nothing is claimed: a note with the shift
+    warning = false;
+    return "the ball lost contact " + std::string(pct) + " of the time, which shifts the bands by up to " + worst +
+           " (" + e.worst_band + ") " + against + "; with fewer than " +
+           std::to_string(spectral::kMinRealisationsForInterval) +
+           " realisations no band has an interval to judge that by ([study] realisations)";
+  }
   warning = e.moved > 0;
   if (!warning)
     return "the ball lost contact " + std::string(pct) + " of the time, which moves none of the " +

@@ -44,8 +44,10 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
 std::string dim(double v, const char* unit);
 void add_texture_relations(const study::KeyReader& s, const std::string& span_key, double span,
                            const std::string& span_what, std::vector<DimensionRelation>& out);
+// contact_grid: the grid is a contact's (the half-space solver's, the tube's floor), which needs a continuum
+// in each cell; the texture scene's grid is only where heights are drawn (an AFM's, below 10 nm, too).
 void add_surface_relations(const study::KeyReader& s, bool rough, double contact_radius,
-                           std::vector<DimensionRelation>& out);
+                           std::vector<DimensionRelation>& out, bool contact_grid = true);
 double e_star(double e1, double nu1, double e2, double nu2);
 double hertz_radius(const study::KeyReader& s, double e, double nu);
 void ball_relations(double a, double r, std::vector<DimensionRelation>& out);

@@ -30,7 +30,10 @@ bool self_affine_written(const study::KeyReader& s) {
 void add_texture_relations(const study::KeyReader& s, const std::string& span_key, double span,
                            const std::string& span_what, std::vector<DimensionRelation>& out) {
   // A self-affine source's keys, or any of them written for another source (a slip is a slip there too).
-  if (!s.has("texture.source") || (s.text("texture.source") != "self-affine" && !self_affine_written(s))) return;
+  // Measured profiles refuse the self-affine keys themselves, naming each (texture_io): nothing to relate.
+  if (!s.has("texture.source") || s.text("texture.source") == "profiles" ||
+      (s.text("texture.source") != "self-affine" && !self_affine_written(s)))
+    return;
   const double lr = s.real("texture.rolloff_wavelength"), ls = s.real("texture.short_wavelength");
   const double ll = s.real("texture.long_wavelength"), rms = s.real("texture.rms");
   const bool slope_kind = s.text("texture.rms_kind") == "slope";
@@ -81,14 +84,16 @@ void add_texture_relations(const study::KeyReader& s, const std::string& span_ke
 // [surface]: the grid the contact solver (or the texture scene) draws heights on, and for the seed
 // method its rms sigma and correlation lengths.
 void add_surface_relations(const study::KeyReader& s, bool rough, double contact_radius,
-                           std::vector<DimensionRelation>& out) {
+                           std::vector<DimensionRelation>& out, bool contact_grid) {
   if (!s.has("surface.spacing")) return;
   const double dx = s.real("surface.spacing"), patch = dx * static_cast<double>(s.integer("surface.nx"));
-  out.push_back({{"surface.spacing"},
-                 dx >= 1e-8,
-                 "a grid spacing of " + dim(dx, "m") +
-                     " puts fewer than a hundred atoms in a cell: the continuum half-space (D-6) does not hold "
-                     "there"});
+  // The shipped AFM rows are sampled at 2.3 nm: a texture drawn on their grid is no contact's.
+  if (contact_grid)
+    out.push_back({{"surface.spacing"},
+                   dx >= 1e-8,
+                   "a grid spacing of " + dim(dx, "m") +
+                       " puts fewer than a hundred atoms in a cell: the continuum half-space (D-6) does not hold "
+                       "there"});
   if (contact_radius > 0.0)
     out.push_back({{"surface.spacing", "ball.radius"},
                    dx <= contact_radius / 2.0,
@@ -195,7 +200,7 @@ std::vector<DimensionRelation> texture_relations(const study::KeyReader& s) {
   out.push_back({{"lines.spacing", "lines.length"},
                  length >= 16.0 * dx,
                  "a line of " + dim(length, "m") + " holds fewer than 16 samples at spacing " + dim(dx, "m")});
-  add_surface_relations(s, true, 0.0, out);
+  add_surface_relations(s, true, 0.0, out, false);
   return out;
 }
 

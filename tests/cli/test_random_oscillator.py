@@ -64,7 +64,7 @@ def test_compare_against_the_exact_psd(tmp_path):
     assert rms < 0.1 and total == 14 and inside >= 10
     r = run(["compare", out, meas, "--format", "csv", "--fmin", 20, "--fmax", 600])
     assert r.stdout.splitlines()[0] == ("centre_hz,simulated_db,measured_db,delta_db,ci_lower_db,ci_upper_db,"
-                                        "prediction_lower_db,prediction_upper_db,inside")
+                                        "prediction_lower_db,prediction_upper_db,noise_db,use,inside")
     # A measurement 3 dB higher is seen as 3 dB off and outside the interval.
     np.savetxt(meas, np.c_[freq[1:], 2 * exact[1:]], delimiter=",", header="frequency_hz,psd", comments="", fmt="%.17g")
     last = run(["compare", out, meas, "--fmin", 20, "--fmax", 600]).stdout.strip().splitlines()[-1]

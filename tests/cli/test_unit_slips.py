@@ -28,6 +28,8 @@ TIMEOUT = 10  # a refusal takes milliseconds; a study accepted starts its work a
 # Smaller is a real study: a smoother surface, down to the "smooth" the tests write as rms = 1e-20; an
 # atomic-force microscope's profile sampled below 1 nm.
 NOT_DIVIDED = {"texture.rms", "surface.sigma", "stiffness.ball_rms", "lines.spacing"}
+# The texture scene's grid is where heights are drawn, not a contact grid: an AFM's too (below 10 nm).
+NOT_DIVIDED_IN = {"texture": {"surface.spacing"}}
 # Wavelengths 10^3 smaller (nm) are a finer surface that exists; 10^6 smaller is below an atom.
 ONLY_MILLION = {"texture.short_wavelength", "texture.long_wavelength", "texture.rolloff_wavelength"}
 SHIPPED_ROLLOFF = ("the value seed 002's rig studies ship (50 mm): a roll-off at 5 cm on a 39-40 cm span is a "
@@ -128,7 +130,7 @@ def cases(scene):
                 continue
             micro = float(default) < 1e-3 if re.match(r"^[\d.e+-]+$", default or "") else False
             name = f"{section}.{key}"
-            smaller = () if name in NOT_DIVIDED else (1e-6,) if name in ONLY_MILLION else (1e-3, 1e-6)
+            smaller = () if name in NOT_DIVIDED | NOT_DIVIDED_IN.get(scene, set()) else (1e-6,) if name in ONLY_MILLION else (1e-3, 1e-6)
             for factor in (1e3, 1e6) + (smaller if micro and float(default) > 0 else ()):
                 out.append((study.name, section, key, value, factor))
     return out
