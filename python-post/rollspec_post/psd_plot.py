@@ -49,7 +49,7 @@ def read_psd(result):
         k = attr(f, "/psd", "realisations", int)
         level = attr(f, "/psd", "confidence_level")
         band_data = read_bands(f)
-        loss = text_attr(f["/contact"], "loss_of_contact_warning") if "/contact" in f else None
+        loss = loss_said(f)
     shape = (len(names), freq.size)
     if freq.size < 2 or any(v.shape != shape for v in (mean, lo, hi) + ((ref,) if ref is not None else ())):
         raise PostError(f"{result}: /psd/mean, ci_lower, ci_upper (and /reference/psd) must be sensors x "
@@ -60,12 +60,33 @@ def read_psd(result):
     return freq, mean, lo, hi, names, labels, ref, ref_label, units, k, level, band_data, loss
 
 
-def loss_note(ax, warning):
-    """The run's loss-of-contact warning on the PSD axes, in red at the top: a figure sent on alone
-    still says that its levels are those of a ball that flies (or of a linearised law past its validity)."""
-    return ax.text(0.5, 0.97, "LOSS OF CONTACT: " + warning, transform=ax.transAxes, ha="center", va="top",
-                   fontsize=7.5, color="#7b1d12", wrap=True, zorder=10,
-                   bbox={"boxstyle": "round", "facecolor": "#fdecea", "edgecolor": "#c0392b", "lw": 1.5})
+LOSS_DRAWN_SHARE = 0.05  # a note of loss of contact is drawn above this share (a warning always is)
+
+
+def loss_said(f):
+    """What the run said of its loss of contact that the figure must carry: ("warning", text) when it warned
+    (what the loss moved exceeds the bands' intervals, kernels/spectral D-35), ("note", text) when it noted a
+    loss above LOSS_DRAWN_SHARE (the ball flies; a law that models it), else None."""
+    if "/contact" not in f:
+        return None
+    warning = text_attr(f["/contact"], "loss_of_contact_warning")
+    if warning:
+        return "warning", warning
+    note = text_attr(f["/contact"], "loss_of_contact_note")
+    share = f["/contact/loss_of_contact_share"][()] if "/contact/loss_of_contact_share" in f else None
+    share = float(np.ravel(share)[0]) if share is not None and np.size(share) else 0.0
+    return ("note", note) if note and share > LOSS_DRAWN_SHARE else None
+
+
+def loss_note(ax, said):
+    """The run's loss-of-contact warning (red) or note (grey) on the PSD axes, at the top: a figure sent on
+    alone still says that its levels are those of a ball that flies (or of a linearised law past its validity)."""
+    kind, text = said
+    red = kind == "warning"
+    return ax.text(0.5, 0.97, ("LOSS OF CONTACT: " if red else "Loss of contact: ") + text, transform=ax.transAxes,
+                   ha="center", va="top", fontsize=7.5, color="#7b1d12" if red else "#333333", wrap=True, zorder=10,
+                   bbox={"boxstyle": "round", "facecolor": "#fdecea" if red else "#f2f2f2",
+                         "edgecolor": "#c0392b" if red else "#888888", "lw": 1.5 if red else 1.0})
 
 
 STYLES = ("default", "seed")
@@ -106,7 +127,7 @@ def plot_psd(result, out, measurement=None, bands=False, sensor=None, options=No
     names of the simulated mean and the measurement; `ylim` (low, high) in dB; `style` default or seed. Returns
     {"legend": labels, "comparison": compare's JSON or None, "loss_note": the loss-of-contact note drawn on the
     figure or None}. A result whose run warned of loss of contact (/contact@loss_of_contact_warning) gets that
-    warning drawn on the axes in red."""
+    warning drawn on the axes in red; one that noted a loss above 5 % of the time, the note in grey."""
     if xscale not in ("linear", "log"):
         raise PostError(f"--xscale {xscale}: allowed: linear or log", EX_USAGE)
     if style not in STYLES:

@@ -77,6 +77,7 @@ def read_result(path, sensor):
              "loss": scalar(f, "/contact/loss_of_contact_share"),
              "loss_std": scalar(f, "/contact/loss_of_contact_share_std"),
              "loss_warning": text_attr(f["/contact"], "loss_of_contact_warning") if "/contact" in f else None,
+             "loss_note": text_attr(f["/contact"], "loss_of_contact_note") if "/contact" in f else None,
              "law": text_attr(f["/contact"], "law") if "/contact" in f else None,
              "point": point_label(f)}
         r["confidence"] = r["bands"]["confidence"]
@@ -120,7 +121,8 @@ def loss_warning(r, threshold):
         return ""
     spread = f" (± {100 * r['loss_std']:.2g} % over realisations)" if r["loss_std"] is not None else ""
     above = r["loss"] is not None and np.isfinite(r["loss"]) and r["loss"] > threshold
-    said = f" The run warned: {esc(r['loss_warning'])}." if r.get("loss_warning") else ""
+    said = f" The run warned: {esc(r['loss_warning'])}." if r.get("loss_warning") else \
+        f" The run noted: {esc(r['loss_note'])}." if r.get("loss_note") else ""
     return (f'<div class="warning" role="alert"><strong>Loss of contact: {100 * r["loss"]:.3g} % of the time'
             f"{esc(spread)}</strong>{f', above the {100 * threshold:.3g} % this report flags' if above else ''}."
             f"{said} The ball leaves the surface: the contact force is not the linear response to the roughness, "

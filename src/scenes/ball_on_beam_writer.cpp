@@ -20,22 +20,30 @@
 
 namespace rollspec::scenes {
 
-void BallOnBeamWriter::write_loss_of_contact(io::Hdf5Writer& w, double share, const io::LossEffect& effect) const {
-  if (!(share > 0.0)) return;
-  bool warning = false;
-  std::string text;
-  if (linearised() && effect.measured) {
-    text = io::loss_effect_sentence(share, effect, warning);
-    const std::size_t nb = effect.shift_db.size() / std::max<std::size_t>(rows(), 1);
-    w.write("/bands/loss_of_contact_shift_db", {rows(), nb}, effect.shift_db.data(), "dB",
+void BallOnBeamWriter::write_loss_of_contact(io::Hdf5Writer& w, double share, const io::LossEffect& effect,
+                                             bool sized, std::size_t bands) const {
+  // D-35's shifts whenever the run sizes a loss, zero where the contact never opened (the run with a closed
+  // contact is then the same bits): every point of a sweep holds the same datasets.
+  if (sized) {
+    const std::size_t n = rows() * bands;
+    const std::vector<double> zero(n, 0.0);
+    const bool measured = effect.measured && effect.shift_db.size() == n;
+    w.write("/bands/loss_of_contact_shift_db", {rows(), bands}, measured ? effect.shift_db.data() : zero.data(), "dB",
             "band level as run minus with a contact that never opens, the same realisations (kernels/spectral D-35)");
-    w.write("/bands/loss_of_contact_shift_se_db", {rows(), nb}, effect.shift_se_db.data(), "dB",
+    w.write("/bands/loss_of_contact_shift_se_db", {rows(), bands},
+            measured ? effect.shift_se_db.data() : zero.data(), "dB",
             "standard error of loss_of_contact_shift_db from the pairs of realisations");
     for (const char* d : {"/bands/loss_of_contact_shift_db", "/bands/loss_of_contact_shift_se_db"}) {
       w.attach_scale(d, "/bands/sensor", 0);
       w.attach_scale(d, "/bands/centre_frequency", 1);
       w.attribute(d, "coordinates", std::string("nominal_frequency"));
     }
+  }
+  if (!(share > 0.0)) return;
+  bool warning = false;
+  std::string text;
+  if (linearised() && effect.measured) {
+    text = io::loss_effect_sentence(share, effect, warning);
   } else {
     text = loss_of_contact_warning(share, linearised());  // a law that models the loss: a note of its share
   }
@@ -92,7 +100,8 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
   w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
   w.attribute("/contact", "law", b_.law_name);
-  write_loss_of_contact(w, share, loss_effect);
+  const bool sized = linearised() && b_.contact_section.loss != "closed" && !spectra_only;
+  write_loss_of_contact(w, share, loss_effect, sized, io::result_bands(e.frequency, e.band_min, e.band_max).size());
   w.attribute("/contact", "static_compression", c_.static_compression);
   if (c_.contact_stiffness > 0.0) {  // what the step was checked against (D-23, B37b)
     w.attribute("/contact", "contact_period", 2.0 * M_PI * std::sqrt(b_.model.ball.mass / c_.contact_stiffness));
