@@ -64,11 +64,12 @@ def test_speeds_from_1cm_to_30m_per_second(tmp_path, speed, extra):
 
 def test_roughness_from_none_to_bouncing(tmp_path):
     # Expectation: a smooth beam never loses contact; 10 um rms roughness makes the ball bounce most
-    # of the time, and the spectra stay finite.
+    # of the time, and the spectra stay finite. (Cut at 40 um: down to the study's 4 um its slopes pass
+    # 45 degrees, which plan refuses.)
     r, out = run_rig(tmp_path, "contact.law=hertz", "texture.rms=1e-12")
     assert r.returncode == 0, r.stderr
     assert finite_result(out) == 0.0
-    r, out = run_rig(tmp_path, "contact.law=hertz", "texture.rms=10e-6")
+    r, out = run_rig(tmp_path, "contact.law=hertz", "texture.rms=10e-6", "texture.short_wavelength=40e-6")
     assert r.returncode == 0, r.stderr
     assert finite_result(out) > 0.5
 
