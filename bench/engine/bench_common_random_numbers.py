@@ -94,6 +94,21 @@ def measure(binary, work):
     return rows, data
 
 
+def is_sweeps_page(target):
+    """The how-to this script writes a section of: a regular UTF-8 file that holds its markers, or the
+    page before its first section (its title)."""
+    try:
+        text = Path(target).read_text()
+    except (OSError, UnicodeDecodeError):
+        return False
+    return BEGIN in text or text.startswith("# Sweeping")
+
+
+def check_doc():
+    """Before any work: the page is one this script may rewrite (else one line, no measurement lost)."""
+    bench_record.check_target(DOC, is_sweeps_page)
+
+
 def render():
     """The section of docs/howto/sweeps.md, from the record."""
     rec = bench_record.load(RECORD)
@@ -121,13 +136,14 @@ def render():
               "difference. There, judge a difference as that of independent ensembles (each point's interval); "
               "`rollspec fit` finds this out at its start and smooths its likelihood instead (docs/howto/fit.md).",
               "", END]
+    check_doc()
     doc = DOC.read_text()
     text = "\n".join(lines) + "\n"
     if BEGIN in doc:
         doc = doc[:doc.index(BEGIN)] + text + doc[doc.index(END) + len(END) + 1:]
     else:
         doc = doc.rstrip("\n") + "\n\n" + text
-    DOC.write_text(doc)
+    bench_record.replace_text(DOC, doc, own=is_sweeps_page)
     print(f"wrote {DOC}")
 
 
@@ -138,7 +154,9 @@ def main():
     a = ap.parse_args()
     if a.render:
         return render()
+    require_program(a.binary, "--binary")
     bench_record.check_target(RECORD, bench_record.is_record)
+    check_doc()
     start, cpu0, busy0 = time.time(), bench_record.own_cpu(), bench_record.busy_seconds()
     with tempfile.TemporaryDirectory() as work:
         rows, data = measure(a.binary, Path(work))
@@ -155,5 +173,16 @@ def main():
     return 0
 
 
+def guarded():
+    try:
+        return main()
+    except bench_record.RecordError as e:
+        sys.exit(f"bench_common_random_numbers: {e}")
+
+
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, str(ROOT / "python-post"))
+from rollspec_post.script_main import require_program, script_main  # noqa: E402
+
 if __name__ == "__main__":
-    sys.exit(main())
+    script_main(guarded)

@@ -110,15 +110,18 @@ def main():
     p.add_argument("--tables", type=int, default=20)
     p.add_argument("--models", type=int, default=0, help="tables whose models are compared (default: all)")
     p.add_argument("--rolls", type=int, default=25)
-    p.add_argument("--work")
+    p.add_argument("--work", help="a folder of its own for the runs (new, empty, or one it made); default: temporary")
     p.add_argument("--record")
     a = p.parse_args()
+    if a.tables < 2 or a.rolls < 1 or a.models < 0:
+        p.error(f"--tables {a.tables} --rolls {a.rolls} --models {a.models}: allowed: at least 2 tables, 1 roll, "
+                "0 or more models")
+    require_program(a.binary, "binary")
     study, description = SCENES[a.scene]
     study = ROOT / study
     record = Path(a.record) if a.record else ROOT / "bench" / "records" / f"table-verdict-{a.scene}.json"
     bench_record.check_target(record, own=bench_record.is_record)
-    work = Path(a.work) if a.work else Path(tempfile.mkdtemp(prefix="table-verdict-"))
-    work.mkdir(parents=True, exist_ok=True)
+    work = Path(own_folder(a.work, "bench_table_verdict")) if a.work else Path(tempfile.mkdtemp(prefix="table-verdict-"))
     (work / "tables").mkdir(exist_ok=True)
     # The study's own folder of tables stays untouched: the runs cache their tables under the work folder.
     sets = [f"stiffness.table_dir={work / 'tables'}"]
@@ -163,10 +166,16 @@ def main():
         shutil.rmtree(work, ignore_errors=True)
 
 
-if __name__ == "__main__":
+def guarded():
     try:
-        main()
-    except (BenchError, bench_record.RecordError, OSError) as e:
+        return main()
+    except (BenchError, bench_record.RecordError) as e:
         sys.exit(f"bench_table_verdict: {e}")
-    except KeyboardInterrupt:
-        sys.exit("bench_table_verdict: interrupted")
+
+
+sys.dont_write_bytecode = True  # nothing written into the sources
+sys.path.insert(0, str(ROOT / "python-post"))
+from rollspec_post.script_main import own_folder, require_program, script_main  # noqa: E402
+
+if __name__ == "__main__":
+    script_main(guarded)
