@@ -69,12 +69,14 @@ def coverage(tmp_path, study, K, M, K_ref, sets=()):
                                   "spectrum.band_min=100", "spectrum.band_max=2000"]),
     # Seed 001 beam R, law = table, about half the time out of contact, with a 4-surface table (fast
     # to build). Every study seed shares the table ([stiffness] table_seed): the intervals are
-    # conditional on it, and so is this check (its own sampling error: kernels/spectral D-28).
-    ("seed001-beam-r.ini", 25, 20, 1000, ["stiffness.realisations=4", "stiffness.table_dir={tmp}/tables"]),
+    # conditional on it (table_error = none), and so is this check (its own sampling error: D-28, D-30).
+    ("seed001-beam-r.ini", 25, 20, 1000, ["stiffness.realisations=4", "stiffness.table_dir={tmp}/tables",
+                                          "stiffness.table_error=none"]),
     # The seed 002 rig on its own route: the linearised law's blocked force from the contact solver
     # along strips of the texture (a solver table, built once, about 35 s CPU), shared by every study
-    # seed as above.
-    ("seed002-rig-1ms.ini", 25, 20, 1000, ["contact.blocked_force=solver", "stiffness.table_dir={tmp}/tables"]),
+    # seed as above (conditional on it: table_error = none).
+    ("seed002-rig-1ms.ini", 25, 20, 1000, ["contact.blocked_force=solver", "stiffness.table_dir={tmp}/tables",
+                                           "stiffness.table_error=none"]),
 ], ids=["random-oscillator", "ball-on-beam-loss-of-contact", "rolling-pipe", "table-law-loss-of-contact",
         "solver-table"])
 def test_nominal_95_percent_intervals_hold_the_large_k_mean_in_90_to_98_percent(request, tmp_path, study, K, M, K_ref,
@@ -110,8 +112,9 @@ def levels_db(e):
 def test_a_blocked_force_table_jackknife_holds_other_tables_mean_in_90_to_98_percent(tmp_path):
     (tmp_path / "tables").mkdir()
     sets = [*BLOCKED_FORCE, f"stiffness.table_dir={tmp_path}/tables"]
-    refs = [levels_db(ensemble(tmp_path, "seed002-rig-1ms.ini", 555, 400, sets + [f"stiffness.table_seed={t}"],
-                               f"ref{t}")) for t in (31, 32, 33, 34)]
+    refs = [levels_db(ensemble(tmp_path, "seed002-rig-1ms.ini", 555, 400,
+                               sets + [f"stiffness.table_seed={t}", "stiffness.table_error=none"], f"ref{t}"))
+            for t in (31, 32, 33, 34)]
     ref = [np.mean([r[k][0] for r in refs], axis=0) for k in (0, 1)]
     held = {True: ([], []), False: ([], [])}
     for t in range(11, 23):
