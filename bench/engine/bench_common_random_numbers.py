@@ -46,8 +46,9 @@ SCENES = [
     ("seed 001 beam S, Hertz contact", "seed001-beam-s-hertz.ini", [], "beam.loss_factor", 0.01, (100, 5000)),
     ("seed 001 beam R, Hertz contact", "seed001-beam-r-hertz.ini", [], "beam.loss_factor", 0.01, (100, 5000)),
 ]
-COLUMNS = ["scene", "loss of contact", "step of the key", "band-level change, mean of the seeds' (dB rms)",
-           "noise of a shared seed's difference (dB rms)", "noise of independent runs' difference (dB rms)",
+# No apostrophes: the docs' smart quotes would print them otherwise than the record holds them.
+COLUMNS = ["scene", "loss of contact", "step of the key", "band-level change, mean over the seeds (dB rms)",
+           "noise of the difference with a shared seed (dB rms)", "noise of the difference of independent runs (dB rms)",
            "share of the noise a shared seed leaves"]
 
 

@@ -6,25 +6,13 @@
 #include <vector>
 
 #include "src/cli/run_phases.hpp"
+#include "src/ensemble/ensemble_block.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/io/loss_effect.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/io/run_warning.hpp"
 
 namespace rollspec::cli {
-
-namespace {
-// Block i of n values each: that run's own ensemble sums.
-ensemble::EnsembleSums block(const ensemble::EnsembleSums& all, std::size_t i, std::size_t nv) {
-  ensemble::EnsembleSums b;
-  const auto first = static_cast<std::ptrdiff_t>(i * nv), last = static_cast<std::ptrdiff_t>((i + 1) * nv);
-  b.sum.assign(all.sum.begin() + first, all.sum.begin() + last);
-  b.sum_sq.assign(all.sum_sq.begin() + first, all.sum_sq.begin() + last);
-  b.count = all.count;
-  b.computed = all.computed;
-  return b;
-}
-}  // namespace
 
 void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, const ensemble::EnsembleConfig& cfg,
                      const ensemble::EnsembleSums& sums, bool quiet, bool rebuild) {
@@ -56,7 +44,7 @@ void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, co
         for (std::size_t j = 0; j < lin; ++j) values[2 * nv + j] = values[j] * values[nv + j];
       });
   if (ensemble::mpi_rank() != 0) return;
-  const io::PsdEnsemble open = scene.spectra(block(both, 0, nv)), shut = closed->spectra(block(both, 1, nv));
+  const io::PsdEnsemble open = scene.spectra(ensemble::block_sums(both, 0, nv)), shut = closed->spectra(ensemble::block_sums(both, 1, nv));
   const std::size_t n = open.band_scatter.size();
   std::vector<double> products(n);
   for (std::size_t i = 0; i < n; ++i) products[i] = both.sum[2 * nv + lin - n + i];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "src/cli/run_phases.hpp"
+#include "src/ensemble/ensemble_block.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/io/run_warning.hpp"
 #include "src/io/table_error.hpp"
@@ -15,17 +16,6 @@
 namespace rollspec::cli {
 
 namespace {
-// Sums of value block i of the combined run: run i's own ensemble sums.
-ensemble::EnsembleSums block(const ensemble::EnsembleSums& all, std::size_t i, std::size_t nv) {
-  ensemble::EnsembleSums b;
-  const auto first = static_cast<std::ptrdiff_t>(i * nv), last = static_cast<std::ptrdiff_t>((i + 1) * nv);
-  b.sum.assign(all.sum.begin() + first, all.sum.begin() + last);
-  b.sum_sq.assign(all.sum_sq.begin() + first, all.sum_sq.begin() + last);
-  b.count = all.count;
-  b.computed = all.computed;
-  b.seconds = all.seconds;
-  return b;
-}
 
 // After the N runs of realisation `values` filled their blocks: q's summand, sum_i (x_i - mean x)^2,
 // for each of the leading `lin` linear values (D-30c), into `q`.
@@ -103,7 +93,7 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
     paired.realisations = sums.count;
     paired.q.assign(sums.sum.begin() + static_cast<std::ptrdiff_t>(n * nv), sums.sum.end());
     for (std::size_t i = 0; i < n; ++i) {
-      const ensemble::EnsembleSums b = block(sums, i, nv);
+      const ensemble::EnsembleSums b = ensemble::block_sums(sums, i, nv);
       spectra.push_back(subs[i]->spectra(b));
       std::vector<double> m(lin);
       for (std::size_t j = 0; j < lin; ++j) m[j] = b.mean(j);
