@@ -279,7 +279,7 @@ def main():
         fail(f"--noise-db {a.noise_db}: allowed: a level in dB re 1 (m/s^2)^2/Hz, or none", EX_USAGE)
     if noise_db is not None and not -300 < noise_db < 100:
         fail(f"--noise-db {a.noise_db}: allowed: a finite level in (-300, 100) dB, or none", EX_USAGE)
-    require_program(a.bin, "--bin")
+    a.bin = os.path.abspath(require_program(a.bin, "--bin"))  # the runs work in the work folder
     try:
         bench_record.check_target(a.record, own=bench_record.is_record)
     except bench_record.RecordError as e:
