@@ -111,6 +111,11 @@ def write_csv(path, t, a):
     path.write_text("Time (s),Acc (m/s^2)\n" + "".join(f"{x:.9g},{y:.9g}\n" for x, y in zip(t, a)))
 
 
+def half_width(band):
+    lo, hi = band["prediction_lower_db"], band["prediction_upper_db"]
+    return None if lo is None or hi is None else (hi - lo) / 2
+
+
 def verdict(binary, folder, files, noise):
     """compare's answer on one recording, reduced to what the figures need."""
     args = ["compare", "../model.h5", *files] + (["--noise", "../" + noise] if noise else []) + ["--format", "json"]
@@ -120,7 +125,7 @@ def verdict(binary, folder, files, noise):
     return {"p": j["p_value"], "verdict": j["combined_test"]["verdict"], "tested": len(tested),
             "inside": sum(bool(b["inside"]) for b in tested),
             "offset": o.get("estimate_db"), "offset_lo": o.get("lower_db"), "offset_hi": o.get("upper_db"),
-            "bands": [[b["centre_hz"], b["use"], b["inside"]] for b in j["bands"]],
+            "bands": [[b["centre_hz"], b["use"], b["inside"], half_width(b)] for b in j["bands"]],
             "averages": j["measured_averages"]}
 
 
@@ -186,15 +191,16 @@ def meets(value, target):
 
 
 def band_coverage(found):
-    """Per band centre: [recordings where it was tested, of those inside]."""
+    """Per band centre: [recordings where it was tested, of those inside, mean half-width of the interval (dB)]."""
     per = {}
     for v in found:
-        for centre, use, inside in v["bands"]:
+        for centre, use, inside, half in v["bands"]:
             if use == "test":
-                c = per.setdefault(centre, [0, 0])
+                c = per.setdefault(centre, [0, 0, 0.0])
                 c[0] += 1
                 c[1] += bool(inside)
-    return per
+                c[2] += (half or 0.0)
+    return {centre: [n, k, w / n] for centre, (n, k, w) in per.items()}
 
 
 def figures(results, f1):
@@ -235,10 +241,11 @@ def figures(results, f1):
                      f"{c['offset_interval_holds'] / len(results[name]):.3f} hold the truth", "", "",
                      len(results[name])])
     per = band_coverage(right)
-    data["band_coverage"] = {str(c): [n, k] for c, (n, k) in sorted(per.items())}
+    data["band_coverage"] = {str(c): x for c, x in sorted(per.items())}
     low = sorted(per.items(), key=lambda x: x[1][1] / x[1][0])[:5]
-    note = ("Lowest per-band coverage of the right model's recordings: "
-            + ", ".join(f"{c:g} Hz {k / n:.2f}" for c, (n, k) in low) + ". ")
+    note = ("Lowest per-band coverage of the right model's recordings (with the mean half-width of that band's "
+            "prediction interval): " + ", ".join(f"{c:g} Hz {k / n:.3f} (+-{w:.3g} dB)" for c, (n, k, w) in low)
+            + ". ")
     data["coverage"] = {"mean_share": mean_share, "pooled": pooled, "band_tests": total}
     return rows, data, note
 
@@ -329,7 +336,8 @@ def measure(a, work, noise_db):
              f"recording, {left['flat floor']} by the flat-floor rule.")
     bench_record.write(
         a.record, title="The verdict on recordings: size, power and prediction-interval coverage of compare "
-                        "on the README's rig",
+                        "on the README's rig, " + ("without logger noise" if noise_db is None else
+                                                   f"logger noise {noise_db:g} dB"),
         argv=sys.argv, builds={"rollspec": {"description": "the build measured",
                                             "version": bench_record.build_version(a.bin)}},
         settings=settings, columns=["figure", "value", "95 % interval", "target", "met", "recordings"],
