@@ -54,6 +54,8 @@ RECIPES = {
                                            "out": "file", "help": ["--help"], "binary": 3,
                                            "in_argv": ["PY", "S", "--summarise", "IN"], "in": "file"},
     "bench/engine/bench_memory_estimate.py": {"argv": ["PY", "S", "--bin", "BIN"], "help": ["--help"], "binary": 3},
+    "bench/engine/bench_recording_verdict.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
+                                                "help": ["--help"], "binary": 3},
     "bench/engine/bench_scaling.py": {"argv": ["PY", "S", "STUDY", "--release", "BIN"], "help": ["--help"],
                                       "binary": 4},
     "bench/engine/bench_tail_check.py": {"argv": ["PY", "S", "scene", "BIN", "STUDY", "10", "2", "10"], "help": None,

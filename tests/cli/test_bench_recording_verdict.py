@@ -1,0 +1,60 @@
+"""bench/engine/bench_recording_verdict.py on a tiny case (3 recordings of 3 rolls per case, about 10 s): the
+README's rig, recordings as CSV files through `compare`, the record written where asked and nothing else. The
+wrong models are rejected in every recording (their p-values are below 1e-30 at M = 3), the mode case's first
+mode is 1.1 x the model's (E x 1.21), the 3 dB case's level offset lies near -3.01 dB; the full figures are the
+bench's (bench/records/recording-verdict.json)."""
+import json
+import math
+import os
+import subprocess
+
+from conftest import BIN, EX_CANTCREAT, EX_NOINPUT, EX_USAGE, SOURCE
+
+SCRIPT = SOURCE / "bench" / "engine" / "bench_recording_verdict.py"
+
+
+def bench(*args, cwd):
+    return subprocess.run(["/usr/bin/python3", str(SCRIPT), "--bin", BIN, *map(str, args)], cwd=cwd,
+                          capture_output=True, text=True, timeout=300,
+                          env=dict(os.environ, PYTHONPATH=str(SOURCE / "python-post")))
+
+
+def test_a_tiny_case_writes_its_record_and_nothing_else(tmp_path):
+    r = bench("--recordings", "3", "--rolls", "3", "--work", "w", "--record", "r.json", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.json", "w"]
+    assert sorted(p.name for p in (tmp_path / "w").glob("verdicts-*.json")) == [
+        "verdicts-level.json", "verdicts-loss.json", "verdicts-mode.json", "verdicts-right.json"]
+    record = json.loads((tmp_path / "r.json").read_text())
+    assert record["columns"] == ["figure", "value", "95 % interval", "target", "met", "recordings"]
+    cases = record["data"]["cases"]
+    assert all(c["tested"] == 3 and c["no_test"] == 0 for c in cases.values())
+    for name in ("level", "loss", "mode"):
+        assert cases[name]["rejected"] == 3 and max(cases[name]["p_values"]) < 1e-30, (name, cases[name])
+    assert cases["right"]["rejected"] < 3 and all(0 < p <= 1 for p in cases["right"]["p_values"])
+    f1 = record["data"]["first_mode_hz"]
+    assert abs(f1["mode"] / f1["right"] - 1.1) < 1e-9, f1  # f ~ sqrt(E)
+    assert cases["loss"]["set"] == ["beam.loss_factor=0.02"]
+    assert abs(cases["level"]["offset_mean_db"] - 10 * math.log10(0.5)) < 0.5
+    assert 0.0 <= record["data"]["coverage"]["pooled"] <= 1.0 and record["data"]["M"] == 3
+    # the README's rig: its edits in the settings, the template's K
+    assert "beam.length=1.0" in record["settings"] and "K = 100" in record["settings"]
+
+
+def test_bad_arguments_and_targets_are_one_line_and_change_nothing(tmp_path):
+    r = bench("--recordings", "0", cwd=tmp_path)
+    assert r.returncode == EX_USAGE and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    r = bench("--noise-db", "loud", cwd=tmp_path)
+    assert r.returncode == EX_USAGE and "--noise-db loud" in r.stderr, r.stderr
+    r = subprocess.run(["/usr/bin/python3", str(SCRIPT), "--bin", str(tmp_path / "none")], capture_output=True,
+                       text=True, env=dict(os.environ, PYTHONPATH=str(SOURCE / "python-post")))
+    assert r.returncode == EX_NOINPUT and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    mine = tmp_path / "mine.json"
+    mine.write_text("precious\n")
+    r = bench("--record", mine, cwd=tmp_path)
+    assert r.returncode == EX_CANTCREAT and mine.read_text() == "precious\n", r.stderr
+    (tmp_path / "folder").mkdir()
+    (tmp_path / "folder" / "keep.txt").write_text("precious\n")
+    r = bench("--work", "folder", "--record", "r.json", cwd=tmp_path)
+    assert r.returncode == EX_CANTCREAT and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["folder", "mine.json"]
