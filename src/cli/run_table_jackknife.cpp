@@ -35,8 +35,11 @@ namespace {
 
 // D-30f: the sub-table runs' own noise n (D-30c) falls as 1/K_J, the table's part V_J - n does not; the
 // sub-table ensemble is run again with K_J raised until n is at most a quarter of the table's part
-// (median over the bands), up to kJackknifeRealisationCap realisations.
+// (median over the bands), up to kJackknifeRealisationFactor K and kJackknifeRealisationCap realisations:
+// the term's cost stays a bounded multiple of the run's (a 5-realisation look at a study does not run
+// thousands), and where the cap stops it the run warns with what would be needed.
 constexpr std::uint64_t kJackknifeRealisationCap = 1024;
+constexpr std::uint64_t kJackknifeRealisationFactor = 8;
 constexpr double kNoiseShareTarget = 0.25;
 
 // The sub-tables' ensemble of k realisations (ids 0..k-1 of the study's streams): the jackknife and its noise.
@@ -111,8 +114,9 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
     if (ratio > kNoiseShareTarget) {
       const double k = std::ceil(static_cast<double>(cfg.realisations) * ratio / kNoiseShareTarget);
       needed = std::isfinite(k) && k < 1e15 ? static_cast<std::uint64_t>(k) : 0;
-      wanted = std::min<std::uint64_t>(needed == 0 ? kJackknifeRealisationCap : needed,
-                                       std::max(kJackknifeRealisationCap, cfg.realisations));
+      const std::uint64_t cap = std::max(
+          cfg.realisations, std::min(kJackknifeRealisationCap, kJackknifeRealisationFactor * cfg.realisations));
+      wanted = std::min<std::uint64_t>(needed == 0 ? cap : needed, cap);
     }
   }
   wanted = ensemble::sum_over_ranks(wanted);
@@ -123,8 +127,10 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
   t.realisations = j.realisations;
   t.noise_warning = io::table_noise_warning(t, j.realisations);
   if (!t.noise_warning.empty() && wanted > 0 && (needed == 0 || needed > wanted))
-    t.noise_warning += " (the sub-table runs stopped at the cap of " + std::to_string(wanted) +
-                       " realisations; kernels/spectral D-30f)";
+    t.noise_warning += " (the sub-table runs stopped at their cap of " + std::to_string(wanted) +
+                       " realisations, 8 K and at most 1024" +
+                       (needed > wanted ? "; about " + std::to_string(needed) + " would make it trustworthy" : "") +
+                       "; kernels/spectral D-30f)";
   if (!t.noise_warning.empty()) io::warn(t.noise_warning, true);  // the result's validity, not progress
   scene.include_table_error(std::move(t));
 }
