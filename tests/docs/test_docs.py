@@ -20,10 +20,14 @@ sys.path.insert(0, str(SOURCE / "bench"))
 import bench_record  # noqa: E402  (the bench scripts' record format the benchmarks page renders)
 
 
+SMART_QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"'})
+
+
 def text_of(page):
-    """An HTML page's text, tags dropped and entities decoded, whitespace collapsed."""
+    """An HTML page's text, tags dropped and entities decoded, whitespace collapsed, Sphinx's smart quotes
+    back to the straight ones the sources hold (README's is printed README’s)."""
     raw = re.sub(r"<[^>]+>", " ", page.read_text())
-    return re.sub(r"\s+", " ", html.unescape(raw))
+    return re.sub(r"\s+", " ", html.unescape(raw)).translate(SMART_QUOTES)
 
 
 @pytest.fixture(scope="module")
