@@ -69,15 +69,18 @@ BandTestResult band_test(const double* measured_log, const double* mean, const d
   if (p == 0 || realisations < r.needed) return r;
   std::vector<double> d, v;
   band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
-  const double t2 = whitened_square(d, v, p, nullptr);
-  const double nu = static_cast<double>(realisations - 1), pp = static_cast<double>(p);
+  hotelling_f_law(r, whitened_square(d, v, p, nullptr), static_cast<double>(realisations - 1),
+                  static_cast<double>(p));
+  return r;
+}
+
+void hotelling_f_law(BandTestResult& r, double t2, double nu, double p) {
   r.defined = true;
   r.t2 = t2;
-  r.dof1 = pp;
-  r.dof2 = nu - pp + 1.0;
-  r.f = r.dof2 / (nu * pp) * t2;
+  r.dof1 = p;
+  r.dof2 = nu - p + 1.0;
+  r.f = r.dof2 / (nu * p) * t2;
   r.p_value = boost::math::cdf(boost::math::complement(boost::math::fisher_f(r.dof1, r.dof2), r.f));
-  return r;
 }
 
 double likelihood_temper(double n, std::size_t p) {

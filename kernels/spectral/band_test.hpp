@@ -41,6 +41,9 @@ constexpr std::uint64_t kExtraRealisations = 4;
 // band averages (not its log); covariance: p x p row-major, between-band covariance (K - 1) of the
 // realisations' ln band averages; records: M >= 1; realisations: K. Throws std::invalid_argument on
 // a covariance that is not positive definite or non-positive inputs.
+// D-26's F law of T^2 with nu = K - 1 and p compared dimensions: fills r's statistic, dofs, F and p-value.
+void hotelling_f_law(BandTestResult& r, double t2, double nu, double p);
+
 BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                          std::uint64_t realisations, double records);
 

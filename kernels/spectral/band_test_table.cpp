@@ -1,7 +1,6 @@
 #include "kernels/spectral/band_test_table.hpp"
 
 #include <Eigen/Dense>
-#include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 #include <algorithm>
 #include <cmath>
@@ -120,13 +119,7 @@ BandTestResult projected_f_test(const double* measured_log, const double* mean, 
   double t2 = 0.0;
   if (!statistic(&c, Eigen::Map<const Vector>(d.data(), n), Eigen::Map<const RowMatrix>(v.data(), n, n), t2))
     throw std::invalid_argument("band test: the band covariance is not positive definite");
-  const double nu = static_cast<double>(realisations - 1), pp = static_cast<double>(c.cols());
-  r.defined = true;
-  r.t2 = t2;
-  r.dof1 = pp;
-  r.dof2 = nu - pp + 1.0;
-  r.f = r.dof2 / (nu * pp) * t2;
-  r.p_value = boost::math::cdf(boost::math::complement(boost::math::fisher_f(r.dof1, r.dof2), r.f));
+  hotelling_f_law(r, t2, static_cast<double>(realisations - 1), static_cast<double>(c.cols()));
   return r;
 }
 
