@@ -9,24 +9,44 @@ namespace rollspec::spectral {
 
 double log_mean_variance(double s, double n) { return std::log1p(std::expm1(s) / n); }
 
+BandTerms band_terms(double s, double K, double M, double h, const BandNoise* noise) {
+  const double vm = log_mean_variance(s, M), vk = log_mean_variance(s, K);
+  BandTerms t;
+  if (!noise) {
+    t.g = s > 0.0 ? std::sqrt((vm + h * vk) / s) : std::sqrt(1.0 / M + h / K);  // the limit s -> 0
+    t.offset = 0.5 * (vk - vm);
+    return t;
+  }
+  // D-33c c: the signal's part of ln(m + N) scaled by a^2, the noise's terms beside it.
+  const double a2 = noise->signal_share;
+  t.g = s > 0.0 ? std::sqrt(a2 * (vm + h * vk) / s) : std::sqrt(a2 * (1.0 / M + h / K));
+  t.offset = noise->shift + 0.5 * ((a2 * vk + noise->estimate) - (a2 * vm + noise->measured));
+  t.diagonal = noise->measured + noise->estimate;
+  return t;
+}
+
 namespace {
 
-// D-26a, b with the model mean's variance scaled by h (D-27i): g_b^2 = (V_M,bb + h V_K,bb) / S_bb.
+// D-26a, b with the model mean's variance scaled by h (D-27i): g_b^2 = (V_M,bb + h V_K,bb) / S_bb; with the
+// logger noise of D-33c where given.
 void deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M, double h,
-               std::vector<double>& d, std::vector<double>& v) {
+               const BandNoise* noise, std::vector<double>& d, std::vector<double>& v) {
   if (!(M >= 1.0) || !(K >= 2.0)) throw std::invalid_argument("band test: needs records >= 1 and K >= 2");
   if (!(h >= 0.0)) throw std::invalid_argument("band likelihood: the mean's variance share must be >= 0");
   d.assign(p, 0.0);
   v.assign(p * p, 0.0);
-  std::vector<double> g(p);
+  std::vector<double> g(p), diagonal(p);
   for (std::size_t b = 0; b < p; ++b) {
     if (!(mean[b] > 0.0) || !std::isfinite(y[b])) throw std::invalid_argument("band test: a band without power");
-    const double s = cov[b * p + b], vm = log_mean_variance(s, M), vk = log_mean_variance(s, K);
-    g[b] = s > 0.0 ? std::sqrt((vm + h * vk) / s) : std::sqrt(1.0 / M + h / K);  // the limit s -> 0
-    d[b] = y[b] - (std::log(mean[b]) + 0.5 * (vk - vm));
+    const BandTerms t = band_terms(cov[b * p + b], K, M, h, noise ? noise + b : nullptr);
+    g[b] = t.g;
+    diagonal[b] = t.diagonal;
+    d[b] = y[b] - (std::log(mean[b]) + t.offset);
   }
   for (std::size_t b = 0; b < p; ++b)
     for (std::size_t c = 0; c < p; ++c) v[b * p + c] = g[b] * cov[b * p + c] * g[c];
+  if (noise)
+    for (std::size_t b = 0; b < p; ++b) v[b * p + b] += diagonal[b];
 }
 
 }  // namespace
@@ -34,8 +54,8 @@ void deviation(const double* y, const double* mean, const double* cov, std::size
 // Each band's variance from Fenton-Wilkinson, the correlations those of S: V stays S scaled band by
 // band, so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not (D-26a).
 void band_deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
-                    std::vector<double>& d, std::vector<double>& v) {
-  deviation(y, mean, cov, p, K, M, 1.0, d, v);
+                    std::vector<double>& d, std::vector<double>& v, const BandNoise* noise) {
+  deviation(y, mean, cov, p, K, M, 1.0, noise, d, v);
 }
 
 double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size_t p, double* log_det) {
@@ -63,14 +83,13 @@ double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size
 }
 
 BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
-                         std::uint64_t realisations, double records) {
+                         std::uint64_t realisations, double records, const BandNoise* noise) {
   BandTestResult r;
   r.needed = p + kExtraRealisations;
   if (p == 0 || realisations < r.needed) return r;
   std::vector<double> d, v;
-  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v);
-  hotelling_f_law(r, whitened_square(d, v, p, nullptr), static_cast<double>(realisations - 1),
-                  static_cast<double>(p));
+  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v, noise);
+  hotelling_f_law(r, whitened_square(d, v, p, nullptr), static_cast<double>(realisations - 1), static_cast<double>(p));
   return r;
 }
 
@@ -100,7 +119,8 @@ double band_log_likelihood(const double* measured_log, const double* mean, const
 double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                            std::uint64_t realisations, double records, const LikelihoodTerms& terms) {
   std::vector<double> d, v;
-  deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, terms.mean_share, d, v);
+  deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, terms.mean_share, nullptr, d,
+            v);
   if (terms.table)
     for (std::size_t i = 0; i < p * p; ++i) v[i] += terms.table[i];
   double log_det = 0.0;

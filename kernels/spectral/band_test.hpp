@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernels/spectral/band_noise.hpp"
+
 namespace rollspec::spectral {
 
 struct BandTestResult {
@@ -24,11 +26,23 @@ struct BandTestResult {
 // one record's ln band average (D-26a). A band's V_bb is log_mean_variance(s, M) + log_mean_variance(s, K).
 double log_mean_variance(double s, double n);
 
+// One band's terms of D-26a, b: g_b of V = G S G, the offset o_b of d_b = y_b - (ln m_b + o_b), and the variance
+// the logger noise adds to V's diagonal. s = S_bb, K, M, h the model mean's variance share (D-27i; 1: one run).
+// Without noise (null): g_b^2 = (V_M,bb + h V_K,bb) / S_bb, o_b = (V_K,bb - V_M,bb) / 2, nothing added. With
+// noise (D-33c c): the signal's terms times a^2, o_b = ln(1 + N/m) + (a^2 V_K + D_P - a^2 V_M - D_M) / 2, and
+// D_M + D_P on the diagonal (BandNoise's measured and estimate).
+struct BandTerms {
+  double g = 0.0, offset = 0.0, diagonal = 0.0;
+};
+BandTerms band_terms(double s, double realisations, double records, double h, const BandNoise* noise);
+
 // D-26a, b: d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = G S G (p x p, row-major), G_bb^2 =
 // (V_M,bb + V_K,bb) / S_bb, for measured band logs y, the model's mean band powers m, their log covariance S,
-// K realisations and M records. Throws std::invalid_argument on a band without power or M < 1, K < 2.
+// K realisations and M records; with `noise` (p bands, D-33c) each band's terms as band_terms gives them.
+// Throws std::invalid_argument on a band without power or M < 1, K < 2.
 void band_deviation(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
-                    double realisations, double records, std::vector<double>& d, std::vector<double>& v);
+                    double realisations, double records, std::vector<double>& d, std::vector<double>& v,
+                    const BandNoise* noise = nullptr);
 
 // Cholesky V = L L^T in place (lower triangle) and |L^{-1} d|^2 (d is overwritten); ln det V into
 // log_det when given. Throws std::invalid_argument when V is not positive definite.
@@ -44,8 +58,10 @@ constexpr std::uint64_t kExtraRealisations = 4;
 // D-26's F law of T^2 with nu = K - 1 and p compared dimensions: fills r's statistic, dofs, F and p-value.
 void hotelling_f_law(BandTestResult& r, double t2, double nu, double p);
 
+// `noise`: D-33c's terms of the p bands (null: none); the F law is kept (the noise terms are known far better than
+// S, so T^2's tail lies between chi^2_p and Hotelling's: the test is at most slightly conservative).
 BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
-                         std::uint64_t realisations, double records);
+                         std::uint64_t realisations, double records, const BandNoise* noise = nullptr);
 
 // ln L of the measured band logs under the same Gaussian law (theory D-27): -c (T^2 + ln det V) / 2,
 // without the constant -p ln(2 pi) / 2; c = (n - p)(n - p - 1) / (n (n - 1)), n = K - 1, corrects for

@@ -24,15 +24,18 @@ void standard_normals(const double* u, std::size_t n, double* z) {
   }
 }
 
-// G S G's diagonal scaling and d's offset (V_K,bb - V_M,bb) / 2 from a covariance (D-26a, b).
-void scaling(const Matrix& s, double K, double M, Vector& g, Vector& offset) {
+// G S G's diagonal scaling, d's offset and the noise's diagonal (D-26a, b; D-33c where `noise` is given), one band
+// at a time as band_terms gives them.
+void scaling(const Matrix& s, double K, double M, const BandNoise* noise, Vector& g, Vector& offset, Vector& diagonal) {
   const auto p = s.rows();
   g.resize(p);
   offset.resize(p);
+  diagonal.resize(p);
   for (Eigen::Index b = 0; b < p; ++b) {
-    const double sb = s(b, b), vm = log_mean_variance(sb, M), vk = log_mean_variance(sb, K);
-    g(b) = sb > 0.0 ? std::sqrt((vm + vk) / sb) : std::sqrt(1.0 / M + 1.0 / K);
-    offset(b) = 0.5 * (vk - vm);
+    const BandTerms t = band_terms(s(b, b), K, M, 1.0, noise ? noise + b : nullptr);
+    g(b) = t.g;
+    offset(b) = t.offset;
+    diagonal(b) = t.diagonal;
   }
 }
 
@@ -125,10 +128,10 @@ BandTestResult projected_f_test(const double* measured_log, const double* mean, 
 
 BandTestResult table_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                           std::uint64_t realisations, double records, const TableTerm& table,
-                          const DrawUniforms& uniform, std::size_t draws, const Matrix* c) {
+                          const DrawUniforms& uniform, std::size_t draws, const Matrix* c, const BandNoise* noise) {
   const auto untabled = [&] {
     return c ? projected_f_test(measured_log, mean, covariance, p, realisations, records, *c)
-             : band_test(measured_log, mean, covariance, p, realisations, records);
+             : band_test(measured_log, mean, covariance, p, realisations, records, noise);
   };
   if (!(table.factor > 0.0) || table.covariance == nullptr || draws == 0) return untabled();
   BandTestResult r;
@@ -162,7 +165,7 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
 
   // The observed T^2 with V = G S G + c Sigma_T (D-31a).
   std::vector<double> d, v;
-  band_deviation(measured_log, mean, covariance, p, K, records, d, v);
+  band_deviation(measured_log, mean, covariance, p, K, records, d, v, noise);
   Matrix vv = Eigen::Map<const RowMatrix>(v.data(), n, n);
   vv += table.factor * t_used;
   const Eigen::LLT<Matrix> llt(vv);
@@ -175,8 +178,8 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
   if (s_llt.info() != Eigen::Success)
     throw std::invalid_argument("band test: the band covariance is not positive definite");
   const Matrix ls = s_llt.matrixL(), lv = llt.matrixL();
-  Vector g, offset, g_star, offset_star;
-  scaling(s, K, records, g, offset);
+  Vector g, offset, diagonal, g_star, offset_star;
+  scaling(s, K, records, noise, g, offset, diagonal);
   const std::size_t ns = bartlett_uniforms(p), nt = table.independent ? p : bartlett_uniforms(rank);
   std::vector<double> uni(ns + nt + 2 * ((p + 1) / 2)), a_s(p * p), a_t(rank * rank);
   std::size_t exceed = 0;
@@ -197,8 +200,9 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
       const auto nr = static_cast<Eigen::Index>(rank);
       t_star = u * Eigen::Map<const RowMatrix>(a_t.data(), nr, nr) * u.transpose() / table.dof;
     }
-    scaling(s_star, K, records, g_star, offset_star);
-    const Matrix v_star = g_star.asDiagonal() * s_star * g_star.asDiagonal() + table.factor * t_star;
+    scaling(s_star, K, records, noise, g_star, offset_star, diagonal);
+    Matrix v_star = g_star.asDiagonal() * s_star * g_star.asDiagonal() + table.factor * t_star;
+    if (noise) v_star.diagonal() += diagonal;  // D-33c: the noise's terms, held at their estimates
     Vector z(n);
     standard_normals(uni.data() + ns + nt, p, z.data());
     const Vector d_star = lv * z + offset - offset_star;
@@ -221,15 +225,16 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
 
 BandTestResult band_test_with_table(const double* measured_log, const double* mean, const double* covariance,
                                     std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
-                                    const DrawUniforms& uniform, std::size_t draws) {
-  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr);
+                                    const DrawUniforms& uniform, std::size_t draws, const BandNoise* noise) {
+  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr, noise);
 }
 
 BandTestResult band_test_fitted(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                                 std::uint64_t realisations, double records, const double* jacobian, std::size_t q,
                                 const TableTerm& table, const DrawUniforms& uniform, std::size_t draws) {
   if (q == 0 || jacobian == nullptr)
-    return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr);
+    return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr,
+                      nullptr);
   if (q >= p) throw std::invalid_argument("band test: as many fitted keys as bands leave nothing to test");
   const auto n = static_cast<Eigen::Index>(p), k = static_cast<Eigen::Index>(q);
   // C: the last p - q columns of Q in J = Q R (Householder), orthonormal and orthogonal to J's columns.
@@ -238,7 +243,7 @@ BandTestResult band_test_fitted(const double* measured_log, const double* mean, 
   if (qr.rank() < k) throw std::invalid_argument("band test: the fitted keys' band-log derivatives are dependent");
   const Matrix full = qr.householderQ() * Matrix::Identity(n, n);
   const Matrix c = full.rightCols(n - k);
-  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, &c);
+  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, &c, nullptr);
 }
 
 }  // namespace rollspec::spectral

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "kernels/spectral/band_noise.hpp"
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/band_test_table.hpp"
 #include "kernels/spectral/ensemble_interval.hpp"
@@ -59,7 +60,8 @@ bool covers(const MeasuredSpectrum& m, double lower, double upper) {
   return m.frequency.size() >= 2 && m.frequency.front() <= lower && m.frequency.back() >= upper;
 }
 
-std::string question_text(const io::BandLevels& b, const MeasuredSpectrum& m, bool same_surface, bool has_interval) {
+std::string question_text(const io::BandLevels& b, const MeasuredSpectrum& m, bool same_surface, bool has_interval,
+                          bool noise) {
   const int pct = static_cast<int>(std::lround(100.0 * b.confidence));
   if (!has_interval) return "none: " + b.interval_method;
   if (!(m.records > 0.0))
@@ -79,7 +81,7 @@ std::string question_text(const io::BandLevels& b, const MeasuredSpectrum& m, bo
               std::to_string(b.table_units) + " units; --same-surface for the table's own surface)";
   return "is the measured level inside the " + std::to_string(pct) +
          " % prediction interval of a measurement averaged over M = " + number_text(m.records) + " rolls" + surface +
-         "?";
+         (noise ? ", with the logger noise of the noise recording" : "") + "?";
 }
 
 // D-33a with a noise recording, D-33b without.
@@ -198,6 +200,100 @@ void widen_for_table(Verdict& v, const io::BandLevels& b) {
   }
 }
 
+// D-33c: the logger noise in each tested band (kernels/spectral/band_noise.hpp): the noise recording's band power,
+// the model's, and the degrees of freedom of the measurement's and the noise recording's band averages (D-33c a).
+struct NoiseTerms {
+  std::vector<spectral::BandNoise> band;  // the tested bands', in the rows' order
+  std::vector<double> power, dof;         // N^_b (0: not covered) and nu_N,b (0: unknown)
+  bool scatter_known = true;              // both estimators known (recordings, not PSD tables)
+};
+
+NoiseTerms noise_terms(const std::vector<BandRow>& rows, const io::BandLevels& b, const MeasuredSpectrum& m,
+                       const MeasuredSpectrum& quiet) {
+  NoiseTerms t;
+  for (const auto& r : rows) {
+    if (r.use != BandUse::test) continue;
+    const double lo = b.lower[r.band], hi = b.upper[r.band], model = std::pow(10.0, b.level_db[r.band] / 10.0);
+    const double power = std::isfinite(r.noise) ? measured_band(quiet, lo, hi) : 0.0;
+    const double measured_dof = band_dof_of_mean(m, lo, hi), noise_dof = band_dof_of_mean(quiet, lo, hi);
+    if (power > 0.0 && !(measured_dof > 0.0 && noise_dof > 0.0)) t.scatter_known = false;
+    // A band without model power has no test either (band_test says why): no terms there.
+    t.band.push_back(model > 0.0 && std::isfinite(model) && power >= 0.0 && std::isfinite(power)
+                         ? spectral::band_noise(model, power, measured_dof, noise_dof)
+                         : spectral::BandNoise{});
+    t.power.push_back(power);
+    t.dof.push_back(noise_dof);
+  }
+  return t;
+}
+
+// D-33c c: each tested band's prediction interval for the measurement, model + noise: the signal's bounds plus the
+// noise's band power (exact for the signal's part), widened by the noise's and the cross term's variance as D-30b
+// widens by a table's (dof nu_N of the noise recording's estimate).
+void add_noise_to_intervals(std::vector<BandRow>& rows, const NoiseTerms& t, const io::BandLevels& b) {
+  std::size_t i = 0;
+  for (auto& r : rows) {
+    if (r.use != BandUse::test) continue;
+    const spectral::BandNoise& n = t.band[i];
+    const double power = t.power[i], dof = t.dof[i];
+    ++i;
+    if (!(power > 0.0) || !std::isfinite(r.pred_lower) || !std::isfinite(r.pred_upper)) continue;
+    const auto plus = [&](double db) { return 10.0 * std::log10(std::pow(10.0, db / 10.0) + power); };
+    r.pred_lower = plus(r.pred_lower);
+    r.pred_upper = plus(r.pred_upper);
+    io::widen_band_interval(r.simulated + kDb * n.shift, r.pred_lower, r.pred_upper,
+                            (n.measured + n.estimate) * kDb * kDb,
+                            dof > 0.0 ? dof : static_cast<double>(b.realisations - 1), b.realisations, b.confidence);
+    r.inside_prediction = r.measured >= r.pred_lower && r.measured <= r.pred_upper;
+  }
+}
+
+// D-34 over the tested bands with the test's covariance; with noise (D-33c d) read in the signal's own terms,
+// ln(X - N^) against ln m, the noise's variance over a^2 on V's diagonal: a gain of the model's signal, or of the
+// whole chain (which scales X and N^ alike), then reads as itself.
+std::optional<spectral::LevelOffset> offset_of(const io::BandLevels& b, const MeasuredSpectrum& m, const Verdict& v,
+                                               const std::vector<std::size_t>& index, std::vector<double> measured_db,
+                                               const NoiseTerms* noise) {
+  if (noise)
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      const double x = std::pow(10.0, measured_db[i] / 10.0) - noise->power[i];
+      if (!(x > 0.0)) return std::nullopt;  // the noise's estimate reaches the measurement: no signal level to read
+      measured_db[i] = 10.0 * std::log10(x);
+    }
+  const ChosenBands c = chosen_bands(b, index, measured_db);
+  std::vector<double> d, vs;
+  try {
+    spectral::band_deviation(c.y.data(), c.mean.data(), c.cov.data(), index.size(), static_cast<double>(b.realisations),
+                             m.records, d, vs);
+    const std::size_t p = index.size();
+    if (noise)
+      for (std::size_t i = 0; i < p; ++i) {
+        const spectral::BandNoise& n = noise->band[i];
+        const double extra = (n.measured + n.estimate) / n.signal_share;
+        vs[i * p + i] += extra;
+        d[i] += 0.5 * extra;  // E ln(X - N^) = ln S - (V_M + extra) / 2
+      }
+    std::vector<double> vt = v.table_factor > 0.0 ? io::table_log_covariance(b, index) : std::vector<double>{};
+    double table_dof = b.table_dof;
+    if (!vt.empty() && b.table_independent_bands) {  // D-31d: pooled as the test pools them
+      std::vector<double> diag(p);
+      std::vector<std::size_t> count;
+      for (std::size_t i = 0; i < p; ++i) diag[i] = vt[i * p + i];
+      diag = spectral::smoothed_variances(diag, kSpectralTableSmoothing, &count);
+      double pooled = 0.0;
+      for (std::size_t i = 0; i < p; ++i) vt[i * p + i] = diag[i], pooled += static_cast<double>(count[i]);
+      table_dof *= pooled / static_cast<double>(p);
+    }
+    for (auto& x : d) x *= -kDb;  // simulated - measured, dB
+    for (auto& x : vs) x *= kDb * kDb;
+    for (auto& x : vt) x *= v.table_factor * kDb * kDb;
+    return spectral::level_offset(d.data(), vs.data(), vt.empty() ? nullptr : vt.data(), p,
+                                  static_cast<double>(b.realisations - 1), table_dof, b.confidence);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // a band without power or a singular covariance: no offset, the test says why
+  }
+}
+
 }  // namespace
 
 Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const VerdictOptions& o) {
@@ -205,7 +301,7 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
   const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
   const bool predict = m.records > 0.0 && has_interval;
   v.table_factor = o.same_surface || b.table_units < 2 ? 0.0 : kNewSurfaceTableFactor;
-  v.question = question_text(b, m, o.same_surface, has_interval);
+  v.question = question_text(b, m, o.same_surface, has_interval, o.noise != nullptr);
   for (std::size_t k = 0; k < b.level_db.size(); ++k) {
     if (b.lower[k] < o.fmin || b.upper[k] > o.fmax || !covers(m, b.lower[k], b.upper[k])) continue;
     const double meas = measured_band(m, b.lower[k], b.upper[k]);
@@ -234,6 +330,9 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
   if (v.rows.empty()) throw data_error(m.source + ": covers none of the result's bands inside [fmin, fmax]");
   if (predict) widen_for_table(v, b);
   mark_floor(v.rows, b, o);
+  std::optional<NoiseTerms> logger;  // D-33c
+  if (o.noise) logger = noise_terms(v.rows, b, m, *o.noise);
+  if (logger && predict) add_noise_to_intervals(v.rows, *logger, b);
 
   std::vector<std::size_t> index;
   std::vector<double> measured_db;
@@ -249,42 +348,21 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
   v.judged = has_interval ? v.tested : 0;
   if (!has_interval) v.inside = 0;
   if (!index.empty()) v.rms_db = std::sqrt(sq / static_cast<double>(index.size()));
-  v.test = combined_test(b, index, measured_db, predict ? m.records : 0.0, o.test_level, v.table_factor);
-
-  // D-34: one level offset over the tested bands, with the test's covariance.
-  if (predict && !index.empty() && !b.log_covariance.empty()) {
-    const ChosenBands c = chosen_bands(b, index, measured_db);
-    std::vector<double> d, vs;
-    try {
-      spectral::band_deviation(c.y.data(), c.mean.data(), c.cov.data(), index.size(),
-                               static_cast<double>(b.realisations), m.records, d, vs);
-      std::vector<double> vt = v.table_factor > 0.0 ? io::table_log_covariance(b, index) : std::vector<double>{};
-      double table_dof = b.table_dof;
-      if (!vt.empty() && b.table_independent_bands) {  // D-31d: pooled as the test pools them
-        const std::size_t p = index.size();
-        std::vector<double> diag(p);
-        std::vector<std::size_t> count;
-        for (std::size_t i = 0; i < p; ++i) diag[i] = vt[i * p + i];
-        diag = spectral::smoothed_variances(diag, kSpectralTableSmoothing, &count);
-        double pooled = 0.0;
-        for (std::size_t i = 0; i < p; ++i) vt[i * p + i] = diag[i], pooled += static_cast<double>(count[i]);
-        table_dof *= pooled / static_cast<double>(p);
-      }
-      for (auto& x : d) x *= -kDb;  // simulated - measured, dB
-      for (auto& x : vs) x *= kDb * kDb;
-      for (auto& x : vt) x *= v.table_factor * kDb * kDb;
-      v.offset = spectral::level_offset(d.data(), vs.data(), vt.empty() ? nullptr : vt.data(), index.size(),
-                                        static_cast<double>(b.realisations - 1), table_dof, b.confidence);
-    } catch (const std::invalid_argument&) {
-      v.offset.reset();  // a band without power or a singular covariance: no offset, the test says why
-    }
-  }
+  v.test = combined_test(b, index, measured_db, predict ? m.records : 0.0, o.test_level, v.table_factor,
+                         logger ? logger->band.data() : nullptr);
+  if (predict && !index.empty() && !b.log_covariance.empty())
+    v.offset = offset_of(b, m, v, index, measured_db, logger ? &*logger : nullptr);
 
   const std::string noise = band_list(v.rows, BandUse::noise_floor), flat = band_list(v.rows, BandUse::floor_flat);
   if (!noise.empty())
     v.warnings.push_back("bands " + noise + " Hz lie within " + number_text(o.noise_margin_db) +
                          " dB of the noise recording's level: left out of the test and the level offset "
                          "(--noise-margin DB sets the margin; kernels/spectral D-33a)");
+  if (logger && !logger->scatter_known && v.tested > 0)
+    v.warnings.push_back(
+        "the noise recording's band power is added to the model's in the tested bands, but not the noise's scatter: "
+        "the measurement or the noise recording is a PSD table, whose estimator compare does not know (give the "
+        "recordings themselves; kernels/spectral D-33c)");
   if (!flat.empty())
     v.warnings.push_back("bands " + flat + " Hz look like the logger's noise floor: the measurement stays within " +
                          number_text(kFloorFlatDb) + " dB of its lowest band level while the model lies more than " +

@@ -31,7 +31,8 @@ double table_band_variance_db(const io::BandLevels& b, std::size_t k) {
 }
 
 CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_t>& band,
-                           const std::vector<double>& measured_db, double records, double level, double table_factor) {
+                           const std::vector<double>& measured_db, double records, double level, double table_factor,
+                           const spectral::BandNoise* noise) {
   CombinedTest t;
   t.bands = band.size();
   t.level = level;
@@ -53,8 +54,8 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
     t.result = spectral::band_test_with_table(
         c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records,
         {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands,
-                                               b.table_independent_bands ? kSpectralTableSmoothing : 0}, uniform,
-        kBootstrapDraws);
+         b.table_independent_bands ? kSpectralTableSmoothing : 0},
+        uniform, kBootstrapDraws, noise);
   } catch (const std::invalid_argument& e) {
     t.verdict = std::string("none (") + e.what() + ")";
     return t;

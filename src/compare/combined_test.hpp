@@ -39,10 +39,11 @@ constexpr std::size_t kSpectralTableSmoothing = 1;
 constexpr std::size_t kBootstrapDraws = 10000;
 
 // `band`: indices of the compared bands in b; `measured_db`: their measured levels; records: M (0:
-// not given, no test); table_factor: c of D-31 (0: none; the F law of D-26).
+// not given, no test); table_factor: c of D-31 (0: none; the F law of D-26); noise: the logger noise's terms of
+// the compared bands (D-33c; null: none).
 CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_t>& band,
                            const std::vector<double>& measured_db, double records, double level,
-                           double table_factor = 0.0);
+                           double table_factor = 0.0, const spectral::BandNoise* noise = nullptr);
 
 // The table term's variance of band k of b in dB^2 (D-30a times the variance factor; 0 without a term).
 double table_band_variance_db(const io::BandLevels& b, std::size_t k);

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 
+#include "kernels/spectral/band_dof.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
@@ -116,6 +117,8 @@ struct Roll {
   std::string file;
   std::vector<double> psd;
   double seconds = 0.0, dof = 0.0, df = 0.0, rate = 0.0;
+  spectral::WelchConfig estimator;
+  std::size_t samples = 0;
 };
 
 std::string names(const std::vector<std::string>& v) {
@@ -169,14 +172,14 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
                            "': its PSD overflows a double; allowed: samples whose squares stay finite");
       if (options.roll_per_channel) {
         rolls.push_back({path + " [" + t.channels[ch] + "]", one, static_cast<double>(n) / t.sample_rate,
-                         plan->equivalent_dof(n), plan->frequency_step(), c.sample_rate});
+                         plan->equivalent_dof(n), plan->frequency_step(), c.sample_rate, c, n});
       } else {
         for (std::size_t k = 0; k < one.size(); ++k) sum[k] += one[k] / static_cast<double>(channels);
       }
     }
     if (!options.roll_per_channel)
       rolls.push_back({path, sum, static_cast<double>(n) / t.sample_rate, plan->equivalent_dof(n),
-                       plan->frequency_step(), c.sample_rate});
+                       plan->frequency_step(), c.sample_rate, c, n});
     if (channels > 1 && !options.roll_per_channel)
       m.notes.push_back(path + ": channels " + names(t.channels) + " taken as the result's sensors 1.." +
                         std::to_string(channels) + " of one roll, their PSDs averaged as the row averages them");
@@ -195,9 +198,11 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
   for (const Roll& r : rolls) {
     for (std::size_t k = 0; k < r.psd.size(); ++k) m.psd[k] += r.psd[k] / static_cast<double>(rolls.size());
     m.rolls.push_back(r.psd);
+    m.roll_samples.push_back(r.samples);
     seconds += r.seconds / static_cast<double>(rolls.size());
     dof += r.dof / static_cast<double>(rolls.size());
   }
+  m.estimator = first.estimator;
   m.records = static_cast<double>(rolls.size());
   m.records_source = io::counted(rolls.size(), options.roll_per_channel ? "channel" : "recording") +
                      (options.roll_per_channel ? " taken as rolls" : ", one roll each");
@@ -212,6 +217,23 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
                     " equivalent degrees of freedom per roll (D-16), the model's record " +
                     number_text(model.record_seconds()) + " s");
   return m;
+}
+
+double band_dof_of_mean(const MeasuredSpectrum& m, double lower, double upper) {
+  if (!m.estimator || m.roll_samples.empty()) return 0.0;
+  const spectral::BandDof dof(*m.estimator);
+  std::map<std::size_t, double> inverse;  // 1 / nu_b for each roll length
+  double sum = 0.0;
+  for (const std::size_t n : m.roll_samples) {
+    auto it = inverse.find(n);
+    if (it == inverse.end()) {
+      const double nu = dof(n, lower, upper);
+      it = inverse.emplace(n, nu > 0.0 ? 1.0 / nu : INFINITY).first;
+    }
+    sum += it->second;
+  }
+  const double rolls = static_cast<double>(m.roll_samples.size());
+  return std::isfinite(sum) ? rolls * rolls / sum : 0.0;
 }
 
 }  // namespace rollspec::compare

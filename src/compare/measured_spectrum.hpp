@@ -30,16 +30,18 @@ struct ModelEstimator {
 std::optional<ModelEstimator> read_model_estimator(const io::Hdf5Reader& r);
 
 struct MeasuredSpectrum {
-  std::string source;                      // the file(s), for messages and the JSON
-  std::vector<double> frequency;           // Hz
-  std::vector<double> psd;                 // mean over the rolls, (m/s^2)^2/Hz
-  std::vector<std::vector<double>> rolls;  // each roll's PSD (recordings; empty for a PSD table)
-  double records = 0.0;                    // M, independent rolls (0: the file cannot say)
-  std::string records_source;              // how M was found ("3 recordings", "--measured-averages")
-  bool model_grid = false;                 // on the model's own bins: bands average them as the model's do
-  double welch_dof = 0.0;                  // D-16 dof of one roll's Welch estimate (0: unknown)
-  double seconds = 0.0;                    // one roll's length (0: unknown)
-  std::vector<std::string> notes;          // every choice made without being asked, one line each
+  std::string source;                              // the file(s), for messages and the JSON
+  std::vector<double> frequency;                   // Hz
+  std::vector<double> psd;                         // mean over the rolls, (m/s^2)^2/Hz
+  std::vector<std::vector<double>> rolls;          // each roll's PSD (recordings; empty for a PSD table)
+  double records = 0.0;                            // M, independent rolls (0: the file cannot say)
+  std::string records_source;                      // how M was found ("3 recordings", "--measured-averages")
+  bool model_grid = false;                         // on the model's own bins: bands average them as the model's do
+  double welch_dof = 0.0;                          // D-16 dof of one roll's Welch estimate (0: unknown)
+  double seconds = 0.0;                            // one roll's length (0: unknown)
+  std::vector<std::string> notes;                  // every choice made without being asked, one line each
+  std::optional<spectral::WelchConfig> estimator;  // the Welch estimator every roll went through (recordings)
+  std::vector<std::size_t> roll_samples;           // each roll's length in samples (recordings)
 };
 
 struct RecordingOptions {
@@ -59,6 +61,11 @@ bool is_psd_table(const std::string& path);
 // the row, and recordings shorter than one segment.
 MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const RecordingOptions& options,
                                     const ModelEstimator& model);
+
+// D-33c a: the equivalent degrees of freedom of the band [lower, upper] Hz of the rolls' mean PSD for white
+// Gaussian noise, R^2 / sum_r 1/nu_r over its R rolls (kernels/spectral/band_dof.hpp); 0 where the estimator is not
+// known (a PSD table).
+double band_dof_of_mean(const MeasuredSpectrum& m, double lower, double upper);
 
 // Welch D-15 of one signal with the model's estimator scaled to `sample_rate`; the segment rounded to
 // whole samples (the resolution differs from the model's by that rounding, said in `note`).

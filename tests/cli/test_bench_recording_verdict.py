@@ -1,6 +1,8 @@
 """bench/engine/bench_recording_verdict.py on a tiny case (3 recordings of 3 rolls per case, about 10 s): the
 README's rig, recordings as CSV files through `compare`, the record written where asked and nothing else. The
-wrong models are rejected in every recording (their p-values are below 1e-30 at M = 3), the mode case's first
+wrong models are rejected in every recording (their p-values are below 1e-20 at M = 3: about 1e-26 for twice the
+loss factor, which the bands below the first mode, scattering by hundredths of a dB, decide; the logger noise's
+cross term there, kernels/spectral D-33c, is as large as that scatter), the mode case's first
 mode is 1.1 x the model's (E x 1.21), the 3 dB case's level offset lies near -3.01 dB; the full figures are the
 bench's (bench/records/recording-verdict.json)."""
 import json
@@ -30,7 +32,7 @@ def test_a_tiny_case_writes_its_record_and_nothing_else(tmp_path):
     cases = record["data"]["cases"]
     assert all(c["tested"] == 3 and c["no_test"] == 0 for c in cases.values())
     for name in ("level", "loss", "mode"):
-        assert cases[name]["rejected"] == 3 and max(cases[name]["p_values"]) < 1e-30, (name, cases[name])
+        assert cases[name]["rejected"] == 3 and max(cases[name]["p_values"]) < 1e-20, (name, cases[name])
     assert cases["right"]["rejected"] < 3 and all(0 < p <= 1 for p in cases["right"]["p_values"])
     f1 = record["data"]["first_mode_hz"]
     assert abs(f1["mode"] / f1["right"] - 1.1) < 1e-9, f1  # f ~ sqrt(E)
