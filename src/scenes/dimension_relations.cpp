@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "kernels/contact/hertz.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/study/key_reader.hpp"
@@ -138,7 +139,8 @@ double e_star(double e1, double nu1, double e2, double nu2) {
 double hertz_radius(const study::KeyReader& s, double e, double nu) {
   const double r = s.real("ball.radius"), g = s.real("ball.gravity");
   const double weight = g > 0.0 ? 4.0 / 3.0 * M_PI * r * r * r * s.real("ball.density") * g : 1.0;
-  return std::cbrt(3.0 * weight * r / (4.0 * e_star(s.real("ball.youngs_modulus"), s.real("ball.poisson"), e, nu)));
+  return contact::hertz::contact_radius_at_load(r, e_star(s.real("ball.youngs_modulus"), s.real("ball.poisson"), e, nu),
+                                                weight);
 }
 
 // The ball alone: its Hertz contact against atoms and against Hertz theory's small contacts.
