@@ -19,6 +19,7 @@
 #include "src/error.hpp"
 #include "src/io/content_hash.hpp"
 #include "src/io/input_file.hpp"
+#include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
 #include "src/io/temp_files.hpp"
 
@@ -36,11 +37,7 @@ struct Fnv {
     static const unsigned char separator = 0xff;  // ("ab", "c") differs from ("a", "bc")
     h = io::fnv1a64(&separator, 1, io::fnv1a64(s.data(), s.size(), h));
   }
-  void add(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    add(std::string(buf));
-  }
+  void add(double v) { add(io::exact_text(v)); }
   void add_file(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     std::ostringstream s;

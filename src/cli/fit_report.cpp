@@ -7,17 +7,11 @@
 
 #include "kernels/spectral/fit_search.hpp"
 #include "src/cli/fit_model.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
 namespace {
-
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
 
 // A JSON number, or null where the value is not finite (JSON has no NaN or infinity).
 nlohmann::ordered_json json_number(double v) {
@@ -105,7 +99,10 @@ std::string fit_text(const FitReport& r) {
     const std::size_t n = r.parameters.size();
     for (std::size_t i = 0; i < n && !r.correlation.empty(); ++i) {
       text += "\n ";
-      for (std::size_t j = 0; j < n; ++j) text += " " + number(r.correlation[i * n + j]);
+      for (std::size_t j = 0; j < n; ++j) {
+        const double c = r.correlation[i * n + j];
+        text += " " + (std::isfinite(c) ? io::significant_text(c, 10) : std::string("null"));
+      }
     }
     text += "\n";
   }

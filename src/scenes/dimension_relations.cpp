@@ -7,16 +7,13 @@
 
 #include "kernels/contact/hertz.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
+#include "src/io/number_text.hpp"
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/study/key_reader.hpp"
 
 namespace rollspec::scenes {
 
-std::string dim(double v, const char* unit) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, *unit ? "%.3g %s" : "%.3g%s", v, unit);
-  return buf;
-}
+std::string dim(double v, const char* unit) { return io::three_digits(v) + (*unit ? " " : "") + unit; }
 
 bool self_affine_written(const study::KeyReader& s) {
   bool written = false;

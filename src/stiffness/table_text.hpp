@@ -13,12 +13,7 @@ namespace rollspec::stiffness {
 
 // A length in mm (from 1 mm) or um, three digits: grid sizes in plans and messages.
 inline std::string um(double m) {
-  char buf[32];
-  if (m >= 1e-3)
-    std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else
-    std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
-  return buf;
+  return m >= 1e-3 ? io::three_digits(m * 1e3) + " mm" : io::three_digits(m * 1e6) + " um";
 }
 
 // The content hash of the columns' bytes, in order, continuing from `h`.
