@@ -170,7 +170,7 @@ def main():
     before, after = (str(Path(b).resolve()) for b in sys.argv[1:3])
     # a study by its name in studies/ (a path to one there is taken by its name)
     items = [Path(a).name for a in sys.argv[3:]] or sorted(p.name for p in (SOURCE / "studies").glob("*.ini"))
-    missing = [i for i in items if not (SOURCE / "studies" / i).is_file()]
+    missing = [i for i in items if not (SOURCE / "studies" / i.split(",")[0]).is_file()]
     if missing:
         raise SystemExit(f"compare_results.py: no study {', '.join(missing)} in {SOURCE / 'studies'}")
     for b in (before, after):

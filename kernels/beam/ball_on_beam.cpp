@@ -6,6 +6,7 @@
 
 #include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/contact_solve.hpp"
+#include "kernels/contact/hertz.hpp"
 
 namespace rollspec::beam {
 
@@ -59,7 +60,7 @@ InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& 
   double h, dh;
   roughness_at(r, x0, h, dh);
   if (m.patch_radius > 0.0 && !r.roughness.empty())  // (B38) at the static contact length
-    PatchAverager(r.roughness).evaluate(x0, std::sqrt(m.patch_radius * std::max(delta, 0.0)), h, dh);
+    PatchAverager(r.roughness).evaluate(x0, contact::hertz::contact_radius_at_approach(m.patch_radius, delta), h, dh);
   // Linearised law (D-11): roughness enters through F0 or, if given, through h as in D-1.
   s.y[2 * n] = w1 + h - delta;
   // The path law (B46) has no line: its strip enters through P(δ, ξ), and a ball that rides it at

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kernels/contact/hertz.hpp"
+
 namespace rollspec::beam {
 
 ContactModel::ContactModel(const ContactLaw& law) : law_(law) {
@@ -18,7 +20,7 @@ ContactModel::ContactModel(const ContactLaw& law) : law_(law) {
     case ContactLawKind::hertz:
       if (!(law.effective_modulus > 0.0 && law.radius > 0.0))
         throw std::invalid_argument("ContactLaw: Hertz needs E* > 0, R > 0");
-      hertz_k_ = 4.0 / 3.0 * law.effective_modulus * std::sqrt(law.radius);  // (B17)
+      hertz_k_ = contact::hertz::force_coefficient(law.radius, law.effective_modulus);  // (B17)
       break;
     case ContactLawKind::linearised:
       if (!(law.k0 > 0.0)) throw std::invalid_argument("ContactLaw: linearised law needs k0 > 0");

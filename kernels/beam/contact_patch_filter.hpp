@@ -39,8 +39,4 @@ class PatchAverager {
   std::vector<double> s_;
 };
 
-inline double hertz_half_width(double radius, double compression) {
-  return compression > 0.0 ? std::sqrt(radius * compression) : 0.0;
-}
-
 }  // namespace rollspec::beam

@@ -9,6 +9,7 @@
 #include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/contact_solve.hpp"
 #include "kernels/beam/exact_step_lanes.hpp"
+#include "kernels/contact/hertz.hpp"
 
 namespace rollspec::beam {
 
@@ -206,10 +207,9 @@ void ExactStepIntegrator::run_reference(const Realisation& r, BallOnBeamResult& 
     if (patch)  // as in the initial state: the width under the weight
       averager->evaluate(
           model_.traverse.x_start,
-          std::sqrt(model_.patch_radius *
-                    std::max(contact_.static_compression(
-                                 weight, detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start)),
-                             0.0)),
+          contact::hertz::contact_radius_at_approach(
+              model_.patch_radius, contact_.static_compression(weight, detail::law_argument(model_, contact_, r, 0.0,
+                                                                                            model_.traverse.x_start))),
           h0, dh0);
     for (int i = 0; i < n; ++i) w1 += phi[i] * q[i];
     const double delta = w1 + h0 - w2;
@@ -249,7 +249,7 @@ void ExactStepIntegrator::run_reference(const Realisation& r, BallOnBeamResult& 
     const double x1 = position(k1), t1 = static_cast<double>(k1) * h;
     double h1, dh1;
     if (patch)
-      averager->evaluate(x1, std::sqrt(model_.patch_radius * std::max(delta_last, 0.0)), h1, dh1);
+      averager->evaluate(x1, contact::hertz::contact_radius_at_approach(model_.patch_radius, delta_last), h1, dh1);
     else
       detail::roughness_at(r, x1, h1, dh1);
     const double f0 = detail::law_argument(model_, contact_, r, t1, x1);
@@ -314,9 +314,10 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     detail::roughness_at(r, model_.traverse.x_start, h0, dh0);
     const double f0 = detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start);
     if (patch)  // as in the initial state: the width under the weight
-      averager->evaluate(model_.traverse.x_start,
-                         std::sqrt(model_.patch_radius * std::max(contact_.static_compression(weight, f0), 0.0)), h0,
-                         dh0);
+      averager->evaluate(
+          model_.traverse.x_start,
+          contact::hertz::contact_radius_at_approach(model_.patch_radius, contact_.static_compression(weight, f0)), h0,
+          dh0);
     for (int i = 0; i < n; ++i) w1 += phi[i] * q0[i];
     const double delta = w1 + h0 - st.w2;
     for (std::size_t s = 0; s < model_.sensors.size(); ++s) {

@@ -5,6 +5,7 @@
 
 #include "kernels/beam/contact_solve.hpp"
 #include "kernels/beam/exact_step_lanes.hpp"
+#include "kernels/contact/hertz.hpp"
 
 namespace rollspec::beam {
 
@@ -115,7 +116,7 @@ __attribute__((always_inline)) inline void ExactStepIntegrator::steps_body(LoopS
     const double x1 = position(k1), t1 = static_cast<double>(k1) * h;
     double h1, dh1;
     if (st.averager)
-      st.averager->evaluate(x1, std::sqrt(model_.patch_radius * std::max(delta_last, 0.0)), h1, dh1);
+      st.averager->evaluate(x1, contact::hertz::contact_radius_at_approach(model_.patch_radius, delta_last), h1, dh1);
     else
       detail::roughness_at(r, x1, h1, dh1);
     const double f0 = detail::law_argument(model_, contact_, r, t1, x1);

@@ -1,6 +1,7 @@
 #include "kernels/contact/blocked_force.hpp"
 
 #include "kernels/contact/chunk_loop.hpp"
+#include "kernels/contact/hertz.hpp"
 #include "kernels/contact/path_window.hpp"
 
 #include <omp.h>
@@ -256,7 +257,7 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
   SolverOptions opt = options;
   opt.compute_stiffness = true;
   // BF-4: smooth Hertz approach for W; also the first bracket-growth step.
-  const double d_hertz = std::pow(3.0 * load / (4.0 * solver.half_space().e_star() * std::sqrt(radius)), 2.0 / 3.0);
+  const double d_hertz = hertz::approach_at_load(radius, solver.half_space().e_star(), load);
   // Fields kept between paths: all positions if they fit in max_stored_bytes, else the first.
   const bool warm = path_options.warm_start != PathWarmStart::Cold;
   const std::size_t field_bytes = 2 * sizeof(double) * solver.grid().size();

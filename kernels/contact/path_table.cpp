@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "kernels/contact/chunk_loop.hpp"
+#include "kernels/contact/hertz.hpp"
 #include "kernels/contact/path_window.hpp"
 
 #include <omp.h>
@@ -133,7 +134,7 @@ std::vector<double> path_table_approaches(const std::vector<double>& first_conta
   if (o.approaches < 2) throw std::invalid_argument("path_table: at least 2 approaches");
   if (!(load > 0.0) || !(e_star > 0.0) || !(radius > 0.0) || !(o.reach > 0.0))
     throw std::invalid_argument("path_table: load, E*, radius and reach must be > 0");
-  const double d_hertz = std::pow(3.0 * load / (4.0 * e_star * std::sqrt(radius)), 2.0 / 3.0);  // BF-4
+  const double d_hertz = hertz::approach_at_load(radius, e_star, load);  // BF-4
   const auto mm = std::minmax_element(first_contact.begin(), first_contact.end());
   const double lo = *mm.first, hi = *mm.second + o.reach * d_hertz;  // B43
   std::vector<double> d(o.approaches);

@@ -43,13 +43,6 @@ inline Eigen::Vector3d rodrigues_from_rotation_vector(const Eigen::Vector3d& the
   return (2.0 * std::tan(0.5 * t) / t) * theta;
 }
 
-// Rotation vector theta e of a Rodrigues vector (|theta| < pi).
-inline Eigen::Vector3d rotation_vector_from_rodrigues(const Eigen::Vector3d& a) {
-  const double n = a.norm();
-  if (n < 1e-300) return Eigen::Vector3d::Zero();
-  return (2.0 * std::atan(0.5 * n) / n) * a;
-}
-
 // ---- generic 3-vector algebra for jets ----------------------------------------------
 template <class T>
 using Vec3 = std::array<T, 3>;

@@ -58,9 +58,6 @@ BandTestResult band_test_fitted(const double* measured_log, const double* mean, 
                                 std::uint64_t realisations, double records, const double* jacobian, std::size_t q,
                                 const TableTerm& table, const DrawUniforms& uniform, std::size_t draws);
 
-// The variance term D-31 adds to each band of a prediction interval, in the same units as Sigma_T.
-inline double table_prediction_variance(double table_variance, double factor) { return factor * table_variance; }
-
 // W_q(I, nu) by Bartlett's decomposition: A = L L^T, L lower triangular, L_ii^2 ~ chi^2(nu - i)
 // (i = 0..q-1, by the inverse of the regularised gamma function from u[i]), L_ij ~ N(0, 1) below the
 // diagonal (Box-Muller from the uniforms after the first q). Row-major q x q into a; it reads

@@ -17,7 +17,6 @@ inline double psd_k_from_psd_n(double g_n) { return g_n / (2.0 * M_PI); }
 // Space -> time at speed v (m/s), Eq. 2.
 inline double frequency_from_wavenumber(double k, double speed) { return speed * k / (2.0 * M_PI); }
 inline double wavenumber_from_frequency(double f, double speed) { return 2.0 * M_PI * f / speed; }
-inline double psd_time_from_psd_n(double g_n, double speed) { return g_n / speed; }  // m^2/Hz
 inline double psd_time_from_psd_k(double g_k, double speed) { return 2.0 * M_PI * g_k / speed; }
 inline double time_step_from_spacing(double dx, double speed) { return dx / speed; }  // Eq. 3
 

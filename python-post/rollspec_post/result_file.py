@@ -3,20 +3,16 @@ the expected filetype and a schema major version this package reads (OpenMC stat
 h5py is imported on first use, so a Python without it gets one line from __main__, not a traceback."""
 import numpy as np
 
-# sysexits.h
-EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_UNAVAILABLE, EX_SOFTWARE, EX_CANTCREAT, EX_IOERR = 64, 65, 66, 69, 70, 73, 74
+# PostError and the exit codes live in post_error (which safe_output imports too); named here as well, where
+# the package's modules and notebook users have always imported them.
+from .post_error import (EX_CANTCREAT, EX_DATAERR, EX_IOERR, EX_NOINPUT, EX_SOFTWARE,  # noqa: F401
+                         EX_UNAVAILABLE, EX_USAGE, PostError)
+from .safe_output import check_input
+
 # Every filetype the engine writes (grep '"rollspec-' src): the result (io/provenance.hpp), the texture
 # (cli/texture_command.cpp) and the cached tables (stiffness/cached_table.cpp, schema "1.0").
 KNOWN_SCHEMA_MAJOR = {"rollspec-result": 2, "rollspec-texture": 1, "rollspec-stiffness-table": 1,
                       "rollspec-blocked-force": 1, "rollspec-path-table": 1, "rollspec-equivalent-roughness": 1}
-
-
-class PostError(Exception):
-    """A user-facing error with the exit code the command returns."""
-
-    def __init__(self, message, exit_code):
-        super().__init__(message)
-        self.exit_code = exit_code
 
 
 def as_text(v):
@@ -44,7 +40,6 @@ def text_attr(obj, name, default=None):
 
 def open_rollspec(path, filetypes=("rollspec-result",)):
     import h5py
-    from .safe_output import check_input
     check_input(path, "a rollspec HDF5 file")  # a FIFO or device would block or never end
     try:
         f = h5py.File(path, "r")

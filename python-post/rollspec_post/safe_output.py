@@ -11,7 +11,7 @@ import errno
 import os
 import stat
 
-from .result_file import EX_CANTCREAT, EX_IOERR, EX_NOINPUT, EX_USAGE, PostError
+from .post_error import EX_CANTCREAT, EX_IOERR, EX_NOINPUT, EX_USAGE, PostError
 
 MARKER_KEY = "rollspec-post"  # PNG tEXt keyword
 KINDS = ("png", "pdf", "svg", "html")

@@ -17,7 +17,9 @@
 
 #include "src/ensemble/stop_signal.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/input_file.hpp"
+#include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
 #include "src/io/temp_files.hpp"
 
@@ -27,17 +29,15 @@ namespace {
 
 constexpr const char* kHeader = "# rollspec fit journal ";
 
+// The key's content hash, fed piece by piece. It starts from 1469598103934665603, a digit short of
+// FNV's offset basis since the journal's first version: kept, so existing journals stay valid.
 struct Fnv {
   std::uint64_t h = 1469598103934665603ull;
   void add(const std::string& s) {
-    for (const unsigned char c : s) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ 0xffu) * 1099511628211ull;  // a separator: ("ab", "c") differs from ("a", "bc")
+    static const unsigned char separator = 0xff;  // ("ab", "c") differs from ("a", "bc")
+    h = io::fnv1a64(&separator, 1, io::fnv1a64(s.data(), s.size(), h));
   }
-  void add(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    add(std::string(buf));
-  }
+  void add(double v) { add(io::exact_text(v)); }
   void add_file(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     std::ostringstream s;
@@ -45,12 +45,6 @@ struct Fnv {
     add(s.str());
   }
 };
-
-std::string hex(std::uint64_t v) {
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
 
 }  // namespace
 
@@ -111,7 +105,7 @@ FitJournal::FitJournal(std::string path, std::uint64_t key) : path_(std::move(pa
                           " (no such folder, or not writable)");
     return;
   }
-  const std::string expected = kHeader + hex(key_);
+  const std::string expected = kHeader + io::hex16(key_);
   const std::size_t end = text->find('\n');
   const std::string first = text->substr(0, end);
   if (end == std::string::npos || first.rfind(kHeader, 0) != 0)
@@ -183,7 +177,7 @@ void write_all(int fd, const std::string& bytes, const std::string& what) {
 
 // The whole journal through a temporary renamed onto it: the old file stays whole if this fails.
 void FitJournal::rewrite() {
-  std::string bytes = kHeader + hex(key_) + "\n";
+  std::string bytes = kHeader + io::hex16(key_) + "\n";
   for (const auto& [x, v] : order_) bytes += journal_line(x, v);
   const std::string temp = io::temp_name(path_);
   io::register_temp(temp);

@@ -18,12 +18,6 @@ namespace {
 
 using io::number_text;
 
-std::string exact(double v) {  // as the runs set it (fit_model.cpp)
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 const study::KeySpec* find_spec(const study::KeyReader& s, const std::string& key) {
   for (const auto& k : s.keys())
     if (k.full_name() == key) return &k;
@@ -52,8 +46,8 @@ study::Study load_with(const FitInputs& in, const std::vector<std::string>& sets
 void check_vary(const FitInputs& in, const study::KeyReader& base, const VaryRange& v) {
   const std::string where = "--vary " + v.key + "=" + number_text(v.lo) + ":" + number_text(v.hi);
   const study::KeySpec* k = find_spec(base, v.key);
-  if (!k) {  // the loader names an unknown key and the keys of its section
-    load_with(in, {v.key + "=" + exact(v.lo)}, where);
+  if (!k) {  // the loader names an unknown key and the keys of its section; the value as the runs set it
+    load_with(in, {v.key + "=" + io::exact_text(v.lo)}, where);
     throw usage_error(where + ": " + v.key + " is not a key of scene " + base.scene());
   }
   if (k->type != study::KeyType::real)
@@ -83,7 +77,7 @@ void check_fit_keys(const FitInputs& in) {
     for (const auto& v : in.vary)
       for (const double end : {v.lo, v.hi}) {
         std::vector<std::string> sets = points[i];
-        sets.push_back(v.key + "=" + exact(end));
+        sets.push_back(v.key + "=" + io::exact_text(end));
         load_with(in, sets, (at.empty() ? "" : at + ", ") + "--vary " + v.key + " at " + number_text(end));
       }
   }

@@ -3,34 +3,19 @@
 #include <cmath>
 #include <cstdio>
 
+#include <nlohmann/json.hpp>
+
 #include "kernels/spectral/fit_search.hpp"
 #include "src/cli/fit_model.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
 namespace {
 
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-// A JSON string: quotes and backslashes escaped, control characters (a path may hold them) as \u00XX.
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-      out += buf;
-      continue;
-    }
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
+// A JSON number, or null where the value is not finite (JSON has no NaN or infinity).
+nlohmann::ordered_json json_number(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
 // Fisher's combination of the points' p-values, or the one point's, with its verdict line.
@@ -114,7 +99,10 @@ std::string fit_text(const FitReport& r) {
     const std::size_t n = r.parameters.size();
     for (std::size_t i = 0; i < n && !r.correlation.empty(); ++i) {
       text += "\n ";
-      for (std::size_t j = 0; j < n; ++j) text += " " + number(r.correlation[i * n + j]);
+      for (std::size_t j = 0; j < n; ++j) {
+        const double c = r.correlation[i * n + j];
+        text += " " + (std::isfinite(c) ? io::significant_text(c, 10) : std::string("null"));
+      }
     }
     text += "\n";
   }
@@ -144,61 +132,67 @@ std::string fit_text(const FitReport& r) {
 }
 
 std::string fit_json(const FitReport& r) {
+  using json = nlohmann::ordered_json;
   const std::size_t n = r.parameters.size();
-  std::string text = "{\n  \"parameters\": {\n";
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& p = r.parameters[i];
-    const std::string interval =
-        r.no_interval.empty()
-            ? "[" + number(p.lower) + ", " + number(p.upper) + "], \"interval_at_range_end\": [" +
-                  (p.lower_at_range_end ? "true" : "false") + ", " + (p.upper_at_range_end ? "true" : "false") + "]"
-            : "null, \"interval_at_range_end\": null";
-    text += "    " + quoted(p.key) + ": {\"estimate\": " + number(p.estimate) + ", \"interval\": " + interval + "}" +
-            (i + 1 < n ? ",\n" : "\n");
+  json parameters = json::object();
+  for (const auto& p : r.parameters) {
+    const bool interval = r.no_interval.empty();
+    parameters[p.key] = {
+        {"estimate", json_number(p.estimate)},
+        {"interval", interval ? json::array({json_number(p.lower), json_number(p.upper)}) : json(nullptr)},
+        {"interval_at_range_end",
+         interval ? json::array({p.lower_at_range_end, p.upper_at_range_end}) : json(nullptr)}};
   }
-  text += "  },\n  \"correlation\": ";
-  if (r.correlation.empty())
-    text += "null";
-  else {
-    text += "[";
+  json correlation = nullptr;
+  if (!r.correlation.empty()) {
+    correlation = json::array();
     for (std::size_t i = 0; i < n; ++i) {
-      text += i ? ", [" : "[";
-      for (std::size_t j = 0; j < n; ++j) text += (j ? ", " : "") + number(r.correlation[i * n + j]);
-      text += "]";
+      json row = json::array();
+      for (std::size_t j = 0; j < n; ++j) row.push_back(json_number(r.correlation[i * n + j]));
+      correlation.push_back(row);
     }
-    text += "]";
   }
   const FitObjective& o = r.objective;
-  text += ",\n  \"confidence_level\": 0.95,\n  \"no_interval\": " +
-          (r.no_interval.empty() ? std::string("null") : quoted(r.no_interval)) +
-          ",\n  \"objective\": {\"common_random_numbers\": " + (o.common_random_numbers ? "true" : "false") +
-          ", \"incoherent_share\": " + number(o.incoherent_share) + ", \"step\": " + number(o.step) +
-          ", \"incoherent_limit\": " + number(kCoherenceLimit) + ", \"method\": " +
-          quoted(o.common_random_numbers ? "profile likelihood of the study's seed" : "quadratic response surface") +
-          ", \"surface_runs\": " + std::to_string(o.surface_runs) + ", \"rounds\": " + std::to_string(o.rounds) +
-          ", \"lack_of_fit_p\": " + (o.common_random_numbers ? "null" : number(o.lack_of_fit_p)) +
-          ", \"text\": " + quoted(objective_text(o)) + "}" + ",\n  \"log_likelihood\": " + number(r.log_likelihood) +
-          ",\n  \"p_value\": " + (r.test_defined ? number(r.p_value) : "null") +
-          ",\n  \"goodness_of_fit\": " + quoted(r.verdict) +
-          ",\n  \"p_value_uncorrected\": " + (r.uncorrected_defined ? number(r.p_value_uncorrected) : "null") +
-          ",\n  \"goodness_of_fit_uncorrected\": " + quoted(r.verdict_uncorrected) + ",\n  \"points\": [";
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const auto& p = r.points[i];
-    text += std::string(i ? "," : "") + "\n    {\"measurement\": " + quoted(p.measurement) +
-            ", \"at\": " + quoted(p.at) + ", \"bands\": " + std::to_string(p.bands) +
-            ", \"measured_averages\": " + number(p.records) +
-            ", \"p_value\": " + (p.fitted.defined ? number(p.fitted.p_value) : "null") +
-            ", \"goodness_of_fit\": " + quoted(p.fitted_verdict) +
-            ", \"p_value_uncorrected\": " + (p.test.result.defined ? number(p.test.result.p_value) : "null") +
-            ", \"goodness_of_fit_uncorrected\": " + quoted(p.test.verdict) +
-            ", \"question\": " + (p.question.empty() ? std::string("null") : quoted(p.question)) + "}";
-  }
-  text += "\n  ],\n  \"bands\": " + std::to_string(r.bands) +
-          ",\n  \"realisations\": " + std::to_string(r.realisations) +
-          ",\n  \"measured_averages\": " + (r.points.size() == 1 ? number(r.points[0].records) : "null") +
-          ",\n  \"evaluations\": " + std::to_string(r.evaluations) +
-          ",\n  \"reused_from_journal\": " + std::to_string(r.reused) + "\n}\n";
-  return text;
+  const json objective = {
+      {"common_random_numbers", o.common_random_numbers},
+      {"incoherent_share", json_number(o.incoherent_share)},
+      {"step", json_number(o.step)},
+      {"incoherent_limit", json_number(kCoherenceLimit)},
+      {"method", o.common_random_numbers ? "profile likelihood of the study's seed" : "quadratic response surface"},
+      {"surface_runs", o.surface_runs},
+      {"rounds", o.rounds},
+      {"lack_of_fit_p", o.common_random_numbers ? json(nullptr) : json_number(o.lack_of_fit_p)},
+      {"text", objective_text(o)}};
+  json points = json::array();
+  for (const auto& p : r.points)
+    points.push_back(
+        {{"measurement", p.measurement},
+         {"at", p.at},
+         {"bands", p.bands},
+         {"measured_averages", json_number(p.records)},
+         {"p_value", p.fitted.defined ? json_number(p.fitted.p_value) : json(nullptr)},
+         {"goodness_of_fit", p.fitted_verdict},
+         {"p_value_uncorrected", p.test.result.defined ? json_number(p.test.result.p_value) : json(nullptr)},
+         {"goodness_of_fit_uncorrected", p.test.verdict},
+         {"question", p.question.empty() ? json(nullptr) : json(p.question)}});
+  const json out = {{"parameters", parameters},
+                    {"correlation", correlation},
+                    {"confidence_level", 0.95},
+                    {"no_interval", r.no_interval.empty() ? json(nullptr) : json(r.no_interval)},
+                    {"objective", objective},
+                    {"log_likelihood", json_number(r.log_likelihood)},
+                    {"p_value", r.test_defined ? json_number(r.p_value) : json(nullptr)},
+                    {"goodness_of_fit", r.verdict},
+                    {"p_value_uncorrected", r.uncorrected_defined ? json_number(r.p_value_uncorrected) : json(nullptr)},
+                    {"goodness_of_fit_uncorrected", r.verdict_uncorrected},
+                    {"points", points},
+                    {"bands", r.bands},
+                    {"realisations", r.realisations},
+                    {"measured_averages", r.points.size() == 1 ? json_number(r.points[0].records) : json(nullptr)},
+                    {"evaluations", r.evaluations},
+                    {"reused_from_journal", r.reused}};
+  // Text from the user (a measurement's path, a key) may hold bytes that are not UTF-8: replaced, not refused.
+  return out.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace rollspec::cli

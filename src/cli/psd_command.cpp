@@ -17,6 +17,7 @@
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/content_hash.hpp"
+#include "src/io/number_text.hpp"
 #include "src/io/psd_csv.hpp"
 #include "src/io/signal_file.hpp"
 #include "src/version.hpp"
@@ -144,10 +145,9 @@ int psd_command(const Args& args) {
       if (!std::isfinite(psd[c][k])) {
         double peak = 0.0;
         for (double v : t.values[c]) peak = std::max(peak, std::fabs(v));
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.6g", peak);
         throw data_error(
-            input + ": column '" + t.channels[c] + "': the PSD overflows a double (largest |value| " + buf +
+            input + ": column '" + t.channels[c] + "': the PSD overflows a double (largest |value| " +
+            io::number_text(peak) +
             " m/s^2); allowed: samples whose squares stay finite, e.g. |value| < 1e100 (rescale the unit)");
       }
   }

@@ -9,6 +9,7 @@
 #include "src/cli/sweep_run.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
+#include "src/io/provenance.hpp"
 
 namespace rollspec::cli {
 
@@ -18,7 +19,9 @@ int run_command(const Args& args) {
       "[--resume | --restart] [--force] [--quiet]\n"
       "       rollspec run --resume --out FILE.h5 [--quiet]   (the checkpoint's own study; no study file needed)\n"
       "\n"
-      "Runs the study's Monte-Carlo ensemble and writes the result file (HDF5, schema 1: /psd, /bands,\n"
+      "Runs the study's Monte-Carlo ensemble and writes the result file (HDF5, schema " +
+      std::string(io::kResultSchemaVersion) +
+      ": /psd, /bands,\n"
       "provenance). The study is validated completely before any work starts. Completed chunks of\n"
       "realisations are checkpointed in FILE.h5.checkpoint/; after Ctrl-C (exit 130) or a crash,\n"
       "--resume finishes the ensemble with the checkpoint's own settings and a result bitwise identical\n"

@@ -18,7 +18,8 @@ void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, co
                      const ensemble::EnsembleSums& sums, bool quiet, bool rebuild) {
   if (cfg.only >= 0) return;
   // Decided on rank 0 (it holds the sums), known to every rank.
-  const std::vector<std::string> sets = ensemble::mpi_rank() == 0 ? scene.closed_contact_sets(sums) : std::vector<std::string>{};
+  const std::vector<std::string> sets =
+      ensemble::mpi_rank() == 0 ? scene.closed_contact_sets(sums) : std::vector<std::string>{};
   if (!ensemble::any_rank(!sets.empty())) return;
   const std::vector<std::string> closed_sets =
       sets.empty() ? std::vector<std::string>{"contact.loss=closed", "stiffness.table_error=none"} : sets;
@@ -31,8 +32,9 @@ void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, co
   const std::size_t nv = scene.values_per_realisation(), lin = scene.linear_spectral_values();
   if (closed->values_per_realisation() != nv) throw std::logic_error("loss effect: closed scene of another shape");
   if (!quiet)
-    std::fprintf(stderr, "loss of contact: the realisations again beside the same ones with a contact that never "
-                         "opens, to size what it moves\n");
+    std::fprintf(stderr,
+                 "loss of contact: the realisations again beside the same ones with a contact that never "
+                 "opens, to size what it moves\n");
   ensemble::EnsembleConfig c = cfg;
   c.checkpoint_dir.clear();
   c.resume = false;
@@ -44,7 +46,8 @@ void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, co
         for (std::size_t j = 0; j < lin; ++j) values[2 * nv + j] = values[j] * values[nv + j];
       });
   if (ensemble::mpi_rank() != 0) return;
-  const io::PsdEnsemble open = scene.spectra(ensemble::block_sums(both, 0, nv)), shut = closed->spectra(ensemble::block_sums(both, 1, nv));
+  const io::PsdEnsemble open = scene.spectra(ensemble::block_sums(both, 0, nv)),
+                        shut = closed->spectra(ensemble::block_sums(both, 1, nv));
   const std::size_t n = open.band_scatter.size();
   std::vector<double> products(n);
   for (std::size_t i = 0; i < n; ++i) products[i] = both.sum[2 * nv + lin - n + i];

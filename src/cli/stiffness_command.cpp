@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "kernels/contact/hertz.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/ensemble/mpi_context.hpp"
@@ -68,7 +69,7 @@ int stiffness_command(const Args& args) {
         "does not describe this table, use the table itself (the dynamics do)\n",
         t.fit_coefficient, t.fit_exponent, 100.0 * t.fit_max_relative_error, 100.0 * t.fit_tolerance);
   const double w = pair.weight;
-  const double delta_h = std::pow(3.0 * w / (4.0 * t.effective_modulus * std::sqrt(t.ball_radius)), 2.0 / 3.0);
+  const double delta_h = contact::hertz::approach_at_load(t.ball_radius, t.effective_modulus, w);
   const double k_h = 2.0 * t.effective_modulus * std::sqrt(t.ball_radius * delta_h);
   if (std::isnan(t.approach_at(w)))
     std::printf(

@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -30,17 +31,6 @@ std::string chunk_name(std::uint64_t lo, std::uint64_t hi) {
 }
 }  // namespace
 
-std::uint64_t fnv1a64(const void* data, std::size_t n, std::uint64_t h) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < n; ++i) {
-    h ^= p[i];
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-std::uint64_t fnv1a64(const std::string& s) { return fnv1a64(s.data(), s.size()); }
-
 CheckpointStore::CheckpointStore(std::string directory, std::uint64_t study_hash)
     : directory_(std::move(directory)), hash_(study_hash) {}
 
@@ -54,7 +44,7 @@ void CheckpointStore::write(const ChunkSums& c) const {
   std::memcpy(p, kMagic, sizeof kMagic), p += sizeof kMagic;
   for (std::uint64_t v : {hash_, c.lo, c.hi, n}) std::memcpy(p, &v, sizeof v), p += sizeof v;
   std::memcpy(p, c.values.data(), c.values.size() * sizeof(double));
-  const std::uint64_t sum = fnv1a64(buf.data(), buf.size());
+  const std::uint64_t sum = io::fnv1a64(buf.data(), buf.size());
   const std::string final_name = (fs::path(directory_) / chunk_name(c.lo, c.hi)).string();
   const std::string tmp = final_name + ".tmp";
   io::register_temp(tmp);
@@ -134,7 +124,7 @@ ChunkSums read_chunk_file(const std::string& where, std::size_t n_values, std::u
   const std::vector<char> buf = read_chunk_bytes(where, n_values, hash, chunk_file_size(n_values));
   std::uint64_t stored = 0;
   std::memcpy(&stored, buf.data() + buf.size() - sizeof stored, sizeof stored);
-  if (stored != fnv1a64(buf.data(), buf.size() - sizeof stored))
+  if (stored != io::fnv1a64(buf.data(), buf.size() - sizeof stored))
     throw DamagedChunk(where + ": damaged checkpoint (checksum)");
   ChunkSums c;
   std::tie(c.lo, c.hi) = header_bounds(buf);

@@ -23,9 +23,6 @@ struct ChunkSums {
   std::vector<double> values;    // sums over the chunk: [sum..., sum of squares...]
 };
 
-std::uint64_t fnv1a64(const void* data, std::size_t n, std::uint64_t h = 14695981039346656037ull);
-std::uint64_t fnv1a64(const std::string& s);
-
 // Files rollspec writes in a checkpoint directory: the manifest (checkpoint_guard.hpp), the lock,
 // chunk_<lo>_<hi>.bin and their temporaries. Nothing else is ever removed.
 constexpr const char* kManifestName = "manifest";

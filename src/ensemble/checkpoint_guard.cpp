@@ -14,6 +14,7 @@
 
 #include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -23,12 +24,6 @@ namespace rollspec::ensemble {
 namespace {
 constexpr const char* kHeader = "rollspec checkpoint manifest 1\n";
 constexpr std::size_t kMaxManifestBytes = 16u << 20;
-
-std::string hex16(std::uint64_t v) {
-  char b[17];
-  std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(v));
-  return b;
-}
 
 std::string body_of(const CheckpointManifest& m) {
   std::ostringstream s;
@@ -72,7 +67,7 @@ std::optional<CheckpointManifest> read_manifest(const std::string& directory) {
   const auto tail = text.rfind("checksum = ");
   if (text.compare(0, std::strlen(kHeader), kHeader) != 0 || tail == std::string::npos) throw damaged("header");
   const std::string body = text.substr(0, tail);
-  if (text.substr(tail) != "checksum = " + hex16(fnv1a64(body)) + "\n") throw damaged("checksum");
+  if (text.substr(tail) != "checksum = " + io::hex16(io::fnv1a64(body)) + "\n") throw damaged("checksum");
   CheckpointManifest m;
   std::istringstream lines(body.substr(std::strlen(kHeader)));
   std::string line;
@@ -98,7 +93,7 @@ void write_manifest(const std::string& directory, const CheckpointManifest& m) {
   errno = 0;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << body << "checksum = " << hex16(fnv1a64(body)) << "\n";
+    out << body << "checksum = " << io::hex16(io::fnv1a64(body)) << "\n";
     out.close();
     if (!out) {
       const int err = errno ? errno : EIO;

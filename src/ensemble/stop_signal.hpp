@@ -15,7 +15,6 @@ namespace rollspec::ensemble {
 // Installs the handlers (first thing in main; idempotent).
 void install_stop_handlers();
 bool stop_requested();
-void request_stop();  // for tests
 
 class CriticalSection {
  public:

@@ -146,7 +146,6 @@ void read_table_term(const Hdf5Reader& r, const SweepPoint& at, std::size_t row,
   b.table = open == std::string::npos ? "table" : includes.substr(open + 2, includes.find(" (", open) - open - 2);
 }
 
-
 }  // namespace
 
 SensorChoice sensor_choice(const std::string& name, std::optional<double> position) {
@@ -280,8 +279,8 @@ std::vector<double> table_log_covariance(const BandLevels& b, const std::vector<
     for (std::size_t k = 0; k < p; ++k)
       for (std::size_t l = 0; l < p; ++l)
         if (k == l || !b.table_independent_bands)
-          cov[k * p + l] += scale * (b.table_levels_db[i * nb + band[k]] - mean[k]) *
-                            (b.table_levels_db[i * nb + band[l]] - mean[l]);
+          cov[k * p + l] +=
+              scale * (b.table_levels_db[i * nb + band[k]] - mean[k]) * (b.table_levels_db[i * nb + band[l]] - mean[l]);
   return cov;
 }
 

@@ -27,10 +27,10 @@ struct BandLevels {
   // The table's own error (kernels/spectral D-30, D-31): the N leave-one-out sub-table runs' levels of
   // this row, N x bands (empty: the result's table is not random, or its error was not estimated).
   std::vector<double> table_levels_db;
-  std::size_t table_units = 0;         // N
-  double table_dof = 0.0;              // nu_T
-  double table_variance_factor = 1.0;  // D-30d
-  std::string table;                   // the table the term is of, as /bands@interval_includes says
+  std::size_t table_units = 0;           // N
+  double table_dof = 0.0;                // nu_T
+  double table_variance_factor = 1.0;    // D-30d
+  std::string table;                     // the table the term is of, as /bands@interval_includes says
   bool table_independent_bands = false;  // D-31c: the term's covariance is diagonal (/bands@table_covariance)
   // The result's table is random but its error was not estimated (/bands@interval_includes says the
   // intervals are conditional on it): a verdict cannot carry it.

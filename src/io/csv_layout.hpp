@@ -28,11 +28,10 @@ struct CsvLayout {
 // one at a time, so that the whole file is looked at without being held. The header is the non-numeric
 // line followed by the longest run of numeric rows of its width (the earliest on ties; only the first
 // line if `first_only`), with a units row (every cell a unit, bracketed or empty, one at least a known
-// unit) between them or just above it. A line after numeric rows of its width is a bad data row, never a header, if any of its
-// cells is a number; a line of names there heads a second, longer table (a table in the preamble).
-// The delimiter is the one whose header explains the most rows: tab, ';' and ',' in that order on
-// ties, each only if the header holds it; one column with a decimal comma only if it explains strictly
-// more rows than ',' and the header holds no ','.
+// unit) between them or just above it. A line after numeric rows of its width is a bad data row, never a header, if any
+// of its cells is a number; a line of names there heads a second, longer table (a table in the preamble). The delimiter
+// is the one whose header explains the most rows: tab, ';' and ',' in that order on ties, each only if the header holds
+// it; one column with a decimal comma only if it explains strictly more rows than ',' and the header holds no ','.
 class CsvLayoutFinder {
  public:
   explicit CsvLayoutFinder(bool first_only) : first_only_(first_only) {}

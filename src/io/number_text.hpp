@@ -1,8 +1,8 @@
 #pragma once
-// Numbers as messages and tables print them.
-// number_text: six significant digits ("%.6g"), nan and inf spelled out; four_digits: "%.4g";
-// exact_text: "%.17g", every bit of a double (the input texts that cached tables hash); si_text and
-// length_text: SI-prefixed, six digits ("156.25 nm").
+// Numbers as messages and tables print them, all through significant_text (printf's "%.*g"):
+// number_text: six significant digits ("%.6g"), nan and inf spelled out; four_digits and three_digits:
+// "%.4g", "%.3g"; exact_text: "%.17g", every bit of a double (the input texts that cached tables hash);
+// si_text and length_text: SI-prefixed, six digits ("156.25 nm").
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -10,23 +10,17 @@
 
 namespace rollspec::io {
 
-inline std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
-inline std::string four_digits(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
-
-inline std::string exact_text(double v) {
+// v with `digits` significant digits (1 to 17), as printf's %.*g prints it: the one number formatter.
+inline std::string significant_text(double v, int digits) {
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
 }
+
+inline std::string number_text(double v) { return significant_text(v, 6); }
+inline std::string four_digits(double v) { return significant_text(v, 4); }
+inline std::string three_digits(double v) { return significant_text(v, 3); }
+inline std::string exact_text(double v) { return significant_text(v, 17); }
 
 // A quantity with an SI prefix and six significant digits (or `digits`), for lengths far from 1 m:
 // si_text(1.5625e-7, "m") = "156.25 nm", si_text(0.0086722, "m") = "8.6722 mm" (ASCII "u" for micro).
@@ -43,9 +37,7 @@ inline std::string si_text(double v, const std::string& unit, int digits = 6) {
         break;
       }
   }
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*g %s", digits, v / p.first, p.second);
-  return buf + unit;
+  return significant_text(v / p.first, digits) + " " + p.second + unit;
 }
 
 inline std::string length_text(double metres, int digits = 6) { return si_text(metres, "m", digits); }

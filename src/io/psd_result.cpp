@@ -65,7 +65,8 @@ void write_table_std(Hdf5Writer& w, const std::string& group, const std::vector<
 // What the intervals include, and the table's own term where they include it (D-30).
 void write_table_error(Hdf5Writer& w, const PsdEnsemble& e, std::size_t nb) {
   const TableError& t = e.table_error;
-  const std::string includes = e.no_interval.empty() ? interval_includes(t) : "none (no interval: " + e.no_interval + ")";
+  const std::string includes =
+      e.no_interval.empty() ? interval_includes(t) : "none (no interval: " + e.no_interval + ")";
   w.attribute("/psd", "interval_includes", includes);
   w.attribute("/bands", "interval_includes", includes);
   if (t.surfaces == 0) return;
@@ -116,8 +117,7 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     hi[i] = ci.defined() ? e.mean[i] * ci.upper : HUGE_VAL;
     nu[i] = ci.dof;
     if (e.table_error.surfaces > 0)
-      widen_bin_interval(e.mean[i], lo[i], hi[i], e.table_error.bin_variance[i], e.table_error.dof, K,
-                         e.confidence);
+      widen_bin_interval(e.mean[i], lo[i], hi[i], e.table_error.bin_variance[i], e.table_error.dof, K, e.confidence);
   }
   write_frequency_scale(w, "/psd", e.frequency);
   write_sensor_scale(w, "/psd", e.sensors);

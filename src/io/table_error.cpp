@@ -32,8 +32,7 @@ double paired_noise(const PairedSums& p, std::size_t j, std::vector<double>& m) 
 }  // namespace
 
 TableError table_jackknife(const std::vector<PsdEnsemble>& sub_tables, const PairedSums& paired,
-                           const std::string& table, const std::string& unit, double variance_factor,
-                           double dof) {
+                           const std::string& table, const std::string& unit, double variance_factor, double dof) {
   TableError t;
   t.surfaces = sub_tables.size();
   t.dof = dof > 0.0 ? dof : static_cast<double>(t.surfaces) - 1.0;
@@ -98,14 +97,14 @@ std::string table_noise_warning(const TableError& t, std::uint64_t K) {
   if (noise <= 0.5) return "";
   char text[400];
   const std::string k_needed =
-      std::isfinite(r)
-          ? "about " + std::to_string(static_cast<long long>(std::ceil(4.0 * r * static_cast<double>(K))))
-          : "enough realisations that the table's term shows above it";
-  std::snprintf(text, sizeof text,
-                "table jackknife: %.0f %% of the jackknife variance (median over the bands) is the sub-table runs' own "
-                "noise, not the table's (the realisations are chaotic in the table), so with %llu realisations per "
-                "sub-table the intervals are wider than the table's error alone needs (kernels/spectral D-30c, D-30f); ",
-                100.0 * noise, static_cast<unsigned long long>(K));
+      std::isfinite(r) ? "about " + std::to_string(static_cast<long long>(std::ceil(4.0 * r * static_cast<double>(K))))
+                       : "enough realisations that the table's term shows above it";
+  std::snprintf(
+      text, sizeof text,
+      "table jackknife: %.0f %% of the jackknife variance (median over the bands) is the sub-table runs' own "
+      "noise, not the table's (the realisations are chaotic in the table), so with %llu realisations per "
+      "sub-table the intervals are wider than the table's error alone needs (kernels/spectral D-30c, D-30f); ",
+      100.0 * noise, static_cast<unsigned long long>(K));
   return text + k_needed + " would bring the noise to a quarter of the table's term";
 }
 

@@ -20,15 +20,15 @@ struct TableError {
   std::vector<double> band_variance;  // rows x bands, dB^2
   std::vector<double> bin_noise;      // the part of it that is the runs' own noise (D-30c), dB^2 (NaN: unknown)
   std::vector<double> band_noise;
-  std::vector<double> band_levels;    // the N sub-table runs' band levels, N x (rows x bands), dB: the term's
-                                      // band-by-band covariance for compare and fit (D-31)
-  double dof = 0.0;               // nu_T of the variances: N - 1, fewer over overlapping Welch segments (D-30d)
-  double variance_factor = 1.0;   // applied to the jackknife: 1, or 2 N / nu_Welch over overlapping segments (D-30d)
-  std::string table;              // the table the intervals are conditional on ("": none)
-  std::string unit = "surfaces";  // what the jackknife left out one at a time (surfaces, strips)
-  std::string noise_warning;      // non-empty when the term is mostly the runs' own noise (table_noise_warning)
-  bool independent_bands = false;  // D-31c: only each band's variance is the table's term across bands
-  std::uint64_t realisations = 0;  // K_J, the sub-table runs' realisations (D-30f: may exceed the run's K)
+  std::vector<double> band_levels;  // the N sub-table runs' band levels, N x (rows x bands), dB: the term's
+                                    // band-by-band covariance for compare and fit (D-31)
+  double dof = 0.0;                 // nu_T of the variances: N - 1, fewer over overlapping Welch segments (D-30d)
+  double variance_factor = 1.0;     // applied to the jackknife: 1, or 2 N / nu_Welch over overlapping segments (D-30d)
+  std::string table;                // the table the intervals are conditional on ("": none)
+  std::string unit = "surfaces";    // what the jackknife left out one at a time (surfaces, strips)
+  std::string noise_warning;        // non-empty when the term is mostly the runs' own noise (table_noise_warning)
+  bool independent_bands = false;   // D-31c: only each band's variance is the table's term across bands
+  std::uint64_t realisations = 0;   // K_J, the sub-table runs' realisations (D-30f: may exceed the run's K)
 };
 
 // Band levels (dB) of e, rows x bands, as /bands/level_db holds them.

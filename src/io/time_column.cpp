@@ -14,11 +14,7 @@
 namespace rollspec::io {
 
 namespace {
-std::string stamp_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string stamp_text(double v) { return significant_text(v, 10); }
 
 const char* const kAllowed =
     "strictly increasing, uniformly spaced stamps (each within 0.1 sample interval of t_0 + i*dt)";
@@ -87,10 +83,6 @@ double rate_from_time_stamps(const std::vector<double>& t, double seconds_per_un
   return rate;
 }
 
-std::string rate_text(double hz) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", hz);
-  return buf;
-}
+std::string rate_text(double hz) { return significant_text(hz, 10); }
 
 }  // namespace rollspec::io

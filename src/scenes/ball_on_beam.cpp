@@ -459,7 +459,7 @@ class BallOnBeam final : public EnsembleScene {
   const BallOnBeamSettings b_;  // the keys' values; the table stages resolve contact_
   ResolvedContact contact_;
   io::LossEffect loss_effect_;  // D-35: what lost contact moved (measured: the law assumes a closed contact)
-  io::TableError table_error_;                          // what the intervals include besides the realisations
+  io::TableError table_error_;  // what the intervals include besides the realisations
   std::optional<stiffness::TableStudy> tables_;         // table_error = jackknife: the sub-tables' inputs
   std::optional<stiffness::TableStudy> filter_tables_;  // filter = solver: what plan --probe solves
   bool linearised() const { return b_.linearised(); }

@@ -6,9 +6,9 @@
 #include <exception>
 #include <string>
 
-#include "kernels/beam/contact_patch_filter.hpp"
 #include "kernels/beam/modal_beam.hpp"
 #include "kernels/beam/quadratic_hold_step.hpp"
+#include "kernels/contact/hertz.hpp"
 #include "kernels/integrators/exact_oscillator_step.hpp"
 #include "kernels/texture/contact_filtered_psd.hpp"
 #include "src/io/number_text.hpp"
@@ -288,10 +288,9 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   law.damping = b.contact_section.damping;
   law.loss = b.contact_section.loss == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
   law.allow_tension = b.contact_section.loss == "closed";  // linearised only (the section refuses it otherwise)
-  const double hertz_compression =
-      std::pow(3.0 * b.weight() / (4.0 * law.effective_modulus * std::sqrt(radius)), 2.0 / 3.0);
+  const double hertz_compression = contact::hertz::approach_at_load(radius, law.effective_modulus, b.weight());
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
-  read_contact_filter(s.equivalent_roughness, b, beam::hertz_half_width(radius, hertz_compression));
+  read_contact_filter(s.equivalent_roughness, b, contact::hertz::contact_radius_at_approach(radius, hertz_compression));
   const study::TextureSection& texture = s.texture;
   b.roughness_origin = texture.source == "self-affine" ? texture.rms_origin : texture.source_origin;
   // Before any step or table check that the values could break.
@@ -323,7 +322,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
                      : b.psd;
   if (!b.uses_table() && !b.blocked_solver()) {
     b.contact_stiffness =
-        b.linearised() ? law.k0 : 2.0 * law.effective_modulus * std::sqrt(radius * b.static_compression);
+        b.linearised() ? law.k0
+                       : contact::hertz::stiffness_at_approach(radius, law.effective_modulus, b.static_compression);
     check_contact_resolution(b, b.contact_stiffness);
   }
   check_step_coefficients(b);

@@ -20,8 +20,8 @@
 
 namespace rollspec::scenes {
 
-void BallOnBeamWriter::write_loss_of_contact(io::Hdf5Writer& w, double share, const io::LossEffect& effect,
-                                             bool sized, std::size_t bands) const {
+void BallOnBeamWriter::write_loss_of_contact(io::Hdf5Writer& w, double share, const io::LossEffect& effect, bool sized,
+                                             std::size_t bands) const {
   // D-35's shifts whenever the run sizes a loss, zero where the contact never opened (the run with a closed
   // contact is then the same bits): every point of a sweep holds the same datasets.
   if (sized) {
@@ -30,9 +30,8 @@ void BallOnBeamWriter::write_loss_of_contact(io::Hdf5Writer& w, double share, co
     const bool measured = effect.measured && effect.shift_db.size() == n;
     w.write("/bands/loss_of_contact_shift_db", {rows(), bands}, measured ? effect.shift_db.data() : zero.data(), "dB",
             "band level as run minus with a contact that never opens, the same realisations (kernels/spectral D-35)");
-    w.write("/bands/loss_of_contact_shift_se_db", {rows(), bands},
-            measured ? effect.shift_se_db.data() : zero.data(), "dB",
-            "standard error of loss_of_contact_shift_db from the pairs of realisations");
+    w.write("/bands/loss_of_contact_shift_se_db", {rows(), bands}, measured ? effect.shift_se_db.data() : zero.data(),
+            "dB", "standard error of loss_of_contact_shift_db from the pairs of realisations");
     for (const char* d : {"/bands/loss_of_contact_shift_db", "/bands/loss_of_contact_shift_se_db"}) {
       w.attach_scale(d, "/bands/sensor", 0);
       w.attach_scale(d, "/bands/centre_frequency", 1);

@@ -5,17 +5,15 @@
 #include <cstdio>
 #include <exception>
 
+#include "kernels/contact/hertz.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
+#include "src/io/number_text.hpp"
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/study/key_reader.hpp"
 
 namespace rollspec::scenes {
 
-std::string dim(double v, const char* unit) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, *unit ? "%.3g %s" : "%.3g%s", v, unit);
-  return buf;
-}
+std::string dim(double v, const char* unit) { return io::three_digits(v) + (*unit ? " " : "") + unit; }
 
 bool self_affine_written(const study::KeyReader& s) {
   bool written = false;
@@ -138,7 +136,8 @@ double e_star(double e1, double nu1, double e2, double nu2) {
 double hertz_radius(const study::KeyReader& s, double e, double nu) {
   const double r = s.real("ball.radius"), g = s.real("ball.gravity");
   const double weight = g > 0.0 ? 4.0 / 3.0 * M_PI * r * r * r * s.real("ball.density") * g : 1.0;
-  return std::cbrt(3.0 * weight * r / (4.0 * e_star(s.real("ball.youngs_modulus"), s.real("ball.poisson"), e, nu)));
+  return contact::hertz::contact_radius_at_load(r, e_star(s.real("ball.youngs_modulus"), s.real("ball.poisson"), e, nu),
+                                                weight);
 }
 
 // The ball alone: its Hertz contact against atoms and against Hertz theory's small contacts.

@@ -160,15 +160,16 @@ std::vector<Item> ball_on_beam(const BallOnBeamSections& b, double threads) {
   if (b.stiffness.table_jackknife) {  // D-30: the N sub-tables' scenes run together, each its own records and sums
     const bool surfaces = (b.contact.law == "table" || b.contact.law == "literal") && b.stiffness.rough;
     const bool segments = b.contact.law == "linearised" && b.contact.blocked_force == "solver";  // else strips
-    const double n = static_cast<double>(surfaces ? b.stiffness.realisations
+    const double n = static_cast<double>(surfaces   ? b.stiffness.realisations
                                          : segments ? stiffness::f0_segments(blocked_force_grid(b)).segments
                                                     : b.equivalent_roughness.strips);
-    out.push_back({n * (out[out.size() - 2].bytes + out.back().bytes),
-                   {surfaces   ? key_text("stiffness", "realisations", n)
-                    : segments ? "[blocked_force] segment, strip_length (" + io::exact_text(n) + " Welch segments of F0)"
-                               : key_text("equivalent_roughness", "strips", n),
-                    "[stiffness] table_error = jackknife"},
-                   "the sub-tables' scenes (time records per thread, chunk sums)"});
+    out.push_back(
+        {n * (out[out.size() - 2].bytes + out.back().bytes),
+         {surfaces   ? key_text("stiffness", "realisations", n)
+          : segments ? "[blocked_force] segment, strip_length (" + io::exact_text(n) + " Welch segments of F0)"
+                     : key_text("equivalent_roughness", "strips", n),
+          "[stiffness] table_error = jackknife"},
+         "the sub-tables' scenes (time records per thread, chunk sums)"});
   }
   const double histories = static_cast<double>(b.output.time_histories);
   if (histories > 0)

@@ -1,7 +1,7 @@
 #include <sstream>
 
-#include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/random_oscillator.hpp"
 #include "src/scenes/scene.hpp"
@@ -87,7 +87,7 @@ const std::vector<std::string>& finishing_keys() {
 std::uint64_t study_result_hash(const KeyReader& s) {
   std::vector<std::string> excluded = {"study.realisations", "study.description", "ensemble.chunk_size"};
   excluded.insert(excluded.end(), finishing_keys().begin(), finishing_keys().end());
-  return ensemble::fnv1a64(std::string(kVersion) + "\n" + s.canonical_text_without(excluded));
+  return io::fnv1a64(std::string(kVersion) + "\n" + s.canonical_text_without(excluded));
 }
 
 }  // namespace rollspec::scenes

@@ -7,6 +7,7 @@
 
 #include <omp.h>
 
+#include "kernels/contact/hertz.hpp"
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/psd.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -47,7 +48,7 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
                                             const study::StripSurfaceSection& surface, const texture::Psd& psd,
                                             double radius, double e_star, double load, double max_step_length) {
   BlockedForceGeometry g;
-  const double a = std::cbrt(3.0 * load * radius / (4.0 * e_star));
+  const double a = contact::hertz::contact_radius_at_load(radius, e_star, load);
   g.contact_radius = a;
   g.rms = strip_rms(psd, a);
   const double reach = std::max(1.5 * a, std::sqrt(2.0 * radius * (a * a / radius + kPeakSigmas * g.rms)));

@@ -13,10 +13,10 @@
 #include "kernels/contact/blocked_force.hpp"
 #include "kernels/contact/version.hpp"
 #include "kernels/spectral/welch.hpp"
-#include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/stiffness/stiffness_table.hpp"
@@ -48,8 +48,8 @@ const TableKind kBlockedForceTableKind = {kBlockedForceFileType, "/blocked_force
 
 std::string BlockedForceTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
-  for (double v : {approach, k0, mean_force}) h = ensemble::fnv1a64(&v, sizeof v, h);
-  return hex16(h);
+  for (double v : {approach, k0, mean_force}) h = io::fnv1a64(&v, sizeof v, h);
+  return io::hex16(h);
 }
 
 double BlockedForceTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }

@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "kernels/contact/version.hpp"
-#include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/stiffness/table_location.hpp"
@@ -74,7 +74,7 @@ StoredIdentity load_checked(const TableKind& kind, const std::string& path, Tabl
 
 CachedTable::CachedTable(const TableKind& kind, const TableStore& store, std::string inputs,
                          const std::string& explicit_path)
-    : kind_(kind), store_(store), inputs_(std::move(inputs)), hash_(hex16(ensemble::fnv1a64(inputs_))) {
+    : kind_(kind), store_(store), inputs_(std::move(inputs)), hash_(io::hex16(io::fnv1a64(inputs_))) {
   const fs::path dir = fs::path(store_.study_file).parent_path();
   automatic_ = explicit_path.empty();
   if (!automatic_)

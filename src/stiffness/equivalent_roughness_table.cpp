@@ -14,10 +14,10 @@
 #include "kernels/contact/equivalent_roughness.hpp"
 #include "kernels/contact/version.hpp"
 #include "kernels/spectral/welch.hpp"
-#include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -62,8 +62,8 @@ const TableKind kEquivalentRoughnessTableKind = {kEquivalentRoughnessFileType, "
 
 std::string EquivalentRoughnessTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
-  for (double v : {smooth_approach, smooth_stiffness, load, strips}) h = ensemble::fnv1a64(&v, sizeof v, h);
-  return hex16(h);
+  for (double v : {smooth_approach, smooth_stiffness, load, strips}) h = io::fnv1a64(&v, sizeof v, h);
+  return io::hex16(h);
 }
 
 double EquivalentRoughnessTable::stiffness_ratio() const {

@@ -13,10 +13,10 @@
 #include "kernels/contact/path_table.hpp"
 #include "kernels/contact/version.hpp"
 #include "kernels/texture/line_texture.hpp"
-#include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -120,8 +120,8 @@ std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double
 
 std::string PathTableData::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
-  h = ensemble::fnv1a64(&load, sizeof load, h);
-  return hex16(h);
+  h = io::fnv1a64(&load, sizeof load, h);
+  return io::hex16(h);
 }
 
 void PathTableData::load_from(const io::Hdf5Reader& r) {

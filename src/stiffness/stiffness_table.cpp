@@ -16,10 +16,10 @@
 #include "kernels/contact/geometry.hpp"
 #include "kernels/contact/sweep.hpp"
 #include "kernels/contact/version.hpp"
-#include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
 #include "src/texture/texture_keys.hpp"
@@ -66,7 +66,7 @@ double StiffnessTable::stiffness_at(double load) const {
 
 const TableKind kStiffnessTableKind = {kTableFileType, "/stiffness", "stiffness-", "stiffness table"};
 
-std::string StiffnessTable::checksum() const { return hex16(column_hash(columns(*this))); }
+std::string StiffnessTable::checksum() const { return io::hex16(column_hash(columns(*this))); }
 
 CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, double effective_modulus) {
   const study::StiffnessSection& stiffness = t.stiffness;

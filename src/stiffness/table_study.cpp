@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "src/ensemble/checkpoint.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/study/key_reader.hpp"
 
@@ -46,7 +46,7 @@ TableStudy TableStudy::of(const TableSections& sections, const texture::Psd& psd
   if (t.textured) {
     t.psd = psd;
     t.amplitudes = texture_io::study_amplitudes(sections.texture);
-    t.psd_fingerprint = hex16(ensemble::fnv1a64(texture_io::psd_input_fingerprint(sections.texture)));
+    t.psd_fingerprint = io::hex16(io::fnv1a64(texture_io::psd_input_fingerprint(sections.texture)));
     t.profile_derived_keys = texture_io::profile_derived_surface_keys(sections.texture, sections.surface);
   }
   if (t.stiffness.rough && sections.stiffness_table)

@@ -1,36 +1,25 @@
 #pragma once
-// Text forms shared by the cached stage tables: hashes as 16 hex digits, numbers in round-trip
-// precision (so a table's canonical inputs compare exactly), and the FNV-1a checksum over columns.
+// Text forms shared by the cached stage tables: numbers in round-trip precision (so a table's
+// canonical inputs compare exactly), and the checksum over columns (io/content_hash.hpp).
 #include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "src/ensemble/checkpoint.hpp"
+#include "src/io/content_hash.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::stiffness {
 
-inline std::string hex16(std::uint64_t h) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
-
 // A length in mm (from 1 mm) or um, three digits: grid sizes in plans and messages.
 inline std::string um(double m) {
-  char buf[32];
-  if (m >= 1e-3)
-    std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else
-    std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
-  return buf;
+  return m >= 1e-3 ? io::three_digits(m * 1e3) + " mm" : io::three_digits(m * 1e6) + " um";
 }
 
-// FNV-1a over the bytes of the columns, in order, continuing from `h`.
+// The content hash of the columns' bytes, in order, continuing from `h`.
 inline std::uint64_t column_hash(const std::vector<const std::vector<double>*>& columns,
-                                 std::uint64_t h = 14695981039346656037ull) {
-  for (const auto* c : columns) h = ensemble::fnv1a64(c->data(), c->size() * sizeof(double), h);
+                                 std::uint64_t h = io::kFnv1a64Start) {
+  for (const auto* c : columns) h = io::fnv1a64(c->data(), c->size() * sizeof(double), h);
   return h;
 }
 

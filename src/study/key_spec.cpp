@@ -1,18 +1,11 @@
 #include "src/study/key_spec.hpp"
 
+#include "src/io/number_text.hpp"
+
 #include <cmath>
 #include <sstream>
 
 namespace rollspec::study {
-
-namespace {
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
-}
-}  // namespace
 
 std::string KeySpec::allowed() const {
   std::ostringstream s;
@@ -22,11 +15,12 @@ std::string KeySpec::allowed() const {
       s << (type == KeyType::real ? "a finite number" : "a whole number");
       const bool lo = std::isfinite(min), hi = std::isfinite(max);
       if (lo && hi) {
-        s << " in " << (min_inclusive ? "[" : "(") << number(min) << ", " << number(max) << (max_inclusive ? "]" : ")");
+        s << " in " << (min_inclusive ? "[" : "(") << io::significant_text(min, 12) << ", "
+          << io::significant_text(max, 12) << (max_inclusive ? "]" : ")");
       } else if (lo) {
-        s << (min_inclusive ? " >= " : " > ") << number(min);
+        s << (min_inclusive ? " >= " : " > ") << io::significant_text(min, 12);
       } else if (hi) {
-        s << (max_inclusive ? " <= " : " < ") << number(max);
+        s << (max_inclusive ? " <= " : " < ") << io::significant_text(max, 12);
       }
       if (power_of_two) s << ", a power of two";
       if (unit != "-") s << " (" << unit << ")";

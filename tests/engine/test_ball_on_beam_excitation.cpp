@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "kernels/beam/contact_patch_filter.hpp"
+#include "kernels/contact/hertz.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/scenes/ball_on_beam_contact.hpp"
 #include "src/scenes/ball_on_beam_excitation.hpp"
@@ -67,8 +68,9 @@ TEST_CASE("resolved contact: from the hertz law it is the settings' law, and the
   CHECK(c.law.radius == b.model.contact.radius);
   CHECK(c.law.damping == b.model.contact.damping);
   const double e_star = c.law.effective_modulus, r = c.law.radius;
-  CHECK(c.static_compression ==
-        doctest::Approx(std::pow(3.0 * b.weight() / (4.0 * e_star * std::sqrt(r)), 2.0 / 3.0)).epsilon(1e-14));
+  // The compression at which Hertz's force carries the weight (the inverse of the approach's formula).
+  CHECK(contact::hertz::force_at_approach(r, e_star, c.static_compression) ==
+        doctest::Approx(b.weight()).epsilon(1e-14));
   for (double k : {10.0, 1e3, 1e5}) CHECK(c.line_psd(k) == b.line_psd(k));
   CHECK(c.strip_line.values.empty());
   const beam::BallOnBeamModel m = scenes::resolved_model(b, c);
@@ -89,8 +91,7 @@ TEST_CASE("resolved contact: ER-7 stretches the Hertz law by 1/rho, which still 
   CHECK(rho == doctest::Approx(0.55).epsilon(1e-15));
   CHECK(c.law.effective_modulus == doctest::Approx(b.model.contact.effective_modulus * std::pow(0.55, 1.5)));
   CHECK(c.static_compression == doctest::Approx(b.static_compression / 0.55));
-  const double force =
-      4.0 / 3.0 * c.law.effective_modulus * std::sqrt(c.law.radius) * std::pow(c.static_compression, 1.5);
+  const double force = contact::hertz::force_at_approach(c.law.radius, c.law.effective_modulus, c.static_compression);
   CHECK(force == doctest::Approx(b.weight()).epsilon(1e-12));
   const BallOnBeamSettings law =
       settings({"contact.law=hertz", "contact.filter=solver", "equivalent_roughness.stiffness=law"});

@@ -87,7 +87,8 @@ TEST_CASE("a fit's evaluation (spectra only) writes the same spectra and bands a
          "density = 7850\nmax_frequency = 3000\nloss_factor = 0.01\n"
          "[ball]\nradius = 0.02\nspeed = 1.0\nstart = 0.1\nend = 0.2\n"
          "[contact]\nlaw = linearised\nk0 = 6.8e6\n"
-         "[texture]\nsource = self-affine\nhurst = 0.2\nrolloff_wavelength = 50e-3\nshort_wavelength = 4e-6\nrms = 0.1e-6\n"
+         "[texture]\nsource = self-affine\nhurst = 0.2\nrolloff_wavelength = 50e-3\nshort_wavelength = 4e-6\nrms = "
+         "0.1e-6\n"
          "[signal]\nsample_rate = 8192\n[sensors]\npositions = 0.13, 0.26\n"
          "[spectrum]\nsegment = 512\nband_min = 80\nband_max = 2000\n";
   auto run = [&](const std::string& out, bool spectra_only) {
@@ -100,8 +101,8 @@ TEST_CASE("a fit's evaluation (spectra only) writes the same spectra and bands a
     return io::Hdf5Reader(q.out);
   };
   const io::Hdf5Reader full = run("full.h5", false), fit = run("fit.h5", true);
-  for (const char* d : {"/psd/frequency", "/psd/mean", "/psd/ci_lower", "/psd/ci_upper", "/psd/std", "/bands/level_db", "/bands/ci_lower_db",
-                        "/bands/log_level_covariance"}) {
+  for (const char* d : {"/psd/frequency", "/psd/mean", "/psd/ci_lower", "/psd/ci_upper", "/psd/std", "/bands/level_db",
+                        "/bands/ci_lower_db", "/bands/log_level_covariance"}) {
     CAPTURE(d);
     CHECK(full.read(d) == fit.read(d));  // the same bits
   }

@@ -34,9 +34,9 @@ TEST_CASE("ball section: weight and E* as the scene derives them") {
   const auto s = ball_on_beam("[ball]\nradius = 0.01\ndensity = 7800\ngravity = 9.8\n");
   const auto ball = study::BallSection::parse(s);
   const auto beam = study::ModalBeamSection::parse(s);
-  const double mass = 4.0 / 3.0 * M_PI * 0.01 * 0.01 * 0.01 * 7800.0;
-  CHECK(ball.mass() == mass);
-  CHECK(ball.weight() == mass * 9.8);
+  // A 20 mm steel ball: 32.6726 g (4/3 pi (1 cm)^3 = 4.18879 cm^3 at 7.8 g/cm^3, to 30 digits in decimal), 0.320191 N.
+  CHECK(ball.mass() == doctest::Approx(0.03267256359733384968).epsilon(1e-15));
+  CHECK(ball.weight() == doctest::Approx(0.3201911232538717269).epsilon(1e-15));
   CHECK(ball.effective_modulus(beam.properties.youngs_modulus, beam.poisson) ==
         contact::effective_modulus(210e9, 0.3, 210e9, 0.3));
 }

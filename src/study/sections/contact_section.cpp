@@ -50,8 +50,10 @@ ContactSection ContactSection::parse(const KeyReader& s) {
   p.filter_origin = {s.where("contact.filter")};
   p.filter_set = s.is_set("contact.filter");
   if (p.loss == "closed" && p.law != "linearised")
-    KeyOrigin{s.where("contact.loss")}.refuse("a contact that never opens is the linear law's counterfactual; "
-                                              "allowed with [contact] law = " + p.law + ": damping_only or zero");
+    KeyOrigin{s.where("contact.loss")}.refuse(
+        "a contact that never opens is the linear law's counterfactual; "
+        "allowed with [contact] law = " +
+        p.law + ": damping_only or zero");
   return p;
 }
 

@@ -46,17 +46,18 @@ std::vector<KeySpec> StiffnessSection::keys() {
                   "surface index (0 .. realisations - 1) left out of the stiffness table's mean: a leave-one-out "
                   "sub-table for the jackknife of the table's own error (kernels/spectral/README.md D-30); -1: none",
                   std::string("-1"), -1, 99999),
-      choice_key("stiffness", "table_error",
-                 "what `run`'s intervals, compare and fit include besides the realisations' scatter: auto (jackknife "
-                 "where the study's contact uses one random table, none otherwise), none (conditional on the table: "
-                 "the verdict then holds only for the surface the table was built on), or jackknife: the table's own "
-                 "sampling error, from the ensemble run again with each of the table's leave-one-out sub-tables "
-                 "(realisations + 1 ensembles on the same random streams, more realisations per sub-table where "
-                 "their own noise asks for them; kernels/spectral/README.md D-30, D-30f, D-31); needs a rough "
-                 "stiffness table ([contact] law = table or literal, surface = rough; over its surfaces), an "
-                 "equivalent-roughness table ([contact] filter = solver; over its [equivalent_roughness] strips) or a "
-                 "blocked-force table ([contact] blocked_force = solver; over the Welch segments of F0 along its strip)",
-                 std::string("auto"), {"auto", "none", "jackknife"}),
+      choice_key(
+          "stiffness", "table_error",
+          "what `run`'s intervals, compare and fit include besides the realisations' scatter: auto (jackknife "
+          "where the study's contact uses one random table, none otherwise), none (conditional on the table: "
+          "the verdict then holds only for the surface the table was built on), or jackknife: the table's own "
+          "sampling error, from the ensemble run again with each of the table's leave-one-out sub-tables "
+          "(realisations + 1 ensembles on the same random streams, more realisations per sub-table where "
+          "their own noise asks for them; kernels/spectral/README.md D-30, D-30f, D-31); needs a rough "
+          "stiffness table ([contact] law = table or literal, surface = rough; over its surfaces), an "
+          "equivalent-roughness table ([contact] filter = solver; over its [equivalent_roughness] strips) or a "
+          "blocked-force table ([contact] blocked_force = solver; over the Welch segments of F0 along its strip)",
+          std::string("auto"), {"auto", "none", "jackknife"}),
   };
 }
 

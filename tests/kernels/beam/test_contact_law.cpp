@@ -12,6 +12,7 @@
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/beam/monotone_table.hpp"
 #include "kernels/beam/uniform_samples.hpp"
+#include "kernels/contact/hertz.hpp"
 
 using namespace rollspec::beam;
 
@@ -160,7 +161,8 @@ TEST_CASE("contact-patch filter: a sinusoid is scaled by sin(ka)/(ka)") {
   h.step = 1e-6;
   const double k = 6.283185307179586 / 0.4e-3;  // 0.4 mm wavelength
   for (int i = 0; i <= 4000; ++i) h.values.push_back(std::sin(k * h.step * i));
-  const double a = hertz_half_width(0.02, 0.241e-6);  // seed ball under its weight: a = 69 um
+  const double a =
+      rollspec::contact::hertz::contact_radius_at_approach(0.02, 0.241e-6);  // seed ball under its weight: a = 69 um
   CHECK(a == doctest::Approx(69.4e-6).epsilon(2e-3));
   const UniformSamples f = contact_patch_average(h, a);
   const double gain = std::sin(k * a) / (k * a);
@@ -173,8 +175,8 @@ TEST_CASE("contact-patch filter: a sinusoid is scaled by sin(ka)/(ka)") {
 
 TEST_CASE("instantaneous contact-patch filter in the integrator") {
   BallOnBeamModel m = test::hertz_model(12, 0.05, 0.09, 20000.0);
-  const double a_w =
-      hertz_half_width(m.contact.radius, ContactModel(m.contact).static_compression(m.ball.mass * m.ball.gravity, 0.0));
+  const double a_w = rollspec::contact::hertz::contact_radius_at_approach(
+      m.contact.radius, ContactModel(m.contact).static_compression(m.ball.mass * m.ball.gravity, 0.0));
   // Small roughness: the compression stays near its static value, so the instantaneous width is
   // close to a_W and the result close to a point contact on the roughness pre-averaged over a_W.
   Realisation r;

@@ -15,6 +15,7 @@
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "kernels/beam/path_contact_table.hpp"
 #include "kernels/contact/geometry.hpp"
+#include "kernels/contact/hertz.hpp"
 #include "kernels/contact/path_table.hpp"
 
 using namespace rollspec;
@@ -23,8 +24,8 @@ namespace {
 
 constexpr double kR = 0.02, kE = 115.4e9, kW = 2.58;  // 40 mm ball, steel on steel, about its weight
 
-double hertz_force(double d) { return d > 0.0 ? 4.0 / 3.0 * kE * std::sqrt(kR) * std::pow(d, 1.5) : 0.0; }
-double hertz_approach(double w) { return std::pow(3.0 * w / (4.0 * kE * std::sqrt(kR)), 2.0 / 3.0); }
+double hertz_force(double d) { return contact::hertz::force_at_approach(kR, kE, d); }
+double hertz_approach(double w) { return contact::hertz::approach_at_load(kR, kE, w); }
 
 // A strip of odd size (cell centres on multiples of dx), `cells` cells per Hertz radius at kW, and
 // path positions every `step` cells centred on the strip.
@@ -162,7 +163,7 @@ TEST_CASE("path table on a rough strip: nodes equal direct whole-strip solves, i
 
 TEST_CASE("PathContactTable: first contact, continuation beyond the table, refusals") {
   // One position with delta_c = -1 um and a Hertz-shaped column; a second with delta_c = 0.
-  const double s = 4.0 / 3.0 * kE * std::sqrt(kR);
+  const double s = contact::hertz::force_coefficient(kR, kE);
   beam::PathContactData d;
   d.position = {0.0, 1e-5};
   d.approach = {0.5e-6, 1e-6};

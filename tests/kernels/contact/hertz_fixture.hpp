@@ -1,11 +1,12 @@
 #pragma once
-// Smooth paraboloid on a flat: the continuum Hertz solution is exact for this gap (kernels/README.md (contact)).
+// Smooth paraboloid on a flat: the continuum Hertz solution (kernels/contact/hertz.hpp) is exact for this gap.
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/geometry.hpp"
+#include "kernels/contact/hertz.hpp"
 
 namespace rollspec::contact::test {
 
@@ -15,10 +16,10 @@ struct Hertz {
   double radius = 0.02;        // m (40 mm ball)
   double e_star = 115.4e9;     // Pa
   double approach = 0.241e-6;  // m (seed ball under its own weight)
-  double a() const { return std::sqrt(radius * approach); }
-  double force() const { return 4.0 / 3.0 * e_star * std::sqrt(radius) * std::pow(approach, 1.5); }
-  double p0() const { return 2.0 * e_star * a() / (kPi * radius); }
-  double stiffness() const { return 2.0 * e_star * a(); }
+  double a() const { return hertz::contact_radius_at_approach(radius, approach); }
+  double force() const { return hertz::force_at_approach(radius, e_star, approach); }
+  double p0() const { return hertz::peak_pressure_at_approach(radius, e_star, approach); }
+  double stiffness() const { return hertz::stiffness_at_approach(radius, e_star, approach); }
 
   // Odd n, ball centred on the middle cell, `cells` cells per contact radius, half-width `span`·a.
   Grid grid(double cells, double span = 1.25) const {

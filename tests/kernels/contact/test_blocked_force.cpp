@@ -27,7 +27,7 @@ using rollspec::contact::test::kPi;
 
 namespace {
 
-double hertz_force(const Hertz& h, double d) { return 4.0 / 3.0 * h.e_star * std::sqrt(h.radius) * std::pow(d, 1.5); }
+double hertz_force(const Hertz& h, double d) { return hertz::force_at_approach(h.radius, h.e_star, d); }
 
 // Window of half-width `span`·a (odd, ball on the middle cell), strip `extra` columns longer and
 // `extra_y` rows wider.

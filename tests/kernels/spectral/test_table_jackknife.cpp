@@ -43,7 +43,7 @@ TEST_CASE("jackknife of a mean is the sample variance of the mean, s^2 / N") {
 TEST_CASE("widened half width: Welch-Satterthwaite between its limits") {
   const std::uint64_t K = 25;
   const double N1 = 9.0;  // table dof: N - 1 over N = 10 surfaces
-  const double h = 0.4;  // dB
+  const double h = 0.4;   // dB
   // No table term: the interval is left alone.
   const auto none = widen_half_width(h, K, 0.0, N1, 0.95);
   CHECK(none.half_width == h);
