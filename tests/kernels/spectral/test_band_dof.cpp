@@ -95,13 +95,15 @@ TEST_CASE("the FFT form equals the direct sums, near DC (the mean's removal), mi
         config(64, 0, Window::rectangular, Detrend::constant), config(64, 16, Window::rectangular, Detrend::none)}) {
     const BandDof dof(c);
     const double df = c.sample_rate / static_cast<double>(c.segment), nyquist = c.sample_rate / 2.0;
-    for (const auto& [lo, hi] : {std::pair{0.0, 2.4 * df},
-                                 {0.6 * df, 1.4 * df},
-                                 {1.1 * df, 4.7 * df},
-                                 {7.3 * df, 19.9 * df},
-                                 {nyquist - 3.2 * df, nyquist},
-                                 {3.0 * df, nyquist}})
+    for (const auto& band : {std::pair{0.0, 2.4 * df},
+                             {0.6 * df, 1.4 * df},
+                             {1.1 * df, 4.7 * df},
+                             {7.3 * df, 19.9 * df},
+                             {nyquist - 3.2 * df, nyquist},
+                             {3.0 * df, nyquist}})
       for (const std::size_t n : {64u, 200u, 641u}) {
+        // named copies, not structured bindings: Clang 14 cannot capture those in INFO's lambda (C++17)
+        const double lo = band.first, hi = band.second;
         const double fast = dof(n, lo, hi), direct = band_dof_reference(c, n, lo, hi);
         INFO("segment " << c.segment << " overlap " << c.overlap << " band " << lo << " .. " << hi << " n " << n);
         CHECK(direct > 0.0);
