@@ -87,6 +87,8 @@ RECIPES = {
         "argv": ["PY", "S", "SRCDIR"], "help": None,
         "fixed": ["studies/data/measured-profiles/dektak-1-a.csv"],
         "tree": ["studies/data/measured-profiles", "python-post/rollspec_post"]},
+    # tests/ (programs beside the tests: the format check prints only)
+    "tests/engine/check_format.py": {"argv": ["PY", "S", "IN"], "in": "folder", "help": None},
     # python-post/ (its command: python-post/tests/test_post_faults.py runs every subcommand against every target)
     "python-post/rollspec_post/__main__.py": {"delegated": "python-post/tests/test_post_faults.py"},
     "python-post/docs/make_readme_pictures.sh": {"argv": ["bash", "S"], "help": None, "binary": "tree",

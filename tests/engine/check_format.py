@@ -15,6 +15,10 @@ SUFFIXES = {".cpp", ".hpp", ".h", ".cc"}
 
 def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
+    if not root.is_dir():  # a file, a FIFO or a device: refused in one line, never read
+        print(f"{root}: not a folder; give the repository's root (the folder with src/, kernels/ and tests/)",
+              file=sys.stderr)
+        return 66
     tool = shutil.which("clang-format")
     if not tool:
         print("clang-format not found: the format check is skipped (Debian: apt-get install clang-format)")
@@ -30,7 +34,7 @@ def main():
     files = sorted(str(p) for d in ("src", "kernels", "tests") for p in (root / d).rglob("*")
                    if p.suffix in SUFFIXES and p.is_file())
     if not files:
-        print(f"{root}: no C++ files under src/, kernels/ or tests/")
+        print(f"{root}: no C++ files under src/, kernels/ or tests/", file=sys.stderr)
         return 1
     r = subprocess.run([tool, "--dry-run", "-Werror", style, *files],
                        capture_output=True, text=True)
