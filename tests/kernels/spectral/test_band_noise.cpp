@@ -3,9 +3,6 @@
 // takes from them.
 #include <doctest/doctest.h>
 
-#include <Random123/philox.h>
-#include <Random123/u01fixedpt.h>
-
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -16,41 +13,17 @@
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch.hpp"
+#include "philox_draws.hpp"
 
 using namespace rollspec::spectral;
 
 namespace {
 
-// Standard normals from Philox4x64 keyed by (seed, 0): Box-Muller on successive pairs of uniforms, both used.
-class Normals {
- public:
-  explicit Normals(std::uint64_t seed) : key_{{seed, 0}} {}
-  double next() {
-    if (have_second_) {
-      have_second_ = false;
-      return second_;
-    }
-    const double r = std::sqrt(-2.0 * std::log(uniform())), phi = 2.0 * M_PI * uniform();
-    second_ = r * std::sin(phi);
-    have_second_ = true;
-    return r * std::cos(phi);
-  }
-
- private:
-  double uniform() {
-    if (used_ == 4) {
-      block_ = gen_({{counter_++, 0, 0, 0}}, key_);
-      used_ = 0;
-    }
-    return u01fixedpt_open_open_64_double(block_[used_++]);
-  }
-  r123::Philox4x64 gen_;
-  r123::Philox4x64::key_type key_;
-  r123::Philox4x64::ctr_type block_{};
-  std::uint64_t counter_ = 0;
-  int used_ = 4;
-  double second_ = 0.0;
-  bool have_second_ = false;
+using Normals = testing::PhiloxNormals;
+std::uint64_t counter_ = 0;
+int used_ = 4;
+double second_ = 0.0;
+bool have_second_ = false;
 };
 
 }  // namespace

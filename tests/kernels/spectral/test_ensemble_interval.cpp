@@ -1,9 +1,6 @@
 // Intervals of an ensemble mean from the realisations' scatter (kernels/spectral D-21, D-22).
 #include <doctest/doctest.h>
 
-#include <Random123/philox.h>
-#include <Random123/u01fixedpt.h>
-
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -11,6 +8,7 @@
 
 #include "kernels/spectral/confidence.hpp"
 #include "kernels/spectral/ensemble_interval.hpp"
+#include "philox_draws.hpp"
 
 using namespace rollspec::spectral;
 
@@ -19,30 +17,22 @@ namespace {
 // Gamma(shape, 1/shape) variates (mean 1, CV 1/sqrt(shape)) for integer shape: a sum of exponentials.
 class GammaDraws {
  public:
-  GammaDraws(int shape, std::uint64_t key) : shape_(shape), key_{{key, 0}} {}
+  GammaDraws(int shape, std::uint64_t key) : shape_(shape), uniform_(key) {}
   double normal() {  // Box-Muller
-    return std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * M_PI * uniform());
+    return std::sqrt(-2.0 * std::log(uniform_.next())) * std::cos(2.0 * M_PI * uniform_.next());
   }
   double next() {
     double s = 0.0;
-    for (int i = 0; i < shape_; ++i) s -= std::log(uniform());
+    for (int i = 0; i < shape_; ++i) s -= std::log(uniform_.next());
     return s / shape_;
   }
 
  private:
-  double uniform() {
-    if (used_ == 4) {
-      block_ = gen_({{counter_++, 0, 0, 0}}, key_);
-      used_ = 0;
-    }
-    return u01fixedpt_open_open_64_double(block_[used_++]);
-  }
   int shape_;
-  r123::Philox4x64 gen_;
-  r123::Philox4x64::key_type key_;
-  r123::Philox4x64::ctr_type block_{};
-  std::uint64_t counter_ = 0;
-  int used_ = 4;
+  testing::PhiloxUniforms uniform_;
+};
+std::uint64_t counter_ = 0;
+int used_ = 4;
 };
 
 // Moments of n draws of x and of ln x, as the engine accumulates them.
