@@ -20,11 +20,6 @@ using namespace rollspec::spectral;
 namespace {
 
 using Normals = testing::PhiloxNormals;
-std::uint64_t counter_ = 0;
-int used_ = 4;
-double second_ = 0.0;
-bool have_second_ = false;
-};
 
 }  // namespace
 

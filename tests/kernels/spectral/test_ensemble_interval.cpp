@@ -31,9 +31,6 @@ class GammaDraws {
   int shape_;
   testing::PhiloxUniforms uniform_;
 };
-std::uint64_t counter_ = 0;
-int used_ = 4;
-};
 
 // Moments of n draws of x and of ln x, as the engine accumulates them.
 Scatter draw(GammaDraws& g, int n, bool lognormal = false) {
