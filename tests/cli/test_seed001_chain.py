@@ -25,7 +25,10 @@ def beams(tmp_path_factory):
         stages = {row.split()[0]: row.split()[1] for row in plan.stdout.splitlines() if len(row.split()) >= 2}
         assert stages.get("stiffness_table") == "run", plan.stdout  # the table is built from the profiles
         h5 = d / f"beam-{beam}.h5"
-        r = run(["run", study, "--out", h5, "--quiet"], timeout=900)
+        # The seed ran no table jackknife, and nothing here reads an interval: the table's own error
+        # (6 or 10 sub-tables and their ensembles, about half this test's time) is tested in
+        # test_table_jackknife*.py.
+        r = run(["run", study, "--out", h5, "--set", "stiffness.table_error=none", "--quiet"], timeout=900)
         assert r.returncode == 0, r.stderr
         with h5py.File(h5) as f:
             law = f["/contact"].attrs["law"]
