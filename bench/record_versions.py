@@ -73,6 +73,8 @@ def sources_hash(paths, root=ROOT):
 
 
 def load_manifest(path=MANIFEST):
+    if not Path(path).is_file():  # a FIFO would block the read, a folder or device is no manifest
+        raise VersionError(f"{path}: not a regular file; allowed: the figure versions this script writes")
     try:
         m = json.loads(Path(path).read_text(encoding="utf-8"))
     except (OSError, ValueError) as e:
