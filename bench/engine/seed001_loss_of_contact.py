@@ -10,7 +10,7 @@ study seed (`--set study.seed=N`; each study's realisations and its [stiffness] 
 every seed shares the study's table), in a scratch copy of studies/ (its tables built there once), and
 prints the share of time out of contact (/contact/loss_of_contact_share) of each. --record writes the
 table as a record that the documentation's seeds page renders (bench/bench_record.py). About 5 minutes
-on 2 cores, most of it the two stiffness tables.
+on 2 cores (9 minutes measured), most of it the two stiffness tables.
 """
 import argparse
 import os
