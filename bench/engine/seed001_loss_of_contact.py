@@ -9,8 +9,8 @@ studies/seed001-beam-{r,s}.ini (the stiffness table's law with the patch filter)
 study seed (`--set study.seed=N`; each study's realisations and its [stiffness] table_seed as shipped, so
 every seed shares the study's table), in a scratch copy of studies/ (its tables built there once), and
 prints the share of time out of contact (/contact/loss_of_contact_share) of each. --record writes the
-table as a record that the documentation's seeds page renders (bench/bench_record.py). About 5 minutes
-on 2 cores (9 minutes measured), most of it the two stiffness tables.
+table as a record that the documentation's seeds page renders (bench/bench_record.py). About 9 minutes
+on the shared 2 cores, most of it the two stiffness tables.
 """
 import argparse
 import os
