@@ -240,7 +240,8 @@ def markdown(record, level=3, manifest=None):
     lines = [f"{'#' * level} {record['title']}", "", "Measured by", "", "```text", record["command"], "```", "",
              f"on {record['date']}, {m['cores']} cores" + (f" ({m['cpu']})" if m.get("cpu") else "")
              + (f"; other work kept {m['other_work_cores']:.1f} of them busy meanwhile"
-                if isinstance(m.get("other_work_cores"), (int, float)) else "") + ". " + record["settings"], ""]
+                if isinstance(m.get("other_work_cores"), (int, float)) else "") + ". "
+             + record["settings"][:1].upper() + record["settings"][1:], ""]
     lines += [f"- **{name}**: {v['description']}" for name, v in record["builds"].items()]
     if why:
         lines += ["", "Measured before the records kept the versions of the code that computed them: not "
@@ -276,6 +277,10 @@ def render_one(path, level=3):
     names the command that writes it); RecordError for a malformed one."""
     path = Path(path)
     if not path.exists():
-        return "\n".join(["```{warning}", f"The record `{path.parent.name}/{path.name}` is missing: its "
+        try:
+            name = path.resolve().relative_to(ROOT).as_posix()
+        except ValueError:
+            name = f"{path.parent.name}/{path.name}"
+        return "\n".join(["```{warning}", f"The record `{name}` is missing: its "
                           "figures are not shown until the script that measures them writes it.", "```", ""])
     return markdown(load(path), level, manifest_or_fail())

@@ -300,7 +300,7 @@ def write_record_pages(records, docs, out):
             names |= {m.group(2) for m in INCLUDE.finditer(page.read_text(encoding="utf-8"))}
     for name in sorted(names):
         try:
-            text = bench_record.render_one(records / f"{name}.json", level=4)
+            text = bench_record.render_one(records / f"{name}.json", level=3)
         except bench_record.RecordError as e:
             fail(e, EX_DATAERR)
         (out / f"{name}.md").write_text(text)

@@ -140,6 +140,8 @@ def test_a_record_is_stamped_with_the_versions_of_the_components_it_names(tmp_pa
 def test_a_missing_record_renders_as_a_warning_that_says_so(tmp_path):
     text = bench_record.render_one(tmp_path / "nothing-yet.json")
     assert "`" + tmp_path.name + "/nothing-yet.json` is missing" in text and "{warning}" in text
+    inside = bench_record.render_one(SOURCE / "bench" / "records" / "validation" / "nothing-yet.json")
+    assert "`bench/records/validation/nothing-yet.json` is missing" in inside
 
 
 def test_the_command_refuses_an_unknown_component_in_one_line():
