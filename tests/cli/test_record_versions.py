@@ -26,7 +26,7 @@ UNSTAMPED = {"common-random-numbers.json", "contact-kernel.json", "contact-table
              "contact-tables.json", "ensemble-random-oscillator.json", "ensemble-rolling-pipe.json",
              "ensemble-seed002.json", "plan-estimates.json", "recording-verdict-no-noise.json",
              "recording-verdict-noise-63.json", "recording-verdict.json", "rolling-examples.json",
-             "rolling-impacts.json", "scaling.json", "texture.json", "seed002-routes.json"}
+             "rolling-impacts.json", "scaling.json", "texture.json"}
 
 
 def records():
