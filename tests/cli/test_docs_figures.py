@@ -1,7 +1,8 @@
 """No figure from a run is typed into the pages that render theirs from records: outside fenced blocks
 (the records' tables come in through ```{include} generated/records/...```), a page's text holds no
-percentage, no dB figure and no number in e-notation, except the inputs, thresholds, tests' bounds and
-published figures listed here with what they are. Reads the Markdown sources only: well under a second.
+percentage, no dB figure and no number in e-notation, except the inputs, thresholds, tests' bounds,
+equations' values and published figures listed here with what they are. A fenced block is not checked
+(commands, and the renderer's includes): output quoted in one is listed in bench/figures_inventory.md. Reads the Markdown sources only: well under a second.
 The pages and parts of pages not yet converted are listed in bench/figures_inventory.md."""
 import re
 
@@ -21,10 +22,27 @@ PAGES = {
     }),
     "docs/tutorials/speed.md": (None, {}),
     "docs/validation/contact-filter.md": ("**The equivalent roughness from the contact solver", {}),
+    "docs/validation/benchmarks.md": (None, {}),
+    "docs/validation/pictures.md": (None, {"95 %": "the intervals' nominal level"}),
+    "README.md": (None, {"95 %": "the intervals' nominal level", "10 dB": "compare's --noise-margin default"}),
+    "docs/tutorials/first-study.md": (None, {"95 %": "the intervals' nominal level"}),
+    "docs/tutorials/your-rig.md": (None, {
+        "95 %": "the intervals' nominal level", "10 dB": "compare's --noise-margin default",
+        "5 %": "the engine's threshold for a run dominated by impacts",
+        "6 dB": "20 log10 2: twice the roughness in a linear model", "2e-8": "the stand-in rig's roughness, an input"}),
+    "docs/tutorials/compare.md": (None, {
+        "10 dB": "compare's --noise-margin default", "0.4 dB": "10 log10(1 + 10^-1): noise at the 10 dB margin",
+        "6 dB": "compare's flat-band threshold", "19.8 dB": "20 log10 9.80665: g read as m/s²",
+        "60 dB": "20 log10 1000: mm/s² read as m/s²", "3 dB": "a wrong model the bench script tries (input)",
+        "10 %": "a wrong model the bench script tries (input)",
+        "5 %": "the engine's threshold for a run dominated by impacts"}),
+    "docs/tutorials/measurements.md": (None, {"19.8 dB": "20 log10 9.80665: g read as m/s²",
+                                              "60 dB": "20 log10 1000: mm/s² read as m/s²"}),
+    "docs/howto/roughness.md": (None, {"0.3 dB": "ISO 3095 Eq. 10-11's band integral against the band level (theory)"}),
 }
 FIGURE = re.compile(r"[+−-]?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?:\s?[–-]\s?\d+(?:\.\d+)?)?\s?(?:%|dB\b)"
                     r"|\b\d+(?:\.\d+)?e[-+]?\d+\b")
-FENCE = re.compile(r"^(```+|:::+).*?^\1\s*$", re.M | re.S)
+FENCE = re.compile(r"^[ \t]*(```+|:::+).*?^[ \t]*\1[ \t]*$", re.M | re.S)
 
 
 def typed_figures(text, allowed):
