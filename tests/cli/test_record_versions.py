@@ -149,3 +149,39 @@ def test_the_command_refuses_an_unknown_component_in_one_line():
                        capture_output=True, text=True)
     assert r.returncode == 65 and len(r.stderr.strip().splitlines()) == 1, r.stderr
     assert "unknown component 'kernel'" in r.stderr and not r.stdout
+
+
+def test_check_bump_and_stale_on_a_copy_of_the_repository(tmp_path):
+    """The whole rule through the command, on a copy: a changed kernel line fails `check`; `bump` raises the
+    version and takes the new code; a record stamped before is then `stale`; `accept` after a comment-only
+    change keeps the version."""
+    for part in ("bench", "src", "kernels", "python-post/rollspec_post"):
+        shutil.copytree(SOURCE / part, tmp_path / part, ignore=shutil.ignore_patterns("__pycache__"))
+    script = [sys.executable, str(tmp_path / "bench" / "record_versions.py")]
+
+    def cmd(*args):
+        return subprocess.run(script + list(args), capture_output=True, text=True, cwd=tmp_path)
+
+    records = tmp_path / "records"
+    records.mkdir()
+    version = json.loads((tmp_path / "bench" / "record_versions.json").read_text())["components"]["contact"]["version"]
+    (records / "r.json").write_text(json.dumps(small_record({"contact": version})))
+    assert cmd("check").returncode == 0
+    assert cmd("stale", str(records)).returncode == 0
+    source = tmp_path / "kernels" / "contact" / "version.hpp"
+    source.write_text(source.read_text().replace("namespace rollspec::contact {",
+                                                 "namespace rollspec::contact {\ninline constexpr int extra = 1;"))
+    r = cmd("check")
+    assert r.returncode == 1 and r.stdout.startswith("contact: sources changed since version"), r.stdout
+    assert cmd("bump", "contact").returncode == 0
+    assert cmd("check").returncode == 0
+    r = cmd("stale", str(records))
+    assert r.returncode == 1 and f"contact version {version}, now {version + 1}" in r.stdout, r.stdout
+    source.write_text(source.read_text() + "\n// a comment only\n")
+    assert cmd("check").returncode == 0  # comments do not count: nothing to accept
+    source.write_text(source.read_text().replace("extra = 1;", "renamed = 1;"))
+    assert cmd("check").returncode == 1
+    assert cmd("accept", "contact").returncode == 0  # declared unable to move a figure: same version
+    assert cmd("check").returncode == 0
+    manifest = json.loads((tmp_path / "bench" / "record_versions.json").read_text())
+    assert manifest["components"]["contact"]["version"] == version + 1
