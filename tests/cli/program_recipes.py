@@ -72,6 +72,8 @@ RECIPES = {
     "bench/engine/fit_seed002_roughness.py": {"argv": ["PY", "S", "--binary", "BIN", "--log", "OUT"], "out": "file",
                                               "help": ["--help"], "binary": 3, "fixed": ["docs/howto/fit.md"],
                                               "tree": ["bench", "docs/howto", "python-post/rollspec_post"]},
+    "bench/engine/accuracy_checks.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
+                                        "help": ["--help"], "binary": 3},
     "bench/engine/seed000_examples.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
                                          "help": ["--help"], "binary": 3},
     "bench/engine/seed001_loss_of_contact.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",

@@ -23,6 +23,7 @@ PAGES = {
     "docs/tutorials/speed.md": (None, {}),
     "docs/validation/contact-filter.md": ("**The equivalent roughness from the contact solver", {}),
     "docs/validation/benchmarks.md": (None, {}),
+    "docs/validation/accuracy.md": ("The other checks, as measured when their tests were written", {}),
     "docs/validation/pictures.md": (None, {"95 %": "the intervals' nominal level"}),
     "README.md": (None, {"95 %": "the intervals' nominal level", "10 dB": "compare's --noise-margin default"}),
     "docs/tutorials/first-study.md": (None, {"95 %": "the intervals' nominal level"}),
