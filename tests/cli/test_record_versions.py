@@ -21,7 +21,8 @@ import record_versions  # noqa: E402
 RECORD_DIRS = [SOURCE / "bench" / "records", SOURCE / "bench" / "records" / "validation"]
 # Records written before the figure versions were kept. They are rendered with a line saying that they are
 # not checked against the current code. This set only shrinks: a record written now is stamped
-# (bench_record.write), and running one of these scripts again stamps its record and takes it off here.
+# (bench_record.write), and once one of these scripts has run again its name can go (a stamped record is
+# checked as stamped whether or not it is named here).
 UNSTAMPED = {"common-random-numbers.json", "contact-kernel.json", "contact-tables-before-speed-work.json",
              "contact-tables.json", "ensemble-random-oscillator.json", "ensemble-rolling-pipe.json",
              "ensemble-seed002.json", "plan-estimates.json", "recording-verdict-no-noise.json",
@@ -49,7 +50,6 @@ def test_every_record_is_stamped_with_the_current_versions_of_its_code():
             if f.name not in UNSTAMPED:
                 stale.append(f"{f.name}: no figure versions (a record written now is stamped by bench_record.write)")
             continue
-        assert f.name not in UNSTAMPED, f"{f.name} is stamped now: take it off UNSTAMPED"
         why = record_versions.stale(record)
         if why:
             stale.append(f"{f.name}: {'; '.join(why)}; remake it with: {record['command']}")
