@@ -14,6 +14,9 @@ A record holds
   columns   the table's headings; rows: the table's rows, one cell (text or number) per column
   notes     optional text printed under the table
   data      optional raw figures for scripts; never printed
+  versions  {component: version}: the figure versions of the code that computed it
+            (bench/record_versions.py), stamped by `write`; a record whose versions are older than the
+            code's is stale, and its table is not printed (the page says which command remakes it)
 
 `write` is what a bench script calls; `load` checks a file and raises RecordError with one line that
 names the file and the fault; `markdown` renders a checked record.
@@ -32,6 +35,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "python-post"))
 from rollspec_post import safe_output  # noqa: E402  (the one atomic writer)
 from rollspec_post.script_main import fail, flush_stdout, script_main  # noqa: E402,F401  (the scripts' rule)
+sys.path.insert(0, str(ROOT / "bench"))
+import record_versions  # noqa: E402  (figure versions: when a record is stale)
 RECORDS = ROOT / "bench" / "records"
 REQUIRED = {"title": str, "command": str, "date": str, "machine": dict, "builds": dict, "settings": str,
             "columns": list, "rows": list}
@@ -90,7 +95,14 @@ def build_version(binary):
     return r.stdout.splitlines()[0] if r.returncode == 0 and r.stdout else "unknown"
 
 
-def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=None, other_cores=None):
+def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=None, other_cores=None,
+          components=None):
+    """components: the figure-version components (bench/record_versions.json) whose code computes the
+    figures; None: all of them (a change anywhere makes the record stale)."""
+    try:
+        versions = record_versions.current_versions(components)
+    except record_versions.VersionError as e:
+        raise RecordError(str(e)) from None
     facts = machine()
     if other_cores is not None:
         facts["other_work_cores"] = round(other_cores, 2)
@@ -100,6 +112,7 @@ def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=
         record["notes"] = notes
     if data is not None:
         record["data"] = data
+    record["versions"] = versions
     check(record, str(path))
     replace_text(path, json.dumps(record, indent=1, ensure_ascii=False) + "\n", own=is_record)
 
@@ -181,6 +194,10 @@ def check(record, name):
         fail(f"printed text names a commit ({looks_like_commit(printed)[0]}); describe the build instead")
     if re.search(r"load average", printed, re.I):
         fail("printed text names a load average")
+    versions = record.get("versions", {})
+    if not isinstance(versions, dict) or not all(isinstance(k, str) and isinstance(v, int) and not isinstance(v, bool)
+                                                  for k, v in versions.items()):
+        fail("'versions' is not an object of component: integer version")
 
 
 MAX_RECORD_BYTES = 16 * 2**20  # the largest record written is a few kB
@@ -209,14 +226,28 @@ def cell(value):
     return text.replace("|", "\\|").replace("\n", " ")
 
 
-def markdown(record, level=3):
-    """A record as Markdown: heading, command, builds and machine, the table, the notes."""
+def markdown(record, level=3, manifest=None):
+    """A record as Markdown: heading, command, builds and machine, the table, the notes. A stale record
+    (older figure versions than the code's, bench/record_versions.py) gives its heading, its command and
+    why it is stale, not its figures; one written before versions were kept says so above its table."""
     m = record["machine"]
+    why = record_versions.stale(record, manifest)
+    if why and record.get("versions"):
+        return "\n".join([f"{'#' * level} {record['title']}", "", "```{warning}",
+                          f"This record is older than the code that computes its figures ({'; '.join(why)}), "
+                          "so they are not shown. Running its command again remakes it:", "```", "",
+                          "```text", record["command"], "```", ""])
     lines = [f"{'#' * level} {record['title']}", "", "Measured by", "", "```text", record["command"], "```", "",
              f"on {record['date']}, {m['cores']} cores" + (f" ({m['cpu']})" if m.get("cpu") else "")
              + (f"; other work kept {m['other_work_cores']:.1f} of them busy meanwhile"
-                if isinstance(m.get("other_work_cores"), (int, float)) else "") + ". " + record["settings"], ""]
+                if isinstance(m.get("other_work_cores"), (int, float)) else "") + ". "
+             + record["settings"][:1].upper() + record["settings"][1:], ""]
     lines += [f"- **{name}**: {v['description']}" for name, v in record["builds"].items()]
+    if why:
+        lines += ["", "Measured before the records kept the versions of the code that computed them: not "
+                  "checked against the current code."]
+    else:
+        lines += ["", "Figure versions: " + ", ".join(f"{c} {v}" for c, v in record["versions"].items()) + "."]
     lines += ["", "| " + " | ".join(cell(c) for c in record["columns"]) + " |",
               "|" + "---|" * len(record["columns"])]
     lines += ["| " + " | ".join(cell(c) for c in row) + " |" for row in record["rows"]]
@@ -230,4 +261,26 @@ def render_all(directory=RECORDS, level=3):
     files = sorted(Path(directory).glob("*.json"))
     if not files:
         raise RecordError(f"benchmark records: none in {directory}")
-    return "\n".join(markdown(load(f), level) for f in files)
+    manifest = manifest_or_fail()
+    return "\n".join(markdown(load(f), level, manifest) for f in files)
+
+
+def manifest_or_fail():
+    try:
+        return record_versions.load_manifest()
+    except record_versions.VersionError as e:
+        raise RecordError(str(e)) from None
+
+
+def render_one(path, level=3):
+    """One record as Markdown, or, where the file is missing, a warning that says so (the page's text
+    names the command that writes it); RecordError for a malformed one."""
+    path = Path(path)
+    if not path.exists():
+        try:
+            name = path.resolve().relative_to(ROOT).as_posix()
+        except ValueError:
+            name = f"{path.parent.name}/{path.name}"
+        return "\n".join(["```{warning}", f"The record `{name}` is missing: its "
+                          "figures are not shown until the script that measures them writes it.", "```", ""])
+    return markdown(load(path), level, manifest_or_fail())

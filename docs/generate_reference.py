@@ -14,6 +14,11 @@ reference cannot drift from the program:
                                      scripts, bench/bench_record.py), a table each with its command;
                                      a malformed record stops the build with one line naming it
   validation/generated/validation-records.md  the same for bench/records/validation/ (the seeds page)
+  validation/generated/records/NAME.md  each record of bench/records/validation/ alone, for a page
+                                     that quotes it where its figures belong (```{include}```); a
+                                     page's include of a record that does not exist renders a warning
+                                     that says so, and a stale record (bench/record_versions.py) its
+                                     command instead of its figures
 
   /usr/bin/python3 docs/generate_reference.py --bin build/werror/rollspec --out DOCS_SOURCE_DIR
 """
@@ -281,6 +286,26 @@ def write_validation_records(records, out):
     (out / "validation-records.md").write_text(text)
 
 
+INCLUDE = re.compile(r"^```\{include\}\s+(\S*generated/records/([A-Za-z0-9_.-]+)\.md)\s*$", re.M)
+
+
+def write_record_pages(records, docs, out):
+    """Every validation record alone (records/NAME.md), and for every include of one in the pages
+    (docs/**/*.md) whose record is missing, the page that says so."""
+    import bench_record  # noqa: E402  (on the path: write_bench_records runs first)
+    out.mkdir(parents=True, exist_ok=True)
+    names = {p.stem for p in records.glob("*.json")} if records.is_dir() else set()
+    for page in docs.rglob("*.md"):
+        if "generated" not in page.parts:
+            names |= {m.group(2) for m in INCLUDE.finditer(page.read_text(encoding="utf-8"))}
+    for name in sorted(names):
+        try:
+            text = bench_record.render_one(records / f"{name}.json", level=3)
+        except bench_record.RecordError as e:
+            fail(e, EX_DATAERR)
+        (out / f"{name}.md").write_text(text)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", default=os.environ.get("ROLLSPEC_BIN", str(REPO / "build" / "werror" / "rollspec")))
@@ -299,6 +324,7 @@ def main():
     val.mkdir(parents=True, exist_ok=True)
     write_bench_records(Path(a.records), val)  # first: a malformed record fails before the slow pages
     write_validation_records(Path(a.records) / "validation", val)
+    write_record_pages(Path(a.records) / "validation", Path(a.out), val / "records")
     write_commands(binary, ref)
     write_keys(binary, ref)
     write_exit_codes(ref)

@@ -2,6 +2,7 @@
 """Band levels of seed 001 beam S and the seed 002 rig under each [contact] filter (README, "Contact filter").
 
     ROLLSPEC_BIN=build/release/rollspec python3 studies/contact_filter_levels.py [--realisations 25] [--keep DIR]
+        [--record bench/records/validation/contact-filter-levels.json]
 
 Runs each study (the profiles chain builds its stiffness table once, about a minute, then reuses
 it from studies/tables/; filter = solver builds its equivalent-roughness table once the same way) with
@@ -11,7 +12,8 @@ of the 100-1600 Hz bands, the differences between filters, and the rms of the pa
 at and above 2 kHz (from /roughness). The seed 002 rig's own law is linearised, which filter = solver
 does not serve (it is the point laws' filter), so the rig also runs the Hertz law under patch, iso2d and
 solver, and the linearised law with the solver's blocked force (seed 002 §4.2) on the same surface
-statistics. Numbers only from the runs it makes.
+statistics. Numbers only from the runs it makes. --record writes every row as a record that the
+documentation's contact-filter page renders (bench/bench_record.py). About 19 minutes on 2 cores.
 """
 import argparse
 import os
@@ -74,7 +76,14 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--realisations", type=int, default=25)
     ap.add_argument("--keep", help="directory for the result files (default: a temporary one)")
+    ap.add_argument("--record", help="write the tables as a record (bench/records/validation/*.json)")
     args = ap.parse_args()
+    if args.record:
+        try:
+            bench_record.check_target(args.record, own=bench_record.is_record)
+        except bench_record.RecordError as e:
+            fail(e, 73)
+    rows, columns = [], None
     tmp = pathlib.Path(own_folder(args.keep, "contact_filter_levels") if args.keep else tempfile.mkdtemp(prefix="contact-filter-"))
     tmp.mkdir(parents=True, exist_ok=True)
     for title, study, variants, pairs in STUDIES:
@@ -88,21 +97,43 @@ def main():
         print("| law, filter | " + " | ".join(f"{b:g} Hz" for b in bands) +
               " | sum >= 2 kHz | sum 100-1600 Hz | path rms >= 2 kHz | loss of contact |")
         print("|---|" + "---|" * (len(bands) + 4))
+        head = ["study", "law, filter"] + [f"{b:g} Hz" for b in bands] + ["sum ≥ 2 kHz", "sum 100–1600 Hz",
+                                                                          "path rms ≥ 2 kHz", "loss of contact"]
+        if columns not in (None, head):
+            fail(f"{study}: its bands from 2 kHz differ from the first study's; the record needs one set", 70)
+        columns = head
         for name, curve, _ in variants:
             _, lv, tot, rms, loss, low = res[name]
             path_rms = f"{rms[curve] * 1e9:.3g} nm" if curve in rms else ""
             print(f"| {name} | " + " | ".join(f"{v:.1f}" for v in lv) + f" | {tot:.1f} | {low:.1f} | "
                   f"{path_rms} | {100 * loss:.3g} % |")
+            rows.append([f"`{study}`", name] + [f"{v:.1f}" for v in lv] + [f"{tot:.1f}", f"{low:.1f}",
+                                                                          path_rms or "—", f"{100 * loss:.3g} %"])
         for a, b in pairs:
             d = res[a][1] - res[b][1]
             print(f"| {a} − {b} | " + " | ".join(f"{v:+.1f}" for v in d) +
                   f" | {res[a][2] - res[b][2]:+.1f} | {res[a][5] - res[b][5]:+.1f} | | |")
+            rows.append([f"`{study}`", f"{a} − {b}"] + [f"{v:+.1f}" for v in d] +
+                        [f"{res[a][2] - res[b][2]:+.1f}", f"{res[a][5] - res[b][5]:+.1f}", "", ""])
     print(f"\nresult files: {tmp}")
+    if args.record:
+        version = subprocess.run([BIN, "version"], capture_output=True, text=True).stdout.strip()
+        try:
+            bench_record.write(
+                args.record, title="Band levels under each contact filter (sensor mean, dB re 1 (m/s²)²/Hz)",
+                argv=sys.argv, builds={"current": {"description": "the build measured", "version": version}},
+                settings=f"{args.realisations} realisations per run, each study's own seed (paired: the same "
+                         "Philox streams under every filter)", columns=columns, rows=rows,
+                components=["engine", "beam", "contact", "integrators", "spectral", "texture"])
+        except bench_record.RecordError as e:
+            fail(e, 73)
 
 
 sys.dont_write_bytecode = True  # nothing written into the sources
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../python-post"))
-from rollspec_post.script_main import own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+from rollspec_post.script_main import fail, own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../bench"))
+import bench_record  # noqa: E402  (the records the documentation renders)
 
 
 if __name__ == "__main__":
