@@ -15,11 +15,14 @@ namespace rollspec::compare {
 ChosenBands chosen_bands(const io::BandLevels& b, const std::vector<std::size_t>& band,
                          const std::vector<double>& measured_db) {
   const std::size_t p = band.size(), nb = b.level_db.size();
-  ChosenBands c{std::vector<double>(p), std::vector<double>(p), std::vector<double>(p * p)};
+  const bool linear = b.std_dev.size() == nb;
+  ChosenBands c{std::vector<double>(p), std::vector<double>(p), std::vector<double>(p * p),
+                std::vector<double>(linear ? p : 0)};
   for (std::size_t i = 0; i < p; ++i) {
     c.y[i] = measured_db[i] * std::log(10.0) / 10.0;
     c.mean[i] = std::pow(10.0, b.level_db[band[i]] / 10.0);
     for (std::size_t j = 0; j < p; ++j) c.cov[i * p + j] = b.log_covariance[band[i] * nb + band[j]];
+    if (linear) c.cv2[i] = (b.std_dev[band[i]] / c.mean[i]) * (b.std_dev[band[i]] / c.mean[i]);  // D-26d
   }
   return c;
 }
@@ -55,7 +58,7 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
         c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records,
         {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands,
          b.table_independent_bands ? kSpectralTableSmoothing : 0},
-        uniform, kBootstrapDraws, noise);
+        uniform, kBootstrapDraws, noise, c.cv2_or_null());
   } catch (const std::invalid_argument& e) {
     t.verdict = std::string("none (") + e.what() + ")";
     return t;
