@@ -57,7 +57,7 @@ void deviation(const double* y, const double* mean, const double* cov, std::size
 
 }  // namespace
 
-// Each band's variance from Fenton-Wilkinson (on its linear CV^2 where given, D-26d), the correlations those of S:
+// Each band's variance from Fenton-Wilkinson (on its CV^2 where given, D-26d), the correlations those of S:
 // V stays S scaled band by band, so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S
 // does not (D-26a).
 void band_deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,

@@ -27,8 +27,8 @@ struct BandTestResult {
 // fit's likelihood (D-27) still takes a band's V_bb as log_mean_variance(s, M) + log_mean_variance(s, K).
 double log_mean_variance(double s, double n);
 
-// D-26d: the same variance from one record's squared coefficient of variation cv2 = s_x^2 / m^2 of the band
-// power itself (the realisations' linear moments, any law): ln(1 + cv2 / n). compare's test takes this.
+// D-26d: the same variance from one record's squared coefficient of variation cv2 = var x / (E x)^2 of the band
+// power itself: ln(1 + cv2 / n). compare's test takes it with cv2 from band_law.hpp's band_cv2.
 double log_mean_variance_cv2(double cv2, double n);
 
 // One band's terms of D-26a, b: g_b of V = G S G, the offset o_b of d_b = y_b - (ln m_b + o_b), and the variance
@@ -46,7 +46,7 @@ BandTerms band_terms(double s, double realisations, double records, double h, co
 // D-26a, b: d = y - (ln m + (V_K,bb - V_M,bb) / 2) and V = G S G (p x p, row-major), G_bb^2 =
 // (V_M,bb + V_K,bb) / S_bb, for measured band logs y, the model's mean band powers m, their log covariance S,
 // K realisations and M records; with `noise` (p bands, D-33c) each band's terms as band_terms gives them; with
-// `cv2` (p bands) each band's V_n,bb from its linear CV^2 (D-26d), else from e^{S_bb} - 1 (D-26a).
+// `cv2` (p bands) each band's V_n,bb from its CV^2 (D-26d), else from e^{S_bb} - 1 (D-26a).
 // Throws std::invalid_argument on a band without power or M < 1, K < 2, or a cv2 negative or not finite.
 void band_deviation(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                     double realisations, double records, std::vector<double>& d, std::vector<double>& v,
