@@ -213,7 +213,8 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     std::vector<double> skew(ns * nb);
     for (std::size_t i = 0; i < skew.size(); ++i) skew[i] = e.band_tail[i].defined ? e.band_tail[i].skewness : 0.0;
     w.write("/bands/log_skewness", {ns, nb}, skew.data(), "1",
-            "skewness G1 (adjusted Fisher-Pearson) of the natural log of one realisation's band-averaged PSD");
+            "skewness of the natural log of one realisation's band-averaged PSD (G1, adjusted Fisher-Pearson; "
+            "kernels/spectral D-29a, D-26d)");
     w.attach_scale("/bands/log_skewness", "/bands/sensor", 0);
     w.attach_scale("/bands/log_skewness", "/bands/centre_frequency", 1);
   }
