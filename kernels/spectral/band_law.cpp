@@ -2,6 +2,7 @@
 
 #include <boost/math/special_functions/polygamma.hpp>
 #include <boost/math/tools/roots.hpp>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -35,6 +36,9 @@ double band_cv2(double s, double g1) {
   // E x^r / (E x)^r = Gamma(k + r a) Gamma(k)^{r-1} / Gamma(k + a)^r.
   const double a = std::copysign(std::sqrt(s / boost::math::trigamma(k)), -g1);
   if (!(k + 2.0 * a > 0.0)) return lognormal;  // no finite variance: the lognormal reading
+  // The lgamma sum loses about eps k ln k; where that is above 1e-6 of s (tiny spreads), the cumulant form
+  // ln(1 + c^2) = K(2) - 2 K(1) = s + g1 s^{3/2} + O(s^2) is the more accurate.
+  if (k * std::log(k + 2.0) * DBL_EPSILON > 1e-6 * s) return std::expm1(s + std::copysign(skew, g1) * s * std::sqrt(s));
   return std::expm1(std::lgamma(k + 2.0 * a) + std::lgamma(k) - 2.0 * std::lgamma(k + a));
 }
 

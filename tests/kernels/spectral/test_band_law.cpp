@@ -29,6 +29,11 @@ TEST_CASE("band law: every gamma law and the lognormal law read exactly") {
   CHECK(band_cv2(0.2, -2e-3) == doctest::Approx(std::expm1(0.2)).epsilon(2e-3));
   CHECK(band_cv2(0.2, -2e-3) < std::expm1(0.2));
   CHECK(band_cv2(0.2, 2e-3) > std::expm1(0.2));
+  // Tiny spreads (a band below the first mode): the cumulant form, s + g1 s^{3/2} in ln(1 + c^2), and a gamma law
+  // of shape 1e5 read within 1e-4.
+  for (const double s : {1e-12, 1e-8, 1e-6})
+    CHECK(band_cv2(s, -0.5) == doctest::Approx(std::expm1(s - 0.5 * s * std::sqrt(s))).epsilon(1e-6));
+  CHECK(band_cv2(boost::math::trigamma(1e5), log_gamma_skewness(1e5)) == doctest::Approx(1e-5).epsilon(1e-4));
   CHECK_THROWS_AS(band_cv2(-0.1, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(band_cv2(NAN, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(band_cv2(0.1, INFINITY), std::invalid_argument);
