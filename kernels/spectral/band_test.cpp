@@ -9,8 +9,14 @@ namespace rollspec::spectral {
 
 double log_mean_variance(double s, double n) { return std::log1p(std::expm1(s) / n); }
 
-BandTerms band_terms(double s, double K, double M, double h, const BandNoise* noise) {
-  const double vm = log_mean_variance(s, M), vk = log_mean_variance(s, K);
+// D-26d: Fenton-Wilkinson on the mean's own linear moments, E = mu, var = sigma^2 / n.
+double log_mean_variance_cv2(double cv2, double n) { return std::log1p(cv2 / n); }
+
+BandTerms band_terms(double s, double K, double M, double h, const BandNoise* noise, const double* cv2) {
+  if (cv2 && !(*cv2 >= 0.0 && std::isfinite(*cv2)))
+    throw std::invalid_argument("band test: a band's coefficient of variation is negative or not finite");
+  const double c2 = cv2 ? *cv2 : std::expm1(s);  // D-26d; D-26a's lognormal reading without it
+  const double vm = log_mean_variance_cv2(c2, M), vk = log_mean_variance_cv2(c2, K);
   BandTerms t;
   if (!noise) {
     t.g = s > 0.0 ? std::sqrt((vm + h * vk) / s) : std::sqrt(1.0 / M + h / K);  // the limit s -> 0
@@ -30,7 +36,7 @@ namespace {
 // D-26a, b with the model mean's variance scaled by h (D-27i): g_b^2 = (V_M,bb + h V_K,bb) / S_bb; with the
 // logger noise of D-33c where given.
 void deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M, double h,
-               const BandNoise* noise, std::vector<double>& d, std::vector<double>& v) {
+               const BandNoise* noise, const double* cv2, std::vector<double>& d, std::vector<double>& v) {
   if (!(M >= 1.0) || !(K >= 2.0)) throw std::invalid_argument("band test: needs records >= 1 and K >= 2");
   if (!(h >= 0.0)) throw std::invalid_argument("band likelihood: the mean's variance share must be >= 0");
   d.assign(p, 0.0);
@@ -38,7 +44,7 @@ void deviation(const double* y, const double* mean, const double* cov, std::size
   std::vector<double> g(p), diagonal(p);
   for (std::size_t b = 0; b < p; ++b) {
     if (!(mean[b] > 0.0) || !std::isfinite(y[b])) throw std::invalid_argument("band test: a band without power");
-    const BandTerms t = band_terms(cov[b * p + b], K, M, h, noise ? noise + b : nullptr);
+    const BandTerms t = band_terms(cov[b * p + b], K, M, h, noise ? noise + b : nullptr, cv2 ? cv2 + b : nullptr);
     g[b] = t.g;
     diagonal[b] = t.diagonal;
     d[b] = y[b] - (std::log(mean[b]) + t.offset);
@@ -51,11 +57,12 @@ void deviation(const double* y, const double* mean, const double* cov, std::size
 
 }  // namespace
 
-// Each band's variance from Fenton-Wilkinson, the correlations those of S: V stays S scaled band by
-// band, so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S does not (D-26a).
+// Each band's variance from Fenton-Wilkinson (on its CV^2 where given, D-26d), the correlations those of S:
+// V stays S scaled band by band, so T^2 keeps Hotelling's law; the elementwise ln(1 + (e^S - 1)/n) of a noisy S
+// does not (D-26a).
 void band_deviation(const double* y, const double* mean, const double* cov, std::size_t p, double K, double M,
-                    std::vector<double>& d, std::vector<double>& v, const BandNoise* noise) {
-  deviation(y, mean, cov, p, K, M, 1.0, noise, d, v);
+                    std::vector<double>& d, std::vector<double>& v, const BandNoise* noise, const double* cv2) {
+  deviation(y, mean, cov, p, K, M, 1.0, noise, cv2, d, v);
 }
 
 double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size_t p, double* log_det) {
@@ -83,12 +90,12 @@ double whitened_square(std::vector<double>& d, std::vector<double>& v, std::size
 }
 
 BandTestResult band_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
-                         std::uint64_t realisations, double records, const BandNoise* noise) {
+                         std::uint64_t realisations, double records, const BandNoise* noise, const double* cv2) {
   BandTestResult r;
   r.needed = p + kExtraRealisations;
   if (p == 0 || realisations < r.needed) return r;
   std::vector<double> d, v;
-  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v, noise);
+  band_deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, d, v, noise, cv2);
   hotelling_f_law(r, whitened_square(d, v, p, nullptr), static_cast<double>(realisations - 1), static_cast<double>(p));
   return r;
 }
@@ -119,8 +126,8 @@ double band_log_likelihood(const double* measured_log, const double* mean, const
 double band_log_likelihood(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                            std::uint64_t realisations, double records, const LikelihoodTerms& terms) {
   std::vector<double> d, v;
-  deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, terms.mean_share, nullptr, d,
-            v);
+  deviation(measured_log, mean, covariance, p, static_cast<double>(realisations), records, terms.mean_share, nullptr,
+            nullptr, d, v);
   if (terms.table)
     for (std::size_t i = 0; i < p * p; ++i) v[i] += terms.table[i];
   double log_det = 0.0;
@@ -130,13 +137,13 @@ double band_log_likelihood(const double* measured_log, const double* mean, const
 }
 
 double band_test_t2_reference(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
-                              std::uint64_t realisations, double records) {
-  // V and d written out plainly from D-26a, b (not through band_deviation).
+                              std::uint64_t realisations, double records, const double* cv2) {
+  // V and d written out plainly from D-26a, b, d (not through band_deviation).
   const double K = static_cast<double>(realisations), M = records;
   std::vector<double> d(p), v(p * p), vb(p);
   for (std::size_t b = 0; b < p; ++b) {
-    const double s = covariance[b * p + b];
-    const double vm = std::log(1.0 + (std::exp(s) - 1.0) / M), vk = std::log(1.0 + (std::exp(s) - 1.0) / K);
+    const double s = covariance[b * p + b], c2 = cv2 ? cv2[b] : std::exp(s) - 1.0;
+    const double vm = std::log(1.0 + c2 / M), vk = std::log(1.0 + c2 / K);
     vb[b] = vm + vk;
     d[b] = measured_log[b] - std::log(mean[b]) - 0.5 * (vk - vm);
   }

@@ -24,15 +24,16 @@ void standard_normals(const double* u, std::size_t n, double* z) {
   }
 }
 
-// G S G's diagonal scaling, d's offset and the noise's diagonal (D-26a, b; D-33c where `noise` is given), one band
-// at a time as band_terms gives them.
-void scaling(const Matrix& s, double K, double M, const BandNoise* noise, Vector& g, Vector& offset, Vector& diagonal) {
+// G S G's diagonal scaling, d's offset and the noise's diagonal (D-26a, b, d; D-33c where `noise` is given), one
+// band at a time as band_terms gives them.
+void scaling(const Matrix& s, double K, double M, const BandNoise* noise, const double* cv2, Vector& g, Vector& offset,
+             Vector& diagonal) {
   const auto p = s.rows();
   g.resize(p);
   offset.resize(p);
   diagonal.resize(p);
   for (Eigen::Index b = 0; b < p; ++b) {
-    const BandTerms t = band_terms(s(b, b), K, M, 1.0, noise ? noise + b : nullptr);
+    const BandTerms t = band_terms(s(b, b), K, M, 1.0, noise ? noise + b : nullptr, cv2 ? cv2 + b : nullptr);
     g(b) = t.g;
     offset(b) = t.offset;
     diagonal(b) = t.diagonal;
@@ -128,10 +129,11 @@ BandTestResult projected_f_test(const double* measured_log, const double* mean, 
 
 BandTestResult table_test(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                           std::uint64_t realisations, double records, const TableTerm& table,
-                          const DrawUniforms& uniform, std::size_t draws, const Matrix* c, const BandNoise* noise) {
+                          const DrawUniforms& uniform, std::size_t draws, const Matrix* c, const BandNoise* noise,
+                          const double* cv2) {
   const auto untabled = [&] {
     return c ? projected_f_test(measured_log, mean, covariance, p, realisations, records, *c)
-             : band_test(measured_log, mean, covariance, p, realisations, records, noise);
+             : band_test(measured_log, mean, covariance, p, realisations, records, noise, cv2);
   };
   if (!(table.factor > 0.0) || table.covariance == nullptr || draws == 0) return untabled();
   BandTestResult r;
@@ -165,7 +167,7 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
 
   // The observed T^2 with V = G S G + c Sigma_T (D-31a).
   std::vector<double> d, v;
-  band_deviation(measured_log, mean, covariance, p, K, records, d, v, noise);
+  band_deviation(measured_log, mean, covariance, p, K, records, d, v, noise, cv2);
   Matrix vv = Eigen::Map<const RowMatrix>(v.data(), n, n);
   vv += table.factor * t_used;
   const Eigen::LLT<Matrix> llt(vv);
@@ -179,7 +181,8 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
     throw std::invalid_argument("band test: the band covariance is not positive definite");
   const Matrix ls = s_llt.matrixL(), lv = llt.matrixL();
   Vector g, offset, diagonal, g_star, offset_star;
-  scaling(s, K, records, noise, g, offset, diagonal);
+  scaling(s, K, records, noise, cv2, g, offset, diagonal);
+  std::vector<double> cv2_star(cv2 ? p : 0);
   const std::size_t ns = bartlett_uniforms(p), nt = table.independent ? p : bartlett_uniforms(rank);
   std::vector<double> uni(ns + nt + 2 * ((p + 1) / 2)), a_s(p * p), a_t(rank * rank);
   std::size_t exceed = 0;
@@ -200,7 +203,11 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
       const auto nr = static_cast<Eigen::Index>(rank);
       t_star = u * Eigen::Map<const RowMatrix>(a_t.data(), nr, nr) * u.transpose() / table.dof;
     }
-    scaling(s_star, K, records, noise, g_star, offset_star, diagonal);
+    for (std::size_t b = 0; b < cv2_star.size(); ++b) {  // D-26d's CV^2 moves with the drawn S*_bb
+      const auto i = static_cast<Eigen::Index>(b);
+      cv2_star[b] = s(i, i) > 0.0 ? cv2[b] * s_star(i, i) / s(i, i) : cv2[b];
+    }
+    scaling(s_star, K, records, noise, cv2 ? cv2_star.data() : nullptr, g_star, offset_star, diagonal);
     Matrix v_star = g_star.asDiagonal() * s_star * g_star.asDiagonal() + table.factor * t_star;
     if (noise) v_star.diagonal() += diagonal;  // D-33c: the noise's terms, held at their estimates
     Vector z(n);
@@ -225,15 +232,17 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
 
 BandTestResult band_test_with_table(const double* measured_log, const double* mean, const double* covariance,
                                     std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
-                                    const DrawUniforms& uniform, std::size_t draws, const BandNoise* noise) {
-  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr, noise);
+                                    const DrawUniforms& uniform, std::size_t draws, const BandNoise* noise,
+                                    const double* cv2) {
+  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr, noise,
+                    cv2);
 }
 
 BandTestResult band_test_fitted(const double* measured_log, const double* mean, const double* covariance, std::size_t p,
                                 std::uint64_t realisations, double records, const double* jacobian, std::size_t q,
                                 const TableTerm& table, const DrawUniforms& uniform, std::size_t draws) {
   if (q == 0 || jacobian == nullptr)
-    return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr,
+    return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, nullptr, nullptr,
                       nullptr);
   if (q >= p) throw std::invalid_argument("band test: as many fitted keys as bands leave nothing to test");
   const auto n = static_cast<Eigen::Index>(p), k = static_cast<Eigen::Index>(q);
@@ -243,7 +252,8 @@ BandTestResult band_test_fitted(const double* measured_log, const double* mean, 
   if (qr.rank() < k) throw std::invalid_argument("band test: the fitted keys' band-log derivatives are dependent");
   const Matrix full = qr.householderQ() * Matrix::Identity(n, n);
   const Matrix c = full.rightCols(n - k);
-  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, &c, nullptr);
+  return table_test(measured_log, mean, covariance, p, realisations, records, table, uniform, draws, &c, nullptr,
+                    nullptr);
 }
 
 }  // namespace rollspec::spectral

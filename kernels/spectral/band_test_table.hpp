@@ -39,11 +39,13 @@ std::vector<double> smoothed_variances(const std::vector<double>& v, std::size_t
 
 // D-31. Without a table term (factor 0, or no covariance) it is band_test (the F law). `draws`: B. `noise`: the
 // logger noise's terms of the p bands (D-33c; null: none), in V and in every draw's V* (held at their estimates).
-// Throws std::invalid_argument as band_test does, and for a table covariance that is not symmetric
-// positive semi-definite or nu_T <= rank - 1.
+// `cv2`: the p bands' CV^2 of one realisation's band power (D-26d; null: e^{S_bb} - 1); a draw's is cv2 times
+// S*_bb / S_bb, so G* moves with S*'s diagonal as G with S's. Throws std::invalid_argument as band_test does, and
+// for a table covariance that is not symmetric positive semi-definite or nu_T <= rank - 1.
 BandTestResult band_test_with_table(const double* measured_log, const double* mean, const double* covariance,
                                     std::size_t p, std::uint64_t realisations, double records, const TableTerm& table,
-                                    const DrawUniforms& uniform, std::size_t draws, const BandNoise* noise = nullptr);
+                                    const DrawUniforms& uniform, std::size_t draws, const BandNoise* noise = nullptr,
+                                    const double* cv2 = nullptr);
 
 // D-27j: the combined test of a fit, its search accounted for. The q fitted keys move the model's band
 // logs along the columns of J (p x q, row-major: d ln m_b / d u_k at the estimate), so the part of d they

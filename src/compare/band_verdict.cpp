@@ -264,7 +264,7 @@ std::optional<spectral::LevelOffset> offset_of(const io::BandLevels& b, const Me
   std::vector<double> d, vs;
   try {
     spectral::band_deviation(c.y.data(), c.mean.data(), c.cov.data(), index.size(), static_cast<double>(b.realisations),
-                             m.records, d, vs);
+                             m.records, d, vs, nullptr, c.cv2_or_null());
     const std::size_t p = index.size();
     if (noise)
       for (std::size_t i = 0; i < p; ++i) {

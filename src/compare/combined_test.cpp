@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "kernels/spectral/band_law.hpp"
 #include "kernels/spectral/band_test_table.hpp"
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "src/rng/philox_stream.hpp"
@@ -15,11 +16,16 @@ namespace rollspec::compare {
 ChosenBands chosen_bands(const io::BandLevels& b, const std::vector<std::size_t>& band,
                          const std::vector<double>& measured_db) {
   const std::size_t p = band.size(), nb = b.level_db.size();
-  ChosenBands c{std::vector<double>(p), std::vector<double>(p), std::vector<double>(p * p)};
+  const bool skewness = b.log_skewness.size() == nb;
+  ChosenBands c{std::vector<double>(p), std::vector<double>(p), std::vector<double>(p * p),
+                std::vector<double>(skewness ? p : 0)};
   for (std::size_t i = 0; i < p; ++i) {
     c.y[i] = measured_db[i] * std::log(10.0) / 10.0;
     c.mean[i] = std::pow(10.0, b.level_db[band[i]] / 10.0);
     for (std::size_t j = 0; j < p; ++j) c.cov[i * p + j] = b.log_covariance[band[i] * nb + band[j]];
+    if (!skewness) continue;
+    const double s = c.cov[i * p + i];  // D-26d; a damaged variance gives NaN, which the test refuses in one line
+    c.cv2[i] = s >= 0.0 && std::isfinite(s) ? spectral::band_cv2(s, b.log_skewness[band[i]]) : NAN;
   }
   return c;
 }
@@ -55,7 +61,7 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
         c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records,
         {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands,
          b.table_independent_bands ? kSpectralTableSmoothing : 0},
-        uniform, kBootstrapDraws, noise);
+        uniform, kBootstrapDraws, noise, c.cv2_or_null());
   } catch (const std::invalid_argument& e) {
     t.verdict = std::string("none (") + e.what() + ")";
     return t;

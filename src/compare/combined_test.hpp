@@ -19,9 +19,13 @@ struct CombinedTest {
 };
 
 // The compared bands as D-26 takes them: measured band logs y (natural log of power), the model's mean
-// band powers, and the between-band covariance of the band logs (p x p, row-major).
+// band powers, the between-band covariance of the band logs (p x p, row-major), and each band's squared
+// coefficient of variation of one realisation's band power, read from its log variance and log skewness through
+// the generalised gamma law (D-26d; empty: the result has no /bands/log_skewness, and V reads it as e^{S_bb} - 1,
+// D-26a).
 struct ChosenBands {
-  std::vector<double> y, mean, cov;
+  std::vector<double> y, mean, cov, cv2;
+  const double* cv2_or_null() const { return cv2.empty() ? nullptr : cv2.data(); }
 };
 ChosenBands chosen_bands(const io::BandLevels& b, const std::vector<std::size_t>& band,
                          const std::vector<double>& measured_db);

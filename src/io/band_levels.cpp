@@ -263,6 +263,13 @@ BandLevels read_band_levels(const Hdf5Reader& r, const SensorChoice& choice, con
     b.log_covariance.assign(v.begin() + static_cast<std::ptrdiff_t>(row * nb * nb),
                             v.begin() + static_cast<std::ptrdiff_t>((row + 1) * nb * nb));
   }
+  if (r.exists("/bands/log_skewness")) {  // D-26d; results written before it lack it
+    row_of("/bands/log_skewness", b.log_skewness);
+    for (std::size_t k = 0; k < nb; ++k)
+      if (!std::isfinite(b.log_skewness[k]))
+        throw data_error(file + ": /bands/log_skewness[" + std::to_string(row) + ", " + std::to_string(k) +
+                         "] = " + number_text(b.log_skewness[k]) + "; allowed: a finite skewness");
+  }
   read_table_term(r, at, row, ns, nb, b);
   return b;
 }

@@ -20,6 +20,7 @@ struct BandLevels {
   std::vector<double> level_db, ci_lower_db, ci_upper_db;
   std::vector<double> std_dev;         // of one realisation's band average, PSD unit
   std::vector<double> log_std;         // of its natural log
+  std::vector<double> log_skewness;    // G1 of its natural log (D-26d; empty: not in the file)
   std::vector<double> log_covariance;  // band x band, between-band covariance of the logs (empty: not in the file)
   std::uint64_t realisations = 0;
   double confidence = 0.95;

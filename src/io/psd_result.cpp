@@ -209,6 +209,15 @@ void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e) {
     w.attach_scale("/bands/log_level_covariance", "/bands/centre_frequency", 1);
     w.attach_scale("/bands/log_level_covariance", "/bands/centre_frequency", 2);
   }
+  if (e.band_tail.size() == ns * nb) {  // D-26d: rows x bands, G1 of the band logs (D-29a; 0 where undefined)
+    std::vector<double> skew(ns * nb);
+    for (std::size_t i = 0; i < skew.size(); ++i) skew[i] = e.band_tail[i].defined ? e.band_tail[i].skewness : 0.0;
+    w.write("/bands/log_skewness", {ns, nb}, skew.data(), "1",
+            "skewness of the natural log of one realisation's band-averaged PSD (G1, adjusted Fisher-Pearson; "
+            "kernels/spectral D-29a, D-26d)");
+    w.attach_scale("/bands/log_skewness", "/bands/sensor", 0);
+    w.attach_scale("/bands/log_skewness", "/bands/centre_frequency", 1);
+  }
   write_band_tail_check(w, e, bands);
   write_table_error(w, e, nb);
   if (K < spectral::kMinRealisationsForInterval || !e.no_interval.empty())
