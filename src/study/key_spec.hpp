@@ -71,8 +71,8 @@ KeySpec choice_key(std::string section, std::string key, const std::string& lead
     docs.emplace_back(c.doc);
     if (c.value == default_value) fallback = c.spelling;
   }
-  return choice_key(std::move(section), std::move(key), choice_doc(lead, spellings, docs), fallback,
-                    std::move(spellings));
+  std::string doc = choice_doc(lead, spellings, docs);  // before the spellings move
+  return choice_key(std::move(section), std::move(key), std::move(doc), fallback, std::move(spellings));
 }
 
 // The spelling of a value in its table (for messages and canonical texts).

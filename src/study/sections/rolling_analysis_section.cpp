@@ -10,7 +10,7 @@ namespace rollspec::study {
 std::vector<KeySpec> RollingAnalysisSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
-      choice_key("analysis", "type", "analysis", AnalysisType::dynamic, kAnalysisTypes),
+      choice_key("analysis", "type", "analysis type", AnalysisType::dynamic, kAnalysisTypes),
       real_key("analysis", "dt", "s", "time (load) step", std::string("1e-3"), 0.0, inf, false),
       real_key("analysis", "t_end", "s", "end time", std::string("1"), 0.0, inf, false),
       choice_key("analysis", "integrator", "dynamic integrator", AnalysisIntegrator::newmark, kAnalysisIntegrators),
