@@ -13,7 +13,7 @@ bool table_stage(const study::Study& s, const scenes::StagePlan& stage) {
     return true;
   // Only ball-on-beam has a blocked-force stage; it is a table with [contact] blocked_force = solver.
   return stage.stage == "blocked_force" && s.scene() == "ball-on-beam" &&
-         study::ContactSection::parse(s).blocked_force == "solver";
+         study::ContactSection::parse(s).blocked_force == study::BlockedForceSource::solver;
 }
 
 bool missing_table(const study::Study& s, const scenes::StagePlan& stage) {

@@ -42,17 +42,18 @@ void refuse_overflow(const study::TextureSection& s, const char* what, std::size
   bool finite = std::isfinite(st.rms) && (st.rms == 0.0 || (std::isfinite(st.skewness) && std::isfinite(st.kurtosis)));
   for (std::size_t k = 0; k < n && finite; ++k) finite = std::isfinite(z[k]);
   if (finite) return;
-  const std::string& source = s.source;
+  using study::TextureSource;
+  const TextureSource source = s.source;
   std::string where = s.source_origin.where;
-  if (source == "table") where = s.table_path + " (" + where + ")";
-  if (source == "profiles") where = s.profiles_origin.where;
+  if (source == TextureSource::table) where = s.table_path + " (" + where + ")";
+  if (source == TextureSource::profiles) where = s.profiles_origin.where;
   char buf[160];
   std::snprintf(buf, sizeof buf, ": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)",
                 what, i, st.rms, st.skewness, st.kurtosis);
   const std::string m = where + buf +
                         ": the PSD's heights overflow double precision; allowed: a PSD whose heights and their fourth "
                         "powers stay finite (rms height well below 1e50 m)";
-  if (source == "table" || source == "profiles") throw data_error(m);
+  if (source == TextureSource::table || source == TextureSource::profiles) throw data_error(m);
   throw config_error(m);
 }
 // [texture] source = profiles: what the scans resolve and what they leave unresolved.
@@ -209,7 +210,9 @@ int texture_command(const Args& args) {
     }
     w.attribute("/texture", "target_rms", std::sqrt(lines->target_variance()));
   }
-  if (n_surf) write_surfaces(w, surfaces, seed, n_surf, tex, surface_keys.method, list, quiet);
+  if (n_surf)
+    write_surfaces(w, surfaces, seed, n_surf, tex, study::spelling_of(study::kSurfaceMethods, surface_keys.method),
+                   list, quiet);
   target.check_kind = true;
   io::check_output_target(target);
   w.commit();

@@ -415,7 +415,7 @@ class BallOnBeam final : public EnsembleScene {
   // D-35: the linearised law assumes a closed contact; where the run lost it, the same realisations run
   // again with one that never opens size what that moved.
   std::vector<std::string> closed_contact_sets(const ensemble::EnsembleSums& sums) const override {
-    if (!b_.linearised() || b_.contact_section.loss == "closed" || spectra_only_) return {};
+    if (!b_.linearised() || b_.contact_section.loss == study::ContactLoss::closed || spectra_only_) return {};
     if (!(sums.mean(rows_->extra_index(2 * welch_->n_freq())) > 0.0)) return {};
     return {"contact.loss=closed", "stiffness.table_error=none"};
   }

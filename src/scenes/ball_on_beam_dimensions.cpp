@@ -7,6 +7,10 @@
 
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/contact_section.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 
 namespace rollspec::scenes {
 
@@ -18,7 +22,7 @@ namespace {
 void beam_relations(const study::KeyReader& s, std::vector<DimensionRelation>& out) {
   const double L = s.real("beam.length"), t = s.real("beam.thickness"), b = s.real("beam.width");
   const double leff = s.real("beam.effective_length"), span = std::max(L, leff);
-  const bool clamped = s.text("beam.support") == "clamped-clamped";
+  const bool clamped = study::read_choice(s, "beam.support", study::kBeamSupports) == beam::Support::clamped_clamped;
   const double g = 9.81;  // the beam's own weight on Earth ([ball] gravity loads the ball, a model choice)
   const double sag = (clamped ? 1.0 : 5.0) * s.real("beam.density") * g * std::pow(span, 4) /
                      (32.0 * s.real("beam.youngs_modulus") * t * t);
@@ -57,7 +61,7 @@ void ball_against_beam(const study::KeyReader& s, double a, std::vector<Dimensio
   const double r = s.real("ball.radius"), x0 = s.real("ball.start"), x1 = s.real("ball.end");
   const double g = s.real("ball.gravity");
   const double weight = g > 0.0 ? 4.0 / 3.0 * M_PI * r * r * r * s.real("ball.density") * g : 1.0;
-  const bool clamped = s.text("beam.support") == "clamped-clamped";
+  const bool clamped = study::read_choice(s, "beam.support", study::kBeamSupports) == beam::Support::clamped_clamped;
   const double span = std::max(L, s.real("beam.effective_length"));
   const double deflection =
       weight * span * span * span / ((clamped ? 192.0 : 48.0) * s.real("beam.youngs_modulus") * b * t * t * t / 12.0);
@@ -119,17 +123,20 @@ std::vector<DimensionRelation> ball_on_beam_relations(const study::KeyReader& s)
   strip_relations(s, out);
   add_texture_relations(s, "beam.length", s.real("beam.length"), "the span", out);
   // The grid and the tables carry the contact only where a table or a solver stage is built.
-  const std::string law = s.text("contact.law");
-  const bool table = law == "table" || law == "literal";
-  const bool solver =
-      law == "path" || s.text("contact.filter") == "solver" || s.text("contact.blocked_force") == "solver";
+  using namespace study;
+  const ContactLaw law = read_choice(s, "contact.law", kContactLaws);
+  const bool table = law == ContactLaw::table || law == ContactLaw::literal;
+  const bool solver = law == ContactLaw::path ||
+                      read_choice(s, "contact.filter", kContactFilters) == ContactFilter::solver ||
+                      read_choice(s, "contact.blocked_force", kBlockedForceSources) == BlockedForceSource::solver;
   // Written, the keys of a stage the study does not build are checked too: a slip there is a slip.
   bool surface_written = false;
   for (const auto& k : s.keys())
     surface_written = surface_written || (k.section == "surface" && s.is_set(k.full_name()));
   if (table || s.is_set("stiffness.approach_max") || s.is_set("stiffness.ball_rms")) approach_relations(s, a, out);
   if (table || solver || surface_written)
-    add_surface_relations(s, solver || s.text("stiffness.surface") == "rough", a, out);
+    add_surface_relations(
+        s, solver || read_choice(s, "stiffness.surface", kStiffnessSurfaces) == StiffnessSurface::rough, a, out);
   return out;
 }
 

@@ -32,12 +32,36 @@ std::vector<double> sensor_positions(const study::SensorsSection& sensors, doubl
 }
 
 ContactModel contact_model(const study::ContactSection& c) {
-  const std::string& law = c.law;
-  if (law == "table") return ContactModel::table;
-  if (law == "literal") return ContactModel::literal;
-  if (law == "hertz") return ContactModel::hertz;
-  if (law == "path") return ContactModel::path;
-  return c.blocked_force == "solver" ? ContactModel::linearised_solver : ContactModel::linearised_spring;
+  switch (c.law) {
+    case study::ContactLaw::table:
+      return ContactModel::table;
+    case study::ContactLaw::literal:
+      return ContactModel::literal;
+    case study::ContactLaw::hertz:
+      return ContactModel::hertz;
+    case study::ContactLaw::path:
+      return ContactModel::path;
+    case study::ContactLaw::linearised:
+      break;
+  }
+  switch (c.blocked_force) {
+    case study::BlockedForceSource::solver:
+      return ContactModel::linearised_solver;
+    case study::BlockedForceSource::spring:
+      break;
+  }
+  return ContactModel::linearised_spring;
+}
+
+beam::LossOfContact loss_of_contact(study::ContactLoss loss) {
+  switch (loss) {
+    case study::ContactLoss::zero:
+      return beam::LossOfContact::zero_force;
+    case study::ContactLoss::damping_only:
+    case study::ContactLoss::closed:  // the linear law in tension (allow_tension); never opens
+      break;
+  }
+  return beam::LossOfContact::damping_only;
 }
 
 beam::ContactLawKind law_kind(const BallOnBeamSettings& b) {
@@ -77,11 +101,8 @@ void check_step_coefficients(const BallOnBeamSettings& b) {
 // [contact] filter and the contact radius a it uses: Hertz under the weight (kernels/beam B35).
 void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeamSettings& b, double a) {
   const study::KeyOrigin& filter_origin = b.contact_section.filter_origin;
-  b.filter_name = b.contact_section.filter;
-  b.filter = b.filter_name == "none"    ? ContactFilter::none
-             : b.filter_name == "patch" ? ContactFilter::patch
-             : b.filter_name == "iso2d" ? ContactFilter::iso2d
-                                        : ContactFilter::solver;
+  b.filter = b.contact_section.filter;
+  b.filter_name = study::spelling_of(study::kContactFilters, b.filter);
   b.contact_half_width = a;
   b.patch_half_width = b.filter == ContactFilter::patch ? a : 0.0;
   // law = path and blocked_force = solver resolve the contact on a strip themselves: a patch filter
@@ -110,11 +131,11 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
     filter_origin.refuse(
         "solver filters the line texture, which law = path does not use (its strip is the "
         "roughness); allowed with path: none or patch (both ignored)");
-  b.strip_line = er.line == "strip";
+  b.strip_line = er.line == study::EquivalentLine::strip;
   // ER-7 corrects a smooth contact's stiffness; a table law from rough surfaces ([stiffness] surface =
   // rough, seed 001's chain) carries the rough contact's compliance already.
-  b.equivalent_stiffness =
-      b.filter == ContactFilter::solver && er.stiffness == "strip" && !(b.uses_table() && b.stiffness.rough);
+  b.equivalent_stiffness = b.filter == ContactFilter::solver && er.stiffness == study::EquivalentStiffness::strip &&
+                           !(b.uses_table() && b.stiffness.rough);
   b.equivalent_roughness_strips = er.strips;
   b.equivalent_roughness_leave_out = er.leave_out;
   if (er.leave_out >= 0 && !(b.filter == ContactFilter::solver && !b.strip_line))
@@ -253,7 +274,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   const study::RoughnessSection& roughness = s.roughness;
   const study::OutputSection& output = s.output;
   b.sensor_mean = sensors.average;
-  b.dopri = signal.integrator == "dopri5";
+  b.dopri = signal.integrator == study::SignalIntegrator::dopri5;
   b.rtol = signal.rtol;
   const study::SpectrumSection& spectrum = s.spectrum;
   b.confidence = spectrum.confidence;
@@ -273,12 +294,12 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   if (m.traverse.x_end > length) b.ball.end_origin.refuse("lies beyond the span [0, length]");
   // Anti-alias band limit (kernels/beam B40): the output holds f <= f_s / 2, that is k <= pi f_s / v;
   // roughness beyond it would drive the linear response above f_s / 2, which the sampling aliases in.
-  if (roughness.band_limit == "output") {
+  if (roughness.band_limit == study::BandLimit::output) {
     b.band_limit_wavenumber = M_PI * m.sample_rate / m.traverse.speed;
     b.psd = texture::band_limited(std::move(b.psd), b.band_limit_wavenumber);
   }
   // Contact.
-  b.law_name = b.contact_section.law;
+  b.law_name = study::spelling_of(study::kContactLaws, b.contact_section.law);
   b.contact = contact_model(b.contact_section);
   beam::ContactLaw& law = m.contact;
   law.kind = law_kind(b);
@@ -286,18 +307,19 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   law.radius = radius;
   law.k0 = b.contact_section.k0;
   law.damping = b.contact_section.damping;
-  law.loss = b.contact_section.loss == "zero" ? beam::LossOfContact::zero_force : beam::LossOfContact::damping_only;
-  law.allow_tension = b.contact_section.loss == "closed";  // linearised only (the section refuses it otherwise)
+  law.loss = loss_of_contact(b.contact_section.loss);
+  // closed: linearised only (the section refuses it otherwise).
+  law.allow_tension = b.contact_section.loss == study::ContactLoss::closed;
   const double hertz_compression = contact::hertz::approach_at_load(radius, law.effective_modulus, b.weight());
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
   read_contact_filter(s.equivalent_roughness, b, contact::hertz::contact_radius_at_approach(radius, hertz_compression));
   const study::TextureSection& texture = s.texture;
-  b.roughness_origin = texture.source == "self-affine" ? texture.rms_origin : texture.source_origin;
+  b.roughness_origin = texture.source == study::TextureSource::self_affine ? texture.rms_origin : texture.source_origin;
   // Before any step or table check that the values could break.
   for (auto& w : check_ball_on_beam_plausibility(b)) b.warnings.push_back(std::move(w));
   // Integration step.
   b.step.substeps = static_cast<int>(signal.substeps);
-  b.step.hold = signal.hold == "quadratic" ? beam::ForceHold::quadratic : beam::ForceHold::linear;
+  b.step.hold = signal.hold;
   // Roughness line over the whole span, so the patch filter and the traverse never run off it.
   // One roughness sample per integration step by default: the interpolation between samples then
   // low-passes the excitation only near the step's own Nyquist frequency.

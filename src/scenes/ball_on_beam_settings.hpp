@@ -35,7 +35,7 @@ enum class ContactModel { hertz, table, literal, linearised_spring, linearised_s
 // kernels/texture README Eq. 36-40): none (point contact), patch (1D average over the Hertz width,
 // B35), iso2d (the line synthesised from G_eq, the path PSD a Hertz disc sees on an isotropic surface)
 // or solver (the line synthesised from the strip-mean PSD of h_eq, kernels/contact ER-1..ER-7, a table stage).
-enum class ContactFilter { none, patch, iso2d, solver };
+using ContactFilter = study::ContactFilter;
 
 struct BallOnBeamSettings {
   explicit BallOnBeamSettings(beam::BallOnBeamModel m) : model(std::move(m)) {}

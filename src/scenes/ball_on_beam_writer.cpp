@@ -99,7 +99,7 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
   w.write("/contact/loss_of_contact_share", {1}, &share, "1", "mean share of the time in loss of contact");
   w.write("/contact/loss_of_contact_share_std", {1}, &share_std, "1", "its standard deviation over realisations");
   w.attribute("/contact", "law", b_.law_name);
-  const bool sized = linearised() && b_.contact_section.loss != "closed" && !spectra_only;
+  const bool sized = linearised() && b_.contact_section.loss != study::ContactLoss::closed && !spectra_only;
   write_loss_of_contact(w, share, loss_effect, sized, io::result_bands(e.frequency, e.band_min, e.band_max).size());
   w.attribute("/contact", "static_compression", c_.static_compression);
   if (c_.contact_stiffness > 0.0) {  // what the step was checked against (D-23, B37b)

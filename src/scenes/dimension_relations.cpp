@@ -10,6 +10,10 @@
 #include "src/io/number_text.hpp"
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 
 namespace rollspec::scenes {
 
@@ -29,12 +33,13 @@ void add_texture_relations(const study::KeyReader& s, const std::string& span_ke
                            const std::string& span_what, std::vector<DimensionRelation>& out) {
   // A self-affine source's keys, or any of them written for another source (a slip is a slip there too).
   // Measured profiles refuse the self-affine keys themselves, naming each (texture_io): nothing to relate.
-  if (!s.has("texture.source") || s.text("texture.source") == "profiles" ||
-      (s.text("texture.source") != "self-affine" && !self_affine_written(s)))
-    return;
+  using study::TextureSource;
+  if (!s.has("texture.source")) return;
+  const TextureSource source = study::read_choice(s, "texture.source", study::kTextureSources);
+  if (source == TextureSource::profiles || (source != TextureSource::self_affine && !self_affine_written(s))) return;
   const double lr = s.real("texture.rolloff_wavelength"), ls = s.real("texture.short_wavelength");
   const double ll = s.real("texture.long_wavelength"), rms = s.real("texture.rms");
-  const bool slope_kind = s.text("texture.rms_kind") == "slope";
+  const bool slope_kind = study::read_choice(s, "texture.rms_kind", study::kRmsKinds) == texture::RmsTarget::slope;
   out.push_back({{"texture.short_wavelength", "texture.rolloff_wavelength"},
                  ls < lr,
                  "the shortest roughness wavelength " + dim(ls, "m") + " is not below the roll-off wavelength " +
@@ -99,7 +104,7 @@ void add_surface_relations(const study::KeyReader& s, bool rough, double contact
                        dim(2.0 * contact_radius, "m") + ": the solver cannot resolve the contact"});
   if (!rough && !s.is_set("surface.sigma") && !s.is_set("surface.correlation_x") && !s.is_set("surface.correlation_y"))
     return;
-  const bool seed = s.text("surface.method") == "seed";
+  const bool seed = study::read_choice(s, "surface.method", study::kSurfaceMethods) == study::SurfaceMethod::seed;
   if (seed || s.is_set("surface.sigma") || s.is_set("surface.correlation_x") || s.is_set("surface.correlation_y")) {
     const double cx = s.real("surface.correlation_x"), cy = s.real("surface.correlation_y");
     const double sigma = s.real("surface.sigma"), c = std::min(cx, cy);
@@ -119,7 +124,8 @@ void add_surface_relations(const study::KeyReader& s, bool rough, double contact
                    c >= dx,
                    "a correlation length of " + dim(c, "m") + " is shorter than the grid spacing " + dim(dx, "m") +
                        ": the grid holds no correlated heights"});
-  } else if (s.has("texture.source") && s.text("texture.source") == "self-affine") {
+  } else if (s.has("texture.source") &&
+             study::read_choice(s, "texture.source", study::kTextureSources) == study::TextureSource::self_affine) {
     const double ls = s.real("texture.short_wavelength");
     out.push_back({{"surface.spacing", "texture.short_wavelength"},
                    dx <= ls / 2.0,
@@ -181,7 +187,8 @@ std::vector<DimensionRelation> stiffness_relations(const study::KeyReader& s) {
   const double a = hertz_radius(s, s.real("flat.youngs_modulus"), s.real("flat.poisson"));
   ball_relations(a, r, out);
   approach_relations(s, a, out);
-  const bool rough = s.text("stiffness.surface") == "rough";
+  const bool rough =
+      study::read_choice(s, "stiffness.surface", study::kStiffnessSurfaces) == study::StiffnessSurface::rough;
   add_surface_relations(s, rough, a, out);
   // The patch holds the contact, not the whole roughness: a roll-off up to a hundred patches long still
   // leaves it a share of the stated rms (the template's 1 mm over 128 um). A smooth ball on a smooth flat

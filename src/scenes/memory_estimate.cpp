@@ -158,8 +158,8 @@ std::vector<Item> ball_on_beam(const BallOnBeamSections& b, double threads) {
   out.push_back(
       chunk_sums(b.study, b.ensemble, b.spectrum, sensors + 4.0, {positions_text("sensors", b.sensors.positions)}));
   if (b.stiffness.table_jackknife) {  // D-30: the N sub-tables' scenes run together, each its own records and sums
-    const bool surfaces = (b.contact.law == "table" || b.contact.law == "literal") && b.stiffness.rough;
-    const bool segments = b.contact.law == "linearised" && b.contact.blocked_force == "solver";  // else strips
+    const bool surfaces = b.contact.uses_stiffness_table() && b.stiffness.rough;
+    const bool segments = b.contact.blocked_solver();  // else strips
     const double n = static_cast<double>(surfaces   ? b.stiffness.realisations
                                          : segments ? stiffness::f0_segments(blocked_force_grid(b)).segments
                                                     : b.equivalent_roughness.strips);
@@ -176,12 +176,22 @@ std::vector<Item> ball_on_beam(const BallOnBeamSections& b, double threads) {
     out.push_back({8.0 * record * (sensors + 4.0) * histories,
                    {key_text("output", "time_histories", histories)},
                    "stored time histories"});
-  const std::string& law = b.contact.law;
-  if ((law == "table" || law == "literal") && b.stiffness.rough)
-    out.push_back(contact_grid(static_cast<double>(b.strip_surface.nx), static_cast<double>(b.strip_surface.ny)));
-  if (law == "linearised" && b.contact.blocked_force == "solver") out.push_back(blocked_force_window(b));
-  if (law == "linearised" && b.output.reference) out.push_back(linear_reference(b, sensors, record));
-  if (law == "path") out.push_back(path_table(b, threads));
+  switch (b.contact.law) {
+    case study::ContactLaw::table:
+    case study::ContactLaw::literal:
+      if (b.stiffness.rough)
+        out.push_back(contact_grid(static_cast<double>(b.strip_surface.nx), static_cast<double>(b.strip_surface.ny)));
+      break;
+    case study::ContactLaw::linearised:
+      if (b.contact.blocked_solver()) out.push_back(blocked_force_window(b));
+      if (b.output.reference) out.push_back(linear_reference(b, sensors, record));
+      break;
+    case study::ContactLaw::path:
+      out.push_back(path_table(b, threads));
+      break;
+    case study::ContactLaw::hertz:
+      break;
+  }
   return out;
 }
 

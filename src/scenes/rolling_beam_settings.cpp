@@ -16,9 +16,9 @@ using Eigen::Vector3d;
 namespace {
 
 // Seed 000 examples 4.3 and 4.4 from the kernel's builders, with the study's contact law.
-void build_example(const KeyReader& s, const std::string& kind, const Vector3d& g, const rolling::ContactLaw& law,
+void build_example(const KeyReader& s, BodyKind kind, const Vector3d& g, const rolling::ContactLaw& law,
                    RollingBeamSettings& r) {
-  if (kind == "puck") {
+  if (kind == BodyKind::puck) {
     const auto disc = DiscSection::parse(s);
     const auto puck = PuckSection::parse(s);
     rolling::PuckParams p;
@@ -43,6 +43,27 @@ void build_example(const KeyReader& s, const std::string& kind, const Vector3d& 
     r.flying.g = g.norm();
     r.model = rolling::flying_beam_model(r.flying);
   }
+}
+
+// The rigid disc: one node, at rest on the first plane (static penetration m g / eps_n) or where
+// [disc] puts it; returns that node.
+int add_disc(const DiscSection& d, const Vector3d& g, rolling::Model& model, rolling::ContactLaw& law) {
+  const double r = d.radius, m = d.mass, len = d.length;
+  Vector3d x0;
+  if (d.at_rest) {
+    const auto& pl = model.planes[0];
+    const double pen = m * std::abs(g.dot(pl.normal)) / law.eps_n;
+    x0 = pl.point + (r - pen) * pl.normal;
+  } else {
+    x0 = d.position;
+  }
+  const int node = model.add_node(x0);
+  model.v0 = {d.velocity};
+  model.w0 = {d.angular_velocity};
+  const double ia = 0.5 * m * r * r, it = m * (3.0 * r * r + len * len) / 12.0;
+  model.bodies.push_back(rolling::RigidBody{node, m, Vector3d(it, it, ia).asDiagonal()});
+  law.radius = r;
+  return node;
 }
 
 int node_index(const KeyOrigin& at, double v, const std::vector<int>& ids) {
@@ -79,8 +100,8 @@ std::vector<KeySpec> rolling_beam_keys() {
 RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   RollingBeamSettings out;
   using namespace rolling;
-  const std::string kind = BodySection::parse(s).kind;
-  const bool disc = kind == "disc";
+  const BodyKind kind = BodySection::parse(s).kind;
+  const bool disc = kind == BodyKind::disc;
   const auto gravity = GravityVectorSection::parse(s);
   const Vector3d g = gravity.acceleration;
   out.model.gravity = g;
@@ -92,36 +113,26 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   ContactLaw law{0.0, contact.friction, contact.penalty_normal, contact.penalty_tangential, contact.rolling};
   std::vector<int> ids;
   double beam_length = 0.0;
-  if (kind == "puck" || kind == "flying-beam") {
-    build_example(s, kind, g, law, out);
-    ids.resize(out.model.X.size());
-    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<int>(i);
-  } else if (disc) {
-    const auto d = DiscSection::parse(s);
-    const double r = d.radius, m = d.mass, len = d.length;
-    Vector3d x0;
-    if (d.at_rest) {
-      const auto& pl = out.model.planes[0];
-      const double pen =
-          m * std::abs(g.dot(pl.normal)) / law.eps_n;  // on the first plane  // static penetration m g / eps_n
-      x0 = pl.point + (r - pen) * pl.normal;
-    } else {
-      x0 = d.position;
+  switch (kind) {
+    case BodyKind::puck:
+    case BodyKind::flying_beam:
+      build_example(s, kind, g, law, out);
+      ids.resize(out.model.X.size());
+      for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<int>(i);
+      break;
+    case BodyKind::disc:
+      ids.push_back(add_disc(DiscSection::parse(s), g, out.model, law));
+      break;
+    case BodyKind::beam: {
+      const auto b = StraightBeamSection::parse(s);
+      out.model.sections.push_back(
+          circular_section(b.youngs_modulus, b.poisson, b.density, b.diameter, b.inner_diameter));
+      ids = add_straight_beam(out.model, b.start, b.end, static_cast<int>(b.elements), 0, b.up);
+      out.elements = b.elements;
+      law.radius = 0.5 * b.diameter;
+      beam_length = (b.end - b.start).norm();
+      break;
     }
-    ids.push_back(out.model.add_node(x0));
-    out.model.v0 = {d.velocity};
-    out.model.w0 = {d.angular_velocity};
-    const double ia = 0.5 * m * r * r, it = m * (3.0 * r * r + len * len) / 12.0;
-    out.model.bodies.push_back(RigidBody{ids[0], m, Vector3d(it, it, ia).asDiagonal()});
-    law.radius = r;
-  } else {
-    const auto b = StraightBeamSection::parse(s);
-    out.model.sections.push_back(
-        circular_section(b.youngs_modulus, b.poisson, b.density, b.diameter, b.inner_diameter));
-    ids = add_straight_beam(out.model, b.start, b.end, static_cast<int>(b.elements), 0, b.up);
-    out.elements = b.elements;
-    law.radius = 0.5 * b.diameter;
-    beam_length = (b.end - b.start).norm();
   }
   // Contacts (the example builders made theirs).
   if (out.model.contacts.empty()) {
@@ -132,15 +143,15 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   }
   // Supports and imposed series.
   const auto support = SupportSection::parse(s);
-  const std::string& clamp = support.clamp;
-  if (disc && clamp != "none") support.clamp_origin.refuse("a disc has no ends to clamp");
-  if (clamp == "first" || clamp == "both")
+  const ClampedEnds clamp = support.clamp;
+  if (disc && clamp != ClampedEnds::none) support.clamp_origin.refuse("a disc has no ends to clamp");
+  if (clamp == ClampedEnds::first || clamp == ClampedEnds::both)
     for (int d = 0; d < 6; ++d) out.model.imposed.push_back(ImposedDof{ids.front(), d, 0.0, TimeSeries::constant()});
-  if (clamp == "last" || clamp == "both")
+  if (clamp == ClampedEnds::last || clamp == ClampedEnds::both)
     for (int d = 0; d < 6; ++d) out.model.imposed.push_back(ImposedDof{ids.back(), d, 0.0, TimeSeries::constant()});
   const auto imposed = ImposedSection::parse(s);
-  if (imposed.node != "none") {
-    const int node = imposed.node == "first" ? ids.front() : ids.back();
+  if (imposed.node != ImposedNode::none) {
+    const int node = imposed.node == ImposedNode::first ? ids.front() : ids.back();
     out.model.imposed.push_back(ImposedDof{node, imposed.dof, 1.0, TimeSeries{imposed.times, imposed.values}});
   }
   out.record = node_list(NodeOutputSection::parse(s).nodes, ids);
@@ -158,8 +169,8 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   out.solver.disp_tol = 1e-10;
   double mass = 0.0;
   for (const auto& b : out.model.bodies) mass += b.mass;
-  if (kind == "beam") mass = out.model.sections[0].rhoA * beam_length;
-  if (kind == "flying-beam") mass = out.flying.mass_per_length * out.flying.length;
+  if (kind == BodyKind::beam) mass = out.model.sections[0].rhoA * beam_length;
+  if (kind == BodyKind::flying_beam) mass = out.flying.mass_per_length * out.flying.length;
   const double weight = mass * g.norm();
   out.solver.force_tol = analysis.tolerance * (weight > 0.0 ? weight : 1.0);
   out.run.dt = analysis.dt;

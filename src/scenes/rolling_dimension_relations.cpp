@@ -8,6 +8,10 @@
 
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/rolling_body_sections.hpp"
+#include "src/study/sections/rolling_pipe_sections.hpp"
+#include "src/study/sections/texture_section.hpp"
 
 namespace rollspec::scenes {
 
@@ -30,7 +34,7 @@ std::vector<DimensionRelation> rolling_pipe_relations(const study::KeyReader& s)
                  s.real("roughness.spacing") <= D,
                  "a floor sampled every " + dim(s.real("roughness.spacing"), "m") + " is flat under a tube " +
                      dim(D, "m") + " across: the contact spheres meet one sample"});
-  const bool line = s.text("roughness.kind") == "line";
+  const bool line = study::PipeRoughnessSection::parse(s).line;
   double floor_length = distance + D;
   if (!line) {  // the grid holds the rolled strip (x) and the tube across it (y)
     const double dx = s.real("surface.spacing");
@@ -51,7 +55,8 @@ std::vector<DimensionRelation> rolling_pipe_relations(const study::KeyReader& s)
     add_surface_relations(s, true, 0.0, out);
   }
   add_texture_relations(s, "roll.distance", floor_length, "the rolled floor", out);
-  if (s.text("texture.source") == "self-affine" && s.text("texture.rms_kind") == "height")
+  const study::TextureSection texture = study::TextureSection::parse(s);
+  if (texture.source == study::TextureSource::self_affine && texture.rms_kind == texture::RmsTarget::height)
     out.push_back({{"texture.rms", "pipe.diameter"},
                    s.real("texture.rms") <= D / 10.0,
                    "a floor roughness of " + dim(s.real("texture.rms"), "m") + " rms is as tall as the tube (" +
@@ -76,14 +81,18 @@ std::vector<Eigen::Vector3d> vectors(const std::string& text) {
 }
 
 // The body kinds' own sections: a key written for another kind changes nothing, which is a slip too.
-void refuse_unused_sections(const study::KeyReader& s, const std::string& kind) {
-  const std::vector<std::pair<std::string, std::vector<std::string>>> owner = {
-      {"puck", {"puck"}}, {"flying_beam", {"flying-beam"}}, {"disc", {"disc", "puck"}}, {"beam", {"beam"}}};
+void refuse_unused_sections(const study::KeyReader& s, study::BodyKind kind) {
+  using study::BodyKind;
+  const std::vector<std::pair<std::string, std::vector<BodyKind>>> owner = {{"puck", {BodyKind::puck}},
+                                                                            {"flying_beam", {BodyKind::flying_beam}},
+                                                                            {"disc", {BodyKind::disc, BodyKind::puck}},
+                                                                            {"beam", {BodyKind::beam}}};
   for (const auto& [section, kinds] : owner) {
     if (std::find(kinds.begin(), kinds.end(), kind) != kinds.end()) continue;
     for (const auto& k : s.keys())
       if (k.section == section && s.is_set(k.full_name()))
-        s.refuse(k.full_name(), "has no effect: [body] kind = " + kind + " uses no [" + section +
+        s.refuse(k.full_name(), "has no effect: [body] kind = " + study::spelling_of(study::kBodyKinds, kind) +
+                                    " uses no [" + section +
                                     "] (remove it, or set [body] kind to the body it describes)");
   }
 }
@@ -92,10 +101,11 @@ void refuse_unused_sections(const study::KeyReader& s, const std::string& kind) 
 
 std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s) {
   std::vector<DimensionRelation> out;
-  const std::string kind = s.text("body.kind");
+  using study::BodyKind;
+  const BodyKind kind = study::BodySection::parse(s).kind;
   refuse_unused_sections(s, kind);
   const double t_end = s.real("analysis.t_end");
-  if (kind == "disc" || kind == "puck") {
+  if (kind == BodyKind::disc || kind == BodyKind::puck) {
     const double r = s.real("disc.radius"), len = s.real("disc.length"), m = s.real("disc.mass");
     const double rho = m / (M_PI * r * r * len);
     out.push_back({{"disc.radius", "disc.length"},
@@ -104,7 +114,7 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
                        " would have a density of " + dim(rho, "kg/m^3") +
                        ", outside every solid's (10 kg/m^3 for foams to 22600 for osmium)"});
   }
-  if (kind == "puck") {  // a triangular pulse's impulse F T / 2 moves the puck at most that far in t_end
+  if (kind == BodyKind::puck) {  // a triangular pulse's impulse F T / 2 moves the puck at most that far in t_end
     const double r = s.real("disc.radius"), hw = s.real("puck.half_width");
     const double reach = r + s.real("puck.force_peak") * s.real("puck.pulse") / 2.0 / s.real("disc.mass") * t_end;
     out.push_back({{"puck.half_width", "disc.radius"},
@@ -115,7 +125,7 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
                    "walls at +-" + dim(hw, "m") + " lie beyond ten times the farthest the puck can travel in t_end (" +
                        dim(reach, "m") + ", its pulse's impulse over its mass): it never meets them"});
   }
-  if (kind == "flying-beam") {  // seed 4.4: a 1000 m beam along x on y = 0, spheres of radius 25 m
+  if (kind == BodyKind::flying_beam) {  // seed 4.4: a 1000 m beam along x on y = 0, spheres of radius 25 m
     const double wall = s.real("flying_beam.wall_distance"), clear = (wall - 500.0) / std::sqrt(2.0);
     const double reach = s.real("flying_beam.force_peak") * s.real("flying_beam.ramp") / 2.0 / 1.3 * t_end;
     out.push_back({{"flying_beam.wall_distance"},
@@ -130,7 +140,7 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
                        "t_end (" +
                        dim(reach, "m") + ", its force's impulse over its 1.3 kg): it never meets it"});
   }
-  if (kind == "beam") {  // a geometrically exact beam: slender, and not starting deep inside a plane
+  if (kind == BodyKind::beam) {  // a geometrically exact beam: slender, and not starting deep inside a plane
     const double d = s.real("beam.diameter");
     const auto ends = vectors(s.text("beam.start") + ";" + s.text("beam.end"));
     const double length = ends.size() == 2 ? (ends[1] - ends[0]).norm() : 0.0;

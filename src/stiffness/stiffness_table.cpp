@@ -89,8 +89,7 @@ CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, doub
   if (t.surface.nx != t.surface.ny) in << "mode power = rectangular cell mean (kernels/texture Eq. 26a)\n";
   if (stiffness.rough) {
     in << "\n[texture]\n";
-    for (const auto& [key, value] : t.surface.texture_texts)
-      if (key != "table" && key != "profiles") in << key << " = " << value << "\n";
+    for (const auto& [key, value] : t.surface.texture_texts) in << key << " = " << value << "\n";
     in << "input files fingerprint = " << t.psd_fingerprint << "\n";
     if (!t.profile_derived_keys
              .empty()) {  // their values come from the fingerprinted profiles, not from the text above

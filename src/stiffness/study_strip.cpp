@@ -44,8 +44,7 @@ std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g) {
      << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
      << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
      << "\n\n[texture]\n";
-  for (const auto& [key, value] : ts.surface.texture_texts)
-    if (key != "table" && key != "profiles") in << key << " = " << value << "\n";
+  for (const auto& [key, value] : ts.surface.texture_texts) in << key << " = " << value << "\n";
   in << "input files fingerprint = " << ts.psd_fingerprint << "\n";
   return in.str();
 }

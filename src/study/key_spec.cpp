@@ -68,6 +68,19 @@ KeySpec integer_key(std::string section, std::string key, std::string doc, std::
   return k;
 }
 
+std::string choice_doc(const std::string& lead, const std::vector<std::string>& spellings,
+                       const std::vector<std::string>& docs) {
+  bool any = false;
+  for (const auto& d : docs) any = any || !d.empty();
+  if (!any) return lead;
+  std::string out = lead + ": ";
+  for (std::size_t i = 0; i < spellings.size(); ++i) {
+    out += (i == 0 ? "" : i + 1 == spellings.size() ? " or " : ", ") + spellings[i];
+    if (!docs[i].empty()) out += " (" + docs[i] + ")";
+  }
+  return out;
+}
+
 KeySpec choice_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value,
                    std::vector<std::string> choices) {
   KeySpec k;

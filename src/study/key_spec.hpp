@@ -1,6 +1,8 @@
 #pragma once
 // The documented keys of a study: type, unit, allowed range, default and meaning of each.
 // Validation, the resolved-study echo and `rollspec keys` all read this one table.
+#include <array>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <string>
@@ -39,5 +41,46 @@ KeySpec choice_key(std::string section, std::string key, std::string doc, std::o
 KeySpec text_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value);
 KeySpec path_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value);
 KeySpec bool_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value);
+
+// One allowed value of a choice key: the enum value code switches on, its spelling in a study and a
+// short doc (empty: the spelling says it). A section declares one table per choice; the key's allowed
+// values (errors, `rollspec keys`, the reference docs) and its parsing (sections/choice_read.hpp) both
+// read that table, so a value cannot be allowed and then fall through unhandled.
+template <class E>
+struct Choice {
+  E value;
+  const char* spelling;
+  const char* doc;
+};
+
+template <class E, std::size_t N>
+using ChoiceTable = std::array<Choice<E>, N>;
+
+// "lead: a (doc a), b or c (doc c)"; the lead alone when no value has a doc.
+std::string choice_doc(const std::string& lead, const std::vector<std::string>& spellings,
+                       const std::vector<std::string>& docs);
+
+// The choice key of a table, its default one of the table's values.
+template <class E, std::size_t N>
+KeySpec choice_key(std::string section, std::string key, const std::string& lead, E default_value,
+                   const ChoiceTable<E, N>& table) {
+  std::vector<std::string> spellings, docs;
+  std::optional<std::string> fallback;
+  for (const auto& c : table) {
+    spellings.emplace_back(c.spelling);
+    docs.emplace_back(c.doc);
+    if (c.value == default_value) fallback = c.spelling;
+  }
+  std::string doc = choice_doc(lead, spellings, docs);  // before the spellings move
+  return choice_key(std::move(section), std::move(key), std::move(doc), fallback, std::move(spellings));
+}
+
+// The spelling of a value in its table (for messages and canonical texts).
+template <class E, std::size_t N>
+std::string spelling_of(const ChoiceTable<E, N>& table, E value) {
+  for (const auto& c : table)
+    if (c.value == value) return c.spelling;
+  return "?";  // not reached while the table has a row for every value it is asked about
+}
 
 }  // namespace rollspec::study

@@ -21,13 +21,6 @@ using study::SurfaceSection;
 using study::TextureSection;
 
 namespace {
-texture::Extension extension_of(const std::string& s) {
-  if (s == "constant") return texture::Extension::constant;
-  if (s == "power_law") return texture::Extension::power_law;
-  if (s == "zero") return texture::Extension::zero;
-  return texture::Extension::error;
-}
-
 // The [texture] keys that act on measured profiles; any other one set with source = profiles is refused.
 const char* const kActing[] = {"source",          "profiles",         "median_filter",
                                "table_extension", "short_wavelength", "amplitudes"};
@@ -126,7 +119,7 @@ texture::Psd profile_psd(const TextureSection& s) {
   const texture::EstimatedPsd est = profile_estimate(s);
   texture::Psd psd;
   try {
-    psd = texture::measured_line_psd(est, extension_of(s.table_extension));
+    psd = texture::measured_line_psd(est, s.table_extension);
   } catch (const std::invalid_argument& e) {
     throw data_error(s.profiles_origin.where + ": " + e.what());
   }
@@ -143,7 +136,7 @@ texture::Psd profile_psd(const TextureSection& s) {
 }
 
 std::string profile_note(const TextureSection& s) {
-  if (!s.present || s.source != "profiles") return "";
+  if (!s.present || s.source != study::TextureSource::profiles) return "";
   const texture::EstimatedPsd e = profile_estimate(s);
   const double v = e.variance, vr = e.resolved_variance(), vu = e.unresolved_variance();
   const double length = static_cast<double>(e.samples) * e.spacing;
@@ -161,7 +154,7 @@ std::string profile_note(const TextureSection& s) {
 }
 
 void write_profile_record(io::Hdf5Writer& w, const std::string& group, const TextureSection& s) {
-  if (!s.present || s.source != "profiles") return;
+  if (!s.present || s.source != study::TextureSource::profiles) return;
   const texture::EstimatedPsd e = profile_estimate(s);
   w.write(group + "/wavenumber", {e.wavenumber.size()}, e.wavenumber.data(), "rad/m", "bins k_j = j dk of the scans");
   w.write(group + "/periodogram", {e.psd.size()}, e.psd.data(), "m^3",
@@ -180,7 +173,7 @@ void write_profile_record(io::Hdf5Writer& w, const std::string& group, const Tex
 
 std::string surface_share_warning(const TextureSection& t, const SurfaceSection& s, const texture::Psd& psd,
                                   double surface_variance) {
-  if (!t.present || t.source != "profiles") return "";
+  if (!t.present || t.source != study::TextureSource::profiles) return "";
   const texture::EstimatedPsd e = profile_estimate(t);
   // The PSD's variance on the scans' own bins (Eq. 14b cells): the resolved table and the unresolved cells.
   const auto g = texture::psd_at_harmonics(psd, e.dk, e.psd.size());

@@ -34,13 +34,6 @@ namespace rollspec::texture_io {
 using namespace study;
 
 namespace {
-texture::Extension extension_of(const std::string& s) {
-  if (s == "constant") return texture::Extension::constant;
-  if (s == "power_law") return texture::Extension::power_law;
-  if (s == "zero") return texture::Extension::zero;
-  return texture::Extension::error;
-}
-
 // PSD table: first column wavenumber_rad_per_m or spatial_frequency_cycles_per_m, second column
 // psd_m3 or psd_um2_m (one-sided, per unit of the first column).
 texture::Psd read_psd_table(const TextureSection& s) {
@@ -74,7 +67,7 @@ texture::Psd read_psd_table(const TextureSection& s) {
   }
   if (t.rows() < 2) throw data_error(path + ": a PSD table needs at least 2 rows");
   try {
-    return texture::TabulatedPsd(k, g, extension_of(s.table_extension)).to_psd();
+    return texture::TabulatedPsd(k, g, s.table_extension).to_psd();
   } catch (const std::invalid_argument& e) {
     throw data_error(path + ": " + e.what());
   }
@@ -89,19 +82,23 @@ std::vector<KeySpec> surface_keys() { return SurfaceSection::keys(); }
 texture::Psd study_psd(const KeyReader& s) { return study_psd(TextureSection::parse(s)); }
 
 texture::Psd study_psd(const TextureSection& s) {
-  const std::string& source = s.source;
   try {
-    if (source == "table") {
-      if (s.table == "none") s.source_origin.refuse("needs [texture] table = a PSD table file");
-      return read_psd_table(s);
+    switch (s.source) {
+      case TextureSource::table:
+        if (!s.has_table) s.source_origin.refuse("needs [texture] table = a PSD table file");
+        return read_psd_table(s);
+      case TextureSource::profiles:
+        return profile_psd(s);
+      case TextureSource::iso8608: {
+        texture::Iso8608Spec spec;
+        spec.road_class = s.road_class;
+        return texture::iso8608_psd(spec);
+      }
+      case TextureSource::iso3095:
+        return texture::iso3095_rail_psd(s.table_extension).to_psd();
+      case TextureSource::self_affine:
+        break;
     }
-    if (source == "profiles") return profile_psd(s);
-    if (source == "iso8608") {
-      texture::Iso8608Spec spec;
-      spec.road_class = s.road_class[0];
-      return texture::iso8608_psd(spec);
-    }
-    if (source == "iso3095") return texture::iso3095_rail_psd(extension_of(s.table_extension)).to_psd();
     texture::SelfAffineSpec spec;
     spec.hurst = s.hurst;
     const double lw = s.long_wavelength;
@@ -111,7 +108,7 @@ texture::Psd study_psd(const TextureSection& s) {
     if (spec.k_long > spec.k_rolloff) s.long_wavelength_origin.refuse("must be at least the roll-off wavelength");
     if (spec.k_short <= spec.k_rolloff)
       s.short_wavelength_origin.refuse("must be shorter than the roll-off wavelength");
-    spec.target = s.rms_kind == "slope" ? texture::RmsTarget::slope : texture::RmsTarget::height;
+    spec.target = s.rms_kind;
     spec.rms = s.rms;
     return texture::SelfAffinePsd(spec).to_psd();
   } catch (const std::invalid_argument& e) {
@@ -121,9 +118,7 @@ texture::Psd study_psd(const TextureSection& s) {
 
 spectral::Amplitudes study_amplitudes(const KeyReader& s) { return study_amplitudes(TextureSection::parse(s)); }
 
-spectral::Amplitudes study_amplitudes(const TextureSection& s) {
-  return s.amplitudes == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
-}
+spectral::Amplitudes study_amplitudes(const TextureSection& s) { return s.amplitudes; }
 
 namespace {
 // ISO 3095 covers 400 mm down to 3.15 mm: say so, and the frequency of its shortest wavelength.
@@ -149,17 +144,18 @@ std::string grid_message(const LineGeneratorKeys& k, const std::exception& e, do
     m += "; allowed: [texture] table_extension set to zero, constant or power_law (now " + k.extension_where +
          "), or a grid inside the table's range (longer wavelengths need a longer table or profiles, shorter ones "
          "a coarser spacing)";
-    if (k.source == "iso3095") m += iso3095_note(k);
+    if (k.source == TextureSource::iso3095) m += iso3095_note(k);
   }
   if (const auto* u = dynamic_cast<const texture::UnresolvedPsd*>(&e)) {
     if (!std::isfinite(u->k_max)) {  // a table extended beyond its last wavenumber
-      m += "; allowed: [texture] table_extension = zero or error (now " + k.extension + "), so that the PSD ends at " +
-           "the table's last wavenumber, with " + k.spacing_key + " at most pi over that wavenumber";
+      m += "; allowed: [texture] table_extension = zero or error (now " + spelling_of(kTableExtensions, k.extension) +
+           "), so that the PSD ends at " + "the table's last wavenumber, with " + k.spacing_key +
+           " at most pi over that wavenumber";
     } else {
       m += "; allowed: " + k.spacing_key + " at most " + io::four_digits(M_PI / (u->k_max * stretch)) + " m";
-      if (k.source == "self-affine" || k.source == "profiles")
+      if (k.source == TextureSource::self_affine || k.source == TextureSource::profiles)
         m += ", or [texture] short_wavelength at least " + io::four_digits(2.0 * spacing * stretch) + " m";
-      if (k.source == "iso3095") m += iso3095_note(k);
+      if (k.source == TextureSource::iso3095) m += iso3095_note(k);
     }
   }
   return m;
@@ -173,7 +169,7 @@ LineGeneratorKeys LineGeneratorKeys::of(const TextureSection& t, const KeyOrigin
   k.spacing_where = spacing.where;
   k.extension_where = t.table_extension_origin.where;
   k.spacing_key = spacing_key;
-  k.source = t.source;
+  if (t.present) k.source = t.source;
   k.extension = t.table_extension;
   return k;
 }
@@ -195,7 +191,7 @@ std::unique_ptr<texture::LineTextureGenerator> line_generator(const LineGenerato
 std::vector<std::string> profile_files(const KeyReader& s) { return profile_files(TextureSection::parse(s)); }
 
 std::vector<std::string> profile_files(const TextureSection& s) {
-  if (!s.present || s.source != "profiles") return {};
+  if (!s.present || s.source != TextureSource::profiles) return {};
   return s.profile_paths;
 }
 
@@ -207,8 +203,8 @@ std::string psd_input_fingerprint(const TextureSection& s) {
     std::ifstream in(p, std::ios::binary);
     out << "file " << fs::path(p).filename().string() << "\n" << in.rdbuf() << "\n";
   };
-  if (s.source == "table") add_file(s.table_path);
-  if (s.source == "profiles") {
+  if (s.source == TextureSource::table) add_file(s.table_path);
+  if (s.source == TextureSource::profiles) {
     for (const auto& p : s.profile_paths) add_file(p);
     // How a PSD is made from them: the estimator (whole scans, measured level, unresolved variance
     // apart: kernels/texture Eq. 42-45), and a short-wavelength cut only where the study sets one
@@ -226,7 +222,7 @@ std::vector<std::string> profile_derived_surface_keys(const KeyReader& s) {
 
 std::vector<std::string> profile_derived_surface_keys(const TextureSection& t, const SurfaceSection& f) {
   std::vector<std::string> out;
-  if (!t.present || t.source != "profiles" || f.method != "seed") return out;
+  if (!t.present || t.source != TextureSource::profiles || f.method != study::SurfaceMethod::seed) return out;
   if (f.sigma_default) out.push_back("sigma");
   if (f.correlation_x_default) out.push_back("correlation_x");
   if (f.correlation_y_default) out.push_back("correlation_y");
@@ -280,7 +276,7 @@ SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection
   if (ny % 2) s.ny_origin.refuse("must be even");
   const double h = s.spacing;
   try {
-    if (s.method == "spectral") {
+    if (s.method == study::SurfaceMethod::spectral) {
       texture::SpectralSurfaceSpec spec;
       spec.nx = nx;
       spec.ny = ny;
@@ -301,7 +297,7 @@ SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection
     }
   } catch (const std::exception& e) {  // invalid_argument from the spec, domain_error from a table PSD
     // The spectral grid must resolve k_max stretched by the anisotropy along x and y.
-    const double a = s.method == "spectral" ? std::sqrt(s.anisotropy) : 1.0;
+    const double a = s.method == study::SurfaceMethod::spectral ? std::sqrt(s.anisotropy) : 1.0;
     throw config_error(
         grid_message(LineGeneratorKeys::of(t, s.spacing_origin, "[surface] spacing"), e, h, std::max(a, 1.0 / a)));
   }

@@ -41,7 +41,9 @@ struct LineGeneratorKeys {
   std::string spacing_where, extension_where;
   // For the advice of grid errors: the spacing key ("[lines] spacing"), the [texture] source and
   // table_extension, and the rolling speed where the scene has one (0: none).
-  std::string spacing_key, source, extension;
+  std::string spacing_key;
+  std::optional<study::TextureSource> source;  // none: the scene has no [texture]
+  texture::Extension extension = texture::Extension::error;
   double speed = 0.0;
   std::string speed_key;
   static LineGeneratorKeys of(const study::TextureSection& t, const study::KeyOrigin& spacing,

@@ -36,7 +36,7 @@ TEST_CASE("rolling-beam sections: values from the study, defaults elsewhere") {
       scene_study("rolling-beam",
                   "[body]\nkind = disc\n[disc]\nradius = 0.25\nvelocity = 1, 0, 0\n"
                   "[plane]\npoint = 0,0,0; 5,0,0\nnormal = 0,0,1; -1,0,0\n[gravity]\nacceleration = 0,0,-9\n");
-  CHECK(study::BodySection::parse(s).kind == "disc");
+  CHECK(study::BodySection::parse(s).kind == study::BodyKind::disc);
   const auto disc = study::DiscSection::parse(s);
   CHECK(disc.radius == 0.25);
   CHECK(disc.mass == 1000.0);  // default
@@ -54,7 +54,7 @@ TEST_CASE("rolling-beam sections: values from the study, defaults elsewhere") {
   const auto c = study::RollingContactSection::parse(s);
   CHECK(c.friction == 0.5);
   CHECK(c.nodes.all);
-  CHECK(study::ImposedSection::parse(s).node == "none");
+  CHECK(study::ImposedSection::parse(s).node == study::ImposedNode::none);
   CHECK(study::StraightBeamSection::parse(s).elements == 20);
 }
 

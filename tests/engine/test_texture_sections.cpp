@@ -29,10 +29,10 @@ TEST_CASE("texture section: values, profile paths beside the study file, origins
   const auto s = texture_study("[texture]\nsource = profiles\nprofiles = a.csv, /abs/b.csv\nhurst = 0.6\n");
   const auto t = study::TextureSection::parse(s);
   CHECK(t.present);
-  CHECK(t.source == "profiles");
+  CHECK(t.source == study::TextureSource::profiles);
   CHECK(t.hurst == 0.6);
   CHECK(t.table == "none");
-  CHECK(t.table_extension == "error");
+  CHECK(t.table_extension == texture::Extension::error);
   CHECK(t.profile_paths == std::vector<std::string>{"/tmp/rollspec_texture_sections/a.csv", "/abs/b.csv"});
   CHECK(texture_io::profile_files(t) == t.profile_paths);
   CHECK(t.profiles_origin.where == s.where("texture.profiles"));
@@ -78,7 +78,7 @@ TEST_CASE("surface section: which seed-method keys take the measured profiles' v
   const auto s = texture_study("[texture]\nsource = profiles\nprofiles = a.csv, b.csv\n[surface]\nmethod = seed\n",
                                {"surface.sigma=1e-7"});
   const auto f = study::SurfaceSection::parse(s);
-  CHECK(f.method == "seed");
+  CHECK(f.method == study::SurfaceMethod::seed);
   CHECK(f.sigma == 1e-7);
   CHECK_FALSE(f.sigma_default);
   CHECK(f.correlation_x_default);

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
@@ -12,16 +13,9 @@ std::vector<KeySpec> EquivalentRoughnessSection::keys() {
                   "filter = solver: rough strips (surface realisations 0..strips-1) whose h_eq PSD is averaged; the "
                   "strip grid is the blocked force's ([blocked_force] strip_length, window, step, segment)",
                   std::string("2"), 1, 1024),
-      choice_key("equivalent_roughness", "line",
-                 "filter = solver: synthesised (a Philox line texture per realisation from the strip-mean h_eq PSD) "
-                 "or strip (h_eq of strip 0 itself along the ball's path, on the grid law = path uses: the point law "
-                 "on h_eq against law = path on the same strip; every realisation rolls over this one strip)",
-                 std::string("synthesised"), {"synthesised", "strip"}),
-      choice_key("equivalent_roughness", "stiffness",
-                 "filter = solver: strip (the point law stretched along the approach so that it carries the weight "
-                 "with the strips' mean contact stiffness dP/d delta at delta_eq, kernels/contact ER-7) or law (the "
-                 "law's own stiffness; h_eq alone)",
-                 std::string("strip"), {"strip", "law"}),
+      choice_key("equivalent_roughness", "line", "filter = solver", EquivalentLine::synthesised, kEquivalentLines),
+      choice_key("equivalent_roughness", "stiffness", "filter = solver", EquivalentStiffness::strip,
+                 kEquivalentStiffnesses),
       integer_key("equivalent_roughness", "leave_out",
                   "filter = solver: strip index (0 .. strips - 1) left out of the table's mean PSD and stiffness, from "
                   "the cached table without a new solve: a leave-one-out sub-table for the jackknife of the table's "
@@ -33,8 +27,8 @@ std::vector<KeySpec> EquivalentRoughnessSection::keys() {
 EquivalentRoughnessSection EquivalentRoughnessSection::parse(const KeyReader& s) {
   EquivalentRoughnessSection p;
   p.strips = s.integer("equivalent_roughness.strips");
-  p.line = s.text("equivalent_roughness.line");
-  p.stiffness = s.text("equivalent_roughness.stiffness");
+  p.line = read_choice(s, "equivalent_roughness.line", kEquivalentLines);
+  p.stiffness = read_choice(s, "equivalent_roughness.stiffness", kEquivalentStiffnesses);
   p.line_origin = {s.where("equivalent_roughness.line")};
   p.leave_out = s.integer("equivalent_roughness.leave_out");
   p.leave_out_origin = {s.where("equivalent_roughness.leave_out")};

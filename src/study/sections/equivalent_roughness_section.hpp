@@ -11,9 +11,26 @@ namespace rollspec::study {
 
 class KeyReader;
 
+enum class EquivalentLine { synthesised, strip };
+enum class EquivalentStiffness { strip, law };
+
+inline constexpr ChoiceTable<EquivalentLine, 2> kEquivalentLines{{
+    {EquivalentLine::synthesised, "synthesised", "a Philox line texture per realisation from the strip-mean h_eq PSD"},
+    {EquivalentLine::strip, "strip",
+     "h_eq of strip 0 itself along the ball's path, on the grid law = path uses: the point law on h_eq against law "
+     "= path on the same strip; every realisation rolls over this one strip"},
+}};
+inline constexpr ChoiceTable<EquivalentStiffness, 2> kEquivalentStiffnesses{{
+    {EquivalentStiffness::strip, "strip",
+     "the point law stretched along the approach so that it carries the weight with the strips' mean contact "
+     "stiffness dP/d delta at delta_eq, kernels/contact ER-7"},
+    {EquivalentStiffness::law, "law", "the law's own stiffness; h_eq alone"},
+}};
+
 struct EquivalentRoughnessSection {
   long long strips = 0;
-  std::string line, stiffness;  // as written
+  EquivalentLine line = EquivalentLine::synthesised;
+  EquivalentStiffness stiffness = EquivalentStiffness::strip;
   KeyOrigin line_origin;
   long long leave_out = -1;  // >= 0: the sub-table without this strip (D-30)
   KeyOrigin leave_out_origin;

@@ -5,14 +5,14 @@
 #include <string>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
 std::vector<KeySpec> ModalBeamSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
-      choice_key("beam", "support", "boundary conditions", std::string("clamped-clamped"),
-                 {"clamped-clamped", "simply-supported"}),
+      choice_key("beam", "support", "boundary conditions", beam::Support::clamped_clamped, kBeamSupports),
       real_key("beam", "length", "m", "physical span l between the supports", std::string("0.4"), 0.0, inf, false),
       real_key("beam", "effective_length", "m", "modal length l_eff >= l (clamp rotation, seed 002: l + 30 mm); 0: l",
                std::string("0"), 0.0, inf),
@@ -34,8 +34,7 @@ std::vector<KeySpec> ModalBeamSection::keys() {
 ModalBeamSection ModalBeamSection::parse(const KeyReader& s) {
   ModalBeamSection b;
   beam::BeamProperties& p = b.properties;
-  p.support =
-      s.text("beam.support") == "clamped-clamped" ? beam::Support::clamped_clamped : beam::Support::simply_supported;
+  p.support = read_choice(s, "beam.support", kBeamSupports);
   p.youngs_modulus = s.real("beam.youngs_modulus");
   p.density = s.real("beam.density");
   p.width = s.real("beam.width");

@@ -10,6 +10,11 @@ namespace rollspec::study {
 
 class KeyReader;
 
+inline constexpr ChoiceTable<beam::Support, 2> kBeamSupports{{
+    {beam::Support::clamped_clamped, "clamped-clamped", ""},
+    {beam::Support::simply_supported, "simply-supported", ""},
+}};
+
 struct ModalBeamSection {
   beam::BeamProperties properties;
   beam::ModeSelection selection;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
@@ -32,21 +33,19 @@ OscillatorSection OscillatorSection::parse(const KeyReader& s) {
 
 std::vector<KeySpec> ForceSection::keys() {
   return {
-      choice_key("force", "spectrum", "force PSD shape: flat up to f_max", std::string("flat"), {"flat"}),
+      choice_key("force", "spectrum", "force PSD shape", ForceSpectrum::flat, kForceSpectra),
       real_key("force", "level", "N^2/Hz", "one-sided force PSD S_F of the flat spectrum", std::string("1"), 0.0, inf,
                false),
       real_key("force", "f_max", "Hz", "highest force frequency; 0 means the Nyquist frequency", std::string("0"), 0.0,
                inf),
-      choice_key("force", "amplitudes",
-                 "harmonic amplitudes: rayleigh (Gaussian force) or deterministic (the target PSD exactly)",
-                 std::string("rayleigh"), {"rayleigh", "deterministic"}),
+      choice_key("force", "amplitudes", "harmonic amplitudes", spectral::Amplitudes::rayleigh, kAmplitudes),
   };
 }
 
 ForceSection ForceSection::parse(const KeyReader& s) {
   ForceSection f;
-  f.amplitudes =
-      s.text("force.amplitudes") == "rayleigh" ? spectral::Amplitudes::rayleigh : spectral::Amplitudes::deterministic;
+  f.spectrum = read_choice(s, "force.spectrum", kForceSpectra);
+  f.amplitudes = read_choice(s, "force.amplitudes", kAmplitudes);
   f.level = s.real("force.level");
   f.f_max = s.real("force.f_max");
   f.f_max_origin = {s.where("force.f_max")};

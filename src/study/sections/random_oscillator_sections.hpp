@@ -7,6 +7,7 @@
 
 #include "kernels/spectral/harmonic_synthesis.hpp"
 #include "src/study/key_spec.hpp"
+#include "src/study/sections/amplitudes_choice.hpp"
 #include "src/study/sections/key_origin.hpp"
 
 namespace rollspec::study {
@@ -21,7 +22,14 @@ struct OscillatorSection {
   static OscillatorSection parse(const KeyReader& s);
 };
 
+enum class ForceSpectrum { flat };
+
+inline constexpr ChoiceTable<ForceSpectrum, 1> kForceSpectra{{
+    {ForceSpectrum::flat, "flat", "up to f_max"},
+}};
+
 struct ForceSection {
+  ForceSpectrum spectrum = ForceSpectrum::flat;
   double level = 0.0, f_max = 0.0;  // f_max 0: the Nyquist frequency
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
   KeyOrigin f_max_origin;

@@ -3,21 +3,17 @@
 #include <limits>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
 std::vector<KeySpec> RollingAnalysisSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
-      choice_key("analysis", "type", "dynamic (Newmark trapezoidal) or static (quasi-static load steps)",
-                 std::string("dynamic"), {"dynamic", "static"}),
+      choice_key("analysis", "type", "analysis type", AnalysisType::dynamic, kAnalysisTypes),
       real_key("analysis", "dt", "s", "time (load) step", std::string("1e-3"), 0.0, inf, false),
       real_key("analysis", "t_end", "s", "end time", std::string("1"), 0.0, inf, false),
-      choice_key(
-          "analysis", "integrator",
-          "dynamic integrator: newmark (trapezoidal) or energy-consistent (midpoint + discrete-gradient penalty; "
-          "rigid bodies only)",
-          std::string("newmark"), {"newmark", "energy-consistent"}),
+      choice_key("analysis", "integrator", "dynamic integrator", AnalysisIntegrator::newmark, kAnalysisIntegrators),
       real_key("analysis", "impact_step_fraction", "-",
                "while a contact is closed or closing, limit the step to this fraction of 2 pi sqrt(m/eps_n) (0: off)",
                std::string("0"), 0.0, 1.0),
@@ -36,8 +32,9 @@ std::vector<KeySpec> RollingAnalysisSection::keys() {
 
 RollingAnalysisSection RollingAnalysisSection::parse(const KeyReader& s) {
   RollingAnalysisSection a;
-  a.dynamic = s.text("analysis.type") == "dynamic";
-  a.energy_consistent = s.text("analysis.integrator") == "energy-consistent";
+  a.dynamic = read_choice(s, "analysis.type", kAnalysisTypes) == AnalysisType::dynamic;
+  a.energy_consistent =
+      read_choice(s, "analysis.integrator", kAnalysisIntegrators) == AnalysisIntegrator::energy_consistent;
   a.integrator_origin = {s.where("analysis.integrator")};
   a.impact_step_fraction = s.real("analysis.impact_step_fraction");
   a.max_new_penetration = s.real("analysis.max_new_penetration");

@@ -13,6 +13,19 @@ namespace rollspec::study {
 
 class KeyReader;
 
+enum class AnalysisType { dynamic, quasi_static };
+enum class AnalysisIntegrator { newmark, energy_consistent };
+
+inline constexpr ChoiceTable<AnalysisType, 2> kAnalysisTypes{{
+    {AnalysisType::dynamic, "dynamic", "Newmark trapezoidal"},
+    {AnalysisType::quasi_static, "static", "quasi-static load steps"},
+}};
+inline constexpr ChoiceTable<AnalysisIntegrator, 2> kAnalysisIntegrators{{
+    {AnalysisIntegrator::newmark, "newmark", "trapezoidal"},
+    {AnalysisIntegrator::energy_consistent, "energy-consistent",
+     "midpoint + discrete-gradient penalty; rigid bodies only"},
+}};
+
 struct RollingAnalysisSection {
   bool dynamic = true;             // else quasi-static load steps
   bool energy_consistent = false;  // else Newmark

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 #include "src/study/sections/vector_keys.hpp"
 
 namespace rollspec::study {
@@ -13,15 +14,12 @@ const double inf = std::numeric_limits<double>::infinity();
 
 std::vector<KeySpec> BodySection::keys() {
   return {
-      choice_key(
-          "body", "kind",
-          "a geometrically exact beam, a rigid disc (one node), or the seed 000 builders: puck (4.3, four walls, "
-          "[puck] keys) and flying-beam (4.4, floor and an oblique wall); the builders define their own planes",
-          std::string("beam"), {"beam", "disc", "puck", "flying-beam"}),
+      choice_key("body", "kind", "what rolls (the seed 000 builders define their own planes)", BodyKind::beam,
+                 kBodyKinds),
   };
 }
 
-BodySection BodySection::parse(const KeyReader& s) { return {s.text("body.kind")}; }
+BodySection BodySection::parse(const KeyReader& s) { return {read_choice(s, "body.kind", kBodyKinds)}; }
 
 std::vector<KeySpec> PuckSection::keys() {
   return {

@@ -13,8 +13,17 @@ namespace rollspec::study {
 
 class KeyReader;
 
+enum class BodyKind { beam, disc, puck, flying_beam };
+
+inline constexpr ChoiceTable<BodyKind, 4> kBodyKinds{{
+    {BodyKind::beam, "beam", "a geometrically exact beam"},
+    {BodyKind::disc, "disc", "a rigid disc, one node"},
+    {BodyKind::puck, "puck", "seed 000 builder 4.3: four walls, [puck] keys"},
+    {BodyKind::flying_beam, "flying-beam", "seed 000 builder 4.4: floor and an oblique wall"},
+}};
+
 struct BodySection {
-  std::string kind;  // beam, disc, puck or flying-beam
+  BodyKind kind = BodyKind::beam;
 
   static std::vector<KeySpec> keys();
   static BodySection parse(const KeyReader& s);

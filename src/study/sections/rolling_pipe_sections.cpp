@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
@@ -53,16 +54,16 @@ RollSection RollSection::parse(const KeyReader& s) {
 
 std::vector<KeySpec> PipeRoughnessSection::keys() {
   return {
-      choice_key("roughness", "kind",
-                 "line: a line texture along the rolling direction, the same under every node; isotropic: an isotropic "
-                 "surface realisation from [surface] (spectral or seed method), different under every node",
-                 std::string("line"), {"line", "isotropic"}),
+      choice_key("roughness", "kind", "the roughness under the contact nodes", PipeRoughnessKind::line,
+                 kPipeRoughnessKinds),
       real_key("roughness", "spacing", "m", "sample spacing of the line texture", std::string("1e-3"), 0.0, inf, false),
   };
 }
 
 PipeRoughnessSection PipeRoughnessSection::parse(const KeyReader& s) {
-  return {s.text("roughness.kind") == "line", s.real("roughness.spacing"), {s.where("roughness.spacing")}};
+  return {read_choice(s, "roughness.kind", kPipeRoughnessKinds) == PipeRoughnessKind::line,
+          s.real("roughness.spacing"),
+          {s.where("roughness.spacing")}};
 }
 
 std::vector<KeySpec> PipeContactSection::keys() {

@@ -30,6 +30,14 @@ struct RollSection {
   static RollSection parse(const KeyReader& s);
 };
 
+enum class PipeRoughnessKind { line, isotropic };
+
+inline constexpr ChoiceTable<PipeRoughnessKind, 2> kPipeRoughnessKinds{{
+    {PipeRoughnessKind::line, "line", "a line texture along the rolling direction, the same under every node"},
+    {PipeRoughnessKind::isotropic, "isotropic",
+     "an isotropic surface realisation from [surface] (spectral or seed method), different under every node"},
+}};
+
 struct PipeRoughnessSection {
   bool line = true;      // else an isotropic surface from [surface]
   double spacing = 0.0;  // m, of the line texture

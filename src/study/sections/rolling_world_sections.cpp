@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 #include "src/study/sections/vector_keys.hpp"
 
 namespace rollspec::study {
@@ -70,20 +71,18 @@ GravityVectorSection GravityVectorSection::parse(const KeyReader& s) {
 
 std::vector<KeySpec> SupportSection::keys() {
   return {
-      choice_key("support", "clamp", "clamped end nodes of the beam", std::string("none"),
-                 {"none", "first", "last", "both"}),
+      choice_key("support", "clamp", "clamped end nodes of the beam", ClampedEnds::none, kClampedEnds),
   };
 }
 
 SupportSection SupportSection::parse(const KeyReader& s) {
-  return {s.text("support.clamp"), {s.where("support.clamp")}};
+  return {read_choice(s, "support.clamp", kClampedEnds), {s.where("support.clamp")}};
 }
 
 std::vector<KeySpec> ImposedSection::keys() {
   return {
-      choice_key("imposed", "node", "node with an imposed displacement series", std::string("none"),
-                 {"none", "first", "last"}),
-      choice_key("imposed", "dof", "imposed displacement component", std::string("y"), {"x", "y", "z"}),
+      choice_key("imposed", "node", "node with an imposed displacement series", ImposedNode::none, kImposedNodes),
+      choice_key("imposed", "dof", "imposed displacement component", 1, kImposedDofs),
       text_key("imposed", "times", "times of the piecewise-linear series (s), comma-separated", std::string("0")),
       text_key("imposed", "values", "displacements at those times (m)", std::string("0")),
   };
@@ -91,10 +90,9 @@ std::vector<KeySpec> ImposedSection::keys() {
 
 ImposedSection ImposedSection::parse(const KeyReader& s) {
   ImposedSection m;
-  m.node = s.text("imposed.node");
-  const std::string dof = s.text("imposed.dof");
-  m.dof = dof == "x" ? 0 : dof == "y" ? 1 : 2;
-  if (m.node == "none") return m;
+  m.node = read_choice(s, "imposed.node", kImposedNodes);
+  m.dof = read_choice(s, "imposed.dof", kImposedDofs);
+  if (m.node == ImposedNode::none) return m;
   m.times = s.numbers("imposed.times");
   m.values = s.numbers("imposed.values");
   if (m.times.size() != m.values.size()) s.refuse("imposed.values", "needs one value per entry of [imposed] times");

@@ -47,8 +47,25 @@ struct GravityVectorSection {
   static GravityVectorSection parse(const KeyReader& s);
 };
 
+enum class ClampedEnds { none, first, last, both };
+enum class ImposedNode { none, first, last };
+
+inline constexpr ChoiceTable<ClampedEnds, 4> kClampedEnds{{
+    {ClampedEnds::none, "none", ""},
+    {ClampedEnds::first, "first", ""},
+    {ClampedEnds::last, "last", ""},
+    {ClampedEnds::both, "both", ""},
+}};
+inline constexpr ChoiceTable<ImposedNode, 3> kImposedNodes{{
+    {ImposedNode::none, "none", ""},
+    {ImposedNode::first, "first", ""},
+    {ImposedNode::last, "last", ""},
+}};
+// The displacement component, as its index x, y, z = 0, 1, 2.
+inline constexpr ChoiceTable<int, 3> kImposedDofs{{{0, "x", ""}, {1, "y", ""}, {2, "z", ""}}};
+
 struct SupportSection {
-  std::string clamp;  // none, first, last or both
+  ClampedEnds clamp = ClampedEnds::none;
   KeyOrigin clamp_origin;
 
   static std::vector<KeySpec> keys();
@@ -57,8 +74,8 @@ struct SupportSection {
 
 // times and values are read (and checked) only when a node is imposed.
 struct ImposedSection {
-  std::string node;  // none, first or last
-  int dof = 1;       // x, y, z as 0, 1, 2
+  ImposedNode node = ImposedNode::none;
+  int dof = 1;  // x, y, z as 0, 1, 2
   std::vector<double> times, values;
 
   static std::vector<KeySpec> keys();

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
@@ -15,18 +16,14 @@ std::vector<KeySpec> RoughnessSection::keys() {
           "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per integration "
           "step, v / (sample_rate x substeps)",
           std::string("0"), 0.0, inf),
-      choice_key("roughness", "band_limit",
-                 "roughness the ball sees: output (wavelengths shorter than v / (sample_rate / 2) dropped, an ideal "
-                 "anti-alias filter on the linear response; kernels/beam B40) or step (up to the sampling's pi/dx: the "
-                 "response above sample_rate / 2 aliases into the bands)",
-                 std::string("output"), {"output", "step"}),
+      choice_key("roughness", "band_limit", "roughness the ball sees", BandLimit::output, kBandLimits),
   };
 }
 
 RoughnessSection RoughnessSection::parse(const KeyReader& s) {
   RoughnessSection p;
   p.spacing = s.real("roughness.spacing");
-  p.band_limit = s.text("roughness.band_limit");
+  p.band_limit = read_choice(s, "roughness.band_limit", kBandLimits);
   p.spacing_origin = {s.where("roughness.spacing")};
   return p;
 }

@@ -11,9 +11,18 @@ namespace rollspec::study {
 
 class KeyReader;
 
+enum class BandLimit { output, step };
+
+inline constexpr ChoiceTable<BandLimit, 2> kBandLimits{{
+    {BandLimit::output, "output",
+     "wavelengths shorter than v / (sample_rate / 2) dropped, an ideal anti-alias filter on the linear response; "
+     "kernels/beam B40"},
+    {BandLimit::step, "step", "up to the sampling's pi/dx: the response above sample_rate / 2 aliases into the bands"},
+}};
+
 struct RoughnessSection {
-  double spacing = 0.0;    // m; 0: derived from the step
-  std::string band_limit;  // output or step
+  double spacing = 0.0;  // m; 0: derived from the step
+  BandLimit band_limit = BandLimit::output;
   KeyOrigin spacing_origin;
 
   static std::vector<KeySpec> keys();

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
@@ -14,10 +15,8 @@ std::vector<KeySpec> SignalSection::keys() {
                0.0, inf, false),
       integer_key("signal", "substeps", "integration steps per output sample (exact-step integrator)", std::string("4"),
                   1, 1000),
-      choice_key("signal", "hold", "modal force over a step: quadratic (order 3, default) or linear (order 2)",
-                 std::string("quadratic"), {"quadratic", "linear"}),
-      choice_key("signal", "integrator", "exact (exact modal step, implicit contact) or dopri5 (reference)",
-                 std::string("exact"), {"exact", "dopri5"}),
+      choice_key("signal", "hold", "modal force over a step", beam::ForceHold::quadratic, kForceHolds),
+      choice_key("signal", "integrator", "integrator", SignalIntegrator::exact, kSignalIntegrators),
       real_key("signal", "rtol", "-", "relative tolerance of the dopri5 reference", std::string("1e-8"), 1e-14, 1e-2),
   };
 }
@@ -26,8 +25,8 @@ SignalSection SignalSection::parse(const KeyReader& s) {
   SignalSection p;
   p.sample_rate = s.real("signal.sample_rate");
   p.substeps = s.integer("signal.substeps");
-  p.hold = s.text("signal.hold");
-  p.integrator = s.text("signal.integrator");
+  p.hold = read_choice(s, "signal.hold", kForceHolds);
+  p.integrator = read_choice(s, "signal.integrator", kSignalIntegrators);
   p.rtol = s.real("signal.rtol");
   p.substeps_origin = {s.where("signal.substeps")};
   p.sample_rate_origin = {s.where("signal.sample_rate")};

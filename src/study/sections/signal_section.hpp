@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/beam/exact_step_integrator.hpp"
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/key_origin.hpp"
 
@@ -11,10 +12,22 @@ namespace rollspec::study {
 
 class KeyReader;
 
+enum class SignalIntegrator { exact, dopri5 };
+
+inline constexpr ChoiceTable<beam::ForceHold, 2> kForceHolds{{
+    {beam::ForceHold::quadratic, "quadratic", "order 3, default"},
+    {beam::ForceHold::linear, "linear", "order 2"},
+}};
+inline constexpr ChoiceTable<SignalIntegrator, 2> kSignalIntegrators{{
+    {SignalIntegrator::exact, "exact", "exact modal step, implicit contact"},
+    {SignalIntegrator::dopri5, "dopri5", "reference"},
+}};
+
 struct SignalSection {
   double sample_rate = 0.0, rtol = 0.0;
   long long substeps = 0;
-  std::string hold, integrator;  // as written
+  beam::ForceHold hold = beam::ForceHold::quadratic;
+  SignalIntegrator integrator = SignalIntegrator::exact;
   KeyOrigin substeps_origin, sample_rate_origin;
 
   static std::vector<KeySpec> keys();

@@ -6,6 +6,7 @@
 
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
@@ -14,7 +15,7 @@ std::vector<KeySpec> SpectrumSection::keys() {
       integer_key("spectrum", "segment", "Welch segment length in samples", std::string("4096"), 16, 1 << 24),
       real_key("spectrum", "overlap", "-", "Welch segment overlap as a fraction of the segment", std::string("0.5"),
                0.0, 0.95),
-      choice_key("spectrum", "window", "Welch data window", std::string("hann"), {"hann", "rectangular"}),
+      choice_key("spectrum", "window", "Welch data window", spectral::Window::hann, kWelchWindows),
       real_key("spectrum", "band_min", "Hz", "lowest third-octave band edge reported", std::string("10"), 0.0, 1e9,
                false),
       real_key("spectrum", "band_max", "Hz", "highest third-octave band edge reported (capped at Nyquist)",
@@ -28,7 +29,7 @@ SpectrumSection SpectrumSection::parse(const KeyReader& s) {
   SpectrumSection p;
   p.segment = s.integer("spectrum.segment");
   p.overlap = s.real("spectrum.overlap");
-  p.window = s.text("spectrum.window");
+  p.window = read_choice(s, "spectrum.window", kWelchWindows);
   p.band_min = s.real("spectrum.band_min");
   p.band_max = s.real("spectrum.band_max");
   p.band_min_text = s.text("spectrum.band_min");
@@ -63,7 +64,7 @@ spectral::WelchConfig SpectrumSection::welch_config(double sample_rate) const {
   wc.sample_rate = sample_rate;
   wc.segment = static_cast<std::size_t>(segment);
   wc.overlap = static_cast<std::size_t>(std::floor(overlap * static_cast<double>(wc.segment)));
-  wc.window = window == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
+  wc.window = window;
   check_band_range(sample_rate, wc.segment);
   return wc;
 }

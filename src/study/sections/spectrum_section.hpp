@@ -14,10 +14,16 @@ namespace rollspec::study {
 
 class KeyReader;
 
+inline constexpr ChoiceTable<spectral::Window, 2> kWelchWindows{{
+    {spectral::Window::hann, "hann", ""},
+    {spectral::Window::rectangular, "rectangular", ""},
+}};
+
 struct SpectrumSection {
   long long segment = 0;
   double overlap = 0.0, band_min = 0.0, band_max = 0.0, confidence = 0.0, skip_start = 0.0;
-  std::string window, band_min_text;  // band_min as written, for the band-range message
+  spectral::Window window = spectral::Window::hann;
+  std::string band_min_text;  // band_min as written, for the band-range message
   KeyOrigin segment_origin, band_min_origin, band_max_origin, skip_start_origin;
 
   static std::vector<KeySpec> keys();  // the shared keys (not skip_start: its doc is the scene's)

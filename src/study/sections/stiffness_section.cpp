@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
@@ -14,10 +15,9 @@ std::vector<KeySpec> StiffnessSection::keys() {
                std::string("auto")),
       text_key("stiffness", "table_dir", "directory of cached tables, relative to the study file",
                std::string("tables")),
-      choice_key("stiffness", "surface", "rough: [surface] realisations of the [texture] PSD; smooth: a smooth flat",
-                 std::string("rough"), {"rough", "smooth"}),
-      choice_key("stiffness", "shape", "ball geometry: exact sphere or Hertz's paraboloid", std::string("sphere"),
-                 {"sphere", "paraboloid"}),
+      choice_key("stiffness", "surface", "the flat of the table's contact solves", StiffnessSurface::rough,
+                 kStiffnessSurfaces),
+      choice_key("stiffness", "shape", "ball geometry", contact::BallShape::Sphere, kBallShapes),
       real_key("stiffness", "ball_rms", "m",
                "rms roughness of the ball (rough on rough: composite surface h_flat + h_ball, the ball's heights from "
                "the [texture] PSD's shape scaled to this rms); 0: smooth ball",
@@ -46,25 +46,16 @@ std::vector<KeySpec> StiffnessSection::keys() {
                   "surface index (0 .. realisations - 1) left out of the stiffness table's mean: a leave-one-out "
                   "sub-table for the jackknife of the table's own error (kernels/spectral/README.md D-30); -1: none",
                   std::string("-1"), -1, 99999),
-      choice_key(
-          "stiffness", "table_error",
-          "what `run`'s intervals, compare and fit include besides the realisations' scatter: auto (jackknife "
-          "where the study's contact uses one random table, none otherwise), none (conditional on the table: "
-          "the verdict then holds only for the surface the table was built on), or jackknife: the table's own "
-          "sampling error, from the ensemble run again with each of the table's leave-one-out sub-tables "
-          "(realisations + 1 ensembles on the same random streams, more realisations per sub-table where "
-          "their own noise asks for them; kernels/spectral/README.md D-30, D-30f, D-31); needs a rough "
-          "stiffness table ([contact] law = table or literal, surface = rough; over its surfaces), an "
-          "equivalent-roughness table ([contact] filter = solver; over its [equivalent_roughness] strips) or a "
-          "blocked-force table ([contact] blocked_force = solver; over the Welch segments of F0 along its strip)",
-          std::string("auto"), {"auto", "none", "jackknife"}),
+      choice_key("stiffness", "table_error",
+                 "what `run`'s intervals, compare and fit include besides the realisations' scatter",
+                 TableError::automatic, kTableErrors),
   };
 }
 
 StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   StiffnessSection t;
-  t.rough = s.text("stiffness.surface") == "rough";
-  t.shape = s.text("stiffness.shape") == "sphere" ? contact::BallShape::Sphere : contact::BallShape::Paraboloid;
+  t.rough = read_choice(s, "stiffness.surface", kStiffnessSurfaces) == StiffnessSurface::rough;
+  t.shape = read_choice(s, "stiffness.shape", kBallShapes);
   t.ball_rms = s.real("stiffness.ball_rms");
   t.approach_max = s.real("stiffness.approach_max");
   t.steps = s.integer("stiffness.steps");
@@ -77,8 +68,9 @@ StiffnessSection StiffnessSection::parse(const KeyReader& s) {
   t.table_shift = s.real("stiffness.table_shift");
   t.table_leave_out = s.integer("stiffness.table_leave_out");
   t.table_leave_out_origin = {s.where("stiffness.table_leave_out")};
-  t.table_jackknife = s.text("stiffness.table_error") == "jackknife";
-  t.table_error_auto = s.text("stiffness.table_error") == "auto";
+  const TableError table_error = read_choice(s, "stiffness.table_error", kTableErrors);
+  t.table_jackknife = table_error == TableError::jackknife;
+  t.table_error_auto = table_error == TableError::automatic;
   t.table_error_origin = {s.where("stiffness.table_error")};
   if (t.table_leave_out >= 0) t.table_error_auto = false;  // a sub-table itself: no jackknife of its own
   if (t.table_jackknife && t.table_leave_out >= 0)

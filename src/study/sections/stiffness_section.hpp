@@ -17,6 +17,30 @@ namespace rollspec::study {
 
 class KeyReader;
 
+enum class StiffnessSurface { rough, smooth };
+enum class TableError { automatic, none, jackknife };
+
+inline constexpr ChoiceTable<StiffnessSurface, 2> kStiffnessSurfaces{{
+    {StiffnessSurface::rough, "rough", "[surface] realisations of the [texture] PSD"},
+    {StiffnessSurface::smooth, "smooth", "a smooth flat"},
+}};
+inline constexpr ChoiceTable<contact::BallShape, 2> kBallShapes{{
+    {contact::BallShape::Sphere, "sphere", "exact"},
+    {contact::BallShape::Paraboloid, "paraboloid", "Hertz's"},
+}};
+inline constexpr ChoiceTable<TableError, 3> kTableErrors{{
+    {TableError::automatic, "auto", "jackknife where the study's contact uses one random table, none otherwise"},
+    {TableError::none, "none",
+     "conditional on the table: the verdict then holds only for the surface the table was built on"},
+    {TableError::jackknife, "jackknife",
+     "the table's own sampling error, from the ensemble run again with each of the table's leave-one-out "
+     "sub-tables (realisations + 1 ensembles on the same random streams, more realisations per sub-table where "
+     "their own noise asks for them; kernels/spectral/README.md D-30, D-30f, D-31); needs a rough stiffness table "
+     "([contact] law = table or literal, surface = rough; over its surfaces), an equivalent-roughness table "
+     "([contact] filter = solver; over its [equivalent_roughness] strips) or a blocked-force table ([contact] "
+     "blocked_force = solver; over the Welch segments of F0 along its strip)"},
+}};
+
 struct StiffnessSection {
   bool rough = true;  // surface = rough (else a smooth flat)
   contact::BallShape shape = contact::BallShape::Sphere;

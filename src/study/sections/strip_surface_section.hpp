@@ -23,7 +23,8 @@ struct StripSurfaceSection {
   bool self_affine = false;         // [texture] source = self-affine
   double rolloff_wavelength = 0.0;  // [texture] rolloff_wavelength
   KeyOrigin ny_origin, spacing_origin;
-  // [texture] keys in table order with their canonical value texts.
+  // [texture] keys in table order with their canonical value texts, the file keys (table, profiles)
+  // left out: their contents enter the tables' input texts through the fingerprint.
   std::vector<std::pair<std::string, std::string>> texture_texts;
 
   static StripSurfaceSection of(const SurfaceSection& surface, const TextureSection& texture);

@@ -3,16 +3,14 @@
 #include <limits>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
 std::vector<KeySpec> SurfaceSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
-      choice_key("surface", "method",
-                 "isotropic surfaces: spectral (2D Fourier filter of the isotropic PSD) or seed (seed 001 Eq. 9-10: "
-                 "sums of line textures)",
-                 std::string("spectral"), {"spectral", "seed"}),
+      choice_key("surface", "method", "isotropic surfaces", SurfaceMethod::spectral, kSurfaceMethods),
       integer_key("surface", "nx", "grid points along x (even)", std::string("128"), 4, 1 << 14),
       integer_key("surface", "ny", "grid points along y (even)", std::string("128"), 4, 1 << 14),
       real_key("surface", "spacing", "m", "grid spacing dx = dy", std::string("1e-6"), 0.0, inf, false),
@@ -41,7 +39,7 @@ SurfaceSection SurfaceSection::parse(const KeyReader& s) {
   SurfaceSection t;
   if (!s.has("surface.method")) return t;
   t.present = true;
-  t.method = s.text("surface.method");
+  t.method = read_choice(s, "surface.method", kSurfaceMethods);
   t.nx = s.integer("surface.nx");
   t.ny = s.integer("surface.ny");
   if (s.has("surface.count")) t.count = s.integer("surface.count");

@@ -12,9 +12,16 @@ namespace rollspec::study {
 
 class KeyReader;
 
+enum class SurfaceMethod { spectral, seed };
+
+inline constexpr ChoiceTable<SurfaceMethod, 2> kSurfaceMethods{{
+    {SurfaceMethod::spectral, "spectral", "2D Fourier filter of the isotropic PSD"},
+    {SurfaceMethod::seed, "seed", "seed 001 Eq. 9-10: sums of line textures"},
+}};
+
 struct SurfaceSection {
   bool present = false;  // the scene has [surface]
-  std::string method;    // spectral or seed
+  SurfaceMethod method = SurfaceMethod::spectral;
   long long nx = 128, ny = 128, count = 0;
   double spacing = 1e-6, anisotropy = 1.0, correlation_x = 1e-5, correlation_y = 1e-5, sigma = 3e-7;
   // The seed-method keys at their documented default (not set by the study or --set), which take

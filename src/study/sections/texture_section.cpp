@@ -4,19 +4,20 @@
 #include <limits>
 
 #include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
 
 namespace rollspec::study {
 
 std::vector<KeySpec> TextureSection::keys() {
   const double inf = std::numeric_limits<double>::infinity();
   return {
-      choice_key("texture", "source", "where the roughness PSD comes from", std::string("self-affine"),
-                 {"self-affine", "table", "profiles", "iso8608", "iso3095"}),
+      choice_key("texture", "source", "where the roughness PSD comes from", TextureSource::self_affine,
+                 kTextureSources),
       path_key("texture", "table",
                "PSD table CSV: header wavenumber_rad_per_m or spatial_frequency_cycles_per_m, then psd_m3 or psd_um2_m",
                std::string("none")),
-      choice_key("texture", "table_extension", "PSD outside the table or measured band", std::string("error"),
-                 {"error", "constant", "power_law", "zero"}),
+      choice_key("texture", "table_extension", "PSD outside the table or measured band", texture::Extension::error,
+                 kTableExtensions),
       text_key("texture", "profiles",
                "measured scans, each used whole: comma-separated CSV files (position_m,height_m or height_um)",
                std::string("")),
@@ -29,15 +30,12 @@ std::vector<KeySpec> TextureSection::keys() {
       real_key("texture", "short_wavelength", "m",
                "short-wavelength cut-off (with source = profiles: cuts the measured PSD, only where set)",
                std::string("1e-5"), 0.0, inf, false),
-      choice_key("texture", "rms_kind", "what `rms` sets for the self-affine PSD", std::string("height"),
-                 {"height", "slope"}),
+      choice_key("texture", "rms_kind", "what `rms` sets for the self-affine PSD", texture::RmsTarget::height,
+                 kRmsKinds),
       real_key("texture", "rms", "m (height) or - (slope)", "rms height or rms slope of the self-affine PSD",
                std::string("1e-6"), 0.0, inf, false),
-      choice_key("texture", "road_class", "ISO 8608 road class", std::string("A"),
-                 {"A", "B", "C", "D", "E", "F", "G", "H"}),
-      choice_key("texture", "amplitudes",
-                 "harmonic amplitudes: rayleigh (Gaussian) or deterministic (the target PSD exactly)",
-                 std::string("rayleigh"), {"rayleigh", "deterministic"}),
+      choice_key("texture", "road_class", "ISO 8608 road class", 'A', kRoadClasses),
+      choice_key("texture", "amplitudes", "harmonic amplitudes", spectral::Amplitudes::rayleigh, kAmplitudes),
   };
 }
 
@@ -45,10 +43,11 @@ TextureSection TextureSection::parse(const KeyReader& s) {
   TextureSection t;
   if (!s.has("texture.source")) return t;
   t.present = true;
-  t.source = s.text("texture.source");
+  t.source = read_choice(s, "texture.source", kTextureSources);
   t.table = s.text("texture.table");
+  t.has_table = t.table != "none";
   t.table_path = s.path("texture.table");
-  t.table_extension = s.text("texture.table_extension");
+  t.table_extension = read_choice(s, "texture.table_extension", kTableExtensions);
   // Profiles are relative to the study file (not to a --set's directory).
   for (const auto& f : s.list("texture.profiles")) {
     namespace fs = std::filesystem;
@@ -59,10 +58,10 @@ TextureSection TextureSection::parse(const KeyReader& s) {
   t.long_wavelength = s.real("texture.long_wavelength");
   t.rolloff_wavelength = s.real("texture.rolloff_wavelength");
   t.short_wavelength = s.real("texture.short_wavelength");
-  t.rms_kind = s.text("texture.rms_kind");
+  t.rms_kind = read_choice(s, "texture.rms_kind", kRmsKinds);
   t.rms = s.real("texture.rms");
-  t.road_class = s.text("texture.road_class");
-  t.amplitudes = s.text("texture.amplitudes");
+  t.road_class = read_choice(s, "texture.road_class", kRoadClasses);
+  t.amplitudes = read_choice(s, "texture.amplitudes", kAmplitudes);
   t.source_origin = {s.where("texture.source")};
   t.table_extension_origin = {s.where("texture.table_extension")};
   t.profiles_origin = {s.where("texture.profiles")};
