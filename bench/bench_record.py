@@ -140,6 +140,31 @@ def check_target(path, own=lambda target: True):
     return target
 
 
+def record_script_parser(description, default_bin):
+    """The options every validation-record script shares: --bin (the rollspec binary) and --record (the
+    record to write); a script adds its own before calling record_script_arguments."""
+    import argparse
+    p = argparse.ArgumentParser(description=description)
+    p.add_argument("--bin", default=str(default_bin))
+    p.add_argument("--record", help="write the table as a record (bench/records/validation/*.json)")
+    return p
+
+
+def record_script_arguments(parser):
+    """(arguments, the binary's resolved path): --record checked as a record's target (73 if it is not one)
+    and --bin an executable file (66 if not), before any run, in one line each (script_main's rule)."""
+    a = parser.parse_args()
+    if a.record:
+        try:
+            check_target(a.record, own=is_record)
+        except RecordError as e:
+            fail(e, 73)
+    binary = str(Path(a.bin).resolve())
+    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+        fail(f"--bin {a.bin}: not an executable file; allowed: a rollspec binary", 66)
+    return a, binary
+
+
 def replace_text(path, text, own=lambda target: True):
     """Writes `text` to `path` through a temporary and a rename: the old file stays whole if the write
     fails; a symbolic link's target is replaced."""

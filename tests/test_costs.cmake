@@ -66,6 +66,55 @@ set(ROLLSPEC_TEST_COSTS
   cli_test_contact_filter 15
 )
 
+# The same under the sanitizers (preset asan-ubsan: its test pass, tests over 10 s), where the order differs:
+# the rolling scenes' tests are slow there and quick in the release build.
+set(ROLLSPEC_TEST_COSTS_SANITIZED
+  test_rolling 226
+  cli_test_rolling_pipe 176
+  cli_test_init_command 121
+  test_contact 116
+  cli_test_sensor_positions 108
+  cli_test_stress 102
+  cli_test_rolling_beam 100
+  cli_test_ball_on_beam 79
+  test_spectral 57
+  cli_test_stages 47
+  cli_test_fit 38
+  cli_test_profile_surfaces 33
+  test_contact_sides 27
+  cli_test_terminal 27
+  cli_test_solver_filter 27
+  cli_test_sweep 26
+  cli_test_compare_combined 26
+  cli_test_blocked_force 26
+  cli_test_data_safety 25
+  cli_test_path_law 24
+  cli_test_measured_profiles 24
+  cli_test_table_jackknife_segments 23
+  cli_test_table_jackknife_strips 22
+  cli_test_compare_recordings 22
+  test_texture 20
+  cli_test_notebook_access 20
+  cli_test_loss_of_contact_flags 20
+  cli_test_seed002_speed_trend 19
+  cli_test_contact_filter 19
+  cli_test_ensemble_reproducibility 17
+  cli_test_fit_whole 14
+  cli_test_measurement_files 13
+  test_beam_dynamics 12
+  cli_test_stiffness 12
+  cli_test_profiles_whole 12
+  cli_test_logger_import 12
+  cli_test_compare 12
+  cli_test_sweep_whole 11
+  cli_test_dataset_labels 11
+  cli_test_logger_corpus 10
+  cli_test_contact_bounce_growth 10
+)
+if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=address")
+  set(ROLLSPEC_TEST_COSTS ${ROLLSPEC_TEST_COSTS_SANITIZED})
+endif()
+
 # rollspec_test_cost(NAME): the test's COST from the list above, where it is listed.
 function(rollspec_test_cost name)
   list(FIND ROLLSPEC_TEST_COSTS ${name} at)

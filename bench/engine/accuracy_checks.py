@@ -14,8 +14,6 @@ usage: /usr/bin/python3 bench/engine/accuracy_checks.py [--bin build/werror/roll
 Runs in a scratch directory; --record writes the table as a record that the documentation's accuracy
 page renders (bench/bench_record.py). A few seconds.
 """
-import argparse
-import os
 import pathlib
 import re
 import subprocess
@@ -86,18 +84,8 @@ def hertz_stiffness(binary, work):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--bin", default=str(ROOT / "build" / "werror" / "rollspec"))
-    p.add_argument("--record", help="write the table as a record (bench/records/validation/*.json)")
-    a = p.parse_args()
-    if a.record:
-        try:
-            bench_record.check_target(a.record, own=bench_record.is_record)
-        except bench_record.RecordError as e:
-            fail(e, 73)
-    binary = str(pathlib.Path(a.bin).resolve())
-    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
-        fail(f"--bin {a.bin}: not an executable file; allowed: a rollspec binary", 66)
+    p = bench_record.record_script_parser(__doc__.split("\n")[0], ROOT / "build" / "werror" / "rollspec")
+    a, binary = bench_record.record_script_arguments(p)
     with tempfile.TemporaryDirectory(prefix="accuracy-") as tmp:
         work = pathlib.Path(tmp)
         rows = [welch_against_scipy(binary, work), oscillator_coverage(binary, work), hertz_stiffness(binary, work)]

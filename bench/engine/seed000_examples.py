@@ -11,8 +11,6 @@ tests/cli/test_rolling_beam.py (the disc in full; the cantilevers to 2 s on 20 e
 directory, and prints each figure beside what the seed states. --record writes the table as a record
 that the documentation's seeds page renders (bench/bench_record.py). About a minute on 2 cores.
 """
-import argparse
-import os
 import pathlib
 import subprocess
 import sys
@@ -108,18 +106,8 @@ def flying_beam(binary, work):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--bin", default=str(ROOT / "build" / "werror" / "rollspec"))
-    p.add_argument("--record", help="write the table as a record (bench/records/validation/*.json)")
-    a = p.parse_args()
-    if a.record:
-        try:
-            bench_record.check_target(a.record, own=bench_record.is_record)
-        except bench_record.RecordError as e:
-            fail(e, 73)
-    binary = str(pathlib.Path(a.bin).resolve())
-    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
-        fail(f"--bin {a.bin}: not an executable file; allowed: a rollspec binary", 66)
+    p = bench_record.record_script_parser(__doc__.split("\n")[0], ROOT / "build" / "werror" / "rollspec")
+    a, binary = bench_record.record_script_arguments(p)
     with tempfile.TemporaryDirectory(prefix="seed000-") as tmp:
         work = pathlib.Path(tmp)
         rows = [

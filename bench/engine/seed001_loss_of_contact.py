@@ -12,8 +12,6 @@ prints the share of time out of contact (/contact/loss_of_contact_share) of each
 table as a record that the documentation's seeds page renders (bench/bench_record.py). About 9 minutes
 on the shared 2 cores, most of it the two stiffness tables.
 """
-import argparse
-import os
 import pathlib
 import shutil
 import subprocess
@@ -60,20 +58,10 @@ def parse_seeds(text):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--bin", default=str(ROOT / "build" / "werror" / "rollspec"))
+    p = bench_record.record_script_parser(__doc__.split("\n")[0], ROOT / "build" / "werror" / "rollspec")
     p.add_argument("--seeds", default="1001,1002,1003,1004", help="study seeds (default 1001,1002,1003,1004)")
-    p.add_argument("--record", help="write the table as a record (bench/records/validation/*.json)")
-    a = p.parse_args()
+    a, binary = bench_record.record_script_arguments(p)
     seeds = parse_seeds(a.seeds)
-    if a.record:
-        try:
-            bench_record.check_target(a.record, own=bench_record.is_record)
-        except bench_record.RecordError as e:
-            fail(e, 73)
-    binary = str(pathlib.Path(a.bin).resolve())
-    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
-        fail(f"--bin {a.bin}: not an executable file; allowed: a rollspec binary", 66)
     work = pathlib.Path(tempfile.mkdtemp(prefix="seed001-loss-"))
     rows = []
     try:

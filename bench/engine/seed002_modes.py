@@ -10,8 +10,6 @@ scratch directory, gives the sensor mean's PSD; its peak within 15 % of each res
 peak (the rolling ball's mass loads the beam). --record writes the table as a record that the
 documentation's seeds page renders (bench/bench_record.py). A few seconds.
 """
-import argparse
-import os
 import pathlib
 import subprocess
 import sys
@@ -60,18 +58,8 @@ def peaks(binary):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--bin", default=str(ROOT / "build" / "werror" / "rollspec"))
-    p.add_argument("--record", help="write the table as a record (bench/records/validation/*.json)")
-    a = p.parse_args()
-    if a.record:
-        try:
-            bench_record.check_target(a.record, own=bench_record.is_record)
-        except bench_record.RecordError as e:
-            fail(e, 73)
-    binary = str(pathlib.Path(a.bin).resolve())
-    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
-        fail(f"--bin {a.bin}: not an executable file; allowed: a rollspec binary", 66)
+    p = bench_record.record_script_parser(__doc__.split("\n")[0], ROOT / "build" / "werror" / "rollspec")
+    a, binary = bench_record.record_script_arguments(p)
     f_modes = modes(binary)
     response, k = peaks(binary)
     rows = []
