@@ -29,7 +29,8 @@ TEST_CASE("circular section constants (solid and tube, Cowper shear coefficient)
   CHECK(thin.GA2 / (2e11 / 2.6 * thin.EA / 2e11) == doctest::Approx(2 * 1.3 / (4 + 0.9)).epsilon(1e-3));
 }
 
-TEST_CASE("cantilever free vibration: first frequency 1.8751^2 sqrt(EI/(rho A L^4)), energy conserved") {
+TEST_CASE("cantilever free vibration: first frequency 1.8751^2 sqrt(EI/(rho A L^4)), energy conserved" *
+          doctest::test_suite("long")) {
   const double pi = 3.14159265358979323846;
   const double L = 2.0;
   Model m;

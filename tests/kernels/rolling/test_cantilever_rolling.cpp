@@ -12,7 +12,8 @@
 using namespace rollspec::rolling;
 using Eigen::Vector3d;
 
-TEST_CASE("seed 000 example 4.2 (20 elements): rolling gives friction torsion, no rolling does not") {
+TEST_CASE("seed 000 example 4.2 (20 elements): rolling gives friction torsion, no rolling does not" *
+          doctest::test_suite("long")) {
   CantileverParams p;
   p.n_elements = 20;
   const double A = 0.25 * 3.14159265358979323846 * p.D * p.D;

@@ -12,7 +12,7 @@
 using namespace rollspec::rolling;
 using Eigen::Vector3d;
 
-TEST_CASE("seed 000 example 4.4 without friction: beam hits the wall, energy balance") {
+TEST_CASE("seed 000 example 4.4 without friction: beam hits the wall, energy balance" * doctest::test_suite("long")) {
   FlyingBeamParams p;
   p.mu = 0.0;
   const Model m = flying_beam_model(p);
