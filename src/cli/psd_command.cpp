@@ -20,6 +20,7 @@
 #include "src/io/number_text.hpp"
 #include "src/io/psd_csv.hpp"
 #include "src/io/signal_file.hpp"
+#include "src/study/sections/spectrum_section.hpp"
 #include "src/version.hpp"
 
 namespace rollspec::cli {
@@ -27,7 +28,7 @@ namespace rollspec::cli {
 namespace {
 const char* const kPsdUsage =
     "usage: rollspec psd SIGNAL [--fs HZ] [--column NAME]... [--unit UNIT] [--scale X] [--segment N]\n"
-    "                    [--overlap F] [--window hann|rect] [--time-column NAME|none] [--skip-rows N]\n"
+    "                    [--overlap F] [--window hann|rectangular] [--time-column NAME|none] [--skip-rows N]\n"
     "                    [--out FILE.csv] [--force] [--quiet]\n"
     "\n"
     "One-sided Welch PSD of each channel of a measured signal, in (m/s^2)^2/Hz: segments mean-detrended and\n"
@@ -76,6 +77,18 @@ const char* const kPsdUsage =
     "integer PCM of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).\n"
     "Each choice made from the file (encoding, delimiter, decimal comma, header and units row, time column,\n"
     "sample rate, each channel's unit) is said in one line on stderr (not with --quiet).";
+// --window: the spellings of the study key spectrum.window (one table), and `rect`, the short form psd took
+// before and its CSV metadata still writes.
+spectral::Window welch_window(const std::string& text) {
+  if (text == "rect") return spectral::Window::rectangular;
+  std::string allowed;
+  for (const auto& c : study::kWelchWindows) {
+    if (text == c.spelling) return c.value;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(c.spelling);
+  }
+  throw usage_error("--window " + text + ": allowed: " + allowed + " (or rect)");
+}
+
 }  // namespace
 
 int psd_command(const Args& args) {
@@ -99,8 +112,9 @@ int psd_command(const Args& args) {
       "quiet,q", "do not say the choices made from the file")(
       "segment", po::value(&segment)->default_value(1024, "1024"), "segment length (samples)")(
       "overlap", po::value(&overlap)->default_value(0.5, "0.5"), "overlap as a fraction of the segment, in [0, 0.95]")(
-      "window", po::value(&window)->default_value("hann", "hann"), "hann or rect")("out,o", po::value(&out),
-                                                                                   "output CSV")(
+      "window", po::value(&window)->default_value("hann", "hann"),
+      "hann or rectangular (rect), the spellings of the study key spectrum.window")("out,o", po::value(&out),
+                                                                                    "output CSV")(
       "force", "replace an existing --out (and its metadata file) even if psd did not write it");
   po::positional_options_description pos;
   pos.add("signal", 1);
@@ -117,7 +131,7 @@ int psd_command(const Args& args) {
   if (segment < 4) throw usage_error("--segment " + std::to_string(segment) + ": allowed: a whole number >= 4");
   if (!(overlap >= 0.0 && overlap <= 0.95))
     throw usage_error("--overlap " + std::to_string(overlap) + ": allowed: a fraction in [0, 0.95]");
-  if (window != "hann" && window != "rect") throw usage_error("--window " + window + ": allowed: hann or rect");
+  const spectral::Window window_choice = welch_window(window);
 
   if (!out.empty()) {  // an output that is the input is refused before the input is read
     std::error_code ec;
@@ -135,7 +149,7 @@ int psd_command(const Args& args) {
   cfg.sample_rate = t.sample_rate;
   cfg.segment = static_cast<std::size_t>(segment);
   cfg.overlap = static_cast<std::size_t>(std::floor(overlap * static_cast<double>(segment)));
-  cfg.window = window == "hann" ? spectral::Window::hann : spectral::Window::rectangular;
+  cfg.window = window_choice;
   const spectral::WelchPlan plan(cfg);
   spectral::WelchWorkspace ws(cfg.segment);
   std::vector<std::vector<double>> psd(t.channels.size(), std::vector<double>(plan.n_freq()));
@@ -177,7 +191,7 @@ int psd_command(const Args& args) {
   m.rate_source = t.rate_source;
   m.segment = cfg.segment;
   m.overlap = cfg.overlap;
-  m.window = window;
+  m.window = window_choice == spectral::Window::hann ? "hann" : "rect";  // the metadata's spelling (psd_csv.hpp)
   m.detrend = "mean";
   m.samples = t.samples();
   m.segments = plan.segments(t.samples());

@@ -9,6 +9,12 @@ import numpy as np
 import pytest
 
 BIN = os.environ.get("ROLLSPEC_BIN", "rollspec")
+
+
+def pytest_configure(config):
+    # A file with tests marked long gets two CTest entries, `-m "not long"` and `-m long` (tests/cli/CMakeLists.txt);
+    # the sanitizer pass skips the second. An unknown marker would only warn, so the name is registered here.
+    config.addinivalue_line("markers", "long: minutes under the sanitizers (a long simulation or ensemble)")
 SOURCE = pathlib.Path(os.environ.get("ROLLSPEC_SOURCE", pathlib.Path(__file__).resolve().parents[2]))
 
 # Exit codes from <sysexits.h>.

@@ -71,6 +71,7 @@ def test_default_integrator_matches_dopri5_in_band_levels(tmp_path):
     assert np.abs(a - b).max() < 0.1, dict(zip(nominal, np.round(a - b, 3)))
 
 
+@pytest.mark.long  # minutes under the sanitizers: their pass skips it (tests/cli/CMakeLists.txt)
 def test_default_settings_within_0_02_db_of_the_converged_run(tmp_path):
     """Issue 18 goal 2 (kernels/beam B40-B40a): the rig's own settings (4 substeps, the line at one
     sample per step, roughness band-limited to f_s/2 and drawn compensated for the patch filter's

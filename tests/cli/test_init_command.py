@@ -64,7 +64,8 @@ def run_study(scene, study, tmp_path, *edits):
     return out
 
 
-@pytest.mark.parametrize("scene", SCENES)
+# The rolling pipe's template runs for minutes under the sanitizers: long, which their pass skips.
+@pytest.mark.parametrize("scene", [pytest.param(s, marks=pytest.mark.long) if s == "rolling-pipe" else s for s in SCENES])
 def test_template_loads_plans_and_runs(scene, tmp_path):
     study = template(scene, tmp_path)
     assert study.read_text().startswith("# rollspec-study-template")

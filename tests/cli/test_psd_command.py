@@ -21,7 +21,8 @@ def test_matches_scipy_welch_hann_and_rect(tmp_path):
     x[:, 1] += np.sin(2 * np.pi * 37.0 * np.arange(20000) / 1000.0)
     sig = tmp_path / "signal.csv"
     write_signal(sig, x)
-    for window, scipy_window, overlap in (("hann", "hann", 0.5), ("rect", "boxcar", 0.25)):
+    # rectangular: the study key spectrum.window's spelling; rect: its short form
+    for window, scipy_window, overlap in (("hann", "hann", 0.5), ("rectangular", "boxcar", 0.25), ("rect", "boxcar", 0.25)):
         out = tmp_path / f"psd_{window}.csv"
         r = run(["psd", sig, "--fs", 1000, "--segment", 512, "--overlap", overlap, "--window", window, "--out", out])
         assert r.returncode == 0, r.stderr
@@ -42,6 +43,8 @@ def test_bad_inputs(tmp_path):
     assert r.returncode == EX_DATAERR and "bad.csv:3" in r.stderr and "'x'" in r.stderr
     r = run(["psd", bad, "--fs", -1])
     assert r.returncode == EX_USAGE and "--fs" in r.stderr
+    r = run(["psd", bad, "--fs", 100, "--window", "hamming"])
+    assert r.returncode == EX_USAGE and "--window hamming: allowed: hann, rectangular (or rect)" in r.stderr
     short = tmp_path / "short.csv"
     short.write_text("a\n1\n2\n3\n4\n5\n")
     r = run(["psd", short, "--fs", 10, "--segment", 8])

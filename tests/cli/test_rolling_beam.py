@@ -2,6 +2,7 @@
 values, and example 4.2 (cantilever on a plane) with and without the rolling correction."""
 import h5py
 import numpy as np
+import pytest
 
 from conftest import SOURCE, run
 
@@ -107,6 +108,7 @@ def impacts(f):
     return int(((active[1:] == 1) & (active[:-1] == 0)).sum())
 
 
+@pytest.mark.long  # minutes under the sanitizers: their pass skips it (tests/cli/CMakeLists.txt)
 def test_puck_between_walls_energy(tmp_path):
     """Seed 000 example 4.3 (dt = 1e-4): frictionless, the energy-consistent option keeps the energy to
     1e-8 over at least 10 impacts (measured 1.5e-14); Newmark loses at most 0.2 % per impact; with
@@ -130,6 +132,7 @@ def test_puck_between_walls_energy(tmp_path):
         assert w[-1] < 0.5 * w[after][0]
 
 
+@pytest.mark.long  # minutes under the sanitizers: their pass skips it (tests/cli/CMakeLists.txt)
 def test_flying_beam_runs_and_balances_energy(tmp_path):
     """Seed 000 example 4.4 without friction for the first 2.5 s (the wall impact at ~1.9 s): energy
     balance within 1e-3 of the largest kinetic energy (kernel test: 1.3e-5 of it with its own tolerances)."""

@@ -3,6 +3,7 @@ rough surfaces. Ensemble bits independent of thread count and chunking; the ense
 inside its own chi-square interval when the realisation count doubles; bad studies refused."""
 import h5py
 import numpy as np
+import pytest
 
 from conftest import EX_CONFIG, SMALL_PIPE, SOURCE, assert_bitwise_equal, run
 
@@ -30,6 +31,7 @@ def test_one_and_two_threads_give_identical_bits(tmp_path):
         assert f["/contact/curvature_ratio"][0] < 1
 
 
+@pytest.mark.long  # minutes under the sanitizers: their pass skips it (tests/cli/CMakeLists.txt)
 def test_an_independent_larger_ensemble_falls_inside_the_interval(tmp_path):
     # Two ensembles with different seeds share no realisation. The K = 32 mean differs from the
     # K = 16 mean by a scatter of variance s^2/16 + s^2/32 = 1.5 s^2/16, so it falls inside the

@@ -64,6 +64,7 @@ def test_xarray_shows_the_positions_beside_the_names(files):
             assert ds["sensor_position"].dims == ("sensor",)
 
 
+@pytest.mark.long  # minutes under the sanitizers: their pass skips it (tests/cli/CMakeLists.txt)
 def test_rolling_pipe_positions_are_the_places_of_the_sensor_nodes(tmp_path):
     """A fraction of the length is recorded at its nearest node: the coordinate is that node's place."""
     r = study_result(SOURCE / "studies" / "rolling-pipe.ini", tmp_path, "pipe", "study.realisations=2",

@@ -74,7 +74,7 @@ def test_roughness_from_none_to_bouncing(tmp_path):
     assert finite_result(out) > 0.5
 
 
-@pytest.mark.parametrize("modes", ["1", "200"])
+@pytest.mark.parametrize("modes", ["1", pytest.param("200", marks=pytest.mark.long)])  # 200: long (minutes under the sanitizers)
 def test_one_to_two_hundred_modes(tmp_path, modes):
     # Expectation: finite spectra; the exact modal step is exact for any mode frequency.
     r, out = run_rig(tmp_path, f"beam.modes={modes}")

@@ -166,7 +166,7 @@ TEST_CASE("PK core, periodic mean pressure (solve_load): bit for bit the referen
   }
 }
 
-TEST_CASE("PK core, imposed total load (solve_at_force): bit for bit the reference") {
+TEST_CASE("PK core, imposed total load (solve_at_force): bit for bit the reference" * doctest::test_suite("long")) {
   const Hertz h;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const bool rough : {false, true})
