@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The accuracy page's cheap checks through the command, measured and recorded.
+"""The accuracy and contact-filter pages' cheap checks, through the command and the kernels' doctests.
 
 usage: /usr/bin/python3 bench/engine/accuracy_checks.py [--bin build/werror/rollspec] [--checks accuracy]
            [--record bench/records/validation/accuracy-checks.json]
@@ -21,19 +21,21 @@ usage: /usr/bin/python3 bench/engine/accuracy_checks.py [--bin build/werror/roll
     quasi-stationary approximation holds (0.05 m/s, loss factor 0.05, K = 100, as the same test file):
     the share of bins 100 Hz–5 kHz whose 95 % interval holds the ensemble mean;
   - the kernels' own checks, read from what their doctests print (the doctest executables of the
-    build next to --bin: tests/kernels/*/test_*): Welch-free texture periodogram, spectral surfaces,
+    build next to --bin: tests/kernels/*/test_*): the line texture's periodogram, spectral surfaces,
     Hertz on the half-space grid, DC-FFT, clamped–clamped modes, static deflection, the moving force
-    against Frýba's series, the rolling tube and disc, the rolling model's tangents.
+    against Frýba's series (undamped) and the damped closed form, the rolling tube and disc, the rolling
+    model's tangent.
 
---checks contact-filter (the contact-filter page; its kernels' doctests alone, about 3 minutes, most of
-it the isotropic equivalent-roughness test): the equivalent roughness (kernels/contact ER-1…ER-7) against
-its cold whole-strip reference, against sin(ka)/(ka) on a uniform corrugation and against G_eq on
-isotropic surfaces; the path table (kernels/beam B41–B46) against Hertz and against direct solves; a
-narrow spectral strip's variance against a square surface's (kernels/texture Eq. 26a).
+--checks contact-filter (the contact-filter page; its kernels' doctests alone, about 5 minutes on 2
+shared cores, most of it the isotropic equivalent-roughness test): the equivalent roughness
+(kernels/contact ER-1…ER-7) against its cold whole-strip reference, against sin(ka)/(ka) on a uniform
+corrugation and against G_eq on isotropic surfaces; the path table (kernels/beam B41–B46) against
+Hertz and against direct solves; a narrow spectral strip's variance against a square surface's
+(kernels/texture Eq. 26a).
 
-Runs in a scratch directory; --record writes the table as a record that the documentation's accuracy
-page renders (bench/bench_record.py). About 3 minutes on 2 shared cores (most of it the linearised
-model's 100 slow rolls and the Hertz stiffness doctest).
+Runs in a scratch directory; --record writes the table as a record that the documentation's page
+renders (bench/bench_record.py). --checks accuracy: about 3 minutes on 2 shared cores (most of it the
+linearised model's 100 slow rolls and the Hertz stiffness doctest).
 """
 import pathlib
 import re
@@ -175,7 +177,8 @@ ACCURACY_DOCTESTS = [
      "clamped-clamped eigenvalues*", r"400-digit roots (\S+)",
      lambda m: (f"{_worst(float(x) for x in m):.1e} relative" if _worst(float(x) for x in m) else
                 "0: every root the double nearest the 400-digit one")),
-    ("clamped–clamped eigenfunctions, modes 1–200: orthogonality |∫φ_m φ_n / l − δ_mn|", "beam/test_beam_modes",
+    ("clamped–clamped eigenfunctions, modes 1–200: orthogonality |∫φ_m φ_n / l − δ_mn|",
+     "beam/test_beam_modes",
      "eigenfunctions of modes 1-200 are finite*", r"CC max \|int phi_m phi_n / l - delta_mn\|, 200 modes: (\S+)",
      lambda m: f"{_worst(float(x) for x in m):.1e}"),
     ("static deflection under the ball, 16 modes + static correction, against P a³b³/(3EIL³) (a = 0.1, 0.3, 0.5 l)",
@@ -195,7 +198,8 @@ ACCURACY_DOCTESTS = [
      "solution of its own M, C, K", "rolling/test_rolling", "rolling pipe over a sinusoidal floor*",
      r"f0 = \s*(\S+) Hz, \S+ node: .*? \(discrete frequency domain\) (\S+); continuous frequency domain \S+ \((\S+)\)",
      lambda m: f"{_worst(float(x[1]) for x in m):.1e} (trapezoidal rule, exact); "
-               f"{_worst(float(x[2]) for x in m if float(x[0]) < 1000):.1e} against the continuous solution below 1 kHz"),
+               f"{_worst(float(x[2]) for x in m if float(x[0]) < 1000):.1e} against the continuous solution "
+               "below 1 kHz"),
     ("disc rolling with friction over a bump (R-63): centre against the offset curve, r|ω|/|v| − 1, slip steps",
      "rolling/test_rolling", "rolling friction on a height field (R-63): a disc*",
      r"centre vs offset curve \S+ m \((\S+) of H\), max \|r w/v - 1\| (\S+), slip steps (\d+)",
@@ -213,7 +217,8 @@ CONTACT_FILTER_DOCTESTS = [
                f"{_worst(float(x[1]) for x in m if x[1]):.1e} relative"),
     ("equivalent roughness of a corrugation uniform across the path (amplitude 10⁻³ δ_H, 32 cells per radius, "
      "ball on a cell centre): h_eq/h against sin(ka)/(ka)", "contact/test_contact",
-     "equivalent roughness: uniform corrugation*", r"ka = (\S+): h_eq/h = \S+, sin\(ka\)/\(ka\) = \S+, relative error (\S+)",
+     "equivalent roughness: uniform corrugation*",
+     r"ka = (\S+): h_eq/h = \S+, sin\(ka\)/\(ka\) = \S+, relative error (\S+)",
      lambda m: f"within {100 * _worst(float(x[1]) for x in m):.2g} % for ka = {m[0][0]}–{m[-1][0]} "
                f"({100 * abs(float(m[-1][1])):.2g} % at ka = {m[-1][0]})"),
     ("equivalent roughness of isotropic surfaces (8 surfaces × 3 paths): PSD of h_eq against G_eq (Eq. 38), "

@@ -12,7 +12,8 @@ with `compare --measured-averages M --format json`; the rejection rate at 0.05 a
 fraction of bands inside the per-band prediction intervals (D-22) are printed per case.
 --size-at compares the correct model's measurements with the model at fewer realisations too (the first
 K1, K2 of the study's own seed). --record writes the table as a record that the documentation's accuracy
-page renders (bench/bench_record.py). About 10 minutes on 2 shared cores with the defaults.
+page renders (bench/bench_record.py). With the defaults and --size-at 50,25: 23 minutes wall on 2 cores that
+other work kept busy (2026-11-29).
 """
 import os
 import argparse
