@@ -28,7 +28,8 @@ source_suffix = {".md": "markdown", ".rst": "restructuredtext"}  # .rst: the gal
 myst_enable_extensions = ["colon_fence", "dollarmath"]
 myst_heading_anchors = 3
 exclude_patterns = ["_repo", "_repo/**", "build.sh", "**/README.md", "examples/**", "validation/generated/goals-table.md",
-                    "validation/generated/validation-records.md", "validation/generated/records/**"]
+                    "validation/generated/validation-records.md", "validation/generated/records/**",
+                    "howto/generated/**"]
 html_theme = "furo"
 html_title = "rollspec"
 # Wide tables and long usage lines wrap inside the page's column instead of being cut off (1280 px).

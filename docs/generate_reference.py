@@ -19,6 +19,8 @@ reference cannot drift from the program:
                                      page's include of a record that does not exist renders a warning
                                      that says so, and a stale record (bench/record_versions.py) its
                                      command instead of its figures
+  howto/generated/profiles-note.md   the note `rollspec texture` prints for the Dektak scan shipped in
+                                     studies/data/measured-profiles (the profiles how-to quotes it)
 
   /usr/bin/python3 docs/generate_reference.py --bin build/werror/rollspec --out DOCS_SOURCE_DIR
 """
@@ -43,7 +45,8 @@ def fail(message, code):
     sys.exit(code)
 
 
-def run(argv, **kw):
+def run(argv, stderr=False, **kw):
+    """The command's stdout (stderr too where `stderr`: the pair); one line and a stop if it fails."""
     try:
         r = subprocess.run(argv, capture_output=True, text=True, errors="replace", timeout=300, **kw)
     except OSError as e:
@@ -53,7 +56,7 @@ def run(argv, **kw):
     if r.returncode != 0:
         last = (r.stderr.strip().splitlines() or [""])[-1]
         fail(f"{' '.join(map(str, argv))} exited {r.returncode}: {last}", EX_SOFTWARE)
-    return r.stdout
+    return (r.stdout, r.stderr) if stderr else r.stdout
 
 
 def commands(binary):
@@ -306,6 +309,25 @@ def write_record_pages(records, docs, out):
         (out / f"{name}.md").write_text(text)
 
 
+def write_profiles_note(binary, out):
+    """The note `rollspec texture` prints for a measured scan, quoted by the profiles how-to: made by this
+    build from the shipped Dektak scan, so its figures are the program's own, never typed."""
+    import textwrap
+    scan = REPO / "studies" / "data" / "measured-profiles" / "dektak-1.csv"
+    with tempfile.TemporaryDirectory() as tmp:
+        study = Path(tmp) / "dektak.ini"
+        study.write_text("[study]\nscene = texture\nrealisations = 1\nseed = 1\n[texture]\nsource = profiles\n"
+                         f"profiles = {scan}\ntable_extension = zero\n[lines]\ncount = 1\nlength = 1.5e-3\n"
+                         "spacing = 1.5625e-7\n[surface]\ncount = 0\n")
+        _, err = run([binary, "texture", str(study), "--out", str(Path(tmp) / "dektak.h5")], stderr=True, cwd=tmp)
+    note = next((line for line in err.splitlines() if "note: [texture] profiles:" in line), None)
+    if note is None:
+        fail(f"{binary} texture on {scan.name}: printed no 'note: [texture] profiles:' line", EX_SOFTWARE)
+    note = note.split("rollspec texture: ", 1)[-1]
+    text = textwrap.fill(note, 104, subsequent_indent="  ", break_on_hyphens=False, break_long_words=False)
+    (out / "profiles-note.md").write_text("```text\n" + text + "\n```\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", default=os.environ.get("ROLLSPEC_BIN", str(REPO / "build" / "werror" / "rollspec")))
@@ -329,6 +351,9 @@ def main():
     write_keys(binary, ref)
     write_exit_codes(ref)
     write_schema(binary, ref)
+    howto = Path(a.out) / "howto" / "generated"
+    howto.mkdir(parents=True, exist_ok=True)
+    write_profiles_note(binary, howto)
     write_goals(val)
     write_work_precision(val)
 
