@@ -69,14 +69,14 @@ set(ROLLSPEC_TEST_COSTS
 # The same under the sanitizers (preset asan-ubsan: its test pass, tests over 10 s), where the order differs:
 # the rolling scenes' tests are slow there and quick in the release build.
 set(ROLLSPEC_TEST_COSTS_SANITIZED
-  test_rolling 226
-  cli_test_rolling_pipe 176
-  cli_test_init_command 121
-  test_contact 116
-  cli_test_sensor_positions 108
-  cli_test_stress 102
-  cli_test_rolling_beam 100
-  cli_test_ball_on_beam 79
+  test_rolling 67
+  cli_test_rolling_pipe 28
+  cli_test_init_command 35
+  test_contact 58
+  cli_test_sensor_positions 10
+  cli_test_stress 61
+  cli_test_rolling_beam 21
+  cli_test_ball_on_beam 57
   test_spectral 57
   cli_test_stages 47
   cli_test_fit 38
