@@ -4,10 +4,8 @@
 #include "kernels/beam/modal_beam.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
-#include "src/scenes/ball_on_beam.hpp"
 #include "src/cli/run_phases.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/study_section.hpp"
 
 namespace rollspec::cli {
@@ -25,10 +23,13 @@ int modes_command(const Args& args) {
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   const study::Study s = resolve_study(study);
-  if (s.scene() != "ball-on-beam")
-    study::StudySection::parse(s).scene_origin.refuse("rollspec modes needs a ball-on-beam study");
-  const beam::ModalBeam b = scenes::study_modal_beam(s);
-  const bool clamped = study::ModalBeamSection::parse(s).properties.support == beam::Support::clamped_clamped;
+  const auto has_beam = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.modal_beam); };
+  const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
+  if (!has_beam(scene))
+    study::StudySection::parse(s).scene_origin.refuse("rollspec modes needs a " + scenes::scenes_with(has_beam) +
+                                                      " study");
+  const beam::ModalBeam b = scene.modal_beam(s);
+  const bool clamped = b.properties().support == beam::Support::clamped_clamped;
   std::printf("# %s beam, span %.6g m, effective length %.6g m, EI %.6g N m^2, rho A %.6g kg/m\n",
               clamped ? "clamped-clamped" : "simply-supported", b.properties().length, b.effective_length(),
               b.bending_stiffness(), b.mass_per_length());

@@ -87,7 +87,7 @@ int plan_command(const Args& args) {
   const auto stages = scene->plan();
   for (const auto& p : stages)
     std::printf("%-16s %-8s %s\n", p.stage.c_str(), scenes::status_name(p.status), p.reason.c_str());
-  const bool tables_missing = any_missing_table(s, stages);
+  const bool tables_missing = any_missing_table(stages);
   // The table's own error (D-30, D-30f): the ensemble once with the table and once per sub-table.
   const bool jackknife = ensemble_scene && ensemble_scene->estimates_table_error();
   const scenes::TableJackknifePlan jk = jackknife ? ensemble_scene->table_jackknife() : scenes::TableJackknifePlan{};

@@ -4,25 +4,14 @@
 #include <limits>
 
 #include "src/stiffness/equivalent_roughness_table.hpp"
-#include "src/study/sections/contact_section.hpp"
 
 namespace rollspec::cli {
 
-bool table_stage(const study::Study& s, const scenes::StagePlan& stage) {
-  if (stage.stage == "stiffness_table" || stage.stage == "equivalent_roughness" || stage.stage == "path_table")
-    return true;
-  // Only ball-on-beam has a blocked-force stage; it is a table with [contact] blocked_force = solver.
-  return stage.stage == "blocked_force" && s.scene() == "ball-on-beam" &&
-         study::ContactSection::parse(s).blocked_force == study::BlockedForceSource::solver;
-}
+bool missing_table(const scenes::StagePlan& stage) { return stage.status == scenes::StageStatus::run && stage.table; }
 
-bool missing_table(const study::Study& s, const scenes::StagePlan& stage) {
-  return stage.status == scenes::StageStatus::run && table_stage(s, stage);
-}
-
-bool any_missing_table(const study::Study& s, const std::vector<scenes::StagePlan>& stages) {
+bool any_missing_table(const std::vector<scenes::StagePlan>& stages) {
   for (const auto& p : stages)
-    if (missing_table(s, p)) return true;
+    if (missing_table(p)) return true;
   return false;
 }
 

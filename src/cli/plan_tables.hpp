@@ -6,17 +6,14 @@
 #include <vector>
 
 #include "src/scenes/scene.hpp"
-#include "src/study/study.hpp"
 
 namespace rollspec::cli {
 
-// A stage of `s` that is a cached table: the stiffness table, or a table of the contact solver along
-// the ball's path (a blocked-force table only with [contact] blocked_force = solver).
-bool table_stage(const study::Study& s, const scenes::StagePlan& stage);
-// A table stage that is not cached (status run). --probe never runs realisation 0 while one is
+// A table stage (StagePlan::table: the stiffness table, or a table of the contact solver along the
+// ball's path) that is not cached (status run). --probe never runs realisation 0 while one is
 // missing: preparing the scene would build it.
-bool missing_table(const study::Study& s, const scenes::StagePlan& stage);
-bool any_missing_table(const study::Study& s, const std::vector<scenes::StagePlan>& stages);
+bool missing_table(const scenes::StagePlan& stage);
+bool any_missing_table(const std::vector<scenes::StagePlan>& stages);
 
 // The longest a few solves of a missing table may take, by the model, for `plan` to time them (and
 // estimate the table from them) without --probe; --probe times them whatever they take.

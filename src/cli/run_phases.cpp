@@ -101,7 +101,7 @@ ResolvedRun resolve_run(const RunRequest& q) {
   run.scene = &scenes::find_scene(s.scene());
   if (run.scene->kind == scenes::SceneKind::stages_only)
     study::StudySection::parse(s).scene_origin.refuse("has no ensemble to run; use rollspec " +
-                                                      std::string(s.scene() == "texture" ? "texture " : "stiffness ") +
+                                                      std::string(scenes::command_name(run.scene->command)) + " " +
                                                       s.file());
   if (run.scene->kind == scenes::SceneKind::single_run && (q.resume || q.restart))
     throw usage_error("study " + s.file() + " (scene " + s.scene() +

@@ -12,7 +12,6 @@
 #include "src/error.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/scenes/stiffness_scene.hpp"
 #include "src/cli/run_phases.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/study/sections/study_section.hpp"
@@ -43,10 +42,13 @@ int stiffness_command(const Args& args) {
   if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
   if (!out.empty()) study.sets.push_back("stiffness.table=" + std::filesystem::absolute(out).string());
   const study::Study s = resolve_study(study);
-  if (s.scene() != "stiffness" && s.scene() != "ball-on-beam")
-    study::StudySection::parse(s).scene_origin.refuse("rollspec stiffness needs a stiffness or ball-on-beam study");
+  const auto has_table = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.contact_pair); };
+  const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
+  if (!has_table(scene))
+    study::StudySection::parse(s).scene_origin.refuse("rollspec stiffness needs a " + scenes::scenes_with(has_table) +
+                                                      " study");
   check_resources(s, vm.count("force") > 0);
-  const auto pair = scenes::study_contact_pair(s);
+  const auto pair = scene.contact_pair(s);
   std::string status;
   const auto t = stiffness::resolve_table(stiffness::TableStudy::parse(s), pair.radius, pair.effective_modulus,
                                           vm.count("rebuild") > 0, vm.count("quiet") > 0, status);

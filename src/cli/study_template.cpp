@@ -72,7 +72,7 @@ std::string header(const std::string& scene) {
            "other key, commented out at its default: remove the leading '# ' to change one.",
            "# ")
     << "#\n";
-  const std::string run = scene == "texture" || scene == "stiffness" ? scene : std::string("run");
+  const std::string run = scenes::command_name(scenes::find_scene(scene).command);
   const std::vector<std::pair<std::string, std::string>> commands = {
       {"rollspec keys " + scene, "every key: unit, allowed values, default"},
       {"rollspec plan FILE", "check the study, see what would run"},

@@ -1,17 +1,16 @@
 #pragma once
 // The keys a new study of each scene sets first (rollspec init writes them uncommented, at the
-// top), with the value the template gives them. Unit, meaning, range and default come from the
-// scene's key table; only the choice of keys and a few starting values live here.
-#include <optional>
+// top), with the value the template gives them: [study]'s, then the scene's registry row's
+// `first_keys`. Unit, meaning, range and default come from the scene's key table; only the choice
+// of keys and a few starting values live in the row.
 #include <string>
 #include <vector>
 
+#include "src/scenes/scene.hpp"
+
 namespace rollspec::cli {
 
-struct FirstKey {
-  std::string full_name;             // "section.key"
-  std::optional<std::string> value;  // nullopt: the table's default
-};
+using FirstKey = scenes::FirstKey;
 
 // The first keys of `scene` in the order the template lists them ([study] keys first).
 std::vector<FirstKey> first_keys(const std::string& scene);

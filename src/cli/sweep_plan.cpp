@@ -19,7 +19,7 @@ namespace {
 double probe_point(const study::Study& s, scenes::EnsembleScene* ensemble_scene,
                    const std::vector<scenes::StagePlan>& stages) {
   if (!ensemble_scene) return -1;
-  if (any_missing_table(s, stages)) return -1;
+  if (any_missing_table(stages)) return -1;
   ensemble_scene->prepare(true, false);
   std::vector<double> values(ensemble_scene->values_per_realisation());
   const auto start = std::chrono::steady_clock::now();
@@ -58,7 +58,7 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
     }
     if (i == 0) first = stages;
     for (const auto& p : stages) {
-      if (!table_stage(s, p) || p.status == scenes::StageStatus::skipped) continue;
+      if (!p.table || p.status == scenes::StageStatus::skipped) continue;
       const std::string what = p.stage + ": " + p.reason;
       auto it = std::find_if(tables.begin(), tables.end(), [&](const auto& t) { return t.first == what; });
       if (it == tables.end()) it = tables.insert(tables.end(), {what, ""});
@@ -70,7 +70,7 @@ int plan_sweep(const SweepStudy& sweep, bool probe) {
     // all seen at earlier points is not probed again.
     std::vector<std::string> missing;
     for (const auto& p : stages)
-      if (missing_table(s, p)) missing.push_back(p.stage + ": " + p.reason);
+      if (missing_table(p)) missing.push_back(p.stage + ": " + p.reason);
     const auto seen = [&](const std::string& what) {
       return std::find(probed_tables.begin(), probed_tables.end(), what) != probed_tables.end();
     };

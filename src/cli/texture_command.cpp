@@ -127,9 +127,10 @@ int texture_command(const Args& args) {
 
   const study::Study s = resolve_study(study);
   const auto study_keys = study::StudySection::parse(s);
-  if (study_keys.scene != "texture")
-    study_keys.scene_origin.refuse("rollspec texture needs a study of scene texture (this one is " + study_keys.scene +
-                                   ")");
+  const auto texture_scene = [](const scenes::SceneInfo& i) { return i.command == scenes::SceneCommand::texture; };
+  if (!texture_scene(scenes::find_scene(study_keys.scene)))
+    study_keys.scene_origin.refuse("rollspec texture needs a study of scene " + scenes::scenes_with(texture_scene) +
+                                   " (this one is " + study_keys.scene + ")");
   if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
   if (count >= 0) {  // --count overrides both counts: estimate with it
     study.sets.push_back("lines.count=" + std::to_string(count));

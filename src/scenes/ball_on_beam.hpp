@@ -23,5 +23,9 @@ ResultShape ball_on_beam_result_shape(const study::KeyReader& s);
 
 // The modal beam a study describes (for `rollspec modes`).
 beam::ModalBeam study_modal_beam(const study::KeyReader& s);
+// The ball on the beam (for `rollspec stiffness`: the table the scene's table law uses).
+BallContact ball_on_beam_contact_pair(const study::KeyReader& s);
+// rollspec init's first keys (scene.hpp FirstKey).
+std::vector<FirstKey> ball_on_beam_first_keys();
 
 }  // namespace rollspec::scenes

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "src/scenes/scene.hpp"
 #include "src/study/key_reader.hpp"
 
 namespace rollspec::scenes {
@@ -72,12 +73,7 @@ void refuse_failed_relations(const study::KeyReader& s, const std::vector<Dimens
 }
 
 void check_dimensions(const study::KeyReader& s) {
-  const std::string& scene = s.scene();
-  if (scene == "ball-on-beam") refuse_failed_relations(s, ball_on_beam_relations(s));
-  if (scene == "stiffness") refuse_failed_relations(s, stiffness_relations(s));
-  if (scene == "texture") refuse_failed_relations(s, texture_relations(s));
-  if (scene == "rolling-pipe") refuse_failed_relations(s, rolling_pipe_relations(s));
-  if (scene == "rolling-beam") refuse_failed_relations(s, rolling_beam_relations(s));
+  if (const auto& relations = find_scene(s.scene()).relations) refuse_failed_relations(s, relations(s));
 }
 
 }  // namespace rollspec::scenes

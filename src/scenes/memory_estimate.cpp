@@ -15,6 +15,7 @@
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/io/number_text.hpp"
 #include "src/scenes/ball_on_beam_sections.hpp"
+#include "src/scenes/scene.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/lines_section.hpp"
 #include "src/study/sections/random_oscillator_sections.hpp"
@@ -30,11 +31,7 @@ namespace {
 // bench/engine/bench_memory_estimate.py).
 constexpr double kBaseline = 28.0 * 1024 * 1024;
 
-struct Item {
-  double bytes;
-  std::vector<std::string> keys;
-  std::string what;
-};
+using Item = MemoryItem;
 
 // "[section] key = value", the value as the typed section holds it.
 std::string key_text(const char* section, const char* key, double value) {
@@ -220,60 +217,66 @@ std::vector<Item> rolling_beam(const RollingBeamSettings& r) {
            "beam model and its band Newton system, " + std::to_string(static_cast<long long>(nodes)) + " nodes"}};
 }
 
-std::vector<Item> items(const study::KeyReader& s, int threads) {
-  const std::string scene = s.scene();
-  const double t = threads;
+}  // namespace
+
+std::vector<MemoryItem> random_oscillator_memory(const study::KeyReader& s, int threads) {
+  // Per thread: force, acceleration and the two uniform draws (3 n doubles); shared: the
+  // synthesiser's FFT (measured: 0.91 GB peak at n = 1e7 on 2 threads).
+  const auto signal = study::RecordSignalSection::parse(s);
+  const double n = signal.sample_rate * signal.duration, t = threads;
+  return {{8.0 * n * (3.0 * t + 5.0),
+           {key_text("signal", "sample_rate", signal.sample_rate), key_text("signal", "duration", signal.duration)},
+           "one realisation's record per thread"},
+          chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s), study::SpectrumSection::parse(s),
+                     1.0, {})};
+}
+
+std::vector<MemoryItem> texture_memory(const study::KeyReader& s, int /*threads*/) {
+  const auto lines = study::LinesSection::parse(s);
+  const double samples = lines.length / std::max(lines.spacing, 1e-300), count = static_cast<double>(lines.count);
+  return {{8.0 * samples * (2.0 * count + 6.0),
+           {key_text("lines", "count", count), key_text("lines", "length", lines.length),
+            key_text("lines", "spacing", lines.spacing)},
+           "line textures"},
+          surfaces(study::SurfaceSection::parse(s))};
+}
+
+std::vector<MemoryItem> stiffness_memory(const study::KeyReader& s, int /*threads*/) {
+  const auto f = study::SurfaceSection::parse(s);
+  return {contact_grid(static_cast<double>(f.nx), static_cast<double>(f.ny))};
+}
+
+std::vector<MemoryItem> ball_on_beam_memory(const study::KeyReader& s, int threads) {
+  return ball_on_beam(BallOnBeamSections::parse(s), threads);
+}
+
+std::vector<MemoryItem> rolling_pipe_memory(const study::KeyReader& s, int threads) {
   std::vector<Item> out;
-  if (scene == "random-oscillator") {
-    // Per thread: force, acceleration and the two uniform draws (3 n doubles); shared: the
-    // synthesiser's FFT (measured: 0.91 GB peak at n = 1e7 on 2 threads).
-    const auto signal = study::RecordSignalSection::parse(s);
-    const double n = signal.sample_rate * signal.duration;
-    out.push_back(
-        {8.0 * n * (3.0 * t + 5.0),
-         {key_text("signal", "sample_rate", signal.sample_rate), key_text("signal", "duration", signal.duration)},
-         "one realisation's record per thread"});
-    out.push_back(chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s),
-                             study::SpectrumSection::parse(s), 1.0, {}));
-  } else if (scene == "texture") {
-    const auto lines = study::LinesSection::parse(s);
-    const double samples = lines.length / std::max(lines.spacing, 1e-300), count = static_cast<double>(lines.count);
-    out.push_back({8.0 * samples * (2.0 * count + 6.0),
-                   {key_text("lines", "count", count), key_text("lines", "length", lines.length),
-                    key_text("lines", "spacing", lines.spacing)},
-                   "line textures"});
-    out.push_back(surfaces(study::SurfaceSection::parse(s)));
-  } else if (scene == "stiffness") {
-    const auto f = study::SurfaceSection::parse(s);
-    out.push_back(contact_grid(static_cast<double>(f.nx), static_cast<double>(f.ny)));
-  } else if (scene == "ball-on-beam") {
-    out = ball_on_beam(BallOnBeamSections::parse(s), t);
-  } else if (scene == "rolling-pipe") {
-    if (!study::PipeRoughnessSection::parse(s).line) {
-      // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
-      const auto f = study::SurfaceGridSection::parse(s);
-      const double nx = static_cast<double>(f.nx), ny = static_cast<double>(f.ny);
-      out.push_back({8.0 * nx * ny * (t + 10.0),
-                     {key_text("surface", "nx", nx), key_text("surface", "ny", ny)},
-                     "rough floor per thread"});
-    }
-    const auto sensors = study::PipeSensorsSection::parse(s);
-    out.push_back(chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s),
-                             study::SpectrumSection::parse(s), static_cast<double>(sensors.positions.size()) + 2.0,
-                             {positions_text("sensors", sensors.positions)}));
-  } else if (scene == "rolling-beam") {
-    out = rolling_beam(read_rolling_beam_settings(s));
+  if (!study::PipeRoughnessSection::parse(s).line) {
+    // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
+    const auto f = study::SurfaceGridSection::parse(s);
+    const double nx = static_cast<double>(f.nx), ny = static_cast<double>(f.ny);
+    out.push_back({8.0 * nx * ny * (threads + 10.0),
+                   {key_text("surface", "nx", nx), key_text("surface", "ny", ny)},
+                   "rough floor per thread"});
   }
+  const auto sensors = study::PipeSensorsSection::parse(s);
+  out.push_back(chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s),
+                           study::SpectrumSection::parse(s), static_cast<double>(sensors.positions.size()) + 2.0,
+                           {positions_text("sensors", sensors.positions)}));
   return out;
 }
 
-}  // namespace
+std::vector<MemoryItem> rolling_beam_memory(const study::KeyReader& s, int /*threads*/) {
+  return rolling_beam(read_rolling_beam_settings(s));
+}
 
 MemoryEstimate estimate_memory(const study::KeyReader& s, int threads) {
   MemoryEstimate e;
   e.bytes = kBaseline;
   double largest = -1.0;
-  for (const auto& it : items(s, threads)) {
+  const auto& memory = find_scene(s.scene()).memory;
+  for (const auto& it : memory ? memory(s, threads) : std::vector<MemoryItem>{}) {
     e.bytes += it.bytes;
     e.terms.emplace_back(it.what, it.bytes);
     if (it.bytes > largest) {

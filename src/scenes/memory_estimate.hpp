@@ -23,7 +23,22 @@ struct MemoryEstimate {
   std::vector<std::pair<std::string, double>> terms;
 };
 
-// `threads`: OpenMP threads that each hold a workspace.
+// One term of a scene's memory model: its bytes, the keys that drive it and what it is, in words.
+struct MemoryItem {
+  double bytes;
+  std::vector<std::string> keys;
+  std::string what;
+};
+
+// The memory model of each scene (its registry row's `memory`), `threads` OpenMP threads.
+std::vector<MemoryItem> random_oscillator_memory(const study::KeyReader& s, int threads);
+std::vector<MemoryItem> ball_on_beam_memory(const study::KeyReader& s, int threads);
+std::vector<MemoryItem> rolling_beam_memory(const study::KeyReader& s, int threads);
+std::vector<MemoryItem> rolling_pipe_memory(const study::KeyReader& s, int threads);
+std::vector<MemoryItem> stiffness_memory(const study::KeyReader& s, int threads);
+std::vector<MemoryItem> texture_memory(const study::KeyReader& s, int threads);
+
+// `threads`: OpenMP threads that each hold a workspace; the terms are the study's scene's (find_scene).
 MemoryEstimate estimate_memory(const study::KeyReader& s, int threads);
 
 // "1.5 GiB" etc.

@@ -15,6 +15,8 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> random_oscillator_keys();
+// rollspec init's first keys (scene.hpp FirstKey).
+std::vector<FirstKey> random_oscillator_first_keys();
 std::unique_ptr<Scene> make_random_oscillator(const study::KeyReader& s);
 // The shape of its /psd and /bands, from its settings (a sweep checks it before any point runs).
 ResultShape random_oscillator_result_shape(const study::KeyReader& s);

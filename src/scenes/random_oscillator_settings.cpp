@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "src/scenes/random_oscillator.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/random_oscillator_sections.hpp"
@@ -49,6 +50,19 @@ RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {
                                    " samples = duration x sample_rate)");
   o.welch = study_welch_config(spectrum, fs);
   return o;
+}
+
+std::vector<FirstKey> random_oscillator_first_keys() {
+  return {{"oscillator.mass", {}},
+          {"oscillator.natural_frequency", "50"},
+          {"oscillator.damping_ratio", {}},
+          {"force.spectrum", {}},
+          {"force.level", {}},
+          {"signal.sample_rate", {}},
+          {"signal.duration", {}},
+          {"spectrum.segment", {}},
+          {"spectrum.band_min", {}},
+          {"spectrum.band_max", "800"}};
 }
 
 }  // namespace rollspec::scenes

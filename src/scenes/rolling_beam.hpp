@@ -12,6 +12,8 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> rolling_beam_keys();
+// rollspec init's first keys (scene.hpp FirstKey).
+std::vector<FirstKey> rolling_beam_first_keys();
 std::unique_ptr<Scene> make_rolling_beam(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "src/scenes/rolling_beam.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/rolling_analysis_section.hpp"
 #include "src/study/sections/rolling_body_sections.hpp"
@@ -179,6 +180,12 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   out.run.record_nodes = out.record;
   out.step_where = analysis.dt_origin.where;
   return out;
+}
+
+std::vector<FirstKey> rolling_beam_first_keys() {
+  return {{"body.kind", {}},           {"beam.start", {}},    {"beam.end", {}},         {"beam.diameter", {}},
+          {"beam.youngs_modulus", {}}, {"beam.density", {}},  {"contact.friction", {}}, {"gravity.acceleration", {}},
+          {"analysis.dt", {}},         {"analysis.t_end", {}}};
 }
 
 }  // namespace rollspec::scenes

@@ -14,6 +14,8 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> rolling_pipe_keys();
+// rollspec init's first keys (scene.hpp FirstKey).
+std::vector<FirstKey> rolling_pipe_first_keys();
 std::unique_ptr<Scene> make_rolling_pipe(const study::KeyReader& s);
 // The shape of its /psd and /bands, from its settings (a sweep checks it before any point runs).
 ResultShape rolling_pipe_result_shape(const study::KeyReader& s);

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "src/scenes/rolling_pipe.hpp"
 #include "kernels/texture/psd_units.hpp"
 #include "src/scenes/study_welch.hpp"
 #include "src/study/key_reader.hpp"
@@ -157,6 +158,14 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   p.solver.disp_tol = 1e-14;
   p.solver.force_tol = analysis.tolerance * p.section.rhoA * p.length * p.gravity;
   return p;
+}
+
+// The step is set against the default contact penalty (the key's default is too coarse for it).
+std::vector<FirstKey> rolling_pipe_first_keys() {
+  return {{"pipe.length", {}},      {"pipe.diameter", {}},          {"pipe.inner_diameter", {}},
+          {"roll.speed", {}},       {"roll.distance", {}},          {"texture.rms", {}},
+          {"contact.friction", {}}, {"contact.penalty_normal", {}}, {"analysis.dt", "2.5e-5"},
+          {"sensors.positions", {}}};
 }
 
 }  // namespace rollspec::scenes

@@ -1,12 +1,14 @@
 #pragma once
 // A scene turns a validated study into realisations. It holds the stages it needs as objects
 // (stage.hpp): `rollspec plan` prints their inspect(), prepare() resolves them, and a stage a scene
-// does not need is never computed. To add a scene: a SceneInfo in scene_registry.cpp; to add a
+// does not need is never computed. To add a scene: a SceneInfo in scene_registry.cpp (everything
+// the engine asks of a scene is a field there: no code outside the scene tests its name); to add a
 // stage: a Stage object added in the scene's constructor.
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +16,8 @@
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/loss_effect.hpp"
 #include "src/io/psd_result.hpp"
+#include "src/scenes/dimension_plausibility.hpp"
+#include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/result_shape.hpp"
 #include "src/scenes/stage.hpp"
 #include "src/study/key_spec.hpp"
@@ -23,6 +27,9 @@ class Hdf5Writer;
 }
 namespace rollspec::study {
 class KeyReader;
+}
+namespace rollspec::beam {
+class ModalBeam;
 }
 
 namespace rollspec::scenes {
@@ -143,18 +150,49 @@ class SingleRunScene : public Scene {
 // plain Scenes: `rollspec run` refuses them.
 enum class SceneKind { ensemble, single_run, stages_only };
 
+// The command that runs a study of the scene: `run` for the ensemble and single-run scenes, the
+// scene's own command for a stages-only one (rollspec init's template names it).
+enum class SceneCommand { run, texture, stiffness };
+const char* command_name(SceneCommand c);
+
+// A key rollspec init writes first for a scene, uncommented, with the template's value.
+struct FirstKey {
+  std::string full_name;             // "section.key"
+  std::optional<std::string> value;  // nullopt: the key table's default
+};
+
+// Ball radius, effective modulus and weight of a study's contact (the ball on its flat or beam).
+struct BallContact {
+  double radius, effective_modulus, weight;
+};
+
+// Everything the engine asks of a scene. A field left empty says the scene has no such thing (the
+// command that needs it refuses the study naming the scenes that have it).
 struct SceneInfo {
   std::string name;
   std::string description;
-  SceneKind kind;                                     // which of the scene types make() returns (make_scene checks it)
+  SceneKind kind;  // which of the scene types make() returns (make_scene checks it)
+  SceneCommand command;
   std::function<std::vector<study::KeySpec>()> keys;  // scene-specific keys (common keys are added)
   std::function<std::unique_ptr<Scene>(const study::KeyReader&)> make;
   // The shape of /psd and /bands from the settings alone (empty for scenes that write no /psd).
   std::function<ResultShape(const study::KeyReader&)> result_shape;
+  // rollspec init: the keys a rig is described by, after [study]'s (study_template_keys.cpp).
+  std::vector<FirstKey> first_keys;
+  // The peak memory terms that grow with the keys (memory_estimate.hpp), `threads` OpenMP threads.
+  std::function<std::vector<MemoryItem>(const study::KeyReader&, int threads)> memory;
+  // The plausibility relations of its lengths and speeds (dimension_plausibility.hpp); empty: none.
+  std::function<std::vector<DimensionRelation>(const study::KeyReader&)> relations;
+  // The ball and what it presses on, for a stiffness table (`rollspec stiffness`); empty: no contact table.
+  std::function<BallContact(const study::KeyReader&)> contact_pair;
+  // The modal beam (`rollspec modes`); empty: no modal beam.
+  std::function<beam::ModalBeam(const study::KeyReader&)> modal_beam;
 };
 
 const std::vector<SceneInfo>& scene_registry();
 const SceneInfo& find_scene(const std::string& name);  // throws config_error naming the scenes
+// "a or b": the scenes whose row has what `has` asks (for a command's refusal).
+std::string scenes_with(const std::function<bool(const SceneInfo&)>& has);
 std::vector<study::KeySpec> common_keys();
 std::vector<study::KeySpec> schema_for(const std::string& scene);  // common + scene keys
 

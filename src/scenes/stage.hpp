@@ -18,6 +18,7 @@ struct StagePlan {
   std::string stage;  // texture, surface, stiffness_table, blocked_force, force, dynamics, spectra
   StageStatus status;
   std::string reason;
+  bool table = false;  // a cached table shared by all realisations (a TableStage's inspection)
 };
 
 const char* status_name(StageStatus s);

@@ -9,7 +9,6 @@
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/ball_section.hpp"
 #include "src/study/sections/flat_section.hpp"
-#include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
@@ -36,32 +35,29 @@ std::vector<KeySpec> stiffness_scene_keys() {
   return k;
 }
 
-ContactPair study_contact_pair(const KeyReader& s) {
-  // The ball on the flat (scene stiffness) or on the beam (ball-on-beam).
+BallContact ball_contact_pair(const KeyReader& s, double other_modulus, double other_poisson) {
   const BallSection ball = BallSection::parse_solid(s);
-  double other_modulus = 0.0, other_poisson = 0.0;
-  if (s.scene() == "stiffness") {
-    const FlatSection flat = FlatSection::parse(s);
-    other_modulus = flat.youngs_modulus, other_poisson = flat.poisson;
-  } else {
-    const ModalBeamSection beam = ModalBeamSection::parse(s);
-    other_modulus = beam.properties.youngs_modulus, other_poisson = beam.poisson;
-  }
-  ContactPair p{};
+  BallContact p{};
   p.radius = ball.radius;
   p.effective_modulus = ball.effective_modulus(other_modulus, other_poisson);
   p.weight = 4.0 / 3.0 * M_PI * std::pow(p.radius, 3) * ball.density * ball.gravity;
   return p;
 }
 
+BallContact stiffness_contact_pair(const KeyReader& s) {
+  const FlatSection flat = FlatSection::parse(s);
+  return ball_contact_pair(s, flat.youngs_modulus, flat.poisson);
+}
+
 namespace {
 class StiffnessScene final : public Scene {
  public:
-  explicit StiffnessScene(const KeyReader& s) : pair_(study_contact_pair(s)), tables_(stiffness::TableStudy::parse(s)) {
+  explicit StiffnessScene(const KeyReader& s)
+      : pair_(stiffness_contact_pair(s)), tables_(stiffness::TableStudy::parse(s)) {
     const bool rough = tables_.stiffness.rough;  // a rough flat's PSD source is validated by the parse
     // `rollspec stiffness` builds and prints the table through stiffness::resolve_table, the same
     // CachedTable, so this stage and that command agree.
-    const ContactPair pair = pair_;
+    const BallContact pair = pair_;
     auto table = std::make_unique<TableStage>(
         "stiffness_table", stiffness::stiffness_cached_table(tables_, pair.radius, pair.effective_modulus),
         [] { return std::make_unique<stiffness::StiffnessTable>(); },
@@ -84,11 +80,17 @@ class StiffnessScene final : public Scene {
   }
 
  private:
-  ContactPair pair_;
+  BallContact pair_;
   stiffness::TableStudy tables_;
 };
 }  // namespace
 
 std::unique_ptr<Scene> make_stiffness_scene(const KeyReader& s) { return std::make_unique<StiffnessScene>(s); }
+
+std::vector<FirstKey> stiffness_first_keys() {
+  return {{"ball.radius", {}}, {"ball.density", {}},   {"ball.youngs_modulus", {}},    {"flat.youngs_modulus", {}},
+          {"texture.rms", {}}, {"texture.hurst", {}},  {"stiffness.approach_max", {}}, {"stiffness.realisations", {}},
+          {"surface.nx", {}},  {"surface.spacing", {}}};
+}
 
 }  // namespace rollspec::scenes

@@ -9,12 +9,14 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> stiffness_scene_keys();
+// rollspec init's first keys (scene.hpp FirstKey).
+std::vector<FirstKey> stiffness_first_keys();
 std::unique_ptr<Scene> make_stiffness_scene(const study::KeyReader& s);
 
-// Ball radius, effective modulus and weight of a stiffness or ball-on-beam study.
-struct ContactPair {
-  double radius, effective_modulus, weight;
-};
-ContactPair study_contact_pair(const study::KeyReader& s);
+// The study's ball ([ball]: radius, E*, weight) on a body of Young's modulus `other_modulus` and
+// Poisson's ratio `other_poisson`.
+BallContact ball_contact_pair(const study::KeyReader& s, double other_modulus, double other_poisson);
+// Scene stiffness's contact: the ball on the flat ([flat]).
+BallContact stiffness_contact_pair(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -46,4 +46,17 @@ class TextureScene final : public Scene {
 
 std::unique_ptr<Scene> make_texture_scene(const KeyReader& s) { return std::make_unique<TextureScene>(s); }
 
+// The line spacing is set against the default short cut-off (the key's default is too coarse for it).
+std::vector<FirstKey> texture_first_keys() {
+  return {{"texture.source", {}},
+          {"texture.rms", {}},
+          {"texture.hurst", {}},
+          {"texture.rolloff_wavelength", {}},
+          {"texture.short_wavelength", {}},
+          {"lines.count", {}},
+          {"lines.length", {}},
+          {"lines.spacing", "5e-6"},
+          {"surface.count", {}}};
+}
+
 }  // namespace rollspec::scenes

@@ -9,6 +9,8 @@
 namespace rollspec::scenes {
 
 std::vector<study::KeySpec> texture_scene_keys();
+// rollspec init's first keys (scene.hpp FirstKey).
+std::vector<FirstKey> texture_first_keys();
 std::unique_ptr<Scene> make_texture_scene(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

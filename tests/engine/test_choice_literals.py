@@ -14,14 +14,10 @@ import collections
 import pathlib
 import re
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
+from source_scan import ROOT, calls, compared_literals, scratch, sources
+
 SECTIONS = pathlib.PurePosixPath("src/study/sections")
-TOKENS = re.compile(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|//[^\n]*|/\*.*?\*/', re.S)
 ROW = re.compile(r'\{\s*[\w:\']+\s*,\s*"([^"]*)"\s*,')
-LITERAL = r'"((?:\\.|[^"\\\n])*)"'
-COMPARISONS = [re.compile(r'(?:==|!=)\s*' + LITERAL),
-               re.compile(LITERAL + r'\s*(?:==|!=)'),
-               re.compile(r'\.\s*(?:compare|find|rfind)\s*\(\s*' + LITERAL)]
 
 # (file, literal): (comparisons in that file, why it is no study choice).
 ALLOWED = {
@@ -36,33 +32,6 @@ ALLOWED = {
     ("src/study/key_reader.cpp", "none"): (2, "a path key's none (no file)"),
     ("src/study/study.cpp", "none"): (1, "a path key's none (no file)"),
 }
-
-
-def code_only(text):
-    """The text with comments blanked and string/char literals kept (a literal may hold //)."""
-    return TOKENS.sub(lambda m: m.group(0) if m.group(0)[0] in "\"'" else " ", text)
-
-
-def calls(text, name):
-    """The argument text of each call `name(...)`, parentheses matched outside literals."""
-    out = []
-    for m in re.finditer(r"\b" + name + r"\s*\(", text):
-        depth, i = 1, m.end()
-        while i < len(text) and depth:
-            lit = TOKENS.match(text, i)
-            if lit:
-                i = lit.end()
-                continue
-            depth += {"(": 1, ")": -1}.get(text[i], 0)
-            i += 1
-        out.append(text[m.end():i - 1])
-    return out
-
-
-def sources(root):
-    for f in sorted((root / "src").rglob("*")):
-        if f.suffix in (".hpp", ".cpp", ".h") and f.is_file():
-            yield pathlib.PurePosixPath(f.relative_to(root).as_posix()), code_only(f.read_text(errors="replace"))
 
 
 def choice_spellings(root):
@@ -87,15 +56,13 @@ def violations(root, allowed=ALLOWED):
         if SECTIONS in rel.parents:
             continue
         for line_no, line in enumerate(text.splitlines(), 1):
-            for pattern in COMPARISONS:
-                for m in pattern.finditer(line):
-                    value = m.group(1)
-                    if value not in spellings:
-                        continue
-                    counts[(str(rel), value)] += 1
-                    if (str(rel), value) not in allowed:
-                        found.append(f'{rel}:{line_no}: compares "{value}", a choice value of '
-                                     f'{", ".join(sorted(set(spellings[value])))}; switch on the section\'s enum')
+            for value in compared_literals(line):
+                if value not in spellings:
+                    continue
+                counts[(str(rel), value)] += 1
+                if (str(rel), value) not in allowed:
+                    found.append(f'{rel}:{line_no}: compares "{value}", a choice value of '
+                                 f'{", ".join(sorted(set(spellings[value])))}; switch on the section\'s enum')
     for key, (n, why) in allowed.items():
         if counts[key] > n:
             found.append(f'{key[0]}: {counts[key]} comparisons with "{key[1]}", {n} allowed ({why})')
@@ -107,14 +74,6 @@ def test_choice_values_are_compared_only_in_the_sections():
     for value in ("hertz", "self-affine", "linearised", "flying-beam", "clamped-clamped", "dopri5"):
         assert value in spellings, f"the sections' choice tables were not read ({value} missing)"
     assert violations(ROOT) == []
-
-
-def scratch(tmp_path, files):
-    for name, text in files.items():
-        p = tmp_path / name
-        p.parent.mkdir(parents=True, exist_ok=True)
-        p.write_text(text)
-    return tmp_path
 
 
 SECTION = {"src/study/sections/law_section.hpp":
