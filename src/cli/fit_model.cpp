@@ -17,6 +17,7 @@
 #include "src/io/provenance.hpp"
 #include "src/io/run_warning.hpp"
 #include "src/rng/philox_stream.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 
 namespace rollspec::cli {
 
@@ -255,7 +256,8 @@ void FitModel::check_band_rules(std::size_t point, const io::BandLevels& b, cons
 
 std::vector<std::string> FitModel::later_sets(std::size_t point) const {
   if (!table_[point].random) return {};
-  return {"stiffness.table_error=none"};  // the term is held from the start (D-27, D-31)
+  return {study::StiffnessSection::table_error_setting(
+      study::TableError::none)};  // the term is held from the start (D-27, D-31)
 }
 
 PointRun FitModel::point_run(std::size_t point, const io::BandLevels& b) const {

@@ -122,7 +122,7 @@ int plan_command(const Args& args) {
   std::unique_ptr<scenes::EnsembleScene> plain;
   if (jackknife) {
     StudyArgs without = study;
-    without.sets.push_back("stiffness.table_error=none");
+    without.sets.push_back(study::StiffnessSection::table_error_setting(study::TableError::none));
     plain = make_scene<scenes::EnsembleScene>(resolve_study(without));
   }
   scenes::EnsembleScene& probe = plain ? *plain : *ensemble_scene;

@@ -11,6 +11,8 @@
 #include "src/io/loss_effect.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/io/run_warning.hpp"
+#include "src/study/sections/contact_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 
 namespace rollspec::cli {
 
@@ -22,7 +24,9 @@ void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, co
       ensemble::mpi_rank() == 0 ? scene.closed_contact_sets(sums) : std::vector<std::string>{};
   if (!ensemble::any_rank(!sets.empty())) return;
   const std::vector<std::string> closed_sets =
-      sets.empty() ? std::vector<std::string>{"contact.loss=closed", "stiffness.table_error=none"} : sets;
+      sets.empty() ? std::vector<std::string>{study::ContactSection::loss_setting(study::ContactLoss::closed),
+                                              study::StiffnessSection::table_error_setting(study::TableError::none)}
+                   : sets;
   const study::Study closed_study = reload(closed_sets);
   const auto closed = [&closed_study] {
     const io::RunWarningCapture already_said;  // the study's own warnings were said by the run

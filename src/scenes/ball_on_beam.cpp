@@ -393,8 +393,9 @@ class BallOnBeam final : public EnsembleScene {
     if (blocked_solver()) {  // D-30d: over the overlapping Welch segments of F0 along the path
       const stiffness::SegmentJackknife j = stiffness::f0_segments(blocked_force_grid());
       TableJackknifePlan plan{j.segments, "blocked-force table", "Welch segments of F0", [](long long i) {
-                                return std::vector<std::string>{"blocked_force.leave_out=" + std::to_string(i),
-                                                                "stiffness.table_error=none"};
+                                return std::vector<std::string>{
+                                    "blocked_force.leave_out=" + std::to_string(i),
+                                    study::StiffnessSection::table_error_setting(study::TableError::none)};
                               }};
       plan.variance_factor = j.variance_factor;
       plan.dof = j.dof;
@@ -403,8 +404,9 @@ class BallOnBeam final : public EnsembleScene {
     }
     TableJackknifePlan plan{static_cast<std::size_t>(b_.equivalent_roughness_strips), "equivalent-roughness table",
                             "strips", [](long long i) {
-                              return std::vector<std::string>{"equivalent_roughness.leave_out=" + std::to_string(i),
-                                                              "stiffness.table_error=none"};
+                              return std::vector<std::string>{
+                                  "equivalent_roughness.leave_out=" + std::to_string(i),
+                                  study::StiffnessSection::table_error_setting(study::TableError::none)};
                             }};
     plan.independent_bands = true;
     return plan;
@@ -417,7 +419,8 @@ class BallOnBeam final : public EnsembleScene {
   std::vector<std::string> closed_contact_sets(const ensemble::EnsembleSums& sums) const override {
     if (!b_.linearised() || b_.contact_section.loss == study::ContactLoss::closed || spectra_only_) return {};
     if (!(sums.mean(rows_->extra_index(2 * welch_->n_freq())) > 0.0)) return {};
-    return {"contact.loss=closed", "stiffness.table_error=none"};
+    return {study::ContactSection::loss_setting(study::ContactLoss::closed),
+            study::StiffnessSection::table_error_setting(study::TableError::none)};
   }
   void include_loss_effect(io::LossEffect e) override { loss_effect_ = std::move(e); }
 

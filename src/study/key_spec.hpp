@@ -83,4 +83,11 @@ std::string spelling_of(const ChoiceTable<E, N>& table, E value) {
   return "?";  // not reached while the table has a row for every value it is asked about
 }
 
+// "section.key=spelling": a --set text naming a choice by its table's spelling, for the runs the engine
+// derives from a study (the closed-contact and sub-table runs), so they cannot drift from the key's values.
+template <class E, std::size_t N>
+std::string choice_setting(const std::string& full_key, const ChoiceTable<E, N>& table, E value) {
+  return full_key + "=" + spelling_of(table, value);
+}
+
 }  // namespace rollspec::study

@@ -9,6 +9,7 @@
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/rolling_body_sections.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "tests/engine/study_from_text.hpp"
 
 using namespace rollspec;
@@ -72,5 +73,21 @@ TEST_CASE("a misspelt choice is refused with file, line, key, value and the tabl
     FAIL("not refused");
   } catch (const UserError& e) {
     CHECK(e.exit_code() == 78);
+  }
+}
+
+TEST_CASE("the --set texts the engine derives (closed contact, sub-tables) read back as the value they name") {
+  for (const auto& c : study::kContactLosses) {
+    const std::string set = study::ContactSection::loss_setting(c.value);
+    CHECK(set == std::string("contact.loss=") + c.spelling);
+    // closed is the linearised law's counterfactual: allowed with it only
+    CHECK(study::ContactSection::parse(ball_on_beam({"contact.law=linearised", set})).loss == c.value);
+  }
+  for (const auto& c : study::kTableErrors) {
+    const std::string set = study::StiffnessSection::table_error_setting(c.value);
+    CHECK(set == std::string("stiffness.table_error=") + c.spelling);
+    const study::StiffnessSection s = study::StiffnessSection::parse(ball_on_beam({set}));
+    CHECK(s.table_jackknife == (c.value == study::TableError::jackknife));
+    CHECK(s.table_error_auto == (c.value == study::TableError::automatic));
   }
 }

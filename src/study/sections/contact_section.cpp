@@ -23,6 +23,8 @@ std::vector<KeySpec> ContactSection::keys() {
   };
 }
 
+std::string ContactSection::loss_setting(ContactLoss v) { return choice_setting("contact.loss", kContactLosses, v); }
+
 ContactSection ContactSection::parse(const KeyReader& s) {
   ContactSection p;
   p.law = read_choice(s, "contact.law", kContactLaws);

@@ -66,6 +66,7 @@ struct ContactSection {
 
   static std::vector<KeySpec> keys();
   static ContactSection parse(const KeyReader& s);
+  static std::string loss_setting(ContactLoss v);  // "contact.loss=<spelling>", a --set text
 };
 
 }  // namespace rollspec::study

@@ -104,8 +104,13 @@ StiffnessSection StiffnessSection::leaving_out(long long i) const {
   return t;
 }
 
+std::string StiffnessSection::table_error_setting(TableError v) {
+  return choice_setting("stiffness.table_error", kTableErrors, v);
+}
+
 std::vector<std::string> StiffnessSection::leave_out_sets(long long i) {
-  return {"stiffness.table_leave_out=" + std::to_string(i), "stiffness.table=auto", "stiffness.table_error=none"};
+  return {"stiffness.table_leave_out=" + std::to_string(i), "stiffness.table=auto",
+          table_error_setting(TableError::none)};
 }
 
 }  // namespace rollspec::study

@@ -57,6 +57,7 @@ struct StiffnessSection {
 
   static std::vector<KeySpec> keys();
   static StiffnessSection parse(const KeyReader& s);
+  static std::string table_error_setting(TableError v);  // "stiffness.table_error=<spelling>", a --set text
   // The canonical value text of [stiffness] `key` (as the resolved study writes it).
   const std::string& text(const std::string& key) const;
   // The section of leave-one-out sub-table `i` (D-30): table_leave_out = i, its own cached file
