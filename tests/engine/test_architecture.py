@@ -7,6 +7,8 @@ import re
 
 import pytest
 
+from source_scan import scratch
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 DEPENDS = re.compile(r"rollspec_kernel_area\(\s*(\w+)(?:\s+DEPENDS((?:\s+rollspec_\w+)+))?")
@@ -65,14 +67,6 @@ def violations(root):
 def test_the_tree_keeps_its_layers():
     assert declared_areas(ROOT / "kernels"), "no kernel area found"
     assert violations(ROOT) == []
-
-
-def scratch(tmp_path, files):
-    for name, text in files.items():
-        p = tmp_path / name
-        p.parent.mkdir(parents=True, exist_ok=True)
-        p.write_text(text)
-    return tmp_path
 
 
 AREAS = {"kernels/a/CMakeLists.txt": "rollspec_kernel_area(a SOURCES x.cpp)\n",

@@ -9,24 +9,44 @@
 
 using namespace rollspec::beam;
 
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// A 0.4 m simply supported beam (30 modes) crossed by a constant force at speed parameter
+// alpha = pi v / (l omega_1), sampled at three points every 2e-7 s.
+struct MovingForceRun {
+  double v = 0.0, dt = 2e-7;
+  long steps = 0;
+  std::vector<double> xs;
+  std::vector<std::vector<double>> w;
+};
+MovingForceRun run_moving_force(const ModalBeam& beam, double l, double load, double alpha) {
+  MovingForceRun r;
+  r.v = alpha * beam.omega(0) * l / kPi;
+  r.steps = static_cast<long>(std::floor(l / r.v / r.dt));
+  const std::vector<double> force(static_cast<std::size_t>(r.steps + 1), load);
+  r.xs = {0.25 * l, 0.5 * l, 0.8 * l};
+  r.w = moving_force_deflection(beam, 0.0, r.v, force, r.dt, r.xs);
+  return r;
+}
+}  // namespace
+
 TEST_CASE("moving constant force on a simply supported beam matches Frýba's closed form") {
   BeamProperties p;
   p.support = Support::simply_supported;
   p.length = 0.4;
   const int modes = 30;
   const ModalBeam beam(p, {modes, 0.0}, {});  // undamped, as Frýba's series
-  const double pi = 3.14159265358979323846, load = 100.0;
+  const double load = 100.0;
   const double l = p.length, ei = beam.bending_stiffness(), mu = beam.mass_per_length();
   for (double alpha : {0.1, 0.5, 1.3}) {  // speed parameter alpha = pi v / (l omega_1)
-    const double v = alpha * beam.omega(0) * l / pi;
-    const double dt = 2e-7;
-    const long steps = static_cast<long>(std::floor(l / v / dt));
-    const std::vector<double> force(static_cast<std::size_t>(steps + 1), load);
-    const std::vector<double> xs = {0.25 * l, 0.5 * l, 0.8 * l};
-    const auto w = moving_force_deflection(beam, 0.0, v, force, dt, xs);
+    const MovingForceRun r = run_moving_force(beam, l, load, alpha);
+    const double v = r.v, dt = r.dt;
+    const auto& xs = r.xs;
+    const auto& w = r.w;
     double worst = 0.0, peak = 0.0;
     for (std::size_t i = 0; i < xs.size(); ++i)
-      for (long k = 0; k <= steps; k += 7) {
+      for (long k = 0; k <= r.steps; k += 7) {
         const double ref = -fryba_moving_force(l, ei, mu, load, v, xs[i], static_cast<double>(k) * dt, modes);
         worst = std::max(worst, std::abs(w[i][k] - ref));
         peak = std::max(peak, std::abs(ref));
@@ -36,7 +56,7 @@ TEST_CASE("moving constant force on a simply supported beam matches Frýba's clo
     CHECK(worst <= 1e-6 * peak);
   }
   // A wrong modal mass or a wrong sign is caught: the dynamic peak differs from the static one.
-  const double v = 0.5 * beam.omega(0) * l / pi;
+  const double v = 0.5 * beam.omega(0) * l / kPi;
   CHECK(std::abs(fryba_moving_force(l, ei, mu, load, v, 0.5 * l, 0.5 * l / v, 60) / (load * l * l * l / (48.0 * ei)) -
                  1.0) > 0.05);
 }
@@ -73,18 +93,16 @@ TEST_CASE("moving constant force on a damped simply supported beam matches the d
   const int modes = 30;
   const double loss_factor = 0.01;
   const ModalBeam beam(p, {modes, 0.0}, {loss_factor, {}});
-  const double pi = 3.14159265358979323846, load = 100.0;
+  const double load = 100.0;
   const double l = p.length, ei = beam.bending_stiffness(), mu = beam.mass_per_length();
   for (double alpha : {0.1, 0.5, 1.3}) {
-    const double v = alpha * beam.omega(0) * l / pi;
-    const double dt = 2e-7;
-    const long steps = static_cast<long>(std::floor(l / v / dt));
-    const std::vector<double> force(static_cast<std::size_t>(steps + 1), load);
-    const std::vector<double> xs = {0.25 * l, 0.5 * l, 0.8 * l};
-    const auto w = moving_force_deflection(beam, 0.0, v, force, dt, xs);
+    const MovingForceRun r = run_moving_force(beam, l, load, alpha);
+    const double v = r.v, dt = r.dt;
+    const auto& xs = r.xs;
+    const auto& w = r.w;
     double worst = 0.0, undamped = 0.0, peak = 0.0;
     for (std::size_t i = 0; i < xs.size(); ++i)
-      for (long k = 0; k <= steps; k += 7) {
+      for (long k = 0; k <= r.steps; k += 7) {
         const double t = static_cast<double>(k) * dt;
         const double ref = -damped_moving_force(l, ei, mu, load, v, xs[i], t, modes, 0.5 * loss_factor);
         worst = std::max(worst, std::abs(w[i][k] - ref));
