@@ -3,11 +3,16 @@
 power and prediction-interval coverage on the README's ten-minute rig.
 
 usage: bench_recording_verdict.py [--bin B] [--recordings N] [--rolls M] [--noise-db DB|none]
-                                  [--realisations K] [--work DIR] [--record FILE]
+                                  [--realisations K] [--model-seeds S] [--work DIR] [--record FILE]
 
-The model: `rollspec init ball-on-beam`, the README's edits ("Your rig in ten minutes"), one `rollspec run` at
-the template's K and study seed: model.h5. Its contact is the Hertz law (no random table), so a rig's surface
-is another draw of the same realisation streams: a recording's rolls come from another study seed.
+The model: `rollspec init ball-on-beam`, the README's edits ("Your rig in ten minutes"), `rollspec run` at the
+template's K, once per model seed: model-seed<s>.h5 at study seed s = the template's seed + j, j = 0 .. S - 1.
+A user's model run is itself a random draw, and its sampling error is common to every recording compared with
+it: so each case's N recordings are split into S equal blocks, block j compared with the model of seed j, and
+the size answers the question the test's level promises (a new model run and a new recording); the spread of
+the S blocks' sizes (each conditional on one model run) is a row of its own. S = 1 is one model for all.
+Its contact is the Hertz law (no random table), so a rig's surface is another draw of the same realisation
+streams: a recording's rolls come from other study seeds (7000 and up, below; the model seeds stay under 7000).
 Each of N recordings is M rolls, one CSV per roll (`Time (s),Acc (m/s^2)`), the sensor's acceleration from
 `output.time_histories` of a run of the case below at its own study seed, plus white logger noise at --noise-db
 (dB re 1 (m/s^2)^2/Hz; one quiet.csv per case, ten rolls long, passed as --noise as the README does). The runs
@@ -15,8 +20,8 @@ hold at most 1000 time histories, so a case is run in batches of floor(1000 / M)
 at study seed 7000 + 1000 c + b.
 Cases: the right model (size); recordings x sqrt(2) (the model 3 dB low); beam.loss_factor x 2; the first mode
 10 % up (beam.youngs_modulus x 1.21: every bending mode x 1.1, and the Hertz contact modulus x 1.095).
-Each recording: `rollspec compare model.h5 roll-*.csv [--noise quiet.csv] --format json` (M from the file
-count). Figures: the share with p < 0.05 (with its Wilson 95 % interval), the share of tested bands inside the
+Each recording: `rollspec compare model-seed<s>.h5 roll-*.csv [--noise quiet.csv] --format json` (M from the
+file count). Figures: the share with p < 0.05 (with its Wilson 95 % interval), the share of tested bands inside the
 per-band 95 % prediction intervals for M rolls (right model: the mean over recordings and the pooled share), and
 the level offset. Writes bench/records/recording-verdict.json (or --record) through the bench record writer;
 --work keeps the model, quiet recordings and every recording's verdict (default: a temporary folder, removed).
@@ -45,6 +50,7 @@ from rollspec_post.script_main import fail, own_folder, require_program, script_
 EX_USAGE, EX_DATAERR, EX_SOFTWARE, EX_CANTCREAT = 64, 65, 70, 73
 LEVEL = 0.05
 MAX_HISTORIES = 1000  # [output] time_histories' largest value
+RECORDING_SEEDS = 7000  # the recordings' study seeds start here; the model seeds stay below
 # (name, (section, key, factor) of the run's one changed key, factor on the recorded acceleration, label)
 CASES = [
     ("right", None, 1.0, "right model"),
@@ -116,9 +122,9 @@ def half_width(band):
     return None if lo is None or hi is None else (hi - lo) / 2
 
 
-def verdict(binary, folder, files, noise):
-    """compare's answer on one recording, reduced to what the figures need."""
-    args = ["compare", "../model.h5", *files] + (["--noise", "../" + noise] if noise else []) + ["--format", "json"]
+def verdict(binary, folder, files, noise, model):
+    """compare's answer on one recording against one model run, reduced to what the figures need."""
+    args = ["compare", "../" + model, *files] + (["--noise", "../" + noise] if noise else []) + ["--format", "json"]
     j = json.loads(run(binary, args, folder).stdout)
     tested = [b for b in j["bands"] if b["use"] == "test"]
     o = j["level_offset"] or {}
@@ -140,7 +146,7 @@ def run_case(a, case, work, noise_sigma):
     noise = None
     for b in range((a.recordings + per_batch - 1) // per_batch):
         n = min(per_batch, a.recordings - b * per_batch)
-        seed = 7000 + 1000 * index + b
+        seed = RECORDING_SEEDS + 1000 * index + b
         rolls = work / f"rolls-{name}.h5"
         run(a.bin, ["run", "rig.ini", "--out", rolls.name, "--quiet"]
             + sets(a.edits + overrides + [f"study.seed={seed}", f"study.realisations={n * a.rolls}",
@@ -153,7 +159,9 @@ def run_case(a, case, work, noise_sigma):
             quiet_t = np.arange(10 * t.size) / fs
             write_csv(work / noise, quiet_t, sigma * np.random.default_rng([seed, 0]).standard_normal(quiet_t.size))
         for r in range(n):
-            folder = work / f"{name}-{b * per_batch + r + 1:04d}"
+            i = b * per_batch + r  # the recording's index; its block picks the model run
+            block = i // (a.recordings // len(a.models))
+            folder = work / f"{name}-{i + 1:04d}"
             folder.mkdir()
             rng = np.random.default_rng([seed, r + 1])
             files = []
@@ -161,10 +169,10 @@ def run_case(a, case, work, noise_sigma):
                 files.append(f"roll-{k + 1}.csv")
                 x = factor * acc[r * a.rolls + k]
                 write_csv(folder / files[-1], t, x + sigma * rng.standard_normal(x.size) if sigma else x)
-            v = verdict(a.bin, folder, files, noise)
+            v = verdict(a.bin, folder, files, noise, a.models[block][1])
             if v["averages"] != a.rolls:
                 raise BenchError(f"compare took {v['averages']} rolls from {a.rolls} recordings in {folder}")
-            found.append(v | {"seed": seed, "recording": r})
+            found.append(v | {"seed": seed, "recording": r, "model_seed": a.models[block][0]})
             shutil.rmtree(folder)
         print(f"{name}: {len(found)}/{a.recordings} recordings", file=sys.stderr, flush=True)
     (work / f"verdicts-{name}.json").write_text(json.dumps(found) + "\n")
@@ -184,6 +192,12 @@ def rejection(found):
     k = sum(v["p"] < LEVEL for v in tested)
     lo, hi = wilson(k, len(tested))
     return k, len(tested), lo, hi
+
+
+def per_model_seed(found):
+    """[[model seed, rejected, tested]] in the order of the model seeds."""
+    seeds = sorted({v["model_seed"] for v in found})
+    return [[s, *rejection([v for v in found if v["model_seed"] == s])[:2]] for s in seeds]
 
 
 def meets(value, target):
@@ -209,6 +223,7 @@ def figures(results, f1):
     for name, _, factor, label in CASES:
         found = results[name]
         k, n, lo, hi = rejection(found)
+        blocks = per_model_seed(found)
         offsets = [v["offset"] for v in found if v["offset"] is not None]
         truth = 10 * math.log10(1.0 / factor**2)  # model - measurement
         held = sum(v["offset_lo"] <= truth <= v["offset_hi"] for v in found if v["offset"] is not None)
@@ -223,7 +238,13 @@ def figures(results, f1):
             "offset_truth_db": truth, "offset_interval_holds": held,
             "bands_tested": [int(min(v["tested"] for v in found)), int(np.median([v["tested"] for v in found])),
                              int(max(v["tested"] for v in found))],
-            "p_values": [v["p"] for v in found]}
+            "p_values": [v["p"] for v in found], "per_model_seed": blocks}
+        if kind == "size":  # each block's size is conditional on its one model run
+            sizes = [r / t for _, r, t in blocks if t]
+            each = len(found) // len(blocks)
+            rows.append([f"size: right model, conditional on one model run ({each} recordings each): median over "
+                         f"the {len(blocks)} model seeds", round(float(np.median(sizes)), 3),
+                         f"min {min(sizes):.3f} .. max {max(sizes):.3f} over the model seeds", "", "", n])
     right = results["right"]
     shares = [v["inside"] / v["tested"] for v in right if v["tested"]]
     mean_share = float(np.mean(shares))
@@ -250,9 +271,20 @@ def figures(results, f1):
     return rows, data, note
 
 
-def make_model(a, work):
+def make_models(a, work):
+    """[(study seed, file)]: the model run at the template's seed + j, j = 0 .. S - 1."""
     run(a.bin, ["init", "ball-on-beam", "--out", "rig.ini"], work)
-    run(a.bin, ["run", "rig.ini", "--out", "model.h5", "--quiet"] + sets(a.edits + a.model_sets), work)
+    base = int(study_value(work, "study", "seed"))
+    if base + a.model_seeds > RECORDING_SEEDS:
+        raise BenchError(f"--model-seeds {a.model_seeds}: the model seeds {base} .. {base + a.model_seeds - 1} "
+                         f"would meet the recordings' (from {RECORDING_SEEDS}); allowed: S <= "
+                         f"{RECORDING_SEEDS - base}", EX_USAGE)
+    models = []
+    for seed in range(base, base + a.model_seeds):
+        models.append((seed, f"model-seed{seed}.h5"))
+        run(a.bin, ["run", "rig.ini", "--out", models[-1][1], "--quiet"]
+            + sets(a.edits + a.model_sets + [f"study.seed={seed}"]), work)
+    return models
 
 
 def study_value(work, section, key):
@@ -273,11 +305,16 @@ def main():
     p.add_argument("--rolls", type=int, default=5, help="M rolls per recording, one CSV each (default 5)")
     p.add_argument("--noise-db", default="-140", help="white logger noise, dB re 1 (m/s^2)^2/Hz, or none")
     p.add_argument("--realisations", type=int, help="K of the model (default: the template's)")
+    p.add_argument("--model-seeds", type=int, default=10,
+                   help="S model runs, one per block of N / S recordings (default 10; 1: one model for all)")
     p.add_argument("--work", help="keep the model and the verdicts here (default: a temporary folder)")
     p.add_argument("--record", default=str(ROOT / "bench" / "records" / "recording-verdict.json"))
     a = p.parse_args()
     if a.recordings < 1 or not 1 <= a.rolls <= MAX_HISTORIES:
         fail(f"--recordings {a.recordings} --rolls {a.rolls}: allowed: N >= 1 and 1 <= M <= {MAX_HISTORIES}", EX_USAGE)
+    if not 1 <= a.model_seeds <= a.recordings or a.recordings % a.model_seeds:
+        fail(f"--model-seeds {a.model_seeds} --recordings {a.recordings}: allowed: S from 1 to N that divides N "
+             "(S equal blocks of recordings)", EX_USAGE)
     if a.realisations is not None and a.realisations < 2:
         fail(f"--realisations {a.realisations}: allowed: a whole number >= 2", EX_USAGE)
     try:
@@ -304,9 +341,9 @@ def measure(a, work, noise_db):
     start, cpu0, busy0 = time.monotonic(), bench_record.own_cpu(), bench_record.busy_seconds()
     a.edits = [f"{s}.{k}={v}" for s, k, v in readme_edits()]
     a.model_sets = [f"study.realisations={a.realisations}"] if a.realisations else []
-    make_model(a, work)
+    a.models = make_models(a, work)
     k_model = a.realisations or int(study_value(work, "study", "realisations"))
-    model_seed = study_value(work, "study", "seed")
+    seeds = [s for s, _ in a.models]
 
     def noise_sigma(fs):  # white noise of one-sided level G: sigma^2 = G fs / 2
         return 0.0 if noise_db is None else math.sqrt(10 ** (noise_db / 10) * fs / 2)
@@ -323,12 +360,16 @@ def measure(a, work, noise_db):
         "case (ten rolls long), given to compare as --noise")
     per_batch = MAX_HISTORIES // a.rolls
     settings = (f"The README's ten-minute rig ({', '.join(a.edits)}; Hertz contact, no random table), model "
-                f"K = {k_model} at study seed {model_seed}; {a.recordings} recordings per case of M = {a.rolls} "
-                f"rolls each (one CSV per roll, Time (s), Acc (m/s^2)), from runs of up to {per_batch} recordings "
-                f"at study seed 7000 + 1000 case + batch; {noise}; compare --format json at level {LEVEL}, "
+                f"K = {k_model}, run anew for each of S = {len(seeds)} equal blocks of a case's recordings "
+                f"(block j at study seed {seeds[0]} + j: seeds {seeds[0]} .. {seeds[-1]}, the same runs for every "
+                "case), so the size and the power are over a new model run and a new recording, the question the "
+                f"test's level answers; {a.recordings} recordings per case of M = {a.rolls} rolls each (one CSV "
+                f"per roll, Time (s), Acc (m/s^2)), from runs of up to {per_batch} recordings at study seed "
+                f"{RECORDING_SEEDS} + 1000 case + batch; {noise}; compare --format json at level {LEVEL}, "
                 f"intervals: Wilson 95 %. First mode {f1['right']:.2f} Hz, {f1['mode']:.2f} Hz in the shifted "
                 f"case. The whole command took {wall / 60:.1f} min wall, {cpu / 60:.1f} min CPU.")
-    data |= {"K": k_model, "M": a.rolls, "N": a.recordings, "noise_db": noise_db, "wall_s": wall, "cpu_s": cpu}
+    data |= {"K": k_model, "M": a.rolls, "N": a.recordings, "model_seeds": seeds, "noise_db": noise_db,
+             "wall_s": wall, "cpu_s": cpu}
     tested = data["cases"]["right"]["bands_tested"]
     left = {u: sum(b[1] == u for v in results["right"] for b in v["bands"]) for u in ("noise floor", "flat floor")}
     note += (f"Bands tested per recording of the right model (min, median, max): {tested[0]}, {tested[1]}, "
