@@ -40,6 +40,8 @@ class PathRunner {
         popt_(path_options) {}
 
   double max_approach(std::size_t* position) const { return window_.max_approach(position); }
+  // ε (README Eq. 9) of each solve of the last path run.
+  const std::vector<double>& solve_error() const { return solve_error_; }
   [[noreturn]] void reject(std::size_t k, double d, const char* prefix = "") const { window_.reject(k, d, prefix); }
 
   // One path at approach d (BF-2). `previous` (optional): the fields of an earlier path, used as
@@ -55,6 +57,7 @@ class PathRunner {
     out.position = positions_;
     out.force.resize(count);
     out.stiffness.assign(count, std::numeric_limits<double>::quiet_NaN());
+    out.frozen_stiffness.assign(count, std::numeric_limits<double>::quiet_NaN());
     out.converged = true;
     for (std::size_t k = 0; k < count; ++k)
       if (d > window_.limit(k)) reject(k, d);
@@ -69,6 +72,7 @@ class PathRunner {
     // chunk_positions alone and every position's result on its chunk alone: the same bits for any
     // thread count. The sums below run in position order after the loop.
     std::vector<ContactResult> results(count);
+    solve_error_.assign(count, 0.0);
     const auto run_chunk = [&](ContactSolver& s, std::size_t k0, std::size_t k1) {
       std::vector<double> p;
       for (std::size_t k = k0; k < k1; ++k) {
@@ -130,11 +134,13 @@ class PathRunner {
       out.iterations += r.iterations;
       out.stiffness_iterations += r.stiffness_iterations;
       out.max_error = std::max(out.max_error, r.error);
+      solve_error_[k] = r.error;
       out.converged = out.converged && r.converged && (!opt.compute_stiffness || r.stiffness_converged);
       out.force[k] = r.force;
       force_sum += r.force;
       if (opt.compute_stiffness) {
         out.stiffness[k] = r.stiffness;
+        out.frozen_stiffness[k] = r.frozen_stiffness;
         stiffness_sum += r.stiffness;
         frozen_sum += r.frozen_stiffness;
       }
@@ -159,6 +165,7 @@ class PathRunner {
   PathWindow window_;
   std::vector<double> positions_;
   BlockedForceOptions popt_;
+  std::vector<double> solve_error_;
 };
 
 void accumulate(BlockedForcePath& total, const BlockedForcePath& path) {
@@ -245,6 +252,86 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
   }
 }
 
+// (d, K̄) of the exact paths of one search (BF-8'): the secant of K̄ over the two farthest apart,
+// relative to the last, dK̄/dd / K̄ (NaN without two distinct approaches).
+struct SlopePoints {
+  std::vector<double> approach, k0;
+  double relative_slope() const {
+    const std::size_t n = approach.size();
+    if (n < 2) return std::numeric_limits<double>::quiet_NaN();
+    std::size_t far = 0;
+    for (std::size_t j = 0; j + 1 < n; ++j)
+      if (std::fabs(approach[j] - approach[n - 1]) > std::fabs(approach[far] - approach[n - 1])) far = j;
+    const double dd = approach[n - 1] - approach[far];
+    if (dd == 0.0 || !(k0[n - 1] > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    return (k0[n - 1] - k0[far]) / dd / k0[n - 1];
+  }
+  // on_path that also records the paths solved to `tolerance` (a loose cold path is not).
+  std::function<void(const BlockedForcePath&, double)> recorder(
+      double tolerance, const std::function<void(const BlockedForcePath&, double)>& user) {
+    return [this, tolerance, user](const BlockedForcePath& p, double e) {
+      if (p.max_error < tolerance && std::isfinite(p.k0)) {
+        approach.push_back(p.approach);
+        k0.push_back(p.k0);
+      }
+      if (user) user(p, e);
+    };
+  }
+};
+
+// BF-8: one path at d (solves to the answer's tolerance, cold per chunk), moved onto the load W to
+// first order along the edge-corrected stiffness, with each F0's error bound.
+BlockedForcePath one_path(PathRunner& runner, const SolverOptions& opt, double load, double d, double step0,
+                          const BlockedForceOptions& popt, std::size_t store_count, double presearch_slope,
+                          BlockedForcePath& total) {
+  std::size_t limiting = 0;
+  const double d_cap = runner.max_approach(&limiting);
+  SolverOptions loose = opt;
+  loose.tolerance = std::max(opt.tolerance, popt.answer_tolerance);
+  loose.stiffness_tolerance = std::max(opt.stiffness_tolerance, popt.answer_tolerance);
+  // Paths (usually one: the pre-search's root) until the mean is within answer_load_tolerance of W.
+  SlopePoints points;
+  BlockedForcePath path =
+      search(runner, loose, load, popt.answer_load_tolerance, popt.max_paths, popt.warm_start != PathWarmStart::Cold,
+             store_count, d, step0, 0.0, total, points.recorder(loose.tolerance, popt.on_path));
+  if (!path.converged || !(path.k0 > 0.0)) {
+    path.converged = false;
+    return path;
+  }
+  const double step = (load - path.mean_force) / path.k0;
+  if (path.approach + step > d_cap) {
+    std::ostringstream os;
+    os.precision(9);
+    os << "the load " << load << " N needs an approach beyond the largest the strip and solver window allow; ";
+    runner.reject(limiting, path.approach + step, os.str().c_str());
+  }
+  const std::vector<double>& eps = runner.solve_error();
+  path.force_error.resize(path.force.size());
+  double force_sum = 0.0;
+  for (std::size_t k = 0; k < path.force.size(); ++k) {
+    path.force_error[k] =
+        std::fabs(step) * std::fabs(path.stiffness[k] - path.frozen_stiffness[k]) + eps[k] * std::fabs(path.force[k]);
+    path.force[k] += step * path.stiffness[k];
+    force_sum += path.force[k];
+  }
+  // BF-8': k moves with d too (a 1e-2 load step moved k0 by 0.7 % on the seed 002 rig, the bands by
+  // 0.2 dB through the contact resonance): K̄'s relative slope from this search's own paths if it
+  // ran two, else from the pre-search's (another subset of positions, the same strip).
+  const double slope = points.approach.size() >= 2 ? points.relative_slope() : presearch_slope;
+  const double k_factor = std::isfinite(slope) ? 1.0 + step * slope : 1.0;
+  for (std::size_t k = 0; k < path.force.size(); ++k) {
+    path.stiffness[k] *= k_factor;
+    path.frozen_stiffness[k] *= k_factor;
+  }
+  path.k0 *= k_factor;
+  path.k0_frozen *= k_factor;
+  path.k0_step = k_factor - 1.0;
+  path.load_step = step;
+  path.approach += step;
+  path.mean_force = force_sum / static_cast<double>(path.force.size());
+  return path;
+}
+
 }  // namespace
 
 BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
@@ -253,6 +340,8 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
                                        const BlockedForceOptions& path_options) {
   if (!(load > 0.0) || !std::isfinite(load)) fail("load must be finite, > 0");
   if (!(path_options.load_tolerance > 0.0)) fail("load_tolerance must be > 0");
+  if (!(path_options.answer_tolerance >= 0.0 && path_options.answer_tolerance < 1.0))
+    fail("answer_tolerance must be in [0, 1)");
   PathRunner runner(solver, strip, strip_heights, radius, shape, positions, path_options);
   SolverOptions opt = options;
   opt.compute_stiffness = true;
@@ -266,6 +355,7 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
   };
   BlockedForcePath total;
   double d_start = d_hertz;
+  SlopePoints presearch_points;
   // BF-4': pre-search on every S-th position to 1e-6, then the full path from there.
   const std::size_t m = path_options.presearch_positions;
   if (m > 0 && positions.size() >= 4 * m) {
@@ -279,14 +369,18 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, sub_options);
     const BlockedForcePath sub =
         search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance), path_options.max_paths, warm,
-               store_count(subset.size()), d_hertz, d_hertz, path_options.cold_tolerance, total, path_options.on_path);
+               store_count(subset.size()), d_hertz, d_hertz, path_options.cold_tolerance, total,
+               presearch_points.recorder(opt.tolerance, path_options.on_path));
     total.presearch_paths = total.paths;
     total.paths = 0;
     if (sub.converged) d_start = sub.approach;
   }
-  BlockedForcePath path =
-      search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
-             store_count(positions.size()), d_start, d_hertz, path_options.cold_tolerance, total, path_options.on_path);
+  BlockedForcePath path = path_options.answer_tolerance > 0.0
+                              ? one_path(runner, opt, load, d_start, d_hertz, path_options,
+                                         store_count(positions.size()), presearch_points.relative_slope(), total)
+                              : search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
+                                       store_count(positions.size()), d_start, d_hertz, path_options.cold_tolerance,
+                                       total, path_options.on_path);
   path.paths = total.paths;
   path.presearch_paths = total.presearch_paths;
   path.solves = total.solves;

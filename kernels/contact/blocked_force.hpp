@@ -90,6 +90,26 @@
 // depends on m alone, so the path has the same bits for any thread count. The pre-search's subset
 // (BF-4'), whose positions lie farther apart than a window, is cut in four chunks.         (BF-6c)
 //
+// One path at the answer's accuracy (answer_tolerance > 0; 0, the default, is the exhaustive search
+// above, the reference). After the pre-search (BF-4'), ONE path at its root d: solves and stiffness
+// solves to max(tolerance, answer_tolerance), cold-started per chunk (BF-6c, BF-6) — more paths of the
+// search (BF-3, BF-6') at that tolerance only while |F̄ − W| > answer_load_tolerance · W (1e-2: k0 must follow
+// the step to ~0.2 %, BF-8') —, then moved onto the load to first order along the edge-corrected stiffness
+// (README Eq. 13–15),
+//
+//     δd = (W − F̄(d)) / K̄(d),  d0 = d + δd,  F0(x_k; d0) = F0(x_k; d) + δd k(x_k; d)       (BF-8)
+//
+// so the mean meets W exactly; k moves with it, k(x_k; d0) = k(x_k; d) (1 + δd K̄'/K̄), K̄'/K̄ the secant
+// of K̄ over the search's exact paths (its own if it ran two, else the pre-search's)      (BF-8')
+// Its own error bound per position: the two slopes' disagreement over
+// the step, |δd| |k − k_frozen| (the contact edge's growth, which the first order cannot place
+// closer), plus the solve's ε (README Eq. 9) times |F0|. Measured on the seed 002 rig (1024
+// positions, answer_tolerance 1e-3, whole `run`): F0's third-octave band levels within 0.003 dB of the
+// exhaustive search, k0 within 2e-4, the study's bands within 0.03 dB, at 0.6-0.7 of its CPU (two paths:
+// the pre-search left the load 1.4e-2 off; stopping at that one path, 0.5 of the CPU, left k0 0.4 % off
+// and the bands 0.12 dB, through the contact resonance). Every m-th position instead aliases F0 (m = 2:
+// 0.11 dB, bench/contact/measurement_log.md).
+//
 // Use in the dynamics (D-11): F_c = F0(t) + k0 (w1(ξ) − w2 + d0) + c0 (ẇ1 − ẇ2) with
 // F0(t) = F0(x = v t); the PSD of F0 along the path in cycles/m (sample rate 1/Δx) is mapped to
 // time by D-2.                                                                              (BF-7)
@@ -122,6 +142,12 @@ struct BlockedForceOptions {
   // the chunks run in parallel (OpenMP, one solver per thread). The cut depends on this number
   // alone: the same bits for any thread count.
   std::size_t chunk_positions = 0;
+  // BF-8: > 0, one path with its solves to this tolerance, moved onto the load to first order;
+  // 0 (default): the exhaustive search (BF-3), the reference path.
+  double answer_tolerance = 0.0;
+  // BF-8: its paths (solved to answer_tolerance) stop when |F̄ − W| ≤ this · W; the first-order step
+  // then puts the mean on W.
+  double answer_load_tolerance = 1e-2;
   // blocked_force_at_load keeps each position's field and rate dp/dd (16 bytes per window cell and
   // position) to start the next path from (BF-6') while they fit in this many bytes;
   // beyond it only the first position's.
@@ -141,16 +167,21 @@ struct BlockedForcePath {
   std::vector<double> position;  // x_k (m, strip coordinates)
   std::vector<double> force;     // F0(x_k; d0) (N), BF-2
   std::vector<double>
-      stiffness;            // k(x_k; d0) (N/m), frozen set + sub-cell edge (README Eq. 13–15); NaN if not computed
-  double approach = 0.0;    // d0 (m), from the plane h = 0 (BF-2)
-  double k0 = 0.0;          // K̄(d0) (N/m), BF-3, mean of `stiffness`; NaN if stiffness not computed
-  double k0_frozen = 0.0;   // the same mean of the frozen-set k (README Eq. 11): exact dF̄/dd
-  double mean_force = 0.0;  // F̄(d0) (N)
-  double max_error = 0.0;   // largest stopping-rule ε (README Eq. 9) of the returned path
-  int paths = 0;            // full-path evaluations (1 for blocked_force_path)
-  int presearch_paths = 0;  // evaluations of the pre-search subset (BF-4')
-  int solves = 0;           // contact solves over all paths (pre-search included)
-  int iterations = 0;       // CG iterations of those solves
+      stiffness;  // k(x_k; d0) (N/m), frozen set + sub-cell edge (README Eq. 13–15); NaN if not computed
+  std::vector<double> frozen_stiffness;  // k_frozen(x_k; d0) (N/m), README Eq. 11; NaN if not computed
+  // BF-8 only (empty otherwise): the bound |δd| |k − k_frozen| + ε |F0| on each F0 (N).
+  std::vector<double> force_error;
+  double k0_step = 0.0;          // BF-8': the relative change of k0 (and of every k) moved with the step
+  double load_step = 0.0;        // BF-8: δd (m), the first-order step onto the load (0 for the exhaustive search)
+  double approach = 0.0;         // d0 (m), from the plane h = 0 (BF-2)
+  double k0 = 0.0;               // K̄(d0) (N/m), BF-3, mean of `stiffness`; NaN if stiffness not computed
+  double k0_frozen = 0.0;        // the same mean of the frozen-set k (README Eq. 11): exact dF̄/dd
+  double mean_force = 0.0;       // F̄(d0) (N)
+  double max_error = 0.0;        // largest stopping-rule ε (README Eq. 9) of the returned path
+  int paths = 0;                 // full-path evaluations (1 for blocked_force_path)
+  int presearch_paths = 0;       // evaluations of the pre-search subset (BF-4')
+  int solves = 0;                // contact solves over all paths (pre-search included)
+  int iterations = 0;            // CG iterations of those solves
   int stiffness_iterations = 0;  // CG iterations of their frozen-set stiffness solves
   // Every solve (and stiffness solve, if computed) of the returned path converged; for
   // blocked_force_at_load also |F̄ − W| ≤ load_tolerance · W. Never true for an unfinished result.

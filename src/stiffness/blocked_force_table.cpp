@@ -49,6 +49,11 @@ const TableKind kBlockedForceTableKind = {kBlockedForceFileType, "/blocked_force
 std::string BlockedForceTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
   for (double v : {approach, k0, mean_force}) h = io::fnv1a64(&v, sizeof v, h);
+  // BF-8's columns enter only when present: the exhaustive table's checksum is unchanged.
+  if (!force_error.empty()) {
+    h = column_hash({&force_error}, h);
+    for (double v : {answer_tolerance, load_step}) h = io::fnv1a64(&v, sizeof v, h);
+  }
   return io::hex16(h);
 }
 
@@ -62,8 +67,12 @@ std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, dou
   std::ostringstream in;
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[blocked_force]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
-     << "\nchunk_positions = " << kChunkPositions << "\nwarm_start = strip"
-     << "\nload_tolerance = " << io::exact_text(strip_load_tolerance(ts.stiffness.solver)) << "\nstiffness_tolerance = "
+     << "\nchunk_positions = " << kChunkPositions << "\nwarm_start = strip";
+  // BF-8 only when chosen: the exhaustive table keeps its inputs (and cache file) of before.
+  if (ts.blocked_force.answer_tolerance > 0.0)
+    in << "\nanswer_tolerance = " << io::exact_text(ts.blocked_force.answer_tolerance)
+       << "\nanswer_load_tolerance = " << io::exact_text(contact::BlockedForceOptions{}.answer_load_tolerance);
+  in << "\nload_tolerance = " << io::exact_text(strip_load_tolerance(ts.stiffness.solver)) << "\nstiffness_tolerance = "
      << io::exact_text(std::max(contact::SolverOptions{}.stiffness_tolerance, ts.stiffness.solver.tolerance)) << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
@@ -78,6 +87,11 @@ void BlockedForceTable::load_from(const io::Hdf5Reader& r) {
   k0 = r.double_attribute("/blocked_force", "k0");
   mean_force = r.double_attribute("/blocked_force", "mean_force");
   load = r.double_attribute("/blocked_force", "load");
+  if (r.exists("/blocked_force/force_error")) {
+    force_error = r.read("/blocked_force/force_error");
+    answer_tolerance = r.double_attribute("/blocked_force", "answer_tolerance");
+    load_step = r.double_attribute("/blocked_force", "load_step");
+  }
 }
 
 BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGeometry& geo, double radius,
@@ -115,6 +129,7 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
     // BF-3 to the solves' own accuracy (as the filter's ER-1): the mean of forces each solved to the
     // solver tolerance cannot be placed on the load more closely; a tighter stop costs a whole path.
     path_opts.load_tolerance = strip_load_tolerance(opts);
+    path_opts.answer_tolerance = ts.blocked_force.answer_tolerance;
     int evaluated = 0;
     auto last = std::chrono::steady_clock::now();
     const auto start = last;
@@ -171,6 +186,9 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
   t.k0 = path.k0;
   t.mean_force = path.mean_force;
   t.load = load;
+  t.force_error = path.force_error;
+  t.answer_tolerance = ts.blocked_force.answer_tolerance;
+  t.load_step = path.load_step;
   f0_psd(t, geo, -1);
   return t;
 }
@@ -243,6 +261,12 @@ void BlockedForceTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/blocked_force", "k0", k0);
   w.attribute("/blocked_force", "mean_force", mean_force);
   w.attribute("/blocked_force", "load", load);
+  if (!force_error.empty()) {
+    w.write("/blocked_force/force_error", {force_error.size()}, force_error.data(), "N",
+            "estimated error of each F0 (contact BF-8: |step| |k - k_frozen| + solve tolerance |F0|)");
+    w.attribute("/blocked_force", "answer_tolerance", answer_tolerance);
+    w.attribute("/blocked_force", "load_step", load_step);
+  }
 }
 
 CachedTable blocked_force_cached_table(const TableStudy& ts, const BlockedForceGeometry& g, double radius,

@@ -23,6 +23,10 @@ struct BlockedForceTable : TableData {
   std::vector<double> position, force, stiffness;  // m, N, N/m along the path
   std::vector<double> psd_wavenumber, psd;         // rad/m, N^2 m / rad (one-sided PSD of F0 - mean)
   double approach = 0.0, k0 = 0.0, mean_force = 0.0, load = 0.0;
+  // contact BF-8 only (answer_tolerance > 0; empty / 0 for the exhaustive search): each F0's estimated
+  // error (N), the solves' tolerance and the first-order step onto the load (m).
+  std::vector<double> force_error;
+  double answer_tolerance = 0.0, load_step = 0.0;
   // G of F0 at wavenumber k: log-log between the PSD bins, the first bin's level below them, zero
   // above the path's Nyquist wavenumber.
   double psd_at(double k) const;

@@ -24,6 +24,13 @@ std::vector<KeySpec> BlockedForceSection::keys() {
           "Welch segment (positions, 16 or more) of the F0 PSD along the path; 0: four times the F0 correlation "
           "length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
           std::string("0"), 0, 1 << 20),
+      real_key("blocked_force", "answer_tolerance", "",
+               "[contact] blocked_force = solver: 0, the reference path: the exhaustive load search, every position "
+               "solved to [stiffness] tolerance on every path until the mean force meets the load; > 0 (e.g. 1e-3): "
+               "the path's solves to this tolerance, stopped within 1e-2 of the load and put on it to first order "
+               "along the stiffness (kernels/contact BF-8; about half the CPU on the seed 002 rig), each F0's "
+               "estimated error kept in the table (force_error)",
+               std::string("0"), 0.0, 0.1),
       integer_key("blocked_force", "leave_out",
                   "[contact] blocked_force = solver: Welch segment (0 .. segments - 1) of F0 along the path left out "
                   "of the table's PSD, from the cached table without a new solve: a leave-one-out sub-table for the "
@@ -42,6 +49,7 @@ BlockedForceSection BlockedForceSection::parse(const KeyReader& s) {
   b.strip_length_origin = {s.where("blocked_force.strip_length")};
   b.window_origin = {s.where("blocked_force.window")};
   b.segment_origin = {s.where("blocked_force.segment")};
+  b.answer_tolerance = s.real("blocked_force.answer_tolerance");
   b.leave_out = s.integer("blocked_force.leave_out");
   b.leave_out_origin = {s.where("blocked_force.leave_out")};
   return b;

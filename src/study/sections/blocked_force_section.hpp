@@ -14,6 +14,7 @@ class KeyReader;
 struct BlockedForceSection {
   double strip_length = 0.0;                    // m; 0: derived
   long long window = 0, step = 0, segment = 0;  // 0: derived
+  double answer_tolerance = 0.0;                // contact BF-8; 0: the exhaustive search (the reference)
   long long leave_out = -1;                     // >= 0: the sub-table without this Welch segment of F0 (D-30d)
   KeyOrigin strip_length_origin, window_origin, segment_origin, leave_out_origin;
 
