@@ -1,11 +1,15 @@
 #include "src/scenes/scene_references.hpp"
 
+#include <cstdint>
+
+#include "kernels/spectral/ensemble_interval.hpp"
 #include "src/scenes/ball_on_beam_sections.hpp"
 #include "src/scenes/ball_on_beam_settings.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/rolling_pipe_sections.hpp"
 #include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/study/sections/surface_section.hpp"
 
 namespace rollspec::scenes {
@@ -15,9 +19,14 @@ using Ids = std::vector<std::string>;
 
 void add(Ids& to, const Ids& more) { to.insert(to.end(), more.begin(), more.end()); }
 
-// An ensemble's sensor spectra: Welch PSDs, their degrees of freedom, third-octave bands and the
-// interval of the ensemble mean.
-Ids ensemble_spectra() { return {"Welch 1967", "D-15", "D-16", "D-17", "D-21"}; }
+// An ensemble's sensor spectra: Welch PSDs, their degrees of freedom, third-octave bands and, with
+// enough realisations for one (io/psd_result.cpp interval_method), the interval of the ensemble mean.
+Ids ensemble_spectra(const study::KeyReader& s) {
+  Ids ids = {"Welch 1967", "D-15", "D-16", "D-17"};
+  if (static_cast<std::uint64_t>(study::StudySection::parse(s).realisations) >= spectral::kMinRealisationsForInterval)
+    ids.push_back("D-21");
+  return ids;
+}
 
 // An isotropic rough surface from [surface] method: seed 001's line sums or the 2D Fourier filter.
 Ids isotropic_surface(study::SurfaceMethod m) {
@@ -28,9 +37,9 @@ Ids isotropic_surface(study::SurfaceMethod m) {
 Ids contact_solver() { return {"Polonsky-Keer 1999", "D-6", "D-7"}; }
 }  // namespace
 
-std::vector<std::string> random_oscillator_references(const study::KeyReader&) {
+std::vector<std::string> random_oscillator_references(const study::KeyReader& s) {
   Ids ids = {"D-3", "D-18", "D-19"};
-  add(ids, ensemble_spectra());
+  add(ids, ensemble_spectra(s));
   return ids;
 }
 
@@ -67,7 +76,7 @@ std::vector<std::string> ball_on_beam_references(const study::KeyReader& s) {
     add(ids, {"ER-1..ER-7"});
     add(ids, contact_solver());
   }
-  add(ids, ensemble_spectra());
+  add(ids, ensemble_spectra(s));
   return ids;
 }
 
@@ -79,7 +88,7 @@ std::vector<std::string> rolling_pipe_references(const study::KeyReader& s) {
     add(ids, {"D-3"});
   else
     add(ids, isotropic_surface(study::SurfaceSection::parse(s).method));
-  add(ids, ensemble_spectra());
+  add(ids, ensemble_spectra(s));
   return ids;
 }
 
