@@ -56,6 +56,15 @@ const std::vector<Reference>& reference_table() {
       {"D-18", "rollspec theory notes: exact oscillator step (kernels/spectral/README.md)", ""},
       {"D-19", "rollspec theory notes: random oscillator exact PSD (kernels/spectral/README.md)", ""},
       {"D-21", "rollspec theory notes: interval of an ensemble mean (kernels/spectral/README.md)", ""},
+      {"D-22", "rollspec theory notes: prediction interval for a measurement (kernels/spectral/README.md)", ""},
+      {"D-26", "rollspec theory notes: combined test over bands, Hotelling T2 (kernels/spectral/README.md)", ""},
+      {"D-31",
+       "rollspec theory notes: the verdict with the table's own error, parametric bootstrap "
+       "(kernels/spectral/README.md)",
+       ""},
+      {"D-32", "rollspec theory notes: the measurement as an object (kernels/spectral/README.md)", ""},
+      {"D-33", "rollspec theory notes: the noise floor (kernels/spectral/README.md)", ""},
+      {"D-34", "rollspec theory notes: one level offset (kernels/spectral/README.md)", ""},
       {"B35", "rollspec theory notes: contact-patch filter (kernels/beam/README.md)", ""},
       {"B41..B46", "rollspec theory notes: path table of one rough strip, law = path (kernels/beam/README.md)", ""},
       {"BF-1..BF-7", "rollspec theory notes: blocked force of a rough strip (kernels/contact/README.md)", ""},
@@ -82,6 +91,10 @@ std::vector<std::string> reference_lines(const std::vector<std::string>& ids) {
     out.push_back(std::string(r.id) + " | " + r.citation + " | " + r.doi);
   }
   return out;
+}
+
+std::vector<std::string> read_reference_lines(const Hdf5Reader& r) {
+  return r.exists("/provenance/references") ? r.read_strings("/provenance/references") : std::vector<std::string>{};
 }
 
 void write_references(Hdf5Writer& w, const std::vector<std::string>& ids) {

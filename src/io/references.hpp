@@ -9,6 +9,7 @@
 namespace rollspec::io {
 
 class Hdf5Writer;
+class Hdf5Reader;
 
 struct Reference {
   const char* id;
@@ -26,5 +27,8 @@ std::vector<std::string> reference_lines(const std::vector<std::string>& ids);
 
 // Writes /provenance/references, one string per reference_lines row.
 void write_references(Hdf5Writer& w, const std::vector<std::string>& ids);
+
+// The lines of a file's /provenance/references (none in a file written before it).
+std::vector<std::string> read_reference_lines(const Hdf5Reader& r);
 
 }  // namespace rollspec::io

@@ -1,8 +1,11 @@
 """The papers and theory-note equations a run used reach its result: /provenance/references, one
-"id | citation | doi" string per reference, read through h5py (src/io/references.cpp, src/scenes/scene_references.cpp)."""
+"id | citation | doi" string per reference, read through h5py (src/io/references.cpp, src/scenes/scene_references.cpp);
+`compare --format json` lists them with its own (src/compare/verdict_references.cpp)."""
+import json
+
 import h5py
 
-from conftest import SOURCE, oscillator_study, study_result
+from conftest import SOURCE, measurement_from, oscillator_study, run, study_result
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 CHEAP = ("study.realisations=2", "ball.end=0.2", "spectrum.segment=1024")
@@ -45,3 +48,25 @@ def test_interval_reference_only_with_enough_realisations_for_an_interval(tmp_pa
     enough = references(study_result(oscillator_study(tmp_path, realisations=5), tmp_path, "enough"))
     assert "D-21" not in few and "D-21" in enough
     assert {"D-18", "D-19", "Welch 1967"} <= set(enough) and "seed 001" not in enough
+
+
+def test_compare_json_lists_the_results_references_and_its_own(tmp_path):
+    result = study_result(oscillator_study(tmp_path, realisations=6), tmp_path, "model")
+    meas = measurement_from(result, tmp_path / "meas.csv")
+    r = run(["compare", result, meas, "--measured-averages", 25, "--format", "json"])
+    assert r.returncode == 0, r.stderr
+    refs = json.loads(r.stdout)["references"]
+    ids = [x["id"] for x in refs]
+    assert len(set(ids)) == len(ids), ids
+    assert list(references(result)) == ids[:len(references(result))]  # the result's own, as its file lists them
+    assert {"D-19", "D-32", "D-33", "D-22", "D-34"} <= set(ids), ids
+    assert "D-26" not in ids  # 16 bands and 6 realisations: no combined test, so none cited
+    r = run(["compare", result, meas, "--measured-averages", 25, "--format", "json", "--fmin", 20, "--fmax", 40])
+    j = json.loads(r.stdout)
+    ids = [x["id"] for x in j["references"]]
+    assert j["combined_test"]["defined"] and "D-26" in ids and "D-31" not in ids, ids  # the F law, no table term
+    assert next(x for x in refs if x["id"] == "Welch 1967")["doi"] == "10.1109/TAU.1967.1161901"
+    # without M there is no prediction interval, test or offset to cite
+    r = run(["compare", result, meas, "--format", "json"])
+    ids = [x["id"] for x in json.loads(r.stdout)["references"]]
+    assert "D-32" in ids and not {"D-22", "D-26", "D-34"} & set(ids), ids
