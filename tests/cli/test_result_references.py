@@ -2,6 +2,7 @@
 "id | citation | doi" string per reference, read through h5py (src/io/references.cpp, src/scenes/scene_references.cpp);
 `compare --format json` lists them with its own (src/compare/verdict_references.cpp)."""
 import json
+import shutil
 
 import h5py
 
@@ -70,3 +71,14 @@ def test_compare_json_lists_the_results_references_and_its_own(tmp_path):
     r = run(["compare", result, meas, "--format", "json"])
     ids = [x["id"] for x in json.loads(r.stdout)["references"]]
     assert "D-32" in ids and not {"D-22", "D-26", "D-34"} & set(ids), ids
+
+
+def test_a_stiffness_table_records_the_solver_it_was_built_with(tmp_path):
+    study = tmp_path / "hertz.ini"
+    shutil.copy(SOURCE / "studies" / "hertz.ini", study)
+    r = run(["stiffness", study, "--set", "stiffness.realisations=2", "-q"])
+    assert r.returncode == 0, r.stderr
+    (table,) = (tmp_path / "tables").glob("stiffness-*.h5")
+    refs = references(table)
+    assert {"Polonsky-Keer 1999", "D-6", "D-7"} <= set(refs) and "Welch 1967" not in refs, sorted(refs)
+    assert refs["Polonsky-Keer 1999"][1] == "10.1016/S0043-1648(99)00113-1"
