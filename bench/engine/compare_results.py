@@ -7,7 +7,8 @@ Each study (a name in studies/, default: every studies/*.ini) runs with both bin
 fresh copy of studies/ at the same path (so paths in texts agree): `plan` text, the result file
 (2 realisations, as tests/cli/test_every_study.py runs them) and every table file the run built
 are compared dataset by dataset and attribute by attribute, bit for bit. Ignored: /run/wall_seconds,
-/run/reduce_seconds, the memory available in plan texts and the provenance attributes that name the build, host, time or command line.
+/run/reduce_seconds, the memory available in plan texts, the provenance attributes that name the build, host, time or command line,
+and the /provenance groups (the papers a run cites: provenance, not result data).
 Extra `section.key=value` items after a study name are passed as --set overrides to both binaries,
 to reach code paths no shipped study takes. Exit 1 if anything differs.
 """
@@ -26,6 +27,7 @@ import numpy as np
 AVAILABLE = re.compile(r"available [0-9.]+ [KMGT]?i?B")
 SOURCE = Path(__file__).resolve().parents[2]
 IGNORED_DATASETS = {"run/wall_seconds", "run/reduce_seconds"}
+IGNORED_GROUP = "provenance"  # /provenance, and a sweep point's: what the run cites
 IGNORED_ATTRIBUTES = {"rollspec_version", "git_sha", "library_versions", "created", "host", "command_line"}
 
 
@@ -113,6 +115,8 @@ def compare_h5(pa, pb):
         names_a, names_b = [], []
         fa.visit(names_a.append)
         fb.visit(names_b.append)
+        names_a = [n for n in names_a if IGNORED_GROUP not in n.split("/")]
+        names_b = [n for n in names_b if IGNORED_GROUP not in n.split("/")]
         diffs += [f"/{n}: only in one file" for n in sorted(set(names_a) ^ set(names_b))]
         diffs += attributes_differ("/", fa, fb)
         count = 0

@@ -2,6 +2,7 @@
 // has two ends"). The measurement is the recordings themselves (put through the model's own estimator,
 // src/compare/measured_spectrum.hpp) or a PSD table; the verdict (src/compare/band_verdict.hpp) is
 // computed whole before anything is printed, so a refused input leaves no partial output.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "src/cli/measured_psd.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/compare/band_verdict.hpp"
+#include "src/compare/verdict_references.hpp"
 #include "src/compare/measured_spectrum.hpp"
 #include "src/error.hpp"
 #include "src/io/band_levels.hpp"
@@ -22,6 +24,7 @@
 #include "src/io/input_file.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/provenance.hpp"
+#include "src/io/references.hpp"
 #include "src/io/sweep_point.hpp"
 
 namespace rollspec::cli {
@@ -133,7 +136,8 @@ nlohmann::ordered_json spectrum_json(const compare::MeasuredSpectrum* m) {
 
 nlohmann::ordered_json verdict_json(const std::string& result, const std::string& column, const io::BandLevels& b,
                                     const compare::MeasuredSpectrum& m, const compare::MeasuredSpectrum* noise,
-                                    const compare::Verdict& v, const LossOfContact& loss) {
+                                    const compare::Verdict& v, const LossOfContact& loss,
+                                    const nlohmann::ordered_json& references) {
   using json = nlohmann::ordered_json;
   const bool predict = m.records > 0.0;
   const bool has_interval = b.realisations >= spectral::kMinRealisationsForInterval;
@@ -204,7 +208,23 @@ nlohmann::ordered_json verdict_json(const std::string& result, const std::string
         {"bands", v.test.bands},
         {"verdict", v.test.verdict}}},
       {"measured_psd", spectrum_json(&m)},
-      {"noise_psd", spectrum_json(noise)}};
+      {"noise_psd", spectrum_json(noise)},
+      {"references", references}};
+}
+
+// The result's references (its /provenance/references) then the verdict's own, each once: {id, citation, doi}.
+nlohmann::ordered_json references_json(const io::Hdf5Reader& r, const std::vector<std::string>& verdict_ids) {
+  std::vector<std::string> lines = io::read_reference_lines(r);
+  for (const auto& line : io::reference_lines(verdict_ids))
+    if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& line : lines) {
+    const std::size_t a = line.find(" | "), b = line.rfind(" | ");
+    if (a == std::string::npos || b == a) continue;  // not a reference line: nothing to quote
+    out.push_back(
+        {{"id", line.substr(0, a)}, {"citation", line.substr(a + 3, b - a - 3)}, {"doi", line.substr(b + 3)}});
+  }
+  return out;
 }
 
 std::string offset_line(const compare::Verdict& v, double confidence) {
@@ -395,7 +415,9 @@ int compare_command(const Args& args) {
                  "that error out and holds only for the surface the table was built on\n";
   for (const auto& w : v.warnings) std::cerr << "rollspec compare: WARNING: " << w << "\n";
   if (format == "json") {
-    std::cout << verdict_json(result, column, b, m, o.noise, v, loss).dump(2) << "\n";
+    const bool predict = m.records > 0.0 && b.realisations >= spectral::kMinRealisationsForInterval;
+    const auto references = references_json(r, compare::verdict_references(v, !table, predict));
+    std::cout << verdict_json(result, column, b, m, o.noise, v, loss, references).dump(2) << "\n";
     return 0;
   }
   const bool predict = m.records > 0.0 && b.realisations >= spectral::kMinRealisationsForInterval;

@@ -16,8 +16,10 @@
 #include "src/io/number_text.hpp"
 #include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
+#include "src/io/references.hpp"
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/scenes/memory_estimate.hpp"
+#include "src/scenes/scene_references.hpp"
 #include "src/study/sections/ensemble_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/study/sections/texture_section.hpp"
@@ -142,6 +144,7 @@ int run_single_phase(ResolvedRun& run, const RunRequest& q) {
   io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, run.study.canonical_text(),
                        study::StudySection::parse(run.study).seed);
   w.attribute("/", "scene", run.study.scene());
+  io::write_references(w, scenes::study_references(run.study));
   scene->write_results(w);
   texture_io::write_profile_record(w, "/profiles", study::TextureSection::parse(run.study));
   w.commit();
@@ -185,6 +188,7 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
     io::Hdf5Writer w(run.write_path);
     io::write_provenance(w, io::kResultFileType, io::kResultSchemaVersion, s.canonical_text(), cfg.seed);
     w.attribute("/", "scene", s.scene());
+    io::write_references(w, scenes::study_references(s));
     scene->write_results(w, sums);
     texture_io::write_profile_record(w, "/profiles", study::TextureSection::parse(s));
     write_run_attributes(w, sums, cfg.only);

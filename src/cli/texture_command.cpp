@@ -13,10 +13,12 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/output_target.hpp"
 #include "src/io/provenance.hpp"
+#include "src/io/references.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/cli/run_phases.hpp"
 #include "src/scenes/scene.hpp"
+#include "src/scenes/scene_references.hpp"
 #include "src/study/sections/lines_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/study/sections/surface_section.hpp"
@@ -167,6 +169,7 @@ int texture_command(const Args& args) {
   target.check_kind = false;  // the file's kind is checked before the commit, after the data are known good
   io::Hdf5Writer w(io::check_output_target(target));
   io::write_provenance(w, "rollspec-texture", "1.0", s.canonical_text(), seed);
+  io::write_references(w, scenes::texture_surface_references(s, static_cast<long long>(n_surf)));
   w.attribute("/", "psd", psd.description);
   texture_io::write_profile_record(w, "/profiles", tex);
   // Per-realisation rows name their index; the summary rows, how many realisations they summarise.

@@ -187,6 +187,8 @@ struct SceneInfo {
   std::function<BallContact(const study::KeyReader&)> contact_pair;
   // The modal beam (`rollspec modes`); empty: no modal beam.
   std::function<beam::ModalBeam(const study::KeyReader&)> modal_beam;
+  // The papers and theory-note equations a run of the study uses (io/references.hpp ids, scene_references.hpp).
+  std::function<std::vector<std::string>(const study::KeyReader&)> references;
 };
 
 const std::vector<SceneInfo>& scene_registry();

@@ -6,6 +6,7 @@
 #include "src/scenes/ball_on_beam.hpp"
 #include "src/scenes/random_oscillator.hpp"
 #include "src/scenes/scene.hpp"
+#include "src/scenes/scene_references.hpp"
 #include "src/scenes/rolling_beam.hpp"
 #include "src/scenes/rolling_pipe.hpp"
 #include "src/scenes/stiffness_scene.hpp"
@@ -25,28 +26,30 @@ const std::vector<SceneInfo>& scene_registry() {
        "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
        SceneKind::ensemble, SceneCommand::run, random_oscillator_keys,
        [](const KeyReader& s) { return make_random_oscillator(s); }, random_oscillator_result_shape,
-       random_oscillator_first_keys(), random_oscillator_memory, nullptr, nullptr, nullptr},
+       random_oscillator_first_keys(), random_oscillator_memory, nullptr, nullptr, nullptr,
+       random_oscillator_references},
       {"ball-on-beam", "smooth rigid ball rolling over a rough modal beam; sensor acceleration PSDs (seeds 001, 002)",
        SceneKind::ensemble, SceneCommand::run, ball_on_beam_keys,
        [](const KeyReader& s) { return make_ball_on_beam(s); }, ball_on_beam_result_shape, ball_on_beam_first_keys(),
-       ball_on_beam_memory, ball_on_beam_relations, ball_on_beam_contact_pair, study_modal_beam},
+       ball_on_beam_memory, ball_on_beam_relations, ball_on_beam_contact_pair, study_modal_beam,
+       ball_on_beam_references},
       {"rolling-beam", "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
        SceneKind::single_run, SceneCommand::run, rolling_beam_keys,
        [](const KeyReader& s) { return make_rolling_beam(s); }, nullptr, rolling_beam_first_keys(), rolling_beam_memory,
-       rolling_beam_relations, nullptr, nullptr},
+       rolling_beam_relations, nullptr, nullptr, rolling_beam_references},
       {"rolling-pipe",
        "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs",
        SceneKind::ensemble, SceneCommand::run, rolling_pipe_keys,
        [](const KeyReader& s) { return make_rolling_pipe(s); }, rolling_pipe_result_shape, rolling_pipe_first_keys(),
-       rolling_pipe_memory, rolling_pipe_relations, nullptr, nullptr},
+       rolling_pipe_memory, rolling_pipe_relations, nullptr, nullptr, rolling_pipe_references},
       {"stiffness", "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
        SceneKind::stages_only, SceneCommand::stiffness, stiffness_scene_keys,
        [](const KeyReader& s) { return make_stiffness_scene(s); }, nullptr, stiffness_first_keys(), stiffness_memory,
-       stiffness_relations, stiffness_contact_pair, nullptr},
+       stiffness_relations, stiffness_contact_pair, nullptr, stiffness_references},
       {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
        SceneKind::stages_only, SceneCommand::texture, texture_scene_keys,
        [](const KeyReader& s) { return make_texture_scene(s); }, nullptr, texture_first_keys(), texture_memory,
-       texture_relations, nullptr, nullptr},
+       texture_relations, nullptr, nullptr, texture_references},
   };
   return scenes;
 }

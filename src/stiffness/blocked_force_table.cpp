@@ -43,8 +43,11 @@ std::vector<const std::vector<double>*> columns(const BlockedForceTable& t) {
 }
 }  // namespace
 
-const TableKind kBlockedForceTableKind = {kBlockedForceFileType, "/blocked_force", "blocked-force-",
-                                          "blocked-force table"};
+const TableKind kBlockedForceTableKind = {kBlockedForceFileType,
+                                          "/blocked_force",
+                                          "blocked-force-",
+                                          "blocked-force table",
+                                          {"seed 002", "BF-1..BF-7", "Polonsky-Keer 1999", "D-6", "D-7"}};
 
 std::string BlockedForceTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));

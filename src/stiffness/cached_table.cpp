@@ -10,6 +10,7 @@
 #include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/provenance.hpp"
+#include "src/io/references.hpp"
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
 
@@ -125,6 +126,7 @@ void CachedTable::resolve(TableData& t, bool rebuild, const std::function<void(T
 void CachedTable::write(const std::string& write_path, const TableData& t) const {
   io::Hdf5Writer w(write_path);
   io::write_provenance(w, kind_.file_type, kSchemaVersion, store_.study_text, store_.seed);
+  io::write_references(w, kind_.references);
   t.save_to(w);
   w.attribute(kind_.group, "schema_version", std::string(kSchemaVersion));
   w.attribute(kind_.group, "kernel_version", static_cast<double>(contact::kernel_version));

@@ -34,6 +34,8 @@ struct TableKind {
   const char* group;        // group holding the identity attributes, e.g. "/stiffness"
   const char* file_prefix;  // automatic file name <table_dir>/<prefix><hash>.h5
   const char* title;        // in messages, e.g. "stiffness table"
+  // The papers and theory-note equations its build uses (io/references.hpp ids), in /provenance/references.
+  std::vector<std::string> references;
 };
 
 enum class TableState { missing, valid, mismatched };

@@ -57,8 +57,11 @@ std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, dou
 
 }  // namespace
 
-const TableKind kEquivalentRoughnessTableKind = {kEquivalentRoughnessFileType, "/equivalent_roughness",
-                                                 "equivalent-roughness-", "equivalent-roughness table"};
+const TableKind kEquivalentRoughnessTableKind = {kEquivalentRoughnessFileType,
+                                                 "/equivalent_roughness",
+                                                 "equivalent-roughness-",
+                                                 "equivalent-roughness table",
+                                                 {"ER-1..ER-7", "Polonsky-Keer 1999", "D-6", "D-7"}};
 
 std::string EquivalentRoughnessTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));

@@ -26,7 +26,8 @@ namespace rollspec::stiffness {
 
 using namespace study;
 
-const TableKind kPathTableKind = {kPathTableFileType, "/path_table", "path-table-", "path table"};
+const TableKind kPathTableKind = {
+    kPathTableFileType, "/path_table", "path-table-", "path table", {"B41..B46", "Polonsky-Keer 1999", "D-6", "D-7"}};
 
 namespace {
 

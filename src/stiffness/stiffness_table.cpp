@@ -64,7 +64,8 @@ double StiffnessTable::stiffness_at(double load) const {
   return std::nan("");
 }
 
-const TableKind kStiffnessTableKind = {kTableFileType, "/stiffness", "stiffness-", "stiffness table"};
+const TableKind kStiffnessTableKind = {
+    kTableFileType, "/stiffness", "stiffness-", "stiffness table", {"seed 001", "Polonsky-Keer 1999", "D-6", "D-7"}};
 
 std::string StiffnessTable::checksum() const { return io::hex16(column_hash(columns(*this))); }
 
