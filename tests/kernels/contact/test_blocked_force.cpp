@@ -20,41 +20,19 @@
 #include "kernels/contact/geometry.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "rough_fixture.hpp"
+#include "strip_fixture.hpp"
 
 using namespace rollspec::contact;
+using rollspec::contact::test::cell_positions;
 using rollspec::contact::test::Hertz;
 using rollspec::contact::test::kPi;
+using rollspec::contact::test::strip_case;
+using rollspec::contact::test::StripCase;
+using rollspec::contact::test::thrown_message;
 
 namespace {
 
 double hertz_force(const Hertz& h, double d) { return hertz::force_at_approach(h.radius, h.e_star, d); }
-
-// Window of half-width `span`·a (odd, ball on the middle cell), strip `extra` columns longer and
-// `extra_y` rows wider.
-struct StripCase {
-  Grid window, strip;
-};
-StripCase strip_case(const Hertz& h, double cells, double span, std::size_t extra, std::size_t extra_y = 0) {
-  const Grid window = h.grid(cells, span);
-  return {window, Grid{window.nx + extra, window.ny + extra_y, window.dx, window.dy}};
-}
-
-// Positions x_k = x_0 + k·step·dx on cell centres (strip nx odd: cell centres at integer multiples of dx).
-std::vector<double> cell_positions(const Grid& strip, long first_cell, long step_cells, std::size_t count) {
-  std::vector<double> x(count);
-  for (std::size_t k = 0; k < count; ++k)
-    x[k] = static_cast<double>(first_cell + static_cast<long>(k) * step_cells) * strip.dx;
-  return x;
-}
-
-std::string thrown_message(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 double max_relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
   double worst = 0.0;

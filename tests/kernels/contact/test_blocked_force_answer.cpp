@@ -16,38 +16,14 @@
 #include "kernels/contact/blocked_force.hpp"
 #include "kernels/contact/contact_solver.hpp"
 #include "rough_fixture.hpp"
+#include "strip_fixture.hpp"
 
 using namespace rollspec::contact;
+using rollspec::contact::test::cell_positions;
 using rollspec::contact::test::Hertz;
-
-namespace {
-
-struct StripCase {
-  Grid window, strip;
-};
-// Window of half-width `span`·a, strip `extra` columns longer and `extra_y` rows wider (as test_blocked_force.cpp).
-StripCase strip_case(const Hertz& h, double cells, double span, std::size_t extra, std::size_t extra_y) {
-  const Grid window = h.grid(cells, span);
-  return {window, Grid{window.nx + extra, window.ny + extra_y, window.dx, window.dy}};
-}
-
-std::vector<double> cell_positions(const Grid& strip, long first_cell, long step_cells, std::size_t count) {
-  std::vector<double> x(count);
-  for (std::size_t k = 0; k < count; ++k)
-    x[k] = static_cast<double>(first_cell + static_cast<long>(k) * step_cells) * strip.dx;
-  return x;
-}
-
-std::string thrown_message(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
-}  // namespace
+using rollspec::contact::test::strip_case;
+using rollspec::contact::test::StripCase;
+using rollspec::contact::test::thrown_message;
 
 TEST_CASE("paths at the answer's tolerance (BF-8): the exhaustive F0 within a factor 3 of its own estimate") {
   const Hertz h;

@@ -1,0 +1,43 @@
+#pragma once
+// Strips for the blocked-force tests (test_blocked_force.cpp, test_blocked_force_answer.cpp): a window about a
+// Hertz contact, a longer strip to move it along, positions on cell centres, and the message a refusal throws.
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hertz_fixture.hpp"
+#include "kernels/contact/grid.hpp"
+
+namespace rollspec::contact::test {
+
+// Window of half-width `span`·a (odd, ball on the middle cell), strip `extra` columns longer and
+// `extra_y` rows wider.
+struct StripCase {
+  Grid window, strip;
+};
+inline StripCase strip_case(const Hertz& h, double cells, double span, std::size_t extra, std::size_t extra_y = 0) {
+  const Grid window = h.grid(cells, span);
+  return {window, Grid{window.nx + extra, window.ny + extra_y, window.dx, window.dy}};
+}
+
+// Positions x_k = x_0 + k·step·dx on cell centres (strip nx odd: cell centres at integer multiples of dx).
+inline std::vector<double> cell_positions(const Grid& strip, long first_cell, long step_cells, std::size_t count) {
+  std::vector<double> x(count);
+  for (std::size_t k = 0; k < count; ++k)
+    x[k] = static_cast<double>(first_cell + static_cast<long>(k) * step_cells) * strip.dx;
+  return x;
+}
+
+// What f throws as std::invalid_argument ("" when it does not throw).
+inline std::string thrown_message(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace rollspec::contact::test
