@@ -66,50 +66,48 @@ set(ROLLSPEC_TEST_COSTS
   cli_test_contact_filter 15
 )
 
-# The same under the sanitizers (preset asan-ubsan: its test pass, tests over 10 s), where the order differs:
-# the rolling scenes' tests are slow there and quick in the release build.
+# The same under the sanitizers (preset asan-ubsan: its test pass, tests over 10 s, from a whole pass's cost data
+# after the long simulations moved to NAME_long), where the order differs: the rolling kernels' and scenes' tests
+# are slow there and quick in the release build.
 set(ROLLSPEC_TEST_COSTS_SANITIZED
-  test_rolling 67
-  cli_test_rolling_pipe 28
-  cli_test_init_command 35
-  test_contact 58
-  cli_test_sensor_positions 10
-  cli_test_stress 61
-  cli_test_rolling_beam 21
-  cli_test_ball_on_beam 57
-  test_spectral 57
-  cli_test_stages 47
-  cli_test_fit 38
-  cli_test_profile_surfaces 33
-  test_contact_sides 27
-  cli_test_terminal 27
-  cli_test_solver_filter 27
-  cli_test_sweep 26
-  cli_test_compare_combined 26
-  cli_test_blocked_force 26
-  cli_test_data_safety 25
-  cli_test_path_law 24
-  cli_test_measured_profiles 24
-  cli_test_table_jackknife_segments 23
-  cli_test_table_jackknife_strips 22
-  cli_test_compare_recordings 22
-  test_texture 20
-  cli_test_notebook_access 20
-  cli_test_loss_of_contact_flags 20
-  cli_test_seed002_speed_trend 19
-  cli_test_contact_filter 19
-  cli_test_ensemble_reproducibility 17
+  test_rolling 140
+  test_spectral 66
+  cli_test_ball_on_beam 65
+  test_contact 55
+  cli_test_stress 55
+  cli_test_stages 46
+  cli_test_blocked_force 41
+  cli_test_profile_surfaces 36
+  cli_test_solver_filter 33
+  cli_test_measured_profiles 33
+  test_contact_sides 32
+  cli_test_init_command 31
+  cli_test_fit 31
+  cli_test_sweep 30
+  cli_test_compare_combined 28
+  cli_test_data_safety 28
+  cli_test_compare_recordings 27
+  cli_test_path_law 26
+  cli_test_rolling_pipe 25
+  cli_test_table_jackknife_segments 24
+  test_texture 23
+  cli_test_loss_of_contact_flags 23
+  cli_test_terminal 22
+  cli_test_table_jackknife_strips 21
+  cli_test_notebook_access 21
+  cli_test_ensemble_reproducibility 21
+  cli_test_contact_filter 20
+  cli_test_rolling_beam 19
+  cli_test_seed002_speed_trend 18
+  cli_test_stiffness 16
+  test_beam_dynamics 14
   cli_test_fit_whole 14
+  cli_test_logger_import 13
   cli_test_measurement_files 13
-  test_beam_dynamics 12
-  cli_test_stiffness 12
-  cli_test_profiles_whole 12
-  cli_test_logger_import 12
   cli_test_compare 12
-  cli_test_sweep_whole 11
-  cli_test_dataset_labels 11
-  cli_test_logger_corpus 10
-  cli_test_contact_bounce_growth 10
+  cli_test_profiles_whole 12
+  cli_test_logger_corpus 12
+  cli_test_contact_bounce_growth 11
 )
 if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=address")
   set(ROLLSPEC_TEST_COSTS ${ROLLSPEC_TEST_COSTS_SANITIZED})
