@@ -70,11 +70,11 @@ set(ROLLSPEC_TEST_COSTS
 # after the long simulations moved to NAME_long), where the order differs: the rolling kernels' and scenes' tests
 # are slow there and quick in the release build.
 set(ROLLSPEC_TEST_COSTS_SANITIZED
-  test_rolling 140
-  test_spectral 66
-  cli_test_ball_on_beam 65
+  test_rolling 50
+  test_spectral 40
+  cli_test_ball_on_beam 30
   test_contact 55
-  cli_test_stress 55
+  cli_test_stress 35
   cli_test_stages 46
   cli_test_blocked_force 41
   cli_test_profile_surfaces 36

@@ -94,6 +94,7 @@ def test_default_settings_within_0_02_db_of_the_converged_run(tmp_path):
     assert np.abs(levels["step"] - levels["step_converged"]).max() > 0.1
 
 
+@pytest.mark.long  # half a minute under the sanitizers: their pass skips it
 def test_linearised_model_against_frequency_domain_solution(tmp_path):
     """Issue 5: the linearised model's Monte-Carlo mean lies inside its own chi-square 95 % interval
     around the frequency-domain solution in >= 90 % of the bins 100 Hz - 5 kHz.

@@ -82,6 +82,7 @@ def test_one_to_two_hundred_modes(tmp_path, modes):
     finite_result(out)
 
 
+@pytest.mark.long  # a quarter minute under the sanitizers: their pass skips it
 def test_time_steps_from_tiny_to_the_limit(tmp_path):
     # Expectation: 64 substeps (0.6 us) works; a step above T_c / 20 is refused with the limit.
     r, out = run_rig(tmp_path, "signal.substeps=64")

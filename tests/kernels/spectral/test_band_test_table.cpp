@@ -107,7 +107,7 @@ TEST_CASE("D-31: Bartlett's decomposition has the Wishart's mean and the chi-squ
 // roughness's mean by N(0, Sigma_T); the model's Sigma_T is a jackknife of N units (Wishart, N - 1
 // dof), its S a covariance of K realisations. The F test that leaves the table out rejects far too
 // often; D-31 keeps its level.
-TEST_CASE("D-31: size on simulated measurements from other tables") {
+TEST_CASE("D-31: size on simulated measurements from other tables" * doctest::test_suite("long")) {
   const std::size_t p = 8, N = 6, trials = 500, draws = 200;
   const std::uint64_t K = 25;
   const double M = 25.0;
@@ -179,7 +179,7 @@ TEST_CASE("D-31: size on simulated measurements from other tables") {
 // Independent bands (D-31c): a spectral table's error, each band's variance from a jackknife of N_B
 // Welch segments, nu_T dof apiece; the measurement from another table. The rank-limited jackknife
 // covariance of the same draws leaves most directions without a table term and rejects far too often.
-TEST_CASE("D-31c: size with independent bands, against the rank-limited covariance") {
+TEST_CASE("D-31c: size with independent bands, against the rank-limited covariance" * doctest::test_suite("long")) {
   const std::size_t p = 8, N = 5, trials = 400, draws = 200;
   const std::uint64_t K = 25;
   const double M = 25.0;
