@@ -3,6 +3,7 @@
 // study keys whose names, defaults and ranges the module's options take (one table: the engine's).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <string>
 #include <vector>

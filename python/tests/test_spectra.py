@@ -61,7 +61,9 @@ def test_channels_are_rows_and_choices_are_returned():
     one = spectra.welch(x[1], 1000.0, segment=128, overlap=0.25, window="rectangular", detrend="none")
     assert both["psd"].shape == (2, 65) and np.array_equal(both["psd"][1], one["psd"])
     assert (both["window"], both["detrend"], both["overlap"], both["samples"]) == ("rectangular", "none", 32, 6000)
-    assert both["equivalent_dof"] > 2 * both["segments"] * 0.99  # rectangular, little overlap: nearly 2 per segment
+    # D-16 for a rectangular window overlapping by a quarter: rho(1) = 32 / 128, rho(m > 1) = 0.
+    n = both["segments"]
+    assert both["equivalent_dof"] == pytest.approx(2 * n / (1 + 2 * (1 - 1 / n) * 0.25**2), rel=1e-12)
 
 
 def test_bands_average_the_bins_and_carry_chi_square_intervals():
@@ -95,7 +97,7 @@ def test_bands_average_the_bins_and_carry_chi_square_intervals():
         (lambda: spectra.welch(np.ones(100), 10.0, segment=16, detrend="linear"), "detrend = 'linear': unknown detrending"),
         (lambda: spectra.welch(np.r_[np.ones(99), np.inf], 10.0, segment=16), "x: 1 value NaN or infinite; allowed"),
         (lambda: spectra.welch(np.ones((2, 2, 30)), 10.0, segment=16), "x: 3 dimension(s); allowed"),
-        (lambda: spectra.welch(np.full(100, 1e200), 10.0, segment=16), "its PSD overflows a double"),
+        (lambda: spectra.welch(np.tile([1e200, -1e200], 50), 10.0, segment=16), "its PSD overflows a double"),
         (lambda: spectra.bands(np.ones(4096), 1000.0, confidence=0.2), "confidence ([spectrum] confidence) = 0.2: out of range; allowed: a finite number in [0.5, 0.999]"),
         (lambda: spectra.bands(np.ones(4096), 1000.0, band_min=30, band_max=31), "no third-octave band between them"),
     ],
