@@ -396,7 +396,7 @@ class BallOnBeam final : public EnsembleScene {
       const stiffness::SegmentJackknife j = stiffness::f0_segments(blocked_force_grid());
       TableJackknifePlan plan{j.segments, "blocked-force table", "Welch segments of F0", [](long long i) {
                                 return std::vector<std::string>{
-                                    "blocked_force.leave_out=" + std::to_string(i),
+                                    study::BlockedForceSection::leave_out_setting(i),
                                     study::StiffnessSection::table_error_setting(study::TableError::none)};
                               }};
       plan.variance_factor = j.variance_factor;
@@ -407,7 +407,7 @@ class BallOnBeam final : public EnsembleScene {
     TableJackknifePlan plan{static_cast<std::size_t>(b_.equivalent_roughness_strips), "equivalent-roughness table",
                             "strips", [](long long i) {
                               return std::vector<std::string>{
-                                  "equivalent_roughness.leave_out=" + std::to_string(i),
+                                  study::EquivalentRoughnessSection::leave_out_setting(i),
                                   study::StiffnessSection::table_error_setting(study::TableError::none)};
                             }};
     plan.independent_bands = true;

@@ -48,7 +48,6 @@ ELSEWHERE = {
     "src/cli/stiffness_command.cpp": 1,
     "src/cli/study_template_keys.cpp": 4,
     "src/cli/texture_command.cpp": 2,
-    "src/scenes/ball_on_beam.cpp": 2,
     "src/scenes/ball_on_beam_dimensions.cpp": 38,
     "src/scenes/ball_on_beam_keys.cpp": 4,
     "src/scenes/dimension_relations.cpp": 48,

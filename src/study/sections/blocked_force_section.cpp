@@ -40,6 +40,10 @@ const SectionKeys<BlockedForceSection>& declared() {
 }  // namespace
 
 std::vector<KeySpec> BlockedForceSection::keys() { return declared().keys(); }
+
+std::string BlockedForceSection::leave_out_setting(long long i) {
+  return declared().full_name(&BlockedForceSection::leave_out) + "=" + std::to_string(i);
+}
 BlockedForceSection BlockedForceSection::parse(const KeyReader& s) { return declared().read(s); }
 
 }  // namespace rollspec::study

@@ -2,6 +2,7 @@
 // [blocked_force] (scene ball-on-beam): the blocked-force strip's grid where the study sets it
 // (0: derived, stiffness/blocked_force_geometry), read once. The equivalent-roughness stage uses
 // the same grid.
+#include <string>
 #include <vector>
 
 #include "src/study/key_spec.hpp"
@@ -19,6 +20,7 @@ struct BlockedForceSection : KeyedSection {
 
   static std::vector<KeySpec> keys();
   static BlockedForceSection parse(const KeyReader& s);
+  static std::string leave_out_setting(long long i);  // "<section>.leave_out=i", a --set text
 };
 
 }  // namespace rollspec::study

@@ -28,6 +28,10 @@ const SectionKeys<EquivalentRoughnessSection>& declared() {
 
 std::vector<KeySpec> EquivalentRoughnessSection::keys() { return declared().keys(); }
 
+std::string EquivalentRoughnessSection::leave_out_setting(long long i) {
+  return declared().full_name(&EquivalentRoughnessSection::leave_out) + "=" + std::to_string(i);
+}
+
 EquivalentRoughnessSection EquivalentRoughnessSection::parse(const KeyReader& s) {
   const EquivalentRoughnessSection p = declared().read(s);
   if (p.leave_out >= p.strips)

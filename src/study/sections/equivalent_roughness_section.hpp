@@ -35,6 +35,7 @@ struct EquivalentRoughnessSection : KeyedSection {
 
   static std::vector<KeySpec> keys();
   static EquivalentRoughnessSection parse(const KeyReader& s);
+  static std::string leave_out_setting(long long i);  // "<section>.leave_out=i", a --set text
 };
 
 }  // namespace rollspec::study
