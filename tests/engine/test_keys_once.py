@@ -27,8 +27,6 @@ PENDING = {
     **{f"study.{k}": "[study]: declared in scenes/scene_registry's common table, read by StudySection"
        for k in ("scene", "realisations", "seed", "description")},
     "ensemble.chunk_size": "[ensemble]: declared in scenes/scene_registry's common table, read by EnsembleSection",
-    **{f"surface.{k}": "[surface]: SurfaceSection (and SurfaceGridSection) keep a hand-written parse"
-       for k in ("method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma", "count")},
     **{f"texture.{k}": "[texture]: TextureSection keeps a hand-written parse"
        for k in ("source", "table", "table_extension", "profiles", "median_filter", "hurst", "long_wavelength",
                  "rolloff_wavelength", "short_wavelength", "rms_kind", "rms", "road_class", "amplitudes")},

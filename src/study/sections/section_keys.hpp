@@ -85,6 +85,11 @@ class SectionKeys {
     return *this;
   }
 
+  // The section is read only where the scene has its first key (a section some scenes leave out).
+  SectionKeys& section_if_present() {
+    optional_section_ = true;
+    return *this;
+  }
   // The last key is read only where the scene has it (a key some scenes leave out).
   SectionKeys& if_present() {
     bindings_.back().optional = true;
@@ -121,6 +126,7 @@ class SectionKeys {
   }
   void read(const KeyReader& s, S& out) const {
     KeyedSection& record = out;
+    if (optional_section_ && !bindings_.empty() && !s.has(bindings_.front().spec.full_name())) return;
     for (const auto& b : bindings_) {
       if ((b.when && !b.when(out)) || (b.optional && !s.has(b.spec.full_name()))) continue;
       const std::string full = b.spec.full_name();
@@ -171,6 +177,7 @@ class SectionKeys {
 
   std::string section_;
   std::vector<Binding> bindings_;
+  bool optional_section_ = false;
 };
 
 }  // namespace rollspec::study
