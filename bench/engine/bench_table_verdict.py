@@ -63,7 +63,9 @@ def run(binary, args, timeout=7200):
 
 def run_study(binary, study, out, sets):
     if not out.exists():
-        run(binary, ["run", study, "--out", out, "--quiet"] + sum([["--set", s] for s in sets], []))
+        # a run the bench was stopped in resumes from its checkpoints (the same bits as one run)
+        resume = ["--resume"] if out.with_name(out.name + ".checkpoint").exists() else []
+        run(binary, ["run", study, "--out", out, "--quiet", *resume] + sum([["--set", s] for s in sets], []))
     return out
 
 
