@@ -9,6 +9,7 @@
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "python/bindings.hpp"
+#include "src/cli/psd_options.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/study/sections/spectrum_section.hpp"
@@ -24,32 +25,14 @@ struct Estimate {
   std::vector<double> frequency, psd;  // psd: channels x bins, row-major
 };
 
-// `rollspec psd`'s options, checked as the command checks them (cli/psd_command.cpp), with its window
-// spellings (the study key spectrum.window, and `rect`).
+// `rollspec psd`'s options, checked by the command's own rules (cli/psd_options.hpp).
 spectral::WelchConfig welch_config(double fs, long long segment, double overlap, const std::string& window,
                                    const std::string& detrend) {
-  spectral::WelchConfig c;
-  if (!(fs > 0.0) || !std::isfinite(fs)) refuse("fs", io::number_text(fs), "not a rate", "a finite number > 0 (Hz)");
-  if (segment < 4) refuse("segment", std::to_string(segment), "too short", "a whole number >= 4 (samples)");
-  if (!(overlap >= 0.0 && overlap <= 0.95))
-    refuse("overlap", io::number_text(overlap), "out of range", "a fraction in [0, 0.95] of the segment");
-  c.sample_rate = fs;
-  c.segment = static_cast<std::size_t>(segment);
-  c.overlap = static_cast<std::size_t>(std::floor(overlap * static_cast<double>(segment)));
-  std::string allowed;
-  bool found = window == "rect";
-  if (found) c.window = spectral::Window::rectangular;
-  for (const auto& w : study::kWelchWindows) {
-    if (window == w.spelling) c.window = w.value, found = true;
-    allowed += std::string(w.spelling) + ", ";
-  }
-  if (!found) refuse("window", "'" + window + "'", "unknown window", allowed + "rect");
-  if (detrend == "constant" || detrend == "mean")
-    c.detrend = spectral::Detrend::constant;
-  else if (detrend == "none")
-    c.detrend = spectral::Detrend::none;
-  else
-    refuse("detrend", "'" + detrend + "'", "unknown detrending", "constant (mean; the command's), none");
+  cli::SignalOptions signal;
+  signal.fs = fs;
+  const double rate = cli::signal_request(signal, cli::OptionSpelling::python).fs;
+  spectral::WelchConfig c = cli::welch_options({segment, overlap, window, detrend}, cli::OptionSpelling::python);
+  c.sample_rate = rate;
   return c;
 }
 
@@ -169,7 +152,7 @@ overlap : float
 window : str
     'hann' or 'rectangular' ('rect').
 detrend : str
-    'constant' (the segment's mean removed; the command's) or 'none'.
+    'mean' or 'constant' (the segment's mean removed; the command's) or 'none'.
 
 Returns
 -------
