@@ -84,7 +84,8 @@ PYBIND11_MODULE(_core, m) {
         PyErr_SetString(PyExc_ValueError, u.what());
     }
   });
-  py::module_ spectra = m.def_submodule("spectra", "Welch PSD and third-octave bands of sampled signals.");
+  py::module_ spectra = m.def_submodule(
+      "spectra", "Welch PSD and third-octave bands of sampled signals, and the measurement reader of `rollspec psd`.");
   rollspec::python::bind_spectra(spectra);
   py::module_ contact =
       m.def_submodule("contact", "Elastic and elastic-plastic contact of a rough surface on a half-space.");
