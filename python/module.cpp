@@ -90,6 +90,6 @@ PYBIND11_MODULE(_core, m) {
   py::module_ contact =
       m.def_submodule("contact", "Elastic and elastic-plastic contact of a rough surface on a half-space.");
   rollspec::python::bind_contact(contact);
-  py::module_ surfaces = m.def_submodule("surfaces", "Line textures from a roughness PSD.");
+  py::module_ surfaces = m.def_submodule("surfaces", "Line textures and isotropic surfaces from a roughness PSD.");
   rollspec::python::bind_surfaces(surfaces);
 }
