@@ -112,6 +112,7 @@ def test_a_bad_file_raises_the_command_message(tmp_path):
         (volts, {}, ["--segment", 4], ValueError, 65),
         (os.path.join(SOURCE, "studies", "data", "example-signal.wav"), {}, [], ValueError, 64),  # needs scale
         (EXAMPLE, {"column": "nope"}, ["--column", "nope"], ValueError, 64),
+        (tmp_path, {"fs": 100.0}, ["--fs", 100], OSError, 66),  # a directory
     ]
     for path, kwargs, options, error, code in cases:
         message, exit_code = command_error(path, *options)
@@ -128,9 +129,11 @@ def test_a_bad_file_raises_the_command_message(tmp_path):
         ({"time_column": ""}, ValueError, "time_column = '': allowed: a column name, or none"),
         ({"column": [1]}, TypeError, "column: a list; allowed: a channel name or a sequence of names, or None"),
         ({"fs": "fast"}, TypeError, "fs: a str; allowed: a sample rate (Hz), or None"),
+        ({"path": EXAMPLE + "\0.wav"}, ValueError, "path: a name with an embedded null byte; allowed: a file name"),
     ],
 )
 def test_bad_arguments_are_refused_before_the_file_is_read(kwargs, error, message):
+    kwargs = dict(kwargs)
     with pytest.raises(error) as e:
-        spectra.read_measurement("/nonexistent/never-read.csv", **kwargs)
+        spectra.read_measurement(kwargs.pop("path", "/nonexistent/never-read.csv"), **kwargs)
     assert str(e.value) == message
