@@ -69,8 +69,10 @@ PYBIND11_MODULE(_core, m) {
   namespace py = pybind11;
   m.doc() =
       "rollspec's kernels and engine functions on numpy arrays: rollspec.spectra (Welch PSD and third-octave "
-      "bands, as `rollspec psd` and the studies compute them) and rollspec.contact (the elastic and "
-      "elastic-plastic half-space solve of the stiffness tables). SI units throughout.";
+      "bands, as `rollspec psd` and the studies compute them, and the measurement files they read), "
+      "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables) and "
+      "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them). "
+      "SI units throughout.";
   m.attr("__version__") = ROLLSPEC_VERSION_TEXT;
   // The engine's errors the user can act on: bad values and data are ValueError, a missing or
   // unwritable file OSError; the message is the command's one line.
