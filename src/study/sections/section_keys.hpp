@@ -3,8 +3,8 @@
 // is read into, unit, range, default and documentation, and for a choice the ChoiceTable. The section's
 // keys() (its KeySpecs: validation, `rollspec keys`, the templates and the reference docs) and its parse
 // (reading every key into its field, recording each key's text and origin in the KeyedSection) both come
-// from this one list. A field is a member pointer (&BallSection::radius) or, for a nested member, a
-// function returning it. Used by the sections' .cpp files only.
+// from this one list (DeclaredSection, the sections' base, defined at the end). A field is a member pointer
+// (&BallSection::radius) or, for a nested member, a function returning it. Used by the sections' .cpp files only.
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -18,6 +18,7 @@
 #include "src/study/key_reader.hpp"
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/declared_section.hpp"
 #include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
@@ -179,5 +180,21 @@ class SectionKeys {
   std::vector<Binding> bindings_;
   bool optional_section_ = false;
 };
+
+template <class S>
+const SectionKeys<S>& DeclaredSection<S>::declared() {
+  static const SectionKeys<S> k = S::declare();
+  return k;
+}
+template <class S>
+std::vector<KeySpec> DeclaredSection<S>::keys() {
+  return declared().keys();
+}
+template <class S>
+S DeclaredSection<S>::parse(const KeyReader& s) {
+  S out = declared().read(s);
+  out.finish();
+  return out;
+}
 
 }  // namespace rollspec::study
