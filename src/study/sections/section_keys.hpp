@@ -70,6 +70,12 @@ class SectionKeys {
     return bind(text_key(section_, key, std::move(doc), std::move(fallback)), field,
                 [](const KeyReader& s, const std::string& k) { return s.text(k); });
   }
+  // A file key: the field holds the path usable from the current directory (its text, the path as written).
+  template <class F>
+  SectionKeys& path(const char* key, F field, std::string doc, Default fallback) {
+    return bind(path_key(section_, key, std::move(doc), std::move(fallback)), field,
+                [](const KeyReader& s, const std::string& k) { return s.path(k); });
+  }
   // A text key read by `read(KeyReader, full key)` (a list of numbers, an x,y,z vector, ...).
   template <class F, class Read>
   SectionKeys& text(const char* key, F field, std::string doc, Default fallback, Read reader) {
@@ -83,6 +89,12 @@ class SectionKeys {
   // The last key is read only when `pred(section so far)` holds (keys are read in declaration order).
   SectionKeys& when(std::function<bool(const S&)> pred) {
     bindings_.back().when = std::move(pred);
+    return *this;
+  }
+
+  // The last (integer) key must be a power of two.
+  SectionKeys& power_of_two() {
+    bindings_.back().spec.power_of_two = true;
     return *this;
   }
 
