@@ -26,20 +26,20 @@ class BandNoiseCovariance {
   const std::vector<double>& trace() const { return trace_; }
   // tr(Q_b Q_c), p x p row-major: half the covariance of P_b and P_c for unit white noise.
   const std::vector<double>& trace_product() const { return trace_product_; }
-  // (Q_b x)^T (Q_c x), p x p row-major, of one roll's samples x[0..samples).
+  // (Q_b x)^T (Q_c x), p x p row-major, of one roll's samples x[0..samples). Q_b x = (1/N_B) sum_s sum_k a_k
+  // Re(conj(y_{s,k}) u_k(t - s S)), y_{s,k} = sum_t x_{sS+t} u_k(t): one r2c FFT per segment, one c2r per band.
   std::vector<double> gram(const double* x) const;
-  // The estimate of cov(P_b, P_c | s) above from the roll x and the noise's per-sample variance sigma2 >= 0.
-  std::vector<double> covariance(const double* x, double sigma2) const;
+  // The estimate of cov(P_b, P_c | s) from the roll x and the noise's per-sample variance in each band, sigma2[b]
+  // >= 0 (N_b / tr Q_b; all equal for white noise): 4 s_b s_c (Q_b x)^T (Q_c x) - 2 s_b^2 s_c^2 tr(Q_b Q_c), s_b =
+  // sqrt(sigma2[b]) (the noise white over each band pair's correlated bins).
+  std::vector<double> covariance(const double* x, const std::vector<double>& sigma2) const;
 
  private:
-  // Q_b x into q[0..samples): (1/N_B) sum_s sum_k a_k Re(conj(y_{s,k}) u_k(t - s S)), y_{s,k} = sum_t x u_k(t).
-  void apply(std::size_t band, const double* x, double* q) const;
-
   WelchConfig config_;
   std::size_t samples_ = 0, segments_ = 0;
-  std::vector<double> lower_, upper_, window_, cos_, sin_;  // e^{-2 pi i j / L} = cos_[j] - i sin_[j]
-  std::vector<BandWeights> weights_;                        // a_k with the one-sided factor and the density's scale
-  std::vector<double> mean_re_, mean_im_;                   // W_k / L for k = 0..L/2 (0 without detrending)
+  std::vector<double> lower_, upper_, window_;
+  std::vector<BandWeights> weights_;       // a_k with the one-sided factor and the density's scale
+  std::vector<double> lobe_re_, lobe_im_;  // W_k = sum_t w_t e^{-2 pi i k t / L}, k = 0..L/2 (0 without detrending)
   std::vector<double> trace_, trace_product_;
 };
 

@@ -209,7 +209,13 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
     }
     scaling(s_star, K, records, noise, cv2 ? cv2_star.data() : nullptr, g_star, offset_star, diagonal);
     Matrix v_star = g_star.asDiagonal() * s_star * g_star.asDiagonal() + table.factor * t_star;
-    if (noise) v_star.diagonal() += diagonal;  // D-33c: the noise's terms, held at their estimates
+    if (noise) {  // D-33c: the noise's terms, held at their estimates (D-33e: with its covariance between bands)
+      v_star.diagonal() += diagonal;
+      for (std::size_t b = 0; b < p; ++b)
+        if (noise[b].cross)
+          for (std::size_t e = 0; e < p; ++e)
+            if (e != b) v_star(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(e)) += noise[b].cross[e];
+    }
     Vector z(n);
     standard_normals(uni.data() + ns + nt, p, z.data());
     const Vector d_star = lv * z + offset - offset_star;

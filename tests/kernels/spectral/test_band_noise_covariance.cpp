@@ -125,7 +125,7 @@ TEST_CASE("Monte-Carlo: noise on a coherent transient has the covariance of the 
       for (std::size_t e = 0; e < p; ++e) prod[b * p + e] += band[b] * band[e];
     }
     if (d < 400) {  // the estimate from the noisy roll itself, unbiased
-      const std::vector<double> one = cov.covariance(x.data(), sigma2);
+      const std::vector<double> one = cov.covariance(x.data(), std::vector<double>(p, sigma2));
       for (std::size_t i = 0; i < p * p; ++i) estimate[i] += one[i] / 400.0;
     }
   }
@@ -160,5 +160,6 @@ TEST_CASE("bad input is refused") {
   CHECK_THROWS_AS(BandNoiseCovariance(c, 64, {70.0}, {80.0}), std::invalid_argument);     // above Nyquist
   const BandNoiseCovariance ok(c, 64, {1.0}, {30.0});
   const std::vector<double> x(64, 1.0);
-  CHECK_THROWS_AS(ok.covariance(x.data(), -1.0), std::invalid_argument);
+  CHECK_THROWS_AS(ok.covariance(x.data(), {-1.0}), std::invalid_argument);
+  CHECK_THROWS_AS(ok.covariance(x.data(), {1.0, 1.0}), std::invalid_argument);  // one per band
 }
