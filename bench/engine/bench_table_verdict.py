@@ -17,7 +17,10 @@ Figures (bands band_min..band_max of the study, every sensor row for the coverag
              measurements of every other table: the share rejected at 0.05;
   power      the same with the model's beam.loss_factor x 2 and contact.damping x 2 (the first --models tables;
              default: all).
-Writes bench/records/table-verdict-SCENE.json (or --record) through the bench record writer; --work keeps the
+  split      the sensor mean's band-level variance between tables against that of model minus measurement on the
+             same table (the share the table term carries).
+compare's answers are kept in the work folder beside the runs, so a bench resumed with --work redoes neither.
+Writes bench/records/validation/table-verdict-SCENE.json (or --record) through the bench record writer; --work keeps the
 runs (default: a temporary directory).
 """
 import argparse
@@ -60,7 +63,9 @@ def run(binary, args, timeout=7200):
 
 def run_study(binary, study, out, sets):
     if not out.exists():
-        run(binary, ["run", study, "--out", out, "--quiet"] + sum([["--set", s] for s in sets], []))
+        # a run the bench was stopped in resumes from its checkpoints (the same bits as one run)
+        resume = ["--resume"] if out.with_name(out.name + ".checkpoint").exists() else []
+        run(binary, ["run", study, "--out", out, "--quiet", *resume] + sum([["--set", s] for s in sets], []))
     return out
 
 
@@ -80,7 +85,7 @@ def psd_table(result, out):
 
 def coverage(models, measured):
     """Share of intervals holding the other tables' mean, and the scale that would make it 0.95."""
-    hits, lo_h, hi_h, gaps = [], [], [], []
+    hits, gaps = [], []
     for t, m in models.items():
         ref = np.mean([measured[u]["level"] for u in measured if u != t], axis=0)
         level, lo, hi = m["level"], m["lo"], m["hi"]
@@ -95,12 +100,31 @@ def coverage(models, measured):
 
 
 def verdicts(binary, model, measurements, rolls):
+    """compare's answer for each measurement; kept beside the model run, so a resumed bench reuses it."""
     out = []
     for path in measurements:
-        r = run(binary, ["compare", model, path, "--measured-averages", rolls, "--format", "json"])
-        j = json.loads(r.stdout)
+        answer = model.with_name(f"{model.stem}-vs-{path.stem}.json")
+        if not answer.exists():
+            r = run(binary, ["compare", model, path, "--measured-averages", rolls, "--format", "json"])
+            partial = answer.with_suffix(".json.partial")
+            partial.write_text(r.stdout)
+            partial.replace(answer)
+        j = json.loads(answer.read_text())
         out.append((j["p_value"], np.mean([b["inside"] for b in j["bands"] if b["inside"] is not None])))
     return out
+
+
+def variance_split(models, measured):
+    """Where the scatter of a measurement about the model comes from (sensor mean, dB², mean over bands):
+    between tables (the measurements' variance over table seeds) and within one table (the variance of model
+    minus measurement on the same table: the K and M realisations' own noise). The first is what the table
+    term must carry; its share bounds the power any test can have against a change of that size."""
+    def mean_row(b):
+        return b["level"][b["names"].index("sensor_mean") if "sensor_mean" in b["names"] else 0]
+
+    meas = np.array([mean_row(m) for m in measured.values()])
+    diff = np.array([mean_row(models[t]) - mean_row(measured[t]) for t in measured])
+    return float(np.nanmean(np.nanvar(meas, axis=0, ddof=1))), float(np.nanmean(np.nanvar(diff, axis=0, ddof=1)))
 
 
 def main():
@@ -119,7 +143,7 @@ def main():
     require_program(a.binary, "binary")
     study, description = SCENES[a.scene]
     study = ROOT / study
-    record = Path(a.record) if a.record else ROOT / "bench" / "records" / f"table-verdict-{a.scene}.json"
+    record = Path(a.record) if a.record else ROOT / "bench" / "records" / "validation" / f"table-verdict-{a.scene}.json"
     bench_record.check_target(record, own=bench_record.is_record)
     work = Path(own_folder(a.work, "bench_table_verdict")) if a.work else Path(tempfile.mkdtemp(prefix="table-verdict-"))
     (work / "tables").mkdir(exist_ok=True)
@@ -141,8 +165,12 @@ def main():
     cov, width, n_bands = coverage(models, measured)
     cases = [("correct model (size)", []), ("loss factor x 2", ["beam.loss_factor=0.02"]),
              ("contact damping x 2", ["contact.damping=200"])]
-    rows = [["coverage of other tables' mean", f"{cov:.3f}", f"width ratio {width:.2f}", n_bands]]
-    data = {"coverage": cov, "width_ratio": width, "cases": {}}
+    between, within = variance_split(models, measured)
+    rows = [["coverage of other tables' mean", f"{cov:.3f}", f"width ratio {width:.2f}", n_bands],
+            ["band-level variance between tables (dB²)", f"{between:.3g}",
+             f"same table, model - measurement: {within:.3g} dB²", len(measured)]]
+    data = {"coverage": cov, "width_ratio": width, "variance_between_tables_db2": between,
+            "variance_same_table_db2": within, "cases": {}}
     for name, extra in cases:
         found = []
         for t in seeds[:a.models]:
@@ -158,7 +186,8 @@ def main():
     minutes = (time.monotonic() - start) / 60.0
     bench_record.write(
         record, title=f"The verdict against measurements from other tables: {description}",
-        argv=sys.argv, builds={"rollspec": {"description": bench_record.build_version(a.binary)}},
+        argv=sys.argv, builds={"current": {"description": "the build measured",
+                                            "version": bench_record.build_version(a.binary)}},
         settings=f"{a.tables} table seeds; models as shipped; measurements of {a.rolls} rolls of each other table "
                  f"(study seed 5000 + t); compare --measured-averages {a.rolls} at level 0.05; {minutes:.0f} min",
         columns=["figure", "value", "detail", "count"], rows=rows, data=data)

@@ -152,11 +152,11 @@ int texture_command(const Args& args) {
   const double spacing = line_keys.spacing;
   const double samples = std::floor(line_keys.length / spacing);
   if (samples < 8 || samples > 1 << 26)
-    line_keys.length_origin.refuse("gives " + std::to_string(samples) +
-                                   " samples at [lines] spacing; allowed: 8 to 2^26");
-  const auto lines =
-      texture_io::line_generator(texture_io::LineGeneratorKeys::of(tex, line_keys.spacing_origin, "[lines] spacing"),
-                                 psd, spacing, static_cast<std::size_t>(samples), false);
+    line_keys.origin(line_keys.length)
+        .refuse("gives " + std::to_string(samples) + " samples at [lines] spacing; allowed: 8 to 2^26");
+  const auto lines = texture_io::line_generator(
+      texture_io::LineGeneratorKeys::of(tex, line_keys.origin(line_keys.spacing), "[lines] spacing"), psd, spacing,
+      static_cast<std::size_t>(samples), false);
   const texture::LineTextureSpec& ls = lines->spec();
   const texture_io::SurfaceGenerator surfaces =
       n_surf ? texture_io::surface_generator(tex, texture_io::with_profile_values(tex, surface_keys), psd)

@@ -100,15 +100,17 @@ class BallOnBeam final : public EnsembleScene {
     const long long i = b_.blocked_force.leave_out;
     if (i < 0) return;
     if (!blocked_solver())
-      b_.blocked_force.leave_out_origin.refuse(
-          "leaves a Welch segment out of the blocked-force table of [contact] blocked_force = solver, which this "
-          "study does not use; allowed here: -1");
+      b_.blocked_force.origin(b_.blocked_force.leave_out)
+          .refuse(
+              "leaves a Welch segment out of the blocked-force table of [contact] blocked_force = solver, which this "
+              "study does not use; allowed here: -1");
     const std::size_t n = stiffness::f0_segments(blocked_force_grid()).segments;
     if (static_cast<std::size_t>(i) >= n)
-      b_.blocked_force.leave_out_origin.refuse("leaves out a Welch segment F0's path does not have; allowed: -1 .. " +
-                                               std::to_string(static_cast<long long>(n) - 1) +
-                                               " (the path's segments, `rollspec plan` shows its positions and "
-                                               "segment)");
+      b_.blocked_force.origin(b_.blocked_force.leave_out)
+          .refuse("leaves out a Welch segment F0's path does not have; allowed: -1 .. " +
+                  std::to_string(static_cast<long long>(n) - 1) +
+                  " (the path's segments, `rollspec plan` shows its positions and "
+                  "segment)");
   }
   bool jackknifes_stiffness_table() const { return estimates_table_error() && uses_table() && b_.stiffness.rough; }
 
@@ -394,7 +396,7 @@ class BallOnBeam final : public EnsembleScene {
       const stiffness::SegmentJackknife j = stiffness::f0_segments(blocked_force_grid());
       TableJackknifePlan plan{j.segments, "blocked-force table", "Welch segments of F0", [](long long i) {
                                 return std::vector<std::string>{
-                                    "blocked_force.leave_out=" + std::to_string(i),
+                                    study::BlockedForceSection::leave_out_setting(i),
                                     study::StiffnessSection::table_error_setting(study::TableError::none)};
                               }};
       plan.variance_factor = j.variance_factor;
@@ -405,7 +407,7 @@ class BallOnBeam final : public EnsembleScene {
     TableJackknifePlan plan{static_cast<std::size_t>(b_.equivalent_roughness_strips), "equivalent-roughness table",
                             "strips", [](long long i) {
                               return std::vector<std::string>{
-                                  "equivalent_roughness.leave_out=" + std::to_string(i),
+                                  study::EquivalentRoughnessSection::leave_out_setting(i),
                                   study::StiffnessSection::table_error_setting(study::TableError::none)};
                             }};
     plan.independent_bands = true;

@@ -15,6 +15,7 @@
 #include "src/study/sections/roughness_section.hpp"
 #include "src/study/sections/sensors_section.hpp"
 #include "src/study/sections/signal_section.hpp"
+#include "src/study/sections/spectrum_section.hpp"
 #include "src/study/sections/ball_section.hpp"
 #include "src/study/sections/blocked_force_section.hpp"
 #include "src/study/sections/path_table_section.hpp"
@@ -25,10 +26,6 @@ namespace rollspec::scenes {
 
 using namespace study;
 
-namespace {
-const double inf = std::numeric_limits<double>::infinity();
-}  // namespace
-
 std::vector<KeySpec> ball_on_beam_keys() {
   // [beam] and [ball] first, then the scene's other keys, in the order `rollspec keys` lists them.
   std::vector<KeySpec> k = ModalBeamSection::keys();
@@ -37,9 +34,8 @@ std::vector<KeySpec> ball_on_beam_keys() {
   for (auto& t : RoughnessSection::keys()) k.push_back(t);
   for (auto& t : SignalSection::keys()) k.push_back(t);
   for (auto& t : SensorsSection::keys()) k.push_back(t);
-  k.push_back(real_key("spectrum", "skip_start", "s",
-                       "time at the start of each record left out of the PSDs (start-up of the random response)",
-                       std::string("0"), 0.0, inf));
+  k.push_back(SpectrumSection::skip_start_key(
+      "time at the start of each record left out of the PSDs (start-up of the random response)", "0"));
   for (auto& t : OutputSection::keys()) k.push_back(t);
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
   for (auto& t : texture_io::surface_keys()) {

@@ -21,20 +21,21 @@ void check_contact(const BallOnBeamSettings& b, std::vector<std::string>& warnin
   const std::string load = " under the ball's weight W = " + io::three_digits(b.weight()) + " N";
   if (!(std::isfinite(a) && a > 0.0)) return;
   if (a / r > 0.1)
-    b.ball.radius_origin.refuse("the Hertz contact radius a = " + io::three_digits(a) + " m" + load + " is " +
-                                io::three_digits(a / r) +
-                                " R; Hertz theory needs a/R <= 0.1 (a softer or heavier ball than the theory covers)");
+    b.ball.origin(b.ball.radius)
+        .refuse("the Hertz contact radius a = " + io::three_digits(a) + " m" + load + " is " + io::three_digits(a / r) +
+                " R; Hertz theory needs a/R <= 0.1 (a softer or heavier ball than the theory covers)");
   if (2.0 * a > width)
-    b.ball.radius_origin.refuse("the Hertz contact width 2a = " + io::three_digits(2.0 * a) + " m" + load +
-                                " exceeds the beam width " + io::three_digits(width) +
-                                " m (a point contact on a beam; radius and width are in m)");
+    b.ball.origin(b.ball.radius)
+        .refuse("the Hertz contact width 2a = " + io::three_digits(2.0 * a) + " m" + load + " exceeds the beam width " +
+                io::three_digits(width) + " m (a point contact on a beam; radius and width are in m)");
   if (a / r > 0.03)
-    warnings.push_back(b.ball.radius_origin.where + ": the Hertz contact radius a = " + io::three_digits(a) + " m is " +
-                       io::three_digits(a / r) + " R; Hertz theory loses accuracy above a/R of a few per cent");
+    warnings.push_back(b.ball.origin(b.ball.radius).where + ": the Hertz contact radius a = " + io::three_digits(a) +
+                       " m is " + io::three_digits(a / r) +
+                       " R; Hertz theory loses accuracy above a/R of a few per cent");
   else if (2.0 * a > 0.2 * width)
-    warnings.push_back(b.ball.radius_origin.where + ": the Hertz contact width 2a = " + io::three_digits(2.0 * a) +
-                       " m is " + io::three_digits(2.0 * a / width) +
-                       " of the beam width; the point contact assumes a narrow contact");
+    warnings.push_back(
+        b.ball.origin(b.ball.radius).where + ": the Hertz contact width 2a = " + io::three_digits(2.0 * a) + " m is " +
+        io::three_digits(2.0 * a / width) + " of the beam width; the point contact assumes a narrow contact");
 }
 
 // The linear beam holds for deflections small against its thickness; the largest static deflection
@@ -50,14 +51,16 @@ void check_deflection(const BallOnBeamSettings& b, std::vector<std::string>& war
   const std::string what = "the beam's static deflection under the ball's weight W = " + io::three_digits(b.weight()) +
                            " N reaches " + io::three_digits(w) + " m, ";
   if (w > t)
-    b.ball.radius_origin.refuse(what + "more than the beam thickness " + io::three_digits(t) +
-                                " m; linear beam theory needs deflections small against the thickness (radius in m?)");
+    b.ball.origin(b.ball.radius)
+        .refuse(what + "more than the beam thickness " + io::three_digits(t) +
+                " m; linear beam theory needs deflections small against the thickness (radius in m?)");
   if (w > 0.1 * t)
-    warnings.push_back(b.ball.radius_origin.where + ": " + what + io::three_digits(w / t) +
+    warnings.push_back(b.ball.origin(b.ball.radius).where + ": " + what + io::three_digits(w / t) +
                        " of the beam thickness; linear beam theory assumes small deflections");
   const double length = b.beam.properties.length;
   if (t > 0.1 * length)
-    warnings.push_back(b.beam.thickness_origin.where + ": the beam is " + io::three_digits(t / length) +
+    warnings.push_back(b.beam.origin(b.beam.properties.thickness).where + ": the beam is " +
+                       io::three_digits(t / length) +
                        " of its span thick; Euler-Bernoulli theory (no shear, no rotary inertia) needs a slender beam");
 }
 
@@ -69,7 +72,9 @@ void check_modes(const BallOnBeamSettings& b, std::vector<std::string>& warnings
   const double top = m.frequency(m.modes() - 1), nyquist = b.model.sample_rate / 2.0;
   const double band = std::min(b.band_max, nyquist);
   if (top < band)
-    warnings.push_back((b.beam.selection.count > 0 ? b.beam.modes_origin : b.beam.max_frequency_origin).where +
+    warnings.push_back((b.beam.selection.count > 0 ? b.beam.origin(b.beam.selection.count)
+                                                   : b.beam.origin(b.beam.selection.max_frequency))
+                           .where +
                        ": the highest kept mode (" + io::three_digits(top) + " Hz) lies below the band's top " +
                        io::three_digits(band) + " Hz; the response above it has no resonances");
   if (m.frequency(0) > nyquist)
@@ -83,21 +88,23 @@ void check_modes(const BallOnBeamSettings& b, std::vector<std::string>& warnings
 void check_roughness(const BallOnBeamSettings& b, std::vector<std::string>& warnings) {
   const double v = b.model.traverse.speed;
   if (v > 100.0)
-    b.ball.speed_origin.refuse("a rolling ball at " + io::three_digits(v) + " m/s (" + io::three_digits(v * 3.6) +
-                               " km/h) is beyond any rig; the speed is in m/s");
+    b.ball.origin(b.ball.speed)
+        .refuse("a rolling ball at " + io::three_digits(v) + " m/s (" + io::three_digits(v * 3.6) +
+                " km/h) is beyond any rig; the speed is in m/s");
   if (v > 30.0)
-    warnings.push_back(b.ball.speed_origin.where + ": a rolling speed of " + io::three_digits(v) + " m/s (" +
+    warnings.push_back(b.ball.origin(b.ball.speed).where + ": a rolling speed of " + io::three_digits(v) + " m/s (" +
                        io::three_digits(v * 3.6) + " km/h) is unusual for a ball on a beam; the speed is in m/s");
   const double k_max = b.texture_psd.support_max, k_min = b.texture_psd.support_min;
   const double band = std::min(b.band_max, b.model.sample_rate / 2.0);
   if (std::isfinite(k_max) && k_max > 0.0 && v * k_max / (2.0 * M_PI) < band)
-    warnings.push_back(b.ball.speed_origin.where + ": the roughness spectrum ([texture]) stops at wavelength " +
+    warnings.push_back(b.ball.origin(b.ball.speed).where + ": the roughness spectrum ([texture]) stops at wavelength " +
                        io::three_digits(2.0 * M_PI / k_max) + " m, which at " + io::three_digits(v) +
                        " m/s excites up to " + io::three_digits(v * k_max / (2.0 * M_PI)) +
                        " Hz; the bands above it up to " + io::three_digits(band) +
                        " Hz get no excitation from the roughness");
   if (k_min > 0.0 && v * k_min / (2.0 * M_PI) > band)
-    warnings.push_back(b.ball.speed_origin.where + ": the roughness spectrum ([texture]) starts at wavelength " +
+    warnings.push_back(b.ball.origin(b.ball.speed).where +
+                       ": the roughness spectrum ([texture]) starts at wavelength " +
                        io::three_digits(2.0 * M_PI / k_min) + " m, which at " + io::three_digits(v) + " m/s excites " +
                        io::three_digits(v * k_min / (2.0 * M_PI)) + " Hz and above, beyond the band's top " +
                        io::three_digits(band) + " Hz");

@@ -24,10 +24,11 @@ namespace {
 
 std::vector<double> sensor_positions(const study::SensorsSection& sensors, double length) {
   const std::vector<double>& v = sensors.positions;
-  if (v.empty()) sensors.positions_origin.refuse("lists no position; allowed: comma-separated positions in m");
+  if (v.empty()) sensors.origin(sensors.positions).refuse("lists no position; allowed: comma-separated positions in m");
   for (double x : v)
     if (x < 0.0 || x > length)
-      sensors.positions_origin.refuse("position " + std::to_string(x) + " m lies outside the span [0, length]");
+      sensors.origin(sensors.positions)
+          .refuse("position " + std::to_string(x) + " m lies outside the span [0, length]");
   return v;
 }
 
@@ -92,7 +93,7 @@ void check_step_coefficients(const BallOnBeamSettings& b) {
     std::snprintf(buf, sizeof buf,
                   "keeps %d modes, but the exact step of mode %d (%.4g Hz, omega h = %.4g) overflows double precision",
                   m.modes(), i + 1, m.frequency(i), m.omega(i) * h);
-    (b.beam.selection.count > 0 ? b.beam.modes_origin : b.beam.max_frequency_origin)
+    (b.beam.selection.count > 0 ? b.beam.origin(b.beam.selection.count) : b.beam.origin(b.beam.selection.max_frequency))
         .refuse(std::string(buf) + "; allowed: at most " + std::to_string(i) +
                 " modes at this step (or signal.integrator = dopri5)");
   }
@@ -100,7 +101,7 @@ void check_step_coefficients(const BallOnBeamSettings& b) {
 
 // [contact] filter and the contact radius a it uses: Hertz under the weight (kernels/beam B35).
 void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeamSettings& b, double a) {
-  const study::KeyOrigin& filter_origin = b.contact_section.filter_origin;
+  const study::KeyOrigin& filter_origin = b.contact_section.origin(b.contact_section.filter);
   b.filter = b.contact_section.filter;
   b.filter_name = study::spelling_of(study::kContactFilters, b.filter);
   b.contact_half_width = a;
@@ -108,7 +109,8 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
   // law = path and blocked_force = solver resolve the contact on a strip themselves: a patch filter
   // is accepted there but not applied, and the result says so (/contact@filter is what was applied).
   b.filter_applied = b.filter == ContactFilter::patch && (b.path_law() || b.blocked_solver()) ? "none" : b.filter_name;
-  if (b.filter_applied != b.filter_name && b.contact_section.filter_set)  // said, not silently dropped
+  if (b.filter_applied != b.filter_name &&
+      b.contact_section.was_set(b.contact_section.filter))  // said, not silently dropped
     b.warnings.push_back(filter_origin.where + ": not applied: " +
                          (b.path_law() ? std::string("law = path") : std::string("blocked_force = solver")) +
                          " resolves the contact on its strip itself, so the line texture is not filtered (the "
@@ -139,12 +141,14 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
   b.equivalent_roughness_strips = er.strips;
   b.equivalent_roughness_leave_out = er.leave_out;
   if (er.leave_out >= 0 && !(b.filter == ContactFilter::solver && !b.strip_line))
-    er.leave_out_origin.refuse(
-        "leaves a strip out of the table [contact] filter = solver synthesises its lines from; allowed with filter = " +
-        b.filter_name + (b.strip_line ? " and line = strip" : "") + ": -1");
+    er.origin(er.leave_out)
+        .refuse(
+            "leaves a strip out of the table [contact] filter = solver synthesises its lines from; allowed with filter "
+            "= " +
+            b.filter_name + (b.strip_line ? " and line = strip" : "") + ": -1");
   if (b.strip_line && b.filter != ContactFilter::solver)
-    er.line_origin.refuse("= strip is the line of [contact] filter = solver; allowed with filter = " + b.filter_name +
-                          ": synthesised");
+    er.origin(er.line).refuse(
+        "= strip is the line of [contact] filter = solver; allowed with filter = " + b.filter_name + ": synthesised");
   if (b.filter == ContactFilter::solver && b.linearised())
     filter_origin.refuse(
         "solver gives the equivalent roughness of the nonlinear point laws; allowed with law = "
@@ -155,7 +159,8 @@ texture::Psd iso2d_study_psd(const BallOnBeamSettings& b) {
   try {
     return iso2d_line_psd(b);
   } catch (const std::exception& e) {
-    b.contact_section.filter_origin.refuse(std::string("cannot filter the [texture] PSD: ") + e.what());
+    b.contact_section.origin(b.contact_section.filter)
+        .refuse(std::string("cannot filter the [texture] PSD: ") + e.what());
   }
 }
 
@@ -256,13 +261,14 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
       {s.modal_beam, {}, {}, {}, signal.sample_rate, sensor_positions(sensors, s.beam.properties.length)});
   b.beam = s.beam;
   b.ball = s.ball;
-  b.substeps_origin = signal.substeps_origin;
-  b.sample_rate_origin = signal.sample_rate_origin;
+  b.substeps_origin = signal.origin(signal.substeps);
+  b.sample_rate_origin = signal.origin(signal.sample_rate);
   b.blocked_force = s.blocked_force;
   b.path_table = s.path_table;
   b.strip_surface = s.strip_surface;
   b.stiffness = s.stiffness;
-  b.line_keys = texture_io::LineGeneratorKeys::of(s.texture, s.roughness.spacing_origin, "[roughness] spacing");
+  b.line_keys =
+      texture_io::LineGeneratorKeys::of(s.texture, s.roughness.origin(s.roughness.spacing), "[roughness] spacing");
   b.line_keys.speed = s.ball.speed;  // a rolling ball: its speed turns wavelengths into frequencies
   b.line_keys.speed_key = "[ball] speed";
   b.seed = s.study.seed;
@@ -280,7 +286,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   b.confidence = spectrum.confidence;
   b.band_min = spectrum.band_min;
   b.band_max = spectrum.band_max;
-  b.band_max_origin = spectrum.band_max_origin;
+  b.band_max_origin = spectrum.origin(spectrum.band_max);
   b.time_histories = static_cast<std::size_t>(output.time_histories);
   b.reference = output.reference;
   // Ball and its traverse.
@@ -290,8 +296,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   m.traverse.x_start = b.ball.start;
   m.traverse.x_end = b.ball.end;
   m.traverse.speed = b.ball.speed;
-  if (!(m.traverse.x_end > m.traverse.x_start)) b.ball.end_origin.refuse("must exceed [ball] start");
-  if (m.traverse.x_end > length) b.ball.end_origin.refuse("lies beyond the span [0, length]");
+  if (!(m.traverse.x_end > m.traverse.x_start)) b.ball.origin(b.ball.end).refuse("must exceed [ball] start");
+  if (m.traverse.x_end > length) b.ball.origin(b.ball.end).refuse("lies beyond the span [0, length]");
   // Anti-alias band limit (kernels/beam B40): the output holds f <= f_s / 2, that is k <= pi f_s / v;
   // roughness beyond it would drive the linear response above f_s / 2, which the sampling aliases in.
   if (roughness.band_limit == study::BandLimit::output) {
@@ -331,7 +337,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   const double reach = m.traverse.x_end + b.patch_half_width;
   if (static_cast<double>(b.line_samples - 1) * b.spacing < reach)
     b.line_samples = static_cast<std::size_t>(std::ceil(reach / b.spacing)) + 1;
-  if (b.line_samples > (1u << 26)) roughness.spacing_origin.refuse("gives more than 2^26 samples over the span");
+  if (b.line_samples > (1u << 26))
+    roughness.origin(roughness.spacing).refuse("gives more than 2^26 samples over the span");
   // The patch average runs on the samples' linear interpolant (B35a: an extra sinc^2(k dx/2));
   // a band-limited line is drawn with that loss undone (B40a), so it sees the continuous texture.
   if (b.filter == ContactFilter::iso2d)
@@ -353,11 +360,13 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   b.samples = beam::output_samples(m);
   b.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start * m.sample_rate));
   if (b.skip >= b.samples)
-    spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
+    spectrum.origin(spectrum.skip_start)
+        .refuse("leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
   const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > b.samples - b.skip)
-    spectrum.segment_origin.refuse("is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
-                                   " samples = ((end - start) / speed - skip_start) x sample_rate)");
+    spectrum.origin(spectrum.segment)
+        .refuse("is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
+                " samples = ((end - start) / speed - skip_start) x sample_rate)");
   b.welch = study_welch_config(spectrum, m.sample_rate);
   return b;
 }

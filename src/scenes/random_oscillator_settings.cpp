@@ -39,15 +39,16 @@ RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {
   o.sample_rate = fs;
   o.samples = signal.samples;
   if (o.natural_frequency >= fs / 2)
-    oscillator.natural_frequency_origin.refuse(
-        "must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
+    oscillator.origin(oscillator.natural_frequency)
+        .refuse("must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
   o.f_max = force.f_max == 0.0 ? fs / 2 : force.f_max;
   if (o.f_max > fs / 2)
-    force.f_max_origin.refuse("exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
+    force.origin(force.f_max).refuse("exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
   const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > o.samples)
-    spectrum.segment_origin.refuse("is longer than one realisation's record (" + std::to_string(o.samples) +
-                                   " samples = duration x sample_rate)");
+    spectrum.origin(spectrum.segment)
+        .refuse("is longer than one realisation's record (" + std::to_string(o.samples) +
+                " samples = duration x sample_rate)");
   o.welch = study_welch_config(spectrum, fs);
   return o;
 }

@@ -145,7 +145,7 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   // Supports and imposed series.
   const auto support = SupportSection::parse(s);
   const ClampedEnds clamp = support.clamp;
-  if (disc && clamp != ClampedEnds::none) support.clamp_origin.refuse("a disc has no ends to clamp");
+  if (disc && clamp != ClampedEnds::none) support.origin(support.clamp).refuse("a disc has no ends to clamp");
   if (clamp == ClampedEnds::first || clamp == ClampedEnds::both)
     for (int d = 0; d < 6; ++d) out.model.imposed.push_back(ImposedDof{ids.front(), d, 0.0, TimeSeries::constant()});
   if (clamp == ClampedEnds::last || clamp == ClampedEnds::both)
@@ -160,8 +160,8 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   out.solver.analysis = analysis.dynamic ? Analysis::Dynamic : Analysis::QuasiStatic;
   out.solver.integrator = analysis.energy_consistent ? Integrator::EnergyConsistent : Integrator::Newmark;
   if (out.solver.integrator == Integrator::EnergyConsistent && !out.model.beams.empty())
-    analysis.integrator_origin.refuse(
-        "energy-consistent integration covers rigid bodies only; this model has beam elements");
+    analysis.origin(analysis.integrator)
+        .refuse("energy-consistent integration covers rigid bodies only; this model has beam elements");
   out.solver.impact_step_fraction = analysis.impact_step_fraction;
   out.solver.max_new_penetration = analysis.max_new_penetration;
   out.solver.max_iterations = static_cast<int>(analysis.max_iterations);
@@ -178,7 +178,7 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
   out.run.t_end = analysis.t_end;
   out.run.record_every = static_cast<int>(analysis.record_every);
   out.run.record_nodes = out.record;
-  out.step_where = analysis.dt_origin.where;
+  out.step_where = analysis.origin(analysis.dt).where;
   return out;
 }
 

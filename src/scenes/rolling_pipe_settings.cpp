@@ -20,7 +20,6 @@ namespace rollspec::scenes {
 using namespace study;
 
 namespace {
-const double inf = std::numeric_limits<double>::infinity();
 const double kPi = 3.141592653589793;
 }  // namespace
 
@@ -33,9 +32,8 @@ std::vector<KeySpec> rolling_pipe_keys() {
   for (auto& key : PipeAnalysisSection::keys()) k.push_back(key);
   for (auto& key : PipeSensorsSection::keys()) k.push_back(key);
   // skip_start is read by SpectrumSection; its doc is this scene's.
-  k.push_back(real_key("spectrum", "skip_start", "s",
-                       "start of the record left out of the spectra (settling on the surface)", std::string("0.02"),
-                       0.0, inf));
+  k.push_back(
+      SpectrumSection::skip_start_key("start of the record left out of the spectra (settling on the surface)", "0.02"));
   for (auto& key : texture_io::psd_keys()) k.push_back(key);
   for (auto& key : texture_io::surface_keys()) k.push_back(key);
   return k;
@@ -48,7 +46,8 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   p.texture = study::TextureSection::parse(s);
   p.psd = texture_io::study_psd(p.texture);
   const auto roughness = PipeRoughnessSection::parse(s);
-  p.line_keys = texture_io::LineGeneratorKeys::of(p.texture, roughness.spacing_origin, "[roughness] spacing");
+  p.line_keys =
+      texture_io::LineGeneratorKeys::of(p.texture, roughness.origin(roughness.spacing), "[roughness] spacing");
   if (!roughness.line) p.surface = texture_io::with_profile_values(p.texture, study::SurfaceSection::parse(s));
   p.line = roughness.line;
   const auto sensors = PipeSensorsSection::parse(s);
@@ -69,8 +68,8 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   p.dt = analysis.dt;
   p.gravity = PipeGravitySection::parse(s).acceleration;
   p.steps = static_cast<std::size_t>(std::llround(p.distance / p.speed / p.dt));
-  if (p.steps < 16) roll.distance_origin.refuse("gives fewer than 16 time steps at [analysis] dt");
-  if (p.steps > 50'000'000) analysis.dt_origin.refuse("gives more than 5e7 steps per realisation");
+  if (p.steps < 16) roll.origin(roll.distance).refuse("gives fewer than 16 time steps at [analysis] dt");
+  if (p.steps > 50'000'000) analysis.origin(analysis.dt).refuse("gives more than 5e7 steps per realisation");
   const int nodes = p.nodes();
   // Lumped node mass of the quadratic elements: m_e (1/6, 2/3, 1/6), so an interior end node
   // carries m_e/3 and a mid node 2 m_e/3; the stiffest contact oscillation is at the lightest.
@@ -95,25 +94,25 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
     m << "= " << p.dt
       << " s does not resolve the contact oscillation of the lightest node (T_c = 2 pi sqrt(m/eps_n) = " << tc
       << " s); allowed: dt <= T_c/20 = " << tc / 20.0 << " s";
-    analysis.dt_origin.refuse(m.str());
+    analysis.origin(analysis.dt).refuse(m.str());
   }
   // Sensors: nearest nodes.
   for (double f : sensors.positions) {
     if (!(f >= 0.0 && f <= 1.0))
-      sensors.positions_origin.refuse("fraction " + std::to_string(f) + " lies outside [0, 1]");
+      sensors.origin(sensors.positions).refuse("fraction " + std::to_string(f) + " lies outside [0, 1]");
     p.sensor_nodes.push_back(static_cast<int>(std::lround(f * (nodes - 1))));
     p.sensor_fractions.push_back(f);
   }
-  if (p.sensor_nodes.empty()) sensors.positions_origin.refuse("lists no sensor; allowed: fractions in [0, 1]");
+  if (p.sensor_nodes.empty()) sensors.origin(sensors.positions).refuse("lists no sensor; allowed: fractions in [0, 1]");
   // The rolled strip: x from -margin to distance + margin (the spheres' footprint and a cell).
   p.x_lo = -(p.radius + 0.02 * p.distance + 0.01);
   p.x_hi = p.distance + p.radius + 0.02 * p.distance + 0.01;
-  KeyOrigin spacing_origin = roughness.spacing_origin;  // the key that set the spacing
+  KeyOrigin spacing_origin = roughness.origin(roughness.spacing);  // the key that set the spacing
   if (p.line) {
     p.spacing = roughness.spacing;
     p.line_samples = static_cast<std::size_t>(std::ceil((p.x_hi - p.x_lo) / p.spacing)) + 1;
     if (p.line_samples > (1u << 24))
-      roughness.spacing_origin.refuse("gives more than 2^24 samples over the rolled strip");
+      roughness.origin(roughness.spacing).refuse("gives more than 2^24 samples over the rolled strip");
   } else {
     const auto grid = SurfaceGridSection::parse(s);
     spacing_origin = grid.spacing_origin;
@@ -145,11 +144,13 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   p.samples = p.steps + 1;
   p.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start / p.dt));
   if (p.skip >= p.samples)
-    spectrum.skip_start_origin.refuse("leaves nothing of the record (" + std::to_string(p.samples) + " samples)");
+    spectrum.origin(spectrum.skip_start)
+        .refuse("leaves nothing of the record (" + std::to_string(p.samples) + " samples)");
   const auto segment = static_cast<std::size_t>(spectrum.segment);
   if (segment > p.samples - p.skip)
-    spectrum.segment_origin.refuse("is longer than the analysed record (" + std::to_string(p.samples - p.skip) +
-                                   " samples = (distance / speed - skip_start) / dt)");
+    spectrum.origin(spectrum.segment)
+        .refuse("is longer than the analysed record (" + std::to_string(p.samples - p.skip) +
+                " samples = (distance / speed - skip_start) / dt)");
   p.welch = study_welch_config(spectrum, 1.0 / p.dt);
   p.solver.analysis = Analysis::Dynamic;
   p.solver.max_iterations = 30;

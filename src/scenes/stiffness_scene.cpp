@@ -1,7 +1,6 @@
 #include "src/scenes/stiffness_scene.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include "kernels/contact/geometry.hpp"
 #include "src/error.hpp"
@@ -17,18 +16,8 @@ namespace rollspec::scenes {
 using namespace study;
 
 std::vector<KeySpec> stiffness_scene_keys() {
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<KeySpec> k = {
-      real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
-      real_key("ball", "density", "kg/m^3", "ball density (weight = 4/3 pi R^3 rho g)", std::string("7850"), 0.0, inf,
-               false),
-      real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
-      real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("ball", "gravity", "m/s^2", "gravitational acceleration (for the ball's weight)", std::string("9.81"),
-               0.0, inf),
-      real_key("flat", "youngs_modulus", "Pa", "flat's Young's modulus", std::string("210e9"), 0.0, inf, false),
-      real_key("flat", "poisson", "-", "flat's Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-  };
+  std::vector<KeySpec> k = BallSection::solid_keys();
+  for (auto& t : FlatSection::keys()) k.push_back(t);
   for (auto& t : study::StiffnessSection::keys()) k.push_back(t);
   for (auto& t : texture_io::surface_keys()) k.push_back(t);
   for (auto& t : texture_io::psd_keys()) k.push_back(t);
@@ -36,7 +25,7 @@ std::vector<KeySpec> stiffness_scene_keys() {
 }
 
 BallContact ball_contact_pair(const KeyReader& s, double other_modulus, double other_poisson) {
-  const BallSection ball = BallSection::parse_solid(s);
+  const BallSection ball = BallSection::parse(s);
   BallContact p{};
   p.radius = ball.radius;
   p.effective_modulus = ball.effective_modulus(other_modulus, other_poisson);

@@ -99,11 +99,11 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
   g.nx += g.nx % 2;
   // Refused here, so that `plan` refuses what `run` would.
   if (g.window < 8)
-    (window_set ? bf.window_origin : surface.ny_origin)
+    (window_set ? bf.origin(bf.window) : surface.ny_origin)
         .refuse("leaves a solver window of " + std::to_string(g.window) + " cells; allowed: 8 or more");
-  if (g.segment < 16) bf.segment_origin.refuse("is shorter than 16 positions; allowed: 0 (derived) or 16 or more");
+  if (g.segment < 16) bf.origin(bf.segment).refuse("is shorter than 16 positions; allowed: 0 (derived) or 16 or more");
   if (g.nx < g.window + 16 * g.step)
-    bf.strip_length_origin.refuse("leaves fewer than 16 path positions outside the window");
+    bf.origin(bf.strip_length).refuse("leaves fewer than 16 path positions outside the window");
   for (std::size_t j = g.window / 2; j + g.window / 2 < g.nx; j += g.step) ++g.positions;
 
   // Cost: c = 2.9e-7 s per position of the whole load search (contact_box_work), plus the solvers'

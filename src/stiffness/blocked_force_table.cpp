@@ -176,7 +176,8 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    static_cast<double>(std::clock() - start_cpu) / CLOCKS_PER_SEC);
   } catch (const std::invalid_argument& e) {
-    ts.blocked_force.window_origin.refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
+    ts.blocked_force.origin(ts.blocked_force.window)
+        .refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
   }
   if (!path.converged)
     throw data_error("blocked force: the path search did not converge (largest error " +

@@ -239,7 +239,8 @@ TableProbe probe_equivalent_roughness(const TableStudy& ts, const BlockedForceGe
     contact::equivalent_roughness(solver, p.strip_grid, strip.heights, radius, ts.stiffness.shape, first, load, p.opts,
                                   p.po);
   } catch (const std::invalid_argument& e) {  // as the build refuses it
-    ts.blocked_force.window_origin.refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
+    ts.blocked_force.origin(ts.blocked_force.window)
+        .refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
   }
   out.probe_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
   out.positions = count;
@@ -277,7 +278,8 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
     try {
       r = contact::equivalent_roughness(solver, strip_grid, strip.heights, radius, shape, positions, load, opts, po);
     } catch (const std::invalid_argument& e) {
-      ts.blocked_force.window_origin.refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
+      ts.blocked_force.origin(ts.blocked_force.window)
+          .refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
     }
     if (!r.converged)
       throw data_error("equivalent roughness: strip " + std::to_string(si) + " did not converge (largest error " +

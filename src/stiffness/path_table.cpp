@@ -61,11 +61,11 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
   if (p.strip_length > 0.0) {
     g.nx = static_cast<std::size_t>(std::round(p.strip_length / dx));
     if (g.nx < need)
-      p.strip_length_origin.refuse(
-          "= " + io::exact_text(p.strip_length) + " m is shorter than the ball's path in the run (" + um(path_length) +
-          " plus one step of " + um(step_length) + ") plus the solver window (" + std::to_string(g.window) +
-          " cells of " + um(dx) + "); allowed: 0 (derived) or at least " +
-          io::exact_text(static_cast<double>(need) * dx) + " m");
+      p.origin(p.strip_length)
+          .refuse("= " + io::exact_text(p.strip_length) + " m is shorter than the ball's path in the run (" +
+                  um(path_length) + " plus one step of " + um(step_length) + ") plus the solver window (" +
+                  std::to_string(g.window) + " cells of " + um(dx) + "); allowed: 0 (derived) or at least " +
+                  io::exact_text(static_cast<double>(need) * dx) + " m");
   } else {
     g.nx = need;
   }

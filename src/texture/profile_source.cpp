@@ -183,7 +183,7 @@ std::string surface_share_warning(const TextureSection& t, const SurfaceSection&
   if (share >= kSurfaceShareWarning) return "";
   const double length = static_cast<double>(e.samples) * e.spacing;
   const auto cells = static_cast<long long>(std::ceil(length / s.spacing / 2.0) * 2.0);
-  return s.nx_origin.where + ": the spectral surfaces of " + std::to_string(s.nx) + " x " + std::to_string(s.ny) +
+  return s.origin(s.nx).where + ": the spectral surfaces of " + std::to_string(s.nx) + " x " + std::to_string(s.ny) +
          " cells of " + io::length_text(s.spacing) + " hold " + percent(share) +
          " of the measured profiles' variance (rms " + io::four_digits(std::sqrt(share)) +
          " of theirs): the scans are " + io::length_text(length) +

@@ -272,8 +272,8 @@ SurfaceSection with_profile_values(const TextureSection& t, SurfaceSection s) {
 SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection& s, const texture::Psd& psd) {
   SurfaceGenerator g;
   const auto nx = static_cast<std::size_t>(s.nx), ny = static_cast<std::size_t>(s.ny);
-  if (nx % 2) s.nx_origin.refuse("must be even");
-  if (ny % 2) s.ny_origin.refuse("must be even");
+  if (nx % 2) s.origin(s.nx).refuse("must be even");
+  if (ny % 2) s.origin(s.ny).refuse("must be even");
   const double h = s.spacing;
   try {
     if (s.method == study::SurfaceMethod::spectral) {
@@ -299,7 +299,7 @@ SurfaceGenerator surface_generator(const TextureSection& t, const SurfaceSection
     // The spectral grid must resolve k_max stretched by the anisotropy along x and y.
     const double a = s.method == study::SurfaceMethod::spectral ? std::sqrt(s.anisotropy) : 1.0;
     throw config_error(
-        grid_message(LineGeneratorKeys::of(t, s.spacing_origin, "[surface] spacing"), e, h, std::max(a, 1.0 / a)));
+        grid_message(LineGeneratorKeys::of(t, s.origin(s.spacing), "[surface] spacing"), e, h, std::max(a, 1.0 / a)));
   }
   if (g.spectral)  // a grid smaller than the measured profiles drops their longer waves: say how much
     if (const std::string w = surface_share_warning(t, s, psd, g.spectral->target_variance()); !w.empty()) io::warn(w);

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The C++ of src/, kernels/ and tests/ as .clang-format says (`clang-format --dry-run -Werror`): prints
+"""The C++ of src/, kernels/, tests/ and python/ as .clang-format says (`clang-format --dry-run -Werror`): prints
 each drifting line as clang-format reports it and exits 1; exits 77 (CTest: skipped) with one line if
 clang-format is not installed. The tree is formatted with Debian 12's clang-format 14 (package
 clang-format, which .ci/setup installs); fix a drift with `clang-format -i FILE`.
@@ -31,7 +31,7 @@ def main():
     if probe.returncode == 0:
         print(f"{tool} {style} reports no drift in 'int  x ;': this check could not fail")
         return 1
-    files = sorted(str(p) for d in ("src", "kernels", "tests") for p in (root / d).rglob("*")
+    files = sorted(str(p) for d in ("src", "kernels", "tests", "python") for p in (root / d).rglob("*")
                    if p.suffix in SUFFIXES and p.is_file())
     if not files:
         print(f"{root}: no C++ files under src/, kernels/ or tests/", file=sys.stderr)

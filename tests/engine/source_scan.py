@@ -1,5 +1,5 @@
-"""Reading the C++ of src/ for the source tests (test_choice_literals.py, test_scene_literals.py): the
-code with comments blanked and literals kept, each file by its path from the repository root, the
+"""Reading the C++ of src/ for the source tests (test_choice_literals.py, test_scene_literals.py,
+test_keys_once.py): the code with comments blanked and literals kept, each file by its path from the repository root, the
 comparisons with a string literal, and scratch trees the tests break each rule in."""
 import pathlib
 import re

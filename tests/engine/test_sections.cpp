@@ -44,7 +44,7 @@ TEST_CASE("ball section: weight and E* as the scene derives them") {
 TEST_CASE("ball section: a later check names [ball] end where the study set it") {
   const auto s = ball_on_beam("[ball]\nend = 0.5\n");
   const auto ball = study::BallSection::parse(s);
-  const std::string m = message_of([&] { ball.end_origin.refuse("lies beyond the span [0, length]"); });
+  const std::string m = message_of([&] { ball.origin(ball.end).refuse("lies beyond the span [0, length]"); });
   CHECK(m == "/tmp/rollspec_sections.ini:6: [ball] end = 0.5: lies beyond the span [0, length]");
 }
 

@@ -102,7 +102,7 @@ TEST_CASE("lines and study sections: values and origins") {
   CHECK(l.count == 3);
   CHECK(l.length == 2e-3);
   CHECK(l.spacing == 4e-6);
-  CHECK(l.spacing_origin.where == "/tmp/rollspec_texture_sections/s.ini:8: [lines] spacing = 4e-06");
+  CHECK(l.origin(l.spacing).where == "/tmp/rollspec_texture_sections/s.ini:8: [lines] spacing = 4e-06");
   const auto st = study::StudySection::parse(s);
   CHECK(st.scene == "texture");
   CHECK(st.seed == 7);
@@ -114,7 +114,7 @@ TEST_CASE("line generator: a spacing coarser than the PSD names the keys that fi
   const auto s = texture_study("[lines]\nspacing = 1e-5\n");
   const auto t = study::TextureSection::parse(s);
   const auto l = study::LinesSection::parse(s);
-  const auto keys = texture_io::LineGeneratorKeys::of(t, l.spacing_origin, "[lines] spacing");
+  const auto keys = texture_io::LineGeneratorKeys::of(t, l.origin(l.spacing), "[lines] spacing");
   const std::string m =
       message_of([&] { texture_io::line_generator(keys, texture_io::study_psd(t), l.spacing, 100, false); });
   CHECK(m.find("/tmp/rollspec_texture_sections/s.ini:6: [lines] spacing = 1e-05: sampling dx") == 0);

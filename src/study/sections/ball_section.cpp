@@ -1,49 +1,42 @@
 #include "src/study/sections/ball_section.hpp"
 
 #include <cmath>
-#include <limits>
-#include <string>
 
 #include "kernels/contact/geometry.hpp"
-#include "src/study/key_reader.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
-std::vector<KeySpec> BallSection::keys() {
-  const double inf = std::numeric_limits<double>::infinity();
-  return {
-      real_key("ball", "radius", "m", "ball radius R", std::string("0.02"), 0.0, inf, false),
-      real_key("ball", "density", "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", std::string("7850"), 0.0, inf,
-               false),
-      real_key("ball", "youngs_modulus", "Pa", "ball Young's modulus", std::string("210e9"), 0.0, inf, false),
-      real_key("ball", "poisson", "-", "ball Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("ball", "speed", "m/s", "rolling speed v", std::string("1"), 0.0, inf, false),
-      real_key("ball", "start", "m", "ball position where the record starts", std::string("0.05"), 0.0, inf),
-      real_key("ball", "end", "m", "ball position where the record ends", std::string("0.35"), 0.0, inf),
-      real_key("ball", "gravity", "m/s^2", "gravitational acceleration", std::string("9.81"), 0.0, inf),
-  };
+namespace {
+using B = BallSection;
+const SectionKeys<B>& declared() {
+  static const auto k =
+      SectionKeys<B>("ball")
+          .real("radius", &B::radius, "m", "ball radius R", "0.02", above(0.0))
+          .real("density", &B::density, "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", "7850", above(0.0))
+          .real("youngs_modulus", &B::youngs_modulus, "Pa", "ball Young's modulus", "210e9", above(0.0))
+          .real("poisson", &B::poisson, "-", "ball Poisson's ratio", "0.3", {-1.0, 0.5, false, false})
+          .real("speed", &B::speed, "m/s", "rolling speed v", "1", above(0.0))
+          .if_present()
+          .real("start", &B::start, "m", "ball position where the record starts", "0.05", at_least(0.0))
+          .if_present()
+          .real("end", &B::end, "m", "ball position where the record ends", "0.35", at_least(0.0))
+          .if_present()
+          .real("gravity", &B::gravity, "m/s^2", "gravitational acceleration", "9.81", at_least(0.0));
+  return k;
+}
+}  // namespace
+
+std::vector<KeySpec> BallSection::keys() { return declared().keys(); }
+
+std::vector<KeySpec> BallSection::solid_keys() {
+  std::vector<KeySpec> k = declared().keys_of(&B::radius, &B::density, &B::youngs_modulus, &B::poisson, &B::gravity);
+  k[1].doc = "ball density (weight = 4/3 pi R^3 rho g)";
+  k[4].doc += " (for the ball's weight)";
+  return k;
 }
 
-BallSection BallSection::parse_solid(const KeyReader& s) {
-  BallSection b;
-  b.radius = s.real("ball.radius");
-  b.density = s.real("ball.density");
-  b.youngs_modulus = s.real("ball.youngs_modulus");
-  b.poisson = s.real("ball.poisson");
-  b.gravity = s.real("ball.gravity");
-  return b;
-}
-
-BallSection BallSection::parse(const KeyReader& s) {
-  BallSection b = parse_solid(s);
-  b.speed = s.real("ball.speed");
-  b.start = s.real("ball.start");
-  b.end = s.real("ball.end");
-  b.end_origin = {s.where("ball.end")};
-  b.radius_origin = {s.where("ball.radius")};
-  b.speed_origin = {s.where("ball.speed")};
-  return b;
-}
+BallSection BallSection::parse(const KeyReader& s) { return declared().read(s); }
 
 double BallSection::mass() const { return 4.0 / 3.0 * M_PI * radius * radius * radius * density; }
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
@@ -51,14 +51,12 @@ inline constexpr ChoiceTable<ContactFilter, 4> kContactFilters{{
      "[equivalent_roughness] strips rough strips, kernels/contact ER-1..ER-7, a cached table; point laws only"},
 }};
 
-struct ContactSection {
+struct ContactSection : KeyedSection {
   ContactLaw law = ContactLaw::hertz;
   ContactLoss loss = ContactLoss::damping_only;
   BlockedForceSource blocked_force = BlockedForceSource::spring;
   ContactFilter filter = ContactFilter::patch;
   double damping = 0.0, k0 = 0.0;
-  KeyOrigin filter_origin;
-  bool filter_set = false;  // written in the study or by --set (not the default)
   // The laws that read a stiffness table (table: the fitted curve; literal: seed 001 Eq. 7 from it).
   bool uses_stiffness_table() const { return law == ContactLaw::table || law == ContactLaw::literal; }
   // The linearised law with the contact solver's blocked force (a blocked-force table).

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
@@ -27,16 +27,15 @@ inline constexpr ChoiceTable<EquivalentStiffness, 2> kEquivalentStiffnesses{{
     {EquivalentStiffness::law, "law", "the law's own stiffness; h_eq alone"},
 }};
 
-struct EquivalentRoughnessSection {
+struct EquivalentRoughnessSection : KeyedSection {
   long long strips = 0;
   EquivalentLine line = EquivalentLine::synthesised;
   EquivalentStiffness stiffness = EquivalentStiffness::strip;
-  KeyOrigin line_origin;
   long long leave_out = -1;  // >= 0: the sub-table without this strip (D-30)
-  KeyOrigin leave_out_origin;
 
   static std::vector<KeySpec> keys();
   static EquivalentRoughnessSection parse(const KeyReader& s);
+  static std::string leave_out_setting(long long i);  // "<section>.leave_out=i", a --set text
 };
 
 }  // namespace rollspec::study

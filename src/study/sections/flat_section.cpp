@@ -1,14 +1,21 @@
 #include "src/study/sections/flat_section.hpp"
 
-#include "src/study/key_reader.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
-FlatSection FlatSection::parse(const KeyReader& s) {
-  FlatSection f;
-  f.youngs_modulus = s.real("flat.youngs_modulus");
-  f.poisson = s.real("flat.poisson");
-  return f;
+namespace {
+const SectionKeys<FlatSection>& declared() {
+  using T = FlatSection;
+  static const auto k =
+      SectionKeys<T>("flat")
+          .real("youngs_modulus", &T::youngs_modulus, "Pa", "flat's Young's modulus", "210e9", above(0.0))
+          .real("poisson", &T::poisson, "-", "flat's Poisson's ratio", "0.3", {-1.0, 0.5, false, false});
+  return k;
 }
+}  // namespace
+
+std::vector<KeySpec> FlatSection::keys() { return declared().keys(); }
+FlatSection FlatSection::parse(const KeyReader& s) { return declared().read(s); }
 
 }  // namespace rollspec::study

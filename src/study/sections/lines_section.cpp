@@ -1,30 +1,22 @@
 #include "src/study/sections/lines_section.hpp"
 
-#include <limits>
-#include <string>
-
-#include "src/study/key_reader.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
-std::vector<KeySpec> LinesSection::keys() {
-  const double inf = std::numeric_limits<double>::infinity();
-  return {
-      integer_key("lines", "count", "line textures to generate", std::string("10"), 0, 1e6),
-      real_key("lines", "length", "m", "length of each line texture", std::string("0.4"), 0.0, inf, false),
-      real_key("lines", "spacing", "m", "sample spacing dx of the lines (dx <= pi / k_max)", std::string("1e-5"), 0.0,
-               inf, false),
-  };
+namespace {
+const SectionKeys<LinesSection>& declared() {
+  using L = LinesSection;
+  static const auto k =
+      SectionKeys<L>("lines")
+          .integer("count", &L::count, "line textures to generate", "10", 0, 1e6)
+          .real("length", &L::length, "m", "length of each line texture", "0.4", above(0.0))
+          .real("spacing", &L::spacing, "m", "sample spacing dx of the lines (dx <= pi / k_max)", "1e-5", above(0.0));
+  return k;
 }
+}  // namespace
 
-LinesSection LinesSection::parse(const KeyReader& s) {
-  LinesSection l;
-  l.count = s.integer("lines.count");
-  l.length = s.real("lines.length");
-  l.spacing = s.real("lines.spacing");
-  l.length_origin = {s.where("lines.length")};
-  l.spacing_origin = {s.where("lines.spacing")};
-  return l;
-}
+std::vector<KeySpec> LinesSection::keys() { return declared().keys(); }
+LinesSection LinesSection::parse(const KeyReader& s) { return declared().read(s); }
 
 }  // namespace rollspec::study

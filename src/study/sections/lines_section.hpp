@@ -3,16 +3,15 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct LinesSection {
+struct LinesSection : KeyedSection {
   long long count = 10;
   double length = 0.4, spacing = 1e-5;  // m
-  KeyOrigin length_origin, spacing_origin;
 
   static std::vector<KeySpec> keys();
   static LinesSection parse(const KeyReader& s);

@@ -4,7 +4,7 @@
 
 #include "kernels/beam/modal_beam.hpp"
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
@@ -15,13 +15,12 @@ inline constexpr ChoiceTable<beam::Support, 2> kBeamSupports{{
     {beam::Support::simply_supported, "simply-supported", ""},
 }};
 
-struct ModalBeamSection {
+struct ModalBeamSection : KeyedSection {
   beam::BeamProperties properties;
   beam::ModeSelection selection;
   beam::ModalDamping damping;
   bool static_correction = true;
   double poisson = 0.0;  // the contact modulus's, not the modal beam's
-  KeyOrigin effective_length_origin, modes_origin, max_frequency_origin, thickness_origin;
 
   static std::vector<KeySpec> keys();
   static ModalBeamSection parse(const KeyReader& s);

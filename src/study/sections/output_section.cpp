@@ -1,26 +1,24 @@
 #include "src/study/sections/output_section.hpp"
 
-#include <string>
-
-#include "src/study/key_reader.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
-std::vector<KeySpec> OutputSection::keys() {
-  return {
-      integer_key("output", "time_histories", "store time histories of realisations 0..n-1", std::string("0"), 0, 1000),
-      bool_key("output", "reference",
-               "linearised law: also write the frequency-domain reference (/reference: expected Welch PSD and the "
-               "range that holds the ensemble mean), computed once after the ensemble",
-               std::string("true")),
-  };
+namespace {
+const SectionKeys<OutputSection>& declared() {
+  using O = OutputSection;
+  static const auto k =
+      SectionKeys<O>("output")
+          .integer("time_histories", &O::time_histories, "store time histories of realisations 0..n-1", "0", 0, 1000)
+          .boolean("reference", &O::reference,
+                   "linearised law: also write the frequency-domain reference (/reference: expected Welch PSD and the "
+                   "range that holds the ensemble mean), computed once after the ensemble",
+                   "true");
+  return k;
 }
+}  // namespace
 
-OutputSection OutputSection::parse(const KeyReader& s) {
-  OutputSection p;
-  p.time_histories = s.integer("output.time_histories");
-  p.reference = s.boolean("output.reference");
-  return p;
-}
+std::vector<KeySpec> OutputSection::keys() { return declared().keys(); }
+OutputSection OutputSection::parse(const KeyReader& s) { return declared().read(s); }
 
 }  // namespace rollspec::study

@@ -1,16 +1,15 @@
 #pragma once
 // [output] (scene ball-on-beam): stored time histories and the linearised law's reference, read once.
-#include <string>
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct OutputSection {
+struct OutputSection : KeyedSection {
   long long time_histories = 0;
   bool reference = true;
 

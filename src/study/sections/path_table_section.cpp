@@ -1,35 +1,29 @@
 #include "src/study/sections/path_table_section.hpp"
 
-#include <limits>
-#include <string>
-
-#include "src/study/key_reader.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
-std::vector<KeySpec> PathTableSection::keys() {
-  return {
-      integer_key("path_table", "approaches",
-                  "law = path: approaches J of the table P(delta, xi) (kernels/beam B43), 2 or more", std::string("8"),
-                  2, 64),
-      integer_key(
-          "path_table", "step",
-          "law = path: path step in cells between tabulated positions; 0: at most a quarter of the contact radius",
-          std::string("0"), 0, 1000),
-      real_key("path_table", "strip_length", "m",
-               "law = path: length of the rough strip; 0: the ball's path in the run ((end - start) + one step) plus "
-               "the solver window",
-               std::string("0"), 0.0, std::numeric_limits<double>::infinity()),
-  };
+namespace {
+const SectionKeys<PathTableSection>& declared() {
+  using T = PathTableSection;
+  static const auto k =
+      SectionKeys<T>("path_table")
+          .integer("approaches", &T::approaches,
+                   "law = path: approaches J of the table P(delta, xi) (kernels/beam B43), 2 or more", "8", 2, 64)
+          .integer("step", &T::step,
+                   "law = path: path step in cells between tabulated positions; 0: at most a quarter of the contact "
+                   "radius",
+                   "0", 0, 1000)
+          .real("strip_length", &T::strip_length, "m",
+                "law = path: length of the rough strip; 0: the ball's path in the run ((end - start) + one step) plus "
+                "the solver window",
+                "0", at_least(0.0));
+  return k;
 }
+}  // namespace
 
-PathTableSection PathTableSection::parse(const KeyReader& s) {
-  PathTableSection p;
-  p.approaches = s.integer("path_table.approaches");
-  p.step = s.integer("path_table.step");
-  p.strip_length = s.real("path_table.strip_length");
-  p.strip_length_origin = {s.where("path_table.strip_length")};
-  return p;
-}
+std::vector<KeySpec> PathTableSection::keys() { return declared().keys(); }
+PathTableSection PathTableSection::parse(const KeyReader& s) { return declared().read(s); }
 
 }  // namespace rollspec::study

@@ -4,16 +4,15 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct PathTableSection {
+struct PathTableSection : KeyedSection {
   long long approaches = 0, step = 0;  // step 0: derived
   double strip_length = 0.0;           // m; 0: derived
-  KeyOrigin strip_length_origin;
 
   static std::vector<KeySpec> keys();
   static PathTableSection parse(const KeyReader& s);

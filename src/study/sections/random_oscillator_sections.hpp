@@ -8,15 +8,14 @@
 #include "kernels/spectral/harmonic_synthesis.hpp"
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/amplitudes_choice.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct OscillatorSection {
+struct OscillatorSection : KeyedSection {
   double mass = 1.0, natural_frequency = 0.0, damping_ratio = 0.0;
-  KeyOrigin natural_frequency_origin;
 
   static std::vector<KeySpec> keys();
   static OscillatorSection parse(const KeyReader& s);
@@ -28,18 +27,17 @@ inline constexpr ChoiceTable<ForceSpectrum, 1> kForceSpectra{{
     {ForceSpectrum::flat, "flat", "up to f_max"},
 }};
 
-struct ForceSection {
+struct ForceSection : KeyedSection {
   ForceSpectrum spectrum = ForceSpectrum::flat;
   double level = 0.0, f_max = 0.0;  // f_max 0: the Nyquist frequency
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
-  KeyOrigin f_max_origin;
 
   static std::vector<KeySpec> keys();
   static ForceSection parse(const KeyReader& s);
 };
 
 // [signal] of random-oscillator (ball-on-beam's SignalSection has other keys).
-struct RecordSignalSection {
+struct RecordSignalSection : KeyedSection {
   double sample_rate = 0.0, duration = 0.0;
   std::size_t samples = 0;  // duration x sample_rate rounded to even, 4 to 1e9
 

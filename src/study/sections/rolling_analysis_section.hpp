@@ -1,12 +1,12 @@
 #pragma once
 // [analysis] and [output] of scene rolling-beam, read once: the step, the run length, the solver's
 // limits and the recorded nodes. The step is checked against the run length here; the integrator
-// against the model's beam elements by the scene, at integrator_origin.
+// against the model's beam elements by the scene, at origin(integrator).
 #include <string>
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 #include "src/study/sections/rolling_world_sections.hpp"
 
 namespace rollspec::study {
@@ -26,19 +26,20 @@ inline constexpr ChoiceTable<AnalysisIntegrator, 2> kAnalysisIntegrators{{
      "midpoint + discrete-gradient penalty; rigid bodies only"},
 }};
 
-struct RollingAnalysisSection {
-  bool dynamic = true;             // else quasi-static load steps
-  bool energy_consistent = false;  // else Newmark
+struct RollingAnalysisSection : KeyedSection {
+  AnalysisType type = AnalysisType::dynamic;
+  AnalysisIntegrator integrator = AnalysisIntegrator::newmark;
+  bool dynamic = true;             // type = dynamic (else quasi-static load steps)
+  bool energy_consistent = false;  // integrator = energy-consistent (else Newmark)
   double dt = 0.0, t_end = 0.0, impact_step_fraction = 0.0, max_new_penetration = 0.0, tolerance = 0.0;
   long long record_every = 1, max_iterations = 0, max_cuts = 0, line_search = 0;
-  KeyOrigin dt_origin, integrator_origin;
 
   static std::vector<KeySpec> keys();
   static RollingAnalysisSection parse(const KeyReader& s);
 };
 
 // [output] of rolling-beam: the recorded nodes.
-struct NodeOutputSection {
+struct NodeOutputSection : KeyedSection {
   NodeList nodes;
 
   static std::vector<KeySpec> keys();

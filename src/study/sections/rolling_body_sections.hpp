@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
@@ -22,21 +22,21 @@ inline constexpr ChoiceTable<BodyKind, 4> kBodyKinds{{
     {BodyKind::flying_beam, "flying-beam", "seed 000 builder 4.4: floor and an oblique wall"},
 }};
 
-struct BodySection {
+struct BodySection : KeyedSection {
   BodyKind kind = BodyKind::beam;
 
   static std::vector<KeySpec> keys();
   static BodySection parse(const KeyReader& s);
 };
 
-struct PuckSection {
+struct PuckSection : KeyedSection {
   double half_width = 0.0, force_peak = 0.0, moment_peak = 0.0, pulse = 0.0;
 
   static std::vector<KeySpec> keys();
   static PuckSection parse(const KeyReader& s);
 };
 
-struct FlyingBeamSection {
+struct FlyingBeamSection : KeyedSection {
   double force_peak = 0.0, ramp = 0.0, wall_distance = 0.0;
 
   static std::vector<KeySpec> keys();
@@ -45,7 +45,7 @@ struct FlyingBeamSection {
 
 // [beam] of rolling-beam (not ball-on-beam's modal beam); inner_diameter < diameter and distinct
 // ends are checked here.
-struct StraightBeamSection {
+struct StraightBeamSection : KeyedSection {
   Eigen::Vector3d start, end, up;
   long long elements = 0;
   double diameter = 0.0, inner_diameter = 0.0, youngs_modulus = 0.0, poisson = 0.0, density = 0.0;
@@ -54,7 +54,7 @@ struct StraightBeamSection {
   static StraightBeamSection parse(const KeyReader& s);
 };
 
-struct DiscSection {
+struct DiscSection : KeyedSection {
   double radius = 0.0, length = 0.0, mass = 0.0;
   bool at_rest = true;       // position = rest: on the first plane at its static penetration
   Eigen::Vector3d position;  // when not at rest

@@ -1,131 +1,124 @@
 #include "src/study/sections/rolling_pipe_sections.hpp"
 
-#include <limits>
-
-#include "src/study/key_reader.hpp"
-#include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
 namespace {
-const double inf = std::numeric_limits<double>::infinity();
-}  // namespace
 
-std::vector<KeySpec> PipeSection::keys() {
-  return {
-      real_key("pipe", "length", "m", "tube length (its axis lies across the rolling direction)", std::string("1"), 0.0,
-               inf, false),
-      real_key("pipe", "diameter", "m", "outer diameter (the contact spheres' diameter)", std::string("0.06"), 0.0, inf,
-               false),
-      real_key("pipe", "inner_diameter", "m", "inner diameter (0: solid bar)", std::string("0.052"), 0.0, inf),
-      real_key("pipe", "youngs_modulus", "Pa", "Young's modulus", std::string("210e9"), 0.0, inf, false),
-      real_key("pipe", "poisson", "-", "Poisson's ratio", std::string("0.3"), -1.0, 0.5, false, false),
-      real_key("pipe", "density", "kg/m^3", "density", std::string("7850"), 0.0, inf, false),
-      integer_key("pipe", "elements", "quadratic 3-node beam elements along the tube (2n + 1 contact nodes)",
-                  std::string("4"), 1, 1000),
-  };
+const SectionKeys<PipeSection>& pipe_keys() {
+  using T = PipeSection;
+  static const auto k =
+      SectionKeys<T>("pipe")
+          .real("length", &T::length, "m", "tube length (its axis lies across the rolling direction)", "1", above(0.0))
+          .real("diameter", &T::diameter, "m", "outer diameter (the contact spheres' diameter)", "0.06", above(0.0))
+          .real("inner_diameter", &T::inner_diameter, "m", "inner diameter (0: solid bar)", "0.052", at_least(0.0))
+          .real("youngs_modulus", &T::youngs_modulus, "Pa", "Young's modulus", "210e9", above(0.0))
+          .real("poisson", &T::poisson, "-", "Poisson's ratio", "0.3", {-1.0, 0.5, false, false})
+          .real("density", &T::density, "kg/m^3", "density", "7850", above(0.0))
+          .integer("elements", &T::elements, "quadratic 3-node beam elements along the tube (2n + 1 contact nodes)",
+                   "4", 1, 1000);
+  return k;
 }
 
+const SectionKeys<RollSection>& roll_keys() {
+  using T = RollSection;
+  static const auto k =
+      SectionKeys<T>("roll")
+          .real("speed", &T::speed, "m/s", "initial rolling speed v (spin v/r: rolling without slip)", "0.5",
+                above(0.0))
+          .real("distance", &T::distance, "m", "distance rolled during the record (record length distance/speed)",
+                "0.3", above(0.0));
+  return k;
+}
+
+const SectionKeys<PipeRoughnessSection>& roughness_keys() {
+  using T = PipeRoughnessSection;
+  static const auto k =
+      SectionKeys<T>("roughness")
+          .choice("kind", &T::kind, "the roughness under the contact nodes", PipeRoughnessKind::line,
+                  kPipeRoughnessKinds)
+          .real("spacing", &T::spacing, "m", "sample spacing of the line texture", "1e-3", above(0.0));
+  return k;
+}
+
+const SectionKeys<PipeContactSection>& contact_keys() {
+  using T = PipeContactSection;
+  static const auto k =
+      SectionKeys<T>("contact")
+          .real("friction", &T::friction, "-", "Coulomb coefficient mu (0: frictionless, the tube slides)", "0.3",
+                at_least(0.0))
+          .real("penalty_normal", &T::penalty_normal, "N/m", "normal penalty eps_n per contact node", "2e7", above(0.0))
+          .real("penalty_tangential", &T::penalty_tangential, "N/m", "tangential penalty eps_t per contact node", "2e6",
+                above(0.0))
+          .real("damping_ratio", &T::damping_ratio, "-",
+                "normal contact damper per node as a ratio of critical on the node's lumped mass: c = 2 zeta "
+                "sqrt(eps_n m_node)",
+                "0.1", within(0.0, 10.0))
+          .boolean("rolling", &T::rolling, "rolling correction of the tangential gap (false: seed 000's 'no rolling')",
+                   "true");
+  return k;
+}
+
+const SectionKeys<PipeGravitySection>& gravity_keys() {
+  using T = PipeGravitySection;
+  static const auto k = SectionKeys<T>("gravity").real("acceleration", &T::acceleration, "m/s^2",
+                                                       "gravity, normal to the mean surface", "9.81", above(0.0));
+  return k;
+}
+
+const SectionKeys<PipeAnalysisSection>& analysis_keys() {
+  using T = PipeAnalysisSection;
+  static const auto k =
+      SectionKeys<T>("analysis")
+          .real("dt", &T::dt, "s", "time step (also the sampling interval of the spectra)", "1e-4", above(0.0))
+          .real("tolerance", &T::tolerance, "-", "Newton convergence: residual 2-norm relative to the tube's weight",
+                "1e-8", {0.0, 1.0, false});
+  return k;
+}
+
+const SectionKeys<PipeSensorsSection>& sensors_keys() {
+  using T = PipeSensorsSection;
+  static const auto k =
+      SectionKeys<T>("sensors")
+          .text("positions", &T::positions,
+                "sensor positions along the tube as fractions of its length (nearest node), comma-separated", "0,0.5,1",
+                number_list)
+          .boolean("average", &T::average, "add the mean PSD over sensors", "true");
+  return k;
+}
+
+}  // namespace
+
+std::vector<KeySpec> PipeSection::keys() { return pipe_keys().keys(); }
+
 PipeSection PipeSection::parse(const KeyReader& s) {
-  PipeSection p;
-  p.diameter = s.real("pipe.diameter");
-  p.inner_diameter = s.real("pipe.inner_diameter");
-  if (p.inner_diameter >= p.diameter) s.refuse("pipe.inner_diameter", "must be smaller than [pipe] diameter");
-  p.length = s.real("pipe.length");
-  p.youngs_modulus = s.real("pipe.youngs_modulus");
-  p.poisson = s.real("pipe.poisson");
-  p.density = s.real("pipe.density");
-  p.elements = s.integer("pipe.elements");
+  const PipeSection p = pipe_keys().read(s);
+  if (p.inner_diameter >= p.diameter) p.origin(p.inner_diameter).refuse("must be smaller than [pipe] diameter");
   return p;
 }
 
-std::vector<KeySpec> RollSection::keys() {
-  return {
-      real_key("roll", "speed", "m/s", "initial rolling speed v (spin v/r: rolling without slip)", std::string("0.5"),
-               0.0, inf, false),
-      real_key("roll", "distance", "m", "distance rolled during the record (record length distance/speed)",
-               std::string("0.3"), 0.0, inf, false),
-  };
-}
+std::vector<KeySpec> RollSection::keys() { return roll_keys().keys(); }
+RollSection RollSection::parse(const KeyReader& s) { return roll_keys().read(s); }
 
-RollSection RollSection::parse(const KeyReader& s) {
-  return {s.real("roll.speed"), s.real("roll.distance"), {s.where("roll.distance")}};
-}
-
-std::vector<KeySpec> PipeRoughnessSection::keys() {
-  return {
-      choice_key("roughness", "kind", "the roughness under the contact nodes", PipeRoughnessKind::line,
-                 kPipeRoughnessKinds),
-      real_key("roughness", "spacing", "m", "sample spacing of the line texture", std::string("1e-3"), 0.0, inf, false),
-  };
-}
+std::vector<KeySpec> PipeRoughnessSection::keys() { return roughness_keys().keys(); }
 
 PipeRoughnessSection PipeRoughnessSection::parse(const KeyReader& s) {
-  return {read_choice(s, "roughness.kind", kPipeRoughnessKinds) == PipeRoughnessKind::line,
-          s.real("roughness.spacing"),
-          {s.where("roughness.spacing")}};
+  PipeRoughnessSection r = roughness_keys().read(s);
+  r.line = r.kind == PipeRoughnessKind::line;
+  return r;
 }
 
-std::vector<KeySpec> PipeContactSection::keys() {
-  return {
-      real_key("contact", "friction", "-", "Coulomb coefficient mu (0: frictionless, the tube slides)",
-               std::string("0.3"), 0.0, inf),
-      real_key("contact", "penalty_normal", "N/m", "normal penalty eps_n per contact node", std::string("2e7"), 0.0,
-               inf, false),
-      real_key("contact", "penalty_tangential", "N/m", "tangential penalty eps_t per contact node", std::string("2e6"),
-               0.0, inf, false),
-      real_key("contact", "damping_ratio", "-",
-               "normal contact damper per node as a ratio of critical on the node's lumped mass: c = 2 zeta sqrt(eps_n "
-               "m_node)",
-               std::string("0.1"), 0.0, 10.0),
-      bool_key("contact", "rolling", "rolling correction of the tangential gap (false: seed 000's 'no rolling')",
-               std::string("true")),
-  };
-}
+std::vector<KeySpec> PipeContactSection::keys() { return contact_keys().keys(); }
+PipeContactSection PipeContactSection::parse(const KeyReader& s) { return contact_keys().read(s); }
 
-PipeContactSection PipeContactSection::parse(const KeyReader& s) {
-  PipeContactSection c;
-  c.friction = s.real("contact.friction");
-  c.penalty_normal = s.real("contact.penalty_normal");
-  c.penalty_tangential = s.real("contact.penalty_tangential");
-  c.damping_ratio = s.real("contact.damping_ratio");
-  c.rolling = s.boolean("contact.rolling");
-  return c;
-}
+std::vector<KeySpec> PipeGravitySection::keys() { return gravity_keys().keys(); }
+PipeGravitySection PipeGravitySection::parse(const KeyReader& s) { return gravity_keys().read(s); }
 
-std::vector<KeySpec> PipeGravitySection::keys() {
-  return {
-      real_key("gravity", "acceleration", "m/s^2", "gravity, normal to the mean surface", std::string("9.81"), 0.0, inf,
-               false),
-  };
-}
+std::vector<KeySpec> PipeAnalysisSection::keys() { return analysis_keys().keys(); }
+PipeAnalysisSection PipeAnalysisSection::parse(const KeyReader& s) { return analysis_keys().read(s); }
 
-PipeGravitySection PipeGravitySection::parse(const KeyReader& s) { return {s.real("gravity.acceleration")}; }
-
-std::vector<KeySpec> PipeAnalysisSection::keys() {
-  return {
-      real_key("analysis", "dt", "s", "time step (also the sampling interval of the spectra)", std::string("1e-4"), 0.0,
-               inf, false),
-      real_key("analysis", "tolerance", "-", "Newton convergence: residual 2-norm relative to the tube's weight",
-               std::string("1e-8"), 0.0, 1.0, false),
-  };
-}
-
-PipeAnalysisSection PipeAnalysisSection::parse(const KeyReader& s) {
-  return {s.real("analysis.dt"), s.real("analysis.tolerance"), {s.where("analysis.dt")}};
-}
-
-std::vector<KeySpec> PipeSensorsSection::keys() {
-  return {
-      text_key("sensors", "positions",
-               "sensor positions along the tube as fractions of its length (nearest node), comma-separated",
-               std::string("0,0.5,1")),
-      bool_key("sensors", "average", "add the mean PSD over sensors", std::string("true")),
-  };
-}
-
-PipeSensorsSection PipeSensorsSection::parse(const KeyReader& s) {
-  return {s.numbers("sensors.positions"), s.boolean("sensors.average"), {s.where("sensors.positions")}};
-}
+std::vector<KeySpec> PipeSensorsSection::keys() { return sensors_keys().keys(); }
+PipeSensorsSection PipeSensorsSection::parse(const KeyReader& s) { return sensors_keys().read(s); }
 
 }  // namespace rollspec::study

@@ -7,14 +7,14 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
 // inner_diameter < diameter is checked here.
-struct PipeSection {
+struct PipeSection : KeyedSection {
   double length = 0.0, diameter = 0.0, inner_diameter = 0.0, youngs_modulus = 0.0, poisson = 0.0, density = 0.0;
   long long elements = 0;
 
@@ -22,9 +22,8 @@ struct PipeSection {
   static PipeSection parse(const KeyReader& s);
 };
 
-struct RollSection {
+struct RollSection : KeyedSection {
   double speed = 0.0, distance = 0.0;
-  KeyOrigin distance_origin;
 
   static std::vector<KeySpec> keys();
   static RollSection parse(const KeyReader& s);
@@ -38,16 +37,16 @@ inline constexpr ChoiceTable<PipeRoughnessKind, 2> kPipeRoughnessKinds{{
      "an isotropic surface realisation from [surface] (spectral or seed method), different under every node"},
 }};
 
-struct PipeRoughnessSection {
-  bool line = true;      // else an isotropic surface from [surface]
+struct PipeRoughnessSection : KeyedSection {
+  PipeRoughnessKind kind = PipeRoughnessKind::line;
+  bool line = true;      // kind = line (else an isotropic surface from [surface])
   double spacing = 0.0;  // m, of the line texture
-  KeyOrigin spacing_origin;
 
   static std::vector<KeySpec> keys();
   static PipeRoughnessSection parse(const KeyReader& s);
 };
 
-struct PipeContactSection {
+struct PipeContactSection : KeyedSection {
   double friction = 0.0, penalty_normal = 0.0, penalty_tangential = 0.0, damping_ratio = 0.0;
   bool rolling = true;
 
@@ -55,27 +54,25 @@ struct PipeContactSection {
   static PipeContactSection parse(const KeyReader& s);
 };
 
-struct PipeGravitySection {
+struct PipeGravitySection : KeyedSection {
   double acceleration = 0.0;  // m/s^2, normal to the mean surface
 
   static std::vector<KeySpec> keys();
   static PipeGravitySection parse(const KeyReader& s);
 };
 
-struct PipeAnalysisSection {
+struct PipeAnalysisSection : KeyedSection {
   double dt = 0.0, tolerance = 0.0;
-  KeyOrigin dt_origin;
 
   static std::vector<KeySpec> keys();
   static PipeAnalysisSection parse(const KeyReader& s);
 };
 
 // [sensors] of rolling-pipe: fractions of the tube's length (ball-on-beam's SensorsSection holds
-// positions in metres), checked against [0, 1] by the scene at positions_origin.
-struct PipeSensorsSection {
+// positions in metres), checked against [0, 1] by the scene at origin(positions).
+struct PipeSensorsSection : KeyedSection {
   std::vector<double> positions;
   bool average = true;
-  KeyOrigin positions_origin;
 
   static std::vector<KeySpec> keys();
   static PipeSensorsSection parse(const KeyReader& s);

@@ -1,103 +1,106 @@
 #include "src/study/sections/rolling_world_sections.hpp"
 
-#include <limits>
-
-#include "src/study/key_reader.hpp"
-#include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/section_keys.hpp"
 #include "src/study/sections/vector_keys.hpp"
 
 namespace rollspec::study {
 
-namespace {
-const double inf = std::numeric_limits<double>::infinity();
-}  // namespace
-
-std::vector<KeySpec> PlaneSection::keys() {
-  return {
-      text_key("plane", "point", "a point of each rigid plane, x,y,z (m); several planes separated by ';'",
-               std::string("0,0,0")),
-      text_key("plane", "normal", "normal of each plane toward the body, x,y,z; ';' between planes",
-               std::string("0,0,1")),
-  };
+NodeList node_list(const KeyReader& s, const std::string& key) {
+  NodeList n;
+  n.all = s.text(key) == "all";
+  if (!n.all) n.indices = s.numbers(key);
+  n.origin = {s.where(key)};
+  return n;
 }
 
+namespace {
+
+const SectionKeys<PlaneSection>& plane_keys() {
+  using T = PlaneSection;
+  static const auto k =
+      SectionKeys<T>("plane")
+          .text("point", &T::points, "a point of each rigid plane, x,y,z (m); several planes separated by ';'", "0,0,0",
+                triples)
+          .text("normal", &T::normals, "normal of each plane toward the body, x,y,z; ';' between planes", "0,0,1",
+                triples);
+  return k;
+}
+
+const SectionKeys<RollingContactSection>& contact_keys() {
+  using T = RollingContactSection;
+  static const auto k =
+      SectionKeys<T>("contact")
+          .real("friction", &T::friction, "-", "Coulomb coefficient mu", "0.5", at_least(0.0))
+          .real("penalty_normal", &T::penalty_normal, "N/m", "normal penalty eps_n", "1e9", above(0.0))
+          .real("penalty_tangential", &T::penalty_tangential, "N/m", "tangential penalty eps_t", "1e7", above(0.0))
+          .boolean("rolling", &T::rolling, "rolling correction of the tangential gap (false: the paper's 'no rolling')",
+                   "true")
+          .text("nodes", &T::nodes, "contact nodes: all, or comma-separated node indices", "all", node_list);
+  return k;
+}
+
+const SectionKeys<GravityVectorSection>& gravity_keys() {
+  using T = GravityVectorSection;
+  static const auto k = SectionKeys<T>("gravity")
+                            .text("acceleration", &T::acceleration, "gravity x,y,z (m/s^2)", "0,0,-9.81", vector3)
+                            .real("ramp_time", &T::ramp_time, "s",
+                                  "gravity ramped in linearly over [0, ramp_time] (0: constant)", "0", at_least(0.0));
+  return k;
+}
+
+const SectionKeys<SupportSection>& support_keys() {
+  using T = SupportSection;
+  static const auto k = SectionKeys<T>("support").choice("clamp", &T::clamp, "clamped end nodes of the beam",
+                                                         ClampedEnds::none, kClampedEnds);
+  return k;
+}
+
+const SectionKeys<ImposedSection>& imposed_keys() {
+  using T = ImposedSection;
+  const auto imposed = [](const T& m) { return m.node != ImposedNode::none; };
+  static const auto k =
+      SectionKeys<T>("imposed")
+          .choice("node", &T::node, "node with an imposed displacement series", ImposedNode::none, kImposedNodes)
+          .choice("dof", &T::dof, "imposed displacement component", 1, kImposedDofs)
+          .text("times", &T::times, "times of the piecewise-linear series (s), comma-separated", "0", number_list)
+          .when(imposed)
+          .text("values", &T::values, "displacements at those times (m)", "0", number_list)
+          .when(imposed);
+  return k;
+}
+
+}  // namespace
+
+std::vector<KeySpec> PlaneSection::keys() { return plane_keys().keys(); }
+
 PlaneSection PlaneSection::parse(const KeyReader& s) {
-  PlaneSection p;
-  p.points = triples(s, "plane.point");
-  p.normals = triples(s, "plane.normal");
+  const PlaneSection p = plane_keys().read(s);
   if (p.points.size() != p.normals.size())
-    s.refuse("plane.normal", "gives " + std::to_string(p.normals.size()) + " normals for " +
-                                 std::to_string(p.points.size()) + " points; allowed: one normal per plane");
+    p.origin(p.normals).refuse("gives " + std::to_string(p.normals.size()) + " normals for " +
+                               std::to_string(p.points.size()) + " points; allowed: one normal per plane");
   for (std::size_t i = 0; i < p.points.size(); ++i)
     if (p.normals[i].norm() == 0.0)
-      s.refuse("plane.normal", "plane " + std::to_string(i) + " has the zero vector as normal");
+      p.origin(p.normals).refuse("plane " + std::to_string(i) + " has the zero vector as normal");
   return p;
 }
 
-std::vector<KeySpec> RollingContactSection::keys() {
-  return {
-      real_key("contact", "friction", "-", "Coulomb coefficient mu", std::string("0.5"), 0.0, inf),
-      real_key("contact", "penalty_normal", "N/m", "normal penalty eps_n", std::string("1e9"), 0.0, inf, false),
-      real_key("contact", "penalty_tangential", "N/m", "tangential penalty eps_t", std::string("1e7"), 0.0, inf, false),
-      bool_key("contact", "rolling", "rolling correction of the tangential gap (false: the paper's 'no rolling')",
-               std::string("true")),
-      text_key("contact", "nodes", "contact nodes: all, or comma-separated node indices", std::string("all")),
-  };
-}
+std::vector<KeySpec> RollingContactSection::keys() { return contact_keys().keys(); }
+RollingContactSection RollingContactSection::parse(const KeyReader& s) { return contact_keys().read(s); }
 
-RollingContactSection RollingContactSection::parse(const KeyReader& s) {
-  RollingContactSection c;
-  c.friction = s.real("contact.friction");
-  c.penalty_normal = s.real("contact.penalty_normal");
-  c.penalty_tangential = s.real("contact.penalty_tangential");
-  c.rolling = s.boolean("contact.rolling");
-  c.nodes.all = s.text("contact.nodes") == "all";
-  if (!c.nodes.all) c.nodes.indices = s.numbers("contact.nodes");
-  c.nodes.origin = {s.where("contact.nodes")};
-  return c;
-}
+std::vector<KeySpec> GravityVectorSection::keys() { return gravity_keys().keys(); }
+GravityVectorSection GravityVectorSection::parse(const KeyReader& s) { return gravity_keys().read(s); }
 
-std::vector<KeySpec> GravityVectorSection::keys() {
-  return {
-      text_key("gravity", "acceleration", "gravity x,y,z (m/s^2)", std::string("0,0,-9.81")),
-      real_key("gravity", "ramp_time", "s", "gravity ramped in linearly over [0, ramp_time] (0: constant)",
-               std::string("0"), 0.0, inf),
-  };
-}
+std::vector<KeySpec> SupportSection::keys() { return support_keys().keys(); }
+SupportSection SupportSection::parse(const KeyReader& s) { return support_keys().read(s); }
 
-GravityVectorSection GravityVectorSection::parse(const KeyReader& s) {
-  return {vector3(s, "gravity.acceleration"), s.real("gravity.ramp_time")};
-}
-
-std::vector<KeySpec> SupportSection::keys() {
-  return {
-      choice_key("support", "clamp", "clamped end nodes of the beam", ClampedEnds::none, kClampedEnds),
-  };
-}
-
-SupportSection SupportSection::parse(const KeyReader& s) {
-  return {read_choice(s, "support.clamp", kClampedEnds), {s.where("support.clamp")}};
-}
-
-std::vector<KeySpec> ImposedSection::keys() {
-  return {
-      choice_key("imposed", "node", "node with an imposed displacement series", ImposedNode::none, kImposedNodes),
-      choice_key("imposed", "dof", "imposed displacement component", 1, kImposedDofs),
-      text_key("imposed", "times", "times of the piecewise-linear series (s), comma-separated", std::string("0")),
-      text_key("imposed", "values", "displacements at those times (m)", std::string("0")),
-  };
-}
+std::vector<KeySpec> ImposedSection::keys() { return imposed_keys().keys(); }
 
 ImposedSection ImposedSection::parse(const KeyReader& s) {
-  ImposedSection m;
-  m.node = read_choice(s, "imposed.node", kImposedNodes);
-  m.dof = read_choice(s, "imposed.dof", kImposedDofs);
+  const ImposedSection m = imposed_keys().read(s);
   if (m.node == ImposedNode::none) return m;
-  m.times = s.numbers("imposed.times");
-  m.values = s.numbers("imposed.values");
-  if (m.times.size() != m.values.size()) s.refuse("imposed.values", "needs one value per entry of [imposed] times");
+  if (m.times.size() != m.values.size()) m.origin(m.values).refuse("needs one value per entry of [imposed] times");
   for (std::size_t i = 1; i < m.times.size(); ++i)
-    if (!(m.times[i] > m.times[i - 1])) s.refuse("imposed.times", "must increase strictly");
+    if (!(m.times[i] > m.times[i - 1])) m.origin(m.times).refuse("must increase strictly");
   return m;
 }
 

@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
 // One normal per point, none the zero vector.
-struct PlaneSection {
+struct PlaneSection : KeyedSection {
   std::vector<Eigen::Vector3d> points, normals;
 
   static std::vector<KeySpec> keys();
@@ -28,9 +28,11 @@ struct NodeList {
   std::vector<double> indices;  // as written, when not all
   KeyOrigin origin;
 };
+// A NodeList text key ("all" or indices) with where it was set.
+NodeList node_list(const KeyReader& s, const std::string& key);
 
 // [contact] of rolling-beam (not ball-on-beam's nor rolling-pipe's).
-struct RollingContactSection {
+struct RollingContactSection : KeyedSection {
   double friction = 0.0, penalty_normal = 0.0, penalty_tangential = 0.0;
   bool rolling = true;
   NodeList nodes;
@@ -39,7 +41,7 @@ struct RollingContactSection {
   static RollingContactSection parse(const KeyReader& s);
 };
 
-struct GravityVectorSection {
+struct GravityVectorSection : KeyedSection {
   Eigen::Vector3d acceleration;
   double ramp_time = 0.0;  // s; 0: constant
 
@@ -64,16 +66,15 @@ inline constexpr ChoiceTable<ImposedNode, 3> kImposedNodes{{
 // The displacement component, as its index x, y, z = 0, 1, 2.
 inline constexpr ChoiceTable<int, 3> kImposedDofs{{{0, "x", ""}, {1, "y", ""}, {2, "z", ""}}};
 
-struct SupportSection {
+struct SupportSection : KeyedSection {
   ClampedEnds clamp = ClampedEnds::none;
-  KeyOrigin clamp_origin;
 
   static std::vector<KeySpec> keys();
   static SupportSection parse(const KeyReader& s);
 };
 
 // times and values are read (and checked) only when a node is imposed.
-struct ImposedSection {
+struct ImposedSection : KeyedSection {
   ImposedNode node = ImposedNode::none;
   int dof = 1;  // x, y, z as 0, 1, 2
   std::vector<double> times, values;

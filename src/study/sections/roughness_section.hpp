@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
@@ -20,10 +20,9 @@ inline constexpr ChoiceTable<BandLimit, 2> kBandLimits{{
     {BandLimit::step, "step", "up to the sampling's pi/dx: the response above sample_rate / 2 aliases into the bands"},
 }};
 
-struct RoughnessSection {
+struct RoughnessSection : KeyedSection {
   double spacing = 0.0;  // m; 0: derived from the step
   BandLimit band_limit = BandLimit::output;
-  KeyOrigin spacing_origin;
 
   static std::vector<KeySpec> keys();
   static RoughnessSection parse(const KeyReader& s);

@@ -1,20 +1,18 @@
 #pragma once
 // [sensors] (scene ball-on-beam): accelerometer positions along the beam and the mean over them,
-// read once; positions against the span are checked by the scene, at positions_origin.
-#include <string>
+// read once; positions against the span are checked by the scene, at origin(positions).
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct SensorsSection {
+struct SensorsSection : KeyedSection {
   std::vector<double> positions;  // m, as listed
   bool average = true;
-  KeyOrigin positions_origin;
 
   static std::vector<KeySpec> keys();
   static SensorsSection parse(const KeyReader& s);

@@ -5,44 +5,40 @@
 #include <cstdio>
 
 #include "kernels/spectral/third_octave_bands.hpp"
-#include "src/study/key_reader.hpp"
-#include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
-std::vector<KeySpec> SpectrumSection::keys() {
-  return {
-      integer_key("spectrum", "segment", "Welch segment length in samples", std::string("4096"), 16, 1 << 24),
-      real_key("spectrum", "overlap", "-", "Welch segment overlap as a fraction of the segment", std::string("0.5"),
-               0.0, 0.95),
-      choice_key("spectrum", "window", "Welch data window", spectral::Window::hann, kWelchWindows),
-      real_key("spectrum", "band_min", "Hz", "lowest third-octave band edge reported", std::string("10"), 0.0, 1e9,
-               false),
-      real_key("spectrum", "band_max", "Hz", "highest third-octave band edge reported (capped at Nyquist)",
-               std::string("1e9"), 0.0, 1e9, false),
-      real_key("spectrum", "confidence", "-", "confidence level of the chi-square interval", std::string("0.95"), 0.5,
-               0.999),
-  };
+namespace {
+const SectionKeys<SpectrumSection>& declared() {
+  using T = SpectrumSection;
+  static const auto k =
+      SectionKeys<T>("spectrum")
+          .integer("segment", &T::segment, "Welch segment length in samples", "4096", 16, 1 << 24)
+          .real("overlap", &T::overlap, "-", "Welch segment overlap as a fraction of the segment", "0.5",
+                within(0.0, 0.95))
+          .choice("window", &T::window, "Welch data window", spectral::Window::hann, kWelchWindows)
+          .real("band_min", &T::band_min, "Hz", "lowest third-octave band edge reported", "10", {0.0, 1e9, false})
+          .real("band_max", &T::band_max, "Hz", "highest third-octave band edge reported (capped at Nyquist)", "1e9",
+                {0.0, 1e9, false})
+          .real("confidence", &T::confidence, "-", "confidence level of the chi-square interval", "0.95",
+                within(0.5, 0.999))
+          .real("skip_start", &T::skip_start, "s", "", "0", at_least(0.0))
+          .scene_declared();
+  return k;
+}
+}  // namespace
+
+std::vector<KeySpec> SpectrumSection::keys() { return declared().keys(); }
+
+KeySpec SpectrumSection::skip_start_key(const std::string& doc, const std::string& fallback) {
+  KeySpec k = declared().keys_of(&SpectrumSection::skip_start)[0];
+  k.doc = doc;
+  k.default_value = fallback;
+  return k;
 }
 
-SpectrumSection SpectrumSection::parse(const KeyReader& s) {
-  SpectrumSection p;
-  p.segment = s.integer("spectrum.segment");
-  p.overlap = s.real("spectrum.overlap");
-  p.window = read_choice(s, "spectrum.window", kWelchWindows);
-  p.band_min = s.real("spectrum.band_min");
-  p.band_max = s.real("spectrum.band_max");
-  p.band_min_text = s.text("spectrum.band_min");
-  p.confidence = s.real("spectrum.confidence");
-  p.segment_origin = {s.where("spectrum.segment")};
-  p.band_min_origin = {s.where("spectrum.band_min")};
-  p.band_max_origin = {s.where("spectrum.band_max")};
-  if (s.has("spectrum.skip_start")) {
-    p.skip_start = s.real("spectrum.skip_start");
-    p.skip_start_origin = {s.where("spectrum.skip_start")};
-  }
-  return p;
-}
+SpectrumSection SpectrumSection::parse(const KeyReader& s) { return declared().read(s); }
 
 void SpectrumSection::check_band_range(double sample_rate, std::size_t segment_samples) const {
   const double df = sample_rate / static_cast<double>(segment_samples), nyquist = sample_rate / 2.0;
@@ -52,9 +48,10 @@ void SpectrumSection::check_band_range(double sample_rate, std::size_t segment_s
                 "frequency step %.6g Hz, Nyquist frequency %.6g Hz (sample rate %.6g Hz, segment %zu)", df, nyquist,
                 sample_rate, segment_samples);
   if (band_max <= band_min)
-    band_max_origin.refuse("not above [spectrum] band_min = " + band_min_text + "; allowed: band_min < band_max");
+    origin(band_max).refuse("not above [spectrum] band_min = " + value_text(band_min) +
+                            "; allowed: band_min < band_max");
   if (!(hi > lo) || spectral::third_octave_bands(lo, hi).empty())
-    (band_min >= nyquist ? band_min_origin : band_max_origin)
+    (band_min >= nyquist ? origin(band_min) : origin(band_max))
         .refuse(std::string("no whole third-octave band fits between band_min, band_max, the ") + range +
                 "; allowed: a range holding at least one band between the frequency step and Nyquist");
 }

@@ -14,8 +14,8 @@ StripSurfaceSection StripSurfaceSection::of(const SurfaceSection& surface, const
   t.ny = surface.ny;
   t.self_affine = texture.present && texture.source == TextureSource::self_affine;
   t.rolloff_wavelength = texture.rolloff_wavelength;
-  t.ny_origin = surface.ny_origin;
-  t.spacing_origin = surface.spacing_origin;
+  t.ny_origin = surface.origin(surface.ny);
+  t.spacing_origin = surface.origin(surface.spacing);
   t.surface_texts_ = surface.texts;
   for (const auto& [key, value] : texture.texts)  // the files' contents enter through the fingerprint
     if (key != "table" && key != "profiles") t.texture_texts.emplace_back(key, value);

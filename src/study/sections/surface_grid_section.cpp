@@ -1,17 +1,12 @@
 #include "src/study/sections/surface_grid_section.hpp"
 
-#include "src/study/key_reader.hpp"
+#include "src/study/sections/surface_section.hpp"
 
 namespace rollspec::study {
 
 SurfaceGridSection SurfaceGridSection::parse(const KeyReader& s) {
-  SurfaceGridSection g;
-  g.spacing = s.real("surface.spacing");
-  g.nx = s.integer("surface.nx");
-  g.ny = s.integer("surface.ny");
-  g.spacing_origin = {s.where("surface.spacing")};
-  g.nx_origin = {s.where("surface.nx")};
-  return g;
+  const SurfaceSection f = SurfaceSection::parse(s);
+  return {f.spacing, f.nx, f.ny, f.origin(f.spacing), f.origin(f.nx)};
 }
 
 }  // namespace rollspec::study

@@ -1,7 +1,6 @@
 #pragma once
 // The grid of [surface] (spacing, nx, ny) as a scene that rolls over an isotropic surface checks it
-// against its footprint, read once. The [surface] keys themselves are declared with the texture
-// keys (src/texture/texture_keys), which also build the generator.
+// against its footprint, read once through SurfaceSection, which declares the keys.
 #include "src/study/sections/key_origin.hpp"
 
 namespace rollspec::study {

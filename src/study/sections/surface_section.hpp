@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
 
@@ -19,7 +19,7 @@ inline constexpr ChoiceTable<SurfaceMethod, 2> kSurfaceMethods{{
     {SurfaceMethod::seed, "seed", "seed 001 Eq. 9-10: sums of line textures"},
 }};
 
-struct SurfaceSection {
+struct SurfaceSection : KeyedSection {
   bool present = false;  // the scene has [surface]
   SurfaceMethod method = SurfaceMethod::spectral;
   long long nx = 128, ny = 128, count = 0;
@@ -28,8 +28,7 @@ struct SurfaceSection {
   // the measured profiles' values with [texture] source = profiles.
   bool sigma_default = true, correlation_x_default = true, correlation_y_default = true;
   bool spacing_set = false, ny_set = false;  // set by the study or --set (strip grids derive them otherwise)
-  KeyOrigin nx_origin, ny_origin, spacing_origin;
-  // The canonical value texts of the keys() (as the resolved study writes them), for the cached
+  // The canonical value texts of the keys read (as the resolved study writes them), for the cached
   // tables' input texts (their hashes).
   std::map<std::string, std::string> texts;
 

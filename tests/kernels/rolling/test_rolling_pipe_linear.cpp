@@ -65,7 +65,8 @@ double harmonic_amplitude(const std::vector<double>& t, const std::vector<double
 }
 }  // namespace
 
-TEST_CASE("rolling pipe over a sinusoidal floor: steady acceleration = frequency-domain solution" * doctest::test_suite("long")) {
+TEST_CASE("rolling pipe over a sinusoidal floor: steady acceleration = frequency-domain solution" *
+          doctest::test_suite("long")) {
   const double A = 2e-7, v = 2.0;
   for (double f0 : {120.0, 450.0, 1500.0}) {
     const double lambda = v / f0;

@@ -1,0 +1,45 @@
+#pragma once
+// What the Python module's translation units share: their binders, numpy arrays in and out, and the
+// study keys whose names, defaults and ranges the module's options take (one table: the engine's).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "src/study/key_spec.hpp"
+
+namespace rollspec::python {
+
+namespace py = pybind11;
+
+// C-contiguous float64: what the kernels read without a copy.
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+void bind_spectra(py::module_& m);
+void bind_contact(py::module_& m);
+void bind_surfaces(py::module_& m);
+
+// `value` as C-contiguous float64 (the same object when it is one already), refused with ValueError
+// "NAME: ...; allowed: WHAT" unless it is a real numeric array of `ndim` dimensions (a 1-D `value` where
+// `ndim` is 2 is refused too), every side >= `min_side`, every value finite.
+Array finite_array(const py::handle& value, const std::string& name, py::ssize_t ndim, py::ssize_t min_side,
+                   const std::string& what);
+
+// A numpy array that owns `values` (moved, not copied), of the given shape.
+py::array_t<double> to_numpy(std::vector<double>&& values, const std::vector<py::ssize_t>& shape);
+
+// ValueError "NAME = VALUE: PROBLEM; allowed: WHAT", the command's one-line style.
+[[noreturn]] void refuse(const std::string& name, const std::string& value, const std::string& problem,
+                         const std::string& allowed);
+
+// The key `section.key` of a section's key table (StiffnessSection::keys(), ...).
+const study::KeySpec& key_spec(const std::vector<study::KeySpec>& keys, const std::string& key);
+// Its default as a number.
+double key_default(const study::KeySpec& spec);
+// `value` checked against the key's range as a study's value is (refuse() naming the key, with the key's
+// own `allowed` text); returns it.
+double key_value(const study::KeySpec& spec, double value);
+
+}  // namespace rollspec::python

@@ -1,0 +1,94 @@
+// The Python module rollspec._core (imported by the package rollspec): its submodules, the errors it
+// raises, and the array and key helpers of bindings.hpp.
+#include <cmath>
+#include <cstdlib>
+
+#include "python/bindings.hpp"
+#include "src/error.hpp"
+#include "src/io/number_text.hpp"
+
+namespace rollspec::python {
+
+Array finite_array(const py::handle& value, const std::string& name, py::ssize_t ndim, py::ssize_t min_side,
+                   const std::string& what) {
+  const std::string allowed = "; allowed: " + what;
+  const py::array raw = py::array::ensure(value);
+  if (!raw) throw py::value_error(name + ": not an array of numbers" + allowed);
+  const char kind = raw.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    throw py::value_error(name + ": an array of dtype " + py::str(raw.dtype()).cast<std::string>() + allowed);
+  if (raw.ndim() != ndim) throw py::value_error(name + ": " + std::to_string(raw.ndim()) + " dimension(s)" + allowed);
+  for (py::ssize_t d = 0; d < ndim; ++d)
+    if (raw.shape(d) < min_side)
+      throw py::value_error(
+          name + ": shape " +
+          py::str(py::tuple(py::cast(std::vector<py::ssize_t>(raw.shape(), raw.shape() + ndim)))).cast<std::string>() +
+          ", a side under " + std::to_string(min_side) + allowed);
+  Array a = Array::ensure(raw);
+  if (!a) throw py::value_error(name + ": cannot be read as float64" + allowed);
+  const double* p = a.data();
+  std::size_t bad = 0;
+  for (py::ssize_t i = 0; i < a.size(); ++i) bad += !std::isfinite(p[i]);
+  if (bad) throw py::value_error(name + ": " + io::counted(bad, "value") + " NaN or infinite" + allowed);
+  return a;
+}
+
+py::array_t<double> to_numpy(std::vector<double>&& values, const std::vector<py::ssize_t>& shape) {
+  auto* owned = new std::vector<double>(std::move(values));
+  py::capsule free_when_done(owned, [](void* v) { delete static_cast<std::vector<double>*>(v); });
+  return py::array_t<double>(shape, owned->data(), free_when_done);
+}
+
+void refuse(const std::string& name, const std::string& value, const std::string& problem, const std::string& allowed) {
+  throw py::value_error(name + " = " + value + ": " + problem + "; allowed: " + allowed);
+}
+
+const study::KeySpec& key_spec(const std::vector<study::KeySpec>& keys, const std::string& key) {
+  for (const auto& k : keys)
+    if (k.full_name() == key) return k;
+  throw std::logic_error("no study key " + key);  // a binding names a key the table lost: a build-time slip
+}
+
+double key_default(const study::KeySpec& spec) { return std::strtod(spec.default_value.value().c_str(), nullptr); }
+
+double key_value(const study::KeySpec& spec, double value) {
+  const std::string name = spec.key + " ([" + spec.section + "] " + spec.key + ")";
+  if (std::isnan(value)) refuse(name, "nan", "NaN is not a value", spec.allowed());
+  if (spec.type == study::KeyType::integer && value != std::floor(value))
+    refuse(name, io::exact_text(value), "not a whole number", spec.allowed());
+  const bool below = spec.min_inclusive ? value < spec.min : value <= spec.min;
+  const bool above = spec.max_inclusive ? value > spec.max : value >= spec.max;
+  if (below || above || !std::isfinite(value))
+    refuse(name, io::significant_text(value, 12), "out of range", spec.allowed());
+  return value;
+}
+
+}  // namespace rollspec::python
+
+PYBIND11_MODULE(_core, m) {
+  namespace py = pybind11;
+  m.doc() =
+      "rollspec's kernels and engine functions on numpy arrays: rollspec.spectra (Welch PSD and third-octave "
+      "bands, as `rollspec psd` and the studies compute them) and rollspec.contact (the elastic and "
+      "elastic-plastic half-space solve of the stiffness tables). SI units throughout.";
+  m.attr("__version__") = ROLLSPEC_VERSION_TEXT;
+  // The engine's errors the user can act on: bad values and data are ValueError, a missing or
+  // unwritable file OSError; the message is the command's one line.
+  py::register_exception_translator([](std::exception_ptr e) {
+    try {
+      if (e) std::rethrow_exception(e);
+    } catch (const rollspec::UserError& u) {
+      if (u.exit_code() == EX_NOINPUT || u.exit_code() == EX_CANTCREAT)
+        PyErr_SetString(PyExc_OSError, u.what());
+      else
+        PyErr_SetString(PyExc_ValueError, u.what());
+    }
+  });
+  py::module_ spectra = m.def_submodule("spectra", "Welch PSD and third-octave bands of sampled signals.");
+  rollspec::python::bind_spectra(spectra);
+  py::module_ contact =
+      m.def_submodule("contact", "Elastic and elastic-plastic contact of a rough surface on a half-space.");
+  rollspec::python::bind_contact(contact);
+  py::module_ surfaces = m.def_submodule("surfaces", "Line textures from a roughness PSD.");
+  rollspec::python::bind_surfaces(surfaces);
+}

@@ -1,0 +1,18 @@
+"""rollspec: the kernels and engine functions of the rollspec command on numpy arrays.
+
+rollspec.spectra  Welch PSD and third-octave bands, as `rollspec psd` and a study compute them.
+rollspec.contact  the elastic and elastic-plastic half-space contact solve of the stiffness tables.
+rollspec.surfaces line textures from a PSD, on `rollspec texture`'s random streams.
+
+SI units throughout; help(rollspec.contact.solve) and the others say each argument's unit.
+"""
+import sys as _sys
+
+from rollspec._core import __version__, contact, spectra, surfaces
+
+# `import rollspec.contact` and `from rollspec.spectra import welch` as for any package's modules.
+_sys.modules[__name__ + ".contact"] = contact
+_sys.modules[__name__ + ".spectra"] = spectra
+_sys.modules[__name__ + ".surfaces"] = surfaces
+
+__all__ = ["__version__", "contact", "spectra", "surfaces"]

@@ -1,0 +1,23 @@
+# Type stub of rollspec.contact (python/contact_bindings.cpp); units in the docstrings.
+from typing import Any, Dict, Optional
+
+import numpy as np
+import numpy.typing as npt
+
+def solve(
+    gap: npt.ArrayLike,
+    dx: float,
+    *,
+    e_star: float,
+    dy: Optional[float] = None,
+    approach: Optional[float] = None,
+    force: Optional[float] = None,
+    hardness: float = 0.0,
+    tolerance: float = 1e-08,
+    max_iterations: int = 20000,
+    stiffness: bool = True,
+) -> Dict[str, Any]: ...
+def ball_gap(
+    radius: float, dx: float, nx: int, ny: int, *, dy: Optional[float] = None, shape: str = "sphere"
+) -> npt.NDArray[np.float64]: ...
+def effective_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float: ...
