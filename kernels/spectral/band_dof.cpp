@@ -140,6 +140,63 @@ double BandDof::operator()(std::size_t samples, double lower, double upper) cons
   return dof_from_sums(segments, e, t);
 }
 
+double BandDof::mean_sum(double lower, double upper) const {
+  const std::size_t L = config_.segment, nf = L / 2 + 1;
+  const BandWeights b = band_weights(nf, config_.sample_rate / static_cast<double>(L), lower, upper);
+  const std::vector<double> a = one_sided(b, L);
+  double e = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    double g = std::sqrt(r2_[0][0]);  // R_0(0) = sum_t w_t^2 outside the lobe
+    if (lobe_[b.first + i]) {
+      g = 0.0;
+      for (const Complex& x : kernel(window_, b.first + i, true)) g += std::norm(x);
+    }
+    e += a[i] * g;
+  }
+  return e;
+}
+
+double BandDof::pair_sum(std::size_t samples, double lower_b, double upper_b, double lower_c, double upper_c) const {
+  const std::size_t L = config_.segment, step = L - config_.overlap, nf = L / 2 + 1;
+  const std::size_t segments = samples < L ? 0 : (samples - config_.overlap) / step;
+  const double df = config_.sample_rate / static_cast<double>(L);
+  const BandWeights wb = band_weights(nf, df, lower_b, upper_b), wc = band_weights(nf, df, lower_c, upper_c);
+  if (segments == 0 || wb.weight.empty() || wc.weight.empty()) return 0.0;
+  const std::vector<double> ab = one_sided(wb, L), ac = one_sided(wc, L);
+  const auto r2 = [&](std::size_t m, std::size_t j) {
+    j %= L;
+    return r2_[m][j <= L / 2 ? j : L - j];
+  };
+  const auto kernels = [&](const BandWeights& w, std::size_t n) {  // direct kernels of the band's lobe bins only
+    std::vector<std::vector<Complex>> u(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (lobe_[w.first + i]) u[i] = kernel(window_, w.first + i, true);
+    return u;
+  };
+  const auto ub = kernels(wb, ab.size()), uc = kernels(wc, ac.size());
+  const double nb = static_cast<double>(segments);
+  double total = 0.0;
+  for (std::size_t m = 0; m < r2_.size() && m < segments; ++m) {
+    // Lags +m and -m: |G_{-m}(k, k')| = |G_m(k', k)|, so the pair's two orders (equal outside the lobe).
+    double t = 0.0;
+    for (std::size_t i = 0; i < ab.size(); ++i)
+      for (std::size_t j = 0; j < ac.size(); ++j) {
+        const std::size_t k = wb.first + i, kk = wc.first + j;
+        double power = 0.0;
+        if (lobe_[k] || lobe_[kk]) {
+          const auto& u = ub[i].empty() ? kernel(window_, k, true) : ub[i];
+          const auto& v = uc[j].empty() ? kernel(window_, kk, true) : uc[j];
+          power = pair_power(u, v, m * step) + (m > 0 ? pair_power(v, u, m * step) : 0.0);
+        } else {
+          power = (m > 0 ? 2.0 : 1.0) * (r2(m, k > kk ? k - kk : kk - k) + r2(m, k + kk));
+        }
+        t += ab[i] * ac[j] * power;
+      }
+    total += (nb - static_cast<double>(m)) * t;
+  }
+  return total / (nb * nb);
+}
+
 double band_dof_reference(const WelchConfig& config, std::size_t samples, double lower, double upper) {
   const WelchPlan plan(config);
   const std::size_t L = config.segment, step = L - config.overlap, segments = plan.segments(samples);

@@ -31,6 +31,12 @@ class BandDof {
   // nu_b of the band average over [lower, upper] Hz of the Welch estimate of `samples` samples of white Gaussian
   // noise; 0 when samples < L or no bin lies in the band.
   double operator()(std::size_t samples, double lower, double upper) const;
+  // The same Isserlis sums for two bands, a_k of [lower_b, upper_b] and a_k' of [lower_c, upper_c] (D-33e):
+  // sum_{|m| < N_B} (N_B - |m|) sum_{k,k'} a_k a_k' (|G_m(k, k')|^2 + |P_m(k, k')|^2) / N_B^2, the covariance of the
+  // two band averages of unit white noise before the density's scale (var P_b for b = c); 0 when samples < L.
+  double pair_sum(std::size_t samples, double lower_b, double upper_b, double lower_c, double upper_c) const;
+  // sum_k a_k G_0(k, k) of [lower, upper]: E P_b of unit white noise before the density's scale.
+  double mean_sum(double lower, double upper) const;
 
  private:
   WelchConfig config_;

@@ -14,6 +14,9 @@ struct BandNoise {
   double signal_share = 1.0;  // a^2
   double measured = 0.0;      // ln(1 + 2 (1 - a^2) / nu_M): the measured mean's log variance from the noise
   double estimate = 0.0;      // ln(1 + 2 (1 - a)^2 / nu_N): ln(m + N^)'s log variance from N^'s own error
+  // D-33e: this band's row of the measured mean's noise log covariance with the p tested bands (its own entry
+  // unused: `measured` holds it), from the rolls' own signal; null: D-33c's bands independent.
+  const double* cross = nullptr;
 };
 
 // model_power m > 0 and noise_power N >= 0 (band averages, one unit); measured_dof nu_M and noise_dof nu_N > 0, or

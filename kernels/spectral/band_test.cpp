@@ -52,7 +52,12 @@ void deviation(const double* y, const double* mean, const double* cov, std::size
   for (std::size_t b = 0; b < p; ++b)
     for (std::size_t c = 0; c < p; ++c) v[b * p + c] = g[b] * cov[b * p + c] * g[c];
   if (noise)
-    for (std::size_t b = 0; b < p; ++b) v[b * p + b] += diagonal[b];
+    for (std::size_t b = 0; b < p; ++b) {
+      v[b * p + b] += diagonal[b];
+      if (noise[b].cross)  // D-33e: the noise's covariance between bands that share bins
+        for (std::size_t c = 0; c < p; ++c)
+          if (c != b) v[b * p + c] += noise[b].cross[c];
+    }
 }
 
 }  // namespace

@@ -135,14 +135,19 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
     return c ? projected_f_test(measured_log, mean, covariance, p, realisations, records, *c)
              : band_test(measured_log, mean, covariance, p, realisations, records, noise, cv2);
   };
-  if (!(table.factor > 0.0) || table.covariance == nullptr || draws == 0) return untabled();
+  const bool tabled = table.factor > 0.0 && table.covariance != nullptr;
+  // D-33f: the logger noise's terms are known far better than S, so T^2's law lies between chi^2_p's and
+  // Hotelling's; the bootstrap draws it (the noise held at its estimates) where the F law is conservative.
+  const bool noisy = !c && noise != nullptr &&
+                     std::any_of(noise, noise + p, [](const BandNoise& b) { return b.measured + b.estimate > 0.0; });
+  if (!(tabled || noisy) || draws == 0) return untabled();
   BandTestResult r;
   r.needed = p + kExtraRealisations;
   if (p == 0 || realisations < r.needed) return r;
   const auto n = static_cast<Eigen::Index>(p);
   const double K = static_cast<double>(realisations), nu = K - 1.0;
   const Matrix s = Eigen::Map<const RowMatrix>(covariance, n, n);
-  const Matrix t_full = Eigen::Map<const RowMatrix>(table.covariance, n, n);
+  const Matrix t_full = tabled ? Matrix(Eigen::Map<const RowMatrix>(table.covariance, n, n)) : Matrix::Zero(n, n);
   // Independent bands (D-31c): Sigma_T is its diagonal, each band's variance drawn alone. Else its
   // factor over the positive eigenvalues, drawn as one Wishart of its rank.
   Vector t_diag;
@@ -160,8 +165,9 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
     u = table_factor(t_full);
     rank = static_cast<std::size_t>(u.cols());
   }
-  if (rank == 0) return untabled();
-  if (!(table.dof > (table.independent ? 0.0 : static_cast<double>(rank) - 1.0)) || !std::isfinite(table.dof))
+  if (rank == 0 && !noisy) return untabled();
+  if (rank > 0 &&
+      (!(table.dof > (table.independent ? 0.0 : static_cast<double>(rank) - 1.0)) || !std::isfinite(table.dof)))
     throw std::invalid_argument("band test: the table term's degrees of freedom must exceed its rank - 1");
   const Matrix t_used = table.independent ? Matrix(t_diag.asDiagonal()) : Matrix(u * u.transpose());
 
@@ -190,15 +196,15 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
     uniform(j, uni.data(), uni.size());
     bartlett_wishart(p, nu, uni.data(), a_s.data());
     const Matrix s_star = ls * Eigen::Map<const RowMatrix>(a_s.data(), n, n) * ls.transpose() / nu;
-    Matrix t_star;
-    if (table.independent) {
+    Matrix t_star = Matrix::Zero(n, n);  // no table: the noise's terms alone beside S*
+    if (rank > 0 && table.independent) {
       std::vector<double> drawn(p);
       for (std::size_t b = 0; b < p; ++b)
         drawn[b] = raw(static_cast<Eigen::Index>(b)) * 2.0 * boost::math::gamma_p_inv(0.5 * table.dof, uni[ns + b]) /
                    table.dof;
       const std::vector<double> diag = smoothed_variances(drawn, table.smooth);
       t_star = Eigen::Map<const Vector>(diag.data(), n).asDiagonal();
-    } else {
+    } else if (rank > 0) {
       bartlett_wishart(rank, table.dof, uni.data() + ns, a_t.data());
       const auto nr = static_cast<Eigen::Index>(rank);
       t_star = u * Eigen::Map<const RowMatrix>(a_t.data(), nr, nr) * u.transpose() / table.dof;
@@ -209,7 +215,13 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
     }
     scaling(s_star, K, records, noise, cv2 ? cv2_star.data() : nullptr, g_star, offset_star, diagonal);
     Matrix v_star = g_star.asDiagonal() * s_star * g_star.asDiagonal() + table.factor * t_star;
-    if (noise) v_star.diagonal() += diagonal;  // D-33c: the noise's terms, held at their estimates
+    if (noise) {  // D-33c: the noise's terms, held at their estimates (D-33e: with its covariance between bands)
+      v_star.diagonal() += diagonal;
+      for (std::size_t b = 0; b < p; ++b)
+        if (noise[b].cross)
+          for (std::size_t e = 0; e < p; ++e)
+            if (e != b) v_star(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(e)) += noise[b].cross[e];
+    }
     Vector z(n);
     standard_normals(uni.data() + ns + nt, p, z.data());
     const Vector d_star = lv * z + offset - offset_star;

@@ -206,7 +206,19 @@ struct NoiseTerms {
   std::vector<spectral::BandNoise> band;  // the tested bands', in the rows' order
   std::vector<double> power, dof;         // N^_b (0: not covered) and nu_N,b (0: unknown)
   bool scatter_known = true;              // both estimators known (recordings, not PSD tables)
+  std::vector<double> cross;              // D-33e: the measured mean's noise log covariance (p x p; empty: D-33c)
 };
+
+// D-33e where the rolls' samples are kept: each band's `measured` from the rolls' own signal, and its row of the
+// covariance between bands (the pointers set once the terms have their final place).
+void link_cross(NoiseTerms& t) {
+  const std::size_t p = t.band.size();
+  if (t.cross.size() != p * p) return;
+  for (std::size_t i = 0; i < p; ++i) {
+    t.band[i].measured = t.cross[i * p + i];
+    t.band[i].cross = t.cross.data() + i * p;
+  }
+}
 
 NoiseTerms noise_terms(const std::vector<BandRow>& rows, const io::BandLevels& b, const MeasuredSpectrum& m,
                        const MeasuredSpectrum& quiet) {
@@ -224,6 +236,15 @@ NoiseTerms noise_terms(const std::vector<BandRow>& rows, const io::BandLevels& b
     t.power.push_back(power);
     t.dof.push_back(noise_dof);
   }
+  std::vector<double> lower, upper, model;
+  for (const auto& r : rows)
+    if (r.use == BandUse::test) {
+      lower.push_back(b.lower[r.band]);
+      upper.push_back(b.upper[r.band]);
+      model.push_back(std::pow(10.0, b.level_db[r.band] / 10.0));
+    }
+  const bool powered = std::all_of(model.begin(), model.end(), [](double x) { return x > 0.0 && std::isfinite(x); });
+  if (powered && t.scatter_known) t.cross = noise_log_covariance(m, lower, upper, model, t.power);
   return t;
 }
 
@@ -272,6 +293,9 @@ std::optional<spectral::LevelOffset> offset_of(const io::BandLevels& b, const Me
         const double extra = (n.measured + n.estimate) / n.signal_share;
         vs[i * p + i] += extra;
         d[i] += 0.5 * extra;  // E ln(X - N^) = ln S - (V_M + extra) / 2
+        if (n.cross)          // D-33e: the noise's covariance between bands, in the signal's terms
+          for (std::size_t j = 0; j < p; ++j)
+            if (j != i) vs[i * p + j] += n.cross[j] / std::sqrt(n.signal_share * noise->band[j].signal_share);
       }
     std::vector<double> vt = v.table_factor > 0.0 ? io::table_log_covariance(b, index) : std::vector<double>{};
     double table_dof = b.table_dof;
@@ -331,7 +355,10 @@ Verdict band_verdict(const io::BandLevels& b, const MeasuredSpectrum& m, const V
   if (predict) widen_for_table(v, b);
   mark_floor(v.rows, b, o);
   std::optional<NoiseTerms> logger;  // D-33c
-  if (o.noise) logger = noise_terms(v.rows, b, m, *o.noise);
+  if (o.noise) {
+    logger = noise_terms(v.rows, b, m, *o.noise);
+    link_cross(*logger);
+  }
   if (logger && predict) add_noise_to_intervals(v.rows, *logger, b);
 
   std::vector<std::size_t> index;

@@ -74,7 +74,12 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
   }
   t.rejected = t.result.p_value < level;
   char buf[240];
-  if (t.result.draws > 0)
+  if (t.result.draws > 0 && !(table_factor > 0.0))
+    std::snprintf(buf, sizeof buf,
+                  "%s at level %g: p = %.3g (T2 = %.4g, %zu bands; law of T2 with the logger noise's terms by a "
+                  "parametric bootstrap of %zu draws, kernels/spectral D-31, D-33e)",
+                  t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, p, t.result.draws);
+  else if (t.result.draws > 0)
     std::snprintf(buf, sizeof buf,
                   "%s at level %g: p = %.3g (T2 = %.4g, %zu bands; law of T2 with the %s's error by a parametric "
                   "bootstrap of %zu draws, kernels/spectral D-31)",

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "kernels/spectral/band_dof.hpp"
+#include "kernels/spectral/band_noise_covariance.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
@@ -119,6 +120,7 @@ struct Roll {
   double seconds = 0.0, dof = 0.0, df = 0.0, rate = 0.0;
   spectral::WelchConfig estimator;
   std::size_t samples = 0;
+  std::vector<double> signal;  // the roll's samples where it is one channel (D-33e)
 };
 
 std::string names(const std::vector<std::string>& v) {
@@ -172,14 +174,15 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
                            "': its PSD overflows a double; allowed: samples whose squares stay finite");
       if (options.roll_per_channel) {
         rolls.push_back({path + " [" + t.channels[ch] + "]", one, static_cast<double>(n) / t.sample_rate,
-                         plan->equivalent_dof(n), plan->frequency_step(), c.sample_rate, c, n});
+                         plan->equivalent_dof(n), plan->frequency_step(), c.sample_rate, c, n, t.values[ch]});
       } else {
         for (std::size_t k = 0; k < one.size(); ++k) sum[k] += one[k] / static_cast<double>(channels);
       }
     }
     if (!options.roll_per_channel)
       rolls.push_back({path, sum, static_cast<double>(n) / t.sample_rate, plan->equivalent_dof(n),
-                       plan->frequency_step(), c.sample_rate, c, n});
+                       plan->frequency_step(), c.sample_rate, c, n,
+                       channels == 1 ? t.values[0] : std::vector<double>{}});
     if (channels > 1 && !options.roll_per_channel)
       m.notes.push_back(path + ": channels " + names(t.channels) + " taken as the result's sensors 1.." +
                         std::to_string(channels) + " of one roll, their PSDs averaged as the row averages them");
@@ -199,6 +202,7 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
     for (std::size_t k = 0; k < r.psd.size(); ++k) m.psd[k] += r.psd[k] / static_cast<double>(rolls.size());
     m.rolls.push_back(r.psd);
     m.roll_samples.push_back(r.samples);
+    m.roll_signals.push_back(r.signal);
     seconds += r.seconds / static_cast<double>(rolls.size());
     dof += r.dof / static_cast<double>(rolls.size());
   }
@@ -234,6 +238,36 @@ double band_dof_of_mean(const MeasuredSpectrum& m, double lower, double upper) {
   }
   const double rolls = static_cast<double>(m.roll_samples.size());
   return std::isfinite(sum) ? rolls * rolls / sum : 0.0;
+}
+
+std::vector<double> noise_log_covariance(const MeasuredSpectrum& m, const std::vector<double>& lower,
+                                         const std::vector<double>& upper, const std::vector<double>& model_power,
+                                         const std::vector<double>& noise_power) {
+  const std::size_t p = lower.size(), rolls = m.roll_signals.size();
+  if (!m.estimator || p == 0 || rolls == 0 || rolls != m.roll_samples.size()) return {};
+  for (std::size_t r = 0; r < rolls; ++r)
+    if (m.roll_signals[r].size() != m.roll_samples[r]) return {};
+  std::map<std::size_t, std::unique_ptr<spectral::BandNoiseCovariance>> forms;  // one per roll length
+  std::vector<double> sum(p * p, 0.0);
+  for (std::size_t r = 0; r < rolls; ++r) {
+    auto& f = forms[m.roll_samples[r]];
+    if (!f) f = std::make_unique<spectral::BandNoiseCovariance>(*m.estimator, m.roll_samples[r], lower, upper);
+    std::vector<double> sigma2(p);  // the noise's per-sample variance in each band: N_b = sigma^2 tr Q_b
+    for (std::size_t b = 0; b < p; ++b) sigma2[b] = noise_power[b] / f->trace()[b];
+    const std::vector<double> c = f->covariance(m.roll_signals[r].data(), sigma2);
+    for (std::size_t b = 0; b < p; ++b)
+      for (std::size_t e = 0; e < p; ++e) {
+        // The signal's part is >= 0: a diagonal estimate below the noise's own term is held at it.
+        const double floor = 2.0 * sigma2[b] * sigma2[b] * f->trace_product()[b * p + b];
+        sum[b * p + e] += b == e ? std::max(c[b * p + b], floor) : c[b * p + e];
+      }
+  }
+  const double r2 = static_cast<double>(rolls) * static_cast<double>(rolls);
+  for (std::size_t b = 0; b < p; ++b)
+    for (std::size_t e = 0; e < p; ++e)
+      sum[b * p + e] =
+          std::log1p(sum[b * p + e] / (r2 * (model_power[b] + noise_power[b]) * (model_power[e] + noise_power[e])));
+  return sum;
 }
 
 }  // namespace rollspec::compare

@@ -42,6 +42,7 @@ struct MeasuredSpectrum {
   std::vector<std::string> notes;                  // every choice made without being asked, one line each
   std::optional<spectral::WelchConfig> estimator;  // the Welch estimator every roll went through (recordings)
   std::vector<std::size_t> roll_samples;           // each roll's length in samples (recordings)
+  std::vector<std::vector<double>> roll_signals;   // each roll's samples where a roll is one channel (D-33e)
 };
 
 struct RecordingOptions {
@@ -66,6 +67,14 @@ MeasuredSpectrum measure_recordings(const std::vector<std::string>& paths, const
 // Gaussian noise, R^2 / sum_r 1/nu_r over its R rolls (kernels/spectral/band_dof.hpp); 0 where the estimator is not
 // known (a PSD table).
 double band_dof_of_mean(const MeasuredSpectrum& m, double lower, double upper);
+
+// D-33e: the logger noise's log covariance (p x p, row-major) between the bands [lower_b, upper_b] of the rolls'
+// mean, from the rolls' own samples: ln(1 + sum_r cov_r(P_b, P_c | s_r) / (R^2 (m_b + N_b)(m_c + N_c))), model
+// powers m_b > 0, the noise's band levels N_b >= 0 (white within each band pair's bins). Empty where a roll's
+// samples are not kept (channels averaged, a PSD table) or the estimator is unknown.
+std::vector<double> noise_log_covariance(const MeasuredSpectrum& m, const std::vector<double>& lower,
+                                         const std::vector<double>& upper, const std::vector<double>& model_power,
+                                         const std::vector<double>& noise_power);
 
 // Welch D-15 of one signal with the model's estimator scaled to `sample_rate`; the segment rounded to
 // whole samples (the resolution differs from the model's by that rounding, said in `note`).

@@ -1,8 +1,9 @@
 """bench/engine/bench_recording_verdict.py on a tiny case (2 recordings of 3 rolls per case, each against its own
 model run, about 10 s): the README's rig, recordings as CSV files through `compare`, the record written where asked
-and nothing else. The wrong models are rejected in every recording (their p-values are below 1e-20 at M = 3: about
-1e-26 for twice the loss factor, which the bands below the first mode, scattering by hundredths of a dB, decide; the
-logger noise's cross term there, kernels/spectral D-33c, is as large as that scatter), the mode case's first mode is
+and nothing else. The wrong models are rejected in every recording: with the logger noise's terms T^2's law comes
+from the bootstrap of kernels/spectral D-31b (D-33f), and no one of its 10 000 draws reaches the observed T^2, so
+p is its smallest, 1 / 10 001 (the F law put these at about 1e-26 for twice the loss factor, which the bands below the
+first mode, scattering by hundredths of a dB, decide), the mode case's first mode is
 1.1 x the model's (E x 1.21), the 3 dB case's level offset lies near -3.01 dB; the full figures are the bench's
 (bench/records/recording-verdict.json)."""
 import json
@@ -36,7 +37,7 @@ def test_a_tiny_case_writes_its_record_and_nothing_else(tmp_path):
     cases = record["data"]["cases"]
     assert all(c["tested"] == 2 and c["no_test"] == 0 for c in cases.values())
     for name in ("level", "loss", "mode"):
-        assert cases[name]["rejected"] == 2 and max(cases[name]["p_values"]) < 1e-20, (name, cases[name])
+        assert cases[name]["rejected"] == 2 and max(cases[name]["p_values"]) == 1.0 / 10001, (name, cases[name])
         assert cases[name]["per_model_seed"] == [[1, 1, 1], [2, 1, 1]], (name, cases[name])
     assert cases["right"]["rejected"] < 2 and all(0 < p <= 1 for p in cases["right"]["p_values"])
     # block j of every case against the model at study seed 1 + j; the two runs are two draws, not one
@@ -44,6 +45,7 @@ def test_a_tiny_case_writes_its_record_and_nothing_else(tmp_path):
     for name in cases:
         found = json.loads((tmp_path / "w" / f"verdicts-{name}.json").read_text())
         assert [v["model_seed"] for v in found] == [1, 2] and min(v["seed"] for v in found) >= 7000
+        assert all("the logger noise's terms by a parametric bootstrap" in v["verdict"] for v in found), found
     with h5py.File(tmp_path / "w" / "model-seed1.h5") as one, h5py.File(tmp_path / "w" / "model-seed2.h5") as two:
         assert one["/psd/mean"].shape == two["/psd/mean"].shape
         assert not np.array_equal(one["/psd/mean"][()], two["/psd/mean"][()])

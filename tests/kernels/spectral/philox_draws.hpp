@@ -5,6 +5,7 @@
 #include <Random123/u01fixedpt.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace rollspec::spectral::testing {
@@ -49,5 +50,17 @@ class PhiloxNormals {
   double second_ = 0.0;
   bool have_second_ = false;
 };
+
+// A bootstrap's uniforms keyed by (seed, draw), counter i / 4 within the draw: the counter-based stream family the
+// engine hands kernels/spectral's band_test_with_table (one key per draw, so any order of draws gives the same bits).
+inline void draw_uniforms(std::uint64_t seed, std::uint64_t draw, double* u, std::size_t n) {
+  r123::Philox4x64 gen;
+  const r123::Philox4x64::key_type key = {{seed, draw}};
+  for (std::size_t i = 0; i < n; i += 4) {
+    const r123::Philox4x64::ctr_type ctr = {{i / 4, 0, 0, 0}};
+    const auto r = gen(ctr, key);
+    for (std::size_t k = 0; k < 4 && i + k < n; ++k) u[i + k] = u01fixedpt_open_open_64_double(r[k]);
+  }
+}
 
 }  // namespace rollspec::spectral::testing
