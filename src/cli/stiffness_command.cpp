@@ -12,12 +12,15 @@
 #include "src/error.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
+
+using run::resolve_study;
+using run::check_resources;
 
 int stiffness_command(const Args& args) {
   const std::string usage =

@@ -42,7 +42,7 @@ PENDING = {
 # engine writes, the init template's [study] lines and the loader's own handling of study.scene. Not yet
 # reached through the sections' declarations; each count can only shrink.
 ELSEWHERE = {
-    "src/cli/fit_model.cpp": 3,
+    "src/fit/fit_model.cpp": 3,
     "src/cli/stiffness_command.cpp": 1,
     "src/cli/study_template_keys.cpp": 4,
     "src/cli/texture_command.cpp": 2,

@@ -1,4 +1,4 @@
-#include "src/cli/fit_model.hpp"
+#include "src/fit/fit_model.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
-#include "src/cli/fit_journal.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/fit/fit_journal.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
@@ -19,7 +19,10 @@
 #include "src/rng/philox_stream.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
+
+using run::RunRequest;
+using run::run_request;
 
 using io::number_text;
 
@@ -403,4 +406,4 @@ std::vector<io::BandLevels> FitModel::runs_at(const std::vector<double>& u) {
   return out;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

@@ -14,15 +14,16 @@
 #include <vector>
 
 #include "src/compare/combined_test.hpp"
-#include "src/cli/measured_psd.hpp"
+#include "src/compare/measured_psd.hpp"
 #include "src/io/band_levels.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 using compare::chosen_bands;
 using compare::ChosenBands;
 using compare::combined_test;
 using compare::CombinedTest;
+using compare::Measurement;
 
 // --vary section.key=lo:hi[:log]: the range searched, mapped onto u in [0, 1] (log: geometric).
 struct VaryRange {
@@ -149,4 +150,4 @@ class FitModel {
   int runs_ = 0, reused_ = 0, warned_runs_ = 0;
 };
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit
