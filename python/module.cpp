@@ -69,8 +69,10 @@ PYBIND11_MODULE(_core, m) {
   namespace py = pybind11;
   m.doc() =
       "rollspec's kernels and engine functions on numpy arrays: rollspec.spectra (Welch PSD and third-octave "
-      "bands, as `rollspec psd` and the studies compute them) and rollspec.contact (the elastic and "
-      "elastic-plastic half-space solve of the stiffness tables). SI units throughout.";
+      "bands, as `rollspec psd` and the studies compute them, and the measurement files they read), "
+      "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables) and "
+      "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them). "
+      "SI units throughout.";
   m.attr("__version__") = ROLLSPEC_VERSION_TEXT;
   // The engine's errors the user can act on: bad values and data are ValueError, a missing or
   // unwritable file OSError; the message is the command's one line.
@@ -84,11 +86,12 @@ PYBIND11_MODULE(_core, m) {
         PyErr_SetString(PyExc_ValueError, u.what());
     }
   });
-  py::module_ spectra = m.def_submodule("spectra", "Welch PSD and third-octave bands of sampled signals.");
+  py::module_ spectra = m.def_submodule(
+      "spectra", "Welch PSD and third-octave bands of sampled signals, and the measurement reader of `rollspec psd`.");
   rollspec::python::bind_spectra(spectra);
   py::module_ contact =
       m.def_submodule("contact", "Elastic and elastic-plastic contact of a rough surface on a half-space.");
   rollspec::python::bind_contact(contact);
-  py::module_ surfaces = m.def_submodule("surfaces", "Line textures from a roughness PSD.");
+  py::module_ surfaces = m.def_submodule("surfaces", "Line textures and isotropic surfaces from a roughness PSD.");
   rollspec::python::bind_surfaces(surfaces);
 }

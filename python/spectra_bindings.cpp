@@ -3,13 +3,16 @@
 // chi_square_interval D-16), on numpy arrays.
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "kernels/spectral/band_dof.hpp"
 #include "kernels/spectral/confidence.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "python/bindings.hpp"
+#include "src/io/psd_options.hpp"
 #include "src/io/number_text.hpp"
+#include "src/io/signal_file.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/study/sections/spectrum_section.hpp"
 
@@ -24,32 +27,14 @@ struct Estimate {
   std::vector<double> frequency, psd;  // psd: channels x bins, row-major
 };
 
-// `rollspec psd`'s options, checked as the command checks them (cli/psd_command.cpp), with its window
-// spellings (the study key spectrum.window, and `rect`).
+// `rollspec psd`'s options, checked by the command's own rules (cli/psd_options.hpp).
 spectral::WelchConfig welch_config(double fs, long long segment, double overlap, const std::string& window,
                                    const std::string& detrend) {
-  spectral::WelchConfig c;
-  if (!(fs > 0.0) || !std::isfinite(fs)) refuse("fs", io::number_text(fs), "not a rate", "a finite number > 0 (Hz)");
-  if (segment < 4) refuse("segment", std::to_string(segment), "too short", "a whole number >= 4 (samples)");
-  if (!(overlap >= 0.0 && overlap <= 0.95))
-    refuse("overlap", io::number_text(overlap), "out of range", "a fraction in [0, 0.95] of the segment");
-  c.sample_rate = fs;
-  c.segment = static_cast<std::size_t>(segment);
-  c.overlap = static_cast<std::size_t>(std::floor(overlap * static_cast<double>(segment)));
-  std::string allowed;
-  bool found = window == "rect";
-  if (found) c.window = spectral::Window::rectangular;
-  for (const auto& w : study::kWelchWindows) {
-    if (window == w.spelling) c.window = w.value, found = true;
-    allowed += std::string(w.spelling) + ", ";
-  }
-  if (!found) refuse("window", "'" + window + "'", "unknown window", allowed + "rect");
-  if (detrend == "constant" || detrend == "mean")
-    c.detrend = spectral::Detrend::constant;
-  else if (detrend == "none")
-    c.detrend = spectral::Detrend::none;
-  else
-    refuse("detrend", "'" + detrend + "'", "unknown detrending", "constant (mean; the command's), none");
+  io::SignalOptions signal;
+  signal.fs = fs;
+  const double rate = io::signal_request(signal, io::OptionSpelling::python).fs;
+  spectral::WelchConfig c = io::welch_options({segment, overlap, window, detrend}, io::OptionSpelling::python);
+  c.sample_rate = rate;
   return c;
 }
 
@@ -150,6 +135,91 @@ py::dict bands(const py::handle& x, double fs, long long segment, double overlap
   return d;
 }
 
+// A Python argument that is None, or a value of type T; another type is a TypeError naming it.
+template <class T>
+std::optional<T> optional_arg(const py::object& value, const std::string& name, const std::string& allowed) {
+  if (value.is_none()) return std::nullopt;
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(name + ": a " + py::type::of(value).attr("__name__").cast<std::string>() +
+                         "; allowed: " + allowed + ", or None");
+  }
+}
+
+// `column`: None (every channel), a name, or a sequence of names (each may hold several, comma-separated,
+// as --column does).
+std::vector<std::string> column_names(const py::object& column) {
+  if (py::isinstance<py::str>(column)) return {column.cast<std::string>()};
+  return optional_arg<std::vector<std::string>>(column, "column", "a channel name or a sequence of names")
+      .value_or(std::vector<std::string>{});
+}
+
+const char* origin_name(io::UnitOrigin origin) {
+  switch (origin) {
+    case io::UnitOrigin::name:
+      return "name";
+    case io::UnitOrigin::units_row:
+      return "units_row";
+    case io::UnitOrigin::option:
+      return "unit";
+    case io::UnitOrigin::assumed:
+      return "assumed";
+    case io::UnitOrigin::none:
+      break;
+  }
+  return "none";
+}
+
+py::dict read_measurement(const py::object& path, const py::object& column, const py::object& unit,
+                          const py::object& time_column, const py::object& fs, const py::object& scale,
+                          const py::object& skip_rows) {
+  const auto file = py::module_::import("os").attr("fsdecode")(path).cast<std::string>();
+  if (file.find('\0') != std::string::npos)  // the C library would open the name cut at it: another file
+    throw py::value_error("path: a name with an embedded null byte; allowed: a file name");
+  io::SignalOptions o;
+  o.fs = optional_arg<double>(fs, "fs", "a sample rate (Hz)");
+  o.columns = column_names(column);
+  o.unit = optional_arg<std::string>(unit, "unit", "a unit, or one per channel, comma-separated").value_or("");
+  o.scale = optional_arg<double>(scale, "scale", "a number");
+  o.time_column = optional_arg<std::string>(time_column, "time_column", "a column name, or 'none'");
+  o.skip_rows = optional_arg<long long>(skip_rows, "skip_rows", "a whole number of lines");
+  const io::SignalRequest request = io::signal_request(o, io::OptionSpelling::python);
+  io::SignalTable t;
+  std::vector<double> samples;
+  std::size_t length = 0;
+  {
+    py::gil_scoped_release unlocked;
+    t = io::prepare_signal(file, request);
+    length = t.samples();
+    samples.reserve(t.channels.size() * length);
+    for (auto& v : t.values) {  // channels of one length (prepare_signal), each freed once copied
+      samples.insert(samples.end(), v.begin(), v.end());
+      std::vector<double>().swap(v);
+    }
+  }
+  py::dict d;
+  d["samples"] =
+      to_numpy(std::move(samples), {static_cast<py::ssize_t>(t.channels.size()), static_cast<py::ssize_t>(length)});
+  d["sample_rate"] = t.sample_rate;
+  d["rate_source"] = t.rate_source;
+  d["channels"] = t.channels;
+  py::list units;
+  for (const auto& u : t.units) {
+    py::dict c;
+    c["unit"] = u.text, c["written"] = u.written, c["factor"] = u.factor, c["origin"] = origin_name(u.origin);
+    c["where"] = u.where;
+    units.append(c);
+  }
+  d["units"] = units;
+  d["scale"] = t.scale;
+  d["time_column"] = t.time_column.empty() ? py::object(py::none()) : py::str(t.time_column);
+  d["format"] = t.format;
+  d["file"] = t.file;
+  d["notes"] = t.notes;
+  return d;
+}
+
 const char* const kWelchDoc = R"(Welch PSD of a sampled signal, as `rollspec psd` computes it.
 
 One-sided power spectral density (density scaling, D-15): segments of `segment` samples overlapping
@@ -169,7 +239,7 @@ overlap : float
 window : str
     'hann' or 'rectangular' ('rect').
 detrend : str
-    'constant' (the segment's mean removed; the command's) or 'none'.
+    'mean' or 'constant' (the segment's mean removed; the command's) or 'none'.
 
 Returns
 -------
@@ -209,6 +279,53 @@ dict
     (U^2/Hz, per band, one row per channel for 2-D x), confidence, and welch's choices.
 )";
 
+const char* const kReadMeasurementDoc = R"(A measured signal as `rollspec psd` and `rollspec compare` read it, in m/s^2.
+
+The file is read by its content, else its extension: CSV/text (delimiter, decimal comma, preamble,
+header and units row found from the data; a time column t, time, Time (s), t [ms], ... gives the
+sample rate), WAV/FLAC/AIFF/... (libsndfile: the header's rate; integer PCM needs `scale`), or MATLAB
+.mat v4/v5/v7.3 (each real vector a channel; a scalar fs or a time vector gives the rate). Each
+channel's unit comes from `unit`, else its name (Acc (g), a [m/s^2], acc_g) or the units row, else
+m/s^2 is assumed; the values are converted to m/s^2 (g = 9.80665 m/s^2) and multiplied by `scale`.
+`rollspec psd --help` says every rule.
+
+Parameters
+----------
+path : str or os.PathLike
+    The signal file.
+column : str or sequence of str, optional
+    The channels, in the order wanted (a .mat matrix's name picks all its columns); default all.
+unit : str, optional
+    The values' unit, one for all channels or one per channel ('g,m/s2'): g, m/s2, cm/s2, mm/s2,
+    um/s2, in/s2, ft/s2. Default: the file's, else m/s^2.
+time_column : str, optional
+    The CSV/.mat time column, or 'none'; default the one named like a time.
+fs : float, optional
+    Sample rate (Hz); needed when the file gives none, overrides a CSV time column, must agree within
+    0.1 % with a sound or .mat file's own.
+scale : float, optional
+    Physical units (of `unit`) per file unit, or per full scale of integer PCM (needed there).
+skip_rows : int, optional
+    CSV lines before the header; default found from the data.
+
+Returns
+-------
+dict
+    samples (m/s^2, shape (channels, samples): welch and bands take it as it is), sample_rate (Hz),
+    rate_source (where the rate came from), channels (names), units (per channel: unit, written,
+    factor (m/s^2 per unit), origin ('unit', 'name', 'units_row' or 'assumed'), where), scale,
+    time_column (or None), format, file, notes (each choice made from the file, the lines
+    `rollspec psd` prints on stderr).
+
+Raises
+------
+ValueError
+    A bad argument or file content: the command's one line (which names the options as the command
+    spells them: --column for column, --unit, --scale, --fs).
+OSError
+    A missing or unreadable file.
+)";
+
 }  // namespace
 
 void bind_spectra(py::module_& m) {
@@ -221,6 +338,9 @@ void bind_spectra(py::module_& m) {
         arg("band_min") = key_default(key_spec(keys, "spectrum.band_min")),
         arg("band_max") = key_default(key_spec(keys, "spectrum.band_max")),
         arg("confidence") = key_default(key_spec(keys, "spectrum.confidence")));
+  m.def("read_measurement", &read_measurement, kReadMeasurementDoc, arg("path"), py::kw_only(),
+        arg("column") = py::none(), arg("unit") = py::none(), arg("time_column") = py::none(), arg("fs") = py::none(),
+        arg("scale") = py::none(), arg("skip_rows") = py::none());
 }
 
 }  // namespace rollspec::python

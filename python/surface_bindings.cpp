@@ -1,7 +1,9 @@
-// rollspec.surfaces: line textures from a tabulated PSD (kernels/texture/line_texture.hpp, D-3, README
-// Eq. 12-14), drawn from the streams `rollspec texture` draws its lines from, so a seed and an index give the
-// command's bits.
+// rollspec.surfaces: line textures (kernels/texture/line_texture.hpp, D-3, README Eq. 12-14) and isotropic
+// surfaces (spectral D-5 and seed line-sum D-4, the engine's texture_io::SurfaceGenerator) from a tabulated
+// PSD, drawn from the streams `rollspec texture` draws its lines and surfaces from, so a seed and an index
+// give the command's bits.
 #include <cmath>
+#include <optional>
 
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/tabulated_psd.hpp"
@@ -9,7 +11,9 @@
 #include "src/io/number_text.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/sections/amplitudes_choice.hpp"
+#include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
+#include "src/texture/texture_keys.hpp"
 
 namespace rollspec::python {
 
@@ -25,14 +29,40 @@ E choice(const study::ChoiceTable<E, N>& table, const std::string& name, const s
   refuse(name, "'" + text + "'", "unknown", allowed);
 }
 
+// The table (wavenumber, psd) as a [texture] table: log-log interpolation, `extension` outside. The
+// arrays are checked here; the table's own refusals come back from `make`.
+struct TablePsd {
+  Array k, g;
+  texture::Extension extension;
+};
+
+TablePsd table_arrays(const py::handle& wavenumber, const py::handle& psd, const std::string& extension) {
+  TablePsd t{finite_array(wavenumber, "wavenumber", 1, 2, "a 1-D array of increasing wavenumbers > 0 (rad/m)"),
+             finite_array(psd, "psd", 1, 2, "a 1-D array of one-sided PSD values >= 0 (m^3), one per wavenumber"),
+             choice(study::kTableExtensions, "extension", extension)};
+  if (t.k.size() != t.g.size())
+    refuse("psd", io::counted(static_cast<unsigned long long>(t.g.size()), "value"),
+           "not one per wavenumber (" + std::to_string(t.k.size()) + ")", "as many values as wavenumbers");
+  return t;
+}
+
+// `make(psd)` with the table's PSD: the table's and the generator's refusals (std::invalid_argument,
+// std::domain_error) as ValueError.
+template <class Make>
+auto with_table_psd(const TablePsd& t, Make make) {
+  try {
+    return make(
+        texture::TabulatedPsd({t.k.data(), t.k.data() + t.k.size()}, {t.g.data(), t.g.data() + t.g.size()}, t.extension)
+            .to_psd());
+  } catch (const std::logic_error& e) {
+    throw py::value_error(std::string("wavenumber, psd: ") + e.what());
+  }
+}
+
 py::dict line(const py::handle& wavenumber, const py::handle& psd, double spacing, long long samples,
               unsigned long long seed, unsigned long long index, const std::string& amplitudes,
               const std::string& extension) {
-  const Array k = finite_array(wavenumber, "wavenumber", 1, 2, "a 1-D array of increasing wavenumbers > 0 (rad/m)");
-  const Array g = finite_array(psd, "psd", 1, 2, "a 1-D array of one-sided PSD values >= 0 (m^3), one per wavenumber");
-  if (k.size() != g.size())
-    refuse("psd", io::counted(static_cast<unsigned long long>(g.size()), "value"),
-           "not one per wavenumber (" + std::to_string(k.size()) + ")", "as many values as wavenumbers");
+  const TablePsd table = table_arrays(wavenumber, psd, extension);
   if (!(spacing > 0.0) || !std::isfinite(spacing))
     refuse("spacing", io::number_text(spacing), "not a spacing", "a finite number > 0 (m)");
   if (samples < 8 || samples > (1LL << 26))
@@ -42,15 +72,9 @@ py::dict line(const py::handle& wavenumber, const py::handle& psd, double spacin
   spec.spacing = spacing;
   spec.samples = static_cast<std::size_t>(samples);
   spec.amplitudes = choice(study::kAmplitudes, "amplitudes", amplitudes);
-  const texture::Extension ext = choice(study::kTableExtensions, "extension", extension);
   std::vector<double> heights(spec.samples);
-  std::unique_ptr<texture::LineTextureGenerator> lines;
-  try {  // the table's and the sampling check's refusals (std::invalid_argument, std::domain_error)
-    lines = std::make_unique<texture::LineTextureGenerator>(
-        texture::TabulatedPsd({k.data(), k.data() + k.size()}, {g.data(), g.data() + g.size()}, ext).to_psd(), spec);
-  } catch (const std::logic_error& e) {
-    throw py::value_error(std::string("wavenumber, psd: ") + e.what());
-  }
+  const auto lines = with_table_psd(
+      table, [&](const texture::Psd& g) { return std::make_unique<texture::LineTextureGenerator>(g, spec); });
   {
     py::gil_scoped_release unlocked;
     std::vector<double> up(lines->harmonics()), ua(lines->harmonics());
@@ -69,6 +93,67 @@ py::dict line(const py::handle& wavenumber, const py::handle& psd, double spacin
   d["target_psd"] = to_numpy(std::move(gj), {h});
   d["target_rms"] = std::sqrt(lines->target_variance());
   d["period"] = lines->period();
+  d["seed"] = seed;
+  d["index"] = index;
+  return d;
+}
+
+// [surface]'s key `name`, checked against its range as a study's value is (ValueError naming it).
+double surface_key(const std::string& name, double value) {
+  static const auto keys = study::SurfaceSection::keys();
+  return key_value(key_spec(keys, "surface." + name), value);
+}
+
+std::size_t even_side(const std::string& name, long long n) {
+  surface_key(name, static_cast<double>(n));
+  if (n % 2) refuse(name, std::to_string(n), "odd", "an even number of grid points ([surface] " + name + ")");
+  return static_cast<std::size_t>(n);
+}
+
+py::dict isotropic(const py::handle& wavenumber, const py::handle& psd, double spacing, long long nx,
+                   const std::optional<long long>& ny_arg, unsigned long long seed, unsigned long long index,
+                   const std::string& method, const std::string& amplitudes, const std::string& extension,
+                   double anisotropy, double sigma, double correlation_x, double correlation_y) {
+  const TablePsd table = table_arrays(wavenumber, psd, extension);
+  const double h = surface_key("spacing", spacing);
+  const std::size_t sx = even_side("nx", nx), sy = even_side("ny", ny_arg.value_or(nx));
+  const study::SurfaceMethod m = choice(study::kSurfaceMethods, "method", method);
+  const spectral::Amplitudes a = choice(study::kAmplitudes, "amplitudes", amplitudes);
+  surface_key("anisotropy", anisotropy);
+  surface_key("sigma", sigma);
+  surface_key("correlation_x", correlation_x);
+  surface_key("correlation_y", correlation_y);
+  // The engine's generator, built as texture_io::surface_generator builds it from [surface], and drawing
+  // from the streams `rollspec texture` draws its surface `index` from (SurfaceGenerator::generate).
+  texture_io::SurfaceGenerator g;
+  texture::Surface out;
+  {
+    py::gil_scoped_release unlocked;  // FFTW's planner has its own lock
+    if (m == study::SurfaceMethod::spectral) {
+      texture::SpectralSurfaceSpec spec;
+      spec.nx = sx, spec.ny = sy, spec.dx = spec.dy = h, spec.amplitudes = a, spec.anisotropy = anisotropy;
+      g.spectral = with_table_psd(
+          table, [&](const texture::Psd& p) { return std::make_unique<texture::SpectralSurfaceGenerator>(p, spec); });
+    } else {
+      texture::SeedSurfaceRequest r;
+      r.nx = sx, r.ny = sy, r.dx = r.dy = h, r.amplitudes = a;
+      r.correlation_x = correlation_x, r.correlation_y = correlation_y, r.sigma = sigma;
+      g.seed = with_table_psd(
+          table, [&](const texture::Psd& p) { return std::make_unique<texture::SeedSurfaceGenerator>(p, r); });
+    }
+    g.generate(seed, index, out);
+  }
+  py::dict d;
+  d["heights"] = to_numpy(std::move(out.heights), {static_cast<py::ssize_t>(sy), static_cast<py::ssize_t>(sx)});
+  d["spacing"] = h;
+  d["method"] = method;
+  if (g.spectral) {
+    d["target_rms"] = std::sqrt(g.spectral->target_variance());
+  } else {
+    const texture::SeedBoxLengths& box = g.seed->box();
+    d["box"] = py::make_tuple(box.box_x, box.box_y);
+    d["expected_correlation"] = py::make_tuple(box.expected.x, box.expected.y);
+  }
   d["seed"] = seed;
   d["index"] = index;
   return d;
@@ -107,12 +192,65 @@ dict
     target_rms (m), period (P, samples), seed, index.
 )";
 
+const char* const kIsotropicDoc =
+    R"(An isotropic rough surface z(x, y) on an nx x ny grid from a line PSD, as [surface] makes it.
+
+method 'spectral' (D-5, README Eq. 26-28): the 2D Fourier filter of the isotropic PSD C(q) that
+projects to the line PSD G (inverse Abel transform, Eq. 18-21), stretched by `anisotropy` (the
+correlation length ratio x / y, area preserving, Eq. 27); one inverse FFT; mean square
+(2 pi)^-2 sum_q C dqx dqy (target_rms^2; exact with deterministic amplitudes). method 'seed' (D-4,
+seed 001 Eq. 9-10, README Eq. 29-32): sums of line textures from G over boxes whose lengths put the
+1/e correlation lengths nearest `correlation_x`, `correlation_y`, rescaled to rms `sigma` exactly.
+G is the table (wavenumber, psd) with log-log interpolation (a [texture] table). The uniforms are
+Philox streams keyed by (seed, index), the ones `rollspec texture` draws its surface `index` from with
+[study] seed = seed: the same table and keys give the command's heights bit for bit.
+
+Parameters
+----------
+wavenumber : array_like, 1-D
+    Table wavenumbers k (rad/m), increasing, > 0.
+psd : array_like, 1-D
+    One-sided line PSD G(k) (m^3), >= 0.
+spacing : float
+    Grid spacing dx = dy (m) ([surface] spacing); the grid must resolve the PSD's last wavenumber
+    (stretched by the anisotropy) unless the table ends below.
+nx, ny : int
+    Grid points along x and y, even ([surface] nx, ny); ny defaults to nx.
+seed, index : int
+    The stream's key: [study] seed and the surface's index (realisation).
+method : str
+    'spectral' or 'seed' ([surface] method).
+amplitudes : str
+    'rayleigh' or 'deterministic' ([texture] amplitudes).
+extension : str
+    The PSD outside the table: 'error', 'constant', 'power_law', 'zero' ([texture] table_extension).
+anisotropy : float
+    Correlation length ratio x / y, spectral method ([surface] anisotropy).
+sigma, correlation_x, correlation_y : float
+    Seed method: rms height (m) and 1/e correlation lengths (m) ([surface] sigma, correlation_x,
+    correlation_y); defaults those of the keys.
+
+Returns
+-------
+dict
+    heights (m, shape (ny, nx): heights[iy, ix] = z(ix dx, iy dy), a realisation of
+    /surface/heights), spacing (m), method, seed, index; spectral: target_rms (m); seed: box (the box
+    lengths n, m in samples) and expected_correlation (m, Eq. 31 at those lengths).
+)";
+
 }  // namespace
 
 void bind_surfaces(py::module_& m) {
   using py::arg;
   m.def("line", &line, kLineDoc, arg("wavenumber"), arg("psd"), arg("spacing"), arg("samples"), py::kw_only(),
         arg("seed"), arg("index") = 0, arg("amplitudes") = "rayleigh", arg("extension") = "error");
+  const auto keys = study::SurfaceSection::keys();
+  const auto key = [&](const std::string& k) { return key_default(key_spec(keys, "surface." + k)); };
+  m.def("isotropic", &isotropic, kIsotropicDoc, arg("wavenumber"), arg("psd"), arg("spacing"), arg("nx"),
+        arg("ny") = py::none(), py::kw_only(), arg("seed"), arg("index") = 0, arg("method") = "spectral",
+        arg("amplitudes") = "rayleigh", arg("extension") = "error", arg("anisotropy") = key("anisotropy"),
+        arg("sigma") = key("sigma"), arg("correlation_x") = key("correlation_x"),
+        arg("correlation_y") = key("correlation_y"));
 }
 
 }  // namespace rollspec::python

@@ -1,8 +1,9 @@
 """rollspec: the kernels and engine functions of the rollspec command on numpy arrays.
 
-rollspec.spectra  Welch PSD and third-octave bands, as `rollspec psd` and a study compute them.
+rollspec.spectra  Welch PSD and third-octave bands, as `rollspec psd` and a study compute them, and the
+                  measurement reader of `rollspec psd` and `compare` (CSV, WAV/FLAC, .mat).
 rollspec.contact  the elastic and elastic-plastic half-space contact solve of the stiffness tables.
-rollspec.surfaces line textures from a PSD, on `rollspec texture`'s random streams.
+rollspec.surfaces line textures and isotropic surfaces from a PSD, on `rollspec texture`'s random streams.
 
 SI units throughout; help(rollspec.contact.solve) and the others say each argument's unit.
 """

@@ -1,5 +1,6 @@
 # Type stub of rollspec.spectra (python/spectra_bindings.cpp); units in the docstrings.
-from typing import Any, Dict
+import os
+from typing import Any, Dict, Optional, Sequence, Union
 
 import numpy.typing as npt
 
@@ -23,4 +24,14 @@ def bands(
     band_min: float = 10.0,
     band_max: float = 1e9,
     confidence: float = 0.95,
+) -> Dict[str, Any]: ...
+def read_measurement(
+    path: Union[str, bytes, os.PathLike],
+    *,
+    column: Optional[Union[str, Sequence[str]]] = None,
+    unit: Optional[str] = None,
+    time_column: Optional[str] = None,
+    fs: Optional[float] = None,
+    scale: Optional[float] = None,
+    skip_rows: Optional[int] = None,
 ) -> Dict[str, Any]: ...

@@ -89,12 +89,12 @@ def test_bands_average_the_bins_and_carry_chi_square_intervals():
 @pytest.mark.parametrize(
     "call, message",
     [
-        (lambda: spectra.welch(np.ones(100), 10.0, segment=2), "segment = 2: too short; allowed: a whole number >= 4 (samples)"),
+        (lambda: spectra.welch(np.ones(100), 10.0, segment=2), "segment = 2: allowed: a whole number >= 4"),
         (lambda: spectra.welch(np.ones(100), 10.0, segment=200), "x = 100 samples per channel: fewer than one segment; allowed: at least segment = 200 samples"),
-        (lambda: spectra.welch(np.ones(100), 0.0, segment=16), "fs = 0: not a rate; allowed: a finite number > 0 (Hz)"),
-        (lambda: spectra.welch(np.ones(100), 10.0, segment=16, overlap=0.99), "overlap = 0.99: out of range; allowed: a fraction in [0, 0.95]"),
-        (lambda: spectra.welch(np.ones(100), 10.0, segment=16, window="hamming"), "window = 'hamming': unknown window; allowed: hann, rectangular, rect"),
-        (lambda: spectra.welch(np.ones(100), 10.0, segment=16, detrend="linear"), "detrend = 'linear': unknown detrending"),
+        (lambda: spectra.welch(np.ones(100), 0.0, segment=16), "fs = 0: allowed: a finite number > 0 (Hz)"),
+        (lambda: spectra.welch(np.ones(100), 10.0, segment=16, overlap=0.99), "overlap = 0.99: allowed: a fraction in [0, 0.95]"),
+        (lambda: spectra.welch(np.ones(100), 10.0, segment=16, window="hamming"), "window = 'hamming': allowed: hann, rectangular (or rect)"),
+        (lambda: spectra.welch(np.ones(100), 10.0, segment=16, detrend="linear"), "detrend = 'linear': allowed: mean (also constant), none"),
         (lambda: spectra.welch(np.r_[np.ones(99), np.inf], 10.0, segment=16), "x: 1 value NaN or infinite; allowed"),
         (lambda: spectra.welch(np.ones((2, 2, 30)), 10.0, segment=16), "x: 3 dimension(s); allowed"),
         (lambda: spectra.welch(np.tile([1e200, -1e200], 50), 10.0, segment=16), "its PSD overflows a double"),

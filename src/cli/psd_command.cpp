@@ -15,12 +15,12 @@
 #include "kernels/spectral/welch.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
+#include "src/io/psd_options.hpp"
 #include "src/error.hpp"
 #include "src/io/content_hash.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/psd_csv.hpp"
 #include "src/io/signal_file.hpp"
-#include "src/study/sections/spectrum_section.hpp"
 #include "src/version.hpp"
 
 namespace rollspec::cli {
@@ -77,42 +77,30 @@ const char* const kPsdUsage =
     "integer PCM of full scale (a recorder whose full scale is 50 g: --scale 50 --unit g).\n"
     "Each choice made from the file (encoding, delimiter, decimal comma, header and units row, time column,\n"
     "sample rate, each channel's unit) is said in one line on stderr (not with --quiet).";
-// --window: the spellings of the study key spectrum.window (one table), and `rect`, the short form psd took
-// before and its CSV metadata still writes.
-spectral::Window welch_window(const std::string& text) {
-  if (text == "rect") return spectral::Window::rectangular;
-  std::string allowed;
-  for (const auto& c : study::kWelchWindows) {
-    if (text == c.spelling) return c.value;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(c.spelling);
-  }
-  throw usage_error("--window " + text + ": allowed: " + allowed + " (or rect)");
-}
-
 }  // namespace
 
 int psd_command(const Args& args) {
   const std::string usage = kPsdUsage;
   po::options_description opts("options");
-  std::string input, out, window = "hann";
-  double overlap = 0.5;
-  io::SignalRequest request;
-  long long segment = 1024;
+  std::string input, out;
+  io::WelchOptions welch;
+  io::SignalOptions signal;
   opts.add_options()("signal", po::value(&input)->required(), "input signal (CSV/text, WAV/FLAC/..., .mat)")(
-      "fs", po::value(&request.fs), "sample rate (Hz); default: from the file")(
-      "column", po::value(&request.columns)->composing(),
+      "fs", po::value<double>(), "sample rate (Hz); default: from the file")(
+      "column", po::value(&signal.columns)->composing(),
       "channel(s) to analyse, repeatable or comma-separated (default: all)")(
-      "unit", po::value(&request.unit),
+      "unit", po::value(&signal.unit),
       "unit of the values (g, m/s2, mm/s2, ...), or one per channel (g,m/s2); default: from the file, else m/s2")(
-      "scale", po::value(&request.scale),
+      "scale", po::value<double>(),
       "physical units per file unit, or per full scale (integer PCM; needed there); default 1")(
-      "time-column", po::value(&request.time_column),
+      "time-column", po::value<std::string>(),
       "CSV column of time stamps, or none (default: the column named like a time)")(
-      "skip-rows", po::value(&request.skip_rows), "CSV lines before the header (default: found from the data)")(
+      "skip-rows", po::value<long long>(), "CSV lines before the header (default: found from the data)")(
       "quiet,q", "do not say the choices made from the file")(
-      "segment", po::value(&segment)->default_value(1024, "1024"), "segment length (samples)")(
-      "overlap", po::value(&overlap)->default_value(0.5, "0.5"), "overlap as a fraction of the segment, in [0, 0.95]")(
-      "window", po::value(&window)->default_value("hann", "hann"),
+      "segment", po::value(&welch.segment)->default_value(1024, "1024"), "segment length (samples)")(
+      "overlap", po::value(&welch.overlap)->default_value(0.5, "0.5"),
+      "overlap as a fraction of the segment, in [0, 0.95]")(
+      "window", po::value(&welch.window)->default_value("hann", "hann"),
       "hann or rectangular (rect), the spellings of the study key spectrum.window")("out,o", po::value(&out),
                                                                                     "output CSV")(
       "force", "replace an existing --out (and its metadata file) even if psd did not write it");
@@ -120,18 +108,12 @@ int psd_command(const Args& args) {
   pos.add("signal", 1);
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (vm.count("fs") && (!(request.fs > 0.0) || !std::isfinite(request.fs)))
-    throw usage_error("--fs " + std::to_string(request.fs) + ": allowed: a finite number > 0 (Hz)");
-  request.scale_given = vm.count("scale") > 0;
-  if (vm.count("skip-rows") && request.skip_rows < 0)
-    throw usage_error("--skip-rows " + std::to_string(request.skip_rows) +
-                      ": allowed: a whole number >= 0 (lines before the header)");
-  if (vm.count("time-column") && request.time_column.empty())
-    throw usage_error("--time-column '': allowed: a column name, or none");
-  if (segment < 4) throw usage_error("--segment " + std::to_string(segment) + ": allowed: a whole number >= 4");
-  if (!(overlap >= 0.0 && overlap <= 0.95))
-    throw usage_error("--overlap " + std::to_string(overlap) + ": allowed: a fraction in [0, 0.95]");
-  const spectral::Window window_choice = welch_window(window);
+  if (vm.count("fs")) signal.fs = vm["fs"].as<double>();
+  if (vm.count("scale")) signal.scale = vm["scale"].as<double>();
+  if (vm.count("time-column")) signal.time_column = vm["time-column"].as<std::string>();
+  if (vm.count("skip-rows")) signal.skip_rows = vm["skip-rows"].as<long long>();
+  const io::SignalRequest request = io::signal_request(signal, io::OptionSpelling::command);
+  spectral::WelchConfig cfg = io::welch_options(welch, io::OptionSpelling::command);
 
   if (!out.empty()) {  // an output that is the input is refused before the input is read
     std::error_code ec;
@@ -142,14 +124,10 @@ int psd_command(const Args& args) {
   const io::SignalTable t = io::prepare_signal(input, request);
   if (!vm.count("quiet"))
     for (const auto& note : t.notes) std::cerr << "rollspec psd: " << note << "\n";
-  if (t.samples() < static_cast<std::size_t>(segment))
+  if (t.samples() < cfg.segment)
     throw data_error(input + ": " + std::to_string(t.samples()) + " samples, fewer than one segment (--segment " +
-                     std::to_string(segment) + ")");
-  spectral::WelchConfig cfg;
+                     std::to_string(cfg.segment) + ")");
   cfg.sample_rate = t.sample_rate;
-  cfg.segment = static_cast<std::size_t>(segment);
-  cfg.overlap = static_cast<std::size_t>(std::floor(overlap * static_cast<double>(segment)));
-  cfg.window = window_choice;
   const spectral::WelchPlan plan(cfg);
   spectral::WelchWorkspace ws(cfg.segment);
   std::vector<std::vector<double>> psd(t.channels.size(), std::vector<double>(plan.n_freq()));
@@ -191,7 +169,7 @@ int psd_command(const Args& args) {
   m.rate_source = t.rate_source;
   m.segment = cfg.segment;
   m.overlap = cfg.overlap;
-  m.window = window_choice == spectral::Window::hann ? "hann" : "rect";  // the metadata's spelling (psd_csv.hpp)
+  m.window = cfg.window == spectral::Window::hann ? "hann" : "rect";  // the metadata's spelling (psd_csv.hpp)
   m.detrend = "mean";
   m.samples = t.samples();
   m.segments = plan.segments(t.samples());

@@ -41,6 +41,7 @@ PAGES = {
     "docs/tutorials/measurements.md": (None, {"19.8 dB": "20 log10 9.80665: g read as m/s²",
                                               "60 dB": "20 log10 1000: mm/s² read as m/s²"}),
     "docs/howto/roughness.md": (None, {"0.3 dB": "ISO 3095 Eq. 10-11's band integral against the band level (theory)"}),
+    "docs/howto/python-module.md": (None, {}),
 }
 FIGURE = re.compile(r"[+−-]?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?:\s?[–-]\s?\d+(?:\.\d+)?)?\s?(?:%|dB\b)"
                     r"|\b\d+(?:\.\d+)?e[-+]?\d+\b")

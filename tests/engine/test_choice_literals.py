@@ -22,7 +22,6 @@ ROW = re.compile(r'\{\s*[\w:\']+\s*,\s*"([^"]*)"\s*,')
 # (file, literal): (comparisons in that file, why it is no study choice).
 ALLOWED = {
     ("src/cli/compare_command.cpp", "table"): (1, "compare's --format option (table, csv or json)"),
-    ("src/cli/psd_command.cpp", "hann"): (2, "psd's --window option (hann or rect), a signal's own Welch window"),
     ("src/compare/measured_spectrum.cpp", "hann"): (2, "a psd result's /psd welch_window attribute (hann or rect)"),
     ("src/compare/measured_spectrum.cpp", "none"): (1, "a psd result's /psd welch_detrend attribute"),
     ("src/io/signal_csv.cpp", "none"): (1, "psd's --time-column none"),
