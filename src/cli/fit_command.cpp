@@ -25,14 +25,14 @@
 
 namespace rollspec::cli {
 
-using fit::FitInputs;
-using fit::FitJournal;
-using fit::FitModel;
-using fit::FitPoint;
 using compare::read_measurement;
 using fit::check_fit_keys;
 using fit::fit_journal_key;
 using fit::fit_search;
+using fit::FitInputs;
+using fit::FitJournal;
+using fit::FitModel;
+using fit::FitPoint;
 using fit::parse_at;
 using fit::parse_vary;
 

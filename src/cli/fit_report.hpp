@@ -7,8 +7,8 @@
 
 namespace rollspec::cli {
 
-using fit::FitParameter;
 using fit::FitObjective;
+using fit::FitParameter;
 using fit::FitPointReport;
 using fit::FitReport;
 

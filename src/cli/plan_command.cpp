@@ -26,10 +26,10 @@
 
 namespace rollspec::cli {
 
-using run::resolve_study;
-using run::make_scene;
 using run::kDefaultMaxSweepPoints;
 using run::load_sweep;
+using run::make_scene;
+using run::resolve_study;
 
 int plan_command(const Args& args) {
   const std::string usage =

@@ -14,9 +14,9 @@
 
 namespace rollspec::cli {
 
-using run::RunRequest;
-using run::run_request;
 using run::kDefaultMaxSweepPoints;
+using run::run_request;
+using run::RunRequest;
 
 int run_command(const Args& args) {
   const std::string usage =

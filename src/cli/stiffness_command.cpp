@@ -19,8 +19,8 @@
 
 namespace rollspec::cli {
 
-using run::resolve_study;
 using run::check_resources;
+using run::resolve_study;
 
 int stiffness_command(const Args& args) {
   const std::string usage =

@@ -14,9 +14,9 @@
 
 namespace rollspec::cli {
 
-using run::resolve_study;
 using run::check_resources;
 using run::make_scene;
+using run::resolve_study;
 using run::SweepStudy;
 
 namespace {

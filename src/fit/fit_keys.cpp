@@ -14,9 +14,9 @@
 
 namespace rollspec::fit {
 
+using run::make_scene;
 using run::resolve_study;
 using run::StudyArgs;
-using run::make_scene;
 
 namespace {
 

@@ -21,8 +21,8 @@
 
 namespace rollspec::fit {
 
-using run::RunRequest;
 using run::run_request;
+using run::RunRequest;
 
 using io::number_text;
 

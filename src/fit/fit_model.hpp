@@ -9,6 +9,7 @@
 // and held for the whole fit; every later run leaves it out ([stiffness] table_error = none).
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -55,7 +56,7 @@ struct FitInputs {
   std::vector<std::string> sets;  // --set passed on to every run
   std::vector<VaryRange> vary;
   std::vector<FitPoint> points;
-  double fmin = 0.0, fmax = 0.0;
+  double fmin = 0.0, fmax = std::numeric_limits<double>::infinity();  // the command's defaults: every band
 };
 
 // Refuses, before the first run, a study or --at point that does not load, and a --vary range outside

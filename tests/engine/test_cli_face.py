@@ -2,8 +2,8 @@
 function (src/run/, src/fit/, src/compare/, ...) that the Python module calls the same way.
 
 The rules, read from the sources:
-- no file outside src/cli/ (the engine, the Python module, the benches, the tests of the engine)
-  includes a src/cli/ header: the engine never depends on its command face;
+- no file of the engine (src/ outside src/cli/), the Python module (python/) or the benches (bench/)
+  includes a src/cli/ header: the engine never depends on its command face (tests of a printer may);
 - every file in src/cli/ is a command (`*_command.cpp`, `main.cpp`, `commands.hpp`), an option reader
   (FACE, with what it reads), or a printer (FACE, with what it prints); a file that holds engine work
   not yet moved out is listed in PENDING with that work, and PENDING can only shrink (a file it names
@@ -42,12 +42,12 @@ def stem(name):
 def violations(root, face=FACE, pending=PENDING):
     found = []
     cli = root / "src" / "cli"
-    for top in ("src", "python", "bench", "tests"):
+    for top in ("src", "python", "bench"):
         for f in sorted((root / top).rglob("*")):
             if f.suffix not in (".cpp", ".hpp", ".h") or not f.is_file():
                 continue
             rel = f.relative_to(root).as_posix()
-            if rel.startswith("src/cli/") or rel.startswith("tests/cli/"):
+            if rel.startswith("src/cli/"):
                 continue
             for inc in INCLUDE.findall(f.read_text(errors="replace")):
                 if any(stem(pathlib.PurePosixPath(inc).name) == p or pathlib.PurePosixPath(inc).name == p
@@ -77,7 +77,7 @@ def test_an_engine_file_including_the_face_is_found(tmp_path):
                               "src/run/run_phases.cpp": '#include "src/cli/parse_options.hpp"\n',
                               "python/spectra.cpp": '#include "src/cli/fit_report.hpp"\n'})
     found = violations(root, face={"parse_options": "", "fit_report": ""}, pending={})
-    assert [f.split(":")[0] for f in found] == ["python/spectra.cpp", "src/run/run_phases.cpp"]
+    assert sorted(f.split(":")[0] for f in found) == ["python/spectra.cpp", "src/run/run_phases.cpp"]
 
 
 def test_engine_work_in_the_face_is_found(tmp_path):
