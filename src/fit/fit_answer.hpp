@@ -10,11 +10,6 @@
 
 namespace rollspec::fit {
 
-using compare::chosen_bands;
-using compare::ChosenBands;
-using compare::combined_test;
-using compare::CombinedTest;
-
 struct FitParameter {
   std::string key;
   double estimate, lower, upper;                // lower, upper: NaN when the fit gives no interval
@@ -34,7 +29,7 @@ struct FitObjective {
 // of the run there, and the same corrected for the fitted keys (D-27j).
 struct FitPointReport {
   std::string measurement, at;
-  CombinedTest test;                // compare's, not corrected for the search
+  compare::CombinedTest test;       // compare's, not corrected for the search
   spectral::BandTestResult fitted;  // D-27j
   std::string fitted_verdict;       // one line
   std::string question;             // the table's question (D-31; empty: the contact has no random table)
