@@ -3,7 +3,7 @@
 with another surface of the model's roughness gives, at the shipped defaults.
 
 usage: bench_table_verdict.py ROLLSPEC --scene beam-r|beam-s|route [--tables 20] [--models 5] [--rolls 25]
-                              [--work DIR] [--record FILE] [--keep]
+                              [--pair K] [--work DIR] [--record FILE]
 
 For each of --tables table seeds t (101, 102, ...) the shipped study is run twice:
   model t        the study as shipped (its K, its study seed, [stiffness] table_error at its default), table seed t;
@@ -19,6 +19,10 @@ Figures (bands band_min..band_max of the study, every sensor row for the coverag
              default: all).
   split      the sensor mean's band-level variance between tables against that of model minus measurement on the
              same table (the share the table term carries).
+  pair       with --pair K: the shipped study run with K realisations on table seeds 1 and 2, as a user would
+             run it twice on two tables: the share of band levels (every sensor row) whose difference lies
+             within the two intervals combined (sqrt(h1^2 + h2^2), h the half-widths), the median difference
+             and the median half-width (an interval much wider than the differences is too wide).
 compare's answers are kept in the work folder beside the runs, so a bench resumed with --work redoes neither.
 Writes bench/records/validation/table-verdict-SCENE.json (or --record) through the bench record writer; --work keeps the
 runs (default: a temporary directory).
@@ -127,6 +131,18 @@ def variance_split(models, measured):
     return float(np.nanmean(np.nanvar(meas, axis=0, ddof=1))), float(np.nanmean(np.nanvar(diff, axis=0, ddof=1)))
 
 
+def pair(binary, study, work, sets, k):
+    """Two runs of K realisations on table seeds 1 and 2: how often their band levels agree within their
+    combined intervals, and how the differences compare with the intervals' half-widths (dB)."""
+    a, b = (bands(run_study(binary, study, work / f"pair-{k}-table-{t}.h5",
+                            sets + [f"stiffness.table_seed={t}", f"study.realisations={k}"])) for t in (1, 2))
+    d = np.abs(a["level"] - b["level"])
+    ha, hb = (a["hi"] - a["lo"]) / 2.0, (b["hi"] - b["lo"]) / 2.0
+    ok = np.isfinite(d)
+    agree = float(np.mean(d[ok] <= np.hypot(ha, hb)[ok]))
+    return agree, float(np.median(d[ok])), float(np.median(np.r_[ha[ok], hb[ok]])), int(ok.sum())
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("binary")
@@ -134,12 +150,13 @@ def main():
     p.add_argument("--tables", type=int, default=20)
     p.add_argument("--models", type=int, default=0, help="tables whose models are compared (default: all)")
     p.add_argument("--rolls", type=int, default=25)
+    p.add_argument("--pair", type=int, default=0, help="K of two more runs on table seeds 1 and 2 (0: none)")
     p.add_argument("--work", help="a folder of its own for the runs (new, empty, or one it made); default: temporary")
     p.add_argument("--record")
     a = p.parse_args()
-    if a.tables < 2 or a.rolls < 1 or a.models < 0:
-        p.error(f"--tables {a.tables} --rolls {a.rolls} --models {a.models}: allowed: at least 2 tables, 1 roll, "
-                "0 or more models")
+    if a.tables < 2 or a.rolls < 1 or a.models < 0 or a.pair < 0 or a.pair == 1:
+        p.error(f"--tables {a.tables} --rolls {a.rolls} --models {a.models} --pair {a.pair}: allowed: at least 2 "
+                "tables, 1 roll, 0 or more models, a pair of 0 (none) or at least 2 realisations")
     require_program(a.binary, "binary")
     study, description = SCENES[a.scene]
     study = ROOT / study
@@ -183,6 +200,12 @@ def main():
         data["cases"][name] = {"rejected": rejected, "median_p": float(np.nanmedian(pv)),
                                "bands_inside": float(np.mean([x[1] for x in found])), "comparisons": len(found)}
         print(f"{name}: rejected {rejected:.3f}", file=sys.stderr)
+    if a.pair:
+        agree, median_d, median_h, n = pair(a.binary, study, work, sets, a.pair)
+        rows.append([f"two runs of K = {a.pair} on table seeds 1 and 2: bands agreeing within their intervals",
+                     f"{agree:.3f}", f"median difference {median_d:.3g} dB, median half-width {median_h:.3g} dB", n])
+        data["pair"] = {"realisations": a.pair, "agree": agree, "median_difference_db": median_d,
+                        "median_half_width_db": median_h, "bands": n}
     minutes = (time.monotonic() - start) / 60.0
     bench_record.write(
         record, title=f"The verdict against measurements from other tables: {description}",

@@ -27,9 +27,10 @@ int modes_command(const Args& args) {
   const study::Study s = resolve_study(study);
   const auto has_beam = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.modal_beam); };
   const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
-  if (!has_beam(scene))
-    study::StudySection::parse(s).scene_origin.refuse("rollspec modes needs a " + scenes::scenes_with(has_beam) +
-                                                      " study");
+  if (!has_beam(scene)) {
+    const auto study_keys = study::StudySection::parse(s);
+    study_keys.origin(study_keys.scene).refuse("rollspec modes needs a " + scenes::scenes_with(has_beam) + " study");
+  }
   const beam::ModalBeam b = scene.modal_beam(s);
   const bool clamped = b.properties().support == beam::Support::clamped_clamped;
   std::printf("# %s beam, span %.6g m, effective length %.6g m, EI %.6g N m^2, rho A %.6g kg/m\n",

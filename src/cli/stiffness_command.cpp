@@ -14,6 +14,7 @@
 #include "src/scenes/scene.hpp"
 #include "src/run/run_phases.hpp"
 #include "src/stiffness/stiffness_table.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/io/number_text.hpp"
 
@@ -43,13 +44,16 @@ int stiffness_command(const Args& args) {
   po::variables_map vm;
   if (!parse_options(args, usage, opts, pos, vm)) return 0;
   if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
-  if (!out.empty()) study.sets.push_back("stiffness.table=" + std::filesystem::absolute(out).string());
+  if (!out.empty())
+    study.sets.push_back(study::StiffnessSection::table_setting(std::filesystem::absolute(out).string()));
   const study::Study s = resolve_study(study);
   const auto has_table = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.contact_pair); };
   const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
-  if (!has_table(scene))
-    study::StudySection::parse(s).scene_origin.refuse("rollspec stiffness needs a " + scenes::scenes_with(has_table) +
-                                                      " study");
+  if (!has_table(scene)) {
+    const auto study_keys = study::StudySection::parse(s);
+    study_keys.origin(study_keys.scene)
+        .refuse("rollspec stiffness needs a " + scenes::scenes_with(has_table) + " study");
+  }
   check_resources(s, vm.count("force") > 0);
   const auto pair = scene.contact_pair(s);
   std::string status;

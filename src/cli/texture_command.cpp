@@ -48,9 +48,9 @@ void refuse_overflow(const study::TextureSection& s, const char* what, std::size
   if (finite) return;
   using study::TextureSource;
   const TextureSource source = s.source;
-  std::string where = s.source_origin.where;
+  std::string where = s.origin(s.source).where;
   if (source == TextureSource::table) where = s.table_path + " (" + where + ")";
-  if (source == TextureSource::profiles) where = s.profiles_origin.where;
+  if (source == TextureSource::profiles) where = s.origin(s.profile_paths).where;
   char buf[160];
   std::snprintf(buf, sizeof buf, ": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)",
                 what, i, st.rms, st.skewness, st.kurtosis);
@@ -133,8 +133,9 @@ int texture_command(const Args& args) {
   const auto study_keys = study::StudySection::parse(s);
   const auto texture_scene = [](const scenes::SceneInfo& i) { return i.command == scenes::SceneCommand::texture; };
   if (!texture_scene(scenes::find_scene(study_keys.scene)))
-    study_keys.scene_origin.refuse("rollspec texture needs a study of scene " + scenes::scenes_with(texture_scene) +
-                                   " (this one is " + study_keys.scene + ")");
+    study_keys.origin(study_keys.scene)
+        .refuse("rollspec texture needs a study of scene " + scenes::scenes_with(texture_scene) + " (this one is " +
+                study_keys.scene + ")");
   if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
   if (count >= 0) {  // --count overrides both counts: estimate with it
     study.sets.push_back("lines.count=" + std::to_string(count));

@@ -18,6 +18,7 @@
 #include "src/io/run_warning.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/study_section.hpp"
 
 namespace rollspec::fit {
 
@@ -171,7 +172,7 @@ io::BandLevels FitModel::first_run(std::size_t point, const std::vector<double>&
   std::string refused;
   if (b.table_error_missing && !in_.same_surface) {
     try {
-      b = run_at(point, u, {"stiffness.table_error=jackknife"});
+      b = run_at(point, u, {study::StiffnessSection::table_error_setting(study::TableError::jackknife)});
     } catch (const UserError& e) {
       if (e.exit_code() != EX_CONFIG) throw;
       refused = e.what();
@@ -374,7 +375,7 @@ std::vector<PointRun> FitModel::replicate(const std::vector<double>& u, std::uin
   }
   double draw = 0.0;
   rng::PhiloxStream(seed_, index, rng::Stream::fit_replicate_seed).uniform_open(&draw, 1);
-  const std::string seed = "study.seed=" + std::to_string(static_cast<std::uint64_t>(draw * 9.0e18));
+  const std::string seed = study::StudySection::seed_setting(static_cast<std::uint64_t>(draw * 9.0e18));
   for (std::size_t point = 0; point < in_.points.size(); ++point) {
     std::vector<std::string> extra = later_sets(point);
     extra.push_back(seed);

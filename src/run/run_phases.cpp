@@ -101,10 +101,12 @@ ResolvedRun resolve_run(const RunRequest& q) {
   ResolvedRun run{load_study(q), nullptr, q.out, {}, {}};
   const study::KeyReader& s = run.study;
   run.scene = &scenes::find_scene(s.scene());
-  if (run.scene->kind == scenes::SceneKind::stages_only)
-    study::StudySection::parse(s).scene_origin.refuse("has no ensemble to run; use rollspec " +
-                                                      std::string(scenes::command_name(run.scene->command)) + " " +
-                                                      s.file());
+  if (run.scene->kind == scenes::SceneKind::stages_only) {
+    const auto study_keys = study::StudySection::parse(s);
+    study_keys.origin(study_keys.scene)
+        .refuse("has no ensemble to run; use rollspec " + std::string(scenes::command_name(run.scene->command)) + " " +
+                s.file());
+  }
   if (run.scene->kind == scenes::SceneKind::single_run && (q.resume || q.restart))
     throw usage_error("study " + s.file() + " (scene " + s.scene() +
                       ") is one deterministic run with no checkpoint; drop --resume/--restart");

@@ -83,16 +83,18 @@ class BallOnBeam final : public EnsembleScene {
   void check_table_jackknife() const {
     const bool stiffness_table = uses_table() && b_.stiffness.rough, strips = solver_filter() && !b_.strip_line;
     if (stiffness_table && strips)
-      b_.stiffness.table_error_origin.refuse(
-          "jackknife takes one table; this study has a rough stiffness table and an equivalent-roughness table "
-          "([contact] filter = solver); allowed here: none, or one of the two");
+      b_.stiffness.origin(b_.stiffness.table_error)
+          .refuse(
+              "jackknife takes one table; this study has a rough stiffness table and an equivalent-roughness table "
+              "([contact] filter = solver); allowed here: none, or one of the two");
     if (!(stiffness_table && b_.stiffness.realisations >= 2) && !(strips && b_.equivalent_roughness_strips >= 2) &&
         !(blocked_solver() && stiffness::f0_segments(blocked_force_grid()).segments >= 2))
-      b_.stiffness.table_error_origin.refuse(
-          "jackknife needs a rough stiffness table of at least 2 surfaces ([contact] law = table or literal, "
-          "[stiffness] surface = rough, realisations >= 2), an equivalent-roughness table of at least 2 strips "
-          "([contact] filter = solver, [equivalent_roughness] line = synthesised, strips >= 2) or a blocked-force "
-          "table of at least 2 Welch segments ([contact] blocked_force = solver); allowed here: none");
+      b_.stiffness.origin(b_.stiffness.table_error)
+          .refuse(
+              "jackknife needs a rough stiffness table of at least 2 surfaces ([contact] law = table or literal, "
+              "[stiffness] surface = rough, realisations >= 2), an equivalent-roughness table of at least 2 strips "
+              "([contact] filter = solver, [equivalent_roughness] line = synthesised, strips >= 2) or a blocked-force "
+              "table of at least 2 Welch segments ([contact] blocked_force = solver); allowed here: none");
   }
 
   // [blocked_force] leave_out (D-30d): a Welch segment of the solver's F0, which must exist.
@@ -280,8 +282,8 @@ class BallOnBeam final : public EnsembleScene {
       std::fprintf(stderr,
                    "stiffness table: %s (%lld surfaces, [stiffness] table_seed = %s, table_shift = %g standard "
                    "errors)\nintervals: %s\n",
-                   status.c_str(), static_cast<long long>(t.realisations), b_.stiffness.text("table_seed").c_str(),
-                   b_.stiffness.table_shift,
+                   status.c_str(), static_cast<long long>(t.realisations),
+                   b_.stiffness.value_text(b_.stiffness.table_seed).c_str(), b_.stiffness.table_shift,
                    jackknifes_stiffness_table()
                        ? "the realisations' and the table's own sampling error (a jackknife over its surfaces: the "
                          "ensemble runs once more per surface; kernels/spectral/README.md D-30)"

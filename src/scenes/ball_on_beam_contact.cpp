@@ -46,8 +46,9 @@ void take_stiffness_table(const BallOnBeamSettings& b, const stiffness::Stiffnes
   const stiffness::StiffnessTable t = shifted_table(table, b.stiffness.table_shift);
   for (std::size_t j = 1; b.stiffness.table_shift != 0.0 && j < t.approach.size(); ++j)
     if (!(t.force_mean[j] > t.force_mean[j - 1]))
-      b.stiffness.table_shift_origin.refuse("the shifted table's mean force does not rise with the approach at " +
-                                            std::to_string(t.approach[j]) + " m; shift it less");
+      b.stiffness.origin(b.stiffness.table_shift)
+          .refuse("the shifted table's mean force does not rise with the approach at " + std::to_string(t.approach[j]) +
+                  " m; shift it less");
   c.law.compression = t.approach;
   if (c.law.kind == beam::ContactLawKind::table) {
     c.law.values = t.force_mean;
@@ -57,8 +58,9 @@ void take_stiffness_table(const BallOnBeamSettings& b, const stiffness::Stiffnes
   }
   c.static_compression = t.approach_at(b.weight());
   if (!(c.static_compression > 0.0))
-    b.stiffness.approach_max_origin.refuse("the table's largest force " + std::to_string(t.force_mean.back()) +
-                                           " N does not reach the ball's weight; raise approach_max");
+    b.stiffness.origin(b.stiffness.approach_max)
+        .refuse("the table's largest force " + std::to_string(t.force_mean.back()) +
+                " N does not reach the ball's weight; raise approach_max");
   c.contact_stiffness = t.stiffness_at(b.weight());
   check_contact_resolution(b, c.contact_stiffness);
 }

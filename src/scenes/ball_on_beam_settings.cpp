@@ -320,7 +320,8 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   b.static_compression = b.linearised() ? b.weight() / law.k0 : hertz_compression;
   read_contact_filter(s.equivalent_roughness, b, contact::hertz::contact_radius_at_approach(radius, hertz_compression));
   const study::TextureSection& texture = s.texture;
-  b.roughness_origin = texture.source == study::TextureSource::self_affine ? texture.rms_origin : texture.source_origin;
+  b.roughness_origin = texture.source == study::TextureSource::self_affine ? texture.origin(texture.rms)
+                                                                           : texture.origin(texture.source);
   // Before any step or table check that the values could break.
   for (auto& w : check_ball_on_beam_plausibility(b)) b.warnings.push_back(std::move(w));
   // Integration step.

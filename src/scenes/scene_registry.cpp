@@ -11,7 +11,9 @@
 #include "src/scenes/rolling_pipe.hpp"
 #include "src/scenes/stiffness_scene.hpp"
 #include "src/scenes/texture_scene.hpp"
+#include "src/study/sections/ensemble_section.hpp"
 #include "src/study/sections/spectrum_section.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/version.hpp"
 
@@ -88,20 +90,8 @@ const SceneInfo& find_scene(const std::string& name) {
 std::vector<KeySpec> common_keys() {
   std::vector<std::string> names;
   for (const auto& s : scene_registry()) names.push_back(s.name);
-  std::vector<KeySpec> keys = {
-      choice_key("study", "scene", "the scene every realisation runs", std::nullopt, names),
-      integer_key("study", "realisations", "number of Monte-Carlo realisations K", std::nullopt, 1, 1e9),
-      integer_key("study", "seed", "study seed; realisation i draws from Philox keyed by (seed, i)", std::nullopt, 0,
-                  9.0e18),
-      text_key("study", "description", "free text describing the study", std::string("")),
-      [] {
-        KeySpec k = integer_key("ensemble", "chunk_size",
-                                "realisations per checkpointed chunk (a power of two; does not change the result)",
-                                std::string("16"), 1, 1 << 20);
-        k.power_of_two = true;
-        return k;
-      }(),
-  };
+  std::vector<KeySpec> keys = StudySection::keys_with_scenes(names);
+  for (auto& t : EnsembleSection::keys()) keys.push_back(t);
   for (auto& t : SpectrumSection::keys()) keys.push_back(t);
   return keys;
 }

@@ -74,14 +74,17 @@ CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, doub
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version
      << "\n\n[ball]\nradius = " << io::exact_text(ball_radius)
-     << "\neffective_modulus = " << io::exact_text(effective_modulus) << "\nshape = " << stiffness.text("shape")
-     << "\n\n[stiffness]\n";
-  for (const char* k : {"surface", "ball_rms", "approach_max", "steps", "hardness", "tolerance", "max_iterations"})
-    in << k << " = " << stiffness.text(k) << "\n";
-  in << "realisations = " << (stiffness.rough ? stiffness.text("realisations") : "1")
-     << "\nseed = " << stiffness.text("table_seed") << "\n";  // the table seed
+     << "\neffective_modulus = " << io::exact_text(effective_modulus)
+     << "\nshape = " << stiffness.value_text(stiffness.shape) << "\n\n[stiffness]\n";
+  const auto& st = stiffness;
+  for (const study::KeyValue* v :
+       {&st.key_value(st.surface), &st.key_value(st.ball_rms), &st.key_value(st.approach_max), &st.key_value(st.steps),
+        &st.key_value(st.solver.hardness), &st.key_value(st.solver.tolerance), &st.key_value(st.solver.max_iterations)})
+    in << v->key << " = " << v->text << "\n";
+  in << "realisations = " << (st.rough ? st.value_text(st.realisations) : "1")
+     << "\nseed = " << st.value_text(st.table_seed) << "\n";  // the table seed
   // A leave-one-out sub-table (D-30): only when set, so every other table keeps its hash.
-  if (stiffness.table_leave_out >= 0) in << "leave out = " << stiffness.text("table_leave_out") << "\n";
+  if (stiffness.table_leave_out >= 0) in << "leave out = " << stiffness.value_text(stiffness.table_leave_out) << "\n";
   in << "\n[surface]\n";
   for (const char* k : {"method", "nx", "ny", "spacing", "anisotropy", "correlation_x", "correlation_y", "sigma"})
     in << k << " = " << t.surface.text(k) << "\n";
@@ -99,7 +102,7 @@ CachedTable stiffness_cached_table(const TableStudy& t, double ball_radius, doub
       in << "\n";
     }
   }
-  const std::string& explicit_path = stiffness.text("table");
+  const std::string& explicit_path = stiffness.table;
   return CachedTable(kStiffnessTableKind, t.store, in.str(), explicit_path == "auto" ? "" : explicit_path);
 }
 
@@ -167,13 +170,14 @@ SurfaceCurves surface_curves(const TableStudy& ts, double ball_radius, double ef
   const auto shape = stiffness.shape;
   const double ball_rms = stiffness.ball_rms;
   if (ball_rms > 0.0 && !is_rough)
-    stiffness.ball_rms_origin.refuse("needs [stiffness] surface = rough (the flat's realisations)");
+    stiffness.origin(stiffness.ball_rms).refuse("needs [stiffness] surface = rough (the flat's realisations)");
   const long long left_out = stiffness.table_leave_out;  // D-30: a leave-one-out sub-table
   if (left_out >= 0 && (!is_rough || R < 2 || left_out >= R))
-    stiffness.table_leave_out_origin.refuse(
-        "needs [stiffness] surface = rough and an index below [stiffness] "
-        "realisations = " +
-        std::to_string(R) + " (at least 2)");
+    stiffness.origin(stiffness.table_leave_out)
+        .refuse(
+            "needs [stiffness] surface = rough and an index below [stiffness] "
+            "realisations = " +
+            std::to_string(R) + " (at least 2)");
   contact::SolverOptions opts = stiffness.solver;
   std::vector<double> deltas(steps);
   for (std::size_t j = 0; j < steps; ++j) deltas[j] = dmax * static_cast<double>(j + 1) / static_cast<double>(steps);

@@ -38,8 +38,11 @@ texture::Surface study_strip(const TableStudy& ts, const StripGrid& grid, std::u
 
 std::string strip_inputs_text(const TableStudy& ts, const StripGrid& g) {
   std::ostringstream in;
-  for (const char* k : {"hardness", "tolerance", "max_iterations"}) in << k << " = " << ts.stiffness.text(k) << "\n";
-  in << "seed = " << ts.stiffness.text("table_seed") << "\n\n[surface]\nny = " << g.ny
+  const study::StiffnessSection& st = ts.stiffness;
+  for (const study::KeyValue* v :
+       {&st.key_value(st.solver.hardness), &st.key_value(st.solver.tolerance), &st.key_value(st.solver.max_iterations)})
+    in << v->key << " = " << v->text << "\n";
+  in << "seed = " << st.value_text(st.table_seed) << "\n\n[surface]\nny = " << g.ny
      << "\nspacing = " << io::exact_text(g.cell) << "\nanisotropy = " << ts.surface.text("anisotropy")
      << "\ntruncate = " << (g.allow_truncation ? "allowed" : "refused")
      << "\nmode power = rectangular cell mean (kernels/texture Eq. 26a)"
@@ -53,7 +56,7 @@ std::string ball_inputs_text(const TableStudy& ts, double radius, double e_star,
   std::ostringstream in;
   in << "[contact kernel]\nversion = " << contact::kernel_version << "\n\n[ball]\nradius = " << io::exact_text(radius)
      << "\neffective_modulus = " << io::exact_text(e_star) << "\nload = " << io::exact_text(load)
-     << "\nshape = " << ts.stiffness.text("shape");
+     << "\nshape = " << ts.stiffness.value_text(ts.stiffness.shape);
   return in.str();
 }
 

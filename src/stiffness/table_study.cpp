@@ -36,9 +36,9 @@ TableStudy TableStudy::of(const TableSections& sections, const texture::Psd& psd
   t.store.study_file = s.file();
   t.store.study_text = s.canonical_text();
   t.store.seed = t.stiffness.table_seed;
-  t.store.table_dir = t.stiffness.text("table_dir");
-  t.store.table_origin = t.stiffness.table_origin;
-  t.store.table_dir_origin = t.stiffness.table_dir_origin;
+  t.store.table_dir = t.stiffness.table_dir;
+  t.store.table_origin = t.stiffness.origin(t.stiffness.table);
+  t.store.table_dir_origin = t.stiffness.origin(t.stiffness.table_dir);
   t.store.inputs = s.input_files();
   for (const auto& p : texture_io::profile_files(sections.texture)) t.store.inputs.push_back(p);
   // A smooth stiffness study needs no texture (its PSD keys are never resolved).

@@ -22,15 +22,15 @@ using study::TextureSection;
 
 namespace {
 // The [texture] keys that act on measured profiles; any other one set with source = profiles is refused.
-const char* const kActing[] = {"source",          "profiles",         "median_filter",
-                               "table_extension", "short_wavelength", "amplitudes"};
+bool acts_on_profiles(const TextureSection& s, const study::KeyValue& v) {
+  return s.is_of(v, s.source) || s.is_of(v, s.profile_paths) || s.is_of(v, s.median_filter) ||
+         s.is_of(v, s.table_extension) || s.is_of(v, s.short_wavelength) || s.is_of(v, s.amplitudes);
+}
 
 void refuse_idle_keys(const TextureSection& s) {
-  for (const auto& [key, origin] : s.set_keys) {
-    bool acts = false;
-    for (const char* k : kActing) acts = acts || key == k;
-    if (!acts)
-      origin.refuse(
+  for (const auto& v : s.key_values()) {
+    if (v.set && !acts_on_profiles(s, v))
+      v.origin.refuse(
           "does not act on measured profiles ([texture] source = profiles); allowed with profiles: profiles, "
           "median_filter, table_extension, short_wavelength (cuts the measured PSD) and amplitudes; remove it");
   }
@@ -92,17 +92,18 @@ texture::Profile read_profile(const std::string& path) {
 texture::EstimatedPsd profile_estimate(const TextureSection& s) {
   const auto& files = s.profile_paths;
   if (files.empty())
-    s.profiles_origin.refuse(
-        "names no profile file; allowed: one or more comma-separated CSV files "
-        "(position_m,height_m), each a whole scan");
+    s.origin(s.profile_paths)
+        .refuse(
+            "names no profile file; allowed: one or more comma-separated CSV files "
+            "(position_m,height_m), each a whole scan");
   std::vector<texture::Profile> profiles;
   for (const auto& p : files) {
-    io::require_regular_input(p, "profile file (" + s.profiles_origin.where + ")");
-    if (!fs::is_regular_file(p)) throw missing_input(s.profiles_origin.where + ": no such profile file " + p);
+    io::require_regular_input(p, "profile file (" + s.origin(s.profile_paths).where + ")");
+    if (!fs::is_regular_file(p)) throw missing_input(s.origin(s.profile_paths).where + ": no such profile file " + p);
     try {
       profiles.push_back(read_profile(p));
     } catch (const UserError& e) {  // the file's line and the study's key both
-      throw UserError(e.exit_code(), s.profiles_origin.where + ": " + e.what());
+      throw UserError(e.exit_code(), s.origin(s.profile_paths).where + ": " + e.what());
     }
   }
   try {
@@ -110,7 +111,7 @@ texture::EstimatedPsd profile_estimate(const TextureSection& s) {
     opt.median_filter = s.median_filter;
     return texture::profile_psd(profiles, opt);
   } catch (const std::invalid_argument& e) {
-    throw data_error(s.profiles_origin.where + ": " + e.what());
+    throw data_error(s.origin(s.profile_paths).where + ": " + e.what());
   }
 }
 
@@ -121,17 +122,18 @@ texture::Psd profile_psd(const TextureSection& s) {
   try {
     psd = texture::measured_line_psd(est, s.table_extension);
   } catch (const std::invalid_argument& e) {
-    throw data_error(s.profiles_origin.where + ": " + e.what());
+    throw data_error(s.origin(s.profile_paths).where + ": " + e.what());
   }
-  if (!s.is_set("short_wavelength")) return psd;
+  if (!s.was_set(s.short_wavelength)) return psd;
   // Eq. 46: the cut must fall inside the resolved band, else it cuts nothing or the unresolved rest.
   const double k_cut = 2.0 * M_PI / s.short_wavelength;
   const double k_r = (static_cast<double>(est.first_resolved) - 0.5) * est.dk, k_n = M_PI / est.spacing;
   if (!(k_cut > k_r && k_cut < k_n))
-    s.short_wavelength_origin.refuse(
-        "cuts the measured PSD at 2 pi / short_wavelength, which must lie in its resolved band; allowed: between " +
-        io::length_text(2.0 * est.spacing) + " (twice the scans' spacing: a shorter cut leaves every wave) and " +
-        io::length_text(2.0 * M_PI / k_r) + " (the longest wavelength the scans resolve)");
+    s.origin(s.short_wavelength)
+        .refuse(
+            "cuts the measured PSD at 2 pi / short_wavelength, which must lie in its resolved band; allowed: between " +
+            io::length_text(2.0 * est.spacing) + " (twice the scans' spacing: a shorter cut leaves every wave) and " +
+            io::length_text(2.0 * M_PI / k_r) + " (the longest wavelength the scans resolve)");
   return texture::band_limited(psd, k_cut);
 }
 
@@ -148,7 +150,7 @@ std::string profile_note(const TextureSection& s) {
                   " of the variance, at the periodogram's level; unresolved " +
                   "(longer waves): " + percent(v > 0.0 ? vu / v : 0.0) + " (rms " + io::length_text(std::sqrt(vu)) +
                   "), given to the scans' longest wave, not to the resolved octaves (kernels/texture Eq. 44-45)";
-  if (s.is_set("short_wavelength"))
+  if (s.was_set(s.short_wavelength))
     m += "; cut at [texture] short_wavelength = " + io::length_text(s.short_wavelength) + " (Eq. 46)";
   return m;
 }
@@ -168,7 +170,7 @@ void write_profile_record(io::Hdf5Writer& w, const std::string& group, const Tex
   w.attribute(group, "resolved_variance", e.resolved_variance());
   w.attribute(group, "unresolved_variance", e.unresolved_variance());
   w.attribute(group, "resolved_wavenumber", (static_cast<double>(e.first_resolved) - 0.5) * e.dk);
-  w.attribute(group, "short_wavelength_cut", s.is_set("short_wavelength") ? s.short_wavelength : 0.0);
+  w.attribute(group, "short_wavelength_cut", s.was_set(s.short_wavelength) ? s.short_wavelength : 0.0);
 }
 
 std::string surface_share_warning(const TextureSection& t, const SurfaceSection& s, const texture::Psd& psd,

@@ -85,7 +85,7 @@ texture::Psd study_psd(const TextureSection& s) {
   try {
     switch (s.source) {
       case TextureSource::table:
-        if (!s.has_table) s.source_origin.refuse("needs [texture] table = a PSD table file");
+        if (!s.has_table) s.origin(s.source).refuse("needs [texture] table = a PSD table file");
         return read_psd_table(s);
       case TextureSource::profiles:
         return profile_psd(s);
@@ -105,14 +105,14 @@ texture::Psd study_psd(const TextureSection& s) {
     spec.k_rolloff = 2.0 * M_PI / s.rolloff_wavelength;
     spec.k_long = lw > 0.0 ? 2.0 * M_PI / lw : 0.0;
     spec.k_short = 2.0 * M_PI / s.short_wavelength;
-    if (spec.k_long > spec.k_rolloff) s.long_wavelength_origin.refuse("must be at least the roll-off wavelength");
+    if (spec.k_long > spec.k_rolloff) s.origin(s.long_wavelength).refuse("must be at least the roll-off wavelength");
     if (spec.k_short <= spec.k_rolloff)
-      s.short_wavelength_origin.refuse("must be shorter than the roll-off wavelength");
+      s.origin(s.short_wavelength).refuse("must be shorter than the roll-off wavelength");
     spec.target = s.rms_kind;
     spec.rms = s.rms;
     return texture::SelfAffinePsd(spec).to_psd();
   } catch (const std::invalid_argument& e) {
-    throw config_error(s.source_origin.where + ": " + e.what());
+    throw config_error(s.origin(s.source).where + ": " + e.what());
   }
 }
 
@@ -167,7 +167,7 @@ LineGeneratorKeys LineGeneratorKeys::of(const TextureSection& t, const KeyOrigin
   LineGeneratorKeys k;
   k.amplitudes = study_amplitudes(t);
   k.spacing_where = spacing.where;
-  k.extension_where = t.table_extension_origin.where;
+  k.extension_where = t.present ? t.origin(t.table_extension).where : "";
   k.spacing_key = spacing_key;
   if (t.present) k.source = t.source;
   k.extension = t.table_extension;
@@ -210,7 +210,7 @@ std::string psd_input_fingerprint(const TextureSection& s) {
     // apart: kernels/texture Eq. 42-45), and a short-wavelength cut only where the study sets one
     // (Eq. 46; the canonical text shows the key's default either way).
     out << "profile estimator = periodogram level, unresolved variance apart (Eq. 42-45)\n";
-    out << "short_wavelength cut = " << (s.is_set("short_wavelength") ? io::exact_text(s.short_wavelength) : "none")
+    out << "short_wavelength cut = " << (s.was_set(s.short_wavelength) ? io::exact_text(s.short_wavelength) : "none")
         << "\n";
   }
   return out.str();

@@ -18,6 +18,7 @@ from source_scan import ROOT, compared_literals, scratch, sources
 REGISTRY = pathlib.PurePosixPath("src/scenes/scene_registry.cpp")
 ROW = re.compile(r'\{\s*"([^"\\]+)"\s*,\s*"')  # a row's name, then its description
 SECTION_KEY = re.compile(r'\b\w+_key\s*\(\s*"(\w+)"\s*,\s*"')  # a key declared in [section]
+SECTION_KEYS = re.compile(r'\bSectionKeys<[\w:]+>\s*\(\s*"(\w+)"\s*\)')  # a section's key declarations
 LITERAL = re.compile(r'"((?:\\.|[^"\\\n])*)"')
 
 
@@ -28,7 +29,7 @@ def scene_names(root):
 
 
 def section_names(root):
-    return {m.group(1) for _, text in sources(root) for m in SECTION_KEY.finditer(text)}
+    return {m.group(1) for _, text in sources(root) for r in (SECTION_KEY, SECTION_KEYS) for m in r.finditer(text)}
 
 
 def own_file(rel, name):

@@ -66,9 +66,21 @@ TEST_CASE("stiffness section: one parse of the solver options, canonical texts f
   CHECK(t.solver.tolerance == 1e-9);
   CHECK(t.solver.max_iterations == 500);
   CHECK(t.shape == contact::BallShape::Paraboloid);
-  CHECK(t.text("tolerance") == s.text("stiffness.tolerance"));
-  CHECK(t.text("shape") == "paraboloid");
+  CHECK(t.value_text(t.solver.tolerance) == s.text("stiffness.tolerance"));
+  CHECK(t.value_text(t.shape) == "paraboloid");
+  CHECK(t.value_text(t.solver.hardness) == "0");  // the text as written: the table's hash input
   CHECK(t.rough);
+  // A leave-one-out sub-table: its values and their texts, as the three --set texts would give.
+  const auto sub = t.leaving_out(3);
+  CHECK((sub.table_leave_out == 3 && sub.table == "auto" && sub.table_error == study::TableError::none));
+  CHECK((sub.value_text(sub.table_leave_out) == "3" && sub.value_text(sub.table) == "auto" &&
+         sub.value_text(sub.table_error) == "none"));
+  CHECK(t.value_text(t.table_leave_out) == "-1");
+  CHECK(study::StiffnessSection::leave_out_sets(3) ==
+        std::vector<std::string>{"stiffness.table_leave_out=3", "stiffness.table=auto", "stiffness.table_error=none"});
+  const auto leave = study::StiffnessSection::parse(ball_on_beam("", {"stiffness.table_leave_out=2"}));
+  CHECK_FALSE(leave.table_error_auto);
+  CHECK(leave.origin(leave.table_leave_out).where == "command line (--set): [stiffness] table_leave_out = 2");
   const auto hard = study::StiffnessSection::parse(ball_on_beam("[stiffness]\nhardness = 2e9\n"));
   CHECK(hard.solver.hardness == 2e9);
 }

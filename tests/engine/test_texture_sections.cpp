@@ -31,19 +31,20 @@ TEST_CASE("texture section: values, profile paths beside the study file, origins
   CHECK(t.present);
   CHECK(t.source == study::TextureSource::profiles);
   CHECK(t.hurst == 0.6);
-  CHECK(t.table == "none");
+  CHECK(t.value_text(t.table_path) == "none");
+  CHECK_FALSE(t.has_table);
   CHECK(t.table_extension == texture::Extension::error);
   CHECK(t.profile_paths == std::vector<std::string>{"/tmp/rollspec_texture_sections/a.csv", "/abs/b.csv"});
   CHECK(texture_io::profile_files(t) == t.profile_paths);
-  CHECK(t.profiles_origin.where == s.where("texture.profiles"));
-  CHECK(t.source_origin.where == "/tmp/rollspec_texture_sections/s.ini:6: [texture] source = profiles");
+  CHECK(t.origin(t.profile_paths).where == s.where("texture.profiles"));
+  CHECK(t.origin(t.source).where == "/tmp/rollspec_texture_sections/s.ini:6: [texture] source = profiles");
   // A key that cannot act on measured profiles is refused where it is set, before any file is read.
   CHECK(message_of([&] { texture_io::study_psd(t); }) ==
         "/tmp/rollspec_texture_sections/s.ini:8: [texture] hurst = 0.6: does not act on measured profiles ([texture] "
         "source = profiles); allowed with profiles: profiles, median_filter, table_extension, short_wavelength (cuts "
         "the measured PSD) and amplitudes; remove it");
-  CHECK(t.is_set("hurst"));
-  CHECK_FALSE(t.is_set("rms"));
+  CHECK(t.was_set(t.hurst));
+  CHECK_FALSE(t.was_set(t.rms));
   // One scan is enough (each is used whole); none is refused at [texture] profiles.
   const auto none = study::TextureSection::parse(texture_study("[texture]\nsource = profiles\nprofiles = ,\n"));
   CHECK(message_of([&] { texture_io::study_psd(none); }) ==
@@ -106,7 +107,7 @@ TEST_CASE("lines and study sections: values and origins") {
   const auto st = study::StudySection::parse(s);
   CHECK(st.scene == "texture");
   CHECK(st.seed == 7);
-  CHECK(st.scene_origin.where == s.where("study.scene"));
+  CHECK(st.origin(st.scene).where == s.where("study.scene"));
 }
 
 TEST_CASE("line generator: a spacing coarser than the PSD names the keys that fix it") {

@@ -9,25 +9,23 @@ namespace rollspec::study {
 
 namespace {
 using B = BallSection;
-const SectionKeys<B>& declared() {
-  static const auto k =
-      SectionKeys<B>("ball")
-          .real("radius", &B::radius, "m", "ball radius R", "0.02", above(0.0))
-          .real("density", &B::density, "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", "7850", above(0.0))
-          .real("youngs_modulus", &B::youngs_modulus, "Pa", "ball Young's modulus", "210e9", above(0.0))
-          .real("poisson", &B::poisson, "-", "ball Poisson's ratio", "0.3", {-1.0, 0.5, false, false})
-          .real("speed", &B::speed, "m/s", "rolling speed v", "1", above(0.0))
-          .if_present()
-          .real("start", &B::start, "m", "ball position where the record starts", "0.05", at_least(0.0))
-          .if_present()
-          .real("end", &B::end, "m", "ball position where the record ends", "0.35", at_least(0.0))
-          .if_present()
-          .real("gravity", &B::gravity, "m/s^2", "gravitational acceleration", "9.81", at_least(0.0));
-  return k;
-}
 }  // namespace
 
-std::vector<KeySpec> BallSection::keys() { return declared().keys(); }
+SectionKeys<BallSection> BallSection::declare() {
+  return SectionKeys<B>("ball")
+      .real("radius", &B::radius, "m", "ball radius R", "0.02", above(0.0))
+      .real("density", &B::density, "kg/m^3", "ball density (mass = 4/3 pi R^3 rho)", "7850", above(0.0))
+      .real("youngs_modulus", &B::youngs_modulus, "Pa", "ball Young's modulus", "210e9", above(0.0))
+      .real("poisson", &B::poisson, "-", "ball Poisson's ratio", "0.3", {-1.0, 0.5, false, false})
+      .real("speed", &B::speed, "m/s", "rolling speed v", "1", above(0.0))
+      .if_present()
+      .real("start", &B::start, "m", "ball position where the record starts", "0.05", at_least(0.0))
+      .if_present()
+      .real("end", &B::end, "m", "ball position where the record ends", "0.35", at_least(0.0))
+      .if_present()
+      .real("gravity", &B::gravity, "m/s^2", "gravitational acceleration", "9.81", at_least(0.0));
+}
+template struct DeclaredSection<BallSection>;
 
 std::vector<KeySpec> BallSection::solid_keys() {
   std::vector<KeySpec> k = declared().keys_of(&B::radius, &B::density, &B::youngs_modulus, &B::poisson, &B::gravity);
@@ -35,8 +33,6 @@ std::vector<KeySpec> BallSection::solid_keys() {
   k[4].doc += " (for the ball's weight)";
   return k;
 }
-
-BallSection BallSection::parse(const KeyReader& s) { return declared().read(s); }
 
 double BallSection::mass() const { return 4.0 / 3.0 * M_PI * radius * radius * radius * density; }
 

@@ -6,20 +6,19 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct BlockedForceSection : KeyedSection {
+struct BlockedForceSection : DeclaredSection<BlockedForceSection> {
   double strip_length = 0.0;                    // m; 0: derived
   long long window = 0, step = 0, segment = 0;  // 0: derived
   double answer_tolerance = 0.0;                // contact BF-8; 0: the exhaustive search (the reference)
   long long leave_out = -1;                     // >= 0: the sub-table without this Welch segment of F0 (D-30d)
 
-  static std::vector<KeySpec> keys();
-  static BlockedForceSection parse(const KeyReader& s);
+  static SectionKeys<BlockedForceSection> declare();
   static std::string leave_out_setting(long long i);  // "<section>.leave_out=i", a --set text
 };
 

@@ -6,38 +6,30 @@
 
 namespace rollspec::study {
 
-namespace {
-const SectionKeys<ContactSection>& declared() {
+SectionKeys<ContactSection> ContactSection::declare() {
   using T = ContactSection;
-  static const auto k =
-      SectionKeys<T>("contact")
-          .choice("law", &T::law, "contact law", ContactLaw::hertz, kContactLaws)
-          .real("damping", &T::damping, "N s/m", "contact damping c_c (c0 for the linearised law)", "100",
-                at_least(0.0))
-          .choice("loss", &T::loss, "force during loss of contact", ContactLoss::damping_only, kContactLosses)
-          .real("k0", &T::k0, "N/m", "linearised contact stiffness k0", "6.8e6", above(0.0))
-          .choice("blocked_force", &T::blocked_force, "linearised law's F0(t)", BlockedForceSource::spring,
-                  kBlockedForceSources)
-          .choice("filter", &T::filter, "what the contact does to the roughness (Hertz radius a at the weight)",
-                  ContactFilter::patch, kContactFilters);
-  return k;
+  return SectionKeys<T>("contact")
+      .choice("law", &T::law, "contact law", ContactLaw::hertz, kContactLaws)
+      .real("damping", &T::damping, "N s/m", "contact damping c_c (c0 for the linearised law)", "100", at_least(0.0))
+      .choice("loss", &T::loss, "force during loss of contact", ContactLoss::damping_only, kContactLosses)
+      .real("k0", &T::k0, "N/m", "linearised contact stiffness k0", "6.8e6", above(0.0))
+      .choice("blocked_force", &T::blocked_force, "linearised law's F0(t)", BlockedForceSource::spring,
+              kBlockedForceSources)
+      .choice("filter", &T::filter, "what the contact does to the roughness (Hertz radius a at the weight)",
+              ContactFilter::patch, kContactFilters);
 }
-}  // namespace
-
-std::vector<KeySpec> ContactSection::keys() { return declared().keys(); }
+template struct DeclaredSection<ContactSection>;
 
 std::string ContactSection::loss_setting(ContactLoss v) {
   return choice_setting(declared().full_name(&ContactSection::loss), kContactLosses, v);
 }
 
-ContactSection ContactSection::parse(const KeyReader& s) {
-  const ContactSection p = declared().read(s);
-  if (p.loss == ContactLoss::closed && p.law != ContactLaw::linearised)
-    p.origin(p.loss).refuse(
+void ContactSection::finish() {
+  if (loss == ContactLoss::closed && law != ContactLaw::linearised)
+    origin(loss).refuse(
         "a contact that never opens is the linear law's counterfactual; "
         "allowed with [contact] law = " +
-        spelling_of(kContactLaws, p.law) + ": damping_only or zero");
-  return p;
+        spelling_of(kContactLaws, law) + ": damping_only or zero");
 }
 
 }  // namespace rollspec::study

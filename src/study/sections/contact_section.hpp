@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -51,7 +51,7 @@ inline constexpr ChoiceTable<ContactFilter, 4> kContactFilters{{
      "[equivalent_roughness] strips rough strips, kernels/contact ER-1..ER-7, a cached table; point laws only"},
 }};
 
-struct ContactSection : KeyedSection {
+struct ContactSection : DeclaredSection<ContactSection> {
   ContactLaw law = ContactLaw::hertz;
   ContactLoss loss = ContactLoss::damping_only;
   BlockedForceSource blocked_force = BlockedForceSource::spring;
@@ -62,8 +62,8 @@ struct ContactSection : KeyedSection {
   // The linearised law with the contact solver's blocked force (a blocked-force table).
   bool blocked_solver() const { return law == ContactLaw::linearised && blocked_force == BlockedForceSource::solver; }
 
-  static std::vector<KeySpec> keys();
-  static ContactSection parse(const KeyReader& s);
+  static SectionKeys<ContactSection> declare();
+  void finish();                                   // checks across its keys, once they are read
   static std::string loss_setting(ContactLoss v);  // "contact.loss=<spelling>", a --set text
 };
 

@@ -1,13 +1,16 @@
 #include "src/study/sections/ensemble_section.hpp"
 
-#include "src/study/key_reader.hpp"
+#include "src/study/sections/section_keys.hpp"
 
 namespace rollspec::study {
 
-EnsembleSection EnsembleSection::parse(const KeyReader& s) {
-  EnsembleSection e;
-  e.chunk_size = s.integer("ensemble.chunk_size");
-  return e;
+SectionKeys<EnsembleSection> EnsembleSection::declare() {
+  using T = EnsembleSection;
+  return SectionKeys<T>("ensemble")
+      .integer("chunk_size", &T::chunk_size,
+               "realisations per checkpointed chunk (a power of two; does not change the result)", "16", 1, 1 << 20)
+      .power_of_two();
 }
+template struct DeclaredSection<EnsembleSection>;
 
 }  // namespace rollspec::study

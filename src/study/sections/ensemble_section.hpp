@@ -1,14 +1,14 @@
 #pragma once
-// [ensemble] (every scene): how the realisations are chunked for checkpoints, read once. The key
-// itself is in the common table (scenes/scene_registry).
+// [ensemble] (every scene): how the realisations are chunked for checkpoints, read once. Its key is in
+// the common table of every scene (scenes/scene_registry).
+#include "src/study/sections/declared_section.hpp"
+
 namespace rollspec::study {
 
-class KeyReader;
-
-struct EnsembleSection {
+struct EnsembleSection : DeclaredSection<EnsembleSection> {
   long long chunk_size = 0;  // realisations per checkpointed chunk
 
-  static EnsembleSection parse(const KeyReader& s);
+  static SectionKeys<EnsembleSection> declare();
 };
 
 }  // namespace rollspec::study

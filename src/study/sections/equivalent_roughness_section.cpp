@@ -6,39 +6,32 @@
 
 namespace rollspec::study {
 
-namespace {
-const SectionKeys<EquivalentRoughnessSection>& declared() {
+SectionKeys<EquivalentRoughnessSection> EquivalentRoughnessSection::declare() {
   using T = EquivalentRoughnessSection;
-  static const auto k =
-      SectionKeys<T>("equivalent_roughness")
-          .integer("strips", &T::strips,
-                   "filter = solver: rough strips (surface realisations 0..strips-1) whose h_eq PSD is averaged; the "
-                   "strip grid is the blocked force's ([blocked_force] strip_length, window, step, segment)",
-                   "2", 1, 1024)
-          .choice("line", &T::line, "filter = solver", EquivalentLine::synthesised, kEquivalentLines)
-          .choice("stiffness", &T::stiffness, "filter = solver", EquivalentStiffness::strip, kEquivalentStiffnesses)
-          .integer("leave_out", &T::leave_out,
-                   "filter = solver: strip index (0 .. strips - 1) left out of the table's mean PSD and stiffness, "
-                   "from the cached table without a new solve: a leave-one-out sub-table for the jackknife of the "
-                   "table's own error ([stiffness] table_error = jackknife; kernels/spectral/README.md D-30); -1: none",
-                   "-1", -1, 1023);
-  return k;
+  return SectionKeys<T>("equivalent_roughness")
+      .integer("strips", &T::strips,
+               "filter = solver: rough strips (surface realisations 0..strips-1) whose h_eq PSD is averaged; the "
+               "strip grid is the blocked force's ([blocked_force] strip_length, window, step, segment)",
+               "2", 1, 1024)
+      .choice("line", &T::line, "filter = solver", EquivalentLine::synthesised, kEquivalentLines)
+      .choice("stiffness", &T::stiffness, "filter = solver", EquivalentStiffness::strip, kEquivalentStiffnesses)
+      .integer("leave_out", &T::leave_out,
+               "filter = solver: strip index (0 .. strips - 1) left out of the table's mean PSD and stiffness, "
+               "from the cached table without a new solve: a leave-one-out sub-table for the jackknife of the "
+               "table's own error ([stiffness] table_error = jackknife; kernels/spectral/README.md D-30); -1: none",
+               "-1", -1, 1023);
 }
-}  // namespace
-
-std::vector<KeySpec> EquivalentRoughnessSection::keys() { return declared().keys(); }
+template struct DeclaredSection<EquivalentRoughnessSection>;
 
 std::string EquivalentRoughnessSection::leave_out_setting(long long i) {
   return declared().full_name(&EquivalentRoughnessSection::leave_out) + "=" + std::to_string(i);
 }
 
-EquivalentRoughnessSection EquivalentRoughnessSection::parse(const KeyReader& s) {
-  const EquivalentRoughnessSection p = declared().read(s);
-  if (p.leave_out >= p.strips)
-    p.origin(p.leave_out)
-        .refuse("leaves out a strip the table does not have; allowed: -1 .. " + std::to_string(p.strips - 1) +
-                " ([equivalent_roughness] strips = " + std::to_string(p.strips) + ")");
-  return p;
+void EquivalentRoughnessSection::finish() {
+  if (leave_out >= strips)
+    origin(leave_out).refuse("leaves out a strip the table does not have; allowed: -1 .. " +
+                             std::to_string(strips - 1) +
+                             " ([equivalent_roughness] strips = " + std::to_string(strips) + ")");
 }
 
 }  // namespace rollspec::study

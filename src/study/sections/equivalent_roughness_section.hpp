@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -27,14 +27,14 @@ inline constexpr ChoiceTable<EquivalentStiffness, 2> kEquivalentStiffnesses{{
     {EquivalentStiffness::law, "law", "the law's own stiffness; h_eq alone"},
 }};
 
-struct EquivalentRoughnessSection : KeyedSection {
+struct EquivalentRoughnessSection : DeclaredSection<EquivalentRoughnessSection> {
   long long strips = 0;
   EquivalentLine line = EquivalentLine::synthesised;
   EquivalentStiffness stiffness = EquivalentStiffness::strip;
   long long leave_out = -1;  // >= 0: the sub-table without this strip (D-30)
 
-  static std::vector<KeySpec> keys();
-  static EquivalentRoughnessSection parse(const KeyReader& s);
+  static SectionKeys<EquivalentRoughnessSection> declare();
+  void finish();                                      // checks across its keys, once they are read
   static std::string leave_out_setting(long long i);  // "<section>.leave_out=i", a --set text
 };
 

@@ -4,18 +4,12 @@
 
 namespace rollspec::study {
 
-namespace {
-const SectionKeys<FlatSection>& declared() {
+SectionKeys<FlatSection> FlatSection::declare() {
   using T = FlatSection;
-  static const auto k =
-      SectionKeys<T>("flat")
-          .real("youngs_modulus", &T::youngs_modulus, "Pa", "flat's Young's modulus", "210e9", above(0.0))
-          .real("poisson", &T::poisson, "-", "flat's Poisson's ratio", "0.3", {-1.0, 0.5, false, false});
-  return k;
+  return SectionKeys<T>("flat")
+      .real("youngs_modulus", &T::youngs_modulus, "Pa", "flat's Young's modulus", "210e9", above(0.0))
+      .real("poisson", &T::poisson, "-", "flat's Poisson's ratio", "0.3", {-1.0, 0.5, false, false});
 }
-}  // namespace
-
-std::vector<KeySpec> FlatSection::keys() { return declared().keys(); }
-FlatSection FlatSection::parse(const KeyReader& s) { return declared().read(s); }
+template struct DeclaredSection<FlatSection>;
 
 }  // namespace rollspec::study

@@ -3,17 +3,16 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct FlatSection : KeyedSection {
+struct FlatSection : DeclaredSection<FlatSection> {
   double youngs_modulus = 0.0, poisson = 0.0;
 
-  static std::vector<KeySpec> keys();
-  static FlatSection parse(const KeyReader& s);
+  static SectionKeys<FlatSection> declare();
 };
 
 }  // namespace rollspec::study

@@ -34,7 +34,26 @@ class KeyedSection {
   bool was_set(const T& field) const {
     return value_of(&field).set;
   }
+  template <class T>
+  const KeyValue& key_value(const T& field) const {
+    return value_of(&field);
+  }
   const std::vector<KeyValue>& key_values() const { return key_values_; }
+  // Whether `v` (of key_values()) is the key read into `field`.
+  template <class T>
+  bool is_of(const KeyValue& v, const T& field) const {
+    return v.offset == offset_of(&field);
+  }
+
+ protected:
+  // A value the section changed after the parse (a sub-table's own settings) gets the text it would have been read
+  // from, so the canonical texts stay the section's values.
+  template <class T>
+  void set_text(const T& field, std::string text) {
+    const std::uintptr_t offset = offset_of(&field);
+    for (auto& v : key_values_)
+      if (v.offset == offset) v.text = std::move(text);
+  }
 
  private:
   template <class S>

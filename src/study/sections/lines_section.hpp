@@ -3,18 +3,17 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct LinesSection : KeyedSection {
+struct LinesSection : DeclaredSection<LinesSection> {
   long long count = 10;
   double length = 0.4, spacing = 1e-5;  // m
 
-  static std::vector<KeySpec> keys();
-  static LinesSection parse(const KeyReader& s);
+  static SectionKeys<LinesSection> declare();
 };
 
 }  // namespace rollspec::study

@@ -4,7 +4,7 @@
 
 #include "kernels/beam/modal_beam.hpp"
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -15,15 +15,14 @@ inline constexpr ChoiceTable<beam::Support, 2> kBeamSupports{{
     {beam::Support::simply_supported, "simply-supported", ""},
 }};
 
-struct ModalBeamSection : KeyedSection {
+struct ModalBeamSection : DeclaredSection<ModalBeamSection> {
   beam::BeamProperties properties;
   beam::ModeSelection selection;
   beam::ModalDamping damping;
   bool static_correction = true;
   double poisson = 0.0;  // the contact modulus's, not the modal beam's
 
-  static std::vector<KeySpec> keys();
-  static ModalBeamSection parse(const KeyReader& s);
+  static SectionKeys<ModalBeamSection> declare();
   // The modes. Refuses an effective length shorter than the span, modes = 0 without max_frequency,
   // and (at [beam] modes) a beam the kernel refuses.
   beam::ModalBeam modal_beam() const;

@@ -4,21 +4,15 @@
 
 namespace rollspec::study {
 
-namespace {
-const SectionKeys<OutputSection>& declared() {
+SectionKeys<OutputSection> OutputSection::declare() {
   using O = OutputSection;
-  static const auto k =
-      SectionKeys<O>("output")
-          .integer("time_histories", &O::time_histories, "store time histories of realisations 0..n-1", "0", 0, 1000)
-          .boolean("reference", &O::reference,
-                   "linearised law: also write the frequency-domain reference (/reference: expected Welch PSD and the "
-                   "range that holds the ensemble mean), computed once after the ensemble",
-                   "true");
-  return k;
+  return SectionKeys<O>("output")
+      .integer("time_histories", &O::time_histories, "store time histories of realisations 0..n-1", "0", 0, 1000)
+      .boolean("reference", &O::reference,
+               "linearised law: also write the frequency-domain reference (/reference: expected Welch PSD and the "
+               "range that holds the ensemble mean), computed once after the ensemble",
+               "true");
 }
-}  // namespace
-
-std::vector<KeySpec> OutputSection::keys() { return declared().keys(); }
-OutputSection OutputSection::parse(const KeyReader& s) { return declared().read(s); }
+template struct DeclaredSection<OutputSection>;
 
 }  // namespace rollspec::study

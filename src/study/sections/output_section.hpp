@@ -3,18 +3,17 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct OutputSection : KeyedSection {
+struct OutputSection : DeclaredSection<OutputSection> {
   long long time_histories = 0;
   bool reference = true;
 
-  static std::vector<KeySpec> keys();
-  static OutputSection parse(const KeyReader& s);
+  static SectionKeys<OutputSection> declare();
 };
 
 }  // namespace rollspec::study

@@ -4,26 +4,20 @@
 
 namespace rollspec::study {
 
-namespace {
-const SectionKeys<PathTableSection>& declared() {
+SectionKeys<PathTableSection> PathTableSection::declare() {
   using T = PathTableSection;
-  static const auto k =
-      SectionKeys<T>("path_table")
-          .integer("approaches", &T::approaches,
-                   "law = path: approaches J of the table P(delta, xi) (kernels/beam B43), 2 or more", "8", 2, 64)
-          .integer("step", &T::step,
-                   "law = path: path step in cells between tabulated positions; 0: at most a quarter of the contact "
-                   "radius",
-                   "0", 0, 1000)
-          .real("strip_length", &T::strip_length, "m",
-                "law = path: length of the rough strip; 0: the ball's path in the run ((end - start) + one step) plus "
-                "the solver window",
-                "0", at_least(0.0));
-  return k;
+  return SectionKeys<T>("path_table")
+      .integer("approaches", &T::approaches,
+               "law = path: approaches J of the table P(delta, xi) (kernels/beam B43), 2 or more", "8", 2, 64)
+      .integer("step", &T::step,
+               "law = path: path step in cells between tabulated positions; 0: at most a quarter of the contact "
+               "radius",
+               "0", 0, 1000)
+      .real("strip_length", &T::strip_length, "m",
+            "law = path: length of the rough strip; 0: the ball's path in the run ((end - start) + one step) plus "
+            "the solver window",
+            "0", at_least(0.0));
 }
-}  // namespace
-
-std::vector<KeySpec> PathTableSection::keys() { return declared().keys(); }
-PathTableSection PathTableSection::parse(const KeyReader& s) { return declared().read(s); }
+template struct DeclaredSection<PathTableSection>;
 
 }  // namespace rollspec::study

@@ -4,18 +4,17 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct PathTableSection : KeyedSection {
+struct PathTableSection : DeclaredSection<PathTableSection> {
   long long approaches = 0, step = 0;  // step 0: derived
   double strip_length = 0.0;           // m; 0: derived
 
-  static std::vector<KeySpec> keys();
-  static PathTableSection parse(const KeyReader& s);
+  static SectionKeys<PathTableSection> declare();
 };
 
 }  // namespace rollspec::study

@@ -8,17 +8,16 @@
 #include "kernels/spectral/harmonic_synthesis.hpp"
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/amplitudes_choice.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct OscillatorSection : KeyedSection {
+struct OscillatorSection : DeclaredSection<OscillatorSection> {
   double mass = 1.0, natural_frequency = 0.0, damping_ratio = 0.0;
 
-  static std::vector<KeySpec> keys();
-  static OscillatorSection parse(const KeyReader& s);
+  static SectionKeys<OscillatorSection> declare();
 };
 
 enum class ForceSpectrum { flat };
@@ -27,22 +26,21 @@ inline constexpr ChoiceTable<ForceSpectrum, 1> kForceSpectra{{
     {ForceSpectrum::flat, "flat", "up to f_max"},
 }};
 
-struct ForceSection : KeyedSection {
+struct ForceSection : DeclaredSection<ForceSection> {
   ForceSpectrum spectrum = ForceSpectrum::flat;
   double level = 0.0, f_max = 0.0;  // f_max 0: the Nyquist frequency
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
 
-  static std::vector<KeySpec> keys();
-  static ForceSection parse(const KeyReader& s);
+  static SectionKeys<ForceSection> declare();
 };
 
 // [signal] of random-oscillator (ball-on-beam's SignalSection has other keys).
-struct RecordSignalSection : KeyedSection {
+struct RecordSignalSection : DeclaredSection<RecordSignalSection> {
   double sample_rate = 0.0, duration = 0.0;
   std::size_t samples = 0;  // duration x sample_rate rounded to even, 4 to 1e9
 
-  static std::vector<KeySpec> keys();
-  static RecordSignalSection parse(const KeyReader& s);
+  static SectionKeys<RecordSignalSection> declare();
+  void finish();  // samples, checked
 };
 
 }  // namespace rollspec::study

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 #include "src/study/sections/rolling_world_sections.hpp"
 
 namespace rollspec::study {
@@ -26,7 +26,7 @@ inline constexpr ChoiceTable<AnalysisIntegrator, 2> kAnalysisIntegrators{{
      "midpoint + discrete-gradient penalty; rigid bodies only"},
 }};
 
-struct RollingAnalysisSection : KeyedSection {
+struct RollingAnalysisSection : DeclaredSection<RollingAnalysisSection> {
   AnalysisType type = AnalysisType::dynamic;
   AnalysisIntegrator integrator = AnalysisIntegrator::newmark;
   bool dynamic = true;             // type = dynamic (else quasi-static load steps)
@@ -34,16 +34,15 @@ struct RollingAnalysisSection : KeyedSection {
   double dt = 0.0, t_end = 0.0, impact_step_fraction = 0.0, max_new_penetration = 0.0, tolerance = 0.0;
   long long record_every = 1, max_iterations = 0, max_cuts = 0, line_search = 0;
 
-  static std::vector<KeySpec> keys();
-  static RollingAnalysisSection parse(const KeyReader& s);
+  static SectionKeys<RollingAnalysisSection> declare();
+  void finish();  // dynamic, energy_consistent; dt against t_end
 };
 
 // [output] of rolling-beam: the recorded nodes.
-struct NodeOutputSection : KeyedSection {
+struct NodeOutputSection : DeclaredSection<NodeOutputSection> {
   NodeList nodes;
 
-  static std::vector<KeySpec> keys();
-  static NodeOutputSection parse(const KeyReader& s);
+  static SectionKeys<NodeOutputSection> declare();
 };
 
 }  // namespace rollspec::study

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -22,46 +22,43 @@ inline constexpr ChoiceTable<BodyKind, 4> kBodyKinds{{
     {BodyKind::flying_beam, "flying-beam", "seed 000 builder 4.4: floor and an oblique wall"},
 }};
 
-struct BodySection : KeyedSection {
+struct BodySection : DeclaredSection<BodySection> {
   BodyKind kind = BodyKind::beam;
 
-  static std::vector<KeySpec> keys();
-  static BodySection parse(const KeyReader& s);
+  static SectionKeys<BodySection> declare();
 };
 
-struct PuckSection : KeyedSection {
+struct PuckSection : DeclaredSection<PuckSection> {
   double half_width = 0.0, force_peak = 0.0, moment_peak = 0.0, pulse = 0.0;
 
-  static std::vector<KeySpec> keys();
-  static PuckSection parse(const KeyReader& s);
+  static SectionKeys<PuckSection> declare();
 };
 
-struct FlyingBeamSection : KeyedSection {
+struct FlyingBeamSection : DeclaredSection<FlyingBeamSection> {
   double force_peak = 0.0, ramp = 0.0, wall_distance = 0.0;
 
-  static std::vector<KeySpec> keys();
-  static FlyingBeamSection parse(const KeyReader& s);
+  static SectionKeys<FlyingBeamSection> declare();
 };
 
 // [beam] of rolling-beam (not ball-on-beam's modal beam); inner_diameter < diameter and distinct
 // ends are checked here.
-struct StraightBeamSection : KeyedSection {
+struct StraightBeamSection : DeclaredSection<StraightBeamSection> {
   Eigen::Vector3d start, end, up;
   long long elements = 0;
   double diameter = 0.0, inner_diameter = 0.0, youngs_modulus = 0.0, poisson = 0.0, density = 0.0;
 
-  static std::vector<KeySpec> keys();
-  static StraightBeamSection parse(const KeyReader& s);
+  static SectionKeys<StraightBeamSection> declare();
+  void finish();  // checks across its keys, once they are read
 };
 
-struct DiscSection : KeyedSection {
+struct DiscSection : DeclaredSection<DiscSection> {
   double radius = 0.0, length = 0.0, mass = 0.0;
   bool at_rest = true;       // position = rest: on the first plane at its static penetration
   Eigen::Vector3d position;  // when not at rest
   Eigen::Vector3d velocity, angular_velocity;
 
-  static std::vector<KeySpec> keys();
-  static DiscSection parse(const KeyReader& s);
+  static SectionKeys<DiscSection> declare();
+  void finish();  // at_rest from position
 };
 
 }  // namespace rollspec::study

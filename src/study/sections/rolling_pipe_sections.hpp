@@ -7,26 +7,25 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
 // inner_diameter < diameter is checked here.
-struct PipeSection : KeyedSection {
+struct PipeSection : DeclaredSection<PipeSection> {
   double length = 0.0, diameter = 0.0, inner_diameter = 0.0, youngs_modulus = 0.0, poisson = 0.0, density = 0.0;
   long long elements = 0;
 
-  static std::vector<KeySpec> keys();
-  static PipeSection parse(const KeyReader& s);
+  static SectionKeys<PipeSection> declare();
+  void finish();  // checks across its keys, once they are read
 };
 
-struct RollSection : KeyedSection {
+struct RollSection : DeclaredSection<RollSection> {
   double speed = 0.0, distance = 0.0;
 
-  static std::vector<KeySpec> keys();
-  static RollSection parse(const KeyReader& s);
+  static SectionKeys<RollSection> declare();
 };
 
 enum class PipeRoughnessKind { line, isotropic };
@@ -37,45 +36,41 @@ inline constexpr ChoiceTable<PipeRoughnessKind, 2> kPipeRoughnessKinds{{
      "an isotropic surface realisation from [surface] (spectral or seed method), different under every node"},
 }};
 
-struct PipeRoughnessSection : KeyedSection {
+struct PipeRoughnessSection : DeclaredSection<PipeRoughnessSection> {
   PipeRoughnessKind kind = PipeRoughnessKind::line;
   bool line = true;      // kind = line (else an isotropic surface from [surface])
   double spacing = 0.0;  // m, of the line texture
 
-  static std::vector<KeySpec> keys();
-  static PipeRoughnessSection parse(const KeyReader& s);
+  static SectionKeys<PipeRoughnessSection> declare();
+  void finish();  // line from kind
 };
 
-struct PipeContactSection : KeyedSection {
+struct PipeContactSection : DeclaredSection<PipeContactSection> {
   double friction = 0.0, penalty_normal = 0.0, penalty_tangential = 0.0, damping_ratio = 0.0;
   bool rolling = true;
 
-  static std::vector<KeySpec> keys();
-  static PipeContactSection parse(const KeyReader& s);
+  static SectionKeys<PipeContactSection> declare();
 };
 
-struct PipeGravitySection : KeyedSection {
+struct PipeGravitySection : DeclaredSection<PipeGravitySection> {
   double acceleration = 0.0;  // m/s^2, normal to the mean surface
 
-  static std::vector<KeySpec> keys();
-  static PipeGravitySection parse(const KeyReader& s);
+  static SectionKeys<PipeGravitySection> declare();
 };
 
-struct PipeAnalysisSection : KeyedSection {
+struct PipeAnalysisSection : DeclaredSection<PipeAnalysisSection> {
   double dt = 0.0, tolerance = 0.0;
 
-  static std::vector<KeySpec> keys();
-  static PipeAnalysisSection parse(const KeyReader& s);
+  static SectionKeys<PipeAnalysisSection> declare();
 };
 
 // [sensors] of rolling-pipe: fractions of the tube's length (ball-on-beam's SensorsSection holds
 // positions in metres), checked against [0, 1] by the scene at origin(positions).
-struct PipeSensorsSection : KeyedSection {
+struct PipeSensorsSection : DeclaredSection<PipeSensorsSection> {
   std::vector<double> positions;
   bool average = true;
 
-  static std::vector<KeySpec> keys();
-  static PipeSensorsSection parse(const KeyReader& s);
+  static SectionKeys<PipeSensorsSection> declare();
 };
 
 }  // namespace rollspec::study

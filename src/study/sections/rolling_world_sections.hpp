@@ -8,18 +8,18 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
 // One normal per point, none the zero vector.
-struct PlaneSection : KeyedSection {
+struct PlaneSection : DeclaredSection<PlaneSection> {
   std::vector<Eigen::Vector3d> points, normals;
 
-  static std::vector<KeySpec> keys();
-  static PlaneSection parse(const KeyReader& s);
+  static SectionKeys<PlaneSection> declare();
+  void finish();  // checks across its keys, once they are read
 };
 
 // A list of node indices or "all" (contact and output nodes), checked against the model later.
@@ -32,21 +32,19 @@ struct NodeList {
 NodeList node_list(const KeyReader& s, const std::string& key);
 
 // [contact] of rolling-beam (not ball-on-beam's nor rolling-pipe's).
-struct RollingContactSection : KeyedSection {
+struct RollingContactSection : DeclaredSection<RollingContactSection> {
   double friction = 0.0, penalty_normal = 0.0, penalty_tangential = 0.0;
   bool rolling = true;
   NodeList nodes;
 
-  static std::vector<KeySpec> keys();
-  static RollingContactSection parse(const KeyReader& s);
+  static SectionKeys<RollingContactSection> declare();
 };
 
-struct GravityVectorSection : KeyedSection {
+struct GravityVectorSection : DeclaredSection<GravityVectorSection> {
   Eigen::Vector3d acceleration;
   double ramp_time = 0.0;  // s; 0: constant
 
-  static std::vector<KeySpec> keys();
-  static GravityVectorSection parse(const KeyReader& s);
+  static SectionKeys<GravityVectorSection> declare();
 };
 
 enum class ClampedEnds { none, first, last, both };
@@ -66,21 +64,20 @@ inline constexpr ChoiceTable<ImposedNode, 3> kImposedNodes{{
 // The displacement component, as its index x, y, z = 0, 1, 2.
 inline constexpr ChoiceTable<int, 3> kImposedDofs{{{0, "x", ""}, {1, "y", ""}, {2, "z", ""}}};
 
-struct SupportSection : KeyedSection {
+struct SupportSection : DeclaredSection<SupportSection> {
   ClampedEnds clamp = ClampedEnds::none;
 
-  static std::vector<KeySpec> keys();
-  static SupportSection parse(const KeyReader& s);
+  static SectionKeys<SupportSection> declare();
 };
 
 // times and values are read (and checked) only when a node is imposed.
-struct ImposedSection : KeyedSection {
+struct ImposedSection : DeclaredSection<ImposedSection> {
   ImposedNode node = ImposedNode::none;
   int dof = 1;  // x, y, z as 0, 1, 2
   std::vector<double> times, values;
 
-  static std::vector<KeySpec> keys();
-  static ImposedSection parse(const KeyReader& s);
+  static SectionKeys<ImposedSection> declare();
+  void finish();  // checks across its keys, once they are read
 };
 
 }  // namespace rollspec::study

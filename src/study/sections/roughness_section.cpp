@@ -4,21 +4,15 @@
 
 namespace rollspec::study {
 
-namespace {
-const SectionKeys<RoughnessSection>& declared() {
+SectionKeys<RoughnessSection> RoughnessSection::declare() {
   using T = RoughnessSection;
-  static const auto k =
-      SectionKeys<T>("roughness")
-          .real("spacing", &T::spacing, "m",
-                "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per "
-                "integration step, v / (sample_rate x substeps)",
-                "0", at_least(0.0))
-          .choice("band_limit", &T::band_limit, "roughness the ball sees", BandLimit::output, kBandLimits);
-  return k;
+  return SectionKeys<T>("roughness")
+      .real("spacing", &T::spacing, "m",
+            "sample spacing of the beam's line texture (harmonics above pi/dx dropped); 0: one sample per "
+            "integration step, v / (sample_rate x substeps)",
+            "0", at_least(0.0))
+      .choice("band_limit", &T::band_limit, "roughness the ball sees", BandLimit::output, kBandLimits);
 }
-}  // namespace
-
-std::vector<KeySpec> RoughnessSection::keys() { return declared().keys(); }
-RoughnessSection RoughnessSection::parse(const KeyReader& s) { return declared().read(s); }
+template struct DeclaredSection<RoughnessSection>;
 
 }  // namespace rollspec::study

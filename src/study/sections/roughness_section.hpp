@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -20,12 +20,11 @@ inline constexpr ChoiceTable<BandLimit, 2> kBandLimits{{
     {BandLimit::step, "step", "up to the sampling's pi/dx: the response above sample_rate / 2 aliases into the bands"},
 }};
 
-struct RoughnessSection : KeyedSection {
+struct RoughnessSection : DeclaredSection<RoughnessSection> {
   double spacing = 0.0;  // m; 0: derived from the step
   BandLimit band_limit = BandLimit::output;
 
-  static std::vector<KeySpec> keys();
-  static RoughnessSection parse(const KeyReader& s);
+  static SectionKeys<RoughnessSection> declare();
 };
 
 }  // namespace rollspec::study

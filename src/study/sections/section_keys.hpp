@@ -3,8 +3,8 @@
 // is read into, unit, range, default and documentation, and for a choice the ChoiceTable. The section's
 // keys() (its KeySpecs: validation, `rollspec keys`, the templates and the reference docs) and its parse
 // (reading every key into its field, recording each key's text and origin in the KeyedSection) both come
-// from this one list. A field is a member pointer (&BallSection::radius) or, for a nested member, a
-// function returning it. Used by the sections' .cpp files only.
+// from this one list (DeclaredSection, the sections' base, defined at the end). A field is a member pointer
+// (&BallSection::radius) or, for a nested member, a function returning it. Used by the sections' .cpp files only.
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -18,6 +18,7 @@
 #include "src/study/key_reader.hpp"
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/declared_section.hpp"
 #include "src/study/sections/keyed_section.hpp"
 
 namespace rollspec::study {
@@ -69,6 +70,12 @@ class SectionKeys {
     return bind(text_key(section_, key, std::move(doc), std::move(fallback)), field,
                 [](const KeyReader& s, const std::string& k) { return s.text(k); });
   }
+  // A file key: the field holds the path usable from the current directory (its text, the path as written).
+  template <class F>
+  SectionKeys& path(const char* key, F field, std::string doc, Default fallback) {
+    return bind(path_key(section_, key, std::move(doc), std::move(fallback)), field,
+                [](const KeyReader& s, const std::string& k) { return s.path(k); });
+  }
   // A text key read by `read(KeyReader, full key)` (a list of numbers, an x,y,z vector, ...).
   template <class F, class Read>
   SectionKeys& text(const char* key, F field, std::string doc, Default fallback, Read reader) {
@@ -82,6 +89,12 @@ class SectionKeys {
   // The last key is read only when `pred(section so far)` holds (keys are read in declaration order).
   SectionKeys& when(std::function<bool(const S&)> pred) {
     bindings_.back().when = std::move(pred);
+    return *this;
+  }
+
+  // The last (integer) key must be a power of two.
+  SectionKeys& power_of_two() {
+    bindings_.back().spec.power_of_two = true;
     return *this;
   }
 
@@ -179,5 +192,21 @@ class SectionKeys {
   std::vector<Binding> bindings_;
   bool optional_section_ = false;
 };
+
+template <class S>
+const SectionKeys<S>& DeclaredSection<S>::declared() {
+  static const SectionKeys<S> k = S::declare();
+  return k;
+}
+template <class S>
+std::vector<KeySpec> DeclaredSection<S>::keys() {
+  return declared().keys();
+}
+template <class S>
+S DeclaredSection<S>::parse(const KeyReader& s) {
+  S out = declared().read(s);
+  out.finish();
+  return out;
+}
 
 }  // namespace rollspec::study

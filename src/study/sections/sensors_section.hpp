@@ -4,18 +4,17 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
 class KeyReader;
 
-struct SensorsSection : KeyedSection {
+struct SensorsSection : DeclaredSection<SensorsSection> {
   std::vector<double> positions;  // m, as listed
   bool average = true;
 
-  static std::vector<KeySpec> keys();
-  static SensorsSection parse(const KeyReader& s);
+  static SectionKeys<SensorsSection> declare();
 };
 
 }  // namespace rollspec::study

@@ -6,7 +6,7 @@
 
 #include "kernels/beam/exact_step_integrator.hpp"
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -23,14 +23,13 @@ inline constexpr ChoiceTable<SignalIntegrator, 2> kSignalIntegrators{{
     {SignalIntegrator::dopri5, "dopri5", "reference"},
 }};
 
-struct SignalSection : KeyedSection {
+struct SignalSection : DeclaredSection<SignalSection> {
   double sample_rate = 0.0, rtol = 0.0;
   long long substeps = 0;
   beam::ForceHold hold = beam::ForceHold::quadratic;
   SignalIntegrator integrator = SignalIntegrator::exact;
 
-  static std::vector<KeySpec> keys();
-  static SignalSection parse(const KeyReader& s);
+  static SectionKeys<SignalSection> declare();
 };
 
 }  // namespace rollspec::study

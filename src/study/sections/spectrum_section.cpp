@@ -9,27 +9,21 @@
 
 namespace rollspec::study {
 
-namespace {
-const SectionKeys<SpectrumSection>& declared() {
+SectionKeys<SpectrumSection> SpectrumSection::declare() {
   using T = SpectrumSection;
-  static const auto k =
-      SectionKeys<T>("spectrum")
-          .integer("segment", &T::segment, "Welch segment length in samples", "4096", 16, 1 << 24)
-          .real("overlap", &T::overlap, "-", "Welch segment overlap as a fraction of the segment", "0.5",
-                within(0.0, 0.95))
-          .choice("window", &T::window, "Welch data window", spectral::Window::hann, kWelchWindows)
-          .real("band_min", &T::band_min, "Hz", "lowest third-octave band edge reported", "10", {0.0, 1e9, false})
-          .real("band_max", &T::band_max, "Hz", "highest third-octave band edge reported (capped at Nyquist)", "1e9",
-                {0.0, 1e9, false})
-          .real("confidence", &T::confidence, "-", "confidence level of the chi-square interval", "0.95",
-                within(0.5, 0.999))
-          .real("skip_start", &T::skip_start, "s", "", "0", at_least(0.0))
-          .scene_declared();
-  return k;
+  return SectionKeys<T>("spectrum")
+      .integer("segment", &T::segment, "Welch segment length in samples", "4096", 16, 1 << 24)
+      .real("overlap", &T::overlap, "-", "Welch segment overlap as a fraction of the segment", "0.5", within(0.0, 0.95))
+      .choice("window", &T::window, "Welch data window", spectral::Window::hann, kWelchWindows)
+      .real("band_min", &T::band_min, "Hz", "lowest third-octave band edge reported", "10", {0.0, 1e9, false})
+      .real("band_max", &T::band_max, "Hz", "highest third-octave band edge reported (capped at Nyquist)", "1e9",
+            {0.0, 1e9, false})
+      .real("confidence", &T::confidence, "-", "confidence level of the chi-square interval", "0.95",
+            within(0.5, 0.999))
+      .real("skip_start", &T::skip_start, "s", "", "0", at_least(0.0))
+      .scene_declared();
 }
-}  // namespace
-
-std::vector<KeySpec> SpectrumSection::keys() { return declared().keys(); }
+template struct DeclaredSection<SpectrumSection>;
 
 KeySpec SpectrumSection::skip_start_key(const std::string& doc, const std::string& fallback) {
   KeySpec k = declared().keys_of(&SpectrumSection::skip_start)[0];
@@ -37,8 +31,6 @@ KeySpec SpectrumSection::skip_start_key(const std::string& doc, const std::strin
   k.default_value = fallback;
   return k;
 }
-
-SpectrumSection SpectrumSection::parse(const KeyReader& s) { return declared().read(s); }
 
 void SpectrumSection::check_band_range(double sample_rate, std::size_t segment_samples) const {
   const double df = sample_rate / static_cast<double>(segment_samples), nyquist = sample_rate / 2.0;

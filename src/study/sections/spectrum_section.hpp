@@ -8,7 +8,7 @@
 
 #include "kernels/spectral/welch.hpp"
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -19,15 +19,14 @@ inline constexpr ChoiceTable<spectral::Window, 2> kWelchWindows{{
     {spectral::Window::rectangular, "rectangular", ""},
 }};
 
-struct SpectrumSection : KeyedSection {
+struct SpectrumSection : DeclaredSection<SpectrumSection> {
   long long segment = 0;
   double overlap = 0.0, band_min = 0.0, band_max = 0.0, confidence = 0.0, skip_start = 0.0;
   spectral::Window window = spectral::Window::hann;
 
-  static std::vector<KeySpec> keys();  // the shared keys (not skip_start: its doc is the scene's)
   // skip_start with the doc and default of a scene that has it.
   static KeySpec skip_start_key(const std::string& doc, const std::string& fallback);
-  static SpectrumSection parse(const KeyReader& s);
+  static SectionKeys<SpectrumSection> declare();  // keys(): not skip_start (its doc is the scene's)
 
   // Refuses, before any work, a band_min / band_max range that holds no whole third-octave band
   // between the frequency step and the Nyquist frequency of the scene's sample rate.

@@ -4,14 +4,13 @@
 // the stiffness table take their solver options from here, one parse of hardness, tolerance and
 // max_iterations. The keys' canonical texts are kept for the cached tables' input texts (their hashes).
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/geometry.hpp"
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -41,7 +40,9 @@ inline constexpr ChoiceTable<TableError, 3> kTableErrors{{
      "blocked_force = solver; over the Welch segments of F0 along its strip)"},
 }};
 
-struct StiffnessSection {
+struct StiffnessSection : DeclaredSection<StiffnessSection> {
+  std::string table, table_dir;  // as written: "auto" or a path; the cache directory
+  StiffnessSurface surface = StiffnessSurface::rough;
   bool rough = true;  // surface = rough (else a smooth flat)
   contact::BallShape shape = contact::BallShape::Sphere;
   double ball_rms = 0.0, approach_max = 0.0;
@@ -49,25 +50,20 @@ struct StiffnessSection {
   std::uint64_t table_seed = 1;    // every table's surfaces and strips; never the study seed
   double table_shift = 0.0;        // standard errors of the table mean added to the law (not in its hash)
   long long table_leave_out = -1;  // surface left out of the stiffness table's mean (-1: none; in its hash when set)
-  bool table_jackknife = false;    // table_error = jackknife: the intervals include the table's own error (D-30)
-  bool table_error_auto = false;   // table_error = auto (the default): jackknife where the study has one random table
-  contact::SolverOptions solver;   // hardness (0: none, so infinite), tolerance, max_iterations
-  KeyOrigin ball_rms_origin, approach_max_origin, table_shift_origin, table_leave_out_origin, table_error_origin;
-  KeyOrigin table_origin, table_dir_origin;  // where a table may not be written
+  TableError table_error = TableError::automatic;
+  bool table_jackknife = false;   // table_error = jackknife: the intervals include the table's own error (D-30)
+  bool table_error_auto = false;  // table_error = auto (the default): jackknife where the study has one random table
+  contact::SolverOptions solver;  // hardness (0: none, so infinite), tolerance, max_iterations
 
-  static std::vector<KeySpec> keys();
-  static StiffnessSection parse(const KeyReader& s);
-  static std::string table_error_setting(TableError v);  // "stiffness.table_error=<spelling>", a --set text
-  // The canonical value text of [stiffness] `key` (as the resolved study writes it).
-  const std::string& text(const std::string& key) const;
+  static SectionKeys<StiffnessSection> declare();
+  void finish();                                              // rough, the solver's hardness, the table error's flags
+  static std::string table_error_setting(TableError v);       // "stiffness.table_error=<spelling>", a --set text
+  static std::string table_setting(const std::string& path);  // "stiffness.table=<path>", a --set text
   // The section of leave-one-out sub-table `i` (D-30): table_leave_out = i, its own cached file
   // (table = auto) and no jackknife of its own, as `--set` of those three keys would give.
   StiffnessSection leaving_out(long long i) const;
   // Those three keys as `--set` texts, for a study that runs sub-table `i`.
   static std::vector<std::string> leave_out_sets(long long i);
-
- private:
-  std::map<std::string, std::string> texts_;
 };
 
 }  // namespace rollspec::study

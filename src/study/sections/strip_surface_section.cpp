@@ -17,8 +17,9 @@ StripSurfaceSection StripSurfaceSection::of(const SurfaceSection& surface, const
   t.ny_origin = surface.origin(surface.ny);
   t.spacing_origin = surface.origin(surface.spacing);
   t.surface_texts_ = surface.texts;
-  for (const auto& [key, value] : texture.texts)  // the files' contents enter through the fingerprint
-    if (key != "table" && key != "profiles") t.texture_texts.emplace_back(key, value);
+  for (const auto& v : texture.key_values())  // the files' contents enter through the fingerprint
+    if (!texture.is_of(v, texture.table_path) && !texture.is_of(v, texture.profile_paths))
+      t.texture_texts.emplace_back(v.key, v.text);
   return t;
 }
 

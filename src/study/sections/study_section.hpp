@@ -1,23 +1,23 @@
 #pragma once
-// [study] (every scene): the scene, the ensemble's size and seed, read once. The keys themselves are the common table
-// (scenes/scene_registry); the seed's canonical text is kept for the cached tables' input texts (their hashes).
+// [study] (every scene): the scene, the ensemble's size and seed, read once. Its keys open the common table of
+// every scene (scenes/scene_registry), the scene's allowed values the registry's names (scene_key).
 #include <cstdint>
 #include <string>
+#include <vector>
 
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
-class KeyReader;
-
-struct StudySection {
+struct StudySection : DeclaredSection<StudySection> {
   std::string scene, description;
   long long realisations = 0;
   std::uint64_t seed = 0;
-  std::string seed_text;  // as the resolved study writes it
-  KeyOrigin scene_origin;
 
-  static StudySection parse(const KeyReader& s);
+  static SectionKeys<StudySection> declare();
+  // keys() with `scene` a choice of `scenes` (the registry's names, which this layer does not know).
+  static std::vector<KeySpec> keys_with_scenes(const std::vector<std::string>& scenes);
+  static std::string seed_setting(std::uint64_t seed);  // "study.seed=<seed>", a --set text
 };
 
 }  // namespace rollspec::study

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "src/study/key_spec.hpp"
-#include "src/study/sections/keyed_section.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -19,7 +19,7 @@ inline constexpr ChoiceTable<SurfaceMethod, 2> kSurfaceMethods{{
     {SurfaceMethod::seed, "seed", "seed 001 Eq. 9-10: sums of line textures"},
 }};
 
-struct SurfaceSection : KeyedSection {
+struct SurfaceSection : DeclaredSection<SurfaceSection> {
   bool present = false;  // the scene has [surface]
   SurfaceMethod method = SurfaceMethod::spectral;
   long long nx = 128, ny = 128, count = 0;
@@ -32,9 +32,9 @@ struct SurfaceSection : KeyedSection {
   // tables' input texts (their hashes).
   std::map<std::string, std::string> texts;
 
-  static std::vector<KeySpec> keys();
   static std::vector<KeySpec> count_keys();  // [surface] count (texture scene)
-  static SurfaceSection parse(const KeyReader& s);
+  static SectionKeys<SurfaceSection> declare();
+  void finish();  // present, the set flags and texts
 };
 
 }  // namespace rollspec::study

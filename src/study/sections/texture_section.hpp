@@ -3,7 +3,6 @@
 // ISO 3095), its amplitudes and the extension beyond a table's band, read once. Scenes without
 // [texture] parse to present = false.
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "kernels/spectral/harmonic_synthesis.hpp"
@@ -11,7 +10,7 @@
 #include "kernels/texture/tabulated_psd.hpp"
 #include "src/study/key_spec.hpp"
 #include "src/study/sections/amplitudes_choice.hpp"
-#include "src/study/sections/key_origin.hpp"
+#include "src/study/sections/declared_section.hpp"
 
 namespace rollspec::study {
 
@@ -48,12 +47,11 @@ inline constexpr ChoiceTable<char, 8> kRoadClasses{{
     {'H', "H", ""},
 }};
 
-struct TextureSection {
+struct TextureSection : DeclaredSection<TextureSection> {
   bool present = false;  // the scene has [texture]
   TextureSource source = TextureSource::self_affine;
-  std::string table;       // as written ("none": not set)
+  std::string table_path;  // usable from the current directory (its text: the table as written)
   bool has_table = false;  // table is a file, not "none"
-  std::string table_path;  // usable from the current directory
   texture::Extension table_extension = texture::Extension::error;
   std::vector<std::string> profile_paths;  // [texture] profiles, relative to the study file
   bool median_filter = false;
@@ -61,18 +59,9 @@ struct TextureSection {
   texture::RmsTarget rms_kind = texture::RmsTarget::height;
   char road_class = 'A';
   spectral::Amplitudes amplitudes = spectral::Amplitudes::rayleigh;
-  KeyOrigin source_origin, table_extension_origin, profiles_origin, long_wavelength_origin, short_wavelength_origin,
-      rms_origin;
-  // The keys() in table order with their canonical value texts, for the cached tables' input texts.
-  std::vector<std::pair<std::string, std::string>> texts;
-  // The keys the study file or a --set gave a value (not their documented default), with where:
-  // source = profiles refuses those that cannot act on measured profiles and cuts at short_wavelength
-  // only when it is set.
-  std::vector<std::pair<std::string, KeyOrigin>> set_keys;
-  bool is_set(const std::string& key) const;
 
-  static std::vector<KeySpec> keys();
-  static TextureSection parse(const KeyReader& s);
+  static SectionKeys<TextureSection> declare();
+  void finish();  // present, has_table
 };
 
 }  // namespace rollspec::study
