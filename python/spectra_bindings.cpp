@@ -10,7 +10,7 @@
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "python/bindings.hpp"
-#include "src/cli/psd_options.hpp"
+#include "src/io/psd_options.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/signal_file.hpp"
 #include "src/io/psd_result.hpp"
@@ -30,10 +30,10 @@ struct Estimate {
 // `rollspec psd`'s options, checked by the command's own rules (cli/psd_options.hpp).
 spectral::WelchConfig welch_config(double fs, long long segment, double overlap, const std::string& window,
                                    const std::string& detrend) {
-  cli::SignalOptions signal;
+  io::SignalOptions signal;
   signal.fs = fs;
-  const double rate = cli::signal_request(signal, cli::OptionSpelling::python).fs;
-  spectral::WelchConfig c = cli::welch_options({segment, overlap, window, detrend}, cli::OptionSpelling::python);
+  const double rate = io::signal_request(signal, io::OptionSpelling::python).fs;
+  spectral::WelchConfig c = io::welch_options({segment, overlap, window, detrend}, io::OptionSpelling::python);
   c.sample_rate = rate;
   return c;
 }
@@ -177,14 +177,14 @@ py::dict read_measurement(const py::object& path, const py::object& column, cons
   const auto file = py::module_::import("os").attr("fsdecode")(path).cast<std::string>();
   if (file.find('\0') != std::string::npos)  // the C library would open the name cut at it: another file
     throw py::value_error("path: a name with an embedded null byte; allowed: a file name");
-  cli::SignalOptions o;
+  io::SignalOptions o;
   o.fs = optional_arg<double>(fs, "fs", "a sample rate (Hz)");
   o.columns = column_names(column);
   o.unit = optional_arg<std::string>(unit, "unit", "a unit, or one per channel, comma-separated").value_or("");
   o.scale = optional_arg<double>(scale, "scale", "a number");
   o.time_column = optional_arg<std::string>(time_column, "time_column", "a column name, or 'none'");
   o.skip_rows = optional_arg<long long>(skip_rows, "skip_rows", "a whole number of lines");
-  const io::SignalRequest request = cli::signal_request(o, cli::OptionSpelling::python);
+  const io::SignalRequest request = io::signal_request(o, io::OptionSpelling::python);
   io::SignalTable t;
   std::vector<double> samples;
   std::size_t length = 0;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   double rate1 = 0.0;
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
-    auto scene = cli::make_scene<scenes::EnsembleScene>(s);
+    auto scene = run::make_scene<scenes::EnsembleScene>(s);
     scene->prepare(true, false);
     ensemble::EnsembleConfig cfg;
     cfg.realisations = static_cast<std::uint64_t>(s.integer("study.realisations"));

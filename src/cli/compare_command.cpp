@@ -13,7 +13,7 @@
 
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "src/cli/commands.hpp"
-#include "src/cli/measured_psd.hpp"
+#include "src/compare/measured_psd.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/compare/band_verdict.hpp"
 #include "src/compare/verdict_references.hpp"
@@ -28,6 +28,9 @@
 #include "src/io/sweep_point.hpp"
 
 namespace rollspec::cli {
+
+using compare::Measurement;
+using compare::read_measurement;
 
 namespace {
 

@@ -14,17 +14,27 @@
 
 #include "kernels/spectral/fit_search.hpp"
 #include "src/cli/commands.hpp"
-#include "src/cli/fit_goodness.hpp"
-#include "src/cli/fit_journal.hpp"
-#include "src/cli/fit_model.hpp"
 #include "src/cli/fit_report.hpp"
-#include "src/cli/fit_surface.hpp"
+#include "src/fit/fit_journal.hpp"
+#include "src/fit/fit_model.hpp"
+#include "src/fit/fit_search.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/temp_files.hpp"
 
 namespace rollspec::cli {
+
+using compare::read_measurement;
+using fit::check_fit_keys;
+using fit::fit_journal_key;
+using fit::fit_search;
+using fit::FitInputs;
+using fit::FitJournal;
+using fit::FitModel;
+using fit::FitPoint;
+using fit::parse_at;
+using fit::parse_vary;
 
 namespace {
 
@@ -112,77 +122,6 @@ void say_run_warnings(const FitModel& model, const FitInputs& in) {
     for (const std::string& line : model.last_warnings(i))
       std::fprintf(stderr, "  %s%s\n", in.points[i].at.empty() ? "" : ("(at " + in.points[i].at + ") ").c_str(),
                    line.c_str());
-}
-
-// Where common random numbers hold: Nelder-Mead on ln L of the study's seed, the profile-likelihood
-// intervals and the Hessian's correlation (kernels/spectral D-27c-e).
-void crn_search(FitModel& model, const FitInputs& in, FitReport& report, std::vector<double>& best_u,
-                std::vector<std::vector<double>>& jacobians) {
-  const std::size_t n = in.vary.size();
-  const spectral::BoxObjective f = [&](const std::vector<double>& u) { return model.negative_log_likelihood(u); };
-  const spectral::BoxMinimum best =
-      spectral::box_minimum(f, std::vector<double>(n, 0.5), 0.25, 1e-4, 150 * static_cast<int>(n));
-  if (!std::isfinite(best.value))
-    throw data_error(in.points[0].path + ": the study has no power in a compared band anywhere the search went");
-  int extra = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    const auto [lo, hi] = profile_interval(f, best.x, best.value, j, &extra);
-    const VaryRange& v = in.vary[j];
-    if (lo == 0.0 && hi == 1.0)
-      throw data_error("--vary " + v.key + ": the measurement cannot identify " + v.key +
-                       ": its profile likelihood stays within " + number_text(kProfileRise) +
-                       " of the maximum over the whole range " + number_text(v.lo) + " .. " + number_text(v.hi) +
-                       " (a flat likelihood); fix it in the study, or fit it from bands where it matters");
-    report.parameters.push_back({v.key, v.value(best.x[j]), v.value(lo), v.value(hi), lo == 0.0, hi == 1.0});
-  }
-  report.correlation = spectral::inverse_correlation(spectral::box_hessian(f, best.x, 0.02, &extra), n);
-  report.log_likelihood = -best.value;
-  best_u = best.x;
-  jacobians = crn_jacobians(model, best.x, kCoherenceStep);
-}
-
-// Where they do not: the response surface of replicates with seeds of their own (D-27i).
-void smoothed_search(FitModel& model, const FitInputs& in, FitReport& report, std::vector<double>& best_u,
-                     std::vector<std::vector<double>>& jacobians) {
-  const SurfaceFit s = surface_search(model, in);
-  for (std::size_t j = 0; j < in.vary.size(); ++j) {
-    const VaryRange& v = in.vary[j];
-    const bool interval = s.refused.empty();
-    report.parameters.push_back({v.key, v.value(s.best[j]), interval ? v.value(s.lower[j]) : NAN,
-                                 interval ? v.value(s.upper[j]) : NAN, interval && s.lower[j] == 0.0,
-                                 interval && s.upper[j] == 1.0});
-  }
-  if (!s.refused.empty())
-    report.no_interval = "the estimate is the smoothed likelihood's maximum, without an interval: " + s.refused;
-  report.correlation = s.correlation;
-  report.log_likelihood = -s.value;
-  report.objective.surface_runs = s.runs, report.objective.rounds = s.rounds;
-  report.objective.lack_of_fit_p = s.lack_of_fit_p;
-  best_u = s.best;
-  jacobians = s.jacobians;
-}
-
-// The start's probe decides how ln L is read; then the search, the intervals and the tests at the
-// best fit (kernels/spectral D-27).
-FitReport fit_search(FitModel& model, const FitInputs& in) {
-  FitReport report;
-  const Coherence c = model.probe(std::vector<double>(in.vary.size(), 0.5), kCoherenceStep);
-  report.objective.step = c.step, report.objective.incoherent_share = c.incoherent_share;
-  report.objective.common_random_numbers = c.holds;
-  std::vector<double> best;
-  std::vector<std::vector<double>> jacobians;
-  if (c.holds)
-    crn_search(model, in, report, best, jacobians);
-  else
-    smoothed_search(model, in, report, best, jacobians);
-  report.points = point_tests(model, in, best, jacobians);
-  say_run_warnings(model, in);
-  combine_point_tests(report);
-  report.evaluations = model.runs();
-  report.reused = model.reused();
-  report.bands = model.bands();
-  report.realisations = model.realisations();
-  return report;
 }
 
 }  // namespace
@@ -283,6 +222,7 @@ int fit_command(const Args& args) {
                                               : "the finished evaluations are in " + journal_path +
                                                     ": the same command with the same --journal goes on from them"));
   }
+  say_run_warnings(model, in);
   std::fputs((format == "json" ? fit_json(report) : fit_text(report)).c_str(), stdout);
   return 0;
 }

@@ -4,11 +4,13 @@
 #include "kernels/beam/modal_beam.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/sections/study_section.hpp"
 
 namespace rollspec::cli {
+
+using run::resolve_study;
 
 int modes_command(const Args& args) {
   const std::string usage =

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "src/run/study_args.hpp"
+
 namespace rollspec::cli {
 
 namespace po = boost::program_options;
@@ -15,11 +17,7 @@ bool parse_options(const std::vector<std::string>& args, const std::string& usag
                    const po::positional_options_description& positional, po::variables_map& vm);
 
 // The study-file positional argument and repeatable --set overrides every study command takes.
-struct StudyArgs {
-  std::string file;
-  std::vector<std::string> sets;
-  std::string text;  // non-empty: the study's text, read instead of the file (a sweep point: no [sweep])
-};
+using run::StudyArgs;
 // required = false: the command checks for a missing study itself (run --resume reads the checkpoint's).
 void add_study_options(po::options_description& options, po::positional_options_description& positional,
                        StudyArgs& study, bool required = true);

@@ -9,8 +9,10 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
 #include "src/cli/plan_tables.hpp"
-#include "src/cli/run_phases.hpp"
-#include "src/cli/sweep_run.hpp"
+#include "src/run/run_phases.hpp"
+#include "src/cli/sweep_options.hpp"
+#include "src/cli/sweep_plan.hpp"
+#include "src/run/sweep_run.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/available_memory.hpp"
 #include "src/scenes/memory_estimate.hpp"
@@ -23,6 +25,11 @@
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
+
+using run::kDefaultMaxSweepPoints;
+using run::load_sweep;
+using run::make_scene;
+using run::resolve_study;
 
 int plan_command(const Args& args) {
   const std::string usage =

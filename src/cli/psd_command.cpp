@@ -15,7 +15,7 @@
 #include "kernels/spectral/welch.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/parse_options.hpp"
-#include "src/cli/psd_options.hpp"
+#include "src/io/psd_options.hpp"
 #include "src/error.hpp"
 #include "src/io/content_hash.hpp"
 #include "src/io/number_text.hpp"
@@ -83,8 +83,8 @@ int psd_command(const Args& args) {
   const std::string usage = kPsdUsage;
   po::options_description opts("options");
   std::string input, out;
-  WelchOptions welch;
-  SignalOptions signal;
+  io::WelchOptions welch;
+  io::SignalOptions signal;
   opts.add_options()("signal", po::value(&input)->required(), "input signal (CSV/text, WAV/FLAC/..., .mat)")(
       "fs", po::value<double>(), "sample rate (Hz); default: from the file")(
       "column", po::value(&signal.columns)->composing(),
@@ -112,8 +112,8 @@ int psd_command(const Args& args) {
   if (vm.count("scale")) signal.scale = vm["scale"].as<double>();
   if (vm.count("time-column")) signal.time_column = vm["time-column"].as<std::string>();
   if (vm.count("skip-rows")) signal.skip_rows = vm["skip-rows"].as<long long>();
-  const io::SignalRequest request = signal_request(signal, OptionSpelling::command);
-  spectral::WelchConfig cfg = welch_options(welch, OptionSpelling::command);
+  const io::SignalRequest request = io::signal_request(signal, io::OptionSpelling::command);
+  spectral::WelchConfig cfg = io::welch_options(welch, io::OptionSpelling::command);
 
   if (!out.empty()) {  // an output that is the input is refused before the input is read
     std::error_code ec;

@@ -12,13 +12,16 @@
 #include "src/error.hpp"
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
+
+using run::check_resources;
+using run::resolve_study;
 
 int stiffness_command(const Args& args) {
   const std::string usage =

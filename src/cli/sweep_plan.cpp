@@ -7,11 +7,17 @@
 #include <iostream>
 
 #include "src/cli/plan_tables.hpp"
-#include "src/cli/sweep_run.hpp"
+#include "src/cli/sweep_plan.hpp"
+#include "src/run/sweep_run.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/study/sections/study_section.hpp"
 
 namespace rollspec::cli {
+
+using run::check_resources;
+using run::make_scene;
+using run::resolve_study;
+using run::SweepStudy;
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include "src/io/references.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/scenes/memory_estimate.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/scenes/scene_references.hpp"
 #include "src/study/sections/lines_section.hpp"
@@ -27,6 +27,8 @@
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::cli {
+
+using run::resolve_study;
 
 namespace fs = std::filesystem;
 

@@ -74,6 +74,10 @@ Data read_data(hid_t file, const std::string& path) {
     d.vlen = true;
     Hdf5Handle mem(H5Tcopy(H5T_C_S1));
     H5Tset_size(mem.get(), H5T_VARIABLE);
+    // In the file's character set (rollspec writes UTF-8), as Hdf5Reader reads strings: with an ASCII
+    // memory type HDF5 1.10 read the first file and then refused the next ("no appropriate function for
+    // conversion path") in a process that had run a fit in-process, and the names looked changed.
+    H5Tset_cset(mem.get(), H5Tget_cset(type.get()));
     std::vector<char*> ptrs(n, nullptr);
     if (n && H5Dread(set.get(), mem.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) >= 0) {
       for (char* p : ptrs) d.strings.emplace_back(p ? p : "");

@@ -34,9 +34,9 @@ PENDING = {}
 # engine writes, the init template's [study] lines and the loader's own handling of study.scene. Not yet
 # reached through the sections' declarations; each count can only shrink.
 ELSEWHERE = {
-    "src/cli/fit_model.cpp": 1,
     "src/cli/study_template_keys.cpp": 4,
     "src/cli/texture_command.cpp": 2,
+    "src/fit/fit_model.cpp": 1,
     "src/scenes/ball_on_beam_dimensions.cpp": 38,
     "src/scenes/ball_on_beam_keys.cpp": 4,
     "src/scenes/dimension_relations.cpp": 48,

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "src/cli/commands.hpp"
-#include "src/cli/run_checkpoint.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_checkpoint.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/scenes/scene.hpp"
@@ -31,10 +31,10 @@ fs::path interrupted_run_with_override() {
   std::ofstream(dir / "s.ini") << kStudy;
   const std::vector<std::string> sets = {"oscillator.mass=3"};
   study::Study s = study::Study::load((dir / "s.ini").string(), sets, scenes::schema_for);
-  const cli::CheckpointSession session =
-      cli::open_checkpoint((dir / "r.h5.checkpoint").string(), s, sets, false, false, true);
+  const rollspec::run::CheckpointSession session =
+      rollspec::run::open_checkpoint((dir / "r.h5.checkpoint").string(), s, sets, false, false, true);
   // The first chunk of 4 of the 8 realisations, as the interrupted run left it.
-  const auto scene = cli::make_scene<scenes::EnsembleScene>(s);
+  const auto scene = rollspec::run::make_scene<scenes::EnsembleScene>(s);
   scene->prepare(true, false);
   ensemble::EnsembleConfig cfg;
   cfg.realisations = 4;
@@ -51,12 +51,12 @@ fs::path interrupted_run_with_override() {
 
 TEST_CASE("run --resume: the checkpoint's study is resolved first and the scene is made once") {
   const fs::path dir = interrupted_run_with_override();
-  cli::RunRequest q;
+  rollspec::run::RunRequest q;
   q.study.file = (dir / "s.ini").string();
   q.out = (dir / "r.h5").string();
   q.resume = q.quiet = true;
   const long before = scenes::Scene::made();
-  cli::ResolvedRun run = cli::resolve_run(q);
+  rollspec::run::ResolvedRun run = rollspec::run::resolve_run(q);
   CHECK(scenes::Scene::made() == before);                                   // resolving makes no scene
   CHECK(run.study.canonical_text().find("mass = 3") != std::string::npos);  // the checkpoint's study
   run.checkpoint = {};  // release the lock: run_command takes it again
@@ -92,12 +92,12 @@ TEST_CASE("a fit's evaluation (spectra only) writes the same spectra and bands a
          "[signal]\nsample_rate = 8192\n[sensors]\npositions = 0.13, 0.26\n"
          "[spectrum]\nsegment = 512\nband_min = 80\nband_max = 2000\n";
   auto run = [&](const std::string& out, bool spectra_only) {
-    cli::RunRequest q;
+    rollspec::run::RunRequest q;
     q.study.file = (dir / "rig.ini").string();
     q.out = (dir / out).string();
     q.quiet = true;
     q.spectra_only = spectra_only;
-    REQUIRE(cli::run_request(q) == 0);
+    REQUIRE(rollspec::run::run_request(q) == 0);
     return io::Hdf5Reader(q.out);
   };
   const io::Hdf5Reader full = run("full.h5", false), fit = run("fit.h5", true);

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/study/sections/sweep_section.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 // What a sweep is checked against before any work.
 struct SweepLimits {
@@ -32,9 +32,6 @@ struct SweepStudy {
   StudyArgs point(std::size_t i) const;    // the study of point i (args with the point's --set)
   std::string label(std::size_t i) const;  // "ball.speed=1, ball.radius=0.01"
 };
-
-// The repeatable --sweep section.key=v1,v2,... option of run and plan, and --max-points N.
-void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps, std::size_t& max_points);
 
 // nullopt: the study has no [sweep] and no --sweep was given (an ordinary run). The sweep is checked
 // as a whole now, before any work: its point count against `limits.max_points` first, then every
@@ -57,6 +54,5 @@ study::Study load_study_without_sweep(const std::string& file, const std::vector
 void check_sweep_points(const SweepStudy& sweep, bool force);
 
 int run_sweep(const SweepStudy& sweep, const RunRequest& request);
-int plan_sweep(const SweepStudy& sweep, bool probe);
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

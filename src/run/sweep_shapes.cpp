@@ -6,10 +6,10 @@
 // the first point runs, not when the sweep reaches it.
 #include <optional>
 
-#include "src/cli/sweep_run.hpp"
+#include "src/run/sweep_run.hpp"
 #include "src/error.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 void check_sweep_points(const SweepStudy& s, bool force) {
   std::optional<scenes::ResultShape> first;
@@ -38,4 +38,4 @@ void check_sweep_points(const SweepStudy& s, bool force) {
   }
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

@@ -1,8 +1,8 @@
-#include "src/cli/measured_psd.hpp"
+#include "src/compare/measured_psd.hpp"
 
 #include <iostream>
 
-namespace rollspec::cli {
+namespace rollspec::compare {
 
 Measurement read_measurement(const std::string& path, std::string& column, long long skip_rows,
                              const std::string& command) {
@@ -12,4 +12,4 @@ Measurement read_measurement(const std::string& path, std::string& column, long 
   return Measurement{std::move(m.frequency), std::move(m.psd), std::move(m.metadata)};
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::compare

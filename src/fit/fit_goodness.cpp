@@ -1,4 +1,4 @@
-#include "src/cli/fit_goodness.hpp"
+#include "src/fit/fit_goodness.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "kernels/spectral/band_test_table.hpp"
 #include "src/rng/philox_stream.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 namespace {
 
@@ -84,4 +84,4 @@ std::vector<std::vector<double>> crn_jacobians(FitModel& model, const std::vecto
   return jac;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

@@ -1,4 +1,4 @@
-#include "src/cli/fit_surface.hpp"
+#include "src/fit/fit_surface.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 namespace {
 
@@ -206,4 +206,4 @@ SurfaceFit surface_search(FitModel& model, const FitInputs& in) {
   return fit;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

@@ -1,4 +1,4 @@
-#include "src/cli/sweep_run.hpp"
+#include "src/run/sweep_run.hpp"
 
 #include <cstdio>
 #include <cstdint>
@@ -20,7 +20,7 @@
 #include "src/io/temp_files.hpp"
 #include "src/text_trim.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 namespace fs = std::filesystem;
 
@@ -262,13 +262,6 @@ study::Study load_study_without_sweep(const std::string& file, const std::vector
   return point_study(a);
 }
 
-void add_sweep_option(po::options_description& options, std::vector<std::string>& sweeps, std::size_t& max_points) {
-  options.add_options()("sweep", po::value(&sweeps)->composing(),
-                        "sweep a study key: --sweep section.key=v1,v2,... (repeatable; added to the study's [sweep])")(
-      "max-points", po::value(&max_points)->default_value(kDefaultMaxSweepPoints),
-      "the most points a sweep may have (each is one run and one file)");
-}
-
 std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<std::string>& sweeps,
                                      const SweepLimits& limits) {
   if (args.file.empty()) {
@@ -391,4 +384,4 @@ int run_sweep(const SweepStudy& s, const RunRequest& q) {
   return 0;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

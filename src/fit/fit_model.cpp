@@ -1,4 +1,4 @@
-#include "src/cli/fit_model.hpp"
+#include "src/fit/fit_model.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
-#include "src/cli/fit_journal.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/fit/fit_journal.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/io/number_text.hpp"
@@ -20,7 +20,10 @@
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/study/sections/study_section.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
+
+using run::run_request;
+using run::RunRequest;
 
 using io::number_text;
 
@@ -404,4 +407,4 @@ std::vector<io::BandLevels> FitModel::runs_at(const std::vector<double>& u) {
   return out;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

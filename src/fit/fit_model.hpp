@@ -9,20 +9,22 @@
 // and held for the whole fit; every later run leaves it out ([stiffness] table_error = none).
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "src/compare/combined_test.hpp"
-#include "src/cli/measured_psd.hpp"
+#include "src/compare/measured_psd.hpp"
 #include "src/io/band_levels.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 using compare::chosen_bands;
 using compare::ChosenBands;
 using compare::combined_test;
 using compare::CombinedTest;
+using compare::Measurement;
 
 // --vary section.key=lo:hi[:log]: the range searched, mapped onto u in [0, 1] (log: geometric).
 struct VaryRange {
@@ -54,7 +56,7 @@ struct FitInputs {
   std::vector<std::string> sets;  // --set passed on to every run
   std::vector<VaryRange> vary;
   std::vector<FitPoint> points;
-  double fmin = 0.0, fmax = 0.0;
+  double fmin = 0.0, fmax = std::numeric_limits<double>::infinity();  // the command's defaults: every band
 };
 
 // Refuses, before the first run, a study or --at point that does not load, and a --vary range outside
@@ -149,4 +151,4 @@ class FitModel {
   int runs_ = 0, reused_ = 0, warned_runs_ = 0;
 };
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

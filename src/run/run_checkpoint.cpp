@@ -1,4 +1,4 @@
-#include "src/cli/run_checkpoint.hpp"
+#include "src/run/run_checkpoint.hpp"
 
 #include <sys/stat.h>
 
@@ -8,7 +8,7 @@
 #include <iostream>
 #include <map>
 
-#include "src/cli/sweep_run.hpp"
+#include "src/run/sweep_run.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/error.hpp"
@@ -17,7 +17,7 @@
 #include "src/scenes/scene.hpp"
 #include "src/io/number_text.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 namespace {
 
@@ -161,4 +161,4 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
   return session;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

@@ -7,7 +7,7 @@
 
 #include "src/io/psd_csv.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::compare {
 
 struct Measurement {
   std::vector<double> frequency, psd;
@@ -21,4 +21,4 @@ struct Measurement {
 Measurement read_measurement(const std::string& path, std::string& column, long long skip_rows,
                              const std::string& command);
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::compare

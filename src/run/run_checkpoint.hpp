@@ -13,7 +13,7 @@
 #include "src/ensemble/checkpoint_guard.hpp"
 #include "src/study/study.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 struct CheckpointSession {
   std::unique_ptr<ensemble::CheckpointLock> lock;  // rank 0 only
@@ -31,4 +31,4 @@ CheckpointSession open_checkpoint(const std::string& directory, study::Study& st
 // (only keys the chunks do not depend on may differ; open_checkpoint checks).
 study::Study checkpoint_study(const std::string& directory, const std::vector<std::string>& sets);
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

@@ -1,4 +1,4 @@
-#include "src/cli/fit_journal.hpp"
+#include "src/fit/fit_journal.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -23,7 +23,7 @@
 #include "src/io/provenance.hpp"
 #include "src/io/temp_files.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 namespace {
 
@@ -234,4 +234,4 @@ void FitJournal::record(const std::vector<double>& key, const std::vector<double
     rewrite();
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

@@ -10,7 +10,7 @@
 #include "kernels/spectral/welch.hpp"
 #include "src/io/signal_file.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::io {
 
 // How a refusal names an option and its value: the command's "--segment 2: allowed: ...", the module's
 // "segment = 2: allowed: ..." (its keyword argument, '_' for '-').
@@ -42,4 +42,4 @@ struct SignalOptions {
 // --column by prepare_signal, which knows the file).
 io::SignalRequest signal_request(const SignalOptions& o, OptionSpelling spelling);
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::io

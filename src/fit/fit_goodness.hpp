@@ -4,10 +4,10 @@
 // keys, which have used up as many of the bands' dimensions as there are keys.
 #include <vector>
 
-#include "src/cli/fit_model.hpp"
-#include "src/cli/fit_report.hpp"
+#include "src/fit/fit_model.hpp"
+#include "src/fit/fit_answer.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 // Each point's tests at u, with J (bands x keys, row-major) its band logs' derivatives there.
 std::vector<FitPointReport> point_tests(FitModel& model, const FitInputs& in, const std::vector<double>& u,
@@ -17,4 +17,4 @@ std::vector<FitPointReport> point_tests(FitModel& model, const FitInputs& in, co
 // where common random numbers hold these are the model's own derivatives.
 std::vector<std::vector<double>> crn_jacobians(FitModel& model, const std::vector<double>& u, double step);
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

@@ -1,4 +1,4 @@
-#include "src/cli/run_table_jackknife.hpp"
+#include "src/run/run_table_jackknife.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/ensemble/ensemble_block.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/io/run_warning.hpp"
 #include "src/io/table_error.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 namespace {
 
@@ -135,4 +135,4 @@ void run_table_jackknife(const study::Study& s, const StudyReload& reload, scene
   scene.include_table_error(std::move(t));
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "kernels/spectral/fit_search.hpp"
-#include "src/cli/fit_model.hpp"
+#include "src/fit/fit_model.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 // chi2_1(0.95) / 2: the rise of -ln L that bounds a 95 % profile-likelihood interval.
 constexpr double kProfileRise = 3.841458820694124 / 2.0;
@@ -37,4 +37,4 @@ struct SurfaceFit {
 // model has no power in a band anywhere.
 SurfaceFit surface_search(FitModel& model, const FitInputs& in);
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

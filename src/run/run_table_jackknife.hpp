@@ -14,7 +14,7 @@
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 // The study as the run loaded it (its file or its checkpoint, its --set) with `extra` --set after
 // them: a sub-table's study must be loaded as the full table's was, or its table inputs differ.
@@ -24,4 +24,4 @@ using StudyReload = std::function<study::Study(const std::vector<std::string>& e
 void run_table_jackknife(const study::Study& s, const StudyReload& reload, scenes::EnsembleScene& scene,
                          const ensemble::EnsembleConfig& cfg, bool quiet, bool rebuild);
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

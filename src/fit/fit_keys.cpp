@@ -5,14 +5,18 @@
 #include <string>
 #include <vector>
 
-#include "src/cli/fit_model.hpp"
-#include "src/cli/run_phases.hpp"
+#include "src/fit/fit_model.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/error.hpp"
 #include "src/io/input_file.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/run_warning.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
+
+using run::make_scene;
+using run::resolve_study;
+using run::StudyArgs;
 
 namespace {
 
@@ -83,4 +87,4 @@ void check_fit_keys(const FitInputs& in) {
   }
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit

@@ -1,6 +1,6 @@
-#include "src/cli/run_phases.hpp"
-#include "src/cli/run_loss_effect.hpp"
-#include "src/cli/run_table_jackknife.hpp"
+#include "src/run/run_phases.hpp"
+#include "src/run/run_loss_effect.hpp"
+#include "src/run/run_table_jackknife.hpp"
 
 #include <omp.h>
 
@@ -26,7 +26,7 @@
 #include "src/texture/profile_source.hpp"
 #include "src/texture/texture_keys.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 namespace fs = std::filesystem;
 
@@ -208,4 +208,4 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& q) {
   return 0;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

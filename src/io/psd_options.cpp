@@ -1,5 +1,5 @@
 // `rollspec psd`'s option rules (psd_options.hpp), for the command and the Python module.
-#include "src/cli/psd_options.hpp"
+#include "src/io/psd_options.hpp"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 #include "src/io/number_text.hpp"
 #include "src/study/sections/spectrum_section.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::io {
 
 namespace {
 
@@ -96,4 +96,4 @@ io::SignalRequest signal_request(const SignalOptions& o, OptionSpelling spelling
   return r;
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::io

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "src/cli/parse_options.hpp"
-#include "src/cli/run_checkpoint.hpp"
+#include "src/run/study_args.hpp"
+#include "src/run/run_checkpoint.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 // A sweep of more points than this is refused unless --max-points allows it: each point is one run
 // of the study and one file, and each is checked before the first runs.
@@ -67,4 +67,4 @@ int run_ensemble_phase(ResolvedRun& run, const RunRequest& request);
 // `rollspec run` after its options are read: the phases above, or a sweep's points (--sweep or [sweep]).
 int run_request(const RunRequest& request, const std::vector<std::string>& sweeps = {});
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

@@ -1,11 +1,11 @@
-#include "src/cli/run_loss_effect.hpp"
+#include "src/run/run_loss_effect.hpp"
 
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <vector>
 
-#include "src/cli/run_phases.hpp"
+#include "src/run/run_phases.hpp"
 #include "src/ensemble/ensemble_block.hpp"
 #include "src/ensemble/mpi_context.hpp"
 #include "src/io/loss_effect.hpp"
@@ -14,7 +14,7 @@
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::run {
 
 void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, const ensemble::EnsembleConfig& cfg,
                      const ensemble::EnsembleSums& sums, bool quiet, bool rebuild) {
@@ -58,4 +58,4 @@ void run_loss_effect(const StudyReload& reload, scenes::EnsembleScene& scene, co
   scene.include_loss_effect(io::loss_effect(open, shut, products, open.confidence));
 }
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::run

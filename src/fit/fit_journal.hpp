@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "src/cli/fit_model.hpp"
+#include "src/fit/fit_model.hpp"
 
-namespace rollspec::cli {
+namespace rollspec::fit {
 
 // FNV-1a over the study's text, each measurement file's bytes, every --set/--at/--vary, the sensor,
 // the band range, M, the question (--same-surface) and the build (io::code_identity): a different input
@@ -42,4 +42,4 @@ class FitJournal {
   void append(const std::string& line);
 };
 
-}  // namespace rollspec::cli
+}  // namespace rollspec::fit
