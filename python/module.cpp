@@ -71,7 +71,8 @@ PYBIND11_MODULE(_core, m) {
       "rollspec's kernels and engine functions on numpy arrays: rollspec.spectra (Welch PSD and third-octave "
       "bands, as `rollspec psd` and the studies compute them, and the measurement files they read), "
       "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables) and "
-      "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them). "
+      "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them) and "
+      "rollspec.studies (a study file run in-process, as `rollspec run` runs it). "
       "SI units throughout.";
   m.attr("__version__") = ROLLSPEC_VERSION_TEXT;
   // The engine's errors the user can act on: bad values and data are ValueError, a missing or
@@ -94,4 +95,7 @@ PYBIND11_MODULE(_core, m) {
   rollspec::python::bind_contact(contact);
   py::module_ surfaces = m.def_submodule("surfaces", "Line textures and isotropic surfaces from a roughness PSD.");
   rollspec::python::bind_surfaces(surfaces);
+  py::module_ studies =
+      m.def_submodule("studies", "Studies run in-process, with the command's bits: rollspec.studies.run.");
+  rollspec::python::bind_studies(studies);
 }

@@ -27,7 +27,7 @@ def test_install_under_a_prefix_and_under_usr_local(tmp_path):
     install(tmp_path / "user")
     site = tmp_path / "user" / "lib" / VERSION / "site-packages"
     assert imports_from(site) == str(site / "rollspec" / "__init__.py")
-    for stub in ("__init__.pyi", "contact.pyi", "spectra.pyi", "surfaces.pyi", "py.typed"):
+    for stub in ("__init__.pyi", "contact.pyi", "spectra.pyi", "studies.pyi", "surfaces.pyi", "py.typed"):
         assert (site / "rollspec" / stub).is_file()
     # DESTDIR stages the default prefix: /usr/local/lib/python3.X/dist-packages, on Debian's sys.path.
     install("/usr/local", env=dict(os.environ, DESTDIR=str(tmp_path / "stage")))

@@ -39,7 +39,7 @@ def test_pip_installs_the_module_under_a_prefix(tmp_path):
     installed = glob.glob(str(prefix / "**" / "rollspec" / "__init__.py"), recursive=True)
     assert len(installed) == 1, installed
     package = os.path.dirname(installed[0])
-    for f in ("__init__.pyi", "contact.pyi", "spectra.pyi", "surfaces.pyi", "py.typed"):
+    for f in ("__init__.pyi", "contact.pyi", "spectra.pyi", "studies.pyi", "surfaces.pyi", "py.typed"):
         assert os.path.isfile(os.path.join(package, f)), f
     core = glob.glob(os.path.join(package, "_core*.so"))
     assert len(core) == 1

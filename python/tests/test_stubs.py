@@ -26,7 +26,7 @@ def module_signature(function):
     return parameters(ast.parse("def " + head + ": ...").body[0])
 
 
-@pytest.mark.parametrize("name", ["spectra", "contact", "surfaces"])
+@pytest.mark.parametrize("name", ["spectra", "contact", "surfaces", "studies"])
 def test_each_stub_matches_the_module(name):
     module = getattr(rollspec, name)
     with open(os.path.join(STUBS, name + ".pyi")) as f:

@@ -67,6 +67,8 @@ void install_stop_handlers() {
 }
 
 bool stop_requested() { return g_stop != 0; }
+void request_stop() { g_stop = 1; }
+void clear_stop() { g_stop = 0; }
 
 CriticalSection::CriticalSection() { ++g_critical; }
 CriticalSection::~CriticalSection() { --g_critical; }

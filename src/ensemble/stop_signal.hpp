@@ -15,6 +15,11 @@ namespace rollspec::ensemble {
 // Installs the handlers (first thing in main; idempotent).
 void install_stop_handlers();
 bool stop_requested();
+// For a caller that runs the engine in-process (the Python module) and notices an interrupt itself:
+// request_stop() stops the ensemble loop as a signal would (no watchdog, no exit: the run throws its
+// exit-130 error), clear_stop() before the next run.
+void request_stop();
+void clear_stop();
 
 class CriticalSection {
  public:
