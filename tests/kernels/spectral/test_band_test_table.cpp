@@ -2,9 +2,6 @@
 // F law where that law is exact, and its size on simulated measurements from other tables.
 #include <doctest/doctest.h>
 
-#include <Random123/philox.h>
-#include <Random123/u01fixedpt.h>
-
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdint>
@@ -12,22 +9,15 @@
 
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/band_test_table.hpp"
+#include "philox_draws.hpp"
 
 using namespace rollspec::spectral;
 
 namespace {
 
-// Philox uniforms keyed by (seed, draw): the counter-based stream the engine hands the kernel.
+// Philox uniforms keyed by (seed, draw), as the engine hands the kernel (philox_draws.hpp).
 DrawUniforms philox(std::uint64_t seed) {
-  return [seed](std::uint64_t draw, double* u, std::size_t n) {
-    r123::Philox4x64 gen;
-    const r123::Philox4x64::key_type key = {{seed, draw}};
-    for (std::size_t i = 0; i < n; i += 4) {
-      const r123::Philox4x64::ctr_type ctr = {{i / 4, 0, 0, 0}};
-      const auto r = gen(ctr, key);
-      for (std::size_t k = 0; k < 4 && i + k < n; ++k) u[i + k] = u01fixedpt_open_open_64_double(r[k]);
-    }
-  };
+  return [seed](std::uint64_t draw, double* u, std::size_t n) { testing::draw_uniforms(seed, draw, u, n); };
 }
 
 Eigen::MatrixXd banded(std::size_t p, double level, double rho) {

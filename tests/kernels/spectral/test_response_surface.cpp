@@ -13,6 +13,7 @@
 
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/band_test_table.hpp"
+#include "philox_draws.hpp"
 #include "kernels/spectral/response_surface.hpp"
 
 using namespace rollspec::spectral;
@@ -33,15 +34,7 @@ struct Normals {
 };
 
 DrawUniforms philox(std::uint64_t seed) {
-  return [seed](std::uint64_t draw, double* u, std::size_t n) {
-    r123::Philox4x64 gen;
-    const r123::Philox4x64::key_type key = {{seed, draw}};
-    for (std::size_t i = 0; i < n; i += 4) {
-      const r123::Philox4x64::ctr_type ctr = {{i / 4, 0, 0, 0}};
-      const auto r = gen(ctr, key);
-      for (std::size_t k = 0; k < 4 && i + k < n; ++k) u[i + k] = u01fixedpt_open_open_64_double(r[k]);
-    }
-  };
+  return [seed](std::uint64_t draw, double* u, std::size_t n) { testing::draw_uniforms(seed, draw, u, n); };
 }
 
 // A quadratic in two keys for band b: known value and gradient.
