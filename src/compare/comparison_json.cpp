@@ -1,14 +1,12 @@
 #include "src/compare/comparison_json.hpp"
 
-#include <cmath>
+#include "src/io/json_number.hpp"
 
 namespace rollspec::compare {
 
 namespace {
 
 using json = nlohmann::ordered_json;
-
-json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 // A spectrum as drawn (python-post's report plots it): the measurement through the model's estimator, or
 // the PSD table as read; null without one.
@@ -29,14 +27,14 @@ json comparison_json(const Comparison& c) {
     bands.push_back({{"centre_hz", r.centre},
                      {"lower_hz", b.lower[r.band]},
                      {"upper_hz", b.upper[r.band]},
-                     {"simulated_db", number(r.simulated)},
-                     {"measured_db", number(r.measured)},
-                     {"delta_db", number(r.delta)},
-                     {"ci_lower_db", number(r.ci_lower)},
-                     {"ci_upper_db", number(r.ci_upper)},
-                     {"prediction_lower_db", number(r.pred_lower)},
-                     {"prediction_upper_db", number(r.pred_upper)},
-                     {"noise_db", number(r.noise)},
+                     {"simulated_db", io::json_number(r.simulated)},
+                     {"measured_db", io::json_number(r.measured)},
+                     {"delta_db", io::json_number(r.delta)},
+                     {"ci_lower_db", io::json_number(r.ci_lower)},
+                     {"ci_upper_db", io::json_number(r.ci_upper)},
+                     {"prediction_lower_db", io::json_number(r.pred_lower)},
+                     {"prediction_upper_db", io::json_number(r.pred_upper)},
+                     {"noise_db", io::json_number(r.noise)},
                      {"use", band_use_name(r.use)},
                      {"inside", c.has_interval ? json(records ? r.inside_prediction : r.inside_ci) : json(nullptr)}});
   const auto& t = v.test.result;
@@ -66,14 +64,14 @@ json comparison_json(const Comparison& c) {
        {{"factor", v.table_factor},
         {"table", b.table.empty() ? json(nullptr) : json(b.table)},
         {"units", b.table_units},
-        {"dof", number(b.table_dof)},
+        {"dof", io::json_number(b.table_dof)},
         {"estimated", b.table_units >= 2}}},
-      {"loss_of_contact_share", number(c.loss.share)},
+      {"loss_of_contact_share", io::json_number(c.loss.share)},
       {"loss_of_contact_warning", c.loss.warning.empty() ? json(nullptr) : json(c.loss.warning)},
       {"loss_of_contact_note", c.loss.note.empty() ? json(nullptr) : json(c.loss.note)},
       {"question", v.question},
       {"bands", bands},
-      {"rms_db_error", number(v.rms_db)},
+      {"rms_db_error", io::json_number(v.rms_db)},
       {"inside", c.has_interval ? v.inside : 0},
       {"judged", v.judged},
       {"bands_compared", v.rows.size()},
