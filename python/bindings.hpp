@@ -21,6 +21,7 @@ void bind_spectra(py::module_& m);
 void bind_contact(py::module_& m);
 void bind_surfaces(py::module_& m);
 void bind_studies(py::module_& m);
+void bind_compare(py::module_& m);
 
 // `value` as C-contiguous float64 (the same object when it is one already), refused with ValueError
 // "NAME: ...; allowed: WHAT" unless it is a real numeric array of `ndim` dimensions (a 1-D `value` where

@@ -72,7 +72,8 @@ PYBIND11_MODULE(_core, m) {
       "bands, as `rollspec psd` and the studies compute them, and the measurement files they read), "
       "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables) and "
       "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them) and "
-      "rollspec.studies (a study file run in-process, as `rollspec run` runs it). "
+      "rollspec.studies (a study file run in-process, as `rollspec run` runs it, and a result compared with a "
+      "measurement, as `rollspec compare` compares them). "
       "SI units throughout.";
   m.attr("__version__") = ROLLSPEC_VERSION_TEXT;
   // The engine's errors the user can act on: bad values and data are ValueError, a missing or
@@ -96,6 +97,9 @@ PYBIND11_MODULE(_core, m) {
   py::module_ surfaces = m.def_submodule("surfaces", "Line textures and isotropic surfaces from a roughness PSD.");
   rollspec::python::bind_surfaces(surfaces);
   py::module_ studies =
-      m.def_submodule("studies", "Studies run in-process, with the command's bits: rollspec.studies.run.");
+      m.def_submodule("studies",
+                      "Studies run in-process, with the command's bits, and their results compared with a "
+                      "measurement: rollspec.studies.run and rollspec.studies.compare.");
   rollspec::python::bind_studies(studies);
+  rollspec::python::bind_compare(studies);
 }

@@ -7,18 +7,15 @@
 
 #include "kernels/spectral/fit_search.hpp"
 #include "src/fit/fit_model.hpp"
+#include "src/io/json_number.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
 using fit::kCoherenceLimit;
+using io::json_number;
 
 namespace {
-
-// A JSON number, or null where the value is not finite (JSON has no NaN or infinity).
-nlohmann::ordered_json json_number(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
 
 std::string objective_text(const FitObjective& o) {
   char buf[480];
