@@ -1,10 +1,13 @@
 """rollspec.studies.Study from text and from a dict against `rollspec run` on the same study: the result data are
 the command's bit for bit, `set` as a list or a dict is the command's --set, and a bad line or key raises the
-command's one-line message (the file's name replaced by "<string>" or "<dict>" when the text has no path)."""
+command's one-line message (the file's name replaced by "<string>" or "<dict>" when the text has no path). A text
+study's checkpoint resumes from the same text and refuses another, as the command's does with its study file."""
 import configparser
 import os
-import shutil
+import signal
 import subprocess
+import threading
+import time
 
 import h5py
 import pytest
@@ -137,3 +140,33 @@ def test_errors_in_a_dict_name_the_key(tmp_path):
         studies.Study.from_file(tmp_path / "no-such.ini")
     with pytest.raises(TypeError, match="allowed: a study file's path, or a rollspec.studies.Study"):
         studies.run({"study": {}}, tmp_path / "m.h5")
+
+
+def test_a_text_study_resumes_its_own_checkpoint_and_refuses_another(tmp_path):
+    sets = [s for s in FAST if not s.startswith("study.realisations")] + ["study.realisations=5000"]
+    out, checkpoint = tmp_path / "m.h5", tmp_path / "m.h5.checkpoint"
+
+    def interrupt_after_the_first_chunk():
+        deadline = time.monotonic() + 60.0
+        while time.monotonic() < deadline:
+            if checkpoint.is_dir() and any(p.name.startswith("chunk") for p in checkpoint.iterdir()):
+                os.kill(os.getpid(), signal.SIGINT)
+                return
+            time.sleep(0.002)
+
+    study = studies.Study.from_text(study_text())
+    watcher = threading.Thread(target=interrupt_after_the_first_chunk)
+    watcher.start()
+    with pytest.raises(KeyboardInterrupt, match="resume=True"):
+        studies.run(study, out, set=sets, threads=2)
+    watcher.join()
+    assert checkpoint.is_dir() and not out.exists()
+    # Another study's text is refused by the checkpoint, as the command refuses another study file.
+    other = studies.Study.from_text(study_text().replace("mass = 2.0", "mass = 3.0"))
+    with pytest.raises(ValueError, match=r"the checkpoint belongs to a different study \(the study file changed\)"
+                                         r":\n  \[oscillator\] mass = 3"):
+        studies.run(other, out, set=sets, resume=True)
+    assert studies.run(study, out, set=sets, resume=True, threads=1) == str(out)
+    assert not checkpoint.exists()
+    assert command(STUDY, tmp_path / "whole.h5", sets).returncode == 0
+    same_data(tmp_path / "whole.h5", out)
