@@ -94,6 +94,7 @@ std::vector<std::string> set_texts(const py::handle& sets) {
 
 // Refuses what the engine would refuse of the study, with its one line, before anything runs.
 void check_study(const run::StudyArgs& args) {
+  py::gil_scoped_release release;  // a sweep's every point is checked (values, shapes, memory)
   if (!run::load_sweep(args, {}, {run::kDefaultMaxSweepPoints, true, false})) run::resolve_study(args);
 }
 

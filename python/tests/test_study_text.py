@@ -170,3 +170,19 @@ def test_a_text_study_resumes_its_own_checkpoint_and_refuses_another(tmp_path):
     assert not checkpoint.exists()
     assert command(STUDY, tmp_path / "whole.h5", sets).returncode == 0
     same_data(tmp_path / "whole.h5", out)
+
+
+def test_a_sweep_from_text_holds_the_commands_bits_and_plan_refuses_it(tmp_path):
+    text = study_text() + "\n[sweep]\noscillator.mass = 1, 2\n"
+    path = tmp_path / "sweep.ini"
+    path.write_text(text)
+    sets = FAST[:-1] + ["study.realisations=8"]
+    assert command(path, tmp_path / "command.h5", sets).returncode == 0
+    study = studies.Study.from_text(text)
+    same_data(tmp_path / "command.h5", studies.run(study, tmp_path / "module.h5", set=sets))
+    with pytest.raises(ValueError, match="study = <string>: has a \\[sweep\\]"):
+        studies.plan(study)
+    n = text.splitlines().index("oscillator.mass = 1, 2") + 1
+    refused = f"^<string>:{n}: \\[sweep\\] oscillator.mass = 1, -2: the value -2 is refused"
+    with pytest.raises(ValueError, match=refused):
+        studies.Study.from_text(text.replace("mass = 1, 2", "mass = 1, -2"))
