@@ -96,3 +96,29 @@ def test_a_probe_times_realisation_zero():
                         "--probe"], capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="2"))
     assert re.search(r"^run time: \S+ s per realisation \(probe of realisation 0\); the ensemble of 100 on 2 "
                      r"thread\(s\): about \S+ s", r.stdout, re.M), r.stdout
+
+
+def test_a_missing_table_is_estimated_from_its_first_solves_as_the_command_does(tmp_path, monkeypatch):
+    """The seed 002 rig on a coarse strip with the equivalent roughness from the contact solver
+    (tests/cli/test_solver_filter.py's study): its table is not built, and plan times its first solves.
+    The times are measured, so they differ between the two calls; the table, its threads and what was
+    solved are the command's, and wall = CPU / threads."""
+    study = tmp_path / "rig.ini"
+    study.write_bytes(open(os.path.join(SOURCE, "studies", "seed002-rig-1ms.ini"), "rb").read())
+    sets = ["contact.law=hertz", "contact.filter=solver", "surface.spacing=12e-6", "texture.short_wavelength=24e-6",
+            "blocked_force.segment=128", "blocked_force.strip_length=6.6e-3", "ball.start=0.1", "ball.end=0.106",
+            "spectrum.segment=128", "spectrum.band_min=400", "spectrum.band_max=5000", "study.realisations=2"]
+    monkeypatch.setenv("OMP_NUM_THREADS", "2")
+    p = studies.plan(study, set=sets)
+    lines = command_plan(str(study), sets, 2)
+    assert [s["status"] for s in p["stages"] if s["stage"] == "equivalent_roughness"] == ["run"]
+    assert len(p["tables"]) == 1
+    t = p["tables"][0]
+    assert t["cpu_seconds"] > 0 and t["wall_seconds"] == t["cpu_seconds"] / t["threads"]
+    printed = [line for line in lines if line.startswith("table ") and "(probe: " in line]
+    assert len(printed) == 1
+    m = re.match(r"table (\S+): about \S+ s CPU, \S+ s wall on (\d+) threads? \(probe: (.*)\)$", printed[0])
+    assert m and (m.group(1), int(m.group(2))) == (t["table"], t["threads"]), printed
+    timed = r"solved in [\d.e+-]+ s CPU"
+    assert re.sub(timed, "", m.group(3)) == re.sub(timed, "", t["probe"]) and re.search(timed, t["probe"])
+    assert not list(tmp_path.rglob("*.h5"))
