@@ -72,20 +72,21 @@ PYBIND11_MODULE(_core, m) {
       "bands, as `rollspec psd` and the studies compute them, and the measurement files they read), "
       "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables) and "
       "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them) and "
-      "rollspec.studies (a study file run in-process, as `rollspec run` runs it, and a result compared with a "
-      "measurement, as `rollspec compare` compares them). "
+      "rollspec.studies (a study planned and run in-process, as `rollspec plan` and `rollspec run` do, and a "
+      "result compared with a measurement, as `rollspec compare` compares them). "
       "SI units throughout.";
   m.attr("__version__") = ROLLSPEC_VERSION_TEXT;
   // The engine's errors the user can act on: bad values and data are ValueError, a missing or
-  // unwritable file OSError; the message is the command's one line.
+  // unwritable file OSError; the message is the command's one line, exit_code its exit code.
   py::register_exception_translator([](std::exception_ptr e) {
     try {
       if (e) std::rethrow_exception(e);
     } catch (const rollspec::UserError& u) {
-      if (u.exit_code() == EX_NOINPUT || u.exit_code() == EX_CANTCREAT)
-        PyErr_SetString(PyExc_OSError, u.what());
-      else
-        PyErr_SetString(PyExc_ValueError, u.what());
+      PyObject* type = u.exit_code() == EX_NOINPUT || u.exit_code() == EX_CANTCREAT ? PyExc_OSError : PyExc_ValueError;
+      // exit_code: the command's, for a caller that stands in for it (rollspec_post.run).
+      py::object error = py::reinterpret_borrow<py::object>(type)(u.what());
+      error.attr("exit_code") = u.exit_code();
+      PyErr_SetObject(type, error.ptr());
     }
   });
   py::module_ spectra = m.def_submodule(
@@ -98,8 +99,9 @@ PYBIND11_MODULE(_core, m) {
   rollspec::python::bind_surfaces(surfaces);
   py::module_ studies =
       m.def_submodule("studies",
-                      "Studies run in-process, with the command's bits, and their results compared with a "
-                      "measurement: rollspec.studies.run and rollspec.studies.compare.");
+                      "Studies (a file, text or a dict: Study) planned and run in-process, with the command's "
+                      "bits (plan, run), their results opened as xarray (open) and compared with a measurement "
+                      "(compare).");
   rollspec::python::bind_studies(studies);
   rollspec::python::bind_compare(studies);
 }

@@ -1,5 +1,6 @@
 """Notebook access: `open_result` reads every group of a rollspec file as xarray Datasets, and
-`run` runs the engine from Python and opens what it wrote. Every failure of either raises one
+`run` runs the engine from Python (in-process through the module `rollspec` when it imports, else the
+command) and opens what it wrote. Every failure of either raises one
 exception type, PostError (its message one line, its exit_code the command's), never another."""
 import collections.abc
 import os
@@ -71,15 +72,42 @@ def mapping(value, what):
     return value
 
 
+def in_process():
+    """rollspec.studies when the module imports and no ROLLSPEC_BIN names a binary to run instead; else None."""
+    if os.environ.get("ROLLSPEC_BIN"):
+        return None
+    try:
+        from rollspec import studies
+    except ImportError:
+        return None
+    return studies
+
+
 def run(study, out, set=None, quiet=True, sweep=None):  # noqa: A002 (the engine's own word for it)
-    """Runs `rollspec run STUDY --out OUT --set k=v ... --sweep k=v1,v2 ...` and returns open_result(OUT).
-    `sweep`: {"ball.speed": [1, 2, 3]} runs one point per value (added to the study's [sweep]). A
-    refused or failed run raises PostError with the engine's message and exit code."""
-    args = [engine_binary(), "run", checked_path(study, "run: study"), "--out", checked_path(out, "run: out")]
+    """Runs `rollspec run STUDY --out OUT --set k=v ... --sweep k=v1,v2 ...` and returns open_result(OUT):
+    in this process through rollspec.studies.run when the module `rollspec` imports (and ROLLSPEC_BIN is
+    unset), the same file bits as the command's, else the command. `sweep`: {"ball.speed": [1, 2, 3]} runs
+    one point per value (added to the study's [sweep]; always the command). A refused or failed run raises
+    PostError with the engine's message and exit code."""
+    args = [None, "run", checked_path(study, "run: study"), "--out", checked_path(out, "run: out")]
+    sets = []
     for key, value in mapping(set, "set").items():
         if "=" in str(key) or "\n" in f"{key}{value}":
             raise PostError(f"set: key {key!r} = {value!r}: allowed: section.key and a one-line value", EX_USAGE)
-        args += ["--set", f"{key}={value}"]
+        sets.append(f"{key}={value}")
+        args += ["--set", sets[-1]]
+    studies = in_process() if not sweep else None
+    if studies is not None:
+        if any("\0" in a for a in args[2:]):
+            raise PostError("run: a --set or --sweep value holds a NUL byte", EX_USAGE)
+        try:
+            studies.run(args[2], args[4], set=sets, quiet=quiet)
+        except (ValueError, OSError, RuntimeError) as e:  # RuntimeError: the engine failed (the command's 70)
+            code = getattr(e, "exit_code", EX_DATAERR if isinstance(e, ValueError) else
+                           EX_UNAVAILABLE if isinstance(e, OSError) else EX_SOFTWARE)
+            raise PostError("rollspec run: error: " + one_line(e), code) from None  # the command's line
+        return open_result(out)
+    args[0] = engine_binary()
     for key, values in mapping(sweep, "sweep").items():
         try:
             values = [values] if isinstance(values, (str, int, float)) else list(values)

@@ -1,12 +1,29 @@
-# Type stub of rollspec.studies (python/study_bindings.cpp, python/compare_bindings.cpp).
+# Type stub of rollspec.studies (python/study_bindings.cpp, python/compare_bindings.cpp; open: python/rollspec/__init__.py).
 from os import PathLike
-from typing import Any, Dict, Optional, Sequence, Union
+from typing import Any, Dict, Mapping, Optional, Sequence, Union, overload
+
+import xarray
+
+_Path = Union[str, PathLike[str]]
+_Sets = Union[Sequence[str], Mapping[str, Any]]
+
+class Study:
+    @staticmethod
+    def from_file(path: _Path) -> Study: ...
+    @staticmethod
+    def from_text(text: str, path: Optional[_Path] = None) -> Study: ...
+    @staticmethod
+    def from_dict(sections: Mapping[str, Mapping[str, Any]], path: Optional[_Path] = None) -> Study: ...
+    @property
+    def path(self) -> Optional[str]: ...
+    @property
+    def text(self) -> Optional[str]: ...
 
 def run(
-    study: Union[str, PathLike[str]],
-    out: Optional[Union[str, PathLike[str]]] = None,
+    study: Union[_Path, Study],
+    out: Optional[_Path] = None,
     *,
-    set: Sequence[str] = [],
+    set: _Sets = [],
     resume: bool = False,
     restart: bool = False,
     force: bool = False,
@@ -16,10 +33,10 @@ def run(
 ) -> str: ...
 
 def compare(
-    result: Union[str, PathLike[str]],
-    recordings: Union[str, PathLike[str], Sequence[Union[str, PathLike[str]]]],
+    result: _Path,
+    recordings: Union[str, PathLike[str], Sequence[_Path]],
     *,
-    noise: Optional[Union[str, PathLike[str]]] = None,
+    noise: Optional[_Path] = None,
     sensor: Optional[str] = None,
     measured_position: Optional[float] = None,
     point: Optional[str] = None,
@@ -38,3 +55,9 @@ def compare(
     fmax: Optional[float] = None,
     test_level: float = 0.05,
 ) -> Dict[str, Any]: ...
+
+def plan(study: Union[_Path, Study], *, set: _Sets = [], probe: bool = False) -> Dict[str, Any]: ...
+@overload
+def open(path: _Path, group: None = None) -> Dict[str, xarray.Dataset]: ...
+@overload
+def open(path: _Path, group: str) -> xarray.Dataset: ...

@@ -1,7 +1,9 @@
 """The type stubs (rollspec/*.pyi) name every function of the module with the module's own parameters: the
 same names, in the same order, positional or keyword-only alike, with the same defaults (read from the
-signature line pybind11 writes at the head of each docstring)."""
+signature line pybind11 writes at the head of each docstring, or a Python function's own signature), and
+every class with its static methods and properties."""
 import ast
+import inspect
 import os
 
 import pytest
@@ -22,6 +24,9 @@ def parameters(function):
 
 
 def module_signature(function):
+    if inspect.isfunction(function):  # a function of the package's Python (rollspec.studies.open)
+        return [(p.name, p.kind == p.KEYWORD_ONLY, None if p.default is p.empty else p.default)
+                for p in inspect.signature(function).parameters.values()]
     head = function.__doc__.splitlines()[0]  # "name(x: handle, *, segment: int = 1024) -> dict"
     return parameters(ast.parse("def " + head + ": ...").body[0])
 
@@ -30,8 +35,24 @@ def module_signature(function):
 def test_each_stub_matches_the_module(name):
     module = getattr(rollspec, name)
     with open(os.path.join(STUBS, name + ".pyi")) as f:
-        stub = {n.name: parameters(n) for n in ast.parse(f.read()).body if isinstance(n, ast.FunctionDef)}
-    functions = {n for n in dir(module) if not n.startswith("_") and callable(getattr(module, n))}
-    assert set(stub) == functions
+        body = ast.parse(f.read()).body
+    stub = {}
+    for n in body:  # of @overload variants the first, whose defaults are the function's
+        if isinstance(n, ast.FunctionDef):
+            stub.setdefault(n.name, parameters(n))
+    classes = {n.name: n for n in body if isinstance(n, ast.ClassDef)}
+    names = {n for n in dir(module) if not n.startswith("_") and callable(getattr(module, n))}
+    functions = {n for n in names if not inspect.isclass(getattr(module, n))}
+    assert set(stub) == functions and set(classes) == names - functions
     for function in functions:
         assert stub[function] == module_signature(getattr(module, function)), function
+    for name, node in classes.items():
+        cls = getattr(module, name)
+        methods = {n.name: n for n in node.body if isinstance(n, ast.FunctionDef)}
+        public = {n for n in vars(cls) if not n.startswith("_")}
+        assert set(methods) == public, name
+        for method, n in methods.items():
+            if isinstance(vars(cls)[method], property):
+                assert [d.id for d in n.decorator_list] == ["property"], (name, method)
+            else:
+                assert parameters(n) == module_signature(getattr(cls, method)), (name, method)

@@ -1,23 +1,17 @@
 #pragma once
-// `rollspec plan` of a study or of a sweep's points: which stages are tables that are not built yet,
-// and the measured estimates of those whose cost a few real solves tell better than the plan's model
-// (EnsembleScene::probe_tables).
+// `rollspec plan` of a study or of a sweep's points: the measured estimates of the tables whose cost a
+// few real solves tell better than the plan's model (EnsembleScene::probe_tables), in words. Which
+// tables are missing and how long their probe may take is the engine's (src/run/study_plan.hpp).
 #include <string>
-#include <vector>
 
+#include "src/run/study_plan.hpp"
 #include "src/scenes/scene.hpp"
 
 namespace rollspec::cli {
 
-// A table stage (StagePlan::table: the stiffness table, or a table of the contact solver along the
-// ball's path) that is not cached (status run). --probe never runs realisation 0 while one is
-// missing: preparing the scene would build it.
-bool missing_table(const scenes::StagePlan& stage);
-bool any_missing_table(const std::vector<scenes::StagePlan>& stages);
-
-// The longest a few solves of a missing table may take, by the model, for `plan` to time them (and
-// estimate the table from them) without --probe; --probe times them whatever they take.
-double table_probe_limit(bool probe);
+using run::any_missing_table;
+using run::missing_table;
+using run::table_probe_limit;
 
 // "table NAME: about X s CPU, Y s wall on T threads (probe: ...)", without a newline.
 std::string table_probe_line(const scenes::TableEstimate& t);

@@ -47,7 +47,8 @@ std::string finishing_list() {
 // The study a --resume runs: the checkpoint's. Refuses other --set values and a changed study file,
 // except for the finishing keys (scene.hpp): the chunks do not depend on them.
 study::Study resume_study(const study::Study& asked, const std::vector<std::string>& sets,
-                          const ensemble::CheckpointManifest& m, const std::string& dir, bool from_checkpoint) {
+                          const ensemble::CheckpointManifest& m, const std::string& dir, bool from_checkpoint,
+                          const std::string& text) {
   std::map<std::string, std::string> stored;
   for (const auto& [k, v] : ensemble::canonical_entries(m.study_text)) stored[k] = v;
   std::string differ;
@@ -68,7 +69,7 @@ study::Study resume_study(const study::Study& asked, const std::vector<std::stri
   if (from_checkpoint) return asked;  // parsed from this manifest: nothing on disk to compare with
   std::vector<std::string> all = m.sets;
   all.insert(all.end(), sets.begin(), sets.end());
-  study::Study s = load_study_without_sweep(asked.file(), all);
+  study::Study s = load_study_without_sweep(asked.file(), all, text);
   std::map<std::string, std::string> current;
   for (const auto& [k, v] : ensemble::canonical_entries(s.canonical_text())) current[k] = v;
   std::string keys;
@@ -116,7 +117,8 @@ study::Study checkpoint_study(const std::string& dir, const std::vector<std::str
 }
 
 CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const std::vector<std::string>& sets,
-                                  bool resume, bool restart, bool quiet, bool study_from_checkpoint) {
+                                  bool resume, bool restart, bool quiet, bool study_from_checkpoint,
+                                  const std::string& study_text) {
   CheckpointSession session;
   session.directory = dir;
   std::exception_ptr failure;
@@ -133,7 +135,7 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
         throw data_error(dir + ": the checkpoint was written by another build (" + manifest->identity + "); this is " +
                          io::code_identity() +
                          "; results of two code versions are never mixed: start over with --restart");
-      s = resume_study(s, sets, *manifest, dir, study_from_checkpoint);
+      s = resume_study(s, sets, *manifest, dir, study_from_checkpoint, study_text);
       if (!quiet && root && !manifest->sets.empty()) {
         std::string list;
         for (const auto& o : manifest->sets) list += " --set " + o;

@@ -21,10 +21,11 @@ struct CheckpointSession {
 };
 
 // Opens (locks, checks, and for a fresh run writes the manifest of) the checkpoint of `study`.
-// On --resume, replaces `study` with the checkpoint's own study. Collective under MPI.
+// On --resume, replaces `study` with the checkpoint's own study, after comparing the checkpoint with
+// the study file (or `study_text`, when the study was given as text) as it is now. Collective under MPI.
 CheckpointSession open_checkpoint(const std::string& directory, study::Study& study,
                                   const std::vector<std::string>& sets, bool resume, bool restart, bool quiet,
-                                  bool study_from_checkpoint = false);
+                                  bool study_from_checkpoint = false, const std::string& study_text = {});
 
 // `run --resume --out FILE` without a study file: the checkpoint's own resolved study (its manifest
 // keeps the text and the study file's path, whose directory resolves relative paths), with `sets`

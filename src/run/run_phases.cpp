@@ -75,7 +75,7 @@ study::Study load_study(const RunRequest& q) {
 // one result through two names (a symbolic link) are refused like two runs on one name.
 void open_run_checkpoint(ResolvedRun& run, const RunRequest& q) {
   run.checkpoint = open_checkpoint(run.write_path + ".checkpoint", run.study, q.study.sets, q.resume, q.restart,
-                                   q.quiet, q.study.file.empty());
+                                   q.quiet, q.study.file.empty(), q.study.text);
 }
 
 void write_run_attributes(io::Hdf5Writer& w, const ensemble::EnsembleSums& sums, long long only) {

@@ -12,7 +12,7 @@ namespace {
 // `run --resume --out X.h5` names a study only through X.h5's checkpoint or sweep; a study file
 // named but gone since the interrupted run is the same case, said in one line.
 bool resume_without_study(RunRequest& q) {
-  if (!q.resume || q.out.empty()) return false;
+  if (!q.resume || q.out.empty() || !q.study.text.empty()) return false;  // a study from text is there
   if (q.study.file.empty()) return true;
   std::error_code ec;
   if (std::filesystem::exists(std::filesystem::symlink_status(q.study.file, ec))) return false;

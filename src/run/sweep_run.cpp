@@ -255,10 +255,13 @@ std::string SweepStudy::label(std::size_t i) const {
   return out;
 }
 
-study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets) {
-  const auto text = read_text(file);
+study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets,
+                                      const std::string& study_text) {
+  const auto text = study_text.empty() ? read_text(file) : std::optional<std::string>(study_text);
   StudyArgs a{file, sets, text.value_or("")};
-  if (!text || study::split_sweep(file, a.text).empty()) return study::Study::load(file, sets, scenes::schema_for);
+  if (!text || study::split_sweep(file, a.text).empty())
+    return study_text.empty() ? study::Study::load(file, sets, scenes::schema_for)
+                              : study::Study::parse(file, study_text, sets, scenes::schema_for);
   return point_study(a);
 }
 

@@ -45,8 +45,10 @@ std::optional<SweepStudy> load_sweep(const StudyArgs& args, const std::vector<st
 std::optional<SweepStudy> load_sweep_manifest(const std::string& out, const SweepLimits& limits);
 
 // The study file with `sets`, its [sweep] (if any) left out: a sweep point's checkpoint compares
-// the study on disk with its own on --resume.
-study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets);
+// the study on disk with its own on --resume. A non-empty `text` is the study's, read as that file
+// (a study the caller holds as text: Python's Study.from_text, a sweep point).
+study::Study load_study_without_sweep(const std::string& file, const std::vector<std::string>& sets,
+                                      const std::string& text = {});
 
 // Refuses a sweep whose points give /psd or /bands different shapes or coordinates (from each
 // point's settings, before any point runs), naming the swept keys, their values and the shapes, and
