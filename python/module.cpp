@@ -70,8 +70,9 @@ PYBIND11_MODULE(_core, m) {
   m.doc() =
       "rollspec's kernels and engine functions on numpy arrays: rollspec.spectra (Welch PSD and third-octave "
       "bands, as `rollspec psd` and the studies compute them, and the measurement files they read), "
-      "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables) and "
-      "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them) and "
+      "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables, and the "
+      "tables a study writes), rollspec.surfaces (line textures and isotropic surfaces from a PSD or from measured "
+      "profiles, as `rollspec texture` draws them) and "
       "rollspec.studies (a study file run in-process, as `rollspec run` runs it). "
       "SI units throughout.";
   m.attr("__version__") = ROLLSPEC_VERSION_TEXT;
@@ -93,8 +94,10 @@ PYBIND11_MODULE(_core, m) {
   py::module_ contact =
       m.def_submodule("contact", "Elastic and elastic-plastic contact of a rough surface on a half-space.");
   rollspec::python::bind_contact(contact);
+  rollspec::python::bind_tables(contact);
   py::module_ surfaces = m.def_submodule("surfaces", "Line textures and isotropic surfaces from a roughness PSD.");
   rollspec::python::bind_surfaces(surfaces);
+  rollspec::python::bind_profiles(surfaces);
   py::module_ studies =
       m.def_submodule("studies", "Studies run in-process, with the command's bits: rollspec.studies.run.");
   rollspec::python::bind_studies(studies);
