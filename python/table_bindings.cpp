@@ -8,10 +8,13 @@
 #include "src/error.hpp"
 #include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/run/run_phases.hpp"
+#include "src/scenes/scene.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/stiffness_table.hpp"
+#include "src/study/sections/study_section.hpp"
 
 namespace rollspec::python {
 
@@ -25,6 +28,7 @@ struct Column {
 
 struct Table {
   std::string kind, path, inputs, input_hash, data_checksum;
+  std::string status;  // stiffness_table: "built PATH" or "cached PATH"; read: ""
   double kernel_version = 0.0;
   std::unique_ptr<stiffness::TableData> data;
   std::vector<Column> columns;  // views into *data
@@ -146,6 +150,34 @@ std::unique_ptr<Table> read(const std::string& path) {
   return t;
 }
 
+// `rollspec stiffness STUDY --set ...` in-process: the study's table reused when its input hash and
+// data match, built (and written where the command writes it) when missing, refused when it differs.
+std::unique_ptr<Table> stiffness_table(const py::object& study_path, const std::vector<std::string>& sets, bool rebuild,
+                                       bool quiet) {
+  run::StudyArgs args;
+  args.file = py::str(study_path).cast<std::string>();
+  args.sets = sets;
+  const study::Study s = run::resolve_study(args);
+  const auto has_table = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.contact_pair); };
+  const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
+  if (!has_table(scene)) {
+    const auto study_keys = study::StudySection::parse(s);
+    study_keys.origin(study_keys.scene)
+        .refuse("rollspec stiffness needs a " + scenes::scenes_with(has_table) + " study");
+  }
+  run::check_resources(s, false);
+  const auto pair = scene.contact_pair(s);
+  const stiffness::TableStudy ts = stiffness::TableStudy::parse(s);
+  std::string status;
+  {
+    py::gil_scoped_release unlocked;  // the contact solves of every realisation
+    stiffness::resolve_table(ts, pair.radius, pair.effective_modulus, rebuild, quiet, status);
+  }
+  auto t = read(stiffness::stiffness_cached_table(ts, pair.radius, pair.effective_modulus).path());
+  t->status = status;
+  return t;
+}
+
 py::array_t<double> view(const Column& c, const py::object& self) {
   std::vector<py::ssize_t> strides(c.shape.size(), sizeof(double));
   if (c.shape.size() == 2) strides[0] = c.shape[1] * static_cast<py::ssize_t>(sizeof(double));
@@ -169,6 +201,32 @@ Each column is an attribute (a read-only numpy array, SI units as in the file: m
 rad/m, m^3 or N^2 m); each scalar too (a float). columns and scalars list them.
 )";
 
+const char* const kStiffnessTableDoc =
+    R"(The stiffness table of a study, as `rollspec stiffness STUDY --set ...` makes it.
+
+The study's [stiffness] table (auto: <table_dir>/stiffness-<input hash>.h5 beside the study) is reused
+when its input hash, inputs and data checksum match, built and written there when missing (the
+elastic-plastic half-space solve of every rough-surface realisation, OpenMP threads, the same bits
+for any thread count, the interpreter lock released), and refused with the command's message when
+its inputs differ or it is damaged, unless rebuild. A `stiffness` or `ball-on-beam` study.
+
+Parameters
+----------
+study : str or os.PathLike
+    The study file.
+set : list of str
+    Overrides 'section.key=value', as --set.
+rebuild : bool
+    Replace a table whose inputs differ or that is damaged (--rebuild).
+quiet : bool
+    No progress lines on stderr (--quiet).
+
+Returns
+-------
+Table
+    kind 'stiffness', read back from the file; status says 'built PATH' or 'cached PATH'.
+)";
+
 }  // namespace
 
 void bind_tables(py::module_& m) {
@@ -179,6 +237,9 @@ void bind_tables(py::module_& m) {
                "ValueError for a damaged, edited, foreign or other kernel version's file (the command's message), "
                "OSError for a missing one.",
                arg("path"));
+  c.def_property_readonly(
+      "status", [](const Table& t) { return t.status; },
+      "stiffness_table: 'built PATH' or 'cached PATH', as `rollspec stiffness` prints it; read: ''.");
   c.def_property_readonly(
       "kind", [](const Table& t) { return t.kind; }, "'stiffness', 'blocked_force', 'equivalent_roughness' or 'path'.");
   c.def_property_readonly(
@@ -222,6 +283,8 @@ void bind_tables(py::module_& m) {
       if (n == name) return py::float_(v);
     throw py::attribute_error("a " + t.kind + " table has no column or scalar '" + name + "'");
   });
+  m.def("stiffness_table", &stiffness_table, kStiffnessTableDoc, arg("study"), py::kw_only(),
+        arg("set") = std::vector<std::string>{}, arg("rebuild") = false, arg("quiet") = true);
   c.def("__repr__", [](const Table& t) {
     return "<rollspec.contact.Table " + t.kind + " " + t.input_hash + " from " + t.path + ">";
   });

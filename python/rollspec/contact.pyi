@@ -1,5 +1,6 @@
 # Type stub of rollspec.contact (python/contact_bindings.cpp); units in the docstrings.
-from typing import Any, Dict, Optional
+import os
+from typing import Any, Dict, List, Optional, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -21,12 +22,17 @@ def ball_gap(
     radius: float, dx: float, nx: int, ny: int, *, dy: Optional[float] = None, shape: str = "sphere"
 ) -> npt.NDArray[np.float64]: ...
 def effective_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float: ...
+def stiffness_table(
+    study: Union[str, "os.PathLike[str]"], *, set: List[str] = [], rebuild: bool = False, quiet: bool = True
+) -> Table: ...
 
 class Table:
     """A cached stage table (python/table_bindings.cpp): columns and scalars are also attributes."""
 
     @staticmethod
     def read(path: str) -> Table: ...
+    @property
+    def status(self) -> str: ...
     @property
     def kind(self) -> str: ...
     @property

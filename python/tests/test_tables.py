@@ -127,3 +127,27 @@ def test_damaged_edited_and_foreign_files_are_refused(tables, tmp_path):
         contact.Table.read(str(tmp_path / "text.h5"))
     with pytest.raises(OSError, match="missing.h5"):
         contact.Table.read(str(tmp_path / "missing.h5"))
+
+
+def test_stiffness_table_builds_the_commands_table_and_reuses_it(tables, tmp_path):
+    study = tmp_path / "table.ini"
+    shutil.copy(os.path.join(STUDIES, "seed002-table.ini"), study)
+    sets = ["surface.nx=64", "surface.ny=64", "stiffness.realisations=2", "stiffness.steps=4",
+            "stiffness.approach_max=0.4e-6"]
+    built = contact.stiffness_table(study, set=sets)
+    command = contact.Table.read(tables["stiffness"])  # the same study and keys, built by `rollspec stiffness`
+    assert built.status == "built " + built.path and built.path.startswith(str(tmp_path / "tables"))
+    assert built.input_hash == command.input_hash and built.inputs == command.inputs
+    for name, column in command.columns.items():
+        assert built.columns[name].tobytes() == column.tobytes(), name
+    assert built.scalars == command.scalars
+    again = contact.stiffness_table(str(study), set=sets)
+    assert again.status == "cached " + built.path and again.data_checksum == built.data_checksum
+    # A key the table depends on: another hash, another file.
+    other = contact.stiffness_table(study, set=[*sets, "stiffness.steps=3"])
+    assert other.input_hash != built.input_hash and other.approach.shape == (4,)
+    with pytest.raises(ValueError, match=r"^command line \(--set\): unknown key \[stiffness\] realisation = 2 for "
+                                         r"scene stiffness; allowed keys"):
+        contact.stiffness_table(study, set=["stiffness.realisation=2"])
+    with pytest.raises(ValueError, match=r"rollspec stiffness needs a .* study"):
+        contact.stiffness_table(os.path.join(STUDIES, "texture-demo.ini"))
