@@ -131,11 +131,7 @@ std::unique_ptr<Table> read(const std::string& path) {
     if (r.has_attribute("/", "seed")) t->provenance["seed"] = static_cast<long long>(r.double_attribute("/", "seed"));
     t->kernel_version = r.double_attribute(kind->kind->group, "kernel_version");
     t->data_checksum = r.string_attribute(kind->kind->group, "data_checksum");
-    StoredIdentity id;
-    {
-      py::gil_scoped_release unlocked;
-      id = read_stored_table(*kind->kind, path, *t->data);
-    }
+    const StoredIdentity id = read_stored_table(*kind->kind, path, *t->data);  // small: read with the lock held
     t->inputs = id.inputs;
     t->input_hash = id.hash;
   }

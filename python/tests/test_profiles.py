@@ -90,6 +90,8 @@ def test_arrays_give_the_files_estimate_and_eq_15_to_17():
         want += g / len(heights)
     assert np.allclose(p.periodogram[1:], want[1:], rtol=1e-9, atol=0)
     assert np.allclose(p.wavenumber, 2 * np.pi * i[: n // 2 + 1] / (n * dx), rtol=1e-14, atol=0)
+    # Another layout is read as C-contiguous float64: the same bits.
+    assert surfaces.profile_psd(np.asfortranarray(heights), dx).periodogram.tobytes() == p.periodogram.tobytes()
     # One profile as a 1-D array is one row.
     one = surfaces.profile_psd(heights[0], dx)
     assert one.scans == 1 and one.periodogram.tobytes() == surfaces.read_profiles(FILES[:1]).periodogram.tobytes()
@@ -99,6 +101,8 @@ def test_arrays_give_the_files_estimate_and_eq_15_to_17():
     (np.zeros((2, 5)), {}, "heights: profile 0 has 5 samples"),
     (np.full(16, np.nan), {}, "heights: 16 values NaN or infinite"),
     (np.zeros((2, 2, 8)), {}, "heights: 3 dimension(s)"),
+    (np.zeros(0), {}, "heights: shape (0,), a side under 1"),
+    (np.zeros((0, 8)), {}, "heights: shape (0, 8), a side under 1"),
     (np.array(["a"] * 8), {}, "heights: an array of dtype <U1"),
     (np.zeros(16), {"spacing": -1.0}, "spacing = -1: not a spacing"),
     (np.zeros(16), {"extension": "linear"}, "extension = 'linear': unknown; allowed: error, constant, power_law"),
