@@ -92,10 +92,14 @@ PYBIND11_MODULE(_core, m) {
       "spectra", "Welch PSD and third-octave bands of sampled signals, and the measurement reader of `rollspec psd`.");
   rollspec::python::bind_spectra(spectra);
   py::module_ contact =
-      m.def_submodule("contact", "Elastic and elastic-plastic contact of a rough surface on a half-space.");
+      m.def_submodule("contact",
+                      "Elastic and elastic-plastic contact of a rough surface on a half-space, and the stiffness, "
+                      "blocked-force, equivalent-roughness and path tables a study builds.");
   rollspec::python::bind_contact(contact);
   rollspec::python::bind_tables(contact);
-  py::module_ surfaces = m.def_submodule("surfaces", "Line textures and isotropic surfaces from a roughness PSD.");
+  py::module_ surfaces = m.def_submodule(
+      "surfaces",
+      "Line textures and isotropic surfaces from a roughness PSD or from measured profiles, and their PSD.");
   rollspec::python::bind_surfaces(surfaces);
   rollspec::python::bind_profiles(surfaces);
   py::module_ studies =
