@@ -2,7 +2,10 @@
 // table) read as the engine reads it before reusing it (stiffness::read_stored_table: file type,
 // schema, contact kernel version, data checksum), with its columns as numpy views, its scalars, the
 // canonical inputs and input hash the study's stage compares, and the file's provenance.
+#include <omp.h>
+
 #include <memory>
+#include <optional>
 
 #include "python/bindings.hpp"
 #include "src/error.hpp"
@@ -149,7 +152,10 @@ std::unique_ptr<Table> read(const std::string& path) {
 // `rollspec stiffness STUDY --set ...` in-process: the study's table reused when its input hash and
 // data match, built (and written where the command writes it) when missing, refused when it differs.
 std::unique_ptr<Table> stiffness_table(const py::object& study_path, const std::vector<std::string>& sets, bool rebuild,
-                                       bool quiet) {
+                                       bool quiet, std::optional<int> threads) {
+  if (threads && *threads < 1)
+    refuse("threads", std::to_string(*threads), "fewer than one",
+           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the table does not depend on it");
   run::StudyArgs args;
   args.file = py::str(study_path).cast<std::string>();
   args.sets = sets;
@@ -167,6 +173,12 @@ std::unique_ptr<Table> stiffness_table(const py::object& study_path, const std::
   std::string status;
   {
     py::gil_scoped_release unlocked;  // the contact solves of every realisation
+    // This thread's OpenMP thread count for the build only, restored after it (also on an error).
+    struct Threads {
+      int before = omp_get_max_threads();
+      ~Threads() { omp_set_num_threads(before); }
+    } restore;
+    if (threads) omp_set_num_threads(*threads);
     stiffness::resolve_table(ts, pair.radius, pair.effective_modulus, rebuild, quiet, status);
   }
   auto t = read(stiffness::stiffness_cached_table(ts, pair.radius, pair.effective_modulus).path());
@@ -216,6 +228,8 @@ rebuild : bool
     Replace a table whose inputs differ or that is damaged (--rebuild).
 quiet : bool
     No progress lines on stderr (--quiet).
+threads : int or None
+    OpenMP threads of the build (None: OMP_NUM_THREADS, else every core); the table does not depend on it.
 
 Returns
 -------
@@ -280,7 +294,8 @@ void bind_tables(py::module_& m) {
     throw py::attribute_error("a " + t.kind + " table has no column or scalar '" + name + "'");
   });
   m.def("stiffness_table", &stiffness_table, kStiffnessTableDoc, arg("study"), py::kw_only(),
-        arg("set") = std::vector<std::string>{}, arg("rebuild") = false, arg("quiet") = true);
+        arg("set") = std::vector<std::string>{}, arg("rebuild") = false, arg("quiet") = true,
+        arg("threads") = py::none());
   c.def("__repr__", [](const Table& t) {
     return "<rollspec.contact.Table " + t.kind + " " + t.input_hash + " from " + t.path + ">";
   });

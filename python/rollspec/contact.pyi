@@ -23,7 +23,12 @@ def ball_gap(
 ) -> npt.NDArray[np.float64]: ...
 def effective_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float: ...
 def stiffness_table(
-    study: Union[str, "os.PathLike[str]"], *, set: List[str] = [], rebuild: bool = False, quiet: bool = True
+    study: Union[str, "os.PathLike[str]"],
+    *,
+    set: List[str] = [],
+    rebuild: bool = False,
+    quiet: bool = True,
+    threads: Optional[int] = None,
 ) -> Table: ...
 
 class Table:

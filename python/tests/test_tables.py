@@ -143,6 +143,13 @@ def test_stiffness_table_builds_the_commands_table_and_reuses_it(tables, tmp_pat
     assert built.scalars == command.scalars
     again = contact.stiffness_table(str(study), set=sets)
     assert again.status == "cached " + built.path and again.data_checksum == built.data_checksum
+    # Any thread count: the same bits.
+    (tmp_path / "one").mkdir()
+    single = contact.stiffness_table(shutil.copy(study, tmp_path / "one"), set=sets, threads=1)
+    assert single.status.startswith("built ") and single.data_checksum == built.data_checksum
+    assert single.force_mean.tobytes() == built.force_mean.tobytes()
+    with pytest.raises(ValueError, match=r"^threads = 0: fewer than one; allowed: a thread count >= 1"):
+        contact.stiffness_table(study, set=sets, threads=0)
     # A key the table depends on: another hash, another file.
     other = contact.stiffness_table(study, set=[*sets, "stiffness.steps=3"])
     assert other.input_hash != built.input_hash and other.approach.shape == (4,)
