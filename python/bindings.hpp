@@ -22,6 +22,8 @@ void bind_contact(py::module_& m);
 void bind_surfaces(py::module_& m);
 void bind_studies(py::module_& m);
 void bind_compare(py::module_& m);
+void bind_profiles(py::module_& surfaces);
+void bind_tables(py::module_& contact);
 
 // `value` as C-contiguous float64 (the same object when it is one already), refused with ValueError
 // "NAME: ...; allowed: WHAT" unless it is a real numeric array of `ndim` dimensions (a 1-D `value` where
@@ -35,6 +37,17 @@ py::array_t<double> to_numpy(std::vector<double>&& values, const std::vector<py:
 // ValueError "NAME = VALUE: PROBLEM; allowed: WHAT", the command's one-line style.
 [[noreturn]] void refuse(const std::string& name, const std::string& value, const std::string& problem,
                          const std::string& allowed);
+
+// The value of `table` spelled `text`, or refuse() naming `name` and every spelling.
+template <class E, std::size_t N>
+E choice(const study::ChoiceTable<E, N>& table, const std::string& name, const std::string& text) {
+  std::string allowed;
+  for (const auto& c : table) {
+    if (text == c.spelling) return c.value;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(c.spelling);
+  }
+  refuse(name, "'" + text + "'", "unknown", allowed);
+}
 
 // The key `section.key` of a section's key table (StiffnessSection::keys(), ...).
 const study::KeySpec& key_spec(const std::vector<study::KeySpec>& keys, const std::string& key);

@@ -70,8 +70,9 @@ PYBIND11_MODULE(_core, m) {
   m.doc() =
       "rollspec's kernels and engine functions on numpy arrays: rollspec.spectra (Welch PSD and third-octave "
       "bands, as `rollspec psd` and the studies compute them, and the measurement files they read), "
-      "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables) and "
-      "rollspec.surfaces (line textures and isotropic surfaces from a PSD, as `rollspec texture` draws them) and "
+      "rollspec.contact (the elastic and elastic-plastic half-space solve of the stiffness tables, and the "
+      "tables a study writes), rollspec.surfaces (line textures and isotropic surfaces from a PSD or from measured "
+      "profiles, as `rollspec texture` draws them) and "
       "rollspec.studies (a study planned and run in-process, as `rollspec plan` and `rollspec run` do, and a "
       "result compared with a measurement, as `rollspec compare` compares them). "
       "SI units throughout.";
@@ -93,10 +94,16 @@ PYBIND11_MODULE(_core, m) {
       "spectra", "Welch PSD and third-octave bands of sampled signals, and the measurement reader of `rollspec psd`.");
   rollspec::python::bind_spectra(spectra);
   py::module_ contact =
-      m.def_submodule("contact", "Elastic and elastic-plastic contact of a rough surface on a half-space.");
+      m.def_submodule("contact",
+                      "Elastic and elastic-plastic contact of a rough surface on a half-space, and the stiffness, "
+                      "blocked-force, equivalent-roughness and path tables a study builds.");
   rollspec::python::bind_contact(contact);
-  py::module_ surfaces = m.def_submodule("surfaces", "Line textures and isotropic surfaces from a roughness PSD.");
+  rollspec::python::bind_tables(contact);
+  py::module_ surfaces = m.def_submodule(
+      "surfaces",
+      "Line textures and isotropic surfaces from a roughness PSD or from measured profiles, and their PSD.");
   rollspec::python::bind_surfaces(surfaces);
+  rollspec::python::bind_profiles(surfaces);
   py::module_ studies =
       m.def_submodule("studies",
                       "Studies (a file, text or a dict: Study) planned and run in-process, with the command's "

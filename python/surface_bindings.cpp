@@ -19,16 +19,6 @@ namespace rollspec::python {
 
 namespace {
 
-template <class E, std::size_t N>
-E choice(const study::ChoiceTable<E, N>& table, const std::string& name, const std::string& text) {
-  std::string allowed;
-  for (const auto& c : table) {
-    if (text == c.spelling) return c.value;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(c.spelling);
-  }
-  refuse(name, "'" + text + "'", "unknown", allowed);
-}
-
 // The table (wavenumber, psd) as a [texture] table: log-log interpolation, `extension` outside. The
 // arrays are checked here; the table's own refusals come back from `make`.
 struct TablePsd {

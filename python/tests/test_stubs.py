@@ -31,6 +31,10 @@ def module_signature(function):
     return parameters(ast.parse("def " + head + ": ...").body[0])
 
 
+def is_property(node):
+    return any(isinstance(d, ast.Name) and d.id == "property" for d in node.decorator_list)
+
+
 @pytest.mark.parametrize("name", ["spectra", "contact", "surfaces", "studies"])
 def test_each_stub_matches_the_module(name):
     module = getattr(rollspec, name)
@@ -41,18 +45,21 @@ def test_each_stub_matches_the_module(name):
         if isinstance(n, ast.FunctionDef):
             stub.setdefault(n.name, parameters(n))
     classes = {n.name: n for n in body if isinstance(n, ast.ClassDef)}
-    names = {n for n in dir(module) if not n.startswith("_") and callable(getattr(module, n))}
-    functions = {n for n in names if not inspect.isclass(getattr(module, n))}
-    assert set(stub) == functions and set(classes) == names - functions
+    public = {n for n in dir(module) if not n.startswith("_") and callable(getattr(module, n))}
+    functions = {n for n in public if not isinstance(getattr(module, n), type)}
+    assert set(stub) == functions
+    assert set(classes) == public - functions
     for function in functions:
         assert stub[function] == module_signature(getattr(module, function)), function
+    # A class's stub: its properties and its methods (self included), as the class has them.
     for name, node in classes.items():
         cls = getattr(module, name)
-        methods = {n.name: n for n in node.body if isinstance(n, ast.FunctionDef)}
-        public = {n for n in vars(cls) if not n.startswith("_")}
-        assert set(methods) == public, name
-        for method, n in methods.items():
-            if isinstance(vars(cls)[method], property):
-                assert [d.id for d in n.decorator_list] == ["property"], (name, method)
-            else:
-                assert parameters(n) == module_signature(getattr(cls, method)), (name, method)
+        defs = [n for n in node.body if isinstance(n, ast.FunctionDef)]
+        properties = {n for n in vars(cls) if isinstance(vars(cls)[n], property) and not n.startswith("_")}
+        assert {n.name for n in defs if is_property(n)} == properties, name
+        methods = {n for n in vars(cls) if not n.startswith("_") and n not in properties} | (
+            {"__call__"} if "__call__" in vars(cls) else set())
+        assert {n.name for n in defs if not is_property(n) and n.name != "__getattr__"} == methods, name
+        for n in defs:
+            if not is_property(n) and n.name != "__getattr__":
+                assert parameters(n) == module_signature(getattr(cls, n.name)), (name, n.name)

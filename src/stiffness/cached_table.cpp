@@ -51,13 +51,9 @@ std::string differences(const std::string& stored, const std::string& wanted) {
   return out.empty() ? " (no key differs; the stored hash is inconsistent)" : out;
 }
 
-struct StoredIdentity {
-  std::string inputs, hash;
-};
+}  // namespace
 
-// Opens a stored table, checks its file type, schema, kernel version and data checksum, and loads
-// its data into t. Throws data_error naming what is wrong.
-StoredIdentity load_checked(const TableKind& kind, const std::string& path, TableData& t) {
+StoredIdentity read_stored_table(const TableKind& kind, const std::string& path, TableData& t) {
   const io::Hdf5Reader r(path);
   io::check_filetype(r, kind.file_type, kSchemaMajor);
   const double kv = r.double_attribute(kind.group, "kernel_version");
@@ -70,8 +66,6 @@ StoredIdentity load_checked(const TableKind& kind, const std::string& path, Tabl
                      "'s data do not match its checksum (damaged or edited file); rebuild with --rebuild");
   return {r.string_attribute(kind.group, "inputs"), r.string_attribute(kind.group, "input_hash")};
 }
-
-}  // namespace
 
 CachedTable::CachedTable(const TableKind& kind, const TableStore& store, std::string inputs,
                          const std::string& explicit_path)
@@ -87,7 +81,7 @@ CachedTable::CachedTable(const TableKind& kind, const TableStore& store, std::st
 TableState CachedTable::inspect(TableData& scratch, std::string& why) const {
   if (!fs::exists(path_)) return TableState::missing;
   try {
-    const StoredIdentity stored = load_checked(kind_, path_, scratch);
+    const StoredIdentity stored = read_stored_table(kind_, path_, scratch);
     if (stored.hash != hash_) {
       why = path_ + ": table inputs differ from the study's (hash " + stored.hash + " vs " + hash_ +
             "):" + differences(stored.inputs, inputs_);

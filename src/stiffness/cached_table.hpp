@@ -80,6 +80,14 @@ class CachedTable {
   bool automatic_ = true;
 };
 
+// What a stored table's file records of its inputs: their canonical text and its hash.
+struct StoredIdentity {
+  std::string inputs, hash;
+};
+// Opens a stored table of `kind`, checks its file type, schema, contact kernel version and data
+// checksum, and loads its data into t (not t.input_hash). Throws data_error naming what is wrong.
+StoredIdentity read_stored_table(const TableKind& kind, const std::string& path, TableData& t);
+
 // The plan line of a table stage in `state`: cached, or run and why (missing; refused unless --rebuild).
 std::string table_plan_reason(const CachedTable& t, TableState state, const std::string& why);
 
