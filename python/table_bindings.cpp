@@ -12,12 +12,11 @@
 #include "src/io/content_hash.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/run/run_phases.hpp"
-#include "src/scenes/scene.hpp"
+#include "src/run/study_stiffness_table.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
 #include "src/stiffness/stiffness_table.hpp"
-#include "src/study/sections/study_section.hpp"
 
 namespace rollspec::python {
 
@@ -160,17 +159,7 @@ std::unique_ptr<Table> stiffness_table(const py::object& study_path, const std::
   args.file = py::str(study_path).cast<std::string>();
   args.sets = sets;
   const study::Study s = run::resolve_study(args);
-  const auto has_table = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.contact_pair); };
-  const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
-  if (!has_table(scene)) {
-    const auto study_keys = study::StudySection::parse(s);
-    study_keys.origin(study_keys.scene)
-        .refuse("rollspec stiffness needs a " + scenes::scenes_with(has_table) + " study");
-  }
-  run::check_resources(s, false);
-  const auto pair = scene.contact_pair(s);
-  const stiffness::TableStudy ts = stiffness::TableStudy::parse(s);
-  std::string status;
+  run::StudyStiffnessTable answer;
   {
     py::gil_scoped_release unlocked;  // the contact solves of every realisation
     // This thread's OpenMP thread count for the build only, restored after it (also on an error).
@@ -179,10 +168,10 @@ std::unique_ptr<Table> stiffness_table(const py::object& study_path, const std::
       ~Threads() { omp_set_num_threads(before); }
     } restore;
     if (threads) omp_set_num_threads(*threads);
-    stiffness::resolve_table(ts, pair.radius, pair.effective_modulus, rebuild, quiet, status);
+    answer = run::study_stiffness_table(s, false, rebuild, quiet);
   }
-  auto t = read(stiffness::stiffness_cached_table(ts, pair.radius, pair.effective_modulus).path());
-  t->status = status;
+  auto t = read(answer.path);
+  t->status = answer.status;
   return t;
 }
 

@@ -13,14 +13,13 @@
 #include "src/scenes/memory_estimate.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/run/run_phases.hpp"
+#include "src/run/study_stiffness_table.hpp"
 #include "src/stiffness/stiffness_table.hpp"
 #include "src/study/sections/stiffness_section.hpp"
-#include "src/study/sections/study_section.hpp"
 #include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
-using run::check_resources;
 using run::resolve_study;
 
 int stiffness_command(const Args& args) {
@@ -46,19 +45,11 @@ int stiffness_command(const Args& args) {
   if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
   if (!out.empty())
     study.sets.push_back(study::StiffnessSection::table_setting(std::filesystem::absolute(out).string()));
-  const study::Study s = resolve_study(study);
-  const auto has_table = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.contact_pair); };
-  const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
-  if (!has_table(scene)) {
-    const auto study_keys = study::StudySection::parse(s);
-    study_keys.origin(study_keys.scene)
-        .refuse("rollspec stiffness needs a " + scenes::scenes_with(has_table) + " study");
-  }
-  check_resources(s, vm.count("force") > 0);
-  const auto pair = scene.contact_pair(s);
-  std::string status;
-  const auto t = stiffness::resolve_table(stiffness::TableStudy::parse(s), pair.radius, pair.effective_modulus,
-                                          vm.count("rebuild") > 0, vm.count("quiet") > 0, status);
+  const run::StudyStiffnessTable answer = run::study_stiffness_table(resolve_study(study), vm.count("force") > 0,
+                                                                     vm.count("rebuild") > 0, vm.count("quiet") > 0);
+  const stiffness::StiffnessTable& t = answer.table;
+  const scenes::BallContact& pair = answer.pair;
+  const std::string& status = answer.status;
   if (ensemble::mpi_rank() != 0) return 0;  // every rank holds the table; rank 0 reports it
   std::printf("# stiffness table: %s\n# input hash %s, %s, ball radius %g m, E* %.6g Pa, H %g Pa\n", status.c_str(),
               t.input_hash.c_str(), io::counted(static_cast<unsigned long long>(t.realisations), "realisation").c_str(),
