@@ -5,13 +5,11 @@
 #include <cmath>
 #include <optional>
 
-#include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/measured_psd.hpp"
 #include "kernels/texture/profile_psd.hpp"
 #include "python/bindings.hpp"
+#include "python/surface_draws.hpp"
 #include "src/io/number_text.hpp"
-#include "src/rng/philox_stream.hpp"
-#include "src/study/sections/amplitudes_choice.hpp"
 #include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
 #include "src/texture/profile_source.hpp"
@@ -108,68 +106,15 @@ py::array_t<double> view(const std::vector<double>& v, const py::object& self) {
   return a;
 }
 
-double surface_key(const std::string& name, double value) {
-  static const auto keys = study::SurfaceSection::keys();
-  return key_value(key_spec(keys, "surface." + name), value);
-}
-
-std::size_t even_side(const std::string& name, long long n) {
-  surface_key(name, static_cast<double>(n));
-  if (n % 2) refuse(name, std::to_string(n), "odd", "an even number of grid points ([surface] " + name + ")");
-  return static_cast<std::size_t>(n);
-}
-
 py::dict line(const ProfilePsd& self, double spacing, long long samples, unsigned long long seed,
               unsigned long long index, const std::string& amplitudes) {
-  if (!(spacing > 0.0) || !std::isfinite(spacing))
-    refuse("spacing", io::number_text(spacing), "not a spacing", "a finite number > 0 (m)");
-  if (samples < 8 || samples > (1LL << 26))
-    refuse("samples", std::to_string(samples), "out of range",
-           "a whole number in [8, 2^26] ([lines] length / spacing)");
-  // `rollspec texture`'s generator: no harmonic above pi / spacing dropped (texture_command.cpp).
-  texture::LineTextureSpec spec;
-  spec.spacing = spacing;
-  spec.samples = static_cast<std::size_t>(samples);
-  spec.amplitudes = choice(study::kAmplitudes, "amplitudes", amplitudes);
-  spec.allow_truncation = false;
-  std::unique_ptr<texture::LineTextureGenerator> lines;
-  std::vector<double> heights(spec.samples);
-  {
-    py::gil_scoped_release unlocked;
-    try {
-      lines = std::make_unique<texture::LineTextureGenerator>(self.psd, spec);
-    } catch (const std::exception& e) {
-      throw py::value_error("spacing = " + io::number_text(spacing) + ": " + e.what());
-    }
-    std::vector<double> up(lines->harmonics()), ua(lines->harmonics());
-    rng::PhiloxStream(seed, index, rng::Stream::roughness_phase).uniform_open(up.data(), up.size());
-    rng::PhiloxStream(seed, index, rng::Stream::roughness_amplitude).uniform_open(ua.data(), ua.size());
-    lines->generate(up.data(), ua.data(), heights.data());
-  }
-  py::dict d;
-  const auto n = static_cast<py::ssize_t>(heights.size());
-  d["heights"] = to_numpy(std::move(heights), {n});
-  d["spacing"] = spacing;
-  std::vector<double> kj = lines->wavenumbers(), gj = lines->target_psd();
-  const auto h = static_cast<py::ssize_t>(kj.size());
-  d["wavenumber"] = to_numpy(std::move(kj), {h});
-  d["target_psd"] = to_numpy(std::move(gj), {h});
-  d["target_rms"] = std::sqrt(lines->target_variance());
-  d["period"] = lines->period();
-  d["seed"] = seed;
-  d["index"] = index;
-  return d;
+  return draw_line(self.psd, spacing, samples, seed, index, amplitudes, "spacing = " + io::number_text(spacing) + ": ");
 }
 
 py::dict isotropic(const ProfilePsd& self, double spacing, long long nx, const std::optional<long long>& ny_arg,
                    unsigned long long seed, unsigned long long index, const std::string& method,
                    const std::string& amplitudes, double anisotropy, const std::optional<double>& sigma_arg,
                    const std::optional<double>& cx_arg, const std::optional<double>& cy_arg) {
-  const double h = surface_key("spacing", spacing);
-  const std::size_t sx = even_side("nx", nx), sy = even_side("ny", ny_arg.value_or(nx));
-  const study::SurfaceMethod m = choice(study::kSurfaceMethods, "method", method);
-  const spectral::Amplitudes a = choice(study::kAmplitudes, "amplitudes", amplitudes);
-  surface_key("anisotropy", anisotropy);
   // Seed 001 §3.1, Eq. 10 (texture_io::with_profile_values): sigma and the correlation lengths the
   // keys leave unset are the profiles', a correlation length they never reach the key's default.
   static const auto keys = study::SurfaceSection::keys();
@@ -177,44 +122,17 @@ py::dict isotropic(const ProfilePsd& self, double spacing, long long nx, const s
     if (v) return surface_key(k, *v);
     return std::isfinite(profiles) ? profiles : key_default(key_spec(keys, "surface." + k));
   };
-  const double sigma = measured(sigma_arg, "sigma", self.estimate.sigma);
-  const double cx = measured(cx_arg, "correlation_x", self.estimate.correlation_length);
-  const double cy = measured(cy_arg, "correlation_y", self.estimate.correlation_length);
-  texture_io::SurfaceGenerator g;
-  texture::Surface out;
-  {
-    py::gil_scoped_release unlocked;
-    try {
-      if (m == study::SurfaceMethod::spectral) {
-        texture::SpectralSurfaceSpec spec;
-        spec.nx = sx, spec.ny = sy, spec.dx = spec.dy = h, spec.amplitudes = a, spec.anisotropy = anisotropy;
-        g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(self.psd, spec);
-      } else {
-        texture::SeedSurfaceRequest r;
-        r.nx = sx, r.ny = sy, r.dx = r.dy = h, r.amplitudes = a;
-        r.correlation_x = cx, r.correlation_y = cy, r.sigma = sigma;
-        g.seed = std::make_unique<texture::SeedSurfaceGenerator>(self.psd, r);
-      }
-    } catch (const std::exception& e) {
-      throw py::value_error("spacing = " + io::number_text(spacing) + ": " + e.what());
-    }
-    g.generate(seed, index, out);
+  IsotropicDraw k;
+  k.spacing = spacing, k.nx = nx, k.ny = ny_arg, k.seed = seed, k.index = index, k.method = method;
+  k.amplitudes = amplitudes, k.anisotropy = anisotropy;
+  k.sigma = measured(sigma_arg, "sigma", self.estimate.sigma);
+  k.correlation_x = measured(cx_arg, "correlation_x", self.estimate.correlation_length);
+  k.correlation_y = measured(cy_arg, "correlation_y", self.estimate.correlation_length);
+  py::dict d = draw_isotropic(self.psd, k, "spacing = " + io::number_text(spacing) + ": ");
+  if (!d.contains("target_rms")) {  // the seed method: the sigma and lengths it was given
+    d["sigma"] = k.sigma;
+    d["correlation"] = py::make_tuple(k.correlation_x, k.correlation_y);
   }
-  py::dict d;
-  d["heights"] = to_numpy(std::move(out.heights), {static_cast<py::ssize_t>(sy), static_cast<py::ssize_t>(sx)});
-  d["spacing"] = h;
-  d["method"] = method;
-  if (g.spectral) {
-    d["target_rms"] = std::sqrt(g.spectral->target_variance());
-  } else {
-    const texture::SeedBoxLengths& box = g.seed->box();
-    d["box"] = py::make_tuple(box.box_x, box.box_y);
-    d["expected_correlation"] = py::make_tuple(box.expected.x, box.expected.y);
-    d["sigma"] = sigma;
-    d["correlation"] = py::make_tuple(cx, cy);
-  }
-  d["seed"] = seed;
-  d["index"] = index;
   return d;
 }
 

@@ -8,6 +8,7 @@
 #include "kernels/texture/line_texture.hpp"
 #include "kernels/texture/tabulated_psd.hpp"
 #include "python/bindings.hpp"
+#include "python/surface_draws.hpp"
 #include "src/io/number_text.hpp"
 #include "src/rng/philox_stream.hpp"
 #include "src/study/sections/amplitudes_choice.hpp"
@@ -49,55 +50,16 @@ auto with_table_psd(const TablePsd& t, Make make) {
   }
 }
 
+// The table's PSD, its refusals (std::invalid_argument, std::domain_error) as ValueError.
+texture::Psd table_psd(const TablePsd& t) {
+  return with_table_psd(t, [](const texture::Psd& g) { return g; });
+}
+
 py::dict line(const py::handle& wavenumber, const py::handle& psd, double spacing, long long samples,
               unsigned long long seed, unsigned long long index, const std::string& amplitudes,
               const std::string& extension) {
   const TablePsd table = table_arrays(wavenumber, psd, extension);
-  if (!(spacing > 0.0) || !std::isfinite(spacing))
-    refuse("spacing", io::number_text(spacing), "not a spacing", "a finite number > 0 (m)");
-  if (samples < 8 || samples > (1LL << 26))
-    refuse("samples", std::to_string(samples), "out of range",
-           "a whole number in [8, 2^26] ([lines] length / spacing)");
-  texture::LineTextureSpec spec;
-  spec.spacing = spacing;
-  spec.samples = static_cast<std::size_t>(samples);
-  spec.amplitudes = choice(study::kAmplitudes, "amplitudes", amplitudes);
-  std::vector<double> heights(spec.samples);
-  const auto lines = with_table_psd(
-      table, [&](const texture::Psd& g) { return std::make_unique<texture::LineTextureGenerator>(g, spec); });
-  {
-    py::gil_scoped_release unlocked;
-    std::vector<double> up(lines->harmonics()), ua(lines->harmonics());
-    // `rollspec texture`'s streams for line `index` (cli/texture_command.cpp).
-    rng::PhiloxStream(seed, index, rng::Stream::roughness_phase).uniform_open(up.data(), up.size());
-    rng::PhiloxStream(seed, index, rng::Stream::roughness_amplitude).uniform_open(ua.data(), ua.size());
-    lines->generate(up.data(), ua.data(), heights.data());
-  }
-  py::dict d;
-  const auto n = static_cast<py::ssize_t>(heights.size());
-  d["heights"] = to_numpy(std::move(heights), {n});
-  d["spacing"] = spacing;
-  std::vector<double> kj = lines->wavenumbers(), gj = lines->target_psd();
-  const auto h = static_cast<py::ssize_t>(kj.size());
-  d["wavenumber"] = to_numpy(std::move(kj), {h});
-  d["target_psd"] = to_numpy(std::move(gj), {h});
-  d["target_rms"] = std::sqrt(lines->target_variance());
-  d["period"] = lines->period();
-  d["seed"] = seed;
-  d["index"] = index;
-  return d;
-}
-
-// [surface]'s key `name`, checked against its range as a study's value is (ValueError naming it).
-double surface_key(const std::string& name, double value) {
-  static const auto keys = study::SurfaceSection::keys();
-  return key_value(key_spec(keys, "surface." + name), value);
-}
-
-std::size_t even_side(const std::string& name, long long n) {
-  surface_key(name, static_cast<double>(n));
-  if (n % 2) refuse(name, std::to_string(n), "odd", "an even number of grid points ([surface] " + name + ")");
-  return static_cast<std::size_t>(n);
+  return draw_line(table_psd(table), spacing, samples, seed, index, amplitudes, "wavenumber, psd: ");
 }
 
 py::dict isotropic(const py::handle& wavenumber, const py::handle& psd, double spacing, long long nx,
@@ -105,48 +67,13 @@ py::dict isotropic(const py::handle& wavenumber, const py::handle& psd, double s
                    const std::string& method, const std::string& amplitudes, const std::string& extension,
                    double anisotropy, double sigma, double correlation_x, double correlation_y) {
   const TablePsd table = table_arrays(wavenumber, psd, extension);
-  const double h = surface_key("spacing", spacing);
-  const std::size_t sx = even_side("nx", nx), sy = even_side("ny", ny_arg.value_or(nx));
-  const study::SurfaceMethod m = choice(study::kSurfaceMethods, "method", method);
-  const spectral::Amplitudes a = choice(study::kAmplitudes, "amplitudes", amplitudes);
-  surface_key("anisotropy", anisotropy);
-  surface_key("sigma", sigma);
-  surface_key("correlation_x", correlation_x);
-  surface_key("correlation_y", correlation_y);
-  // The engine's generator, built as texture_io::surface_generator builds it from [surface], and drawing
-  // from the streams `rollspec texture` draws its surface `index` from (SurfaceGenerator::generate).
-  texture_io::SurfaceGenerator g;
-  texture::Surface out;
-  {
-    py::gil_scoped_release unlocked;  // FFTW's planner has its own lock
-    if (m == study::SurfaceMethod::spectral) {
-      texture::SpectralSurfaceSpec spec;
-      spec.nx = sx, spec.ny = sy, spec.dx = spec.dy = h, spec.amplitudes = a, spec.anisotropy = anisotropy;
-      g.spectral = with_table_psd(
-          table, [&](const texture::Psd& p) { return std::make_unique<texture::SpectralSurfaceGenerator>(p, spec); });
-    } else {
-      texture::SeedSurfaceRequest r;
-      r.nx = sx, r.ny = sy, r.dx = r.dy = h, r.amplitudes = a;
-      r.correlation_x = correlation_x, r.correlation_y = correlation_y, r.sigma = sigma;
-      g.seed = with_table_psd(
-          table, [&](const texture::Psd& p) { return std::make_unique<texture::SeedSurfaceGenerator>(p, r); });
-    }
-    g.generate(seed, index, out);
-  }
-  py::dict d;
-  d["heights"] = to_numpy(std::move(out.heights), {static_cast<py::ssize_t>(sy), static_cast<py::ssize_t>(sx)});
-  d["spacing"] = h;
-  d["method"] = method;
-  if (g.spectral) {
-    d["target_rms"] = std::sqrt(g.spectral->target_variance());
-  } else {
-    const texture::SeedBoxLengths& box = g.seed->box();
-    d["box"] = py::make_tuple(box.box_x, box.box_y);
-    d["expected_correlation"] = py::make_tuple(box.expected.x, box.expected.y);
-  }
-  d["seed"] = seed;
-  d["index"] = index;
-  return d;
+  IsotropicDraw k;
+  k.spacing = spacing, k.nx = nx, k.ny = ny_arg, k.seed = seed, k.index = index, k.method = method;
+  k.amplitudes = amplitudes, k.anisotropy = anisotropy;
+  k.sigma = surface_key("sigma", sigma);
+  k.correlation_x = surface_key("correlation_x", correlation_x);
+  k.correlation_y = surface_key("correlation_y", correlation_y);
+  return draw_isotropic(table_psd(table), k, "wavenumber, psd: ");
 }
 
 const char* const kLineDoc = R"(A line texture h(x_i), x_i = i * spacing, with a given one-sided PSD (D-3).
@@ -229,6 +156,104 @@ dict
 )";
 
 }  // namespace
+
+double surface_key(const std::string& name, double value) {
+  static const auto keys = study::SurfaceSection::keys();
+  return key_value(key_spec(keys, "surface." + name), value);
+}
+
+std::size_t even_side(const std::string& name, long long n) {
+  surface_key(name, static_cast<double>(n));
+  if (n % 2) refuse(name, std::to_string(n), "odd", "an even number of grid points ([surface] " + name + ")");
+  return static_cast<std::size_t>(n);
+}
+
+py::dict draw_line(const texture::Psd& psd, double spacing, long long samples, unsigned long long seed,
+                   unsigned long long index, const std::string& amplitudes, const std::string& refused_as) {
+  if (!(spacing > 0.0) || !std::isfinite(spacing))
+    refuse("spacing", io::number_text(spacing), "not a spacing", "a finite number > 0 (m)");
+  if (samples < 8 || samples > (1LL << 26))
+    refuse("samples", std::to_string(samples), "out of range",
+           "a whole number in [8, 2^26] ([lines] length / spacing)");
+  // `rollspec texture`'s generator: no harmonic above pi / spacing dropped (texture_command.cpp).
+  texture::LineTextureSpec spec;
+  spec.spacing = spacing;
+  spec.samples = static_cast<std::size_t>(samples);
+  spec.amplitudes = choice(study::kAmplitudes, "amplitudes", amplitudes);
+  spec.allow_truncation = false;
+  std::unique_ptr<texture::LineTextureGenerator> lines;
+  std::vector<double> heights(spec.samples);
+  {
+    py::gil_scoped_release unlocked;
+    try {
+      lines = std::make_unique<texture::LineTextureGenerator>(psd, spec);
+    } catch (const std::logic_error& e) {
+      throw py::value_error(refused_as + e.what());
+    }
+    std::vector<double> up(lines->harmonics()), ua(lines->harmonics());
+    // `rollspec texture`'s streams for line `index` (cli/texture_command.cpp).
+    rng::PhiloxStream(seed, index, rng::Stream::roughness_phase).uniform_open(up.data(), up.size());
+    rng::PhiloxStream(seed, index, rng::Stream::roughness_amplitude).uniform_open(ua.data(), ua.size());
+    lines->generate(up.data(), ua.data(), heights.data());
+  }
+  py::dict d;
+  const auto n = static_cast<py::ssize_t>(heights.size());
+  d["heights"] = to_numpy(std::move(heights), {n});
+  d["spacing"] = spacing;
+  std::vector<double> kj = lines->wavenumbers(), gj = lines->target_psd();
+  const auto h = static_cast<py::ssize_t>(kj.size());
+  d["wavenumber"] = to_numpy(std::move(kj), {h});
+  d["target_psd"] = to_numpy(std::move(gj), {h});
+  d["target_rms"] = std::sqrt(lines->target_variance());
+  d["period"] = lines->period();
+  d["seed"] = seed;
+  d["index"] = index;
+  return d;
+}
+
+py::dict draw_isotropic(const texture::Psd& psd, const IsotropicDraw& k, const std::string& refused_as) {
+  const double h = surface_key("spacing", k.spacing);
+  const std::size_t sx = even_side("nx", k.nx), sy = even_side("ny", k.ny.value_or(k.nx));
+  const study::SurfaceMethod m = choice(study::kSurfaceMethods, "method", k.method);
+  const spectral::Amplitudes a = choice(study::kAmplitudes, "amplitudes", k.amplitudes);
+  surface_key("anisotropy", k.anisotropy);
+  // The engine's generator, built as texture_io::surface_generator builds it from [surface], and drawing
+  // from the streams `rollspec texture` draws its surface `index` from (SurfaceGenerator::generate).
+  texture_io::SurfaceGenerator g;
+  texture::Surface out;
+  {
+    py::gil_scoped_release unlocked;  // FFTW's planner has its own lock
+    try {
+      if (m == study::SurfaceMethod::spectral) {
+        texture::SpectralSurfaceSpec spec;
+        spec.nx = sx, spec.ny = sy, spec.dx = spec.dy = h, spec.amplitudes = a, spec.anisotropy = k.anisotropy;
+        g.spectral = std::make_unique<texture::SpectralSurfaceGenerator>(psd, spec);
+      } else {
+        texture::SeedSurfaceRequest r;
+        r.nx = sx, r.ny = sy, r.dx = r.dy = h, r.amplitudes = a;
+        r.correlation_x = k.correlation_x, r.correlation_y = k.correlation_y, r.sigma = k.sigma;
+        g.seed = std::make_unique<texture::SeedSurfaceGenerator>(psd, r);
+      }
+    } catch (const std::logic_error& e) {
+      throw py::value_error(refused_as + e.what());
+    }
+    g.generate(k.seed, k.index, out);
+  }
+  py::dict d;
+  d["heights"] = to_numpy(std::move(out.heights), {static_cast<py::ssize_t>(sy), static_cast<py::ssize_t>(sx)});
+  d["spacing"] = h;
+  d["method"] = k.method;
+  if (g.spectral) {
+    d["target_rms"] = std::sqrt(g.spectral->target_variance());
+  } else {
+    const texture::SeedBoxLengths& box = g.seed->box();
+    d["box"] = py::make_tuple(box.box_x, box.box_y);
+    d["expected_correlation"] = py::make_tuple(box.expected.x, box.expected.y);
+  }
+  d["seed"] = k.seed;
+  d["index"] = k.index;
+  return d;
+}
 
 void bind_surfaces(py::module_& m) {
   using py::arg;
