@@ -1,4 +1,6 @@
 #pragma once
+#include <functional>
+#include <optional>
 // What the Python module's translation units share: their binders, numpy arrays in and out, and the
 // study keys whose names, defaults and ranges the module's options take (one table: the engine's).
 #include <pybind11/numpy.h>
@@ -22,6 +24,12 @@ void bind_contact(py::module_& m);
 void bind_surfaces(py::module_& m);
 void bind_studies(py::module_& m);
 void bind_compare(py::module_& m);
+void bind_fit(py::module_& m);
+
+// `work` (an engine call that may run ensembles) in a worker thread with the interpreter lock released, on
+// `threads` OpenMP threads (None: the process's); a Ctrl-C stops its ensembles between realisations as the
+// command's SIGINT does, and raises KeyboardInterrupt with the engine's line and `hint` (how to go on).
+void run_interruptible(const std::function<void()>& work, std::optional<int> threads, const std::string& hint);
 void bind_profiles(py::module_& surfaces);
 void bind_tables(py::module_& contact);
 

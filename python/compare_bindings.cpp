@@ -1,7 +1,8 @@
-// rollspec.studies.compare: a result against a measurement through the engine's own compare_result
-// (src/compare/comparison.hpp, what `rollspec compare` calls after reading its options), returned as the
-// object `rollspec compare --format json` prints (comparison_json.hpp), parsed by Python's json: the same
-// keys and values. The work runs with the interpreter lock released.
+// rollspec.studies.compare and fit: a result against a measurement through the engine's own compare_result
+// (src/compare/comparison.hpp, what `rollspec compare` calls after reading its options), and a study's keys
+// fitted to measurements through fit_study (src/fit/fit_study.hpp, what `rollspec fit` calls), each
+// returned as the object the command's `--format json` prints, parsed by Python's json: the same keys and
+// values. The work runs with the interpreter lock released; a fit's Ctrl-C is KeyboardInterrupt.
 #include <pybind11/stl/filesystem.h>
 
 #include <cmath>
@@ -13,6 +14,8 @@
 #include "python/bindings.hpp"
 #include "src/compare/comparison.hpp"
 #include "src/compare/comparison_json.hpp"
+#include "src/fit/fit_json.hpp"
+#include "src/fit/fit_study.hpp"
 
 namespace rollspec::python {
 
@@ -85,6 +88,42 @@ py::object compare_study(const std::filesystem::path& result, const py::object& 
   return py::module_::import("json").attr("loads")(text);
 }
 
+// --vary / --at / --set / --measured-averages: one value or a sequence of them.
+template <class T>
+std::vector<T> one_or_many(const py::handle& value) {
+  if (value.is_none()) return {};
+  if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) return {value.cast<T>()};
+  return value.cast<std::vector<T>>();
+}
+
+py::object fit_study(const std::filesystem::path& study, const py::object& measurements, const py::object& vary,
+                     const py::object& measured_averages, const py::object& at, const std::vector<std::string>& sets,
+                     const std::optional<std::string>& sensor, std::optional<double> measured_position,
+                     const std::optional<std::string>& column, double fmin, std::optional<double> fmax,
+                     const std::optional<std::filesystem::path>& journal, bool same_surface,
+                     std::optional<int> threads) {
+  if (threads && *threads < 1)
+    refuse("threads", std::to_string(*threads), "fewer than one",
+           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the fit does not depend on it");
+  fit::FitRequest q;
+  q.study = study.string();
+  q.measurements = path_list(measurements, "measurements");
+  q.vary = one_or_many<std::string>(vary);
+  q.averages = one_or_many<double>(measured_averages);
+  q.ats = one_or_many<std::string>(at);
+  q.sets = sets;
+  q.sensor = sensor.value_or(""), q.measured_position = measured_position, q.column = column.value_or("");
+  q.fmin = fmin, q.fmax = fmax.value_or(INFINITY);
+  q.journal = journal ? journal->string() : std::string();
+  q.same_surface = same_surface;
+  fit::FitOutcome answer;
+  run_interruptible([&] { answer = fit::fit_study(q); }, threads,
+                    " (in Python: give journal= to keep the evaluations, and the same call goes on from them)");
+  for (const auto& line : answer.warnings)  // the runs' warnings, which the command prints on stderr
+    if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
+  return py::module_::import("json").attr("loads")(fit::fit_json(answer.report));
+}
+
 }  // namespace
 
 void bind_compare(py::module_& m) {
@@ -123,6 +162,40 @@ The interpreter lock is released while the files are read and the verdict comput
 WARNING lines (a likely unit slip, bands left out, the result's loss of contact) are Python warnings
 (UserWarning) as well. Errors are the command's one line, naming the option as the command spells it:
 ValueError (a bad value or data), OSError (a file missing or unreadable).)");
+}
+
+void bind_fit(py::module_& m) {
+  m.def("fit", &fit_study, py::arg("study"), py::arg("measurements"), py::kw_only(), py::arg("vary"),
+        py::arg("measured_averages"), py::arg("at") = py::none(), py::arg("set") = std::vector<std::string>{},
+        py::arg("sensor") = py::none(), py::arg("measured_position") = py::none(), py::arg("column") = py::none(),
+        py::arg("fmin") = 0.0, py::arg("fmax") = py::none(), py::arg("journal") = py::none(),
+        py::arg("same_surface") = false, py::arg("threads") = py::none(),
+        R"(Fits 1 to 3 study keys to measured PSDs, as `rollspec fit STUDY MEASUREMENT --vary ... --format json`
+does, and returns the object that command prints (a dict, the same keys and values): each key's
+estimate and 95 % profile-likelihood interval, their correlation, the objective (common random numbers
+or a response surface, D-27d/D-27i), ln L, the combined test of the best fit corrected for the fitted
+keys (p_value) and uncorrected, per measurement point, and the number of study runs.
+
+study              the study file (INI)
+measurements       one PSD table or a list of them (as `rollspec compare` reads them), each at its `at`
+vary               "section.key=lo:hi" or "section.key=lo:hi:log" (log scale), or a list of 1 to 3
+measured_averages  M, the independent records averaged into the measurement: one for all, or a list
+at                 "section.key=value[,...]" per measurement: its operating point (None: one measurement)
+set                ["section.key=value", ...] for every run
+sensor             a sensor name, or K of sensor_K (None: sensor_mean if present, else the first)
+measured_position  m: the sensor nearest it (instead of sensor)
+column             the PSD column of the measurement tables
+fmin, fmax         Hz: the band edges fitted (fmax None: no upper edge)
+journal            a file recording every evaluation: a fit interrupted and called again with the same
+                   journal reruns none it finished
+same_surface       the measurement was taken on the very surface the model's table was built on (D-31)
+threads            OpenMP threads of the runs (None: OMP_NUM_THREADS, else every core); the answer does not
+                   depend on it
+
+The runs go on with the interpreter lock released. Ctrl-C stops the run in progress and raises
+KeyboardInterrupt (with journal=, the finished evaluations are kept). The runs' warnings (loss of contact,
+a band's heavy tail) are Python warnings (UserWarning). Errors are the command's one line: ValueError (a
+bad value or data), OSError (a file missing or unreadable).)");
 }
 
 }  // namespace rollspec::python

@@ -108,7 +108,8 @@ PYBIND11_MODULE(_core, m) {
       m.def_submodule("studies",
                       "Studies (a file, text or a dict: Study) planned and run in-process, with the command's "
                       "bits (plan, run), their results opened as xarray (open) and compared with a measurement "
-                      "(compare).");
+                      "(compare), and a study's keys fitted to measurements (fit).");
   rollspec::python::bind_studies(studies);
   rollspec::python::bind_compare(studies);
+  rollspec::python::bind_fit(studies);
 }

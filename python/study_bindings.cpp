@@ -130,24 +130,9 @@ Study study_of(const py::handle& study) {
   return Study{{study.cast<std::filesystem::path>().string(), {}, {}}, true};
 }
 
-std::string run_study(const py::object& study_arg, const std::optional<std::filesystem::path>& out,
-                      const py::object& set_arg, bool resume, bool restart, bool force, bool rebuild, bool quiet,
-                      std::optional<int> threads) {
-  if (threads && *threads < 1)
-    refuse("threads", std::to_string(*threads), "fewer than one",
-           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the result does not depend on it");
-  const Study study = study_of(study_arg);
-  if (!out && !study.named)
-    refuse("out", "None", "a study from text or a dict has no file name to name its result by",
-           "the result file's path (or the study's path=)");
-  run::RunRequest q;
-  q.study = study.args;
-  for (auto& s : set_texts(set_arg)) q.study.sets.push_back(std::move(s));
-  q.out = out ? out->string() : std::string();
-  q.resume = resume, q.restart = restart, q.force = force, q.rebuild = rebuild, q.quiet = quiet;
-  // The command's default: the study's name with .h5, in the current directory (resolve_run).
-  const std::string written = q.out.empty() ? std::filesystem::path(q.study.file).stem().string() + ".h5" : q.out;
+}  // namespace
 
+void run_interruptible(const std::function<void()>& work, std::optional<int> threads, const std::string& hint) {
   ensemble::clear_stop();
   std::exception_ptr error;
   std::atomic<bool> done{false};
@@ -157,7 +142,7 @@ std::string run_study(const py::object& study_arg, const std::optional<std::file
     std::thread worker([&] {
       try {
         if (threads) omp_set_num_threads(*threads);
-        run::run_request(q);
+        work();
       } catch (...) {
         error = std::current_exception();
       }
@@ -180,12 +165,35 @@ std::string run_study(const py::object& study_arg, const std::optional<std::file
       try {
         std::rethrow_exception(error);
       } catch (const UserError& u) {
-        PyErr_SetString(PyExc_KeyboardInterrupt, (std::string(u.what()) + " (in Python: resume=True)").c_str());
+        PyErr_SetString(PyExc_KeyboardInterrupt, (std::string(u.what()) + hint).c_str());
       }
     }
     throw py::error_already_set();  // the handler's exception (KeyboardInterrupt), or the one set above
   }
   if (error) std::rethrow_exception(error);
+}
+
+namespace {
+
+std::string run_study(const py::object& study_arg, const std::optional<std::filesystem::path>& out,
+                      const py::object& set_arg, bool resume, bool restart, bool force, bool rebuild, bool quiet,
+                      std::optional<int> threads) {
+  if (threads && *threads < 1)
+    refuse("threads", std::to_string(*threads), "fewer than one",
+           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the result does not depend on it");
+  const Study study = study_of(study_arg);
+  if (!out && !study.named)
+    refuse("out", "None", "a study from text or a dict has no file name to name its result by",
+           "the result file's path (or the study's path=)");
+  run::RunRequest q;
+  q.study = study.args;
+  for (auto& s : set_texts(set_arg)) q.study.sets.push_back(std::move(s));
+  q.out = out ? out->string() : std::string();
+  q.resume = resume, q.restart = restart, q.force = force, q.rebuild = rebuild, q.quiet = quiet;
+  // The command's default: the study's name with .h5, in the current directory (resolve_run).
+  const std::string written = q.out.empty() ? std::filesystem::path(q.study.file).stem().string() + ".h5" : q.out;
+
+  run_interruptible([&] { run::run_request(q); }, threads, " (in Python: resume=True)");
   return written;
 }
 

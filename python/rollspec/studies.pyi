@@ -61,3 +61,21 @@ def plan(study: Union[_Path, Study], *, set: _Sets = [], probe: bool = False) ->
 def open(path: _Path, group: None = None) -> Dict[str, xarray.Dataset]: ...
 @overload
 def open(path: _Path, group: str) -> xarray.Dataset: ...
+
+def fit(
+    study: _Path,
+    measurements: Union[_Path, Sequence[_Path]],
+    *,
+    vary: Union[str, Sequence[str]],
+    measured_averages: Union[float, Sequence[float]],
+    at: Optional[Union[str, Sequence[str]]] = None,
+    set: Sequence[str] = [],
+    sensor: Optional[str] = None,
+    measured_position: Optional[float] = None,
+    column: Optional[str] = None,
+    fmin: float = 0.0,
+    fmax: Optional[float] = None,
+    journal: Optional[_Path] = None,
+    same_surface: bool = False,
+    threads: Optional[int] = None,
+) -> Dict[str, Any]: ...

@@ -1,5 +1,5 @@
 #pragma once
-// The printed forms of a fit: text for people, json for programs.
+// The printed form of a fit for people (json for programs: src/fit/fit_json.hpp).
 #include <string>
 #include <vector>
 
@@ -13,6 +13,5 @@ using fit::FitPointReport;
 using fit::FitReport;
 
 std::string fit_text(const FitReport& r);
-std::string fit_json(const FitReport& r);
 
 }  // namespace rollspec::cli

@@ -1,4 +1,4 @@
-// fit --format json (cli/fit_report.cpp), written by nlohmann-json: what a program reading it gets back,
+// fit --format json (src/fit/fit_json.cpp), written by nlohmann-json: what a program reading it gets back,
 // for text a user gave (a path with a quote, a backslash, a control character, a byte that is not UTF-8)
 // and for numbers JSON cannot hold (NaN: null) or must keep whole (every digit of a double).
 #include <doctest/doctest.h>
@@ -8,16 +8,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "src/cli/fit_report.hpp"
+#include "src/fit/fit_json.hpp"
 
 using namespace rollspec;
 
 TEST_CASE("fit's JSON reads back as written: user text, full-precision numbers, null for NaN") {
-  cli::FitReport r;
+  fit::FitReport r;
   r.parameters.push_back({"force.level", 0.1 + 0.2, NAN, NAN, false, false});
   r.parameters.push_back({"oscillator.damping_ratio", 1.0 / 3.0, 0.25, 0.5, false, true});
   r.correlation = {1.0, -0.125, -0.125, 1.0};
-  cli::FitPointReport p;
+  fit::FitPointReport p;
   p.measurement = "rig \"A\"\\roll\t1\x01.csv";
   p.at = "oscillator.natural_frequency=50";
   p.records = 25.0;
@@ -26,7 +26,7 @@ TEST_CASE("fit's JSON reads back as written: user text, full-precision numbers, 
   r.log_likelihood = -12.345678901234567;
   r.realisations = 40;
   r.verdict = "not rejected";
-  const auto j = nlohmann::json::parse(cli::fit_json(r));
+  const auto j = nlohmann::json::parse(fit::fit_json(r));
   CHECK(j["points"][0]["measurement"] == p.measurement);
   CHECK(j["points"][0]["measured_averages"] == 25.0);
   CHECK(j["parameters"]["force.level"]["estimate"].get<double>() == 0.1 + 0.2);  // not rounded to 10 digits
@@ -38,5 +38,5 @@ TEST_CASE("fit's JSON reads back as written: user text, full-precision numbers, 
   CHECK(j["p_value"].is_null());  // r.test_defined is false
   // A path that is not UTF-8 is written with U+FFFD in place of the bad byte, not refused.
   r.points[0].measurement = "roll\xff.csv";
-  CHECK(nlohmann::json::parse(cli::fit_json(r))["points"][0]["measurement"] == "roll\xef\xbf\xbd.csv");
+  CHECK(nlohmann::json::parse(fit::fit_json(r))["points"][0]["measurement"] == "roll\xef\xbf\xbd.csv");
 }
