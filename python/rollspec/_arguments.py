@@ -89,7 +89,8 @@ def _refusal(qualname, function, args, kwargs):
         if name in given:
             problem = _problem(kind, given[name])
             if problem:
-                return f"{name} = {_text(given[name])}: {problem} ({_a(type(given[name]).__name__)}); allowed: {_a(kind)}"
+                what = _a(type(given[name]).__name__)
+                return f"{name} = {_text(given[name])}: {problem} ({what}); allowed: {_a(kind)}"
     for name, kind, _ in params:  # every type fits: a negative whole number for an unsigned one
         v = given.get(name)
         if "int" in kind and isinstance(v, numbers.Integral) and not isinstance(v, bool) and v < 0:
