@@ -39,6 +39,13 @@ void bind_tables(py::module_& contact);
 Array finite_array(const py::handle& value, const std::string& name, py::ssize_t ndim, py::ssize_t min_side,
                    const std::string& what);
 
+// The file name `value` (str, bytes or os.PathLike) as the C library takes it; a name with a NUL byte,
+// which the C library would read cut at the NUL (another file), is a ValueError naming `name`, another
+// type a TypeError.
+std::string file_name(const py::handle& value, const std::string& name);
+// `file` (a str argument pybind11 converted), refused as file_name refuses a NUL byte.
+const std::string& file_name(const std::string& file, const std::string& name);
+
 // A numpy array that owns `values` (moved, not copied), of the given shape.
 py::array_t<double> to_numpy(std::vector<double>&& values, const std::vector<py::ssize_t>& shape);
 

@@ -23,16 +23,14 @@ namespace {
 
 // A path (str or os.PathLike) or a sequence of them, as strings.
 std::vector<std::string> path_list(const py::handle& value, const std::string& name) {
-  const py::module_ os = py::module_::import("os");
-  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__"))
-    return {os.attr("fspath")(value).cast<std::string>()};
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) return {file_name(value, name)};
   std::vector<std::string> out;
   if (py::isinstance<py::sequence>(value))
     for (const auto& item : value.cast<py::sequence>()) {
       if (!py::isinstance<py::str>(item) && !py::hasattr(item, "__fspath__"))
         throw py::type_error(name + ": an item of type " + py::str(py::type::of(item)).cast<std::string>() +
                              "; allowed: a path (str or os.PathLike) or a sequence of paths");
-      out.push_back(os.attr("fspath")(item).cast<std::string>());
+      out.push_back(file_name(item, name));
     }
   else
     throw py::type_error(name + ": of type " + py::str(py::type::of(value)).cast<std::string>() +
@@ -44,7 +42,12 @@ std::vector<std::string> path_list(const py::handle& value, const std::string& n
 std::vector<std::string> column_list(const py::handle& value) {
   if (value.is_none()) return {};
   if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
-  return value.cast<std::vector<std::string>>();
+  try {
+    return value.cast<std::vector<std::string>>();
+  } catch (const py::cast_error&) {
+    throw py::type_error("column: " + py::repr(value).cast<std::string>() +
+                         "; allowed: a channel name or a sequence of names, or None");
+  }
 }
 
 py::object compare_study(const std::filesystem::path& result, const py::object& recordings,

@@ -33,6 +33,20 @@ Array finite_array(const py::handle& value, const std::string& name, py::ssize_t
   return a;
 }
 
+std::string file_name(const py::handle& value, const std::string& name) {
+  if (!py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value) && !py::hasattr(value, "__fspath__"))
+    throw py::type_error(name + ": " + py::repr(value).cast<std::string>() + " of type " +
+                         py::type::of(value).attr("__name__").cast<std::string>() +
+                         "; allowed: a file name (str, bytes or os.PathLike)");
+  return file_name(py::module_::import("os").attr("fsdecode")(value).cast<std::string>(), name);
+}
+
+const std::string& file_name(const std::string& file, const std::string& name) {
+  if (file.find('\0') != std::string::npos)
+    throw py::value_error(name + ": a name with an embedded null byte; allowed: a file name");
+  return file;
+}
+
 py::array_t<double> to_numpy(std::vector<double>&& values, const std::vector<py::ssize_t>& shape) {
   auto* owned = new std::vector<double>(std::move(values));
   py::capsule free_when_done(owned, [](void* v) { delete static_cast<std::vector<double>*>(v); });

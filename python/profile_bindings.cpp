@@ -85,12 +85,12 @@ ProfilePsd from_files(const std::vector<std::string>& paths, bool median_filter,
   if (paths.empty())
     refuse("paths", "[]", "names no profile file", "one or more CSV files (position_m,height_m), each a whole scan");
   std::vector<texture::Profile> profiles;
-  for (const auto& p : paths) profiles.push_back(texture_io::read_profile(p));
+  for (const auto& p : paths) profiles.push_back(texture_io::read_profile(file_name(p, "paths")));
   return estimate(profiles, median_filter, extension, short_wavelength, "profiles");
 }
 
 py::dict read_one(const std::string& path) {
-  texture::Profile p = texture_io::read_profile(path);
+  texture::Profile p = texture_io::read_profile(file_name(path, "path"));
   py::dict d;
   const auto n = static_cast<py::ssize_t>(p.x.size());
   d["spacing"] = (p.x.back() - p.x.front()) / static_cast<double>(p.x.size() - 1);  // the estimator's dx

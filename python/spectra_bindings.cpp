@@ -174,9 +174,7 @@ const char* origin_name(io::UnitOrigin origin) {
 py::dict read_measurement(const py::object& path, const py::object& column, const py::object& unit,
                           const py::object& time_column, const py::object& fs, const py::object& scale,
                           const py::object& skip_rows) {
-  const auto file = py::module_::import("os").attr("fsdecode")(path).cast<std::string>();
-  if (file.find('\0') != std::string::npos)  // the C library would open the name cut at it: another file
-    throw py::value_error("path: a name with an embedded null byte; allowed: a file name");
+  const std::string file = file_name(path, "path");
   io::SignalOptions o;
   o.fs = optional_arg<double>(fs, "fs", "a sample rate (Hz)");
   o.columns = column_names(column);

@@ -88,7 +88,15 @@ std::vector<std::string> set_texts(const py::handle& sets) {
   if (py::isinstance<py::str>(sets))
     refuse("set", py::repr(sets).cast<std::string>(), "is one string",
            "a list [\"section.key=value\", ...] or a dict {\"section.key\": value}");
-  for (const auto& x : sets) out.push_back(x.cast<std::string>());
+  const std::string allowed = "a list [\"section.key=value\", ...] or a dict {\"section.key\": value}";
+  if (!py::isinstance<py::iterable>(sets))
+    throw py::type_error("set: " + py::repr(sets).cast<std::string>() + " of type " +
+                         py::type::of(sets).attr("__name__").cast<std::string>() + "; allowed: " + allowed);
+  for (const auto& x : sets) {
+    if (!py::isinstance<py::str>(x))
+      throw py::type_error("set: an item " + py::repr(x).cast<std::string>() + "; allowed: " + allowed);
+    out.push_back(x.cast<std::string>());
+  }
   return out;
 }
 
@@ -127,7 +135,7 @@ Study study_of(const py::handle& study) {
   if (!py::isinstance<py::str>(study) && !py::hasattr(study, "__fspath__"))
     throw py::type_error("study: " + py::repr(study).cast<std::string>() +
                          "; allowed: a study file's path, or a rollspec.studies.Study (from_text, from_dict)");
-  return Study{{study.cast<std::filesystem::path>().string(), {}, {}}, true};
+  return Study{{file_name(study, "study"), {}, {}}, true};
 }
 
 }  // namespace

@@ -98,6 +98,7 @@ void describe(Table& t) {
 }
 
 std::unique_ptr<Table> read(const std::string& path) {
+  file_name(path, "path");
   using namespace stiffness;
   struct Known {
     const TableKind* kind;
@@ -156,7 +157,7 @@ std::unique_ptr<Table> stiffness_table(const py::object& study_path, const std::
     refuse("threads", std::to_string(*threads), "fewer than one",
            "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the table does not depend on it");
   run::StudyArgs args;
-  args.file = py::str(study_path).cast<std::string>();
+  args.file = file_name(study_path, "study");
   args.sets = sets;
   const study::Study s = run::resolve_study(args);
   run::StudyStiffnessTable answer;

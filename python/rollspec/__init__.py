@@ -13,7 +13,12 @@ SI units throughout; help(rollspec.contact.solve) and the others say each argume
 """
 import sys as _sys
 
+from rollspec._arguments import wrap_module as _wrap_module
 from rollspec._core import __version__, contact, spectra, studies, surfaces
+
+# An argument pybind11 cannot convert is a TypeError of one line naming it, as the module's other errors.
+for _name, _module in (("contact", contact), ("spectra", spectra), ("studies", studies), ("surfaces", surfaces)):
+    _wrap_module(_module, "rollspec." + _name)
 
 # `import rollspec.contact` and `from rollspec.spectra import welch` as for any package's modules.
 

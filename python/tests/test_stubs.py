@@ -24,6 +24,7 @@ def parameters(function):
 
 
 def module_signature(function):
+    function = getattr(function, "__wrapped__", function)  # rollspec._arguments.wrap's call: the function's own
     if inspect.isfunction(function):  # a function of the package's Python (rollspec.studies.open)
         return [(p.name, p.kind == p.KEYWORD_ONLY, None if p.default is p.empty else p.default)
                 for p in inspect.signature(function).parameters.values()]
