@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "python/bindings.hpp"
@@ -91,12 +92,25 @@ py::object compare_study(const std::filesystem::path& result, const py::object& 
   return py::module_::import("json").attr("loads")(text);
 }
 
-// --vary / --at / --set / --measured-averages: one value or a sequence of them.
+// --vary / --at / --measured-averages: one value or a sequence of them, each a str (T = std::string) or a
+// real number (T = double); another type is a TypeError naming the argument.
 template <class T>
-std::vector<T> one_or_many(const py::handle& value) {
+std::vector<T> one_or_many(const py::handle& value, const std::string& name) {
+  constexpr bool text = std::is_same_v<T, std::string>;
+  const auto item = [&](const py::handle& v) {
+    const bool ok = text ? py::isinstance<py::str>(v)
+                         : !py::isinstance<py::str>(v) && !py::isinstance<py::bool_>(v) && PyNumber_Check(v.ptr());
+    if (!ok)
+      throw py::type_error(name + ": " + py::repr(v).cast<std::string>() + " of type " +
+                           py::type::of(v).attr("__name__").cast<std::string>() +
+                           "; allowed: " + (text ? "a str or a sequence of them" : "a number or a sequence of them"));
+    return v.cast<T>();
+  };
   if (value.is_none()) return {};
-  if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) return {value.cast<T>()};
-  return value.cast<std::vector<T>>();
+  if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) return {item(value)};
+  std::vector<T> out;
+  for (const auto& v : value.cast<py::sequence>()) out.push_back(item(v));
+  return out;
 }
 
 py::object fit_study(const std::filesystem::path& study, const py::object& measurements, const py::object& vary,
@@ -111,9 +125,9 @@ py::object fit_study(const std::filesystem::path& study, const py::object& measu
   fit::FitRequest q;
   q.study = study.string();
   q.measurements = path_list(measurements, "measurements");
-  q.vary = one_or_many<std::string>(vary);
-  q.averages = one_or_many<double>(measured_averages);
-  q.ats = one_or_many<std::string>(at);
+  q.vary = one_or_many<std::string>(vary, "vary");
+  q.averages = one_or_many<double>(measured_averages, "measured_averages");
+  q.ats = one_or_many<std::string>(at, "at");
   q.sets = sets;
   q.sensor = sensor.value_or(""), q.measured_position = measured_position, q.column = column.value_or("");
   q.fmin = fmin, q.fmax = fmax.value_or(INFINITY);

@@ -182,7 +182,7 @@ SAMPLES = {
     "studies.compare": lambda i: ((i.result, i.psd_table), dict(measured_averages=16)),
     # A narrow range and few runs: a hostile value the fit accepts runs a whole fit.
     "studies.fit": lambda i: ((i.oscillator, i.psd_table), dict(vary="force.level=0.5:2", measured_averages=16,
-                                                                set=FAST)),
+                                                                set=FAST + ["study.realisations=16"])),
     "studies.open": lambda i: ((i.result,), dict(group="psd")),
     "surfaces.line": lambda i: (table_psd() + (1e-6, 256), dict(seed=7, extension="zero")),
     "surfaces.isotropic": lambda i: (table_psd() + (2e-6, 16), dict(seed=7, extension="zero")),
@@ -273,6 +273,9 @@ def other_cases(annotation):
     if t.startswith("Mapping"):
         return [("wrong type", 3), ("unknown section", {"no_such": {"key": 1}}), ("not a dict", {"study": 3}),
                 ("a line break", {"study": {"description": "a\nb"}})]
+    if "Sequence[float]" in t:  # measured_averages: one count or one per measurement
+        return [("wrong type", "one"), ("NaN", float("nan")), ("0", 0.0), ("a list with NaN", [float("nan")]),
+                ("a list of words", ["one"])]
     if "Sequence[str]" in t:  # column: a name or names
         return [("wrong type", 3), ("unknown name", "no-such-column"), ("a list of numbers", [1, 2])]
     if t.startswith("Union") and "Study" in t:
