@@ -3,11 +3,12 @@
 // through the Python module. Same work as the binding's: the gap copied into the solver's vector, a
 // ContactSolver made, solve(), the loaded gap g = s - w + C p (D-7); the options given as the binding
 // passes them (hardness <= 0: none, as [stiffness] reads it). One untimed solve first (the Python side
-// is warmed up the same way), then one timed: wall seconds of that solve only.
+// is warmed up the same way), then REPEATS timed: wall seconds of each solve only.
 //
-// Usage: bench_contact_solve GAP NX NY DX E_STAR APPROACH HARDNESS TOLERANCE MAX_ITERATIONS STIFFNESS
+// Usage: bench_contact_solve GAP NX NY DX E_STAR APPROACH HARDNESS TOLERANCE MAX_ITERATIONS STIFFNESS REPEATS
 //   GAP: ny x nx float64 values, row-major, native byte order (numpy's tofile). STIFFNESS: 0 or 1.
-// Prints one line: seconds=S force=F iterations=N converged=C (F in C99 hex, bit for bit).
+// Prints one line: seconds=S1,S2,... force=F iterations=N converged=C (F in C99 hex, bit for bit; the
+// last solve's, each repeat's the same or it says so on stderr and exits 70).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -56,8 +57,10 @@ Solved solve_once(const std::vector<double>& gap, const Grid& grid, double e_sta
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 11)
-    usage("usage: bench_contact_solve GAP NX NY DX E_STAR APPROACH HARDNESS TOLERANCE MAX_ITERATIONS STIFFNESS");
+  if (argc != 12)
+    usage(
+        "usage: bench_contact_solve GAP NX NY DX E_STAR APPROACH HARDNESS TOLERANCE MAX_ITERATIONS STIFFNESS "
+        "REPEATS");
   Grid grid;
   grid.nx = static_cast<std::size_t>(number(argv[2], "NX"));
   grid.ny = static_cast<std::size_t>(number(argv[3], "NY"));
@@ -69,14 +72,27 @@ int main(int argc, char** argv) {
   options.tolerance = number(argv[8], "TOLERANCE");
   options.max_iterations = static_cast<int>(number(argv[9], "MAX_ITERATIONS"));
   options.compute_stiffness = number(argv[10], "STIFFNESS") != 0.0;
+  const int repeats = static_cast<int>(number(argv[11], "REPEATS"));
+  if (repeats < 1) usage("REPEATS must be >= 1");
   std::vector<double> gap(grid.size());
   std::ifstream in(argv[1], std::ios::binary);
   if (!in.read(reinterpret_cast<char*>(gap.data()), static_cast<std::streamsize>(gap.size() * sizeof(double))) ||
       in.peek() != std::char_traits<char>::eof())
     usage(std::string("GAP '") + argv[1] + "': not " + std::to_string(gap.size()) + " float64 values");
-  solve_once(gap, grid, e_star, approach, options);  // warm-up, untimed
-  const Solved s = solve_once(gap, grid, e_star, approach, options);
-  std::printf("seconds=%.9f force=%a iterations=%d converged=%d\n", s.seconds, s.result.force, s.result.iterations,
-              s.result.converged ? 1 : 0);
+  const Solved first = solve_once(gap, grid, e_star, approach, options);  // warm-up, untimed
+  std::string seconds;
+  for (int r = 0; r < repeats; ++r) {
+    const Solved s = solve_once(gap, grid, e_star, approach, options);
+    if (s.result.force != first.result.force) {
+      std::fprintf(stderr, "bench_contact_solve: error: repeat %d gave force %a, the first %a\n", r + 1, s.result.force,
+                   first.result.force);
+      return 70;
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%s%.9f", r ? "," : "", s.seconds);
+    seconds += text;
+  }
+  std::printf("seconds=%s force=%a iterations=%d converged=%d\n", seconds.c_str(), first.result.force,
+              first.result.iterations, first.result.converged ? 1 : 0);
   return 0;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The Python module's cost against C++ and the command, measured interleaved in one run (issue 52).
 
-usage: bench_python_module.py [--bin B] [--rounds R] [--realisations K] [--contact-threads T,...]
+usage: bench_python_module.py [--bin B] [--rounds R] [--repeats M] [--realisations K] [--contact-threads T,...]
                               [--study-threads N] [--study STUDY] [--record FILE]
 
 1. Contact: one solve on a 512 x 512 gap map (a 20 mm ball, rollspec.contact.ball_gap, on an isotropic
@@ -10,14 +10,15 @@ usage: bench_python_module.py [--bin B] [--rounds R] [--realisations K] [--conta
    tolerance, max_iterations and stiffness) and elastic-plastic (hardness 5 GPa), (A) through
    rollspec.contact.solve in a Python process, (B) by bench/contact/bench_contact_solve, the same solve
    the binding makes, in C++, with the same options. Each side is a fresh process per round on
-   OMP_NUM_THREADS = T that reads the gap map, solves once untimed, then times one solve: the Python call
+   OMP_NUM_THREADS = T that reads the gap map, solves once untimed, then times M solves: the Python call
    (A), the solve from the gap's copy to the loaded gap (B). Their forces must agree bit for bit.
 2. Study: STUDY (default studies/seed002-rig-1ms.ini) at study.realisations = K, (A)
    rollspec.studies.run(..., quiet=True, threads=N) in this process, (B) `rollspec run ... --quiet` as a
    subprocess on OMP_NUM_THREADS = N; the whole call timed. The two result files must hold the same
    datasets bit for bit (but /run/wall_seconds and /run/reduce_seconds).
 A and B alternate in each round, which goes first alternating with the round, so drift of the shared
-machine falls on both; medians, min and max over R rounds, and the ratio of the medians A / B.
+machine falls on both; medians, min and max over the R rounds (R x M solves), the ratio of the medians
+A / B (the goal's figure) and that of the minima (the least disturbed solve of each side).
 The module is the one beside the binary (BINDIR/python), the C++ solve BINDIR/bench/contact/.
 Writes bench/records/python-module.json (or --record) through the bench record writer.
 """
@@ -67,26 +68,31 @@ def import_module(folder):
 
 
 def solve_in_python(a):
-    """The worker of side A (a process of its own): solve once untimed, then time one call."""
+    """The worker of side A (a process of its own): solve once untimed, then time `repeats` calls."""
     import numpy as np
     rollspec = import_module(a.module)
     gap = np.fromfile(a.python_solve, dtype=np.float64).reshape(N, N)
     extra = {} if a.hardness is None else {"hardness": a.hardness}
-    rollspec.contact.solve(gap, DX, e_star=E_STAR, approach=a.approach, **extra)
-    t0 = time.perf_counter()
-    r = rollspec.contact.solve(gap, DX, e_star=E_STAR, approach=a.approach, **extra)
-    seconds = time.perf_counter() - t0
-    print(f"seconds={seconds:.9f} force={float(r['force']).hex()} iterations={r['iterations']} "
-          f"converged={int(r['converged'])}", flush=True)
+    first = rollspec.contact.solve(gap, DX, e_star=E_STAR, approach=a.approach, **extra)
+    seconds = []
+    for _ in range(a.repeats):
+        t0 = time.perf_counter()
+        r = rollspec.contact.solve(gap, DX, e_star=E_STAR, approach=a.approach, **extra)
+        seconds.append(time.perf_counter() - t0)
+        if r["force"] != first["force"]:
+            fail(f"a repeat gave force {r['force'].hex()}, the first {first['force'].hex()}", EX_SOFTWARE)
+    print(f"seconds={','.join(f'{x:.9f}' for x in seconds)} force={float(first['force']).hex()} "
+          f"iterations={first['iterations']} converged={int(first['converged'])}", flush=True)
     return 0
 
 
 def parse_solve(text, who):
-    m = re.fullmatch(r"seconds=(\S+) force=(\S+) iterations=(\d+) converged=([01])\s*", text)
+    m = re.fullmatch(r"seconds=([0-9.,]+) force=(\S+) iterations=(\d+) converged=([01])\s*", text)
     if not m:
-        fail(f"{who} printed '{text.strip()[:200]}', not 'seconds=S force=F iterations=N converged=C'", EX_SOFTWARE)
-    return {"seconds": float(m.group(1)), "force": float.fromhex(m.group(2)), "iterations": int(m.group(3)),
-            "converged": m.group(4) == "1"}
+        fail(f"{who} printed '{text.strip()[:200]}', not 'seconds=S,... force=F iterations=N converged=C'",
+             EX_SOFTWARE)
+    return {"seconds": [float(x) for x in m.group(1).split(",")], "force": float.fromhex(m.group(2)),
+            "iterations": int(m.group(3)), "converged": m.group(4) == "1"}
 
 
 def run_side(argv, threads, who):
@@ -142,14 +148,16 @@ def row(case, threads, a, b, against):
     ma, lo_a, hi_a = spread(a)
     mb, lo_b, hi_b = spread(b)
     ratio = ma / mb
-    return [case, threads, round(ma, 4), f"{lo_a:.4f} .. {hi_a:.4f}", against, round(mb, 4),
-            f"{lo_b:.4f} .. {hi_b:.4f}", round(ratio, 4), f"<= {GOAL}", "yes" if ratio <= GOAL else "no"]
+    return [case, threads, len(a), round(ma, 4), f"{lo_a:.4f} .. {hi_a:.4f}", against, round(mb, 4),
+            f"{lo_b:.4f} .. {hi_b:.4f}", round(ratio, 4), round(lo_a / lo_b, 4), f"<= {GOAL}",
+            "yes" if ratio <= GOAL else "no"]
 
 
 def main():
     p = Parser(description=__doc__.splitlines()[0])
     p.add_argument("--bin", default=os.environ.get("ROLLSPEC_BIN", str(ROOT / "build" / "werror" / "rollspec")))
     p.add_argument("--rounds", type=int, default=7, help="R interleaved rounds (default 7)")
+    p.add_argument("--repeats", type=int, default=3, help="M timed contact solves per process (default 3)")
     p.add_argument("--realisations", type=int, default=1000, help="K of the study (default 1000)")
     p.add_argument("--contact-threads", default="2,1", help="OMP_NUM_THREADS of the contact rows (default 2,1)")
     p.add_argument("--study-threads", type=int, default=2, help="threads of the study runs (default 2)")
@@ -168,9 +176,9 @@ def main():
         threads = []
     if not threads or min(threads) < 1:
         fail(f"--contact-threads {a.contact_threads}: allowed: whole numbers >= 1, comma-separated", EX_USAGE)
-    if a.rounds < 1 or a.realisations < 2 or a.study_threads < 1:
-        fail(f"--rounds {a.rounds} --realisations {a.realisations} --study-threads {a.study_threads}: allowed: "
-             "R >= 1, K >= 2, N >= 1", EX_USAGE)
+    if a.rounds < 1 or a.repeats < 1 or a.realisations < 2 or a.study_threads < 1:
+        fail(f"--rounds {a.rounds} --repeats {a.repeats} --realisations {a.realisations} --study-threads "
+             f"{a.study_threads}: allowed: R >= 1, M >= 1, K >= 2, N >= 1", EX_USAGE)
     a.bin = os.path.abspath(require_program(a.bin, "--bin"))
     bindir = Path(a.bin).parent
     a.solver = require_program(str(bindir / "bench" / "contact" / "bench_contact_solve"), "the C++ solve")
@@ -210,15 +218,15 @@ def measure(a, threads, work):
                 for side in order:
                     if side == "A":
                         argv = [sys.executable, __file__, "--python-solve", str(gap), "--module", str(a.module),
-                                "--approach", repr(approach)]
+                                "--approach", repr(approach), "--repeats", str(a.repeats)]
                         argv += [] if python_hardness is None else ["--hardness", repr(python_hardness)]
                         got = run_side(argv, t, "the Python solve")
                     else:
                         argv = [a.solver, str(gap), str(N), str(N), repr(DX), repr(E_STAR), repr(approach),
                                 repr(hardness), repr(defaults["tolerance"]), str(defaults["max_iterations"]),
-                                str(int(defaults["stiffness"]))]
+                                str(int(defaults["stiffness"])), str(a.repeats)]
                         got = run_side(argv, t, "bench_contact_solve")
-                    times[(name, t, side)].append(got["seconds"])
+                    times[(name, t, side)] += got["seconds"]
                     forces.setdefault(name, {}).setdefault(side, set()).add(got["force"])
                     iterations.setdefault(name, set()).add(got["iterations"])
                     if not got["converged"]:
@@ -260,7 +268,7 @@ def measure(a, threads, work):
                 f"{defaults['hardness']:g}, tolerance {defaults['tolerance']:g}, max_iterations "
                 f"{defaults['max_iterations']}, stiffness {defaults['stiffness']}) and hardness {HARDNESS / 1e9:g} "
                 "GPa for the elastic-plastic row; each side a fresh process per round that solves once untimed and "
-                "times one solve (the Python call; the C++ solve from the gap's copy to the loaded gap), "
+                f"times {a.repeats} solves (the Python call; the C++ solve from the gap's copy to the loaded gap), "
                 "OMP_NUM_THREADS as the threads column. Study: the whole call, rollspec.studies.run(quiet=True, "
                 f"threads={a.study_threads}) in the bench's process against the command as a subprocess on "
                 f"OMP_NUM_THREADS={a.study_threads}. The whole bench took {wall / 60:.1f} min wall.")
@@ -278,8 +286,9 @@ def measure(a, threads, work):
         argv=sys.argv, builds={"rollspec": {"description": "the build measured, its python/ module and "
                                                            "bench/contact/bench_contact_solve",
                                             "version": bench_record.build_version(a.bin)}},
-        settings=settings, columns=["case", "threads", "Python (A) median s", "A min .. max s", "against (B)",
-                                    "B median s", "B min .. max s", "A / B", "goal", "met"],
+        settings=settings, columns=["case", "threads", "timings per side", "Python (A) median s", "A min .. max s",
+                                    "against (B)", "B median s", "B min .. max s", "A / B medians",
+                                    "A / B minima", "goal (medians)", "met"],
         rows=rows, notes=notes, data=data, other_cores=other)
     for r in rows:
         print(" | ".join(str(c) for c in r))
