@@ -50,6 +50,8 @@ if [ -e "$out" ]; then
   done
 fi
 python=/usr/bin/python3
+module="$(dirname "$bin")/python"   # the module rollspec built beside the binary: the gallery and the Python reference use it
+[ ! -d "$module/rollspec" ] || export PYTHONPATH="$module${PYTHONPATH:+:$PYTHONPATH}"
 export PYTHONDONTWRITEBYTECODE=1   # nothing written into the sources (docs/, bench/)
 mkdir -p -- "$out" || fail 73 "cannot create BUILD_DIR $out"
 touch -- "$marker" || fail 73 "cannot write $marker"

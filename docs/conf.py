@@ -1,6 +1,7 @@
 """Sphinx configuration of the rollspec documentation. Built by `bash docs/build.sh [BUILD_DIR]`, which
 copies docs/ into BUILD_DIR/src, links the repository as `_repo` beside it, writes the generated
 reference into reference/generated/ and runs sphinx-build -W."""
+import inspect
 import os
 import sys
 from pathlib import Path
@@ -39,3 +40,21 @@ autodoc_member_order = "bysource"
 autodoc_mock_imports = []
 # The kernel notes are written for GitHub: they start at '##' under the page title and skip levels.
 suppress_warnings = ["myst.header"]
+
+
+def module_docstring_as_help_shows_it(app, what, name, obj, options, lines):
+    """The module rollspec's docstrings are written for help(): the reference shows them as they read
+    there (a literal block), not parsed as reStructuredText. Runs after napoleon (priority 900), from
+    the object's own docstring; a pybind11 function's first line, its signature, is autodoc's."""
+    if not (name == "rollspec" or name.startswith("rollspec.")):
+        return
+    text = inspect.getdoc(obj) or ""
+    short = name.rsplit(".", 1)[-1]
+    if text.startswith(short + "("):  # pybind11's signature line, which autodoc shows as the signature
+        text = text.split("\n", 1)[1] if "\n" in text else ""
+    body = text.strip("\n").splitlines()
+    lines[:] = ["::", ""] + ["    " + line for line in body] + [""] if body else []
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", module_docstring_as_help_shows_it, priority=900)

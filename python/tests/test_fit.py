@@ -4,7 +4,10 @@ request raises the command's one-line message before any run."""
 import json
 import os
 import shutil
+import signal
 import subprocess
+import threading
+import time
 
 import h5py
 import numpy as np
@@ -73,3 +76,38 @@ def test_a_bad_request_is_the_commands_line(measured, tmp_path):
         studies.fit(tmp_path / "none.ini", csv, vary="force.level=1:2", measured_averages=RECORDS)
     with pytest.raises(ValueError, match="threads"):
         studies.fit(study, csv, vary="force.level=1:2", measured_averages=RECORDS, threads=0)
+
+
+def test_ctrl_c_stops_a_fit_and_its_journal_resumes_it(measured, command_json, tmp_path):
+    # Ctrl-C in the Python session (SIGINT to this process) once the journal holds two evaluations:
+    # KeyboardInterrupt naming the journal; called again with it, the fit reruns none it finished and
+    # gives the uninterrupted fit's answer.
+    study, csv = measured
+    journal = tmp_path / "fit.journal"
+    sent = []
+
+    def interrupt_after_two_evaluations():
+        deadline = time.monotonic() + 120.0
+        while time.monotonic() < deadline:
+            if journal.exists() and len(journal.read_text().splitlines()) >= 3:  # the key and 2 evaluations
+                sent.append(time.monotonic())
+                os.kill(os.getpid(), signal.SIGINT)
+                return
+            time.sleep(0.002)
+
+    watcher = threading.Thread(target=interrupt_after_two_evaluations)
+    watcher.start()
+    with pytest.raises(KeyboardInterrupt, match="journal"):
+        studies.fit(study, csv, vary="force.level=0.1:10:log", measured_averages=RECORDS, set=SETS,
+                    journal=journal, threads=2)
+    stopped = time.monotonic()
+    watcher.join()
+    assert sent, "the fit ended before its journal held two evaluations"
+    print("Ctrl-C to KeyboardInterrupt: %.3f s" % (stopped - sent[0]))
+    done = len(journal.read_text().splitlines()) - 1
+    assert done >= 2
+    resumed = studies.fit(study, csv, vary="force.level=0.1:10:log", measured_averages=RECORDS, set=SETS,
+                          journal=journal, threads=1)
+    assert resumed["reused_from_journal"] == done
+    assert resumed["evaluations"] == command_json["evaluations"] - done
+    assert resumed["parameters"] == command_json["parameters"]

@@ -7,6 +7,7 @@ profiles` accepts). Only the AFM map (binary) is scaled: its integer counts time
     /usr/bin/python3 make_measured_profiles.py DIR   # DIR holds the files named in SOURCES
 """
 import decimal
+import io
 import os
 import pathlib
 import re
@@ -61,17 +62,29 @@ def mitutoyo(path):
     return "position_m,height_um", rows
 
 
-def wsxm_rows(path, every=16):
-    """WSxM AFM map (600 nm square, 256 x 256 int16): every 16th row along the fast scan axis, heights
+def wsxm_heights(path):
+    """WSxM AFM map (600 nm square, 256 x 256 int16): heights in metres, rows along the fast scan axis,
     = counts * Z Amplitude / (Maximum - Minimum) as SurfaceTopography scales them."""
     data = path.read_bytes()
     header = data[:2245].decode("latin-1")
     value = lambda key: float(re.search(key + r":\s*([-0-9.eE+]+)", header).group(1))
     scale = value("Z Amplitude") * 1e-9 / (value("Maximum") - value("Minimum"))
     counts = np.frombuffer(data[2245:2245 + 2 * 256 * 256], dtype="<i2").reshape(256, 256)
+    return counts.astype("<f8") * scale
+
+
+def wsxm_rows(path, every=16):
+    """Every 16th row of the map as a profile (pixel 600 nm / 256), heights to 6 significant digits."""
     dx = 600e-9 / 256
-    for row in range(0, 256, every):
-        yield row, "position_m,height_m", [(repr(i * dx), f"{c * scale:.6g}") for i, c in enumerate(counts[row])]
+    for row, heights in list(enumerate(wsxm_heights(path)))[::every]:
+        yield row, "position_m,height_m", [(repr(i * dx), f"{h:.6g}") for i, h in enumerate(heights)]
+
+
+def wsxm_map(path):
+    """The map whole, as a .npy that numpy.load reads (float64, metres)."""
+    out = io.BytesIO()
+    np.save(out, wsxm_heights(path))
+    return out.getvalue()
 
 
 def text_of(header, rows):
@@ -87,9 +100,10 @@ def main(src):
     outputs = {f"{name}.csv": text_of(*reader(src / file)) for name, reader, file in SOURCES}
     for row, header, rows in wsxm_rows(src / "top-1.top"):
         outputs[f"top-1-rows/row-{row:03d}.csv"] = text_of(header, rows)
+    outputs["top-1-map.npy"] = wsxm_map(src / "top-1.top")
     (HERE / "top-1-rows").mkdir(exist_ok=True)
-    own = starts_with(b"position_m,height_")
-    targets = {n: check_output_file(HERE / n, "profile", own=own) for n in outputs}  # every one before any write
+    own = lambda n: starts_with(b"\x93NUMPY" if n.endswith(".npy") else b"position_m,height_")
+    targets = {n: check_output_file(HERE / n, "profile", own=own(n)) for n in outputs}  # every one before any write
     for name, data in outputs.items():
         write_output_file(targets[name], data)
 
