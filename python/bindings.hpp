@@ -53,6 +53,9 @@ py::array_t<double> to_numpy(std::vector<double>&& values, const std::vector<py:
 [[noreturn]] void refuse(const std::string& name, const std::string& value, const std::string& problem,
                          const std::string& allowed);
 
+// threads = None or >= 1, else refuse() saying that `what` (the result, the fit, the table) does not depend on it.
+void check_threads(std::optional<int> threads, const std::string& what);
+
 // The value of `table` spelled `text`, or refuse() naming `name` and every spelling.
 template <class E, std::size_t N>
 E choice(const study::ChoiceTable<E, N>& table, const std::string& name, const std::string& text) {

@@ -119,9 +119,7 @@ py::object fit_study(const std::filesystem::path& study, const py::object& measu
                      const std::optional<std::string>& column, double fmin, std::optional<double> fmax,
                      const std::optional<std::filesystem::path>& journal, bool same_surface,
                      std::optional<int> threads) {
-  if (threads && *threads < 1)
-    refuse("threads", std::to_string(*threads), "fewer than one",
-           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the fit does not depend on it");
+  check_threads(threads, "the fit");
   fit::FitRequest q;
   q.study = study.string();
   q.measurements = path_list(measurements, "measurements");

@@ -57,6 +57,12 @@ void refuse(const std::string& name, const std::string& value, const std::string
   throw py::value_error(name + " = " + value + ": " + problem + "; allowed: " + allowed);
 }
 
+void check_threads(std::optional<int> threads, const std::string& what) {
+  if (threads && *threads < 1)
+    refuse("threads", std::to_string(*threads), "fewer than one",
+           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); " + what + " does not depend on it");
+}
+
 const study::KeySpec& key_spec(const std::vector<study::KeySpec>& keys, const std::string& key) {
   for (const auto& k : keys)
     if (k.full_name() == key) return k;

@@ -186,9 +186,7 @@ namespace {
 std::string run_study(const py::object& study_arg, const std::optional<std::filesystem::path>& out,
                       const py::object& set_arg, bool resume, bool restart, bool force, bool rebuild, bool quiet,
                       std::optional<int> threads) {
-  if (threads && *threads < 1)
-    refuse("threads", std::to_string(*threads), "fewer than one",
-           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the result does not depend on it");
+  check_threads(threads, "the result");
   const Study study = study_of(study_arg);
   if (!out && !study.named)
     refuse("out", "None", "a study from text or a dict has no file name to name its result by",

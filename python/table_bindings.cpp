@@ -2,8 +2,6 @@
 // table) read as the engine reads it before reusing it (stiffness::read_stored_table: file type,
 // schema, contact kernel version, data checksum), with its columns as numpy views, its scalars, the
 // canonical inputs and input hash the study's stage compares, and the file's provenance.
-#include <omp.h>
-
 #include <memory>
 #include <optional>
 
@@ -13,6 +11,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/run/run_phases.hpp"
 #include "src/run/study_stiffness_table.hpp"
+#include "src/run/study_tables.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
@@ -30,7 +29,7 @@ struct Column {
 
 struct Table {
   std::string kind, path, inputs, input_hash, data_checksum;
-  std::string status;  // stiffness_table: "built PATH" or "cached PATH"; read: ""
+  std::string status;  // stiffness_table, tables: "built PATH" or "cached PATH"; read: ""
   double kernel_version = 0.0;
   std::unique_ptr<stiffness::TableData> data;
   std::vector<Column> columns;  // views into *data
@@ -149,31 +148,41 @@ std::unique_ptr<Table> read(const std::string& path) {
   return t;
 }
 
+// The study named by `study_path` with --set `sets`, as the command resolves it.
+study::Study study_with(const py::object& study_path, const std::vector<std::string>& sets) {
+  run::StudyArgs args;
+  args.file = file_name(study_path, "study");
+  args.sets = sets;
+  return run::resolve_study(args);
+}
+
 // `rollspec stiffness STUDY --set ...` in-process: the study's table reused when its input hash and
 // data match, built (and written where the command writes it) when missing, refused when it differs.
 std::unique_ptr<Table> stiffness_table(const py::object& study_path, const std::vector<std::string>& sets, bool rebuild,
                                        bool quiet, std::optional<int> threads) {
-  if (threads && *threads < 1)
-    refuse("threads", std::to_string(*threads), "fewer than one",
-           "a thread count >= 1 (None: OMP_NUM_THREADS, else every core); the table does not depend on it");
-  run::StudyArgs args;
-  args.file = file_name(study_path, "study");
-  args.sets = sets;
-  const study::Study s = run::resolve_study(args);
+  check_threads(threads, "the table");
+  const study::Study s = study_with(study_path, sets);
   run::StudyStiffnessTable answer;
-  {
-    py::gil_scoped_release unlocked;  // the contact solves of every realisation
-    // This thread's OpenMP thread count for the build only, restored after it (also on an error).
-    struct Threads {
-      int before = omp_get_max_threads();
-      ~Threads() { omp_set_num_threads(before); }
-    } restore;
-    if (threads) omp_set_num_threads(*threads);
-    answer = run::study_stiffness_table(s, false, rebuild, quiet);
-  }
+  run_interruptible([&] { answer = run::study_stiffness_table(s, false, rebuild, quiet); }, threads, "");
   auto t = read(answer.path);
   t->status = answer.status;
   return t;
+}
+
+// Every table the study's scene shares, as `rollspec run` resolves them before its ensemble.
+py::dict tables(const py::object& study_path, const std::vector<std::string>& sets, bool rebuild, bool quiet,
+                std::optional<int> threads) {
+  check_threads(threads, "a table");
+  const study::Study s = study_with(study_path, sets);
+  std::vector<run::StudyTable> made;
+  run_interruptible([&] { made = run::study_tables(s, false, rebuild, quiet); }, threads, "");
+  py::dict out;
+  for (const auto& m : made) {
+    auto t = read(m.path);
+    t->status = m.status;
+    out[m.stage.c_str()] = py::cast(t.release(), py::return_value_policy::take_ownership);
+  }
+  return out;
 }
 
 py::array_t<double> view(const Column& c, const py::object& self) {
@@ -227,6 +236,38 @@ Table
     kind 'stiffness', read back from the file; status says 'built PATH' or 'cached PATH'.
 )";
 
+const char* const kTablesDoc =
+    R"(Every table a study's scene shares, reused or built as `rollspec run STUDY` does before its ensemble.
+
+The stiffness table ([contact] law = table), the blocked-force table ([contact] blocked_force = solver),
+the equivalent-roughness table ([contact] filter = solver) and the path table ([contact] law = path),
+whichever the study uses: each reused when its input hash, inputs and data checksum match, built and
+written where the run writes it (<table_dir>/KIND-<input hash>.h5) when missing, and refused with the
+run's message when its inputs differ or it is damaged, unless rebuild. No realisation runs and no
+result is written; a run of the same study then finds every table cached. The same bits for any thread
+count; the interpreter lock is released while tables are built.
+
+Parameters
+----------
+study : str or os.PathLike
+    The study file.
+set : list of str
+    Overrides 'section.key=value', as --set.
+rebuild : bool
+    Replace a table whose inputs differ or that is damaged (--rebuild).
+quiet : bool
+    No progress lines on stderr (--quiet).
+threads : int or None
+    OpenMP threads of the builds (None: OMP_NUM_THREADS, else every core).
+
+Returns
+-------
+dict
+    {stage: Table} in the run's order, the stage as `rollspec plan` names it (stiffness_table,
+    blocked_force, equivalent_roughness, path_table); each Table read back from its file, its status
+    'built PATH' or 'cached PATH'. Empty for a study that shares no table.
+)";
+
 }  // namespace
 
 void bind_tables(py::module_& m) {
@@ -239,7 +280,7 @@ void bind_tables(py::module_& m) {
                arg("path"));
   c.def_property_readonly(
       "status", [](const Table& t) { return t.status; },
-      "stiffness_table: 'built PATH' or 'cached PATH', as `rollspec stiffness` prints it; read: ''.");
+      "stiffness_table and tables: 'built PATH' or 'cached PATH', as `rollspec stiffness` prints it; read: ''.");
   c.def_property_readonly(
       "kind", [](const Table& t) { return t.kind; }, "'stiffness', 'blocked_force', 'equivalent_roughness' or 'path'.");
   c.def_property_readonly(
@@ -286,6 +327,8 @@ void bind_tables(py::module_& m) {
   m.def("stiffness_table", &stiffness_table, kStiffnessTableDoc, arg("study"), py::kw_only(),
         arg("set") = std::vector<std::string>{}, arg("rebuild") = false, arg("quiet") = true,
         arg("threads") = py::none());
+  m.def("tables", &tables, kTablesDoc, arg("study"), py::kw_only(), arg("set") = std::vector<std::string>{},
+        arg("rebuild") = false, arg("quiet") = true, arg("threads") = py::none());
   c.def("__repr__", [](const Table& t) {
     return "<rollspec.contact.Table " + t.kind + " " + t.input_hash + " from " + t.path + ">";
   });

@@ -3,7 +3,7 @@
 rollspec.spectra  Welch PSD and third-octave bands, as `rollspec psd` and a study compute them, and the
                   measurement reader of `rollspec psd` and `compare` (CSV, WAV/FLAC, .mat).
 rollspec.contact  the elastic and elastic-plastic half-space contact solve of the stiffness tables, and
-                  the tables a study builds (Table.read, stiffness_table) with their input hash.
+                  the tables a study builds (Table.read, stiffness_table, tables) with their input hash.
 rollspec.surfaces line textures and isotropic surfaces from a PSD or from measured profiles (and their
                   PSD, as [texture] source = profiles makes it), on `rollspec texture`'s random streams.
 rollspec.studies  a study (a file, text or a dict) planned and run in-process, as `rollspec plan` and

@@ -30,6 +30,14 @@ def stiffness_table(
     quiet: bool = True,
     threads: Optional[int] = None,
 ) -> Table: ...
+def tables(
+    study: Union[str, "os.PathLike[str]"],
+    *,
+    set: List[str] = [],
+    rebuild: bool = False,
+    quiet: bool = True,
+    threads: Optional[int] = None,
+) -> Dict[str, Table]: ...
 
 class Table:
     """A cached stage table (python/table_bindings.cpp): columns and scalars are also attributes."""

@@ -170,6 +170,7 @@ SAMPLES = {
     "contact.ball_gap": lambda i: ((1e-3, 1e-6, 8, 6), {}),
     "contact.effective_modulus": lambda i: ((2e11, 0.3, 7e10, 0.33), {}),
     "contact.stiffness_table": lambda i: ((i.table_study,), dict(set=TABLE)),
+    "contact.tables": lambda i: ((i.table_study,), dict(set=TABLE)),
     "contact.Table.read": lambda i: ((i.stiffness_table_file(),), {}),
     "spectra.welch": lambda i: ((signal_1d(), 1000.0), dict(segment=64)),
     "spectra.bands": lambda i: ((signal_1d(), 1000.0), dict(segment=64, band_min=20.0, band_max=400.0)),

@@ -30,21 +30,29 @@ def rollspec(study, *args, sets=()):
                    capture_output=True, cwd=os.path.dirname(study))
 
 
+# The seed 002 rig's runs that build the other kinds: kind -> (the run's stage, its --set).
+RIG_RUNS = {
+    "blocked_force": ("blocked_force", [
+        "contact.blocked_force=solver", "study.realisations=1", "ball.end=0.12", "surface.spacing=8e-6",
+        "texture.short_wavelength=16e-6", "surface.ny=96", "blocked_force.window=96", "blocked_force.strip_length=3e-3",
+        "stiffness.hardness=6e9", "blocked_force.segment=64"]),
+    "equivalent_roughness": ("equivalent_roughness",
+                             [*STRIP, "contact.law=hertz", "contact.filter=solver", "equivalent_roughness.line=strip"]),
+    "path": ("path_table", [*STRIP, "contact.law=path", "path_table.approaches=4"]),
+}
+TABLE_SETS = ["surface.nx=64", "surface.ny=64", "stiffness.realisations=2", "stiffness.steps=4",
+              "stiffness.approach_max=0.4e-6"]
+
+
 @pytest.fixture(scope="module")
 def tables(tmp_path_factory):
     """{kind: path} of one table of each kind, built by the command (about 5 s in all)."""
     d = tmp_path_factory.mktemp("tables")
     shutil.copy(os.path.join(STUDIES, "seed002-table.ini"), d / "table.ini")
-    rollspec(d / "table.ini", "stiffness", sets=["surface.nx=64", "surface.ny=64", "stiffness.realisations=2",
-                                                  "stiffness.steps=4", "stiffness.approach_max=0.4e-6"])
+    rollspec(d / "table.ini", "stiffness", sets=TABLE_SETS)
     shutil.copy(os.path.join(STUDIES, "seed002-rig-1ms.ini"), d / "rig.ini")
-    rollspec(d / "rig.ini", "run", "--out", "b.h5", sets=[
-        "contact.blocked_force=solver", "study.realisations=1", "ball.end=0.12", "surface.spacing=8e-6",
-        "texture.short_wavelength=16e-6", "surface.ny=96", "blocked_force.window=96", "blocked_force.strip_length=3e-3",
-        "stiffness.hardness=6e9", "blocked_force.segment=64"])
-    rollspec(d / "rig.ini", "run", "--out", "e.h5",
-             sets=[*STRIP, "contact.law=hertz", "contact.filter=solver", "equivalent_roughness.line=strip"])
-    rollspec(d / "rig.ini", "run", "--out", "p.h5", sets=[*STRIP, "contact.law=path", "path_table.approaches=4"])
+    for kind, (_, sets) in RIG_RUNS.items():
+        rollspec(d / "rig.ini", "run", "--out", kind + ".h5", sets=sets)
     out = {}
     for kind, prefix in PREFIX.items():
         (path,) = glob.glob(str(d / "tables" / (prefix + "*.h5")))
@@ -132,8 +140,7 @@ def test_damaged_edited_and_foreign_files_are_refused(tables, tmp_path):
 def test_stiffness_table_builds_the_commands_table_and_reuses_it(tables, tmp_path):
     study = tmp_path / "table.ini"
     shutil.copy(os.path.join(STUDIES, "seed002-table.ini"), study)
-    sets = ["surface.nx=64", "surface.ny=64", "stiffness.realisations=2", "stiffness.steps=4",
-            "stiffness.approach_max=0.4e-6"]
+    sets = TABLE_SETS
     built = contact.stiffness_table(study, set=sets)
     command = contact.Table.read(tables["stiffness"])  # the same study and keys, built by `rollspec stiffness`
     assert built.status == "built " + built.path and built.path.startswith(str(tmp_path / "tables"))
@@ -158,3 +165,33 @@ def test_stiffness_table_builds_the_commands_table_and_reuses_it(tables, tmp_pat
         contact.stiffness_table(study, set=["stiffness.realisation=2"])
     with pytest.raises(ValueError, match=r"rollspec stiffness needs a .* study"):
         contact.stiffness_table(os.path.join(STUDIES, "texture-demo.ini"))
+
+
+@pytest.mark.parametrize("kind", list(RIG_RUNS))
+def test_tables_builds_a_runs_tables_as_the_run_does(tables, kind, tmp_path):
+    # rollspec.contact.tables on the study of a run: the run's table bit for bit, built where the run puts
+    # it, and nothing else (no result); called again, and by the run itself, it is reused.
+    stage, sets = RIG_RUNS[kind]
+    study = shutil.copy(os.path.join(STUDIES, "seed002-rig-1ms.ini"), tmp_path / "rig.ini")
+    built = contact.tables(study, set=sets)
+    assert list(built) == [stage]
+    t, command = built[stage], contact.Table.read(tables[kind])
+    assert t.kind == kind and t.status == "built " + t.path and t.path.startswith(str(tmp_path / "tables"))
+    assert t.input_hash == command.input_hash and t.data_checksum == command.data_checksum
+    for name, column in command.columns.items():
+        assert t.columns[name].tobytes() == column.tobytes(), name
+    assert sorted(os.listdir(tmp_path)) == ["rig.ini", "tables"]
+    again = contact.tables(study, set=sets, threads=1)
+    assert again[stage].status == "cached " + t.path
+    plan = subprocess.run([ROLLSPEC, "plan", str(study), *[a for kv in sets for a in ("--set", kv)]],
+                          capture_output=True, text=True, cwd=tmp_path)
+    assert plan.returncode == 0 and re.search(r"^\s*%s\s+cached" % stage, plan.stdout, re.M), plan.stdout
+
+
+def test_tables_of_a_study_without_tables_and_bad_requests(tmp_path):
+    assert contact.tables(os.path.join(STUDIES, "random-oscillator.ini")) == {}
+    assert contact.tables(os.path.join(STUDIES, "seed002-rig-1ms.ini"), set=["contact.law=hertz"]) == {}
+    with pytest.raises(ValueError, match=r"^threads = 0: fewer than one; allowed: a thread count >= 1"):
+        contact.tables(os.path.join(STUDIES, "random-oscillator.ini"), threads=0)
+    with pytest.raises(OSError, match="none.ini"):
+        contact.tables(tmp_path / "none.ini")

@@ -53,6 +53,9 @@ class Scene {
   // `rebuild` replaces cached tables whose inputs no longer match instead of refusing them.
   // By default resolve() of every stage; scenes that finish their set-up afterwards call it first.
   virtual void prepare(bool quiet, bool rebuild) { resolve_stages(quiet, rebuild); }
+  // The shared tables only, as prepare() builds or loads them first (rollspec.contact.tables): the
+  // stages that are not tables resolve nothing.
+  void resolve_tables(bool quiet, bool rebuild) { resolve_stages(quiet, rebuild); }
   // Legal but suspect physics the scene found in its study (printed on stderr when it was made).
   virtual std::vector<std::string> warnings() const { return {}; }
 

@@ -34,7 +34,8 @@ StagePlan TableStage::inspect() const {
   const auto scratch = make_();
   const stiffness::TableState state = table_.inspect(*scratch, why);
   return {name_, state == stiffness::TableState::valid ? StageStatus::cached : StageStatus::run,
-          stiffness::table_plan_reason(table_, state, why) + (detail_.empty() ? "" : "; " + detail_), true};
+          stiffness::table_plan_reason(table_, state, why) + (detail_.empty() ? "" : "; " + detail_), true,
+          table_.path()};
 }
 
 void TableStage::resolve(bool rebuild, bool quiet) {

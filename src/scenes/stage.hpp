@@ -19,6 +19,7 @@ struct StagePlan {
   StageStatus status;
   std::string reason;
   bool table = false;  // a cached table shared by all realisations (a TableStage's inspection)
+  std::string path{};  // a table stage's file, where the study's [stiffness] table puts it
 };
 
 const char* status_name(StageStatus s);
