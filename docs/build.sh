@@ -50,8 +50,15 @@ if [ -e "$out" ]; then
   done
 fi
 python=/usr/bin/python3
-module="$(dirname "$bin")/python"   # the module rollspec built beside the binary: the gallery and the Python reference use it
-[ ! -d "$module/rollspec" ] || export PYTHONPATH="$module${PYTHONPATH:+:$PYTHONPATH}"
+# The module rollspec built beside the binary: the Python reference documents it, and the gallery runs its
+# studies in-process through it (rollspec_post.run does when ROLLSPEC_BIN is unset; what else runs the
+# command finds this binary first on PATH). Without it, the gallery runs the binary.
+module="$(dirname "$bin")/python"
+sphinx_env=(env ROLLSPEC_BIN="$bin")
+if [ -d "$module/rollspec" ]; then
+  export PYTHONPATH="$module${PYTHONPATH:+:$PYTHONPATH}"
+  sphinx_env=(env -u ROLLSPEC_BIN PATH="$(dirname "$bin"):$PATH")
+fi
 export PYTHONDONTWRITEBYTECODE=1   # nothing written into the sources (docs/, bench/)
 mkdir -p -- "$out" || fail 73 "cannot create BUILD_DIR $out"
 touch -- "$marker" || fail 73 "cannot write $marker"
@@ -60,6 +67,6 @@ cp -r -- "$repo/docs" "$out/src"
 ln -s -- "$repo" "$out/src/_repo"
 "$python" "$repo/docs/generate_reference.py" --bin "$bin" --out "$out/src" \
   --records "${ROLLSPEC_BENCH_RECORDS:-$repo/bench/records}"
-ROLLSPEC_SOURCE="$repo" ROLLSPEC_BIN="$bin" MPLBACKEND=Agg "$python" -m sphinx -W --keep-going -q -b html -d "$out/doctrees" "$out/src" "$out/html"
+"${sphinx_env[@]}" ROLLSPEC_SOURCE="$repo" MPLBACKEND=Agg "$python" -m sphinx -W --keep-going -q -b html -d "$out/doctrees" "$out/src" "$out/html"
 "$python" "$repo/docs/check_links.py" "$out/html"
 echo "docs: $out/html/index.html"

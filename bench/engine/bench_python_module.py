@@ -275,9 +275,9 @@ def measure(a, threads, work):
     notes = (f"Same work checked: each contact case gave one force, bit for bit, on both sides, every round and "
              f"thread count (CG iterations {', '.join(f'{k} {sorted(v)}' for k, v in iterations.items())}); the two "
              f"result files of every round held the same {compared} datasets bit for bit (but "
-             f"{', '.join(sorted(IGNORED_DATASETS))}). The machine was shared with a CI run while this ran (the "
-             "record's other-work figure says how busy it kept the cores); the ratios are of interleaved "
-             "rounds, so drift falls on both sides.")
+             f"{', '.join(sorted(IGNORED_DATASETS))}). Other work on the machine: the record's "
+             "other-work figure (cores it kept busy); the ratios are of interleaved rounds, so drift falls on "
+             "both sides.")
     data = {"contact": {f"{k[0]}|{k[1]}|{k[2]}": v for k, v in times.items()}, "study": study_times,
             "forces": {k: float(next(iter(v["A"]))).hex() for k, v in forces.items()},
             "approach": approach, "defaults": defaults, "wall_s": wall, "cpu_s": cpu}
