@@ -208,16 +208,8 @@ Each column is an attribute (a read-only numpy array, SI units as in the file: m
 rad/m, m^3 or N^2 m); each scalar too (a float). columns and scalars list them.
 )";
 
-const char* const kStiffnessTableDoc =
-    R"(The stiffness table of a study, as `rollspec stiffness STUDY --set ...` makes it.
-
-The study's [stiffness] table (auto: <table_dir>/stiffness-<input hash>.h5 beside the study) is reused
-when its input hash, inputs and data checksum match, built and written there when missing (the
-elastic-plastic half-space solve of every rough-surface realisation, OpenMP threads, the same bits
-for any thread count, the interpreter lock released), and refused with the command's message when
-its inputs differ or it is damaged, unless rebuild. A `stiffness` or `ball-on-beam` study.
-
-Parameters
+// The parameters stiffness_table and tables share, in their docstrings.
+const char* const kStudyTableParameters = R"(Parameters
 ----------
 study : str or os.PathLike
     The study file.
@@ -228,15 +220,27 @@ rebuild : bool
 quiet : bool
     No progress lines on stderr (--quiet).
 threads : int or None
-    OpenMP threads of the build (None: OMP_NUM_THREADS, else every core); the table does not depend on it.
+    OpenMP threads of the builds (None: OMP_NUM_THREADS, else every core); a table does not depend on it.
+)";
 
+const std::string kStiffnessTableDoc =
+    R"(The stiffness table of a study, as `rollspec stiffness STUDY --set ...` makes it.
+
+The study's [stiffness] table (auto: <table_dir>/stiffness-<input hash>.h5 beside the study) is reused
+when its input hash, inputs and data checksum match, built and written there when missing (the
+elastic-plastic half-space solve of every rough-surface realisation, OpenMP threads, the same bits
+for any thread count, the interpreter lock released), and refused with the command's message when
+its inputs differ or it is damaged, unless rebuild. A `stiffness` or `ball-on-beam` study.
+
+)" + std::string(kStudyTableParameters) +
+    R"(
 Returns
 -------
 Table
     kind 'stiffness', read back from the file; status says 'built PATH' or 'cached PATH'.
 )";
 
-const char* const kTablesDoc =
+const std::string kTablesDoc =
     R"(Every table a study's scene shares, reused or built as `rollspec run STUDY` does before its ensemble.
 
 The stiffness table ([contact] law = table), the blocked-force table ([contact] blocked_force = solver),
@@ -247,19 +251,8 @@ run's message when its inputs differ or it is damaged, unless rebuild. No realis
 result is written; a run of the same study then finds every table cached. The same bits for any thread
 count; the interpreter lock is released while tables are built.
 
-Parameters
-----------
-study : str or os.PathLike
-    The study file.
-set : list of str
-    Overrides 'section.key=value', as --set.
-rebuild : bool
-    Replace a table whose inputs differ or that is damaged (--rebuild).
-quiet : bool
-    No progress lines on stderr (--quiet).
-threads : int or None
-    OpenMP threads of the builds (None: OMP_NUM_THREADS, else every core).
-
+)" + std::string(kStudyTableParameters) +
+    R"(
 Returns
 -------
 dict
@@ -324,10 +317,10 @@ void bind_tables(py::module_& m) {
       if (n == name) return py::float_(v);
     throw py::attribute_error("a " + t.kind + " table has no column or scalar '" + name + "'");
   });
-  m.def("stiffness_table", &stiffness_table, kStiffnessTableDoc, arg("study"), py::kw_only(),
+  m.def("stiffness_table", &stiffness_table, kStiffnessTableDoc.c_str(), arg("study"), py::kw_only(),
         arg("set") = std::vector<std::string>{}, arg("rebuild") = false, arg("quiet") = true,
         arg("threads") = py::none());
-  m.def("tables", &tables, kTablesDoc, arg("study"), py::kw_only(), arg("set") = std::vector<std::string>{},
+  m.def("tables", &tables, kTablesDoc.c_str(), arg("study"), py::kw_only(), arg("set") = std::vector<std::string>{},
         arg("rebuild") = false, arg("quiet") = true, arg("threads") = py::none());
   c.def("__repr__", [](const Table& t) {
     return "<rollspec.contact.Table " + t.kind + " " + t.input_hash + " from " + t.path + ">";

@@ -4,9 +4,7 @@ request raises the command's one-line message before any run."""
 import json
 import os
 import shutil
-import signal
 import subprocess
-import threading
 import time
 
 import h5py
@@ -14,6 +12,7 @@ import numpy as np
 import pytest
 
 from rollspec import studies
+from sigint_when import SigintWhen
 
 ROLLSPEC = os.environ.get("ROLLSPEC_BIN", "rollspec")
 SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -84,26 +83,14 @@ def test_ctrl_c_stops_a_fit_and_its_journal_resumes_it(measured, command_json, t
     # gives the uninterrupted fit's answer.
     study, csv = measured
     journal = tmp_path / "fit.journal"
-    sent = []
-
-    def interrupt_after_two_evaluations():
-        deadline = time.monotonic() + 120.0
-        while time.monotonic() < deadline:
-            if journal.exists() and len(journal.read_text().splitlines()) >= 3:  # the key and 2 evaluations
-                sent.append(time.monotonic())
-                os.kill(os.getpid(), signal.SIGINT)
-                return
-            time.sleep(0.002)
-
-    watcher = threading.Thread(target=interrupt_after_two_evaluations)
-    watcher.start()
+    # the key and 2 evaluations
+    watcher = SigintWhen(lambda: journal.exists() and len(journal.read_text().splitlines()) >= 3, timeout=120.0)
     with pytest.raises(KeyboardInterrupt, match="journal"):
         studies.fit(study, csv, vary="force.level=0.1:10:log", measured_averages=RECORDS, set=SETS,
                     journal=journal, threads=2)
     stopped = time.monotonic()
-    watcher.join()
-    assert sent, "the fit ended before its journal held two evaluations"
-    print("Ctrl-C to KeyboardInterrupt: %.3f s" % (stopped - sent[0]))
+    assert watcher.join().sent, "the fit ended before its journal held two evaluations"
+    print("Ctrl-C to KeyboardInterrupt: %.3f s" % (stopped - watcher.sent))
     done = len(journal.read_text().splitlines()) - 1
     assert done >= 2
     resumed = studies.fit(study, csv, vary="force.level=0.1:10:log", measured_averages=RECORDS, set=SETS,

@@ -4,16 +4,13 @@ ensemble with KeyboardInterrupt, keeps the completed chunks, and resume=True fin
 an uninterrupted run."""
 import os
 import shutil
-import signal
 import subprocess
-import threading
-import time
 
 import h5py
-import numpy as np
 import pytest
 
 from rollspec import studies
+from sigint_when import SigintWhen, has_chunk
 
 ROLLSPEC = os.environ.get("ROLLSPEC_BIN", "rollspec")
 SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -77,16 +74,7 @@ def test_ctrl_c_keeps_the_chunks_and_resume_gives_the_same_bits(study, tmp_path)
     out = tmp_path / "m.h5"
     checkpoint = tmp_path / "m.h5.checkpoint"
 
-    def interrupt_after_the_first_chunk():
-        deadline = time.monotonic() + 60.0
-        while time.monotonic() < deadline:
-            if checkpoint.is_dir() and any(p.name.startswith("chunk") for p in checkpoint.iterdir()):
-                os.kill(os.getpid(), signal.SIGINT)
-                return
-            time.sleep(0.002)
-
-    watcher = threading.Thread(target=interrupt_after_the_first_chunk)
-    watcher.start()
+    watcher = SigintWhen(lambda: has_chunk(checkpoint))
     with pytest.raises(KeyboardInterrupt, match="resume=True"):
         studies.run(study, out, set=sets, threads=2)
     watcher.join()

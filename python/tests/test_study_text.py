@@ -4,15 +4,13 @@ command's one-line message (the file's name replaced by "<string>" or "<dict>" w
 study's checkpoint resumes from the same text and refuses another, as the command's does with its study file."""
 import configparser
 import os
-import signal
 import subprocess
-import threading
-import time
 
 import h5py
 import pytest
 
 from rollspec import studies
+from sigint_when import SigintWhen, has_chunk
 
 ROLLSPEC = os.environ.get("ROLLSPEC_BIN", "rollspec")
 SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
@@ -146,17 +144,8 @@ def test_a_text_study_resumes_its_own_checkpoint_and_refuses_another(tmp_path):
     sets = [s for s in FAST if not s.startswith("study.realisations")] + ["study.realisations=5000"]
     out, checkpoint = tmp_path / "m.h5", tmp_path / "m.h5.checkpoint"
 
-    def interrupt_after_the_first_chunk():
-        deadline = time.monotonic() + 60.0
-        while time.monotonic() < deadline:
-            if checkpoint.is_dir() and any(p.name.startswith("chunk") for p in checkpoint.iterdir()):
-                os.kill(os.getpid(), signal.SIGINT)
-                return
-            time.sleep(0.002)
-
     study = studies.Study.from_text(study_text())
-    watcher = threading.Thread(target=interrupt_after_the_first_chunk)
-    watcher.start()
+    watcher = SigintWhen(lambda: has_chunk(checkpoint))
     with pytest.raises(KeyboardInterrupt, match="resume=True"):
         studies.run(study, out, set=sets, threads=2)
     watcher.join()
