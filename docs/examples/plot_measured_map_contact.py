@@ -17,7 +17,10 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
-import rollspec.contact as contact
+from rollspec_post.script_main import one_line_errors
+
+one_line_errors()  # run as python3 FILE: a failure is one line, not a traceback
+import rollspec.contact as contact  # noqa: E402 (the module: README's first command, or BUILD/python on PYTHONPATH)
 
 # The repository: $ROLLSPEC_SOURCE when the site is built, else this file's checkout.
 REPO = Path(os.environ.get("ROLLSPEC_SOURCE") or Path(__file__).resolve().parents[2])

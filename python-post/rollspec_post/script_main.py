@@ -63,6 +63,9 @@ def _one_line_for(e):
         return str(e), code
     if isinstance(e, MemoryError):
         return "out of memory", EX_SOFTWARE
+    if isinstance(e, ModuleNotFoundError) and (e.name or "").split(".")[0] == "rollspec":
+        return (f"needs the Python module {e.name}: install it (cmake --install BUILD --component python --prefix "
+                "~/.local, as the README's first command does) or put BUILD/python on PYTHONPATH"), EX_UNAVAILABLE
     if isinstance(e, ModuleNotFoundError):
         return f"needs the Python module {e.name} (run with Debian's /usr/bin/python3)", EX_UNAVAILABLE
     if isinstance(e, UnicodeError):

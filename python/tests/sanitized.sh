@@ -21,6 +21,16 @@ src=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$src/build/asan-python}
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 werror=${WERROR:-$src/build/werror}
+fail() { echo "sanitized.sh: $1" >&2; exit 73; }
+# BUILD is configured and written into: a new or empty folder, or a build folder of these sources (its
+# CMakeCache.txt names them), never a folder or file of the user's.
+if [ "${BINDINGS_ONLY:-0}" != 1 ] && { [ -e "$build" ] || [ -L "$build" ]; }; then
+  { [ -d "$build" ] && [ ! -L "$build" ]; } ||
+    fail "BUILD $build is not a folder; allowed: a new or empty folder, or a build folder of $src"
+  if [ -n "$(ls -A -- "$build")" ] && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$src" "$build/CMakeCache.txt" 2>/dev/null; then
+    fail "BUILD $build holds files that are not a build of $src; allowed: a new or empty folder, or a build folder of these sources"
+  fi
+fi
 if [ "${BINDINGS_ONLY:-0}" = 1 ]; then
   build=$src/build/asan-bindings
   mkdir -p "$build/obj" "$build/python/rollspec"

@@ -14,8 +14,9 @@ RECIPES = {
     "docs/generate_reference.py": {"argv": ["PY", "S", "--bin", "BIN", "--out", "OUT"], "out": "folder",
                                    "help": ["--help"]},
     "docs/check_links.py": {"argv": ["PY", "S", "IN"], "in": "folder", "help": ["EMPTY"]},
-    # the module rollspec in-process on shipped data: no binary, no output file
-    "docs/examples/plot_measured_map_contact.py": {"argv": ["PY", "S"], "help": None},
+    # the module rollspec in-process on the repository's data ($ROLLSPEC_SOURCE): no binary, no output file
+    "docs/examples/plot_measured_map_contact.py": {"argv": ["PY", "S"], "help": None, "in": "folder",
+                                                   "env": {"ROLLSPEC_SOURCE": "IN"}},
     "docs/examples/plot_sensor_bands.py": {"argv": ["PY", "S"], "help": None, "env": {"ROLLSPEC_BIN": "BIN"},
                                            "binary": "env"},
     "docs/examples/plot_speed_comparison.py": {"argv": ["PY", "S"], "help": None, "env": {"ROLLSPEC_BIN": "BIN"},
@@ -24,6 +25,8 @@ RECIPES = {
                                           "binary": "env"},
     "docs/examples/plot_your_rig.py": {"argv": ["PY", "S"], "help": None, "env": {"ROLLSPEC_BIN": "BIN"},
                                        "binary": "env"},
+    # python/: BUILD is the folder it configures and builds into
+    "python/tests/sanitized.sh": {"argv": ["bash", "S"], "out": "folder", "help": None, "env": {"BUILD": "OUT"}},
     # bench/
     "bench/bench_goals.py": {"argv": ["PY", "S", "measure", "--goals", "1", "--bin", "BINDIR"], "help": ["--help"],
                              "fixed": ["bench/goals.json"], "tree": ["bench", "python-post/rollspec_post"]},

@@ -32,7 +32,7 @@ TOTALS = collections.Counter()
 def listed_programs():
     """Every program a user can run, by path: scripts with a main, shell scripts, gallery examples."""
     found = []
-    for top in ("docs", "bench", "python-post", "studies", "tests"):
+    for top in ("docs", "bench", "python", "python-post", "studies", "tests"):
         for p in sorted((SOURCE / top).rglob("*")):
             rel = str(p.relative_to(SOURCE))
             if "__pycache__" in rel or p.name.startswith("test_") or p.name == "conftest.py" or not p.is_file():
