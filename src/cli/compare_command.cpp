@@ -61,13 +61,11 @@ std::string cell(double v) { return std::isfinite(v) ? io::exact_text(v) : ""; }
 
 std::string offset_line(const compare::Verdict& v, double confidence) {
   if (!v.offset) return "";
-  char buf[240];
-  std::snprintf(buf, sizeof buf,
-                "level_offset: model - measurement %+.2f dB, %d %% interval %+.2f .. %+.2f dB over %d tested bands "
-                "(kernels/spectral D-34)\n",
-                v.offset->estimate, static_cast<int>(std::lround(100.0 * confidence)), v.offset->lower, v.offset->upper,
-                v.tested);
-  return buf;
+  return io::formatted(
+      "level_offset: model - measurement %+.2f dB, %d %% interval %+.2f .. %+.2f dB over %d tested bands "
+      "(kernels/spectral D-34)\n",
+      v.offset->estimate, static_cast<int>(std::lround(100.0 * confidence)), v.offset->lower, v.offset->upper,
+      v.tested);
 }
 
 // --format csv: the band table only (one header line), for pandas and numpy's readers.
@@ -87,27 +85,22 @@ std::string csv_text(const compare::Verdict& v, bool predict, bool has_interval)
 // --format table: the question, a row per band, the warnings, the level offset and the combined test.
 std::string table_text(const compare::Verdict& v, const io::BandLevels& b, bool predict, bool has_interval) {
   std::string text = "question: " + v.question + "\n";
-  char buf[320];
-  std::snprintf(buf, sizeof buf, "%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB",
-                "delta_dB", "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
-  text += buf;
+  text += io::formatted("%10s %12s %12s %8s %17s %17s %7s\n", "centre_Hz", "simulated_dB", "measured_dB", "delta_dB",
+                        "mean_interval_dB", predict ? "prediction_dB" : "", "inside");
   for (const auto& x : v.rows) {
     const bool in = predict ? x.inside_prediction : x.inside_ci;
-    char ci[40] = "", pi[40] = "";
-    std::snprintf(ci, sizeof ci, "%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
-    if (predict) std::snprintf(pi, sizeof pi, "%7.2f..%-7.2f", x.pred_lower, x.pred_upper);
+    const std::string ci = io::formatted("%7.2f..%-7.2f", x.ci_lower, x.ci_upper);
+    const std::string pi = predict ? io::formatted("%7.2f..%-7.2f", x.pred_lower, x.pred_upper) : std::string();
     const std::string mark = x.use != compare::BandUse::test ? compare::band_use_name(x.use)
                              : has_interval                  ? (in ? "yes" : "no")
                                                              : "-";
-    std::snprintf(buf, sizeof buf, "%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured,
-                  x.delta, ci, pi, mark.c_str());
-    text += buf;
+    text += io::formatted("%10g %12.2f %12.2f %8.2f %17s %17s %7s\n", x.centre, x.simulated, x.measured, x.delta,
+                          ci.c_str(), pi.c_str(), mark.c_str());
   }
   for (const auto& w : v.warnings) text += "WARNING: " + w + "\n";
   text += offset_line(v, b.confidence);
   if (predict) text += "combined_test: " + v.test.verdict + "\n";
-  std::snprintf(buf, sizeof buf, "rms_db_error: %.3f  inside_ci: %d/%d\n", v.rms_db, v.inside, v.judged);
-  return text + buf;
+  return text + io::formatted("rms_db_error: %.3f  inside_ci: %d/%d\n", v.rms_db, v.inside, v.judged);
 }
 
 }  // namespace

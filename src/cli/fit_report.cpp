@@ -14,24 +14,24 @@ using fit::kCoherenceLimit;
 using fit::objective_text;
 
 std::string fit_text(const FitReport& r) {
-  char buf[320];
+  std::string buf;
   std::string text;
   if (r.points.size() == 1)
-    std::snprintf(buf, sizeof buf, "fit over %zu bands, K = %llu realisations per run, M = %g measured records\n",
-                  r.bands, static_cast<unsigned long long>(r.realisations), r.points[0].records);
+    buf = io::formatted("fit over %zu bands, K = %llu realisations per run, M = %g measured records\n", r.bands,
+                        static_cast<unsigned long long>(r.realisations), r.points[0].records);
   else
-    std::snprintf(buf, sizeof buf, "joint fit over %zu points, %zu bands in all, K = %llu realisations per run\n",
-                  r.points.size(), r.bands, static_cast<unsigned long long>(r.realisations));
+    buf = io::formatted("joint fit over %zu points, %zu bands in all, K = %llu realisations per run\n", r.points.size(),
+                        r.bands, static_cast<unsigned long long>(r.realisations));
   text += buf;
   text += "objective: " + objective_text(r.objective) + "\n";
-  std::snprintf(buf, sizeof buf, "%-28s %14s %14s %14s\n", "key", "estimate", "95%_lower", "95%_upper");
+  buf = io::formatted("%-28s %14s %14s %14s\n", "key", "estimate", "95%_lower", "95%_upper");
   text += buf;
   for (const auto& p : r.parameters) {
     if (r.no_interval.empty())
-      std::snprintf(buf, sizeof buf, "%-28s %14.6g %14.6g%s %14.6g%s\n", p.key.c_str(), p.estimate, p.lower,
-                    p.lower_at_range_end ? "*" : " ", p.upper, p.upper_at_range_end ? "*" : " ");
+      buf = io::formatted("%-28s %14.6g %14.6g%s %14.6g%s\n", p.key.c_str(), p.estimate, p.lower,
+                          p.lower_at_range_end ? "*" : " ", p.upper, p.upper_at_range_end ? "*" : " ");
     else
-      std::snprintf(buf, sizeof buf, "%-28s %14.6g %14s  %14s\n", p.key.c_str(), p.estimate, "none", "none");
+      buf = io::formatted("%-28s %14.6g %14s  %14s\n", p.key.c_str(), p.estimate, "none", "none");
     text += buf;
   }
   if (!r.no_interval.empty()) text += "no_interval: " + r.no_interval + "\n";
@@ -57,13 +57,13 @@ std::string fit_text(const FitReport& r) {
     if (!r.points[i].question.empty())
       text += (r.points.size() > 1 ? "point " + std::to_string(i + 1) + " asks of: " : "question: ") +
               r.points[i].question + "\n";
-  std::snprintf(buf, sizeof buf, "log_likelihood: %.6g\n", r.log_likelihood);
+  buf = io::formatted("log_likelihood: %.6g\n", r.log_likelihood);
   text += buf;
   if (r.points.size() > 1)
     for (std::size_t i = 0; i < r.points.size(); ++i) {
       const auto& p = r.points[i];
-      std::snprintf(buf, sizeof buf, "point %zu: %s at %s: %zu bands, M = %g: ", i + 1, p.measurement.c_str(),
-                    p.at.empty() ? "the study's keys" : p.at.c_str(), p.bands, p.records);
+      buf = io::formatted("point %zu: %s at %s: %zu bands, M = %g: ", i + 1, p.measurement.c_str(),
+                          p.at.empty() ? "the study's keys" : p.at.c_str(), p.bands, p.records);
       text += buf + p.fitted_verdict + "\n";
     }
   text += "goodness_of_fit: " + r.verdict + "\ngoodness_of_fit_uncorrected: " + r.verdict_uncorrected +

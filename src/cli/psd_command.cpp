@@ -150,12 +150,12 @@ int psd_command(const Args& args) {
   for (const auto& title : titles) s << "," << title;
   s << "\n";
   const auto f = plan.frequencies();
-  char buf[32];
+  std::string buf;
   for (std::size_t k = 0; k < f.size(); ++k) {
-    std::snprintf(buf, sizeof buf, "%.17g", f[k]);
+    buf = io::formatted("%.17g", f[k]);
     s << buf;
     for (const auto& col : psd) {
-      std::snprintf(buf, sizeof buf, "%.17g", col[k]);
+      buf = io::formatted("%.17g", col[k]);
       s << "," << buf;
     }
     s << "\n";

@@ -25,6 +25,7 @@
 #include "src/study/sections/texture_section.hpp"
 #include "src/texture/profile_source.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::cli {
 
@@ -51,9 +52,9 @@ void refuse_overflow(const study::TextureSection& s, const char* what, std::size
   std::string where = s.origin(s.source).where;
   if (source == TextureSource::table) where = s.table_path + " (" + where + ")";
   if (source == TextureSource::profiles) where = s.origin(s.profile_paths).where;
-  char buf[160];
-  std::snprintf(buf, sizeof buf, ": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)",
-                what, i, st.rms, st.skewness, st.kurtosis);
+  const std::string buf =
+      io::formatted(": %s %zu has non-finite heights or statistics (rms %g m, skewness %g, kurtosis %g)", what, i,
+                    st.rms, st.skewness, st.kurtosis);
   const std::string m = where + buf +
                         ": the PSD's heights overflow double precision; allowed: a PSD whose heights and their fourth "
                         "powers stay finite (rms height well below 1e50 m)";

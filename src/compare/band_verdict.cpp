@@ -146,8 +146,7 @@ std::string resolution_warning(const io::BandLevels& b, const MeasuredSpectrum& 
     if (std::fabs(shift) > std::fabs(worst)) worst = shift, at = r.centre;
   }
   if (!(std::fabs(worst) > 0.5)) return "";
-  char text[160];
-  std::snprintf(text, sizeof text, "%+.1f dB (the %s Hz band)", worst, number_text(at).c_str());
+  const std::string text = io::formatted("%+.1f dB (the %s Hz band)", worst, number_text(at).c_str());
   return bins + ": read on the model's own mean PSD, bins that coarse move its bands by up to " + text +
          " (kernels/spectral D-32c); give compare the recording itself (it then uses the model's estimator), or make "
          "the PSD with the model's segment";
@@ -170,9 +169,9 @@ std::string band_rule_warning(const io::BandLevels& b, const MeasuredSpectrum& m
     const double shift =
         spectral::band_rule_shift(o.model_psd.data(), o.model_psd.size(), o.model_df, b.lower[k], b.upper[k]);
     if (!(sd > 0.0) || !(std::fabs(shift) > sd)) continue;
-    char one[160];
-    std::snprintf(one, sizeof one, "%s%.4g .. %.4g Hz (%.2g bins, %+.2f dB, %.2g sd)", count ? "; " : "", b.lower[k],
-                  b.upper[k], (b.upper[k] - b.lower[k]) / o.model_df, kDb * shift, std::fabs(shift) / sd);
+    const std::string one =
+        io::formatted("%s%.4g .. %.4g Hz (%.2g bins, %+.2f dB, %.2g sd)", count ? "; " : "", b.lower[k], b.upper[k],
+                      (b.upper[k] - b.lower[k]) / o.model_df, kDb * shift, std::fabs(shift) / sd);
     bands += one;
     ++count;
   }

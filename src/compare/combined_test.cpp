@@ -73,22 +73,22 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
     return t;
   }
   t.rejected = t.result.p_value < level;
-  char buf[240];
+  std::string buf;
   if (t.result.draws > 0 && !(table_factor > 0.0))
-    std::snprintf(buf, sizeof buf,
-                  "%s at level %g: p = %.3g (T2 = %.4g, %zu bands; law of T2 with the logger noise's terms by a "
-                  "parametric bootstrap of %zu draws, kernels/spectral D-31b, D-33f)",
-                  t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, p, t.result.draws);
+    buf = io::formatted(
+        "%s at level %g: p = %.3g (T2 = %.4g, %zu bands; law of T2 with the logger noise's terms by a "
+        "parametric bootstrap of %zu draws, kernels/spectral D-31b, D-33f)",
+        t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, p, t.result.draws);
   else if (t.result.draws > 0)
-    std::snprintf(buf, sizeof buf,
-                  "%s at level %g: p = %.3g (T2 = %.4g, %zu bands; law of T2 with the %s's error by a parametric "
-                  "bootstrap of %zu draws, kernels/spectral D-31b)",
-                  t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, p, b.table.c_str(),
-                  t.result.draws);
+    buf = io::formatted(
+        "%s at level %g: p = %.3g (T2 = %.4g, %zu bands; law of T2 with the %s's error by a parametric "
+        "bootstrap of %zu draws, kernels/spectral D-31b)",
+        t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, p, b.table.c_str(),
+        t.result.draws);
   else
-    std::snprintf(buf, sizeof buf, "%s at level %g: p = %.3g (T2 = %.4g, F = %.4g on %g, %g dof, %zu bands)",
-                  t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, t.result.f,
-                  t.result.dof1, t.result.dof2, p);
+    buf = io::formatted("%s at level %g: p = %.3g (T2 = %.4g, F = %.4g on %g, %g dof, %zu bands)",
+                        t.rejected ? "REJECTED" : "not rejected", level, t.result.p_value, t.result.t2, t.result.f,
+                        t.result.dof1, t.result.dof2, p);
   t.verdict = buf;
   return t;
 }

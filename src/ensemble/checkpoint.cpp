@@ -15,6 +15,7 @@
 #include "src/error.hpp"
 #include "src/io/content_hash.hpp"
 #include "src/io/temp_files.hpp"
+#include "src/io/number_text.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,9 +25,8 @@ namespace {
 constexpr char kMagic[8] = {'R', 'S', 'C', 'H', 'U', 'N', 'K', '1'};
 
 std::string chunk_name(std::uint64_t lo, std::uint64_t hi) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "chunk_%012llu_%012llu.bin", static_cast<unsigned long long>(lo),
-                static_cast<unsigned long long>(hi));
+  const std::string buf = io::formatted("chunk_%012llu_%012llu.bin", static_cast<unsigned long long>(lo),
+                                        static_cast<unsigned long long>(hi));
   return buf;
 }
 }  // namespace

@@ -1,4 +1,5 @@
 #include "src/ensemble/progress.hpp"
+#include "src/io/number_text.hpp"
 
 #include <sys/ioctl.h>
 #include <unistd.h>
@@ -18,13 +19,13 @@ int terminal_columns() {
 }
 
 std::string seconds_text(double s) {
-  char buf[32];
+  std::string buf;
   if (s < 60)
-    std::snprintf(buf, sizeof buf, "%.0fs", s);
+    buf = io::formatted("%.0fs", s);
   else if (s < 3600)
-    std::snprintf(buf, sizeof buf, "%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+    buf = io::formatted("%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
   else
-    std::snprintf(buf, sizeof buf, "%dh%02dm", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
+    buf = io::formatted("%dh%02dm", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
   return buf;
 }
 
@@ -76,12 +77,11 @@ void Progress::print(std::uint64_t done, bool final) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
   const double eta = rate > 0 ? static_cast<double>(total_ - done) / rate : 0.0;
-  char counts[96];
-  std::snprintf(counts, sizeof counts, "%llu/%llu  %.1f/s  %s %s", static_cast<unsigned long long>(done),
-                static_cast<unsigned long long>(total_), rate, final ? "took" : "ETA",
-                seconds_text(final ? elapsed : eta).c_str());
+  const std::string counts = io::formatted("%llu/%llu  %.1f/s  %s %s", static_cast<unsigned long long>(done),
+                                           static_cast<unsigned long long>(total_), rate, final ? "took" : "ETA",
+                                           seconds_text(final ? elapsed : eta).c_str());
   if (!tty_) {
-    std::fprintf(stderr, "%s%s: %s\n", prefix_.c_str(), label_.c_str(), counts);
+    std::fprintf(stderr, "%s%s: %s\n", prefix_.c_str(), label_.c_str(), counts.c_str());
     std::fflush(stderr);
     return;
   }

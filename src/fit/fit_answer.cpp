@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "kernels/spectral/fit_search.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::fit {
 
@@ -22,9 +23,8 @@ void combine(const std::vector<bool>& defined, const std::vector<double>& p_valu
     }
   out_defined = true;
   out_p = spectral::fisher_combined_p(p_values);
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%s at level 0.05: p = %.3g (Fisher's combination of the %zu points' tests)",
-                out_p < 0.05 ? "REJECTED" : "not rejected", out_p, p_values.size());
+  const std::string buf = io::formatted("%s at level 0.05: p = %.3g (Fisher's combination of the %zu points' tests)",
+                                        out_p < 0.05 ? "REJECTED" : "not rejected", out_p, p_values.size());
   out_verdict = buf;
 }
 

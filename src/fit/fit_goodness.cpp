@@ -7,6 +7,7 @@
 
 #include "kernels/spectral/band_test_table.hpp"
 #include "src/rng/philox_stream.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::fit {
 
@@ -18,20 +19,20 @@ std::string fitted_verdict(const spectral::BandTestResult& t, std::size_t p, std
   if (!t.defined)
     return "none (" + std::to_string(p) + " bands need K >= " + std::to_string(t.needed) +
            " realisations, the run has " + std::to_string(K) + ")";
-  char buf[360];
+  std::string buf;
   const char* verdict = t.p_value < kLevel ? "REJECTED" : "not rejected";
   const char* keys = q == 1 ? "key" : "keys";
   if (t.draws > 0)
-    std::snprintf(buf, sizeof buf,
-                  "%s at level %g: p = %.3g (T2 = %.4g over the %g dimensions of the %zu bands that the %zu fitted "
-                  "%s cannot move, corrected for the search; law with the table's error by a parametric bootstrap "
-                  "of %zu draws; kernels/spectral D-27j, D-31)",
-                  verdict, kLevel, t.p_value, t.t2, t.dof1, p, q, keys, t.draws);
+    buf = io::formatted(
+        "%s at level %g: p = %.3g (T2 = %.4g over the %g dimensions of the %zu bands that the %zu fitted "
+        "%s cannot move, corrected for the search; law with the table's error by a parametric bootstrap "
+        "of %zu draws; kernels/spectral D-27j, D-31)",
+        verdict, kLevel, t.p_value, t.t2, t.dof1, p, q, keys, t.draws);
   else
-    std::snprintf(buf, sizeof buf,
-                  "%s at level %g: p = %.3g (T2 = %.4g, F = %.4g on %g, %g dof: %zu bands less %zu fitted %s, "
-                  "corrected for the search; kernels/spectral D-27j)",
-                  verdict, kLevel, t.p_value, t.t2, t.f, t.dof1, t.dof2, p, q, keys);
+    buf = io::formatted(
+        "%s at level %g: p = %.3g (T2 = %.4g, F = %.4g on %g, %g dof: %zu bands less %zu fitted %s, "
+        "corrected for the search; kernels/spectral D-27j)",
+        verdict, kLevel, t.p_value, t.t2, t.f, t.dof1, t.dof2, p, q, keys);
   return buf;
 }
 

@@ -158,10 +158,9 @@ namespace {
 // "key ; values": the parameter vector (and a replicate's index), then what the fit read from it.
 std::string journal_line(const std::vector<double>& x, const std::vector<double>& v) {
   std::string line;
-  char buf[32];
-  for (const double c : x) std::snprintf(buf, sizeof buf, "%.17g ", c), line += buf;
+  for (const double c : x) line += io::formatted("%.17g ", c);
   line += ";";
-  for (const double c : v) std::snprintf(buf, sizeof buf, " %.17g", c), line += buf;
+  for (const double c : v) line += io::formatted(" %.17g", c);
   return line + "\n";
 }
 

@@ -6,27 +6,27 @@
 
 #include "src/fit/fit_model.hpp"
 #include "src/io/json_number.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::fit {
 
 using io::json_number;
 
 std::string objective_text(const FitObjective& o) {
-  char buf[480];
+  std::string buf;
   if (o.common_random_numbers)
-    std::snprintf(buf, sizeof buf,
-                  "common random numbers hold (the band logs' second difference over a step of %g of each range is "
-                  "%.2g %% of independent runs'): ln L of the study's seed, profile-likelihood intervals "
-                  "(kernels/spectral D-27d)",
-                  o.step, 100.0 * o.incoherent_share);
+    buf = io::formatted(
+        "common random numbers hold (the band logs' second difference over a step of %g of each range is "
+        "%.2g %% of independent runs'): ln L of the study's seed, profile-likelihood intervals "
+        "(kernels/spectral D-27d)",
+        o.step, 100.0 * o.incoherent_share);
   else
-    std::snprintf(buf, sizeof buf,
-                  "common random numbers do not hold (the band logs' second difference over a step of %g of each "
-                  "range is %.3g %% of independent runs', above %g %%): ln L smoothed by a quadratic response "
-                  "surface of %d runs with seeds of their own, %d rounds, lack of fit p = %.2g (kernels/spectral "
-                  "D-27i)",
-                  o.step, 100.0 * o.incoherent_share, 100.0 * kCoherenceLimit, o.surface_runs, o.rounds,
-                  o.lack_of_fit_p);
+    buf = io::formatted(
+        "common random numbers do not hold (the band logs' second difference over a step of %g of each "
+        "range is %.3g %% of independent runs', above %g %%): ln L smoothed by a quadratic response "
+        "surface of %d runs with seeds of their own, %d rounds, lack of fit p = %.2g (kernels/spectral "
+        "D-27i)",
+        o.step, 100.0 * o.incoherent_share, 100.0 * kCoherenceLimit, o.surface_runs, o.rounds, o.lack_of_fit_p);
   return buf;
 }
 

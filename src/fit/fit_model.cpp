@@ -136,8 +136,7 @@ io::BandLevels FitModel::run_at(std::size_t point, const std::vector<double>& u,
   sets = in_.sets;
   sets.insert(sets.end(), in_.points[point].sets.begin(), in_.points[point].sets.end());
   for (std::size_t i = 0; i < in_.vary.size(); ++i) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", in_.vary[i].value(u[i]));
+    const std::string buf = io::formatted("%.17g", in_.vary[i].value(u[i]));
     sets.push_back(in_.vary[i].key + "=" + buf);
   }
   sets.insert(sets.end(), extra.begin(), extra.end());

@@ -185,11 +185,10 @@ SurfaceFit surface_search(FitModel& model, const FitInputs& in) {
         shrinks = shrinks && next[j] >= std::max(fit.best[j] - fit.lower[j], fit.upper[j] - fit.best[j]);
       }
       if (!shrinks) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf,
-                      "a quadratic does not follow the band logs over the smallest box that holds the interval "
-                      "(lack of fit p = %.2g < %g, kernels/spectral D-27i)",
-                      s.fit.p_value, kLackOfFitLevel);
+        const std::string buf = io::formatted(
+            "a quadratic does not follow the band logs over the smallest box that holds the interval "
+            "(lack of fit p = %.2g < %g, kernels/spectral D-27i)",
+            s.fit.p_value, kLackOfFitLevel);
         fit.refused = buf;
         break;
       }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "src/error.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::io {
 
@@ -72,8 +73,7 @@ std::uint64_t fnv1a64(const void* data, std::size_t n, std::uint64_t h) {
 std::uint64_t fnv1a64(const std::string& bytes) { return fnv1a64(bytes.data(), bytes.size()); }
 
 std::string hex16(std::uint64_t h) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  const std::string buf = io::formatted("%016llx", static_cast<unsigned long long>(h));
   return buf;
 }
 

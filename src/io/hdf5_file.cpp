@@ -17,6 +17,7 @@
 #include "src/io/available_memory.hpp"
 #include "src/io/input_file.hpp"
 #include "src/io/temp_files.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::io {
 
@@ -278,8 +279,7 @@ std::vector<double> Hdf5Reader::read(const std::string& dataset, std::vector<std
   double n_values = 1.0;
   for (auto v : d) n_values *= static_cast<double>(v);
   if (n_values * sizeof(double) > available_memory()) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, " holds %.0f values (%.3g GiB)", n_values, n_values * 8.0 / 1073741824.0);
+    const std::string buf = io::formatted(" holds %.0f values (%.3g GiB)", n_values, n_values * 8.0 / 1073741824.0);
     throw data_error(path_ + ": dataset " + dataset + buf +
                      ", more than the memory available; allowed: a dataset that fits in memory");
   }

@@ -15,6 +15,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/hdf5_group_copy.hpp"
 #include "src/io/temp_files.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::io {
 
@@ -326,8 +327,7 @@ struct Stacker {
 };
 
 std::string point_group(std::size_t i) {
-  char name[40];
-  std::snprintf(name, sizeof name, "/sweep/point_%04zu", i);
+  const std::string name = io::formatted("/sweep/point_%04zu", i);
   return name;
 }
 

@@ -58,9 +58,8 @@ LossEffect loss_effect(const PsdEnsemble& open, const PsdEnsemble& closed, const
 }
 
 std::string loss_effect_sentence(double share, const LossEffect& e, bool& warning) {
-  char pct[32], worst[48];
-  std::snprintf(pct, sizeof pct, "%.3g %%", 100.0 * share);
-  std::snprintf(worst, sizeof worst, "%+.2f dB", e.worst_db);
+  const std::string pct = io::formatted("%.3g %%", 100.0 * share);
+  const std::string worst = io::formatted("%+.2f dB", e.worst_db);
   const std::string against =
       "against the same realisations with a contact that never opens ([contact] loss = closed; kernels/spectral "
       "D-35)";

@@ -1,21 +1,36 @@
 #pragma once
-// Numbers as messages and tables print them, all through significant_text (printf's "%.*g"):
+// Text as messages and tables print it, all through `formatted` (printf's format, into a string of whatever
+// length it takes: no fixed buffer cuts a long message short). Numbers through significant_text ("%.*g"):
 // number_text: six significant digits ("%.6g"), nan and inf spelled out; four_digits and three_digits:
 // "%.4g", "%.3g"; exact_text: "%.17g", every bit of a double (the input texts that cached tables hash);
 // si_text and length_text: SI-prefixed, six digits ("156.25 nm").
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <string>
 #include <utility>
 
 namespace rollspec::io {
 
-// v with `digits` significant digits (1 to 17), as printf's %.*g prints it: the one number formatter.
-inline std::string significant_text(double v, int digits) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+// printf's format expanded into a string: the one formatter of the engine's text.
+#if defined(__GNUC__)
+__attribute__((format(printf, 1, 2)))
+#endif
+inline std::string
+formatted(const char* format, ...) {
+  std::va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+  va_end(again);
+  return out;
 }
+
+// v with `digits` significant digits (1 to 17), as printf's %.*g prints it: the one number formatter.
+inline std::string significant_text(double v, int digits) { return formatted("%.*g", digits, v); }
 
 inline std::string number_text(double v) { return significant_text(v, 6); }
 inline std::string four_digits(double v) { return significant_text(v, 4); }

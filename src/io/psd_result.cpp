@@ -36,6 +36,16 @@ void write_sensor_scale(Hdf5Writer& w, const std::string& group, const std::vect
   w.make_scale(group + "/sensor", "sensor");
 }
 
+void write_exact_reference(Hdf5Writer& w, const PsdEnsemble& e, const std::vector<double>& exact,
+                           const std::string& long_name) {
+  w.write("/reference/psd", {1, exact.size()}, exact.data(), e.units, long_name);
+  w.attribute("/reference/psd", "label", std::string("exact"));
+  write_frequency_scale(w, "/reference", e.frequency);
+  write_sensor_scale(w, "/reference", e.sensors);
+  w.attach_scale("/reference/psd", "/reference/sensor", 0);
+  w.attach_scale("/reference/psd", "/reference/frequency", 1);
+}
+
 void write_sensor_positions(Hdf5Writer& w, const std::string& group, const std::vector<double>& positions,
                             std::size_t rows, const std::string& long_name) {
   std::vector<double> p(rows, NAN);  // the sensor mean is at no one place

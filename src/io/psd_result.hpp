@@ -58,6 +58,11 @@ struct PsdEnsemble {
 
 void write_psd_result(Hdf5Writer& w, const PsdEnsemble& e);
 
+// /reference/psd: a scene's exact answer for the one row of `e` (its frequencies, sensor and units), labelled
+// "exact", on /reference's own scales.
+void write_exact_reference(Hdf5Writer& w, const PsdEnsemble& e, const std::vector<double>& exact,
+                           const std::string& long_name);
+
 // The third-octave bands of a result: those inside [max(band_min, df), min(band_max, f_max)].
 std::vector<spectral::Band> result_bands(const std::vector<double>& frequency, double band_min, double band_max);
 

@@ -7,6 +7,7 @@
 
 #include "kernels/spectral/table_jackknife.hpp"
 #include "src/io/psd_result.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::io {
 
@@ -95,12 +96,11 @@ std::string table_noise_warning(const TableError& t, std::uint64_t K) {
   };
   const double noise = median(share), r = median(ratio);
   if (noise <= 0.5) return "";
-  char text[400];
+  std::string text;
   const std::string k_needed =
       std::isfinite(r) ? "about " + std::to_string(static_cast<long long>(std::ceil(4.0 * r * static_cast<double>(K))))
                        : "enough realisations that the table's term shows above it";
-  std::snprintf(
-      text, sizeof text,
+  text = io::formatted(
       "table jackknife: %.0f %% of the jackknife variance (median over the bands) is the sub-table runs' own "
       "noise, not the table's (the realisations are chaotic in the table), so with %llu realisations per "
       "sub-table the intervals are wider than the table's error alone needs (kernels/spectral D-30c, D-30f); ",

@@ -94,8 +94,7 @@ void check_point_count(const SweepStudy& s, std::size_t limit) {
 }
 
 std::string point_path(const std::string& dir, std::size_t i) {
-  char name[32];
-  std::snprintf(name, sizeof name, "point_%04zu.h5", i);
+  const std::string name = io::formatted("point_%04zu.h5", i);
   return (fs::path(dir) / name).string();
 }
 

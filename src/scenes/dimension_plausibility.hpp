@@ -31,17 +31,14 @@ void refuse_failed_relations(const study::KeyReader& s, const std::vector<Dimens
 // resolve_study), before anything is made from it.
 void check_dimensions(const study::KeyReader& s);
 
-// The relations of each scene (dimension_relations.cpp, rolling_dimension_relations.cpp).
-std::vector<DimensionRelation> ball_on_beam_relations(const study::KeyReader& s);
-std::vector<DimensionRelation> stiffness_relations(const study::KeyReader& s);
-std::vector<DimensionRelation> texture_relations(const study::KeyReader& s);
-std::vector<DimensionRelation> rolling_pipe_relations(const study::KeyReader& s);
-std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s);
+// Each scene's own relations are its registry row's `relations` (in its package folder).
 
 // Shared by the scenes' relations: "0.39 m"; the relations of [texture] (a self-affine source) with
 // the length `span` that holds its profile (named by `span_key`), and of [surface] (its grid against
 // the Hertz contact radius when it carries a contact, > 0); the ball's Hertz radius under its weight.
 std::string dim(double v, const char* unit);
+// Whether the study writes any self-affine [texture] key (checked even where no texture is drawn).
+bool self_affine_written(const study::KeyReader& s);
 void add_texture_relations(const study::KeyReader& s, const std::string& span_key, double span,
                            const std::string& span_what, std::vector<DimensionRelation>& out);
 // contact_grid: the grid is a contact's (the half-space solver's, the tube's floor), which needs a continuum

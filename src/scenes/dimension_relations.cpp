@@ -181,33 +181,4 @@ void approach_relations(const study::KeyReader& s, double a, std::vector<Dimensi
                        ": a sphere's roughness lies between an atom (1e-10 m) and a hundredth of its radius"});
 }
 
-std::vector<DimensionRelation> stiffness_relations(const study::KeyReader& s) {
-  std::vector<DimensionRelation> out;
-  const double r = s.real("ball.radius");
-  const double a = hertz_radius(s, s.real("flat.youngs_modulus"), s.real("flat.poisson"));
-  ball_relations(a, r, out);
-  approach_relations(s, a, out);
-  const bool rough =
-      study::read_choice(s, "stiffness.surface", study::kStiffnessSurfaces) == study::StiffnessSurface::rough;
-  add_surface_relations(s, rough, a, out);
-  // The patch holds the contact, not the whole roughness: a roll-off up to a hundred patches long still
-  // leaves it a share of the stated rms (the template's 1 mm over 128 um). A smooth ball on a smooth flat
-  // draws no texture: its keys, written, are checked all the same.
-  const double patch = s.real("surface.spacing") * static_cast<double>(s.integer("surface.nx"));
-  add_texture_relations(s, "surface.spacing", rough || self_affine_written(s) ? 100.0 * patch : 0.0,
-                        "a hundred times the surface patch nx x spacing", out);
-  return out;
-}
-
-std::vector<DimensionRelation> texture_relations(const study::KeyReader& s) {
-  std::vector<DimensionRelation> out;
-  const double length = s.real("lines.length"), dx = s.real("lines.spacing");
-  add_texture_relations(s, "lines.length", length, "the line length", out);
-  out.push_back({{"lines.spacing", "lines.length"},
-                 length >= 16.0 * dx,
-                 "a line of " + dim(length, "m") + " holds fewer than 16 samples at spacing " + dim(dx, "m")});
-  add_surface_relations(s, true, 0.0, out, false);
-  return out;
-}
-
 }  // namespace rollspec::scenes

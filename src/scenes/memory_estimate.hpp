@@ -30,14 +30,6 @@ struct MemoryItem {
   std::string what;
 };
 
-// The memory model of each scene (its registry row's `memory`), `threads` OpenMP threads.
-std::vector<MemoryItem> random_oscillator_memory(const study::KeyReader& s, int threads);
-std::vector<MemoryItem> ball_on_beam_memory(const study::KeyReader& s, int threads);
-std::vector<MemoryItem> rolling_beam_memory(const study::KeyReader& s, int threads);
-std::vector<MemoryItem> rolling_pipe_memory(const study::KeyReader& s, int threads);
-std::vector<MemoryItem> stiffness_memory(const study::KeyReader& s, int threads);
-std::vector<MemoryItem> texture_memory(const study::KeyReader& s, int threads);
-
 // `threads`: OpenMP threads that each hold a workspace; the terms are the study's scene's (find_scene).
 MemoryEstimate estimate_memory(const study::KeyReader& s, int threads);
 

@@ -57,6 +57,17 @@ ResultShape PsdRows::shape() const {
   return s;
 }
 
+io::PsdEnsemble PsdRows::welch_ensemble(const ensemble::EnsembleSums& sums, const spectral::WelchPlan& welch,
+                                        std::size_t record_samples, double confidence) const {
+  io::PsdEnsemble e = ensemble(sums);
+  e.welch_dof = static_cast<double>(sums.count) * welch.equivalent_dof(record_samples);
+  e.window_enbw_bins = spectral::equivalent_noise_bandwidth_bins(welch.window());
+  e.welch = welch.config();
+  e.record_samples = record_samples;
+  e.confidence = confidence;
+  return e;
+}
+
 io::PsdEnsemble PsdRows::ensemble(const ensemble::EnsembleSums& sums) const {
   io::PsdEnsemble e;
   e.frequency = frequency_;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "kernels/spectral/third_octave_bands.hpp"
+#include "kernels/spectral/welch.hpp"
 #include "src/ensemble/ensemble_driver.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/scenes/result_shape.hpp"
@@ -46,6 +47,11 @@ class PsdRows {
   // The ensemble of the rows (means, scatter of bins and bands, the bands' tail check) for
   // io::write_psd_result; the caller sets units, quantity and confidence.
   io::PsdEnsemble ensemble(const ensemble::EnsembleSums& sums) const;
+  // ensemble() with the Welch estimator's record: its configuration, window bandwidth, the record of
+  // `record_samples` each realisation's rows were estimated from (its stationary D-16 dof times K, for
+  // information) and the intervals' confidence.
+  io::PsdEnsemble welch_ensemble(const ensemble::EnsembleSums& sums, const spectral::WelchPlan& welch,
+                                 std::size_t record_samples, double confidence) const;
 
   // The rows, bins and bands /psd and /bands are written with.
   ResultShape shape() const;

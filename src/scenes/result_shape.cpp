@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "src/scenes/psd_rows.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::scenes {
 
@@ -10,8 +11,7 @@ namespace {
 
 std::string span(const std::vector<double>& lo, const std::vector<double>& hi) {
   if (lo.empty()) return "";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, " (%.6g .. %.6g Hz)", lo.front(), hi.back());
+  const std::string buf = io::formatted(" (%.6g .. %.6g Hz)", lo.front(), hi.back());
   return buf;
 }
 

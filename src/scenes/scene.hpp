@@ -1,9 +1,10 @@
 #pragma once
 // A scene turns a validated study into realisations. It holds the stages it needs as objects
 // (stage.hpp): `rollspec plan` prints their inspect(), prepare() resolves them, and a stage a scene
-// does not need is never computed. To add a scene: a SceneInfo in scene_registry.cpp (everything
-// the engine asks of a scene is a field there: no code outside the scene tests its name); to add a
-// stage: a Stage object added in the scene's constructor.
+// does not need is never computed. To add a scene: its package folder src/scenes/<scene>/ with its
+// SceneInfo row (everything the engine asks of a scene is a field there: no code outside the scene
+// tests its name) and that row in scene_registry.cpp's list; to add a stage: a Stage object added in
+// the scene's constructor.
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -195,6 +196,9 @@ struct SceneInfo {
 };
 
 const std::vector<SceneInfo>& scene_registry();
+// A row added by a program before the registry is first read (a test-only scene in its own folder, linked into a
+// test's build of the command: tests/engine/toy_scene); after the first read it throws std::logic_error.
+void add_scene(SceneInfo row);
 const SceneInfo& find_scene(const std::string& name);  // throws config_error naming the scenes
 // "a or b": the scenes whose row has what `has` asks (for a command's refusal).
 std::string scenes_with(const std::function<bool(const SceneInfo&)>& has);

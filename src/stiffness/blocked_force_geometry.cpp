@@ -12,6 +12,7 @@
 #include "kernels/texture/psd.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::stiffness {
 
@@ -132,10 +133,9 @@ double contact_box_work(const BlockedForceGeometry& g, std::size_t window, doubl
 }
 
 std::string BlockedForceGeometry::describe() const {
-  char buf[768];
+  std::string buf;
   const double dx = cell;
-  std::snprintf(
-      buf, sizeof buf,
+  buf = io::formatted(
       "cell %s (a/%.3g)%s, window %zu cells (%s), strip %zu x %zu cells (%s wide, %s long), step %zu cells "
       "(%s), %zu positions, Welch segment %zu; contact radius a = %s, texture rms %s; build about %.2g s CPU, "
       "%.2g s wall on %d thread%s",

@@ -21,6 +21,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::stiffness {
 
@@ -105,9 +106,7 @@ int build_threads(const BlockedForceGeometry& g) {
 
 std::string equivalent_roughness_describe(const TableStudy& ts, const BlockedForceGeometry& g) {
   const int threads = build_threads(g);
-  char buf[768];
-  std::snprintf(
-      buf, sizeof buf,
+  const std::string buf = io::formatted(
       "%lld strips (surface realisations 0..%lld) of %zu x %zu cells (%s long, %s wide), cell %s (a/%.3g)%s, "
       "window %zu cells, %zu positions per strip (step %zu cells = %s), Welch segment %zu; contact radius "
       "a = %s; build about %.2g s CPU, %.2g s wall on %d thread%s (from the window; plan%s times its first solves)",

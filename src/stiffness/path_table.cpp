@@ -21,6 +21,7 @@
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::stiffness {
 
@@ -80,10 +81,9 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
 }
 
 std::string PathTableGeometry::describe() const {
-  char buf[1024];
+  std::string buf;
   const double dx = base.cell;
-  std::snprintf(
-      buf, sizeof buf,
+  buf = io::formatted(
       "strip 0 of the surface, cell %s (a/%.3g)%s, strip %zu x %zu cells (%s long, %s wide), window %zu cells, "
       "%zu approaches (more until P >= 5 W at every position, B43a) x %zu positions (step %zu cells = %s) over the "
       "ball's path of %s; contact radius a = %s, "

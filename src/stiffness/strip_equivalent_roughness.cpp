@@ -13,6 +13,7 @@
 #include "src/error.hpp"
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::stiffness {
 
@@ -46,10 +47,9 @@ double estimated_seconds(const PathTableGeometry& g) {
 }  // namespace
 
 std::string strip_equivalent_roughness_describe(const PathTableGeometry& g) {
-  char buf[512];
+  std::string buf;
   const double dx = g.base.cell;
-  std::snprintf(
-      buf, sizeof buf,
+  buf = io::formatted(
       "line = strip: h_eq of strip 0 of the surface along the ball's path of %s, the path table's grid: cell %s "
       "(a/%.3g), strip %zu x %zu cells, window %zu cells, %zu positions (step %zu cells = %s); build about "
       "%.2g s on one core; every realisation rolls over this one strip (K > 1 repeats the same run)",

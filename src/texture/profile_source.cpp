@@ -44,9 +44,8 @@ double nominal_step(double fitted, std::size_t n, double half_unit) {
   const double nn = static_cast<double>(n);
   const double error = half_unit / std::sqrt(3.0) / std::sqrt(nn * (nn * nn - 1.0) / 12.0);
   for (int digits = 1; digits <= 17; ++digits) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.*e", digits - 1, fitted);
-    const double shortest = std::strtod(text, nullptr);  // the double nearest that decimal
+    const std::string text = io::formatted("%.*e", digits - 1, fitted);
+    const double shortest = std::strtod(text.c_str(), nullptr);  // the double nearest that decimal
     if (std::fabs(shortest - fitted) <= error) return shortest;
   }
   return fitted;

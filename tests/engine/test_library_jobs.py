@@ -7,7 +7,10 @@ The rules, read from the C++ of src/, kernels/ and python/ (comments blanked, li
   no function named json_string, json_escape, json_quote or escape_json (compare's and fit's JSON
   once had both);
 - FNV's offset basis and prime appear only in src/io/content_hash.hpp/.cpp (a second copy once sat in
-  the checkpoint, the table text and fit's journal).
+  the checkpoint, the table text and fit's journal);
+- the engine's text is formatted by one function, io::formatted (src/io/number_text.hpp): no other
+  snprintf or sprintf in src/ or python/ (56 calls into fixed buffers, which cut a long message short, once
+  sat in 32 files). The kernels keep their own (their error messages; they include nothing of src/).
 `violations` runs on the real tree and on scratch trees that break each rule, so the test can fail."""
 import re
 
@@ -18,6 +21,8 @@ ESCAPE_FUNCTION = re.compile(r"\b(json_string|json_escape|json_quote|escape_json
 FNV = re.compile(r"\b(1099511628211|0x100000001b3|14695981039346656037|0xcbf29ce484222325)(ull|ULL|u|U)?\b",
                  re.I)
 HASH_HOME = {"src/io/content_hash.hpp", "src/io/content_hash.cpp"}
+PRINTF_INTO = re.compile(r"\b(?:std::)?v?s(?:n)?printf\s*\(")
+FORMAT_HOME = "src/io/number_text.hpp"
 
 
 def cpp_files(root):
@@ -35,6 +40,9 @@ def violations(root):
                 found.append(f"{rel}:{n}: JSON escaped by hand; build a nlohmann::json and dump() it")
             if FNV.search(line) and rel not in HASH_HOME:
                 found.append(f"{rel}:{n}: FNV-1a written again; call io::content_hash (src/io/content_hash.hpp)")
+            if PRINTF_INTO.search(line) and rel != FORMAT_HOME and not rel.startswith("kernels/"):
+                found.append(f"{rel}:{n}: text formatted into a buffer by hand; call io::formatted "
+                             "(src/io/number_text.hpp)")
     return found
 
 
@@ -60,3 +68,15 @@ def test_a_second_fnv_is_found_but_not_in_its_home_or_a_comment(tmp_path):
     })
     assert violations(tree) == ["src/ensemble/checkpoint.cpp:1: FNV-1a written again; call io::content_hash "
                                 "(src/io/content_hash.hpp)"]
+
+
+def test_a_second_formatter_is_found_but_not_in_its_home_or_the_kernels(tmp_path):
+    tree = scratch(tmp_path, {
+        "src/io/number_text.hpp": "std::vsnprintf(nullptr, 0, format, args);\n",
+        "src/cli/plan.cpp": "char buf[32];\nstd::snprintf(buf, sizeof buf, \"%g\", x);\n",
+        "python/y.cpp": "sprintf(buf, \"%d\", n);\n",
+        "kernels/texture/psd.cpp": "std::snprintf(buf, sizeof buf, \"%g\", x);\n",
+    })
+    assert sorted(violations(tree)) == [
+        "python/y.cpp:1: text formatted into a buffer by hand; call io::formatted (src/io/number_text.hpp)",
+        "src/cli/plan.cpp:2: text formatted into a buffer by hand; call io::formatted (src/io/number_text.hpp)"]

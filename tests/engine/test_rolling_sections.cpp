@@ -6,9 +6,9 @@
 #include <string>
 
 #include "src/error.hpp"
-#include "src/scenes/random_oscillator_settings.hpp"
-#include "src/scenes/rolling_beam_settings.hpp"
-#include "src/scenes/rolling_pipe_settings.hpp"
+#include "src/scenes/random_oscillator/random_oscillator_settings.hpp"
+#include "src/scenes/rolling_beam/rolling_beam_settings.hpp"
+#include "src/scenes/rolling_pipe/rolling_pipe_settings.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/sections/random_oscillator_sections.hpp"
 #include "src/study/sections/rolling_analysis_section.hpp"

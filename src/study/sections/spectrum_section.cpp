@@ -6,6 +6,7 @@
 
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/study/sections/section_keys.hpp"
+#include "src/io/number_text.hpp"
 
 namespace rollspec::study {
 
@@ -35,10 +36,9 @@ KeySpec SpectrumSection::skip_start_key(const std::string& doc, const std::strin
 void SpectrumSection::check_band_range(double sample_rate, std::size_t segment_samples) const {
   const double df = sample_rate / static_cast<double>(segment_samples), nyquist = sample_rate / 2.0;
   const double lo = std::max(band_min, df), hi = std::min(band_max, nyquist);
-  char range[200];
-  std::snprintf(range, sizeof range,
-                "frequency step %.6g Hz, Nyquist frequency %.6g Hz (sample rate %.6g Hz, segment %zu)", df, nyquist,
-                sample_rate, segment_samples);
+  const std::string range =
+      io::formatted("frequency step %.6g Hz, Nyquist frequency %.6g Hz (sample rate %.6g Hz, segment %zu)", df, nyquist,
+                    sample_rate, segment_samples);
   if (band_max <= band_min)
     origin(band_max).refuse("not above [spectrum] band_min = " + value_text(band_min) +
                             "; allowed: band_min < band_max");

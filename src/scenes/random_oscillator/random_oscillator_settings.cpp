@@ -1,0 +1,69 @@
+#include "src/scenes/random_oscillator/random_oscillator_settings.hpp"
+
+#include <string>
+
+#include "src/scenes/random_oscillator/random_oscillator.hpp"
+#include "src/scenes/study_welch.hpp"
+#include "src/study/key_reader.hpp"
+#include "src/study/sections/random_oscillator_sections.hpp"
+#include "src/study/sections/study_section.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+
+std::vector<KeySpec> random_oscillator_keys() {
+  std::vector<KeySpec> k = OscillatorSection::keys();
+  for (auto& t : ForceSection::keys()) k.push_back(t);
+  for (auto& t : RecordSignalSection::keys()) k.push_back(t);
+  return k;
+}
+
+RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {
+  RandomOscillatorSettings o;
+  o.seed = StudySection::parse(s).seed;
+  const auto oscillator = OscillatorSection::parse(s);
+  o.mass = oscillator.mass;
+  o.natural_frequency = oscillator.natural_frequency;
+  o.damping_ratio = oscillator.damping_ratio;
+  const auto force = ForceSection::parse(s);
+  o.amplitudes = force.amplitudes;
+  o.level = force.level;
+  const study::SpectrumSection spectrum = study::SpectrumSection::parse(s);
+  o.confidence = spectrum.confidence;
+  o.band_min = spectrum.band_min;
+  o.band_max = spectrum.band_max;
+  // Cross-key checks, each naming the key that must change.
+  const auto signal = RecordSignalSection::parse(s);
+  const double fs = signal.sample_rate;
+  o.sample_rate = fs;
+  o.samples = signal.samples;
+  if (o.natural_frequency >= fs / 2)
+    oscillator.origin(oscillator.natural_frequency)
+        .refuse("must lie below the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
+  o.f_max = force.f_max == 0.0 ? fs / 2 : force.f_max;
+  if (o.f_max > fs / 2)
+    force.origin(force.f_max).refuse("exceeds the Nyquist frequency f_s/2 = " + std::to_string(fs / 2) + " Hz");
+  const auto segment = static_cast<std::size_t>(spectrum.segment);
+  if (segment > o.samples)
+    spectrum.origin(spectrum.segment)
+        .refuse("is longer than one realisation's record (" + std::to_string(o.samples) +
+                " samples = duration x sample_rate)");
+  o.welch = study_welch_config(spectrum, fs);
+  return o;
+}
+
+std::vector<FirstKey> random_oscillator_first_keys() {
+  return {{"oscillator.mass", {}},
+          {"oscillator.natural_frequency", "50"},
+          {"oscillator.damping_ratio", {}},
+          {"force.spectrum", {}},
+          {"force.level", {}},
+          {"signal.sample_rate", {}},
+          {"signal.duration", {}},
+          {"spectrum.segment", {}},
+          {"spectrum.band_min", {}},
+          {"spectrum.band_max", "800"}};
+}
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,63 @@
+// Scene `stiffness`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+#include "src/scenes/dimension_plausibility.hpp"
+#include "src/scenes/memory_terms.hpp"
+#include "src/scenes/scene_references.hpp"
+#include "src/scenes/stiffness/stiffness_scene.hpp"
+#include "src/study/key_reader.hpp"
+#include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/surface_section.hpp"
+
+namespace rollspec::scenes {
+
+namespace {
+
+std::vector<MemoryItem> memory(const study::KeyReader& s, int /*threads*/) {
+  const auto f = study::SurfaceSection::parse(s);
+  return {contact_grid(static_cast<double>(f.nx), static_cast<double>(f.ny))};
+}
+
+std::vector<DimensionRelation> relations(const study::KeyReader& s) {
+  std::vector<DimensionRelation> out;
+  const double r = s.real("ball.radius");
+  const double a = hertz_radius(s, s.real("flat.youngs_modulus"), s.real("flat.poisson"));
+  ball_relations(a, r, out);
+  approach_relations(s, a, out);
+  const bool rough =
+      study::read_choice(s, "stiffness.surface", study::kStiffnessSurfaces) == study::StiffnessSurface::rough;
+  add_surface_relations(s, rough, a, out);
+  // The patch holds the contact, not the whole roughness: a roll-off up to a hundred patches long still
+  // leaves it a share of the stated rms (the template's 1 mm over 128 um). A smooth ball on a smooth flat
+  // draws no texture: its keys, written, are checked all the same.
+  const double patch = s.real("surface.spacing") * static_cast<double>(s.integer("surface.nx"));
+  add_texture_relations(s, "surface.spacing", rough || self_affine_written(s) ? 100.0 * patch : 0.0,
+                        "a hundred times the surface patch nx x spacing", out);
+  return out;
+}
+
+std::vector<std::string> references(const study::KeyReader& s) {
+  ReferenceIds ids = contact_solver_references();
+  if (study::StiffnessSection::parse(s).rough)
+    add_references(ids, isotropic_surface_references(study::SurfaceSection::parse(s).method));
+  return ids;
+}
+
+}  // namespace
+
+SceneInfo stiffness_row() {
+  return {"stiffness",
+          "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
+          SceneKind::stages_only,
+          SceneCommand::stiffness,
+          stiffness_scene_keys,
+          [](const study::KeyReader& s) { return make_stiffness_scene(s); },
+          nullptr,
+          stiffness_first_keys(),
+          memory,
+          relations,
+          stiffness_contact_pair,
+          nullptr,
+          references};
+}
+
+}  // namespace rollspec::scenes

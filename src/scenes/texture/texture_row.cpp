@@ -1,0 +1,59 @@
+// Scene `texture`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+#include <algorithm>
+
+#include "src/scenes/dimension_plausibility.hpp"
+#include "src/scenes/memory_terms.hpp"
+#include "src/scenes/scene_references.hpp"
+#include "src/scenes/texture/texture_scene.hpp"
+#include "src/study/key_reader.hpp"
+#include "src/study/sections/lines_section.hpp"
+#include "src/study/sections/surface_section.hpp"
+
+namespace rollspec::scenes {
+
+namespace {
+
+std::vector<MemoryItem> memory(const study::KeyReader& s, int /*threads*/) {
+  const auto lines = study::LinesSection::parse(s);
+  const double samples = lines.length / std::max(lines.spacing, 1e-300), count = static_cast<double>(lines.count);
+  return {{8.0 * samples * (2.0 * count + 6.0),
+           {key_text("lines", "count", count), key_text("lines", "length", lines.length),
+            key_text("lines", "spacing", lines.spacing)},
+           "line textures"},
+          surfaces(study::SurfaceSection::parse(s))};
+}
+
+std::vector<DimensionRelation> relations(const study::KeyReader& s) {
+  std::vector<DimensionRelation> out;
+  const double length = s.real("lines.length"), dx = s.real("lines.spacing");
+  add_texture_relations(s, "lines.length", length, "the line length", out);
+  out.push_back({{"lines.spacing", "lines.length"},
+                 length >= 16.0 * dx,
+                 "a line of " + dim(length, "m") + " holds fewer than 16 samples at spacing " + dim(dx, "m")});
+  add_surface_relations(s, true, 0.0, out, false);
+  return out;
+}
+
+std::vector<std::string> references(const study::KeyReader& s) {
+  return texture_surface_references(s, study::SurfaceSection::parse(s).count);
+}
+
+}  // namespace
+
+SceneInfo texture_row() {
+  return {"texture",
+          "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
+          SceneKind::stages_only,
+          SceneCommand::texture,
+          texture_scene_keys,
+          [](const study::KeyReader& s) { return make_texture_scene(s); },
+          nullptr,
+          texture_first_keys(),
+          memory,
+          relations,
+          nullptr,
+          nullptr,
+          references};
+}
+
+}  // namespace rollspec::scenes

@@ -1,0 +1,62 @@
+#include "src/scenes/texture/texture_scene.hpp"
+
+#include "src/error.hpp"
+#include "src/study/key_reader.hpp"
+#include "src/study/sections/lines_section.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
+#include "src/texture/texture_keys.hpp"
+
+namespace rollspec::scenes {
+
+using namespace study;
+
+std::vector<KeySpec> texture_scene_keys() {
+  std::vector<KeySpec> keys = TextureSection::keys();
+  for (auto& k : LinesSection::keys()) keys.push_back(k);
+  for (auto& k : SurfaceSection::keys()) keys.push_back(k);
+  for (auto& k : SurfaceSection::count_keys()) keys.push_back(k);
+  return keys;
+}
+
+namespace {
+class TextureScene final : public Scene {
+ public:
+  explicit TextureScene(const KeyReader& s)
+      : lines_(LinesSection::parse(s).count), surfaces_(SurfaceSection::parse(s).count) {
+    texture_io::study_psd(TextureSection::parse(s));  // validates the PSD source (files, ranges) now
+    add_stages(fixed_stages());                       // after the members the descriptions name
+  }
+  std::vector<StagePlan> fixed_stages() const {
+    return {
+        {"texture", lines_ ? StageStatus::run : StageStatus::skipped,
+         lines_ ? std::to_string(lines_) + " line textures from [texture] ([lines])" : "[lines] count = 0"},
+        {"surface", surfaces_ ? StageStatus::run : StageStatus::skipped,
+         surfaces_ ? std::to_string(surfaces_) + " isotropic surfaces ([surface])" : "[surface] count = 0"},
+        {"stiffness_table", StageStatus::skipped, "the scene has no contact"},
+        {"dynamics", StageStatus::skipped, "the scene has no dynamics"},
+        {"spectra", StageStatus::skipped, "the scene has no sensors"},
+    };
+  }
+
+ private:
+  long long lines_, surfaces_;
+};
+}  // namespace
+
+std::unique_ptr<Scene> make_texture_scene(const KeyReader& s) { return std::make_unique<TextureScene>(s); }
+
+// The line spacing is set against the default short cut-off (the key's default is too coarse for it).
+std::vector<FirstKey> texture_first_keys() {
+  return {{"texture.source", {}},
+          {"texture.rms", {}},
+          {"texture.hurst", {}},
+          {"texture.rolloff_wavelength", {}},
+          {"texture.short_wavelength", {}},
+          {"lines.count", {}},
+          {"lines.length", {}},
+          {"lines.spacing", "5e-6"},
+          {"surface.count", {}}};
+}
+
+}  // namespace rollspec::scenes

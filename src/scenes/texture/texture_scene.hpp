@@ -1,0 +1,19 @@
+#pragma once
+// Scene `texture`: only the roughness stages (line textures [lines], isotropic surfaces [surface])
+// of a PSD ([texture]); `rollspec texture` writes them, `rollspec plan` shows them.
+#include <memory>
+#include <vector>
+
+#include "src/scenes/scene.hpp"
+
+namespace rollspec::scenes {
+
+std::vector<study::KeySpec> texture_scene_keys();
+// rollspec init's first keys (scene.hpp FirstKey).
+std::vector<FirstKey> texture_first_keys();
+std::unique_ptr<Scene> make_texture_scene(const study::KeyReader& s);
+
+// Its registry row (texture_row.cpp).
+SceneInfo texture_row();
+
+}  // namespace rollspec::scenes

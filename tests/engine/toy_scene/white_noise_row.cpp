@@ -1,0 +1,49 @@
+// Scene `white-noise`'s registry row, added to the registry when this file is linked into a program (the test
+// build of the command, rollspec_toy): the whole of what the engine needs to know of a new scene.
+#include "src/scenes/memory_terms.hpp"
+#include "src/scenes/scene_references.hpp"
+#include "src/study/key_reader.hpp"
+#include "src/study/sections/ensemble_section.hpp"
+#include "src/study/sections/random_oscillator_sections.hpp"
+#include "src/study/sections/spectrum_section.hpp"
+#include "src/study/sections/study_section.hpp"
+#include "tests/engine/toy_scene/white_noise.hpp"
+
+namespace rollspec::scenes {
+
+namespace {
+
+// One record per thread, the two uniform draws, and the ensemble's sums.
+std::vector<MemoryItem> memory(const study::KeyReader& s, int threads) {
+  const auto signal = study::RecordSignalSection::parse(s);
+  const double n = static_cast<double>(signal.samples);
+  return {{8.0 * n * 2.0 * threads,
+           {key_text("signal", "sample_rate", signal.sample_rate), key_text("signal", "duration", signal.duration)},
+           "one realisation's record per thread"},
+          chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s), study::SpectrumSection::parse(s),
+                     1.0, {})};
+}
+
+std::vector<std::string> references(const study::KeyReader& s) { return ensemble_spectra_references(s); }
+
+const bool added = (add_scene(white_noise_row()), true);
+
+}  // namespace
+
+SceneInfo white_noise_row() {
+  return {"white-noise",
+          "test-only scene: one sensor reading white Gaussian noise of a PSD level; exact answer the level",
+          SceneKind::ensemble,
+          SceneCommand::run,
+          white_noise_keys,
+          [](const study::KeyReader& s) { return make_white_noise(s); },
+          nullptr,
+          {{"noise.level", {}}, {"signal.sample_rate", {}}, {"signal.duration", "4"}, {"spectrum.segment", "1024"}},
+          memory,
+          nullptr,
+          nullptr,
+          nullptr,
+          references};
+}
+
+}  // namespace rollspec::scenes
