@@ -1,10 +1,10 @@
 #pragma once
 // A scene turns a validated study into realisations. It holds the stages it needs as objects
 // (stage.hpp): `rollspec plan` prints their inspect(), prepare() resolves them, and a stage a scene
-// does not need is never computed. To add a scene: its package folder src/scenes/<scene>/ with its
-// SceneInfo row (everything the engine asks of a scene is a field there: no code outside the scene
-// tests its name) and that row in scene_registry.cpp's list; to add a stage: a Stage object added in
-// the scene's constructor.
+// does not need is never computed. To add a scene: its package folder src/scenes/<scene>/ and its
+// SceneInfo row in scene_registry.cpp (everything the engine asks of a scene is a field there, each a
+// function of the folder: no code outside the two tests its name); to add a stage: a Stage object
+// added in the scene's constructor.
 #include <atomic>
 #include <cstdint>
 #include <functional>

@@ -36,13 +36,38 @@ void add_scene(SceneInfo row) {
   added_scenes().push_back(std::move(row));
 }
 
-// One row per scene, each from its package folder (src/scenes/<scene>/<scene>_row.cpp): everything the
-// engine asks of it (scene.hpp SceneInfo). A scene is its folder and its row here.
+// One row per scene: everything the engine asks of it (scene.hpp SceneInfo), each field a function of the
+// scene's package folder src/scenes/<scene>/. A scene is its folder and its row here.
 const std::vector<SceneInfo>& scene_registry() {
   static const std::vector<SceneInfo> scenes = [] {
     registry_read.store(true);
-    std::vector<SceneInfo> rows = {random_oscillator_row(), ball_on_beam_row(), rolling_beam_row(),
-                                   rolling_pipe_row(),      stiffness_row(),    texture_row()};
+    std::vector<SceneInfo> rows = {
+        {"random-oscillator",
+         "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
+         SceneKind::ensemble, SceneCommand::run, random_oscillator_keys, make_random_oscillator,
+         random_oscillator_result_shape, random_oscillator_first_keys(), random_oscillator_memory, nullptr, nullptr,
+         nullptr, random_oscillator_references},
+        {"ball-on-beam", "smooth rigid ball rolling over a rough modal beam; sensor acceleration PSDs (seeds 001, 002)",
+         SceneKind::ensemble, SceneCommand::run, ball_on_beam_keys, make_ball_on_beam, ball_on_beam_result_shape,
+         ball_on_beam_first_keys(), ball_on_beam_memory, ball_on_beam_relations, ball_on_beam_contact_pair,
+         study_modal_beam, ball_on_beam_references},
+        {"rolling-beam", "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
+         SceneKind::single_run, SceneCommand::run, rolling_beam_keys, make_rolling_beam, nullptr,
+         rolling_beam_first_keys(), rolling_beam_memory, rolling_beam_relations, nullptr, nullptr,
+         rolling_beam_references},
+        {"rolling-pipe",
+         "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs",
+         SceneKind::ensemble, SceneCommand::run, rolling_pipe_keys, make_rolling_pipe, rolling_pipe_result_shape,
+         rolling_pipe_first_keys(), rolling_pipe_memory, rolling_pipe_relations, nullptr, nullptr,
+         rolling_pipe_references},
+        {"stiffness", "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
+         SceneKind::stages_only, SceneCommand::stiffness, stiffness_scene_keys, make_stiffness_scene, nullptr,
+         stiffness_first_keys(), stiffness_memory, stiffness_relations, stiffness_contact_pair, nullptr,
+         stiffness_references},
+        {"texture", "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
+         SceneKind::stages_only, SceneCommand::texture, texture_scene_keys, make_texture_scene, nullptr,
+         texture_first_keys(), texture_memory, texture_relations, nullptr, nullptr, texture_references},
+    };
     for (auto& row : added_scenes()) rows.push_back(std::move(row));
     return rows;
   }();

@@ -1,5 +1,5 @@
 """The papers and theory-note equations a run used reach its result: /provenance/references, one
-"id | citation | doi" string per reference, read through h5py (src/io/references.cpp, src/scenes/<scene>/<scene>_row.cpp);
+"id | citation | doi" string per reference, read through h5py (src/io/references.cpp, src/scenes/scene_registry.cpp, each scene's references in its folder);
 `compare --format json` lists them with its own (src/compare/verdict_references.cpp)."""
 import json
 import shutil

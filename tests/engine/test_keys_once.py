@@ -46,9 +46,9 @@ ELSEWHERE = {
     "src/scenes/rolling_pipe/rolling_pipe_relations.cpp": 18,
     "src/scenes/rolling_pipe/rolling_pipe_settings.cpp": 4,
     "src/scenes/scene_registry.cpp": 2,
-    "src/scenes/stiffness/stiffness_row.cpp": 5,
+    "src/scenes/stiffness/stiffness_row_parts.cpp": 5,
     "src/scenes/stiffness/stiffness_scene.cpp": 3,
-    "src/scenes/texture/texture_row.cpp": 3,
+    "src/scenes/texture/texture_row_parts.cpp": 3,
     "src/scenes/texture/texture_scene.cpp": 9,
     "src/study/study.cpp": 2,
 }

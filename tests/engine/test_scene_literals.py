@@ -1,9 +1,9 @@
-"""A scene is a package and known by its registry row, never by its name: outside its own package folder
-(src/scenes/<name with _ for ->/, whose <scene>_row.cpp returns its row), no code spells a scene's name.
+"""A scene is a package known by its registry row, never by its name: outside src/scenes/scene_registry.cpp
+(its row) and the scene's own package folder, src/scenes/<name with _ for ->/ (what the row names), no code
+spells a registered scene's name.
 
 The rule, read from the sources:
-- the scene names are the rows the package folders return (`SceneInfo x_row() { return {"name",
-  "description", ...`), each in the folder of its own name, and scene_registry.cpp lists the rows;
+- the scene names are the rows of scene_registry() (`{"name", "description", ...}`);
 - a string literal equal to a scene name is compared nowhere else (==, !=, .compare, .find): code asks
   the row (scenes::find_scene) what the scene has (its command, memory model, plausibility relations,
   contact, beam, first keys) instead of testing which scene it is;
@@ -16,22 +16,17 @@ import re
 
 from source_scan import ROOT, compared_literals, scratch, sources
 
-SCENES = pathlib.PurePosixPath("src/scenes")
-# A package folder's row: its name, then its description.
-ROW = re.compile(r'\bSceneInfo\s+(\w+)_row\s*\(\s*\)\s*\{\s*return\s*\{\s*"([^"\\]+)"\s*,\s*"')
+REGISTRY = pathlib.PurePosixPath("src/scenes/scene_registry.cpp")
+ROW = re.compile(r'\{\s*"([^"\\]+)"\s*,\s*"')  # a row's name, then its description
 SECTION_KEY = re.compile(r'\b\w+_key\s*\(\s*"(\w+)"\s*,\s*"')  # a key declared in [section]
 SECTION_KEYS = re.compile(r'\bSectionKeys<[\w:]+>\s*\(\s*"(\w+)"\s*\)')  # a section's key declarations
 LITERAL = re.compile(r'"((?:\\.|[^"\\\n])*)"')
 
 
-def scene_rows(root):
-    """(folder, function prefix, name) of every row a package folder returns."""
-    return [(rel.parent, m.group(1), m.group(2)) for rel, text in sources(root)
-            if SCENES in rel.parents and rel.parent != SCENES for m in ROW.finditer(text)]
-
-
 def scene_names(root):
-    return [name for _, _, name in scene_rows(root)]
+    text = dict(sources(root)).get(REGISTRY, "")
+    body = text[text.find("scene_registry() {"):]
+    return ROW.findall(body[:body.find("return scenes;")])
 
 
 def section_names(root):
@@ -39,16 +34,14 @@ def section_names(root):
 
 
 def own_file(rel, name):
-    """A file of the scene's own package folder."""
-    return SCENES / name.replace("-", "_") in rel.parents
+    """The registry, or a file of the scene's own package folder."""
+    return rel == REGISTRY or pathlib.PurePosixPath("src/scenes", name.replace("-", "_")) in rel.parents
 
 
 def violations(root):
     names = scene_names(root)
     shared = set(names) & section_names(root)
-    found = [f'{folder}: returns the row of scene "{name}"; a scene\'s row lives in its own folder '
-             f'{SCENES / name.replace("-", "_")}' for folder, _, name in scene_rows(root)
-             if folder != SCENES / name.replace("-", "_")]
+    found = []
     for rel, text in sources(root):
         for line_no, line in enumerate(text.splitlines(), 1):
             compared = set(compared_literals(line))
@@ -61,7 +54,7 @@ def violations(root):
                                  "(scenes::find_scene) what the scene has instead")
                 elif name not in shared:
                     found.append(f'{rel}:{line_no}: spells the scene name "{name}"; it belongs in the scene\'s '
-                                 "package folder (its registry row: src/scenes/<scene>/<scene>_row.cpp)")
+                                 "registry row (src/scenes/scene_registry.cpp)")
     return found
 
 
@@ -72,10 +65,9 @@ def test_scene_names_are_spelt_only_in_the_registry():
     assert violations(ROOT) == []
 
 
-REGISTRY_TEXT = {"src/scenes/ball_on_beam/ball_on_beam_row.cpp":
-                 'SceneInfo ball_on_beam_row() {\n  return {"ball-on-beam", "a ball on a beam", SceneKind::ensemble};\n}\n',
-                 "src/scenes/texture/texture_row.cpp":
-                 'SceneInfo texture_row() {\n  return {"texture",\n          "roughness only", SceneKind::stages_only};\n}\n',
+REGISTRY_TEXT = {str(REGISTRY): 'const std::vector<SceneInfo>& scene_registry() {\n  static const std::vector<SceneInfo> '
+                 'scenes = {\n      {"ball-on-beam", "a ball on a beam", SceneKind::ensemble},\n'
+                 '      {"texture", "roughness only", SceneKind::stages_only},\n  };\n  return scenes;\n}\n',
                  "src/study/sections/texture_section.cpp": 'auto k = real_key("texture", "rms", "m", "rms");\n'}
 
 
@@ -100,13 +92,3 @@ def test_a_section_spelt_like_a_scene_the_registry_and_the_package_folder_pass(t
              "src/scenes/ball_on_beam/stages.cpp": 'bool a = name == "ball-on-beam";\n',
              "src/io/message.cpp": 'const char* m = "needs a ball-on-beam study";\n'}
     assert violations(scratch(tmp_path, files)) == []
-
-
-def test_a_row_outside_its_own_folder_is_found(tmp_path):
-    files = {**REGISTRY_TEXT, "src/scenes/texture/toy_row.cpp":
-             'SceneInfo toy_row() {\n  return {"toy-scene", "a toy", SceneKind::ensemble};\n}\n'}
-    assert violations(scratch(tmp_path, files)) == [
-        'src/scenes/texture: returns the row of scene "toy-scene"; a scene\'s row lives in its own folder '
-        "src/scenes/toy_scene",
-        'src/scenes/texture/toy_row.cpp:2: spells the scene name "toy-scene"; it belongs in the scene\'s package '
-        "folder (its registry row: src/scenes/<scene>/<scene>_row.cpp)"]

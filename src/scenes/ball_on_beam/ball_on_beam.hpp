@@ -31,7 +31,7 @@ std::vector<FirstKey> ball_on_beam_first_keys();
 // Its memory model (ball_on_beam_memory.cpp) and the relations of its dimensions (ball_on_beam_dimensions.cpp).
 std::vector<MemoryItem> ball_on_beam_memory(const study::KeyReader& s, int threads);
 std::vector<DimensionRelation> ball_on_beam_relations(const study::KeyReader& s);
-// Its registry row (ball_on_beam_row.cpp).
-SceneInfo ball_on_beam_row();
+// The references a run cites (ball_on_beam_references.cpp).
+std::vector<std::string> ball_on_beam_references(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

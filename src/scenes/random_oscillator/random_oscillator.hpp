@@ -25,7 +25,8 @@ ResultShape random_oscillator_result_shape(const study::KeyReader& s);
 double random_oscillator_exact_psd(double f, double s_f, double mass, double natural_frequency, double damping_ratio,
                                    double sample_rate);
 
-// Its registry row (random_oscillator_row.cpp).
-SceneInfo random_oscillator_row();
+// Its memory model and the references a run cites (random_oscillator_row_parts.cpp).
+std::vector<MemoryItem> random_oscillator_memory(const study::KeyReader& s, int threads);
+std::vector<std::string> random_oscillator_references(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -16,8 +16,10 @@ std::vector<study::KeySpec> rolling_beam_keys();
 std::vector<FirstKey> rolling_beam_first_keys();
 std::unique_ptr<Scene> make_rolling_beam(const study::KeyReader& s);
 
-// The relations of its dimensions (rolling_beam_relations.cpp) and its registry row (rolling_beam_row.cpp).
+// The relations of its dimensions (rolling_beam_relations.cpp); its memory model and the references a run cites
+// (rolling_beam_row_parts.cpp).
 std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s);
-SceneInfo rolling_beam_row();
+std::vector<MemoryItem> rolling_beam_memory(const study::KeyReader& s, int threads);
+std::vector<std::string> rolling_beam_references(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -20,8 +20,10 @@ std::unique_ptr<Scene> make_rolling_pipe(const study::KeyReader& s);
 // The shape of its /psd and /bands, from its settings (a sweep checks it before any point runs).
 ResultShape rolling_pipe_result_shape(const study::KeyReader& s);
 
-// The relations of its dimensions (rolling_pipe_relations.cpp) and its registry row (rolling_pipe_row.cpp).
+// The relations of its dimensions (rolling_pipe_relations.cpp); its memory model and the references a run cites
+// (rolling_pipe_row_parts.cpp).
 std::vector<DimensionRelation> rolling_pipe_relations(const study::KeyReader& s);
-SceneInfo rolling_pipe_row();
+std::vector<MemoryItem> rolling_pipe_memory(const study::KeyReader& s, int threads);
+std::vector<std::string> rolling_pipe_references(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

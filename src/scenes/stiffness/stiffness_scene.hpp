@@ -19,7 +19,9 @@ BallContact ball_contact_pair(const study::KeyReader& s, double other_modulus, d
 // Scene stiffness's contact: the ball on the flat ([flat]).
 BallContact stiffness_contact_pair(const study::KeyReader& s);
 
-// Its registry row (stiffness_row.cpp).
-SceneInfo stiffness_row();
+// Its memory model, the relations of its dimensions and the references a run cites (stiffness_row_parts.cpp).
+std::vector<MemoryItem> stiffness_memory(const study::KeyReader& s, int threads);
+std::vector<DimensionRelation> stiffness_relations(const study::KeyReader& s);
+std::vector<std::string> stiffness_references(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

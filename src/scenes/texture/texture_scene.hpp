@@ -13,7 +13,9 @@ std::vector<study::KeySpec> texture_scene_keys();
 std::vector<FirstKey> texture_first_keys();
 std::unique_ptr<Scene> make_texture_scene(const study::KeyReader& s);
 
-// Its registry row (texture_row.cpp).
-SceneInfo texture_row();
+// Its memory model, the relations of its dimensions and the references a run cites (texture_row_parts.cpp).
+std::vector<MemoryItem> texture_memory(const study::KeyReader& s, int threads);
+std::vector<DimensionRelation> texture_relations(const study::KeyReader& s);
+std::vector<std::string> texture_references(const study::KeyReader& s);
 
 }  // namespace rollspec::scenes

@@ -4,7 +4,6 @@
 #include "src/scenes/scene_references.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/ensemble_section.hpp"
-#include "src/study/sections/random_oscillator_sections.hpp"
 #include "src/study/sections/spectrum_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "tests/engine/toy_scene/white_noise.hpp"
@@ -13,14 +12,9 @@ namespace rollspec::scenes {
 
 namespace {
 
-// One record per thread, the two uniform draws, and the ensemble's sums.
-std::vector<MemoryItem> memory(const study::KeyReader& s, int threads) {
-  const auto signal = study::RecordSignalSection::parse(s);
-  const double n = static_cast<double>(signal.samples);
-  return {{8.0 * n * 2.0 * threads,
-           {key_text("signal", "sample_rate", signal.sample_rate), key_text("signal", "duration", signal.duration)},
-           "one realisation's record per thread"},
-          chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s), study::SpectrumSection::parse(s),
+// The ensemble's own storage (the toy leaves its records per thread out of its estimate).
+std::vector<MemoryItem> memory(const study::KeyReader& s, int /*threads*/) {
+  return {chunk_sums(study::StudySection::parse(s), study::EnsembleSection::parse(s), study::SpectrumSection::parse(s),
                      1.0, {})};
 }
 
@@ -36,7 +30,7 @@ SceneInfo white_noise_row() {
           SceneKind::ensemble,
           SceneCommand::run,
           white_noise_keys,
-          [](const study::KeyReader& s) { return make_white_noise(s); },
+          make_white_noise,
           nullptr,
           {{"noise.level", {}}, {"signal.sample_rate", {}}, {"signal.duration", "4"}, {"spectrum.segment", "1024"}},
           memory,

@@ -1,4 +1,5 @@
-// Scene `random-oscillator`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+// What scene `random-oscillator`'s registry row (scene_registry.cpp) names besides its class and keys: its memory
+// model and the references a run cites.
 #include "src/scenes/memory_terms.hpp"
 #include "src/scenes/random_oscillator/random_oscillator.hpp"
 #include "src/scenes/scene_references.hpp"
@@ -10,9 +11,7 @@
 
 namespace rollspec::scenes {
 
-namespace {
-
-std::vector<MemoryItem> memory(const study::KeyReader& s, int threads) {
+std::vector<MemoryItem> random_oscillator_memory(const study::KeyReader& s, int threads) {
   // Per thread: force, acceleration and the two uniform draws (3 n doubles); shared: the
   // synthesiser's FFT (measured: 0.91 GB peak at n = 1e7 on 2 threads).
   const auto signal = study::RecordSignalSection::parse(s);
@@ -24,28 +23,10 @@ std::vector<MemoryItem> memory(const study::KeyReader& s, int threads) {
                      1.0, {})};
 }
 
-std::vector<std::string> references(const study::KeyReader& s) {
+std::vector<std::string> random_oscillator_references(const study::KeyReader& s) {
   ReferenceIds ids = {"D-3", "D-18", "D-19"};
   add_references(ids, ensemble_spectra_references(s));
   return ids;
-}
-
-}  // namespace
-
-SceneInfo random_oscillator_row() {
-  return {"random-oscillator",
-          "linear single-degree-of-freedom oscillator driven by a random force from a PSD; exact answer |H|^2 S_F",
-          SceneKind::ensemble,
-          SceneCommand::run,
-          random_oscillator_keys,
-          [](const study::KeyReader& s) { return make_random_oscillator(s); },
-          random_oscillator_result_shape,
-          random_oscillator_first_keys(),
-          memory,
-          nullptr,
-          nullptr,
-          nullptr,
-          references};
 }
 
 }  // namespace rollspec::scenes

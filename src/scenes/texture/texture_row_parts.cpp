@@ -1,4 +1,5 @@
-// Scene `texture`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+// What scene `texture`'s registry row (scene_registry.cpp) names besides its class and keys: its memory
+// model and the references a run cites, and the relations of its dimensions.
 #include <algorithm>
 
 #include "src/scenes/dimension_plausibility.hpp"
@@ -11,9 +12,7 @@
 
 namespace rollspec::scenes {
 
-namespace {
-
-std::vector<MemoryItem> memory(const study::KeyReader& s, int /*threads*/) {
+std::vector<MemoryItem> texture_memory(const study::KeyReader& s, int /*threads*/) {
   const auto lines = study::LinesSection::parse(s);
   const double samples = lines.length / std::max(lines.spacing, 1e-300), count = static_cast<double>(lines.count);
   return {{8.0 * samples * (2.0 * count + 6.0),
@@ -23,7 +22,7 @@ std::vector<MemoryItem> memory(const study::KeyReader& s, int /*threads*/) {
           surfaces(study::SurfaceSection::parse(s))};
 }
 
-std::vector<DimensionRelation> relations(const study::KeyReader& s) {
+std::vector<DimensionRelation> texture_relations(const study::KeyReader& s) {
   std::vector<DimensionRelation> out;
   const double length = s.real("lines.length"), dx = s.real("lines.spacing");
   add_texture_relations(s, "lines.length", length, "the line length", out);
@@ -34,26 +33,8 @@ std::vector<DimensionRelation> relations(const study::KeyReader& s) {
   return out;
 }
 
-std::vector<std::string> references(const study::KeyReader& s) {
+std::vector<std::string> texture_references(const study::KeyReader& s) {
   return texture_surface_references(s, study::SurfaceSection::parse(s).count);
-}
-
-}  // namespace
-
-SceneInfo texture_row() {
-  return {"texture",
-          "roughness only: line textures and isotropic surfaces from a PSD (rollspec texture)",
-          SceneKind::stages_only,
-          SceneCommand::texture,
-          texture_scene_keys,
-          [](const study::KeyReader& s) { return make_texture_scene(s); },
-          nullptr,
-          texture_first_keys(),
-          memory,
-          relations,
-          nullptr,
-          nullptr,
-          references};
 }
 
 }  // namespace rollspec::scenes

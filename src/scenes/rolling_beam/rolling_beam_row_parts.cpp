@@ -1,4 +1,5 @@
-// Scene `rolling-beam`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+// What scene `rolling-beam`'s registry row (scene_registry.cpp) names besides its class and keys: its memory
+// model and the references a run cites.
 #include <cmath>
 
 #include "kernels/rolling/solver.hpp"
@@ -39,28 +40,12 @@ std::vector<Item> rolling_beam(const RollingBeamSettings& r) {
            "beam model and its band Newton system, " + std::to_string(static_cast<long long>(nodes)) + " nodes"}};
 }
 
-std::vector<MemoryItem> memory(const study::KeyReader& s, int /*threads*/) {
+}  // namespace
+
+std::vector<MemoryItem> rolling_beam_memory(const study::KeyReader& s, int /*threads*/) {
   return rolling_beam(read_rolling_beam_settings(s));
 }
 
-std::vector<std::string> references(const study::KeyReader&) { return {"seed 000", "D-12..D-14"}; }
-
-}  // namespace
-
-SceneInfo rolling_beam_row() {
-  return {"rolling-beam",
-          "geometrically exact beam or rigid disc rolling and sliding on a plane (seed 000)",
-          SceneKind::single_run,
-          SceneCommand::run,
-          rolling_beam_keys,
-          [](const study::KeyReader& s) { return make_rolling_beam(s); },
-          nullptr,
-          rolling_beam_first_keys(),
-          memory,
-          rolling_beam_relations,
-          nullptr,
-          nullptr,
-          references};
-}
+std::vector<std::string> rolling_beam_references(const study::KeyReader&) { return {"seed 000", "D-12..D-14"}; }
 
 }  // namespace rollspec::scenes

@@ -1,4 +1,5 @@
-// Scene `rolling-pipe`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+// What scene `rolling-pipe`'s registry row (scene_registry.cpp) names besides its class and keys: its memory
+// model and the references a run cites.
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/scenes/memory_terms.hpp"
 #include "src/scenes/rolling_pipe/rolling_pipe.hpp"
@@ -13,11 +14,9 @@
 
 namespace rollspec::scenes {
 
-namespace {
-
 using Item = MemoryItem;
 
-std::vector<MemoryItem> memory(const study::KeyReader& s, int threads) {
+std::vector<MemoryItem> rolling_pipe_memory(const study::KeyReader& s, int threads) {
   std::vector<Item> out;
   if (!study::PipeRoughnessSection::parse(s).line) {
     // One isotropic floor per realisation and thread, plus the generator's complex FFT grid.
@@ -34,7 +33,7 @@ std::vector<MemoryItem> memory(const study::KeyReader& s, int threads) {
   return out;
 }
 
-std::vector<std::string> references(const study::KeyReader& s) {
+std::vector<std::string> rolling_pipe_references(const study::KeyReader& s) {
   ReferenceIds ids = {"seed 000", "D-12..D-14"};
   if (study::PipeRoughnessSection::parse(s).line)
     add_references(ids, {"D-3"});
@@ -42,24 +41,6 @@ std::vector<std::string> references(const study::KeyReader& s) {
     add_references(ids, isotropic_surface_references(study::SurfaceSection::parse(s).method));
   add_references(ids, ensemble_spectra_references(s));
   return ids;
-}
-
-}  // namespace
-
-SceneInfo rolling_pipe_row() {
-  return {"rolling-pipe",
-          "tube of beam elements rolling with friction over a random rough surface; ensemble acceleration PSDs",
-          SceneKind::ensemble,
-          SceneCommand::run,
-          rolling_pipe_keys,
-          [](const study::KeyReader& s) { return make_rolling_pipe(s); },
-          rolling_pipe_result_shape,
-          rolling_pipe_first_keys(),
-          memory,
-          rolling_pipe_relations,
-          nullptr,
-          nullptr,
-          references};
 }
 
 }  // namespace rollspec::scenes

@@ -1,4 +1,5 @@
-// Scene `stiffness`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+// What scene `stiffness`'s registry row (scene_registry.cpp) names besides its class and keys: its memory
+// model and the references a run cites, and the relations of its dimensions.
 #include "src/scenes/dimension_plausibility.hpp"
 #include "src/scenes/memory_terms.hpp"
 #include "src/scenes/scene_references.hpp"
@@ -10,14 +11,12 @@
 
 namespace rollspec::scenes {
 
-namespace {
-
-std::vector<MemoryItem> memory(const study::KeyReader& s, int /*threads*/) {
+std::vector<MemoryItem> stiffness_memory(const study::KeyReader& s, int /*threads*/) {
   const auto f = study::SurfaceSection::parse(s);
   return {contact_grid(static_cast<double>(f.nx), static_cast<double>(f.ny))};
 }
 
-std::vector<DimensionRelation> relations(const study::KeyReader& s) {
+std::vector<DimensionRelation> stiffness_relations(const study::KeyReader& s) {
   std::vector<DimensionRelation> out;
   const double r = s.real("ball.radius");
   const double a = hertz_radius(s, s.real("flat.youngs_modulus"), s.real("flat.poisson"));
@@ -35,29 +34,11 @@ std::vector<DimensionRelation> relations(const study::KeyReader& s) {
   return out;
 }
 
-std::vector<std::string> references(const study::KeyReader& s) {
+std::vector<std::string> stiffness_references(const study::KeyReader& s) {
   ReferenceIds ids = contact_solver_references();
   if (study::StiffnessSection::parse(s).rough)
     add_references(ids, isotropic_surface_references(study::SurfaceSection::parse(s).method));
   return ids;
-}
-
-}  // namespace
-
-SceneInfo stiffness_row() {
-  return {"stiffness",
-          "contact stiffness table only: smooth ball on a rough flat (rollspec stiffness)",
-          SceneKind::stages_only,
-          SceneCommand::stiffness,
-          stiffness_scene_keys,
-          [](const study::KeyReader& s) { return make_stiffness_scene(s); },
-          nullptr,
-          stiffness_first_keys(),
-          memory,
-          relations,
-          stiffness_contact_pair,
-          nullptr,
-          references};
 }
 
 }  // namespace rollspec::scenes

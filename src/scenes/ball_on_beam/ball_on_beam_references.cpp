@@ -1,4 +1,5 @@
-// Scene `ball-on-beam`'s registry row (scene.hpp SceneInfo): everything the engine asks of it.
+// The papers and theory-note equations a run of a `ball-on-beam` study cites (its registry row's `references`),
+// from the contact law and filter the study chose.
 #include "src/scenes/ball_on_beam/ball_on_beam.hpp"
 #include "src/scenes/ball_on_beam/ball_on_beam_sections.hpp"
 #include "src/scenes/ball_on_beam/ball_on_beam_settings.hpp"
@@ -8,9 +9,7 @@
 
 namespace rollspec::scenes {
 
-namespace {
-
-std::vector<std::string> references(const study::KeyReader& s) {
+std::vector<std::string> ball_on_beam_references(const study::KeyReader& s) {
   const BallOnBeamSections sections = BallOnBeamSections::parse(s);
   const BallOnBeamSettings b = read_ball_on_beam_settings(sections);
   ReferenceIds ids = {"seed 001", "D-1", "D-3", "D-8", "D-9"};
@@ -45,24 +44,6 @@ std::vector<std::string> references(const study::KeyReader& s) {
   }
   add_references(ids, ensemble_spectra_references(s));
   return ids;
-}
-
-}  // namespace
-
-SceneInfo ball_on_beam_row() {
-  return {"ball-on-beam",
-          "smooth rigid ball rolling over a rough modal beam; sensor acceleration PSDs (seeds 001, 002)",
-          SceneKind::ensemble,
-          SceneCommand::run,
-          ball_on_beam_keys,
-          [](const study::KeyReader& s) { return make_ball_on_beam(s); },
-          ball_on_beam_result_shape,
-          ball_on_beam_first_keys(),
-          ball_on_beam_memory,
-          ball_on_beam_relations,
-          ball_on_beam_contact_pair,
-          study_modal_beam,
-          references};
 }
 
 }  // namespace rollspec::scenes
