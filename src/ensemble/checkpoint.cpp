@@ -25,9 +25,8 @@ namespace {
 constexpr char kMagic[8] = {'R', 'S', 'C', 'H', 'U', 'N', 'K', '1'};
 
 std::string chunk_name(std::uint64_t lo, std::uint64_t hi) {
-  const std::string buf = io::formatted("chunk_%012llu_%012llu.bin", static_cast<unsigned long long>(lo),
-                                        static_cast<unsigned long long>(hi));
-  return buf;
+  return io::formatted("chunk_%012llu_%012llu.bin", static_cast<unsigned long long>(lo),
+                       static_cast<unsigned long long>(hi));
 }
 }  // namespace
 

@@ -19,14 +19,9 @@ int terminal_columns() {
 }
 
 std::string seconds_text(double s) {
-  std::string buf;
-  if (s < 60)
-    buf = io::formatted("%.0fs", s);
-  else if (s < 3600)
-    buf = io::formatted("%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
-  else
-    buf = io::formatted("%dh%02dm", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
-  return buf;
+  if (s < 60) return io::formatted("%.0fs", s);
+  if (s < 3600) return io::formatted("%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+  return io::formatted("%dh%02dm", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
 }
 
 }  // namespace

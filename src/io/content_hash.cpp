@@ -72,9 +72,6 @@ std::uint64_t fnv1a64(const void* data, std::size_t n, std::uint64_t h) {
 
 std::uint64_t fnv1a64(const std::string& bytes) { return fnv1a64(bytes.data(), bytes.size()); }
 
-std::string hex16(std::uint64_t h) {
-  const std::string buf = io::formatted("%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
+std::string hex16(std::uint64_t h) { return io::formatted("%016llx", static_cast<unsigned long long>(h)); }
 
 }  // namespace rollspec::io

@@ -326,10 +326,7 @@ struct Stacker {
   }
 };
 
-std::string point_group(std::size_t i) {
-  const std::string name = io::formatted("/sweep/point_%04zu", i);
-  return name;
-}
+std::string point_group(std::size_t i) { return io::formatted("/sweep/point_%04zu", i); }
 
 // Removes the temporary file unless the stacked file was renamed onto the output.
 struct TempFile {

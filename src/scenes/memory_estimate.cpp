@@ -43,8 +43,7 @@ std::string format_bytes(double b) {
   const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB"};
   int u = 0;
   while (b >= 1024.0 && u < 5) b /= 1024.0, ++u;
-  const std::string buf = io::formatted(u ? "%.3g %s" : "%.0f %s", b, units[u]);
-  return buf;
+  return io::formatted(u ? "%.3g %s" : "%.0f %s", b, units[u]);
 }
 
 void check_memory(const study::KeyReader& s, int threads, bool force) {

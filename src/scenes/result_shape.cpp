@@ -11,8 +11,7 @@ namespace {
 
 std::string span(const std::vector<double>& lo, const std::vector<double>& hi) {
   if (lo.empty()) return "";
-  const std::string buf = io::formatted(" (%.6g .. %.6g Hz)", lo.front(), hi.back());
-  return buf;
+  return io::formatted(" (%.6g .. %.6g Hz)", lo.front(), hi.back());
 }
 
 }  // namespace

@@ -8,7 +8,6 @@
 #include "src/scenes/ball_on_beam/ball_on_beam.hpp"
 #include "src/scenes/random_oscillator/random_oscillator.hpp"
 #include "src/scenes/scene.hpp"
-#include "src/scenes/scene_references.hpp"
 #include "src/scenes/rolling_beam/rolling_beam.hpp"
 #include "src/scenes/rolling_pipe/rolling_pipe.hpp"
 #include "src/scenes/stiffness/stiffness_scene.hpp"
