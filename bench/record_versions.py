@@ -3,7 +3,9 @@
 computes its figures.
 
 bench/record_versions.json names the components whose code computes a record's figures (each a list of
-source folders and files, e.g. the contact kernel kernels/contact/), and for each a version and the hash
+source folders and files, e.g. the contact kernel kernels/contact/, and optionally under "except" the files in
+them that another component owns, so that a change there stales only the records that use it), and for each a
+version and the hash
 of its sources as that version was declared. The hash is over the code with comments and blank space
 taken out (C++, Python and CMake files), so rewording a comment or reformatting leaves it as it is.
 bench/bench_record.py stamps every record it writes with the versions of the components its script
@@ -51,23 +53,25 @@ def code_of(path):
     return " ".join(text.split())
 
 
-def files_of(paths, root=ROOT):
-    """The code files under the component's folders and files, in a stable order."""
-    found = []
-    for p in paths:
-        q = root / p
-        if q.is_file():
-            found.append(q)
-        elif q.is_dir():
-            found += [f for f in q.rglob("*") if f.is_file() and f.suffix in CODE_SUFFIXES]
-        else:
-            raise VersionError(f"{MANIFEST.name}: source {p} does not exist")
-    return sorted(set(found), key=lambda f: f.relative_to(root).as_posix())
+def files_of(paths, root=ROOT, exclude=()):
+    """The code files under the component's folders and files but not under `exclude`, in a stable order."""
+    def listed(ps):
+        found = []
+        for p in ps:
+            q = root / p
+            if q.is_file():
+                found.append(q)
+            elif q.is_dir():
+                found += [f for f in q.rglob("*") if f.is_file() and f.suffix in CODE_SUFFIXES]
+            else:
+                raise VersionError(f"{MANIFEST.name}: source {p} does not exist")
+        return set(found)
+    return sorted(listed(paths) - listed(exclude), key=lambda f: f.relative_to(root).as_posix())
 
 
-def sources_hash(paths, root=ROOT):
+def sources_hash(paths, root=ROOT, exclude=()):
     h = hashlib.sha256()
-    for f in files_of(paths, root):
+    for f in files_of(paths, root, exclude):
         h.update(f.relative_to(root).as_posix().encode() + b"\0" + code_of(f).encode() + b"\0")
     return h.hexdigest()[:16]
 
@@ -84,9 +88,10 @@ def load_manifest(path=MANIFEST):
         raise VersionError(f"{path}: no 'components'")
     for name, c in comps.items():
         if not (isinstance(c, dict) and isinstance(c.get("version"), int) and c["version"] >= 1
-                and isinstance(c.get("paths"), list) and c["paths"] and isinstance(c.get("sources"), str)):
+                and isinstance(c.get("paths"), list) and c["paths"] and isinstance(c.get("sources"), str)
+                and isinstance(c.get("except", []), list)):
             raise VersionError(f"{path}: component '{name}' needs 'paths' (a list), 'version' (an integer "
-                               "from 1) and 'sources' (the hash)")
+                               "from 1) and 'sources' (the hash); 'except' (optional) is a list")
     return m
 
 
@@ -103,7 +108,8 @@ def current_versions(components=None, manifest=None):
 def changed(manifest=None, root=ROOT):
     """The components whose sources no longer match their declared hash: [(name, declared, now)]."""
     comps = (manifest or load_manifest())["components"]
-    return [(n, c["sources"], h) for n, c in comps.items() if (h := sources_hash(c["paths"], root)) != c["sources"]]
+    return [(n, c["sources"], h) for n, c in comps.items()
+            if (h := sources_hash(c["paths"], root, c.get("except", []))) != c["sources"]]
 
 
 def stale(record, manifest=None):
@@ -161,7 +167,7 @@ def main():
             c = m["components"][n]
             if a.action == "bump":
                 c["version"] += 1
-            c["sources"] = sources_hash(c["paths"])
+            c["sources"] = sources_hash(c["paths"], exclude=c.get("except", []))
             print(f"{n}: version {c['version']}, sources {c['sources']}")
         _write(m)
     except VersionError as e:

@@ -65,7 +65,11 @@ def run(binary, args, timeout=7200):
     return r
 
 
+REUSED = {"runs": 0, "answers": 0}  # what a resumed bench found in --work: the record says so beside its minutes
+
+
 def run_study(binary, study, out, sets):
+    REUSED["runs"] += out.exists()
     if not out.exists():
         # a run the bench was stopped in resumes from its checkpoints (the same bits as one run)
         resume = ["--resume"] if out.with_name(out.name + ".checkpoint").exists() else []
@@ -108,6 +112,7 @@ def verdicts(binary, model, measurements, rolls):
     out = []
     for path in measurements:
         answer = model.with_name(f"{model.stem}-vs-{path.stem}.json")
+        REUSED["answers"] += answer.exists()
         if not answer.exists():
             r = run(binary, ["compare", model, path, "--measured-averages", rolls, "--format", "json"])
             partial = answer.with_suffix(".json.partial")
@@ -212,7 +217,9 @@ def main():
         argv=sys.argv, builds={"current": {"description": "the build measured",
                                             "version": bench_record.build_version(a.binary)}},
         settings=f"{a.tables} table seeds; models as shipped; measurements of {a.rolls} rolls of each other table "
-                 f"(study seed 5000 + t); compare --measured-averages {a.rolls} at level 0.05; {minutes:.0f} min",
+                 f"(study seed 5000 + t); compare --measured-averages {a.rolls} at level 0.05; {minutes:.0f} min"
+                 + (f" (resumed from --work: {REUSED['runs']} runs and {REUSED['answers']} compare answers reused)"
+                    if any(REUSED.values()) else ""),
         columns=["figure", "value", "detail", "count"], rows=rows, data=data)
     if not a.work:
         shutil.rmtree(work, ignore_errors=True)

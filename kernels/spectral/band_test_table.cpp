@@ -1,5 +1,7 @@
 #include "kernels/spectral/band_test_table.hpp"
 
+#include "kernels/spectral/covariance_shrinkage.hpp"
+
 #include <Eigen/Dense>
 #include <boost/math/special_functions/gamma.hpp>
 #include <algorithm>
@@ -169,7 +171,14 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
   if (rank > 0 &&
       (!(table.dof > (table.independent ? 0.0 : static_cast<double>(rank) - 1.0)) || !std::isfinite(table.dof)))
     throw std::invalid_argument("band test: the table term's degrees of freedom must exceed its rank - 1");
-  const Matrix t_used = table.independent ? Matrix(t_diag.asDiagonal()) : Matrix(u * u.transpose());
+  if (!table.independent && !(table.shrinkage >= 0.0 && table.shrinkage <= 1.0))
+    throw std::invalid_argument("band test: the table term's shrinkage must lie in [0, 1]");
+  // D-31e: a full term's correlations shrunk toward its diagonal, here and in every draw.
+  const auto shrunk = [&](Matrix t) {
+    shrink_toward_diagonal(t.data(), p, table.shrinkage);  // symmetric: the storage order does not matter
+    return t;
+  };
+  const Matrix t_used = table.independent ? Matrix(t_diag.asDiagonal()) : shrunk(u * u.transpose());
 
   // The observed T^2 with V = G S G + c Sigma_T (D-31a).
   std::vector<double> d, v;
@@ -207,7 +216,7 @@ BandTestResult table_test(const double* measured_log, const double* mean, const 
     } else if (rank > 0) {
       bartlett_wishart(rank, table.dof, uni.data() + ns, a_t.data());
       const auto nr = static_cast<Eigen::Index>(rank);
-      t_star = u * Eigen::Map<const RowMatrix>(a_t.data(), nr, nr) * u.transpose() / table.dof;
+      t_star = shrunk(u * Eigen::Map<const RowMatrix>(a_t.data(), nr, nr) * u.transpose() / table.dof);
     }
     for (std::size_t b = 0; b < cv2_star.size(); ++b) {  // D-26d's CV^2 moves with the drawn S*_bb
       const auto i = static_cast<Eigen::Index>(b);

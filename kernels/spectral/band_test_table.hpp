@@ -9,6 +9,7 @@
 // Sigma_T* ~ W_r(Sigma_T, nu_T) / nu_T (Bartlett, r = rank Sigma_T) and of d* ~ N(0, V), each
 // giving T*^2 = d*^T V*^{-1} d* with V* from the draws as V from the estimates (D-31b);
 // p = (1 + #{T*^2 >= T^2}) / (B + 1). With Sigma_T = 0 the bootstrap law is Hotelling's (pivotal).
+// A full Sigma_T enters shrunk toward its diagonal (D-31e, TableTerm::shrinkage).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -30,6 +31,9 @@ struct TableTerm {
   // Independent bands only (D-31d): each band's variance is the mean of the raw estimates over the bands
   // within `smooth` of it (its neighbours among the p), in the observed term and in every draw alike.
   std::size_t smooth = 0;
+  // A full Sigma_T only (D-31e): its correlations shrunk by lambda toward its diagonal, in the observed term
+  // and in every draw alike (each draw's Sigma_T* drawn at Sigma_T's rank, then shrunk; lambda held).
+  double shrinkage = 0.0;
 };
 
 // D-31d: the moving mean of v[0..p) over [b - w, b + w] (clipped at the ends), and the number of

@@ -7,6 +7,7 @@
 #include "kernels/spectral/band_noise.hpp"
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/band_test_table.hpp"
+#include "kernels/spectral/covariance_shrinkage.hpp"
 #include "kernels/spectral/ensemble_interval.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch_expectation.hpp"
@@ -297,6 +298,7 @@ std::optional<spectral::LevelOffset> offset_of(const io::BandLevels& b, const Me
             if (j != i) vs[i * p + j] += n.cross[j] / std::sqrt(n.signal_share * noise->band[j].signal_share);
       }
     std::vector<double> vt = v.table_factor > 0.0 ? io::table_log_covariance(b, index) : std::vector<double>{};
+    if (!vt.empty()) spectral::shrink_toward_diagonal(vt.data(), p, io::table_shrinkage(b, index));  // D-31e
     double table_dof = b.table_dof;
     if (!vt.empty() && b.table_independent_bands) {  // D-31d: pooled as the test pools them
       std::vector<double> diag(p);

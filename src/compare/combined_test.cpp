@@ -60,7 +60,7 @@ CombinedTest combined_test(const io::BandLevels& b, const std::vector<std::size_
     t.result = spectral::band_test_with_table(
         c.y.data(), c.mean.data(), c.cov.data(), p, b.realisations, records,
         {table.empty() ? nullptr : table.data(), b.table_dof, table_factor, b.table_independent_bands,
-         b.table_independent_bands ? kSpectralTableSmoothing : 0},
+         b.table_independent_bands ? kSpectralTableSmoothing : 0, io::table_shrinkage(b, band)},
         uniform, kBootstrapDraws, noise, c.cv2_or_null());
   } catch (const std::invalid_argument& e) {
     t.verdict = std::string("none (") + e.what() + ")";

@@ -56,10 +56,11 @@ std::vector<FitPointReport> point_tests(FitModel& model, const FitInputs& in, co
     const ChosenBands c = chosen_bands(b, band, model.measured_db(point));
     const std::vector<double> table = t.factor > 0.0 ? io::table_log_covariance(b, band) : std::vector<double>{};
     try {
-      r.fitted = spectral::band_test_fitted(
-          c.y.data(), c.mean.data(), c.cov.data(), band.size(), b.realisations, pt.records, jacobians[point].data(),
-          in.vary.size(), {table.empty() ? nullptr : table.data(), b.table_dof, t.factor, b.table_independent_bands},
-          uniform, compare::kBootstrapDraws);
+      r.fitted = spectral::band_test_fitted(c.y.data(), c.mean.data(), c.cov.data(), band.size(), b.realisations,
+                                            pt.records, jacobians[point].data(), in.vary.size(),
+                                            {table.empty() ? nullptr : table.data(), b.table_dof, t.factor,
+                                             b.table_independent_bands, 0, io::table_shrinkage(b, band)},
+                                            uniform, compare::kBootstrapDraws);
       r.fitted_verdict = fitted_verdict(r.fitted, band.size(), in.vary.size(), b.realisations);
     } catch (const std::invalid_argument& e) {
       r.fitted_verdict = std::string("none (") + e.what() + ")";

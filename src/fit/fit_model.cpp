@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "kernels/spectral/band_test.hpp"
+#include "kernels/spectral/covariance_shrinkage.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/fit/fit_journal.hpp"
 #include "src/run/run_phases.hpp"
@@ -190,6 +191,7 @@ void FitModel::hold_table(std::size_t point, const io::BandLevels& b, const std:
   if (b.table_units >= 2 && !in_.same_surface) {
     t.factor = compare::kNewSurfaceTableFactor;
     t.covariance = io::table_log_covariance(b, band_[point]);
+    spectral::shrink_toward_diagonal(t.covariance.data(), band_[point].size(), io::table_shrinkage(b, band_[point]));
     for (double& x : t.covariance) x *= t.factor;
     t.question =
         "a rig with another surface of this roughness: V = G S G + 2 Sigma_T (kernels/spectral D-31), "

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <tuple>
 
+#include "kernels/spectral/covariance_shrinkage.hpp"
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
 #include "src/io/sweep_point.hpp"
@@ -289,6 +290,15 @@ std::vector<double> table_log_covariance(const BandLevels& b, const std::vector<
           cov[k * p + l] +=
               scale * (b.table_levels_db[i * nb + band[k]] - mean[k]) * (b.table_levels_db[i * nb + band[l]] - mean[l]);
   return cov;
+}
+
+double table_shrinkage(const BandLevels& b, const std::vector<std::size_t>& band) {
+  const std::size_t n = b.table_units, nb = b.level_db.size(), p = band.size();
+  if (n < 2 || b.table_levels_db.size() != n * nb || b.table_independent_bands) return 0.0;
+  std::vector<double> x(n * p);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < p; ++k) x[i * p + k] = b.table_levels_db[i * nb + band[k]];
+  return spectral::shrinkage_intensity(x.data(), n, p);
 }
 
 }  // namespace rollspec::io

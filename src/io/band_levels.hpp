@@ -44,6 +44,11 @@ struct BandLevels {
 // where the bands' errors are independent (D-31c). Row-major p x p; empty when b has no table term.
 std::vector<double> table_log_covariance(const BandLevels& b, const std::vector<std::size_t>& band);
 
+// D-31e: the intensity lambda by which a full table term's correlations between the bands `band` shrink toward
+// its diagonal, from the N sub-table runs' levels (Schaefer-Strimmer); 0 where the term is diagonal already
+// (D-31c) or there is none. Every user of the full term (test, level offset, fit) shrinks it by this lambda.
+double table_shrinkage(const BandLevels& b, const std::vector<std::size_t>& band);
+
 // How a command picks its row: --sensor (a name from /bands/sensor, or K of sensor_K) or
 // --measured-position X (m: the sensor nearest X in /bands/sensor_position); neither picks
 // "sensor_mean" when the result has it, else the first row.

@@ -85,6 +85,21 @@ def test_a_new_source_file_makes_its_component_changed(kernel_copy):
     assert [c[0] for c in record_versions.changed(manifest, root)] == ["contact"]
 
 
+def test_a_file_another_component_owns_changes_that_component_only(kernel_copy):
+    """'except': a file inside a component's folder that another component owns (the table test inside
+    kernels/spectral) stales only the records stamped with its owner."""
+    root, manifest, source = kernel_copy
+    owned = ["kernels/contact/version.hpp"]
+    folder = manifest["components"]["contact"]
+    folder["except"] = owned
+    folder["sources"] = record_versions.sources_hash(folder["paths"], root, owned)
+    manifest["components"]["owner"] = {"paths": owned, "version": 1,
+                                       "sources": record_versions.sources_hash(owned, root)}
+    assert record_versions.changed(manifest, root) == []
+    source.write_text(source.read_text() + "\ninline constexpr int another = 2;\n")
+    assert [c[0] for c in record_versions.changed(manifest, root)] == ["owner"]
+
+
 def test_comments_and_layout_do_not_change_a_component(kernel_copy):
     root, manifest, source = kernel_copy
     text = source.read_text()

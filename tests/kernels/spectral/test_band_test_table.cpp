@@ -9,6 +9,7 @@
 
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/band_test_table.hpp"
+#include "kernels/spectral/covariance_shrinkage.hpp"
 #include "philox_draws.hpp"
 
 using namespace rollspec::spectral;
@@ -234,4 +235,70 @@ TEST_CASE("D-31d: neighbouring bands' variances pooled, the ends with fewer") {
   CHECK(v == std::vector<double>{4.5, 3.0, 5.0, 4.5});
   CHECK(count == std::vector<std::size_t>{2, 3, 3, 2});
   CHECK(smoothed_variances({1.0, 2.0}, 0) == std::vector<double>{1.0, 2.0});
+}
+
+// D-31e: a stiffness-like table over N = 6 units of p = 16 bands: one shape every band shares (a stiffer table
+// lifts them all) and an own part per band (full rank). The rank-5 jackknife leaves 11 directions without
+// the own part's term and rejects too often; shrunk toward its diagonal by Schaefer-Strimmer's lambda* the test
+// holds its level.
+TEST_CASE("D-31e: size with a common and an own table error, raw and shrunk" * doctest::test_suite("long")) {
+  const std::size_t p = 16, N = 6, trials = 300, draws = 200;
+  const std::uint64_t K = 40;
+  const double M = 25.0;
+  const Eigen::MatrixXd s_true = banded(p, 0.1, 0.3), ls = s_true.llt().matrixL();
+  Eigen::VectorXd common(p), own(p);
+  for (std::size_t b = 0; b < p; ++b)
+    common(b) = 0.12 * (1.0 + 0.4 * std::sin(0.5 * double(b))), own(b) = 0.08 * (1.0 + 0.3 * std::cos(double(b)));
+  const Eigen::MatrixXd t_true =
+      common * common.transpose() + Eigen::MatrixXd(own.array().square().matrix().asDiagonal());
+  const std::vector<double> mean(p, 1e-3);
+  testing::PhiloxNormals z(777);
+  std::size_t rejected_raw = 0, rejected_shrunk = 0;
+  double lambda_mean = 0.0;
+  for (std::size_t trial = 0; trial < trials; ++trial) {
+    Eigen::MatrixXd x(p, K - 1), units(p, N);
+    for (Eigen::Index c = 0; c < x.cols(); ++c) {
+      Eigen::VectorXd e(p);
+      for (std::size_t b = 0; b < p; ++b) e(b) = z.next();
+      x.col(c) = ls * e;
+    }
+    for (std::size_t i = 0; i < N; ++i) {
+      const double c = z.next();
+      for (std::size_t b = 0; b < p; ++b)
+        units(b, i) = std::sqrt(double(N)) * (common(b) * c + own(b) * z.next());  // the table: the mean of N
+    }
+    const Eigen::MatrixXd s_hat = x * x.transpose() / double(K - 1);
+    const Eigen::MatrixXd dev = units.colwise() - units.rowwise().mean();
+    const Eigen::MatrixXd t_hat = dev * dev.transpose() / (double(N) * double(N - 1));
+    // units is p x N column-major: unit i's p bands are contiguous, as shrinkage_intensity reads them.
+    const double lambda = shrinkage_intensity(units.data(), N, p);
+    lambda_mean += lambda / trials;
+    std::vector<double> d, v;
+    const auto st = flat(s_true);
+    std::vector<double> y0(p);
+    for (std::size_t b = 0; b < p; ++b) y0[b] = std::log(mean[b]);
+    band_deviation(y0.data(), mean.data(), st.data(), p, double(K), M, d, v);
+    const Eigen::MatrixXd v_true =
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(v.data(), p, p) +
+        2.0 * t_true;
+    const Eigen::MatrixXd lv = v_true.llt().matrixL();
+    Eigen::VectorXd e(p);
+    for (std::size_t b = 0; b < p; ++b) e(b) = z.next();
+    const Eigen::VectorXd dev_y = lv * e;
+    std::vector<double> y(p);
+    for (std::size_t b = 0; b < p; ++b) y[b] = std::log(mean[b]) - d[b] + dev_y(Eigen::Index(b));
+    const auto sh = flat(s_hat), th = flat(t_hat);
+    rejected_raw += band_test_with_table(y.data(), mean.data(), sh.data(), p, K, M, {th.data(), double(N - 1), 2.0},
+                                         philox(7000 + trial), draws)
+                        .p_value < 0.05;
+    rejected_shrunk +=
+        band_test_with_table(y.data(), mean.data(), sh.data(), p, K, M,
+                             {th.data(), double(N - 1), 2.0, false, 0, lambda}, philox(7000 + trial), draws)
+            .p_value < 0.05;
+  }
+  const double raw = double(rejected_raw) / trials, shrunk = double(rejected_shrunk) / trials;
+  MESSAGE("D-31e size raw ", raw, ", shrunk ", shrunk, " (mean lambda* ", lambda_mean, ")");
+  CHECK(raw > 0.12);
+  CHECK(shrunk > 0.02);
+  CHECK(shrunk < 0.08);
 }
