@@ -1,15 +1,17 @@
 #include "src/cli/study_template_keys.hpp"
 
 #include "src/scenes/scene.hpp"
+#include "src/study/sections/study_section.hpp"
 
 namespace rollspec::cli {
 
 std::vector<FirstKey> first_keys(const std::string& scene) {
+  using study::StudySection;
   std::vector<FirstKey> keys = {
-      {"study.scene", scene},
-      {"study.description", scene + " study written by rollspec init"},
-      {"study.realisations", "100"},
-      {"study.seed", "1"},
+      {StudySection::key(&StudySection::scene), scene},
+      {StudySection::key(&StudySection::description), scene + " study written by rollspec init"},
+      {StudySection::key(&StudySection::realisations), "100"},
+      {StudySection::key(&StudySection::seed), "1"},
   };
   const auto& rig = scenes::find_scene(scene).first_keys;
   keys.insert(keys.end(), rig.begin(), rig.end());

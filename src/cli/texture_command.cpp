@@ -139,8 +139,8 @@ int texture_command(const Args& args) {
                 study_keys.scene + ")");
   if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
   if (count >= 0) {  // --count overrides both counts: estimate with it
-    study.sets.push_back("lines.count=" + std::to_string(count));
-    study.sets.push_back("surface.count=" + std::to_string(count));
+    study.sets.push_back(study::LinesSection::key(&study::LinesSection::count) + "=" + std::to_string(count));
+    study.sets.push_back(study::SurfaceSection::key(&study::SurfaceSection::count) + "=" + std::to_string(count));
   }
   scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1, vm.count("force") > 0);
   const auto seed = study_keys.seed;

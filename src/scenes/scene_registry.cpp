@@ -13,6 +13,7 @@
 #include "src/scenes/stiffness/stiffness_scene.hpp"
 #include "src/scenes/texture/texture_scene.hpp"
 #include "src/study/sections/ensemble_section.hpp"
+#include "src/study/sections/output_section.hpp"
 #include "src/study/sections/spectrum_section.hpp"
 #include "src/study/sections/study_section.hpp"
 #include "src/study/key_reader.hpp"
@@ -122,12 +123,18 @@ std::vector<KeySpec> schema_for(const std::string& scene) {
 
 const std::vector<std::string>& finishing_keys() {
   // reference: computed from the sums' count; time_histories: realisations 0..n-1 rerun at the write.
-  static const std::vector<std::string> keys = {"output.reference", "output.time_histories"};
+  using study::OutputSection;
+  static const std::vector<std::string> keys = {OutputSection::key(&OutputSection::reference),
+                                                OutputSection::key(&OutputSection::time_histories)};
   return keys;
 }
 
 std::uint64_t study_result_hash(const KeyReader& s) {
-  std::vector<std::string> excluded = {"study.realisations", "study.description", "ensemble.chunk_size"};
+  using study::EnsembleSection;
+  using study::StudySection;
+  std::vector<std::string> excluded = {StudySection::key(&StudySection::realisations),
+                                       StudySection::key(&StudySection::description),
+                                       EnsembleSection::key(&EnsembleSection::chunk_size)};
   excluded.insert(excluded.end(), finishing_keys().begin(), finishing_keys().end());
   return io::fnv1a64(std::string(kVersion) + "\n" + s.canonical_text_without(excluded));
 }

@@ -13,6 +13,7 @@
 
 #include "src/error.hpp"
 #include "src/io/input_file.hpp"
+#include "src/study/sections/study_section.hpp"
 #include "src/text_trim.hpp"
 
 namespace fs = std::filesystem;
@@ -254,10 +255,11 @@ Study Study::parse(const std::string& path, std::string text, const std::vector<
   // The scene decides which keys exist.
   std::string scene;
   Origin scene_origin{path, 0};
+  const std::string scene_key = StudySection::key(&StudySection::scene);
   for (const auto& e : lines)
-    if (e.full_key == "study.scene") scene = e.value, scene_origin = Origin{path, e.line};
+    if (e.full_key == scene_key) scene = e.value, scene_origin = Origin{path, e.line};
   for (const auto& o : sets)
-    if (o.full_key == "study.scene") scene = o.value, scene_origin = Origin{"command line", -1};
+    if (o.full_key == scene_key) scene = o.value, scene_origin = Origin{"command line", -1};
   if (scene.empty()) throw config_error(path + ": missing required key [study] scene; every study names its scene");
   try {
     s.keys_ = schema(scene);

@@ -2,6 +2,7 @@
 // the fields, and each key's text, origin and set flag found again by its field, on a real study.
 #include <doctest/doctest.h>
 
+#include <stdexcept>
 #include <string>
 
 #include "src/study/sections/ball_section.hpp"
@@ -11,6 +12,7 @@
 #include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/rolling_world_sections.hpp"
 #include "src/study/sections/spectrum_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
 #include "tests/engine/study_from_text.hpp"
 
 using namespace rollspec;
@@ -91,4 +93,17 @@ TEST_CASE("section keys: a key read only when an earlier one asks for it") {
                                            "[imposed]\nnode = first\ntimes = 0, 1\nvalues = 0, 2e-3\n");
   const auto f = study::ImposedSection::parse(first);
   CHECK((f.times.size() == 2 && f.values[1] == 2e-3));
+}
+
+TEST_CASE("section keys: a key named by its member, nested members too; a member no key reads is refused") {
+  using study::BallSection;
+  using study::ModalBeamSection;
+  CHECK(BallSection::key(&BallSection::radius) == "ball.radius");
+  CHECK(BallSection::key(&BallSection::gravity) == "ball.gravity");
+  CHECK(ModalBeamSection::key(&ModalBeamSection::poisson) == "beam.poisson");
+  CHECK(ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::thickness) == "beam.thickness");
+  CHECK(ModalBeamSection::key(&ModalBeamSection::damping, &beam::ModalDamping::loss_factor) == "beam.loss_factor");
+  // A member the section derives (rough, from surface) is no key's: refused, not named after a neighbour.
+  CHECK(study::StiffnessSection::key(&study::StiffnessSection::surface) == "stiffness.surface");
+  CHECK_THROWS_AS(study::StiffnessSection::key(&study::StiffnessSection::rough), std::logic_error);
 }

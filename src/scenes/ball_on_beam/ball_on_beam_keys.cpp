@@ -8,21 +8,27 @@
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
-#include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/ball_section.hpp"
+#include "src/study/sections/blocked_force_section.hpp"
 #include "src/study/sections/contact_section.hpp"
 #include "src/study/sections/equivalent_roughness_section.hpp"
+#include "src/study/sections/modal_beam_section.hpp"
 #include "src/study/sections/output_section.hpp"
+#include "src/study/sections/path_table_section.hpp"
 #include "src/study/sections/roughness_section.hpp"
 #include "src/study/sections/sensors_section.hpp"
 #include "src/study/sections/signal_section.hpp"
 #include "src/study/sections/spectrum_section.hpp"
-#include "src/study/sections/ball_section.hpp"
-#include "src/study/sections/blocked_force_section.hpp"
-#include "src/study/sections/path_table_section.hpp"
-#include "src/study/sections/modal_beam_section.hpp"
+#include "src/study/sections/stiffness_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 #include "src/texture/texture_keys.hpp"
 
 namespace rollspec::scenes {
+
+using study::BallSection;
+using study::ModalBeamSection;
+using study::SensorsSection;
+using study::TextureSection;
 
 using namespace study;
 
@@ -62,10 +68,19 @@ BallContact ball_on_beam_contact_pair(const KeyReader& s) {
 // The texture's 1 um default rms makes the template's 20 mm ball lose contact 81 % of the time;
 // 30 nm (a fine ground track) keeps it in contact.
 std::vector<FirstKey> ball_on_beam_first_keys() {
-  return {{"beam.length", {}},      {"beam.width", {}},  {"beam.thickness", {}}, {"beam.youngs_modulus", {}},
-          {"beam.density", {}},     {"ball.radius", {}}, {"ball.density", {}},   {"ball.speed", {}},
-          {"ball.start", {}},       {"ball.end", {}},    {"texture.source", {}}, {"texture.rms", "3e-8"},
-          {"sensors.positions", {}}};
+  return {{ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::length), {}},
+          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::width), {}},
+          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::thickness), {}},
+          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::youngs_modulus), {}},
+          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::density), {}},
+          {BallSection::key(&BallSection::radius), {}},
+          {BallSection::key(&BallSection::density), {}},
+          {BallSection::key(&BallSection::speed), {}},
+          {BallSection::key(&BallSection::start), {}},
+          {BallSection::key(&BallSection::end), {}},
+          {TextureSection::key(&TextureSection::source), {}},
+          {TextureSection::key(&TextureSection::rms), "3e-8"},
+          {SensorsSection::key(&SensorsSection::positions), {}}};
 }
 
 }  // namespace rollspec::scenes

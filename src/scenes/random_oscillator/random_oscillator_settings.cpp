@@ -7,8 +7,14 @@
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/random_oscillator_sections.hpp"
 #include "src/study/sections/study_section.hpp"
+#include "src/study/sections/spectrum_section.hpp"
 
 namespace rollspec::scenes {
+
+using study::ForceSection;
+using study::OscillatorSection;
+using study::RecordSignalSection;
+using study::SpectrumSection;
 
 using namespace study;
 
@@ -54,16 +60,16 @@ RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {
 }
 
 std::vector<FirstKey> random_oscillator_first_keys() {
-  return {{"oscillator.mass", {}},
-          {"oscillator.natural_frequency", "50"},
-          {"oscillator.damping_ratio", {}},
-          {"force.spectrum", {}},
-          {"force.level", {}},
-          {"signal.sample_rate", {}},
-          {"signal.duration", {}},
-          {"spectrum.segment", {}},
-          {"spectrum.band_min", {}},
-          {"spectrum.band_max", "800"}};
+  return {{OscillatorSection::key(&OscillatorSection::mass), {}},
+          {OscillatorSection::key(&OscillatorSection::natural_frequency), "50"},
+          {OscillatorSection::key(&OscillatorSection::damping_ratio), {}},
+          {ForceSection::key(&ForceSection::spectrum), {}},
+          {ForceSection::key(&ForceSection::level), {}},
+          {RecordSignalSection::key(&RecordSignalSection::sample_rate), {}},
+          {RecordSignalSection::key(&RecordSignalSection::duration), {}},
+          {SpectrumSection::key(&SpectrumSection::segment), {}},
+          {SpectrumSection::key(&SpectrumSection::band_min), {}},
+          {SpectrumSection::key(&SpectrumSection::band_max), "800"}};
 }
 
 }  // namespace rollspec::scenes

@@ -9,9 +9,16 @@
 #include "src/scenes/rolling_beam/rolling_beam.hpp"
 #include "src/study/key_reader.hpp"
 #include "src/study/sections/choice_read.hpp"
+#include "src/study/sections/rolling_analysis_section.hpp"
 #include "src/study/sections/rolling_body_sections.hpp"
 
 namespace rollspec::scenes {
+
+using study::DiscSection;
+using study::FlyingBeamSection;
+using study::PuckSection;
+using study::RollingAnalysisSection;
+using study::StraightBeamSection;
 
 namespace {
 
@@ -53,36 +60,42 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
   using study::BodyKind;
   const BodyKind kind = study::BodySection::parse(s).kind;
   refuse_unused_sections(s, kind);
-  const double t_end = s.real("analysis.t_end");
+  const double t_end = s.real(RollingAnalysisSection::key(&RollingAnalysisSection::t_end));
   if (kind == BodyKind::disc || kind == BodyKind::puck) {
-    const double r = s.real("disc.radius"), len = s.real("disc.length"), m = s.real("disc.mass");
+    const double r = s.real(DiscSection::key(&DiscSection::radius)),
+                 len = s.real(DiscSection::key(&DiscSection::length)), m = s.real(DiscSection::key(&DiscSection::mass));
     const double rho = m / (M_PI * r * r * len);
-    out.push_back({{"disc.radius", "disc.length"},
+    out.push_back({{DiscSection::key(&DiscSection::radius), DiscSection::key(&DiscSection::length)},
                    rho >= 10.0 && rho <= 25000.0,
                    "a disc of " + dim(m, "kg") + " with radius " + dim(r, "m") + " and length " + dim(len, "m") +
                        " would have a density of " + dim(rho, "kg/m^3") +
                        ", outside every solid's (10 kg/m^3 for foams to 22600 for osmium)"});
   }
   if (kind == BodyKind::puck) {  // a triangular pulse's impulse F T / 2 moves the puck at most that far in t_end
-    const double r = s.real("disc.radius"), hw = s.real("puck.half_width");
-    const double reach = r + s.real("puck.force_peak") * s.real("puck.pulse") / 2.0 / s.real("disc.mass") * t_end;
-    out.push_back({{"puck.half_width", "disc.radius"},
+    const double r = s.real(DiscSection::key(&DiscSection::radius)),
+                 hw = s.real(PuckSection::key(&PuckSection::half_width));
+    const double reach = r + s.real(PuckSection::key(&PuckSection::force_peak)) *
+                                 s.real(PuckSection::key(&PuckSection::pulse)) / 2.0 /
+                                 s.real(DiscSection::key(&DiscSection::mass)) * t_end;
+    out.push_back({{PuckSection::key(&PuckSection::half_width), DiscSection::key(&DiscSection::radius)},
                    hw > r,
                    "walls at +-" + dim(hw, "m") + " cut through a puck of radius " + dim(r, "m") + " at the centre"});
-    out.push_back({{"puck.half_width"},
+    out.push_back({{PuckSection::key(&PuckSection::half_width)},
                    hw <= 10.0 * reach,
                    "walls at +-" + dim(hw, "m") + " lie beyond ten times the farthest the puck can travel in t_end (" +
                        dim(reach, "m") + ", its pulse's impulse over its mass): it never meets them"});
   }
   if (kind == BodyKind::flying_beam) {  // seed 4.4: a 1000 m beam along x on y = 0, spheres of radius 25 m
-    const double wall = s.real("flying_beam.wall_distance"), clear = (wall - 500.0) / std::sqrt(2.0);
-    const double reach = s.real("flying_beam.force_peak") * s.real("flying_beam.ramp") / 2.0 / 1.3 * t_end;
-    out.push_back({{"flying_beam.wall_distance"},
+    const double wall = s.real(FlyingBeamSection::key(&FlyingBeamSection::wall_distance)),
+                 clear = (wall - 500.0) / std::sqrt(2.0);
+    const double reach = s.real(FlyingBeamSection::key(&FlyingBeamSection::force_peak)) *
+                         s.real(FlyingBeamSection::key(&FlyingBeamSection::ramp)) / 2.0 / 1.3 * t_end;
+    out.push_back({{FlyingBeamSection::key(&FlyingBeamSection::wall_distance)},
                    clear >= 25.0,
                    "an oblique wall at " + dim(wall, "m") +
                        " cuts through the beam where it starts (its end at x = "
                        "500 m, contact spheres of radius 25 m)"});
-    out.push_back({{"flying_beam.wall_distance"},
+    out.push_back({{FlyingBeamSection::key(&FlyingBeamSection::wall_distance)},
                    clear <= 10.0 * reach,
                    "an oblique wall at " + dim(wall, "m") +
                        " lies beyond ten times the farthest the beam can fly in "
@@ -90,16 +103,17 @@ std::vector<DimensionRelation> rolling_beam_relations(const study::KeyReader& s)
                        dim(reach, "m") + ", its force's impulse over its 1.3 kg): it never meets it"});
   }
   if (kind == BodyKind::beam) {  // a geometrically exact beam: slender, and not starting deep inside a plane
-    const double d = s.real("beam.diameter");
-    const auto ends = vectors(s.text("beam.start") + ";" + s.text("beam.end"));
+    const double d = s.real(StraightBeamSection::key(&StraightBeamSection::diameter));
+    const auto ends = vectors(s.text(StraightBeamSection::key(&StraightBeamSection::start)) + ";" +
+                              s.text(StraightBeamSection::key(&StraightBeamSection::end)));
     const double length = ends.size() == 2 ? (ends[1] - ends[0]).norm() : 0.0;
-    out.push_back({{"beam.diameter"},
+    out.push_back({{StraightBeamSection::key(&StraightBeamSection::diameter)},
                    d <= length / 2.0,
                    "a beam " + dim(d, "m") + " across and " + dim(length, "m") + " long is no slender beam"});
   }
-  const double pen = s.real("analysis.max_new_penetration");
+  const double pen = s.real(RollingAnalysisSection::key(&RollingAnalysisSection::max_new_penetration));
   if (pen > 0.0)
-    out.push_back({{"analysis.max_new_penetration"},
+    out.push_back({{RollingAnalysisSection::key(&RollingAnalysisSection::max_new_penetration)},
                    pen <= 1.0 && pen >= 1e-12,
                    "a largest new penetration of " + dim(pen, "m") +
                        ": a penalty contact's penetration is a small fraction of the body's size"});

@@ -11,6 +11,12 @@
 
 namespace rollspec::scenes {
 
+using study::BodySection;
+using study::GravityVectorSection;
+using study::RollingAnalysisSection;
+using study::RollingContactSection;
+using study::StraightBeamSection;
+
 using namespace study;
 using Eigen::Vector3d;
 
@@ -183,9 +189,16 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
 }
 
 std::vector<FirstKey> rolling_beam_first_keys() {
-  return {{"body.kind", {}},           {"beam.start", {}},    {"beam.end", {}},         {"beam.diameter", {}},
-          {"beam.youngs_modulus", {}}, {"beam.density", {}},  {"contact.friction", {}}, {"gravity.acceleration", {}},
-          {"analysis.dt", {}},         {"analysis.t_end", {}}};
+  return {{BodySection::key(&BodySection::kind), {}},
+          {StraightBeamSection::key(&StraightBeamSection::start), {}},
+          {StraightBeamSection::key(&StraightBeamSection::end), {}},
+          {StraightBeamSection::key(&StraightBeamSection::diameter), {}},
+          {StraightBeamSection::key(&StraightBeamSection::youngs_modulus), {}},
+          {StraightBeamSection::key(&StraightBeamSection::density), {}},
+          {RollingContactSection::key(&RollingContactSection::friction), {}},
+          {GravityVectorSection::key(&GravityVectorSection::acceleration), {}},
+          {RollingAnalysisSection::key(&RollingAnalysisSection::dt), {}},
+          {RollingAnalysisSection::key(&RollingAnalysisSection::t_end), {}}};
 }
 
 }  // namespace rollspec::scenes

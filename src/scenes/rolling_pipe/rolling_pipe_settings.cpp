@@ -14,8 +14,16 @@
 #include "src/study/sections/study_section.hpp"
 #include "src/study/sections/surface_grid_section.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/study/sections/texture_section.hpp"
 
 namespace rollspec::scenes {
+
+using study::PipeAnalysisSection;
+using study::PipeContactSection;
+using study::PipeSection;
+using study::PipeSensorsSection;
+using study::RollSection;
+using study::TextureSection;
 
 using namespace study;
 
@@ -163,10 +171,16 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
 
 // The step is set against the default contact penalty (the key's default is too coarse for it).
 std::vector<FirstKey> rolling_pipe_first_keys() {
-  return {{"pipe.length", {}},      {"pipe.diameter", {}},          {"pipe.inner_diameter", {}},
-          {"roll.speed", {}},       {"roll.distance", {}},          {"texture.rms", {}},
-          {"contact.friction", {}}, {"contact.penalty_normal", {}}, {"analysis.dt", "2.5e-5"},
-          {"sensors.positions", {}}};
+  return {{PipeSection::key(&PipeSection::length), {}},
+          {PipeSection::key(&PipeSection::diameter), {}},
+          {PipeSection::key(&PipeSection::inner_diameter), {}},
+          {RollSection::key(&RollSection::speed), {}},
+          {RollSection::key(&RollSection::distance), {}},
+          {TextureSection::key(&TextureSection::rms), {}},
+          {PipeContactSection::key(&PipeContactSection::friction), {}},
+          {PipeContactSection::key(&PipeContactSection::penalty_normal), {}},
+          {PipeAnalysisSection::key(&PipeAnalysisSection::dt), "2.5e-5"},
+          {PipeSensorsSection::key(&PipeSensorsSection::positions), {}}};
 }
 
 }  // namespace rollspec::scenes

@@ -10,8 +10,16 @@
 #include "src/study/sections/flat_section.hpp"
 #include "src/study/sections/stiffness_section.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/study/sections/surface_section.hpp"
+#include "src/study/sections/texture_section.hpp"
 
 namespace rollspec::scenes {
+
+using study::BallSection;
+using study::FlatSection;
+using study::StiffnessSection;
+using study::SurfaceSection;
+using study::TextureSection;
 
 using namespace study;
 
@@ -77,9 +85,16 @@ class StiffnessScene final : public Scene {
 std::unique_ptr<Scene> make_stiffness_scene(const KeyReader& s) { return std::make_unique<StiffnessScene>(s); }
 
 std::vector<FirstKey> stiffness_first_keys() {
-  return {{"ball.radius", {}}, {"ball.density", {}},   {"ball.youngs_modulus", {}},    {"flat.youngs_modulus", {}},
-          {"texture.rms", {}}, {"texture.hurst", {}},  {"stiffness.approach_max", {}}, {"stiffness.realisations", {}},
-          {"surface.nx", {}},  {"surface.spacing", {}}};
+  return {{BallSection::key(&BallSection::radius), {}},
+          {BallSection::key(&BallSection::density), {}},
+          {BallSection::key(&BallSection::youngs_modulus), {}},
+          {FlatSection::key(&FlatSection::youngs_modulus), {}},
+          {TextureSection::key(&TextureSection::rms), {}},
+          {TextureSection::key(&TextureSection::hurst), {}},
+          {StiffnessSection::key(&StiffnessSection::approach_max), {}},
+          {StiffnessSection::key(&StiffnessSection::realisations), {}},
+          {SurfaceSection::key(&SurfaceSection::nx), {}},
+          {SurfaceSection::key(&SurfaceSection::spacing), {}}};
 }
 
 }  // namespace rollspec::scenes

@@ -12,6 +12,8 @@
 
 namespace rollspec::scenes {
 
+using study::LinesSection;
+
 std::vector<MemoryItem> texture_memory(const study::KeyReader& s, int /*threads*/) {
   const auto lines = study::LinesSection::parse(s);
   const double samples = lines.length / std::max(lines.spacing, 1e-300), count = static_cast<double>(lines.count);
@@ -24,9 +26,10 @@ std::vector<MemoryItem> texture_memory(const study::KeyReader& s, int /*threads*
 
 std::vector<DimensionRelation> texture_relations(const study::KeyReader& s) {
   std::vector<DimensionRelation> out;
-  const double length = s.real("lines.length"), dx = s.real("lines.spacing");
-  add_texture_relations(s, "lines.length", length, "the line length", out);
-  out.push_back({{"lines.spacing", "lines.length"},
+  const double length = s.real(LinesSection::key(&LinesSection::length)),
+               dx = s.real(LinesSection::key(&LinesSection::spacing));
+  add_texture_relations(s, LinesSection::key(&LinesSection::length), length, "the line length", out);
+  out.push_back({{LinesSection::key(&LinesSection::spacing), LinesSection::key(&LinesSection::length)},
                  length >= 16.0 * dx,
                  "a line of " + dim(length, "m") + " holds fewer than 16 samples at spacing " + dim(dx, "m")});
   add_surface_relations(s, true, 0.0, out, false);

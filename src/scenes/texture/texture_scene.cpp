@@ -9,6 +9,10 @@
 
 namespace rollspec::scenes {
 
+using study::LinesSection;
+using study::SurfaceSection;
+using study::TextureSection;
+
 using namespace study;
 
 std::vector<KeySpec> texture_scene_keys() {
@@ -48,15 +52,15 @@ std::unique_ptr<Scene> make_texture_scene(const KeyReader& s) { return std::make
 
 // The line spacing is set against the default short cut-off (the key's default is too coarse for it).
 std::vector<FirstKey> texture_first_keys() {
-  return {{"texture.source", {}},
-          {"texture.rms", {}},
-          {"texture.hurst", {}},
-          {"texture.rolloff_wavelength", {}},
-          {"texture.short_wavelength", {}},
-          {"lines.count", {}},
-          {"lines.length", {}},
-          {"lines.spacing", "5e-6"},
-          {"surface.count", {}}};
+  return {{TextureSection::key(&TextureSection::source), {}},
+          {TextureSection::key(&TextureSection::rms), {}},
+          {TextureSection::key(&TextureSection::hurst), {}},
+          {TextureSection::key(&TextureSection::rolloff_wavelength), {}},
+          {TextureSection::key(&TextureSection::short_wavelength), {}},
+          {LinesSection::key(&LinesSection::count), {}},
+          {LinesSection::key(&LinesSection::length), {}},
+          {LinesSection::key(&LinesSection::spacing), "5e-6"},
+          {SurfaceSection::key(&SurfaceSection::count), {}}};
 }
 
 }  // namespace rollspec::scenes

@@ -131,6 +131,16 @@ class SectionKeys {
     return binding_of(field).spec.full_name();
   }
 
+  // "section.key" of the key read into the member at `offset` bytes into S (DeclaredSection::key).
+  std::string full_name_at(std::size_t offset) const {
+    S probe;
+    for (const auto& b : bindings_)
+      if (static_cast<std::size_t>(static_cast<const char*>(b.address(probe)) -
+                                   reinterpret_cast<const char*>(&probe)) == offset)
+        return b.spec.full_name();
+    throw std::logic_error("not a field a key of the section is read into");
+  }
+
   // Every key into its field, in declaration order, each key's text and origin recorded.
   S read(const KeyReader& s) const {
     S out;
@@ -197,6 +207,10 @@ template <class S>
 const SectionKeys<S>& DeclaredSection<S>::declared() {
   static const SectionKeys<S> k = S::declare();
   return k;
+}
+template <class S>
+std::string DeclaredSection<S>::key_at(std::size_t offset) {
+  return declared().full_name_at(offset);
 }
 template <class S>
 std::vector<KeySpec> DeclaredSection<S>::keys() {
