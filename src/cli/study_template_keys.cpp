@@ -8,10 +8,10 @@ namespace rollspec::cli {
 std::vector<FirstKey> first_keys(const std::string& scene) {
   using study::StudySection;
   std::vector<FirstKey> keys = {
-      {StudySection::key(&StudySection::scene), scene},
-      {StudySection::key(&StudySection::description), scene + " study written by rollspec init"},
-      {StudySection::key(&StudySection::realisations), "100"},
-      {StudySection::key(&StudySection::seed), "1"},
+      scenes::first_key(&StudySection::scene, scene),
+      scenes::first_key(&StudySection::description, scene + " study written by rollspec init"),
+      scenes::first_key(&StudySection::realisations, "100"),
+      scenes::first_key(&StudySection::seed, "1"),
   };
   const auto& rig = scenes::find_scene(scene).first_keys;
   keys.insert(keys.end(), rig.begin(), rig.end());

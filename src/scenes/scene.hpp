@@ -165,6 +165,17 @@ struct FirstKey {
   std::optional<std::string> value;  // nullopt: the key table's default
 };
 
+// A first key named by the member its section reads it into (DeclaredSection::key), or by a member of
+// one of its members.
+template <class S, class T>
+FirstKey first_key(T S::*field, std::optional<std::string> value = std::nullopt) {
+  return {S::key(field), std::move(value)};
+}
+template <class S, class O, class T>
+FirstKey first_key(O S::*outer, T O::*inner, std::optional<std::string> value = std::nullopt) {
+  return {S::key(outer, inner), std::move(value)};
+}
+
 // Ball radius, effective modulus and weight of a study's contact (the ball on its flat or beam).
 struct BallContact {
   double radius, effective_modulus, weight;

@@ -68,19 +68,19 @@ BallContact ball_on_beam_contact_pair(const KeyReader& s) {
 // The texture's 1 um default rms makes the template's 20 mm ball lose contact 81 % of the time;
 // 30 nm (a fine ground track) keeps it in contact.
 std::vector<FirstKey> ball_on_beam_first_keys() {
-  return {{ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::length), {}},
-          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::width), {}},
-          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::thickness), {}},
-          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::youngs_modulus), {}},
-          {ModalBeamSection::key(&ModalBeamSection::properties, &beam::BeamProperties::density), {}},
-          {BallSection::key(&BallSection::radius), {}},
-          {BallSection::key(&BallSection::density), {}},
-          {BallSection::key(&BallSection::speed), {}},
-          {BallSection::key(&BallSection::start), {}},
-          {BallSection::key(&BallSection::end), {}},
-          {TextureSection::key(&TextureSection::source), {}},
-          {TextureSection::key(&TextureSection::rms), "3e-8"},
-          {SensorsSection::key(&SensorsSection::positions), {}}};
+  return {first_key(&ModalBeamSection::properties, &beam::BeamProperties::length),
+          first_key(&ModalBeamSection::properties, &beam::BeamProperties::width),
+          first_key(&ModalBeamSection::properties, &beam::BeamProperties::thickness),
+          first_key(&ModalBeamSection::properties, &beam::BeamProperties::youngs_modulus),
+          first_key(&ModalBeamSection::properties, &beam::BeamProperties::density),
+          first_key(&BallSection::radius),
+          first_key(&BallSection::density),
+          first_key(&BallSection::speed),
+          first_key(&BallSection::start),
+          first_key(&BallSection::end),
+          first_key(&TextureSection::source),
+          first_key(&TextureSection::rms, "3e-8"),
+          first_key(&SensorsSection::positions)};
 }
 
 }  // namespace rollspec::scenes

@@ -60,16 +60,16 @@ RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {
 }
 
 std::vector<FirstKey> random_oscillator_first_keys() {
-  return {{OscillatorSection::key(&OscillatorSection::mass), {}},
-          {OscillatorSection::key(&OscillatorSection::natural_frequency), "50"},
-          {OscillatorSection::key(&OscillatorSection::damping_ratio), {}},
-          {ForceSection::key(&ForceSection::spectrum), {}},
-          {ForceSection::key(&ForceSection::level), {}},
-          {RecordSignalSection::key(&RecordSignalSection::sample_rate), {}},
-          {RecordSignalSection::key(&RecordSignalSection::duration), {}},
-          {SpectrumSection::key(&SpectrumSection::segment), {}},
-          {SpectrumSection::key(&SpectrumSection::band_min), {}},
-          {SpectrumSection::key(&SpectrumSection::band_max), "800"}};
+  return {first_key(&OscillatorSection::mass),
+          first_key(&OscillatorSection::natural_frequency, "50"),
+          first_key(&OscillatorSection::damping_ratio),
+          first_key(&ForceSection::spectrum),
+          first_key(&ForceSection::level),
+          first_key(&RecordSignalSection::sample_rate),
+          first_key(&RecordSignalSection::duration),
+          first_key(&SpectrumSection::segment),
+          first_key(&SpectrumSection::band_min),
+          first_key(&SpectrumSection::band_max, "800")};
 }
 
 }  // namespace rollspec::scenes

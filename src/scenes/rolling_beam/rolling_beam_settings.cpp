@@ -189,16 +189,16 @@ RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {
 }
 
 std::vector<FirstKey> rolling_beam_first_keys() {
-  return {{BodySection::key(&BodySection::kind), {}},
-          {StraightBeamSection::key(&StraightBeamSection::start), {}},
-          {StraightBeamSection::key(&StraightBeamSection::end), {}},
-          {StraightBeamSection::key(&StraightBeamSection::diameter), {}},
-          {StraightBeamSection::key(&StraightBeamSection::youngs_modulus), {}},
-          {StraightBeamSection::key(&StraightBeamSection::density), {}},
-          {RollingContactSection::key(&RollingContactSection::friction), {}},
-          {GravityVectorSection::key(&GravityVectorSection::acceleration), {}},
-          {RollingAnalysisSection::key(&RollingAnalysisSection::dt), {}},
-          {RollingAnalysisSection::key(&RollingAnalysisSection::t_end), {}}};
+  return {first_key(&BodySection::kind),
+          first_key(&StraightBeamSection::start),
+          first_key(&StraightBeamSection::end),
+          first_key(&StraightBeamSection::diameter),
+          first_key(&StraightBeamSection::youngs_modulus),
+          first_key(&StraightBeamSection::density),
+          first_key(&RollingContactSection::friction),
+          first_key(&GravityVectorSection::acceleration),
+          first_key(&RollingAnalysisSection::dt),
+          first_key(&RollingAnalysisSection::t_end)};
 }
 
 }  // namespace rollspec::scenes

@@ -171,16 +171,16 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
 
 // The step is set against the default contact penalty (the key's default is too coarse for it).
 std::vector<FirstKey> rolling_pipe_first_keys() {
-  return {{PipeSection::key(&PipeSection::length), {}},
-          {PipeSection::key(&PipeSection::diameter), {}},
-          {PipeSection::key(&PipeSection::inner_diameter), {}},
-          {RollSection::key(&RollSection::speed), {}},
-          {RollSection::key(&RollSection::distance), {}},
-          {TextureSection::key(&TextureSection::rms), {}},
-          {PipeContactSection::key(&PipeContactSection::friction), {}},
-          {PipeContactSection::key(&PipeContactSection::penalty_normal), {}},
-          {PipeAnalysisSection::key(&PipeAnalysisSection::dt), "2.5e-5"},
-          {PipeSensorsSection::key(&PipeSensorsSection::positions), {}}};
+  return {first_key(&PipeSection::length),
+          first_key(&PipeSection::diameter),
+          first_key(&PipeSection::inner_diameter),
+          first_key(&RollSection::speed),
+          first_key(&RollSection::distance),
+          first_key(&TextureSection::rms),
+          first_key(&PipeContactSection::friction),
+          first_key(&PipeContactSection::penalty_normal),
+          first_key(&PipeAnalysisSection::dt, "2.5e-5"),
+          first_key(&PipeSensorsSection::positions)};
 }
 
 }  // namespace rollspec::scenes

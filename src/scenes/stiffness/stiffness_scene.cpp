@@ -85,16 +85,16 @@ class StiffnessScene final : public Scene {
 std::unique_ptr<Scene> make_stiffness_scene(const KeyReader& s) { return std::make_unique<StiffnessScene>(s); }
 
 std::vector<FirstKey> stiffness_first_keys() {
-  return {{BallSection::key(&BallSection::radius), {}},
-          {BallSection::key(&BallSection::density), {}},
-          {BallSection::key(&BallSection::youngs_modulus), {}},
-          {FlatSection::key(&FlatSection::youngs_modulus), {}},
-          {TextureSection::key(&TextureSection::rms), {}},
-          {TextureSection::key(&TextureSection::hurst), {}},
-          {StiffnessSection::key(&StiffnessSection::approach_max), {}},
-          {StiffnessSection::key(&StiffnessSection::realisations), {}},
-          {SurfaceSection::key(&SurfaceSection::nx), {}},
-          {SurfaceSection::key(&SurfaceSection::spacing), {}}};
+  return {first_key(&BallSection::radius),
+          first_key(&BallSection::density),
+          first_key(&BallSection::youngs_modulus),
+          first_key(&FlatSection::youngs_modulus),
+          first_key(&TextureSection::rms),
+          first_key(&TextureSection::hurst),
+          first_key(&StiffnessSection::approach_max),
+          first_key(&StiffnessSection::realisations),
+          first_key(&SurfaceSection::nx),
+          first_key(&SurfaceSection::spacing)};
 }
 
 }  // namespace rollspec::scenes

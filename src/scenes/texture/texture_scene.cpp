@@ -52,15 +52,15 @@ std::unique_ptr<Scene> make_texture_scene(const KeyReader& s) { return std::make
 
 // The line spacing is set against the default short cut-off (the key's default is too coarse for it).
 std::vector<FirstKey> texture_first_keys() {
-  return {{TextureSection::key(&TextureSection::source), {}},
-          {TextureSection::key(&TextureSection::rms), {}},
-          {TextureSection::key(&TextureSection::hurst), {}},
-          {TextureSection::key(&TextureSection::rolloff_wavelength), {}},
-          {TextureSection::key(&TextureSection::short_wavelength), {}},
-          {LinesSection::key(&LinesSection::count), {}},
-          {LinesSection::key(&LinesSection::length), {}},
-          {LinesSection::key(&LinesSection::spacing), "5e-6"},
-          {SurfaceSection::key(&SurfaceSection::count), {}}};
+  return {first_key(&TextureSection::source),
+          first_key(&TextureSection::rms),
+          first_key(&TextureSection::hurst),
+          first_key(&TextureSection::rolloff_wavelength),
+          first_key(&TextureSection::short_wavelength),
+          first_key(&LinesSection::count),
+          first_key(&LinesSection::length),
+          first_key(&LinesSection::spacing, "5e-6"),
+          first_key(&SurfaceSection::count)};
 }
 
 }  // namespace rollspec::scenes
