@@ -86,6 +86,8 @@ RECIPES = {
                                          "help": ["--help"], "binary": 3},
     "bench/engine/seed001_loss_of_contact.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
                                                 "help": ["--help"], "binary": 3},
+    "bench/engine/seed001_contrast.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
+                                         "help": ["--help"], "binary": 3},
     "bench/engine/seed002_modes.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
                                       "help": ["--help"], "binary": 3},
     "bench/engine/seed002_routes.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
