@@ -21,14 +21,17 @@ A record holds
 `write` is what a bench script calls; `load` checks a file and raises RecordError with one line that
 names the file and the fault; `markdown` renders a checked record.
 """
+import contextlib
 import datetime
 import json
 import os
 import platform
 import re
 import shlex
+import shutil
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -87,6 +90,19 @@ def own_cpu():
 def other_work(busy_before, own_cpu, wall):
     """Cores that other work kept busy while a benchmark ran: the machine's busy seconds minus its own."""
     return max(0.0, (busy_seconds() - busy_before - own_cpu) / wall) if wall > 0 else 0.0
+
+
+@contextlib.contextmanager
+def scratch_studies(prefix):
+    """A temporary folder holding a copy of studies/ without its cached tables (the runs build their own
+    there, and relative paths in the studies resolve as they do in the checkout); removed afterwards."""
+    work = Path(tempfile.mkdtemp(prefix=prefix))
+    try:
+        shutil.copytree(Path(__file__).resolve().parents[1] / "studies", work / "studies",
+                        ignore=shutil.ignore_patterns("tables"))
+        yield work
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
 
 
 def build_version(binary):

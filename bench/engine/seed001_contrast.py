@@ -19,10 +19,8 @@ time out of contact. --record writes the table as a record that the documentatio
 (bench/bench_record.py). About 10 minutes on 2 cores, the two stiffness tables included.
 """
 import pathlib
-import shutil
 import subprocess
 import sys
-import tempfile
 
 import h5py
 import numpy as np
@@ -71,10 +69,8 @@ def main():
     p.add_argument("--seeds", default="1001,1002", help="study seeds (default 1001,1002)")
     a, binary = bench_record.record_script_arguments(p)
     seeds = parse_seeds(a.seeds)
-    work = pathlib.Path(tempfile.mkdtemp(prefix="seed001-contrast-"))
     rows, data = [], {}
-    try:
-        shutil.copytree(ROOT / "studies", work / "studies", ignore=shutil.ignore_patterns("tables"))
+    with bench_record.scratch_studies("seed001-contrast-") as work:
         for beam, name in BEAMS.items():
             study = work / "studies" / f"{name}.ini"
             levels, loss, f = {}, {}, None
@@ -92,16 +88,14 @@ def main():
                        f"{loss[a_]:.1f} % / {loss[b_]:.1f} %"]
                 rows.append(row)
                 print(" | ".join(row), flush=True)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
     header = ["beam", "difference of the sensor mean's band levels", f"bands below {SPLIT_HZ / 1000:g} kHz (mean)",
               f"bands {SPLIT_HZ / 1000:g}-{TOP_HZ / 1000:g} kHz (mean)", "out of contact (first / second)"]
     if a.record:
-        version = subprocess.run([binary, "version"], capture_output=True, text=True).stdout.strip()
         try:
             bench_record.write(
                 a.record, title="Seed 001: the own model against the calibrated route, beams R and S",
-                argv=sys.argv, builds={"current": {"description": "the build measured", "version": version}},
+                argv=sys.argv, builds={"current": {"description": "the build measured",
+                                                    "version": bench_record.build_version(binary)}},
                 settings=f"each beam's study as shipped (its realisations and stiffness table) with [contact] law "
                          f"and filter crossed, study seeds {', '.join(map(str, seeds))}; the sensor mean's band "
                          f"levels averaged over the seeds, then differences averaged over the bands from the "

@@ -13,10 +13,8 @@ table as a record that the documentation's seeds page renders (bench/bench_recor
 on the shared 2 cores, most of it the two stiffness tables.
 """
 import pathlib
-import shutil
 import subprocess
 import sys
-import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.dont_write_bytecode = True
@@ -62,10 +60,8 @@ def main():
     p.add_argument("--seeds", default="1001,1002,1003,1004", help="study seeds (default 1001,1002,1003,1004)")
     a, binary = bench_record.record_script_arguments(p)
     seeds = parse_seeds(a.seeds)
-    work = pathlib.Path(tempfile.mkdtemp(prefix="seed001-loss-"))
     rows = []
-    try:
-        shutil.copytree(ROOT / "studies", work / "studies", ignore=shutil.ignore_patterns("tables"))
+    with bench_record.scratch_studies("seed001-loss-") as work:
         for name, states in STUDIES:
             shares, law, k = [], "", None
             for s in seeds:
@@ -75,8 +71,6 @@ def main():
                    f"{min(shares):.1f}–{max(shares):.1f} %"]
             rows.append(row)
             print(" | ".join(row), flush=True)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
     header = ["study", "contact law", "seed 001 states", f"out of contact, study seeds {', '.join(map(str, seeds))}",
               "range"]
     if a.record:
