@@ -72,6 +72,11 @@ void describe(Table& t) {
       t.scalars.emplace_back("answer_tolerance", b->answer_tolerance);
       t.scalars.emplace_back("load_step", b->load_step);
     }
+    if (!b->check_position.empty()) {  // contact BF-9's checks
+      t.columns.push_back({"check_position", &b->check_position, {size(b->check_position)}});
+      t.columns.push_back({"check_residual", &b->check_residual, {size(b->check_residual)}});
+      t.scalars.emplace_back("k0_error", b->k0_error);
+    }
   } else if (auto* e = dynamic_cast<EquivalentRoughnessTable*>(t.data.get())) {
     const py::ssize_t strips = static_cast<py::ssize_t>(e->strips), n = size(e->position);
     if (strips * n != size(e->height) || strips * n != size(e->stiffness))

@@ -1,10 +1,7 @@
 #include "kernels/contact/blocked_force.hpp"
 
-#include "kernels/contact/chunk_loop.hpp"
 #include "kernels/contact/hertz.hpp"
-#include "kernels/contact/path_window.hpp"
-
-#include <omp.h>
+#include "kernels/contact/path_runner.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,160 +17,11 @@ namespace rollspec::contact {
 
 namespace {
 
+using detail::accumulate;
+using detail::PathFields;
+using detail::PathRunner;
+
 [[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("blocked_force: " + what); }
-
-// Converged fields of one path (window arrays) and their rates dp/dd, for the next load-search path.
-struct PathFields {
-  double approach = 0.0;
-  std::vector<std::vector<double>> pressure, rate;
-};
-
-// Validated path set-up (PathWindow: window placement, BF-5, BF-6) and one path at a given approach.
-class PathRunner {
- public:
-  PathRunner(ContactSolver& solver, const Grid& strip, const std::vector<double>& heights, double radius,
-             BallShape shape, const std::vector<double>& positions, const BlockedForceOptions& path_options)
-      : solver_(solver),
-        window_(checked_window(solver), strip, heights, radius, shape, positions, path_options.centre_y,
-                "blocked_force"),
-        positions_(positions),
-        popt_(path_options) {}
-
-  double max_approach(std::size_t* position) const { return window_.max_approach(position); }
-  // ε (README Eq. 9) of each solve of the last path run.
-  const std::vector<double>& solve_error() const { return solve_error_; }
-  [[noreturn]] void reject(std::size_t k, double d, const char* prefix = "") const { window_.reject(k, d, prefix); }
-
-  // One path at approach d (BF-2). `previous` (optional): the fields of an earlier path, used as
-  // starts for its positions (BF-6'); `store` (optional) receives the first
-  // `store_count` fields of this path and their frozen-set rates dp/dd.
-  BlockedForcePath run(double d, const SolverOptions& opt, const PathFields* previous, PathFields* store,
-                       std::size_t store_count) {
-    const std::size_t n = solver_.grid().size();
-    const std::size_t count = positions_.size();
-    BlockedForcePath out;
-    out.approach = d;
-    out.paths = 1;
-    out.position = positions_;
-    out.force.resize(count);
-    out.stiffness.assign(count, std::numeric_limits<double>::quiet_NaN());
-    out.frozen_stiffness.assign(count, std::numeric_limits<double>::quiet_NaN());
-    out.converged = true;
-    for (std::size_t k = 0; k < count; ++k)
-      if (d > window_.limit(k)) reject(k, d);
-    if (store != nullptr) {
-      store_count = std::min(store_count, count);
-      store->approach = d;
-      store->pressure.resize(store_count);
-      store->rate.resize(store_count);
-    }
-    // Fixed chunks of positions (BF-6c): each chunk starts cold (or from `previous`) and warm-starts
-    // along itself; the chunks run in parallel, one solver per thread. The cut depends on
-    // chunk_positions alone and every position's result on its chunk alone: the same bits for any
-    // thread count. The sums below run in position order after the loop.
-    std::vector<ContactResult> results(count);
-    solve_error_.assign(count, 0.0);
-    const auto run_chunk = [&](ContactSolver& s, std::size_t k0, std::size_t k1) {
-      std::vector<double> p;
-      for (std::size_t k = k0; k < k1; ++k) {
-        const std::vector<double> gap = window_.gap(k);
-        if (previous != nullptr && k < previous->pressure.size()) {
-          // BF-6': p_start = p(x_k; d_prev) + (d − d_prev) dp/dd (the solver clips to [0, H]).
-          const std::vector<double>& pk = previous->pressure[k];
-          const std::vector<double>& rk = previous->rate[k];
-          const double dd = d - previous->approach;
-          p = pk;
-          if (rk.size() == n)
-            for (std::size_t i = 0; i < n; ++i) p[i] += dd * rk[i];
-        } else if (k == k0 || popt_.warm_start == PathWarmStart::Cold) {
-          p.assign(n, 0.0);
-        } else {
-          // BF-6: the previous field shifted with the ball (or kept on the strip).
-          window_.shift_field(p,
-                              popt_.warm_start == PathWarmStart::Ball ? window_.ball_shift(k) : window_.strip_shift(k));
-        }
-        // Eq. 11a: the frozen-set CG starts from the same position's rate on the previous path.
-        const bool rate_start = previous != nullptr && k < previous->rate.size() && previous->rate[k].size() == n;
-        s.set_rate_start(rate_start ? &previous->rate[k] : nullptr);
-        results[k] = s.solve(gap, d, p, opt);
-        s.set_rate_start(nullptr);
-        if (store != nullptr && k < store_count) {
-          store->pressure[k] = p;
-          if (results[k].converged && opt.compute_stiffness)
-            store->rate[k] = s.pressure_rate();
-          else
-            store->rate[k].clear();
-        }
-      }
-      if (popt_.on_chunk) {
-#pragma omp critical(blocked_force_progress)
-        popt_.on_chunk(k1 - k0, count);
-      }
-    };
-    const std::size_t chunk = popt_.chunk_positions == 0 ? count : std::min(count, popt_.chunk_positions);
-    const std::size_t chunks = (count + chunk - 1) / chunk;
-    const int threads = chunks > 1 ? std::min<int>(omp_get_max_threads(), static_cast<int>(chunks)) : 1;
-    if (threads <= 1) {
-      for (std::size_t c = 0; c < chunks; ++c) run_chunk(solver_, c * chunk, std::min(count, (c + 1) * chunk));
-    } else {
-      // One solver per thread, made here (FFTW plans outside the parallel region; the planner is
-      // serialised anyway, kernels/spectral/fftw_handles.hpp). A solve depends on its inputs only,
-      // not on what the solver ran before. Exceptions are carried out of the region.
-      while (static_cast<int>(extra_.size()) < threads - 1)
-        extra_.push_back(std::make_unique<ContactSolver>(solver_.grid(), solver_.half_space().e_star()));
-      detail::for_each_chunk(chunks, threads, [&](std::size_t c, int t) {
-        ContactSolver& s = t == 0 ? solver_ : *extra_[static_cast<std::size_t>(t - 1)];
-        const std::size_t k0 = c * chunk;
-        run_chunk(s, k0, std::min(count, k0 + chunk));
-      });
-    }
-    double force_sum = 0.0, stiffness_sum = 0.0, frozen_sum = 0.0;
-    for (std::size_t k = 0; k < count; ++k) {
-      const ContactResult& r = results[k];
-      ++out.solves;
-      out.iterations += r.iterations;
-      out.stiffness_iterations += r.stiffness_iterations;
-      out.max_error = std::max(out.max_error, r.error);
-      solve_error_[k] = r.error;
-      out.converged = out.converged && r.converged && (!opt.compute_stiffness || r.stiffness_converged);
-      out.force[k] = r.force;
-      force_sum += r.force;
-      if (opt.compute_stiffness) {
-        out.stiffness[k] = r.stiffness;
-        out.frozen_stiffness[k] = r.frozen_stiffness;
-        stiffness_sum += r.stiffness;
-        frozen_sum += r.frozen_stiffness;
-      }
-    }
-    out.mean_force = force_sum / static_cast<double>(count);
-    out.k0 =
-        opt.compute_stiffness ? stiffness_sum / static_cast<double>(count) : std::numeric_limits<double>::quiet_NaN();
-    out.k0_frozen =
-        opt.compute_stiffness ? frozen_sum / static_cast<double>(count) : std::numeric_limits<double>::quiet_NaN();
-    return out;
-  }
-
- private:
-  static const Grid& checked_window(ContactSolver& solver) {
-    if (solver.half_space().boundary() != Boundary::Open)
-      throw std::invalid_argument("blocked_force: the solver must use the open boundary");
-    return solver.grid();
-  }
-
-  ContactSolver& solver_;
-  std::vector<std::unique_ptr<ContactSolver>> extra_;  // the other threads' solvers (chunks)
-  PathWindow window_;
-  std::vector<double> positions_;
-  BlockedForceOptions popt_;
-  std::vector<double> solve_error_;
-};
-
-void accumulate(BlockedForcePath& total, const BlockedForcePath& path) {
-  total.paths += path.paths;
-  total.solves += path.solves;
-  total.iterations += path.iterations;
-  total.stiffness_iterations += path.stiffness_iterations;
-}
 
 }  // namespace
 
@@ -193,7 +41,8 @@ namespace {
 // only if |F̄ − W| ≤ tolerance · W.
 BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double load, double tolerance, int max_paths,
                         bool warm, std::size_t store_count, double d_start, double step, double cold_tolerance,
-                        BlockedForcePath& total, const std::function<void(const BlockedForcePath&, double)>& on_path) {
+                        BlockedForcePath& total, const std::function<void(const BlockedForcePath&, double)>& on_path,
+                        PathFields* last_fields = nullptr) {
   // BF-5 caps the approach: the search stays at or below d_cap.
   std::size_t limiting = 0;
   const double d_cap = runner.max_approach(&limiting);
@@ -225,6 +74,7 @@ BlockedForcePath search(PathRunner& runner, const SolverOptions& opt, double loa
         std::isfinite(lo) && std::isfinite(hi) && hi - lo <= 1e-15 * std::max(std::fabs(hi), std::fabs(lo));
     if (!path.converged || on_load || paths >= max_paths || exhausted) {
       path.converged = path.converged && on_load;
+      if (last_fields != nullptr) *last_fields = std::move(previous);
       return path;
     }
     // Newton on F̄ with its exact slope K̄_f (BF-3).
@@ -279,11 +129,107 @@ struct SlopePoints {
   }
 };
 
+// The positions BF-9 may check: every `finest`-th (their loose fields are kept), checked coarse to fine
+// from every `first`-th (both powers of two times finest).
+struct CheckPlan {
+  std::size_t first = 0, finest = 0;
+  std::function<std::unique_ptr<PathRunner>(const std::vector<double>&)> runner;  // a runner on given positions
+};
+
+// BF-9: positions solved again to the full tolerance at d1 = d + δd, each started from the loose path's field
+// moved along its rate (BF-6'), every `first`-th first, then halving the stride while k0's standard error is
+// above check_k0_tolerance (BF-9a) and a finer level is kept. k0 by the control variate over the checked set J,
+//     k0 = K̄_loose(d) + mean_J [k(x_j; d1) − k_loose(x_j; d)],   s.e. = s_Δ / √M · √(1 − M/N)     (BF-9a)
+// every k scaled by k0 / K̄_loose, and the residuals r_j = F0(x_j; d1) − F0_first-order(x_j) kept: the
+// error of the tabulated F0 measured where it was checked (their mean, r̄, is the mean force's offset
+// from W at d1, i.e. an approach error r̄ / k0).                                               (BF-9b)
+double check_positions(const CheckPlan& plan, const PathFields& fields, const SolverOptions& opt, double tolerance,
+                       double step, BlockedForcePath& path, BlockedForcePath& total) {
+  const std::size_t n = path.force.size();
+  std::vector<std::size_t> index;
+  std::vector<double> tight_force, tight_k, tight_kf;
+  for (std::size_t stride = plan.first;; stride /= 2) {
+    // This level's new positions: every stride-th not checked on a coarser level.
+    std::vector<std::size_t> level;
+    for (std::size_t k = 0; k < n; k += stride)
+      if (stride == plan.first || k % (2 * stride) != 0) level.push_back(k);
+    std::vector<double> x;
+    PathFields start;
+    start.approach = fields.approach;
+    for (std::size_t k : level) {
+      x.push_back(path.position[k]);
+      start.pressure.push_back(k < fields.pressure.size() ? fields.pressure[k] : std::vector<double>{});
+      start.rate.push_back(k < fields.rate.size() ? fields.rate[k] : std::vector<double>{});
+    }
+    if (x.empty()) break;
+    const std::unique_ptr<PathRunner> runner = plan.runner(x);
+    const BlockedForcePath tight = runner->run(fields.approach + step, opt, &start, nullptr, 0);
+    accumulate(total, tight);
+    if (!tight.converged) {
+      path.converged = false;
+      return 0.0;
+    }
+    for (std::size_t j = 0; j < level.size(); ++j) {
+      index.push_back(level[j]);
+      tight_force.push_back(tight.force[j]);
+      tight_k.push_back(tight.stiffness[j]);
+      tight_kf.push_back(tight.frozen_stiffness[j]);
+    }
+    // BF-9a over every position checked so far.
+    const std::size_t m = index.size();
+    double dk_sum = 0.0;
+    for (std::size_t j = 0; j < m; ++j) dk_sum += tight_k[j] - path.stiffness[index[j]];
+    const double mean_dk = dk_sum / static_cast<double>(m);
+    double ss = 0.0;
+    for (std::size_t j = 0; j < m; ++j) ss += std::pow(tight_k[j] - path.stiffness[index[j]] - mean_dk, 2);
+    const double fpc = std::max(0.0, 1.0 - static_cast<double>(m) / static_cast<double>(n));
+    path.k0_error = m > 1 ? std::sqrt(ss / static_cast<double>(m - 1) / static_cast<double>(m) * fpc)
+                          : std::numeric_limits<double>::quiet_NaN();
+    if (!(path.k0_error > tolerance * (path.k0 + mean_dk)) || stride <= plan.finest || stride < 2) break;
+  }
+  // In position order: the residuals and the checked k's mean do not depend on the levels' order.
+  std::vector<std::size_t> order(index.size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return index[a] < index[b]; });
+  const std::size_t m = index.size();
+  double dk_sum = 0.0, dkf_sum = 0.0;
+  path.check_index.resize(m);
+  path.check_residual.resize(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t j = order[i], k = index[j];
+    path.check_index[i] = k;
+    path.check_residual[i] = tight_force[j] - path.force[k];
+    dk_sum += tight_k[j] - path.stiffness[k];
+    dkf_sum += tight_kf[j] - path.frozen_stiffness[k];
+  }
+  const double k1 = path.k0 + dk_sum / static_cast<double>(m), k1f = path.k0_frozen + dkf_sum / static_cast<double>(m);
+  // BF-9d: the checks' mean residual r̄ is the mean force's offset from W at d1; a second step
+  // δd2 = −r̄ / k0 puts the table on W, k moved along the slope the checks saw over the first step,
+  // (K̄(d1) − K̄_loose(d)) / δd, and F0 by δd2 k + r̄ (its mean W; the residuals kept about their mean).
+  double r_mean = 0.0;
+  for (double r : path.check_residual) r_mean += r / static_cast<double>(m);
+  const double step2 = -r_mean / k1;
+  const double slope = step != 0.0 ? (k1 - path.k0) / step / k1 : 0.0;
+  const double k_factor = 1.0 + step2 * slope;
+  const double scale = k1 / path.k0 * k_factor, scale_f = k1f / path.k0_frozen * k_factor;
+  for (std::size_t k = 0; k < n; ++k) {
+    path.stiffness[k] *= scale;
+    path.frozen_stiffness[k] *= scale_f;
+    path.force[k] += step2 * path.stiffness[k] / k_factor + r_mean;
+  }
+  for (double& r : path.check_residual) r -= r_mean;
+  path.k0_step = scale - 1.0;
+  path.k0 = k1 * k_factor;
+  path.k0_frozen = k1f * k_factor;
+  path.k0_error *= k_factor;
+  return step2;
+}
+
 // BF-8: one path at d (solves to the answer's tolerance, cold per chunk), moved onto the load W to
 // first order along the edge-corrected stiffness, with each F0's error bound.
 BlockedForcePath one_path(PathRunner& runner, const SolverOptions& opt, double load, double d, double step0,
                           const BlockedForceOptions& popt, std::size_t store_count, double presearch_slope,
-                          BlockedForcePath& total) {
+                          BlockedForcePath& total, const CheckPlan* check) {
   std::size_t limiting = 0;
   const double d_cap = runner.max_approach(&limiting);
   SolverOptions loose = opt;
@@ -291,9 +237,12 @@ BlockedForcePath one_path(PathRunner& runner, const SolverOptions& opt, double l
   loose.stiffness_tolerance = std::max(opt.stiffness_tolerance, popt.answer_tolerance);
   // Paths (usually one: the pre-search's root) until the mean is within answer_load_tolerance of W.
   SlopePoints points;
+  PathFields fields;
+  if (check != nullptr) runner.set_store_stride(check->finest);
   BlockedForcePath path =
       search(runner, loose, load, popt.answer_load_tolerance, popt.max_paths, popt.warm_start != PathWarmStart::Cold,
-             store_count, d, step0, 0.0, total, points.recorder(loose.tolerance, popt.on_path));
+             check != nullptr ? runner.positions() : store_count, d, step0, 0.0, total,
+             points.recorder(loose.tolerance, popt.on_path), check != nullptr ? &fields : nullptr);
   if (!path.converged || !(path.k0 > 0.0)) {
     path.converged = false;
     return path;
@@ -313,6 +262,15 @@ BlockedForcePath one_path(PathRunner& runner, const SolverOptions& opt, double l
         std::fabs(step) * std::fabs(path.stiffness[k] - path.frozen_stiffness[k]) + eps[k] * std::fabs(path.force[k]);
     path.force[k] += step * path.stiffness[k];
     force_sum += path.force[k];
+  }
+  if (check != nullptr) {
+    const double step2 = check_positions(*check, fields, opt, popt.check_k0_tolerance, step, path, total);
+    path.load_step = step + step2;
+    path.approach += step + step2;
+    double sum = 0.0;
+    for (double f : path.force) sum += f;
+    path.mean_force = sum / static_cast<double>(path.force.size());
+    return path;
   }
   // BF-8': k moves with d too (a 1e-2 load step moved k0 by 0.7 % on the seed 002 rig, the bands by
   // 0.2 dB through the contact resonance): K̄'s relative slope from this search's own paths if it
@@ -364,23 +322,48 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     for (std::size_t k = 0; k < positions.size(); k += stride) subset.push_back(positions[k]);
     // Its positions lie S steps apart, farther than a window: each starts cold anyway, so chunked
     // paths cut the subset in four chunks (BF-6c: on the threads, the same bits on any count).
+    // Its root is off the whole path's by its sampling error (~1e-2 on the seed 002 rig): the answer's
+    // path (BF-8, BF-9) stops it at 1e-3, the exhaustive search at 1e-6.
+    const double presearch_tolerance = path_options.answer_tolerance > 0.0 ? 1e-3 : 1e-6;
     BlockedForceOptions sub_options = path_options;
     if (sub_options.chunk_positions > 0) sub_options.chunk_positions = (subset.size() + 3) / 4;
     PathRunner sub_runner(solver, strip, strip_heights, radius, shape, subset, sub_options);
     const BlockedForcePath sub =
-        search(sub_runner, opt, load, std::max(1e-6, path_options.load_tolerance), path_options.max_paths, warm,
-               store_count(subset.size()), d_hertz, d_hertz, path_options.cold_tolerance, total,
-               presearch_points.recorder(opt.tolerance, path_options.on_path));
+        search(sub_runner, opt, load, std::max(presearch_tolerance, path_options.load_tolerance),
+               path_options.max_paths, warm, store_count(subset.size()), d_hertz, d_hertz, path_options.cold_tolerance,
+               total, presearch_points.recorder(opt.tolerance, path_options.on_path));
     total.presearch_paths = total.paths;
     total.paths = 0;
     if (sub.converged) d_start = sub.approach;
   }
-  BlockedForcePath path = path_options.answer_tolerance > 0.0
-                              ? one_path(runner, opt, load, d_start, d_hertz, path_options,
-                                         store_count(positions.size()), presearch_points.relative_slope(), total)
-                              : search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
-                                       store_count(positions.size()), d_start, d_hertz, path_options.cold_tolerance,
-                                       total, path_options.on_path);
+  // BF-9: the check levels, from every check_stride-th position down to every finest-th, the finest stride
+  // the smallest power-of-two fraction of check_stride whose loose fields fit in max_stored_bytes.
+  std::unique_ptr<CheckPlan> check;
+  if (path_options.answer_tolerance > 0.0 && path_options.check_stride > 0 &&
+      positions.size() >= 2 * path_options.check_stride) {
+    check = std::make_unique<CheckPlan>();
+    const std::size_t fit = std::max<std::size_t>(1, path_options.max_stored_bytes / field_bytes);
+    check->first = path_options.check_stride;
+    check->finest = path_options.check_stride;
+    while (check->finest % 2 == 0 && (positions.size() + check->finest / 2 - 1) / (check->finest / 2) <= fit)
+      check->finest /= 2;
+    if ((positions.size() + check->first - 1) / check->first > fit) check.reset();  // no level fits: BF-8 alone
+  }
+  if (check) {
+    check->runner = [&, path_options](const std::vector<double>& x) {
+      BlockedForceOptions o = path_options;
+      // Each check position starts from its own loose field: four fixed chunks (BF-6c), the same bits on any count.
+      o.chunk_positions = (x.size() + 3) / 4;
+      return std::make_unique<PathRunner>(solver, strip, strip_heights, radius, shape, x, o);
+    };
+  }
+  BlockedForcePath path =
+      path_options.answer_tolerance > 0.0
+          ? one_path(runner, opt, load, d_start, d_hertz, path_options, store_count(positions.size()),
+                     presearch_points.relative_slope(), total, check.get())
+          : search(runner, opt, load, path_options.load_tolerance, path_options.max_paths, warm,
+                   store_count(positions.size()), d_start, d_hertz, path_options.cold_tolerance, total,
+                   path_options.on_path);
   path.paths = total.paths;
   path.presearch_paths = total.presearch_paths;
   path.solves = total.solves;

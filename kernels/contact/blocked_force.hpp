@@ -2,7 +2,7 @@
 // Blocked force F0 and stiffness k0 of the linearised contact model (seed 002 §4.2, kernels/README.md D-11,
 // issue 4 item 6): a smooth ball slid along a rough strip at a fixed rigid approach d0.
 //
-// Theory (equations BF-1 … BF-7; README Eq. n are the contact kernel's README equations).
+// Theory (equations BF-1 … BF-9; README Eq. n are the contact kernel's README equations).
 //
 // Strip and path. The strip is a height field h on the strip grid (x-fastest, centred on the
 // origin as in Grid, longer in x than in y). The ball centre moves along y = y_c through the
@@ -110,10 +110,26 @@
 // and the bands 0.12 dB, through the contact resonance). Every m-th position instead aliases F0 (m = 2:
 // 0.11 dB, bench/contact/measurement_log.md).
 //
+// One loose path, checked (check_stride > 0 with answer_tolerance > 0; issue 51). BF-8's path, its search
+// stopped within answer_load_tolerance (5e-2 in the engine: one path after the pre-search), put on the load
+// by BF-8's first-order step, and then every check_stride-th position solved again to the full tolerance at
+// d1 = d + δd, each from its own loose field moved along its rate (BF-6'). The checks are a systematic
+// sample of the path: k0 comes from them by a control variate on the loose path's k, with its standard
+// error (BF-9a); the residuals r_j of the tabulated F0 there measure its error (BF-9b); their mean puts
+// the table on the load by a second step (BF-9d). While k0's standard error is above check_k0_tolerance
+// (1e-3 in the engine) the stride halves, down to the finest whose loose fields fit in max_stored_bytes:
+// the refinement goes where the estimate says the answer needs it. kernels/contact/answer_error.hpp
+// carries the residuals to the band levels (BF-9c). Measured on the seed 002 rig and two other textures
+// (bench/contact/bench_answer_tables.py, record answer-tables.json on the benchmarks page, 2026-11-30):
+// the table 1.9-2.0 times faster than the exhaustive search (1.4 where the checks refine), F0's band
+// levels within 0.011 dB of it, k0 within 3e-4.                                        (BF-9a, b, d)
+//
 // Use in the dynamics (D-11): F_c = F0(t) + k0 (w1(ξ) − w2 + d0) + c0 (ẇ1 − ẇ2) with
 // F0(t) = F0(x = v t); the PSD of F0 along the path in cycles/m (sample rate 1/Δx) is mapped to
 // time by D-2.                                                                              (BF-7)
+#include <cstddef>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "kernels/contact/contact_solver.hpp"
@@ -148,6 +164,14 @@ struct BlockedForceOptions {
   // BF-8: its paths (solved to answer_tolerance) stop when |F̄ − W| ≤ this · W; the first-order step
   // then puts the mean on W.
   double answer_load_tolerance = 1e-2;
+  // BF-9 (with answer_tolerance > 0): every check_stride-th position (a power of two) solved again to the
+  // full tolerance after the first-order step, finer levels while k0's error is above check_k0_tolerance;
+  // k0 by the control variate BF-9a with its standard error, F0's residuals there kept (BF-9b). 0: BF-8
+  // alone (k moved by the secant BF-8'); also when the path has fewer than 2 check_stride positions.
+  std::size_t check_stride = 0;
+  // BF-9: the check levels halve the stride (down to the finest whose loose fields fit in max_stored_bytes)
+  // while k0's standard error is above this times k0.
+  double check_k0_tolerance = 1e-3;
   // blocked_force_at_load keeps each position's field and rate dp/dd (16 bytes per window cell and
   // position) to start the next path from (BF-6') while they fit in this many bytes;
   // beyond it only the first position's.
@@ -171,6 +195,11 @@ struct BlockedForcePath {
   std::vector<double> frozen_stiffness;  // k_frozen(x_k; d0) (N/m), README Eq. 11; NaN if not computed
   // BF-8 only (empty otherwise): the bound |δd| |k − k_frozen| + ε |F0| on each F0 (N).
   std::vector<double> force_error;
+  // BF-9 only (empty / NaN otherwise): the checked positions' indices, F0(x_j; d0) of the full-tolerance
+  // solve minus the tabulated F0 there (N), and k0's standard error (N/m, BF-9a).
+  std::vector<std::size_t> check_index;
+  std::vector<double> check_residual;
+  double k0_error = std::numeric_limits<double>::quiet_NaN();
   double k0_step = 0.0;          // BF-8': the relative change of k0 (and of every k) moved with the step
   double load_step = 0.0;        // BF-8: δd (m), the first-order step onto the load (0 for the exhaustive search)
   double approach = 0.0;         // d0 (m), from the plane h = 0 (BF-2)

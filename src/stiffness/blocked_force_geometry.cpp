@@ -112,8 +112,12 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
   // 0.5 s on a 128-cell window (the Ra 0.3 um finish's derived strip: the pre-search's first path of 34
   // positions 0.67 s, its second 0.14 s), which short strips otherwise miss (bench_plan_estimates.py).
   constexpr double kSetupSeconds = 0.5;
+  // contact BF-9 (answer_tolerance > 0): one loose path and its checks, 0.45 of the search's CPU (measured on
+  // the seed 002 rig and two other textures, bench_answer_tables.py: 0.36-0.67, the high end where the
+  // checks refine).
+  const double method = bf.answer_tolerance > 0.0 ? 0.45 : 1.0;
   g.estimated_seconds =
-      kSetupSeconds + 2.9e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
+      kSetupSeconds + method * 2.9e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
 }

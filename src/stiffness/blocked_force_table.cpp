@@ -10,6 +10,7 @@
 #include <memory>
 #include <sstream>
 
+#include "kernels/contact/answer_error.hpp"
 #include "kernels/contact/blocked_force.hpp"
 #include "kernels/contact/version.hpp"
 #include "kernels/spectral/welch.hpp"
@@ -35,6 +36,12 @@ namespace {
 // Positions per chunk of a path (contact BF-6c): fixed, so the table has the same bits for any
 // thread count; 1024 positions make 16 chunks, each starting cold.
 constexpr std::size_t kChunkPositions = 64;
+// BF-9 (answer_tolerance > 0): one loose path within 5e-2 of the load, moved onto it to first order, and every
+// 16th position solved again to the full tolerance, finer while k0's estimated error is above 1e-3 (k0 by
+// control variate, F0's error measured there).
+constexpr double kAnswerLoadTolerance = 5e-2;
+constexpr std::size_t kCheckStride = 16;
+constexpr double kCheckK0Tolerance = 1e-3;  // finer checks while k0's estimated error is above it (BF-9a)
 
 const char* kColumns[] = {"position", "force", "stiffness", "psd_wavenumber", "psd"};
 
@@ -57,10 +64,34 @@ std::string BlockedForceTable::checksum() const {
     h = column_hash({&force_error}, h);
     for (double v : {answer_tolerance, load_step}) h = io::fnv1a64(&v, sizeof v, h);
   }
+  if (!check_position.empty()) {
+    h = column_hash({&check_position, &check_residual}, h);
+    h = io::fnv1a64(&k0_error, sizeof k0_error, h);
+  }
   return io::hex16(h);
 }
 
 double BlockedForceTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }
+
+double BlockedForceTable::band_error_db(double lower, double upper, std::size_t first_bin) const {
+  const std::size_t m = check_residual.size(), n = force.size();
+  if (m < 2 || n < 2 || psd_wavenumber.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  double mean = 0.0, ss = 0.0;
+  for (double r : check_residual) mean += r / static_cast<double>(m);
+  for (double r : check_residual) ss += (r - mean) * (r - mean);
+  // The residuals' spread about their mean: a constant offset (the approach's error) leaves the
+  // fluctuation's PSD alone.
+  const double variance = ss / static_cast<double>(m - 1), step = position[1] - position[0];
+  // S_e per rad/m of a white error (BF-9c), on the table's own Welch plan (half-overlapping Hann), whose
+  // frequency unit is cycles/m.
+  const double error_psd = 2.0 * variance * step / (2.0 * M_PI);
+  spectral::WelchConfig wc;
+  wc.sample_rate = 1.0 / step;
+  wc.segment = static_cast<std::size_t>(std::lround(2.0 * M_PI / ((psd_wavenumber[1] - psd_wavenumber[0]) * step)));
+  wc.overlap = wc.segment / 2;
+  return contact::white_error_band_db(wc, n, psd, std::min(first_bin, psd.size() - 1), error_psd, lower / (2.0 * M_PI),
+                                      upper / (2.0 * M_PI));
+}
 
 namespace {
 
@@ -74,7 +105,8 @@ std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, dou
   // BF-8 only when chosen: the exhaustive table keeps its inputs (and cache file) of before.
   if (ts.blocked_force.answer_tolerance > 0.0)
     in << "\nanswer_tolerance = " << io::exact_text(ts.blocked_force.answer_tolerance)
-       << "\nanswer_load_tolerance = " << io::exact_text(contact::BlockedForceOptions{}.answer_load_tolerance);
+       << "\nanswer_load_tolerance = " << io::exact_text(kAnswerLoadTolerance) << "\ncheck_stride = " << kCheckStride
+       << "\ncheck_k0_tolerance = " << io::exact_text(kCheckK0Tolerance);
   in << "\nload_tolerance = " << io::exact_text(strip_load_tolerance(ts.stiffness.solver)) << "\nstiffness_tolerance = "
      << io::exact_text(std::max(contact::SolverOptions{}.stiffness_tolerance, ts.stiffness.solver.tolerance)) << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
@@ -94,6 +126,11 @@ void BlockedForceTable::load_from(const io::Hdf5Reader& r) {
     force_error = r.read("/blocked_force/force_error");
     answer_tolerance = r.double_attribute("/blocked_force", "answer_tolerance");
     load_step = r.double_attribute("/blocked_force", "load_step");
+  }
+  if (r.exists("/blocked_force/check_position")) {
+    check_position = r.read("/blocked_force/check_position");
+    check_residual = r.read("/blocked_force/check_residual");
+    k0_error = r.double_attribute("/blocked_force", "k0_error");
   }
 }
 
@@ -133,6 +170,9 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
     // solver tolerance cannot be placed on the load more closely; a tighter stop costs a whole path.
     path_opts.load_tolerance = strip_load_tolerance(opts);
     path_opts.answer_tolerance = ts.blocked_force.answer_tolerance;
+    path_opts.answer_load_tolerance = kAnswerLoadTolerance;
+    path_opts.check_stride = kCheckStride;
+    path_opts.check_k0_tolerance = kCheckK0Tolerance;
     int evaluated = 0;
     auto last = std::chrono::steady_clock::now();
     const auto start = last;
@@ -175,6 +215,16 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
                    static_cast<double>(path.stiffness_iterations) / std::max(1, path.solves),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    static_cast<double>(std::clock() - start_cpu) / CLOCKS_PER_SEC);
+    if (!quiet && !path.check_index.empty()) {
+      double ss = 0.0;
+      for (double r : path.check_residual) ss += r * r;
+      std::fprintf(stderr,
+                   "%sblocked force: %zu of %zu positions checked at the full tolerance (contact BF-9): k0's estimated "
+                   "error %.2g %%, F0's residuals %.3g N rms (F0's mean %.3g N)\n",
+                   ensemble::rank_prefix().c_str(), path.check_index.size(), path.position.size(),
+                   100.0 * path.k0_error / path.k0, std::sqrt(ss / static_cast<double>(path.check_residual.size())),
+                   path.mean_force);
+    }
   } catch (const std::invalid_argument& e) {
     ts.blocked_force.origin(ts.blocked_force.window)
         .refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
@@ -193,6 +243,11 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
   t.force_error = path.force_error;
   t.answer_tolerance = ts.blocked_force.answer_tolerance;
   t.load_step = path.load_step;
+  for (std::size_t j = 0; j < path.check_index.size(); ++j) {
+    t.check_position.push_back(path.position[path.check_index[j]]);
+    t.check_residual.push_back(path.check_residual[j]);
+  }
+  if (!t.check_position.empty()) t.k0_error = path.k0_error;
   f0_psd(t, geo, -1);
   return t;
 }
@@ -270,6 +325,13 @@ void BlockedForceTable::save_to(io::Hdf5Writer& w) const {
             "estimated error of each F0 (contact BF-8: |step| |k - k_frozen| + solve tolerance |F0|)");
     w.attribute("/blocked_force", "answer_tolerance", answer_tolerance);
     w.attribute("/blocked_force", "load_step", load_step);
+  }
+  if (!check_position.empty()) {
+    w.write("/blocked_force/check_position", {check_position.size()}, check_position.data(), "m",
+            "positions solved again to the full tolerance at d0 (contact BF-9)");
+    w.write("/blocked_force/check_residual", {check_residual.size()}, check_residual.data(), "N",
+            "F0 of the full-tolerance solve there minus the tabulated F0 (contact BF-9b)");
+    w.attribute("/blocked_force", "k0_error", k0_error);
   }
 }
 

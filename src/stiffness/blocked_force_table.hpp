@@ -27,9 +27,17 @@ struct BlockedForceTable : TableData {
   // error (N), the solves' tolerance and the first-order step onto the load (m).
   std::vector<double> force_error;
   double answer_tolerance = 0.0, load_step = 0.0;
+  // contact BF-9 (answer_tolerance > 0): the positions solved again to the full tolerance (m), F0 there
+  // minus the tabulated F0 (N), and k0's standard error (N/m, BF-9a): the table's error measured as it ran.
+  std::vector<double> check_position, check_residual;
+  double k0_error = 0.0;
   // G of F0 at wavenumber k: log-log between the PSD bins, the first bin's level below them, zero
   // above the path's Nyquist wavenumber.
   double psd_at(double k) const;
+  // contact BF-9c: the estimated rms error (dB) of F0's PSD averaged over the wavenumbers [lower, upper]
+  // (rad/m), the check residuals taken as a white error; a band below bin `first_bin` takes that bin's.
+  // NaN without checks (the exhaustive table) or beyond the PSD's bins.
+  double band_error_db(double lower, double upper, std::size_t first_bin) const;
 
   void load_from(const io::Hdf5Reader& r) override;
   void save_to(io::Hdf5Writer& w) const override;

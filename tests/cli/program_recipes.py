@@ -35,6 +35,8 @@ RECIPES = {
                                  "tree": ["bench", "src", "kernels", "python-post/rollspec_post"]},
     "bench/record_csv.py": {"argv": ["PY", "S", "--record", "OUT", "--title", "t", "--describe", "d", "--", "true"],
                             "out": "file", "help": ["--help"]},
+    "bench/contact/bench_answer_tables.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
+                                            "help": ["--help"], "binary": 3},
     "bench/contact/bench_contact_goals.py": {"argv": ["PY", "S", "--base", "BINDIR", "--new", "BINDIR"],
                                              "help": ["--help"], "binary": 3},
     "bench/contact/bench_plan_estimates.py": {"argv": ["PY", "S", "--binary", "BIN", "--json", "OUT"], "out": "file",

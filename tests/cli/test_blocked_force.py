@@ -119,21 +119,43 @@ def test_table_has_the_same_bits_on_one_and_two_threads(tmp_path):
 
 
 def test_answer_tolerance_table_matches_the_exhaustive_one_within_its_estimate(tmp_path):
-    # [blocked_force] answer_tolerance (contact BF-8) against the default exhaustive search on the same strip:
-    # the mean force on the load, each F0 within 3x its recorded estimate, k0 and the F0 PSD close.
+    # [blocked_force] answer_tolerance (contact BF-8, BF-9) against the default exhaustive search on the same strip:
+    # the mean force on the load, each F0 within 3x its recorded estimate, k0 and the F0 PSD close, and the
+    # result's own estimates (BF-9c, BF-9a) within a factor 3 of the measured errors.
     common = ["surface.spacing=8e-6", "texture.short_wavelength=16e-6", "surface.ny=96", "blocked_force.window=96",
               "blocked_force.strip_length=3e-3", "stiffness.hardness=6e9", "blocked_force.segment=64"]
-    tables = {}
-    for name, extra in (("exhaustive", []), ("answer", ["blocked_force.answer_tolerance=1e-3"])):
+    tables, results = {}, {}
+    for name, extra in (("exhaustive", []), ("answer", ["blocked_force.answer_tolerance=1e-3"]),
+                        ("loose", ["blocked_force.answer_tolerance=3e-2"])):
         (tmp_path / name).mkdir()
-        r, _ = rig(tmp_path / name, *common, *extra, realisations=1)
+        r, out = rig(tmp_path / name, *common, *extra, realisations=1)
         assert r.returncode == 0, r.stderr
+        # Within its targets no warning; solved to 3e-2, F0's high bands are estimated above 0.1 dB: a warning
+        # naming the band, the size and the key.
+        if name == "loose":
+            assert re.search(r"WARNING: blocked-force table: F0's level at \d+ Hz has an estimated error of [\d.]+ dB, "
+                             r"above the 0.1 dB target .*answer_tolerance", r.stderr), r.stderr
+        else:
+            assert "blocked-force table:" not in r.stderr, r.stderr
         (path,) = glob.glob(str(tmp_path / name / "tables" / "blocked-force-*.h5"))
         with h5py.File(path) as t:
             g = t["/blocked_force"]
             tables[name] = {k: g[k][:] for k in g} | {k: g.attrs[k] for k in ("k0", "mean_force", "load")}
-            if name == "answer":
-                assert g.attrs["answer_tolerance"][0] == 1e-3
+            if name != "exhaustive":
+                tables[name]["k0_error"] = g.attrs["k0_error"][0]
+                tables[name]["answer_tolerance"] = g.attrs["answer_tolerance"]
+        with h5py.File(out) as f:
+            c = f["/contact"]
+            results[name] = {k: c[k][:] for k in ("blocked_force_wavenumber", "blocked_force_psd")}
+            results[name]["speed"] = f["/ball"].attrs["speed"][0]
+            results[name]["bands"] = (f["/bands/lower_frequency"][:], f["/bands/upper_frequency"][:])
+            if name != "exhaustive":
+                results[name]["band_error"] = c["blocked_force_band_error_db"][:]
+                assert ("blocked_force_error_warning" in c.attrs) == (name == "loose")
+                assert c.attrs["blocked_force_k0_error"][0] == tables[name]["k0_error"] / tables[name]["k0"][0]
+            else:
+                assert "blocked_force_band_error_db" not in c
+    assert tables["answer"]["answer_tolerance"][0] == 1e-3
     ref, ans = tables["exhaustive"], tables["answer"]
     assert "force_error" not in ref
     assert abs(ans["mean_force"][0] / ans["load"][0] - 1) < 1e-12
@@ -145,3 +167,25 @@ def test_answer_tolerance_table_matches_the_exhaustive_one_within_its_estimate(t
     band = (ref["psd_wavenumber"] > 0) & (ref["psd_wavenumber"] <= 2 * np.pi * 6000)
     assert band.sum() >= 6
     assert np.max(np.abs(10 * np.log10(ans["psd"][band] / ref["psd"][band]))) < 0.1
+    # BF-9: the checks (every 16th position) and their residuals' spread against the error over every position.
+    assert len(ans["check_position"]) >= len(ans["position"]) // 16
+    spread, error = np.std(ans["check_residual"], ddof=1), np.std(ans["force"] - ref["force"])
+    assert error / 3 < spread < 3 * error, (spread, error)
+    # The result's band errors (BF-9c) against F0's band levels measured between the two tables as the run draws
+    # them, rms over the bands (below the PSD's third bin both take that bin's level times the texture's shape);
+    # the loose table's warning is not a false alarm: its measured error passes the target in some band too.
+    for name in ("answer", "loose"):
+        res, v = results[name], results[name]["speed"]
+        k3 = res["blocked_force_wavenumber"][3]
+        measured = []
+        for a, b in zip(*res["bands"]):
+            kk = np.maximum(np.geomspace(2 * np.pi * a / v, 2 * np.pi * b / v, 64), k3)
+            levels = [np.mean(np.exp(np.interp(np.log(kk), np.log(x["blocked_force_wavenumber"][1:]),
+                                               np.log(x["blocked_force_psd"][1:])))) for x in (res, results["exhaustive"])]
+            measured.append(10 * np.log10(levels[0] / levels[1]))
+        est, meas = np.sqrt(np.mean(res["band_error"] ** 2)), np.sqrt(np.mean(np.square(measured)))
+        if name == "answer":
+            assert meas / 3 < est < 3 * meas, (name, est, meas)
+        else:  # solved to 3e-2 the errors are far from white: the estimate stays on the safe side (4.5x here)
+            assert est > meas / 3, (name, est, meas)
+            assert np.max(np.abs(measured)) > 0.1, measured

@@ -170,6 +170,15 @@ double blocked_force_time_psd(const BallOnBeamSettings& b, const stiffness::Bloc
   return 2.0 * M_PI * blocked_force_psd(b, t, 2.0 * M_PI * f / v) / v;
 }
 
+std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t,
+                                                const std::vector<spectral::Band>& bands) {
+  const double to_k = 2.0 * M_PI / b.model.traverse.speed;  // D-2: k = 2 pi f / v
+  std::vector<double> out;
+  for (const spectral::Band& band : bands)
+    out.push_back(t.band_error_db(band.lower * to_k, band.upper * to_k, kAnchorBin));
+  return out;
+}
+
 std::string blocked_force_resolution_warning(const BallOnBeamSettings& b, const stiffness::BlockedForceGeometry& g) {
   const double segment = static_cast<double>(std::min(g.segment, g.positions)) * static_cast<double>(g.step) * g.cell;
   const double wavelength = segment / static_cast<double>(kAnchorBin), v = b.model.traverse.speed;

@@ -5,10 +5,12 @@
 // the writer read it. The functions only compute: the scene prints the stages' status lines.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "kernels/beam/ball_on_beam.hpp"
 #include "kernels/beam/contact_law.hpp"
 #include "kernels/texture/psd.hpp"
+#include "kernels/spectral/third_octave_bands.hpp"
 #include "src/scenes/ball_on_beam/ball_on_beam_settings.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
@@ -63,5 +65,12 @@ void take_blocked_force(const BallOnBeamSettings& b, const stiffness::BlockedFor
 // The F0 PSD along the path (rad/m) and in time (Hz) from the blocked-force table t.
 double blocked_force_psd(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t, double k);
 double blocked_force_time_psd(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t, double f);
+
+// The table's own estimated error (contact BF-9) at the answer: F0's band-level error in each band
+// (dB, the band's Hz at the ball's speed; NaN for the exhaustive table), against kBlockedForceBandTarget.
+constexpr double kBlockedForceBandTarget = 0.1;  // dB, F0 in every band (issue 51's answer tolerance)
+constexpr double kBlockedForceK0Target = 1e-2;   // relative, k0 (moves the bands by ~0.1 dB on the seed 002 rig)
+std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t,
+                                                const std::vector<spectral::Band>& bands);
 
 }  // namespace rollspec::scenes

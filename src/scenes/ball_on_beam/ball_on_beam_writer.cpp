@@ -14,6 +14,7 @@
 #include "kernels/texture/time_signal.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/io/hdf5_file.hpp"
+#include "src/io/number_text.hpp"
 #include "src/io/psd_result.hpp"
 #include "src/scenes/ball_on_beam/ball_on_beam_plausibility.hpp"
 #include "src/io/run_warning.hpp"
@@ -54,6 +55,38 @@ void BallOnBeamWriter::write_loss_of_contact(io::Hdf5Writer& w, double share, co
     if (!quiet_) std::fprintf(stderr, "rollspec: note: %s\n", text.c_str());
     w.attribute("/contact", "loss_of_contact_note", text);
   }
+}
+
+// The blocked-force table's own estimated error at the answer (contact BF-9): each band's F0 level and
+// k0, against their targets; a warning where a band or k0 exceeds it. The exhaustive table has none.
+void BallOnBeamWriter::write_blocked_force_error(io::Hdf5Writer& w, const std::vector<spectral::Band>& bands) const {
+  const stiffness::BlockedForceTable& t = c_.blocked;
+  if (t.check_position.empty()) return;
+  const std::vector<double> err = blocked_force_band_error_db(b_, t, bands);
+  w.write("/contact/blocked_force_band_error_db", {err.size()}, err.data(), "dB",
+          "estimated rms error of F0's band level from the table's own checks (contact BF-9c), per result band");
+  w.attach_scale("/contact/blocked_force_band_error_db", "/bands/centre_frequency", 0);
+  const double k0_rel = t.k0_error / t.k0;
+  w.attribute("/contact", "blocked_force_k0_error", k0_rel);
+  w.attribute("/contact", "blocked_force_band_target_db", kBlockedForceBandTarget);
+  w.attribute("/contact", "blocked_force_k0_target", kBlockedForceK0Target);
+  double worst = 0.0;
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < err.size(); ++i)
+    if (err[i] > worst) worst = err[i], at = i;
+  std::string text;
+  if (worst > kBlockedForceBandTarget)
+    text = io::formatted("F0's level at %g Hz has an estimated error of %.3g dB, above the %g dB target",
+                         bands[at].nominal, worst, kBlockedForceBandTarget);
+  if (k0_rel > kBlockedForceK0Target)
+    text += (text.empty() ? "" : "; ") + io::formatted("k0's estimated error is %.3g %%, above the %g %% target",
+                                                       100.0 * k0_rel, 100.0 * kBlockedForceK0Target);
+  if (text.empty()) return;
+  text = "blocked-force table: " + text +
+         " (its checks at the full tolerance, contact BF-9); a smaller [blocked_force] answer_tolerance, or 0 for the "
+         "exhaustive search, lowers it";
+  io::warn(text, true);
+  w.attribute("/contact", "blocked_force_error_warning", text);
 }
 
 io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) const {
@@ -118,6 +151,7 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
     w.write("/contact/blocked_force_psd", {k.size()}, c_.blocked.psd.data(), "N^2 m/rad",
             "one-sided PSD of F0 along the path (Welch over the table's strip), as the realisations used it");
     w.attach_scale("/contact/blocked_force_psd", "/contact/blocked_force_wavenumber", 0);
+    write_blocked_force_error(w, io::result_bands(e.frequency, e.band_min, e.band_max));
   }
 
   const auto& b = b_.model.beam;

@@ -23,9 +23,11 @@ SectionKeys<BlockedForceSection> BlockedForceSection::declare() {
       .real("answer_tolerance", &T::answer_tolerance, "",
             "[contact] blocked_force = solver: 0, the reference path: the exhaustive load search, every position "
             "solved to [stiffness] tolerance on every path until the mean force meets the load; > 0 (e.g. 1e-3): "
-            "the path's solves to this tolerance, stopped within 1e-2 of the load and put on it to first order "
-            "along the stiffness (kernels/contact BF-8; about half the CPU on the seed 002 rig), each F0's "
-            "estimated error kept in the table (force_error)",
+            "one path's solves to this tolerance, put on the load to first order, and every 16th position solved "
+            "again to the full tolerance (finer while k0's estimated error is above 0.1 %): k0 from those checks, "
+            "F0's error measured there (kernels/contact BF-8, BF-9; its speed and accuracy against the exhaustive "
+            "search: the benchmarks page). The result records each band's estimated F0 error and k0's "
+            "(/contact/blocked_force_band_error_db, @blocked_force_k0_error); run warns above 0.1 dB or 1 %",
             "0", within(0.0, 0.1))
       .integer("leave_out", &T::leave_out,
                "[contact] blocked_force = solver: Welch segment (0 .. segments - 1) of F0 along the path left out "

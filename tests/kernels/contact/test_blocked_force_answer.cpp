@@ -82,3 +82,80 @@ TEST_CASE("paths at the answer's tolerance (BF-8): the exhaustive F0 within a fa
   bad.answer_tolerance = -1.0;
   CHECK(thrown_message([&] { at_load(bad, 1); }).find("answer_tolerance") != std::string::npos);
 }
+
+TEST_CASE(
+    "one loose path checked at every 4th position (BF-9): k0 and F0's errors within a factor 3 of their estimates") {
+  // Four strips (waves of 0.3 .. 0.7 contact radii): BF-9's k0 and F0 against the exhaustive search's on each.
+  // k0's error is a sampling error (the checks are a subset), so its estimate is held in rms over the strips.
+  const Hertz h;
+  const StripCase c = strip_case(h, 12.0, 1.9, 100, 10);
+  const auto x = cell_positions(c.strip, -47, 2, 48);
+  SolverOptions opt;
+  opt.hardness = 0.5 * h.p0();
+  const double w = 1.3 * 3.0;
+  const auto at_load = [&](const std::vector<double>& heights, const BlockedForceOptions& o, int threads) {
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    ContactSolver solver(c.window, h.e_star);
+    BlockedForcePath r = blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, w, opt, o);
+    omp_set_num_threads(before);
+    return r;
+  };
+  BlockedForceOptions exhaustive, checked;
+  exhaustive.chunk_positions = checked.chunk_positions = 8;
+  checked.answer_tolerance = 1e-3;
+  checked.answer_load_tolerance = 5e-2;
+  checked.check_stride = 4;
+  checked.check_k0_tolerance = 1.0;  // one level: its estimate against the error
+  BlockedForceOptions refined = checked;
+  refined.check_k0_tolerance = 1e-3;  // finer levels until k0's error is estimated below 1e-3
+  double k_err2 = 0.0, k_est2 = 0.0;
+  for (double wavelength : {0.3, 0.4, 0.55, 0.7}) {
+    const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, wavelength * h.a());
+    const BlockedForcePath ref = at_load(heights, exhaustive, 2), a = at_load(heights, checked, 1),
+                           b = at_load(heights, checked, 2);
+    REQUIRE(ref.converged);
+    REQUIRE(a.converged);
+    REQUIRE(a.check_index.size() == x.size() / 4);
+    CHECK(ref.check_index.empty());
+    CHECK(std::isnan(ref.k0_error));
+    CHECK(std::fabs(a.mean_force / w - 1.0) < 1e-12);
+    const double k_err = a.k0 / ref.k0 - 1.0, k_est = a.k0_error / a.k0;
+    k_err2 += k_err * k_err;
+    k_est2 += k_est * k_est;
+    // F0: the residuals' spread at the checks against the error's over every position.
+    double e2 = 0.0, r2 = 0.0, rm = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k)
+      e2 += std::pow(a.force[k] - ref.force[k], 2) / static_cast<double>(x.size());
+    for (double r : a.check_residual) rm += r / static_cast<double>(a.check_residual.size());
+    for (double r : a.check_residual) r2 += (r - rm) * (r - rm) / static_cast<double>(a.check_residual.size() - 1);
+    CHECK(r2 > e2 / 9.0);
+    CHECK(r2 < e2 * 9.0);
+    CHECK(a.iterations + a.stiffness_iterations < ref.iterations + ref.stiffness_iterations);
+    // The same bits on 1 and 2 threads (BF-6c; the checks in four fixed chunks).
+    CHECK(std::memcmp(a.force.data(), b.force.data(), sizeof(double) * a.force.size()) == 0);
+    CHECK(std::memcmp(a.stiffness.data(), b.stiffness.data(), sizeof(double) * a.force.size()) == 0);
+    CHECK(std::memcmp(a.check_residual.data(), b.check_residual.data(), sizeof(double) * a.check_residual.size()) == 0);
+    CHECK(std::memcmp(&a.k0_error, &b.k0_error, sizeof(double)) == 0);
+    // Refined: more positions checked where the first level's estimate is above the tolerance, and k0 closer.
+    const BlockedForcePath f = at_load(heights, refined, 2);
+    REQUIRE(f.converged);
+    // On 48 positions with plastic cells k0 itself jumps by up to 3e-3 between approaches 1e-4 apart (cells
+    // reaching the hardness stop adding stiffness): no method places it closer than that here.
+    if (k_est > 1e-3) {
+      CHECK(f.check_index.size() > a.check_index.size());
+      CHECK(std::fabs(f.k0 / ref.k0 - 1.0) < 4e-3);
+    }
+    CHECK(std::fabs(f.mean_force / w - 1.0) < 1e-12);
+    CHECK(f.approach == doctest::Approx(ref.approach).epsilon(1e-4));
+    MESSAGE("waves of " << wavelength << " a: k0 error " << k_err << " (estimate " << k_est << "), F0 rms error "
+                        << std::sqrt(e2) << " N (checks' spread " << std::sqrt(r2)
+                        << " N); refined: " << f.check_index.size() << " checks, k0 error " << f.k0 / ref.k0 - 1.0
+                        << "; iterations " << a.iterations + a.stiffness_iterations << " against "
+                        << ref.iterations + ref.stiffness_iterations);
+  }
+  const double ratio = std::sqrt(k_est2 / k_err2);
+  CHECK(ratio > 1.0 / 3.0);
+  CHECK(ratio < 3.0);
+  MESSAGE("k0: rms estimate / rms error over the strips " << ratio);
+}
