@@ -7,7 +7,11 @@
 #include <string>
 #include <vector>
 
+#include <omp.h>
+
 #include "hertz_fixture.hpp"
+#include "kernels/contact/blocked_force.hpp"
+#include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/grid.hpp"
 
 namespace rollspec::contact::test {
@@ -28,6 +32,19 @@ inline std::vector<double> cell_positions(const Grid& strip, long first_cell, lo
   for (std::size_t k = 0; k < count; ++k)
     x[k] = static_cast<double>(first_cell + static_cast<long>(k) * step_cells) * strip.dx;
   return x;
+}
+
+// blocked_force_at_load of a sphere on c's strip, a fresh solver on its window, on `threads` OpenMP threads
+// (the count restored after): the same-bits tests run one search at 1 and at 2 threads.
+inline BlockedForcePath at_load_on(int threads, const StripCase& c, const Hertz& h, const std::vector<double>& heights,
+                                   const std::vector<double>& x, double load, const SolverOptions& opt,
+                                   const BlockedForceOptions& o) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  ContactSolver solver(c.window, h.e_star);
+  BlockedForcePath r = blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, load, opt, o);
+  omp_set_num_threads(before);
+  return r;
 }
 
 // What f throws as std::invalid_argument ("" when it does not throw).

@@ -376,12 +376,7 @@ TEST_CASE("chunked path (BF-6c): the same bits on 1 and 2 threads, equal to the 
   chunked.chunk_positions = 5;    // chunks 5, 5, 5, 1: one shorter than the rest
   const double load = 1.1 * 3.0;  // N, about the mean force of this path at the Hertz approach
   const auto at_load = [&](int threads, const BlockedForceOptions& o) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    ContactSolver solver(c.window, h.e_star);
-    BlockedForcePath r = blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, load, opt, o);
-    omp_set_num_threads(before);
-    return r;
+    return rollspec::contact::test::at_load_on(threads, c, h, heights, x, load, opt, o);
   };
   const BlockedForcePath one = at_load(1, chunked), two = at_load(2, chunked), ref = at_load(2, whole);
   REQUIRE(one.converged);

@@ -34,12 +34,7 @@ TEST_CASE("paths at the answer's tolerance (BF-8): the exhaustive F0 within a fa
   opt.hardness = 0.5 * h.p0();
   const double w = 1.3 * 3.0;  // N, off the Hertz start: the exhaustive search takes several paths
   const auto at_load = [&](const BlockedForceOptions& o, int threads) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    ContactSolver solver(c.window, h.e_star);
-    BlockedForcePath r = blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, w, opt, o);
-    omp_set_num_threads(before);
-    return r;
+    return rollspec::contact::test::at_load_on(threads, c, h, heights, x, w, opt, o);
   };
   BlockedForceOptions exhaustive, one;
   exhaustive.chunk_positions = one.chunk_positions = 5;
@@ -94,12 +89,7 @@ TEST_CASE(
   opt.hardness = 0.5 * h.p0();
   const double w = 1.3 * 3.0;
   const auto at_load = [&](const std::vector<double>& heights, const BlockedForceOptions& o, int threads) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    ContactSolver solver(c.window, h.e_star);
-    BlockedForcePath r = blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, w, opt, o);
-    omp_set_num_threads(before);
-    return r;
+    return rollspec::contact::test::at_load_on(threads, c, h, heights, x, w, opt, o);
   };
   BlockedForceOptions exhaustive, checked;
   exhaustive.chunk_positions = checked.chunk_positions = 8;
