@@ -42,7 +42,7 @@ TEXTURES = {  # name: (--set, fitted on it)
     "mid": (["texture.rms=0.15e-6", *HURST], False),
     "flat": (["texture.rms=0.1e-6", "texture.hurst=0.5", "texture.rolloff_wavelength=100e-6"], False),
 }
-STAGES = {"blocked_force": "blocked_force", "filter": "equivalent_roughness", "path": "path_table"}
+STAGES = {"blocked_force": "blocked_force", "blocked_force_answer": "blocked_force", "filter": "equivalent_roughness", "path": "path_table"}
 
 
 def run(binary, args, env):

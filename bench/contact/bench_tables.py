@@ -11,6 +11,7 @@ per position, and the agreement of the table values.
 Cases (studies/seed002-rig-1ms.ini, 2 realisations, tables built from scratch in a fresh directory
 every run):
   blocked_force  contact.blocked_force = solver (the load search over 1024 positions, BF-3)
+  blocked_force_answer  the same with [blocked_force] answer_tolerance = 1e-3 (BF-9: one loose path, checked)
   filter         contact.law = hertz, contact.filter = solver (2 strips of 1024 positions, ER-1)
   path           contact.law = path on a short path (ball 20 -> 20.5 mm: 37 positions x 8+ approaches)
 Wall seconds by the clock, CPU seconds from the children's rusage; ratio = reference / current
@@ -46,16 +47,19 @@ STUDY = ROOT / "studies" / "seed002-rig-1ms.ini"
 
 CASES = {
     "blocked_force": ["contact.blocked_force=solver", "study.realisations=2"],
+    # the answer's method (contact BF-9): one loose path with its checks
+    "blocked_force_answer": ["contact.blocked_force=solver", "blocked_force.answer_tolerance=1e-3",
+                             "study.realisations=2"],
     "filter": ["contact.law=hertz", "contact.filter=solver", "study.realisations=2"],
     "path": ["contact.law=path", "ball.end=0.0205", "signal.sample_rate=51200", "spectrum.segment=16",
              "spectrum.band_min=1000", "spectrum.band_max=5000", "study.realisations=1"],
 }
-GROUPS = {"blocked_force": "/blocked_force", "filter": "/equivalent_roughness", "path": "/path_table"}
+GROUPS = {"blocked_force": "/blocked_force", "blocked_force_answer": "/blocked_force", "filter": "/equivalent_roughness", "path": "/path_table"}
 
 
 def iterations_per_position(kind, stderr):
     """CG iterations per solve (blocked force: + stiffness iterations) from the progress lines."""
-    if kind == "blocked_force":
+    if kind.startswith("blocked_force"):
         m = re.search(r"(\d+) solves, ([\d.]+) \+ ([\d.]+) CG \+ stiffness iterations per solve", stderr)
         return f"{m.group(2)} + {m.group(3)}" if m else "n/a"
     if kind == "filter":

@@ -112,12 +112,12 @@ BlockedForceGeometry blocked_force_geometry(const study::BlockedForceSection& bf
   // 0.5 s on a 128-cell window (the Ra 0.3 um finish's derived strip: the pre-search's first path of 34
   // positions 0.67 s, its second 0.14 s), which short strips otherwise miss (bench_plan_estimates.py).
   constexpr double kSetupSeconds = 0.5;
-  // contact BF-9 (answer_tolerance > 0): one loose path and its checks, 0.45 of the search's CPU (measured on
-  // the seed 002 rig and two other textures, bench_answer_tables.py: 0.36-0.67, the high end where the
-  // checks refine).
-  const double method = bf.answer_tolerance > 0.0 ? 0.45 : 1.0;
-  g.estimated_seconds =
-      kSetupSeconds + method * 2.9e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
+  // contact BF-9 (answer_tolerance > 0): one loose path and its checks, 0.25 of the search's CPU beyond the
+  // set-up (fitted on the rig and smooth textures of bench_plan_estimates.py: 0.24, 0.26), up to the whole
+  // search's where the checks refine to every position (0.93 on its rough texture).
+  const double search = 2.9e-7 * contact_box_work(g, g.window, radius) * static_cast<double>(g.positions);
+  g.estimated_seconds = kSetupSeconds + (bf.answer_tolerance > 0.0 ? 0.25 : 1.0) * search;
+  g.refined_seconds = bf.answer_tolerance > 0.0 ? kSetupSeconds + search : 0.0;
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + 63) / 64)));
   return g;
 }
@@ -149,6 +149,8 @@ std::string BlockedForceGeometry::describe() const {
       um(static_cast<double>(nx) * dx).c_str(), step, um(static_cast<double>(step) * dx).c_str(), positions, segment,
       um(contact_radius).c_str(), um(rms).c_str(), estimated_seconds, estimated_seconds / threads, threads,
       threads == 1 ? "" : "s");
+  if (refined_seconds > 0.0)
+    buf += io::formatted(" (up to %.2g s CPU where its checks refine to every position)", refined_seconds);
   return buf;
 }
 

@@ -39,6 +39,7 @@ struct BlockedForceGeometry {
   bool derived_cell = false;          // [surface] spacing not set: roughness beyond the grid may be truncated
   double truncated_wavelength = 0.0;  // > 0: texture wavelengths below it are dropped (m)
   double estimated_seconds = 0.0;     // CPU seconds of the table build, this engine's solver speed (rough)
+  double refined_seconds = 0.0;       // contact BF-9: the build's CPU seconds if its checks refine to every position
   int threads = 1;                    // threads the build uses (OMP_NUM_THREADS, at most one per chunk)
 
   // "cell 4.6 um (a/15), window 128 cells (589 um), ..." for the plan and the run's log.
