@@ -134,6 +134,7 @@ struct SlopePoints {
 struct CheckPlan {
   std::size_t first = 0, finest = 0;
   std::function<std::unique_ptr<PathRunner>(const std::vector<double>&)> runner;  // a runner on given positions
+  std::function<void(const BlockedForcePath&, std::size_t, double)> on_check;     // BlockedForceOptions::on_check
 };
 
 // BF-9: positions solved again to the full tolerance at d1 = d + δd, each started from the loose path's field
@@ -185,6 +186,7 @@ double check_positions(const CheckPlan& plan, const PathFields& fields, const So
     const double fpc = std::max(0.0, 1.0 - static_cast<double>(m) / static_cast<double>(n));
     path.k0_error = m > 1 ? std::sqrt(ss / static_cast<double>(m - 1) / static_cast<double>(m) * fpc)
                           : std::numeric_limits<double>::quiet_NaN();
+    if (plan.on_check) plan.on_check(tight, stride, path.k0_error / (path.k0 + mean_dk));
     if (!(path.k0_error > tolerance * (path.k0 + mean_dk)) || stride <= plan.finest || stride < 2) break;
   }
   // In position order: the residuals and the checked k's mean do not depend on the levels' order.
@@ -350,8 +352,10 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     if ((positions.size() + check->first - 1) / check->first > fit) check.reset();  // no level fits: BF-8 alone
   }
   if (check) {
+    check->on_check = path_options.on_check;
     check->runner = [&, path_options](const std::vector<double>& x) {
       BlockedForceOptions o = path_options;
+      o.on_chunk = nullptr;  // a level of checks reports through on_check
       // Each check position starts from its own loose field: four fixed chunks (BF-6c), the same bits on any count.
       o.chunk_positions = (x.size() + 3) / 4;
       return std::make_unique<PathRunner>(solver, strip, strip_heights, radius, shape, x, o);

@@ -185,6 +185,9 @@ struct BlockedForceOptions {
   // call at a time from the thread that ran it: that chunk's positions and the path's length.
   // Progress only: no effect on the result.
   std::function<void(std::size_t positions, std::size_t path_positions)> on_chunk;
+  // BF-9: called after each level of checks, with that level's path (its positions, iterations), its
+  // stride and k0's relative standard error over every position checked so far. Progress only.
+  std::function<void(const BlockedForcePath& level, std::size_t stride, double k0_error)> on_check;
 };
 
 struct BlockedForcePath {

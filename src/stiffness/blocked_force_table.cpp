@@ -204,6 +204,21 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
         last_cpu = std::clock();
       };
     }
+    if (!quiet)
+      path_opts.on_check = [&](const contact::BlockedForcePath& level, std::size_t stride, double k0_error) {
+        const auto now = std::chrono::steady_clock::now();
+        std::fprintf(stderr,
+                     "%sblocked force: checks at every %zu%s position, %zu of them at the full tolerance (%.1f + %.1f "
+                     "CG + stiffness iterations per position, %.3g s wall): k0's estimated error %.2g %%\n",
+                     ensemble::rank_prefix().c_str(), stride,
+                     stride == 1   ? "st"
+                     : stride == 2 ? "nd"
+                                   : "th",
+                     level.position.size(), level.iterations / std::max(1.0, static_cast<double>(level.solves)),
+                     level.stiffness_iterations / std::max(1.0, static_cast<double>(level.solves)),
+                     std::chrono::duration<double>(now - last).count(), 100.0 * k0_error);
+        last = now;
+      };
     path = contact::blocked_force_at_load(solver, strip_grid, strip.heights, radius, shape, positions, load, opts,
                                           path_opts);
     if (!quiet)
