@@ -108,10 +108,7 @@ const SceneInfo& find_scene(const std::string& name) {
 std::vector<KeySpec> common_keys() {
   std::vector<std::string> names;
   for (const auto& s : scene_registry()) names.push_back(s.name);
-  std::vector<KeySpec> keys = StudySection::keys_with_scenes(names);
-  for (auto& t : EnsembleSection::keys()) keys.push_back(t);
-  for (auto& t : SpectrumSection::keys()) keys.push_back(t);
-  return keys;
+  return joined_keys({StudySection::keys_with_scenes(names), EnsembleSection::keys(), SpectrumSection::keys()});
 }
 
 std::vector<KeySpec> schema_for(const std::string& scene) {

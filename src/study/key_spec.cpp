@@ -68,6 +68,12 @@ KeySpec integer_key(std::string section, std::string key, std::string doc, std::
   return k;
 }
 
+std::vector<KeySpec> joined_keys(std::initializer_list<std::vector<KeySpec>> parts) {
+  std::vector<KeySpec> all;
+  for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
 std::string choice_doc(const std::string& lead, const std::vector<std::string>& spellings,
                        const std::vector<std::string>& docs) {
   bool any = false;

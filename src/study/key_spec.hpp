@@ -3,6 +3,7 @@
 // Validation, the resolved-study echo and `rollspec keys` all read this one table.
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ KeySpec choice_key(std::string section, std::string key, std::string doc, std::o
 KeySpec text_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value);
 KeySpec path_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value);
 KeySpec bool_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value);
+
+// The keys of several sections one after the other, in the order given (a scene's schema).
+std::vector<KeySpec> joined_keys(std::initializer_list<std::vector<KeySpec>> parts);
 
 // One allowed value of a choice key: the enum value code switches on, its spelling in a study and a
 // short doc (empty: the spelling says it). A section declares one table per choice; the key's allowed

@@ -25,37 +25,33 @@
 
 namespace rollspec::scenes {
 
-using study::BallSection;
-using study::ModalBeamSection;
-using study::SensorsSection;
-using study::TextureSection;
-
 using namespace study;
 
 std::vector<KeySpec> ball_on_beam_keys() {
   // [beam] and [ball] first, then the scene's other keys, in the order `rollspec keys` lists them.
-  std::vector<KeySpec> k = ModalBeamSection::keys();
-  for (auto& t : BallSection::keys()) k.push_back(t);
-  for (auto& t : ContactSection::keys()) k.push_back(t);
-  for (auto& t : RoughnessSection::keys()) k.push_back(t);
-  for (auto& t : SignalSection::keys()) k.push_back(t);
-  for (auto& t : SensorsSection::keys()) k.push_back(t);
-  k.push_back(SpectrumSection::skip_start_key(
-      "time at the start of each record left out of the PSDs (start-up of the random response)", "0"));
-  for (auto& t : OutputSection::keys()) k.push_back(t);
-  for (auto& t : texture_io::psd_keys()) k.push_back(t);
-  for (auto& t : texture_io::surface_keys()) {
+  std::vector<KeySpec> surface = texture_io::surface_keys();
+  for (auto& t : surface) {
     // The solver's blocked force derives its strip from the contact radius unless the study sets these.
     if (t.key == "ny") t.doc += "; blocked_force = solver: strip width, the window's by default";
     if (t.key == "spacing")
       t.doc += "; blocked_force = solver: derived from the contact radius and the texture unless set";
-    k.push_back(t);
   }
-  for (auto& t : study::StiffnessSection::keys()) k.push_back(t);
-  for (auto& t : BlockedForceSection::keys()) k.push_back(t);
-  for (auto& t : PathTableSection::keys()) k.push_back(t);
-  for (auto& t : EquivalentRoughnessSection::keys()) k.push_back(t);
-  return k;
+  return joined_keys(
+      {ModalBeamSection::keys(),
+       BallSection::keys(),
+       ContactSection::keys(),
+       RoughnessSection::keys(),
+       SignalSection::keys(),
+       SensorsSection::keys(),
+       {SpectrumSection::skip_start_key(
+           "time at the start of each record left out of the PSDs (start-up of the random response)", "0")},
+       OutputSection::keys(),
+       texture_io::psd_keys(),
+       surface,
+       StiffnessSection::keys(),
+       BlockedForceSection::keys(),
+       PathTableSection::keys(),
+       EquivalentRoughnessSection::keys()});
 }
 
 beam::ModalBeam study_modal_beam(const KeyReader& s) { return ModalBeamSection::parse(s).modal_beam(); }

@@ -11,18 +11,10 @@
 
 namespace rollspec::scenes {
 
-using study::ForceSection;
-using study::OscillatorSection;
-using study::RecordSignalSection;
-using study::SpectrumSection;
-
 using namespace study;
 
 std::vector<KeySpec> random_oscillator_keys() {
-  std::vector<KeySpec> k = OscillatorSection::keys();
-  for (auto& t : ForceSection::keys()) k.push_back(t);
-  for (auto& t : RecordSignalSection::keys()) k.push_back(t);
-  return k;
+  return joined_keys({OscillatorSection::keys(), ForceSection::keys(), RecordSignalSection::keys()});
 }
 
 RandomOscillatorSettings read_random_oscillator_settings(const KeyReader& s) {

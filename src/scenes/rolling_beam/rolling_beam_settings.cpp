@@ -11,12 +11,6 @@
 
 namespace rollspec::scenes {
 
-using study::BodySection;
-using study::GravityVectorSection;
-using study::RollingAnalysisSection;
-using study::RollingContactSection;
-using study::StraightBeamSection;
-
 using namespace study;
 using Eigen::Vector3d;
 
@@ -89,19 +83,10 @@ std::vector<int> node_list(const NodeList& list, const std::vector<int>& ids) {
 }  // namespace
 
 std::vector<KeySpec> rolling_beam_keys() {
-  std::vector<KeySpec> k = BodySection::keys();
-  for (auto& t : PuckSection::keys()) k.push_back(t);
-  for (auto& t : FlyingBeamSection::keys()) k.push_back(t);
-  for (auto& t : StraightBeamSection::keys()) k.push_back(t);
-  for (auto& t : DiscSection::keys()) k.push_back(t);
-  for (auto& t : PlaneSection::keys()) k.push_back(t);
-  for (auto& t : RollingContactSection::keys()) k.push_back(t);
-  for (auto& t : GravityVectorSection::keys()) k.push_back(t);
-  for (auto& t : SupportSection::keys()) k.push_back(t);
-  for (auto& t : ImposedSection::keys()) k.push_back(t);
-  for (auto& t : RollingAnalysisSection::keys()) k.push_back(t);
-  for (auto& t : NodeOutputSection::keys()) k.push_back(t);
-  return k;
+  return joined_keys({BodySection::keys(), PuckSection::keys(), FlyingBeamSection::keys(), StraightBeamSection::keys(),
+                      DiscSection::keys(), PlaneSection::keys(), RollingContactSection::keys(),
+                      GravityVectorSection::keys(), SupportSection::keys(), ImposedSection::keys(),
+                      RollingAnalysisSection::keys(), NodeOutputSection::keys()});
 }
 
 RollingBeamSettings read_rolling_beam_settings(const KeyReader& s) {

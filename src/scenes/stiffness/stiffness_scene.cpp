@@ -15,21 +15,11 @@
 
 namespace rollspec::scenes {
 
-using study::BallSection;
-using study::FlatSection;
-using study::StiffnessSection;
-using study::SurfaceSection;
-using study::TextureSection;
-
 using namespace study;
 
 std::vector<KeySpec> stiffness_scene_keys() {
-  std::vector<KeySpec> k = BallSection::solid_keys();
-  for (auto& t : FlatSection::keys()) k.push_back(t);
-  for (auto& t : study::StiffnessSection::keys()) k.push_back(t);
-  for (auto& t : texture_io::surface_keys()) k.push_back(t);
-  for (auto& t : texture_io::psd_keys()) k.push_back(t);
-  return k;
+  return joined_keys({BallSection::solid_keys(), FlatSection::keys(), StiffnessSection::keys(),
+                      texture_io::surface_keys(), texture_io::psd_keys()});
 }
 
 BallContact ball_contact_pair(const KeyReader& s, double other_modulus, double other_poisson) {

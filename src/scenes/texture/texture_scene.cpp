@@ -9,18 +9,11 @@
 
 namespace rollspec::scenes {
 
-using study::LinesSection;
-using study::SurfaceSection;
-using study::TextureSection;
-
 using namespace study;
 
 std::vector<KeySpec> texture_scene_keys() {
-  std::vector<KeySpec> keys = TextureSection::keys();
-  for (auto& k : LinesSection::keys()) keys.push_back(k);
-  for (auto& k : SurfaceSection::keys()) keys.push_back(k);
-  for (auto& k : SurfaceSection::count_keys()) keys.push_back(k);
-  return keys;
+  return joined_keys(
+      {TextureSection::keys(), LinesSection::keys(), SurfaceSection::keys(), SurfaceSection::count_keys()});
 }
 
 namespace {
