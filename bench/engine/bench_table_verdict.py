@@ -17,6 +17,10 @@ Figures (bands band_min..band_max of the study, every sensor row for the coverag
              measurements of every other table: the share rejected at 0.05;
   power      the same with the model's beam.loss_factor x 2 and contact.damping x 2 (the first --models tables;
              default: all).
+  own seeds  the coverage and the size again with each model at a study seed of its own (7000 + t): every model
+             above shares the shipped study seed, so where common random numbers hold across tables its
+             realisations' noise is one draw shared by all its comparisons, and those figures are conditional
+             on that draw; with a seed per model they average over the model's noise as over its table.
   split      the sensor mean's band-level variance between tables against that of model minus measurement on the
              same table (the share the table term carries).
   noise      where the model runs record the sub-table runs' own noise n (D-30c): the coverage and width ratio
@@ -250,6 +254,19 @@ def main():
         data["cases"][name] = {"rejected": rejected, "median_p": float(np.nanmedian(pv)),
                                "bands_inside": float(np.mean([x[1] for x in found])), "comparisons": len(found)}
         print(f"{name}: rejected {rejected:.3f}", file=sys.stderr)
+    own = {t: work / f"model-{t}-own-seed.h5" for t in seeds}
+    own_bands = {t: bands(run_study(a.binary, study, own[t], sets + [f"stiffness.table_seed={t}",
+                                                                      f"study.seed={7000 + t}"])) for t in seeds}
+    cov_o, width_o, n_o = coverage(own_bands, measured)
+    rows.append(["coverage, each model at a study seed of its own", f"{cov_o:.3f}", f"width ratio {width_o:.2f}", n_o])
+    found = sum((verdicts(a.binary, own[t], [tables[u] for u in seeds if u != t], a.rolls)
+                 for t in seeds[:a.models]), [])
+    pv = np.array([x[0] if x[0] is not None else np.nan for x in found], dtype=float)
+    rows.append(["correct model (size), each at a study seed of its own", f"{float(np.mean(pv < 0.05)):.3f}",
+                 f"median p {np.nanmedian(pv):.3g}", len(found)])
+    data["own_seeds"] = {"coverage": cov_o, "width_ratio": width_o, "rejected": float(np.mean(pv < 0.05)),
+                         "median_p": float(np.nanmedian(pv)), "comparisons": len(found)}
+    print(f"own seeds: coverage {cov_o:.3f}, rejected {float(np.mean(pv < 0.05)):.3f}", file=sys.stderr)
     if a.pair:
         agree, median_d, median_h, n = pair(a.binary, study, work, sets, a.pair)
         rows.append([f"two runs of K = {a.pair} on table seeds 1 and 2: bands agreeing within their intervals",
@@ -261,8 +278,9 @@ def main():
         record, title=f"The verdict against measurements from other tables: {description}",
         argv=sys.argv, builds={"current": {"description": "the build measured",
                                             "version": bench_record.build_version(a.binary)}},
-        settings=f"{a.tables} table seeds; models as shipped; measurements of {a.rolls} rolls of each other table "
-                 f"(study seed 5000 + t); compare --measured-averages {a.rolls} at level 0.05; {minutes:.0f} min"
+        settings=f"{a.tables} table seeds; models as shipped (and at study seeds 7000 + t); measurements of "
+                 f"{a.rolls} rolls of each other table (study seed 5000 + t); compare --measured-averages {a.rolls} "
+                 f"at level 0.05; {minutes:.0f} min"
                  + (f" (resumed from --work: {REUSED['runs']} runs and {REUSED['answers']} compare answers reused)"
                     if any(REUSED.values()) else ""),
         columns=["figure", "value", "detail", "count"], rows=rows, data=data)

@@ -5,7 +5,7 @@ usage: /usr/bin/python3 bench/engine/seed002_routes.py [--bin build/werror/rolls
                                                       [--record bench/records/validation/seed002-routes.json]
 
 Runs studies/seed002-rig-{1,3}ms.ini (the line roughness calibrated to give the seed's speed trend)
-and studies/seed002-rig-{1,3}ms-seed-route.ini (F0 and k0 from the contact solver on an 80 mm strip
+and studies/seed002-rig-{1,3}ms-seed-route.ini (F0 and k0 from the contact solver on a 0.35 m strip, the traverse,
 of the rig's Ra 0.3 um finish, nothing tuned) with --realisations each, in a scratch directory (the
 seed-route table is built there once and shared by both speeds), and prints, for the sensor mean's
 third-octave bands, the facts the seed states beside what each route gives. --record writes the
