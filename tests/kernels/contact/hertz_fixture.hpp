@@ -29,4 +29,16 @@ struct Hertz {
   }
 };
 
+// The smooth paraboloid of `Hertz` on its grid (h.grid's arguments), the solver and default options the
+// tests start from. Taken apart by a structured binding: auto& [h, grid, gap, solver, opt] = ball.
+struct HertzBall {
+  Hertz h;
+  Grid grid;
+  std::vector<double> gap;
+  ContactSolver solver;
+  SolverOptions opt;
+  explicit HertzBall(double cells, double span = 1.25)
+      : grid(h.grid(cells, span)), gap(ball_gap(grid, h.radius, {}, BallShape::Paraboloid)), solver(grid, h.e_star) {}
+};
+
 }  // namespace rollspec::contact::test

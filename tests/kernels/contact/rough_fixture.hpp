@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "hertz_fixture.hpp"
+#include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/geometry.hpp"
 
 namespace rollspec::contact::test {
@@ -25,5 +26,20 @@ inline std::vector<double> wavy_heights(const Grid& grid, double amplitude, doub
 inline std::vector<double> wavy_ball_gap(const Hertz& h, const Grid& grid) {
   return ball_gap(grid, h.radius, wavy_heights(grid, 0.15 * h.approach, 0.4 * h.a()));
 }
+
+// That rough ball on a grid of `cells_per_radius` cells per contact radius over `extent` contact radii, its
+// solver, and the elastic-plastic options the tests share (hardness 0.5 p0). Taken apart by a structured
+// binding: auto& [h, grid, gap, solver, opt] = ball.
+struct WavyPlasticBall {
+  Hertz h;
+  Grid grid;
+  std::vector<double> gap;
+  ContactSolver solver;
+  SolverOptions opt;
+  WavyPlasticBall(double cells_per_radius, double extent)
+      : grid(h.grid(cells_per_radius, extent)), gap(wavy_ball_gap(h, grid)), solver(grid, h.e_star) {
+    opt.hardness = 0.5 * h.p0();
+  }
+};
 
 }  // namespace rollspec::contact::test

@@ -12,6 +12,7 @@
 
 using namespace rollspec::contact;
 using rollspec::contact::test::Hertz;
+using rollspec::contact::test::WavyPlasticBall;
 
 TEST_CASE("solve_force: Hertz approach under the seed ball's weight") {
   const Hertz h;  // w0 = 0.241 µm is the Hertz approach for P = 2.58 N
@@ -31,12 +32,8 @@ TEST_CASE("solve_force: Hertz approach under the seed ball's weight") {
 }
 
 TEST_CASE("solve_force: rough elastic-plastic ball lands between the bracketing sweep steps") {
-  const Hertz h;
-  const Grid grid = h.grid(10.0, 1.6);
-  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
-  ContactSolver solver(grid, h.e_star);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  WavyPlasticBall ball(10.0, 1.6);
+  auto& [h, grid, gap, solver, opt] = ball;
   const std::vector<double> approaches{0.9 * h.approach, 1.1 * h.approach};
   const auto steps = sweep(solver, gap, approaches, opt);
   REQUIRE(all_converged(steps));

@@ -13,6 +13,7 @@
 
 using namespace rollspec::contact;
 using rollspec::contact::test::Hertz;
+using rollspec::contact::test::HertzBall;
 using rollspec::contact::test::kPi;
 
 namespace {
@@ -22,12 +23,9 @@ struct HertzErrors {
 };
 
 HertzErrors hertz_errors(double cells) {
-  const Hertz h;
-  const Grid grid = h.grid(cells);
-  const auto gap = ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
-  ContactSolver solver(grid, h.e_star);
+  HertzBall ball(cells);
+  auto& [h, grid, gap, solver, opt] = ball;
   std::vector<double> p;
-  SolverOptions opt;
   opt.tolerance = 1e-12;
   const ContactResult r = solver.solve(gap, h.approach, p, opt);
   REQUIRE(r.converged);
@@ -141,12 +139,9 @@ TEST_CASE("zero approach: no contact, zero force, converged") {
 }
 
 TEST_CASE("non-convergence is reported when the iteration limit is tiny") {
-  const Hertz h;
-  const Grid grid = h.grid(16.0);
-  const auto gap = ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
-  ContactSolver solver(grid, h.e_star);
+  HertzBall ball(16.0);
+  auto& [h, grid, gap, solver, opt] = ball;
   std::vector<double> p;
-  SolverOptions opt;
   opt.max_iterations = 2;
   const ContactResult r = solver.solve(gap, h.approach, p, opt);
   CHECK_FALSE(r.converged);
@@ -169,12 +164,9 @@ TEST_CASE("input checks") {
 }
 
 TEST_CASE("load control on the open half-space finds the Hertz approach") {
-  const Hertz h;
-  const Grid grid = h.grid(16.0);
-  const auto gap = ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
-  ContactSolver solver(grid, h.e_star);
+  HertzBall ball(16.0);
+  auto& [h, grid, gap, solver, opt] = ball;
   std::vector<double> p;
-  SolverOptions opt;
   opt.tolerance = 1e-12;
   const double mean_pressure = h.force() / (static_cast<double>(grid.size()) * grid.cell_area());
   const ContactResult r = solver.solve_load(gap, mean_pressure, p, opt);

@@ -12,14 +12,13 @@
 
 using namespace rollspec::contact;
 using rollspec::contact::test::Hertz;
+using rollspec::contact::test::HertzBall;
 using rollspec::contact::test::kPi;
+using rollspec::contact::test::WavyPlasticBall;
 
 TEST_CASE("no cell above H; plastic cells and plastic volume reported") {
-  const Hertz h;
-  const Grid grid = h.grid(16.0, 1.5);
-  const auto gap = ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
-  ContactSolver solver(grid, h.e_star);
-  SolverOptions opt;
+  HertzBall ball(16.0, 1.5);
+  auto& [h, grid, gap, solver, opt] = ball;
   opt.hardness = 0.6 * h.p0();
   opt.tolerance = 1e-11;
   std::vector<double> p;
@@ -88,12 +87,8 @@ TEST_CASE("H = 0.01 p0: force within 2 % of the bearing-area limit 2 pi R delta 
 }
 
 TEST_CASE("rough ball: cap holds, saturated cells are released when unloading") {
-  const Hertz h;
-  const Grid grid = h.grid(12.0, 1.6);
-  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
-  ContactSolver solver(grid, h.e_star);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  WavyPlasticBall ball(12.0, 1.6);
+  auto& [h, grid, gap, solver, opt] = ball;
   std::vector<double> p;
   const ContactResult high = solver.solve(gap, 1.2 * h.approach, p, opt);
   REQUIRE(high.converged);
@@ -110,12 +105,8 @@ TEST_CASE("rough ball: cap holds, saturated cells are released when unloading") 
 }
 
 TEST_CASE("warm start with every cell saturated (empty CG set) converges to the cold solution") {
-  const Hertz h;
-  const Grid grid = h.grid(8.0, 1.6);
-  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
-  ContactSolver solver(grid, h.e_star);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  WavyPlasticBall ball(8.0, 1.6);
+  auto& [h, grid, gap, solver, opt] = ball;
   std::vector<double> p_sat(grid.size(), opt.hardness), p_cold;
   const ContactResult sat = solver.solve(gap, h.approach, p_sat, opt);
   const ContactResult cold = solver.solve(gap, h.approach, p_cold, opt);

@@ -13,6 +13,8 @@
 
 using namespace rollspec::contact;
 using rollspec::contact::test::Hertz;
+using rollspec::contact::test::HertzBall;
+using rollspec::contact::test::WavyPlasticBall;
 
 namespace {
 // Largest |k_frozen / k_fd − 1| over the given approaches, step dw = rel_step · w.
@@ -37,11 +39,8 @@ double worst_fd_mismatch(ContactSolver& solver, const std::vector<double>& gap, 
 }  // namespace
 
 TEST_CASE("frozen-set stiffness agrees with central differences (Hertz)") {
-  const Hertz h;
-  const Grid grid = h.grid(16.0, 1.4);
-  const auto gap = ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
-  ContactSolver solver(grid, h.e_star);
-  SolverOptions opt;
+  HertzBall ball(16.0, 1.4);
+  auto& [h, grid, gap, solver, opt] = ball;
   opt.tolerance = 1e-12;
   const double worst = worst_fd_mismatch(solver, gap, {0.8 * h.approach, h.approach, 1.15 * h.approach}, opt, 1e-5);
   MESSAGE("Hertz: max |k_frozen / k_fd - 1| = " << worst);
@@ -49,13 +48,9 @@ TEST_CASE("frozen-set stiffness agrees with central differences (Hertz)") {
 }
 
 TEST_CASE("frozen-set stiffness agrees with central differences (rough, elastic-plastic)") {
-  const Hertz h;
-  const Grid grid = h.grid(12.0, 1.6);
-  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
-  ContactSolver solver(grid, h.e_star);
-  SolverOptions opt;
+  WavyPlasticBall ball(12.0, 1.6);
+  auto& [h, grid, gap, solver, opt] = ball;
   opt.tolerance = 1e-12;
-  opt.hardness = 0.5 * h.p0();
   std::vector<double> p;
   const ContactResult r = solver.solve(gap, h.approach, p, opt);
   REQUIRE(r.plastic_cells > 0);  // the frozen set really has saturated cells

@@ -12,14 +12,11 @@
 
 using namespace rollspec::contact;
 using rollspec::contact::test::Hertz;
+using rollspec::contact::test::WavyPlasticBall;
 
 TEST_CASE("sweep equals cold solves (rough, elastic-plastic)") {
-  const Hertz h;
-  const Grid grid = h.grid(12.0, 1.6);
-  const auto gap = rollspec::contact::test::wavy_ball_gap(h, grid);
-  ContactSolver solver(grid, h.e_star);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  WavyPlasticBall ball(12.0, 1.6);
+  auto& [h, grid, gap, solver, opt] = ball;
   std::vector<double> approaches;
   for (int j = 0; j <= 10; ++j) approaches.push_back(-0.2 * h.approach + 0.12 * h.approach * j);
   std::vector<double> last;
