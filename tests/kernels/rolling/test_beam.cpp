@@ -12,6 +12,7 @@
 #include "kernels/rolling/rotary_inertia.hpp"
 #include "kernels/rolling/rotation.hpp"
 #include "kernels/rolling/solver.hpp"
+#include "tangent_check.hpp"
 
 using namespace rollspec::rolling;
 using Eigen::Matrix3d;
@@ -61,21 +62,9 @@ TEST_CASE("beam + inertia + load + contact tangent = central differences of the 
     // a trial increment with finite rotations
     VectorXd q = VectorXd::Zero(6 * static_cast<long>(m.X.size()));
     for (long i = 6; i < q.size(); ++i) q(i) = (i % 6 < 3 ? 0.01 : 0.15) * std::sin(1.7 * double(i) + 0.3);
-    VectorXd r;
-    Eigen::MatrixXd K;
-    const double dt = 0.01, t1 = 0.06;
-    S.residual_and_tangent(q, t1, dt, r, &K);
-    Eigen::MatrixXd Kfd(K.rows(), K.cols());
-    const double h = 1e-6;
-    for (long j = 0; j < q.size(); ++j) {
-      VectorXd qp = q, qm = q, rp, rm;
-      qp(j) += h;
-      qm(j) -= h;
-      S.residual_and_tangent(qp, t1, dt, rp, nullptr);
-      S.residual_and_tangent(qm, t1, dt, rm, nullptr);
-      Kfd.col(j) = (rp - rm) / (2 * h);
-    }
-    const double err = (K - Kfd).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff();
+    const test::TangentCheck c = test::tangent_check(S, q, 0.06, 0.01, 1e-6);
+    const Eigen::MatrixXd &K = c.k, &Kfd = c.k_fd;
+    const double err = c.error;
     MESSAGE(std::string(dynamic ? "dynamic" : "quasi-static")
             << " tangent rel. error " << err << " (max |K| " << K.cwiseAbs().maxCoeff() << ")");
     CHECK(err < 1e-6);

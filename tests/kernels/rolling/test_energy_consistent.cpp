@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "kernels/rolling/solver.hpp"
+#include "tangent_check.hpp"
 
 using namespace rollspec::rolling;
 using Eigen::Matrix3d;
@@ -37,21 +38,7 @@ TEST_CASE("energy-consistent integrator: tangent = central differences of the re
     REQUIRE(S.surface_contacts()[0].active);
     VectorXd q(6);
     q << 0.003, -0.002, lift - 0.001, 0.05, -0.08, 0.11;
-    VectorXd r;
-    Eigen::MatrixXd K;
-    const double dt = 0.002, t1 = 0.008;
-    S.residual_and_tangent(q, t1, dt, r, &K);
-    Eigen::MatrixXd Kfd(6, 6);
-    const double h = 1e-7;
-    for (int j = 0; j < 6; ++j) {
-      VectorXd qp = q, qm = q, rp, rm;
-      qp(j) += h;
-      qm(j) -= h;
-      S.residual_and_tangent(qp, t1, dt, rp, nullptr);
-      S.residual_and_tangent(qm, t1, dt, rm, nullptr);
-      Kfd.col(j) = (rp - rm) / (2 * h);
-    }
-    const double err = (K - Kfd).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff();
+    const double err = test::tangent_check(S, q, 0.008, 0.002, 1e-7).error;
     std::printf("energy-consistent tangent (%s step): rel. error %.2e (rough-surface pair g_n %.2e at the start)\n",
                 lift > 0 ? "opening" : "closed", err, S.surface_contacts()[0].g_n);
     CHECK(err < 1e-6);
