@@ -10,6 +10,34 @@
 
 using namespace rollspec::spectral;
 
+namespace {
+
+// The sample covariance (divisor K - 1) of the K rows of logs about their mean lm, p x p row-major.
+std::vector<double> log_covariance(const std::vector<std::vector<double>>& logs, const std::vector<double>& lm) {
+  const std::size_t p = lm.size();
+  std::vector<double> cov(p * p);
+  for (std::size_t b = 0; b < p; ++b)
+    for (std::size_t c = 0; c < p; ++c) {
+      double s = 0.0;
+      for (const auto& l : logs) s += (l[b] - lm[b]) * (l[c] - lm[c]);
+      cov[b * p + c] = s / static_cast<double>(logs.size() - 1);
+    }
+  return cov;
+}
+
+// A measurement: the mean of M draws (x is the draws' scratch).
+template <class Draw>
+std::vector<double> mean_of_draws(Draw& draw, std::vector<double>& x, double M) {
+  std::vector<double> meas(x.size(), 0.0);
+  for (int m = 0; m < static_cast<int>(M); ++m) {
+    draw(x);
+    for (std::size_t b = 0; b < x.size(); ++b) meas[b] += x[b] / M;
+  }
+  return meas;
+}
+
+}  // namespace
+
 TEST_CASE("band test: a known diagonal case gives the F tail probability") {
   // p = 3 uncorrelated bands, K = 24 (nu = 23, F(3, 21)), M = 25; the deviation is set so that F = 2.5.
   const std::size_t p = 3;
@@ -82,17 +110,8 @@ TEST_CASE("band test: size near nominal and power on simulated lognormal bands")
     std::vector<double> lm(p, 0.0);
     for (const auto& l : logs)
       for (std::size_t b = 0; b < p; ++b) lm[b] += l[b] / static_cast<double>(K);
-    for (std::size_t b = 0; b < p; ++b)
-      for (std::size_t c = 0; c < p; ++c) {
-        double s = 0.0;
-        for (const auto& l : logs) s += (l[b] - lm[b]) * (l[c] - lm[c]);
-        cov[b * p + c] = s / static_cast<double>(K - 1);
-      }
-    std::fill(meas.begin(), meas.end(), 0.0);
-    for (int m = 0; m < static_cast<int>(M); ++m) {
-      draw(x);
-      for (std::size_t b = 0; b < p; ++b) meas[b] += x[b] / M;
-    }
+    cov = log_covariance(logs, lm);
+    meas = mean_of_draws(draw, x, M);
     for (std::size_t b = 0; b < p; ++b) y[b] = std::log(meas[b]), y_shift[b] = y[b] + std::log(2.0);
     rejected += band_test(y.data(), mean.data(), cov.data(), p, K, M).p_value < 0.05;
     rejected_shifted += band_test(y_shift.data(), mean.data(), cov.data(), p, K, M).p_value < 0.05;
@@ -131,17 +150,8 @@ TEST_CASE("band test: size near nominal with many bands, few realisations and wi
       for (std::size_t b = 0; b < p; ++b)
         mean[b] += x[b] / static_cast<double>(K), l[b] = std::log(x[b]), lm[b] += l[b] / static_cast<double>(K);
     }
-    for (std::size_t b = 0; b < p; ++b)
-      for (std::size_t c = 0; c < p; ++c) {
-        double s = 0.0;
-        for (const auto& l : logs) s += (l[b] - lm[b]) * (l[c] - lm[c]);
-        cov[b * p + c] = s / static_cast<double>(K - 1);
-      }
-    std::fill(meas.begin(), meas.end(), 0.0);
-    for (int m = 0; m < static_cast<int>(M); ++m) {
-      draw(x);
-      for (std::size_t b = 0; b < p; ++b) meas[b] += x[b] / M;
-    }
+    cov = log_covariance(logs, lm);
+    meas = mean_of_draws(draw, x, M);
     for (std::size_t b = 0; b < p; ++b) y[b] = std::log(meas[b]);
     rejected += band_test(y.data(), mean.data(), cov.data(), p, K, M).p_value < 0.05;
   }

@@ -10,6 +10,27 @@
 
 using namespace rollspec::spectral;
 
+namespace {
+
+// Rectangular windows without overlap: the averaged periodogram, whose Parseval sum is exact.
+WelchConfig periodogram_config(double sample_rate, std::size_t segment) {
+  WelchConfig cfg;
+  cfg.sample_rate = sample_rate;
+  cfg.segment = segment;
+  cfg.overlap = 0;
+  cfg.window = Window::rectangular;
+  return cfg;
+}
+
+std::vector<double> psd_of(const WelchPlan& plan, const std::vector<double>& x) {
+  WelchWorkspace ws(plan.config().segment);
+  std::vector<double> p(plan.n_freq());
+  plan.psd(x.data(), x.size(), p.data(), ws);
+  return p;
+}
+
+}  // namespace
+
 TEST_CASE("Welch PSD of white noise integrates to its variance (Parseval)") {
   // For a rectangular window without overlap, sum_k P_k df equals the mean of the segments'
   // variances exactly (discrete Parseval); with Hann it holds in expectation for white noise.
@@ -18,15 +39,9 @@ TEST_CASE("Welch PSD of white noise integrates to its variance (Parseval)") {
   const std::size_t n = 1 << 16;
   std::vector<double> x(n);
   for (auto& v : x) v = normal(gen);
-  WelchConfig cfg;
-  cfg.sample_rate = 1000.0;
-  cfg.segment = 1024;
-  cfg.overlap = 0;
-  cfg.window = Window::rectangular;
-  WelchPlan plan(cfg);
-  WelchWorkspace ws(cfg.segment);
-  std::vector<double> p(plan.n_freq());
-  plan.psd(x.data(), n, p.data(), ws);
+  WelchConfig cfg = periodogram_config(1000.0, 1024);
+  const WelchPlan plan(cfg);
+  std::vector<double> p = psd_of(plan, x);
   double integral = 0.0;
   for (double v : p) integral += v * plan.frequency_step();
   double var_segments = 0.0;
@@ -43,8 +58,8 @@ TEST_CASE("Welch PSD of white noise integrates to its variance (Parseval)") {
   // Hann, 50 % overlap: expectation matches the variance 4; 64 segments give ~2 % scatter.
   cfg.window = Window::hann;
   cfg.overlap = 512;
-  WelchPlan hann(cfg);
-  hann.psd(x.data(), n, p.data(), ws);
+  const WelchPlan hann(cfg);
+  p = psd_of(hann, x);
   integral = 0.0;
   for (double v : p) integral += v * hann.frequency_step();
   CHECK(integral == doctest::Approx(4.0).epsilon(0.03));
@@ -55,15 +70,8 @@ TEST_CASE("Welch PSD of a bin-centred sinusoid holds its power A^2/2 in one bin 
   const std::size_t n = 4096;
   std::vector<double> x(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = a * std::cos(2.0 * M_PI * f0 * static_cast<double>(i) / fs + 0.3);
-  WelchConfig cfg;
-  cfg.sample_rate = fs;
-  cfg.segment = 256;
-  cfg.overlap = 0;
-  cfg.window = Window::rectangular;
-  WelchPlan plan(cfg);
-  WelchWorkspace ws(cfg.segment);
-  std::vector<double> p(plan.n_freq());
-  plan.psd(x.data(), n, p.data(), ws);
+  const WelchPlan plan(periodogram_config(fs, 256));
+  const std::vector<double> p = psd_of(plan, x);
   const std::size_t k0 = 32;  // f0 / df
   CHECK(p[k0] * plan.frequency_step() == doctest::Approx(a * a / 2.0).epsilon(1e-12));
   double rest = 0.0;
