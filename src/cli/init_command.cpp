@@ -56,14 +56,8 @@ int init_command(const Args& args) {
   opts.add_options()("scene", po::value(&scene), "scene name")("out,o", po::value(&out),
                                                                "study file to write (default: standard output)")(
       "force", "replace an existing --out file (without it, a file that is not this very template is kept)");
-  po::positional_options_description pos;
-  pos.add("scene", 1);
   po::variables_map vm;
-  if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (scene.empty()) {
-    for (const auto& s : scenes::scene_registry()) std::cout << s.name << ": " << s.description << "\n";
-    return 0;
-  }
+  if (!parse_scene_options(args, usage, opts, scene, vm)) return 0;
   bool known = false;
   for (const auto& s : scenes::scene_registry()) known = known || s.name == scene;
   if (!known) throw usage_error("unknown scene '" + clip(scene) + "'; allowed: one of " + scene_names());

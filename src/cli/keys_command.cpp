@@ -14,14 +14,8 @@ int keys_command(const Args& args) {
   po::options_description opts("options");
   std::string scene;
   opts.add_options()("scene", po::value(&scene), "scene name");
-  po::positional_options_description pos;
-  pos.add("scene", 1);
   po::variables_map vm;
-  if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (scene.empty()) {
-    for (const auto& s : scenes::scene_registry()) std::cout << s.name << ": " << s.description << "\n";
-    return 0;
-  }
+  if (!parse_scene_options(args, usage, opts, scene, vm)) return 0;
   // A scene adds keys to common sections ([spectrum]): each section is printed once, with all of them.
   bool first = true;
   for (const auto& group : group_by_section(scenes::schema_for(scene))) {

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "src/error.hpp"
+#include "src/scenes/scene.hpp"
 
 namespace rollspec::cli {
 
@@ -20,6 +21,16 @@ bool parse_options(const std::vector<std::string>& args, const std::string& usag
     throw usage_error(std::string(e.what()) + "\n\n" + usage + "\n(see --help)");
   }
   return true;
+}
+
+bool parse_scene_options(const std::vector<std::string>& args, const std::string& usage,
+                         po::options_description& options, const std::string& scene, po::variables_map& vm) {
+  po::positional_options_description pos;
+  pos.add("scene", 1);
+  if (!parse_options(args, usage, options, pos, vm)) return false;
+  if (!scene.empty()) return true;
+  for (const auto& s : scenes::scene_registry()) std::cout << s.name << ": " << s.description << "\n";
+  return false;
 }
 
 void add_study_options(po::options_description& options, po::positional_options_description& positional,

@@ -16,6 +16,12 @@ namespace po = boost::program_options;
 bool parse_options(const std::vector<std::string>& args, const std::string& usage, po::options_description& options,
                    const po::positional_options_description& positional, po::variables_map& vm);
 
+// Parses args with the option "scene" (declared in `options`, into `scene`) as the optional positional
+// SCENE of `keys` and `init`. Returns false when the command is done: --help printed, or no SCENE given
+// and the scenes listed, one "name: description" a line.
+bool parse_scene_options(const std::vector<std::string>& args, const std::string& usage,
+                         po::options_description& options, const std::string& scene, po::variables_map& vm);
+
 // The study-file positional argument and repeatable --set overrides every study command takes.
 using run::StudyArgs;
 // required = false: the command checks for a missing study itself (run --resume reads the checkpoint's).
