@@ -10,6 +10,7 @@
 #include <omp.h>
 
 #include "hertz_fixture.hpp"
+#include "rough_fixture.hpp"
 #include "kernels/contact/blocked_force.hpp"
 #include "kernels/contact/contact_solver.hpp"
 #include "kernels/contact/grid.hpp"
@@ -46,6 +47,30 @@ inline BlockedForcePath at_load_on(int threads, const StripCase& c, const Hertz&
   omp_set_num_threads(before);
   return r;
 }
+
+// The wavy strip the blocked-force path tests share: 12 cells per contact radius, a window of 1.9 radii, the
+// strip 36 x 10 cells larger, waves of 0.15 times the Hertz approach and 0.4 times the contact radius, 16
+// positions two cells apart from cell -15, hardness 0.5 p0. Taken apart by a structured binding:
+// auto& [h, c, heights, x, opt] = strip.
+struct WavyStrip {
+  Hertz h;
+  StripCase c = strip_case(h, 12.0, 1.9, 36, 10);
+  std::vector<double> heights = wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
+  std::vector<double> x = cell_positions(c.strip, -15, 2, 16);
+  SolverOptions opt = plastic(h);
+
+  // The path at `load` (blocked_force_at_load, a sphere) on `threads` OpenMP threads.
+  BlockedForcePath at_load(int threads, double load, const BlockedForceOptions& o) const {
+    return at_load_on(threads, c, h, heights, x, load, opt, o);
+  }
+
+ private:
+  static SolverOptions plastic(const Hertz& h) {
+    SolverOptions o;
+    o.hardness = 0.5 * h.p0();
+    return o;
+  }
+};
 
 // What f throws as std::invalid_argument ("" when it does not throw).
 inline std::string thrown_message(const std::function<void()>& f) {

@@ -29,6 +29,7 @@ using rollspec::contact::test::kPi;
 using rollspec::contact::test::strip_case;
 using rollspec::contact::test::StripCase;
 using rollspec::contact::test::thrown_message;
+using rollspec::contact::test::WavyStrip;
 
 namespace {
 
@@ -366,18 +367,11 @@ TEST_CASE("confinement (BF-5) and bad input are refused with the position named"
 }
 
 TEST_CASE("chunked path (BF-6c): the same bits on 1 and 2 threads, equal to the unchunked path") {
-  const Hertz h;
-  const StripCase c = strip_case(h, 12.0, 1.9, 36, 10);
-  const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
-  const auto x = cell_positions(c.strip, -15, 2, 16);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  const WavyStrip strip;
   BlockedForceOptions whole, chunked;
   chunked.chunk_positions = 5;    // chunks 5, 5, 5, 1: one shorter than the rest
   const double load = 1.1 * 3.0;  // N, about the mean force of this path at the Hertz approach
-  const auto at_load = [&](int threads, const BlockedForceOptions& o) {
-    return rollspec::contact::test::at_load_on(threads, c, h, heights, x, load, opt, o);
-  };
+  const auto at_load = [&](int threads, const BlockedForceOptions& o) { return strip.at_load(threads, load, o); };
   const BlockedForcePath one = at_load(1, chunked), two = at_load(2, chunked), ref = at_load(2, whole);
   REQUIRE(one.converged);
   REQUIRE(two.converged);
@@ -397,17 +391,11 @@ TEST_CASE("chunked path (BF-6c): the same bits on 1 and 2 threads, equal to the 
 }
 
 TEST_CASE("loose cold path (BF-4''): the root of the exact search, never itself the result") {
-  const Hertz h;
-  const StripCase c = strip_case(h, 12.0, 1.9, 36, 10);
-  const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
-  const auto x = cell_positions(c.strip, -15, 2, 16);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  const WavyStrip strip;
   BlockedForceOptions loose, exact;
   exact.cold_tolerance = 0.0;  // every path to the solver's tolerances (the search before BF-4'')
   const auto at_load = [&](double load, const BlockedForceOptions& o) {
-    ContactSolver solver(c.window, h.e_star);
-    return blocked_force_at_load(solver, c.strip, heights, h.radius, BallShape::Sphere, x, load, opt, o);
+    return strip.at_load(omp_get_max_threads(), load, o);
   };
   const double w = 1.3 * 3.0;  // N, off the Hertz start: several paths
   const BlockedForcePath a = at_load(w, loose), b = at_load(w, exact);

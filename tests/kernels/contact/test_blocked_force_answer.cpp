@@ -24,18 +24,13 @@ using rollspec::contact::test::Hertz;
 using rollspec::contact::test::strip_case;
 using rollspec::contact::test::StripCase;
 using rollspec::contact::test::thrown_message;
+using rollspec::contact::test::WavyStrip;
 
 TEST_CASE("paths at the answer's tolerance (BF-8): the exhaustive F0 within a factor 3 of its own estimate") {
-  const Hertz h;
-  const StripCase c = strip_case(h, 12.0, 1.9, 36, 10);
-  const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
-  const auto x = cell_positions(c.strip, -15, 2, 16);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  WavyStrip strip;
+  auto& [h, c, heights, x, opt] = strip;
   const double w = 1.3 * 3.0;  // N, off the Hertz start: the exhaustive search takes several paths
-  const auto at_load = [&](const BlockedForceOptions& o, int threads) {
-    return rollspec::contact::test::at_load_on(threads, c, h, heights, x, w, opt, o);
-  };
+  const auto at_load = [&](const BlockedForceOptions& o, int threads) { return strip.at_load(threads, w, o); };
   BlockedForceOptions exhaustive, one;
   exhaustive.chunk_positions = one.chunk_positions = 5;
   one.answer_tolerance = 1e-3;
