@@ -22,6 +22,7 @@
 // Usage: [ER_STIFFNESS_TOL=1e-12] [ER_LOAD_TOL=1e-10] [ER_CELL=2e-6 (seed002 cell, m)] [ER_CHUNK=0 (positions per
 // parallel chunk)] [ER_DUMP=file (CSV: position_m,approach_m,height_m)] bench_equivalent_roughness [small | departure |
 // isotropic | seed002 [length_m] [window_half_width_in_a]]
+#include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -100,29 +101,13 @@ void run(const char* name, const contact::Grid& strip, const std::vector<double>
       area / n / r.smooth_contact_area, plastic / n);
 }
 
-// Least-squares h ≈ c0 + c cos(kx) + s sin(kx): returns {c0, sqrt(c² + s²)} (3 × 3 normal equations, Cramer).
+// Least-squares h ≈ c0 + c cos(kx) + s sin(kx): returns {c0, sqrt(c² + s²)} (Eigen's QR).
 std::pair<double, double> fit(const std::vector<double>& x, const std::vector<double>& h, double k) {
-  double m[3][3] = {}, r[3] = {};
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double f[3] = {1.0, std::cos(k * x[i]), std::sin(k * x[i])};
-    for (int a = 0; a < 3; ++a) {
-      r[a] += f[a] * h[i];
-      for (int b = 0; b < 3; ++b) m[a][b] += f[a] * f[b];
-    }
-  }
-  auto det = [](const double q[3][3]) {
-    return q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
-           q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
-  };
-  const double d = det(m);
-  double coef[3];
-  for (int c = 0; c < 3; ++c) {
-    double q[3][3];
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) q[a][b] = b == c ? r[a] : m[a][b];
-    coef[c] = det(q) / d;
-  }
-  return {coef[0], std::hypot(coef[1], coef[2])};
+  Eigen::MatrixXd f(static_cast<Eigen::Index>(x.size()), 3);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    f.row(static_cast<Eigen::Index>(i)) << 1.0, std::cos(k * x[i]), std::sin(k * x[i]);
+  const Eigen::Vector3d c = f.colPivHouseholderQr().solve(Eigen::Map<const Eigen::VectorXd>(h.data(), f.rows()));
+  return {c(0), std::hypot(c(1), c(2))};
 }
 
 }  // namespace

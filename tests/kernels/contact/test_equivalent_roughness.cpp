@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -35,30 +36,13 @@ std::vector<double> cell_positions(const Grid& strip, long first, long step, std
   return x;
 }
 
-// Least-squares fit h ≈ c0 + c cos(kx) + s sin(kx); returns the amplitude sqrt(c² + s²) (normal
-// equations, 3 × 3 by Cramer's rule).
+// Least-squares fit h ≈ c0 + c cos(kx) + s sin(kx); returns the amplitude sqrt(c² + s²) (Eigen's QR).
 double fitted_amplitude(const std::vector<double>& x, const std::vector<double>& h, double k) {
-  double m[3][3] = {}, r[3] = {};
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double f[3] = {1.0, std::cos(k * x[i]), std::sin(k * x[i])};
-    for (int a = 0; a < 3; ++a) {
-      r[a] += f[a] * h[i];
-      for (int b = 0; b < 3; ++b) m[a][b] += f[a] * f[b];
-    }
-  }
-  auto det = [](const double q[3][3]) {
-    return q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
-           q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
-  };
-  const double d = det(m);
-  double coef[3];
-  for (int c = 0; c < 3; ++c) {
-    double q[3][3];
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) q[a][b] = b == c ? r[a] : m[a][b];
-    coef[c] = det(q) / d;
-  }
-  return std::hypot(coef[1], coef[2]);
+  Eigen::MatrixXd f(static_cast<Eigen::Index>(x.size()), 3);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    f.row(static_cast<Eigen::Index>(i)) << 1.0, std::cos(k * x[i]), std::sin(k * x[i]);
+  const Eigen::Vector3d c = f.colPivHouseholderQr().solve(Eigen::Map<const Eigen::VectorXd>(h.data(), f.rows()));
+  return std::hypot(c(1), c(2));
 }
 
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
