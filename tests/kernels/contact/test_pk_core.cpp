@@ -83,41 +83,50 @@ std::vector<double> smooth_gap(const Hertz& h, const Grid& grid) {
   return ball_gap(grid, h.radius, {}, BallShape::Paraboloid);
 }
 
-}  // namespace
-
-TEST_CASE("PK core, imposed approach: bit for bit the reference (Hertz and rough, elastic and plastic)") {
-  const Hertz h;
+// Every case the core tests compare, f(rough, plastic, precondition): a smooth or a rough ball, elastic or
+// elastic-plastic, with and without the preconditioner.
+template <class F>
+void for_each_case(const F& f) {
   for (const bool rough : {false, true})
     for (const bool plastic : {false, true})
       for (const bool precondition : {true, false}) {
         CAPTURE(rough);
         CAPTURE(plastic);
         CAPTURE(precondition);
-        const Grid grid = h.grid(rough ? 10.0 : 12.0, 1.5);
-        const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid) : smooth_gap(h, grid);
-        SolverOptions opt;
-        opt.precondition = precondition;
-        if (plastic) opt.hardness = 0.5 * h.p0();
-        ContactSolver fast(grid, h.e_star), ref(grid, h.e_star);
-        // Cold (line-search start), then a sweep of approaches each warm-started from the last.
-        std::vector<double> p_fast, p_ref;
-        for (const double f : {1.0, 1.04, 0.97, 1.2, 0.5}) {
-          CAPTURE(f);
-          compare_solve(fast, ref, gap, f * h.approach, p_fast, p_ref, opt);
-        }
-        // An exact warm start: no iteration needed.
-        compare_solve(fast, ref, gap, 0.5 * h.approach, p_fast, p_ref, opt);
-        // A saturated warm start (every cell at H, or a large uniform pressure): releases.
-        std::vector<double> q_fast(grid.size(), plastic ? opt.hardness : h.p0()), q_ref = q_fast;
-        compare_solve(fast, ref, gap, h.approach, q_fast, q_ref, opt);
-        // Unconverged exit at the iteration limit.
-        SolverOptions few = opt;
-        few.max_iterations = 3;
-        std::vector<double> c_fast, c_ref;
-        compare_solve(fast, ref, gap, h.approach, c_fast, c_ref, few);
-        // No contact.
-        compare_solve(fast, ref, gap, -h.approach, c_fast, c_ref, opt);
+        f(rough, plastic, precondition);
       }
+}
+
+}  // namespace
+
+TEST_CASE("PK core, imposed approach: bit for bit the reference (Hertz and rough, elastic and plastic)") {
+  const Hertz h;
+  for_each_case([&](bool rough, bool plastic, bool precondition) {
+    const Grid grid = h.grid(rough ? 10.0 : 12.0, 1.5);
+    const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid) : smooth_gap(h, grid);
+    SolverOptions opt;
+    opt.precondition = precondition;
+    if (plastic) opt.hardness = 0.5 * h.p0();
+    ContactSolver fast(grid, h.e_star), ref(grid, h.e_star);
+    // Cold (line-search start), then a sweep of approaches each warm-started from the last.
+    std::vector<double> p_fast, p_ref;
+    for (const double f : {1.0, 1.04, 0.97, 1.2, 0.5}) {
+      CAPTURE(f);
+      compare_solve(fast, ref, gap, f * h.approach, p_fast, p_ref, opt);
+    }
+    // An exact warm start: no iteration needed.
+    compare_solve(fast, ref, gap, 0.5 * h.approach, p_fast, p_ref, opt);
+    // A saturated warm start (every cell at H, or a large uniform pressure): releases.
+    std::vector<double> q_fast(grid.size(), plastic ? opt.hardness : h.p0()), q_ref = q_fast;
+    compare_solve(fast, ref, gap, h.approach, q_fast, q_ref, opt);
+    // Unconverged exit at the iteration limit.
+    SolverOptions few = opt;
+    few.max_iterations = 3;
+    std::vector<double> c_fast, c_ref;
+    compare_solve(fast, ref, gap, h.approach, c_fast, c_ref, few);
+    // No contact.
+    compare_solve(fast, ref, gap, -h.approach, c_fast, c_ref, opt);
+  });
 }
 
 TEST_CASE("PK core, imposed approach: coarse start (Eq. 16) bit for bit the reference") {
@@ -169,47 +178,42 @@ TEST_CASE("PK core, periodic mean pressure (solve_load): bit for bit the referen
 TEST_CASE("PK core, imposed total load (solve_at_force): bit for bit the reference" * doctest::test_suite("long")) {
   const Hertz h;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const bool rough : {false, true})
-    for (const bool plastic : {false, true})
-      for (const bool precondition : {true, false}) {
-        CAPTURE(rough);
-        CAPTURE(plastic);
-        CAPTURE(precondition);
-        const Grid grid = h.grid(rough ? 10.0 : 12.0, 1.6);
-        const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid) : smooth_gap(h, grid);
-        SolverOptions opt;
-        opt.precondition = precondition;
-        // A few of these solves (the plastic Hertz ball without the preconditioner, the hint far too
-        // low) stall for both loops alike: cap them so the test stays short; the capped exits are
-        // compared bit for bit as well.
-        opt.max_iterations = 300;
-        if (plastic) opt.hardness = 0.5 * h.p0();
-        ContactSolver fast(grid, h.e_star), ref(grid, h.e_star);
-        // Cold without a hint (uniform start, every cell listed).
-        std::vector<double> p_fast, p_ref;
-        compare_at_force(fast, ref, gap, h.force(), p_fast, p_ref, opt, nan);
-        // Cold from the interference at a hint; a hint far too low (L relisted as w passes w_L).
-        for (const double hint : {1.05 * h.approach, 0.3 * h.approach}) {
-          std::vector<double> c_fast, c_ref;
-          compare_at_force(fast, ref, gap, h.force(), c_fast, c_ref, opt, hint);
-        }
-        // A path of loads, each warm-started from the last with the last approach as hint.
-        double hint = h.approach;
-        for (const double f : {1.0, 1.1, 0.9, 1.6, 0.4}) {
-          CAPTURE(f);
-          const ContactResult a = fast.solve_at_force(gap, f * h.force(), p_fast, opt, hint);
-          const ContactResult b = ref.solve_at_force_reference(gap, f * h.force(), p_ref, opt, hint);
-          check_same(a, b);
-          CHECK(same_field(p_fast, p_ref));
-          hint = a.approach;
-        }
-        // Unconverged exit at the iteration limit; zero load.
-        SolverOptions few = opt;
-        few.max_iterations = 4;
-        std::vector<double> c_fast, c_ref;
-        compare_at_force(fast, ref, gap, h.force(), c_fast, c_ref, few, h.approach);
-        compare_at_force(fast, ref, gap, 0.0, c_fast, c_ref, opt, nan);
-      }
+  for_each_case([&](bool rough, bool plastic, bool precondition) {
+    const Grid grid = h.grid(rough ? 10.0 : 12.0, 1.6);
+    const auto gap = rough ? rollspec::contact::test::wavy_ball_gap(h, grid) : smooth_gap(h, grid);
+    SolverOptions opt;
+    opt.precondition = precondition;
+    // A few of these solves (the plastic Hertz ball without the preconditioner, the hint far too
+    // low) stall for both loops alike: cap them so the test stays short; the capped exits are
+    // compared bit for bit as well.
+    opt.max_iterations = 300;
+    if (plastic) opt.hardness = 0.5 * h.p0();
+    ContactSolver fast(grid, h.e_star), ref(grid, h.e_star);
+    // Cold without a hint (uniform start, every cell listed).
+    std::vector<double> p_fast, p_ref;
+    compare_at_force(fast, ref, gap, h.force(), p_fast, p_ref, opt, nan);
+    // Cold from the interference at a hint; a hint far too low (L relisted as w passes w_L).
+    for (const double hint : {1.05 * h.approach, 0.3 * h.approach}) {
+      std::vector<double> c_fast, c_ref;
+      compare_at_force(fast, ref, gap, h.force(), c_fast, c_ref, opt, hint);
+    }
+    // A path of loads, each warm-started from the last with the last approach as hint.
+    double hint = h.approach;
+    for (const double f : {1.0, 1.1, 0.9, 1.6, 0.4}) {
+      CAPTURE(f);
+      const ContactResult a = fast.solve_at_force(gap, f * h.force(), p_fast, opt, hint);
+      const ContactResult b = ref.solve_at_force_reference(gap, f * h.force(), p_ref, opt, hint);
+      check_same(a, b);
+      CHECK(same_field(p_fast, p_ref));
+      hint = a.approach;
+    }
+    // Unconverged exit at the iteration limit; zero load.
+    SolverOptions few = opt;
+    few.max_iterations = 4;
+    std::vector<double> c_fast, c_ref;
+    compare_at_force(fast, ref, gap, h.force(), c_fast, c_ref, few, h.approach);
+    compare_at_force(fast, ref, gap, 0.0, c_fast, c_ref, opt, nan);
+  });
 }
 
 TEST_CASE("sub-cell edge on the box around E: bit for bit the whole-grid reference") {
