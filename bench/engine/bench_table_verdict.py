@@ -3,7 +3,7 @@
 with another surface of the model's roughness gives, at the shipped defaults.
 
 usage: bench_table_verdict.py ROLLSPEC --scene beam-r|beam-s|route [--tables 20] [--models 5] [--rolls 25]
-                              [--pair K] [--work DIR] [--record FILE]
+                              [--pair K] [--set KEY=VALUE ...] [--work DIR] [--record FILE]
 
 For each of --tables table seeds t (101, 102, ...) the shipped study is run twice:
   model t        the study as shipped (its K, its study seed, [stiffness] table_error at its default), table seed t;
@@ -201,6 +201,8 @@ def main():
     p.add_argument("--pair", type=int, default=0, help="K of two more runs on table seeds 1 and 2 (0: none)")
     p.add_argument("--work", help="a folder of its own for the runs (new, empty, or one it made); default: temporary")
     p.add_argument("--record")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                   help="a study key for every run, models and measurements (e.g. stiffness.realisations=12)")
     a = p.parse_args()
     if a.tables < 2 or a.rolls < 1 or a.models < 0 or a.pair < 0 or a.pair == 1:
         p.error(f"--tables {a.tables} --rolls {a.rolls} --models {a.models} --pair {a.pair}: allowed: at least 2 "
@@ -213,7 +215,7 @@ def main():
     work = Path(own_folder(a.work, "bench_table_verdict")) if a.work else Path(tempfile.mkdtemp(prefix="table-verdict-"))
     (work / "tables").mkdir(exist_ok=True)
     # The study's own folder of tables stays untouched: the runs cache their tables under the work folder.
-    sets = [f"stiffness.table_dir={work / 'tables'}"]
+    sets = [f"stiffness.table_dir={work / 'tables'}", *a.set]
     start = time.monotonic()
     seeds = list(range(101, 101 + a.tables))
     a.models = a.models or a.tables
@@ -275,10 +277,12 @@ def main():
                         "median_half_width_db": median_h, "bands": n}
     minutes = (time.monotonic() - start) / 60.0
     bench_record.write(
-        record, title=f"The verdict against measurements from other tables: {description}",
+        record, title=f"The verdict against measurements from other tables: {description}"
+        + (f", run with {', '.join(a.set)}" if a.set else ""),
         argv=sys.argv, builds={"current": {"description": "the build measured",
                                             "version": bench_record.build_version(a.binary)}},
-        settings=f"{a.tables} table seeds; models as shipped (and at study seeds 7000 + t); measurements of "
+        settings=f"{a.tables} table seeds; models as shipped" + (f" with {', '.join(a.set)}" if a.set else "") +
+                 " (and at study seeds 7000 + t); measurements of "
                  f"{a.rolls} rolls of each other table (study seed 5000 + t); compare --measured-averages {a.rolls} "
                  f"at level 0.05; {minutes:.0f} min"
                  + (f" (resumed from --work: {REUSED['runs']} runs and {REUSED['answers']} compare answers reused)"
