@@ -338,18 +338,21 @@ BlockedForcePath blocked_force_at_load(ContactSolver& solver, const Grid& strip,
     total.paths = 0;
     if (sub.converged) d_start = sub.approach;
   }
-  // BF-9: the check levels, from every check_stride-th position down to every finest-th, the finest stride
-  // the smallest power-of-two fraction of check_stride whose loose fields fit in max_stored_bytes.
+  // BF-9: the check levels, from every first-th position down to every finest-th. first is check_stride, or
+  // on a strip too long for that many loose fields in max_stored_bytes the smallest power-of-two multiple of
+  // it that fits (a long strip is checked more sparsely, not left unchecked); finest the smallest power-of-two
+  // fraction of first whose fields fit.
   std::unique_ptr<CheckPlan> check;
   if (path_options.answer_tolerance > 0.0 && path_options.check_stride > 0 &&
       positions.size() >= 2 * path_options.check_stride) {
     check = std::make_unique<CheckPlan>();
     const std::size_t fit = std::max<std::size_t>(1, path_options.max_stored_bytes / field_bytes);
+    const auto count = [&](std::size_t stride) { return (positions.size() + stride - 1) / stride; };
     check->first = path_options.check_stride;
-    check->finest = path_options.check_stride;
-    while (check->finest % 2 == 0 && (positions.size() + check->finest / 2 - 1) / (check->finest / 2) <= fit)
-      check->finest /= 2;
-    if ((positions.size() + check->first - 1) / check->first > fit) check.reset();  // no level fits: BF-8 alone
+    while (count(check->first) > fit) check->first *= 2;
+    check->finest = check->first;
+    while (check->finest % 2 == 0 && count(check->finest / 2) <= fit) check->finest /= 2;
+    if (count(check->first) < 2) check.reset();  // fewer than two checks: BF-8 alone
   }
   if (check) {
     check->on_check = path_options.on_check;

@@ -118,7 +118,9 @@
 // error (BF-9a); the residuals r_j of the tabulated F0 there measure its error (BF-9b); their mean puts
 // the table on the load by a second step (BF-9d). While k0's standard error is above check_k0_tolerance
 // (1e-3 in the engine) the stride halves, down to the finest whose loose fields fit in max_stored_bytes:
-// the refinement goes where the estimate says the answer needs it. kernels/contact/answer_error.hpp
+// the refinement goes where the estimate says the answer needs it. A strip too long for every
+// check_stride-th field in max_stored_bytes starts at the smallest power-of-two multiple of the stride that
+// fits (the seed 002 rig's whole 0.35 m traverse: every 32nd of 16,385 positions). kernels/contact/answer_error.hpp
 // carries the residuals to the band levels (BF-9c). Measured on the seed 002 rig and two other textures
 // (bench/contact/bench_answer_tables.py, record answer-tables.json on the benchmarks page, 2026-11-30):
 // the table 1.9-2.0 times faster than the exhaustive search (1.4 where the checks refine), F0's band
@@ -167,7 +169,8 @@ struct BlockedForceOptions {
   // BF-9 (with answer_tolerance > 0): every check_stride-th position (a power of two) solved again to the
   // full tolerance after the first-order step, finer levels while k0's error is above check_k0_tolerance;
   // k0 by the control variate BF-9a with its standard error, F0's residuals there kept (BF-9b). 0: BF-8
-  // alone (k moved by the secant BF-8'); also when the path has fewer than 2 check_stride positions.
+  // alone (k moved by the secant BF-8'); also when the path has fewer than 2 checks. On a strip whose every
+  // check_stride-th loose field does not fit in max_stored_bytes, every 2^j check_stride-th that does.
   std::size_t check_stride = 0;
   // BF-9: the check levels halve the stride (down to the finest whose loose fields fit in max_stored_bytes)
   // while k0's standard error is above this times k0.

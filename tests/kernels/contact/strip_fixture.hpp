@@ -49,26 +49,25 @@ inline BlockedForcePath at_load_on(int threads, const StripCase& c, const Hertz&
 }
 
 // The wavy strip the blocked-force path tests share: 12 cells per contact radius, a window of 1.9 radii, the
-// strip 36 x 10 cells larger, waves of 0.15 times the Hertz approach and 0.4 times the contact radius, 16
+// strip 36 x 10 cells larger (by default), waves of 0.15 times the Hertz approach and 0.4 times the contact radius, 16
 // positions two cells apart from cell -15, hardness 0.5 p0. Taken apart by a structured binding:
 // auto& [h, c, heights, x, opt] = strip.
 struct WavyStrip {
   Hertz h;
-  StripCase c = strip_case(h, 12.0, 1.9, 36, 10);
-  std::vector<double> heights = wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
-  std::vector<double> x = cell_positions(c.strip, -15, 2, 16);
-  SolverOptions opt = plastic(h);
+  StripCase c;
+  std::vector<double> heights, x;
+  SolverOptions opt;
+  // `extra` cells more than the window along the path, `count` positions from cell `first`.
+  explicit WavyStrip(std::size_t extra = 36, long first = -15, std::size_t count = 16)
+      : c(strip_case(h, 12.0, 1.9, extra, 10)),
+        heights(wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a())),
+        x(cell_positions(c.strip, first, 2, count)) {
+    opt.hardness = 0.5 * h.p0();
+  }
 
   // The path at `load` (blocked_force_at_load, a sphere) on `threads` OpenMP threads.
   BlockedForcePath at_load(int threads, double load, const BlockedForceOptions& o) const {
     return at_load_on(threads, c, h, heights, x, load, opt, o);
-  }
-
- private:
-  static SolverOptions plastic(const Hertz& h) {
-    SolverOptions o;
-    o.hardness = 0.5 * h.p0();
-    return o;
   }
 };
 

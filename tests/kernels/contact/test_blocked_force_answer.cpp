@@ -144,3 +144,28 @@ TEST_CASE(
   CHECK(ratio < 3.0);
   MESSAGE("k0: rms estimate / rms error over the strips " << ratio);
 }
+
+TEST_CASE("BF-9 on a strip too long for every check_stride-th field: checked at the finest stride whose fields fit") {
+  // 48 positions checked every 4th need 12 stored fields; a cap of 7 fields keeps every 8th (6 checks), a
+  // cap of 2 fields every 32nd (2 checks), a cap of 1 field none: the path is BF-8's alone.
+  const WavyStrip strip(100, -47, 48);
+  const std::vector<double>& x = strip.x;
+  const std::size_t field_bytes = 2 * sizeof(double) * strip.c.window.size();
+  BlockedForceOptions o;
+  o.chunk_positions = 8;
+  o.answer_tolerance = 1e-3;
+  o.answer_load_tolerance = 5e-2;
+  o.check_stride = 4;
+  o.check_k0_tolerance = 1.0;  // one level
+  const double w = 1.3 * 3.0;
+  for (const auto& [fields, stride] : {std::pair<std::size_t, std::size_t>{12, 4}, {7, 8}, {2, 32}, {1, 0}}) {
+    CAPTURE(fields);
+    o.max_stored_bytes = fields * field_bytes;
+    const BlockedForcePath p = strip.at_load(2, w, o);
+    REQUIRE(p.converged);
+    CHECK(p.check_index.size() == (stride == 0 ? 0 : (x.size() + stride - 1) / stride));
+    for (std::size_t i = 0; i < p.check_index.size(); ++i) CHECK(p.check_index[i] == i * stride);
+    CHECK(std::isnan(p.k0_error) == (stride == 0));
+    CHECK(std::fabs(p.mean_force / w - 1.0) < (stride == 0 ? 5e-2 : 1e-12));
+  }
+}
