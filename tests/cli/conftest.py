@@ -153,6 +153,15 @@ def run_copied_study(name, tmp_path, *sets, out="r.h5", command="run"):
     return run(["run", study, "--out", path, *args]), path
 
 
+def coarse_rig(tmp_path, name, base, *sets, command="run"):
+    """studies/seed002-rig-1ms.ini run (or planned) copied with the sets `base` and `sets`, and the table's error
+    only where `sets` asks for it ([stiffness] table_error's default, auto, estimates it); it must succeed."""
+    own = [] if any(s.startswith("stiffness.table_error=") for s in sets) else ["stiffness.table_error=none"]
+    r, out = run_copied_study("seed002-rig-1ms.ini", tmp_path, *base, *own, *sets, out=name, command=command)
+    assert r.returncode == 0, r.stderr
+    return r, out
+
+
 @pytest.fixture
 def small_study(tmp_path):
     def make(realisations=24, chunk=4, duration=16, name="study.ini"):

@@ -10,7 +10,7 @@ import h5py
 import numpy as np
 from scipy import signal
 
-from conftest import EX_CONFIG, assert_refused, run_copied_study
+from conftest import EX_CONFIG, assert_refused, coarse_rig, run_copied_study
 from test_table_jackknife import text, widened
 
 K = 12
@@ -23,11 +23,7 @@ SEGMENT = 64
 
 
 def rig(tmp_path, name, *sets, command="run"):
-    # The table's error only where a test asks for it ([stiffness] table_error's default, auto, estimates it).
-    own = [] if any(s.startswith("stiffness.table_error=") for s in sets) else ["stiffness.table_error=none"]
-    r, out = run_copied_study("seed002-rig-1ms.ini", tmp_path, *SOLVER, *own, *sets, out=name, command=command)
-    assert r.returncode == 0, r.stderr
-    return r, out
+    return coarse_rig(tmp_path, name, SOLVER, *sets, command=command)
 
 
 def table_force(tmp_path):

@@ -5,7 +5,7 @@ computed here from the leave-one-out runs; combinations that have no such table 
 import h5py
 import numpy as np
 
-from conftest import EX_CONFIG, assert_refused, run_copied_study
+from conftest import EX_CONFIG, assert_refused, coarse_rig, run_copied_study
 from test_table_jackknife import text, widened
 
 # The coarse rig of test_solver_filter.py (seconds): 12 um cells, a 6.6 mm strip, 128-position segments.
@@ -16,11 +16,7 @@ SOLVER = ["contact.law=hertz", "contact.filter=solver", "surface.spacing=12e-6",
 
 
 def rig(tmp_path, name, *sets, command="run"):
-    # The table's error only where a test asks for it ([stiffness] table_error's default, auto, estimates it).
-    own = [] if any(s.startswith("stiffness.table_error=") for s in sets) else ["stiffness.table_error=none"]
-    r, out = run_copied_study("seed002-rig-1ms.ini", tmp_path, *SOLVER, *own, *sets, out=name, command=command)
-    assert r.returncode == 0, r.stderr
-    return r, out
+    return coarse_rig(tmp_path, name, SOLVER, *sets, command=command)
 
 
 def test_leaving_out_the_last_strip_is_the_table_of_the_others(tmp_path):
