@@ -158,7 +158,9 @@ TEST_CASE("BF-9 on a strip too long for every check_stride-th field: checked at 
   o.check_stride = 4;
   o.check_k0_tolerance = 1.0;  // one level
   const double w = 1.3 * 3.0;
-  for (const auto& [fields, stride] : {std::pair<std::size_t, std::size_t>{12, 4}, {7, 8}, {2, 32}, {1, 0}}) {
+  for (const std::pair<std::size_t, std::size_t>& cap :
+       {std::pair<std::size_t, std::size_t>{12, 4}, {7, 8}, {2, 32}, {1, 0}}) {
+    const std::size_t fields = cap.first, stride = cap.second;  // plain names: doctest's CAPTURE is a lambda
     CAPTURE(fields);
     o.max_stored_bytes = fields * field_bytes;
     const BlockedForcePath p = strip.at_load(2, w, o);
