@@ -130,6 +130,12 @@ def verdicts(binary, model, measurements, rolls):
     return out
 
 
+def rejections(found):
+    """compare's answers (p, share inside) summed up: the share rejected at 0.05 and the median p."""
+    pv = np.array([x[0] if x[0] is not None else np.nan for x in found], dtype=float)
+    return float(np.mean(pv < 0.05)), float(np.nanmedian(pv))
+
+
 def noise_corrected(paths):
     """The model runs' band intervals as they would be if widened by the table term without the sub-table runs'
     own noise, max(V_J - n, 0) in place of V_J (kernels/spectral D-30b, c), nu_T as run: each side's
@@ -250,10 +256,9 @@ def main():
             model = work / f"model-{t}.h5" if not extra else run_study(
                 a.binary, study, work / f"model-{t}-{'-'.join(extra)}.h5", sets + [f"stiffness.table_seed={t}"] + extra)
             found += verdicts(a.binary, model, [tables[u] for u in seeds if u != t], a.rolls)
-        pv = np.array([x[0] if x[0] is not None else np.nan for x in found], dtype=float)
-        rejected = float(np.mean(pv < 0.05))
-        rows.append([name, f"{rejected:.3f}", f"median p {np.nanmedian(pv):.3g}", len(found)])
-        data["cases"][name] = {"rejected": rejected, "median_p": float(np.nanmedian(pv)),
+        rejected, median_p = rejections(found)
+        rows.append([name, f"{rejected:.3f}", f"median p {median_p:.3g}", len(found)])
+        data["cases"][name] = {"rejected": rejected, "median_p": median_p,
                                "bands_inside": float(np.mean([x[1] for x in found])), "comparisons": len(found)}
         print(f"{name}: rejected {rejected:.3f}", file=sys.stderr)
     own = {t: work / f"model-{t}-own-seed.h5" for t in seeds}
@@ -263,12 +268,12 @@ def main():
     rows.append(["coverage, each model at a study seed of its own", f"{cov_o:.3f}", f"width ratio {width_o:.2f}", n_o])
     found = sum((verdicts(a.binary, own[t], [tables[u] for u in seeds if u != t], a.rolls)
                  for t in seeds[:a.models]), [])
-    pv = np.array([x[0] if x[0] is not None else np.nan for x in found], dtype=float)
-    rows.append(["correct model (size), each at a study seed of its own", f"{float(np.mean(pv < 0.05)):.3f}",
-                 f"median p {np.nanmedian(pv):.3g}", len(found)])
-    data["own_seeds"] = {"coverage": cov_o, "width_ratio": width_o, "rejected": float(np.mean(pv < 0.05)),
-                         "median_p": float(np.nanmedian(pv)), "comparisons": len(found)}
-    print(f"own seeds: coverage {cov_o:.3f}, rejected {float(np.mean(pv < 0.05)):.3f}", file=sys.stderr)
+    rejected, median_p = rejections(found)
+    rows.append(["correct model (size), each at a study seed of its own", f"{rejected:.3f}",
+                 f"median p {median_p:.3g}", len(found)])
+    data["own_seeds"] = {"coverage": cov_o, "width_ratio": width_o, "rejected": rejected, "median_p": median_p,
+                         "comparisons": len(found)}
+    print(f"own seeds: coverage {cov_o:.3f}, rejected {rejected:.3f}", file=sys.stderr)
     if a.pair:
         agree, median_d, median_h, n = pair(a.binary, study, work, sets, a.pair)
         rows.append([f"two runs of K = {a.pair} on table seeds 1 and 2: bands agreeing within their intervals",
