@@ -31,16 +31,9 @@ Model tube(int elements) {
   const double r = 0.03;
   const std::vector<int> ids =
       add_straight_beam(m, Vector3d(0.0, -0.5, r - 2e-5), Vector3d(0.0, 0.5, r - 2e-5), elements, 0, Vector3d::UnitX());
-  HeightField f;
-  f.base = make_plane(Vector3d::Zero(), Vector3d::UnitZ());
-  f.n1 = 60;
-  f.n2 = 120;
-  f.ds1 = f.ds2 = 0.01;
-  f.s1_0 = -0.1;
-  f.s2_0 = -0.6;
-  for (int j = 0; j < f.n2; ++j)
-    for (int i = 0; i < f.n1; ++i) f.h.push_back(2e-5 * std::sin(40.0 * (f.s1_0 + i * f.ds1) + 0.3 * j));
-  m.surfaces.push_back(f);
+  m.surfaces.push_back(
+      grid_height_field(make_plane(Vector3d::Zero(), Vector3d::UnitZ()), {-0.1, 0.01, 60}, {-0.6, 0.01, 120},
+                        [](double s1, double s2) { return 2e-5 * std::sin(40.0 * s1 + 30.0 * (s2 + 0.6)); }));
   for (int id : ids)
     m.surface_contacts.push_back(SurfaceContactPair{id, 0, SurfaceContactLaw{r, 5e6, 0.3, 1e6, true, 60.0}});
   m.v0.assign(m.X.size(), Vector3d(0.5, 0.0, 0.0));

@@ -44,6 +44,25 @@ HeightField line_height_field(const Plane& base, double s_begin, double s_end, i
   return f;
 }
 
+// A grid's samples along one tangent direction: the first coordinate, the spacing, the count.
+struct GridAxis {
+  double s0 = 0.0, ds = 1.0;
+  int n = 1;
+};
+
+// Grid h(s1, s2) sampled at s1 = s1_0 + i ds1, s2 = s2_0 + j ds2, stored i fastest as HeightField keeps it.
+template <class F>
+HeightField grid_height_field(const Plane& base, GridAxis a1, GridAxis a2, F&& h) {
+  HeightField f;
+  f.base = base;
+  f.s1_0 = a1.s0, f.ds1 = a1.ds, f.n1 = a1.n;
+  f.s2_0 = a2.s0, f.ds2 = a2.ds, f.n2 = a2.n;
+  f.h.reserve(static_cast<std::size_t>(a1.n) * static_cast<std::size_t>(a2.n));
+  for (int j = 0; j < f.n2; ++j)
+    for (int i = 0; i < f.n1; ++i) f.h.push_back(h(f.s1_0 + i * f.ds1, f.s2_0 + j * f.ds2));
+  return f;
+}
+
 // Single-point contact validity: the sphere of radius r touches the surface at one
 // point when it is not sharper than the surface's concave curvature, r * kappa_max < 1, with
 // kappa_max the largest concave (valley) normal curvature: h''/(1 + h'^2)^(3/2) for a line,

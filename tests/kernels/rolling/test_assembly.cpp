@@ -26,18 +26,9 @@ Model tube_on_grid() {
   const double r = 0.03;
   const std::vector<int> ids =
       add_straight_beam(m, Vector3d(0.0, -0.25, r - 1e-3), Vector3d(0.0, 0.25, r - 1e-3), 2, 0, Vector3d::UnitX());
-  HeightField f;
-  f.base = make_plane(Vector3d::Zero(), Vector3d(0.02, 0.01, 1.0));
-  f.n1 = 40;
-  f.n2 = 40;
-  f.ds1 = 0.02;
-  f.ds2 = 0.02;
-  f.s1_0 = -0.4;
-  f.s2_0 = -0.4;
-  for (int j = 0; j < f.n2; ++j)
-    for (int i = 0; i < f.n1; ++i)
-      f.h.push_back(2e-4 * std::sin(7.0 * (f.s1_0 + i * f.ds1) + 1.0) * std::cos(5.0 * (f.s2_0 + j * f.ds2)));
-  m.surfaces.push_back(f);
+  m.surfaces.push_back(
+      grid_height_field(make_plane(Vector3d::Zero(), Vector3d(0.02, 0.01, 1.0)), {-0.4, 0.02, 40}, {-0.4, 0.02, 40},
+                        [](double s1, double s2) { return 2e-4 * std::sin(7.0 * s1 + 1.0) * std::cos(5.0 * s2); }));
   for (std::size_t k = 0; k < ids.size(); ++k) {
     SurfaceContactLaw law;
     law.radius = r;

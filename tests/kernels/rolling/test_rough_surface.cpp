@@ -20,20 +20,10 @@ namespace {
 const double kPi = 3.141592653589793;
 
 HeightField wavy_grid() {
-  HeightField f;
-  f.base = make_plane(Vector3d(0.1, -0.2, 0.05), Vector3d(0.1, 0.2, 1.0));
-  f.n1 = 40;
-  f.n2 = 30;
-  f.ds1 = 0.02;
-  f.ds2 = 0.025;
-  f.s1_0 = -0.4;
-  f.s2_0 = -0.35;
-  for (int j = 0; j < f.n2; ++j)
-    for (int i = 0; i < f.n1; ++i) {
-      const double s1 = f.s1_0 + i * f.ds1, s2 = f.s2_0 + j * f.ds2;
-      f.h.push_back(0.01 * std::sin(7.0 * s1 + 1.0) * std::cos(5.0 * s2) + 0.004 * std::sin(11.0 * s2));
-    }
-  return f;
+  return grid_height_field(make_plane(Vector3d(0.1, -0.2, 0.05), Vector3d(0.1, 0.2, 1.0)), {-0.4, 0.02, 40},
+                           {-0.35, 0.025, 30}, [](double s1, double s2) {
+                             return 0.01 * std::sin(7.0 * s1 + 1.0) * std::cos(5.0 * s2) + 0.004 * std::sin(11.0 * s2);
+                           });
 }
 
 HeightField bump_line(double H, double lambda, double ds) {
@@ -257,15 +247,9 @@ TEST_CASE("beam pressed on a rough grid surface: full-model tangent = central di
   Model m;
   m.sections.push_back(circular_section(2e9, 0.3, 7800.0, 0.1, 0.08));
   const double r = 0.05;
-  HeightField f;
-  f.base = make_plane(Vector3d::Zero(), Vector3d::UnitZ());
-  f.n1 = 60;
-  f.n2 = 20;
-  f.ds1 = f.ds2 = 0.02;
-  f.s1_0 = -0.1;
-  f.s2_0 = -0.2;
-  for (int j = 0; j < f.n2; ++j)
-    for (int i = 0; i < f.n1; ++i) f.h.push_back(0.002 * std::sin(13.0 * i * f.ds1) * std::cos(9.0 * j * f.ds2 + 0.4));
+  const HeightField f = grid_height_field(
+      make_plane(Vector3d::Zero(), Vector3d::UnitZ()), {-0.1, 0.02, 60}, {-0.2, 0.02, 20},
+      [](double s1, double s2) { return 0.002 * std::sin(13.0 * (s1 + 0.1)) * std::cos(9.0 * (s2 + 0.2) + 0.4); });
   const ContactValidity val = check_single_point_contact(f, r);
   REQUIRE(val.valid);
   m.surfaces.push_back(f);
