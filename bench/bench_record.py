@@ -133,6 +133,16 @@ def write(path, *, title, argv, builds, settings, columns, rows, notes="", data=
     replace_text(path, json.dumps(record, indent=1, ensure_ascii=False) + "\n", own=is_record)
 
 
+def write_measured(path, binary, **fields):
+    """write() of a record measured with one build (named by its `rollspec version` line). A record that cannot
+    be written ends the script as every script ends: one line, exit 73 (sysexits EX_CANTCREAT)."""
+    try:
+        write(path, builds={"current": {"description": "the build measured", "version": build_version(binary)}},
+              **fields)
+    except RecordError as e:
+        fail(e, 73)
+
+
 def is_record(path):
     try:
         load(path)

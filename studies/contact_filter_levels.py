@@ -117,16 +117,12 @@ def main():
                         [f"{res[a][2] - res[b][2]:+.1f}", f"{res[a][5] - res[b][5]:+.1f}", "", ""])
     print(f"\nresult files: {tmp}")
     if args.record:
-        version = subprocess.run([BIN, "version"], capture_output=True, text=True).stdout.strip()
-        try:
-            bench_record.write(
-                args.record, title="Band levels under each contact filter (sensor mean, dB re 1 (m/s²)²/Hz)",
-                argv=sys.argv, builds={"current": {"description": "the build measured", "version": version}},
-                settings=f"{args.realisations} realisations per run, each study's own seed (paired: the same "
-                         "Philox streams under every filter)", columns=columns, rows=rows,
-                components=["engine", "beam", "contact", "integrators", "spectral", "texture"])
-        except bench_record.RecordError as e:
-            fail(e, 73)
+        bench_record.write_measured(
+            args.record, BIN, title="Band levels under each contact filter (sensor mean, dB re 1 (m/s²)²/Hz)",
+            argv=sys.argv,
+            settings=f"{args.realisations} realisations per run, each study's own seed (paired: the same "
+                     "Philox streams under every filter)", columns=columns, rows=rows,
+            components=["engine", "beam", "contact", "integrators", "spectral", "texture"])
 
 
 sys.dont_write_bytecode = True  # nothing written into the sources

@@ -279,15 +279,10 @@ def main():
     for row in rows:
         print(" | ".join(row), flush=True)
     if a.record:
-        version = subprocess.run([binary, "version"], capture_output=True, text=True).stdout.strip()
-        try:
-            bench_record.write(
-                a.record, title=title, argv=sys.argv,
-                builds={"current": {"description": "the build measured", "version": version}},
-                settings=f"each command and doctest once, in a scratch directory; {wall:.0f} s wall",
-                columns=["check", "result"], rows=rows, components=COMPONENTS)
-        except bench_record.RecordError as e:
-            fail(e, 73)
+        bench_record.write_measured(
+            a.record, binary, title=title, argv=sys.argv,
+            settings=f"each command and doctest once, in a scratch directory; {wall:.0f} s wall",
+            columns=["check", "result"], rows=rows, components=COMPONENTS)
 
 
 if __name__ == "__main__":

@@ -118,19 +118,14 @@ def main():
                 rows.append([name, k, f"{rejected[k]} / {a.trials}", f"{mean_inside:.1f} %"])
     wall = time.monotonic() - start
     if a.record:
-        try:
-            bench_record.write(
-                a.record, title="compare's combined test: size and power (kernels/spectral D-26)", argv=sys.argv,
-                builds={"current": {"description": "the build measured",
-                                    "version": bench_record.build_version(a.binary)}},
-                settings=f"study {Path(a.study).name}, sensor mean; each measurement the mean of {a.rolls} rolls of "
-                         f"an independent run, {a.trials} per case, test level {a.level}; the model the study's "
-                         f"own seed; {wall / 60:.0f} min wall",
-                columns=["measurements from", "model K", "rejected", "bands inside the prediction intervals (mean)"],
-                rows=rows, other_cores=bench_record.other_work(busy, bench_record.own_cpu(), wall),
-                components=["engine", "beam", "contact", "integrators", "spectral", "texture"])
-        except bench_record.RecordError as e:
-            fail(e, 73)
+        bench_record.write_measured(
+            a.record, a.binary, title="compare's combined test: size and power (kernels/spectral D-26)", argv=sys.argv,
+            settings=f"study {Path(a.study).name}, sensor mean; each measurement the mean of {a.rolls} rolls of "
+                     f"an independent run, {a.trials} per case, test level {a.level}; the model the study's "
+                     f"own seed; {wall / 60:.0f} min wall",
+            columns=["measurements from", "model K", "rejected", "bands inside the prediction intervals (mean)"],
+            rows=rows, other_cores=bench_record.other_work(busy, bench_record.own_cpu(), wall),
+            components=["engine", "beam", "contact", "integrators", "spectral", "texture"])
 
 
 sys.dont_write_bytecode = True  # nothing written into the sources

@@ -124,15 +124,10 @@ def main():
     for row in rows:
         print(" | ".join(row), flush=True)
     if a.record:
-        version = subprocess.run([binary, "version"], capture_output=True, text=True).stdout.strip()
-        try:
-            bench_record.write(
-                a.record, title="Seed 000's examples 4.1–4.4", argv=sys.argv,
-                builds={"current": {"description": "the build measured", "version": version}},
-                settings="each study as shipped, with the end times and recording of tests/cli/test_rolling_beam.py",
-                columns=["published", "rollspec", "study"], rows=rows, components=COMPONENTS)
-        except bench_record.RecordError as e:
-            fail(e, 73)
+        bench_record.write_measured(
+            a.record, binary, title="Seed 000's examples 4.1–4.4", argv=sys.argv,
+            settings="each study as shipped, with the end times and recording of tests/cli/test_rolling_beam.py",
+            columns=["published", "rollspec", "study"], rows=rows, components=COMPONENTS)
 
 
 if __name__ == "__main__":

@@ -69,18 +69,14 @@ def main():
                      f"{peak:.0f} Hz ({100 * (peak / published - 1):+.1f} %)"])
         print(" | ".join(rows[-1]), flush=True)
     if a.record:
-        version = subprocess.run([binary, "version"], capture_output=True, text=True).stdout.strip()
-        try:
-            bench_record.write(
-                a.record, title="Seed 002's rig: modes and response peaks against the measured resonances",
-                argv=sys.argv, builds={"current": {"description": "the build measured", "version": version}},
-                settings=f"`rollspec modes` and one run of studies/seed002-rig-1ms.ini as shipped"
-                         + (f" ({k} realisations)" if k else "") + "; a peak is the sensor mean PSD's largest "
-                         "bin within 15 % of the resonance",
-                columns=["seed 002 measured", "nearest mode of the beam", "response peak (1 m/s)"], rows=rows,
-                components=COMPONENTS)
-        except bench_record.RecordError as e:
-            fail(e, 73)
+        bench_record.write_measured(
+            a.record, binary, title="Seed 002's rig: modes and response peaks against the measured resonances",
+            argv=sys.argv,
+            settings=f"`rollspec modes` and one run of studies/seed002-rig-1ms.ini as shipped"
+                     + (f" ({k} realisations)" if k else "") + "; a peak is the sensor mean PSD's largest "
+                     "bin within 15 % of the resonance",
+            columns=["seed 002 measured", "nearest mode of the beam", "response peak (1 m/s)"], rows=rows,
+            components=COMPONENTS)
 
 
 if __name__ == "__main__":

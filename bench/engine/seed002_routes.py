@@ -115,17 +115,13 @@ def main():
     for row in rows:
         print("| " + " | ".join(row) + " |")
     if a.record:
-        version = subprocess.run([binary, "version"], capture_output=True, text=True).stdout.strip()
-        try:
-            bench_record.write(
-                a.record, title="Seed 002's facts: the calibrated studies and the seed's own route",
-                argv=sys.argv, builds={"current": {"description": "the build measured", "version": version}},
-                settings=f"{a.realisations} realisations per study, each study's own seed; the seed-route table "
-                         "built once ([stiffness] table_seed = 1) and shared by both speeds",
-                columns=header, rows=rows, components=["engine", "beam", "contact", "integrators", "spectral",
-                                                       "texture"])
-        except bench_record.RecordError as e:
-            sys.exit(f"seed002_routes: {e}")
+        bench_record.write_measured(
+            a.record, binary, title="Seed 002's facts: the calibrated studies and the seed's own route",
+            argv=sys.argv,
+            settings=f"{a.realisations} realisations per study, each study's own seed; the seed-route table "
+                     "built once ([stiffness] table_seed = 1) and shared by both speeds",
+            columns=header, rows=rows, components=["engine", "beam", "contact", "integrators", "spectral",
+                                                   "texture"])
 
 
 sys.dont_write_bytecode = True  # nothing written into the sources
