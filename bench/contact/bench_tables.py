@@ -46,7 +46,7 @@ import bench_record  # noqa: E402
 STUDY = ROOT / "studies" / "seed002-rig-1ms.ini"
 
 CASES = {
-    "blocked_force": ["contact.blocked_force=solver", "study.realisations=2"],
+    "blocked_force": ["contact.blocked_force=solver", "blocked_force.answer_tolerance=0", "study.realisations=2"],
     # the answer's method (contact BF-9): one loose path with its checks
     "blocked_force_answer": ["contact.blocked_force=solver", "blocked_force.answer_tolerance=1e-3",
                              "study.realisations=2"],

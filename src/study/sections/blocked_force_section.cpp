@@ -21,14 +21,15 @@ SectionKeys<BlockedForceSection> BlockedForceSection::declare() {
                "correlation length (2 pi x the contact radius, or the self-affine roll-off wavelength if longer)",
                "0", 0, 1 << 20)
       .real("answer_tolerance", &T::answer_tolerance, "",
-            "[contact] blocked_force = solver: 0, the reference path: the exhaustive load search, every position "
-            "solved to [stiffness] tolerance on every path until the mean force meets the load; > 0 (e.g. 1e-3): "
-            "one path's solves to this tolerance, put on the load to first order, and every 16th position solved "
+            "[contact] blocked_force = solver: > 0 (the default 1e-3): one path's solves to this tolerance, put "
+            "on the load to first order, and every 16th position solved "
             "again to the full tolerance (finer while k0's estimated error is above 0.1 %): k0 from those checks, "
             "F0's error measured there (kernels/contact BF-8, BF-9; its speed and accuracy against the exhaustive "
             "search: the benchmarks page). The result records each band's estimated F0 error and k0's "
-            "(/contact/blocked_force_band_error_db, @blocked_force_k0_error); run warns above 0.1 dB or 1 %",
-            "0", within(0.0, 0.1))
+            "(/contact/blocked_force_band_error_db, @blocked_force_k0_error); run warns above 0.1 dB or 1 %. 0, the "
+            "reference path: the exhaustive load search, every position solved to [stiffness] tolerance on every "
+            "path until the mean force meets the load",
+            "1e-3", within(0.0, 0.1))
       .integer("leave_out", &T::leave_out,
                "[contact] blocked_force = solver: Welch segment (0 .. segments - 1) of F0 along the path left out "
                "of the table's PSD, from the cached table without a new solve: a leave-one-out sub-table for the "

@@ -15,7 +15,7 @@ class KeyReader;
 struct BlockedForceSection : DeclaredSection<BlockedForceSection> {
   double strip_length = 0.0;                    // m; 0: derived
   long long window = 0, step = 0, segment = 0;  // 0: derived
-  double answer_tolerance = 0.0;                // contact BF-8; 0: the exhaustive search (the reference)
+  double answer_tolerance = 1e-3;               // contact BF-9; 0: the exhaustive search (the reference)
   long long leave_out = -1;                     // >= 0: the sub-table without this Welch segment of F0 (D-30d)
 
   static SectionKeys<BlockedForceSection> declare();
