@@ -30,6 +30,9 @@ Figures (bands band_min..band_max of the study, every sensor row for the coverag
              run it twice on two tables: the share of band levels (every sensor row) whose difference lies
              within the two intervals combined (sqrt(h1^2 + h2^2), h the half-widths), the median difference
              and the median half-width (an interval much wider than the differences is too wide).
+  interval   beside each coverage and share rejected, its 95 % interval over the draw of the tables themselves
+             (the comparisons share their tables, so a binomial interval over them would be too narrow): the
+             tables drawn again with replacement, each as model and as measurement (a pigeonhole bootstrap).
 compare's answers are kept in the work folder beside the runs, so a bench resumed with --work redoes neither.
 Writes bench/records/validation/table-verdict-SCENE.json (or --record) through the bench record writer; --work keeps the
 runs (default: a temporary directory).
@@ -93,7 +96,7 @@ def bands(path):
 
 def psd_table(result, out):
     b = bands(result)
-    row = b["names"].index("sensor_mean") if "sensor_mean" in b["names"] else 0
+    row = mean_row_index(b["names"])
     np.savetxt(out, np.c_[b["f"], b["psd"][row]], delimiter=",", header="frequency_hz,psd", comments="")
     return out
 
@@ -110,8 +113,20 @@ def coverage(models, measured):
         gap = np.where(ref >= level, (ref - level) / np.maximum(hi - level, 1e-12),
                        (level - ref) / np.maximum(level - lo, 1e-12))
         gaps.append(gap[ok])
+    low, high = over_tables(lambda pick: np.concatenate([hits[i] for i in pick]).mean(), len(hits))
     hits, gaps = np.concatenate(hits), np.concatenate(gaps)
-    return float(hits.mean()), float(1.0 / np.quantile(gaps, 0.95)), int(hits.size)
+    return float(hits.mean()), float(1.0 / np.quantile(gaps, 0.95)), int(hits.size), (low, high)
+
+
+def over_tables(share, n, draws=2000):
+    """The 95 % interval of a figure over the draw of the n tables themselves: the comparisons share their
+    tables (each model meets every measurement), so they are not independent and a binomial interval over
+    them is too narrow. The tables are drawn again with replacement (a pigeonhole bootstrap, Owen 2007) and
+    share(pick) recomputed; the stream is Philox (Random123's), keyed by the figure's draw count alone."""
+    stream = np.random.Generator(np.random.Philox(key=draws))
+    found = [share(stream.integers(0, n, n)) for _ in range(draws)]
+    found = [x for x in found if np.isfinite(x)]
+    return tuple(float(x) for x in np.quantile(found, [0.025, 0.975]))
 
 
 def verdicts(binary, model, measurements, rolls):
@@ -130,10 +145,29 @@ def verdicts(binary, model, measurements, rolls):
     return out
 
 
+def compared(binary, model, t, seeds, tables, rolls):
+    """compare's answers for model t against every other table's measurement, keyed (t, u)."""
+    others = [u for u in seeds if u != t]
+    return dict(zip(((t, u) for u in others), verdicts(binary, model, [tables[u] for u in others], rolls)))
+
+
 def rejections(found):
-    """compare's answers (p, share inside) summed up: the share rejected at 0.05 and the median p."""
-    pv = np.array([x[0] if x[0] is not None else np.nan for x in found], dtype=float)
-    return float(np.mean(pv < 0.05)), float(np.nanmedian(pv))
+    """compare's answers {(model table, measurement table): (p, share inside)} summed up: the share rejected at
+    0.05, the median p, and the share's 95 % interval over the tables (over_tables: a pair of draws of one
+    table is no comparison)."""
+    pv = np.array([x[0] if x[0] is not None else np.nan for x in found.values()], dtype=float)
+    tables = sorted({t for key in found for t in key})
+    index = {t: i for i, t in enumerate(tables)}
+    rejected = np.full((len(tables), len(tables)), np.nan)
+    for (t, u), x in found.items():
+        rejected[index[t], index[u]] = float(x[0] is not None and x[0] < 0.05)
+
+    def share(pick):
+        chosen = rejected[np.ix_(pick, pick)][pick[:, None] != pick[None, :]]
+        chosen = chosen[np.isfinite(chosen)]
+        return chosen.mean() if chosen.size else np.nan
+
+    return float(np.mean(pv < 0.05)), float(np.nanmedian(pv)), over_tables(share, len(tables))
 
 
 def noise_corrected(paths):
@@ -172,17 +206,57 @@ def noise_corrected(paths):
     return out
 
 
+def tables_text(interval):
+    return f"95 % over the tables {interval[0]:.3f}-{interval[1]:.3f}"
+
+
 def variance_split(models, measured):
     """Where the scatter of a measurement about the model comes from (sensor mean, dB², mean over bands):
     between tables (the measurements' variance over table seeds) and within one table (the variance of model
     minus measurement on the same table: the K and M realisations' own noise). The first is what the table
     term must carry; its share bounds the power any test can have against a change of that size."""
     def mean_row(b):
-        return b["level"][b["names"].index("sensor_mean") if "sensor_mean" in b["names"] else 0]
+        return b["level"][mean_row_index(b["names"])]
 
     meas = np.array([mean_row(m) for m in measured.values()])
     diff = np.array([mean_row(models[t]) - mean_row(measured[t]) for t in measured])
     return float(np.nanmean(np.nanvar(meas, axis=0, ddof=1))), float(np.nanmean(np.nanvar(diff, axis=0, ddof=1)))
+
+
+def table_variance_ratio(own, measured, rolls):
+    """The table term against the variance it stands for (sensor mean; None where the runs have no table term):
+    per band, the band-level variance between tables, measured (the variance of the measurements over table
+    seeds, less their own realisations' noise), over the jackknife's estimate (the models' table variance,
+    averaged over the models); the mean over bands, and its 95 % interval over the tables. The noise is the
+    variance of model minus measurement on one table, each at a study seed of its own (the table cancels),
+    split between the two in the ratio of their realisation counts (a band's noise goes as one over its count).
+    Over 1: the term is too small for new surfaces; under 1: too large."""
+    def model_row(path):
+        with h5py.File(path, "r") as f:
+            if "bands/table_std_db" not in f:
+                return None
+            row = mean_row_index([n.decode() if isinstance(n, bytes) else n for n in f["bands/sensor"][:]])
+            return f["bands/level_db"][row], f["bands/table_std_db"][row] ** 2, float(f["psd"].attrs["realisations"][0])
+
+    models = {t: model_row(path) for t, path in own.items()}
+    tables = sorted(t for t in models if t in measured)
+    if len(tables) < 3 or any(models[t] is None for t in tables):
+        return None
+    level, table_variance, k = (np.array([models[t][i] for t in tables]) for i in range(3))
+    meas = np.array([measured[t]["level"][mean_row_index(measured[t]["names"])] for t in tables])
+
+    def ratio(pick):
+        if len(set(pick.tolist())) < 3:
+            return np.nan
+        noise = np.var(level[pick] - meas[pick], axis=0, ddof=1) * np.mean(k[pick]) / (np.mean(k[pick]) + rolls)
+        between = np.var(meas[pick], axis=0, ddof=1) - noise
+        return float(np.mean(between / np.mean(table_variance[pick], axis=0)))
+
+    return ratio(np.arange(len(tables))), over_tables(ratio, len(tables))
+
+
+def mean_row_index(names):
+    return names.index("sensor_mean") if "sensor_mean" in names else 0
 
 
 def pair(binary, study, work, sets, k):
@@ -235,44 +309,54 @@ def main():
         print(f"measurement {t}", file=sys.stderr)
     models = {t: bands(run_study(a.binary, study, work / f"model-{t}.h5", sets + [f"stiffness.table_seed={t}"]))
               for t in seeds}
-    cov, width, n_bands = coverage(models, measured)
+    cov, width, n_bands, cov_interval = coverage(models, measured)
     cases = [("correct model (size)", []), ("loss factor x 2", ["beam.loss_factor=0.02"]),
              ("contact damping x 2", ["contact.damping=200"])]
     between, within = variance_split(models, measured)
-    rows = [["coverage of other tables' mean", f"{cov:.3f}", f"width ratio {width:.2f}", n_bands]]
-    data = {"coverage": cov, "width_ratio": width, "variance_between_tables_db2": between,
+    rows = [["coverage of other tables' mean", f"{cov:.3f}", f"width ratio {width:.2f}; {tables_text(cov_interval)}",
+             n_bands]]
+    data = {"coverage": cov, "coverage_interval": cov_interval, "width_ratio": width,
+            "variance_between_tables_db2": between,
             "variance_same_table_db2": within, "cases": {}}
     corrected = noise_corrected({t: work / f"model-{t}.h5" for t in seeds})
     if corrected:  # the count: the band intervals whose realisations-only width could be recovered
-        cov_n, width_n, n_n = coverage(corrected, measured)
+        cov_n, width_n, n_n, _ = coverage(corrected, measured)
         rows.append(["the same widened by max(V_J - n, 0): the table term without the sub-table runs' own noise "
                      "(not what run does)", f"{cov_n:.3f}", f"width ratio {width_n:.2f}", n_n])
         data["noise_corrected"] = {"coverage": cov_n, "width_ratio": width_n, "bands": n_n}
     rows.append(["band-level variance between tables (dB²)", f"{between:.3g}",
                  f"same table, model - measurement: {within:.3g} dB²", len(measured)])
     for name, extra in cases:
-        found = []
+        found = {}
         for t in seeds[:a.models]:
             model = work / f"model-{t}.h5" if not extra else run_study(
                 a.binary, study, work / f"model-{t}-{'-'.join(extra)}.h5", sets + [f"stiffness.table_seed={t}"] + extra)
-            found += verdicts(a.binary, model, [tables[u] for u in seeds if u != t], a.rolls)
-        rejected, median_p = rejections(found)
-        rows.append([name, f"{rejected:.3f}", f"median p {median_p:.3g}", len(found)])
-        data["cases"][name] = {"rejected": rejected, "median_p": median_p,
-                               "bands_inside": float(np.mean([x[1] for x in found])), "comparisons": len(found)}
+            found.update(compared(a.binary, model, t, seeds, tables, a.rolls))
+        rejected, median_p, interval = rejections(found)
+        rows.append([name, f"{rejected:.3f}", f"median p {median_p:.3g}; {tables_text(interval)}", len(found)])
+        data["cases"][name] = {"rejected": rejected, "median_p": median_p, "interval": interval,
+                               "bands_inside": float(np.mean([x[1] for x in found.values()])),
+                               "comparisons": len(found)}
         print(f"{name}: rejected {rejected:.3f}", file=sys.stderr)
     own = {t: work / f"model-{t}-own-seed.h5" for t in seeds}
     own_bands = {t: bands(run_study(a.binary, study, own[t], sets + [f"stiffness.table_seed={t}",
                                                                       f"study.seed={7000 + t}"])) for t in seeds}
-    cov_o, width_o, n_o = coverage(own_bands, measured)
-    rows.append(["coverage, each model at a study seed of its own", f"{cov_o:.3f}", f"width ratio {width_o:.2f}", n_o])
-    found = sum((verdicts(a.binary, own[t], [tables[u] for u in seeds if u != t], a.rolls)
-                 for t in seeds[:a.models]), [])
-    rejected, median_p = rejections(found)
+    cov_o, width_o, n_o, cov_o_interval = coverage(own_bands, measured)
+    rows.append(["coverage, each model at a study seed of its own", f"{cov_o:.3f}",
+                 f"width ratio {width_o:.2f}; {tables_text(cov_o_interval)}", n_o])
+    ratio = table_variance_ratio(own, measured, a.rolls)
+    if ratio:
+        rows.append(["table variance between tables over the jackknife's (sensor mean, mean over bands; each model at "
+                     "its own seed)", f"{ratio[0]:.2f}", tables_text(ratio[1]), len(own)])
+        data["own_seeds_table_variance_ratio"] = {"ratio": ratio[0], "interval": ratio[1]}
+    found = {}
+    for t in seeds[:a.models]:
+        found.update(compared(a.binary, own[t], t, seeds, tables, a.rolls))
+    rejected, median_p, interval = rejections(found)
     rows.append(["correct model (size), each at a study seed of its own", f"{rejected:.3f}",
-                 f"median p {median_p:.3g}", len(found)])
-    data["own_seeds"] = {"coverage": cov_o, "width_ratio": width_o, "rejected": rejected, "median_p": median_p,
-                         "comparisons": len(found)}
+                 f"median p {median_p:.3g}; {tables_text(interval)}", len(found)])
+    data["own_seeds"] = {"coverage": cov_o, "coverage_interval": cov_o_interval, "width_ratio": width_o,
+                         "rejected": rejected, "median_p": median_p, "interval": interval, "comparisons": len(found)}
     print(f"own seeds: coverage {cov_o:.3f}, rejected {rejected:.3f}", file=sys.stderr)
     if a.pair:
         agree, median_d, median_h, n = pair(a.binary, study, work, sets, a.pair)

@@ -24,7 +24,7 @@ PAGES = {
     "docs/validation/contact-filter.md": ("The other figures from here on (run times", {}),
     "docs/howto/profiles-to-table.md": (None, {"5 %": "the threshold beyond which a curve fit's error is flagged"}),
     "docs/validation/benchmarks.md": (None, {"1e-3": "[blocked_force] answer_tolerance the bench script sets (input)"}),
-    "docs/validation/accuracy.md": ("## Measured once, not re-run", {}),
+    "docs/validation/accuracy.md": ("## Measured once, not re-run", {"95 %": "the intervals' nominal level"}),
     "docs/validation/pictures.md": (None, {"95 %": "the intervals' nominal level"}),
     "README.md": (None, {"95 %": "the intervals' nominal level", "10 dB": "compare's --noise-margin default"}),
     "docs/tutorials/first-study.md": (None, {"95 %": "the intervals' nominal level"}),
