@@ -191,6 +191,31 @@ def record_script_arguments(parser):
     return a, binary
 
 
+def generated_block_owner(begin, title):
+    """The pages a script writes a generated block of: a regular UTF-8 file that holds the block's begin
+    marker, or the page before its first block (its title line starts with `title`)."""
+    def own(target):
+        try:
+            text = Path(target).read_text()
+        except (OSError, UnicodeDecodeError):
+            return False
+        return begin in text or text.startswith(title)
+    return own
+
+
+def splice_block(path, lines, begin, end, title):
+    """Puts the block `lines` (its first line the begin marker, its last the end marker) in place of the
+    page's block between those markers, or at the page's end when it has none; written as replace_text
+    writes, to a page generated_block_owner(begin, title) accepts."""
+    doc = Path(path).read_text()
+    text = "\n".join(lines) + "\n"
+    if begin in doc:
+        doc = doc[:doc.index(begin)] + text + doc[doc.index(end) + len(end) + 1:]
+    else:
+        doc = doc.rstrip("\n") + "\n\n" + text
+    replace_text(path, doc, own=generated_block_owner(begin, title))
+
+
 def replace_text(path, text, own=lambda target: True):
     """Writes `text` to `path` through a temporary and a rename: the old file stays whole if the write
     fails; a symbolic link's target is replaced."""

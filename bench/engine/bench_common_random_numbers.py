@@ -95,19 +95,12 @@ def measure(binary, work):
     return rows, data
 
 
-def is_sweeps_page(target):
-    """The how-to this script writes a section of: a regular UTF-8 file that holds its markers, or the
-    page before its first section (its title)."""
-    try:
-        text = Path(target).read_text()
-    except (OSError, UnicodeDecodeError):
-        return False
-    return BEGIN in text or text.startswith("# Sweeping")
+TITLE = "# Sweeping"  # the page's title: the page before its first block
 
 
 def check_doc():
     """Before any work: the page is one this script may rewrite (else one line, no measurement lost)."""
-    bench_record.check_target(DOC, is_sweeps_page)
+    bench_record.check_target(DOC, bench_record.generated_block_owner(BEGIN, TITLE))
 
 
 def render():
@@ -138,13 +131,7 @@ def render():
               "`rollspec fit` finds this out at its start and smooths its likelihood instead (docs/howto/fit.md).",
               "", END]
     check_doc()
-    doc = DOC.read_text()
-    text = "\n".join(lines) + "\n"
-    if BEGIN in doc:
-        doc = doc[:doc.index(BEGIN)] + text + doc[doc.index(END) + len(END) + 1:]
-    else:
-        doc = doc.rstrip("\n") + "\n\n" + text
-    bench_record.replace_text(DOC, doc, own=is_sweeps_page)
+    bench_record.splice_block(DOC, lines, BEGIN, END, TITLE)
     print(f"wrote {DOC}")
 
 

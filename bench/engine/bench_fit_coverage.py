@@ -228,13 +228,7 @@ def render():
               "against the scatter of the ln estimates (1: the intervals are as wide as the estimates scatter). "
               "A fit smoothed its likelihood when its start's probe found common random numbers did not hold "
               "(kernels/spectral D-27i).", "", END]
-    doc = DOC.read_text()
-    text = "\n".join(lines) + "\n"
-    if BEGIN in doc:
-        doc = doc[:doc.index(BEGIN)] + text + doc[doc.index(END) + len(END) + 1:]
-    else:
-        doc = doc.rstrip("\n") + "\n\n" + text
-    DOC.write_text(doc)
+    bench_record.splice_block(DOC, lines, BEGIN, END, "# Fitting")
     print(f"wrote {DOC}")
     return 0
 

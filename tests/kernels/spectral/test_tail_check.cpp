@@ -1,38 +1,21 @@
 // Are K realisations enough for a band's interval? (kernels/spectral D-29.)
 #include <doctest/doctest.h>
 
-#include <Random123/philox.h>
-#include <Random123/u01fixedpt.h>
-
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "kernels/spectral/tail_check.hpp"
+#include "philox_draws.hpp"
 
 using namespace rollspec::spectral;
 
 namespace {
 
-class Uniforms {
- public:
-  explicit Uniforms(std::uint64_t key) : key_{{key, 0}} {}
-  double next() {
-    if (used_ == 4) {
-      block_ = gen_({{counter_++, 0, 0, 0}}, key_);
-      used_ = 0;
-    }
-    return u01fixedpt_open_open_64_double(block_[used_++]);
-  }
-  double normal() { return std::sqrt(-2.0 * std::log(next())) * std::cos(2.0 * M_PI * next()); }
+using testing::PhiloxUniforms;
 
- private:
-  r123::Philox4x64 gen_;
-  r123::Philox4x64::key_type key_;
-  r123::Philox4x64::ctr_type block_{};
-  std::uint64_t counter_ = 0;
-  int used_ = 4;
-};
+// One standard normal from two uniforms (Box-Muller's cosine branch).
+double normal(PhiloxUniforms& u) { return std::sqrt(-2.0 * std::log(u.next())) * std::cos(2.0 * M_PI * u.next()); }
 
 // The engine's path: raw power sums of y.
 TailCheck from_sums(const std::vector<double>& y) {
@@ -74,10 +57,10 @@ TEST_CASE("symmetric and left-skewed logs ask for nothing; no scatter or K < 3 i
 }
 
 TEST_CASE("raw sums agree with the two-pass reference on random logs") {
-  Uniforms u(11);
+  PhiloxUniforms u(11);
   for (int trial = 0; trial < 50; ++trial) {
     std::vector<double> y(8 + static_cast<std::size_t>(trial) * 3);
-    for (double& v : y) v = -15.0 + 0.8 * u.normal() + (u.next() < 0.1 ? 2.0 : 0.0);
+    for (double& v : y) v = -15.0 + 0.8 * normal(u) + (u.next() < 0.1 ? 2.0 : 0.0);
     const TailCheck a = from_sums(y), b = tail_check_reference(y.data(), y.size());
     CHECK(a.skewness == doctest::Approx(b.skewness).epsilon(1e-8).scale(1.0));
     CHECK(a.standard_error == b.standard_error);
@@ -87,13 +70,13 @@ TEST_CASE("raw sums agree with the two-pass reference on random logs") {
 // Simulated (D-29 table): lognormal band values (normal logs) rarely warn at K = 25; a mixture in
 // which 10 % of the realisations carry 10 times the power (D-21's under-covered case) mostly does.
 TEST_CASE("warning rates: lognormal realisations against a 10 % x 10 mixture, K = 25") {
-  Uniforms u(2026);
+  PhiloxUniforms u(2026);
   const int trials = 2000, K = 25;
   int warn_normal = 0, warn_mixture = 0;
   std::vector<double> y(K), z(K);
   for (int t = 0; t < trials; ++t) {
     for (int k = 0; k < K; ++k) {
-      y[static_cast<std::size_t>(k)] = 1.5 * u.normal();
+      y[static_cast<std::size_t>(k)] = 1.5 * normal(u);
       // Gamma(20) band values (a sum of 20 exponentials) times 10 with probability 0.1.
       double g = 0.0;
       for (int i = 0; i < 20; ++i) g -= std::log(u.next());
