@@ -1,5 +1,7 @@
 #include "kernels/beam/contact_law.hpp"
 
+#include "kernels/beam/bracketed_newton.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -105,20 +107,9 @@ double ContactModel::static_compression(double load, double f0) const {
     hi *= 2.0;
     if (i == 199) throw std::runtime_error("ContactModel: the contact law cannot carry the static load");
   }
-  double x = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
-    elastic(x, p, k);
-    const double r = p - load;
-    if (r > 0.0)
-      hi = x;
-    else
-      lo = x;
-    double xn = k > 0.0 ? x - r / k : 0.5 * (lo + hi);
-    if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
-    if (std::abs(xn - x) <= 1e-15 * x || hi - lo <= 1e-15 * hi) return xn;
-    x = xn;
-  }
-  return x;
+  return bracketed_newton(
+      lo, hi, load, [this](double x, double& px, double& kx) { elastic(x, px, kx); },
+      [](double x, double) { return x; });
 }
 
 }  // namespace rollspec::beam

@@ -1,5 +1,7 @@
 #include "kernels/beam/path_contact_table.hpp"
 
+#include "kernels/beam/bracketed_newton.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -108,20 +110,10 @@ double PathContactTable::static_approach(double load, double xi) const {
     hi += std::max(hi - first_contact(xi), 1e-9);
     evaluate(hi, xi, p, k);
   }
-  double x = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
-    evaluate(x, xi, p, k);
-    const double r = p - load;
-    if (r > 0.0)
-      hi = x;
-    else
-      lo = x;
-    double xn = k > 0.0 ? x - r / k : 0.5 * (lo + hi);
-    if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
-    if (std::fabs(xn - x) <= 1e-15 * std::fabs(hi - first_contact(xi)) || hi - lo <= 1e-15 * std::fabs(hi)) return xn;
-    x = xn;
-  }
-  return x;
+  const double first = first_contact(xi);
+  return bracketed_newton(
+      lo, hi, load, [&](double x, double& px, double& kx) { evaluate(x, xi, px, kx); },
+      [first](double, double top) { return std::fabs(top - first); });
 }
 
 double path_table_static_approach(const PathContactTable& table, double load) {
