@@ -17,6 +17,7 @@
 #include "kernels/contact/geometry.hpp"
 #include "kernels/contact/hertz.hpp"
 #include "kernels/contact/path_table.hpp"
+#include "../contact/rough_fixture.hpp"
 
 using namespace rollspec;
 
@@ -41,18 +42,6 @@ struct StripCase {
     for (std::size_t k = 0; k < count; ++k) positions.push_back((first + static_cast<double>(k * step)) * dx);
   }
 };
-
-std::vector<double> wavy(const contact::Grid& g, double amplitude, double wavelength) {
-  std::vector<double> h(g.size());
-  const double q = 2.0 * M_PI / wavelength;
-  for (std::size_t iy = 0; iy < g.ny; ++iy)
-    for (std::size_t ix = 0; ix < g.nx; ++ix) {
-      const double x = g.x(ix), y = g.y(iy);
-      h[iy * g.nx + ix] = amplitude * (0.6 * std::cos(q * x + 0.3) * std::cos(1.3 * q * y) +
-                                       0.4 * std::sin(2.1 * q * (x + 0.5 * y) + 1.0));
-    }
-  return h;
-}
 
 contact::SolverOptions tight() {
   contact::SolverOptions o;
@@ -111,7 +100,7 @@ TEST_CASE("path table on a rough strip: nodes equal direct whole-strip solves, i
   // contact off the mean plane and varying along the path.
   StripCase c(8.0, 57, 7, 2);  // positions a/4 apart (B43)
   const double dh = hertz_approach(kW), a = std::sqrt(kR * dh);
-  const std::vector<double> h = wavy(c.strip, 0.3 * dh, 0.5 * a);
+  const std::vector<double> h = contact::test::wavy_heights(c.strip, 0.3 * dh, 0.5 * a);
   contact::SolverOptions opt = tight();
   opt.hardness = 5e9;  // elastic-plastic, as the studies
   const contact::PathTable t =
@@ -258,7 +247,7 @@ TEST_CASE("law = path on a Hertz table shifted by a wave starts like law = hertz
 TEST_CASE("path table: the same bits on 1 and 2 threads, the extension rows (B43a) included") {
   StripCase c(8.0, 57, 3, 2);
   const double dh = hertz_approach(kW), a = std::sqrt(kR * dh);
-  const std::vector<double> h = wavy(c.strip, 0.3 * dh, 0.5 * a);
+  const std::vector<double> h = contact::test::wavy_heights(c.strip, 0.3 * dh, 0.5 * a);
   contact::SolverOptions opt = tight();
   opt.hardness = 5e9;
   std::vector<contact::PathTable> t;
