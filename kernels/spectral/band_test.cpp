@@ -1,5 +1,7 @@
 #include "kernels/spectral/band_test.hpp"
 
+#include "kernels/spectral/gauss_jordan.hpp"
+
 #include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <stdexcept>
@@ -155,24 +157,8 @@ double band_test_t2_reference(const double* measured_log, const double* mean, co
   for (std::size_t b = 0; b < p; ++b)
     for (std::size_t c = 0; c < p; ++c)
       v[b * p + c] = covariance[b * p + c] * std::sqrt(vb[b] * vb[c] / (covariance[b * p + b] * covariance[c * p + c]));
-  std::vector<double> inv(p * p, 0.0);
-  for (std::size_t i = 0; i < p; ++i) inv[i * p + i] = 1.0;
-  for (std::size_t c = 0; c < p; ++c) {  // Gauss-Jordan with partial pivoting
-    std::size_t piv = c;
-    for (std::size_t r = c + 1; r < p; ++r)
-      if (std::fabs(v[r * p + c]) > std::fabs(v[piv * p + c])) piv = r;
-    for (std::size_t k = 0; k < p; ++k) {
-      std::swap(v[c * p + k], v[piv * p + k]);
-      std::swap(inv[c * p + k], inv[piv * p + k]);
-    }
-    const double a = v[c * p + c];
-    for (std::size_t k = 0; k < p; ++k) v[c * p + k] /= a, inv[c * p + k] /= a;
-    for (std::size_t r = 0; r < p; ++r) {
-      if (r == c) continue;
-      const double f = v[r * p + c];
-      for (std::size_t k = 0; k < p; ++k) v[r * p + k] -= f * v[c * p + k], inv[r * p + k] -= f * inv[c * p + k];
-    }
-  }
+  std::vector<double> inv;
+  if (!gauss_jordan_inverse(v, p, inv)) return NAN;  // a singular V has no T^2
   double t2 = 0.0;
   for (std::size_t i = 0; i < p; ++i)
     for (std::size_t j = 0; j < p; ++j) t2 += d[i] * inv[i * p + j] * d[j];

@@ -1,5 +1,7 @@
 #include "kernels/spectral/response_surface.hpp"
 
+#include "kernels/spectral/gauss_jordan.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <utility>
@@ -98,10 +100,9 @@ ResponseSurface fit_response_surface_reference(const std::vector<double>& u, con
   ResponseSurface s = shell(keys, bands, runs, centre, half_width, y);
   const std::size_t q = s.terms;
   const Matrix phi = design(u, keys, centre, half_width, runs, q);
-  // [Phi^T Phi | I] reduced to [I | (Phi^T Phi)^{-1}] by Gauss-Jordan with partial pivoting.
-  std::vector<double> a(q * q), inv(q * q, 0.0);
-  for (std::size_t i = 0; i < q; ++i) {
-    inv[i * q + i] = 1.0;
+  // Phi^T Phi summed plainly, then inverted by Gauss-Jordan with partial pivoting.
+  std::vector<double> a(q * q), inv;
+  for (std::size_t i = 0; i < q; ++i)
     for (std::size_t k = 0; k < q; ++k) {
       double sum = 0.0;
       for (std::size_t j = 0; j < runs; ++j)
@@ -109,23 +110,8 @@ ResponseSurface fit_response_surface_reference(const std::vector<double>& u, con
                phi(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(k));
       a[i * q + k] = sum;
     }
-  }
-  for (std::size_t c = 0; c < q; ++c) {
-    std::size_t piv = c;
-    for (std::size_t r = c + 1; r < q; ++r)
-      if (std::fabs(a[r * q + c]) > std::fabs(a[piv * q + c])) piv = r;
-    if (!(std::fabs(a[piv * q + c]) > 0.0))
-      throw std::invalid_argument("response surface: the design does not determine the quadratic");
-    for (std::size_t k = 0; k < q; ++k)
-      std::swap(a[c * q + k], a[piv * q + k]), std::swap(inv[c * q + k], inv[piv * q + k]);
-    const double d = a[c * q + c];
-    for (std::size_t k = 0; k < q; ++k) a[c * q + k] /= d, inv[c * q + k] /= d;
-    for (std::size_t r = 0; r < q; ++r) {
-      if (r == c) continue;
-      const double f = a[r * q + c];
-      for (std::size_t k = 0; k < q; ++k) a[r * q + k] -= f * a[c * q + k], inv[r * q + k] -= f * inv[c * q + k];
-    }
-  }
+  if (!gauss_jordan_inverse(std::move(a), q, inv))
+    throw std::invalid_argument("response surface: the design does not determine the quadratic");
   s.gram_inverse = inv;
   s.coefficients.assign(q * bands, 0.0);
   for (std::size_t t = 0; t < q; ++t)
