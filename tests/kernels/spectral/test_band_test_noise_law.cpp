@@ -13,6 +13,7 @@
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/band_test_table.hpp"
 #include "philox_draws.hpp"
+#include "sample_covariance.hpp"
 
 using namespace rollspec::spectral;
 
@@ -86,13 +87,7 @@ TEST_CASE("D-33f: with noise-dominated bands the F law is conservative, the boot
   testing::PhiloxNormals z(20261130);
   std::size_t rejected_f = 0, rejected_b = 0;
   for (std::size_t trial = 0; trial < trials; ++trial) {
-    Eigen::MatrixXd x(p, K - 1);
-    for (Eigen::Index c = 0; c < x.cols(); ++c) {
-      Eigen::VectorXd e(p);
-      for (std::size_t b = 0; b < p; ++b) e(Eigen::Index(b)) = z.next();
-      x.col(c) = ls * e;
-    }
-    const RowMatrix s_hat = x * x.transpose() / double(K - 1);
+    const RowMatrix s_hat = testing::sample_covariance(ls, K - 1, [&] { return z.next(); });
     Eigen::VectorXd e(p);
     for (std::size_t b = 0; b < p; ++b) e(Eigen::Index(b)) = z.next();
     const Eigen::VectorXd dev = lv * e;

@@ -11,6 +11,7 @@
 #include "kernels/spectral/band_test_table.hpp"
 #include "kernels/spectral/covariance_shrinkage.hpp"
 #include "philox_draws.hpp"
+#include "sample_covariance.hpp"
 
 using namespace rollspec::spectral;
 
@@ -122,13 +123,7 @@ TEST_CASE("D-31: size on simulated measurements from other tables" * doctest::te
       k += 2;
       return std::sqrt(-2.0 * std::log(a)) * std::cos(2.0 * M_PI * b);
     };
-    Eigen::MatrixXd x(p, K - 1);
-    for (Eigen::Index c = 0; c < x.cols(); ++c) {
-      Eigen::VectorXd e(p);
-      for (std::size_t b = 0; b < p; ++b) e(b) = z();
-      x.col(c) = ls * e;
-    }
-    const Eigen::MatrixXd s_hat = x * x.transpose() / double(K - 1);
+    const Eigen::MatrixXd s_hat = testing::sample_covariance(ls, K - 1, z);
     Eigen::MatrixXd units(p, N);
     for (std::size_t i = 0; i < N; ++i) {
       Eigen::Vector3d e(z(), z(), z());
@@ -189,15 +184,10 @@ TEST_CASE("D-31c: size with independent bands, against the rank-limited covarian
       k += 2;
       return std::sqrt(-2.0 * std::log(a)) * std::cos(2.0 * M_PI * b);
     };
-    Eigen::MatrixXd x(p, K - 1), units(p, N);
-    for (Eigen::Index c = 0; c < x.cols(); ++c) {
-      Eigen::VectorXd e(p);
-      for (std::size_t b = 0; b < p; ++b) e(b) = z();
-      x.col(c) = ls * e;
-    }
+    const Eigen::MatrixXd s_hat = testing::sample_covariance(ls, K - 1, z);
+    Eigen::MatrixXd units(p, N);
     for (std::size_t i = 0; i < N; ++i)
       for (std::size_t b = 0; b < p; ++b) units(b, i) = std::sqrt(double(N) * sig(b)) * z();
-    const Eigen::MatrixXd s_hat = x * x.transpose() / double(K - 1);
     const Eigen::MatrixXd dev = units.colwise() - units.rowwise().mean();
     const Eigen::MatrixXd t_hat = dev * dev.transpose() / (double(N) * double(N - 1));
     std::vector<double> d, v;
@@ -256,18 +246,13 @@ TEST_CASE("D-31e: size with a common and an own table error, raw and shrunk" * d
   std::size_t rejected_raw = 0, rejected_shrunk = 0;
   double lambda_mean = 0.0;
   for (std::size_t trial = 0; trial < trials; ++trial) {
-    Eigen::MatrixXd x(p, K - 1), units(p, N);
-    for (Eigen::Index c = 0; c < x.cols(); ++c) {
-      Eigen::VectorXd e(p);
-      for (std::size_t b = 0; b < p; ++b) e(b) = z.next();
-      x.col(c) = ls * e;
-    }
+    const Eigen::MatrixXd s_hat = testing::sample_covariance(ls, K - 1, [&] { return z.next(); });
+    Eigen::MatrixXd units(p, N);
     for (std::size_t i = 0; i < N; ++i) {
       const double c = z.next();
       for (std::size_t b = 0; b < p; ++b)
         units(b, i) = std::sqrt(double(N)) * (common(b) * c + own(b) * z.next());  // the table: the mean of N
     }
-    const Eigen::MatrixXd s_hat = x * x.transpose() / double(K - 1);
     const Eigen::MatrixXd dev = units.colwise() - units.rowwise().mean();
     const Eigen::MatrixXd t_hat = dev * dev.transpose() / (double(N) * double(N - 1));
     // units is p x N column-major: unit i's p bands are contiguous, as shrinkage_intensity reads them.

@@ -14,6 +14,7 @@
 #include "kernels/spectral/band_test.hpp"
 #include "kernels/spectral/band_test_table.hpp"
 #include "philox_draws.hpp"
+#include "sample_covariance.hpp"
 #include "kernels/spectral/response_surface.hpp"
 
 using namespace rollspec::spectral;
@@ -151,13 +152,7 @@ TEST_CASE("D-27j: the fitted test's size with the key fitted to the measurement"
   const TableTerm none{nullptr, 0.0, 0.0};
   for (std::size_t t = 0; t < trials; ++t) {
     Normals z{23, t};
-    Eigen::MatrixXd x(p, K - 1);
-    for (Eigen::Index c = 0; c < x.cols(); ++c) {
-      Eigen::VectorXd e(p);
-      for (std::size_t b = 0; b < p; ++b) e(b) = z();
-      x.col(c) = ls * e;
-    }
-    const Eigen::MatrixXd s_hat = x * x.transpose() / double(K - 1);
+    const Eigen::MatrixXd s_hat = testing::sample_covariance(ls, K - 1, z);
     std::vector<double> sh(p * p), y(p);
     for (std::size_t a = 0; a < p; ++a)
       for (std::size_t b = 0; b < p; ++b) sh[a * p + b] = s_hat(a, b);
