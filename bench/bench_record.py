@@ -46,7 +46,7 @@ REQUIRED = {"title": str, "command": str, "date": str, "machine": dict, "builds"
 
 
 class RecordError(ValueError):
-    pass
+    exit_code = 73  # EX_CANTCREAT: a script that lets it through ends in one line (script_main), not "internal error"
 
 
 def command_line(argv):
@@ -206,14 +206,19 @@ def generated_block_owner(begin, title):
 def splice_block(path, lines, begin, end, title):
     """Puts the block `lines` (its first line the begin marker, its last the end marker) in place of the
     page's block between those markers, or at the page's end when it has none; written as replace_text
-    writes, to a page generated_block_owner(begin, title) accepts."""
-    doc = Path(path).read_text()
+    writes, to a page generated_block_owner(begin, title) accepts. The page is checked before it is read (a
+    FIFO or directory at its name is refused, not waited on)."""
+    own = generated_block_owner(begin, title)
+    doc = Path(check_target(path, own)).read_text()
     text = "\n".join(lines) + "\n"
     if begin in doc:
-        doc = doc[:doc.index(begin)] + text + doc[doc.index(end) + len(end) + 1:]
+        if end not in doc[doc.index(begin):]:
+            raise RecordError(f"{path}: the block's begin marker has no end marker {end!r} after it; allowed: a page "
+                              "whose generated block is whole (restore the end marker)")
+        doc = doc[:doc.index(begin)] + text + doc[doc.index(end, doc.index(begin)) + len(end) + 1:]
     else:
         doc = doc.rstrip("\n") + "\n\n" + text
-    replace_text(path, doc, own=generated_block_owner(begin, title))
+    replace_text(path, doc, own=own)
 
 
 def replace_text(path, text, own=lambda target: True):
