@@ -159,6 +159,28 @@ void ExactStepIntegrator::fold(long k, const double* phi0, const double* phi1, c
   fs = total_rate_ ? -lane_dot3(slope1, l.p.data(), phi0, padded_) / m : 0.0;
 }
 
+void ExactStepIntegrator::record_sample(BallOnBeamResult& out, std::size_t j, const SampleState& x) const {
+  const ModalBeam& b = model_.beam;
+  const int n = b.modes();
+  const double m = b.modal_mass(), m2 = model_.ball.mass, g = model_.ball.gravity;
+  for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
+    const double* ps = sensor_phi_.data() + s * padded_;
+    double a = 0.0;
+    for (int i = 0; i < n; ++i) {  // exact q_n'' from (D-9)
+      const double w = b.omega(i);
+      a += ps[i] * (-x.phi[i] * x.f / m - 2.0 * b.zeta(i) * w * x.dq[i] - w * w * x.q[i]);
+    }
+    out.sensor_acceleration[s][j] = a;
+  }
+  out.contact_force[j] = x.f;
+  out.ball_acceleration[j] = x.f / m2 - g;
+  out.compression[j] = x.delta;
+  out.contact_deflection[j] = x.delta - x.hx + x.w2;
+  out.ball_displacement[j] = x.w2;
+  out.contact_position[j] = x.xi;
+  out.loss_of_contact[j] = x.contact ? 0 : 1;
+}
+
 BallOnBeamResult ExactStepIntegrator::run(const Realisation& r) const {
   BallOnBeamResult out;
   run(r, out);
@@ -180,22 +202,7 @@ void ExactStepIntegrator::run_reference(const Realisation& r, BallOnBeamResult& 
 
   // Outputs at the current state (phi = shapes at the current position).
   auto record = [&](std::size_t j, double xi, double delta, double hx, bool contact) {
-    for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
-      const double* ps = sensor_phi_.data() + s * padded_;
-      double a = 0.0;
-      for (int i = 0; i < n; ++i) {  // exact q_n'' from (D-9)
-        const double w = b.omega(i);
-        a += ps[i] * (-phi[i] * f / m - 2.0 * b.zeta(i) * w * dq[i] - w * w * q[i]);
-      }
-      out.sensor_acceleration[s][j] = a;
-    }
-    out.contact_force[j] = f;
-    out.ball_acceleration[j] = f / m2 - g;
-    out.compression[j] = delta;
-    out.contact_deflection[j] = delta - hx + w2;
-    out.ball_displacement[j] = w2;
-    out.contact_position[j] = xi;
-    out.loss_of_contact[j] = contact ? 0 : 1;
+    record_sample(out, j, {phi, q.data(), dq.data(), f, xi, delta, hx, w2, contact});
   };
   // (B38) instantaneous contact-patch average of the roughness, width from the last compression
   const bool patch = model_.patch_radius > 0.0 && !r.roughness.empty();
@@ -309,7 +316,7 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
     phi = st.ring.data();
   }
   {  // sample 0, as run_reference records it
-    const double m = b.modal_mass(), f = st.f;
+    const double f = st.f;
     double h0, dh0, w1 = -residual_[0] * f;
     detail::roughness_at(r, model_.traverse.x_start, h0, dh0);
     const double f0 = detail::law_argument(model_, contact_, r, 0.0, model_.traverse.x_start);
@@ -320,22 +327,9 @@ void ExactStepIntegrator::run(const Realisation& r, BallOnBeamResult& out) const
           dh0);
     for (int i = 0; i < n; ++i) w1 += phi[i] * q0[i];
     const double delta = w1 + h0 - st.w2;
-    for (std::size_t s = 0; s < model_.sensors.size(); ++s) {
-      const double* ps = sensor_phi_.data() + s * np;
-      double a = 0.0;
-      for (int i = 0; i < n; ++i) {  // exact q_n'' from (D-9)
-        const double w = b.omega(i);
-        a += ps[i] * (-phi[i] * f / m - 2.0 * b.zeta(i) * w * dq0[i] - w * w * q0[i]);
-      }
-      out.sensor_acceleration[s][0] = a;
-    }
-    out.contact_force[0] = f;
-    out.ball_acceleration[0] = f / m2 - g;
-    out.compression[0] = delta;
-    out.contact_deflection[0] = delta - h0 + st.w2;
-    out.ball_displacement[0] = st.w2;
-    out.contact_position[0] = model_.traverse.x_start;
-    out.loss_of_contact[0] = contact_.evaluate(delta, 0.0, f0).contact ? 0 : 1;
+    record_sample(
+        out, 0,
+        {phi, q0, dq0, f, model_.traverse.x_start, delta, h0, st.w2, contact_.evaluate(delta, 0.0, f0).contact});
     st.delta_last = delta;
   }
   // The first step's bracket (B26a) from the start state (gm = 0).

@@ -88,6 +88,16 @@ class ExactStepIntegrator {
   const ModeLanes& lanes_of_step(long k) const { return lanes_[k < 2 ? k : 2]; }
   // The start force's share of the free sums at step k (B26a): -sum w_n P_n phi_n(xi_k) / m for
   // w = phi(xi_{k+1}) (fold_w), with Q (fold_v), and w = phi'(xi_{k+1}) (fold_s).
+  // The state one output sample records: shapes at the position, modal coordinates and rates, force,
+  // position, compression, roughness there, ball displacement and whether the contact is closed.
+  struct SampleState {
+    const double *phi, *q, *dq;
+    double f, xi, delta, hx, w2;
+    bool contact;
+  };
+  // Sample j of `out` (sensor accelerations from the exact q'' of D-9, and the contact's outputs): the
+  // reference loop and the fast loop's start write it alike.
+  void record_sample(BallOnBeamResult& out, std::size_t j, const SampleState& x) const;
   void fold(long k, const double* phi0, const double* phi1, const double* slope1, double& fw, double& fv,
             double& fs) const;
 

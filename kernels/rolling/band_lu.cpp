@@ -27,6 +27,21 @@ inline __attribute__((always_inline)) void axpy_minus(double* __restrict y, cons
 }
 }  // namespace
 
+// Column j's step once its pivot row j + jp is chosen (both factorizations): record it, swap the rows
+// over the columns the interchanges reach (ju grows), and scale the column below the diagonal by the
+// pivot. Returns that column (contiguous), or nullptr for a zero or non-finite pivot.
+double* BandLU::pivot_column(int j, int jp, double big, int km, int& ju) {
+  piv_[static_cast<std::size_t>(j)] = j + jp;
+  if (!(big > 0.0) || !std::isfinite(big)) return nullptr;
+  ju = std::max(ju, std::min(j + ku_ + jp, n_ - 1));
+  if (jp != 0)
+    for (int c = j; c <= ju; ++c) std::swap(f(j, c), f(j + jp, c));
+  const double inv = 1.0 / f(j, j);
+  double* lj = &f(j + 1 < n_ ? j + 1 : j, j);
+  for (int i = 0; i < km; ++i) lj[i] *= inv;
+  return lj;
+}
+
 bool BandLU::factorize() {
   int ju = 0;  // last column touched by the interchanges so far
   for (int c = 0; c < n_; ++c) utop_[static_cast<std::size_t>(c)] = c;
@@ -48,14 +63,8 @@ bool BandLU::factorize() {
           jp = i;
           break;
         }
-    piv_[static_cast<std::size_t>(j)] = j + jp;
-    if (!(big > 0.0) || !std::isfinite(big)) return false;
-    ju = std::max(ju, std::min(j + ku_ + jp, n_ - 1));
-    if (jp != 0)
-      for (int c = j; c <= ju; ++c) std::swap(f(j, c), f(j + jp, c));
-    const double inv = 1.0 / f(j, j);
-    double* lj = &f(j + 1 < n_ ? j + 1 : j, j);  // column j below the diagonal, contiguous
-    for (int i = 0; i < km; ++i) lj[i] *= inv;
+    double* lj = pivot_column(j, jp, big, km, ju);
+    if (lj == nullptr) return false;
     // rows below the last nonzero of the column would only subtract zeros: the update stops
     // there (the profile of the beam's block structure, R-44)
     int kr = km;
@@ -119,14 +128,8 @@ bool BandLU::factorize_reference() {
         jp = i;
       }
     if (std::abs(f(j, j)) >= kPivotThreshold * big) jp = 0;
-    piv_[static_cast<std::size_t>(j)] = j + jp;
-    if (!(big > 0.0) || !std::isfinite(big)) return false;
-    ju = std::max(ju, std::min(j + ku_ + jp, n_ - 1));
-    if (jp != 0)
-      for (int c = j; c <= ju; ++c) std::swap(f(j, c), f(j + jp, c));
-    const double inv = 1.0 / f(j, j);
-    double* lj = &f(j + 1 < n_ ? j + 1 : j, j);
-    for (int i = 0; i < km; ++i) lj[i] *= inv;
+    double* lj = pivot_column(j, jp, big, km, ju);
+    if (lj == nullptr) return false;
     for (int c = j + 1; c <= ju; ++c) {
       const double u = f(j, c);
       if (u == 0.0) continue;

@@ -48,6 +48,7 @@ class BandLU {
   void solve_reference(double* b) const;
 
  private:
+  double* pivot_column(int j, int jp, double big, int km, int& ju);
   double& f(int i, int j) {
     return ab_[static_cast<std::size_t>(kl_ + ku_ + i - j) + ld_ * static_cast<std::size_t>(j)];
   }

@@ -54,6 +54,24 @@ inline __attribute__((always_inline)) Axis locate(double s, double s0, double ds
 typedef double Lanes2 __attribute__((vector_size(16)));
 
 namespace {
+// Where s falls on each axis and the Catmull-Rom weights of its four taps and their first and second
+// derivatives (along s2 a single tap of weight 1 on a line field): the same for the fast and the plain sums.
+struct Taps {
+  Axis a1, a2;
+  bool grid = false;
+  double w1[4], d1[4], dd1[4], w2[4] = {0, 1, 0, 0}, d2[4] = {0, 0, 0, 0}, dd2[4] = {0, 0, 0, 0};
+};
+
+Taps taps(const HeightField& f, const Eigen::Vector2d& s) {
+  Taps t;
+  t.a1 = locate(s(0), f.s1_0, f.ds1, f.n1);
+  t.grid = f.n2 > 1;
+  if (t.grid) t.a2 = locate(s(1), f.s2_0, f.ds2, f.n2);
+  catmull_rom(t.a1.t, t.w1, t.d1, t.dd1);
+  if (t.grid) catmull_rom(t.a2.t, t.w2, t.d2, t.dd2);
+  return t;
+}
+
 // The s2 scaling, the symmetric Hessian and the flat continuation where s is clamped: the same for
 // the fast and the plain tap sums.
 void finish_sample(HeightSample& out, const HeightField& f, bool grid, const Axis& a1, const Axis& a2) {
@@ -79,12 +97,10 @@ void finish_sample(HeightSample& out, const HeightField& f, bool grid, const Axi
 // The six tap sums in three pairs (h, h_1), (h_2, h_11), (h_12, h_22): per sum the same products
 // (a_i b_j) v in the same order as the plain loop of sample_height_reference, so the same bits.
 HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
-  const Axis a1 = locate(s(0), f.s1_0, f.ds1, f.n1);
-  const bool grid = f.n2 > 1;
-  const Axis a2 = grid ? locate(s(1), f.s2_0, f.ds2, f.n2) : Axis{};
-  double w1[4], d1[4], dd1[4], w2[4] = {0, 1, 0, 0}, d2[4] = {0, 0, 0, 0}, dd2[4] = {0, 0, 0, 0};
-  catmull_rom(a1.t, w1, d1, dd1);
-  if (grid) catmull_rom(a2.t, w2, d2, dd2);
+  const Taps t = taps(f, s);
+  const Axis &a1 = t.a1, &a2 = t.a2;
+  const bool grid = t.grid;
+  const double *w1 = t.w1, *d1 = t.d1, *dd1 = t.dd1, *w2 = t.w2, *d2 = t.d2, *dd2 = t.dd2;
   Lanes2 P[4][3], Q[4][3];
   for (int i = 0; i < 4; ++i) {
     P[i][0] = Lanes2{w1[i], d1[i]};
@@ -129,12 +145,10 @@ HeightSample sample_height(const HeightField& f, const Eigen::Vector2d& s) {
 // The plain tap loop, one sum after another: the reference of sample_height (tests).
 HeightSample sample_height_reference(const HeightField& f, const Eigen::Vector2d& s) {
   HeightSample out;
-  const Axis a1 = locate(s(0), f.s1_0, f.ds1, f.n1);
-  const bool grid = f.n2 > 1;
-  const Axis a2 = grid ? locate(s(1), f.s2_0, f.ds2, f.n2) : Axis{};
-  double w1[4], d1[4], dd1[4], w2[4] = {0, 1, 0, 0}, d2[4] = {0, 0, 0, 0}, dd2[4] = {0, 0, 0, 0};
-  catmull_rom(a1.t, w1, d1, dd1);
-  if (grid) catmull_rom(a2.t, w2, d2, dd2);
+  const Taps t = taps(f, s);
+  const Axis &a1 = t.a1, &a2 = t.a2;
+  const bool grid = t.grid;
+  const double *w1 = t.w1, *d1 = t.d1, *dd1 = t.dd1, *w2 = t.w2, *d2 = t.d2, *dd2 = t.dd2;
   auto at = [&](int i1, int i2) {
     i1 = std::clamp(i1, 0, f.n1 - 1);
     i2 = std::clamp(i2, 0, f.n2 - 1);

@@ -31,6 +31,21 @@ RotaryInertiaEval rotary_analytic(const Matrix3d& J, const Matrix3d& Rn, const V
   return out;
 }
 
+// The references' residual r(a) = Xi^T Q R_n h (R-33a) and its tangent, read off the jets of a, with the
+// angular velocity W and acceleration A it was formed from.
+RotaryInertiaEval jet_residual(const Vec3<Jet2<3>>& a, const Matrix3d& Rn, const Vec3<Jet2<3>>& h,
+                               const Vec3<Jet2<3>>& W, const Vec3<Jet2<3>>& A) {
+  const Vec3<Jet2<3>> r = xit_apply(a, q_apply(a, mul(Rn, h)));
+  RotaryInertiaEval out;
+  for (int i = 0; i < 3; ++i) {
+    out.residual(i) = r[i].v;
+    out.W(i) = W[i].v;
+    out.A(i) = A[i].v;
+    for (int j = 0; j < 3; ++j) out.tangent(i, j) = r[i].g[j];
+  }
+  return out;
+}
+
 }  // namespace
 
 RotaryInertiaEval rotary_inertia(const Matrix3d& J, const Matrix3d& Rn, const Vector3d& Wn, const Vector3d& An,
@@ -62,15 +77,7 @@ RotaryInertiaEval rotary_inertia_reference(const Matrix3d& J, const Matrix3d& Rn
     A[i] = (4.0 / (dt * dt)) * (b[i] - dt * Wn(i)) - An(i);
   }
   const Vec3<J3> h = add(mul(J, A), cross(W, mul(J, W)));  // Euler: J A + W x J W
-  const Vec3<J3> r = xit_apply(a, q_apply(a, mul(Rn, h)));
-  RotaryInertiaEval out;
-  for (int i = 0; i < 3; ++i) {
-    out.residual(i) = r[i].v;
-    out.W(i) = W[i].v;
-    out.A(i) = A[i].v;
-    for (int j = 0; j < 3; ++j) out.tangent(i, j) = r[i].g[j];
-  }
-  return out;
+  return jet_residual(a, Rn, h, W, A);
 }
 
 void rotary_newmark_update(const Matrix3d& Rn, double dt, const Vector3d& alpha, Vector3d& W, Vector3d& A) {
@@ -93,15 +100,7 @@ RotaryInertiaEval rotary_inertia_midpoint_reference(const Matrix3d& J, const Mat
     D[i] = (2.0 / (dt * dt)) * (b[i] - dt * Wn(i));  // (W_{n+1} - W_n)/dt
   }
   const Vec3<J3> h = add(mul(J, D), cross(Wm, mul(J, Wm)));
-  const Vec3<J3> r = xit_apply(a, q_apply(a, mul(Rn, h)));
-  RotaryInertiaEval out;
-  for (int i = 0; i < 3; ++i) {
-    out.residual(i) = r[i].v;
-    out.W(i) = W[i].v;
-    out.A(i) = D[i].v;
-    for (int j = 0; j < 3; ++j) out.tangent(i, j) = r[i].g[j];
-  }
-  return out;
+  return jet_residual(a, Rn, h, W, D);
 }
 
 void rotary_midpoint_update(const Matrix3d& Rn, double dt, const Vector3d& alpha, Vector3d& W, Vector3d& A) {

@@ -129,26 +129,24 @@ SeedBoxLengths seed_box_lengths(const std::vector<double>& rx, const std::vector
   };
   for (int sweep = 0; sweep < 20; ++sweep) {  // coordinate descent: n and m interact only weakly
     const SeedBoxLengths before = b;
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t n = 1; n <= max_n; ++n) {  // the 1/e length grows with n: stop once past the target
-      const double got = seed_expected_correlation(rx, ry, n, b.box_y, dx, dy).x;
-      const double e = miss(got, correlation_x);
-      if (e < best) {
-        best = e;
-        b.box_x = n;
-      } else if (got > correlation_x)
-        break;
-    }
-    best = std::numeric_limits<double>::infinity();
-    for (std::size_t m = 1; m <= max_m; ++m) {
-      const double got = seed_expected_correlation(rx, ry, b.box_x, m, dx, dy).y;
-      const double e = miss(got, correlation_y);
-      if (e < best) {
-        best = e;
-        b.box_y = m;
-      } else if (got > correlation_y)
-        break;
-    }
+    // One box length along one axis, the other held: the 1/e length grows with it, so stop once past
+    // the target.
+    const auto search = [&](std::size_t max_len, double target, std::size_t& len, auto&& length_of) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t n = 1; n <= max_len; ++n) {
+        const double got = length_of(n);
+        const double e = miss(got, target);
+        if (e < best) {
+          best = e;
+          len = n;
+        } else if (got > target)
+          break;
+      }
+    };
+    search(max_n, correlation_x, b.box_x,
+           [&](std::size_t n) { return seed_expected_correlation(rx, ry, n, b.box_y, dx, dy).x; });
+    search(max_m, correlation_y, b.box_y,
+           [&](std::size_t m) { return seed_expected_correlation(rx, ry, b.box_x, m, dx, dy).y; });
     if (b.box_x == before.box_x && b.box_y == before.box_y) break;
   }
   b.expected = seed_expected_correlation(rx, ry, b.box_x, b.box_y, dx, dy);
