@@ -18,13 +18,9 @@ int modes_command(const Args& args) {
       "\n"
       "Prints the beam's undamped modal frequencies (Hz), damping ratios and the effective length of a\n"
       "ball-on-beam study. Nothing is computed beyond the eigenvalues.";
-  po::options_description opts("options");
-  StudyArgs study;
-  po::positional_options_description pos;
-  add_study_options(opts, pos, study);
-  po::variables_map vm;
-  if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  const study::Study s = resolve_study(study);
+  StudyCommandOptions cl;
+  if (!cl.parse(args, usage)) return 0;
+  const study::Study s = resolve_study(cl.study);
   const auto has_beam = [](const scenes::SceneInfo& i) { return static_cast<bool>(i.modal_beam); };
   const scenes::SceneInfo& scene = scenes::find_scene(s.scene());
   if (!has_beam(scene)) {

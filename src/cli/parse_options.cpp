@@ -33,13 +33,16 @@ bool parse_scene_options(const std::vector<std::string>& args, const std::string
   return false;
 }
 
-void add_study_options(po::options_description& options, po::positional_options_description& positional,
-                       StudyArgs& study, bool required) {
+StudyCommandOptions::StudyCommandOptions(bool required) {
   auto* file = po::value(&study.file);
   if (required) file->required();
   options.add_options()("study", file, "study file (INI)")(
       "set", po::value(&study.sets)->composing(), "override a study key: --set section.key=value (repeatable)");
   positional.add("study", 1);
+}
+
+bool StudyCommandOptions::parse(const std::vector<std::string>& args, const std::string& usage) {
+  return parse_options(args, usage, options, positional, vm);
 }
 
 }  // namespace rollspec::cli

@@ -24,8 +24,18 @@ bool parse_scene_options(const std::vector<std::string>& args, const std::string
 
 // The study-file positional argument and repeatable --set overrides every study command takes.
 using run::StudyArgs;
-// required = false: the command checks for a missing study itself (run --resume reads the checkpoint's).
-void add_study_options(po::options_description& options, po::positional_options_description& positional,
-                       StudyArgs& study, bool required = true);
+
+// A study command's options: the study file and --set first (into `study`), then the command's own, which
+// it adds to `options` before parse. required = false: the command checks for a missing study itself
+// (run --resume reads the checkpoint's).
+struct StudyCommandOptions {
+  explicit StudyCommandOptions(bool required = true);
+  // parse_options over them; false when --help was given (and printed).
+  bool parse(const std::vector<std::string>& args, const std::string& usage);
+  po::options_description options{"options"};
+  po::positional_options_description positional;
+  po::variables_map vm;
+  StudyArgs study;
+};
 
 }  // namespace rollspec::cli

@@ -42,24 +42,20 @@ int plan_command(const Args& args) {
       "roughness of filter = solver) has its first solves timed to estimate its build, when they take a\n"
       "few seconds. --probe runs realisation 0 once (when the stage tables exist) to estimate the run\n"
       "time, and times those solves whatever they take.";
-  po::options_description opts("options");
-  opts.add_options()("probe",
-                     "run realisation 0 once to estimate the run time (and time the first solves of a missing "
-                     "equivalent-roughness table however long they take)");
-  StudyArgs study;
-  po::positional_options_description pos;
-  add_study_options(opts, pos, study);
+  StudyCommandOptions cl;
+  cl.options.add_options()("probe",
+                           "run realisation 0 once to estimate the run time (and time the first solves of a missing "
+                           "equivalent-roughness table however long they take)");
   std::vector<std::string> sweeps;
   std::size_t max_points = kDefaultMaxSweepPoints;
-  add_sweep_option(opts, sweeps, max_points);
-  po::variables_map vm;
-  if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (const auto sweep = load_sweep(study, sweeps, {max_points, false, false}))
-    return plan_sweep(*sweep, vm.count("probe") > 0);
+  add_sweep_option(cl.options, sweeps, max_points);
+  if (!cl.parse(args, usage)) return 0;
+  if (const auto sweep = load_sweep(cl.study, sweeps, {max_points, false, false}))
+    return plan_sweep(*sweep, cl.vm.count("probe") > 0);
 
-  const bool probing = vm.count("probe") > 0;
-  const run::StudyPlan p = run::plan_study(study, probing);
-  std::cout << "study " << study.file << ": scene " << p.scene << ", "
+  const bool probing = cl.vm.count("probe") > 0;
+  const run::StudyPlan p = run::plan_study(cl.study, probing);
+  std::cout << "study " << cl.study.file << ": scene " << p.scene << ", "
             << io::counted(static_cast<unsigned long long>(p.realisations), "realisation") << ", seed " << p.seed
             << "\n";
   const auto& memory = p.memory;

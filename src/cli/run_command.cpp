@@ -35,10 +35,9 @@ int run_command(const Args& args) {
       "A study with a [sweep] section (or --sweep) runs once per point and writes one file whose datasets\n"
       "gain a leading axis per swept key (see the Sweeps how-to).\n"
       "Threads: OMP_NUM_THREADS. The result data do not depend on the thread count.";
-  po::options_description opts("options");
-  StudyArgs study;
+  StudyCommandOptions cl(/*required=*/false);
   std::string out;
-  opts.add_options()(
+  cl.options.add_options()(
       "out,o", po::value(&out),
       "result file (default: the study's name with .h5, or -only-ID.h5 with --only, in the current directory)")(
       "resume", "finish an interrupted run from its checkpoint (with the checkpoint's settings)")(
@@ -50,27 +49,25 @@ int run_command(const Args& args) {
       "run just realisation ID (same random numbers as in the ensemble), to investigate it")(
       "rebuild", "rebuild cached stage tables whose inputs differ instead of refusing them")("quiet,q",
                                                                                              "no progress output");
-  po::positional_options_description pos;
-  add_study_options(opts, pos, study, /*required=*/false);
   std::vector<std::string> sweeps;
   std::size_t max_points = kDefaultMaxSweepPoints;
-  add_sweep_option(opts, sweeps, max_points);
-  po::variables_map vm;
-  if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  const bool resume = vm.count("resume") > 0, restart = vm.count("restart") > 0;
+  add_sweep_option(cl.options, sweeps, max_points);
+  if (!cl.parse(args, usage)) return 0;
+  const bool resume = cl.vm.count("resume") > 0, restart = cl.vm.count("restart") > 0;
   if (resume && restart)
     throw usage_error("--resume and --restart exclude each other: finish the checkpoint, or discard it");
   long long only = -1;
-  if (vm.count("only")) {
-    only = vm["only"].as<long long>();
+  if (cl.vm.count("only")) {
+    only = cl.vm["only"].as<long long>();
     if (only < 0) throw usage_error("--only " + std::to_string(only) + ": allowed: a realisation id >= 0");
     if (resume || restart)
       throw usage_error("--only runs one realisation without checkpoints; it takes no --resume or --restart");
   }
 
-  if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the result file");
-  RunRequest request{study, out, resume, restart, vm.count("force") > 0, vm.count("rebuild") > 0, vm.count("quiet") > 0,
-                     only};
+  if (out.empty() && cl.vm.count("out")) throw usage_error("--out is empty; allowed: the path of the result file");
+  RunRequest request{
+      cl.study, out, resume, restart, cl.vm.count("force") > 0, cl.vm.count("rebuild") > 0, cl.vm.count("quiet") > 0,
+      only};
   request.max_sweep_points = max_points;
   return run_request(request, sweeps);
 }

@@ -31,22 +31,18 @@ int stiffness_command(const Args& args) {
       "rough-surface realisations (elastic-plastic half-space, FFT-accelerated). A table whose input hash\n"
       "matches is reused; one whose inputs differ, or a damaged file, is refused unless --rebuild.\n"
       "Prints the table and the stiffness at the ball's own weight next to the smooth Hertz value 2 E* a.";
-  po::options_description opts("options");
-  StudyArgs study;
+  StudyCommandOptions cl;
   std::string out;
-  opts.add_options()("out,o", po::value(&out),
-                     "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
+  cl.options.add_options()("out,o", po::value(&out),
+                           "table file (default: [stiffness] table, auto = <table_dir>/stiffness-<hash>.h5)")(
       "rebuild", "replace a table whose inputs differ or that is damaged")("quiet,q", "no progress output")(
       "force", "build a table whose memory estimate exceeds the available memory");
-  po::positional_options_description pos;
-  add_study_options(opts, pos, study);
-  po::variables_map vm;
-  if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
+  if (!cl.parse(args, usage)) return 0;
+  if (out.empty() && cl.vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
   if (!out.empty())
-    study.sets.push_back(study::StiffnessSection::table_setting(std::filesystem::absolute(out).string()));
-  const run::StudyStiffnessTable answer = run::study_stiffness_table(resolve_study(study), vm.count("force") > 0,
-                                                                     vm.count("rebuild") > 0, vm.count("quiet") > 0);
+    cl.study.sets.push_back(study::StiffnessSection::table_setting(std::filesystem::absolute(out).string()));
+  const run::StudyStiffnessTable answer = run::study_stiffness_table(
+      resolve_study(cl.study), cl.vm.count("force") > 0, cl.vm.count("rebuild") > 0, cl.vm.count("quiet") > 0);
   const stiffness::StiffnessTable& t = answer.table;
   const scenes::BallContact& pair = answer.pair;
   const std::string& status = answer.status;

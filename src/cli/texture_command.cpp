@@ -109,40 +109,36 @@ int texture_command(const Args& args) {
       "/surface/x, /surface/y, /surface/heights, /profiles (measured scans). Prints the mean and the standard\n"
       "deviation over realisations of rms, skewness, kurtosis and correlation lengths (--list: every one too).\n"
       "The study's scene must be `texture`.";
-  po::options_description opts("options");
-  StudyArgs study;
+  StudyCommandOptions cl;
   std::string out;
   long long count = -1;
-  opts.add_options()("list", "print the statistics of every realisation, not only their mean and spread")(
+  cl.options.add_options()("list", "print the statistics of every realisation, not only their mean and spread")(
       "quiet,q", "print nothing but errors")("out,o", po::value(&out),
                                              "texture file (default: the study's name with .h5)")(
       "count,n", po::value(&count), "realisations of lines and of surfaces (overrides [lines] count, [surface] count)")(
       "force",
       "replace an existing --out file even if it is not a rollspec texture file, and run a study whose "
       "memory estimate exceeds the available memory");
-  po::positional_options_description pos;
-  add_study_options(opts, pos, study);
-  po::variables_map vm;
-  if (!parse_options(args, usage, opts, pos, vm)) return 0;
-  if (out.empty() && vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
-  const bool quiet = vm.count("quiet") > 0, list = vm.count("list") > 0;
+  if (!cl.parse(args, usage)) return 0;
+  if (out.empty() && cl.vm.count("out")) throw usage_error("--out is empty; allowed: the path of the file to write");
+  const bool quiet = cl.vm.count("quiet") > 0, list = cl.vm.count("list") > 0;
   if (quiet && list) throw usage_error("--list and --quiet: allowed: one of them");
-  if (vm.count("count") && (count < 0 || count > 1000000))
+  if (cl.vm.count("count") && (count < 0 || count > 1000000))
     throw usage_error("--count " + std::to_string(count) + ": allowed: a whole number in [0, 1000000]");
 
-  const study::Study s = resolve_study(study);
+  const study::Study s = resolve_study(cl.study);
   const auto study_keys = study::StudySection::parse(s);
   const auto texture_scene = [](const scenes::SceneInfo& i) { return i.command == scenes::SceneCommand::texture; };
   if (!texture_scene(scenes::find_scene(study_keys.scene)))
     study_keys.origin(study_keys.scene)
         .refuse("rollspec texture needs a study of scene " + scenes::scenes_with(texture_scene) + " (this one is " +
                 study_keys.scene + ")");
-  if (out.empty()) out = fs::path(study.file).stem().string() + ".h5";
+  if (out.empty()) out = fs::path(cl.study.file).stem().string() + ".h5";
   if (count >= 0) {  // --count overrides both counts: estimate with it
-    study.sets.push_back(study::LinesSection::key(&study::LinesSection::count) + "=" + std::to_string(count));
-    study.sets.push_back(study::SurfaceSection::key(&study::SurfaceSection::count) + "=" + std::to_string(count));
+    cl.study.sets.push_back(study::LinesSection::key(&study::LinesSection::count) + "=" + std::to_string(count));
+    cl.study.sets.push_back(study::SurfaceSection::key(&study::SurfaceSection::count) + "=" + std::to_string(count));
   }
-  scenes::check_memory(count >= 0 ? resolve_study(study) : s, 1, vm.count("force") > 0);
+  scenes::check_memory(count >= 0 ? resolve_study(cl.study) : s, 1, cl.vm.count("force") > 0);
   const auto seed = study_keys.seed;
   const auto tex = study::TextureSection::parse(s);
   const auto line_keys = study::LinesSection::parse(s);
@@ -167,7 +163,7 @@ int texture_command(const Args& args) {
              : texture_io::SurfaceGenerator{};
 
   io::OutputTarget target{out, "rollspec-texture"};
-  target.force = vm.count("force") > 0;
+  target.force = cl.vm.count("force") > 0;
   target.inputs = s.input_files();
   for (const auto& p : texture_io::profile_files(tex)) target.inputs.push_back(p);
   target.check_kind = false;  // the file's kind is checked before the commit, after the data are known good

@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "kernels/spectral/ensemble_interval.hpp"
+#include "src/compare/measured_psd.hpp"
 #include "src/compare/verdict_references.hpp"
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
@@ -23,11 +24,7 @@ using io::number_text;
 
 // Every option's value checked before any file is read (--format is the command's own).
 void check_request(const CompareRequest& q) {
-  if (!(q.fmin >= 0.0) || std::isinf(q.fmin))
-    throw usage_error("--fmin " + number_text(q.fmin) + ": allowed: a finite frequency >= 0 Hz");
-  if (!(q.fmax > q.fmin))
-    throw usage_error("--fmax " + number_text(q.fmax) + ": allowed: a frequency above --fmin (" + number_text(q.fmin) +
-                      " Hz)");
+  check_frequency_range(q.fmin, q.fmax);
   if (!(q.test_level > 0.0 && q.test_level < 1.0))
     throw usage_error("--test-level " + number_text(q.test_level) + ": allowed: a level 0 < A < 1, e.g. 0.05");
   if (!(q.noise_margin_db >= 0.0 && std::isfinite(q.noise_margin_db)))

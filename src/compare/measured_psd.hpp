@@ -21,4 +21,7 @@ struct Measurement {
 Measurement read_measurement(const std::string& path, std::string& column, long long skip_rows,
                              const std::string& command);
 
+// The band compare and fit test, --fmin and --fmax, checked before any file is read (exit 64).
+void check_frequency_range(double fmin, double fmax);
+
 }  // namespace rollspec::compare

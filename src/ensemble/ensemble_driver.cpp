@@ -11,6 +11,7 @@
 
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/rank_failure.hpp"
 #include "src/ensemble/pairwise_tree.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/ensemble/stop_signal.hpp"
@@ -142,11 +143,7 @@ EnsembleSums run_ensemble(const EnsembleConfig& cfg, std::size_t n_values, const
   } catch (...) {
     failure = std::current_exception();
   }
-  // Every rank takes part in the collective decisions, so one rank's failure never hangs the others.
-  const bool failed_somewhere = any_rank(failure != nullptr);
-  if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere)
-    throw UserError(EX_SOFTWARE, cfg.log_prefix + "stopped because another rank failed (see its message)");
+  rethrow_on_every_rank(failure, cfg.log_prefix + "stopped because another rank failed (see its message)");
   out.computed = sum_over_ranks(out.computed);
   if (any_rank(stop_requested())) {
     std::ostringstream s;

@@ -110,11 +110,7 @@ std::vector<std::string> run_warnings(const FitModel& model, const FitInputs& in
 }  // namespace
 
 FitOutcome fit_study(const FitRequest& q) {
-  if (!(q.fmin >= 0.0) || std::isinf(q.fmin))
-    throw usage_error("--fmin " + number_text(q.fmin) + ": allowed: a finite frequency >= 0 Hz");
-  if (!(q.fmax > q.fmin))
-    throw usage_error("--fmax " + number_text(q.fmax) + ": allowed: a frequency above --fmin (" + number_text(q.fmin) +
-                      " Hz)");
+  compare::check_frequency_range(q.fmin, q.fmax);
   FitInputs in;
   in.sensor = io::sensor_choice(q.sensor, q.measured_position);
   if (q.vary.empty()) throw usage_error("no --vary; allowed: section.key=lo:hi[:log], 1 to 3 times");

@@ -10,6 +10,13 @@ namespace rollspec::io {
 // Seed papers: the seed documents the top-level README lists; DOIs only where the paper
 // prints one (seed 000) or a public library cites it (ContactMechanics' @doi for Polonsky–Keer and
 // Johnson; Welch as the signal-processing literature cites him). Equations: the theory notes in kernels/.
+namespace {
+// An equation of rollspec's own theory notes: what it is and the notes that hold it.
+Reference theory_note(const char* id, const std::string& what, const std::string& notes) {
+  return {id, "rollspec theory notes: " + what + " (" + notes + ")", ""};
+}
+}  // namespace
+
 const std::vector<Reference>& reference_table() {
   static const std::vector<Reference> rows = {
       {"seed 000",
@@ -34,43 +41,35 @@ const std::vector<Reference>& reference_table() {
        "P. D. Welch: The use of fast Fourier transform for the estimation of power spectra: a method based on time "
        "averaging over short, modified periodograms. IEEE Trans. Audio Electroacoust. 15(2) (1967) 70-73",
        "10.1109/TAU.1967.1161901"},
-      {"D-1", "rollspec theory notes: compression at the contact (kernels/README.md)", ""},
-      {"D-3", "rollspec theory notes: line texture by spectral representation (kernels/README.md)", ""},
-      {"D-4",
-       "rollspec theory notes: isotropic surface as sums of line textures, seed 001 Eq. 9-10 (kernels/README.md)", ""},
-      {"D-5", "rollspec theory notes: isotropic surface by 2D Fourier filtering (kernels/README.md)", ""},
-      {"D-6", "rollspec theory notes: Boussinesq half-space displacement (kernels/README.md)", ""},
-      {"D-7", "rollspec theory notes: elastic-plastic contact conditions with hardness H (kernels/README.md)", ""},
-      {"D-8", "rollspec theory notes: clamped-clamped Euler-Bernoulli modes (kernels/README.md)", ""},
-      {"D-9", "rollspec theory notes: modal beam under a moving contact force (kernels/README.md)", ""},
-      {"D-10", "rollspec theory notes: nonlinear contact force P(delta), seed 001 Eq. 7-8 (kernels/README.md)", ""},
-      {"D-11", "rollspec theory notes: linearised contact with a blocked force, seed 002 Eq. 4, 14 (kernels/README.md)",
-       ""},
-      {"D-12..D-14",
-       "rollspec theory notes: rotations, rolling contact point and gaps of geometrically exact beams "
-       "(kernels/README.md, kernels/rolling/README.md)",
-       ""},
-      {"D-15", "rollspec theory notes: Welch PSD (kernels/README.md)", ""},
-      {"D-16", "rollspec theory notes: Welch degrees of freedom (kernels/spectral/README.md)", ""},
-      {"D-17", "rollspec theory notes: third-octave bands (kernels/spectral/README.md)", ""},
-      {"D-18", "rollspec theory notes: exact oscillator step (kernels/spectral/README.md)", ""},
-      {"D-19", "rollspec theory notes: random oscillator exact PSD (kernels/spectral/README.md)", ""},
-      {"D-21", "rollspec theory notes: interval of an ensemble mean (kernels/spectral/README.md)", ""},
-      {"D-22", "rollspec theory notes: prediction interval for a measurement (kernels/spectral/README.md)", ""},
-      {"D-26", "rollspec theory notes: combined test over bands, Hotelling T2 (kernels/spectral/README.md)", ""},
-      {"D-31",
-       "rollspec theory notes: the verdict with the table's own error, parametric bootstrap "
-       "(kernels/spectral/README.md)",
-       ""},
-      {"D-32", "rollspec theory notes: the measurement as an object (kernels/spectral/README.md)", ""},
-      {"D-33", "rollspec theory notes: the noise floor (kernels/spectral/README.md)", ""},
-      {"D-34", "rollspec theory notes: one level offset (kernels/spectral/README.md)", ""},
-      {"B35", "rollspec theory notes: contact-patch filter (kernels/beam/README.md)", ""},
-      {"B41..B46", "rollspec theory notes: path table of one rough strip, law = path (kernels/beam/README.md)", ""},
-      {"BF-1..BF-7", "rollspec theory notes: blocked force of a rough strip (kernels/contact/README.md)", ""},
-      {"ER-1..ER-7", "rollspec theory notes: equivalent roughness (kernels/contact/README.md)", ""},
-      {"texture Eq. 36-40",
-       "rollspec theory notes: contact filter on an isotropic surface, iso2d (kernels/texture/README.md)", ""},
+      theory_note("D-1", "compression at the contact", "kernels/README.md"),
+      theory_note("D-3", "line texture by spectral representation", "kernels/README.md"),
+      theory_note("D-4", "isotropic surface as sums of line textures, seed 001 Eq. 9-10", "kernels/README.md"),
+      theory_note("D-5", "isotropic surface by 2D Fourier filtering", "kernels/README.md"),
+      theory_note("D-6", "Boussinesq half-space displacement", "kernels/README.md"),
+      theory_note("D-7", "elastic-plastic contact conditions with hardness H", "kernels/README.md"),
+      theory_note("D-8", "clamped-clamped Euler-Bernoulli modes", "kernels/README.md"),
+      theory_note("D-9", "modal beam under a moving contact force", "kernels/README.md"),
+      theory_note("D-10", "nonlinear contact force P(delta), seed 001 Eq. 7-8", "kernels/README.md"),
+      theory_note("D-11", "linearised contact with a blocked force, seed 002 Eq. 4, 14", "kernels/README.md"),
+      theory_note("D-12..D-14", "rotations, rolling contact point and gaps of geometrically exact beams",
+                  "kernels/README.md, kernels/rolling/README.md"),
+      theory_note("D-15", "Welch PSD", "kernels/README.md"),
+      theory_note("D-16", "Welch degrees of freedom", "kernels/spectral/README.md"),
+      theory_note("D-17", "third-octave bands", "kernels/spectral/README.md"),
+      theory_note("D-18", "exact oscillator step", "kernels/spectral/README.md"),
+      theory_note("D-19", "random oscillator exact PSD", "kernels/spectral/README.md"),
+      theory_note("D-21", "interval of an ensemble mean", "kernels/spectral/README.md"),
+      theory_note("D-22", "prediction interval for a measurement", "kernels/spectral/README.md"),
+      theory_note("D-26", "combined test over bands, Hotelling T2", "kernels/spectral/README.md"),
+      theory_note("D-31", "the verdict with the table's own error, parametric bootstrap", "kernels/spectral/README.md"),
+      theory_note("D-32", "the measurement as an object", "kernels/spectral/README.md"),
+      theory_note("D-33", "the noise floor", "kernels/spectral/README.md"),
+      theory_note("D-34", "one level offset", "kernels/spectral/README.md"),
+      theory_note("B35", "contact-patch filter", "kernels/beam/README.md"),
+      theory_note("B41..B46", "path table of one rough strip, law = path", "kernels/beam/README.md"),
+      theory_note("BF-1..BF-7", "blocked force of a rough strip", "kernels/contact/README.md"),
+      theory_note("ER-1..ER-7", "equivalent roughness", "kernels/contact/README.md"),
+      theory_note("texture Eq. 36-40", "contact filter on an isotropic surface, iso2d", "kernels/texture/README.md"),
   };
   return rows;
 }

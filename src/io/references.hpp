@@ -12,9 +12,9 @@ class Hdf5Writer;
 class Hdf5Reader;
 
 struct Reference {
-  const char* id;
-  const char* citation;  // authors, title, venue and year; for an equation, its theory note and file
-  const char* doi;       // empty where none could be verified
+  std::string id;
+  std::string citation;  // authors, title, venue and year; for an equation, its theory note and file
+  std::string doi;       // empty where none could be verified
 };
 
 const std::vector<Reference>& reference_table();

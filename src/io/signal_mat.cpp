@@ -10,8 +10,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <unordered_map>
+#include <utility>
 
 #include "src/error.hpp"
 #include "src/io/number_text.hpp"
@@ -117,41 +119,21 @@ std::vector<double> read_values(mat_t* m, const SignalTable& s, const VarInfo& v
     throw data_error(s.file + ": cannot read variable '" + v.name + "'" + matio_says() +
                      "; allowed: an undamaged .mat file");
   std::vector<double> out;
-  switch (var->data_type) {
-    case MAT_T_DOUBLE:
-      copy_as_double<double>(var->data, n, out);
-      break;
-    case MAT_T_SINGLE:
-      copy_as_double<float>(var->data, n, out);
-      break;
-    case MAT_T_INT8:
-      copy_as_double<std::int8_t>(var->data, n, out);
-      break;
-    case MAT_T_UINT8:
-      copy_as_double<std::uint8_t>(var->data, n, out);
-      break;
-    case MAT_T_INT16:
-      copy_as_double<std::int16_t>(var->data, n, out);
-      break;
-    case MAT_T_UINT16:
-      copy_as_double<std::uint16_t>(var->data, n, out);
-      break;
-    case MAT_T_INT32:
-      copy_as_double<std::int32_t>(var->data, n, out);
-      break;
-    case MAT_T_UINT32:
-      copy_as_double<std::uint32_t>(var->data, n, out);
-      break;
-    case MAT_T_INT64:
-      copy_as_double<std::int64_t>(var->data, n, out);
-      break;
-    case MAT_T_UINT64:
-      copy_as_double<std::uint64_t>(var->data, n, out);
-      break;
-    default:
-      throw data_error(s.file + ": variable '" + v.name + "' holds data of matio type " +
-                       std::to_string(var->data_type) + "; allowed: double, single or integer data");
-  }
+  // The element types matio stores, each read by its own copy (a table: one row a type).
+  using Copy = void (*)(const void*, std::size_t, std::vector<double>&);
+  static const std::pair<matio_types, Copy> kCopies[] = {
+      {MAT_T_DOUBLE, copy_as_double<double>},      {MAT_T_SINGLE, copy_as_double<float>},
+      {MAT_T_INT8, copy_as_double<std::int8_t>},   {MAT_T_UINT8, copy_as_double<std::uint8_t>},
+      {MAT_T_INT16, copy_as_double<std::int16_t>}, {MAT_T_UINT16, copy_as_double<std::uint16_t>},
+      {MAT_T_INT32, copy_as_double<std::int32_t>}, {MAT_T_UINT32, copy_as_double<std::uint32_t>},
+      {MAT_T_INT64, copy_as_double<std::int64_t>}, {MAT_T_UINT64, copy_as_double<std::uint64_t>},
+  };
+  const auto copy = std::find_if(std::begin(kCopies), std::end(kCopies),
+                                 [&](const auto& row) { return row.first == var->data_type; });
+  if (copy == std::end(kCopies))
+    throw data_error(s.file + ": variable '" + v.name + "' holds data of matio type " + std::to_string(var->data_type) +
+                     "; allowed: double, single or integer data");
+  copy->second(var->data, n, out);
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(out[i]))
       throw data_error(s.file + ": variable '" + v.name + "' element (" + std::to_string(i % v.rows() + 1) + "," +

@@ -33,25 +33,21 @@ bool process_alive(long pid) {
 
 std::string temp_name(const std::string& final_path) { return final_path + ".tmp-" + std::to_string(::getpid()); }
 
-void register_temp(const std::string& path) {
+namespace {
+// Adds or drops `path` under the lock (the signal handler's cleanup reads the sets under it too).
+void mark(std::set<std::string>& set, const std::string& path, bool held) {
   std::lock_guard<std::mutex> lock(g_mutex);
-  registry().insert(path);
+  if (held)
+    set.insert(path);
+  else
+    set.erase(path);
 }
+}  // namespace
 
-void unregister_temp(const std::string& path) {
-  std::lock_guard<std::mutex> lock(g_mutex);
-  registry().erase(path);
-}
-
-void register_temp_dir(const std::string& path) {
-  std::lock_guard<std::mutex> lock(g_mutex);
-  dir_registry().insert(path);
-}
-
-void unregister_temp_dir(const std::string& path) {
-  std::lock_guard<std::mutex> lock(g_mutex);
-  dir_registry().erase(path);
-}
+void register_temp(const std::string& path) { mark(registry(), path, true); }
+void unregister_temp(const std::string& path) { mark(registry(), path, false); }
+void register_temp_dir(const std::string& path) { mark(dir_registry(), path, true); }
+void unregister_temp_dir(const std::string& path) { mark(dir_registry(), path, false); }
 
 void remove_registered_temps() {
   std::lock_guard<std::mutex> lock(g_mutex);

@@ -11,6 +11,7 @@
 #include "src/run/sweep_run.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/rank_failure.hpp"
 #include "src/error.hpp"
 #include "src/io/input_file.hpp"
 #include "src/io/provenance.hpp"
@@ -157,9 +158,7 @@ CheckpointSession open_checkpoint(const std::string& dir, study::Study& s, const
   } catch (...) {
     failure = std::current_exception();
   }
-  const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
-  if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere) throw UserError(EX_SOFTWARE, "stopped because another rank failed (see its message)");
+  ensemble::rethrow_on_every_rank(failure, "stopped because another rank failed (see its message)");
   return session;
 }
 

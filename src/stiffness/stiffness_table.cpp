@@ -17,6 +17,7 @@
 #include "kernels/contact/sweep.hpp"
 #include "kernels/contact/version.hpp"
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/rank_failure.hpp"
 #include "src/ensemble/progress.hpp"
 #include "src/error.hpp"
 #include "src/io/content_hash.hpp"
@@ -236,10 +237,8 @@ SurfaceCurves surface_curves(const TableStudy& ts, double ball_radius, double ef
       }
     }
   }
-  const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
-  if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere)
-    throw UserError(EX_SOFTWARE, ensemble::rank_prefix() + "stiffness table: another rank failed (see its message)");
+  ensemble::rethrow_on_every_rank(failure,
+                                  ensemble::rank_prefix() + "stiffness table: another rank failed (see its message)");
   progress.finish();
   {
     // Six numbers per step and realisation travel to every rank.

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "src/ensemble/mpi_context.hpp"
+#include "src/ensemble/rank_failure.hpp"
 #include "src/error.hpp"
 #include "src/io/output_target.hpp"
 
@@ -82,9 +83,7 @@ std::string table_write_path(const TableStore& store, const std::string& path, c
       failure = std::current_exception();
     }
   }
-  const bool failed_somewhere = ensemble::any_rank(failure != nullptr);
-  if (failure) std::rethrow_exception(failure);
-  if (failed_somewhere) throw UserError(EX_SOFTWARE, "stopped because rank 0 refused the table path (see its message)");
+  ensemble::rethrow_on_every_rank(failure, "stopped because rank 0 refused the table path (see its message)");
   return out;
 }
 

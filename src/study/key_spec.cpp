@@ -44,16 +44,25 @@ std::string KeySpec::allowed() const {
   return s.str();
 }
 
-KeySpec real_key(std::string section, std::string key, std::string unit, std::string doc,
-                 std::optional<std::string> default_value, double min, double max, bool min_inclusive,
-                 bool max_inclusive) {
+namespace {
+// What every kind of key has: where it lives, its type, its text and its default.
+KeySpec base_key(std::string section, std::string key, KeyType type, std::string doc,
+                 std::optional<std::string> default_value) {
   KeySpec k;
   k.section = std::move(section);
   k.key = std::move(key);
-  k.type = KeyType::real;
-  k.unit = std::move(unit);
+  k.type = type;
   k.doc = std::move(doc);
   k.default_value = std::move(default_value);
+  return k;
+}
+}  // namespace
+
+KeySpec real_key(std::string section, std::string key, std::string unit, std::string doc,
+                 std::optional<std::string> default_value, double min, double max, bool min_inclusive,
+                 bool max_inclusive) {
+  KeySpec k = base_key(std::move(section), std::move(key), KeyType::real, std::move(doc), std::move(default_value));
+  k.unit = std::move(unit);
   k.min = min;
   k.max = max;
   k.min_inclusive = min_inclusive;
@@ -89,36 +98,21 @@ std::string choice_doc(const std::string& lead, const std::vector<std::string>& 
 
 KeySpec choice_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value,
                    std::vector<std::string> choices) {
-  KeySpec k;
-  k.section = std::move(section);
-  k.key = std::move(key);
-  k.type = KeyType::choice;
-  k.doc = std::move(doc);
-  k.default_value = std::move(default_value);
+  KeySpec k = base_key(std::move(section), std::move(key), KeyType::choice, std::move(doc), std::move(default_value));
   k.choices = std::move(choices);
   return k;
 }
 
 KeySpec text_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value) {
-  KeySpec k;
-  k.section = std::move(section);
-  k.key = std::move(key);
-  k.type = KeyType::text;
-  k.doc = std::move(doc);
-  k.default_value = std::move(default_value);
-  return k;
+  return base_key(std::move(section), std::move(key), KeyType::text, std::move(doc), std::move(default_value));
 }
 
 KeySpec path_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value) {
-  KeySpec k = text_key(std::move(section), std::move(key), std::move(doc), std::move(default_value));
-  k.type = KeyType::path;
-  return k;
+  return base_key(std::move(section), std::move(key), KeyType::path, std::move(doc), std::move(default_value));
 }
 
 KeySpec bool_key(std::string section, std::string key, std::string doc, std::optional<std::string> default_value) {
-  KeySpec k = text_key(std::move(section), std::move(key), std::move(doc), std::move(default_value));
-  k.type = KeyType::boolean;
-  return k;
+  return base_key(std::move(section), std::move(key), KeyType::boolean, std::move(doc), std::move(default_value));
 }
 
 }  // namespace rollspec::study

@@ -114,24 +114,21 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
                          (b.path_law() ? std::string("law = path") : std::string("blocked_force = solver")) +
                          " resolves the contact on its strip itself, so the line texture is not filtered (the "
                          "result records /contact@filter = none); allowed without this note: filter = none");
-  if (b.filter == ContactFilter::iso2d && b.blocked_solver())
-    filter_origin.refuse(
-        "iso2d filters the line texture, which blocked_force = solver does not use (its strip "
-        "resolves the contact itself); allowed with solver: none or patch (both ignored)");
-  if (b.filter == ContactFilter::iso2d && b.path_law())
-    filter_origin.refuse(
-        "iso2d filters the line texture, which law = path does not use (its strip is the "
-        "roughness); allowed with path: none or patch (both ignored)");
-  // solver: h_eq enters the point law as the line does (ER-2); the linearised law and the path law
-  // have their own treatment of the rough contact.
-  if (b.filter == ContactFilter::solver && b.blocked_solver())
-    filter_origin.refuse(
-        "solver filters the line texture, which blocked_force = solver does not use (its strip "
-        "resolves the contact itself); allowed with blocked_force = solver: none or patch (both ignored)");
-  if (b.filter == ContactFilter::solver && b.path_law())
-    filter_origin.refuse(
-        "solver filters the line texture, which law = path does not use (its strip is the "
-        "roughness); allowed with path: none or patch (both ignored)");
+  // iso2d and solver filter the line texture (solver: h_eq enters the point law as the line does, ER-2);
+  // the blocked-force solver and the path law resolve the rough contact on their strip instead.
+  if (b.filter == ContactFilter::iso2d || b.filter == ContactFilter::solver) {
+    const bool iso2d = b.filter == ContactFilter::iso2d;
+    const std::string filters = std::string(iso2d ? "iso2d" : "solver") + " filters the line texture, which ";
+    if (b.blocked_solver())
+      filter_origin.refuse(filters +
+                           "blocked_force = solver does not use (its strip resolves the contact itself); allowed "
+                           "with " +
+                           (iso2d ? "solver" : "blocked_force = solver") + ": none or patch (both ignored)");
+    if (b.path_law())
+      filter_origin.refuse(filters +
+                           "law = path does not use (its strip is the roughness); allowed with path: none or patch "
+                           "(both ignored)");
+  }
   b.strip_line = er.line == study::EquivalentLine::strip;
   // ER-7 corrects a smooth contact's stiffness; a table law from rough surfaces ([stiffness] surface =
   // rough, seed 001's chain) carries the rough contact's compliance already.
@@ -359,14 +356,7 @@ BallOnBeamSettings read_ball_on_beam_settings(const BallOnBeamSections& s) {
   // Record and spectra.
   b.samples = beam::output_samples(m);
   b.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start * m.sample_rate));
-  if (b.skip >= b.samples)
-    spectrum.origin(spectrum.skip_start)
-        .refuse("leaves nothing of the record (" + std::to_string(b.samples) + " samples)");
-  const auto segment = static_cast<std::size_t>(spectrum.segment);
-  if (segment > b.samples - b.skip)
-    spectrum.origin(spectrum.segment)
-        .refuse("is longer than the analysed record (" + std::to_string(b.samples - b.skip) +
-                " samples = ((end - start) / speed - skip_start) x sample_rate)");
+  check_analysed_record(spectrum, b.samples, b.skip, "((end - start) / speed - skip_start) x sample_rate");
   b.welch = study_welch_config(spectrum, m.sample_rate);
   return b;
 }

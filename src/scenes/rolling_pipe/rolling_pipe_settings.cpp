@@ -151,14 +151,7 @@ RollingPipeSettings read_rolling_pipe_settings(const KeyReader& s) {
   }
   p.samples = p.steps + 1;
   p.skip = static_cast<std::size_t>(std::ceil(spectrum.skip_start / p.dt));
-  if (p.skip >= p.samples)
-    spectrum.origin(spectrum.skip_start)
-        .refuse("leaves nothing of the record (" + std::to_string(p.samples) + " samples)");
-  const auto segment = static_cast<std::size_t>(spectrum.segment);
-  if (segment > p.samples - p.skip)
-    spectrum.origin(spectrum.segment)
-        .refuse("is longer than the analysed record (" + std::to_string(p.samples - p.skip) +
-                " samples = (distance / speed - skip_start) / dt)");
+  check_analysed_record(spectrum, p.samples, p.skip, "(distance / speed - skip_start) / dt");
   p.welch = study_welch_config(spectrum, 1.0 / p.dt);
   p.solver.analysis = Analysis::Dynamic;
   p.solver.max_iterations = 30;
