@@ -166,6 +166,23 @@ def check_target(path, own=lambda target: True):
     return target
 
 
+def check_targets(targets, code=73):
+    """check_target of each (path, own) in `targets` whose path was given (an option left out is None), before
+    any measurement: a refused one ends the script in one line, exit `code` (73, EX_CANTCREAT, unless the
+    script has always said 1)."""
+    for path, own in targets:
+        if path:
+            try:
+                check_target(path, own)
+            except RecordError as e:
+                fail(e, code)
+
+
+def check_record_target(path, code=73):
+    """--record (None: not given) checked as a record's target, as check_targets does."""
+    check_targets([(path, is_record)], code)
+
+
 def record_script_parser(description, default_bin):
     """The options every validation-record script shares: --bin (the rollspec binary) and --record (the
     record to write); a script adds its own before calling record_script_arguments."""
@@ -180,11 +197,7 @@ def record_script_arguments(parser):
     """(arguments, the binary's resolved path): --record checked as a record's target (73 if it is not one)
     and --bin an executable file (66 if not), before any run, in one line each (script_main's rule)."""
     a = parser.parse_args()
-    if a.record:
-        try:
-            check_target(a.record, own=is_record)
-        except RecordError as e:
-            fail(e, 73)
+    check_record_target(a.record)
     binary = str(Path(a.bin).resolve())
     if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
         fail(f"--bin {a.bin}: not an executable file; allowed: a rollspec binary", 66)

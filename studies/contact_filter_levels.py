@@ -18,7 +18,6 @@ documentation's contact-filter page renders (bench/bench_record.py). About 19 mi
 import argparse
 import os
 import pathlib
-import subprocess
 import sys
 import tempfile
 
@@ -46,9 +45,7 @@ F_LOW = 2000.0
 def run(study, sets, realisations, out):
     cmd = [BIN, "run", str(SOURCE / "studies" / study), "--out", str(out), "--quiet", "--force",
            "--set", f"study.realisations={realisations}"] + [a for kv in sets for a in ("--set", kv)]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode:
-        sys.exit(f"{' '.join(cmd)} failed:\n{r.stderr}")
+    run_or_exit(cmd, "{command} failed:\n{stderr}")
 
 
 def levels(path):
@@ -78,11 +75,7 @@ def main():
     ap.add_argument("--keep", help="directory for the result files (default: a temporary one)")
     ap.add_argument("--record", help="write the tables as a record (bench/records/validation/*.json)")
     args = ap.parse_args()
-    if args.record:
-        try:
-            bench_record.check_target(args.record, own=bench_record.is_record)
-        except bench_record.RecordError as e:
-            fail(e, 73)
+    bench_record.check_record_target(args.record)
     rows, columns = [], None
     tmp = pathlib.Path(own_folder(args.keep, "contact_filter_levels") if args.keep else tempfile.mkdtemp(prefix="contact-filter-"))
     tmp.mkdir(parents=True, exist_ok=True)
@@ -126,10 +119,9 @@ def main():
 
 
 sys.dont_write_bytecode = True  # nothing written into the sources
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../python-post"))
-from rollspec_post.script_main import fail, own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../bench"))
-import bench_record  # noqa: E402  (the records the documentation renders)
+import bench_record  # noqa: E402  (the records the documentation renders; it puts python-post on the path)
+from rollspec_post.script_main import fail, own_folder, run_or_exit, script_main  # noqa: E402  (one line per failure, no traceback)
 
 
 if __name__ == "__main__":

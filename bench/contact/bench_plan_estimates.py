@@ -107,13 +107,8 @@ def main():
         sys.exit(f"bench_plan_estimates: --repeats {o.repeats}; allowed: 1 or more")
     if not os.access(o.binary, os.X_OK):
         sys.exit(f"bench_plan_estimates: no rollspec binary at {o.binary}; allowed: a built rollspec (--binary)")
-    try:  # refused before the measurement, not after
-        if o.json:
-            bench_record.check_target(o.json, is_own_json)
-        if o.record:
-            bench_record.check_target(o.record, bench_record.is_record)
-    except bench_record.RecordError as e:
-        sys.exit(f"bench_plan_estimates: {e}")
+    # refused before the measurement, not after (exit 1, as always)
+    bench_record.check_targets([(o.json, is_own_json), (o.record, bench_record.is_record)], code=1)
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], []
     for t in textures:

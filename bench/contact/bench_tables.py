@@ -42,7 +42,8 @@ import numpy as np
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.dont_write_bytecode = True  # no __pycache__ in bench/
 sys.path.insert(0, str(ROOT / "bench"))
-import bench_record  # noqa: E402
+import bench_record  # noqa: E402  (it puts python-post on the path too)
+from rollspec_post.script_main import script_main, starts_with  # noqa: E402  (one line per failure, no traceback)
 STUDY = ROOT / "studies" / "seed002-rig-1ms.ini"
 
 CASES = {
@@ -140,13 +141,8 @@ def is_own_json(path):
         return False
 
 
-def is_own_markdown(path):
-    """A --markdown file this script wrote: it starts with the title line its tables open with."""
-    try:
-        with open(path, "rb") as f:
-            return f.read(len(MARKDOWN_HEAD)) == MARKDOWN_HEAD
-    except OSError:
-        return False
+# A --markdown file this script wrote: it starts with the title line its tables open with.
+is_own_markdown = starts_with(MARKDOWN_HEAD)
 
 
 def main():
@@ -162,15 +158,9 @@ def main():
     ap.add_argument("--describe-reference", default="the reference build", help="the reference build in words")
     ap.add_argument("--describe-current", default="the current build", help="the current build in words")
     o = ap.parse_args()
-    try:  # refused before hours of measurement, not after; only files this script wrote are replaced
-        if o.json:
-            bench_record.check_target(o.json, is_own_json)
-        if o.markdown:
-            bench_record.check_target(o.markdown, is_own_markdown)
-        if o.record:
-            bench_record.check_target(o.record, bench_record.is_record)
-    except bench_record.RecordError as e:
-        sys.exit(f"bench_tables: {e}")
+    # refused before hours of measurement, not after; only files this script wrote are replaced (exit 1, as always)
+    bench_record.check_targets([(o.json, is_own_json), (o.markdown, is_own_markdown),
+                                (o.record, bench_record.is_record)], code=1)
     kinds = o.kinds.split(",")
     builds = {"reference": o.reference, "current": o.current}
     runs = {k: {b: [] for b in builds} for k in kinds}
@@ -231,11 +221,6 @@ def main():
             "each column's largest magnitude. Repeat bits: every run of a build wrote the same table bits. "
             "Estimate: the table's \"build about X s CPU\" (what `rollspec plan` shows) over the measured CPU.",
             data=summary, other_cores=others)
-
-
-sys.dont_write_bytecode = True  # nothing written into the sources
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
-from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
 
 
 def checked_main():

@@ -22,7 +22,6 @@ interval, bands 100 Hz - 5 kHz of every sensor.
 """
 import os
 import argparse
-import subprocess
 import sys
 from pathlib import Path
 
@@ -32,12 +31,7 @@ from scipy import stats
 
 
 def run(binary, study, out, sets):
-    args = [binary, "run", study, "--out", out, "--quiet"]
-    for s in sets:
-        args += ["--set", s]
-    r = subprocess.run(args, capture_output=True, text=True)
-    if r.returncode:
-        sys.exit(f"{' '.join(map(str, args))}: exit {r.returncode}\n{r.stderr}")
+    run_or_exit([binary, "run", study, "--out", out, "--quiet", *(a for s in sets for a in ("--set", s))])
 
 
 def bands(path):
@@ -57,6 +51,36 @@ def widened(level, lo, hi, var_j, k, n, t_k):
         nu = s2 ** 2 / (s_w ** 4 / (k - 1) + var_j ** 2 / (n - 1))
         out.append(stats.t.ppf(0.975, nu) * np.sqrt(s2))
     return level - out[0], level + out[1], nu
+
+
+def engine_term(a, work, t, sets, level):
+    """(widened lower, upper, V_J, how, more) of table seed t as `run` writes them (table_error = jackknife);
+    `how` and `more` complete the seed's line (the runs' own noise in V_J, D-30c)."""
+    jk = work / f"engine-{t}.h5"
+    run(a.binary, a.study, jk, sets + ["stiffness.table_error=jackknife"])
+    level_j, lo_j, hi_j = bands(jk)
+    with h5py.File(jk) as f:
+        nominal = f["bands/nominal_frequency"][:]
+        keep = (nominal >= 99.0) & (nominal <= 5001.0)
+        var_j = f["bands/table_std_db"][:][:, keep] ** 2
+        noise = f["bands/table_noise_std_db"][:][:, keep] ** 2
+    assert np.array_equal(level_j, level), "the jackknife run's central values differ from the plain run's"
+    return (lo_j, hi_j, var_j, " (engine)",
+            f"; the runs' own noise is {np.median(np.minimum(noise, var_j) / var_j):.2f} of V_J (median, D-30c)")
+
+
+def sub_table_term(a, work, t, sets, level, lo, hi, t_k):
+    """(widened lower, upper, V_J, how, more) of table seed t from its N leave-one-out sub-table runs combined
+    here (D-30a, D-30b); `more` completes the seed's line (the median dof)."""
+    theta = []
+    for i in range(a.n):
+        sub = work / f"loo-{t}-{i}.h5"
+        run(a.binary, a.study, sub, sets + [f"stiffness.table_leave_out={i}"])
+        theta.append(bands(sub)[0])
+    theta = np.array(theta)
+    var_j = (a.n - 1) / a.n * ((theta - theta.mean(axis=0)) ** 2).sum(axis=0)
+    lo_j, hi_j, nu = widened(level, lo, hi, var_j, a.k, a.n, t_k)
+    return lo_j, hi_j, var_j, "", f", median dof {np.median(nu):.1f}"
 
 
 def main():
@@ -105,40 +129,16 @@ def main():
         run(a.binary, a.study, out, sets)
         level, lo, hi = bands(out)
         if a.engine:
-            jk = work / f"engine-{t}.h5"
-            run(a.binary, a.study, jk, sets + ["stiffness.table_error=jackknife"])
-            level_j, lo_j, hi_j = bands(jk)
-            with h5py.File(jk) as f:
-                nominal = f["bands/nominal_frequency"][:]
-                keep = (nominal >= 99.0) & (nominal <= 5001.0)
-                var_j = f["bands/table_std_db"][:][:, keep] ** 2
-                noise = f["bands/table_noise_std_db"][:][:, keep] ** 2
-            assert np.array_equal(level_j, level), "the jackknife run's central values differ from the plain run's"
-            nu = np.full_like(var_j, np.nan)
-            held.append((lo <= ref) & (ref <= hi))
-            held_j.append((lo_j <= ref) & (ref <= hi_j))
-            full_levels.append(level)
-            var_j_all.append(var_j)
-            print(f"table seed {t}: coverage {np.mean(held[-1]):.3f} without, {np.mean(held_j[-1]):.3f} with the "
-                  f"jackknife term (engine); median sqrt(V_J) {np.median(np.sqrt(var_j)):.3f} dB, median h "
-                  f"{np.median(0.5 * (hi - lo)):.3f} dB; the runs' own noise is {np.median(np.minimum(noise, var_j) / var_j):.2f} "
-                  "of V_J (median, D-30c)", flush=True)
-            continue
-        theta = []
-        for i in range(a.n):
-            sub = work / f"loo-{t}-{i}.h5"
-            run(a.binary, a.study, sub, sets + [f"stiffness.table_leave_out={i}"])
-            theta.append(bands(sub)[0])
-        theta = np.array(theta)
-        var_j = (a.n - 1) / a.n * ((theta - theta.mean(axis=0)) ** 2).sum(axis=0)
-        lo_j, hi_j, nu = widened(level, lo, hi, var_j, a.k, a.n, t_k)
+            lo_j, hi_j, var_j, how, more = engine_term(a, work, t, sets, level)
+        else:
+            lo_j, hi_j, var_j, how, more = sub_table_term(a, work, t, sets, level, lo, hi, t_k)
         held.append((lo <= ref) & (ref <= hi))
         held_j.append((lo_j <= ref) & (ref <= hi_j))
         full_levels.append(level)
         var_j_all.append(var_j)
         print(f"table seed {t}: coverage {np.mean(held[-1]):.3f} without, {np.mean(held_j[-1]):.3f} with the "
-              f"jackknife term; median sqrt(V_J) {np.median(np.sqrt(var_j)):.3f} dB, median h "
-              f"{np.median(0.5 * (hi - lo)):.3f} dB, median dof {np.median(nu):.1f}", flush=True)
+              f"jackknife term{how}; median sqrt(V_J) {np.median(np.sqrt(var_j)):.3f} dB, median h "
+              f"{np.median(0.5 * (hi - lo)):.3f} dB{more}", flush=True)
     between = np.var(np.array(full_levels), axis=0, ddof=1)
     print(f"coverage of the other table seeds' mean ({len(held)} tables x {held[0].size} sensor-bands): "
           f"{np.mean(held):.3f} without, {np.mean(held_j):.3f} with the jackknife term")
@@ -148,7 +148,7 @@ def main():
 
 sys.dont_write_bytecode = True  # nothing written into the sources
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
-from rollspec_post.script_main import own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+from rollspec_post.script_main import own_folder, run_or_exit, script_main  # noqa: E402  (one line per failure, no traceback)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,6 @@ common random numbers), then
 import os
 import argparse
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
@@ -29,13 +28,8 @@ Z = 1.959963984540054
 
 
 def run(binary, study, out, sets):
-    args = [binary, "run", study, "--out", out]
-    for s in sets:
-        args += ["--set", s]
-    r = subprocess.run(args, capture_output=True, text=True)
-    if r.returncode:
-        sys.exit(f"{' '.join(map(str, args))}: exit {r.returncode}\n{r.stderr}")
-    return r.stderr
+    """The run's stderr (it says whether the table was cached)."""
+    return run_or_exit([binary, "run", study, "--out", out, *(a for s in sets for a in ("--set", s))]).stderr
 
 
 def bands(path):
@@ -100,7 +94,7 @@ def main():
 
 sys.dont_write_bytecode = True  # nothing written into the sources
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
-from rollspec_post.script_main import own_folder, script_main  # noqa: E402  (one line per failure, no traceback)
+from rollspec_post.script_main import own_folder, run_or_exit, script_main  # noqa: E402  (one line per failure, no traceback)
 
 
 if __name__ == "__main__":

@@ -76,11 +76,7 @@ def main():
                                                   "these realisations too")
     ap.add_argument("--record", help="write the table as a record (bench/records/validation/*.json)")
     a = ap.parse_args()
-    if a.record:
-        try:
-            bench_record.check_target(a.record, own=bench_record.is_record)
-        except bench_record.RecordError as e:
-            fail(e, 73)
+    bench_record.check_record_target(a.record)
     try:
         cases = [int(i) for i in a.cases.split(",")]
         smaller = [int(k) for k in a.size_at.split(",") if k.strip()]
@@ -129,10 +125,9 @@ def main():
 
 
 sys.dont_write_bytecode = True  # nothing written into the sources
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
-from rollspec_post.script_main import fail, script_main  # noqa: E402  (one line per failure, no traceback)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-import bench_record  # noqa: E402  (the records the documentation renders)
+import bench_record  # noqa: E402  (the records the documentation renders; it puts python-post on the path)
+from rollspec_post.script_main import fail, script_main  # noqa: E402  (one line per failure, no traceback)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,6 @@ a 1-realisation run's (set-up). Cases: substeps 2/4/8 at their default line spac
 interpolation loss undone, kernels/beam B40-B40a) and = step (before issue 18).
 """
 import os
-import argparse
 import sys
 import tempfile
 from pathlib import Path
@@ -23,7 +22,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from bench_whole_run import timed  # same folder: /usr/bin/time around a whole command
+from bench_whole_run import timed, whole_run_parser  # same folder: /usr/bin/time around a whole command, its options
 
 
 def run(cmd):
@@ -41,10 +40,7 @@ def bands(path):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--bin", default="build/release/rollspec")
-    ap.add_argument("--study", default="studies/seed002-rig-1ms.ini")
-    ap.add_argument("--realisations", type=int, default=25)
+    ap = whole_run_parser(25)
     ap.add_argument("--cost-realisations", type=int, default=400)
     a = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:

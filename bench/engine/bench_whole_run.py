@@ -65,11 +65,18 @@ def measure(binary, study, K, repeats, baseline=None, only_baseline=False):
     return {n: (statistics.median(r[0] for r in v), statistics.median(r[1] for r in v)) for n, v in runs.items()}
 
 
-def main():
+def whole_run_parser(realisations):
+    """The options of a script that times whole `rollspec run` commands: --bin, --study, --realisations (K);
+    the script adds its own."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--bin", default="build/release/rollspec")
     ap.add_argument("--study", default="studies/seed002-rig-1ms.ini")
-    ap.add_argument("--realisations", type=int, default=1000)
+    ap.add_argument("--realisations", type=int, default=realisations)
+    return ap
+
+
+def main():
+    ap = whole_run_parser(1000)
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--baseline", help="previous build's rollspec, run interleaved for a ratio")
     ap.add_argument("--only-baseline", action="store_true", help="only the this-vs-previous pair")

@@ -32,11 +32,10 @@ IGNORED_ATTRIBUTES = {"rollspec_version", "git_sha", "library_versions", "create
 
 
 def scene_of(path):
-    for line in path.read_text().splitlines():
-        key, _, value = line.partition("=")
-        if key.strip() == "scene":
-            return value.strip()
-    raise SystemExit(f"{path}: no scene")
+    scene = study_scene(path.read_text())
+    if scene is None:
+        raise SystemExit(f"{path}: no scene")
+    return scene
 
 
 def run(binary, args, cwd):
@@ -189,6 +188,7 @@ def main():
 
 sys.dont_write_bytecode = True  # nothing written into the sources
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../python-post"))
+from rollspec_post.rig_summary import study_scene  # noqa: E402  (the scene as the tests read it)
 from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
 
 

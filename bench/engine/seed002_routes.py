@@ -82,11 +82,7 @@ def main():
     p.add_argument("--realisations", type=int, default=100)
     p.add_argument("--record", help="write the table as a record (bench/records/validation/*.json)")
     a = p.parse_args()
-    if a.record:
-        try:
-            bench_record.check_target(a.record, own=bench_record.is_record)
-        except bench_record.RecordError as e:
-            sys.exit(f"seed002_routes: {e}")
+    bench_record.check_record_target(a.record, code=1)  # 1: this script's exit for a refused target
     binary = str(pathlib.Path(a.bin).resolve())
     if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
         sys.exit(f"seed002_routes: --bin {a.bin}: not an executable file; allowed: a rollspec binary")

@@ -2,9 +2,7 @@
 (`frequency_hz,<channel> [(m/s^2)^2/Hz],...`, with its metadata in `<csv>-metadata.json`; older files start
 with a line `# rollspec-psd-csv: ...`) or a plain measurement CSV (a frequency column, then PSD columns),
 read by the rule of rollspec's CSV reader (psd_table._read_table)."""
-import numpy as np
-
-from .psd_table import _read_table, psd_column, psd_values, split_title
+from .psd_table import _read_table, check_psd_curve, psd_column, psd_values, split_title
 from .result_file import EX_DATAERR, PostError
 
 HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
@@ -44,11 +42,5 @@ def read_panel_csv(path, column=None):
     name = pick_column(path, header, column)
     f = data[:, header.index("frequency_hz") if "frequency_hz" in header else 0]
     p = psd_values(path, name, data[:, header.index(name)])
-    if not (np.all(np.isfinite(f)) and np.all(np.isfinite(p))):
-        raise PostError(f"{path}: values must be finite numbers", EX_DATAERR)
-    if np.any(np.diff(f) <= 0):
-        raise PostError(f"{path}: the frequency column must increase strictly", EX_DATAERR)
-    if np.any(p < 0):
-        raise PostError(f"{path}:{numbers[np.argmax(p < 0)]}: {name} value {p[p < 0][0]:g} is negative; allowed: >= 0",
-                        EX_DATAERR)
+    check_psd_curve(path, f, p, numbers, name, "the frequency column")
     return f, p, name

@@ -169,11 +169,17 @@ def read_measurement(path, column=None):
         raise PostError(f"{path}:1: no column 'frequency_hz'; columns found: {', '.join(header)}", EX_DATAERR)
     column = psd_column(path, header, column, [h for h in header if h != "frequency_hz"])
     f, p = data[:, header.index("frequency_hz")], data[:, header.index(column)]
+    check_psd_curve(path, f, p, numbers, column, "frequency_hz")
+    return f, psd_values(path, column, p)
+
+
+def check_psd_curve(path, f, p, numbers, name, frequency):
+    """A PSD curve read from a table, or PostError: finite values, the frequencies (the column the message calls
+    `frequency`) increasing strictly, no negative PSD value (its file line from `numbers` named)."""
     if not (np.all(np.isfinite(f)) and np.all(np.isfinite(p))):
         raise PostError(f"{path}: values must be finite numbers", EX_DATAERR)
     if np.any(np.diff(f) <= 0):
-        raise PostError(f"{path}: frequency_hz must increase strictly", EX_DATAERR)
+        raise PostError(f"{path}: {frequency} must increase strictly", EX_DATAERR)
     if np.any(p < 0):
-        raise PostError(f"{path}:{numbers[np.argmax(p < 0)]}: {column} value {p[p < 0][0]:g} is negative; allowed: >= 0",
+        raise PostError(f"{path}:{numbers[np.argmax(p < 0)]}: {name} value {p[p < 0][0]:g} is negative; allowed: >= 0",
                         EX_DATAERR)
-    return f, psd_values(path, column, p)

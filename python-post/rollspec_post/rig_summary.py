@@ -24,6 +24,16 @@ def parse_study(text):
     return {s: dict(parser[s]) for s in parser.sections()}
 
 
+def study_scene(text):
+    """The scene a study's text names (the value of its first `scene` key, read line by line as the scripts
+    and tests that run every study read it), or None."""
+    for line in text.splitlines():
+        key, _, value = line.partition("=")
+        if key.strip() == "scene":
+            return value.strip()
+    return None
+
+
 def shown_value(key, value):
     if key == "profiles":  # fifteen file names say less than their count
         files = [v for v in value.split(",") if v.strip()]

@@ -10,6 +10,7 @@ script can say in one line that a module is missing.
 import errno
 import os
 import signal
+import subprocess
 import sys
 
 EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_UNAVAILABLE, EX_SOFTWARE, EX_CANTCREAT, EX_IOERR = 64, 65, 66, 69, 70, 73, 74
@@ -106,6 +107,15 @@ def require_program(path, what):
     if not (os.path.isfile(path) and os.access(path, os.X_OK)):
         fail(f"{what} {path}: no executable program there; allowed: the path of a build's binary", EX_NOINPUT)
     return path
+
+
+def run_or_exit(cmd, failed="{command}: exit {code}\n{stderr}"):
+    """Runs the program `cmd` (its output captured as text) and returns the finished run; a failure ends the
+    script as sys.exit(message) does, the message `failed` filled in with the command, its exit code and stderr."""
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode:
+        sys.exit(failed.format(command=" ".join(map(str, cmd)), code=r.returncode, stderr=r.stderr))
+    return r
 
 
 def check_output_file(path, what, own=lambda target: False):

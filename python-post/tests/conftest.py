@@ -32,6 +32,39 @@ def is_png_with_content(path):
     return path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and img.shape[0] > 100 and img[..., :3].std() > 0.05
 
 
+def rollspec_ok(*args):
+    """`rollspec ARGS` (the engine under test), which must succeed."""
+    r = subprocess.run([BIN, *args], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+
+
+def assert_plots(command, path, out):
+    """`python3 -m rollspec_post COMMAND PATH --out OUT` succeeds and OUT is a PNG with content."""
+    r = post(command, path, "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert is_png_with_content(out)
+
+
+def write_measurement(result, path, scale=1.0):
+    """`path`: a measurement CSV (frequency_hz,psd) of a result's reference PSD of its first sensor times
+    `scale`, without 0 Hz."""
+    import h5py
+    import numpy as np
+    with h5py.File(result) as f:
+        freq, ref = f["/psd/frequency"][1:], f["/reference/psd"][0, 1:]
+    np.savetxt(path, np.c_[freq, ref * scale], delimiter=",", header="frequency_hz,psd", comments="")
+    return path
+
+
+def hdf5_with_attributes(path, **attributes):
+    """`path`: an HDF5 file that holds only these root attributes (a file of another kind or version)."""
+    import h5py
+    with h5py.File(path, "w") as f:
+        for name, value in attributes.items():
+            f.attrs[name] = value
+    return path
+
+
 def write_rollspec(path, filetype="rollspec-result"):
     import h5py
     f = h5py.File(path, "w")

@@ -1,21 +1,16 @@
 """`psd` for a paper: --title, --label, --measurement-label, --ylim, --style seed; the measured band
 levels drawn beside the simulated ones; minor tick labels on a log axis under two decades. Checked on
 the figure itself (line styles, legend texts, limits, tick labels), not only on the file's bytes."""
-import h5py
 import numpy as np
 import pytest
 
-from conftest import post
+from conftest import post, write_measurement
 from figure_capture import overlap, renderer_of
 
 
 @pytest.fixture
 def measurement(oscillator_result, tmp_path):
-    with h5py.File(oscillator_result) as f:
-        freq, ref = f["/psd/frequency"][1:], f["/reference/psd"][0, 1:]
-    path = tmp_path / "meas.csv"
-    np.savetxt(path, np.c_[freq, ref * 1.2], delimiter=",", header="frequency_hz,psd", comments="")
-    return path
+    return write_measurement(oscillator_result, tmp_path / "meas.csv", 1.2)
 
 
 def line(ax, label):

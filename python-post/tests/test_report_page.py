@@ -5,11 +5,9 @@ import html.parser
 import os
 import subprocess
 
-import h5py
-import numpy as np
 import pytest
 
-from conftest import BIN, is_png_with_content, post
+from conftest import BIN, hdf5_with_attributes, is_png_with_content, post, write_measurement
 
 CHROMIUM = "/usr/bin/chromium"
 
@@ -26,10 +24,7 @@ class Resources(html.parser.HTMLParser):
 
 @pytest.fixture
 def report_with_measurement(oscillator_result, tmp_path):
-    with h5py.File(oscillator_result) as f:
-        freq, ref = f["/psd/frequency"][1:], f["/reference/psd"][0, 1:]
-    meas = tmp_path / "meas.csv"
-    np.savetxt(meas, np.c_[freq, ref * 1.05], delimiter=",", header="frequency_hz,psd", comments="")
+    meas = write_measurement(oscillator_result, tmp_path / "meas.csv", 1.05)
     out = tmp_path / "report.html"
     r = post("report", oscillator_result, "--measurement", meas, "--out", out)
     assert r.returncode == 0, r.stderr
@@ -69,10 +64,7 @@ def test_report_opens_in_headless_chromium(report_with_measurement, tmp_path):
 def test_report_clear_errors(oscillator_result, tmp_path):
     r = post("report", tmp_path / "missing.h5", "--out", tmp_path / "x.html")
     assert r.returncode == 66 and "no such file" in r.stderr
-    other = tmp_path / "other.h5"
-    with h5py.File(other, "w") as f:
-        f.attrs["filetype"] = "rollspec-stiffness-table"
-        f.attrs["schema_version"] = "1.0"
+    other = hdf5_with_attributes(tmp_path / "other.h5", filetype="rollspec-stiffness-table", schema_version="1.0")
     r = post("report", other, "--out", tmp_path / "x.html")
     assert r.returncode == 65 and "not a rollspec file" in r.stderr
     r = post("report", oscillator_result, "--sensor", "3", "--out", tmp_path / "x.html")

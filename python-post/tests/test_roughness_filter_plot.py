@@ -1,28 +1,23 @@
 """`python3 -m rollspec_post roughness`: the path PSD raw and under each contact filter, from /roughness."""
 import shutil
-import subprocess
 
 import numpy as np
 import pytest
 
-from conftest import BIN, SOURCE, is_png_with_content, post
+from conftest import SOURCE, assert_plots, post, rollspec_ok
 
 
 @pytest.fixture(scope="module")
 def beam_result(tmp_path_factory):
     out = tmp_path_factory.mktemp("results") / "beam.h5"
-    r = subprocess.run([BIN, "run", SOURCE / "studies" / "seed001-beam-s-hertz.ini", "--out", out, "--quiet",
-                        "--set", "study.realisations=1", "--set", "ball.end=0.12", "--set", "spectrum.segment=1024",
-                        "--set", "contact.filter=iso2d"], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
+    rollspec_ok("run", SOURCE / "studies" / "seed001-beam-s-hertz.ini", "--out", out, "--quiet",
+                "--set", "study.realisations=1", "--set", "ball.end=0.12", "--set", "spectrum.segment=1024",
+                "--set", "contact.filter=iso2d")
     return out
 
 
 def test_roughness_plot(beam_result, tmp_path):
-    out = tmp_path / "r.png"
-    r = post("roughness", beam_result, "--out", out)
-    assert r.returncode == 0, r.stderr
-    assert is_png_with_content(out)
+    assert_plots("roughness", beam_result, tmp_path / "r.png")
 
 
 def test_plotted_curves_obey_the_filters(beam_result):
@@ -56,9 +51,7 @@ def solver_result(tmp_path_factory):
             "spectrum.segment=128", "study.realisations=1"]
     study = out.parent / "rig.ini"  # its tables are written beside it, not in the source tree
     shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
-    r = subprocess.run([BIN, "run", study, "--out", out, "--quiet", *[a for kv in sets for a in ("--set", kv)]],
-                       capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
+    rollspec_ok("run", study, "--out", out, "--quiet", *[a for kv in sets for a in ("--set", kv)])
     return out
 
 
@@ -73,10 +66,7 @@ def test_solver_curve_is_drawn_and_follows_the_patch(solver_result, tmp_path):
     band = (k * a > 1.0) & (k * a < 2.5) & (raw > 0)
     assert np.all(solver[band] < 0.5 * raw[band])
     assert abs(10 * np.log10(np.mean(solver[band]) / np.mean(iso[band]))) < 3.0
-    out = tmp_path / "s.png"
-    r = post("roughness", solver_result, "--out", out)
-    assert r.returncode == 0, r.stderr
-    assert is_png_with_content(out)
+    assert_plots("roughness", solver_result, tmp_path / "s.png")
 
 
 def test_refuses_a_result_without_roughness(oscillator_result, tmp_path):

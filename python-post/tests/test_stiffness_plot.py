@@ -1,7 +1,7 @@
 """`python3 -m rollspec_post stiffness` on a table in the engine's layout; wrong files refused."""
 import numpy as np
 
-from conftest import is_png_with_content, post
+from conftest import assert_plots, post, rollspec_ok
 
 
 def test_hertz_curve():
@@ -12,10 +12,7 @@ def test_hertz_curve():
 
 
 def test_stiffness_plot(stiffness_table, tmp_path):
-    out = tmp_path / "k.png"
-    r = post("stiffness", stiffness_table, "--out", out)
-    assert r.returncode == 0, r.stderr
-    assert is_png_with_content(out)
+    assert_plots("stiffness", stiffness_table, tmp_path / "k.png")
 
 
 def test_stiffness_refuses_a_result_file(stiffness_table, oscillator_result, tmp_path):
@@ -32,19 +29,12 @@ def test_stiffness_refuses_a_result_file(stiffness_table, oscillator_result, tmp
 
 
 def test_stiffness_plot_of_an_engine_table(tmp_path):
-    import subprocess
-
     import h5py
 
-    from conftest import BIN, SOURCE
+    from conftest import SOURCE
     table = tmp_path / "hertz.h5"
-    r = subprocess.run([BIN, "stiffness", SOURCE / "studies" / "hertz.ini", "--out", table, "--quiet"],
-                       capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    out = tmp_path / "hertz.png"
-    r = post("stiffness", table, "--out", out)
-    assert r.returncode == 0, r.stderr
-    assert is_png_with_content(out)
+    rollspec_ok("stiffness", SOURCE / "studies" / "hertz.ini", "--out", table, "--quiet")
+    assert_plots("stiffness", table, tmp_path / "hertz.png")
     from rollspec_post.stiffness_plot import hertz, read_table
     cols, meta = read_table(str(table))
     p, _ = hertz(cols["approach"], meta["ball_radius"], meta["effective_modulus"])

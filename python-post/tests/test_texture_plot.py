@@ -1,18 +1,11 @@
 """`python3 -m rollspec_post texture` on a file made by `rollspec texture` in the test run."""
-import subprocess
-
-from conftest import BIN, SOURCE, is_png_with_content, post
+from conftest import SOURCE, assert_plots, post, rollspec_ok
 
 
 def test_texture_plot(tmp_path):
     tex = tmp_path / "t.h5"
-    r = subprocess.run([BIN, "texture", SOURCE / "studies" / "texture-demo.ini", "--out", tex, "--count", "4"],
-                       capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    out = tmp_path / "t.png"
-    r = post("texture", tex, "--out", out)
-    assert r.returncode == 0, r.stderr
-    assert is_png_with_content(out)
+    rollspec_ok("texture", SOURCE / "studies" / "texture-demo.ini", "--out", tex, "--count", "4")
+    assert_plots("texture", tex, tmp_path / "t.png")
 
 
 def test_texture_plot_refuses_a_result_file(oscillator_result, tmp_path):
@@ -26,9 +19,7 @@ def test_colour_bar_label_clears_the_next_panel(tmp_path, monkeypatch):
     from figure_capture import capture_figures, overlap, renderer_of
     from rollspec_post import texture_plot
     tex = tmp_path / "t.h5"
-    r = subprocess.run([BIN, "texture", SOURCE / "studies" / "texture-demo.ini", "--out", tex, "--count", "4"],
-                       capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
+    rollspec_ok("texture", SOURCE / "studies" / "texture-demo.ini", "--out", tex, "--count", "4")
     figures = capture_figures(monkeypatch, texture_plot)
     texture_plot.plot_texture(tex, tmp_path / "t.png")
     fig = figures[0]

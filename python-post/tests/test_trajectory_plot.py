@@ -2,7 +2,7 @@
 import h5py
 import numpy as np
 
-from conftest import is_png_with_content, post
+from conftest import assert_plots, post, rollspec_ok
 
 
 def test_plane_is_the_two_widest_coordinates(rolling_disc_result):
@@ -13,10 +13,7 @@ def test_plane_is_the_two_widest_coordinates(rolling_disc_result):
 
 
 def test_trajectory_plot(rolling_disc_result, tmp_path):
-    out = tmp_path / "traj.png"
-    r = post("trajectory", rolling_disc_result, "--out", out)
-    assert r.returncode == 0, r.stderr
-    assert is_png_with_content(out)
+    assert_plots("trajectory", rolling_disc_result, tmp_path / "traj.png")
 
 
 def test_trajectory_refuses_a_psd_result(oscillator_result, tmp_path):
@@ -27,16 +24,11 @@ def test_trajectory_refuses_a_psd_result(oscillator_result, tmp_path):
 
 def test_trajectory_of_an_engine_result(tmp_path):
     """Seed 000 example 4.1 run by the engine in the test run (1 s of the disc)."""
-    import subprocess
-    from conftest import BIN, SOURCE
+    from conftest import SOURCE
     res = tmp_path / "disc.h5"
-    r = subprocess.run([BIN, "run", str(SOURCE / "studies" / "seed000-disc.ini"), "--out", str(res), "--quiet",
-                        "--set", "analysis.t_end=1"], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    out = tmp_path / "disc.png"
-    r = post("trajectory", res, "--out", out)
-    assert r.returncode == 0, r.stderr
-    assert is_png_with_content(out)
+    rollspec_ok("run", str(SOURCE / "studies" / "seed000-disc.ini"), "--out", str(res), "--quiet",
+                "--set", "analysis.t_end=1")
+    assert_plots("trajectory", res, tmp_path / "disc.png")
 
 
 def test_flying_beam_legend_holds_only_energies_below_the_axes(tmp_path, monkeypatch):

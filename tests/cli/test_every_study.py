@@ -10,16 +10,15 @@ import numpy as np
 import pytest
 
 from conftest import SOURCE, run
+from rollspec_post.rig_summary import study_scene  # python-post is on PYTHONPATH (tests/cli/CMakeLists.txt)
 
 STUDIES = sorted(p.name for p in (SOURCE / "studies").glob("*.ini"))
 
 
 def scene_of(path):
-    for line in path.read_text().splitlines():
-        key, _, value = line.partition("=")
-        if key.strip() == "scene":
-            return value.strip()
-    raise AssertionError(f"{path}: no scene")
+    scene = study_scene(path.read_text())
+    assert scene is not None, f"{path}: no scene"
+    return scene
 
 
 def finite_datasets(path):
