@@ -1,11 +1,9 @@
 """rollspec.spectra.read_measurement against `rollspec psd` on the same files (CSV, WAV, FLAC, MAT): the
 same samples give the command's PSD bit for bit; a unit in a column's name converts to m/s^2; a bad file
 raises the command's own one-line message."""
-import ctypes
-import ctypes.util
 import os
-import struct
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -16,6 +14,9 @@ from rollspec import spectra
 ROLLSPEC = os.environ.get("ROLLSPEC_BIN", "rollspec")
 SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
 EXAMPLE = os.path.join(SOURCE, "studies", "data", "example-signal.csv")  # ';', decimal comma, Time (s)
+
+sys.path.append(os.path.join(SOURCE, "tests", "cli"))  # the command-line tests' sound file writer
+from sound_files import write_pcm16  # noqa: E402
 
 
 def psd_command(path, *options):
@@ -35,22 +36,9 @@ def command_error(path, *options):
 
 
 def write_flac(path, rate=8000, frames=6000):
-    """16-bit stereo FLAC through libsndfile (SF_INFO: frames, samplerate, channels, format, sections, seekable)."""
-    name = ctypes.util.find_library("sndfile")
-    if not name:
-        pytest.skip("libsndfile not found for writing the FLAC file")
-    lib = ctypes.CDLL(name)
-    lib.sf_open.restype = ctypes.c_void_p
-    lib.sf_open.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.c_void_p]
-    lib.sf_writef_short.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int64]
-    lib.sf_close.argtypes = [ctypes.c_void_p]
-    info = struct.pack("<qiiiii", 0, rate, 2, 0x170000 | 0x0002, 0, 0)
-    f = lib.sf_open(str(path).encode(), 0x20, ctypes.create_string_buffer(info, len(info)))
-    assert f, f"libsndfile cannot write {path}"
+    """16-bit stereo FLAC through libsndfile."""
     rng = np.random.default_rng(3)
-    x = np.ascontiguousarray(rng.normal(0, 3000, (frames, 2)).astype("<i2"))
-    lib.sf_writef_short(f, x.ctypes.data, frames)
-    lib.sf_close(f)
+    write_pcm16(path, rng.normal(0, 3000, (frames, 2)).astype("<i2"), rate, 0x170000)
 
 
 def test_each_format_gives_the_psd_command_bits(tmp_path):

@@ -1,6 +1,8 @@
 """Shared helpers for the command-line tests: the rollspec binary, small studies, HDF5 comparison."""
+import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 
@@ -20,15 +22,18 @@ SOURCE = pathlib.Path(os.environ.get("ROLLSPEC_SOURCE", pathlib.Path(__file__).r
 # Exit codes from <sysexits.h>.
 EX_USAGE, EX_DATAERR, EX_NOINPUT, EX_CANTCREAT, EX_CONFIG, EX_INTERRUPTED = 64, 65, 66, 73, 78, 130
 
-SMALL_OSCILLATOR = """\
-[study]
-scene = random-oscillator
-realisations = {realisations}
-seed = 42
 
-[ensemble]
-chunk_size = {chunk}
+def study_head(scene, realisations, seed):
+    """The [study] section of a study's text, a blank line after it."""
+    return f"[study]\nscene = {scene}\nrealisations = {realisations}\nseed = {seed}\n\n"
 
+
+def ensemble_head(scene, seed):
+    """[study] and [ensemble] of the small studies below, with the format fields {realisations} and {chunk}."""
+    return study_head(scene, "{realisations}", seed) + "[ensemble]\nchunk_size = {chunk}\n\n"
+
+
+SMALL_OSCILLATOR = ensemble_head("random-oscillator", 42) + """\
 [oscillator]
 mass = 1.5
 natural_frequency = 40
@@ -49,15 +54,7 @@ band_max = 400
 
 
 # Half-metre tube, 2 elements (5 node spheres), 0.1 m rolled at 0.5 m/s on an isotropic floor.
-SMALL_PIPE = """\
-[study]
-scene = rolling-pipe
-realisations = {realisations}
-seed = 77
-
-[ensemble]
-chunk_size = {chunk}
-
+SMALL_PIPE = ensemble_head("rolling-pipe", 77) + """\
 [pipe]
 length = 0.5
 elements = 2
@@ -98,6 +95,14 @@ band_max = 4000
 """
 
 
+def texture_study(seed, texture, lines, surface=None):
+    """The text of a one-realisation `scene = texture` study: [texture], [lines] and (if given) [surface] from
+    {key: value} dicts, each value written as given."""
+    sections = {"texture": texture, "lines": lines, **({"surface": surface} if surface else {})}
+    return study_head("texture", 1, seed) + "\n".join(
+        f"[{name}]\n" + "".join(f"{k} = {v}\n" for k, v in keys.items()) for name, keys in sections.items())
+
+
 def assert_refused(r, code, fragments):
     """A clean refusal: the exit code, no internal error, and every fragment in the message."""
     assert r.returncode == code, f"exit {r.returncode}, expected {code}: {r.stderr[:2000]}"
@@ -120,13 +125,16 @@ def run(args, env=None, **kw):
     return subprocess.run([BIN, *map(str, args)], capture_output=True, text=True, env=full_env, **kw)
 
 
-def study_result(study, directory, name, *sets):
-    """`rollspec run STUDY --set SETS` into directory/NAME.h5 (asserted to succeed)."""
+def set_args(sets):
+    """--set KEY=VALUE for each of sets."""
+    return [a for kv in sets for a in ("--set", kv)]
+
+
+def study_result(study, directory, name, *sets, command="run"):
+    """`rollspec run STUDY --set SETS` (or another COMMAND that writes --out) into directory/NAME.h5 (asserted to
+    succeed)."""
     out = directory / f"{name}.h5"
-    args = ["run", study, "--out", out, "--quiet"]
-    for s in sets:
-        args += ["--set", s]
-    r = run(args)
+    r = run([command, study, "--out", out, "--quiet", *set_args(sets)])
     assert r.returncode == 0, r.stderr
     return out
 
@@ -140,26 +148,100 @@ def measurement_from(path, csv, row=-1):
     return csv
 
 
+def lorentzian_comparison(tmp_path):
+    """A 6-realisation oscillator result r.h5 and a measured PSD m.csv (a Lorentzian at 40 Hz, 2049 bins to
+    512 Hz, plain CSV) compared with `--format csv` (asserted to succeed): (result, frequencies, PSD,
+    the comparison)."""
+    res = tmp_path / "r.h5"
+    assert run(["run", oscillator_study(tmp_path, realisations=6), "--out", res, "--quiet"]).returncode == 0
+    f = np.linspace(0, 512, 2049)
+    p = 1e-4 / (1 + ((f - 40) / 4) ** 2)
+    plain = tmp_path / "m.csv"
+    plain.write_text("frequency_hz,psd\n" + "".join(f"{a:.17g},{b:.17g}\n" for a, b in zip(f, p)))
+    want = run(["compare", res, plain, "--format", "csv"])
+    assert want.returncode == 0, want.stderr
+    return res, f, p, want
+
+
 def run_copied_study(name, tmp_path, *sets, out="r.h5", command="run"):
     """studies/NAME copied to tmp_path (its tables are written beside it, not in the source tree) and
     run (returns (result, out path)) or planned (returns (result, None)) with --set SETS."""
     study = tmp_path / name
     if not study.exists():
         shutil.copy(SOURCE / "studies" / name, study)
-    args = [a for kv in sets for a in ("--set", kv)]
+    args = set_args(sets)
     if command == "plan":
         return run(["plan", study, *args]), None
     path = tmp_path / out
     return run(["run", study, "--out", path, *args]), path
 
 
+def rig_1ms(tmp_path, *sets, name="r.h5", command="run"):
+    """studies/seed002-rig-1ms.ini copied, run (or planned) with --set SETS: run_copied_study's (result, out path)."""
+    return run_copied_study("seed002-rig-1ms.ini", tmp_path, *sets, out=name, command=command)
+
+
+def band_levels(path):
+    """A result's band levels (dB) and its first row's loss-of-contact share."""
+    with h5py.File(path) as f:
+        return f["/bands/level_db"][:], f["/contact/loss_of_contact_share"][0]
+
+
 def coarse_rig(tmp_path, name, base, *sets, command="run"):
     """studies/seed002-rig-1ms.ini run (or planned) copied with the sets `base` and `sets`, and the table's error
     only where `sets` asks for it ([stiffness] table_error's default, auto, estimates it); it must succeed."""
     own = [] if any(s.startswith("stiffness.table_error=") for s in sets) else ["stiffness.table_error=none"]
-    r, out = run_copied_study("seed002-rig-1ms.ini", tmp_path, *base, *own, *sets, out=name, command=command)
+    r, out = rig_1ms(tmp_path, *base, *own, *sets, name=name, command=command)
     assert r.returncode == 0, r.stderr
     return r, out
+
+
+def attr_text(attrs, name):
+    """A string attribute as str (a fixed-length one reads as bytes)."""
+    v = attrs[name]
+    return v.decode() if isinstance(v, bytes) else v
+
+
+def assert_intervals_name_the_table(plain, jackknife, table, over):
+    """Open results of a run without and with `[stiffness] table_error = jackknife` on the TABLE table: the same
+    band levels, bit for bit; the first's intervals conditional on the table, the second's including it."""
+    assert plain["bands/level_db"][()].tobytes() == jackknife["bands/level_db"][()].tobytes()
+    assert attr_text(plain["bands"].attrs, "interval_includes") == \
+        f"realisations only (conditional on the {table} table)"
+    assert attr_text(jackknife["bands"].attrs, "interval_includes") == \
+        f"realisations, {table} table (jackknife over {over})"
+
+
+def measure_and_fit(study, directory, seed, key, truth, rng, *, short, bands, records, realisations):
+    """A synthetic measurement, M = RECORDS realisations of STUDY (with the sets SHORT) at KEY = TRUTH and study
+    seed SEED, fitted for KEY over RNG ('lo:hi[:log]') with K = REALISATIONS and a model seed of its own
+    (50000 + SEED) in the bands BANDS (--fmin/--fmax); both asserted to succeed: the fit's JSON."""
+    out = directory / f"m{seed}.h5"
+    r = run(["run", study, "--out", out, "--quiet",
+             *set_args(short + [f"{key}={truth}", f"study.realisations={records}", f"study.seed={seed}"])])
+    assert r.returncode == 0, r.stderr
+    csv = measurement_from(out, directory / f"m{seed}.csv")
+    r = run(["fit", study, csv, "--measured-averages", records, "--format", "json", "--vary", f"{key}={rng}", *bands,
+             *set_args(short + [f"study.realisations={realisations}", f"study.seed={50000 + seed}"])])
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def scene_keys(scene):
+    """`rollspec keys SCENE` as [(section, key, default, [the lines that describe the key])]."""
+    out = subprocess.run([BIN, "keys", scene], capture_output=True, text=True, check=True).stdout
+    keys, section = [], None
+    for line in out.splitlines():
+        m = re.match(r"^\[(\w+)\]", line)
+        if m:
+            section = m.group(1)
+            continue
+        m = re.match(r"^  (\w+) = ?(.*)$", line)
+        if m:
+            keys.append((section, m.group(1), m.group(2), []))
+        elif keys:
+            keys[-1][3].append(line)
+    return keys
 
 
 @pytest.fixture

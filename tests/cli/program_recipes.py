@@ -7,6 +7,8 @@ arguments of a run that only prints (None: none is cheap); `binary`: the argv po
 script runs (a missing one must be one line too)."""
 
 PY_FILE = {"help": ["--help"]}
+# A bench script that runs BIN and writes its record to OUT (`--bin BIN --record OUT`); the recipes are only read.
+RECORDS_WITH_BIN = {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file", "help": ["--help"], "binary": 3}
 
 RECIPES = {
     # docs/
@@ -35,8 +37,7 @@ RECIPES = {
                                  "tree": ["bench", "src", "kernels", "python-post/rollspec_post"]},
     "bench/record_csv.py": {"argv": ["PY", "S", "--record", "OUT", "--title", "t", "--describe", "d", "--", "true"],
                             "out": "file", "help": ["--help"]},
-    "bench/contact/bench_answer_tables.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                            "help": ["--help"], "binary": 3},
+    "bench/contact/bench_answer_tables.py": RECORDS_WITH_BIN,
     "bench/contact/bench_contact_goals.py": {"argv": ["PY", "S", "--base", "BINDIR", "--new", "BINDIR"],
                                              "help": ["--help"], "binary": 3},
     "bench/contact/bench_plan_estimates.py": {"argv": ["PY", "S", "--binary", "BIN", "--json", "OUT"], "out": "file",
@@ -67,8 +68,7 @@ RECIPES = {
     "bench/engine/bench_python_module.py": {"argv": ["PY", "S", "--bin", "BIN", "--rounds", "1", "--realisations", "2",
                                                      "--contact-threads", "1", "--record", "OUT"], "out": "file",
                                             "help": ["--help"], "binary": 3},
-    "bench/engine/bench_recording_verdict.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                                "help": ["--help"], "binary": 3},
+    "bench/engine/bench_recording_verdict.py": RECORDS_WITH_BIN,
     "bench/engine/bench_scaling.py": {"argv": ["PY", "S", "STUDY", "--release", "BIN"], "help": ["--help"],
                                       "binary": 4},
     "bench/engine/bench_tail_check.py": {"argv": ["PY", "S", "scene", "BIN", "STUDY", "10", "2", "10"], "help": None,
@@ -82,18 +82,12 @@ RECIPES = {
     "bench/engine/fit_seed002_roughness.py": {"argv": ["PY", "S", "--binary", "BIN", "--log", "OUT"], "out": "file",
                                               "help": ["--help"], "binary": 3, "fixed": ["docs/howto/fit.md"],
                                               "tree": ["bench", "docs/howto", "python-post/rollspec_post"]},
-    "bench/engine/accuracy_checks.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                        "help": ["--help"], "binary": 3},
-    "bench/engine/seed000_examples.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                         "help": ["--help"], "binary": 3},
-    "bench/engine/seed001_loss_of_contact.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                                "help": ["--help"], "binary": 3},
-    "bench/engine/seed001_contrast.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                         "help": ["--help"], "binary": 3},
-    "bench/engine/seed002_modes.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                      "help": ["--help"], "binary": 3},
-    "bench/engine/seed002_routes.py": {"argv": ["PY", "S", "--bin", "BIN", "--record", "OUT"], "out": "file",
-                                       "help": ["--help"], "binary": 3},
+    "bench/engine/accuracy_checks.py": RECORDS_WITH_BIN,
+    "bench/engine/seed000_examples.py": RECORDS_WITH_BIN,
+    "bench/engine/seed001_loss_of_contact.py": RECORDS_WITH_BIN,
+    "bench/engine/seed001_contrast.py": RECORDS_WITH_BIN,
+    "bench/engine/seed002_modes.py": RECORDS_WITH_BIN,
+    "bench/engine/seed002_routes.py": RECORDS_WITH_BIN,
     "bench/rolling/bench_rolling_pipe.py": {"argv": ["PY", "S", "--bin", "BIN", "--baseline", "BIN"],
                                             "help": ["--help"], "binary": 3},
     # studies/

@@ -16,17 +16,13 @@ from conftest import EX_USAGE, SOURCE, assert_refused, measurement_from, run, st
 STUDY = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
 
 
-def result(directory, name, *sets):
-    return study_result(STUDY, directory, name, *sets)
-
-
 @pytest.fixture(scope="module")
 def files(tmp_path_factory):
     d = tmp_path_factory.mktemp("compare")
-    model = result(d, "model", "study.seed=1")
-    rough = result(d, "rough", "study.seed=1", "texture.rms=0.509e-6")  # rms x sqrt(2): twice the PSD
-    few = result(d, "few", "study.seed=1", "study.realisations=3")
-    meas = measurement_from(result(d, "measured", "study.seed=2"), d / "measured.csv")
+    model = study_result(STUDY, d, "model", "study.seed=1")
+    rough = study_result(STUDY, d, "rough", "study.seed=1", "texture.rms=0.509e-6")  # rms x sqrt(2): twice the PSD
+    few = study_result(STUDY, d, "few", "study.seed=1", "study.realisations=3")
+    meas = measurement_from(study_result(STUDY, d, "measured", "study.seed=2"), d / "measured.csv")
     return {"model": model, "rough": rough, "few": few, "meas": meas, "dir": d}
 
 

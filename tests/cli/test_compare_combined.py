@@ -15,18 +15,15 @@ from conftest import SOURCE, measurement_from, run, study_result
 STUDY = SOURCE / "studies" / "seed002-rig-1ms.ini"
 
 
-def result(directory, name, *sets):
-    return study_result(STUDY, directory, name, *sets)
-
-
 @pytest.fixture(scope="module")
 def files(tmp_path_factory):
     d = tmp_path_factory.mktemp("combined")
     return {
-        "model": result(d, "model", "study.realisations=60"),
-        "few": result(d, "few", "study.realisations=12"),
-        "same": measurement_from(result(d, "same", "study.seed=3"), d / "same.csv"),
-        "lossy": measurement_from(result(d, "lossy", "study.seed=4", "beam.loss_factor=0.02"), d / "lossy.csv"),
+        "model": study_result(STUDY, d, "model", "study.realisations=60"),
+        "few": study_result(STUDY, d, "few", "study.realisations=12"),
+        "same": measurement_from(study_result(STUDY, d, "same", "study.seed=3"), d / "same.csv"),
+        "lossy": measurement_from(study_result(STUDY, d, "lossy", "study.seed=4", "beam.loss_factor=0.02"),
+                                  d / "lossy.csv"),
     }
 
 

@@ -3,8 +3,6 @@
 Each test is one reported case: it fails on the build before these fixes and passes after. Every
 refusal is checked for its exit code, a message that names the file and what is allowed, and the
 file in the way left byte-identical."""
-import ctypes
-import ctypes.util
 import os
 import struct
 import subprocess
@@ -17,6 +15,7 @@ import scipy.io
 
 from conftest import (BIN, EX_CANTCREAT, EX_DATAERR, EX_USAGE, SMALL_OSCILLATOR, SOURCE, assert_bitwise_equal,
                       assert_refused, run)
+from sound_files import write_pcm16
 
 EX_IOERR = 74
 SENTINEL = b"precious user data\n"
@@ -150,28 +149,10 @@ def test_table_dir_cannot_leave_the_study_directory(tmp_path, how):
 
 # --- 6: damaged sound files are refused, not read short -----------------------------------------------
 
-def sndfile():
-    name = ctypes.util.find_library("sndfile")
-    if not name:
-        pytest.skip("libsndfile not found for writing test files")
-    lib = ctypes.CDLL(name)
-    lib.sf_open.restype = ctypes.c_void_p
-    lib.sf_open.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.c_void_p]
-    lib.sf_writef_short.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int64]
-    lib.sf_close.argtypes = [ctypes.c_void_p]
-    return lib
-
-
 def write_sound(path, major, frames=32768, rate=8000):
-    """16-bit mono sound file through libsndfile (SF_INFO: frames, samplerate, channels, format, sections, seekable)."""
-    lib = sndfile()
-    info = struct.pack("<qiiiii", 0, rate, 1, major | 0x0002, 0, 0)
-    buf = ctypes.create_string_buffer(info, len(info))
-    f = lib.sf_open(str(path).encode(), 0x20, buf)
-    assert f, f"libsndfile cannot write {path}"
+    """16-bit mono sound file through libsndfile."""
     x = (np.sin(np.arange(frames) * 0.05) * 12000 + np.random.default_rng(1).normal(0, 500, frames)).astype("<i2")
-    lib.sf_writef_short(f, x.ctypes.data, frames)
-    lib.sf_close(f)
+    write_pcm16(path, x, rate, major)
 
 
 @pytest.mark.parametrize("suffix, major", [(".wav", 0x010000), (".aiff", 0x020000), (".flac", 0x170000)])

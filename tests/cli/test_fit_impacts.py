@@ -13,7 +13,7 @@ beam-s-loss (docs/howto/fit.md renders its record)."""
 import concurrent.futures
 import json
 
-from conftest import SOURCE, measurement_from, run
+from conftest import SOURCE, measure_and_fit, measurement_from, run
 from fit_experiment import sets
 
 STUDY = SOURCE / "studies" / "seed001-beam-s-hertz.ini"
@@ -24,15 +24,8 @@ KEY, TRUTH, RANGE = "beam.loss_factor", 0.01, "0.002:0.05:log"
 
 
 def one(directory, seed):
-    out = directory / f"m{seed}.h5"
-    r = run(["run", STUDY, "--out", out, "--quiet",
-             *sets(SHORT + [f"{KEY}={TRUTH}", f"study.realisations={RECORDS}", f"study.seed={seed}"])])
-    assert r.returncode == 0, r.stderr
-    csv = measurement_from(out, directory / f"m{seed}.csv")
-    r = run(["fit", STUDY, csv, "--measured-averages", RECORDS, "--format", "json", "--vary", f"{KEY}={RANGE}", *BANDS,
-             *sets(SHORT + [f"study.realisations={REALISATIONS}", f"study.seed={50000 + seed}"])])
-    assert r.returncode == 0, r.stderr
-    return json.loads(r.stdout)
+    return measure_and_fit(STUDY, directory, seed, KEY, TRUTH, RANGE, short=SHORT, bands=BANDS, records=RECORDS,
+                           realisations=REALISATIONS)
 
 
 def test_impacts_are_found_and_the_smoothed_intervals_hold_the_truth(tmp_path):

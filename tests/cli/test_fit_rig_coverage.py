@@ -10,12 +10,10 @@ which a calibrated 95 % fit meets with probability 0.9974 (P[X <= 15] = 0.0026);
 meets it with probability 0.63, one covering 70 % with 0.24, so this catches gross under-coverage only.
 The fuller experiment is bench/engine/bench_fit_coverage.py (--case rig-loss: 55 of 60)."""
 import concurrent.futures
-import json
 
 import pytest
 
-from conftest import SOURCE, measurement_from, run
-from fit_experiment import sets
+from conftest import SOURCE, measure_and_fit
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 # As bench_fit_coverage.py --case rig-rms / rig-loss --model-seeds (other seeds): each fit's runs with a
@@ -30,15 +28,8 @@ CASES = {"beam.loss_factor": (0.01, "0.002:0.05:log")}
 
 def one(directory, key, seed):
     truth, rng = CASES[key]
-    out = directory / f"m{seed}.h5"
-    r = run(["run", RIG, "--out", out, "--quiet",
-             *sets(SHORT + [f"{key}={truth}", f"study.realisations={RECORDS}", f"study.seed={seed}"])])
-    assert r.returncode == 0, r.stderr
-    csv = measurement_from(out, directory / f"m{seed}.csv")
-    r = run(["fit", RIG, csv, "--measured-averages", RECORDS, "--format", "json", "--vary", f"{key}={rng}", *BANDS,
-             *sets(SHORT + [f"study.realisations={REALISATIONS}", f"study.seed={50000 + seed}"])])
-    assert r.returncode == 0, r.stderr
-    out = json.loads(r.stdout)
+    out = measure_and_fit(RIG, directory, seed, key, truth, rng, short=SHORT, bands=BANDS, records=RECORDS,
+                          realisations=REALISATIONS)
     # The rig's linearised contact keeps common random numbers (kernels/spectral D-27i a): the fit reads ln L
     # of the study's seed and gives its profile intervals; it does not smooth or refuse where it need not.
     assert out["objective"]["common_random_numbers"] is True and out["objective"]["incoherent_share"] < 0.01

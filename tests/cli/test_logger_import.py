@@ -11,7 +11,7 @@ import pytest
 import scipy.io.wavfile
 import scipy.signal
 
-from conftest import EX_DATAERR, EX_USAGE, assert_refused, oscillator_study, run
+from conftest import EX_DATAERR, EX_USAGE, assert_refused, lorentzian_comparison, run
 
 G = 9.80665
 FS = 25600.0
@@ -196,16 +196,10 @@ def test_integer_wav_needs_scale(tmp_path):
 
 
 def test_compare_skips_the_preamble_of_a_measured_psd(tmp_path):
-    res = tmp_path / "r.h5"
-    assert run(["run", oscillator_study(tmp_path, realisations=6), "--out", res, "--quiet"]).returncode == 0
-    f = np.linspace(0, 512, 2049)
-    p = 1e-4 / (1 + ((f - 40) / 4) ** 2)
-    plain, export = tmp_path / "m.csv", tmp_path / "m-export.csv"
-    plain.write_text("frequency_hz,psd\n" + "".join(f"{a:.17g},{b:.17g}\n" for a, b in zip(f, p)))
+    res, f, p, want = lorentzian_comparison(tmp_path)
+    export = tmp_path / "m-export.csv"
     export.write_text("Analyzer ZZ-9;serial 77\nAveraging;linear;32\n" + "frequency_hz;psd\n" +
                       "".join(f"{a:.17g};{b:.17g}\n".replace(".", ",") for a, b in zip(f, p)))
-    want = run(["compare", res, plain, "--format", "csv"])
-    assert want.returncode == 0, want.stderr
     got = run(["compare", res, export, "--format", "csv"])
     assert got.returncode == 0, got.stderr
     assert "skipped 2 preamble lines before the header 'frequency_hz;psd' (line 3" in got.stderr

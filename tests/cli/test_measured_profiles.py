@@ -11,7 +11,7 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import SOURCE, run
+from conftest import SOURCE, run, texture_study
 
 DATA = SOURCE / "studies" / "data" / "measured-profiles"
 SCANS = ["dektak-1", "opdx-3", "xy-4"]
@@ -28,21 +28,8 @@ def profile(scan):
 
 def study(tmp_path, scan, length, spacing, count):
     p = tmp_path / f"{scan}.ini"
-    p.write_text(f"""[study]
-scene = texture
-realisations = 1
-seed = 29
-
-[texture]
-source = profiles
-profiles = {DATA / (scan + '.csv')}
-table_extension = zero
-
-[lines]
-count = {count}
-length = {length!r}
-spacing = {spacing!r}
-""")
+    p.write_text(texture_study(29, {"source": "profiles", "profiles": DATA / (scan + ".csv"), "table_extension": "zero"},
+                               {"count": count, "length": repr(length), "spacing": repr(spacing)}))
     return p
 
 

@@ -7,7 +7,7 @@ import scipy.io
 import scipy.io.wavfile
 import scipy.signal
 
-from conftest import EX_DATAERR, EX_NOINPUT, EX_USAGE, assert_refused, oscillator_study, run
+from conftest import EX_DATAERR, EX_NOINPUT, EX_USAGE, assert_refused, lorentzian_comparison, run
 
 G = 9.80665
 
@@ -37,6 +37,21 @@ def sine_plus_noise(n, fs, f0, amplitude, sigma, seed, channels=1):
 
 def write_plain(path, names, x):
     np.savetxt(path, x, delimiter=",", header=",".join(names), comments="", fmt="%.17g")
+
+
+def plain_reference(tmp_path, names, x, fs):
+    """x written as plain.csv (columns `names`) and the bytes of its PSD at --fs fs, 1024-sample segments."""
+    plain = tmp_path / "plain.csv"
+    write_plain(plain, names, x)
+    return plain, psd([plain, "--fs", fs, "--segment", 1024], tmp_path, "plain-psd.csv")[2]
+
+
+def three_channels(tmp_path, seed):
+    """4096 Hz, 8192 samples of a 200 Hz sine plus noise on 3 channels, and plain_reference's PSD bytes of them
+    as the channels acc, pair_1, pair_2: (fs, n, x, bytes)."""
+    fs, n = 4096.0, 8192
+    _, x = sine_plus_noise(n, fs, 200.0, 1.0, 0.3, seed=seed, channels=3)
+    return fs, n, x, plain_reference(tmp_path, ["acc", "pair_1", "pair_2"], x, fs)[1]
 
 
 def write_logger(path, t, names, x, delimiter=";", time_name="time_s"):
@@ -82,9 +97,7 @@ def test_semicolon_decimal_comma_and_tab_give_the_same_bits_as_plain_csv(tmp_pat
     # 1/fs and the rate from the time column is exactly fs, so every bit of the output agrees.
     fs, n = 4096.0, 8192
     t, x = sine_plus_noise(n, fs, 300.0, 1.0, 0.2, seed=7, channels=2)
-    plain = tmp_path / "plain.csv"
-    write_plain(plain, ["left", "right"], x)
-    _, _, want = psd([plain, "--fs", fs, "--segment", 1024], tmp_path, "plain-psd.csv")
+    plain, want = plain_reference(tmp_path, ["left", "right"], x, fs)
     semi = tmp_path / "logger.csv"
     write_logger(semi, t, ["left", "right"], x, delimiter=";")
     assert ";" in semi.read_text() and "0,0" in semi.read_text()
@@ -170,11 +183,7 @@ def test_wav_pcm16_and_float32(tmp_path):
 
 
 def test_mat_v5_vector_matrix_and_fs_match_csv(tmp_path):
-    fs, n = 4096.0, 8192
-    _, x = sine_plus_noise(n, fs, 200.0, 1.0, 0.3, seed=13, channels=3)
-    plain = tmp_path / "plain.csv"
-    write_plain(plain, ["acc", "pair_1", "pair_2"], x)
-    _, _, want = psd([plain, "--fs", fs, "--segment", 1024], tmp_path, "plain-psd.csv")
+    fs, n, x, want = three_channels(tmp_path, seed=13)
     mat = tmp_path / "rec.mat"
     scipy.io.savemat(mat, {"acc": x[:, 0], "pair": x[:, 1:], "fs": fs, "note": "rig 2, roll 4",
                            "meta": {"sensor": "B&K 4508"}, "cells": np.array([1, "a"], dtype=object),
@@ -231,11 +240,7 @@ def write_mat73(path, variables):
 
 
 def test_mat_v73(tmp_path):
-    fs, n = 4096.0, 8192
-    _, x = sine_plus_noise(n, fs, 200.0, 1.0, 0.3, seed=17, channels=3)
-    plain = tmp_path / "plain.csv"
-    write_plain(plain, ["acc", "pair_1", "pair_2"], x)
-    _, _, want = psd([plain, "--fs", fs, "--segment", 1024], tmp_path, "plain-psd.csv")
+    fs, _, x, want = three_channels(tmp_path, seed=17)
     mat = tmp_path / "rec73.mat"
     write_mat73(mat, {"acc": x[:, 0], "pair": x[:, 1:], "fs": fs})
     assert psd([mat, "--segment", 1024], tmp_path, "mat73-psd.csv")[2] == want
@@ -243,15 +248,9 @@ def test_mat_v73(tmp_path):
 
 def test_compare_reads_a_semicolon_measured_psd_with_decimal_commas(tmp_path):
     # The measured-PSD reader is the same: a spreadsheet export gives the same comparison, digit for digit.
-    res = tmp_path / "r.h5"
-    assert run(["run", oscillator_study(tmp_path, realisations=6), "--out", res, "--quiet"]).returncode == 0
-    f = np.linspace(0, 512, 2049)
-    p = 1e-4 / (1 + ((f - 40) / 4) ** 2)
-    plain, semi = tmp_path / "m.csv", tmp_path / "m-semi.csv"
-    plain.write_text("frequency_hz,psd\n" + "".join(f"{a:.17g},{b:.17g}\n" for a, b in zip(f, p)))
+    res, f, p, want = lorentzian_comparison(tmp_path)
+    semi = tmp_path / "m-semi.csv"
     semi.write_text('"frequency_hz";"psd"\r\n' + "".join(f"{a:.17g};{b:.17g}\r\n".replace(".", ",") for a, b in zip(f, p)))
-    want = run(["compare", res, plain, "--format", "csv"])
-    assert want.returncode == 0, want.stderr
     assert len(want.stdout.splitlines()) > 10
     got = run(["compare", res, semi, "--format", "csv"])
     assert got.returncode == 0, got.stderr

@@ -104,6 +104,20 @@ def peak_rss_of_run(args, env=None):
     return os.waitstatus_to_exitcode(status), usage.ru_maxrss * 1024, err
 
 
+def interrupt_at_chunks(args, checkpoint, chunks, poll):
+    """`rollspec ARGS` interrupted (SIGINT) once its checkpoint directory holds CHUNKS chunks (or it has ended,
+    or 120 s have passed, polled every POLL s); it must exit EX_INTERRUPTED."""
+    proc = subprocess.Popen([BIN, *map(str, args)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while time.time() < deadline and proc.poll() is None:
+        if checkpoint.is_dir() and len(list(checkpoint.glob("chunk_*.bin"))) >= chunks:
+            break
+        time.sleep(poll)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == EX_INTERRUPTED, err
+
+
 def big_values_study(tmp_path, realisations, name):
     # 16384-sample segments: about 33,000 values per realisation, 0.26 MB of sums per chunk of 1.
     p = tmp_path / name
@@ -127,16 +141,7 @@ def test_memory_stays_flat_with_the_number_of_chunks_and_on_resume(tmp_path):
     assert 0.5 < est / rss_many < 2, (est, rss_many)
     # --resume over ~800 checkpointed chunks reads them one at a time, and gives the same bits.
     out = tmp_path / "resumed.h5"
-    ckpt = tmp_path / "resumed.h5.checkpoint"
-    proc = subprocess.Popen([BIN, "run", many, "--out", out, "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    deadline = time.time() + 120
-    while time.time() < deadline and proc.poll() is None:
-        if ckpt.is_dir() and len(list(ckpt.glob("chunk_*.bin"))) >= 800:
-            break
-        time.sleep(0.02)
-    proc.send_signal(signal.SIGINT)
-    proc.communicate(timeout=120)
-    assert proc.returncode == EX_INTERRUPTED
+    interrupt_at_chunks(["run", many, "--out", out, "--quiet"], tmp_path / "resumed.h5.checkpoint", 800, poll=0.02)
     code, rss_resume, err = peak_rss_of_run(["run", many, "--out", out, "--resume", "--quiet"])
     assert code == 0, err
     assert rss_resume < rss_few + (40 << 20), (rss_few, rss_resume)
@@ -148,18 +153,8 @@ def test_memory_stays_flat_with_the_number_of_chunks_and_on_resume(tmp_path):
 def interrupted_rig(tmp_path, *sets):
     study = copied(tmp_path, RIG)
     out = tmp_path / "rig.h5"
-    ckpt = tmp_path / "rig.h5.checkpoint"
     args = [a for s in ("study.realisations=400", "ensemble.chunk_size=2", *sets) for a in ("--set", s)]
-    proc = subprocess.Popen([BIN, "run", study, "--out", out, "--quiet", *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 120
-    while time.time() < deadline and proc.poll() is None:
-        if ckpt.is_dir() and len(list(ckpt.glob("chunk_*.bin"))) >= 3:
-            break
-        time.sleep(0.01)
-    proc.send_signal(signal.SIGINT)
-    _, err = proc.communicate(timeout=120)
-    assert proc.returncode == EX_INTERRUPTED, err
+    interrupt_at_chunks(["run", study, "--out", out, "--quiet", *args], tmp_path / "rig.h5.checkpoint", 3, poll=0.01)
     return study, out
 
 

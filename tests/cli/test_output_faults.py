@@ -22,38 +22,17 @@ import time
 
 import pytest
 
-from conftest import BIN, SMALL_OSCILLATOR, SOURCE, assert_bitwise_equal
+from conftest import BIN, SMALL_OSCILLATOR, SOURCE, assert_bitwise_equal, texture_study
 
 USER_DATA = b"precious user data, not written by rollspec\n"
 TIMEOUT = 60
 TALLY = {"tried": 0, "refused cleanly": 0, "accepted": 0, "destroyed": 0, "internal errors": 0, "hangs": 0,
          "resumed identically": 0}
 
-TEXTURE = """\
-[study]
-scene = texture
-realisations = 1
-seed = 5
-
-[texture]
-source = self-affine
-hurst = 0.8
-rolloff_wavelength = 100e-6
-short_wavelength = 8e-6
-rms = 0.3e-6
-
-[lines]
-count = 2
-length = 1e-3
-spacing = 2e-6
-
-[surface]
-method = spectral
-nx = 32
-ny = 32
-spacing = 2e-6
-count = 1
-"""
+TEXTURE = texture_study(5, {"source": "self-affine", "hurst": 0.8, "rolloff_wavelength": "100e-6",
+                            "short_wavelength": "8e-6", "rms": "0.3e-6"},
+                        {"count": 2, "length": "1e-3", "spacing": "2e-6"},
+                        surface={"method": "spectral", "nx": 32, "ny": 32, "spacing": "2e-6", "count": 1})
 
 
 SWEEP = "\n[sweep]\noscillator.natural_frequency = 30, 45\n"

@@ -7,7 +7,7 @@ import glob
 import h5py
 import numpy as np
 
-from conftest import run_copied_study
+from conftest import band_levels, rig_1ms
 
 # Smooth strip (rms 1e-20 m: its response lies ~100 dB below the moving weight's, against a static approach of 0.24 um), 12 um cells (a / 5.8), a 6 mm
 # path at 1 m/s: 8 approaches x ~500 positions on a 40-cell window, a few seconds.
@@ -16,17 +16,8 @@ SMOOTH = ["texture.rms=1e-20", "surface.spacing=12e-6", "texture.short_wavelengt
           "study.realisations=1"]
 
 
-def rig(tmp_path, *sets, name="r.h5", command="run"):
-    return run_copied_study("seed002-rig-1ms.ini", tmp_path, *sets, out=name, command=command)
-
-
-def band_levels(path):
-    with h5py.File(path) as f:
-        return f["/bands/level_db"][:], f["/contact/loss_of_contact_share"][0]
-
-
 def test_smooth_strip_reproduces_hertz_and_the_table_is_cached(tmp_path):
-    r, out = rig(tmp_path, "contact.law=path", *SMOOTH)
+    r, out = rig_1ms(tmp_path, "contact.law=path", *SMOOTH)
     assert r.returncode == 0, r.stderr
     assert "path table: built" in r.stderr, r.stderr
     tables = glob.glob(str(tmp_path / "tables" / "path-table-*.h5"))
@@ -41,7 +32,7 @@ def test_smooth_strip_reproduces_hertz_and_the_table_is_cached(tmp_path):
     with h5py.File(out) as f:  # the study's filter = patch is not applied on the strip, and the result says so
         assert f["/contact"].attrs["filter"] == b"none"
         assert f["/contact"].attrs["filter_requested"].startswith(b"patch (not applied")
-    r2, hz = rig(tmp_path, "contact.law=hertz", "contact.filter=none", *SMOOTH, name="hertz.h5")
+    r2, hz = rig_1ms(tmp_path, "contact.law=hertz", "contact.filter=none", *SMOOTH, name="hertz.h5")
     assert r2.returncode == 0, r2.stderr
     lp, loss_p = band_levels(out)
     lh, loss_h = band_levels(hz)
@@ -53,7 +44,7 @@ def test_smooth_strip_reproduces_hertz_and_the_table_is_cached(tmp_path):
     assert loss_p == loss_h == 0.0
     with h5py.File(out) as f:
         assert f["/contact"].attrs["law"] in (b"path", "path")
-    r3, _ = rig(tmp_path, "contact.law=path", *SMOOTH, name="again.h5")
+    r3, _ = rig_1ms(tmp_path, "contact.law=path", *SMOOTH, name="again.h5")
     assert r3.returncode == 0 and "path table: cached" in r3.stderr, r3.stderr
 
 
@@ -61,20 +52,20 @@ def test_one_strip_gives_no_interval_however_many_realisations(tmp_path):
     # Every realisation rolls over the same strip: 6 identical realisations would give zero-width
     # intervals that claim a certainty the one strip does not have; the result has none, and says why.
     sets = [s for s in SMOOTH if not s.startswith("study.realisations")] + ["study.realisations=6"]
-    r, out = rig(tmp_path, "contact.law=path", *sets)
+    r, out = rig_1ms(tmp_path, "contact.law=path", *sets)
     assert r.returncode == 0, r.stderr
     assert "confidence intervals: none (every realisation rolls over the one strip of the path table" in r.stderr
     with h5py.File(out) as f:
         assert np.all(f["/bands/ci_lower_db"][:] == -np.inf) and np.all(f["/bands/ci_upper_db"][:] == np.inf)
         assert np.all(f["/psd/ci_lower"][:] == 0) and np.all(f["/psd/ci_upper"][:] == np.inf)
         assert f["/bands"].attrs["interval_includes"].startswith(b"none (no interval: every realisation rolls")
-    r, out = rig(tmp_path, "contact.law=hertz", *sets, name="hertz.h5")  # realisations that differ keep theirs
+    r, out = rig_1ms(tmp_path, "contact.law=hertz", *sets, name="hertz.h5")  # realisations that differ keep theirs
     with h5py.File(out) as f:
         assert np.all(np.isfinite(f["/bands/ci_lower_db"][:]))
 
 
 def test_plan_lists_the_stage(tmp_path):
-    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, command="plan")
+    r, _ = rig_1ms(tmp_path, "contact.law=path", *SMOOTH, command="plan")
     assert r.returncode == 0, r.stderr
     row = next(l for l in r.stdout.splitlines() if l.startswith("path_table "))
     for text in ("8 approaches (more until P >= 5 W", "window", "strip", "build about", "K > 1 repeats the same run"):
@@ -82,12 +73,12 @@ def test_plan_lists_the_stage(tmp_path):
 
 
 def test_bad_keys_are_refused(tmp_path):
-    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, "path_table.strip_length=1e-3", command="plan")
+    r, _ = rig_1ms(tmp_path, "contact.law=path", *SMOOTH, "path_table.strip_length=1e-3", command="plan")
     assert r.returncode != 0
     assert "path_table" in r.stderr and "strip_length" in r.stderr and "allowed" in r.stderr, r.stderr
-    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, "contact.filter=iso2d", command="plan")
+    r, _ = rig_1ms(tmp_path, "contact.law=path", *SMOOTH, "contact.filter=iso2d", command="plan")
     assert r.returncode != 0 and "filter" in r.stderr and "allowed" in r.stderr, r.stderr
-    r, _ = rig(tmp_path, "contact.law=path", *SMOOTH, "path_table.approaches=1", command="plan")
+    r, _ = rig_1ms(tmp_path, "contact.law=path", *SMOOTH, "path_table.approaches=1", command="plan")
     assert r.returncode != 0 and "approaches" in r.stderr, r.stderr
-    r, _ = rig(tmp_path, "contact.law=pathx", *SMOOTH, command="plan")
+    r, _ = rig_1ms(tmp_path, "contact.law=pathx", *SMOOTH, command="plan")
     assert r.returncode != 0 and "path" in r.stderr, r.stderr

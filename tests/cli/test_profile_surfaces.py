@@ -5,43 +5,18 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import run
+from conftest import run, texture_study
 
-SOURCE_STUDY = """[study]
-scene = texture
-realisations = 1
-seed = 515
-[texture]
-source = self-affine
-hurst = 0.8
-rolloff_wavelength = 20e-6
-short_wavelength = 2e-6
-rms = 0.4e-6
-[lines]
-count = 50
-length = 4.0965e-3
-spacing = 1e-6
-"""
+SOURCE_STUDY = texture_study(515, {"source": "self-affine", "hurst": 0.8, "rolloff_wavelength": "20e-6",
+                                   "short_wavelength": "2e-6", "rms": "0.4e-6"},
+                              {"count": 50, "length": "4.0965e-3", "spacing": "1e-6"})
 
-PROFILE_STUDY = """[study]
-scene = texture
-realisations = 1
-seed = 7
-[texture]
-source = profiles
-profiles = {files}
-table_extension = zero
-[lines]
-count = 0
-length = 1e-3
-spacing = 1e-6
-[surface]
-method = {method}
-nx = 128
-ny = 128
-spacing = 1e-6
-count = 4
-{extra}"""
+
+def profile_study(files, method, extra=""):
+    """Surfaces from the profiles `files` by `method`; `extra`, more [surface] lines."""
+    return texture_study(7, {"source": "profiles", "profiles": ", ".join(files), "table_extension": "zero"},
+                         {"count": 0, "length": "1e-3", "spacing": "1e-6"},
+                         {"method": method, "nx": 128, "ny": 128, "spacing": "1e-6", "count": 4}) + extra
 
 
 @pytest.fixture(scope="module")
@@ -66,7 +41,7 @@ def detrended_std(z):
 
 def surface_rms(d, names, method, extra=""):
     s = d / f"{method}-{len(names)}.ini"
-    s.write_text(PROFILE_STUDY.format(files=", ".join(names), method=method, extra=extra))
+    s.write_text(profile_study(names, method, extra))
     r = run(["texture", s, "--out", d / f"{method}-{len(names)}.h5", "-q"])
     assert r.returncode == 0, r.stderr
     with h5py.File(d / f"{method}-{len(names)}.h5") as f:
@@ -103,7 +78,7 @@ def test_seed_surfaces_take_the_profiles_correlation_length(profiles):
     i = np.arange(lines.shape[1])
     measured = np.mean([one_over_e_length(z - np.polyval(np.polyfit(i, z, 1), i), 1e-6) for z in lines[:15]])
     s = d / "corr.ini"
-    s.write_text(PROFILE_STUDY.format(files=", ".join(names[:15]), method="seed", extra="").replace("count = 4", "count = 8"))
+    s.write_text(profile_study(names[:15], "seed").replace("count = 4", "count = 8"))
     r = run(["texture", s, "--out", d / "corr.h5"])
     assert r.returncode == 0, r.stderr
     row = next(l.split() for l in r.stdout.splitlines() if l.startswith("surf_mean"))

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from scipy.signal import periodogram
 
-from conftest import SOURCE, run
+from conftest import SOURCE, run, texture_study
 
 DATA = SOURCE / "studies" / "data" / "measured-profiles"
 SCANS = {name: [DATA / f"{name}.csv"] for name in ["hfm-1", "mitutoyo-2", "dektak-1", "opdx-3", "xy-4"]}
@@ -34,22 +34,9 @@ def heights(path):
 
 def texture(tmp_path, files, n, spacing, count, amplitudes="rayleigh"):
     study = tmp_path / "s.ini"
-    study.write_text(f"""[study]
-scene = texture
-realisations = 1
-seed = 29
-
-[texture]
-source = profiles
-profiles = {", ".join(str(f) for f in files)}
-table_extension = zero
-amplitudes = {amplitudes}
-
-[lines]
-count = {count}
-length = {(n + 0.5) * spacing!r}
-spacing = {spacing!r}
-""")
+    study.write_text(texture_study(29, {"source": "profiles", "profiles": ", ".join(str(f) for f in files),
+                                        "table_extension": "zero", "amplitudes": amplitudes},
+                                   {"count": count, "length": repr((n + 0.5) * spacing), "spacing": repr(spacing)}))
     out = tmp_path / f"t-{amplitudes}-{count}.h5"
     r = run(["texture", study, "--out", out, "--quiet"])
     assert r.returncode == 0, r.stderr

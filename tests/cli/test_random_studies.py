@@ -12,7 +12,7 @@ import re
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
-from conftest import BIN
+from conftest import BIN, scene_keys
 
 STUDIES = 200
 INTERNAL = 70  # EX_SOFTWARE: an internal error
@@ -20,21 +20,13 @@ INTERNAL = 70  # EX_SOFTWARE: an internal error
 
 def key_ranges():
     """{'section.key': (default, allowed)} from `rollspec keys ball-on-beam`."""
-    out = subprocess.run([BIN, "keys", "ball-on-beam"], capture_output=True, text=True, check=True).stdout
-    keys, section, last = {}, None, None
-    for line in out.splitlines():
-        m = re.match(r"^\[(\w+)\]", line)
-        if m:
-            section = m.group(1)
-            continue
-        m = re.match(r"^  (\w+) = ?(.*)$", line)
-        if m:
-            last = f"{section}.{m.group(1)}"
-            keys[last] = [m.group(2).strip(), ""]
-            continue
-        m = re.match(r"^\s+allowed: (.*)$", line)
-        if m and last:
-            keys[last][1] = m.group(1)
+    keys = {}
+    for section, key, default, described in scene_keys("ball-on-beam"):
+        keys[f"{section}.{key}"] = [default.strip(), ""]
+        for line in described:
+            m = re.match(r"^\s+allowed: (.*)$", line)
+            if m:
+                keys[f"{section}.{key}"][1] = m.group(1)
     return keys
 
 

@@ -5,7 +5,7 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import EX_CONFIG, SOURCE, run
+from conftest import EX_CONFIG, SOURCE, run, study_result
 
 RIG = SOURCE / "studies" / "seed002-rig-1ms.ini"
 SHORT = ["--quiet", "--set", "study.realisations=2", "--set", "ball.end=0.1"]
@@ -97,10 +97,8 @@ def test_time_steps_from_tiny_to_the_limit(tmp_path):
 def test_hardness_from_a_thousandth_of_p0_to_infinity(tmp_path, hardness):
     # Expectation: finite, monotone tables; at H = 1e-3 p0 the force follows the bearing-area limit
     # P = 2 pi R delta H (linear in delta) within 5 % on this coarse grid.
-    out = tmp_path / "t.h5"
-    r = run(["stiffness", SOURCE / "studies" / "hertz.ini", "--out", out, "--quiet", "--set", f"stiffness.hardness={hardness}",
-             "--set", "stiffness.steps=5"])
-    assert r.returncode == 0, r.stderr
+    out = study_result(SOURCE / "studies" / "hertz.ini", tmp_path, "t", f"stiffness.hardness={hardness}", "stiffness.steps=5",
+                       command="stiffness")
     with h5py.File(out) as f:
         d, p = f["/stiffness/approach"][:], f["/stiffness/force_mean"][:]
         assert np.isfinite(p).all() and (np.diff(p) > 0).all()
@@ -112,10 +110,8 @@ def test_hardness_from_a_thousandth_of_p0_to_infinity(tmp_path, hardness):
 def test_rolling_penalty_over_six_decades(tmp_path, eps):
     # Expectation: the disc of seed 000 example 4.1 completes with finite states and an energy balance
     # within 1 % of its initial kinetic energy for eps_n from 1e5 to 1e11 N/m.
-    out = tmp_path / "d.h5"
-    r = run(["run", SOURCE / "studies" / "seed000-disc.ini", "--out", out, "--quiet", "--set", f"contact.penalty_normal={eps}",
-             "--set", "analysis.t_end=4"])
-    assert r.returncode == 0, r.stderr
+    out = study_result(SOURCE / "studies" / "seed000-disc.ini", tmp_path, "d", f"contact.penalty_normal={eps}",
+                       "analysis.t_end=4")
     with h5py.File(out) as f:
         assert np.isfinite(f["/time_history/position"][:]).all()
         e0 = f["/time_history/energy/kinetic"][0]

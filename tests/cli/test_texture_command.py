@@ -3,7 +3,7 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import EX_CONFIG, EX_DATAERR, EX_NOINPUT, SOURCE, run
+from conftest import EX_CONFIG, EX_DATAERR, EX_NOINPUT, SOURCE, run, texture_study
 
 DEMO = SOURCE / "studies" / "texture-demo.ini"
 
@@ -39,23 +39,11 @@ def test_texture_file_layout_statistics_and_reproducibility(tmp_path):
         assert not np.array_equal(a["/texture/lines"][0], a["/texture/lines"][1])
 
 
-def table_study(tmp_path, table_text, extra=""):
+def table_study(tmp_path, table_text):
     (tmp_path / "psd.csv").write_text(table_text)
     s = tmp_path / "s.ini"
-    s.write_text(f"""[study]
-scene = texture
-realisations = 1
-seed = 1
-[texture]
-source = table
-table = psd.csv
-table_extension = zero
-{extra}
-[lines]
-count = 2
-length = 1e-3
-spacing = 1e-6
-""")
+    s.write_text(texture_study(1, {"source": "table", "table": "psd.csv", "table_extension": "zero"},
+                               {"count": 2, "length": "1e-3", "spacing": "1e-6"}))
     return s
 
 
@@ -99,19 +87,8 @@ def profile_study(tmp_path, profiles):
         np.savetxt(p, np.c_[x, z], delimiter=",", header="position_m,height_m", comments="")
         names.append(p.name)
     s = tmp_path / "s.ini"
-    s.write_text(f"""[study]
-scene = texture
-realisations = 1
-seed = 1
-[texture]
-source = profiles
-profiles = {", ".join(names)}
-table_extension = zero
-[lines]
-count = 2
-length = 1e-4
-spacing = 1e-6
-""")
+    s.write_text(texture_study(1, {"source": "profiles", "profiles": ", ".join(names), "table_extension": "zero"},
+                               {"count": 2, "length": "1e-4", "spacing": "1e-6"}))
     return s
 
 

@@ -19,7 +19,7 @@ import subprocess
 
 import pytest
 
-from conftest import BIN, SOURCE
+from conftest import BIN, SOURCE, scene_keys
 
 UNIT = re.compile(r"allowed: a (?:finite|whole) number.*\((m|m/s|m \(height\) or - \(slope\))\)$")
 COMMAND = {"stiffness": "stiffness", "texture": "texture"}  # the scene's own command; others: run
@@ -65,19 +65,8 @@ def scenes():
 
 def dimensional_keys(scene):
     """[(section, key, default)] of the keys whose unit is a length or a speed."""
-    out, section, key, default = [], None, None, None
-    for line in subprocess.run([BIN, "keys", scene], capture_output=True, text=True, check=True).stdout.splitlines():
-        m = re.match(r"^\[(\w+)\]$", line)
-        if m:
-            section = m.group(1)
-            continue
-        m = re.match(r"^  (\w+) = ?(.*)$", line)
-        if m:
-            key, default = m.group(1), m.group(2)
-            continue
-        if UNIT.search(line):
-            out.append((section, key, default))
-    return out
+    return [(section, key, default) for section, key, default, described in scene_keys(scene)
+            for line in described if UNIT.search(line)]
 
 
 def value_in(text, section, key):

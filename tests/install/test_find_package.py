@@ -7,16 +7,9 @@ import subprocess
 
 import pytest
 
-from conftest import BUILD, CMAKE, SOURCE, run
+from conftest import CMAKE, SOURCE, run
 
 VERSION = os.environ["ROLLSPEC_VERSION"]
-
-
-@pytest.fixture(scope="module")
-def prefix(tmp_path_factory):
-    p = tmp_path_factory.mktemp("prefix")
-    run(CMAKE, "--install", BUILD, "--prefix", p)
-    return p
 
 
 def test_command_and_version(prefix):

@@ -7,14 +7,7 @@ import shutil
 
 import pytest
 
-from conftest import BUILD, CMAKE, SOURCE, run
-
-
-@pytest.fixture(scope="module")
-def prefix(tmp_path_factory):
-    p = tmp_path_factory.mktemp("prefix")
-    run(CMAKE, "--install", BUILD, "--prefix", p)
-    return p
+from conftest import SOURCE, run
 
 
 def tree(root):
