@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "tests/kernels/rolling/initial_tangent.hpp"  // the tangent test_band_lu.cpp checks
 #include "kernels/rolling/assembly.hpp"
 #include "kernels/rolling/band_lu.hpp"
 #include "kernels/rolling/contact_set.hpp"
@@ -59,27 +60,10 @@ int main(int argc, char** argv) {
   const int elements = argc > 1 ? std::atoi(argv[1]) : 4;
   const int batches = argc > 2 ? std::atoi(argv[2]) : 21;
   const Model m = tube(elements);
-  const std::vector<NodeState> nodes = initial_nodes(m);
-  const BeamPoints points = make_beam_points(m);
-  ContactSet contacts(m, nodes);
-  const int n = 6 * static_cast<int>(m.X.size());
-  std::vector<int> eq(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) eq[static_cast<std::size_t>(i)] = i;
-  VectorXd q(n), R;
-  for (int k = 0; k < n; ++k) q(k) = 1e-6 * std::sin(0.7 * k);
-  SparseSink ss;
-  ss.eq = &eq;
-  ss.neq = n;
-  ss.begin();
-  assemble(AssemblyState{m, nodes, points, 0.0}, TimeRule(TimeRule::Kind::Newmark), contacts, q, 2.5e-5, 2.5e-5, false,
-           R, &ss);
-  ss.finish();
-  int kl = 0, ku = 0;
-  for (int c = 0; c < n; ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(ss.A, c); it; ++it) {
-      kl = std::max(kl, static_cast<int>(it.row()) - c);
-      ku = std::max(ku, c - static_cast<int>(it.row()));
-    }
+  const rollspec::rolling::test::InitialTangent tangent(m);
+  const int n = tangent.n, kl = tangent.kl, ku = tangent.ku;
+  const SparseSink& ss = tangent.sparse;
+  const VectorXd& R = tangent.r;
   const Eigen::MatrixXd D = Eigen::MatrixXd(ss.A);
   const int reps = std::max(1, 20000 / n);
   BandLU band(n, kl, ku);

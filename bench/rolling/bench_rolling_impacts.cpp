@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "tests/kernels/rolling/run_options.hpp"  // example 4.4's settings, as test_flying_beam.cpp runs it
 #include "kernels/rolling/examples.hpp"
 
 using namespace rollspec::rolling;
@@ -62,14 +63,8 @@ int main(int argc, char** argv) {
   for (const double mu : {0.0, 0.8}) {
     FlyingBeamParams p;
     p.mu = mu;
-    SolverOptions o;
-    o.force_tol = 1e-6;
-    o.max_line_search = 8;
-    o.max_iterations = 40;
-    RunOptions ro;
-    ro.dt = 1e-3;
-    ro.t_end = t44;
-    ro.record_every = 10;
+    const SolverOptions o = test::flying_beam_options();
+    const RunOptions ro = test::run_options(1e-3, t44, 10);
     const Model m = flying_beam_model(p);
     const double t0 = now();
     const History h = run(m, o, ro);

@@ -16,6 +16,7 @@
 #include "src/error.hpp"
 #include "src/io/hdf5_file.hpp"
 #include "src/run/run_phases.hpp"
+#include "tests/engine/scratch_directory.hpp"
 
 using namespace rollspec;
 namespace fs = std::filesystem;
@@ -55,9 +56,7 @@ std::string own_mean_table(const std::string& result, const fs::path& path, doub
 }  // namespace
 
 TEST_CASE("compare_result: a result against its own mean, and the same in g read as m/s^2") {
-  const fs::path dir = fs::temp_directory_path() / "rollspec_test_compare_result";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_directory("rollspec_test_compare_result");
   compare::CompareRequest q;
   q.result = model_run(dir);
   q.measured_averages = 16.0;

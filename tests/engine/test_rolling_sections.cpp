@@ -26,7 +26,14 @@ const char* kFile = "/tmp/rollspec_rolling_sections.ini";
 
 // Line 5 is the first line of `extra`.
 study::Study scene_study(const std::string& scene, const std::string& extra) {
-  return test::study_from_text(kFile, "[study]\nscene = " + scene + "\nrealisations = 2\nseed = 7\n" + extra, {});
+  return test::SceneStudies{kFile, scene, 2, 7}(extra);
+}
+
+// What `read` refuses the study of `scene` with `extra` with, as the user reads it ("" when it accepts it).
+std::string refusal(const std::string& scene, const std::string& extra,
+                    const std::function<void(const study::Study&)>& read) {
+  const auto s = scene_study(scene, extra);
+  return message_of([&] { read(s); });
 }
 
 }  // namespace
@@ -59,29 +66,24 @@ TEST_CASE("rolling-beam sections: values from the study, defaults elsewhere") {
 }
 
 TEST_CASE("rolling-beam sections: cross-key refusals name file:line") {
-  const auto planes = scene_study("rolling-beam", "[plane]\npoint = 0,0,0; 1,0,0\nnormal = 0,0,1\n");
-  CHECK(message_of([&] { (void)study::PlaneSection::parse(planes); }) ==
+  CHECK(refusal("rolling-beam", "[plane]\npoint = 0,0,0; 1,0,0\nnormal = 0,0,1\n", study::PlaneSection::parse) ==
         std::string(kFile) + ":7: [plane] normal = 0,0,1: gives 1 normals for 2 points; allowed: one normal per plane");
-  const auto beam = scene_study("rolling-beam", "[beam]\ndiameter = 0.2\ninner_diameter = 0.2\n");
-  CHECK(message_of([&] { (void)study::StraightBeamSection::parse(beam); }) ==
+  CHECK(refusal("rolling-beam", "[beam]\ndiameter = 0.2\ninner_diameter = 0.2\n", study::StraightBeamSection::parse) ==
         std::string(kFile) + ":7: [beam] inner_diameter = 0.2: must be smaller than [beam] diameter");
-  const auto imposed = scene_study("rolling-beam", "[imposed]\nnode = last\ntimes = 0, 1, 1\nvalues = 0, 1, 2\n");
-  CHECK(message_of([&] { (void)study::ImposedSection::parse(imposed); }) ==
+  CHECK(refusal("rolling-beam", "[imposed]\nnode = last\ntimes = 0, 1, 1\nvalues = 0, 1, 2\n",
+                study::ImposedSection::parse) ==
         std::string(kFile) + ":7: [imposed] times = 0, 1, 1: must increase strictly");
   // Checks made once the model is known keep the key's origin.
-  const auto nodes = scene_study("rolling-beam", "[beam]\nelements = 2\n[output]\nnodes = 0, 9\n");
-  CHECK(message_of([&] { (void)scenes::read_rolling_beam_settings(nodes); }) ==
+  CHECK(refusal("rolling-beam", "[beam]\nelements = 2\n[output]\nnodes = 0, 9\n", scenes::read_rolling_beam_settings) ==
         std::string(kFile) + ":8: [output] nodes = 0, 9: node 9.000000 does not exist; allowed: 0..4");
-  const auto clamp = scene_study("rolling-beam", "[body]\nkind = disc\n[support]\nclamp = first\n");
-  CHECK(message_of([&] { (void)scenes::read_rolling_beam_settings(clamp); }) ==
-        std::string(kFile) + ":8: [support] clamp = first: a disc has no ends to clamp");
-  const auto integ = scene_study("rolling-beam", "[analysis]\nintegrator = energy-consistent\n");
-  CHECK(message_of([&] { (void)scenes::read_rolling_beam_settings(integ); }) ==
+  CHECK(
+      refusal("rolling-beam", "[body]\nkind = disc\n[support]\nclamp = first\n", scenes::read_rolling_beam_settings) ==
+      std::string(kFile) + ":8: [support] clamp = first: a disc has no ends to clamp");
+  CHECK(refusal("rolling-beam", "[analysis]\nintegrator = energy-consistent\n", scenes::read_rolling_beam_settings) ==
         std::string(kFile) +
             ":6: [analysis] integrator = energy-consistent: energy-consistent integration covers rigid bodies only; "
             "this model has beam elements");
-  const auto step = scene_study("rolling-beam", "[analysis]\ndt = 0.5\nt_end = 0.1\n");
-  CHECK(message_of([&] { (void)study::RollingAnalysisSection::parse(step); }) ==
+  CHECK(refusal("rolling-beam", "[analysis]\ndt = 0.5\nt_end = 0.1\n", study::RollingAnalysisSection::parse) ==
         std::string(kFile) + ":6: [analysis] dt = 0.5: exceeds [analysis] t_end");
 }
 
@@ -96,14 +98,12 @@ TEST_CASE("rolling-pipe sections: values, defaults and refusals at file:line") {
   CHECK(study::PipeContactSection::parse(s).damping_ratio == 0.1);
   CHECK(study::PipeAnalysisSection::parse(s).dt == 1e-4);
   CHECK(study::StudySection::parse(s).seed == 7);
-  const auto bad = scene_study("rolling-pipe", "[pipe]\ndiameter = 0.05\ninner_diameter = 0.05\n");
-  CHECK(message_of([&] { (void)study::PipeSection::parse(bad); }) ==
+  CHECK(refusal("rolling-pipe", "[pipe]\ndiameter = 0.05\ninner_diameter = 0.05\n", study::PipeSection::parse) ==
         std::string(kFile) + ":7: [pipe] inner_diameter = 0.05: must be smaller than [pipe] diameter");
-  const auto sensor = scene_study("rolling-pipe", "[analysis]\ndt = 2e-5\n[sensors]\npositions = 0.5, 1.5\n");
-  CHECK(message_of([&] { (void)scenes::read_rolling_pipe_settings(sensor); }) ==
+  CHECK(refusal("rolling-pipe", "[analysis]\ndt = 2e-5\n[sensors]\npositions = 0.5, 1.5\n",
+                scenes::read_rolling_pipe_settings) ==
         std::string(kFile) + ":8: [sensors] positions = 0.5, 1.5: fraction 1.500000 lies outside [0, 1]");
-  const auto short_roll = scene_study("rolling-pipe", "[roll]\ndistance = 1e-4\n");
-  CHECK(message_of([&] { (void)scenes::read_rolling_pipe_settings(short_roll); }) ==
+  CHECK(refusal("rolling-pipe", "[roll]\ndistance = 1e-4\n", scenes::read_rolling_pipe_settings) ==
         std::string(kFile) + ":6: [roll] distance = 1e-04: gives fewer than 16 time steps at [analysis] dt");
 }
 
@@ -118,16 +118,14 @@ TEST_CASE("random-oscillator sections: values, defaults and refusals at file:lin
   CHECK(f.f_max == 0.0);
   const auto sig = study::RecordSignalSection::parse(s);
   CHECK(sig.samples == 2048u * 32u);
-  const auto nyquist = scene_study("random-oscillator", "[oscillator]\nnatural_frequency = 2000\n");
-  CHECK(message_of([&] { (void)scenes::read_random_oscillator_settings(nyquist); }) ==
+  CHECK(refusal("random-oscillator", "[oscillator]\nnatural_frequency = 2000\n",
+                scenes::read_random_oscillator_settings) ==
         std::string(kFile) +
             ":6: [oscillator] natural_frequency = 2000: must lie below the Nyquist frequency f_s/2 = 1024.000000 Hz");
-  const auto fmax = scene_study("random-oscillator", "[oscillator]\nnatural_frequency = 50\n[force]\nf_max = 2000\n");
-  CHECK(message_of([&] { (void)scenes::read_random_oscillator_settings(fmax); }) ==
+  CHECK(refusal("random-oscillator", "[oscillator]\nnatural_frequency = 50\n[force]\nf_max = 2000\n",
+                scenes::read_random_oscillator_settings) ==
         std::string(kFile) + ":8: [force] f_max = 2000: exceeds the Nyquist frequency f_s/2 = 1024.000000 Hz");
-  const auto tiny =
-      scene_study("random-oscillator", "[oscillator]\nnatural_frequency = 50\n[signal]\nduration = 1e-3\n");
-  CHECK(message_of([&] {
-          (void)study::RecordSignalSection::parse(tiny);
-        }).find(std::string(kFile) + ":8: [signal] duration = 0.001: gives") == 0);
+  CHECK(refusal("random-oscillator", "[oscillator]\nnatural_frequency = 50\n[signal]\nduration = 1e-3\n",
+                study::RecordSignalSection::parse)
+            .find(std::string(kFile) + ":8: [signal] duration = 0.001: gives") == 0);
 }

@@ -19,10 +19,7 @@ using namespace rollspec;
 using test::message_of;
 
 namespace {
-study::Study ball_on_beam(const std::string& extra, const std::vector<std::string>& overrides = {}) {
-  return test::study_from_text("/tmp/rollspec_section_keys.ini",
-                               "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 1\n" + extra, overrides);
-}
+const test::SceneStudies ball_on_beam{"/tmp/rollspec_section_keys.ini", "ball-on-beam", 2, 1};
 }  // namespace
 
 TEST_CASE("section keys: the KeySpecs in declaration order, with range, unit and default") {

@@ -23,10 +23,7 @@ using namespace rollspec;
 using test::message_of;
 
 namespace {
-study::Study ball_on_beam(const std::string& extra, const std::vector<std::string>& overrides = {}) {
-  return test::study_from_text("/tmp/rollspec_sections.ini",
-                               "[study]\nscene = ball-on-beam\nrealisations = 2\nseed = 1\n" + extra, overrides);
-}
+const test::SceneStudies ball_on_beam{"/tmp/rollspec_sections.ini", "ball-on-beam", 2, 1};
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "src/io/hdf5_file.hpp"
 #include "src/io/hdf5_stack.hpp"
 #include "src/io/sweep_point.hpp"
+#include "tests/engine/scratch_directory.hpp"
 
 namespace fs = std::filesystem;
 using namespace rollspec;
@@ -45,9 +46,7 @@ void write_point(const std::string& path, int point) {
 }  // namespace
 
 TEST_CASE("sweep point: a crossed sweep's bands read at a point by number and by value") {
-  const fs::path dir = fs::temp_directory_path() / "rollspec_test_sweep_point";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_directory("rollspec_test_sweep_point");
   io::StackRequest q;
   for (int i = 0; i < 6; ++i) {
     q.inputs.push_back((dir / ("p" + std::to_string(i) + ".h5")).string());

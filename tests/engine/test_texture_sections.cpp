@@ -18,10 +18,7 @@ using namespace rollspec;
 using test::message_of;
 
 namespace {
-study::Study texture_study(const std::string& extra, const std::vector<std::string>& overrides = {}) {
-  return test::study_from_text("/tmp/rollspec_texture_sections/s.ini",
-                               "[study]\nscene = texture\nrealisations = 1\nseed = 7\n" + extra, overrides);
-}
+const test::SceneStudies texture_study{"/tmp/rollspec_texture_sections/s.ini", "texture", 1, 7};
 
 }  // namespace
 

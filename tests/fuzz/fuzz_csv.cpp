@@ -5,40 +5,22 @@
 // the way the commands check theirs (named columns, strictly increasing axis). It is also read as a
 // measured signal (delimiter and decimal-comma detection, time column and its sample rate). A
 // UserError is the expected refusal; any other exception, a crash or a sanitizer report is a finding.
-#include <unistd.h>
-
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
 #include "src/error.hpp"
 #include "src/io/csv_table.hpp"
 #include "src/io/signal_file.hpp"
-
-namespace {
-// One temporary file per fuzzing process, removed when the process exits.
-struct TempFile {
-  std::string path = "/tmp/rollspec-fuzz-csv-" + std::to_string(::getpid()) + ".csv";
-  ~TempFile() { std::remove(path.c_str()); }
-};
-
-const std::string& temp_path() {
-  static const TempFile file;
-  return file.path;
-}
-}  // namespace
+#include "fuzz_temp_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  {
-    std::ofstream out(temp_path(), std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  }
+  static const rollspec::fuzz::TempFile file("csv", ".csv");
+  file.write(reinterpret_cast<const char*>(data), size);
   try {
-    const rollspec::io::CsvTable t = rollspec::io::read_csv(temp_path());
+    const rollspec::io::CsvTable t = rollspec::io::read_csv(file.path);
     // Invariants of an accepted table: a header, at least one row, every column as long as the
     // row list, every value finite.
     if (t.columns.empty() || t.rows() == 0 || t.values.size() != t.columns.size()) std::abort();
@@ -62,7 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     // As a signal: channels are the columns minus at most one time column, all of one length; a time
     // column gives a finite rate > 0, and there is no rate without one.
-    const rollspec::io::SignalTable s = rollspec::io::read_csv_signal(temp_path());
+    const rollspec::io::SignalTable s = rollspec::io::read_csv_signal(file.path);
     if (s.channels.size() != s.values.size() || s.groups.size() != s.channels.size()) std::abort();
     if (s.units.size() != s.channels.size()) std::abort();  // one unit (or none found) per channel
     for (const auto& col : s.values)

@@ -6,31 +6,17 @@
 // (exit 64/65/66/78 in the command) is the expected outcome; any other exception, a crash or a
 // sanitizer report is a finding. A study that loads is read back through every typed accessor
 // and the canonical text, as the scenes and the result provenance do.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "src/error.hpp"
 #include "src/scenes/scene.hpp"
 #include "src/study/study.hpp"
+#include "fuzz_temp_file.hpp"
 
 namespace {
-
-// One temporary file per fuzzing process, removed when the process exits.
-struct TempFile {
-  std::string path = "/tmp/rollspec-fuzz-study-" + std::to_string(::getpid()) + ".ini";
-  ~TempFile() { std::remove(path.c_str()); }
-};
-
-const std::string& temp_path() {
-  static const TempFile file;
-  return file.path;
-}
 
 void read_back(const rollspec::study::Study& s) {
   using rollspec::study::KeyType;
@@ -70,12 +56,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     overrides.push_back(text.substr(1, nl == std::string::npos ? std::string::npos : nl - 1));
     text = nl == std::string::npos ? std::string() : text.substr(nl + 1);
   }
-  {
-    std::ofstream out(temp_path(), std::ios::binary | std::ios::trunc);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  }
+  static const rollspec::fuzz::TempFile file("study", ".ini");
+  file.write(text.data(), text.size());
   try {
-    const auto s = rollspec::study::Study::load(temp_path(), overrides, rollspec::scenes::schema_for);
+    const auto s = rollspec::study::Study::load(file.path, overrides, rollspec::scenes::schema_for);
     read_back(s);
   } catch (const rollspec::UserError&) {
     // Refused with a message and a sysexits code: the expected outcome for bad input.

@@ -29,34 +29,58 @@ MovingForceRun run_moving_force(const ModalBeam& beam, double l, double load, do
   r.w = moving_force_deflection(beam, 0.0, r.v, force, r.dt, r.xs);
   return r;
 }
+
+// Every 7th sample of each point of a run: f(point x, time t, computed deflection w).
+template <class F>
+void for_samples(const MovingForceRun& r, F&& f) {
+  for (std::size_t i = 0; i < r.xs.size(); ++i)
+    for (long k = 0; k <= r.steps; k += 7) f(r.xs[i], static_cast<double>(k) * r.dt, r.w[i][k]);
+}
+
+// The beam both tests cross: 0.4 m, simply supported, 30 modes (the closed forms' terms too), modal `damping`,
+// crossed by 100 N; l, EI and mu for the closed forms.
+struct CrossedBeam {
+  static constexpr int modes = 30;
+  static constexpr double load = 100.0;
+  ModalBeam beam;
+  double l, ei, mu;
+  explicit CrossedBeam(const ModalDamping& damping)
+      : beam(properties(), {modes, 0.0}, damping),
+        l(beam.properties().length),
+        ei(beam.bending_stiffness()),
+        mu(beam.mass_per_length()) {}
+  // At speed parameter alpha = pi v / (l omega_1).
+  MovingForceRun run(double alpha) const { return run_moving_force(beam, l, load, alpha); }
+
+ private:
+  static BeamProperties properties() {
+    BeamProperties p;
+    p.support = Support::simply_supported;
+    p.length = 0.4;
+    return p;
+  }
+};
 }  // namespace
 
 TEST_CASE("moving constant force on a simply supported beam matches Frýba's closed form") {
-  BeamProperties p;
-  p.support = Support::simply_supported;
-  p.length = 0.4;
-  const int modes = 30;
-  const ModalBeam beam(p, {modes, 0.0}, {});  // undamped, as Frýba's series
-  const double load = 100.0;
-  const double l = p.length, ei = beam.bending_stiffness(), mu = beam.mass_per_length();
-  for (double alpha : {0.1, 0.5, 1.3}) {  // speed parameter alpha = pi v / (l omega_1)
-    const MovingForceRun r = run_moving_force(beam, l, load, alpha);
-    const double v = r.v, dt = r.dt;
-    const auto& xs = r.xs;
-    const auto& w = r.w;
+  const CrossedBeam crossed({});  // undamped, as Frýba's series
+  const double l = crossed.l, ei = crossed.ei, mu = crossed.mu;
+  const int modes = CrossedBeam::modes;
+  const double load = CrossedBeam::load;
+  for (double alpha : {0.1, 0.5, 1.3}) {
+    const MovingForceRun r = crossed.run(alpha);
     double worst = 0.0, peak = 0.0;
-    for (std::size_t i = 0; i < xs.size(); ++i)
-      for (long k = 0; k <= r.steps; k += 7) {
-        const double ref = -fryba_moving_force(l, ei, mu, load, v, xs[i], static_cast<double>(k) * dt, modes);
-        worst = std::max(worst, std::abs(w[i][k] - ref));
-        peak = std::max(peak, std::abs(ref));
-      }
+    for_samples(r, [&](double x, double t, double w) {
+      const double ref = -fryba_moving_force(l, ei, mu, load, r.v, x, t, modes);
+      worst = std::max(worst, std::abs(w - ref));
+      peak = std::max(peak, std::abs(ref));
+    });
     MESSAGE("alpha " << alpha << ": max |w - w_Fryba| / max |w_Fryba| = " << worst / peak
                      << ", peak midspan / static P l^3/(48 EI) = " << peak / (load * l * l * l / (48.0 * ei)));
     CHECK(worst <= 1e-6 * peak);
   }
   // A wrong modal mass or a wrong sign is caught: the dynamic peak differs from the static one.
-  const double v = 0.5 * beam.omega(0) * l / kPi;
+  const double v = 0.5 * crossed.beam.omega(0) * l / kPi;
   CHECK(std::abs(fryba_moving_force(l, ei, mu, load, v, 0.5 * l, 0.5 * l / v, 60) / (load * l * l * l / (48.0 * ei)) -
                  1.0) > 0.05);
 }
@@ -87,28 +111,20 @@ double damped_moving_force(double l, double ei, double mu, double load, double v
 // a few 1e-3 of the peak: the damping the series leaves out, not an error of the modal steps, which follow the
 // damped closed form as closely as the undamped one.
 TEST_CASE("moving constant force on a damped simply supported beam matches the damped modal closed form") {
-  BeamProperties p;
-  p.support = Support::simply_supported;
-  p.length = 0.4;
-  const int modes = 30;
   const double loss_factor = 0.01;
-  const ModalBeam beam(p, {modes, 0.0}, {loss_factor, {}});
-  const double load = 100.0;
-  const double l = p.length, ei = beam.bending_stiffness(), mu = beam.mass_per_length();
+  const CrossedBeam crossed({loss_factor, {}});
+  const double l = crossed.l, ei = crossed.ei, mu = crossed.mu;
+  const int modes = CrossedBeam::modes;
+  const double load = CrossedBeam::load;
   for (double alpha : {0.1, 0.5, 1.3}) {
-    const MovingForceRun r = run_moving_force(beam, l, load, alpha);
-    const double v = r.v, dt = r.dt;
-    const auto& xs = r.xs;
-    const auto& w = r.w;
+    const MovingForceRun r = crossed.run(alpha);
     double worst = 0.0, undamped = 0.0, peak = 0.0;
-    for (std::size_t i = 0; i < xs.size(); ++i)
-      for (long k = 0; k <= r.steps; k += 7) {
-        const double t = static_cast<double>(k) * dt;
-        const double ref = -damped_moving_force(l, ei, mu, load, v, xs[i], t, modes, 0.5 * loss_factor);
-        worst = std::max(worst, std::abs(w[i][k] - ref));
-        undamped = std::max(undamped, std::abs(w[i][k] + fryba_moving_force(l, ei, mu, load, v, xs[i], t, modes)));
-        peak = std::max(peak, std::abs(ref));
-      }
+    for_samples(r, [&](double x, double t, double w) {
+      const double ref = -damped_moving_force(l, ei, mu, load, r.v, x, t, modes, 0.5 * loss_factor);
+      worst = std::max(worst, std::abs(w - ref));
+      undamped = std::max(undamped, std::abs(w + fryba_moving_force(l, ei, mu, load, r.v, x, t, modes)));
+      peak = std::max(peak, std::abs(ref));
+    });
     MESSAGE("loss factor " << loss_factor << ", alpha " << alpha << ": max |w - w_damped| / peak = " << worst / peak
                            << ", max |w - w_Fryba,undamped| / peak = " << undamped / peak);
     CHECK(worst <= 1e-6 * peak);

@@ -1,6 +1,6 @@
 #pragma once
-// Strips for the blocked-force tests (test_blocked_force.cpp, test_blocked_force_answer.cpp): a window about a
-// Hertz contact, a longer strip to move it along, positions on cell centres, and the message a refusal throws.
+// Strips for the blocked-force, path-table and equivalent-roughness tests: a window about a Hertz contact, a longer
+// strip to move it along, positions on cell centres, rough strips, and the message a refusal throws.
 #include <cstddef>
 #include <functional>
 #include <stdexcept>
@@ -48,22 +48,28 @@ inline BlockedForcePath at_load_on(int threads, const StripCase& c, const Hertz&
   return r;
 }
 
-// The wavy strip the blocked-force path tests share: 12 cells per contact radius, a window of 1.9 radii, the
-// strip 36 x 10 cells larger (by default), waves of 0.15 times the Hertz approach and 0.4 times the contact radius, 16
-// positions two cells apart from cell -15, hardness 0.5 p0. Taken apart by a structured binding:
-// auto& [h, c, heights, x, opt] = strip.
-struct WavyStrip {
+// A rough elastic-plastic strip about the Hertz ball: the window and strip of `strip` (strip_case of a Hertz{}), waves
+// of 0.15 times the Hertz approach and `wavelength` contact radii, `count` positions `step` cells apart from cell
+// `first`, hardness 0.5 p0. Taken apart by a structured binding: auto& [h, c, heights, x, opt] = strip.
+struct RoughStrip {
   Hertz h;
   StripCase c;
   std::vector<double> heights, x;
   SolverOptions opt;
-  // `extra` cells more than the window along the path, `count` positions from cell `first`.
-  explicit WavyStrip(std::size_t extra = 36, long first = -15, std::size_t count = 16)
-      : c(strip_case(h, 12.0, 1.9, extra, 10)),
-        heights(wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a())),
-        x(cell_positions(c.strip, first, 2, count)) {
+  RoughStrip(const StripCase& strip, double wavelength, long first, long step, std::size_t count)
+      : c(strip),
+        heights(wavy_heights(c.strip, 0.15 * h.approach, wavelength * h.a())),
+        x(cell_positions(c.strip, first, step, count)) {
     opt.hardness = 0.5 * h.p0();
   }
+};
+
+// The wavy strip the blocked-force path tests share: 12 cells per contact radius, a window of 1.9 radii, the
+// strip 36 x 10 cells larger (by default), waves of 0.4 contact radii, 16 positions two cells apart from cell -15.
+struct WavyStrip : RoughStrip {
+  // `extra` cells more than the window along the path, `count` positions from cell `first`.
+  explicit WavyStrip(std::size_t extra = 36, long first = -15, std::size_t count = 16)
+      : RoughStrip(strip_case(Hertz{}, 12.0, 1.9, extra, 10), 0.4, first, 2, count) {}
 
   // The path at `load` (blocked_force_at_load, a sphere) on `threads` OpenMP threads.
   BlockedForcePath at_load(int threads, double load, const BlockedForceOptions& o) const {

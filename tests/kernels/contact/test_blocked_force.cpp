@@ -23,13 +23,7 @@
 #include "strip_fixture.hpp"
 
 using namespace rollspec::contact;
-using rollspec::contact::test::cell_positions;
-using rollspec::contact::test::Hertz;
-using rollspec::contact::test::kPi;
-using rollspec::contact::test::strip_case;
-using rollspec::contact::test::StripCase;
-using rollspec::contact::test::thrown_message;
-using rollspec::contact::test::WavyStrip;
+using namespace rollspec::contact::test;
 
 namespace {
 

@@ -13,27 +13,17 @@
 #include "hertz_fixture.hpp"
 #include "kernels/contact/equivalent_roughness.hpp"
 #include "rough_fixture.hpp"
+#include "strip_fixture.hpp"
 
 using namespace rollspec::contact;
-using rollspec::contact::test::Hertz;
-using rollspec::contact::test::kPi;
+using namespace rollspec::contact::test;
 
 namespace {
 
-// Window `cells` per Hertz radius, half-width span·a; strip `extra` columns longer, same rows.
-struct Case {
-  Grid window, strip;
-};
-Case make_case(const Hertz& h, double cells, double span, std::size_t extra) {
-  const Grid w = h.grid(cells, span);
-  return {w, Grid{w.nx + extra, w.ny, w.dx, w.dy}};
-}
-
-// Positions on cell centres (strip nx odd): x_k = (first + k step) dx.
-std::vector<double> cell_positions(const Grid& strip, long first, long step, std::size_t count) {
-  std::vector<double> x(count);
-  for (std::size_t k = 0; k < count; ++k) x[k] = static_cast<double>(first + static_cast<long>(k) * step) * strip.dx;
-  return x;
+// The rough elastic-plastic strips of the fast-path tests: 12 cells per Hertz radius, window half-width 1.8 a, the
+// strip `extra` columns longer (strip_case), waves of `wavelength` contact radii (rough_fixture), H = 0.5 p0.
+RoughStrip rough_strip(std::size_t extra, double wavelength, long first, long step, std::size_t count) {
+  return RoughStrip(strip_case(Hertz{}, 12.0, 1.8, extra), wavelength, first, step, count);
 }
 
 // Least-squares fit h ≈ c0 + c cos(kx) + s sin(kx); returns the amplitude sqrt(c² + s²) (Eigen's QR).
@@ -53,7 +43,7 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 
 TEST_CASE("equivalent roughness: smooth strip gives h_eq = 0 and the Hertz approach") {
   const Hertz h;
-  const Case c = make_case(h, 16.0, 1.6, 60);
+  const StripCase c = strip_case(h, 16.0, 1.6, 60);
   ContactSolver solver(c.window, h.e_star);
   const auto x = cell_positions(c.strip, -25, 5, 11);
   const std::vector<double> flat(c.strip.size(), 0.0);
@@ -78,14 +68,10 @@ TEST_CASE("equivalent roughness: smooth strip gives h_eq = 0 and the Hertz appro
 }
 
 TEST_CASE("equivalent roughness: moving window with warm starts equals the cold whole-strip reference") {
-  const Hertz h;
   // Rough and elastic-plastic: crossed waves of 0.15 δ_H and 1.5 a (rough_fixture), H = 0.5 p0
   // (plastic cells at W).
-  const Case c = make_case(h, 12.0, 1.8, 50);
-  const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, 1.5 * h.a());
-  const auto x = cell_positions(c.strip, -24, 3, 17);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  const RoughStrip strip = rough_strip(50, 1.5, -24, 3, 17);
+  const auto& [h, c, heights, x, opt] = strip;
   ContactSolver solver(c.window, h.e_star);
   const EquivalentRoughness fast =
       equivalent_roughness(solver, c.strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt);
@@ -123,12 +109,8 @@ TEST_CASE("equivalent roughness: moving window with warm starts equals the cold 
 }
 
 TEST_CASE("equivalent roughness: same bits on 1 and 2 threads") {
-  const Hertz h;
-  const Case c = make_case(h, 12.0, 1.8, 40);
-  const auto heights = rollspec::contact::test::wavy_heights(c.strip, 0.15 * h.approach, 0.4 * h.a());
-  const auto x = cell_positions(c.strip, -18, 4, 9);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
+  const RoughStrip strip = rough_strip(40, 0.4, -18, 4, 9);
+  const auto& [h, c, heights, x, opt] = strip;
   // Serial path, and chunks of 2 positions (5 chunks on the threads, dynamic schedule).
   EquivalentRoughnessOptions chunked;
   chunked.chunk_positions = 2;
@@ -148,7 +130,7 @@ TEST_CASE("equivalent roughness: same bits on 1 and 2 threads") {
 
 TEST_CASE("equivalent roughness: confinement (BF-5) refused, naming the position") {
   const Hertz h;
-  const Case c = make_case(h, 8.0, 1.1, 30);  // window half-width 1.1 a < √2 a: the interference leaves it
+  const StripCase c = strip_case(h, 8.0, 1.1, 30);  // window half-width 1.1 a < √2 a: the interference leaves it
   ContactSolver solver(c.window, h.e_star);
   const auto x = cell_positions(c.strip, -10, 2, 5);
   CHECK_THROWS_AS(equivalent_roughness(solver, c.strip, {}, h.radius, BallShape::Paraboloid, x, h.force()),
@@ -170,7 +152,7 @@ TEST_CASE("equivalent roughness: uniform corrugation at small amplitude is filte
     const double wavelength_cells = 2.0 * kPi / k / (h.a() / cells);
     const long step = std::max(1L, std::lround(wavelength_cells / 16.0));
     const std::size_t count = static_cast<std::size_t>(std::ceil(1.25 * wavelength_cells / static_cast<double>(step)));
-    const Case c = make_case(h, cells, 1.6, static_cast<std::size_t>(step) * count + 2);
+    const StripCase c = strip_case(h, cells, 1.6, static_cast<std::size_t>(step) * count + 2);
     std::vector<double> heights(c.strip.size());
     for (std::size_t iy = 0; iy < c.strip.ny; ++iy)
       for (std::size_t ix = 0; ix < c.strip.nx; ++ix)

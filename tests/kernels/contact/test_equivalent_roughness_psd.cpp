@@ -27,16 +27,9 @@ TEST_CASE("equivalent roughness of an isotropic surface: PSD of h_eq within 1 dB
   const double dx = a / 8.0;
   // Self-affine line PSD, plateau below ka = 1, H = 0.8 to ka = 6, none above (the surface grid
   // resolves it: k_short dx = 0.5 < pi); rms 1e-3 δ_H, so the contact is full and elastic (linear).
-  texture::SelfAffineSpec spec;
-  spec.hurst = 0.8;
-  spec.k_rolloff = 1.0 / a;
-  spec.k_short = 6.0 / a;
-  spec.rms = 1e-3 * h.approach;
+  const texture::SelfAffineSpec spec{0.8, 0.0, 1.0 / a, 6.0 / a, texture::RmsTarget::height, 1e-3 * h.approach};
   const texture::Psd g = texture::SelfAffinePsd(spec).to_psd();
-  texture::SpectralSurfaceSpec sspec;
-  sspec.nx = 4096;
-  sspec.ny = 96;
-  sspec.dx = sspec.dy = dx;
+  const texture::SpectralSurfaceSpec sspec{4096, 96, dx, dx};
   const texture::SpectralSurfaceGenerator gen(g, sspec);
   const contact::Grid strip{sspec.nx, sspec.ny, dx, dx};
   const contact::Grid window{28, 28, dx, dx};  // half-width 1.75 a; 56² products (no large prime factor)

@@ -11,9 +11,10 @@
 #include "hertz_fixture.hpp"
 #include "kernels/contact/path_table.hpp"
 #include "rough_fixture.hpp"
+#include "strip_fixture.hpp"
 
 using namespace rollspec::contact;
-using rollspec::contact::test::Hertz;
+using namespace rollspec::contact::test;
 
 namespace {
 
@@ -21,28 +22,39 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
 }
 
+// The rough strip both tests tabulate: 8 cells per Hertz radius, the window 3 radii each side, the strip `extra`
+// cells longer and 10 wider, waves of 0.4 contact radii, `count` positions `step` cells apart from cell `first`.
+RoughStrip table_strip(std::size_t extra, long first, long step, std::size_t count) {
+  return RoughStrip(strip_case(Hertz{}, 8.0, 3.0, extra, 10), 0.4, first, step, count);
+}
+
+// At least `approaches` rows of approach (at most 8), in chunks of `chunk` positions.
+PathTableOptions table_options(std::size_t approaches, std::size_t chunk) {
+  PathTableOptions po;
+  po.approaches = approaches;
+  po.max_approaches = 8;
+  po.chunk_positions = chunk;
+  return po;
+}
+
+PathTable table_of(const RoughStrip& s, const PathTableOptions& po) {
+  const auto& [h, c, heights, x, opt] = s;
+  return build_path_table(c.window, h.e_star, c.strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, po);
+}
+
 }  // namespace
 
 TEST_CASE("path table: the same bits on 1 and 2 threads, every entry the whole-strip solve") {
-  const Hertz h;
-  // 8 cells per Hertz radius, the window 3 radii each side: it holds the contact at the top rows
-  // (δ_c + 3 δ_H and the rows B43a adds); the strip is longer and wider than the window.
-  const Grid window = h.grid(8.0, 3.0);
-  const Grid strip{window.nx + 40, window.ny + 10, window.dx, window.dy};
-  const auto heights = rollspec::contact::test::wavy_heights(strip, 0.15 * h.approach, 0.4 * h.a());
-  std::vector<double> x;
-  for (long k = 0; k < 5; ++k) x.push_back(static_cast<double>(-12 + 6 * k) * strip.dx);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
-  PathTableOptions po;
-  po.approaches = 4;
-  po.max_approaches = 8;
-  po.chunk_positions = 2;  // three chunks: the threads share them (PT-1)
+  // The window holds the contact at the top rows (δ_c + 3 δ_H and the rows B43a adds); the strip is longer and
+  // wider than the window.
+  const RoughStrip s = table_strip(40, -12, 6, 5);
+  const auto& [h, c, heights, x, opt] = s;
+  const PathTableOptions po = table_options(4, 2);  // three chunks: the threads share them (PT-1)
   std::vector<PathTable> t;
   for (int threads : {1, 2}) {
     const int before = omp_get_max_threads();
     omp_set_num_threads(threads);
-    t.push_back(build_path_table(window, h.e_star, strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, po));
+    t.push_back(table_of(s, po));
     omp_set_num_threads(before);
   }
   REQUIRE(t[0].converged);
@@ -65,7 +77,7 @@ TEST_CASE("path table: the same bits on 1 and 2 threads, every entry the whole-s
         continue;
       }
       const double direct =
-          path_force_direct(strip, heights, h.e_star, h.radius, BallShape::Sphere, x[k], 0.0, t[0].approach[j], opt);
+          path_force_direct(c.strip, heights, h.e_star, h.radius, BallShape::Sphere, x[k], 0.0, t[0].approach[j], opt);
       worst = std::max(worst, std::fabs(p / direct - 1.0));
       ++compared;
     }
@@ -76,22 +88,13 @@ TEST_CASE("path table: the same bits on 1 and 2 threads, every entry the whole-s
 }
 
 TEST_CASE("path table: starts from the approach below (PT-1) agree with cold solves and need fewer iterations") {
-  const Hertz h;
-  const Grid window = h.grid(8.0, 3.0);
-  const Grid strip{window.nx + 60, window.ny + 10, window.dx, window.dy};
-  const auto heights = rollspec::contact::test::wavy_heights(strip, 0.15 * h.approach, 0.4 * h.a());
-  std::vector<double> x;
-  for (long k = 0; k < 12; ++k) x.push_back(static_cast<double>(-22 + 4 * k) * strip.dx);
-  SolverOptions opt;
-  opt.hardness = 0.5 * h.p0();
-  PathTableOptions po;
-  po.approaches = 6;
-  po.max_approaches = 8;
-  po.chunk_positions = 6;
+  const RoughStrip s = table_strip(60, -22, 4, 12);
+  const double force = s.h.force();
+  PathTableOptions po = table_options(6, 6);
   std::vector<PathTable> t;
   for (PathTableStart start : {PathTableStart::Approach, PathTableStart::Position, PathTableStart::Cold}) {
     po.start = start;
-    t.push_back(build_path_table(window, h.e_star, strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, po));
+    t.push_back(table_of(s, po));
     REQUIRE(t.back().converged);
   }
   REQUIRE(same_bits(t[0].approach, t[2].approach));
@@ -99,7 +102,7 @@ TEST_CASE("path table: starts from the approach below (PT-1) agree with cold sol
   // Every entry within the solver's tolerance of the cold solve (relative to the row's force).
   double worst = 0.0;
   for (std::size_t i = 0; i < t[0].force.size(); ++i) {
-    const double scale = std::max(t[2].force[i], 1e-3 * h.force());
+    const double scale = std::max(t[2].force[i], 1e-3 * force);
     worst = std::max(
         {worst, std::fabs(t[0].force[i] - t[2].force[i]) / scale, std::fabs(t[1].force[i] - t[2].force[i]) / scale});
   }

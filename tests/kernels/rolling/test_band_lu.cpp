@@ -15,11 +15,15 @@
 #include "kernels/rolling/contact_set.hpp"
 #include "kernels/rolling/newton.hpp"
 #include "kernels/rolling/solver.hpp"
+#include "initial_tangent.hpp"
+#include "run_options.hpp"
 
 using namespace rollspec::rolling;
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using Eigen::VectorXd;
+using rollspec::rolling::test::InitialTangent;
+using rollspec::rolling::test::run_options;
 
 TEST_CASE("band LU: solves random band matrices as dense partial-pivoting LU does, pivoting included") {
   std::mt19937_64 rng(44);
@@ -143,39 +147,22 @@ Model rolling_tube() {
 
 TEST_CASE("band LU: the rolling tube's tangent, assembled into the band, solves as SparseLU does") {
   const Model m = rolling_tube();
-  const std::vector<NodeState> nodes = initial_nodes(m);
-  const BeamPoints points = make_beam_points(m);
-  ContactSet contacts(m, nodes);
-  const int n = 6 * static_cast<int>(m.X.size());
-  std::vector<int> eq(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) eq[static_cast<std::size_t>(i)] = i;
-  const AssemblyState state{m, nodes, points, 0.0};
-  const TimeRule rule(TimeRule::Kind::Newmark);
-  VectorXd q(n);
-  for (int k = 0; k < n; ++k) q(k) = 1e-6 * std::sin(0.7 * k);
-  SparseSink ss;
-  ss.eq = &eq;
-  ss.neq = n;
-  VectorXd Rs, Rb;
-  ss.begin();
-  assemble(state, rule, contacts, q, 2.5e-5, 2.5e-5, false, Rs, &ss);
-  ss.finish();
-  int kl = 0, ku = 0;
-  for (int c = 0; c < n; ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(ss.A, c); it; ++it) {
-      kl = std::max(kl, static_cast<int>(it.row()) - c);
-      ku = std::max(ku, c - static_cast<int>(it.row()));
-    }
+  const InitialTangent tangent(m);
+  const int n = tangent.n, kl = tangent.kl, ku = tangent.ku;
+  const SparseSink& ss = tangent.sparse;
+  const VectorXd& Rs = tangent.r;
   CHECK(kl == 17);  // an element couples three neighbouring nodes
   CHECK(ku == 17);
   CHECK(band_pays(n, kl, ku, ss.A.nonZeros()));
   BandLU band(n, kl, ku);
   BandSink bs;
-  bs.eq = &eq;
+  bs.eq = &tangent.eq;
   bs.lu = &band;
   bs.begin();
-  ContactSet fresh(m, nodes);  // the closest-point searches start as the first pass's did
-  assemble(state, rule, fresh, q, 2.5e-5, 2.5e-5, false, Rb, &bs);
+  ContactSet fresh(m, tangent.nodes);  // the closest-point searches start as the first pass's did
+  VectorXd Rb;
+  assemble(tangent.state(), TimeRule(TimeRule::Kind::Newmark), fresh, tangent.q, InitialTangent::kStep,
+           InitialTangent::kStep, false, Rb, &bs);
   CHECK_FALSE(bs.mismatch);
   const MatrixXd Ks = MatrixXd(ss.A);
   int differ = 0;
@@ -193,10 +180,7 @@ TEST_CASE("band LU: the rolling tube's tangent, assembled into the band, solves 
 }
 
 TEST_CASE("band LU: a rolling tube run with the band solver follows the SparseLU run to round-off") {
-  RunOptions ro;
-  ro.dt = 2.5e-5;
-  ro.t_end = 0.02;
-  ro.record_every = 40;
+  RunOptions ro = run_options(2.5e-5, 0.02, 40);
   ro.record_energies = false;
   SolverOptions band, sparse;
   band.linear_solver = LinearSolver::Band;
@@ -222,11 +206,7 @@ TEST_CASE("band LU: a rolling tube run with the band solver follows the SparseLU
 }
 
 TEST_CASE("Newton with residual-only checks (R-44a): the rolling tube run equals the plain one bit for bit") {
-  RunOptions ro;
-  ro.dt = 2.5e-5;
-  ro.t_end = 0.01;
-  ro.record_every = 1;
-  ro.record_energies = true;
+  const RunOptions ro = run_options(2.5e-5, 0.01);  // every step recorded, energies included
   SolverOptions lazy, plain;
   lazy.max_line_search = plain.max_line_search = 8;  // as the rolling-pipe scene
   plain.residual_only_checks = false;

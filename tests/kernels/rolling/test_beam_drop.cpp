@@ -7,9 +7,11 @@
 #include <cmath>
 
 #include "kernels/rolling/solver.hpp"
+#include "run_options.hpp"
 
 using namespace rollspec::rolling;
 using Eigen::Vector3d;
+using rollspec::rolling::test::run_options;
 
 TEST_CASE("flexible beam dropped on a plane with friction: contact, friction, energy balance") {
   Model m;
@@ -25,10 +27,7 @@ TEST_CASE("flexible beam dropped on a plane with friction: contact, friction, en
   SolverOptions o;
   o.force_tol = 1e-8;
   o.max_line_search = 8;
-  RunOptions ro;
-  ro.dt = 2e-4;
-  ro.t_end = 0.3;
-  const History h = run(m, o, ro);
+  const History h = run(m, o, run_options(2e-4, 0.3));
   REQUIRE(h.completed);
   const double E0 = h.energy.front().balance();
   double drift = 0.0, gmin = 0.0, emax = 0.0;

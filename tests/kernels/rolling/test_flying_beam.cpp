@@ -8,9 +8,12 @@
 #include <cstdio>
 
 #include "kernels/rolling/examples.hpp"
+#include "run_options.hpp"
 
 using namespace rollspec::rolling;
 using Eigen::Vector3d;
+using rollspec::rolling::test::flying_beam_options;
+using rollspec::rolling::test::run_options;
 
 TEST_CASE("seed 000 example 4.4 without friction: beam hits the wall, energy balance" * doctest::test_suite("long")) {
   FlyingBeamParams p;
@@ -18,14 +21,7 @@ TEST_CASE("seed 000 example 4.4 without friction: beam hits the wall, energy bal
   const Model m = flying_beam_model(p);
   CHECK(m.planes.size() == 2);
   CHECK(m.contacts.size() == 42);
-  SolverOptions o;
-  o.force_tol = 1e-6;
-  o.max_line_search = 8;
-  o.max_iterations = 40;
-  RunOptions ro;
-  ro.dt = 1e-3;
-  ro.t_end = 2.5;
-  const History h = run(m, o, ro);
+  const History h = run(m, flying_beam_options(), run_options(1e-3, 2.5));
   REQUIRE(h.completed);
   double kmax = 0.0, err = 0.0, zdev = 0.0, t_wall = -1.0, fwall = 0.0;
   for (std::size_t k = 0; k < h.time.size(); ++k) {

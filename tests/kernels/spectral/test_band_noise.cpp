@@ -14,8 +14,10 @@
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "philox_draws.hpp"
+#include "welch_config.hpp"
 
 using namespace rollspec::spectral;
+using rollspec::spectral::testing::welch_config;
 
 namespace {
 
@@ -56,10 +58,7 @@ TEST_CASE("Monte-Carlo: M rolls of signal plus noise have mean m + N and the var
   // (2 N^2 + 4 S N) / nu_b, var P_s = S^2 (e^{0.01} (1 + 2 / nu_b) - 1). 12 000 trials of M = 4 rolls: the sample
   // variance's relative standard error is about 1.4 %, the tolerance 5 %; a cross term of 2 S N / nu_b would
   // give 13 % less, the signal's variance without a^2 39 % more.
-  WelchConfig c;
-  c.sample_rate = 1000.0;
-  c.segment = 64;
-  c.overlap = 32;
+  const WelchConfig c = welch_config(1000.0, 64, 32);
   const WelchPlan plan(c);
   WelchWorkspace ws(c.segment);
   const double df = plan.frequency_step(), lo = 6.3 * df, hi = 14.1 * df;

@@ -13,8 +13,10 @@
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "philox_draws.hpp"
+#include "welch_config.hpp"
 
 using namespace rollspec::spectral;
+using rollspec::spectral::testing::welch_config;
 
 namespace {
 
@@ -29,10 +31,7 @@ double dot(const std::vector<double>& a, const std::vector<double>& b) {
 TEST_CASE("the forms, their traces and products match the plain estimator's polarisation") {
   for (const bool detrend : {true, false})
     for (const std::size_t overlap : {std::size_t{0}, std::size_t{16}, std::size_t{24}}) {
-      WelchConfig c;
-      c.sample_rate = 320.0;  // bins of 10 Hz
-      c.segment = 32;
-      c.overlap = overlap;
+      WelchConfig c = welch_config(320.0, 32, overlap);  // bins of 10 Hz
       c.detrend = detrend ? Detrend::constant : Detrend::none;
       const std::size_t n = 90;
       // At DC (the mean's lobe), two bands inside and across one bin, a wide band, the Nyquist bin.
@@ -71,10 +70,7 @@ TEST_CASE("the forms, their traces and products match the plain estimator's pola
 }
 
 TEST_CASE("BandDof's pair sums: one band's give its dof; two bands' are symmetric") {
-  WelchConfig c;
-  c.sample_rate = 1000.0;
-  c.segment = 64;
-  c.overlap = 48;
+  const WelchConfig c = welch_config(1000.0, 64, 48);
   const BandDof dof(c);
   for (const std::size_t n : {std::size_t{64}, std::size_t{100}, std::size_t{333}})
     for (const auto& band : std::vector<std::pair<double, double>>{{0.0, 20.0}, {40.0, 90.0}, {100.0, 480.0}}) {
@@ -91,10 +87,7 @@ TEST_CASE("Monte-Carlo: noise on a coherent transient has the covariance of the 
   // A slow bump (the ball's weight crossing the span) and a decaying tone, as in the bands below a beam's first
   // mode: bands narrower than a bin share it. 6000 draws of white noise on the one signal: the sample covariance's
   // relative standard error is about 2 %, the tolerance 8 % (on the diagonal; off it, 0.05 of the diagonals).
-  WelchConfig c;
-  c.sample_rate = 640.0;  // bins of 10 Hz
-  c.segment = 64;
-  c.overlap = 32;
+  const WelchConfig c = welch_config(640.0, 64, 32);  // bins of 10 Hz
   const WelchPlan plan(c);
   WelchWorkspace ws(c.segment);
   const std::size_t n = 288, draws = 6000;
@@ -151,10 +144,7 @@ TEST_CASE("Monte-Carlo: noise on a coherent transient has the covariance of the 
 }
 
 TEST_CASE("bad input is refused") {
-  WelchConfig c;
-  c.sample_rate = 100.0;
-  c.segment = 16;
-  c.overlap = 8;
+  const WelchConfig c = welch_config(100.0, 16, 8);
   CHECK_THROWS_AS(BandNoiseCovariance(c, 10, {1.0}, {5.0}), std::invalid_argument);       // shorter than L
   CHECK_THROWS_AS(BandNoiseCovariance(c, 64, {1.0, 2.0}, {5.0}), std::invalid_argument);  // edges unpaired
   CHECK_THROWS_AS(BandNoiseCovariance(c, 64, {70.0}, {80.0}), std::invalid_argument);     // above Nyquist

@@ -38,6 +38,54 @@ std::vector<double> flat(const Eigen::MatrixXd& m) {
   return v;
 }
 
+// Standard normals by Box-Muller pairs over one trial's uniforms, in order.
+class BoxMuller {
+ public:
+  explicit BoxMuller(const std::vector<double>& u) : u_(u) {}
+  double operator()() {
+    const double a = u_[k_], b = u_[k_ + 1];
+    k_ += 2;
+    return std::sqrt(-2.0 * std::log(a)) * std::cos(2.0 * M_PI * b);
+  }
+
+ private:
+  const std::vector<double>& u_;
+  std::size_t k_ = 0;
+};
+
+// A model's table covariance from its N units (the columns: the table is their mean), the jackknife of D-30a.
+Eigen::MatrixXd jackknife(const Eigen::MatrixXd& units) {
+  const double n = double(units.cols());
+  const Eigen::VectorXd ubar = units.rowwise().mean();
+  const Eigen::MatrixXd dev = units.colwise() - ubar;
+  return dev * dev.transpose() / (n * (n - 1.0));
+}
+
+// A measurement from another table: log mean - d + L_V e, with d and V D-26a's deviation and covariance at the true
+// S for K realisations of M averages, plus twice `table` (the model's table and the measurement's each deviate from
+// the roughness's mean by that covariance); e standard normal from z.
+template <class Normal>
+std::vector<double> measurement(const Eigen::MatrixXd& s_true, const Eigen::MatrixXd& table,
+                                const std::vector<double>& mean, std::uint64_t K, double M, Normal&& z) {
+  const std::size_t p = mean.size();
+  std::vector<double> d, v;
+  const auto st = flat(s_true);
+  std::vector<double> y0(p);
+  for (std::size_t b = 0; b < p; ++b) y0[b] = std::log(mean[b]);
+  band_deviation(y0.data(), mean.data(), st.data(), p, double(K), M, d, v);  // d = -offset here
+  const Eigen::MatrixXd v_true =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          v.data(), Eigen::Index(p), Eigen::Index(p)) +
+      2.0 * table;
+  const Eigen::MatrixXd lv = v_true.llt().matrixL();
+  Eigen::VectorXd e(p);
+  for (std::size_t b = 0; b < p; ++b) e(b) = z();
+  const Eigen::VectorXd dev_y = lv * e;
+  std::vector<double> y(p);
+  for (std::size_t b = 0; b < p; ++b) y[b] = std::log(mean[b]) - d[b] + dev_y(Eigen::Index(b));
+  return y;
+}
+
 }  // namespace
 
 TEST_CASE("D-31: without a table term it is D-26's F test, bit for bit") {
@@ -116,39 +164,17 @@ TEST_CASE("D-31: size on simulated measurements from other tables" * doctest::te
   std::vector<double> uni(2 * (p * (K - 1) + 3 * N + p));
   for (std::size_t trial = 0; trial < trials; ++trial) {
     sim(trial, uni.data(), uni.size());
-    // Box-Muller pairs over the trial's uniforms.
-    std::size_t k = 0;
-    auto z = [&]() {
-      const double a = uni[k], b = uni[k + 1];
-      k += 2;
-      return std::sqrt(-2.0 * std::log(a)) * std::cos(2.0 * M_PI * b);
-    };
+    BoxMuller z(uni);
     const Eigen::MatrixXd s_hat = testing::sample_covariance(ls, K - 1, z);
     Eigen::MatrixXd units(p, N);
     for (std::size_t i = 0; i < N; ++i) {
       Eigen::Vector3d e(z(), z(), z());
       units.col(i) = std::sqrt(double(N)) * (lt * e);  // the table is the mean of N such units
     }
-    const Eigen::VectorXd ubar = units.rowwise().mean();
-    const Eigen::MatrixXd dev = units.colwise() - ubar;
-    const Eigen::MatrixXd t_hat = dev * dev.transpose() / (double(N) * double(N - 1));  // the jackknife, D-30a
+    const Eigen::MatrixXd t_hat = jackknife(units);
     // The two tables' deviations and the measurement's and the ensemble's own scatter, in the
     // truth's V (D-26a with the true S).
-    std::vector<double> d, v;
-    const auto st = flat(s_true);
-    std::vector<double> y0(p);
-    for (std::size_t b = 0; b < p; ++b) y0[b] = std::log(mean[b]);
-    band_deviation(y0.data(), mean.data(), st.data(), p, double(K), M, d, v);  // d = -offset here
-    const Eigen::MatrixXd v_true =
-        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-            v.data(), Eigen::Index(p), Eigen::Index(p)) +
-        2.0 * t_true;
-    const Eigen::MatrixXd lv = v_true.llt().matrixL();
-    Eigen::VectorXd e(p);
-    for (std::size_t b = 0; b < p; ++b) e(b) = z();
-    const Eigen::VectorXd dev_y = lv * e;
-    std::vector<double> y(p);
-    for (std::size_t b = 0; b < p; ++b) y[b] = std::log(mean[b]) - d[b] + dev_y(Eigen::Index(b));
+    const std::vector<double> y = measurement(s_true, t_true, mean, K, M, z);
     const auto sh = flat(s_hat), th = flat(t_hat);
     const BandTestResult r = band_test_with_table(y.data(), mean.data(), sh.data(), p, K, M,
                                                   {th.data(), double(N - 1), 2.0}, philox(1000 + trial), draws);
@@ -173,37 +199,19 @@ TEST_CASE("D-31c: size with independent bands, against the rank-limited covarian
   Eigen::VectorXd sig(p);
   for (std::size_t b = 0; b < p; ++b) sig(b) = 0.05 * (1.0 + 0.5 * std::cos(double(b)));  // table variances
   const std::vector<double> mean(p, 1e-3);
+  const Eigen::MatrixXd t_true = sig.asDiagonal();
   const DrawUniforms sim = philox(4242);
   std::size_t rejected = 0, rejected_full = 0;
   std::vector<double> uni(2 * (p * (K - 1) + p * N + p));
   for (std::size_t trial = 0; trial < trials; ++trial) {
     sim(trial, uni.data(), uni.size());
-    std::size_t k = 0;
-    auto z = [&]() {
-      const double a = uni[k], b = uni[k + 1];
-      k += 2;
-      return std::sqrt(-2.0 * std::log(a)) * std::cos(2.0 * M_PI * b);
-    };
+    BoxMuller z(uni);
     const Eigen::MatrixXd s_hat = testing::sample_covariance(ls, K - 1, z);
     Eigen::MatrixXd units(p, N);
     for (std::size_t i = 0; i < N; ++i)
       for (std::size_t b = 0; b < p; ++b) units(b, i) = std::sqrt(double(N) * sig(b)) * z();
-    const Eigen::MatrixXd dev = units.colwise() - units.rowwise().mean();
-    const Eigen::MatrixXd t_hat = dev * dev.transpose() / (double(N) * double(N - 1));
-    std::vector<double> d, v;
-    const auto st = flat(s_true);
-    std::vector<double> y0(p);
-    for (std::size_t b = 0; b < p; ++b) y0[b] = std::log(mean[b]);
-    band_deviation(y0.data(), mean.data(), st.data(), p, double(K), M, d, v);
-    Eigen::MatrixXd v_true =
-        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(v.data(), p, p);
-    v_true.diagonal() += 2.0 * sig;
-    const Eigen::MatrixXd lv = v_true.llt().matrixL();
-    Eigen::VectorXd e(p);
-    for (std::size_t b = 0; b < p; ++b) e(b) = z();
-    const Eigen::VectorXd dev_y = lv * e;
-    std::vector<double> y(p);
-    for (std::size_t b = 0; b < p; ++b) y[b] = std::log(mean[b]) - d[b] + dev_y(Eigen::Index(b));
+    const Eigen::MatrixXd t_hat = jackknife(units);
+    const std::vector<double> y = measurement(s_true, t_true, mean, K, M, z);
     const auto sh = flat(s_hat), th = flat(t_hat);
     rejected += band_test_with_table(y.data(), mean.data(), sh.data(), p, K, M, {th.data(), double(N - 1), 2.0, true},
                                      philox(5000 + trial), draws)
@@ -253,25 +261,11 @@ TEST_CASE("D-31e: size with a common and an own table error, raw and shrunk" * d
       for (std::size_t b = 0; b < p; ++b)
         units(b, i) = std::sqrt(double(N)) * (common(b) * c + own(b) * z.next());  // the table: the mean of N
     }
-    const Eigen::MatrixXd dev = units.colwise() - units.rowwise().mean();
-    const Eigen::MatrixXd t_hat = dev * dev.transpose() / (double(N) * double(N - 1));
+    const Eigen::MatrixXd t_hat = jackknife(units);
     // units is p x N column-major: unit i's p bands are contiguous, as shrinkage_intensity reads them.
     const double lambda = shrinkage_intensity(units.data(), N, p);
     lambda_mean += lambda / trials;
-    std::vector<double> d, v;
-    const auto st = flat(s_true);
-    std::vector<double> y0(p);
-    for (std::size_t b = 0; b < p; ++b) y0[b] = std::log(mean[b]);
-    band_deviation(y0.data(), mean.data(), st.data(), p, double(K), M, d, v);
-    const Eigen::MatrixXd v_true =
-        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(v.data(), p, p) +
-        2.0 * t_true;
-    const Eigen::MatrixXd lv = v_true.llt().matrixL();
-    Eigen::VectorXd e(p);
-    for (std::size_t b = 0; b < p; ++b) e(b) = z.next();
-    const Eigen::VectorXd dev_y = lv * e;
-    std::vector<double> y(p);
-    for (std::size_t b = 0; b < p; ++b) y[b] = std::log(mean[b]) - d[b] + dev_y(Eigen::Index(b));
+    const std::vector<double> y = measurement(s_true, t_true, mean, K, M, [&] { return z.next(); });
     const auto sh = flat(s_hat), th = flat(t_hat);
     rejected_raw += band_test_with_table(y.data(), mean.data(), sh.data(), p, K, M, {th.data(), double(N - 1), 2.0},
                                          philox(7000 + trial), draws)

@@ -99,6 +99,24 @@ std::array<double, 2> scalar_harmonic(double h, bool rayleigh, double up, double
   rollspec::spectral::sincos_two_pi(up, t, c, s);
   return {a * c, a * s};
 }
+
+// The eight-lane fill of harmonics first .. h.size() - 2 of (h, up, ua), the buffer preset to -1: where it stopped
+// (after its last full step of eight), and the harmonics it wrote that `differ` from the scalar form's.
+struct EightLaneFill {
+  rollspec::spectral::ComplexBuffer spec;
+  std::size_t done = 0, mismatches = 0;
+  template <class Differ>
+  EightLaneFill(std::size_t first, const std::vector<double>& h, bool rayleigh, const std::vector<double>& up,
+                const std::vector<double>& ua, Differ&& differ)
+      : spec(h.size()) {
+    const rollspec::spectral::TabulatedMath& t = rollspec::spectral::tabulated_math();
+    for (std::size_t j = 0; j < h.size(); ++j) spec[j][0] = spec[j][1] = -1.0;
+    done = rollspec::spectral::fill_spectrum_avx512(first, h.size() - 1, h.data(), rayleigh, up.data(), ua.data(), t,
+                                                    spec.data());
+    for (std::size_t j = first; j < done; ++j)
+      mismatches += differ(spec[j], scalar_harmonic(h[j], rayleigh, up[j], ua[j], t));
+  }
+};
 }  // namespace
 
 TEST_CASE("the eight-lane (AVX-512F) spectrum fill gives the scalar form's bits") {
@@ -107,24 +125,18 @@ TEST_CASE("the eight-lane (AVX-512F) spectrum fill gives the scalar form's bits"
     MESSAGE("no AVX-512F on this CPU: eight-lane fill not checked");
     return;
   }
-  const TabulatedMath& t = tabulated_math();
   const std::size_t nh = 1001;
   std::mt19937_64 gen(11);
   std::uniform_real_distribution<double> u(1e-300, 1.0);
   std::vector<double> h(nh), up(nh), ua(nh);
   for (std::size_t j = 0; j < nh; ++j) h[j] = u(gen), up[j] = u(gen), ua[j] = u(gen);
   for (bool rayleigh : {true, false}) {
-    ComplexBuffer spec(nh);
-    for (std::size_t j = 0; j < nh; ++j) spec[j][0] = spec[j][1] = -1.0;
-    const std::size_t done = fill_spectrum_avx512(3, nh - 1, h.data(), rayleigh, up.data(), ua.data(), t, spec.data());
-    CHECK(done == 3 + (nh - 1 - 3) / 8 * 8);
-    std::size_t mismatches = 0;
-    for (std::size_t j = 3; j < done; ++j) {
-      const auto want = scalar_harmonic(h[j], rayleigh, up[j], ua[j], t);
-      mismatches += (spec[j][0] != want[0]) + (spec[j][1] != want[1]);
-    }
-    CHECK(mismatches == 0);
-    CHECK(spec[done][0] == -1.0);  // nothing written past the last full step
+    const EightLaneFill f(3, h, rayleigh, up, ua, [](const FftwComplex& got, const std::array<double, 2>& want) {
+      return std::size_t{got[0] != want[0]} + std::size_t{got[1] != want[1]};
+    });
+    CHECK(f.done == 3 + (nh - 1 - 3) / 8 * 8);
+    CHECK(f.mismatches == 0);
+    CHECK(f.spec[f.done][0] == -1.0);  // nothing written past the last full step
   }
 }
 
@@ -137,7 +149,6 @@ TEST_CASE("the eight-lane fill gives the scalar form's bits at phase ties, log-b
     MESSAGE("no AVX-512F on this CPU: eight-lane fill not checked");
     return;
   }
-  const TabulatedMath& t = tabulated_math();
   std::vector<double> up, ua;
   for (int k = 0; k <= 1024; ++k) {
     const double tie = (k + 0.5) / 1024.0, step = k / 1024.0;  // 1024 v + 1/2 an integer; a table point
@@ -162,14 +173,10 @@ TEST_CASE("the eight-lane fill gives the scalar form's bits at phase ties, log-b
   ua.resize(nh, 0.5);
   std::shuffle(ua.begin(), ua.end(), gen);  // every phase meets many amplitudes
   for (bool rayleigh : {true, false}) {
-    ComplexBuffer spec(nh);
-    const std::size_t done = fill_spectrum_avx512(1, nh - 1, h.data(), rayleigh, up.data(), ua.data(), t, spec.data());
-    CHECK(done == 1 + (nh - 2) / 8 * 8);
-    std::size_t mismatches = 0;
-    for (std::size_t j = 1; j < done; ++j) {
-      const auto want = scalar_harmonic(h[j], rayleigh, up[j], ua[j], t);
-      mismatches += std::memcmp(spec[j], want.data(), sizeof(double) * 2) != 0;
-    }
-    CHECK(mismatches == 0);
+    const EightLaneFill f(1, h, rayleigh, up, ua, [](const FftwComplex& got, const std::array<double, 2>& want) {
+      return std::size_t{std::memcmp(got, want.data(), sizeof(double) * 2) != 0};
+    });
+    CHECK(f.done == 1 + (nh - 2) / 8 * 8);
+    CHECK(f.mismatches == 0);
   }
 }

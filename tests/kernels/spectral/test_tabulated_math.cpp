@@ -60,6 +60,25 @@ __attribute__((target("avx2"))) void four_lanes(const double* v, const double* u
   _mm256_storeu_pd(l, neg_log_open(_mm256_loadu_pd(u), t));
 }
 #endif
+
+// Lanes of the W-lane forms `lanes(v, u, c, s, l)` (phases v, amplitudes u into c, s, -ln u) over v in steps of W,
+// the amplitudes v itself where it lies in (0, 1), else 1/2, that differ from the scalar forms' bits.
+template <std::size_t W, class Lanes>
+std::size_t lane_mismatches(const std::vector<double>& v, Lanes&& lanes) {
+  const auto& t = tabulated_math();
+  std::size_t mismatches = 0;
+  for (std::size_t i = 0; i + W - 1 < v.size(); i += W) {
+    double c[W], s[W], l[W], ul[W];
+    for (std::size_t k = 0; k < W; ++k) ul[k] = v[i + k] > 0.0 && v[i + k] < 1.0 ? v[i + k] : 0.5;
+    lanes(&v[i], ul, c, s, l);
+    for (std::size_t k = 0; k < W; ++k) {
+      double cs, ss;
+      sincos_two_pi(v[i + k], t, cs, ss);
+      mismatches += (c[k] != cs) + (s[k] != ss) + (l[k] != neg_log_open(ul[k], t));
+    }
+  }
+  return mismatches;
+}
 }  // namespace
 
 TEST_CASE("D-24: -ln u from the table is within 2 ulp of long-double libm on (0, 1)") {
@@ -115,37 +134,17 @@ TEST_CASE("D-25: cos and sin of 2 pi v from the table are within 1 ulp of 1 of l
 #endif
 #if defined(ROLLSPEC_HAVE_AVX2_PATH)
   if (__builtin_cpu_supports("avx2")) {
-    std::size_t mismatches = 0;
-    for (std::size_t i = 0; i + 3 < v.size(); i += 4) {
-      double c[4], s[4], l[4], ul[4];
-      for (std::size_t k = 0; k < 4; ++k) ul[k] = v[i + k] > 0.0 && v[i + k] < 1.0 ? v[i + k] : 0.5;
-      four_lanes(&v[i], ul, c, s, l);
-      for (std::size_t k = 0; k < 4; ++k) {
-        double cs, ss;
-        sincos_two_pi(v[i + k], t, cs, ss);
-        mismatches += (c[k] != cs) + (s[k] != ss) + (l[k] != neg_log_open(ul[k], t));
-      }
-    }
-    CHECK(mismatches == 0);
+    CHECK(lane_mismatches<4>(v, four_lanes) == 0);
   } else {
     MESSAGE("no AVX2 on this CPU: four-lane forms not checked");
   }
 #endif
   // The eight-lane forms (AVX-512F) too; their source is compiled without contraction into FMA.
   if (rollspec::spectral::cpu_has_avx512f()) {
-    std::size_t mismatches = 0;
-    for (std::size_t i = 0; i + 7 < v.size(); i += 8) {
-      double c[8], s[8], l[8], ul[8];
-      for (std::size_t k = 0; k < 8; ++k) ul[k] = v[i + k] > 0.0 && v[i + k] < 1.0 ? v[i + k] : 0.5;
-      rollspec::spectral::sincos_two_pi_x8(&v[i], t, c, s);
-      rollspec::spectral::neg_log_open_x8(ul, t, l);
-      for (std::size_t k = 0; k < 8; ++k) {
-        double cs, ss;
-        sincos_two_pi(v[i + k], t, cs, ss);
-        mismatches += (c[k] != cs) + (s[k] != ss) + (l[k] != neg_log_open(ul[k], t));
-      }
-    }
-    CHECK(mismatches == 0);
+    CHECK(lane_mismatches<8>(v, [&](const double* x, const double* u, double* c, double* s, double* l) {
+            rollspec::spectral::sincos_two_pi_x8(x, t, c, s);
+            rollspec::spectral::neg_log_open_x8(u, t, l);
+          }) == 0);
   } else {
     MESSAGE("no AVX-512F on this CPU: eight-lane forms not checked");
   }

@@ -10,15 +10,13 @@
 #include "kernels/integrators/exact_oscillator_step.hpp"
 #include "kernels/spectral/welch.hpp"
 #include "kernels/spectral/welch_expectation.hpp"
+#include "welch_config.hpp"
 
 using namespace rollspec::spectral;
+using rollspec::spectral::testing::welch_config;
 
 TEST_CASE("welch_expectation equals its direct evaluation and keeps a flat PSD flat") {
-  WelchConfig cfg;
-  cfg.sample_rate = 64.0;
-  cfg.segment = 32;
-  cfg.overlap = 16;
-  WelchPlan plan(cfg);
+  const WelchPlan plan(welch_config(64.0, 32, 16));
   const std::size_t refine = 4, nfine = refine * (plan.n_freq() - 1) + 1;
   std::vector<double> peak(nfine);
   for (std::size_t j = 0; j < nfine; ++j) {
@@ -36,11 +34,8 @@ TEST_CASE("welch_expectation equals its direct evaluation and keeps a flat PSD f
 TEST_CASE("Welch estimates of a lightly damped oscillator converge to the expectation, not to S") {
   // White force through q'' + 2 zeta w q' + w^2 q = f; S_q = S_f / |w^2 - W^2 + 2i zeta w W|^2.
   const double fs = 256.0, fn = 20.0, zeta = 0.004, sf = 1.0;
-  WelchConfig cfg;
-  cfg.sample_rate = fs;
-  cfg.segment = 256;  // 1 Hz bins, resonance half-power width 0.16 Hz: unresolved
-  cfg.overlap = 128;
-  WelchPlan plan(cfg);
+  const WelchConfig cfg = welch_config(fs, 256, 128);  // 1 Hz bins, resonance half-power width 0.16 Hz: unresolved
+  const WelchPlan plan(cfg);
   std::mt19937_64 gen(11);
   std::normal_distribution<double> normal(0.0, std::sqrt(sf * fs / 2.0));
   const std::size_t n = 1 << 21;
@@ -74,11 +69,7 @@ TEST_CASE("Welch estimates of a lightly damped oscillator converge to the expect
 }
 
 TEST_CASE("welch_expectation beyond f_s/2 is the expectation with aliasing (the folded PSD)") {
-  WelchConfig cfg;
-  cfg.sample_rate = 64.0;
-  cfg.segment = 32;
-  cfg.overlap = 16;
-  WelchPlan plan(cfg);
+  const WelchPlan plan(welch_config(64.0, 32, 16));
   const std::size_t refine = 4, half = refine * (plan.n_freq() - 1);
   std::vector<double> wide(3 * half + 1), folded(half + 1, 0.0);
   for (std::size_t j = 0; j < wide.size(); ++j) {
@@ -100,11 +91,7 @@ TEST_CASE("welch_expectation beyond f_s/2 is the expectation with aliasing (the 
 }
 
 TEST_CASE("Welch time weights sum to 1 and taper at the ends; block dof reduces to D-16") {
-  WelchConfig cfg;
-  cfg.sample_rate = 100.0;
-  cfg.segment = 64;
-  cfg.overlap = 32;
-  WelchPlan plan(cfg);
+  const WelchPlan plan(welch_config(100.0, 64, 32));
   const std::size_t n = 64 * 40 + 17;  // 17 samples after the last segment
   const auto tw = welch_time_weights(plan, n);
   double sum = 0.0;
@@ -144,11 +131,7 @@ TEST_CASE("Welch time weights sum to 1 and taper at the ends; block dof reduces 
 TEST_CASE("welch_expectation by FFT holds a 1e12 dynamic range and any segment length, aliasing included") {
   // A resonance 1e12 above a steep floor, a segment that is no power of two, S beyond f_s/2: the
   // FFT product must match the term-by-term integral where the expectation is small, too.
-  WelchConfig cfg;
-  cfg.sample_rate = 60.0;
-  cfg.segment = 30;
-  cfg.overlap = 15;
-  WelchPlan plan(cfg);
+  const WelchPlan plan(welch_config(60.0, 30, 15));
   const std::size_t refine = 6, half = refine * (plan.n_freq() - 1);
   std::vector<double> s(4 * half + 1);
   for (std::size_t j = 0; j < s.size(); ++j) {

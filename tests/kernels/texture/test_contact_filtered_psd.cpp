@@ -9,6 +9,7 @@
 #include "kernels/texture/contact_filtered_psd.hpp"
 #include "kernels/texture/isotropic_psd.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
+#include "texture_test_helpers.hpp"
 
 using namespace rollspec::texture;
 
@@ -77,9 +78,7 @@ TEST_CASE("uniform corrugation: the 2D weight at (k, 0) is the 1D patch filter B
 }
 
 TEST_CASE("a -> 0: Eq. 38 is the forward projection Eq. 18 and returns the line PSD") {
-  const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 2e3, 1e5, RmsTarget::height, 1e-6});
-  const Psd g = model.to_psd();
-  const IsotropicPsd iso(g, 10.0, 1e9, 200);
+  const auto& [model, g, iso] = texture_test::AbelPair{};
   const IsotropicSpectrum c = isotropic_spectrum(iso, g.breakpoints);
   double worst_forward = 0.0, worst_line = 0.0;
   for (double k = 20.0; k < 0.97e5; k *= 1.13) {

@@ -6,6 +6,7 @@
 
 #include "kernels/texture/isotropic_psd.hpp"
 #include "kernels/texture/self_affine_psd.hpp"
+#include "texture_test_helpers.hpp"
 
 using namespace rollspec::texture;
 
@@ -28,9 +29,7 @@ TEST_CASE("inverse Abel of a pure power law matches the closed form") {
 
 TEST_CASE("Abel pair: the forward integral of C_iso returns the line PSD") {
   // Self-affine with plateau, kink at k_r and a hard cut-off at k_s (the jump term of Eq. 20).
-  const SelfAffinePsd model(SelfAffineSpec{0.8, 0.0, 2e3, 1e5, RmsTarget::height, 1e-6});
-  const Psd g = model.to_psd();
-  const IsotropicPsd iso(g, 10.0, 1e9, 200);
+  const auto& [model, g, iso] = texture_test::AbelPair{};
   CHECK(iso.end_jump() == doctest::Approx(model(1e5)));
   CHECK(iso.clamped_fraction() == 0.0);
   double worst = 0.0, worst_q = 0.0;

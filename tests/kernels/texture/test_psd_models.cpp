@@ -67,12 +67,7 @@ TEST_CASE("tabulated PSD refuses bad tables with messages that name index and va
 }
 
 TEST_CASE("self-affine PSD: C from the exact integrals (Eq. 7, 8) matches a fine quadrature") {
-  SelfAffineSpec s;
-  s.hurst = 0.7;
-  s.k_long = 50.0;
-  s.k_rolloff = 300.0;
-  s.k_short = 3e5;
-  s.rms = 1.5e-6;
+  SelfAffineSpec s{0.7, 50.0, 300.0, 3e5, RmsTarget::height, 1.5e-6};
   const SelfAffinePsd h(s);
   CHECK(h.rms_height() == doctest::Approx(1.5e-6).epsilon(1e-14));
   const Psd p = h.to_psd();

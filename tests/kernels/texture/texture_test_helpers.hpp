@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers of the texture tests: U(0,1) draws (a local mt19937_64 stands in for the
-// engine's Philox streams, tests only), exact-harmonic periodograms and third-octave band means.
+// engine's Philox streams, tests only), exact-harmonic periodograms, third-octave band means and the
+// line PSD the Abel-pair tests project.
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -8,6 +9,8 @@
 
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "kernels/spectral/welch.hpp"
+#include "kernels/texture/isotropic_psd.hpp"
+#include "kernels/texture/self_affine_psd.hpp"
 
 namespace texture_test {
 
@@ -57,5 +60,14 @@ inline std::vector<BandCompare> compare_bands(const std::vector<double>& estimat
   }
   return out;
 }
+
+// Self-affine with plateau, kink at k_r = 2e3 rad/m and a hard cut-off at k_s = 1e5 rad/m (the jump term of
+// Eq. 20), 1 um rms: the line PSD G, and C_iso from it (Eq. 19) at 200 points per decade over [10, 1e9] rad/m.
+struct AbelPair {
+  rollspec::texture::SelfAffinePsd model{
+      rollspec::texture::SelfAffineSpec{0.8, 0.0, 2e3, 1e5, rollspec::texture::RmsTarget::height, 1e-6}};
+  rollspec::texture::Psd g = model.to_psd();
+  rollspec::texture::IsotropicPsd iso{g, 10.0, 1e9, 200};
+};
 
 }  // namespace texture_test
