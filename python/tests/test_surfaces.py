@@ -84,10 +84,16 @@ def test_rayleigh_lines_average_to_the_requested_psd():
     ],
 )
 def test_bad_input_is_a_value_error_naming_it(kwargs, message):
-    args = {"wavenumber": K, "psd": G, "spacing": 1e-6, "samples": 64, "seed": 1, "extension": "zero"}
+    assert_value_error(surfaces.line, "samples", 64, kwargs, message)
+
+
+def assert_value_error(make, count_name, count, kwargs, message):
+    """make(wavenumber, psd, spacing, count, **rest) with `kwargs` over good arguments raises a ValueError whose
+    one-line message holds `message`."""
+    args = {"wavenumber": K, "psd": G, "spacing": 1e-6, count_name: count, "seed": 1, "extension": "zero"}
     args.update(kwargs)
     with pytest.raises(ValueError) as e:
-        surfaces.line(args.pop("wavenumber"), args.pop("psd"), args.pop("spacing"), args.pop("samples"), **args)
+        make(args.pop("wavenumber"), args.pop("psd"), args.pop("spacing"), args.pop(count_name), **args)
     assert message in str(e.value)
     assert "\n" not in str(e.value)
 
@@ -176,9 +182,4 @@ def test_seed_surfaces_have_the_requested_rms_and_correlation_lengths():
     ],
 )
 def test_bad_surface_input_is_a_value_error_naming_it(kwargs, message):
-    args = {"wavenumber": K, "psd": G, "spacing": 1e-6, "nx": 32, "seed": 1, "extension": "zero"}
-    args.update(kwargs)
-    with pytest.raises(ValueError) as e:
-        surfaces.isotropic(args.pop("wavenumber"), args.pop("psd"), args.pop("spacing"), args.pop("nx"), **args)
-    assert message in str(e.value)
-    assert "\n" not in str(e.value)
+    assert_value_error(surfaces.isotropic, "nx", 32, kwargs, message)

@@ -25,6 +25,7 @@
 #include "src/stiffness/table_location.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/texture/texture_keys.hpp"
+#include "src/stiffness/strip_solves.hpp"
 
 namespace fs = std::filesystem;
 
@@ -244,9 +245,7 @@ BlockedForceTable build_blocked_force(const TableStudy& ts, const BlockedForceGe
     ts.blocked_force.origin(ts.blocked_force.window)
         .refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
   }
-  if (!path.converged)
-    throw data_error("blocked force: the path search did not converge (largest error " +
-                     io::exact_text(path.max_error) + "); raise [stiffness] max_iterations or tolerance");
+  require_converged(path.converged, path.max_error, "blocked force: the path search");
   BlockedForceTable t;
   t.position = path.position;
   t.force = path.force;

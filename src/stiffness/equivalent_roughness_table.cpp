@@ -22,6 +22,7 @@
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/io/number_text.hpp"
+#include "src/stiffness/strip_solves.hpp"
 
 namespace rollspec::stiffness {
 
@@ -280,9 +281,7 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
       ts.blocked_force.origin(ts.blocked_force.window)
           .refuse(std::string(e.what()) + "; widen the window or the strip ([surface] ny)");
     }
-    if (!r.converged)
-      throw data_error("equivalent roughness: strip " + std::to_string(si) + " did not converge (largest error " +
-                       io::exact_text(r.max_error) + "); raise [stiffness] max_iterations or tolerance");
+    require_converged(r.converged, r.max_error, "equivalent roughness: strip " + std::to_string(si));
     t.smooth_approach = r.smooth_approach;
     t.smooth_stiffness = r.smooth_stiffness;
     t.height.insert(t.height.end(), r.height.begin(), r.height.end());

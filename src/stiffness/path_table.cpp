@@ -22,6 +22,7 @@
 #include "src/stiffness/table_text.hpp"
 #include "src/texture/texture_keys.hpp"
 #include "src/io/number_text.hpp"
+#include "src/stiffness/strip_solves.hpp"
 
 namespace rollspec::stiffness {
 
@@ -193,9 +194,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
     ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
   }
   progress.finish();  // the bar's "took" line (a log's only line of it), short of its total when B43a adds less
-  if (!t.converged)
-    throw data_error("path table: a contact solve did not converge (largest error " + io::exact_text(t.max_error) +
-                     "); raise [stiffness] max_iterations or tolerance");
+  require_converged(t.converged, t.max_error, "path table: a contact solve");
   if (!quiet)
     std::fprintf(
         stderr,
@@ -203,7 +202,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
         ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   PathTableData d;
-  for (double x : t.position) d.position.push_back(x - t.position.front());
+  d.position = from_first(t.position);
   d.approach = t.approach;
   d.first_contact = t.first_contact;
   d.force = t.force;

@@ -14,6 +14,7 @@
 #include "src/stiffness/study_strip.hpp"
 #include "src/stiffness/table_text.hpp"
 #include "src/io/number_text.hpp"
+#include "src/stiffness/strip_solves.hpp"
 
 namespace rollspec::stiffness {
 
@@ -87,15 +88,13 @@ EquivalentRoughnessTable build_strip_equivalent_roughness(const TableStudy& ts, 
   } catch (const std::invalid_argument& e) {
     ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
   }
-  if (!r.converged)
-    throw data_error("equivalent roughness: strip 0 did not converge (largest error " + io::exact_text(r.max_error) +
-                     "); raise [stiffness] max_iterations or tolerance");
+  require_converged(r.converged, r.max_error, "equivalent roughness: strip 0");
   if (!quiet)
     std::fprintf(stderr, "%sequivalent roughness: strip 0, %d CG iterations, %.3g s wall\n",
                  ensemble::rank_prefix().c_str(), r.iterations,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   EquivalentRoughnessTable t;
-  for (double x : r.position) t.position.push_back(x - r.position.front());
+  t.position = from_first(r.position);
   t.height = r.height;
   t.stiffness = r.stiffness;
   t.smooth_approach = r.smooth_approach;

@@ -54,14 +54,7 @@ double nominal_step(double fitted, std::size_t n, double half_unit) {
 std::string percent(double share) { return io::four_digits(100.0 * share) + " %"; }
 }  // namespace
 
-texture::Profile read_profile(const std::string& path) {
-  const io::CsvTable t = io::read_csv(path);
-  const bool micrometres = t.columns.size() == 2 && t.columns[1] == "height_um";
-  if (t.columns.size() != 2 || t.columns[0] != "position_m" || (t.columns[1] != "height_m" && !micrometres))
-    throw data_error(path + ":1: a profile has the columns position_m,height_m (or position_m,height_um)");
-  if (t.rows() < 8) throw data_error(path + ": " + std::to_string(t.rows()) + " samples; a profile needs at least 8");
-  // The positions as printed: a stylus export rounds them (0.156 um steps to 0.1 um), which the grid
-  // rule allows; the profile takes the grid they lie on (the least-squares step when rounded).
+io::GridNames profile_position_names() {
   io::GridNames names;
   names.column = "column 'position_m'";
   names.values = "positions";
@@ -73,6 +66,18 @@ texture::Profile read_profile(const std::string& path) {
   names.allowed = "strictly increasing, uniformly spaced positions (each within 0.1 step of x_0 + i*dx)";
   names.uneven = "the spacing is not constant";
   names.text = [](double v) { return io::length_text(v); };
+  return names;
+}
+
+texture::Profile read_profile(const std::string& path) {
+  const io::CsvTable t = io::read_csv(path);
+  const bool micrometres = t.columns.size() == 2 && t.columns[1] == "height_um";
+  if (t.columns.size() != 2 || t.columns[0] != "position_m" || (t.columns[1] != "height_m" && !micrometres))
+    throw data_error(path + ":1: a profile has the columns position_m,height_m (or position_m,height_um)");
+  if (t.rows() < 8) throw data_error(path + ": " + std::to_string(t.rows()) + " samples; a profile needs at least 8");
+  // The positions as printed: a stylus export rounds them (0.156 um steps to 0.1 um), which the grid
+  // rule allows; the profile takes the grid they lie on (the least-squares step when rounded).
+  const io::GridNames names = profile_position_names();
   const std::vector<double>& x = t.values[0];
   bool fitted = false;
   double dx = io::uniform_grid_step(

@@ -9,6 +9,7 @@
 
 #include "kernels/texture/profile_psd.hpp"
 #include "kernels/texture/psd.hpp"
+#include "src/io/uniform_grid.hpp"
 #include "src/study/sections/surface_section.hpp"
 #include "src/study/sections/texture_section.hpp"
 
@@ -22,6 +23,9 @@ namespace rollspec::texture_io {
 // the rounding of their printed digits come back regularised to it; others are refused naming the
 // line (data error, exit 65).
 texture::Profile read_profile(const std::string& path);
+
+// How read_profile's messages name a profile's positions under the grid rule (io/uniform_grid.hpp).
+io::GridNames profile_position_names();
 
 // Eq. 15-17 and 44 of the study's scans (one or more).
 texture::EstimatedPsd profile_estimate(const study::TextureSection& s);

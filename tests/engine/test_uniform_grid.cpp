@@ -12,24 +12,13 @@
 #include "src/io/number_text.hpp"
 #include "src/io/time_column.hpp"
 #include "src/io/uniform_grid.hpp"
+#include "src/texture/profile_source.hpp"
 
 using namespace rollspec;
 
 namespace {
-io::GridNames position_names() {
-  io::GridNames g;
-  g.column = "column 'position_m'";
-  g.values = "positions";
-  g.previous = "previous position";
-  g.interval = "step";
-  g.record = "profile";
-  g.grid = "x_0 + i*dx";
-  g.step = "dx";
-  g.allowed = "uniformly spaced positions";
-  g.uneven = "the spacing is not constant";
-  g.text = [](double v) { return io::length_text(v); };
-  return g;
-}
+// The profile reader's own names (its messages are what the grid rule is checked by).
+io::GridNames position_names() { return texture_io::profile_position_names(); }
 
 // 9600 positions of 0.15625 um printed to 0.1 um (a Dektak export): 7 decimals in metres.
 std::vector<double> dektak_positions(double shift_from = 1e9, std::size_t at = 0) {
