@@ -105,6 +105,31 @@ def scratch_studies(prefix):
         shutil.rmtree(work, ignore_errors=True)
 
 
+@contextlib.contextmanager
+def study_run(binary, study, settings, threads, prefix):
+    """`binary run` of a copy of `study` with --set SETTINGS, in an empty folder (every table built anew), on
+    `threads` OpenMP threads. Yields (the result's path, the run's stderr, its wall seconds, the CPU seconds
+    it used); the folder is removed afterwards. A failed run ends the script: exit 1, the run's last line."""
+    import resource
+    import time
+    work = Path(tempfile.mkdtemp(prefix=prefix))
+    try:
+        shutil.copy(study, work / Path(study).name)
+        args = [a for kv in settings for a in ("--set", kv)]
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        t0 = time.perf_counter()
+        r = subprocess.run([binary, "run", Path(study).name, "--out", "r.h5", *args], cwd=work, capture_output=True,
+                           text=True, env=dict(os.environ, OMP_NUM_THREADS=str(threads)))
+        wall = time.perf_counter() - t0
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        if r.returncode != 0:
+            fail(f"{binary} run {' '.join(settings)} failed ({r.returncode}): "
+                 f"{(r.stderr.strip().splitlines() or ['no message'])[-1]}", 1)
+        yield work / "r.h5", r.stderr, wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
 def build_version(binary):
     """The binary's own `rollspec version` line (kept in the record, not printed)."""
     r = subprocess.run([str(binary), "version"], capture_output=True, text=True)

@@ -18,15 +18,10 @@ rig's, a rougher one (rms x 2) and one no test uses (H = 0.7, roll-off 2 mm, rms
   - the estimate the result carries (/contact/blocked_force_band_error_db, @blocked_force_k0_error) over
     the measured error: rms over the bands for F0, |error| for k0.
 """
-import os
 import pathlib
 import re
-import resource
-import shutil
 import statistics
-import subprocess
 import sys
-import tempfile
 import time
 
 import h5py
@@ -37,7 +32,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in bench/
 sys.path.insert(0, str(ROOT / "bench"))
 sys.path.insert(0, str(ROOT / "python-post"))
 import bench_record  # noqa: E402
-from rollspec_post.script_main import fail, script_main  # noqa: E402  (one line per failure, no traceback)
+from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
 
 STUDY = ROOT / "studies" / "seed002-rig-1ms.ini"
 COMMON = ["contact.blocked_force=solver", "study.realisations=25"]
@@ -51,23 +46,11 @@ TABLE_LINE = re.compile(r"blocked force: \d+ paths .*?, ([\d.]+) s wall, ([\d.]+
 
 
 def run_once(binary, settings, threads):
-    work = pathlib.Path(tempfile.mkdtemp(prefix="bench-answer-tables-"))
-    try:
-        shutil.copy(STUDY, work / "rig.ini")
-        args = [a for kv in settings for a in ("--set", kv)]
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        t0 = time.perf_counter()
-        r = subprocess.run([binary, "run", "rig.ini", "--out", "r.h5", *args], cwd=work, capture_output=True,
-                           text=True, env=dict(os.environ, OMP_NUM_THREADS=str(threads)))
-        wall = time.perf_counter() - t0
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        if r.returncode != 0:
-            fail(f"{binary} run {' '.join(settings)} failed ({r.returncode}): "
-                 f"{(r.stderr.strip().splitlines() or ['no message'])[-1]}", 1)
-        m = TABLE_LINE.search(r.stderr)
-        with h5py.File(work / "r.h5") as f:
+    with bench_record.study_run(binary, STUDY, settings, threads, "bench-answer-tables-") as (path, stderr, wall, cpu):
+        m = TABLE_LINE.search(stderr)
+        with h5py.File(path) as f:
             c, b = f["/contact"], f["/bands"]
-            out = {"wall": wall, "cpu": (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime),
+            out = {"wall": wall, "cpu": cpu,
                    "table_wall": float(m.group(1)), "table_cpu": float(m.group(2)),
                    "k0": float(np.ravel(c.attrs["k0"])[0]), "speed": float(np.ravel(f["/ball"].attrs["speed"])[0]),
                    "wavenumber": c["blocked_force_wavenumber"][:], "f0_psd": c["blocked_force_psd"][:],
@@ -79,8 +62,6 @@ def run_once(binary, settings, threads):
                    if "blocked_force_k0_error" in c.attrs else float("nan"),
                    "warning": "blocked_force_error_warning" in c.attrs}
         return out
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
 
 
 def f0_band_db(run, centre):

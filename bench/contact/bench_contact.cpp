@@ -399,7 +399,7 @@ void bench_path_table() {
       n_window, wall, wall / double(t.solves), t.iterations, t.approach.size(), count, n_window, int(t.converged),
       t.approach.front() * 1e6, t.approach.back() * 1e6);
   std::fflush(stdout);
-  const rollspec::beam::PathContactTable table({t.position, t.approach, t.first_contact, t.force});
+  const rollspec::beam::PathContactTable table({t.position, t.approach, t.first_contact, t.force, {}});
   double worst_d = 0.0, worst_x = 0.0, sum_d = 0.0, sum_x = 0.0;
   int n_d = 0, n_x = 0;
   for (std::size_t j = 0; j + 1 < t.approach.size(); ++j)

@@ -17,13 +17,17 @@ PathContactTable::PathContactTable(PathContactData data) : d_(std::move(data)) {
   const std::size_t nk = d_.position.size(), nj = d_.approach.size();
   if (nk == 0 || nj == 0) fail("no positions or approaches");
   if (d_.first_contact.size() != nk || d_.force.size() != nj * nk) fail("sizes do not match");
+  if (!d_.rows.empty() && d_.rows.size() != nk) fail("rows: one count per position");
   for (std::size_t k = 1; k < nk; ++k)
     if (!(d_.position[k] > d_.position[k - 1])) fail("positions must increase");
   for (std::size_t j = 1; j < nj; ++j)
     if (!(d_.approach[j] > d_.approach[j - 1])) fail("approaches must increase");
+  if (!d_.rows.empty() && !(d_.approach[0] > 0.0)) fail("ladder offsets must be > 0");
   for (std::size_t k = 0; k < nk; ++k) {
     if (!std::isfinite(d_.first_contact[k])) fail("first contact must be finite");
-    for (std::size_t j = 0; j < nj; ++j) {
+    const std::size_t rows = d_.rows.empty() ? nj : d_.rows[k];
+    if (rows < 1 || rows > nj) fail("rows: between 1 and the number of approaches at every position");
+    for (std::size_t j = 0; j < rows; ++j) {
       const double p = d_.force[j * nk + k];
       if (!(p >= 0.0) || !std::isfinite(p)) fail("forces must be finite, >= 0");
       if (j > 0 && p < d_.force[(j - 1) * nk + k]) fail("forces must be non-decreasing in the approach");
@@ -33,28 +37,36 @@ PathContactTable::PathContactTable(PathContactData data) : d_(std::move(data)) {
   for (std::size_t i = 0; i < q_.size(); ++i) q_[i] = std::cbrt(d_.force[i] * d_.force[i]);  // Q = P^{2/3}
 }
 
+double PathContactTable::top_approach(std::size_t k) const {
+  if (d_.rows.empty()) return d_.approach.back();
+  return d_.first_contact[k] + d_.approach[d_.rows[k] - 1];
+}
+
 void PathContactTable::at_position(std::size_t k, double delta, double& force, double& stiffness) const {
   force = stiffness = 0.0;
   const double dc = d_.first_contact[k];
   if (!(delta > dc)) return;
-  const std::size_t nk = d_.position.size(), nj = d_.approach.size();
+  const std::size_t nk = d_.position.size();
+  const bool ladder = !d_.rows.empty();  // B43b: node j at δ_c + s_j
+  const std::size_t nj = ladder ? d_.rows[k] : d_.approach.size();
+  const double origin = ladder ? dc : 0.0;
+  const auto begin = d_.approach.begin(), end = begin + static_cast<std::ptrdiff_t>(nj);
   // Nodes (B44): (δ_c, 0) and (δ_j, Q_j) for δ_j > δ_c. Find the segment [a, b] holding δ, or the
   // last one (continued beyond the last approach).
-  const auto first = std::upper_bound(d_.approach.begin(), d_.approach.end(), dc);
-  const std::size_t j0 = static_cast<std::size_t>(first - d_.approach.begin());  // first node above δ_c
-  if (j0 == nj) return;  // no tabulated approach above first contact: nothing known, no force
-  const auto it = std::upper_bound(d_.approach.begin() + static_cast<std::ptrdiff_t>(j0), d_.approach.end(), delta);
-  std::size_t jb = static_cast<std::size_t>(it - d_.approach.begin());  // first node above δ
+  const std::size_t j0 = ladder ? 0 : static_cast<std::size_t>(std::upper_bound(begin, end, dc) - begin);
+  if (j0 == nj) return;                       // no tabulated approach above first contact: nothing known, no force
+  std::size_t jb = static_cast<std::size_t>(  // first node above δ
+      std::upper_bound(begin + static_cast<std::ptrdiff_t>(j0), end, delta - origin) - begin);
   if (jb == nj) jb = nj - 1;
   double da, qa;
   if (jb == j0) {
     da = dc;
     qa = 0.0;
   } else {
-    da = d_.approach[jb - 1];
+    da = origin + d_.approach[jb - 1];
     qa = q_[(jb - 1) * nk + k];
   }
-  const double db = d_.approach[jb], qb = q_[jb * nk + k];
+  const double db = origin + d_.approach[jb], qb = q_[jb * nk + k];
   const double slope = (qb - qa) / (db - da);
   const double q = qa + (delta - da) * slope;
   if (!(q > 0.0)) return;
@@ -101,7 +113,10 @@ double PathContactTable::first_contact(double xi) const {
 
 double PathContactTable::static_approach(double load, double xi) const {
   if (!(load > 0.0)) return first_contact(xi);
-  double lo = first_contact(xi), hi = d_.approach.back();
+  std::size_t at;
+  double t;
+  locate(xi, at, t);
+  double lo = first_contact(xi), hi = std::max(top_approach(at), t > 0.0 ? top_approach(at + 1) : -HUGE_VAL);
   double p, k;
   evaluate(hi, xi, p, k);
   for (int i = 0; p < load; ++i) {  // beyond the table: the continued last segment grows without bound
@@ -114,6 +129,20 @@ double PathContactTable::static_approach(double load, double xi) const {
   return bracketed_newton(
       lo, hi, load, [&](double x, double& px, double& kx) { evaluate(x, xi, px, kx); },
       [first](double, double top) { return std::fabs(top - first); });
+}
+
+PathContactData thinned_rows(const PathContactData& d, std::size_t every) {
+  if (every < 1) throw std::invalid_argument("thinned_rows: every must be >= 1");
+  const std::size_t nk = d.position.size(), nj = d.approach.size();
+  if (nj / every < 1) throw std::invalid_argument("thinned_rows: fewer approaches than every");
+  PathContactData t{d.position, {}, d.first_contact, {}, {}};
+  for (std::size_t j = every - 1; j < nj; j += every) {
+    t.approach.push_back(d.approach[j]);
+    t.force.insert(t.force.end(), d.force.begin() + static_cast<std::ptrdiff_t>(j * nk),
+                   d.force.begin() + static_cast<std::ptrdiff_t>((j + 1) * nk));
+  }
+  for (std::size_t r : d.rows) t.rows.push_back(r / every);  // a position with fewer rows than every: refused
+  return t;
 }
 
 double path_table_static_approach(const PathContactTable& table, double load) {

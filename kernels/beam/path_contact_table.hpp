@@ -2,7 +2,8 @@
 // P(δ, ξ) of one rough strip, interpolated (README B42–B46; the table is built by
 // kernels/contact/path_table.hpp): Q = P^{2/3} linear in δ between δ_c(ξ_k) and the tabulated
 // approaches above it, the last segment continued beyond them (B44); P linear in ξ between
-// positions, the end positions held outside (B45).
+// positions, the end positions held outside (B45). The approaches are either one set from the
+// plane (B43) or each position's own ladder above its first contact (B43b).
 #include <cstddef>
 #include <vector>
 
@@ -13,6 +14,10 @@ struct PathContactData {
   std::vector<double> approach;       // δ_j (m), J ≥ 1 values, increasing
   std::vector<double> first_contact;  // δ_c(ξ_k) (m), N values
   std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k], non-decreasing in j, ≥ 0
+  // B43b: approach[j] is the offset s_j above δ_c(ξ_k), and position k holds rows[k] rows (the
+  // force above them is not read). Empty: the approaches are from the plane, every row at every
+  // position (B43).
+  std::vector<std::size_t> rows;
 };
 
 class PathContactTable {
@@ -35,11 +40,18 @@ class PathContactTable {
   void at_position(std::size_t k, double delta, double& force, double& stiffness) const;
 
  private:
+  // The largest tabulated approach at position k.
+  double top_approach(std::size_t k) const;
   // The position interval of ξ: k and weight t of k + 1 (t = 0 at the ends).
   void locate(double xi, std::size_t& k, double& t) const;
   PathContactData d_;
   std::vector<double> q_;  // P^{2/3}
 };
+
+// The same table on every `every`-th approach row (rows every−1, 2·every−1, … of B43 or of each
+// position's B43b ladder, each position keeping ⌊J_k / every⌋): the node spacing times `every`, no new
+// solve. What the answer moves by on it shows whether the table's approaches are fine enough.
+PathContactData thinned_rows(const PathContactData& d, std::size_t every);
 
 // Mean over the tabulated positions of the static approach δ_W(ξ_k) (README, check against the
 // static load).

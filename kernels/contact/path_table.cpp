@@ -24,22 +24,38 @@ double ball_height(double r2, double radius, BallShape shape) {
   return r2 < radius * radius ? r2 / (radius + std::sqrt(radius * radius - r2)) : radius;
 }
 
-// The rows `d` (increasing) of the table over every position (PT-1): force at [r · N + k].
+// The rows `d` (increasing) of the table over every position (PT-1): force at [r · N + k]. With an
+// `origin` per position (B43b) row r stands at origin_k + d_r, and rows past `min_rows` are solved
+// only while the row below carries less than `target` and the window holds them (BF-5); the rows a
+// position does not solve hold NaN and `rows` counts those it did.
 struct Rows {
   std::vector<double> approach, force;
+  std::vector<std::size_t> rows;
   int solves = 0, iterations = 0;
   double max_error = 0.0;
   bool converged = true;
 };
 
+struct Ladder {
+  const std::vector<double>* origin = nullptr;  // null: every row at d_r (B43)
+  std::size_t min_rows = 0;
+  double target = 0.0;
+};
+
 Rows path_rows(const PathWindow& win, const Grid& window, double e_star, const std::vector<double>& d,
-               const SolverOptions& opt, const PathTableOptions& po) {
+               const SolverOptions& opt, const PathTableOptions& po, const Ladder& ladder = {}) {
   const std::size_t nk = win.size(), nj = d.size(), n = window.size();
   Rows out;
   out.approach = d;
-  out.force.assign(nj * nk, 0.0);
+  out.force.assign(nj * nk, std::numeric_limits<double>::quiet_NaN());
+  out.rows.assign(nk, 0);
   if (nj == 0) return out;
-  std::vector<ContactResult> results(nj * nk);
+  struct Solved {  // what the table keeps of a solve (a ContactResult per cell would be 5x larger)
+    double force = 0.0, error = 0.0;
+    int iterations = 0;
+    bool converged = false;
+  };
+  std::vector<Solved> results(nj * nk);
   const std::size_t chunk = po.chunk_positions == 0 ? nk : std::min(nk, po.chunk_positions);
   const std::size_t chunks = (nk + chunk - 1) / chunk;
   const int threads = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(chunks)));
@@ -53,9 +69,16 @@ Rows path_rows(const PathWindow& win, const Grid& window, double e_star, const s
     std::vector<std::vector<double>> fields(nj);  // each row's last field in this chunk
     std::vector<double> p;
     int solves = 0, iterations = 0;
+    std::size_t most_rows = 0;
     for (std::size_t k = k0; k < k1; ++k) {
       const std::vector<double> gap = win.gap(k);
-      for (std::size_t j = 0; j < nj; ++j) {
+      const double origin = ladder.origin ? (*ladder.origin)[k] : 0.0;
+      std::size_t j = 0;
+      for (; j < nj; ++j) {
+        const double dj = origin + d[j];
+        if (ladder.origin && j >= ladder.min_rows &&
+            (results[(j - 1) * nk + k].force >= ladder.target || dj > win.limit(k)))
+          break;  // B43b: this position's ladder is done
         if (po.start == PathTableStart::Cold || (k == k0 && (j == 0 || po.start == PathTableStart::Position))) {
           p.assign(n, 0.0);
         } else if (po.start == PathTableStart::Approach && j > 0) {
@@ -64,33 +87,38 @@ Rows path_rows(const PathWindow& win, const Grid& window, double e_star, const s
             const double f = (d[j] - d[j - 1]) / (d[j - 1] - d[j - 2]);
             for (std::size_t i = 0; i < n; ++i) p[i] += f * (fields[j - 1][i] - fields[j - 2][i]);
           }
+        } else if (fields[j].empty()) {
+          p.assign(n, 0.0);  // B43b: no earlier position in this chunk reached this row
         } else {
           p = fields[j];  // BF-6: this approach, the previous position, shifted with the ball
           win.shift_field(p, win.ball_shift(k));
         }
-        ContactResult& r = results[j * nk + k];
-        r = s.solve(gap, d[j], p, opt);
+        const ContactResult r = s.solve(gap, dj, p, opt);
+        results[j * nk + k] = Solved{r.force, r.error, r.iterations, r.converged};
         fields[j] = p;
         ++solves;
         iterations += r.iterations;
       }
+      out.rows[k] = j;
+      most_rows = std::max(most_rows, j);
     }
     if (po.on_chunk) {
 #pragma omp critical(path_table_progress)
       {
         done += k1 - k0;
-        po.on_chunk(nj, done, solves, iterations);
+        po.on_chunk(most_rows, done, solves, iterations);
       }
     }
   });
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const ContactResult& r = results[i];
-    out.force[i] = r.force;
-    ++out.solves;
-    out.iterations += r.iterations;
-    out.max_error = std::max(out.max_error, r.error);
-    out.converged = out.converged && r.converged;
-  }
+  for (std::size_t k = 0; k < nk; ++k)
+    for (std::size_t j = 0; j < out.rows[k]; ++j) {
+      const Solved& r = results[j * nk + k];
+      out.force[j * nk + k] = r.force;
+      ++out.solves;
+      out.iterations += r.iterations;
+      out.max_error = std::max(out.max_error, r.error);
+      out.converged = out.converged && r.converged;
+    }
   return out;
 }
 
@@ -135,6 +163,12 @@ std::vector<double> path_table_approaches(const std::vector<double>& first_conta
   if (!(load > 0.0) || !(e_star > 0.0) || !(radius > 0.0) || !(o.reach > 0.0))
     throw std::invalid_argument("path_table: load, E*, radius and reach must be > 0");
   const double d_hertz = hertz::approach_at_load(radius, e_star, load);  // BF-4
+  if (o.ladder == PathLadder::FirstContact) {                            // B43b
+    std::vector<double> s(std::max(o.approaches, o.max_approaches));
+    for (std::size_t j = 0; j < s.size(); ++j)
+      s[j] = o.reach * d_hertz * static_cast<double>(j + 1) / static_cast<double>(o.approaches);
+    return s;
+  }
   const auto mm = std::minmax_element(first_contact.begin(), first_contact.end());
   const double lo = *mm.first, hi = *mm.second + o.reach * d_hertz;  // B43
   std::vector<double> d(o.approaches);
@@ -186,6 +220,30 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
     t.top_force = *std::min_element(t.force.end() - static_cast<std::ptrdiff_t>(nk), t.force.end()) / load;
   };
   t.force.clear();
+  if (path_options.ladder == PathLadder::FirstContact) {  // B43b: each position's own ladder
+    t.ladder = PathLadder::FirstContact;
+    for (std::size_t k = 0; k < nk; ++k)  // the J rows every position solves must fit the window (BF-5)
+      if (t.first_contact[k] + t.approach[path_options.approaches - 1] > win.limit(k))
+        win.reject(k, t.first_contact[k] + t.approach[path_options.approaches - 1]);
+    Rows rows = path_rows(win, window, e_star, t.approach, opt, path_options,
+                          Ladder{&t.first_contact, path_options.approaches, path_options.top_force * load});
+    const std::size_t most = *std::max_element(rows.rows.begin(), rows.rows.end());
+    t.approach.resize(most);
+    rows.force.resize(most * nk);
+    t.solves = rows.solves;
+    t.iterations = rows.iterations;
+    t.max_error = rows.max_error;
+    t.converged = rows.converged;
+    t.rows = rows.rows;
+    t.top_force = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < nk; ++k) {  // B44: non-decreasing by a running maximum (the solver's tolerance)
+      for (std::size_t j = 0; j < t.rows[k]; ++j)
+        rows.force[j * nk + k] = std::max(rows.force[j * nk + k], j > 0 ? rows.force[(j - 1) * nk + k] : 0.0);
+      t.top_force = std::min(t.top_force, rows.force[(t.rows[k] - 1) * nk + k] / load);
+    }
+    t.force = std::move(rows.force);
+    return t;
+  }
   append(run_rows(t.approach, true));
   // B43a: a rough strip carries less than the smooth 3^{3/2} W at max δ_c + 3 δ_H; extend upwards
   // two rows at a time (a fixed batch, so the rows do not depend on the thread count).
@@ -200,6 +258,7 @@ PathTable build_path_table(const Grid& window, double e_star, const Grid& strip,
     append(rows);
     if (rows.approach.size() < more.size()) break;  // the window holds no more (BF-5)
   }
+  t.rows.assign(nk, t.approach.size());
   return t;
 }
 

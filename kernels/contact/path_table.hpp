@@ -31,6 +31,12 @@
 
 namespace rollspec::contact {
 
+// Where the approach rows stand (kernels/beam README B43, B43b).
+enum class PathLadder {
+  Plane,         // B43: one set of approaches δ_j from the mean plane, the same at every position
+  FirstContact,  // B43b: δ_{j,k} = δ_c(ξ_k) + j s at each position, up to the first row carrying top_force · W
+};
+
 enum class PathTableStart {
   Approach,  // PT-1: from the approach below at the same position (the default)
   Position,  // every approach along the path on its own: the previous position's field shifted (BF-6)
@@ -46,6 +52,7 @@ struct PathTableOptions {
   // solver window cannot hold (BF-5) ends the extension.
   double top_force = 5.0;
   std::size_t max_approaches = 24;
+  PathLadder ladder = PathLadder::Plane;
   PathTableStart start = PathTableStart::Approach;
   std::size_t chunk_positions = 16;  // PT-1: fixed chunks of this many positions (0: one chunk)
   // Called after each chunk of positions is done (for every row of that pass), from the thread that
@@ -55,8 +62,12 @@ struct PathTableOptions {
 };
 
 struct PathTable {
-  std::vector<double> position;       // ξ_k (m, strip coordinates), N values
-  std::vector<double> approach;       // δ_j (m, from the plane h = 0), J or more values (B43a), increasing
+  std::vector<double> position;  // ξ_k (m, strip coordinates), N values
+  // Plane: δ_j (m, from the plane h = 0), J or more values (B43a), increasing. FirstContact: the
+  // offsets s_j = j s above δ_c(ξ_k) (B43b), as many as the longest position's ladder.
+  std::vector<double> approach;
+  PathLadder ladder = PathLadder::Plane;
+  std::vector<std::size_t> rows;      // rows solved at each position (B43b; Plane: every row); NaN force above
   std::vector<double> first_contact;  // δ_c(ξ_k) (m), B42
   std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k]
   int solves = 0, iterations = 0;     // contact solves and their CG iterations
@@ -72,7 +83,8 @@ std::vector<double> first_contact_approach(const Grid& strip, const std::vector<
                                            BallShape shape, const std::vector<double>& positions, double centre_y,
                                            std::size_t half_columns = 0);
 
-// The approaches of B43 for the ball's weight `load` (δ_H from E* and R).
+// The approaches of B43 for the ball's weight `load` (δ_H from E* and R); with options.ladder =
+// FirstContact the offsets s_j = j · reach δ_H / J of B43b, j = 1 … max_approaches.
 std::vector<double> path_table_approaches(const std::vector<double>& first_contact, double load, double e_star,
                                           double radius, const PathTableOptions& options = {});
 

@@ -42,6 +42,7 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
                                       const study::StripSurfaceSection& surface, const texture::Psd& psd, double radius,
                                       double e_star, double load, double path_length) {
   PathTableGeometry g;
+  g.ladder = p.ladder == PathLadder::first_contact;
   g.base = blocked_force_geometry(bf, surface, psd, radius, e_star, load, 0.0);
   const double a = g.base.contact_radius, dx = g.base.cell, dh = a * a / radius;
   g.path_length = path_length;
@@ -74,8 +75,10 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
   g.nx += g.nx % 2;
   // Cost: J rows and the two B43a usually adds, over every position, at 3.7e-7 s per solve
   // (contact_box_work, fitted on three textures; bench/contact/bench_tables.py's rig: 13.5 s CPU).
-  g.estimated_seconds =
-      3.7e-7 * contact_box_work(g.base, g.window, radius) * static_cast<double>(g.positions * (g.approaches + 2));
+  // B43b: J rows, and about one more where a rough position needs it (8.96 per position for J = 8 on a
+  // 50 mm section of the seed 002 rig).
+  g.estimated_seconds = 3.7e-7 * contact_box_work(g.base, g.window, radius) *
+                        static_cast<double>(g.positions * (g.approaches + (g.ladder ? 1 : 2)));
   const std::size_t chunk = contact::PathTableOptions{}.chunk_positions;
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + chunk - 1) / chunk)));
   return g;
@@ -86,12 +89,14 @@ std::string PathTableGeometry::describe() const {
   const double dx = base.cell;
   buf = io::formatted(
       "strip 0 of the surface, cell %s (a/%.3g)%s, strip %zu x %zu cells (%s long, %s wide), window %zu cells, "
-      "%zu approaches (more until P >= 5 W at every position, B43a) x %zu positions (step %zu cells = %s) over the "
+      "%zu approaches %s x %zu positions (step %zu cells = %s) over the "
       "ball's path of %s; contact radius a = %s, "
       "texture rms %s; build about %.2g s CPU, %.2g s wall on %d thread%s",
       um(dx).c_str(), base.contact_radius / dx,
       base.truncated_wavelength > 0.0 ? (", texture below " + um(base.truncated_wavelength) + " dropped").c_str() : "",
       nx, ny, um(static_cast<double>(nx) * dx).c_str(), um(static_cast<double>(ny) * dx).c_str(), window, approaches,
+      ladder ? "above each position's first contact (more there until P >= 5 W, B43b)"
+             : "(more until P >= 5 W at every position, B43a)",
       positions, step, um(static_cast<double>(step) * dx).c_str(), um(path_length).c_str(),
       um(base.contact_radius).c_str(), um(base.rms).c_str(), estimated_seconds, estimated_seconds / threads, threads,
       threads == 1 ? "" : "s");
@@ -101,14 +106,16 @@ std::string PathTableGeometry::describe() const {
 namespace {
 
 std::vector<const std::vector<double>*> columns(const PathTableData& t) {
-  return {&t.position, &t.approach, &t.first_contact, &t.force};
+  if (t.rows.empty()) return {&t.position, &t.approach, &t.first_contact, &t.force};
+  return {&t.position, &t.approach, &t.first_contact, &t.force, &t.rows};
 }
 
 std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
-     << "\napproaches = " << g.approaches << "\nreach = " << io::exact_text(kReach)
+     << "\napproaches = " << g.approaches << (g.ladder ? "\nladder = first contact (B43b)" : "")
+     << "\nreach = " << io::exact_text(kReach)
      << "\ntop_force = " << io::exact_text(contact::PathTableOptions{}.top_force) << "\nmax_approaches = "
      << contact::PathTableOptions{}.max_approaches
      // PT-1: the starts and the chunks of positions set the last bits of the table's values.
@@ -131,6 +138,7 @@ void PathTableData::load_from(const io::Hdf5Reader& r) {
   approach = r.read("/path_table/approach");
   first_contact = r.read("/path_table/first_contact");
   force = r.read("/path_table/force");
+  rows = r.exists("/path_table/rows") ? r.read("/path_table/rows") : std::vector<double>{};
   load = r.double_attribute("/path_table", "load");
 }
 
@@ -138,11 +146,19 @@ void PathTableData::save_to(io::Hdf5Writer& w) const {
   w.write("/path_table/position", {position.size()}, position.data(), "m",
           "ball position xi_k along the path, from the traverse's start");
   w.write("/path_table/approach", {approach.size()}, approach.data(), "m",
-          "rigid approach delta_j from the strip's mean plane (kernels/beam B43)");
+          rows.empty() ? "rigid approach delta_j from the strip's mean plane (kernels/beam B43)"
+                       : "offset s_j of the rigid approach above the first contact delta_c(xi_k) (kernels/beam B43b)");
+  if (!rows.empty())
+    w.write("/path_table/rows", {rows.size()}, rows.data(), "1",
+            "rows solved at each position (kernels/beam B43b): up to the first carrying 5 W there");
   w.write("/path_table/first_contact", {first_contact.size()}, first_contact.data(), "m",
           "first-contact approach delta_c(xi_k) (kernels/beam B42)");
   w.write("/path_table/force", {approach.size(), position.size()}, force.data(), "N",
-          "P(delta_j, xi_k): force of the elastic-plastic half-space solve (kernels/beam B41), approach x position");
+          rows.empty()
+              ? "P(delta_j, xi_k): force of the elastic-plastic half-space solve (kernels/beam B41), approach x "
+                "position"
+              : "P(delta_c(xi_k) + s_j, xi_k): force of the elastic-plastic half-space solve (kernels/beam "
+                "B41, B43b), approach x position; NaN above the rows solved at that position");
   w.attribute("/path_table", "load", load);
 }
 
@@ -163,11 +179,12 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
   contact::PathTableOptions po;
   po.approaches = g.approaches;
   po.reach = kReach;
+  if (g.ladder) po.ladder = contact::PathLadder::FirstContact;
   if (!quiet) std::fprintf(stderr, "%spath table: %s\n", ensemble::rank_prefix().c_str(), g.describe().c_str());
   const auto start = std::chrono::steady_clock::now();
   // Bar over the solves of the J rows and the two B43a usually adds (not past its total); one line
   // per pass of rows over the path.
-  const std::size_t expected = g.positions * (g.approaches + 2);
+  const std::size_t expected = g.positions * (g.approaches + (g.ladder ? 1 : 2));
   ensemble::Progress progress("path table solves", expected, quiet);
   progress.show_after(2.0);
   std::size_t solves_done = 0;
@@ -206,6 +223,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
   d.approach = t.approach;
   d.first_contact = t.first_contact;
   d.force = t.force;
+  if (t.ladder == contact::PathLadder::FirstContact) d.rows.assign(t.rows.begin(), t.rows.end());
   d.load = load;
   return d;
 }

@@ -37,6 +37,7 @@ struct PathTableGeometry {
   std::size_t step = 0;            // path step (cells)
   std::size_t positions = 0;       // path positions
   std::size_t approaches = 0;      // J
+  bool ladder = false;             // B43b: each position's own approaches above its first contact
   double path_length = 0.0;        // the ball's path in the run (m)
   double estimated_seconds = 0.0;  // CPU seconds of the build (rough)
   int threads = 1;                 // threads the build uses (rows in parallel)
@@ -45,9 +46,10 @@ struct PathTableGeometry {
 
 struct PathTableData : TableData {
   std::vector<double> position;       // ξ_k − ξ_0 (m, path coordinate from the traverse's start)
-  std::vector<double> approach;       // δ_j (m)
+  std::vector<double> approach;       // δ_j (m); B43b: the offsets s_j above δ_c(ξ_k)
   std::vector<double> first_contact;  // δ_c(ξ_k) (m)
-  std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k]
+  std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k]; B43b: NaN above rows[k]
+  std::vector<double> rows;           // B43b: rows solved at each position; empty: every row (B43)
   double load = 0.0;
   void load_from(const io::Hdf5Reader& r) override;
   void save_to(io::Hdf5Writer& w) const override;

@@ -38,6 +38,7 @@ RECIPES = {
     "bench/record_csv.py": {"argv": ["PY", "S", "--record", "OUT", "--title", "t", "--describe", "d", "--", "true"],
                             "out": "file", "help": ["--help"]},
     "bench/contact/bench_answer_tables.py": RECORDS_WITH_BIN,
+    "bench/contact/bench_path_ladder.py": RECORDS_WITH_BIN,
     "bench/contact/bench_contact_goals.py": {"argv": ["PY", "S", "--base", "BINDIR", "--new", "BINDIR"],
                                              "help": ["--help"], "binary": 3},
     "bench/contact/bench_plan_estimates.py": {"argv": ["PY", "S", "--binary", "BIN", "--json", "OUT"], "out": "file",

@@ -42,7 +42,8 @@ def test_point_law_on_h_eq_matches_the_path_law_on_the_same_strip(tmp_path):
     # interpolation in delta (P^(2/3) linear between 16 approaches, B44: 1.5 % here; a different strip
     # or shifted positions miss by tens of per cent).
     with h5py.File(glob.glob(str(tmp_path / "tables" / "path-table-*.h5"))[0]) as t:
-        force, approach, x = t["/path_table/force"][:], t["/path_table/approach"][:], t["/path_table/position"][:]
+        force, offset, x = t["/path_table/force"][:], t["/path_table/approach"][:], t["/path_table/position"][:]
+        first, rows = t["/path_table/first_contact"][:], t["/path_table/rows"][:].astype(int)
         weight = float(np.ravel(t["/path_table"].attrs["load"])[0])
     er = glob.glob(str(tmp_path / "tables" / "equivalent-roughness-*.h5"))
     assert len(er) == 1  # stiffness = strip or law: the same table
@@ -51,7 +52,9 @@ def test_point_law_on_h_eq_matches_the_path_law_on_the_same_strip(tmp_path):
         assert np.array_equal(g["position"][:], x)
         delta_eq = float(np.ravel(g.attrs["smooth_approach"])[0]) - g["height"][0]
         rho = np.nanmean(g["stiffness"][0]) / float(np.ravel(g.attrs["smooth_stiffness"])[0])
-    p_eq = np.array([np.interp(d, approach, force[:, k] ** (2 / 3)) ** 1.5 for k, d in enumerate(delta_eq)])
+    # B43b: position k's nodes are (delta_c, 0) and its rows at delta_c + s_j.
+    p_eq = np.array([np.interp(d, first[k] + np.r_[0.0, offset[:rows[k]]], np.r_[0.0, force[:rows[k], k]] ** (2 / 3))
+                     ** 1.5 for k, d in enumerate(delta_eq)])
     assert np.max(np.abs(p_eq / weight - 1)) < 0.03
     # A rough strip is softer than the smooth one at the same load (ER-7).
     assert 0.9 < rho < 1.0

@@ -11,6 +11,7 @@
 #include "src/scenes/memory_terms.hpp"
 #include "src/stiffness/blocked_force_geometry.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
+#include "kernels/contact/path_table.hpp"
 #include "src/stiffness/path_table.hpp"
 
 namespace rollspec::scenes {
@@ -72,7 +73,10 @@ Item path_table(const BallOnBeamSections& b, double threads) {
   const auto g =
       stiffness::path_table_geometry(b.path_table, b.blocked_force, b.strip_surface, b.texture_psd, b.ball.radius,
                                      ball_e_star(b), b.ball.weight(), b.ball.end - b.ball.start);
-  const double cells = static_cast<double>(g.approaches) * static_cast<double>(g.positions);
+  // B43b holds room for every position's ladder to grow to max_approaches rows.
+  const double rows =
+      static_cast<double>(g.ladder ? std::max(g.approaches, contact::PathTableOptions{}.max_approaches) : g.approaches);
+  const double cells = rows * static_cast<double>(g.positions);
   const double w = static_cast<double>(g.window);
   return {
       8.0 * cells * 6.0 + 8.0 * static_cast<double>(g.nx) * static_cast<double>(g.ny) * 4.0 +

@@ -8,11 +8,23 @@
 
 namespace rollspec::study {
 
-class KeyReader;
+// [path_table] ladder (kernels/beam B43, B43b).
+enum class PathLadder { plane, first_contact };
+
+inline constexpr ChoiceTable<PathLadder, 2> kPathLadders{{
+    {PathLadder::plane, "plane",
+     "one set of approaches from the strip's mean plane at every position, spanning the whole path's first contacts "
+     "plus 3 delta_H (kernels/beam B43, B43a): the method before B43b, kept as its reference"},
+    {PathLadder::first_contact, "first_contact",
+     "each position's own approaches above its first contact, delta_c + j s with s = 3 delta_H / approaches, up to "
+     "the first row carrying 5 W there (kernels/beam B43b): only the rows the dynamics use"},
+}};
 
 struct PathTableSection : DeclaredSection<PathTableSection> {
   long long approaches = 0, step = 0;  // step 0: derived
-  double strip_length = 0.0;           // m; 0: derived
+  PathLadder ladder = PathLadder::first_contact;
+  long long rows_every = 1;   // read every n-th row of the table (a convergence check, no new solve)
+  double strip_length = 0.0;  // m; 0: derived
 
   static SectionKeys<PathTableSection> declare();
 };

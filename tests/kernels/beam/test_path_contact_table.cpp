@@ -50,7 +50,20 @@ contact::SolverOptions tight() {
 }
 
 beam::PathContactData data_of(const contact::PathTable& t) {
-  return {t.position, t.approach, t.first_contact, t.force};
+  beam::PathContactData d{t.position, t.approach, t.first_contact, t.force, {}};
+  if (t.ladder == contact::PathLadder::FirstContact) d.rows = t.rows;
+  return d;
+}
+
+contact::PathTableOptions first_contact_ladder() {
+  contact::PathTableOptions o;
+  o.ladder = contact::PathLadder::FirstContact;
+  return o;
+}
+
+// The table's approach of row j at position k (B43 or B43b).
+double row_approach(const contact::PathTable& t, std::size_t j, std::size_t k) {
+  return t.ladder == contact::PathLadder::FirstContact ? t.first_contact[k] + t.approach[j] : t.approach[j];
 }
 
 }  // namespace
@@ -150,6 +163,71 @@ TEST_CASE("path table on a rough strip: nodes equal direct whole-strip solves, i
   CHECK(worst_xi < 0.008);
 }
 
+TEST_CASE(
+    "path table, first-contact ladder (B43b): each position's rows from its first contact to 5 W, nodes equal "
+    "direct solves, interpolation as close as the plane's") {
+  StripCase c(8.0, 57, 7, 2);  // the rough strip of the case above
+  const double dh = hertz_approach(kW), a = std::sqrt(kR * dh);
+  const std::vector<double> h = contact::test::wavy_heights(c.strip, 0.3 * dh, 0.5 * a);
+  contact::SolverOptions opt = tight();
+  opt.hardness = 5e9;
+  const contact::PathTable plane =
+      contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid, c.positions, kW, opt);
+  const contact::PathTable t = contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid,
+                                                         c.positions, kW, opt, first_contact_ladder());
+  REQUIRE(t.converged);
+  const std::size_t nk = t.position.size(), nj = 8;
+  CHECK(t.first_contact == plane.first_contact);
+  CHECK(t.approach[0] == doctest::Approx(3.0 * dh / 8.0).epsilon(1e-12));  // s = 3 delta_H / J
+  std::size_t solves = 0;
+  for (std::size_t k = 0; k < nk; ++k) {
+    // Every position solves its J rows and stops at the first row carrying 5 W (B43b).
+    REQUIRE(t.rows[k] >= nj);
+    solves += t.rows[k];
+    CHECK(t.force[(t.rows[k] - 1) * nk + k] >= 5.0 * kW);
+    if (t.rows[k] > nj) CHECK(t.force[(t.rows[k] - 2) * nk + k] < 5.0 * kW);
+    if (t.rows[k] < t.approach.size()) CHECK(std::isnan(t.force[t.rows[k] * nk + k]));
+  }
+  CHECK(static_cast<int>(solves) == t.solves);
+  MESSAGE("first-contact ladder: " << t.solves << " solves (plane: " << plane.solves << "), rows per position "
+                                   << static_cast<double>(solves) / static_cast<double>(nk) << ", last carries "
+                                   << t.top_force << " W");
+  for (std::size_t k : {std::size_t{0}, std::size_t{3}})
+    for (std::size_t j : {std::size_t{0}, nj - 1, t.rows[k] - 1}) {
+      const double direct = contact::path_force_direct(c.strip, h, kE, kR, contact::BallShape::Paraboloid,
+                                                       c.positions[k], 0.0, row_approach(t, j, k), opt);
+      CHECK(t.force[j * nk + k] == doctest::Approx(direct).epsilon(1e-7).scale(kW));
+    }
+  // Between the nodes, against direct solves, as in the plane table's case (its approaches, so the
+  // points are off both tables' nodes).
+  const beam::PathContactTable table(data_of(t)), plane_table(data_of(plane));
+  double worst_delta = 0.0, worst_xi = 0.0, worst_plane = 0.0;
+  for (std::size_t j = 0; j + 1 < plane.approach.size(); ++j) {
+    const double d = 0.5 * (plane.approach[j] + plane.approach[j + 1]);
+    for (std::size_t k : {std::size_t{1}, std::size_t{4}}) {
+      double p, s, q;
+      table.evaluate(d, c.positions[k], p, s);
+      plane_table.evaluate(d, c.positions[k], q, s);
+      const double direct =
+          contact::path_force_direct(c.strip, h, kE, kR, contact::BallShape::Paraboloid, c.positions[k], 0.0, d, opt);
+      worst_delta = std::max(worst_delta, std::fabs(p - direct) / kW);
+      worst_plane = std::max(worst_plane, std::fabs(q - direct) / kW);
+      const double x = 0.5 * (c.positions[k] + c.positions[k - 1]);
+      table.evaluate(d, x, p, s);
+      const double direct_x =
+          contact::path_force_direct(c.strip, h, kE, kR, contact::BallShape::Paraboloid, x, 0.0, d, opt);
+      worst_xi = std::max(worst_xi, std::fabs(p - direct_x) / kW);
+    }
+  }
+  MESSAGE("first-contact ladder: worst |P_interp - P_direct| / W: in delta " << worst_delta << " (plane table "
+                                                                             << worst_plane << "), in xi " << worst_xi);
+  CHECK(worst_delta < 0.012);
+  CHECK(worst_xi < 0.012);
+  // The static approach of B46's start from each table.
+  CHECK(beam::path_table_static_approach(table, kW) ==
+        doctest::Approx(beam::path_table_static_approach(plane_table, kW)).epsilon(2e-3));
+}
+
 TEST_CASE("PathContactTable: first contact, continuation beyond the table, refusals") {
   // One position with delta_c = -1 um and a Hertz-shaped column; a second with delta_c = 0.
   const double s = contact::hertz::force_coefficient(kR, kE);
@@ -175,6 +253,50 @@ TEST_CASE("PathContactTable: first contact, continuation beyond the table, refus
   CHECK(t.static_approach(kW, 1e-5) == doctest::Approx(hertz_approach(kW)).epsilon(1e-12));
   d.force[0] = 2.0 * d.force[2];  // decreasing in the approach
   CHECK_THROWS_AS(beam::PathContactTable{d}, std::invalid_argument);
+}
+
+TEST_CASE("PathContactTable, first-contact ladder (B43b): nodes above each position's own first contact") {
+  // Hertz columns above delta_c = -1 um and 0; position 0 solved two rows, position 1 three (the
+  // third row of position 0 is not read).
+  const double s = contact::hertz::force_coefficient(kR, kE), nan = std::nan("");
+  beam::PathContactData d;
+  d.position = {0.0, 1e-5};
+  d.approach = {0.5e-6, 1e-6, 1.5e-6};
+  d.first_contact = {-1e-6, 0.0};
+  d.rows = {2, 3};
+  for (double sj : d.approach)
+    for (std::size_t k = 0; k < 2; ++k) d.force.push_back(sj > 1.2e-6 && k == 0 ? nan : s * std::pow(sj, 1.5));
+  const beam::PathContactTable t(d);
+  double p, k;
+  t.evaluate(-1e-6, 0.0, p, k);
+  CHECK(p == 0.0);
+  t.evaluate(-0.25e-6, 0.0, p, k);  // between the nodes at s = 0.5 and 1 um above delta_c
+  CHECK(p == doctest::Approx(s * std::pow(0.75e-6, 1.5)).epsilon(1e-12));
+  CHECK(k == doctest::Approx(1.5 * s * std::sqrt(0.75e-6)).epsilon(1e-12));
+  t.evaluate(2e-6, 0.0, p, k);  // beyond position 0's two rows: its last segment continued
+  CHECK(p == doctest::Approx(s * std::pow(3e-6, 1.5)).epsilon(1e-12));
+  t.evaluate(1.25e-6, 1e-5, p, k);  // position 1's third row is read
+  CHECK(p == doctest::Approx(s * std::pow(1.25e-6, 1.5)).epsilon(1e-12));
+  t.evaluate(0.5e-6, 0.5e-5, p, k);  // mid-way (B45): the mean of the two columns at this delta
+  CHECK(p == doctest::Approx(0.5 * s * (std::pow(1.5e-6, 1.5) + std::pow(0.5e-6, 1.5))).epsilon(1e-12));
+  CHECK(t.static_approach(kW, 0.0) == doctest::Approx(hertz_approach(kW) - 1e-6).epsilon(1e-12));
+  d.rows = {2};  // not one count per position
+  CHECK_THROWS_AS(beam::PathContactTable{d}, std::invalid_argument);
+  d.rows = {2, 4};  // more rows than approaches
+  CHECK_THROWS_AS(beam::PathContactTable{d}, std::invalid_argument);
+  d.rows = {3, 3};  // a NaN row read
+  CHECK_THROWS_AS(beam::PathContactTable{d}, std::invalid_argument);
+  // Every other row: offsets 1 um (and 2 um, not present), each position keeping floor(J_k / 2) rows.
+  d.rows = {2, 3};
+  const beam::PathContactData half = beam::thinned_rows(d, 2);
+  CHECK(half.approach == std::vector<double>{1e-6});
+  CHECK(half.rows == std::vector<std::size_t>{1, 1});
+  CHECK(half.force == std::vector<double>{d.force[2], d.force[3]});
+  const beam::PathContactTable h(half);
+  h.evaluate(-0.25e-6, 0.0, p, k);  // between (delta_c, 0) and the node 1 um above it: still Hertz (Q linear)
+  CHECK(p == doctest::Approx(s * std::pow(0.75e-6, 1.5)).epsilon(1e-12));
+  CHECK(beam::thinned_rows(d, 1).force.size() == d.force.size());
+  CHECK_THROWS_AS(beam::thinned_rows(d, 4), std::invalid_argument);  // fewer rows than every
 }
 
 TEST_CASE("law = path on an exact Hertz table reproduces law = hertz in the ball-on-beam integrator (B46)") {
@@ -250,16 +372,24 @@ TEST_CASE("path table: the same bits on 1 and 2 threads, the extension rows (B43
   const std::vector<double> h = contact::test::wavy_heights(c.strip, 0.3 * dh, 0.5 * a);
   contact::SolverOptions opt = tight();
   opt.hardness = 5e9;
-  std::vector<contact::PathTable> t;
+  std::vector<contact::PathTable> t, ladder;
+  contact::PathTableOptions po = first_contact_ladder();
+  po.chunk_positions = 1;  // three chunks: both threads take part
   const int before = omp_get_max_threads();
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
     t.push_back(
         contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid, c.positions, kW, opt));
+    ladder.push_back(contact::build_path_table(c.window, kE, c.strip, h, kR, contact::BallShape::Paraboloid,
+                                               c.positions, kW, opt, po));
   }
   omp_set_num_threads(before);
   CHECK(t[0].approach.size() > 8);
   CHECK(t[0].approach == t[1].approach);
   CHECK(t[0].force == t[1].force);
   CHECK(t[0].iterations == t[1].iterations);
+  CHECK(ladder[0].rows == ladder[1].rows);
+  CHECK(std::equal(ladder[0].force.begin(), ladder[0].force.end(), ladder[1].force.begin(), ladder[1].force.end(),
+                   [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); }));
+  CHECK(ladder[0].iterations == ladder[1].iterations);
 }
