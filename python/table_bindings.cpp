@@ -97,6 +97,7 @@ void describe(Table& t) {
                  {"approach", &p->approach, {nj}},
                  {"first_contact", &p->first_contact, {size(p->first_contact)}},
                  {"force", &p->force, {nj, nk}}};
+    if (!p->rows.empty()) t.columns.push_back({"rows", &p->rows, {size(p->rows)}});  // B43b: rows per position
     t.scalars = {{"load", p->load}};
   }
 }
