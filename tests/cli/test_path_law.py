@@ -106,5 +106,9 @@ def test_bad_keys_are_refused(tmp_path):
     assert r.returncode != 0 and "filter" in r.stderr and "allowed" in r.stderr, r.stderr
     r, _ = rig_1ms(tmp_path, "contact.law=path", *SMOOTH, "path_table.approaches=1", command="plan")
     assert r.returncode != 0 and "approaches" in r.stderr, r.stderr
+    # Every 4th row of a 2-row table leaves a position without one: refused by key, value and what is allowed.
+    r, _ = rig_1ms(tmp_path, "contact.law=path", *SMOOTH, "path_table.approaches=2", "path_table.rows_every=4")
+    assert r.returncode == 78 and "rows_every" in r.stderr and "allowed: 1 .. 2" in r.stderr, r.stderr
+    assert "internal error" not in r.stderr and not (tmp_path / "r.h5").exists()
     r, _ = rig_1ms(tmp_path, "contact.law=pathx", *SMOOTH, command="plan")
     assert r.returncode != 0 and "path" in r.stderr, r.stderr

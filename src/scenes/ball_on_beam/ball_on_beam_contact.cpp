@@ -69,7 +69,16 @@ void take_stiffness_table(const BallOnBeamSettings& b, const stiffness::Stiffnes
 void take_path_table(const BallOnBeamSettings& b, const stiffness::PathTableData& t, ResolvedContact& c) {
   beam::PathContactData d{t.position, t.approach, t.first_contact, t.force, {}};
   for (double r : t.rows) d.rows.push_back(static_cast<std::size_t>(r));
-  if (b.path_table.rows_every > 1) d = beam::thinned_rows(d, static_cast<std::size_t>(b.path_table.rows_every));
+  const auto every = static_cast<std::size_t>(b.path_table.rows_every);
+  if (every > 1) {  // each position must keep a row: refused with the table's fewest rows
+    std::size_t fewest = d.approach.size();
+    for (std::size_t r : d.rows) fewest = std::min(fewest, r);
+    if (fewest < every)
+      b.path_table.origin(b.path_table.rows_every)
+          .refuse("reads no row at a position whose table holds only " + std::to_string(fewest) +
+                  " rows; allowed: 1 .. " + std::to_string(fewest));
+    d = beam::thinned_rows(d, every);
+  }
   c.law.path = std::make_shared<const beam::PathContactTable>(std::move(d));
   c.law.path_origin = b.model.traverse.x_start;
   c.static_compression = beam::path_table_static_approach(*c.law.path, b.weight());
