@@ -65,14 +65,17 @@ InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& 
   s.y[2 * n] = w1 + h - delta;
   // The path law (B46) has no line: its strip enters through P(δ, ξ), and a ball that rides it at
   // constant load follows w1 − δ_W(ξ), so its rate carries −v dδ_W/dξ where the point laws' carries
-  // v dh (B22). Over the table's first interval, where P is linear in ξ (B44), as dh is the line's.
+  // v dh (B22). dδ_W/dξ over a contact width about the start (PathContactTable::static_slope): one
+  // interval's chord changes with the positions' step and rings the beam's first mode for the whole
+  // record; the slope over a width the positions resolve does not.
   double dpath = 0.0;
   if (contact.path()) {
-    const std::vector<double>& xk = contact.law().path->data().position;
-    if (xk.size() > 1) {
-      const double e = xk[1] - xk[0];
-      dpath = -(contact.static_compression(weight, f0 + e) - delta) / e;
-    }
+    const ContactLaw& law = contact.law();
+    const std::vector<double>& xk = law.path->data().position;
+    if (law.path_start_width > 0.0)
+      dpath = -law.path->static_slope(weight, f0 - law.path_origin, law.path_start_width);
+    else if (xk.size() > 1)
+      dpath = -(contact.static_compression(weight, f0 + (xk[1] - xk[0])) - delta) / (xk[1] - xk[0]);
   }
   s.y[2 * n + 1] = v * (2.0 * dw1 - dres * weight + dh + dpath);
   // Contact force consistent with the state (the damper may see a convective rate at t = 0).

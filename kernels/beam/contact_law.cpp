@@ -76,17 +76,23 @@ ContactForce ContactModel::evaluate(double delta, double rate, double f0) const 
     if (f <= 0.0) return {0.0, 0.0, 0.0, true};  // (B19) never pulls
     return {f, law_.k0, c, true};
   }
-  const bool contact = path() ? in_contact(delta, f0) : delta > 0.0;
+  double p = 0.0, k = 0.0;
+  bool contact;
+  if (path() && law_.path->data().interpolation == PathInterpolation::cubic) {
+    law_.path->evaluate(delta, f0 - law_.path_origin, p, k);  // (B46): contact where the B45b blend is positive
+    contact = p > 0.0;
+  } else {
+    contact = path() ? in_contact(delta, f0) : delta > 0.0;
+    if (contact && path())
+      law_.path->evaluate(delta, f0 - law_.path_origin, p, k);  // (B46)
+    else if (contact)
+      elastic(delta, p, k);
+  }
   if (!contact) {  // loss of contact: seed 001 Eq. 8, or nothing (path: B46)
     if (law_.loss == LossOfContact::zero_force) return {0.0, 0.0, 0.0, false};
     const double f = c * rate;
     return f > 0.0 ? ContactForce{f, 0.0, c, false} : ContactForce{0.0, 0.0, 0.0, false};
   }
-  double p, k;
-  if (path())
-    law_.path->evaluate(delta, f0 - law_.path_origin, p, k);  // (B46)
-  else
-    elastic(delta, p, k);
   const double f = p + c * rate;
   if (f <= 0.0) return {0.0, 0.0, 0.0, true};  // (B19)
   return {f, k, c, true};

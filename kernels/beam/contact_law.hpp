@@ -44,7 +44,8 @@ struct ContactLaw {
   DampingRate rate = DampingRate::relative_velocity;
   bool allow_tension = false;                    // linearised only
   std::shared_ptr<const PathContactTable> path;  // path: P(delta, xi) of the strip (B41-B45), shared
-  double path_origin = 0.0;                      // path: physical xi_0 of the table's position 0 (m)
+  double path_origin = 0.0;                      // path: physical xi of the table's ξ = 0, the start (m)
+  double path_start_width = 0.0;  // path: width of the start's slope fit (B46); 0: the first interval's chord
 };
 
 struct ContactForce {
@@ -66,10 +67,10 @@ class ContactModel {
   ContactForce evaluate(double delta, double rate, double f0) const;
 
   // Contact (not loss of contact) at compression delta: delta > 0, or F0 + k0 (delta + d0) > 0.
-  // Path law: delta > delta_c(xi) (B45), f0 = xi.
+  // Path law: the table's force is positive at (delta, xi) (B45, B45b), f0 = xi.
   bool in_contact(double delta, double f0) const {
     if (linearised()) return f0 + law_.k0 * (delta + law_.d0) > 0.0;
-    if (path()) return delta > law_.path->first_contact(f0 - law_.path_origin);
+    if (path()) return law_.path->touches(delta, f0 - law_.path_origin);
     return delta > 0.0;
   }
   bool path() const { return law_.kind == ContactLawKind::path; }

@@ -33,6 +33,15 @@ PathContactTable::PathContactTable(PathContactData data) : d_(std::move(data)) {
       if (j > 0 && p < d_.force[(j - 1) * nk + k]) fail("forces must be non-decreasing in the approach");
     }
   }
+  // B45b needs k − 2 … k + 3 equally spaced about interval k (a thinned table's last interval is not).
+  uniform_.assign(nk > 0 ? nk - 1 : 0, 0);
+  for (std::size_t k = 2; d_.interpolation == PathInterpolation::cubic && k + 3 < nk; ++k) {
+    const double h = d_.position[k + 1] - d_.position[k];
+    bool same = true;
+    for (std::size_t i = k - 2; i < k + 3; ++i)
+      same = same && std::fabs((d_.position[i + 1] - d_.position[i]) - h) <= 1e-9 * h;
+    uniform_[k] = same ? 1 : 0;
+  }
   q_.resize(d_.force.size());
   for (std::size_t i = 0; i < q_.size(); ++i) q_[i] = std::cbrt(d_.force[i] * d_.force[i]);  // Q = P^{2/3}
 }
@@ -91,24 +100,68 @@ void PathContactTable::locate(double xi, std::size_t& k, double& t) const {
   t = (xi - x[k]) / (x[k + 1] - x[k]);
 }
 
+double keys_six_point(double s) {
+  s = std::fabs(s);
+  if (s < 1.0) return ((4.0 / 3.0) * s - 7.0 / 3.0) * s * s + 1.0;
+  if (s < 2.0) return ((-7.0 / 12.0 * s + 3.0) * s - 59.0 / 12.0) * s + 2.5;
+  if (s < 3.0) return ((1.0 / 12.0 * s - 2.0 / 3.0) * s + 7.0 / 4.0) * s - 1.5;
+  return 0.0;
+}
+
+std::size_t PathContactTable::stencil(std::size_t k, double t, double* weight) const {
+  if (t > 0.0 && k < uniform_.size() && uniform_[k]) {  // B45b
+    for (int i = 0; i < 6; ++i) weight[i] = keys_six_point(t - static_cast<double>(i - 2));
+    return 6;
+  }
+  weight[0] = 1.0 - t;  // B45
+  weight[1] = t;
+  return t > 0.0 ? 2 : 1;
+}
+
 void PathContactTable::evaluate(double delta, double xi, double& force, double& stiffness) const {
   std::size_t k;
   double t;
   locate(xi, k, t);
-  at_position(k, delta, force, stiffness);
-  if (t > 0.0) {  // B45
-    double f1, k1;
-    at_position(k + 1, delta, f1, k1);
-    force = (1.0 - t) * force + t * f1;
-    stiffness = (1.0 - t) * stiffness + t * k1;
+  double w[6];
+  const std::size_t n = stencil(k, t, w);
+  if (n < 6) {
+    at_position(k, delta, force, stiffness);
+    if (t > 0.0) {  // B45
+      double f1, k1;
+      at_position(k + 1, delta, f1, k1);
+      force = (1.0 - t) * force + t * f1;
+      stiffness = (1.0 - t) * stiffness + t * k1;
+    }
+    return;
   }
+  force = stiffness = 0.0;  // B45b: the blend, no force where it is not positive
+  for (std::size_t i = 0; i < n; ++i) {
+    double f, s;
+    at_position(k - 2 + i, delta, f, s);
+    force += w[i] * f;
+    stiffness += w[i] * s;
+  }
+  if (!(force > 0.0)) force = stiffness = 0.0;
 }
 
 double PathContactTable::first_contact(double xi) const {
   std::size_t k;
   double t;
   locate(xi, k, t);
-  return t > 0.0 ? std::min(d_.first_contact[k], d_.first_contact[k + 1]) : d_.first_contact[k];
+  double w[6];
+  const std::size_t n = stencil(k, t, w);
+  const std::size_t first = n == 6 ? k - 2 : k;
+  double dc = d_.first_contact[first];
+  for (std::size_t i = 1; i < n; ++i) dc = std::min(dc, d_.first_contact[first + i]);
+  return dc;
+}
+
+bool PathContactTable::touches(double delta, double xi) const {
+  if (d_.interpolation == PathInterpolation::linear) return delta > first_contact(xi);
+  if (!(delta > first_contact(xi))) return false;
+  double f, s;
+  evaluate(delta, xi, f, s);
+  return f > 0.0;
 }
 
 double PathContactTable::static_approach(double load, double xi) const {
@@ -131,17 +184,49 @@ double PathContactTable::static_approach(double load, double xi) const {
       [first](double, double top) { return std::fabs(top - first); });
 }
 
+double PathContactTable::static_slope(double load, double xi, double width) const {
+  const double lo = std::max(xi - 0.5 * width, d_.position.front()), hi = xi + 0.5 * width;
+  if (!(hi > lo)) return 0.0;
+  constexpr int n = 21;
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double x = lo + (hi - lo) * i / (n - 1), y = static_approach(load, x);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
 PathContactData thinned_rows(const PathContactData& d, std::size_t every) {
   if (every < 1) throw std::invalid_argument("thinned_rows: every must be >= 1");
   const std::size_t nk = d.position.size(), nj = d.approach.size();
   if (nj / every < 1) throw std::invalid_argument("thinned_rows: fewer approaches than every");
-  PathContactData t{d.position, {}, d.first_contact, {}, {}};
+  PathContactData t{d.position, {}, d.first_contact, {}, {}, d.interpolation};
   for (std::size_t j = every - 1; j < nj; j += every) {
     t.approach.push_back(d.approach[j]);
     t.force.insert(t.force.end(), d.force.begin() + static_cast<std::ptrdiff_t>(j * nk),
                    d.force.begin() + static_cast<std::ptrdiff_t>((j + 1) * nk));
   }
   for (std::size_t r : d.rows) t.rows.push_back(r / every);  // a position with fewer rows than every: refused
+  return t;
+}
+
+PathContactData thinned_positions(const PathContactData& d, std::size_t every) {
+  if (every < 1) throw std::invalid_argument("thinned_positions: every must be >= 1");
+  const std::size_t nk = d.position.size(), nj = d.approach.size();
+  std::vector<std::size_t> keep;
+  for (std::size_t k = 0; k < nk; k += every) keep.push_back(k);
+  if (keep.back() != nk - 1) keep.push_back(nk - 1);  // the path's end stays covered
+  PathContactData t{{}, d.approach, {}, {}, {}, d.interpolation};
+  for (std::size_t k : keep) {
+    t.position.push_back(d.position[k]);
+    t.first_contact.push_back(d.first_contact[k]);
+    if (!d.rows.empty()) t.rows.push_back(d.rows[k]);
+  }
+  for (std::size_t j = 0; j < nj; ++j)
+    for (std::size_t k : keep) t.force.push_back(d.force[j * nk + k]);
   return t;
 }
 

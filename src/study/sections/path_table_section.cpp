@@ -16,9 +16,16 @@ SectionKeys<PathTableSection> PathTableSection::declare() {
                "times n, no new solve): what the band levels move by shows whether the table's approaches are fine "
                "enough (kernels/beam B43b); 1: every row",
                "1", 1, 4)
+      .choice("interpolation", &T::interpolation, "law = path: how the force is carried between tabulated positions",
+              PathInterpolation::cubic, kPathInterpolations)
+      .integer("positions_every", &T::positions_every,
+               "law = path: read every n-th position of the table, from the same cached table (its position spacing "
+               "times n, no new solve): what the band levels move by shows whether the positions are close enough "
+               "(kernels/beam B45b); 1: every position",
+               "1", 1, 8)
       .integer("step", &T::step,
-               "law = path: path step in cells between tabulated positions; 0: at most a quarter of the contact "
-               "radius",
+               "law = path: path step in cells between tabulated positions; 0: at most half the contact radius with "
+               "interpolation = cubic, a quarter with linear",
                "0", 0, 1000)
       .real("strip_length", &T::strip_length, "m",
             "law = path: length of the rough strip; 0: the ball's path in the run ((end - start) + one step) plus "
