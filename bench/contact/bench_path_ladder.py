@@ -67,8 +67,10 @@ def run_once(binary, settings, threads):
                     "loss": float(np.ravel(f["/contact/loss_of_contact_share"][:])[0])}
 
 
-def main():
-    parser = bench_record.record_script_parser(__doc__.split("\n")[0], ROOT / "build" / "werror" / "rollspec")
+def section_arguments(description):
+    """The section benches' command line (--bin, --record, --threads, --textures), checked: (arguments, binary,
+    textures)."""
+    parser = bench_record.record_script_parser(description, ROOT / "build" / "werror" / "rollspec")
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--textures", default="rig,rougher,untested",
                         help=f"comma-separated, of {', '.join(TEXTURES)}")
@@ -77,6 +79,11 @@ def main():
     for t in textures:
         if t not in TEXTURES:
             fail(f"--textures: {t!r} is not one of {', '.join(TEXTURES)}", 64)
+    return a, binary, textures
+
+
+def main():
+    a, binary, textures = section_arguments(__doc__.split("\n")[0])
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], {}
     for texture in textures:

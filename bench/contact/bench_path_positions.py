@@ -28,7 +28,7 @@ sys.path.insert(0, str(ROOT / "bench"))
 sys.path.insert(0, str(ROOT / "bench" / "contact"))
 sys.path.insert(0, str(ROOT / "python-post"))
 import bench_record  # noqa: E402
-from bench_path_ladder import COMMON, STUDY, TEXTURES  # noqa: E402  (one section, one set of textures)
+from bench_path_ladder import COMMON, STUDY, TEXTURES, section_arguments  # noqa: E402  (one section, its textures)
 from rollspec_post.script_main import fail, script_main  # noqa: E402  (one line per failure, no traceback)
 
 REFERENCE = "linear, a/4 (reference)"
@@ -42,10 +42,11 @@ SETTINGS = ("Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with {
             "ladder at 8 approaches. Plan's estimate: the path table's 'build about ... wall' of the same run.")
 NOTES = ("Band levels: /bands/level_db of the sensor mean, third octaves 100 Hz - 5 kHz, minus the reference's. "
          "From 250 Hz the differences are the interpolation's: B45 at a/4 passes the 5 kHz band at sinc^2 "
-         "(-0.1 dB in power), so the reference itself is low there. Below 250 Hz a 50 ms record of one "
-         "realisation holds one or two bins of the first mode's ringing (181 Hz), which moves by a few tenths of a "
-         "dB with any change of the positions (their aliasing of the strip's shortest wavelengths): the two rules "
-         "on the same positions differ there as much as the two tables do.")
+         "(-0.1 dB in power), so the reference itself is low there, as the cubic rule on its own positions "
+         "shows. Below 250 Hz a 50 ms record of one realisation holds one or two bins of the first mode (181 Hz), "
+         "and they move by tenths of a dB, more where the ball loses contact, with any change of the positions "
+         "or of the rule on the same positions; a wider fit of the start's slope does not move them, so they are "
+         "not the start's. Loss of contact: the share of samples without contact.")
 TABLE_LINE = re.compile(r"path table: (\d+) approaches .*?, (\d+) solves, (\d+) CG iterations, ([\d.]+) s wall")
 PLAN_LINE = re.compile(r"step (\d+) cells .*?build about ([\d.e+]+) s CPU, ([\d.e+]+) s wall")
 
@@ -66,15 +67,7 @@ def run_once(binary, settings, threads, cached=False):
 
 
 def main():
-    parser = bench_record.record_script_parser(__doc__.split("\n")[0], ROOT / "build" / "werror" / "rollspec")
-    parser.add_argument("--threads", type=int, default=2)
-    parser.add_argument("--textures", default="rig,rougher,untested",
-                        help=f"comma-separated, of {', '.join(TEXTURES)}")
-    a, binary = bench_record.record_script_arguments(parser)
-    textures = [t for t in a.textures.split(",") if t]
-    for t in textures:
-        if t not in TEXTURES:
-            fail(f"--textures: {t!r} is not one of {', '.join(TEXTURES)}", 64)
+    a, binary, textures = section_arguments(__doc__.split("\n")[0])
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], {}
     for texture in textures:

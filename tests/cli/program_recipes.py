@@ -39,6 +39,7 @@ RECIPES = {
                             "out": "file", "help": ["--help"]},
     "bench/contact/bench_answer_tables.py": RECORDS_WITH_BIN,
     "bench/contact/bench_path_ladder.py": RECORDS_WITH_BIN,
+    "bench/contact/bench_path_positions.py": RECORDS_WITH_BIN,
     "bench/contact/bench_contact_goals.py": {"argv": ["PY", "S", "--base", "BINDIR", "--new", "BINDIR"],
                                              "help": ["--help"], "binary": 3},
     "bench/contact/bench_plan_estimates.py": {"argv": ["PY", "S", "--binary", "BIN", "--json", "OUT"], "out": "file",
