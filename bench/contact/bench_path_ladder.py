@@ -7,7 +7,7 @@ it), in one run, at the answer: the seed 002 rig's band levels on a 50 mm sectio
       [--textures rig,rougher,untested] [--record bench/records/validation/path-ladder.json]
 
 Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with contact.law = path, the ball from 20 to 70 mm
-(a 51.2 mm strip; positions a/2 apart with the default cubic rule in xi, B45b), one realisation (every realisation rolls over the one strip), Welch segments
+(a 51.2 mm strip, 3439 positions a/4 apart with the linear rule in xi, B45), one realisation (every realisation rolls over the one strip), Welch segments
 of 512, each from an empty table directory, on the textures asked for: the rig's, a rougher one (rms x 2) and
 one no test uses (H = 0.7, roll-off 2 mm, rms 0.15 um). Per texture three tables of the same strip: the plane
 ladder at 8 approaches (its default before B43b), the first-contact ladder at 8 (the default) and at 16, the
@@ -38,14 +38,17 @@ TEXTURES = {
     "rougher": ["texture.rms=0.246e-6"],
     "untested": ["texture.hurst=0.7", "texture.rolloff_wavelength=2e-3", "texture.rms=0.15e-6"],
 }
+# The ladders are compared on B45's positions (a/4, linear in xi), the table they were measured on first;
+# bench_path_positions.py measures the positions and the rule in xi.
+LADDER_COMMON = COMMON + ["path_table.interpolation=linear"]
 METHODS = {"plane, 8": ["path_table.ladder=plane", "path_table.approaches=8"],
            "first contact, 8": ["path_table.ladder=first_contact", "path_table.approaches=8"],
            "first contact, 16 (reference)": ["path_table.ladder=first_contact", "path_table.approaches=16"]}
 REFERENCE = "first contact, 16 (reference)"
 TITLE = ("The path table's approach rows above each position's first contact (B43b) against one set from the "
          "mean plane (B43), at the answer")
-SETTINGS = ("Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with {common} (a 50 mm section: "
-            "positions 32 um apart, about a/2, with the default cubic rule in xi, B45b), OMP_NUM_THREADS={threads}, one run per table from an empty table directory. "
+SETTINGS = ("Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with {common} (a 50 mm section: 3439 "
+            "positions 14.6 um apart), OMP_NUM_THREADS={threads}, one run per table from an empty table directory. "
             "The reference is the first-contact ladder at 16 approaches (node spacing 3 delta_H / 16); its own error "
             "is not measured here.")
 NOTES = ("Band levels: /bands/level_db of the sensor mean, third octaves 100 Hz - 5 kHz, minus the reference's. The "
@@ -87,7 +90,7 @@ def main():
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], {}
     for texture in textures:
-        runs = {m: run_once(binary, COMMON + TEXTURES[texture] + keys, a.threads) for m, keys in METHODS.items()}
+        runs = {m: run_once(binary, LADDER_COMMON + TEXTURES[texture] + keys, a.threads) for m, keys in METHODS.items()}
         ref = runs[REFERENCE]
         sel = (ref["nominal"] >= 100) & (ref["nominal"] <= 5000)
         data[texture] = {"nominal_frequency": ref["nominal"][sel].tolist()}
@@ -113,7 +116,7 @@ def main():
         print(" | ".join(r))
     if a.record:
         bench_record.write_measured(a.record, binary, title=TITLE, argv=sys.argv,
-                                    settings=SETTINGS.format(common=", ".join(COMMON), threads=a.threads),
+                                    settings=SETTINGS.format(common=", ".join(LADDER_COMMON), threads=a.threads),
                                     columns=columns, rows=rows, other_cores=others,
                                     components=["contact", "beam", "engine"], notes=NOTES,
                                     data={"textures": data, "threads": a.threads})

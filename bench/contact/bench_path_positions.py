@@ -45,8 +45,8 @@ NOTES = ("Band levels: /bands/level_db of the sensor mean, third octaves 100 Hz 
          "(-0.1 dB in power), so the reference itself is low there, as the cubic rule on its own positions "
          "shows. Below 250 Hz a 50 ms record of one realisation holds one or two bins of the first mode (181 Hz), "
          "and they move by tenths of a dB, more where the ball loses contact, with any change of the positions "
-         "or of the rule on the same positions; a wider fit of the start's slope does not move them, so they are "
-         "not the start's. Loss of contact: the share of samples without contact.")
+         "or of the rule on the same positions (the start's slope is the chord of the first interval, a/4 or a/2 "
+         "long). Loss of contact: the share of samples without contact.")
 TABLE_LINE = re.compile(r"path table: (\d+) approaches .*?, (\d+) solves, (\d+) CG iterations, ([\d.]+) s wall")
 PLAN_LINE = re.compile(r"step (\d+) cells .*?build about ([\d.e+]+) s CPU, ([\d.e+]+) s wall")
 

@@ -44,7 +44,7 @@ struct ContactLaw {
   DampingRate rate = DampingRate::relative_velocity;
   bool allow_tension = false;                    // linearised only
   std::shared_ptr<const PathContactTable> path;  // path: P(delta, xi) of the strip (B41-B45), shared
-  double path_origin = 0.0;                      // path: physical xi of the table's ξ = 0, the start (m)
+  double path_origin = 0.0;                      // path: physical xi_0 of the table's position 0 (m)
   double path_start_width = 0.0;  // path: width of the start's slope fit (B46); 0: the first interval's chord
 };
 

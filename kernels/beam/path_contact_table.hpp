@@ -47,8 +47,8 @@ class PathContactTable {
   // δ with P(δ, ξ) = load > 0 (B46 static start): bracketing Newton on the monotone P.
   double static_approach(double load, double xi) const;
   // dδ_W/dξ at ξ (B46's start): the least-squares slope of static_approach(load, ·) at 21 points
-  // over [ξ − width/2, ξ + width/2] (cut at the first position), a derivative of the path's part the
-  // positions resolve, whatever their spacing.
+  // over [ξ − width/2, ξ + width/2] (cut at the first position, the start: one-sided there), a derivative of the
+  // path's part the positions resolve, whatever their spacing.
   double static_slope(double load, double xi, double width) const;
   // P at the tabulated position k (B44).
   void at_position(std::size_t k, double delta, double& force, double& stiffness) const;

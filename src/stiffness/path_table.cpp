@@ -61,15 +61,8 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
     surface.ny_origin.refuse("leaves a path-table window of " + std::to_string(g.window) +
                              " cells; allowed: 8 or more");
   const double step_length = static_cast<double>(g.step) * dx;
-  // The start lead_cells (about a) into the strip for every step (the same strip under the same
-  // path), with the positions that fit before it (B46's start slope over ±a/2, B45b's stencil) and
-  // as many more beyond the end.
-  g.lead_cells = 2 * std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(a / 2.0 / dx + 1e-9)));
-  g.lead = g.lead_cells / g.step;
-  const std::size_t after =  // at the start and after it, to one step (and `lead` more) beyond the end
-      static_cast<std::size_t>(std::ceil(path_length / step_length - 1e-9)) + 2 + g.lead;
-  g.positions = g.lead + after;
-  const std::size_t need = g.window + g.lead_cells + (after - 1) * g.step + 1;
+  g.positions = static_cast<std::size_t>(std::ceil(path_length / step_length - 1e-9)) + 2;  // one step beyond the end
+  const std::size_t need = g.window + (g.positions - 1) * g.step + 1;
   if (p.strip_length > 0.0) {
     g.nx = static_cast<std::size_t>(std::round(p.strip_length / dx));
     if (g.nx < need)
@@ -88,7 +81,8 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
   // 50 mm section of the seed 002 rig), each started from the row below and about half as dear
   // (1.95e-7: plane-ladder estimates were 1.76-2.03 x the wall on the rig's and a rougher section at
   // a/4 and a/2, bench/contact/bench_path_positions.py).
-  g.estimated_seconds = (g.ladder ? 1.95e-7 : 3.7e-7) * contact_box_work(g.base, g.window, radius) *
+  g.solve_seconds = 3.7e-7 * contact_box_work(g.base, g.window, radius);
+  g.estimated_seconds = (g.ladder ? 1.95e-7 / 3.7e-7 : 1.0) * g.solve_seconds *
                         static_cast<double>(g.positions * (g.approaches + (g.ladder ? 1 : 2)));
   const std::size_t chunk = contact::PathTableOptions{}.chunk_positions;
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + chunk - 1) / chunk)));
@@ -124,8 +118,7 @@ std::vector<const std::vector<double>*> columns(const PathTableData& t) {
 std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double radius, double e_star, double load) {
   std::ostringstream in;
   in << ball_inputs_text(ts, radius, e_star, load) << "\n\n[path_table]\nstrip_cells = " << g.nx
-     << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions << "\nlead = " << g.lead
-     << " positions before the start, " << g.lead_cells << " cells"
+     << "\nwindow = " << g.window << "\nstep = " << g.step << "\npositions = " << g.positions
      << "\napproaches = " << g.approaches << (g.ladder ? "\nladder = first contact (B43b)" : "")
      << "\nreach = " << io::exact_text(kReach)
      << "\ntop_force = " << io::exact_text(contact::PathTableOptions{}.top_force) << "\nmax_approaches = "
@@ -185,8 +178,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
   const texture::Surface strip = study_strip(ts, StripGrid{g.nx, g.ny, dx, g.base.derived_cell}, 0);
   const contact::Grid strip_grid{g.nx, g.ny, dx, dx}, window_grid{g.window, g.window, dx, dx};
   std::vector<double> positions;
-  const std::size_t first = g.window / 2 + g.lead_cells - g.lead * g.step;
-  for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(first + k * g.step));
+  for (std::size_t k = 0; k < g.positions; ++k) positions.push_back(strip_grid.x(g.window / 2 + k * g.step));
   contact::SolverOptions opts = ts.stiffness.solver;
   const contact::BallShape shape = ts.stiffness.shape;
   contact::PathTableOptions po;
@@ -232,8 +224,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
         ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   PathTableData d;
-  d.position = t.position;  // from the start, position `lead` (before it: < 0)
-  for (double& x : d.position) x -= t.position[g.lead];
+  d.position = from_first(t.position);
   d.approach = t.approach;
   d.first_contact = t.first_contact;
   d.force = t.force;

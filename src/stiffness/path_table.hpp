@@ -13,12 +13,8 @@
 //          half-width sqrt(2 R (3.3 δ_H + 14 σ)) (the strip's highest point and deepest valley
 //          within 7 σ each), never less than 2.6 a;
 //   width  the window, or [surface] ny;
-//   lead   the start stands lead_cells = 2 × (a/2 in whole cells) into the strip, whatever the step,
-//          so that every step sees the same strip under the same path; the `lead` positions that
-//          fit before it (and as many beyond the end's one step) give the start its slope over ±a/2
-//          (kernels/beam B46) and B45b its six positions at the path's start and end;
-//   length lead_cells, the ball's path in the run, (end − start) + (1 + lead) steps, plus the
-//          window, or [path_table] strip_length (refused when shorter than that).
+//   length the ball's path in the run, (end − start) + one step, plus the window, or
+//          [path_table] strip_length (refused when shorter than that).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -40,19 +36,18 @@ struct PathTableGeometry {
   std::size_t nx = 0, ny = 0;      // strip (cells)
   std::size_t window = 0;          // solver window (cells, square)
   std::size_t step = 0;            // path step (cells)
-  std::size_t positions = 0;       // path positions, `lead` of them before the start
-  std::size_t lead = 0;            // positions before the start (and added beyond the end)
-  std::size_t lead_cells = 0;      // cells from the first position's window centre to the start
+  std::size_t positions = 0;       // path positions
   std::size_t approaches = 0;      // J
   bool ladder = false;             // B43b: each position's own approaches above its first contact
   double path_length = 0.0;        // the ball's path in the run (m)
+  double solve_seconds = 0.0;      // CPU seconds of one plane-ladder solve (B43, contact_box_work)
   double estimated_seconds = 0.0;  // CPU seconds of the build (rough)
   int threads = 1;                 // threads the build uses (rows in parallel)
   std::string describe() const;
 };
 
 struct PathTableData : TableData {
-  std::vector<double> position;       // ξ_k (m, path coordinate from the traverse's start; < 0 before it)
+  std::vector<double> position;       // ξ_k − ξ_0 (m, path coordinate from the traverse's start)
   std::vector<double> approach;       // δ_j (m); B43b: the offsets s_j above δ_c(ξ_k)
   std::vector<double> first_contact;  // δ_c(ξ_k) (m)
   std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k]; B43b: NaN above rows[k]

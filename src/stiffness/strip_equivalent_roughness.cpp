@@ -42,7 +42,7 @@ std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double
 
 double estimated_seconds(const PathTableGeometry& g) {
   // The path table's per-solve cost (path_table_geometry), kSolvesPerPosition solves per position.
-  return g.estimated_seconds / static_cast<double>(g.approaches) * kSolvesPerPosition;
+  return g.solve_seconds * static_cast<double>(g.positions) * kSolvesPerPosition;
 }
 
 }  // namespace

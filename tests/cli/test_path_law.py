@@ -119,10 +119,12 @@ def test_interpolation_in_xi_cubic_is_flat_where_linear_is_sinc_squared(tmp_path
     at every position and at every other one (positions_every, no new solve), with each rule. B45's linear
     interpolation passes the force's roughness at wavenumber ratio r = f dxi / v with the power gain sinc^4(r) (its
     amplitude gain sinc^2): its top band falls by that against the cubic convolution, and falls again when the
-    positions stand twice as far apart; B45b's band levels hardly move (measured 0.017-0.031 dB from 2 kHz)."""
+    positions stand twice as far apart; B45b's band levels hardly move."""
+    # 20 mm at 1 m/s with its first 5 ms left out: the two rules start differently (B46: B45's chord of
+    # the first interval, B45b's slope over [0, a/2]), and the start's ringing is not the interpolation's.
     rough = ["texture.rms=0.12e-6", "surface.spacing=12e-6", "texture.short_wavelength=24e-6", "ball.start=0.1",
-             "ball.end=0.106", "spectrum.segment=128", "spectrum.band_min=400", "spectrum.band_max=5000",
-             "study.realisations=1", "path_table.step=1"]
+             "ball.end=0.12", "spectrum.segment=128", "spectrum.skip_start=0.005", "spectrum.band_min=400",
+             "spectrum.band_max=5000", "study.realisations=1", "path_table.step=1"]
     level = {}
     for rule in ("linear", "cubic"):
         for every in (1, 2):

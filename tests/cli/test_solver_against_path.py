@@ -16,7 +16,8 @@ from conftest import EX_CONFIG, assert_refused, band_levels, rig_1ms
 
 STRIP = ["surface.spacing=12e-6", "texture.short_wavelength=24e-6", "ball.start=0.1", "ball.end=0.13",
          "spectrum.segment=512", "spectrum.band_min=100", "spectrum.band_max=5000", "study.realisations=1"]
-PATH = ["contact.law=path", "path_table.approaches=16"]
+# The linear rule's positions (a/4), which line = strip samples h_eq at.
+PATH = ["contact.law=path", "path_table.approaches=16", "path_table.interpolation=linear"]
 SOLVER = ["contact.law=hertz", "contact.filter=solver", "equivalent_roughness.line=strip"]
 
 

@@ -81,11 +81,14 @@ void take_path_table(const BallOnBeamSettings& b, const stiffness::PathTableData
   }
   d.interpolation = b.path_table.interpolation == study::PathInterpolation::cubic ? beam::PathInterpolation::cubic
                                                                                   : beam::PathInterpolation::linear;
+  const bool cubic = d.interpolation == beam::PathInterpolation::cubic;
   const auto positions_every = static_cast<std::size_t>(b.path_table.positions_every);
   if (positions_every > 1) d = beam::thinned_positions(d, positions_every);
   c.law.path = std::make_shared<const beam::PathContactTable>(std::move(d));
   c.law.path_origin = b.model.traverse.x_start;
-  c.law.path_start_width = b.contact_half_width;  // the start's slope over ±a/2 (B46), inside the lead positions
+  // B46's start: with B45b, the slope over [0, a/2] whatever the step; B45 keeps its first interval's
+  // chord, the point laws' rule (line = strip starts the same way).
+  if (cubic) c.law.path_start_width = b.contact_half_width;
   c.static_compression = beam::path_table_static_approach(*c.law.path, b.weight());
 }
 

@@ -63,7 +63,7 @@ class BallOnBeam final : public EnsembleScene {
   void add_pipeline_stages(const stiffness::TableStudy& tables);
 
   // The path table's grid along the ball's whole path (law = path, and line = strip on its grid).
-  stiffness::PathTableGeometry path_grid() const;
+  stiffness::PathTableGeometry path_grid(bool strip_line = false) const;
 
   // The strip's grid: the study's keys where set, else derived from the contact radius and the
   // texture; the path step at most v / f_s so F0 (and h_eq) reach the output's Nyquist frequency.

@@ -144,8 +144,9 @@ void BallOnBeam::add_pipeline_stages(const stiffness::TableStudy& tables) {
                               : "only the linearised law uses F0"}});
   }
   if (solver_filter() && b_.strip_line) {
-    // line = strip: h_eq of strip 0 on the path table's grid and positions (the strip law = path uses).
-    const stiffness::PathTableGeometry grid = path_grid();
+    // line = strip: h_eq of strip 0 on the path table's grid and strip (the strip law = path uses), at
+    // the linear rule's positions (a/4: the point law's line is linear between them).
+    const stiffness::PathTableGeometry grid = path_grid(true);
     add_contact_table_stage("equivalent_roughness", tables, grid, &stiffness::strip_equivalent_roughness_cached_table,
                             &stiffness::build_strip_equivalent_roughness, &BallOnBeam::use_strip_equivalent_roughness,
                             stiffness::strip_equivalent_roughness_describe(grid));
@@ -176,9 +177,12 @@ void BallOnBeam::add_pipeline_stages(const stiffness::TableStudy& tables) {
                               : "[output] reference = false"}});
 }
 
-// The path table's grid along the ball's whole path (law = path, and line = strip on its grid).
-stiffness::PathTableGeometry BallOnBeam::path_grid() const {
-  return stiffness::path_table_geometry(b_.path_table, b_.blocked_force, b_.strip_surface, b_.texture_psd,
+// The path table's grid along the ball's whole path (law = path, and line = strip on its grid, with
+// the linear rule's step).
+stiffness::PathTableGeometry BallOnBeam::path_grid(bool strip_line) const {
+  study::PathTableSection section = b_.path_table;
+  if (strip_line) section.interpolation = study::PathInterpolation::linear;
+  return stiffness::path_table_geometry(section, b_.blocked_force, b_.strip_surface, b_.texture_psd,
                                         b_.model.contact.radius, b_.model.contact.effective_modulus, b_.weight(),
                                         b_.model.traverse.x_end - b_.model.traverse.x_start);
 }
