@@ -66,7 +66,8 @@ def test_a_reference_that_cannot_fit_is_refused_before_the_ensemble(tmp_path):
 
 def test_path_table_grows_with_approaches_times_positions(tmp_path):
     study = copied(tmp_path, "seed002-rig-1ms.ini")
-    path = ["contact.law=path", "surface.spacing=4e-6", "texture.short_wavelength=8e-6"]
+    # B45's positions (a/4): twice the cubic rule's, over a million table cells at 64 approaches.
+    path = ["contact.law=path", "surface.spacing=4e-6", "texture.short_wavelength=8e-6", "path_table.interpolation=linear"]
     e8, _ = estimate(study, *path, "path_table.approaches=8")
     e64, line = estimate(study, *path, "path_table.approaches=64")
     m = re.search(r"path table, 64 approaches x (\d+) positions", line)
