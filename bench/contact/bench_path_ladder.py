@@ -85,6 +85,17 @@ def section_arguments(description):
     return a, binary, textures
 
 
+def print_and_record(a, binary, title, settings, notes, columns, rows, others, data):
+    """The section benches' table on stdout, and in a record where --record asks for one."""
+    for r in rows:
+        print(" | ".join(r))
+    if a.record:
+        bench_record.write_measured(a.record, binary, title=title, argv=sys.argv, settings=settings, columns=columns,
+                                    rows=rows, other_cores=others, components=["contact", "beam", "engine"],
+                                    notes=notes, data={"textures": data, "threads": a.threads})
+        print(f"wrote {a.record}")
+
+
 def main():
     a, binary, textures = section_arguments(__doc__.split("\n")[0])
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
@@ -112,15 +123,8 @@ def main():
     columns = ["texture", "table", "table wall (s)", "over the plane's", "solves (CG iterations each)",
                "band level max |difference| from the reference (dB)", "the same from 250 Hz (dB)",
                "loss of contact"]
-    for r in rows:
-        print(" | ".join(r))
-    if a.record:
-        bench_record.write_measured(a.record, binary, title=TITLE, argv=sys.argv,
-                                    settings=SETTINGS.format(common=", ".join(LADDER_COMMON), threads=a.threads),
-                                    columns=columns, rows=rows, other_cores=others,
-                                    components=["contact", "beam", "engine"], notes=NOTES,
-                                    data={"textures": data, "threads": a.threads})
-        print(f"wrote {a.record}")
+    print_and_record(a, binary, TITLE, SETTINGS.format(common=", ".join(LADDER_COMMON), threads=a.threads), NOTES,
+                     columns, rows, others, data)
 
 
 if __name__ == "__main__":

@@ -28,7 +28,7 @@ sys.path.insert(0, str(ROOT / "bench"))
 sys.path.insert(0, str(ROOT / "bench" / "contact"))
 sys.path.insert(0, str(ROOT / "python-post"))
 import bench_record  # noqa: E402
-from bench_path_ladder import COMMON, STUDY, TEXTURES, section_arguments  # noqa: E402  (one section, its textures)
+from bench_path_ladder import COMMON, STUDY, TEXTURES, print_and_record, section_arguments  # noqa: E402,E501
 from rollspec_post.script_main import fail, script_main  # noqa: E402  (one line per failure, no traceback)
 
 REFERENCE = "linear, a/4 (reference)"
@@ -103,15 +103,8 @@ def main():
     columns = ["texture", "table", "step (cells)", "solves", "table wall (s)", "over the reference's",
                "plan's estimate over the wall", "band level max |difference| from the reference (dB)",
                "the same from 250 Hz (dB)", "at 5 kHz (dB)", "loss of contact"]
-    for r in rows:
-        print(" | ".join(r))
-    if a.record:
-        bench_record.write_measured(a.record, binary, title=TITLE, argv=sys.argv,
-                                    settings=SETTINGS.format(common=", ".join(COMMON), threads=a.threads),
-                                    columns=columns, rows=rows, other_cores=others,
-                                    components=["contact", "beam", "engine"], notes=NOTES,
-                                    data={"textures": data, "threads": a.threads})
-        print(f"wrote {a.record}")
+    print_and_record(a, binary, TITLE, SETTINGS.format(common=", ".join(COMMON), threads=a.threads), NOTES,
+                     columns, rows, others, data)
 
 
 if __name__ == "__main__":
