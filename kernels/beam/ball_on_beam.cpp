@@ -65,9 +65,9 @@ InitialState static_initial_state(const BallOnBeamModel& m, const ContactModel& 
   s.y[2 * n] = w1 + h - delta;
   // The path law (B46) has no line: its strip enters through P(δ, ξ), and a ball that rides it at
   // constant load follows w1 − δ_W(ξ), so its rate carries −v dδ_W/dξ where the point laws' carries
-  // v dh (B22). dδ_W/dξ over a contact width about the start (PathContactTable::static_slope): one
-  // interval's chord changes with the positions' step and rings the beam's first mode for the whole
-  // record; the slope over a width the positions resolve does not.
+  // v dh (B22). B45b: dδ_W/dξ fitted over [0, a/2] (PathContactTable::static_slope), since one
+  // interval's chord changes with the step and rings the beam's first mode for the whole record;
+  // B45: the first interval's chord, the point laws' rule.
   double dpath = 0.0;
   if (contact.path()) {
     const ContactLaw& law = contact.law();

@@ -123,21 +123,11 @@ void PathContactTable::evaluate(double delta, double xi, double& force, double& 
   double t;
   locate(xi, k, t);
   double w[6];
-  const std::size_t n = stencil(k, t, w);
-  if (n < 6) {
-    at_position(k, delta, force, stiffness);
-    if (t > 0.0) {  // B45
-      double f1, k1;
-      at_position(k + 1, delta, f1, k1);
-      force = (1.0 - t) * force + t * f1;
-      stiffness = (1.0 - t) * stiffness + t * k1;
-    }
-    return;
-  }
-  force = stiffness = 0.0;  // B45b: the blend, no force where it is not positive
+  const std::size_t n = stencil(k, t, w), first = n == 6 ? k - 2 : k;
+  force = stiffness = 0.0;  // the blend of B45 or B45b; no force where it is not positive (B45b)
   for (std::size_t i = 0; i < n; ++i) {
     double f, s;
-    at_position(k - 2 + i, delta, f, s);
+    at_position(first + i, delta, f, s);
     force += w[i] * f;
     stiffness += w[i] * s;
   }
