@@ -67,16 +67,17 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   std::vector<double> p;
   // ER-1 in load control (README Eq. 17): one solve per position, the approach its multiplier.
   // A solve that does not converge is redone by the Newton of solve_force from the same start.
-  auto solve = [&](ContactSolver& s, const std::vector<double>& gap, std::vector<double>& field, double hint) {
+  auto solve = [&](ContactSolver& s, const std::vector<double>& gap, std::vector<double>& field, double hint,
+                   const SolverOptions& o) {
     std::vector<double> start = field;
-    ContactResult r = s.solve_at_force(gap, load, field, options, hint);
+    ContactResult r = s.solve_at_force(gap, load, field, o, hint);
     r.converged = r.converged && std::fabs(r.force - load) <= path_options.load_tolerance * load;
     if (!r.converged) {
       ForceControlOptions c = control;
       c.start_approach = hint;
       field = start;
       const int first = r.iterations;
-      r = solve_force(s, gap, load, field, options, c);
+      r = solve_force(s, gap, load, field, o, c);
       r.iterations += first;
     }
     return r;
@@ -91,7 +92,7 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
     return s.solve(gap, approach, copy, o).stiffness;
   };
   const std::size_t every = path_options.stiffness_every;
-  const ContactResult smooth = solve(solver, flat.gap(0), p, std::numeric_limits<double>::quiet_NaN());
+  const ContactResult smooth = solve(solver, flat.gap(0), p, std::numeric_limits<double>::quiet_NaN(), options);
   out.smooth_approach = smooth.approach;
   out.smooth_contact_area = smooth.contact_area;
   out.smooth_stiffness =
@@ -102,8 +103,14 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
   // One chunk [k0, k1): from the flat field and δ_smooth, then BF-6 and the previous δ_eq.
   const std::vector<double> p_smooth = p;
   std::vector<ContactResult> results(positions.size());
+  // ER-8: the loose solves' options, and each checked position's full-tolerance approach (NaN elsewhere).
+  const bool loose = path_options.answer_tolerance > 0.0;
+  SolverOptions loose_options = options;
+  if (loose) loose_options.tolerance = std::max(options.tolerance, path_options.answer_tolerance);
+  const std::size_t stride = loose ? path_options.check_stride : 0;
+  std::vector<double> checked(positions.size(), std::numeric_limits<double>::quiet_NaN());
   auto run_chunk = [&](ContactSolver& chunk_solver, std::size_t k0, std::size_t k1) {
-    std::vector<double> field = p_smooth;
+    std::vector<double> field = p_smooth, check_field;
     for (std::size_t k = k0; k < k1; ++k) {
       double hint = out.smooth_approach;
       if (path_options.warm_start) {
@@ -113,7 +120,13 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
       } else {
         field.assign(chunk_solver.grid().size(), 0.0);
       }
-      results[k] = solve(chunk_solver, window.gap(k), field, hint);
+      results[k] = solve(chunk_solver, window.gap(k), field, hint, loose_options);
+      if (stride > 0 && k % stride == stride / 2) {  // ER-8: the same position to the full tolerance
+        check_field = field;
+        const ContactResult full = solve(chunk_solver, window.gap(k), check_field, results[k].approach, options);
+        checked[k] = full.approach;
+        results[k].iterations += full.iterations;
+      }
       results[k].stiffness = every > 0 && k % every == 0
                                  ? stiffness_at(chunk_solver, window.gap(k), results[k].approach, field)
                                  : std::numeric_limits<double>::quiet_NaN();
@@ -139,6 +152,11 @@ EquivalentRoughness equivalent_roughness(ContactSolver& solver, const Grid& stri
     record(out, k, results[k]);
   }
   finish(out);
+  for (std::size_t k = 0; k < n; ++k)
+    if (std::isfinite(checked[k])) {  // ER-8: h_full − h_loose = δ_loose − δ_full
+      out.check_index.push_back(k);
+      out.check_residual.push_back(results[k].approach - checked[k]);
+    }
   return out;
 }
 

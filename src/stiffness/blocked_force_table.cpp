@@ -10,7 +10,6 @@
 #include <memory>
 #include <sstream>
 
-#include "kernels/contact/answer_error.hpp"
 #include "kernels/contact/blocked_force.hpp"
 #include "kernels/contact/version.hpp"
 #include "kernels/spectral/welch.hpp"
@@ -75,23 +74,9 @@ std::string BlockedForceTable::checksum() const {
 double BlockedForceTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }
 
 double BlockedForceTable::band_error_db(double lower, double upper, std::size_t first_bin) const {
-  const std::size_t m = check_residual.size(), n = force.size();
-  if (m < 2 || n < 2 || psd_wavenumber.size() < 2) return std::numeric_limits<double>::quiet_NaN();
-  double mean = 0.0, ss = 0.0;
-  for (double r : check_residual) mean += r / static_cast<double>(m);
-  for (double r : check_residual) ss += (r - mean) * (r - mean);
-  // The residuals' spread about their mean: a constant offset (the approach's error) leaves the
-  // fluctuation's PSD alone.
-  const double variance = ss / static_cast<double>(m - 1), step = position[1] - position[0];
-  // S_e per rad/m of a white error (BF-9c), on the table's own Welch plan (half-overlapping Hann), whose
-  // frequency unit is cycles/m.
-  const double error_psd = 2.0 * variance * step / (2.0 * M_PI);
-  spectral::WelchConfig wc;
-  wc.sample_rate = 1.0 / step;
-  wc.segment = static_cast<std::size_t>(std::lround(2.0 * M_PI / ((psd_wavenumber[1] - psd_wavenumber[0]) * step)));
-  wc.overlap = wc.segment / 2;
-  return contact::white_error_band_db(wc, n, psd, std::min(first_bin, psd.size() - 1), error_psd, lower / (2.0 * M_PI),
-                                      upper / (2.0 * M_PI));
+  if (position.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  return checked_band_error_db(check_residual, position[1] - position[0], force.size(), psd_wavenumber, psd, lower,
+                               upper, first_bin);
 }
 
 namespace {

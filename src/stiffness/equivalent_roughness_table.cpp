@@ -33,6 +33,8 @@ namespace {
 // Positions per warm-started chunk: fixed, so the table has the same bits for any thread count
 // (EquivalentRoughnessOptions::chunk_positions).
 constexpr std::size_t kChunkPositions = 64;
+// ER-8: every 16th position checked at the full tolerance (BF-9's stride).
+constexpr std::size_t kCheckStride = 16;
 // CPU seconds per position: one load-controlled solve (contact README Eq. 17) on a 144^2 window, scaled
 // to other windows as the padded FFT product, N log2 N with N = 4 window^2. The window cannot see how
 // far a texture's listed cells reach, so on three textures (bench/contact/bench_plan_estimates.py: the
@@ -53,6 +55,10 @@ std::string inputs_text(const TableStudy& ts, const BlockedForceGeometry& g, dou
      << "\nwindow = " << g.window << "\nstep = " << g.step << "\nsegment = " << g.segment
      << "\nchunk_positions = " << kChunkPositions << "\nsolve = load control\noutputs = h_eq, k_eq\nload_tolerance = "
      << io::exact_text(strip_load_tolerance(ts.stiffness.solver)) << "\n";
+  // ER-8 enters only when set: the reference table's hash is unchanged.
+  if (ts.equivalent_roughness.answer_tolerance > 0.0)
+    in << "answer_tolerance = " << io::exact_text(ts.equivalent_roughness.answer_tolerance)
+       << "\ncheck_stride = " << kCheckStride << "\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.cell, g.derived_cell});
   return in.str();
 }
@@ -68,6 +74,10 @@ const TableKind kEquivalentRoughnessTableKind = {kEquivalentRoughnessFileType,
 std::string EquivalentRoughnessTable::checksum() const {
   std::uint64_t h = column_hash(columns(*this));
   for (double v : {smooth_approach, smooth_stiffness, load, strips}) h = io::fnv1a64(&v, sizeof v, h);
+  if (!check_position.empty()) {  // ER-8 only: the reference table's checksum is unchanged
+    h = column_hash({&check_position, &check_residual}, h);
+    h = io::fnv1a64(&answer_tolerance, sizeof answer_tolerance, h);
+  }
   return io::hex16(h);
 }
 
@@ -83,6 +93,14 @@ double EquivalentRoughnessTable::stiffness_ratio() const {
 }
 
 double EquivalentRoughnessTable::psd_at(double k) const { return path_psd_at(psd_wavenumber, psd, k); }
+
+double EquivalentRoughnessTable::band_error_db(double lower, double upper, std::size_t first_bin) const {
+  if (position.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  // The PSD is the mean over the strips: the samples behind it are every strip's.
+  const auto samples = static_cast<std::size_t>(strips) * position.size();
+  return checked_band_error_db(check_residual, position[1] - position[0], samples, psd_wavenumber, psd, lower, upper,
+                               first_bin);
+}
 
 double equivalent_roughness_seconds(const TableStudy& ts, const BlockedForceGeometry& g) {
   const double n2 = 4.0 * static_cast<double>(g.window) * static_cast<double>(g.window), n144 = 4.0 * 144.0 * 144.0;
@@ -133,6 +151,11 @@ void EquivalentRoughnessTable::load_from(const io::Hdf5Reader& r) {
   smooth_stiffness = r.double_attribute("/equivalent_roughness", "smooth_stiffness");
   load = r.double_attribute("/equivalent_roughness", "load");
   strips = r.double_attribute("/equivalent_roughness", "strips");
+  if (r.exists("/equivalent_roughness/check_position")) {
+    check_position = r.read("/equivalent_roughness/check_position");
+    check_residual = r.read("/equivalent_roughness/check_residual");
+    answer_tolerance = r.double_attribute("/equivalent_roughness", "answer_tolerance");
+  }
 }
 
 void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
@@ -152,6 +175,13 @@ void EquivalentRoughnessTable::save_to(io::Hdf5Writer& w) const {
   w.attribute("/equivalent_roughness", "smooth_stiffness", smooth_stiffness);
   w.attribute("/equivalent_roughness", "load", load);
   w.attribute("/equivalent_roughness", "strips", strips);
+  if (!check_position.empty()) {
+    w.write("/equivalent_roughness/check_position", {check_position.size()}, check_position.data(), "m",
+            "positions solved again to the full tolerance (contact README ER-8), every strip's in strip order");
+    w.write("/equivalent_roughness/check_residual", {check_residual.size()}, check_residual.data(), "m",
+            "h_eq of the full-tolerance solve minus the tabulated h_eq there (ER-8)");
+    w.attribute("/equivalent_roughness", "answer_tolerance", answer_tolerance);
+  }
 }
 
 CachedTable equivalent_roughness_cached_table(const TableStudy& ts, const BlockedForceGeometry& g, double radius,
@@ -220,6 +250,8 @@ PathSetup path_setup(const TableStudy& ts, const BlockedForceGeometry& geo) {
   p.po.chunk_positions = kChunkPositions;
   // ER-1 to the solves' own accuracy (strip_load_tolerance).
   p.po.load_tolerance = strip_load_tolerance(p.opts);
+  p.po.answer_tolerance = ts.equivalent_roughness.answer_tolerance;
+  p.po.check_stride = kCheckStride;
   return p;
 }
 }  // namespace
@@ -268,6 +300,7 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
   t.position = positions;
   t.load = load;
   t.strips = static_cast<double>(n_strips);
+  t.answer_tolerance = ts.equivalent_roughness.answer_tolerance;
   contact::ContactSolver solver(setup.window_grid, e_star);
   const auto start = std::chrono::steady_clock::now();
   ensemble::Progress progress("equivalent roughness strips", n_strips, quiet);  // bar and ETA
@@ -286,6 +319,10 @@ EquivalentRoughnessTable build_equivalent_roughness(const TableStudy& ts, const 
     t.smooth_stiffness = r.smooth_stiffness;
     t.height.insert(t.height.end(), r.height.begin(), r.height.end());
     t.stiffness.insert(t.stiffness.end(), r.stiffness.begin(), r.stiffness.end());
+    for (std::size_t j = 0; j < r.check_index.size(); ++j) {
+      t.check_position.push_back(positions[r.check_index[j]]);
+      t.check_residual.push_back(r.check_residual[j]);
+    }
     if (!quiet)
       std::fprintf(stderr, "%sequivalent roughness: strip %zu of %zu, %d CG iterations, %.3g s wall\n",
                    ensemble::rank_prefix().c_str(), si + 1, n_strips, r.iterations,

@@ -26,6 +26,15 @@ struct EquivalentRoughnessTable : TableData {
   std::vector<double> psd_wavenumber, psd;  // rad/m, m^3 (one-sided PSD of h_eq - mean, strip mean)
   std::vector<double> stiffness;            // k_eq (N/m) at delta_eq, strips x positions (ER-7)
   double smooth_approach = 0.0, smooth_stiffness = 0.0, load = 0.0, strips = 0.0;
+  // contact ER-8 (answer_tolerance > 0; empty / 0 for the reference): the solves' tolerance, the positions
+  // solved again to the full tolerance (m, every strip's in strip order) and h_eq there minus the tabulated
+  // h_eq (m): the table's error measured as it ran.
+  double answer_tolerance = 0.0;
+  std::vector<double> check_position, check_residual;
+  // BF-9c on ER-8's residuals: the estimated rms error (dB) of the h_eq PSD averaged over the wavenumbers
+  // [lower, upper] (rad/m); a band below bin `first_bin` takes that bin's; NaN without checks (the
+  // reference table) or beyond the PSD's bins.
+  double band_error_db(double lower, double upper, std::size_t first_bin) const;
   // rho of ER-7: the strips' mean k_eq over the flat strip's k at the weight (same discretisation).
   double stiffness_ratio() const;
   // G of h_eq at wavenumber k, as BlockedForceTable::psd_at: log-log between bins, the first bin's

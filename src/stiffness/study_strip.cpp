@@ -7,7 +7,9 @@
 #include <memory>
 #include <sstream>
 
+#include "kernels/contact/answer_error.hpp"
 #include "kernels/contact/version.hpp"
+#include "kernels/spectral/welch.hpp"
 #include "src/ensemble/checkpoint.hpp"
 #include "src/error.hpp"
 #include "src/stiffness/table_text.hpp"
@@ -69,6 +71,25 @@ double path_psd_at(const std::vector<double>& psd_wavenumber, const std::vector<
   const double ka = psd_wavenumber[j - 1], kb = psd_wavenumber[j], ga = psd[j - 1], gb = psd[j];
   if (ga <= 0.0 || gb <= 0.0) return ga + (gb - ga) * (k - ka) / (kb - ka);
   return ga * std::pow(k / ka, std::log(gb / ga) / std::log(kb / ka));
+}
+
+double checked_band_error_db(const std::vector<double>& residuals, double step, std::size_t samples,
+                             const std::vector<double>& psd_wavenumber, const std::vector<double>& psd, double lower,
+                             double upper, std::size_t first_bin) {
+  const std::size_t m = residuals.size();
+  if (m < 2 || samples < 2 || psd_wavenumber.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  double mean = 0.0, ss = 0.0;
+  for (double r : residuals) mean += r / static_cast<double>(m);
+  for (double r : residuals) ss += (r - mean) * (r - mean);
+  // S_e per rad/m of a white error (BF-9c), on the table's own Welch plan, whose frequency unit is cycles/m.
+  const double variance = ss / static_cast<double>(m - 1);
+  const double error_psd = 2.0 * variance * step / (2.0 * M_PI);
+  spectral::WelchConfig wc;
+  wc.sample_rate = 1.0 / step;
+  wc.segment = static_cast<std::size_t>(std::lround(2.0 * M_PI / ((psd_wavenumber[1] - psd_wavenumber[0]) * step)));
+  wc.overlap = wc.segment / 2;
+  return contact::white_error_band_db(wc, samples, psd, std::min(first_bin, psd.size() - 1), error_psd,
+                                      lower / (2.0 * M_PI), upper / (2.0 * M_PI));
 }
 
 double strip_load_tolerance(const contact::SolverOptions& options) {

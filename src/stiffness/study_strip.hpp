@@ -37,6 +37,15 @@ std::string ball_inputs_text(const TableStudy& ts, double radius, double effecti
 // log-log between bins (linear where a bin is 0), the first bin's level below it, 0 above the last.
 double path_psd_at(const std::vector<double>& wavenumbers, const std::vector<double>& psd, double k);
 
+// contact BF-9c for a strip table checked as it ran (BF-9, ER-8): the estimated rms error (dB) of its path
+// PSD (per rad/m, `psd_wavenumber` from a half-overlapping Hann Welch plan at `step` m) averaged over the
+// wavenumbers [lower, upper] (rad/m), the check residuals taken as a white error about their mean (a constant
+// offset leaves the fluctuation's PSD alone); `samples`: the path samples behind the PSD (its degrees of
+// freedom); a band below bin `first_bin` takes that bin's. NaN with fewer than 2 residuals or beyond the bins.
+double checked_band_error_db(const std::vector<double>& residuals, double step, std::size_t samples,
+                             const std::vector<double>& psd_wavenumber, const std::vector<double>& psd, double lower,
+                             double upper, std::size_t first_bin);
+
 // |P - W| <= tolerance * W of the equivalent-roughness solves (ER-1) for solves stopped at the
 // study's complementarity error eps (README Eq. 9): the force of such a solve is known to about
 // k eps g_ref ~ 1.5 eps (g_ref / delta) W, several eps on a rough strip (g_ref, the largest

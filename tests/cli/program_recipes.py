@@ -37,6 +37,7 @@ RECIPES = {
                                  "tree": ["bench", "src", "kernels", "python-post/rollspec_post"]},
     "bench/record_csv.py": {"argv": ["PY", "S", "--record", "OUT", "--title", "t", "--describe", "d", "--", "true"],
                             "out": "file", "help": ["--help"]},
+    "bench/contact/bench_answer_filter.py": RECORDS_WITH_BIN,
     "bench/contact/bench_answer_tables.py": RECORDS_WITH_BIN,
     "bench/contact/bench_path_ladder.py": RECORDS_WITH_BIN,
     "bench/contact/bench_path_positions.py": RECORDS_WITH_BIN,

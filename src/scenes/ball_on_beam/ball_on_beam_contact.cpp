@@ -133,6 +133,7 @@ double take_equivalent_stiffness(const BallOnBeamSettings& b, const stiffness::E
 void take_equivalent_roughness_psd(const BallOnBeamSettings& b, const stiffness::EquivalentRoughnessTable& t,
                                    ResolvedContact& c) {
   auto table = std::make_shared<const stiffness::EquivalentRoughnessTable>(t);
+  c.equivalent = table;
   texture::Psd low = b.texture_psd;
   try {
     low = iso2d_line_psd(b);
@@ -192,6 +193,16 @@ double blocked_force_time_psd(const BallOnBeamSettings& b, const stiffness::Bloc
 std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t,
                                                 const std::vector<spectral::Band>& bands) {
   const double to_k = 2.0 * M_PI / b.model.traverse.speed;  // D-2: k = 2 pi f / v
+  std::vector<double> out;
+  for (const spectral::Band& band : bands)
+    out.push_back(t.band_error_db(band.lower * to_k, band.upper * to_k, kAnchorBin));
+  return out;
+}
+
+std::vector<double> equivalent_roughness_band_error_db(const BallOnBeamSettings& b,
+                                                       const stiffness::EquivalentRoughnessTable& t,
+                                                       const std::vector<spectral::Band>& bands) {
+  const double to_k = 2.0 * M_PI / b.model.traverse.speed;
   std::vector<double> out;
   for (const spectral::Band& band : bands)
     out.push_back(t.band_error_db(band.lower * to_k, band.upper * to_k, kAnchorBin));

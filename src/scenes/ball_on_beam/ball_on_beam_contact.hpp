@@ -26,6 +26,8 @@ struct ResolvedContact {
   texture::Psd line_psd;                 // what a synthesised line is drawn from (filter = solver: h_eq's PSD)
   beam::UniformSamples strip_line;       // [equivalent_roughness] line = strip: h_eq of strip 0 along the path
   stiffness::BlockedForceTable blocked;  // blocked_force = solver: k0 and the PSD of F0 along the path
+  // filter = solver: the equivalent-roughness table the line PSD came from (its ER-8 checks, when made so)
+  std::shared_ptr<const stiffness::EquivalentRoughnessTable> equivalent;
 };
 
 // The contact the keys give, before any table stage.
@@ -70,6 +72,12 @@ double blocked_force_time_psd(const BallOnBeamSettings& b, const stiffness::Bloc
 // (dB, the band's Hz at the ball's speed; NaN for the exhaustive table), against kBlockedForceBandTarget.
 constexpr double kBlockedForceBandTarget = 0.1;  // dB, F0 in every band (issue 51's answer tolerance)
 constexpr double kBlockedForceK0Target = 1e-2;   // relative, k0 (moves the bands by ~0.1 dB on the seed 002 rig)
+
+// filter = solver at the answer's tolerance (contact ER-8): each result band's estimated error of the h_eq
+// PSD (dB, the band's Hz at the ball's speed; NaN without checks), against kBlockedForceBandTarget.
+std::vector<double> equivalent_roughness_band_error_db(const BallOnBeamSettings& b,
+                                                       const stiffness::EquivalentRoughnessTable& t,
+                                                       const std::vector<spectral::Band>& bands);
 std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t,
                                                 const std::vector<spectral::Band>& bands);
 

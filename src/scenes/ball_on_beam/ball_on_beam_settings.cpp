@@ -142,6 +142,12 @@ void read_contact_filter(const study::EquivalentRoughnessSection& er, BallOnBeam
             "leaves a strip out of the table [contact] filter = solver synthesises its lines from; allowed with filter "
             "= " +
             b.filter_name + (b.strip_line ? " and line = strip" : "") + ": -1");
+  if (er.answer_tolerance > 0.0 && !(b.filter == ContactFilter::solver && !b.strip_line))
+    er.origin(er.answer_tolerance)
+        .refuse(
+            "sets the tolerance of the table [contact] filter = solver synthesises its lines from (contact ER-8); "
+            "allowed with filter = " +
+            b.filter_name + (b.strip_line ? " and line = strip" : "") + ": 0");
   if (b.strip_line && b.filter != ContactFilter::solver)
     er.origin(er.line).refuse(
         "= strip is the line of [contact] filter = solver; allowed with filter = " + b.filter_name + ": synthesised");

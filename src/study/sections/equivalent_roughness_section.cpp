@@ -19,7 +19,14 @@ SectionKeys<EquivalentRoughnessSection> EquivalentRoughnessSection::declare() {
                "filter = solver: strip index (0 .. strips - 1) left out of the table's mean PSD and stiffness, "
                "from the cached table without a new solve: a leave-one-out sub-table for the jackknife of the "
                "table's own error ([stiffness] table_error = jackknife; kernels/spectral/README.md D-30); -1: none",
-               "-1", -1, 1023);
+               "-1", -1, 1023)
+      .real("answer_tolerance", &T::answer_tolerance, "",
+            "filter = solver: > 0, each position's solve stops at this tolerance and every 16th position is solved "
+            "again from it to [stiffness] tolerance: h_eq's error measured there (kernels/contact ER-8), carried to "
+            "the bands of its PSD; the result records each band's estimated error "
+            "(/contact/equivalent_roughness_band_error_db) and run warns above 0.1 dB. 0, the reference path: "
+            "every solve to [stiffness] tolerance",
+            "0", within(0.0, 0.01));
 }
 template struct DeclaredSection<EquivalentRoughnessSection>;
 

@@ -31,7 +31,8 @@ struct EquivalentRoughnessSection : DeclaredSection<EquivalentRoughnessSection> 
   long long strips = 0;
   EquivalentLine line = EquivalentLine::synthesised;
   EquivalentStiffness stiffness = EquivalentStiffness::strip;
-  long long leave_out = -1;  // >= 0: the sub-table without this strip (D-30)
+  long long leave_out = -1;       // >= 0: the sub-table without this strip (D-30)
+  double answer_tolerance = 0.0;  // contact ER-8; 0: every solve to [stiffness] tolerance (the reference)
 
   static SectionKeys<EquivalentRoughnessSection> declare();
   void finish();                                      // checks across its keys, once they are read

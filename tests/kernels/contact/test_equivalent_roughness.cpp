@@ -108,13 +108,50 @@ TEST_CASE("equivalent roughness: moving window with warm starts equals the cold 
   for (std::size_t k = 0; k < x.size(); ++k) CHECK(std::fabs(parts.height[k] - ref.height[k]) < 1e-8 * h.approach);
 }
 
+TEST_CASE("equivalent roughness at the answer's tolerance: its checks measure the table's error (ER-8)") {
+  // The elastic-plastic strip above, every solve stopped at 1e-3 instead of 1e-10, every 4th position
+  // (k = 2, 6, ...) solved again from its loose field to 1e-10, in chunks of 5 positions.
+  const RoughStrip strip = rough_strip(50, 1.5, -24, 3, 17);
+  const auto& [h, c, heights, x, opt] = strip;
+  ContactSolver solver(c.window, h.e_star);
+  EquivalentRoughnessOptions full_options;
+  full_options.chunk_positions = 5;
+  EquivalentRoughnessOptions loose_options = full_options;
+  loose_options.answer_tolerance = 1e-3;
+  loose_options.check_stride = 4;
+  const EquivalentRoughness full =
+      equivalent_roughness(solver, c.strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, full_options);
+  const EquivalentRoughness loose =
+      equivalent_roughness(solver, c.strip, heights, h.radius, BallShape::Sphere, x, h.force(), opt, loose_options);
+  REQUIRE(full.converged);
+  REQUIRE(loose.converged);
+  CHECK(full.check_index.empty());  // the reference path checks nothing
+  REQUIRE(loose.check_index.size() == 4);
+  double error = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) error = std::max(error, std::fabs(loose.height[k] - full.height[k]));
+  MESSAGE("loose - full h_eq up to " << error / h.approach << " δ_H");
+  CHECK(error > 1e-8 * h.approach);  // the loose table does differ from the full one ...
+  CHECK(error < 1e-3 * h.approach);  // ... by far less than h_eq itself (up to 0.022 δ_H here)
+  for (std::size_t j = 0; j < loose.check_index.size(); ++j) {
+    const std::size_t k = loose.check_index[j];
+    CHECK(k == 4 * j + 2);
+    // r_j is the full solve minus the loose one at that position: the table's own error there, to the
+    // full solves' agreement (1e-8 δ_H, the test above).
+    CHECK(std::fabs(loose.check_residual[j] - (full.height[k] - loose.height[k])) < 1e-8 * h.approach);
+  }
+}
+
 TEST_CASE("equivalent roughness: same bits on 1 and 2 threads") {
   const RoughStrip strip = rough_strip(40, 0.4, -18, 4, 9);
   const auto& [h, c, heights, x, opt] = strip;
-  // Serial path, and chunks of 2 positions (5 chunks on the threads, dynamic schedule).
+  // Serial path, chunks of 2 positions (5 chunks on the threads, dynamic schedule), and those at the
+  // answer's tolerance with their checks (ER-8).
   EquivalentRoughnessOptions chunked;
   chunked.chunk_positions = 2;
-  for (const EquivalentRoughnessOptions& po : {EquivalentRoughnessOptions{}, chunked}) {
+  EquivalentRoughnessOptions checked = chunked;
+  checked.answer_tolerance = 1e-3;
+  checked.check_stride = 2;
+  for (const EquivalentRoughnessOptions& po : {EquivalentRoughnessOptions{}, chunked, checked}) {
     std::vector<EquivalentRoughness> r;
     for (int threads : {1, 2}) {
       const int before = omp_get_max_threads();
@@ -125,6 +162,7 @@ TEST_CASE("equivalent roughness: same bits on 1 and 2 threads") {
     }
     CHECK(same_bits(r[0].height, r[1].height));
     CHECK(same_bits(r[0].approach, r[1].approach));
+    CHECK(same_bits(r[0].check_residual, r[1].check_residual));
   }
 }
 
