@@ -21,7 +21,6 @@ bench_answer_tables.py (the rig's, a rougher one and one no test uses). Per text
 """
 import pathlib
 import re
-import statistics
 import sys
 import time
 
@@ -34,13 +33,29 @@ sys.path.insert(0, str(ROOT / "bench"))
 sys.path.insert(0, str(ROOT / "bench" / "contact"))
 sys.path.insert(0, str(ROOT / "python-post"))
 import bench_record  # noqa: E402
-from bench_answer_tables import STUDY, TEXTURES  # noqa: E402  (the same rig and textures)
+from bench_answer_tables import STUDY, TEXTURES, interleaved, print_and_record, study_errors  # noqa: E402
 from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
 
 COMMON = ["contact.law=hertz", "contact.filter=solver", "study.realisations=25"]
 METHODS = {"reference": ["equivalent_roughness.answer_tolerance=0"],
            "answer": ["equivalent_roughness.answer_tolerance=1e-3"]}
 TABLE_LINE = re.compile(r"equivalent roughness: strip (\d+) of \1, \d+ CG iterations, ([\d.]+) s wall")
+
+TITLE = (
+    "Contact tables by the answer's method against the exhaustive one: the equivalent-roughness table of filter = "
+    'solver')
+SETTINGS = (
+    'Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with contact.law = hertz, contact.filter = solver'
+    ' and 25 realisations, OMP_NUM_THREADS={threads}, {repeats} interleaved runs per method and texture from empty '
+    "table directories, medians; ratio = reference / answer (above 1: the answer's tolerance is faster). Reference:"
+    ' [equivalent_roughness] answer_tolerance = 0 (every solve to [stiffness] tolerance); answer: answer_tolerance '
+    '= 1e-3 (contact ER-8: every solve at 1e-3, every 16th position solved again to the full tolerance).')
+NOTES = (
+    "Errors are the answer's tolerance minus the reference, from the first run of each. h_eq band: the level of the"
+    ' PSD the lines are drawn from over each result band (80 Hz - 6 kHz at 1 m/s); in brackets the rms of the '
+    "estimate the result carries (/contact/equivalent_roughness_band_error_db, BF-9c on ER-8's residuals) over the "
+    "rms of the measured error. rho: ER-7's stiffness ratio, relative. Study bands: /bands/level_db of every sensor"
+    " row, in brackets the largest error over the band's standard error (the run's 95 % interval / 3.92).")
 
 
 def run_once(binary, settings, threads):
@@ -79,20 +94,14 @@ def main():
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], {}
     for texture, extra in TEXTURES.items():
-        runs = {m: [] for m in METHODS}
-        for _ in range(a.repeats):
-            for method, keys in METHODS.items():  # interleaved: A B A B
-                runs[method].append(run_once(binary, COMMON + extra + keys, a.threads))
-        med = {m: {q: statistics.median(r[q] for r in runs[m]) for q in ("wall", "table_wall")} for m in METHODS}
+        runs, med = interleaved(binary, COMMON + extra, METHODS, a.repeats, a.threads, run_once, ("wall", "table_wall"))
         ref, an = runs["reference"][0], runs["answer"][0]
         line = line_band_db(an) - line_band_db(ref)
         rms_line = float(np.sqrt(np.mean(line ** 2)))
         est = an["band_error"]
         rms_est = float(np.sqrt(np.mean(est ** 2)))
         rho = an["rho"] / ref["rho"] - 1  # E* cancels
-        bands = an["level"] - ref["level"]
-        worst = np.unravel_index(np.argmax(np.abs(bands)), bands.shape)
-        loss = an["loss"] / ref["loss"] - 1 if ref["loss"] > 0 else 0.0
+        bands, loss, study_cells = study_errors(an, ref)
         data[texture] = {"median": med, "line_band_db": line.tolist(), "line_band_estimate_db": est.tolist(),
                          "rho_relative": rho, "band_db": bands.tolist(), "band_se_db": ref["se"].tolist(),
                          "loss": [ref["loss"], an["loss"]], "loss_relative": loss, "warning": an["warning"],
@@ -102,37 +111,13 @@ def main():
                      f"{med['reference']['table_wall'] / med['answer']['table_wall']:.2f}",
                      f"{med['reference']['wall'] / med['answer']['wall']:.2f}",
                      f"{np.max(np.abs(line)):.4f} ({rms_est / rms_line:.2f})" if rms_line > 0 else "0",
-                     f"{rho:+.1e}",
-                     f"{abs(bands[worst]):.3f} at {ref['centre'][worst[-1]]:.0f} Hz "
-                     f"({float(np.max(np.abs(bands) / ref['se'])):.3f})",
-                     f"{loss:+.1e}",
-                     "yes" if an["warning"] else "no"])
+                     f"{rho:+.1e}", *study_cells])
     others = bench_record.other_work(busy, bench_record.own_cpu() - own, time.perf_counter() - t0)
     columns = ["texture", "table wall reference / answer (s)", "ratio wall (table)", "ratio wall (command)",
                "h_eq band max |error| dB (rms estimate / rms error)", "rho error",
                "study bands max |error| dB (max error / s.e.)", "loss of contact, relative", "run warned"]
-    for r in rows:
-        print(" | ".join(r))
-    if a.record:
-        bench_record.write(
-            a.record, title="Contact tables by the answer's method against the exhaustive one: the equivalent-"
-            "roughness table of filter = solver", argv=sys.argv,
-            builds={"current": {"description": "this build", "version": bench_record.build_version(binary)}},
-            settings=f"Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with contact.law = hertz, "
-            f"contact.filter = solver and 25 realisations, OMP_NUM_THREADS={a.threads}, {a.repeats} interleaved "
-            "runs per method and texture from empty table directories, medians; ratio = reference / answer (above "
-            "1: the answer's tolerance is faster). Reference: [equivalent_roughness] answer_tolerance = 0 (every "
-            "solve to [stiffness] tolerance); answer: answer_tolerance = 1e-3 (contact ER-8: every solve at 1e-3, "
-            "every 16th position solved again to the full tolerance).",
-            columns=columns, rows=rows, other_cores=others, components=["contact", "engine", "spectral"],
-            notes="Errors are the answer's tolerance minus the reference, from the first run of each. h_eq band: "
-            "the level of the PSD the lines are drawn from over each result band (80 Hz - 6 kHz at 1 m/s); in "
-            "brackets the rms of the estimate the result carries (/contact/equivalent_roughness_band_error_db, "
-            "BF-9c on ER-8's residuals) over the rms of the measured error. rho: ER-7's stiffness ratio, relative. "
-            "Study bands: /bands/level_db of every sensor row, in brackets the largest error over the band's "
-            "standard error (the run's 95 % interval / 3.92).",
-            data={"textures": data, "threads": a.threads, "repeats": a.repeats})
-        print(f"wrote {a.record}")
+    print_and_record(a, binary, TITLE, SETTINGS.format(threads=a.threads, repeats=a.repeats), NOTES, columns, rows,
+                     others, data)
 
 
 if __name__ == "__main__":

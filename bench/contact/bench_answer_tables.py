@@ -44,6 +44,23 @@ TEXTURES = {
 METHODS = {"exhaustive": ["blocked_force.answer_tolerance=0"], "answer": ["blocked_force.answer_tolerance=1e-3"]}
 TABLE_LINE = re.compile(r"blocked force: \d+ paths .*?, ([\d.]+) s wall, ([\d.]+) s CPU")
 
+TITLE = (
+    "Contact tables by the answer's method against the exhaustive one: the seed 002 blocked-force table")
+SETTINGS = (
+    'Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with contact.blocked_force = solver and 25 '
+    'realisations, OMP_NUM_THREADS={threads}, {repeats} interleaved runs per method and texture from empty table '
+    "directories, medians; ratio = exhaustive / answer (above 1: the answer's method is faster). Exhaustive: "
+    '[blocked_force] answer_tolerance = 0 (the load search, every position to the full tolerance, the reference '
+    'path); answer: answer_tolerance = 1e-3 (contact BF-9: one path at 1e-3, put on the load to first order, every '
+    '16th position solved again to the full tolerance).')
+NOTES = (
+    "Errors are the answer's method minus the exhaustive one, from the first run of each. F0 band: F0's level over "
+    'each result band (80 Hz - 6 kHz at 1 m/s) as the run draws it; in brackets the rms of the estimate the result '
+    'carries (/contact/blocked_force_band_error_db, BF-9c) over the rms of the measured error. k0: relative, in '
+    "brackets the result's estimate (@blocked_force_k0_error, the control variate's standard error, BF-9a). Study "
+    "bands: /bands/level_db of every sensor row, in brackets the largest error over the band's standard error (the "
+    "run's 95 % interval / 3.92).")
+
 
 def run_once(binary, settings, threads):
     with bench_record.study_run(binary, STUDY, settings, threads, "bench-answer-tables-") as (path, stderr, wall, cpu):
@@ -76,6 +93,41 @@ def f0_band_db(run, centre):
     return np.array(out)
 
 
+def interleaved(binary, settings, methods, repeats, threads, run_once, quantities):
+    """Each method's runs (A B A B ...) of the same settings, and the medians of `quantities` over them."""
+    runs = {m: [] for m in methods}
+    for _ in range(repeats):
+        for method, keys in methods.items():
+            runs[method].append(run_once(binary, settings + keys, threads))
+    return runs, {m: {q: statistics.median(r[q] for r in runs[m]) for q in quantities} for m in methods}
+
+
+def study_errors(answer, reference):
+    """The study's band levels and loss-of-contact share, answer minus reference: (band differences, relative
+    loss difference, the table's cells: worst band (over its standard error), loss, whether the run warned)."""
+    bands = answer["level"] - reference["level"]
+    worst = np.unravel_index(np.argmax(np.abs(bands)), bands.shape)
+    loss = answer["loss"] / reference["loss"] - 1 if reference["loss"] > 0 else 0.0
+    return bands, loss, [f"{abs(bands[worst]):.3f} at {reference['centre'][worst[-1]]:.0f} Hz "
+                         f"({float(np.max(np.abs(bands) / reference['se'])):.3f})",
+                         f"{loss:+.1e}", "yes" if answer["warning"] else "no"]
+
+
+def print_and_record(a, binary, title, settings, notes, columns, rows, others, data):
+    """The answer benches' table on stdout, and in a record (this build, its textures, threads and repeats) where
+    --record asks for one."""
+    for r in rows:
+        print(" | ".join(r))
+    if a.record:
+        bench_record.write(a.record, title=title, argv=sys.argv,
+                           builds={"current": {"description": "this build",
+                                               "version": bench_record.build_version(binary)}},
+                           settings=settings, columns=columns, rows=rows, other_cores=others,
+                           components=["contact", "engine", "spectral"], notes=notes,
+                           data={"textures": data, "threads": a.threads, "repeats": a.repeats})
+        print(f"wrote {a.record}")
+
+
 def main():
     parser = bench_record.record_script_parser(__doc__.split("\n")[0], ROOT / "build" / "werror" / "rollspec")
     parser.add_argument("--repeats", type=int, default=2)
@@ -84,20 +136,14 @@ def main():
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], {}
     for texture, extra in TEXTURES.items():
-        runs = {m: [] for m in METHODS}
-        for _ in range(a.repeats):
-            for method, keys in METHODS.items():  # interleaved: A B A B
-                runs[method].append(run_once(binary, COMMON + extra + keys, a.threads))
-        med = {m: {q: statistics.median(r[q] for r in runs[m]) for q in ("wall", "cpu", "table_wall", "table_cpu")}
-               for m in METHODS}
+        runs, med = interleaved(binary, COMMON + extra, METHODS, a.repeats, a.threads, run_once,
+                                ("wall", "cpu", "table_wall", "table_cpu"))
         ex, an = runs["exhaustive"][0], runs["answer"][0]
         f0 = f0_band_db(an, an["centre"]) - f0_band_db(ex, ex["centre"])
         rms_f0 = float(np.sqrt(np.mean(f0 ** 2)))
         est_f0 = float(np.sqrt(np.mean(an["band_error"] ** 2)))
         k0 = an["k0"] / ex["k0"] - 1
-        bands = an["level"] - ex["level"]
-        worst = np.unravel_index(np.argmax(np.abs(bands)), bands.shape)
-        loss = an["loss"] / ex["loss"] - 1 if ex["loss"] > 0 else 0.0
+        bands, loss, study_cells = study_errors(an, ex)
         entry = {"median": med, "f0_band_db": f0.tolist(), "f0_band_estimate_db": an["band_error"].tolist(),
                  "k0_relative": k0, "k0_estimate": an["k0_error"], "band_db": bands.tolist(),
                  "band_se_db": ex["se"].tolist(), "loss_relative": loss, "warning": an["warning"],
@@ -109,37 +155,13 @@ def main():
                      f"{med['exhaustive']['table_cpu'] / med['answer']['table_cpu']:.2f}",
                      f"{med['exhaustive']['wall'] / med['answer']['wall']:.2f}",
                      f"{np.max(np.abs(f0)):.4f} ({est_f0 / rms_f0:.2f})" if rms_f0 > 0 else "0",
-                     f"{k0:+.1e} ({an['k0_error']:.1e})",
-                     f"{abs(bands[worst]):.3f} at {ex['centre'][worst[-1]]:.0f} Hz "
-                     f"({float(np.max(np.abs(bands) / ex['se'])):.3f})",
-                     f"{loss:+.1e}",
-                     "yes" if an["warning"] else "no"])
+                     f"{k0:+.1e} ({an['k0_error']:.1e})", *study_cells])
     others = bench_record.other_work(busy, bench_record.own_cpu() - own, time.perf_counter() - t0)
     columns = ["texture", "table wall exhaustive / answer (s)", "ratio wall / CPU (table)", "ratio wall (command)",
                "F0 band max |error| dB (rms estimate / rms error)", "k0 error (estimate)",
                "study bands max |error| dB (max error / s.e.)", "loss of contact, relative", "run warned"]
-    for r in rows:
-        print(" | ".join(r))
-    if a.record:
-        bench_record.write(
-            a.record, title="Contact tables by the answer's method against the exhaustive one: the seed 002 "
-            "blocked-force table", argv=sys.argv, builds={"current": {"description": "this build",
-                                                                       "version": bench_record.build_version(binary)}},
-            settings=f"Whole `rollspec run` commands of studies/seed002-rig-1ms.ini with contact.blocked_force = "
-            f"solver and 25 realisations, OMP_NUM_THREADS={a.threads}, {a.repeats} interleaved runs per method and "
-            "texture from empty table directories, medians; ratio = exhaustive / answer (above 1: the answer's "
-            "method is faster). Exhaustive: [blocked_force] answer_tolerance = 0 (the load search, every position "
-            "to the full tolerance, the reference path); answer: answer_tolerance = 1e-3 (contact BF-9: one path "
-            "at 1e-3, put on the load to first order, every 16th position solved again to the full tolerance).",
-            columns=columns, rows=rows, other_cores=others, components=["contact", "engine", "spectral"],
-            notes="Errors are the answer's method minus the exhaustive one, from the first run of each. F0 band: "
-            "F0's level over each result band (80 Hz - 6 kHz at 1 m/s) as the run draws it; in brackets the rms of "
-            "the estimate the result carries (/contact/blocked_force_band_error_db, BF-9c) over the rms of the "
-            "measured error. k0: relative, in brackets the result's estimate (@blocked_force_k0_error, the control "
-            "variate's standard error, BF-9a). Study bands: /bands/level_db of every sensor row, in brackets the "
-            "largest error over the band's standard error (the run's 95 % interval / 3.92).",
-            data={"textures": data, "threads": a.threads, "repeats": a.repeats})
-        print(f"wrote {a.record}")
+    print_and_record(a, binary, TITLE, SETTINGS.format(threads=a.threads, repeats=a.repeats), NOTES, columns, rows,
+                     others, data)
 
 
 if __name__ == "__main__":
