@@ -34,7 +34,7 @@
 //
 // are a systematic sample of the table's error, which the table carries to its PSD's band levels as
 // BF-9c does (kernels/contact/answer_error.hpp; on the seed 002 strip the error is white within a
-// factor 2.5 over the bins, checked against the reference at every position). The tabulated h_eq stays
+// factor 3 over the bins, checked against the reference at every position). The tabulated h_eq stays
 // the loose one everywhere, so the sample measures what the table holds.
 #include <cstddef>
 #include <vector>

@@ -190,23 +190,27 @@ double blocked_force_time_psd(const BallOnBeamSettings& b, const stiffness::Bloc
   return 2.0 * M_PI * blocked_force_psd(b, t, 2.0 * M_PI * f / v) / v;
 }
 
-std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t,
-                                                const std::vector<spectral::Band>& bands) {
-  const double to_k = 2.0 * M_PI / b.model.traverse.speed;  // D-2: k = 2 pi f / v
-  std::vector<double> out;
-  for (const spectral::Band& band : bands)
-    out.push_back(t.band_error_db(band.lower * to_k, band.upper * to_k, kAnchorBin));
-  return out;
-}
-
-std::vector<double> equivalent_roughness_band_error_db(const BallOnBeamSettings& b,
-                                                       const stiffness::EquivalentRoughnessTable& t,
-                                                       const std::vector<spectral::Band>& bands) {
+namespace {
+// Each result band's estimated error of a checked strip table's PSD (BF-9c), at k = 2 pi f / v (D-2).
+template <class Table>
+std::vector<double> band_errors(const BallOnBeamSettings& b, const Table& t, const std::vector<spectral::Band>& bands) {
   const double to_k = 2.0 * M_PI / b.model.traverse.speed;
   std::vector<double> out;
   for (const spectral::Band& band : bands)
     out.push_back(t.band_error_db(band.lower * to_k, band.upper * to_k, kAnchorBin));
   return out;
+}
+}  // namespace
+
+std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t,
+                                                const std::vector<spectral::Band>& bands) {
+  return band_errors(b, t, bands);
+}
+
+std::vector<double> equivalent_roughness_band_error_db(const BallOnBeamSettings& b,
+                                                       const stiffness::EquivalentRoughnessTable& t,
+                                                       const std::vector<spectral::Band>& bands) {
+  return band_errors(b, t, bands);
 }
 
 std::string blocked_force_resolution_warning(const BallOnBeamSettings& b, const stiffness::BlockedForceGeometry& g) {
