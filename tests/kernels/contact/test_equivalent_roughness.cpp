@@ -36,7 +36,8 @@ double fitted_amplitude(const std::vector<double>& x, const std::vector<double>&
 }
 
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+  // memcmp must not see the null data of an empty vector (UB even for 0 bytes)
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0);
 }
 
 }  // namespace
