@@ -34,7 +34,7 @@ sys.path.insert(0, str(ROOT / "bench" / "contact"))
 sys.path.insert(0, str(ROOT / "python-post"))
 import bench_record  # noqa: E402
 from bench_answer_tables import STUDY, TEXTURES, interleaved, print_and_record, study_errors  # noqa: E402
-from rollspec_post.script_main import script_main  # noqa: E402  (one line per failure, no traceback)
+from rollspec_post.script_main import fail, script_main  # noqa: E402  (one line per failure, no traceback)
 
 COMMON = ["contact.law=hertz", "contact.filter=solver", "study.realisations=25"]
 METHODS = {"reference": ["equivalent_roughness.answer_tolerance=0"],
@@ -60,9 +60,12 @@ NOTES = (
 
 def run_once(binary, settings, threads):
     with bench_record.study_run(binary, STUDY, settings, threads, "bench-answer-filter-") as (path, stderr, wall, cpu):
+        table = TABLE_LINE.search(stderr)
+        if not table:
+            fail(f"{binary} run {' '.join(settings)}: no equivalent-roughness table summary line in its output", 1)
         with h5py.File(path) as f:
             c, b, g = f["/contact"], f["/bands"], f["/roughness"]
-            return {"wall": wall, "cpu": cpu, "table_wall": float(TABLE_LINE.search(stderr).group(2)),
+            return {"wall": wall, "cpu": cpu, "table_wall": float(table.group(2)),
                     # hertz under ER-7: E*' = rho^(3/2) E*, so rho goes as E*'^(2/3)
                     "rho": float(np.ravel(c.attrs["effective_modulus"])[0]) ** (2 / 3),
                     "speed": float(np.ravel(f["/ball"].attrs["speed"])[0]),
@@ -99,6 +102,8 @@ def main():
         line = line_band_db(an) - line_band_db(ref)
         rms_line = float(np.sqrt(np.mean(line ** 2)))
         est = an["band_error"]
+        if est is None:
+            fail("the answer's run wrote no /contact/equivalent_roughness_band_error_db: its table has no checks", 1)
         rms_est = float(np.sqrt(np.mean(est ** 2)))
         rho = an["rho"] / ref["rho"] - 1  # E* cancels
         bands, loss, study_cells = study_errors(an, ref)
