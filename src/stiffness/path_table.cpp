@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "kernels/contact/equivalent_roughness.hpp"
 #include "kernels/contact/path_table.hpp"
 #include "kernels/contact/version.hpp"
 #include "kernels/texture/line_texture.hpp"
@@ -35,6 +36,7 @@ namespace {
 
 constexpr double kPeakSigmas = 7.0;  // the strip's highest point (and deepest valley), in rms heights
 constexpr double kReach = 3.0;       // δ_hi = max δ_c + 3 δ_H (B43)
+constexpr double kCheckSolves = 6.0;  // contact solves of one cold B47 check (ER-1's Newton, coarse start)
 
 }  // namespace
 
@@ -82,8 +84,10 @@ PathTableGeometry path_table_geometry(const study::PathTableSection& p, const st
   // (1.95e-7: plane-ladder estimates were 1.76-2.03 x the wall on the rig's and a rougher section at
   // a/4 and a/2, bench/contact/bench_path_positions.py).
   g.solve_seconds = 3.7e-7 * contact_box_work(g.base, g.window, radius);
+  // B47's checks: a cold load-controlled solve in every kPathCheckStride-th interval, about kCheckSolves solves.
   g.estimated_seconds = (g.ladder ? 1.95e-7 / 3.7e-7 : 1.0) * g.solve_seconds *
-                        static_cast<double>(g.positions * (g.approaches + (g.ladder ? 1 : 2)));
+                            static_cast<double>(g.positions * (g.approaches + (g.ladder ? 1 : 2))) +
+                        kCheckSolves * g.solve_seconds * static_cast<double>(g.positions / kPathCheckStride);
   const std::size_t chunk = contact::PathTableOptions{}.chunk_positions;
   g.threads = std::max(1, std::min(omp_get_max_threads(), static_cast<int>((g.positions + chunk - 1) / chunk)));
   return g;
@@ -111,8 +115,20 @@ std::string PathTableGeometry::describe() const {
 namespace {
 
 std::vector<const std::vector<double>*> columns(const PathTableData& t) {
-  if (t.rows.empty()) return {&t.position, &t.approach, &t.first_contact, &t.force};
-  return {&t.position, &t.approach, &t.first_contact, &t.force, &t.rows};
+  std::vector<const std::vector<double>*> c{&t.position, &t.approach, &t.first_contact, &t.force};
+  if (!t.rows.empty()) c.push_back(&t.rows);
+  if (!t.check_position.empty()) c.insert(c.end(), {&t.check_position, &t.check_approach});
+  return c;
+}
+
+// B47: the strip cells of the checks, midway (to the cell below) in every kPathCheckStride-th interval,
+// the first half a stride in; none where the step is one cell (no cell lies between positions).
+std::vector<std::size_t> check_cells(const PathTableGeometry& g) {
+  std::vector<std::size_t> cells;
+  if (g.step < 2) return cells;
+  for (std::size_t i = kPathCheckStride / 2; i + 1 < g.positions; i += kPathCheckStride)
+    cells.push_back(g.window / 2 + i * g.step + g.step / 2);
+  return cells;
 }
 
 std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double radius, double e_star, double load) {
@@ -125,9 +141,41 @@ std::string inputs_text(const TableStudy& ts, const PathTableGeometry& g, double
      << contact::PathTableOptions{}.max_approaches
      // PT-1: the starts and the chunks of positions set the last bits of the table's values.
      << "\nstart = approach below, extrapolated (PT-1)\nchunk_positions = "
-     << contact::PathTableOptions{}.chunk_positions << "\n";
+     << contact::PathTableOptions{}.chunk_positions << "\n"
+     << "checks = delta_W by a cold load-controlled solve midway in every " << kPathCheckStride
+     << "th interval (B47)\n";
   in << strip_inputs_text(ts, StripGrid{g.nx, g.ny, g.base.cell, g.base.derived_cell});
   return in.str();
+}
+
+// B47: δ_W at the check cells by ER-1's load-controlled solve, each cold (a chunk of one position), on the
+// table's window and strip: what the interpolated table's static approach is compared with.
+void check_static_approach(const TableStudy& ts, const PathTableGeometry& g, const contact::Grid& strip_grid,
+                           const contact::Grid& window_grid, const std::vector<double>& heights, double radius,
+                           double e_star, double load, double first_position, bool quiet, PathTableData& d) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<double> x;
+  for (std::size_t cell : check_cells(g)) x.push_back(strip_grid.x(cell));
+  if (x.empty()) return;
+  const contact::SolverOptions opts = ts.stiffness.solver;
+  contact::EquivalentRoughnessOptions eo;
+  eo.chunk_positions = 1;
+  eo.stiffness_every = 0;
+  eo.load_tolerance = strip_load_tolerance(opts);
+  contact::ContactSolver solver(window_grid, e_star);
+  contact::EquivalentRoughness r;
+  try {
+    r = contact::equivalent_roughness(solver, strip_grid, heights, radius, ts.stiffness.shape, x, load, opts, eo);
+  } catch (const std::invalid_argument& e) {
+    ts.surface.ny_origin.refuse(std::string(e.what()) + "; widen the strip ([surface] ny)");
+  }
+  require_converged(r.converged, r.max_error, "path table: a check's load-controlled solve");
+  for (double xi : x) d.check_position.push_back(xi - first_position);
+  d.check_approach = r.approach;
+  if (!quiet)
+    std::fprintf(stderr, "%spath table: %zu checks (B47), %d CG iterations, %.3g s wall\n",
+                 ensemble::rank_prefix().c_str(), x.size(), r.iterations,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 }  // namespace
@@ -144,6 +192,8 @@ void PathTableData::load_from(const io::Hdf5Reader& r) {
   first_contact = r.read("/path_table/first_contact");
   force = r.read("/path_table/force");
   rows = r.exists("/path_table/rows") ? r.read("/path_table/rows") : std::vector<double>{};
+  check_position = r.exists("/path_table/check_position") ? r.read("/path_table/check_position") : std::vector<double>{};
+  check_approach = r.exists("/path_table/check_approach") ? r.read("/path_table/check_approach") : std::vector<double>{};
   load = r.double_attribute("/path_table", "load");
 }
 
@@ -164,6 +214,12 @@ void PathTableData::save_to(io::Hdf5Writer& w) const {
                 "position"
               : "P(delta_c(xi_k) + s_j, xi_k): force of the elastic-plastic half-space solve (kernels/beam "
                 "B41, B43b), approach x position; NaN above the rows solved at that position");
+  if (!check_position.empty()) {
+    w.write("/path_table/check_position", {check_position.size()}, check_position.data(), "m",
+            "B47: check positions xi, midway between table positions in every 16th interval");
+    w.write("/path_table/check_approach", {check_approach.size()}, check_approach.data(), "m",
+            "B47: approach delta_W carrying the load there by a cold load-controlled solve, from the mean plane");
+  }
   w.attribute("/path_table", "load", load);
 }
 
@@ -224,6 +280,7 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
         ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   PathTableData d;
+  check_static_approach(ts, g, strip_grid, window_grid, strip.heights, radius, e_star, load, positions.front(), quiet, d);
   d.position = from_first(t.position);
   d.approach = t.approach;
   d.first_contact = t.first_contact;

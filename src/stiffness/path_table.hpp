@@ -29,6 +29,9 @@ namespace rollspec::stiffness {
 
 constexpr const char* kPathTableFileType = "rollspec-path-table";
 
+// B47: one check per this many position intervals (about 1 % of the table's solves on the seed 002 rig).
+constexpr std::size_t kPathCheckStride = 16;
+
 extern const TableKind kPathTableKind;
 
 struct PathTableGeometry {
@@ -52,6 +55,10 @@ struct PathTableData : TableData {
   std::vector<double> first_contact;  // δ_c(ξ_k) (m)
   std::vector<double> force;          // P(δ_j, ξ_k) (N) at [j · N + k]; B43b: NaN above rows[k]
   std::vector<double> rows;           // B43b: rows solved at each position; empty: every row (B43)
+  // B47: the table's checks, midway between positions in every kPathCheckStride-th interval: ξ (m, path
+  // coordinate) and δ_W there by a load-controlled solve (m, from the mean plane). Empty: a table without checks.
+  std::vector<double> check_position;
+  std::vector<double> check_approach;
   double load = 0.0;
   void load_from(const io::Hdf5Reader& r) override;
   void save_to(io::Hdf5Writer& w) const override;

@@ -90,6 +90,9 @@ void take_path_table(const BallOnBeamSettings& b, const stiffness::PathTableData
   // chord, the point laws' rule (line = strip starts the same way).
   if (cubic) c.law.path_start_width = b.contact_half_width;
   c.static_compression = beam::path_table_static_approach(*c.law.path, b.weight());
+  if (!t.check_position.empty())
+    c.path_check = std::make_shared<const PathTableCheck>(
+        path_table_check(*c.law.path, b.weight(), t.check_position, t.check_approach));
 }
 
 void take_strip_line(const BallOnBeamSettings& b, const stiffness::EquivalentRoughnessTable& t, ResolvedContact& c) {
@@ -210,6 +213,11 @@ std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, con
 std::vector<double> equivalent_roughness_band_error_db(const BallOnBeamSettings& b,
                                                        const stiffness::EquivalentRoughnessTable& t,
                                                        const std::vector<spectral::Band>& bands) {
+  return band_errors(b, t, bands);
+}
+
+std::vector<double> path_table_band_error_db(const BallOnBeamSettings& b, const PathTableCheck& t,
+                                             const std::vector<spectral::Band>& bands) {
   return band_errors(b, t, bands);
 }
 

@@ -12,6 +12,7 @@
 #include "kernels/texture/psd.hpp"
 #include "kernels/spectral/third_octave_bands.hpp"
 #include "src/scenes/ball_on_beam/ball_on_beam_settings.hpp"
+#include "src/scenes/ball_on_beam/path_table_check.hpp"
 #include "src/stiffness/blocked_force_table.hpp"
 #include "src/stiffness/equivalent_roughness_table.hpp"
 #include "src/stiffness/path_table.hpp"
@@ -28,6 +29,8 @@ struct ResolvedContact {
   stiffness::BlockedForceTable blocked;  // blocked_force = solver: k0 and the PSD of F0 along the path
   // filter = solver: the equivalent-roughness table the line PSD came from (its ER-8 checks, when made so)
   std::shared_ptr<const stiffness::EquivalentRoughnessTable> equivalent;
+  // law = path: the table's checks against the run's reading of it (kernels/beam B47); null without checks
+  std::shared_ptr<const PathTableCheck> path_check;
 };
 
 // The contact the keys give, before any table stage.
@@ -80,5 +83,8 @@ std::vector<double> equivalent_roughness_band_error_db(const BallOnBeamSettings&
                                                        const std::vector<spectral::Band>& bands);
 std::vector<double> blocked_force_band_error_db(const BallOnBeamSettings& b, const stiffness::BlockedForceTable& t,
                                                 const std::vector<spectral::Band>& bands);
+// law = path (kernels/beam B47): each result band's estimated error of delta_W's PSD, against kBlockedForceBandTarget.
+std::vector<double> path_table_band_error_db(const BallOnBeamSettings& b, const PathTableCheck& t,
+                                             const std::vector<spectral::Band>& bands);
 
 }  // namespace rollspec::scenes

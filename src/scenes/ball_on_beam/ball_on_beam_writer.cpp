@@ -89,30 +89,55 @@ void BallOnBeamWriter::write_blocked_force_error(io::Hdf5Writer& w, const std::v
   w.attribute("/contact", "blocked_force_error_warning", text);
 }
 
-// The equivalent-roughness table's own estimated error at the answer (contact ER-8, BF-9c): each band's
-// level of the h_eq PSD the lines are drawn from, against the target; a warning where a band exceeds it.
-// The reference table has none.
-void BallOnBeamWriter::write_equivalent_roughness_error(io::Hdf5Writer& w,
-                                                        const std::vector<spectral::Band>& bands) const {
-  if (!c_.equivalent || c_.equivalent->check_residual.empty()) return;
-  const std::vector<double> err = equivalent_roughness_band_error_db(b_, *c_.equivalent, bands);
-  w.write("/contact/equivalent_roughness_band_error_db", {err.size()}, err.data(), "dB",
-          "estimated rms error of the h_eq PSD's band level from the table's own checks (contact ER-8, BF-9c), per "
-          "result band");
-  w.attach_scale("/contact/equivalent_roughness_band_error_db", "/bands/centre_frequency", 0);
-  w.attribute("/contact", "equivalent_roughness_band_target_db", kBlockedForceBandTarget);
+namespace {
+// A checked table's estimated error per result band (`/contact/<name>_band_error_db`, BF-9c) against
+// kBlockedForceBandTarget, and a warning naming the worst band where one exceeds it: "<table>: <what>'s level
+// at f Hz has an estimated error of e dB, above the target (<why>)".
+void write_checked_band_errors(io::Hdf5Writer& w, const std::vector<spectral::Band>& bands,
+                               const std::vector<double>& err, const std::string& name, const std::string& description,
+                               const std::string& table, const std::string& what, const std::string& why) {
+  const std::string dataset = "/contact/" + name + "_band_error_db";
+  w.write(dataset, {err.size()}, err.data(), "dB", description);
+  w.attach_scale(dataset, "/bands/centre_frequency", 0);
+  w.attribute("/contact", name + "_band_target_db", kBlockedForceBandTarget);
   double worst = 0.0;
   std::size_t at = 0;
   for (std::size_t i = 0; i < err.size(); ++i)
     if (err[i] > worst) worst = err[i], at = i;
   if (!(worst > kBlockedForceBandTarget)) return;
-  const std::string text = io::formatted(
-      "equivalent-roughness table: the h_eq PSD's level at %g Hz has an estimated error of %.3g dB, above the %g dB "
-      "target (its checks at the full tolerance, contact ER-8); a smaller [equivalent_roughness] answer_tolerance, "
-      "or 0 for every solve at [stiffness] tolerance, lowers it",
-      bands[at].nominal, worst, kBlockedForceBandTarget);
+  const std::string text =
+      io::formatted("%s: %s's level at %g Hz has an estimated error of %.3g dB, above the %g dB target (%s)",
+                    table.c_str(), what.c_str(), bands[at].nominal, worst, kBlockedForceBandTarget, why.c_str());
   io::warn(text, true);
-  w.attribute("/contact", "equivalent_roughness_error_warning", text);
+  w.attribute("/contact", name + "_error_warning", text);
+}
+}  // namespace
+
+// The equivalent-roughness table's own estimated error at the answer (contact ER-8, BF-9c): each band's
+// level of the h_eq PSD the lines are drawn from. The reference table has none.
+void BallOnBeamWriter::write_equivalent_roughness_error(io::Hdf5Writer& w,
+                                                        const std::vector<spectral::Band>& bands) const {
+  if (!c_.equivalent || c_.equivalent->check_residual.empty()) return;
+  write_checked_band_errors(
+      w, bands, equivalent_roughness_band_error_db(b_, *c_.equivalent, bands), "equivalent_roughness",
+      "estimated rms error of the h_eq PSD's band level from the table's own checks (contact ER-8, BF-9c), per "
+      "result band",
+      "equivalent-roughness table", "the h_eq PSD",
+      "its checks at the full tolerance, contact ER-8; a smaller [equivalent_roughness] answer_tolerance, or 0 for "
+      "every solve at [stiffness] tolerance, lowers it");
+}
+
+// The path table's own estimated error at the answer (kernels/beam B47, BF-9c): each band's level of the
+// static approach delta_W(xi) the law holds, as the run reads the table. A table without checks has none.
+void BallOnBeamWriter::write_path_table_error(io::Hdf5Writer& w, const std::vector<spectral::Band>& bands) const {
+  if (!c_.path_check || c_.path_check->residual.size() < 2) return;
+  write_checked_band_errors(
+      w, bands, path_table_band_error_db(b_, *c_.path_check, bands), "path_table",
+      "estimated rms error of the band level of the path law's static approach delta_W(xi) from the table's own "
+      "checks (kernels/beam B47, contact BF-9c), per result band",
+      "path table", "delta_W",
+      "its checks by load-controlled solves between positions, kernels/beam B47; a smaller [path_table] step or "
+      "more [path_table] approaches lowers it");
 }
 
 io::PsdEnsemble BallOnBeamWriter::spectra(const ensemble::EnsembleSums& sums) const {
@@ -180,6 +205,7 @@ void BallOnBeamWriter::write(io::Hdf5Writer& w, const ensemble::EnsembleSums& su
     write_blocked_force_error(w, io::result_bands(e.frequency, e.band_min, e.band_max));
   }
   write_equivalent_roughness_error(w, io::result_bands(e.frequency, e.band_min, e.band_max));
+  write_path_table_error(w, io::result_bands(e.frequency, e.band_min, e.band_max));
 
   const auto& b = b_.model.beam;
   std::vector<double> fm(static_cast<std::size_t>(b.modes()));

@@ -42,6 +42,7 @@ class BallOnBeamWriter {
   // sized: the run measures what a loss moves (D-35; law = linearised with a contact that can open).
   void write_blocked_force_error(io::Hdf5Writer& w, const std::vector<spectral::Band>& bands) const;
   void write_equivalent_roughness_error(io::Hdf5Writer& w, const std::vector<spectral::Band>& bands) const;
+  void write_path_table_error(io::Hdf5Writer& w, const std::vector<spectral::Band>& bands) const;
   void write_loss_of_contact(io::Hdf5Writer& w, double share, const io::LossEffect& effect, bool sized,
                              std::size_t bands) const;
   void write_linear_reference(io::Hdf5Writer& w, const std::vector<double>& f, const std::vector<std::string>& sensors,
