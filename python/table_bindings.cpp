@@ -98,6 +98,10 @@ void describe(Table& t) {
                  {"first_contact", &p->first_contact, {size(p->first_contact)}},
                  {"force", &p->force, {nj, nk}}};
     if (!p->rows.empty()) t.columns.push_back({"rows", &p->rows, {size(p->rows)}});  // B43b: rows per position
+    if (!p->check_position.empty()) {                                                // B47's checks
+      t.columns.push_back({"check_position", &p->check_position, {size(p->check_position)}});
+      t.columns.push_back({"check_approach", &p->check_approach, {size(p->check_approach)}});
+    }
     t.scalars = {{"load", p->load}};
   }
 }

@@ -34,8 +34,8 @@ const TableKind kPathTableKind = {
 
 namespace {
 
-constexpr double kPeakSigmas = 7.0;  // the strip's highest point (and deepest valley), in rms heights
-constexpr double kReach = 3.0;       // δ_hi = max δ_c + 3 δ_H (B43)
+constexpr double kPeakSigmas = 7.0;   // the strip's highest point (and deepest valley), in rms heights
+constexpr double kReach = 3.0;        // δ_hi = max δ_c + 3 δ_H (B43)
 constexpr double kCheckSolves = 6.0;  // contact solves of one cold B47 check (ER-1's Newton, coarse start)
 
 }  // namespace
@@ -192,8 +192,10 @@ void PathTableData::load_from(const io::Hdf5Reader& r) {
   first_contact = r.read("/path_table/first_contact");
   force = r.read("/path_table/force");
   rows = r.exists("/path_table/rows") ? r.read("/path_table/rows") : std::vector<double>{};
-  check_position = r.exists("/path_table/check_position") ? r.read("/path_table/check_position") : std::vector<double>{};
-  check_approach = r.exists("/path_table/check_approach") ? r.read("/path_table/check_approach") : std::vector<double>{};
+  check_position =
+      r.exists("/path_table/check_position") ? r.read("/path_table/check_position") : std::vector<double>{};
+  check_approach =
+      r.exists("/path_table/check_approach") ? r.read("/path_table/check_approach") : std::vector<double>{};
   load = r.double_attribute("/path_table", "load");
 }
 
@@ -280,7 +282,8 @@ PathTableData build_path_table(const TableStudy& ts, const PathTableGeometry& g,
         ensemble::rank_prefix().c_str(), t.approach.size(), t.top_force, t.solves, t.iterations,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   PathTableData d;
-  check_static_approach(ts, g, strip_grid, window_grid, strip.heights, radius, e_star, load, positions.front(), quiet, d);
+  check_static_approach(ts, g, strip_grid, window_grid, strip.heights, radius, e_star, load, positions.front(), quiet,
+                        d);
   d.position = from_first(t.position);
   d.approach = t.approach;
   d.first_contact = t.first_contact;

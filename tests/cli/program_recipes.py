@@ -42,6 +42,7 @@ RECIPES = {
     "bench/contact/bench_answer_tables.py": RECORDS_WITH_BIN,
     "bench/contact/bench_path_ladder.py": RECORDS_WITH_BIN,
     "bench/contact/bench_path_positions.py": RECORDS_WITH_BIN,
+    "bench/contact/bench_path_check.py": RECORDS_WITH_BIN,
     "bench/contact/bench_contact_goals.py": {"argv": ["PY", "S", "--base", "BINDIR", "--new", "BINDIR"],
                                              "help": ["--help"], "binary": 3},
     "bench/contact/bench_plan_estimates.py": {"argv": ["PY", "S", "--binary", "BIN", "--json", "OUT"], "out": "file",

@@ -153,3 +153,44 @@ def test_interpolation_in_xi_cubic_is_flat_where_linear_is_sinc_squared(tmp_path
           f"every 1 {drop_2:.3f} dB (sinc^4 {expect_2:.3f})")
     assert abs(drop_1 - expect_1) < 0.03
     assert abs(drop_2 - expect_2) < 0.08 and drop_2 < -0.1
+
+
+def test_the_table_estimates_its_own_error_at_the_answer(tmp_path):
+    """kernels/beam B47: the path table checks delta_W by load-controlled solves midway in every 16th interval, and
+    the run carries the residuals of its own reading of the table to the band levels (BF-9c). On a rough 20 mm path
+    (every band from 500 Hz, the start's ringing skipped), against a table at every cell of the same strip, the
+    estimate's rms over the bands is within a factor 3 of the measured error's, for the default table and for it
+    read at every 2nd and 4th position (no new solve); the checks stand between positions, and a step of one cell
+    has none. Not asserted, because it does not hold: read at every other row (rows_every = 2) the estimate is 0.35
+    of the measured error here. The ladder's error reaches the answer through the contact's stiffness away from the
+    static load, which the checks at the weight do not see (contact-filter page, record path-check.json)."""
+    rough = ["texture.rms=0.12e-6", "surface.spacing=12e-6", "texture.short_wavelength=24e-6", "ball.start=0.1",
+             "ball.end=0.12", "spectrum.segment=128", "spectrum.skip_start=0.005", "spectrum.band_min=400",
+             "spectrum.band_max=5000", "study.realisations=1", "path_table.strip_length=0.0208",
+             "contact.law=path", "contact.filter=none"]
+    r, out = rig_1ms(tmp_path, *rough, "path_table.step=1", name="every-cell.h5")
+    assert r.returncode == 0, r.stderr
+    reference = band_levels(out)[0][-1]
+    with h5py.File(out) as f:
+        assert "/contact/path_table_band_error_db" not in f
+    ratios = {}
+    for every in (1, 2, 4):
+        r, out = rig_1ms(tmp_path, *rough, f"path_table.positions_every={every}", name=f"every{every}.h5")
+        assert r.returncode == 0, r.stderr
+        with h5py.File(out) as f:
+            estimate = f["/contact/path_table_band_error_db"][:]
+            assert f["/contact"].attrs["path_table_band_target_db"] == 0.1
+        measured = band_levels(out)[0][-1] - reference
+        ratios[every] = np.sqrt(np.mean(estimate ** 2) / np.mean(measured ** 2))
+    checked = []
+    for name in glob.glob(str(tmp_path / "tables" / "path-table-*.h5")):
+        with h5py.File(name) as f:
+            if "check_position" in f["/path_table"]:
+                checked.append((f["/path_table/position"][:], f["/path_table/check_position"][:]))
+    assert len(checked) == 1  # the default table; the one at every cell has no cell between positions
+    position, check = checked[0]
+    assert len(check) == len(range(8, len(position) - 1, 16))
+    k = np.searchsorted(position, check)
+    assert np.all((position[k - 1] < check) & (check < position[k]))
+    print("estimate over measured, rms over the bands, positions every 1, 2, 4:", ratios)
+    assert all(1 / 3 < q < 3 for q in ratios.values()), ratios
