@@ -1,13 +1,14 @@
-"""[contact] law = path (kernels/beam B41-B46): the ball-on-beam law on P(delta, xi) of one strip,
+"""[contact] law = path (kernels/beam B41-B47): the ball-on-beam law on P(delta, xi) of one strip,
 from a cached path table. On a smooth strip P is the Hertz force (to the contact solver's
 discretisation), so the run must reproduce law = hertz; the table is built once and reused; bad
 keys are refused."""
 import glob
+import shutil
 
 import h5py
 import numpy as np
 
-from conftest import band_levels, rig_1ms
+from conftest import SOURCE, band_levels, rig_1ms, run, set_args
 
 # Smooth strip (rms 1e-20 m: its response lies ~100 dB below the moving weight's, against a static approach of 0.24 um), 12 um cells (a / 5.8), a 6 mm
 # path at 1 m/s: 8 approaches x ~500 positions on a 40-cell window, a few seconds.
@@ -194,3 +195,26 @@ def test_the_table_estimates_its_own_error_at_the_answer(tmp_path):
     assert np.all((position[k - 1] < check) & (check < position[k]))
     print("estimate over measured, rms over the bands, positions every 1, 2, 4:", ratios)
     assert all(1 / 3 < q < 3 for q in ratios.values()), ratios
+
+
+def test_the_checks_have_the_same_bits_on_one_and_two_threads(tmp_path):
+    """B47's checks (each a cold load-controlled solve, a chunk of its own) and the estimate from them: the same bits
+    whatever the thread count, as the table's forces."""
+    rough = ["contact.law=path", "contact.filter=none", "texture.rms=0.12e-6", "surface.spacing=12e-6",
+             "texture.short_wavelength=24e-6", "ball.start=0.1", "ball.end=0.11", "spectrum.segment=128",
+             "study.realisations=1"]
+    got = {}
+    for threads in (1, 2):
+        d = tmp_path / f"t{threads}"
+        d.mkdir()
+        study = d / "rig.ini"
+        shutil.copy(SOURCE / "studies" / "seed002-rig-1ms.ini", study)
+        r = run(["run", study, "--out", d / "r.h5", *set_args(rough)], env={"OMP_NUM_THREADS": str(threads)})
+        assert r.returncode == 0, r.stderr
+        (table,) = glob.glob(str(d / "tables" / "path-table-*.h5"))
+        with h5py.File(table) as t, h5py.File(d / "r.h5") as f:
+            got[threads] = [t[f"/path_table/{k}"][:] for k in ("check_position", "check_approach", "force")]
+            got[threads].append(f["/contact/path_table_band_error_db"][:])
+    assert len(got[1][0]) >= 2
+    for a, b in zip(got[1], got[2]):
+        assert a.tobytes() == b.tobytes()
