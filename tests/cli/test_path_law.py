@@ -181,6 +181,10 @@ def test_the_table_estimates_its_own_error_at_the_answer(tmp_path):
         with h5py.File(out) as f:
             estimate = f["/contact/path_table_band_error_db"][:]
             assert f["/contact"].attrs["path_table_band_target_db"] == 0.1
+            # run warns, with the worst band and the keys that lower it, exactly where a band exceeds the target
+            warned = "path_table_error_warning" in f["/contact"].attrs
+        assert warned == (np.max(estimate) > 0.1), (every, np.max(estimate))
+        assert warned == ("estimated error of" in r.stderr and "[path_table] step" in r.stderr), r.stderr
         measured = band_levels(out)[0][-1] - reference
         ratios[every] = np.sqrt(np.mean(estimate ** 2) / np.mean(measured ** 2))
     checked = []
