@@ -220,11 +220,20 @@ PathContactData thinned_positions(const PathContactData& d, std::size_t every) {
   return t;
 }
 
-double path_table_static_approach(const PathContactTable& table, double load) {
-  const std::vector<double>& x = table.data().position;
+std::vector<double> path_static_approaches(const PathContactTable& table, double load) {
+  std::vector<double> w;
+  for (double xi : table.data().position) w.push_back(table.static_approach(load, xi));
+  return w;
+}
+
+double path_table_static_approach(const std::vector<double>& static_approaches) {
   double s = 0.0;
-  for (double xi : x) s += table.static_approach(load, xi);
-  return s / static_cast<double>(x.size());
+  for (double w : static_approaches) s += w;
+  return s / static_cast<double>(static_approaches.size());
+}
+
+double path_table_static_approach(const PathContactTable& table, double load) {
+  return path_table_static_approach(path_static_approaches(table, load));
 }
 
 }  // namespace rollspec::beam

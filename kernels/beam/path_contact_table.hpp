@@ -79,8 +79,11 @@ PathContactData thinned_rows(const PathContactData& d, std::size_t every);
 // are close enough for the interpolation in ξ (B45, B45b).
 PathContactData thinned_positions(const PathContactData& d, std::size_t every);
 
-// Mean over the tabulated positions of the static approach δ_W(ξ_k) (README, check against the
-// static load).
+// The static approach δ_W(ξ_k) at each tabulated position (README, check against the static load).
+std::vector<double> path_static_approaches(const PathContactTable& table, double load);
+
+// Their mean over the positions (from them, or from the table).
+double path_table_static_approach(const std::vector<double>& static_approaches);
 double path_table_static_approach(const PathContactTable& table, double load);
 
 }  // namespace rollspec::beam

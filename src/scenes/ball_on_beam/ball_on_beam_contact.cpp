@@ -89,10 +89,11 @@ void take_path_table(const BallOnBeamSettings& b, const stiffness::PathTableData
   // B46's start: with B45b, the slope over [0, a/2] whatever the step; B45 keeps its first interval's
   // chord, the point laws' rule (line = strip starts the same way).
   if (cubic) c.law.path_start_width = b.contact_half_width;
-  c.static_compression = beam::path_table_static_approach(*c.law.path, b.weight());
+  const std::vector<double> static_approach = beam::path_static_approaches(*c.law.path, b.weight());
+  c.static_compression = beam::path_table_static_approach(static_approach);
   if (!t.check_position.empty())
     c.path_check = std::make_shared<const PathTableCheck>(
-        path_table_check(*c.law.path, b.weight(), t.check_position, t.check_approach));
+        path_table_check(*c.law.path, b.weight(), static_approach, t.check_position, t.check_approach));
 }
 
 void take_strip_line(const BallOnBeamSettings& b, const stiffness::EquivalentRoughnessTable& t, ResolvedContact& c) {

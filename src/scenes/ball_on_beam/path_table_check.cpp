@@ -18,15 +18,15 @@ double PathTableCheck::band_error_db(double lower, double upper, std::size_t fir
 }
 
 PathTableCheck path_table_check(const beam::PathContactTable& table, double load,
-                                const std::vector<double>& check_position, const std::vector<double>& check_approach) {
+                                const std::vector<double>& static_approach, const std::vector<double>& check_position,
+                                const std::vector<double>& check_approach) {
   PathTableCheck c;
   const std::vector<double>& x = table.data().position;
   if (check_position.empty() || x.size() < 8) return c;
   for (std::size_t j = 0; j < check_position.size(); ++j)
     c.residual.push_back(check_approach[j] - table.static_approach(load, check_position[j]));
   // δ_W at the tabulated positions, on the table's own spacing (positions_every thins it).
-  std::vector<double> w;
-  for (double xi : x) w.push_back(table.static_approach(load, xi));
+  const std::vector<double>& w = static_approach;
   c.step = (x.back() - x.front()) / static_cast<double>(x.size() - 1);
   c.samples = w.size();
   std::size_t segment = 8;

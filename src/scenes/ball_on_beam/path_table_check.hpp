@@ -21,9 +21,11 @@ struct PathTableCheck {
   double band_error_db(double lower, double upper, std::size_t first_bin) const;
 };
 
-// `check_position`: ξ_j (m, the table's path coordinate), `check_approach`: δ_W there by the solver (m).
-// An empty PathTableCheck (no residuals) where the table has no checks or fewer than 8 positions.
+// `static_approach`: δ_W(ξ_k) of the table at its positions (beam::path_static_approaches); `check_position`:
+// ξ_j (m, the table's path coordinate), `check_approach`: δ_W there by the solver (m). An empty PathTableCheck
+// (no residuals) where the table has no checks or fewer than 8 positions.
 PathTableCheck path_table_check(const beam::PathContactTable& table, double load,
-                                const std::vector<double>& check_position, const std::vector<double>& check_approach);
+                                const std::vector<double>& static_approach, const std::vector<double>& check_position,
+                                const std::vector<double>& check_approach);
 
 }  // namespace rollspec::scenes
