@@ -170,19 +170,22 @@ def rejections(found):
     return float(np.mean(pv < 0.05)), float(np.nanmedian(pv)), over_tables(share, len(tables))
 
 
-def noise_corrected(paths):
+def noise_corrected(paths, carry_vj_dof=False):
     """The model runs' band intervals as they would be if widened by the table term without the sub-table runs'
     own noise, max(V_J - n, 0) in place of V_J (kernels/spectral D-30b, c), nu_T as run: each side's
     realisations-only half width h recovered from the interval by inverting D-30b, then widened again. Not what
-    `run` does (D-30 says why); a measurement of what the noise costs. None where a run records no noise."""
+    `run` does (D-30 says why); a measurement of what the noise costs. None where a run records no noise.
+    carry_vj_dof: the table term's degrees of freedom in Welch-Satterthwaite's nu from V_J's sampling error,
+    V_J^2 / nu_T in place of (V_J - n)^2 / nu_T (V_J - n varies as V_J does; kernels/spectral D-30g)."""
     from scipy import optimize, stats
 
-    def widen(h, k, v, nu_t):
+    def widen(h, k, v, nu_t, v_sampled=None):
         if not (h > 0 and v > 0):
             return h
         sw = h / stats.t.ppf(0.975, k - 1)
         s2 = sw * sw + v
-        return stats.t.ppf(0.975, s2 * s2 / (sw ** 4 / (k - 1) + v * v / nu_t)) * np.sqrt(s2)
+        u = v if v_sampled is None else v_sampled
+        return stats.t.ppf(0.975, s2 * s2 / (sw ** 4 / (k - 1) + u * u / nu_t)) * np.sqrt(s2)
 
     def unwiden(width, k, v, nu_t):
         if not (v > 0 and width > 0) or widen(1e-9, k, v, nu_t) > width:
@@ -199,9 +202,9 @@ def noise_corrected(paths):
         b = bands(path)
         level, lo, hi = b["level"], b["lo"].copy(), b["hi"].copy()
         for i, j in np.ndindex(level.shape):
-            vn = max(v[i, j] - n[i, j], 0.0)
-            lo[i, j] = level[i, j] - widen(unwiden(level[i, j] - lo[i, j], k, v[i, j], nu_t), k, vn, nu_t)
-            hi[i, j] = level[i, j] + widen(unwiden(hi[i, j] - level[i, j], k, v[i, j], nu_t), k, vn, nu_t)
+            vn, u = max(v[i, j] - n[i, j], 0.0), (v[i, j] if carry_vj_dof else None)
+            lo[i, j] = level[i, j] - widen(unwiden(level[i, j] - lo[i, j], k, v[i, j], nu_t), k, vn, nu_t, u)
+            hi[i, j] = level[i, j] + widen(unwiden(hi[i, j] - level[i, j], k, v[i, j], nu_t), k, vn, nu_t, u)
         out[t] = {"level": level, "lo": lo, "hi": hi}
     return out
 

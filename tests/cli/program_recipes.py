@@ -60,6 +60,8 @@ RECIPES = {
     "bench/engine/bench_table_verdict.py": {"argv": ["PY", "S", "BIN", "--scene", "beam-s", "--tables", "2",
                                                     "--work", "OUT"], "out": "folder", "help": ["--help"],
                                            "binary": 2},
+    "bench/engine/bench_table_term.py": {"argv": ["PY", "S", "BIN", "--scene", "beam-s", "--tables", "3", "--k", "5",
+                                                 "--work", "OUT"], "out": "folder", "help": ["--help"], "binary": 2},
     "bench/engine/bench_common_random_numbers.py": {"argv": ["PY", "S", "--binary", "BIN"], "help": ["--help"],
                                                     "fixed": ["bench/records/common-random-numbers.json",
                                                               "docs/howto/sweeps.md"],
