@@ -24,7 +24,11 @@ time) and its 95 % interval over the tables; with --own-seeds also for each mode
 own (7000 + t, as a user's run would be), not only at the shipped one that every model shares. Beside the
 intervals as run (widened by V_J), the same runs' intervals recomputed as if widened by V_J - n, with the table
 term's degrees of freedom nu_T = N - 1 as run, and with V_J's sampling error carried into Welch-Satterthwaite's
-nu (V_J - n varies as V_J does), each with its widest interval (bench_table_verdict.noise_corrected).
+nu (V_J - n varies as V_J does), each with its widest interval (bench_table_verdict.noise_corrected). Those
+leave out the bands where a run's interval cannot be inverted (some the term dominates), so the intervals as
+run are also read on the same bands alone: the like-for-like comparison. The intervals as run are read on each
+half of the table seeds alone too (the reference from that half's other tables): how far a coverage over half
+as many tables, as bench_table_verdict.py's sixteen, moves with the tables drawn.
 Unlike bench_table_verdict.py's ratio row, whose measurements are 25 rolls and whose noise is as large as
 the variance sought, the central runs make the noise a few per cent of it.
 Writes bench/records/validation/table-term-SCENE.json (or --record); --work keeps the runs (default: a
@@ -98,6 +102,17 @@ def summarise(central, models):
             for part in ("vj", "table_part")}
 
 
+def same_bands(intervals, where):
+    """intervals left out (NaN) wherever `where`'s are: noise_corrected cannot invert a run's interval in
+    some bands the table term dominates (its half width is not monotone in the realisations' part there),
+    and leaves them out; its rows are read against the run's own intervals on the same bands."""
+    out = {}
+    for t, m in intervals.items():
+        kept = np.isfinite(where[t]["lo"]) & np.isfinite(where[t]["hi"])
+        out[t] = {key: np.where(kept, m[key], np.nan) for key in ("level", "lo", "hi")}
+    return out
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("binary")
@@ -151,9 +166,12 @@ def main():
                          ("own seeds", {t: work / f"own-{t}.h5" for t in seeds} if a.own_seeds else None)):
         if paths is None:
             continue
-        found[f"{which}, as run (V_J)"] = {t: bands(p) for t, p in paths.items()}
-        found[f"{which}, V_J - n with nu_T = N - 1"] = noise_corrected(paths)
+        as_run = {t: bands(p) for t, p in paths.items()}
+        found[f"{which}, as run (V_J)"] = as_run
+        found[f"{which}, V_J - n with nu_T = N - 1"] = corrected = noise_corrected(paths)
         found[f"{which}, V_J - n with V_J's sampling error in nu"] = noise_corrected(paths, carry_vj_dof=True)
+        if corrected is not None:  # the same sensor-bands as the V_J - n rows, for a like-for-like reading
+            found[f"{which}, as run (V_J), on the bands of the V_J - n rows"] = same_bands(as_run, corrected)
     cover = {}
     for which, intervals in found.items():
         if intervals is None:  # a run without the sub-table runs' noise (n) recorded: no variant to form
@@ -165,6 +183,19 @@ def main():
         rows.append([f"coverage of the roughness's mean level (the other tables' central runs), models at the {which}",
                      f"{share:.3f}", f"width ratio {width:.2f}", f"95 % over the tables {low:.3f}-{high:.3f}",
                      f"widest interval {widest:.1f} dB", f"{count} sensor-bands", ""])
+    # How much a coverage over half as many tables moves with the tables drawn (the verdict bench runs 16):
+    # the intervals as run, on each half of the seeds alone, the reference from that half's other tables.
+    halves = {}
+    if len(seeds) >= 8:
+        for which in [w for w in found if w.endswith("as run (V_J)")]:
+            for part in (seeds[:len(seeds) // 2], seeds[len(seeds) // 2:]):
+                share, width, count, (low, high) = coverage({t: found[which][t] for t in part},
+                                                            {t: levels[t] for t in part})
+                name = f"{which}, tables {part[0]}-{part[-1]} alone"
+                halves[name] = {"share": share, "width_ratio": width, "count": count, "interval": [low, high]}
+                rows.append([f"coverage of the roughness's mean level, models at the {name}", f"{share:.3f}",
+                             f"width ratio {width:.2f}", f"95 % over the tables {low:.3f}-{high:.3f}", "",
+                             f"{count} sensor-bands", ""])
     minutes = (time.monotonic() - start) / 60.0
     bench_record.write(
         record, title=f"The table term against the variance between tables, measured directly: {description}"
@@ -183,7 +214,7 @@ def main():
                          "bands_hz": central[0]["f"].tolist(), "between_db2": between.tolist(),
                          "noise_db2": noise.tolist(), "vj_db2": vj.tolist(), "table_part_db2": table_part.tolist(),
                          "mean_ratio": summary,
-                         "coverage": cover})
+                         "coverage": cover, "coverage_halves": halves})
     if not a.work:
         shutil.rmtree(work, ignore_errors=True)
 
