@@ -50,7 +50,7 @@ sys.path.insert(0, str(ROOT / "bench"))
 sys.path.insert(0, str(ROOT / "bench" / "engine"))
 import bench_record  # noqa: E402
 from bench_table_verdict import (REUSED, SCENES, BenchError, bands, coverage, mean_row_index,  # noqa: E402
-                                 noise_corrected, over_tables, run_study)
+                                 noise_corrected, over_tables_at_once, run_study)
 
 DB = 10.0 / np.log(10.0)
 
@@ -73,32 +73,43 @@ def sensor_mean(path, with_term):
     return out
 
 
-def ratios(central, models, pick):
-    """Per band: the variance between tables (less the central runs' own noise), and its ratio to the mean
-    V_J and to the mean V_J - n of the models, over the tables `pick`."""
-    level = np.array([central[i]["level"] for i in pick])
-    noise = np.mean([central[i]["noise"] for i in pick], axis=0)
-    between = np.var(level, axis=0, ddof=1) - noise
-    vj = np.mean([models[i]["vj"] for i in pick], axis=0)
-    table_part = np.mean([models[i]["vj"] - models[i]["n"] for i in pick], axis=0)
-    return between, noise, vj, table_part
+def stacked(central, models):
+    """The tables' rows as arrays (tables x bands), stacked once: the bootstrap below picks rows thousands of
+    times."""
+    return {"level": np.array([c["level"] for c in central]), "noise": np.array([c["noise"] for c in central]),
+            "vj": np.array([m["vj"] for m in models]),
+            "table_part": np.array([m["vj"] - m["n"] for m in models])}
 
 
-def mean_ratio(central, models, pick, part):
+def ratios(rows, pick):
+    """Per band: the variance between tables (less the central runs' own noise), the mean V_J and the mean
+    V_J - n of the models, over the tables `pick` (rows from `stacked`); `pick` may hold one draw of tables per
+    row, and then so does each figure."""
+    pick = np.asarray(pick)
+    noise = rows["noise"][pick].mean(axis=-2)
+    between = np.var(rows["level"][pick], axis=-2, ddof=1) - noise
+    return between, noise, rows["vj"][pick].mean(axis=-2), rows["table_part"][pick].mean(axis=-2)
+
+
+def mean_ratio(rows, pick, part):
     """The mean over the bands of the variance between tables over that of V_J (part "vj") or of V_J - n
-    ("table_part"), over the tables `pick`: the ratio of the band means, not the mean of the bands' ratios (a
-    band whose V_J - n is near 0 would rule it). NaN where fewer than 3 distinct tables are picked."""
-    if len(set(np.asarray(pick).tolist())) < 3:
-        return np.nan
-    b, _, v, tp = ratios(central, models, pick)
-    return float(np.mean(b) / np.mean(v if part == "vj" else tp))
+    ("table_part"), over the tables `pick` (or each row of it): the ratio of the band means, not the mean of
+    the bands' ratios (a band whose V_J - n is near 0 would rule it). NaN where fewer than 3 distinct tables
+    are picked."""
+    pick = np.asarray(pick)
+    ordered = np.sort(pick, axis=-1)
+    distinct = 1 + np.count_nonzero(np.diff(ordered, axis=-1), axis=-1)
+    b, _, v, tp = ratios(rows, pick)
+    ratio = np.mean(b, axis=-1) / np.mean(v if part == "vj" else tp, axis=-1)
+    return np.where(distinct < 3, np.nan, ratio)
 
 
 def summarise(central, models):
     """Both mean ratios with their 95 % interval over the draw of the tables themselves."""
+    rows = stacked(central, models)
     everything = np.arange(len(central))
-    return {part: {"ratio": mean_ratio(central, models, everything, part),
-                   "interval": over_tables(lambda pick: mean_ratio(central, models, pick, part), len(central))}
+    return {part: {"ratio": float(mean_ratio(rows, everything, part)),
+                   "interval": over_tables_at_once(lambda picks: mean_ratio(rows, picks, part), len(central))}
             for part in ("vj", "table_part")}
 
 
@@ -151,7 +162,7 @@ def main():
             run_study(a.binary, study, work / f"own-{t}.h5", sets + [f"stiffness.table_seed={t}", f"study.seed={7000 + t}"])
         print(f"table {t}", file=sys.stderr)
     everything = np.arange(len(seeds))
-    between, noise, vj, table_part = ratios(central, models, everything)
+    between, noise, vj, table_part = ratios(stacked(central, models), everything)
     rows = [[f"{f:.0f}", f"{b:.4f}", f"{n:.4f}", f"{v:.4f}", f"{v - tp:.4f}", f"{b / v:.2f}", f"{b / tp:.2f}"]
             for f, b, n, v, tp in zip(central[0]["f"], between, noise, vj, table_part)]
 

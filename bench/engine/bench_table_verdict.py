@@ -123,10 +123,22 @@ def over_tables(share, n, draws=2000):
     tables (each model meets every measurement), so they are not independent and a binomial interval over
     them is too narrow. The tables are drawn again with replacement (a pigeonhole bootstrap, Owen 2007) and
     share(pick) recomputed; the stream is Philox (Random123's), keyed by the figure's draw count alone."""
-    stream = np.random.Generator(np.random.Philox(key=draws))
-    found = [share(stream.integers(0, n, n)) for _ in range(draws)]
+    found = [share(pick) for pick in table_draws(n, draws)]
     found = [x for x in found if np.isfinite(x)]
     return tuple(float(x) for x in np.quantile(found, [0.025, 0.975]))
+
+
+def over_tables_at_once(shares, n, draws=2000):
+    """over_tables for a share computed for all draws at once (shares(picks), picks a draws x n array, one
+    figure per row): the same draws, so the same interval up to the rounding of the vectorised sums."""
+    found = np.asarray(shares(table_draws(n, draws)), dtype=float)
+    return tuple(float(x) for x in np.quantile(found[np.isfinite(found)], [0.025, 0.975]))
+
+
+def table_draws(n, draws):
+    """The pigeonhole bootstrap's draws of n tables with replacement, one row per draw."""
+    stream = np.random.Generator(np.random.Philox(key=draws))
+    return np.array([stream.integers(0, n, n) for _ in range(draws)])
 
 
 def verdicts(binary, model, measurements, rolls):
