@@ -123,9 +123,7 @@ def over_tables(share, n, draws=2000):
     tables (each model meets every measurement), so they are not independent and a binomial interval over
     them is too narrow. The tables are drawn again with replacement (a pigeonhole bootstrap, Owen 2007) and
     share(pick) recomputed; the stream is Philox (Random123's), keyed by the figure's draw count alone."""
-    found = [share(pick) for pick in table_draws(n, draws)]
-    found = [x for x in found if np.isfinite(x)]
-    return tuple(float(x) for x in np.quantile(found, [0.025, 0.975]))
+    return over_tables_at_once(lambda picks: [share(pick) for pick in picks], n, draws)
 
 
 def over_tables_at_once(shares, n, draws=2000):
