@@ -2,10 +2,11 @@
 """The verdict against measurements from other tables (kernels/spectral D-30f, D-31): what a user's rig
 with another surface of the model's roughness gives, at the shipped defaults.
 
-usage: bench_table_verdict.py ROLLSPEC --scene beam-r|beam-s|route [--tables 20] [--models 5] [--rolls 25]
+usage: bench_table_verdict.py ROLLSPEC --scene beam-r|beam-s|route [--first 101] [--tables 20] [--models 5]
+                              [--rolls 25]
                               [--pair K] [--set KEY=VALUE ...] [--work DIR] [--record FILE]
 
-For each of --tables table seeds t (101, 102, ...) the shipped study is run twice:
+For each of --tables table seeds t (--first, --first + 1, ...; 101 unless given) the shipped study is run twice:
   model t        the study as shipped (its K, its study seed, [stiffness] table_error at its default), table seed t;
   measurement t  --rolls realisations of table seed t at study seed 5000 + t, table_error = none: a rig with
                  that surface, measured over M = --rolls rolls (its sensor-mean PSD as a PSD table).
@@ -289,6 +290,7 @@ def main():
     p.add_argument("binary")
     p.add_argument("--scene", choices=sorted(SCENES), required=True)
     p.add_argument("--tables", type=int, default=20)
+    p.add_argument("--first", type=int, default=101, help="the first table seed (tables --first, --first + 1, ...)")
     p.add_argument("--models", type=int, default=0, help="tables whose models are compared (default: all)")
     p.add_argument("--rolls", type=int, default=25)
     p.add_argument("--pair", type=int, default=0, help="K of two more runs on table seeds 1 and 2 (0: none)")
@@ -297,9 +299,10 @@ def main():
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                    help="a study key for every run, models and measurements (e.g. stiffness.realisations=12)")
     a = p.parse_args()
-    if a.tables < 2 or a.rolls < 1 or a.models < 0 or a.pair < 0 or a.pair == 1:
-        p.error(f"--tables {a.tables} --rolls {a.rolls} --models {a.models} --pair {a.pair}: allowed: at least 2 "
-                "tables, 1 roll, 0 or more models, a pair of 0 (none) or at least 2 realisations")
+    if a.first < 3 or a.tables < 2 or a.rolls < 1 or a.models < 0 or a.pair < 0 or a.pair == 1:
+        p.error(f"--first {a.first} --tables {a.tables} --rolls {a.rolls} --models {a.models} --pair {a.pair}: "
+                "allowed: a first table seed of at least 3 (1 and 2 are --pair's), at least 2 tables, 1 roll, 0 or "
+                "more models, a pair of 0 (none) or at least 2 realisations")
     require_program(a.binary, "binary")
     study, description = SCENES[a.scene]
     study = ROOT / study
@@ -310,7 +313,7 @@ def main():
     # The study's own folder of tables stays untouched: the runs cache their tables under the work folder.
     sets = [f"stiffness.table_dir={work / 'tables'}", *a.set]
     start = time.monotonic()
-    seeds = list(range(101, 101 + a.tables))
+    seeds = list(range(a.first, a.first + a.tables))
     a.models = a.models or a.tables
     measured, tables = {}, {}
     for t in seeds:
