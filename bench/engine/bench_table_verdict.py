@@ -386,7 +386,7 @@ def main():
         + (f", run with {', '.join(a.set)}" if a.set else ""),
         argv=sys.argv, builds={"current": {"description": "the build measured",
                                             "version": bench_record.build_version(a.binary)}},
-        settings=f"{a.tables} table seeds; models as shipped" + (f" with {', '.join(a.set)}" if a.set else "") +
+        settings=f"{a.tables} table seeds ({seeds[0]}-{seeds[-1]}); models as shipped" + (f" with {', '.join(a.set)}" if a.set else "") +
                  " (and at study seeds 7000 + t); measurements of "
                  f"{a.rolls} rolls of each other table (study seed 5000 + t); compare --measured-averages {a.rolls} "
                  f"at level 0.05; {minutes:.0f} min"
