@@ -383,6 +383,7 @@ def main():
     minutes = (time.monotonic() - start) / 60.0
     bench_record.write(
         record, title=f"The verdict against measurements from other tables: {description}"
+        + (f", table seeds {seeds[0]}-{seeds[-1]}" if a.first != 101 else "")
         + (f", run with {', '.join(a.set)}" if a.set else ""),
         argv=sys.argv, builds={"current": {"description": "the build measured",
                                             "version": bench_record.build_version(a.binary)}},
