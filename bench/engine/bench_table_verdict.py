@@ -6,7 +6,8 @@ usage: bench_table_verdict.py ROLLSPEC --scene beam-r|beam-s|route [--first 101]
                               [--rolls 25]
                               [--pair K] [--set KEY=VALUE ...] [--work DIR] [--record FILE]
 
-For each of --tables table seeds t (--first, --first + 1, ...; 101 unless given) the shipped study is run twice:
+For each of --tables table seeds t (--first, --first + 1, ...; 101 unless given) the shipped study is run
+twice:
   model t        the study as shipped (its K, its study seed, [stiffness] table_error at its default), table seed t;
   measurement t  --rolls realisations of table seed t at study seed 5000 + t, table_error = none: a rig with
                  that surface, measured over M = --rolls rolls (its sensor-mean PSD as a PSD table).
@@ -387,7 +388,8 @@ def main():
         + (f", run with {', '.join(a.set)}" if a.set else ""),
         argv=sys.argv, builds={"current": {"description": "the build measured",
                                             "version": bench_record.build_version(a.binary)}},
-        settings=f"{a.tables} table seeds ({seeds[0]}-{seeds[-1]}); models as shipped" + (f" with {', '.join(a.set)}" if a.set else "") +
+        settings=f"{a.tables} table seeds ({seeds[0]}-{seeds[-1]}); models as shipped"
+                 + (f" with {', '.join(a.set)}" if a.set else "") +
                  " (and at study seeds 7000 + t); measurements of "
                  f"{a.rolls} rolls of each other table (study seed 5000 + t); compare --measured-averages {a.rolls} "
                  f"at level 0.05; {minutes:.0f} min"
