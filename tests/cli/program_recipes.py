@@ -38,6 +38,7 @@ RECIPES = {
     "bench/record_csv.py": {"argv": ["PY", "S", "--record", "OUT", "--title", "t", "--describe", "d", "--", "true"],
                             "out": "file", "help": ["--help"]},
     "bench/contact/bench_answer_filter.py": RECORDS_WITH_BIN,
+    "bench/contact/bench_filter_grid.py": RECORDS_WITH_BIN,
     "bench/contact/bench_filter_against_path.py": RECORDS_WITH_BIN,
     "bench/contact/bench_answer_tables.py": RECORDS_WITH_BIN,
     "bench/contact/bench_path_ladder.py": RECORDS_WITH_BIN,
