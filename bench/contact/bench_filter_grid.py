@@ -45,7 +45,6 @@ COMMON = ["contact.law=hertz", "contact.filter=solver", "study.realisations=2",
 TEXTURES = {"rig": {}, "rougher": {"rms": 0.246e-6},
             "untested": {"hurst": 0.7, "rolloff_wavelength": 2e-3, "rms": 0.15e-6}}
 THINNING = (2, 3)
-BALL_RADIUS = 0.02  # m, the study's [ball] radius (checked against its file in main)
 HERTZ_LINE = re.compile(r"Hertz a = ([\d.]+) um")
 PLAN_LINE = re.compile(r"cell ([\d.]+) um \(a/[\d.]+\).*?window (\d+) cells, (\d+) positions per strip \(step (\d+) "
                        r"cells = [\d.]+ um\), Welch segment (\d+); contact radius a = ([\d.]+) um")
@@ -66,20 +65,15 @@ NOTES = ("Each figure is the largest |difference| over the bands with a Welch bi
          "not per table.")
 
 
-def study_value(section, key):
-    parser = configparser.ConfigParser(inline_comment_prefixes=("#",))
-    parser.read(STUDY)
-    return float(parser[section][key])
-
-
-def study_texture():
-    """The study's [texture] section as floats (the keys this bench varies and the cut-offs)."""
+def study_keys():
+    """The study's [texture] keys as floats (the keys this bench varies and the cut-offs) and its ball radius."""
     parser = configparser.ConfigParser(inline_comment_prefixes=("#",))
     parser.read(STUDY)
     t = parser["texture"]
     if t.get("source") != "self-affine":
         fail(f"{STUDY}: [texture] source = {t.get('source')}; this bench draws the self-affine texture only", 1)
-    return {k: float(t[k]) for k in ("hurst", "rolloff_wavelength", "short_wavelength", "rms")}
+    return ({k: float(t[k]) for k in ("hurst", "rolloff_wavelength", "short_wavelength", "rms")},
+            float(parser["ball"]["radius"]))
 
 
 def plan_geometry(binary):
@@ -161,9 +155,7 @@ def main():
     geo = plan_geometry(binary)
     if a.positions < geo["segment"]:  # three half-overlapping Welch segments of the table's length at least
         fail(f"--positions: {a.positions} is too few; allowed: {geo['segment']} or more (three Welch segments)", 64)
-    base = study_texture()
-    if study_value("ball", "radius") != BALL_RADIUS:
-        fail(f"{STUDY}: [ball] radius = {study_value('ball', 'radius')}; this bench is set up for {BALL_RADIUS} m", 1)
+    base, ball_radius = study_keys()
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], {}
     for name in textures:
@@ -189,7 +181,7 @@ def main():
         # Cell: one surface at half the table's cell, its 2 x 2 means on the table's cell and on twice it.
         half = geo["cell"] / 2
         window2, step2 = 2 * geo["window"], 4 * geo["step"]  # on the half cell: every 2nd table position
-        e_star = 3 * load * BALL_RADIUS / (4 * geo["hertz_radius"] ** 3)  # Hertz: a = (3 W R / 4 E*)^(1/3)
+        e_star = 3 * load * ball_radius / (4 * geo["hertz_radius"] ** 3)  # Hertz: a = (3 W R / 4 E*)^(1/3)
         nx = window2 + step2 * a.positions
         k, g = self_affine(texture, np.pi / half * 0.999)
         z2 = np.asarray(rollspec.surfaces.isotropic(k, g, half, nx, window2, seed=1, index=0)["heights"])
@@ -199,7 +191,7 @@ def main():
         for label, z, cell, window, step in (("double", z0, 4 * half, window2 // 4, step2 // 4),
                                              ("table", z1, 2 * half, window2 // 2, step2 // 2),
                                              ("half", z2, half, window2, step2)):
-            grids[label] = heq_on_grid(rollspec, z, cell, window, step, a.positions, BALL_RADIUS, e_star, load)
+            grids[label] = heq_on_grid(rollspec, z, cell, window, step, a.positions, ball_radius, e_star, load)
         segment = geo["segment"] // 2  # positions twice the table's step apart: the table's segment in metres
         lv = {label: band_levels(h, 2 * spacing, segment, speed, lower, upper) for label, (h, _) in grids.items()}
         entry.update({"double_minus_table_db": (lv["double"] - lv["table"]).tolist(),
