@@ -51,7 +51,8 @@ PLAN_LINE = re.compile(r"cell ([\d.]+) um \(a/[\d.]+\).*?window (\d+) cells, (\d
 TITLE = ("The filter's table (filter = solver): fewer positions and a coarser cell, against the exhaustive table's "
          "own discretisation error")
 SETTINGS = ("studies/seed002-rig-1ms.ini with contact.law = hertz, contact.filter = solver. Positions: the exhaustive "
-            "table (answer_tolerance = 0, 2 strips x {positions_engine} positions {step_um:.1f} um apart) read at every "
+            "table (answer_tolerance = 0, 2 strips x {positions_engine} positions {step_um:.1f} um apart) read at "
+            "every "
             "2nd / 3rd position, a cubic spline through them back to every position. Cell: one strip per texture "
             "drawn at half the table's cell ({cell_um:.3f} um), {positions} positions {grid_step_um:.1f} um apart "
             "(every 2nd of the table's), window {window_um:.0f} um, h_eq by cold load-controlled solves on cells of "
@@ -82,7 +83,8 @@ def plan_geometry(binary):
     m, hertz = PLAN_LINE.search(r.stdout + r.stderr), HERTZ_LINE.search(r.stdout + r.stderr)
     if r.returncode != 0 or not m or not hertz:
         fail(f"{binary} plan {STUDY.name}: no equivalent-roughness geometry in its output", 1)
-    return {"hertz_radius": float(hertz.group(1)) * 1e-6, "cell": float(m.group(1)) * 1e-6, "window": int(m.group(2)), "positions": int(m.group(3)),
+    return {"hertz_radius": float(hertz.group(1)) * 1e-6, "cell": float(m.group(1)) * 1e-6, "window": int(m.group(2)),
+            "positions": int(m.group(3)),
             "step": int(m.group(4)), "segment": int(m.group(5)), "radius": float(m.group(6)) * 1e-6}
 
 
