@@ -34,16 +34,15 @@ from scipy.signal import welch
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.dont_write_bytecode = True  # no __pycache__ in bench/
 sys.path.insert(0, str(ROOT / "bench"))
+sys.path.insert(0, str(ROOT / "bench" / "contact"))
 sys.path.insert(0, str(ROOT / "python-post"))
 import bench_record  # noqa: E402
+from bench_path_ladder import TEXTURES  # noqa: E402  (the path benches' textures: --set texture.key=value lists)
 from rollspec_post.script_main import fail, script_main  # noqa: E402  (one line per failure, no traceback)
 
 STUDY = ROOT / "studies" / "seed002-rig-1ms.ini"
 COMMON = ["contact.law=hertz", "contact.filter=solver", "study.realisations=2",
           "equivalent_roughness.answer_tolerance=0"]
-# [texture] keys over the study's own, as bench_path_ladder.py's TEXTURES set them.
-TEXTURES = {"rig": {}, "rougher": {"rms": 0.246e-6},
-            "untested": {"hurst": 0.7, "rolloff_wavelength": 2e-3, "rms": 0.15e-6}}
 THINNING = (2, 3)
 HERTZ_LINE = re.compile(r"Hertz a = ([\d.]+) um")
 PLAN_LINE = re.compile(r"cell ([\d.]+) um \(a/[\d.]+\).*?window (\d+) cells, (\d+) positions per strip \(step (\d+) "
@@ -161,8 +160,9 @@ def main():
     busy, own, t0 = bench_record.busy_seconds(), bench_record.own_cpu(), time.perf_counter()
     rows, data = [], {}
     for name in textures:
-        texture = dict(base, **TEXTURES[name])
-        settings = COMMON + [f"texture.{k}={v!r}" for k, v in TEXTURES[name].items()]
+        texture = dict(base, **{kv.split("=")[0].removeprefix("texture."): float(kv.split("=")[1])
+                                for kv in TEXTURES[name]})
+        settings = COMMON + TEXTURES[name]
         with bench_record.study_run(binary, STUDY, settings, 1, "bench-filter-grid-") as (path, _, _, _):
             with h5py.File(path) as f:
                 speed = float(np.ravel(f["/ball"].attrs["speed"])[0])
