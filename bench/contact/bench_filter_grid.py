@@ -20,6 +20,7 @@ the run's bands at the ball's speed (contact README ER-1, ER-2):
 The table's cell, window, step and contact radius come from `rollspec plan`; the load from the table the run built.
 """
 import configparser
+import os
 import pathlib
 import re
 import subprocess
@@ -152,6 +153,7 @@ def main():
     if not (module / "rollspec").is_dir():
         fail(f"--bin {a.bin}: no Python module beside it ({module}/rollspec); allowed: a build tree's rollspec", 66)
     sys.path.insert(0, str(module))
+    os.environ["OMP_NUM_THREADS"] = "1"  # one thread for the solves' CPU ratio (read when the module loads)
     import rollspec  # the module of the build measured
     geo = plan_geometry(binary)
     if a.positions < geo["segment"]:  # three half-overlapping Welch segments of the table's length at least
